@@ -1,0 +1,228 @@
+//! The subcommands. Each returns the problem lines (without `error: `) on
+//! failure and prints nothing to standard output unless it succeeds.
+
+use std::time::Instant;
+
+use engine::events::parse_events;
+use engine::headless::{self, RunError, Schedule};
+use engine::minasec::{self, Machine};
+use engine::SimTime;
+
+use crate::args::Args;
+use crate::input::{Format, SourceFile};
+
+type Problems = Vec<String>;
+
+/// The machines of cli.md.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum MachineId {
+    MinasecU,
+    Io86a,
+    AvrPlc,
+    ArduinoPlc,
+}
+
+impl MachineId {
+    fn parse(id: &str) -> Result<MachineId, String> {
+        match id {
+            "minasec-u" => Ok(MachineId::MinasecU),
+            "io86a" => Ok(MachineId::Io86a),
+            "avr-plc" => Ok(MachineId::AvrPlc),
+            "arduino-plc" => Ok(MachineId::ArduinoPlc),
+            other => Err(format!(
+                "unknown machine \"{other}\": minasec-u, io86a, avr-plc or arduino-plc"
+            )),
+        }
+    }
+
+    /// Only MINASEC-U is emulated so far; the others say so.
+    fn require_supported(self) -> Result<(), String> {
+        match self {
+            MachineId::MinasecU => Ok(()),
+            MachineId::Io86a => Err("machine io86a is not supported yet".into()),
+            MachineId::AvrPlc => Err("machine avr-plc is not supported yet".into()),
+            MachineId::ArduinoPlc => Err("machine arduino-plc is not supported yet".into()),
+        }
+    }
+}
+
+fn one(problem: String) -> Problems {
+    vec![problem]
+}
+
+/// Reads `--machine` and `--program` and parses a MINASEC-U program.
+fn load_minasec(args: &Args) -> Result<minasec::Program, Problems> {
+    let machine = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
+    machine.require_supported().map_err(one)?;
+    let path = args.required("program").map_err(one)?;
+    let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
+    let source = SourceFile::read(path).map_err(one)?;
+    match format {
+        Format::Il => minasec::Program::parse(&source.text).map_err(|errors| source.located(&errors)),
+        Format::Asm => Err(one(format!(
+            "{}: minasec-u programs are mnemonic text (.il), not .asm",
+            source.name
+        ))),
+        Format::Json | Format::Xml => Err(one(format!(
+            "{}: ladder projects (.json, .xml) are not supported yet: they come with the ladder compiler",
+            source.name
+        ))),
+    }
+}
+
+/// `hashigo run`.
+pub fn run(rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(
+        rest,
+        &[
+            "machine", "program", "format", "set", "input", "until", "every", "watch",
+        ],
+    )
+    .map_err(one)?;
+    // An unknown or unsupported machine is the only thing worth saying.
+    MachineId::parse(args.required("machine").map_err(one)?)
+        .and_then(MachineId::require_supported)
+        .map_err(one)?;
+    let mut problems = Vec::new();
+    let program = load_minasec(&args);
+    let until = args
+        .required("until")
+        .and_then(|t| SimTime::parse(t).map_err(|e| format!("--until: {e}")));
+    let every = args.optional("every").and_then(|t| {
+        t.map(|t| SimTime::parse(t).map_err(|e| format!("--every: {e}")))
+            .transpose()
+    });
+    let watch: Vec<String> = args
+        .all("watch")
+        .flat_map(|w| w.split(','))
+        .map(|w| w.trim().to_string())
+        .collect();
+    if watch.is_empty() || watch.iter().any(String::is_empty) {
+        problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
+    }
+
+    let mut machine = Machine::for_run();
+    for setting in args.all("set") {
+        let result = match setting.split_once('=') {
+            Some((name, value)) => machine.apply_setting(name.trim(), value.trim()),
+            None => Err("expected NAME=VALUE".to_string()),
+        };
+        if let Err(e) = result {
+            problems.push(format!("--set {setting}: {e}"));
+        }
+    }
+    let events = match args.optional("input") {
+        Ok(Some(path)) => match SourceFile::read(path) {
+            Ok(source) => match parse_events(&source.text) {
+                Ok(events) => Some((source, events)),
+                Err(errors) => {
+                    problems.extend(source.located(&errors));
+                    None
+                }
+            },
+            Err(e) => {
+                problems.push(e);
+                None
+            }
+        },
+        Ok(None) => None,
+        Err(e) => {
+            problems.push(e);
+            None
+        }
+    };
+
+    let program = program.map_err(|p| problems.extend(p)).ok();
+    let until = until.map_err(|p| problems.push(p)).ok();
+    let every = every.map_err(|p| problems.push(p)).ok();
+    let (Some(program), Some(until), Some(every)) = (program, until, every) else {
+        return Err(problems);
+    };
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+
+    machine.load(&program);
+    let schedule = Schedule {
+        until,
+        every: every.unwrap_or(until),
+    };
+    let (source_name, event_list) = match &events {
+        Some((source, list)) => (source.name.as_str(), list.as_slice()),
+        None => ("", &[][..]),
+    };
+    let csv = headless::run(&mut machine, event_list, schedule, &watch).map_err(|errors| {
+        errors
+            .into_iter()
+            .map(|e| match e {
+                RunError::Watch(message) => format!("--watch: {message}"),
+                RunError::Event(located) => {
+                    format!("{source_name}:{}: {}", located.line, located.error)
+                }
+                RunError::ZeroInterval => "--every must be greater than zero".to_string(),
+                RunError::TooManyRows(n) => {
+                    format!("--every is so small that the run would print more than {n} rows")
+                }
+            })
+            .collect::<Vec<_>>()
+    })?;
+    print!("{csv}");
+    Ok(())
+}
+
+/// `hashigo bench`.
+pub fn bench(rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(rest, &["machine", "program", "format", "steps"]).map_err(one)?;
+    let program = load_minasec(&args)?;
+    let steps_text = args.required("steps").map_err(one)?;
+    let steps: u64 = steps_text.parse().ok().filter(|&n| n > 0).ok_or_else(|| {
+        one(format!(
+            "--steps {steps_text}: expected a whole number above 0"
+        ))
+    })?;
+
+    let mut machine = Machine::for_run();
+    machine.load(&program);
+    let period = machine.speed().period().as_nanos();
+    // Exactly `steps` clocks: the n-th clock's falling edge is n periods on.
+    let end = steps
+        .checked_mul(period)
+        .map(SimTime::from_nanos)
+        .ok_or_else(|| one(format!("--steps {steps}: too many for the simulated clock")))?;
+    let started = Instant::now();
+    machine.run_until(end);
+    let seconds = started.elapsed().as_secs_f64();
+    debug_assert_eq!(machine.clocks(), steps);
+    let rate = if seconds > 0.0 {
+        steps as f64 / seconds
+    } else {
+        f64::INFINITY
+    };
+    println!("steps={steps} seconds={seconds:.6} steps_per_second={rate:.0}");
+    Ok(())
+}
+
+/// `hashigo asm`.
+pub fn asm(rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(rest, &["machine", "program", "format"]).map_err(one)?;
+    let program = load_minasec(&args)?;
+    print!("{}", program.sheet());
+    Ok(())
+}
+
+/// `compile` and `console`: accepted words, machines not there yet.
+pub fn not_yet(command: &str, rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(rest, &["machine", "program", "format", "step"]).map_err(one)?;
+    let machine = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
+    match (command, machine) {
+        ("console", MachineId::MinasecU) => Err(one(
+            "minasec-u has no serial terminal: console is for io86a and arduino-plc".to_string(),
+        )),
+        _ => {
+            machine.require_supported().map_err(one)?;
+            Err(one(format!(
+                "hashigo {command} is not supported yet for minasec-u"
+            )))
+        }
+    }
+}

@@ -1,0 +1,48 @@
+//! `hashigo`: the engine's command-line front (../shared/spec/cli.md).
+//!
+//! Exit status 0 on success, 2 on bad input, with one `error: ...` line per
+//! problem on standard error and nothing partial on standard output.
+
+mod args;
+mod commands;
+mod input;
+
+use std::process::ExitCode;
+
+const USAGE: &str = "\
+usage: hashigo <command> [options]
+  run      --machine ID --program FILE [--set NAME=VALUE]... [--input EVENTS.csv]
+           --until TIME [--every TIME] --watch DEV[,DEV...]
+  bench    --machine ID --program FILE --steps N
+  asm      --machine ID --program FILE
+  compile  --machine ID --program LADDER.json|LADDER.xml
+  console  --machine io86a|arduino-plc [--program FILE] [--step TIME]
+machines: minasec-u, io86a, avr-plc, arduino-plc";
+
+fn main() -> ExitCode {
+    let argv: Vec<String> = std::env::args().skip(1).collect();
+    let Some((command, rest)) = argv.split_first() else {
+        eprintln!("{USAGE}");
+        return ExitCode::from(2);
+    };
+    let result = match command.as_str() {
+        "run" => commands::run(rest),
+        "bench" => commands::bench(rest),
+        "asm" => commands::asm(rest),
+        "compile" | "console" => commands::not_yet(command, rest),
+        "help" | "--help" | "-h" => {
+            println!("{USAGE}");
+            Ok(())
+        }
+        other => Err(vec![format!("unknown command \"{other}\"\n{USAGE}")]),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(problems) => {
+            for problem in problems {
+                eprintln!("error: {problem}");
+            }
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,13 @@
+//! Hashigo's simulator core: the PLC machines, their program formats and
+//! the simulated clock. Pure Rust with no web or OS dependencies, so the
+//! same code runs natively (the `hashigo` command, tests, benchmarks) and
+//! in the browser (wasm32).
+
+pub mod error;
+pub mod events;
+pub mod headless;
+pub mod minasec;
+pub mod time;
+
+pub use error::Located;
+pub use time::SimTime;

@@ -1,0 +1,12 @@
+//! MINASEC-U behaviour tests: the seed's examples and every rule of
+//! machines.md §1, driven through the engine's public API and the CLI.
+
+mod cli;
+mod counter;
+mod fast_path;
+mod harness;
+mod programming;
+mod reset_power;
+mod scan_io;
+mod seed_program;
+mod timers;
