@@ -1,0 +1,6 @@
+//! The page's components: thin views over [`crate::state::Ctx`].
+
+pub mod board;
+pub mod controls;
+pub mod header;
+pub mod program;

@@ -1,0 +1,155 @@
+//! The program pane: the mnemonic text with line numbers and errors on
+//! their lines as you type, the programming sheet beside it, and the
+//! button that loads the program into the board.
+
+use leptos::prelude::*;
+
+use crate::state::{Ctx, Parsed};
+
+#[component]
+pub fn ProgramPane() -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let parsed = Memo::new(move |_| Parsed::of(&ctx.text.get()));
+    let errors = Memo::new(move |_| match parsed.get() {
+        Parsed::Good(_) => Vec::new(),
+        Parsed::Bad(errors) => errors,
+    });
+    let gutter_scroll = RwSignal::new(0);
+    let line_count = Memo::new(move |_| ctx.text.with(|t| t.lines().count().max(1)));
+    let up_to_date = move || {
+        ctx.loaded
+            .with(|l| l.as_deref() == Some(ctx.text.get().as_str()))
+    };
+
+    view! {
+        <section class="program">
+            <h2>{move || t().program}</h2>
+            <div class="editor">
+                <pre class="gutter" aria-hidden="true" prop:scrollTop=move || gutter_scroll.get()>
+                    {move || {
+                        let bad: Vec<usize> = errors.get().iter().map(|e| e.0).collect();
+                        (1..=line_count.get())
+                            .map(|n| {
+                                let err = bad.contains(&n);
+                                view! {
+                                    <span class="ln" class:err=err>
+                                        {format!("{n:>3}\n")}
+                                    </span>
+                                }
+                            })
+                            .collect_view()
+                    }}
+                </pre>
+                <textarea
+                    data-testid="program-text"
+                    spellcheck="false"
+                    aria-label=move || t().program
+                    prop:value=move || ctx.text.get()
+                    on:input=move |e| {
+                        ctx.text.set(event_target_value(&e));
+                        ctx.save();
+                    }
+                    on:scroll=move |e| {
+                        use leptos::wasm_bindgen::JsCast;
+                        if let Some(el) = e
+                            .target()
+                            .and_then(|t| t.dyn_into::<web_sys::HtmlElement>().ok())
+                        {
+                            gutter_scroll.set(el.scroll_top());
+                        }
+                    }
+                ></textarea>
+            </div>
+            <div class="program-actions">
+                <button
+                    type="button"
+                    data-testid="program-load"
+                    disabled=move || !errors.get().is_empty()
+                    on:click=move |_| {
+                        ctx.load_text();
+                    }
+                >
+                    {move || t().load}
+                </button>
+                <span class="status" data-testid="program-status">
+                    {move || if up_to_date() { t().loaded } else { t().not_loaded }}
+                </span>
+            </div>
+            <div
+                class="errors"
+                data-testid="program-error"
+                role="status"
+                aria-live="polite"
+                class:has-errors=move || !errors.get().is_empty()
+            >
+                <Show when=move || !errors.get().is_empty() fallback=move || t().errors_none>
+                    <ul>
+                        <For
+                            each=move || errors.get()
+                            key=|(line, message)| (*line, message.clone())
+                            children=move |(line, message)| {
+                                view! {
+                                    <li>{move || format!("{} {line}: {message}", t().line)}</li>
+                                }
+                            }
+                        />
+                    </ul>
+                </Show>
+            </div>
+            <Sheet parsed=parsed />
+        </section>
+    }
+}
+
+/// The programming sheet of the text as it stands (when it parses).
+#[component]
+fn Sheet(parsed: Memo<Parsed>) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let rows = Memo::new(move |_| match parsed.get() {
+        Parsed::Good(program) => program
+            .sheet()
+            .rows
+            .iter()
+            .map(|r| {
+                (
+                    r.address,
+                    r.instruction.opcode.mnemonic().to_string(),
+                    r.instruction.address.to_string(),
+                    r.instruction.binary(),
+                )
+            })
+            .collect::<Vec<_>>(),
+        Parsed::Bad(_) => Vec::new(),
+    });
+    view! {
+        <table class="sheet" data-testid="program-sheet">
+            <caption>{move || t().sheet}</caption>
+            <thead>
+                <tr>
+                    <th>{move || t().sheet_address}</th>
+                    <th>{move || t().sheet_opcode}</th>
+                    <th>{move || t().sheet_operand}</th>
+                    <th>{move || t().sheet_binary}</th>
+                </tr>
+            </thead>
+            <tbody>
+                <For
+                    each=move || rows.get()
+                    key=|row| row.clone()
+                    children=|(address, opcode, operand, binary)| {
+                        view! {
+                            <tr>
+                                <td>{format!("{address:03}")}</td>
+                                <td>{opcode}</td>
+                                <td>{operand}</td>
+                                <td class="bin">{binary}</td>
+                            </tr>
+                        }
+                    }
+                />
+            </tbody>
+        </table>
+    }
+}

@@ -1,0 +1,165 @@
+//! Hashigo's web app: the MINASEC-U front panel, the program pane and the
+//! simulation loop. It renders and dispatches; the machine is the engine's.
+
+pub mod bench;
+pub mod components;
+pub mod examples;
+pub mod i18n;
+pub mod sim;
+pub mod state;
+pub mod storage;
+
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+use engine::minasec::Machine;
+use leptos::prelude::*;
+use leptos::wasm_bindgen::closure::Closure;
+use leptos::wasm_bindgen::JsCast;
+
+use components::board::Board;
+use components::header::{set_document_lang, Header};
+use components::program::ProgramPane;
+use i18n::Lang;
+use sim::Simulator;
+use state::Ctx;
+use storage::Restored;
+
+/// Starts the page: the benchmark when the URL asks for `?bench`, else the
+/// workspace with its simulation loop.
+pub fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        console_error_panic_hook::hook(info);
+        show_crash();
+    }));
+    let search = web_sys::window()
+        .and_then(|w| w.location().search().ok())
+        .unwrap_or_default();
+    if search.contains("bench") {
+        leptos::mount::mount_to_body(bench::BenchPage);
+        return;
+    }
+    let ctx = workspace();
+    leptos::mount::mount_to_body(move || view! { <App ctx=ctx /> });
+    start_loop(ctx);
+}
+
+/// A panic must not leave a dead page: say so, in both languages.
+fn show_crash() {
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    let Some(body) = document.body() else {
+        return;
+    };
+    if let Ok(div) = document.create_element("div") {
+        div.set_class_name("fatal");
+        let _ = div.set_attribute("role", "alert");
+        let _ = div.set_attribute("data-testid", "fatal");
+        div.set_text_content(Some(&format!(
+            "{} / {}",
+            Lang::Ja.texts().crashed,
+            Lang::En.texts().crashed
+        )));
+        let _ = body.prepend_with_node_1(&div);
+    }
+}
+
+/// The language: remembered, else the browser's.
+fn initial_lang() -> Lang {
+    storage::saved_lang()
+        .as_deref()
+        .and_then(Lang::from_code)
+        .unwrap_or_else(|| {
+            let tag = web_sys::window()
+                .and_then(|w| w.navigator().language())
+                .unwrap_or_default();
+            Lang::from_browser(&tag)
+        })
+}
+
+/// A workspace restored from autosave (or fresh).
+pub fn workspace() -> Ctx {
+    let lang = initial_lang();
+    set_document_lang(lang);
+    let ctx = Ctx::new(Simulator::new(Machine::new()), lang);
+    let texts = lang.texts();
+    match storage::restore() {
+        Restored::Saved(saved) => {
+            ctx.text.set(saved.program);
+            ctx.apply_settings(
+                saved.rv1_ms,
+                saved.rv2_ms,
+                saved.preset_tens,
+                saved.preset_ones,
+            );
+            // Program memory is battery-backed: the board keeps what was
+            // loaded. A text with errors stays in the pane, unloaded.
+            ctx.load_text();
+        }
+        Restored::Corrupt { kept_as } => {
+            ctx.notice
+                .set(Some(format!("{} {kept_as}", texts.corrupt_saved)));
+        }
+        Restored::Unavailable => ctx.notice.set(Some(texts.storage_unavailable.to_string())),
+        Restored::Nothing => {}
+    }
+    ctx
+}
+
+/// The workspace: header, notices, board and program pane.
+#[component]
+pub fn App(ctx: Ctx) -> impl IntoView {
+    provide_context(ctx);
+    view! {
+        <ErrorBoundary fallback=move |_| {
+            view! { <div class="fatal" role="alert">{move || ctx.lang.get().texts().crashed}</div> }
+        }>
+            <Header />
+            <Show when=move || ctx.notice.with(Option::is_some)>
+                <div class="notice" role="alert" data-testid="notice">
+                    {move || ctx.notice.get().unwrap_or_default()}
+                </div>
+            </Show>
+            <main class="workspace">
+                <Board />
+                <ProgramPane />
+            </main>
+        </ErrorBoundary>
+    }
+}
+
+/// Wall-clock milliseconds (`performance.now()`).
+pub fn now_ms() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map_or(0.0, |p| p.now())
+}
+
+/// The simulation loop: each animation frame advances the simulator by the
+/// frame's wall time (at the chosen speed, capped) and copies the panel into
+/// the signals that changed. Runs for the page's life.
+pub fn start_loop(ctx: Ctx) {
+    type FrameFn = Closure<dyn FnMut(f64)>;
+    let slot: Rc<RefCell<Option<FrameFn>>> = Rc::new(RefCell::new(None));
+    let again = Rc::clone(&slot);
+    let last = Cell::new(None::<f64>);
+    *slot.borrow_mut() = Some(Closure::new(move |timestamp: f64| {
+        let wall_ms = last.replace(Some(timestamp)).map_or(0.0, |l| timestamp - l);
+        ctx.sim.update_value(|s| s.frame(wall_ms, now_ms));
+        ctx.refresh();
+        if let Some(f) = again.borrow().as_ref() {
+            request_frame(f);
+        }
+    }));
+    let first = slot.borrow();
+    if let Some(f) = first.as_ref() {
+        request_frame(f);
+    }
+}
+
+fn request_frame(f: &Closure<dyn FnMut(f64)>) {
+    if let Some(window) = web_sys::window() {
+        let _ = window.request_animation_frame(f.as_ref().unchecked_ref());
+    }
+}

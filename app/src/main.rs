@@ -1,0 +1,5 @@
+//! The page's entry point: mount the app on the body.
+
+fn main() {
+    app::start();
+}
