@@ -46,6 +46,7 @@ pub struct PanelSignals {
     /// DIP switches, index = bit (7 = OP2).
     pub dip: [RwSignal<bool>; 8],
     pub write_held: RwSignal<bool>,
+    pub clock_held: RwSignal<bool>,
     pub count_clear_held: RwSignal<bool>,
     /// Simulated time in whole ms, and completed scans.
     pub sim_ms: RwSignal<u64>,
@@ -68,6 +69,7 @@ impl PanelSignals {
             preset: [RwSignal::new(0), RwSignal::new(0)],
             dip: bits(),
             write_held: RwSignal::new(false),
+            clock_held: RwSignal::new(false),
             count_clear_held: RwSignal::new(false),
             sim_ms: RwSignal::new(0),
             scans: RwSignal::new(0),
@@ -99,6 +101,7 @@ impl PanelSignals {
         put(self.preset[0], panel.preset.0);
         put(self.preset[1], panel.preset.1);
         put(self.write_held, panel.write_held);
+        put(self.clock_held, panel.clock_held);
         put(self.count_clear_held, panel.count_clear_held);
         put(self.sim_ms, sim_ms);
         put(self.scans, scans);
@@ -109,7 +112,7 @@ impl PanelSignals {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Parsed {
     /// A program, ready to load.
-    Good(Program),
+    Good(Box<Program>),
     /// Located errors: (line, message).
     Bad(Vec<(usize, String)>),
 }
@@ -118,7 +121,7 @@ impl Parsed {
     /// Parses the program pane's text.
     pub fn of(text: &str) -> Parsed {
         match Program::parse(text) {
-            Ok(program) => Parsed::Good(program),
+            Ok(program) => Parsed::Good(Box::new(program)),
             Err(errors) => Parsed::Bad(
                 errors
                     .into_iter()

@@ -141,7 +141,7 @@ fn PowerAndMode() -> impl IntoView {
                 })
             />
             <Momentary
-                held=Signal::derive(move || false)
+                held=ctx.panel.clock_held.into()
                 testid="clock-button".to_string()
                 label=Signal::derive(move || t().clock.to_string())
                 set=Callback::new(move |pressed| {

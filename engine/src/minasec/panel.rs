@@ -66,6 +66,8 @@ pub struct Panel {
     pub dip: u8,
     /// WRITE held.
     pub write_held: bool,
+    /// CLOCK held.
+    pub clock_held: bool,
     /// CNTCLR held.
     pub count_clear_held: bool,
     /// The clock-level view of the CPU.
@@ -96,6 +98,7 @@ impl Machine {
         panel.preset = (counter.set_value() / 10, counter.set_value() % 10);
         panel.dip = self.dip();
         panel.write_held = self.write_held;
+        panel.clock_held = self.clock_held;
         panel.count_clear_held = counter.clear_button();
         panel.cpu = if on {
             self.cpu_signals(instruction)

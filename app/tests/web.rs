@@ -1,0 +1,256 @@
+//! Component tests in a real browser (`wasm-pack test --headless --chrome`):
+//! mount the workspace, drive it with DOM events, assert the DOM and the
+//! machine behind it.
+
+use engine::minasec::{Command, Mode, TimerId};
+use engine::SimTime;
+use leptos::prelude::*;
+use wasm_bindgen::JsCast;
+use wasm_bindgen_test::*;
+use web_sys::{Element, HtmlElement};
+
+use app::i18n::Lang;
+use app::sim::Simulator;
+use app::state::Ctx;
+use app::App;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+fn document() -> web_sys::Document {
+    web_sys::window().unwrap().document().unwrap()
+}
+
+/// Mounts a fresh workspace (no frame loop: tests advance time themselves)
+/// into its own container and returns the context and the container.
+fn mount() -> (Ctx, Element) {
+    if let Some(store) = web_sys::window().unwrap().local_storage().unwrap() {
+        store.clear().unwrap();
+    }
+    let container = document().create_element("div").unwrap();
+    document().body().unwrap().append_child(&container).unwrap();
+    let ctx = Ctx::new(Simulator::new(engine::minasec::Machine::new()), Lang::En);
+    let html: HtmlElement = container.clone().unchecked_into();
+    let handle = leptos::mount::mount_to(html, move || view! { <App ctx=ctx /> });
+    handle.forget();
+    (ctx, container)
+}
+
+fn find(container: &Element, testid: &str) -> HtmlElement {
+    container
+        .query_selector(&format!("[data-testid=\"{testid}\"]"))
+        .unwrap()
+        .unwrap_or_else(|| panic!("no element {testid}"))
+        .unchecked_into()
+}
+
+fn attr(container: &Element, testid: &str, name: &str) -> String {
+    find(container, testid)
+        .get_attribute(name)
+        .unwrap_or_default()
+}
+
+/// Lets scheduled reactive work run.
+async fn settle() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        web_sys::window()
+            .unwrap()
+            .set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 0)
+            .unwrap();
+    });
+    wasm_bindgen_futures::JsFuture::from(promise).await.unwrap();
+}
+
+fn pointer(target: &HtmlElement, kind: &str) {
+    let init = web_sys::PointerEventInit::new();
+    init.set_bubbles(true);
+    let event = web_sys::PointerEvent::new_with_event_init_dict(kind, &init).unwrap();
+    target.dispatch_event(&event).unwrap();
+}
+
+fn key(target: &HtmlElement, kind: &str, key: &str) {
+    let init = web_sys::KeyboardEventInit::new();
+    init.set_bubbles(true);
+    init.set_key(key);
+    let event = web_sys::KeyboardEvent::new_with_keyboard_event_init_dict(kind, &init).unwrap();
+    target.dispatch_event(&event).unwrap();
+}
+
+fn change(target: &HtmlElement, kind: &str) {
+    let init = web_sys::EventInit::new();
+    init.set_bubbles(true);
+    let event = web_sys::Event::new_with_event_init_dict(kind, &init).unwrap();
+    target.dispatch_event(&event).unwrap();
+}
+
+#[wasm_bindgen_test]
+async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
+    let (ctx, c) = mount();
+    let x02 = find(&c, "input-X02");
+    pointer(&x02, "pointerdown");
+    pointer(&x02, "pointerup");
+    settle().await;
+    assert_eq!(attr(&c, "input-X02", "aria-pressed"), "true");
+    assert_eq!(ctx.sim.with_value(|s| s.machine().input_terminals()), 0b100);
+    pointer(&x02, "pointerdown");
+    pointer(&x02, "pointerup");
+    settle().await;
+    assert_eq!(attr(&c, "input-X02", "aria-pressed"), "false");
+    assert_eq!(ctx.sim.with_value(|s| s.machine().input_terminals()), 0);
+}
+
+#[wasm_bindgen_test]
+async fn lamps_and_leds_follow_the_machine_without_being_replaced() {
+    let (ctx, c) = mount();
+    ctx.text.set("LD X00\nST Y03\n".to_string());
+    assert!(ctx.load_text());
+    ctx.send(Command::SetInput(0, true));
+    ctx.send(Command::SetMode(Mode::Run));
+    let lamp_before = find(&c, "lamp-Y03");
+    assert_eq!(attr(&c, "lamp-Y03", "data-on"), "0");
+    ctx.sim
+        .update_value(|s| s.machine_mut().tick(SimTime::from_millis(20)));
+    ctx.refresh();
+    settle().await;
+    assert_eq!(attr(&c, "lamp-Y03", "data-on"), "1");
+    assert!(
+        lamp_before.is_same_node(Some(&find(&c, "lamp-Y03"))),
+        "updated in place"
+    );
+    assert_eq!(attr(&c, "lamp-Y00", "data-on"), "0");
+}
+
+#[wasm_bindgen_test]
+async fn knobs_are_sliders_driven_by_the_keyboard() {
+    let (ctx, c) = mount();
+    let rv1 = find(&c, "rv1");
+    assert_eq!(attr(&c, "rv1", "role"), "slider");
+    assert_eq!(attr(&c, "rv1", "aria-valuemin"), "0.10");
+    assert_eq!(attr(&c, "rv1", "aria-valuemax"), "1.10");
+    key(&rv1, "keydown", "End");
+    settle().await;
+    assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.10");
+    let delay = ctx
+        .sim
+        .with_value(|s| s.machine().timer(TimerId::T0).delay());
+    assert_eq!(delay, SimTime::from_millis(1100));
+    key(&rv1, "keydown", "ArrowDown");
+    settle().await;
+    assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.09");
+    key(&rv1, "keydown", "Home");
+    settle().await;
+    assert_eq!(attr(&c, "rv1", "aria-valuenow"), "0.10");
+
+    let ones = find(&c, "counter-set-ones");
+    key(&ones, "keydown", "ArrowUp");
+    key(&ones, "keydown", "ArrowUp");
+    settle().await;
+    assert_eq!(attr(&c, "counter-set-ones", "aria-valuenow"), "2");
+    assert_eq!(ctx.sim.with_value(|s| s.machine().counter().set_value()), 2);
+}
+
+#[wasm_bindgen_test]
+async fn the_clock_button_steps_one_instruction_per_press() {
+    let (ctx, c) = mount();
+    assert_eq!(ctx.sim.with_value(|s| s.machine().mode()), Mode::Halt);
+    let button = find(&c, "clock-button");
+    pointer(&button, "pointerdown");
+    settle().await;
+    assert_eq!(
+        attr(&c, "pc-led-0", "data-on"),
+        "0",
+        "the PC moves on release"
+    );
+    pointer(&button, "pointerup");
+    settle().await;
+    assert_eq!(attr(&c, "pc-led-0", "data-on"), "1");
+    key(&button, "keydown", " ");
+    key(&button, "keyup", " ");
+    settle().await;
+    assert_eq!(attr(&c, "pc-led-0", "data-on"), "0");
+    assert_eq!(attr(&c, "pc-led-1", "data-on"), "1");
+}
+
+#[wasm_bindgen_test]
+async fn program_errors_appear_as_you_type_and_block_loading() {
+    let (_ctx, c) = mount();
+    let text: web_sys::HtmlTextAreaElement = find(&c, "program-text").unchecked_into();
+    text.set_value("LD X00\nST Q1\n");
+    change(&text.clone().unchecked_into(), "input");
+    settle().await;
+    let errors = find(&c, "program-error").text_content().unwrap_or_default();
+    assert!(
+        errors.contains("line 2") && errors.contains("Q1"),
+        "{errors}"
+    );
+    let load: web_sys::HtmlButtonElement = find(&c, "program-load").unchecked_into();
+    assert!(load.disabled());
+    text.set_value("LD X00\nST Y01\n");
+    change(&text.clone().unchecked_into(), "input");
+    settle().await;
+    assert!(!load.disabled());
+    assert_eq!(
+        find(&c, "program-error").text_content().unwrap_or_default(),
+        "no errors"
+    );
+}
+
+#[wasm_bindgen_test]
+async fn opening_the_seed_example_sets_the_panel_and_can_be_undone() {
+    let (ctx, c) = mount();
+    ctx.text.set("; my own work\nLD X07\n".to_string());
+    let select: web_sys::HtmlSelectElement = find(&c, "example").unchecked_into();
+    select.set_value("seed-test");
+    change(&select.clone().unchecked_into(), "change");
+    settle().await;
+    assert_eq!(ctx.text.get_untracked(), engine::minasec::SEED_TEST_PROGRAM);
+    assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.10");
+    assert_eq!(attr(&c, "rv2", "aria-valuenow"), "1.0");
+    assert_eq!(attr(&c, "counter-set-tens", "aria-valuenow"), "1");
+    assert_eq!(select.value(), "", "the select returns to its prompt");
+    let memory = ctx.sim.with_value(|s| *s.machine().memory());
+    assert_eq!(memory[1], 0b100_01000, "loaded into the board");
+    find(&c, "example-undo").click();
+    settle().await;
+    assert_eq!(ctx.text.get_untracked(), "; my own work\nLD X07\n");
+}
+
+#[wasm_bindgen_test]
+async fn the_language_select_switches_every_label() {
+    let (_ctx, c) = mount();
+    assert_eq!(
+        find(&c, "program-load").text_content().unwrap(),
+        "Load into the board"
+    );
+    let select: web_sys::HtmlSelectElement = find(&c, "lang").unchecked_into();
+    select.set_value("ja");
+    change(&select.clone().unchecked_into(), "change");
+    settle().await;
+    assert_eq!(find(&c, "program-load").text_content().unwrap(), "書き込む");
+}
+
+#[wasm_bindgen_test]
+async fn the_seven_segment_display_shows_the_count() {
+    let (ctx, c) = mount();
+    ctx.text.set("LD X00\nST C0\n".to_string());
+    assert!(ctx.load_text());
+    ctx.send(Command::SetCounterPreset(5, 0));
+    ctx.send(Command::SetMode(Mode::Run));
+    for _ in 0..3 {
+        ctx.send(Command::SetInput(0, true));
+        ctx.sim
+            .update_value(|s| s.machine_mut().tick(SimTime::from_millis(20)));
+        ctx.send(Command::SetInput(0, false));
+        ctx.sim
+            .update_value(|s| s.machine_mut().tick(SimTime::from_millis(20)));
+    }
+    ctx.refresh();
+    settle().await;
+    assert_eq!(find(&c, "seg7").text_content().unwrap(), "03");
+    ctx.send(Command::Power(false));
+    settle().await;
+    assert_eq!(
+        find(&c, "seg7").text_content().unwrap(),
+        "",
+        "dark without power"
+    );
+}

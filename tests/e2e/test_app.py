@@ -1,0 +1,217 @@
+"""End-to-end: the release page in headless Chromium, driven as a user would."""
+
+import json
+import pathlib
+import re
+import subprocess
+import time
+
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select, WebDriverWait
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+STORAGE_KEY = "hashigo.minasec-u.v1"
+
+
+def el(driver, testid):
+    return driver.find_element(By.CSS_SELECTOR, f'[data-testid="{testid}"]')
+
+
+def wait(driver, condition, timeout=20, message=""):
+    return WebDriverWait(driver, timeout, poll_frequency=0.05).until(lambda d: condition(), message)
+
+
+def open_fresh(driver, base_url, lang="en"):
+    """The page with empty storage and the interface in `lang`."""
+    driver.get(base_url)
+    driver.execute_script("localStorage.clear(); localStorage.setItem('hashigo.lang', arguments[0]);", lang)
+    driver.get(base_url)
+    wait(driver, lambda: el(driver, "mode-run"), message="the board mounts")
+
+
+def on(driver, testid):
+    return el(driver, testid).get_attribute("data-on") == "1"
+
+
+def severe_console_messages(driver):
+    return [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+
+
+def test_seed_program_counts_to_ten_and_lights_y01(driver, base_url, artifacts):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: "ST   C0R" in el(driver, "program-text").get_attribute("value"))
+    # The book's panel settings came with the example.
+    assert el(driver, "rv1").get_attribute("aria-valuenow") == "1.10"
+    assert el(driver, "rv2").get_attribute("aria-valuenow") == "1.0"
+    assert el(driver, "counter-set-tens").get_attribute("aria-valuenow") == "1"
+    assert el(driver, "counter-set-ones").get_attribute("aria-valuenow") == "0"
+    assert el(driver, "seg7").text == "00"
+
+    Select(el(driver, "speed")).select_by_value("max")
+    el(driver, "mode-run").click()
+    wait(driver, lambda: any(on(driver, f"pc-led-{b}") for b in range(8)), message="the PC runs")
+    el(driver, "input-X00").click()  # start: toggled on
+    wait(driver, lambda: on(driver, "lamp-Y00"), message="Y00 latches on")
+    el(driver, "input-X00").click()  # release the start button
+    assert el(driver, "input-X00").get_attribute("aria-pressed") == "false"
+
+    def counted_to_ten():
+        return el(driver, "seg7").text == "10" and on(driver, "lamp-Y01")
+
+    wait(driver, counted_to_ten, timeout=60, message="the counter reaches 10 and Y01 lights")
+    assert on(driver, "lamp-Y00"), "still running (self-hold)"
+    time.sleep(0.5)
+    assert el(driver, "seg7").text == "10", "the match stops the count"
+    driver.save_screenshot(str(artifacts / "panel.png"))
+
+    # Stop keeps the count; X02 clears it.
+    el(driver, "input-X01").click()
+    wait(driver, lambda: not on(driver, "lamp-Y00"), message="stop drops Y00")
+    el(driver, "input-X01").click()
+    assert el(driver, "seg7").text == "10"
+    el(driver, "input-X02").click()
+    wait(driver, lambda: el(driver, "seg7").text == "00", message="X02 clears the count")
+    assert severe_console_messages(driver) == []
+
+
+def test_real_time_speed_counts_after_t0s_delay(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    el(driver, "mode-run").click()
+    el(driver, "input-X00").click()
+    started = time.monotonic()
+    wait(driver, lambda: on(driver, "lamp-Y00"))
+    wait(driver, lambda: el(driver, "seg7").text == "01", timeout=10)
+    elapsed = time.monotonic() - started
+    # At x1 the first count comes T0's 1.1 s after start (plus a frame or two).
+    assert 0.9 < elapsed < 3.0, elapsed
+    assert el(driver, "seg7").text == "01"
+
+
+def test_language_switch_is_remembered(driver, base_url):
+    open_fresh(driver, base_url, lang="en")
+    title = driver.find_element(By.CSS_SELECTOR, "header h1")
+    assert title.text == "Hashigo — MINASEC-U"
+    Select(el(driver, "lang")).select_by_value("ja")
+    wait(driver, lambda: "梯子" in driver.find_element(By.CSS_SELECTOR, "header h1").text)
+    assert el(driver, "program-load").text == "書き込む"
+    assert driver.find_element(By.TAG_NAME, "html").get_attribute("lang") == "ja"
+    driver.refresh()
+    wait(driver, lambda: el(driver, "mode-run"))
+    assert "梯子" in driver.find_element(By.CSS_SELECTOR, "header h1").text
+    assert Select(el(driver, "lang")).first_selected_option.get_attribute("value") == "ja"
+
+
+def test_default_language_follows_the_browser(driver, base_url):
+    driver.get(base_url)
+    driver.execute_script("localStorage.clear();")
+    driver.get(base_url)
+    wait(driver, lambda: el(driver, "mode-run"))
+    # The driver runs with --lang=en-US and nothing remembered.
+    assert Select(el(driver, "lang")).first_selected_option.get_attribute("value") == "en"
+
+
+def test_autosave_survives_a_reload(driver, base_url):
+    open_fresh(driver, base_url)
+    text = el(driver, "program-text")
+    text.send_keys("LD X00\nST Y00\n")
+    el(driver, "program-load").click()
+    knob = el(driver, "rv1")
+    knob.click()
+    knob.send_keys(Keys.END)
+    wait(driver, lambda: el(driver, "rv1").get_attribute("aria-valuenow") == "1.10")
+    el(driver, "counter-set-ones").send_keys(Keys.ARROW_UP, Keys.ARROW_UP)
+    wait(driver, lambda: el(driver, "counter-set-ones").get_attribute("aria-valuenow") == "2")
+
+    driver.refresh()
+    wait(driver, lambda: el(driver, "mode-run"))
+    assert el(driver, "program-text").get_attribute("value") == "LD X00\nST Y00\n"
+    assert el(driver, "rv1").get_attribute("aria-valuenow") == "1.10"
+    assert el(driver, "counter-set-ones").get_attribute("aria-valuenow") == "2"
+    # The restored program is in the board: it runs.
+    el(driver, "mode-run").click()
+    el(driver, "input-X00").click()
+    wait(driver, lambda: on(driver, "lamp-Y00"), message="the restored program runs")
+
+
+def test_a_corrupt_saved_value_is_kept_aside_and_reported(driver, base_url):
+    open_fresh(driver, base_url)
+    driver.execute_script("localStorage.setItem(arguments[0], '{not json');", STORAGE_KEY)
+    driver.refresh()
+    notice = wait(driver, lambda: el(driver, "notice"))
+    match = re.search(r"(hashigo\.minasec-u\.v1\.corrupt\.\d+)", notice.text)
+    assert match, notice.text
+    kept = driver.execute_script("return localStorage.getItem(arguments[0]);", match.group(1))
+    assert kept == "{not json"
+
+
+def test_program_errors_are_shown_on_their_line(driver, base_url):
+    open_fresh(driver, base_url)
+    el(driver, "program-text").send_keys("LD X00\nLD X09\nFOO Y00\n")
+    errors = wait(driver, lambda: el(driver, "program-error"))
+    wait(driver, lambda: "line 2" in errors.text and "X09" in errors.text)
+    assert "line 3" in errors.text and "FOO" in errors.text
+    marked = driver.find_elements(By.CSS_SELECTOR, ".gutter .ln.err")
+    assert [m.text.strip() for m in marked] == ["2", "3"]
+    assert not el(driver, "program-load").is_enabled()
+    # The sheet shows the text once it is good.
+    text = el(driver, "program-text")
+    text.clear()
+    text.send_keys("LD X00\nOR Y00\n")
+    wait(driver, lambda: "no errors" in el(driver, "program-error").text)
+    rows = [r.text for r in driver.find_elements(By.CSS_SELECTOR, '[data-testid="program-sheet"] tbody tr')]
+    assert rows == ["000 LD X00 000 00000", "001 OR Y00 100 01000"]
+
+
+def test_keyboard_operates_the_controls(driver, base_url):
+    open_fresh(driver, base_url)
+    x03 = el(driver, "input-X03")
+    x03.send_keys(Keys.SPACE)
+    wait(driver, lambda: x03.get_attribute("aria-pressed") == "true")
+    rv2 = el(driver, "rv2")
+    rv2.send_keys(Keys.HOME)
+    wait(driver, lambda: rv2.get_attribute("aria-valuenow") == "1.0")
+    rv2.send_keys(Keys.ARROW_RIGHT)
+    wait(driver, lambda: rv2.get_attribute("aria-valuenow") == "1.1")
+    rv2.send_keys(Keys.END)
+    wait(driver, lambda: rv2.get_attribute("aria-valuenow") == "11.0")
+    assert rv2.get_attribute("role") == "slider"
+    tens = el(driver, "counter-set-tens")
+    tens.send_keys(Keys.END)
+    wait(driver, lambda: tens.get_attribute("aria-valuenow") == "9")
+
+
+def test_first_paint_and_wasm_speed(driver, base_url, artifacts):
+    driver.get(base_url)
+    wait(driver, lambda: el(driver, "mode-run"))
+    paint = wait(driver, lambda: driver.execute_script(
+        "const e = performance.getEntriesByName('first-contentful-paint')[0];"
+        "return e ? e.startTime : null;"
+    ), message="the page paints")
+    assert paint > 0
+
+    driver.get(base_url + "/?bench")
+    result = wait(driver, lambda: el(driver, "bench-result"), timeout=10)
+    wait(driver, lambda: result.text.startswith("steps="), timeout=120, message="the bench finishes")
+    fields = dict(f.split("=") for f in result.text.split())
+    wasm_rate = float(fields["steps_per_second"])
+    assert wasm_rate > 0
+
+    native = subprocess.run(
+        [str(ROOT / "target/release/hashigo"), "bench", "--machine", "minasec-u", "--program",
+         str(ROOT / "engine/programs/minasec-u/bench-256.il"), "--steps", fields["steps"]],
+        check=True, capture_output=True, text=True,
+    ).stdout
+    native_rate = float(dict(f.split("=") for f in native.split())["steps_per_second"])
+    wasm = sorted(ROOT.glob("dist/*.wasm"))[0]
+    figures = {
+        "first_contentful_paint_ms": round(paint, 1),
+        "wasm_steps_per_second": round(wasm_rate),
+        "native_steps_per_second": round(native_rate),
+        "wasm_to_native": round(wasm_rate / native_rate, 3),
+        "wasm_bytes": wasm.stat().st_size,
+    }
+    (artifacts / "figures.json").write_text(json.dumps(figures, indent=2) + "\n")
+    print(figures)
