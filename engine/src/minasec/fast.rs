@@ -35,12 +35,13 @@ enum Kind {
     StoreSpecial,
 }
 
-/// One decoded step: three bytes.
+/// One decoded step. Fields are words, not bytes: the kernel reads them
+/// with plain aligned loads instead of unpacking bytes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) struct Micro {
     kind: Kind,
-    bit: u8,
-    inv: u8,
+    bit: u32,
+    inv: u32,
 }
 
 impl Micro {
@@ -58,8 +59,8 @@ impl Micro {
         };
         Micro {
             kind,
-            bit: address.index(),
-            inv: u8::from(opcode.inverts()),
+            bit: u32::from(address.index()),
+            inv: u32::from(opcode.inverts()),
         }
     }
 }
@@ -75,7 +76,7 @@ pub(super) struct DecodedProgram {
 /// Two consecutive steps and the code of their kinds (`6·first + second`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Pair {
-    code: u8,
+    code: u32,
     first: Micro,
     second: Micro,
 }
@@ -93,7 +94,7 @@ impl DecodedProgram {
         for (pair, bytes) in pairs.iter_mut().zip(memory.chunks_exact(2)) {
             let (first, second) = (Micro::decode(bytes[0]), Micro::decode(bytes[1]));
             *pair = Pair {
-                code: first.kind as u8 * KINDS + second.kind as u8,
+                code: u32::from(first.kind as u8 * KINDS + second.kind as u8),
                 first,
                 second,
             };
@@ -162,7 +163,7 @@ struct Regs {
 /// Callers pass constant kinds, so each use compiles to its one arm.
 #[inline(always)]
 fn step<const KIND: u8>(m: Micro, k: usize, r: &mut Regs, devices: &mut ScanDevices<'_>) {
-    let inv = u32::from(m.inv);
+    let inv = m.inv;
     match KIND {
         0 => r.acc = ((r.bus >> m.bit) ^ inv) & 1,
         // acc holds only bit 0, so the AND needs no mask.
@@ -179,7 +180,7 @@ fn step<const KIND: u8>(m: Micro, k: usize, r: &mut Regs, devices: &mut ScanDevi
             let value = r.acc ^ inv;
             if (r.special >> m.bit) & 1 != value {
                 r.special ^= 1 << m.bit;
-                r.bus = devices.store(k, m.bit, value != 0, r.bus);
+                r.bus = devices.store(k, m.bit as u8, value != 0, r.bus);
             }
         }
     }
