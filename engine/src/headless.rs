@@ -12,6 +12,8 @@ pub trait Simulation {
     /// A watched device, resolved once before the run.
     type Watch: Copy;
 
+    /// Applies a `--set NAME=VALUE`; nothing changes on error.
+    fn setting(&mut self, name: &str, value: &str) -> Result<(), String>;
     /// Resolves a device name given to `--watch`.
     fn watch(&self, name: &str) -> Result<Self::Watch, String>;
     /// The watched value after the last completed scan.

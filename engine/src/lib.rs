@@ -6,6 +6,7 @@
 pub mod error;
 pub mod events;
 pub mod headless;
+pub mod io86a;
 pub mod minasec;
 pub mod time;
 

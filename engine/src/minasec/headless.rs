@@ -90,6 +90,10 @@ impl Machine {
 impl Simulation for Machine {
     type Watch = Watch;
 
+    fn setting(&mut self, name: &str, value: &str) -> Result<(), String> {
+        Machine::apply_setting(self, name, value)
+    }
+
     fn watch(&self, name: &str) -> Result<Watch, String> {
         let upper = name.to_ascii_uppercase();
         match upper.as_str() {

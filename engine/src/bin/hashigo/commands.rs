@@ -4,7 +4,9 @@
 use std::time::Instant;
 
 use engine::events::parse_events;
+use engine::headless::Simulation;
 use engine::headless::{self, RunError, Schedule};
+use engine::io86a;
 use engine::minasec::{self, Machine};
 use engine::SimTime;
 
@@ -23,6 +25,15 @@ enum MachineId {
 }
 
 impl MachineId {
+    fn name(self) -> &'static str {
+        match self {
+            MachineId::MinasecU => "minasec-u",
+            MachineId::Io86a => "io86a",
+            MachineId::AvrPlc => "avr-plc",
+            MachineId::ArduinoPlc => "arduino-plc",
+        }
+    }
+
     fn parse(id: &str) -> Result<MachineId, String> {
         match id {
             "minasec-u" => Ok(MachineId::MinasecU),
@@ -35,11 +46,10 @@ impl MachineId {
         }
     }
 
-    /// Only MINASEC-U is emulated so far; the others say so.
+    /// MINASEC-U and IO86A are emulated so far; the others say so.
     fn require_supported(self) -> Result<(), String> {
         match self {
-            MachineId::MinasecU => Ok(()),
-            MachineId::Io86a => Err("machine io86a is not supported yet".into()),
+            MachineId::MinasecU | MachineId::Io86a => Ok(()),
             MachineId::AvrPlc => Err("machine avr-plc is not supported yet".into()),
             MachineId::ArduinoPlc => Err("machine arduino-plc is not supported yet".into()),
         }
@@ -50,23 +60,43 @@ fn one(problem: String) -> Problems {
     vec![problem]
 }
 
-/// Reads `--machine` and `--program` and parses a MINASEC-U program.
-fn load_minasec(args: &Args) -> Result<minasec::Program, Problems> {
+/// A program parsed for its machine.
+enum Loaded {
+    MinasecU(Box<minasec::Program>),
+    Io86a(io86a::Program),
+}
+
+/// Reads `--machine`, `--program` and `--format` and parses the program for
+/// that machine; `Err` holds every problem found.
+fn load(args: &Args) -> Result<Loaded, Problems> {
     let machine = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
     machine.require_supported().map_err(one)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
     let source = SourceFile::read(path).map_err(one)?;
     match format {
-        Format::Il => minasec::Program::parse(&source.text).map_err(|errors| source.located(&errors)),
-        Format::Asm => Err(one(format!(
-            "{}: minasec-u programs are mnemonic text (.il), not .asm",
-            source.name
-        ))),
-        Format::Json | Format::Xml => Err(one(format!(
-            "{}: ladder projects (.json, .xml) are not supported yet: they come with the ladder compiler",
-            source.name
-        ))),
+        Format::Il => {}
+        Format::Asm => {
+            return Err(one(format!(
+                "{}: {} programs are mnemonic text (.il), not .asm",
+                source.name,
+                machine.name()
+            )))
+        }
+        Format::Json | Format::Xml => {
+            return Err(one(format!(
+                "{}: ladder projects (.json, .xml) are not supported yet: they come with the ladder compiler",
+                source.name
+            )))
+        }
+    }
+    match machine {
+        MachineId::MinasecU => minasec::Program::parse(&source.text)
+            .map(|p| Loaded::MinasecU(Box::new(p)))
+            .map_err(|errors| source.located(&errors)),
+        _ => io86a::Program::parse(&source.text)
+            .map(Loaded::Io86a)
+            .map_err(|errors| source.located(&errors)),
     }
 }
 
@@ -80,11 +110,34 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
     )
     .map_err(one)?;
     // An unknown or unsupported machine is the only thing worth saying.
-    MachineId::parse(args.required("machine").map_err(one)?)
-        .and_then(MachineId::require_supported)
-        .map_err(one)?;
-    let mut problems = Vec::new();
-    let program = load_minasec(&args);
+    let id = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
+    id.require_supported().map_err(one)?;
+    match load(&args) {
+        Ok(Loaded::MinasecU(p)) => {
+            let mut m = Machine::for_run();
+            m.load(&p);
+            run_with(&args, m, Vec::new())
+        }
+        Ok(Loaded::Io86a(p)) => run_with(&args, io86a::Machine::new(p), Vec::new()),
+        // Still check everything else, on a machine with an empty program.
+        Err(problems) => match id {
+            MachineId::MinasecU => run_with(&args, Machine::for_run(), problems),
+            _ => run_with(
+                &args,
+                io86a::Machine::new(io86a::Program::default()),
+                problems,
+            ),
+        },
+    }
+}
+
+/// Checks the rest of `hashigo run`'s options against `sim` and runs it;
+/// `problems` already found are reported with any new ones.
+fn run_with<S: Simulation>(
+    args: &Args,
+    mut sim: S,
+    mut problems: Problems,
+) -> Result<(), Problems> {
     let until = args
         .required("until")
         .and_then(|t| SimTime::parse(t).map_err(|e| format!("--until: {e}")));
@@ -100,11 +153,9 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
     if watch.is_empty() || watch.iter().any(String::is_empty) {
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
-
-    let mut machine = Machine::for_run();
     for setting in args.all("set") {
         let result = match setting.split_once('=') {
-            Some((name, value)) => machine.apply_setting(name.trim(), value.trim()),
+            Some((name, value)) => sim.setting(name.trim(), value.trim()),
             None => Err("expected NAME=VALUE".to_string()),
         };
         if let Err(e) = result {
@@ -131,18 +182,15 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
             None
         }
     };
-
-    let program = program.map_err(|p| problems.extend(p)).ok();
     let until = until.map_err(|p| problems.push(p)).ok();
     let every = every.map_err(|p| problems.push(p)).ok();
-    let (Some(program), Some(until), Some(every)) = (program, until, every) else {
+    let (Some(until), Some(every)) = (until, every) else {
         return Err(problems);
     };
     if !problems.is_empty() {
         return Err(problems);
     }
 
-    machine.load(&program);
     let schedule = Schedule {
         until,
         every: every.unwrap_or(until),
@@ -151,7 +199,7 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
         Some((source, list)) => (source.name.as_str(), list.as_slice()),
         None => ("", &[][..]),
     };
-    let csv = headless::run(&mut machine, event_list, schedule, &watch).map_err(|errors| {
+    let csv = headless::run(&mut sim, event_list, schedule, &watch).map_err(|errors| {
         errors
             .into_iter()
             .map(|e| match e {
@@ -173,7 +221,7 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
 /// `hashigo bench`.
 pub fn bench(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(rest, &["machine", "program", "format", "steps"]).map_err(one)?;
-    let program = load_minasec(&args)?;
+    let loaded = load(&args)?;
     let steps_text = args.required("steps").map_err(one)?;
     let steps: u64 = steps_text.parse().ok().filter(|&n| n > 0).ok_or_else(|| {
         one(format!(
@@ -181,6 +229,10 @@ pub fn bench(rest: &[String]) -> Result<(), Problems> {
         ))
     })?;
 
+    let program = match loaded {
+        Loaded::MinasecU(program) => *program,
+        Loaded::Io86a(program) => return bench_io86a(program, steps),
+    };
     let mut machine = Machine::for_run();
     machine.load(&program);
     let period = machine.speed().period().as_nanos();
@@ -193,20 +245,47 @@ pub fn bench(rest: &[String]) -> Result<(), Problems> {
     machine.run_until(end);
     let seconds = started.elapsed().as_secs_f64();
     debug_assert_eq!(machine.clocks(), steps);
+    print_bench(steps, seconds);
+    Ok(())
+}
+
+fn print_bench(steps: u64, seconds: f64) {
     let rate = if seconds > 0.0 {
         steps as f64 / seconds
     } else {
         f64::INFINITY
     };
     println!("steps={steps} seconds={seconds:.6} steps_per_second={rate:.0}");
+}
+
+/// IO86A: whole scans back to back until at least `steps` instructions ran.
+fn bench_io86a(program: io86a::Program, steps: u64) -> Result<(), Problems> {
+    let mut machine = io86a::Machine::new(program);
+    let per_scan = machine.steps_per_scan() as u64;
+    if per_scan == 0 {
+        return Err(one(
+            "--program: the program has no instructions to run".to_string()
+        ));
+    }
+    let scans = steps.div_ceil(per_scan);
+    let end = scans
+        .checked_mul(machine.scan_period().as_nanos())
+        .map(SimTime::from_nanos)
+        .ok_or_else(|| one(format!("--steps {steps}: too many for the simulated clock")))?;
+    let started = Instant::now();
+    machine.run_until(end);
+    let seconds = started.elapsed().as_secs_f64();
+    print_bench(scans * per_scan, seconds);
     Ok(())
 }
 
 /// `hashigo asm`.
 pub fn asm(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(rest, &["machine", "program", "format"]).map_err(one)?;
-    let program = load_minasec(&args)?;
-    print!("{}", program.sheet());
+    match load(&args)? {
+        Loaded::MinasecU(program) => print!("{}", program.sheet()),
+        Loaded::Io86a(program) => print!("{}", program.listing()),
+    }
     Ok(())
 }
 

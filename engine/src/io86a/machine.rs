@@ -1,0 +1,376 @@
+//! PLC-IO86A's scan: inputs latched, the program run to END, outputs driven,
+//! once every scan period (machines.md §2, FX semantics where decided).
+
+use super::asm::Program;
+use super::isa::{Bit, Instruction, Word};
+use crate::time::SimTime;
+
+/// The default scan period.
+pub const DEFAULT_SCAN: SimTime = SimTime::from_millis(1);
+/// 100 ms timers are T00-T23; T24-T31 count 10 ms.
+pub const FIRST_10MS_TIMER: u8 = 24;
+const CURRENT_MAX: u64 = 32767;
+
+/// An on-delay timer (FX): while its coil stays on it adds up the elapsed
+/// scan time; the contact is on when whole base units ≥ the set value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Timer {
+    /// The coil as the last scan left it.
+    pub coil: bool,
+    /// Time accumulated since the coil turned on.
+    pub elapsed: SimTime,
+    /// The contact.
+    pub on: bool,
+}
+
+impl Timer {
+    /// The timer's base unit.
+    pub const fn base(n: u8) -> SimTime {
+        if n < FIRST_10MS_TIMER {
+            SimTime::from_millis(100)
+        } else {
+            SimTime::from_millis(10)
+        }
+    }
+
+    /// The current value in base units, capped at 32767.
+    pub fn current(&self, n: u8) -> i16 {
+        (self.elapsed.as_nanos() / Timer::base(n).as_nanos()).min(CURRENT_MAX) as i16
+    }
+}
+
+/// A counter (FX): counts OFF→ON of its OUT rung up to the set value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counter {
+    /// The count, 0..=set value.
+    pub count: i16,
+    /// The contact: count ≥ set value.
+    pub on: bool,
+}
+
+/// Every device's state: what contacts read and what a scan leaves.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Devices {
+    /// The input image (bit n = X0n).
+    pub x: u8,
+    /// Output latches (bit n = Y0n).
+    pub y: u8,
+    /// Relays M00-M63.
+    pub m: u64,
+    /// Relays S00-S07.
+    pub s: u8,
+    pub timers: [Timer; 32],
+    pub counters: [Counter; 8],
+    /// Data registers D00-D07.
+    pub d: [i16; 8],
+}
+
+impl Devices {
+    /// What a contact on `bit` reads.
+    pub fn bit(&self, bit: Bit) -> bool {
+        match bit {
+            Bit::X(n) => self.x >> n & 1 != 0,
+            Bit::Y(n) => self.y >> n & 1 != 0,
+            Bit::M(n) => self.m >> n & 1 != 0,
+            Bit::S(n) => self.s >> n & 1 != 0,
+            Bit::T(n) => self.timers[usize::from(n)].on,
+            Bit::C(n) => self.counters[usize::from(n)].on,
+        }
+    }
+
+    /// A word operand's value.
+    pub fn word(&self, word: Word) -> i16 {
+        match word {
+            Word::K(k) => k,
+            Word::D(n) => self.d[usize::from(n)],
+            Word::T(n) => self.timers[usize::from(n)].current(n),
+            Word::C(n) => self.counters[usize::from(n)].count,
+        }
+    }
+
+    fn set_bit(&mut self, bit: Bit, on: bool) {
+        fn put8(v: &mut u8, n: u8, on: bool) {
+            *v = (*v & !(1 << n)) | (u8::from(on) << n);
+        }
+        match bit {
+            Bit::X(_) | Bit::T(_) => {} // the assembler refuses these
+            Bit::Y(n) => put8(&mut self.y, n, on),
+            Bit::S(n) => put8(&mut self.s, n, on),
+            Bit::M(n) => self.m = (self.m & !(1 << n)) | (u64::from(on) << n),
+            Bit::C(n) => {
+                let c = &mut self.counters[usize::from(n)];
+                c.on = on;
+                if !on {
+                    c.count = 0;
+                }
+            }
+        }
+    }
+}
+
+/// A write that `SETS`/`RSTS` sends to the linked device.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LinkWrite {
+    /// The linked device's Y or M.
+    pub bit: Bit,
+    /// ON for SETS, OFF for RSTS.
+    pub on: bool,
+}
+
+/// One PLC-IO86A.
+#[derive(Clone, Debug)]
+pub struct Machine {
+    program: Program,
+    scan_period: SimTime,
+    running: bool,
+    input_terminals: u8,
+    devices: Devices,
+    output_terminals: u8,
+    /// The previous rung state of each instruction (PLS, PLF, OUT C).
+    edges: Vec<bool>,
+    stack: Vec<bool>,
+    first_scan: bool,
+    now: SimTime,
+    last_scan_at: SimTime,
+    next_scan: SimTime,
+    scans: u64,
+    last_scan: Devices,
+    link_writes: Vec<LinkWrite>,
+}
+
+/// The system relays.
+const M_OFF: u8 = 56;
+const M_ON: u8 = 57;
+const M_5HZ: u8 = 58;
+const M_1S: u8 = 59;
+const M_GT: u8 = 60;
+const M_EQ: u8 = 61;
+const M_LT: u8 = 62;
+const M_FIRST: u8 = 63;
+
+impl Machine {
+    /// A device with `program`, powered on and in RUN (as after power-up).
+    pub fn new(program: Program) -> Machine {
+        let edges = vec![false; program.instructions().len()];
+        Machine {
+            program,
+            scan_period: DEFAULT_SCAN,
+            running: true,
+            input_terminals: 0,
+            devices: Devices::default(),
+            output_terminals: 0,
+            edges,
+            stack: Vec::with_capacity(8),
+            first_scan: true,
+            now: SimTime::ZERO,
+            last_scan_at: SimTime::ZERO,
+            next_scan: DEFAULT_SCAN,
+            scans: 0,
+            last_scan: Devices::default(),
+            link_writes: Vec::new(),
+        }
+    }
+
+    /// The scan period.
+    pub fn scan_period(&self) -> SimTime {
+        self.scan_period
+    }
+
+    /// Sets the scan period (must be above zero); the next scan comes one
+    /// new period after the last.
+    pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
+        if period == SimTime::ZERO || period > SimTime::from_secs(10) {
+            return Err(format!(
+                "scan period {}ms is out of range: above 0 and at most 10s",
+                period
+            ));
+        }
+        self.scan_period = period;
+        self.next_scan = self.last_scan_at + period;
+        Ok(())
+    }
+
+    /// The simulated time.
+    pub fn now(&self) -> SimTime {
+        self.now
+    }
+
+    /// Scans run since power-on.
+    pub fn scans(&self) -> u64 {
+        self.scans
+    }
+
+    /// The devices now.
+    pub fn devices(&self) -> &Devices {
+        &self.devices
+    }
+
+    /// The devices as the last completed scan left them.
+    pub fn last_scan(&self) -> &Devices {
+        &self.last_scan
+    }
+
+    /// The output terminals (bit n = Y0n).
+    pub fn output_terminals(&self) -> u8 {
+        self.output_terminals
+    }
+
+    /// Sets input terminal `X0n`.
+    pub fn set_input(&mut self, n: u8, on: bool) {
+        if n < 8 {
+            self.input_terminals = (self.input_terminals & !(1 << n)) | (u8::from(on) << n);
+        }
+    }
+
+    /// Takes the SETS/RSTS writes of the scans so far, oldest first.
+    pub fn take_link_writes(&mut self) -> Vec<LinkWrite> {
+        std::mem::take(&mut self.link_writes)
+    }
+
+    /// Writes a bit as a linked device's SETS/RSTS (or the terminal's
+    /// `Ynn=1`) does: at once, between scans.
+    pub fn write_bit(&mut self, bit: Bit, on: bool) {
+        self.devices.set_bit(bit, on);
+    }
+
+    /// Instructions one scan executes (up to and including the first END).
+    pub fn steps_per_scan(&self) -> usize {
+        let all = self.program.instructions();
+        all.iter()
+            .position(|i| *i == Instruction::End)
+            .map_or(all.len(), |end| end + 1)
+    }
+
+    /// Runs every scan due at or before `t`.
+    pub fn run_until(&mut self, t: SimTime) {
+        while self.running && self.next_scan <= t {
+            self.now = self.next_scan;
+            self.scan();
+            self.next_scan = self.now + self.scan_period;
+        }
+        self.now = self.now.max(t);
+    }
+
+    /// Runs every scan due strictly before `t`; the time becomes `t`.
+    pub fn run_before(&mut self, t: SimTime) {
+        if t > SimTime::ZERO {
+            self.run_until(SimTime::from_nanos(t.as_nanos() - 1));
+        }
+        self.now = self.now.max(t);
+    }
+
+    /// One scan at the current time.
+    fn scan(&mut self) {
+        let elapsed = self.now - self.last_scan_at;
+        self.last_scan_at = self.now;
+        let d = &mut self.devices;
+        d.x = self.input_terminals;
+        let now_ms = self.now.as_nanos() / 1_000_000;
+        let specials = [
+            (M_OFF, false),
+            (M_ON, true),
+            (M_5HZ, (now_ms / 100) % 2 == 1),
+            (M_1S, (now_ms / 1000) % 2 == 1),
+            (M_FIRST, self.first_scan),
+        ];
+        for (n, on) in specials {
+            d.set_bit(Bit::M(n), on);
+        }
+        self.first_scan = false;
+
+        let mut acc = false;
+        let mut open = false; // a rung has started since the last output
+        let mut after_output = false;
+        self.stack.clear();
+        for (index, &instruction) in self.program.instructions().iter().enumerate() {
+            let d = &mut self.devices;
+            let mut output = true;
+            match instruction {
+                Instruction::Ld(b) | Instruction::Ldi(b) => {
+                    if open && !after_output {
+                        self.stack.push(acc);
+                    } else {
+                        self.stack.clear();
+                    }
+                    acc = d.bit(b) ^ matches!(instruction, Instruction::Ldi(_));
+                    open = true;
+                    after_output = false;
+                    output = false;
+                }
+                Instruction::And(b) => (acc, output) = (acc && d.bit(b), false),
+                Instruction::Ani(b) => (acc, output) = (acc && !d.bit(b), false),
+                Instruction::Or(b) => (acc, output) = (acc || d.bit(b), false),
+                Instruction::Ori(b) => (acc, output) = (acc || !d.bit(b), false),
+                Instruction::Orb => {
+                    (acc, output) = (self.stack.pop().unwrap_or(false) || acc, false)
+                }
+                Instruction::Anb => {
+                    (acc, output) = (self.stack.pop().unwrap_or(false) && acc, false)
+                }
+                Instruction::Out(b) => d.set_bit(b, acc),
+                Instruction::OutTimer(n, preset) => {
+                    let k = i64::from(d.word(preset));
+                    let t = &mut d.timers[usize::from(n)];
+                    if acc {
+                        t.elapsed = if t.coil {
+                            t.elapsed + elapsed
+                        } else {
+                            SimTime::ZERO
+                        };
+                        t.coil = true;
+                        t.on = i64::from(t.current(n)) >= k;
+                    } else {
+                        *t = Timer::default();
+                    }
+                }
+                Instruction::OutCounter(n, preset) => {
+                    let k = d.word(preset);
+                    let c = &mut d.counters[usize::from(n)];
+                    if acc && !self.edges[index] && c.count < k {
+                        c.count += 1;
+                    }
+                    c.on = c.count >= k;
+                    self.edges[index] = acc;
+                }
+                Instruction::Pls(b) => {
+                    d.set_bit(b, acc && !self.edges[index]);
+                    self.edges[index] = acc;
+                }
+                Instruction::Plf(b) => {
+                    d.set_bit(b, !acc && self.edges[index]);
+                    self.edges[index] = acc;
+                }
+                Instruction::Set(b) if acc => d.set_bit(b, true),
+                Instruction::Rst(b) if acc => d.set_bit(b, false),
+                Instruction::Sets(b) if acc => {
+                    self.link_writes.push(LinkWrite { bit: b, on: true })
+                }
+                Instruction::Rsts(b) if acc => {
+                    self.link_writes.push(LinkWrite { bit: b, on: false })
+                }
+                Instruction::Cmp(a, b) if acc => {
+                    let (a, b) = (d.word(a), d.word(b));
+                    d.set_bit(Bit::M(M_GT), a > b);
+                    d.set_bit(Bit::M(M_EQ), a == b);
+                    d.set_bit(Bit::M(M_LT), a < b);
+                }
+                Instruction::Mov(a, to) if acc => d.d[usize::from(to)] = d.word(a),
+                Instruction::Inc(r) if acc => {
+                    d.d[usize::from(r)] = d.d[usize::from(r)].wrapping_add(1)
+                }
+                Instruction::Dec(r) if acc => {
+                    d.d[usize::from(r)] = d.d[usize::from(r)].wrapping_sub(1)
+                }
+                Instruction::End => break,
+                // SET, RST, SETS, RSTS, CMP, MOV, INC, DEC with the rung OFF.
+                _ => {}
+            }
+            if output {
+                after_output = true;
+            }
+        }
+        self.output_terminals = self.devices.y;
+        self.scans += 1;
+        self.last_scan.clone_from(&self.devices);
+    }
+}

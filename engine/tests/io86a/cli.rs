@@ -1,0 +1,153 @@
+//! `hashigo` with `--machine io86a`.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn hashigo(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("hashigo starts");
+    // hashigo may exit before reading its input; the status tells.
+    let _ = child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(stdin.as_bytes());
+    child.wait_with_output().expect("hashigo ends")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+const BLINK: &str =
+    "1 LDI T01\n2 OUT T00\n3 K2\n4 LD T00\n5 OUT T01\n6 K2\n7 LDI T00\n8 OUT Y00\n9 END\n";
+
+#[test]
+fn run_blinks_the_led_every_0_2_s() {
+    let out = hashigo(
+        &[
+            "run",
+            "--machine",
+            "io86a",
+            "--program",
+            "-",
+            "--until",
+            "1s",
+            "--every",
+            "100ms",
+            "--watch",
+            "Y00,T00.v",
+        ],
+        BLINK,
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let csv = text(&out.stdout);
+    let y00: Vec<&str> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).unwrap_or(""))
+        .collect();
+    // The first scan is at 1 ms: T00 starts there and expires at 201 ms;
+    // T01 then expires at 401 ms, and T00 restarts on the next scan (402),
+    // so the phases are [1, 201) on, [201, 401) off, [401, 602) on, ...
+    assert_eq!(
+        y00,
+        ["0", "1", "1", "0", "0", "1", "1", "0", "0", "1", "1"],
+        "{csv}"
+    );
+}
+
+#[test]
+fn run_takes_scan_and_input_events() {
+    let dir = std::env::temp_dir().join(format!("hashigo-io86a-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let program = dir.join("p.il");
+    let events = dir.join("e.csv");
+    std::fs::write(&program, "LD X00\nOUT Y00\nEND\n").expect("write");
+    std::fs::write(&events, "35ms,X00,1\n").expect("write");
+    let out = hashigo(
+        &[
+            "run",
+            "--machine",
+            "io86a",
+            "--program",
+            &program.to_string_lossy(),
+            "--set",
+            "scan=10ms",
+            "--input",
+            &events.to_string_lossy(),
+            "--until",
+            "50ms",
+            "--every",
+            "10ms",
+            "--watch",
+            "X00,Y00",
+        ],
+        "",
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    // Scans every 10 ms: X00 rises at 35 ms and the 40 ms scan sees it.
+    assert_eq!(
+        text(&out.stdout),
+        "time_ms,X00,Y00\n0,0,0\n10,0,0\n20,0,0\n30,0,0\n40,1,1\n50,1,1\n"
+    );
+}
+
+#[test]
+fn asm_prints_the_l_listing() {
+    let out = hashigo(
+        &["asm", "--machine", "io86a", "--program", "-"],
+        "LD X00\nMOV K10 D00\nEND\n",
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "1 LD X00\n2 MOV K10 D00\n3 END\n");
+}
+
+#[test]
+fn bad_programs_are_located() {
+    let program = "LD X00\nOUT T00\nLD X01\nOUT X02\nLD X09\n";
+    let out = hashigo(&["asm", "--machine", "io86a", "--program", "-"], program);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert_eq!(
+        text(&out.stderr),
+        "error: <stdin>:2: OUT T/C needs its set value on the next step, e.g. K10\n\
+         error: <stdin>:4: OUT X02: X02 is an input and cannot be driven\n\
+         error: <stdin>:5: unknown device \"X09\": PLC-IO86A has X00-X07, Y00-Y05, M00-M63, S00-S07, T00-T31, C00-C07, D00-D07\n"
+    );
+    let long = "LD X00\n".repeat(512);
+    let out = hashigo(&["asm", "--machine", "io86a", "--program", "-"], &long);
+    assert_eq!(
+        text(&out.stderr),
+        "error: <stdin>:512: too many steps: 512, PLC-IO86A holds 511\n"
+    );
+}
+
+#[test]
+fn bench_counts_instructions() {
+    let out = hashigo(
+        &[
+            "bench",
+            "--machine",
+            "io86a",
+            "--program",
+            "-",
+            "--steps",
+            "900",
+        ],
+        BLINK,
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    // Whole scans: 101 scans of 9 instructions (END included) cover 900.
+    assert!(
+        text(&out.stdout).starts_with("steps=903 "),
+        "{}",
+        text(&out.stdout)
+    );
+}
