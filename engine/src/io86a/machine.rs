@@ -3,6 +3,7 @@
 
 use super::asm::Program;
 use super::isa::{Bit, Instruction, Word};
+use super::peripherals::{IrMode, OutputSignal, Settings};
 use crate::time::SimTime;
 
 /// The default scan period.
@@ -123,7 +124,17 @@ pub struct Machine {
     program: Program,
     scan_period: SimTime,
     running: bool,
+    settings: Settings,
+    /// The input pins as driven (bit n = X0n on).
     input_terminals: u8,
+    /// The inputs after the filter, and when each pin last changed.
+    filtered: u8,
+    changed_at: [SimTime; 8],
+    /// Volts on X04 / X05, in millivolts.
+    analog_mv: [i64; 2],
+    /// The IR frame being received (a button held), and the last one seen.
+    ir_frame: Option<u32>,
+    last_ir: Option<u32>,
     devices: Devices,
     output_terminals: u8,
     /// The previous rung state of each instruction (PLS, PLF, OUT C).
@@ -156,7 +167,13 @@ impl Machine {
             program,
             scan_period: DEFAULT_SCAN,
             running: true,
+            settings: Settings::default(),
             input_terminals: 0,
+            filtered: 0,
+            changed_at: [SimTime::ZERO; 8],
+            analog_mv: [0; 2],
+            ir_frame: None,
+            last_ir: None,
             devices: Devices::default(),
             output_terminals: 0,
             edges,
@@ -217,9 +234,93 @@ impl Machine {
 
     /// Sets input terminal `X0n`.
     pub fn set_input(&mut self, n: u8, on: bool) {
-        if n < 8 {
-            self.input_terminals = (self.input_terminals & !(1 << n)) | (u8::from(on) << n);
+        if n < 8 && (self.input_terminals >> n & 1 != 0) != on {
+            self.input_terminals ^= 1 << n;
+            self.changed_at[usize::from(n)] = self.now;
         }
+    }
+
+    /// The input terminals (bit n = X0n driven on).
+    pub fn input_terminals(&self) -> u8 {
+        self.input_terminals
+    }
+
+    /// Sets the voltage on X04 (`index` 0) or X05 (1), in millivolts.
+    pub fn set_analog(&mut self, index: usize, millivolts: i64) {
+        if let Some(v) = self.analog_mv.get_mut(index) {
+            *v = millivolts;
+        }
+    }
+
+    /// The voltage on X04 / X05.
+    pub fn analog(&self, index: usize) -> i64 {
+        self.analog_mv.get(index).copied().unwrap_or(0)
+    }
+
+    /// An IR remote frame (NEC: custom code in the high 16 bits) arriving
+    /// while a button is held; `None` when it is released.
+    pub fn set_ir(&mut self, frame: Option<u32>) {
+        self.ir_frame = frame;
+        if frame.is_some() {
+            self.last_ir = frame;
+        }
+    }
+
+    /// The last IR frame received (the `.` command).
+    pub fn last_ir(&self) -> Option<u32> {
+        self.last_ir
+    }
+
+    /// The pin settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The pin settings, to change them (the terminal's setting commands).
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
+    /// What Y03 (`index` 0) or Y04 (1) puts out after the last scan.
+    pub fn output_signal(&self, index: usize) -> OutputSignal {
+        let on = self.output_terminals >> (3 + index) & 1 != 0;
+        let command = self.last_scan.d[4 + index];
+        self.settings.outputs[index.min(1)].signal(on, command)
+    }
+
+    /// Whether the program is running (the terminal's `R`; Ctrl-C stops).
+    pub fn running(&self) -> bool {
+        self.running
+    }
+
+    /// Runs (`R`) or stops (Ctrl-C) the program. Running again starts from
+    /// the first scan (M63 pulses), with the devices as they are.
+    pub fn set_running(&mut self, run: bool) {
+        if run && !self.running {
+            self.first_scan = true;
+            self.last_scan_at = self.now;
+            self.next_scan = self.now + self.scan_period;
+        }
+        self.running = run;
+    }
+
+    /// Replaces the program (edited at the terminal); the edge memory of
+    /// PLS/PLF/counters starts again.
+    pub fn load(&mut self, program: Program) {
+        self.edges = vec![false; program.instructions().len()];
+        self.program = program;
+    }
+
+    /// The program.
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// Resets every Y (the terminal's `@`).
+    pub fn reset_outputs(&mut self) {
+        self.devices.y = 0;
+        self.output_terminals = 0;
+        self.last_scan.y = 0;
     }
 
     /// Takes the SETS/RSTS writes of the scans so far, oldest first.
@@ -263,8 +364,31 @@ impl Machine {
     fn scan(&mut self) {
         let elapsed = self.now - self.last_scan_at;
         self.last_scan_at = self.now;
+        // The input filter: a change counts once it has held long enough.
+        let hold = self.settings.filter_time();
+        for n in 0..8u8 {
+            let changed = (self.input_terminals ^ self.filtered) >> n & 1 != 0;
+            if changed && self.now.saturating_sub(self.changed_at[usize::from(n)]) >= hold {
+                self.filtered ^= 1 << n;
+            }
+        }
         let d = &mut self.devices;
-        d.x = self.input_terminals;
+        d.x = self.filtered;
+        for (i, mode) in self.settings.analog.iter().enumerate() {
+            if let Some(value) = mode.convert(self.analog_mv[i]) {
+                d.x &= !(1 << (4 + i)); // the pin is no digital input now
+                d.d[6 + i] = value;
+            }
+        }
+        if let IrMode::Ir { custom } = self.settings.ir {
+            d.x &= !(1 << 7);
+            d.d[3] = match self.ir_frame {
+                Some(frame) if custom.is_none_or(|c| u32::from(c) == frame >> 16) => {
+                    frame as u16 as i16
+                }
+                _ => 0,
+            };
+        }
         let now_ms = self.now.as_nanos() / 1_000_000;
         let specials = [
             (M_OFF, false),

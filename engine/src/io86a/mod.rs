@@ -6,14 +6,14 @@
 //! - [`machine`]: the scan, timers, counters, data instructions and the
 //!   system relays.
 //!
-//! Not yet here: the serial terminal, the peripherals (analog, PWM/servo,
-//! IR, input filter) and the link between two devices beyond SETS/RSTS
-//! writes being collected.
+//! - [`peripherals`]: analog inputs, the IR receiver, PWM/servo outputs and
+//!   the input filter.
 
 pub mod asm;
 pub mod headless;
 pub mod isa;
 pub mod machine;
+pub mod peripherals;
 
 pub use asm::{AsmError, Program};
 pub use isa::{Bit, Instruction, Word};

@@ -82,7 +82,7 @@ fn run_takes_scan_and_input_events() {
             "--input",
             &events.to_string_lossy(),
             "--until",
-            "50ms",
+            "70ms",
             "--every",
             "10ms",
             "--watch",
@@ -92,10 +92,11 @@ fn run_takes_scan_and_input_events() {
     );
     let _ = std::fs::remove_dir_all(&dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
-    // Scans every 10 ms: X00 rises at 35 ms and the 40 ms scan sees it.
+    // Scans every 10 ms: X00 rises at 35 ms; the default input filter (!2)
+    // passes it after 20 ms, so the 60 ms scan is the first to see it.
     assert_eq!(
         text(&out.stdout),
-        "time_ms,X00,Y00\n0,0,0\n10,0,0\n20,0,0\n30,0,0\n40,1,1\n50,1,1\n"
+        "time_ms,X00,Y00\n0,0,0\n10,0,0\n20,0,0\n30,0,0\n40,0,0\n50,0,0\n60,1,1\n70,1,1\n"
     );
 }
 
@@ -149,5 +150,41 @@ fn bench_counts_instructions() {
         text(&out.stdout).starts_with("steps=903 "),
         "{}",
         text(&out.stdout)
+    );
+}
+
+#[test]
+fn run_the_manuals_servo_example_with_pin_settings() {
+    let dir = std::env::temp_dir().join(format!("hashigo-io86a-servo-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let events = dir.join("e.csv");
+    std::fs::write(&events, "0,X04,0V\n60ms,X04,2.5V\n110ms,X04,5V\n").expect("write");
+    let out = hashigo(
+        &[
+            "run",
+            "--machine",
+            "io86a",
+            "--program",
+            "-",
+            "--set",
+            "X04=A:401:100",
+            "--set",
+            "Y03=R",
+            "--input",
+            &events.to_string_lossy(),
+            "--until",
+            "150ms",
+            "--every",
+            "50ms",
+            "--watch",
+            "D06,Y03.v",
+        ],
+        "1 LD M57\n2 MOV\n3 D06\n4 D04\n5 OUT Y03\n6 END\n",
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "time_ms,D06,Y03.v\n0,0,0\n50,100,500\n100,300,1500\n150,500,2500\n"
     );
 }

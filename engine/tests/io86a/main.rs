@@ -5,10 +5,14 @@ mod cli;
 use engine::io86a::{Bit, Machine, Program};
 use engine::SimTime;
 
-/// A device running `text` (the manual's listing, END appended).
+/// A device running `text` (the manual's listing, END appended), with the
+/// input filter off (`!0`) so that inputs reach the next scan; the filter
+/// has a test of its own.
 fn device(text: &str) -> Machine {
     let program = Program::parse(&format!("{text}\nEND\n")).unwrap_or_else(|e| panic!("{e:?}"));
-    Machine::new(program)
+    let mut m = Machine::new(program);
+    m.settings_mut().apply("!0").expect("!0 is a setting");
+    m
 }
 
 fn ms(n: u64) -> SimTime {
@@ -313,4 +317,88 @@ fn sets_rsts_collect_writes_for_the_linked_device() {
     }
     b.run_until(ms(1));
     assert!(b.devices().bit(Bit::Y(0)), "A's X00 sets B's Y00");
+}
+
+#[test]
+fn the_input_filter_holds_changes_for_n_times_10_ms() {
+    let program = Program::parse("LD X00\nOUT Y00\nEND\n").expect("parses");
+    let mut m = Machine::new(program);
+    assert_eq!(m.settings().filter, 2, "!2 after power-on");
+    m.run_until(ms(10));
+    m.set_input(0, true);
+    m.run_until(ms(29));
+    assert!(!y(&m, 0), "not before 20 ms");
+    m.run_until(ms(30));
+    assert!(y(&m, 0), "held 20 ms");
+    // A glitch shorter than the filter never reaches the program.
+    m.set_input(0, false);
+    m.run_until(ms(40));
+    m.set_input(0, true);
+    m.run_until(ms(80));
+    assert!(y(&m, 0));
+    m.settings_mut().apply("!5").expect("!5");
+    m.set_input(0, false);
+    m.run_until(ms(129));
+    assert!(y(&m, 0));
+    m.run_until(ms(130));
+    assert!(!y(&m, 0), "!5: 50 ms");
+}
+
+#[test]
+fn servo_follows_the_analog_input() {
+    let mut m = device("1 LD M57\n2 MOV\n3 D06\n4 D04\n5 OUT Y03");
+    m.settings_mut().apply("X04A:401:100").expect("analog");
+    m.settings_mut().apply("Y03R").expect("servo");
+    use engine::io86a::peripherals::OutputSignal;
+    for (mv, d06, pulse_us) in [(0, 100, 500), (2500, 300, 1500), (5000, 500, 2500)] {
+        m.set_analog(0, mv);
+        m.run_until(m.now() + ms(2));
+        assert_eq!(m.last_scan().d[6], d06, "{mv} mV");
+        assert_eq!(
+            m.output_signal(0),
+            OutputSignal::Servo(Some(SimTime::from_micros(pulse_us)))
+        );
+    }
+    assert!(
+        !m.last_scan().bit(Bit::X(4)),
+        "X04 is no digital input in AD mode"
+    );
+}
+
+#[test]
+fn ir_buttons_light_y00_and_y01_while_held() {
+    let text = "1 LD M57\n2 CMP\n3 K30727\n4 D03\n5 LD M61\n6 OUT Y00\n7 LD M57\n8 CMP\n9 K30855\n10 D03\n11 LD M61\n12 OUT Y01";
+    let mut m = device(text);
+    m.settings_mut().apply("X07I:10EF").expect("IR");
+    let a_button = 0x10EF_7807;
+    let b_button = 0x10EF_7887;
+    m.set_ir(Some(a_button));
+    m.run_until(ms(2));
+    assert!(y(&m, 0) && !y(&m, 1), "A held");
+    m.set_ir(None);
+    m.run_until(ms(4));
+    assert!(!y(&m, 0), "released");
+    m.set_ir(Some(b_button));
+    m.run_until(ms(6));
+    assert!(y(&m, 1) && !y(&m, 0), "B held");
+    m.set_ir(Some(0x00FF_7807)); // another remote's custom code
+    m.run_until(ms(8));
+    assert!(!y(&m, 0) && !y(&m, 1), "other custom codes are ignored");
+    assert_eq!(m.last_ir(), Some(0x00FF_7807), "but `.` shows them");
+}
+
+#[test]
+fn pwm_duty_follows_d05_while_y04_is_on() {
+    use engine::io86a::peripherals::OutputSignal;
+    let mut m = device("LD X00\nOUT Y04\nLD M57\nMOV K40 D05");
+    m.settings_mut().apply("Y04M").expect("PWM");
+    m.run_until(ms(2));
+    assert_eq!(
+        m.output_signal(1),
+        OutputSignal::Pwm { hz: 400, duty: 0 },
+        "Y04 off"
+    );
+    m.set_input(0, true);
+    m.run_until(ms(4));
+    assert_eq!(m.output_signal(1), OutputSignal::Pwm { hz: 400, duty: 40 });
 }
