@@ -329,9 +329,21 @@ impl Machine {
     }
 
     /// Writes a bit as a linked device's SETS/RSTS (or the terminal's
-    /// `Ynn=1`) does: at once, between scans.
+    /// `Ynn=1`) does: at once, between scans; a Y drives its pin at once.
     pub fn write_bit(&mut self, bit: Bit, on: bool) {
         self.devices.set_bit(bit, on);
+        self.last_scan.set_bit(bit, on);
+        if let Bit::Y(_) = bit {
+            self.output_terminals = self.devices.y;
+        }
+    }
+
+    /// Writes a D register (the terminal's `Dnn=`), between scans.
+    pub fn write_word(&mut self, n: u8, value: i16) {
+        if let Some(d) = self.devices.d.get_mut(usize::from(n)) {
+            *d = value;
+            self.last_scan.d[usize::from(n)] = value;
+        }
     }
 
     /// Instructions one scan executes (up to and including the first END).

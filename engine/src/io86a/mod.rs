@@ -7,14 +7,17 @@
 //!   system relays.
 //!
 //! - [`peripherals`]: analog inputs, the IR receiver, PWM/servo outputs and
-//!   the input filter.
+//!   the input filter;
+//! - [`terminal`]: the serial terminal's commands.
 
 pub mod asm;
 pub mod headless;
 pub mod isa;
 pub mod machine;
 pub mod peripherals;
+pub mod terminal;
 
 pub use asm::{AsmError, Program};
 pub use isa::{Bit, Instruction, Word};
 pub use machine::{Devices, Machine};
+pub use terminal::Terminal;

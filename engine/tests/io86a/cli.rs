@@ -188,3 +188,33 @@ fn run_the_manuals_servo_example_with_pin_settings() {
         "time_ms,D06,Y03.v\n0,0,0\n50,100,500\n100,300,1500\n150,500,2500\n"
     );
 }
+
+#[test]
+fn console_runs_the_terminal_with_the_clock_advancing_between_lines() {
+    let dir = std::env::temp_dir().join(format!("hashigo-io86a-console-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let program = dir.join("p.il");
+    std::fs::write(&program, "LD M57\nOUT Y00\nEND\n").expect("write");
+    let out = hashigo(
+        &[
+            "console",
+            "--machine",
+            "io86a",
+            "--program",
+            &program.to_string_lossy(),
+            "--step",
+            "5ms",
+        ],
+        "^C\r\nY?\r\nR\r\nY?\r\n",
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "R>^C\r\n>Y?\r\nY:00000000\r\n>R\r\nR>Y?\r\nY:00000001\r\nR>",
+        "stopped before the first scan; R, then Y? shows the output"
+    );
+    let out = hashigo(&["console", "--machine", "minasec-u"], "");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("no serial terminal"));
+}

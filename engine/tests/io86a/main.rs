@@ -1,6 +1,7 @@
 //! PLC-IO86A: the manual's examples, run as the manual says they behave.
 
 mod cli;
+mod terminal;
 
 use engine::io86a::{Bit, Machine, Program};
 use engine::SimTime;

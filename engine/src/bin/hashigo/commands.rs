@@ -1,6 +1,7 @@
 //! The subcommands. Each returns the problem lines (without `error: `) on
 //! failure and prints nothing to standard output unless it succeeds.
 
+use std::io::{BufRead, Write};
 use std::time::Instant;
 
 use engine::events::parse_events;
@@ -289,19 +290,57 @@ pub fn asm(rest: &[String]) -> Result<(), Problems> {
     Ok(())
 }
 
-/// `compile` and `console`: accepted words, machines not there yet.
+/// `hashigo console`: the device's serial terminal on standard input and
+/// output. After each line the simulated clock advances by `--step`.
+pub fn console(rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(rest, &["machine", "program", "format", "step"]).map_err(one)?;
+    let id = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
+    match id {
+        MachineId::Io86a => {}
+        MachineId::MinasecU | MachineId::AvrPlc => {
+            return Err(one(format!(
+                "{} has no serial terminal: console is for io86a and arduino-plc",
+                id.name()
+            )))
+        }
+        MachineId::ArduinoPlc => {
+            return Err(one("machine arduino-plc is not supported yet".to_string()))
+        }
+    }
+    let step = match args.optional("step").map_err(one)? {
+        Some(t) => SimTime::parse(t).map_err(|e| one(format!("--step: {e}")))?,
+        None => SimTime::from_millis(10),
+    };
+    let program = match args.optional("program").map_err(one)? {
+        Some(_) => match load(&args)? {
+            Loaded::Io86a(program) => program,
+            Loaded::MinasecU(_) => {
+                return Err(one("--machine io86a needs an io86a program".to_string()))
+            }
+        },
+        None => io86a::Program::default(),
+    };
+    let mut machine = io86a::Machine::new(program);
+    let mut terminal = io86a::Terminal::new(&machine);
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let _ = write!(out, "{}", terminal.prompt(&machine));
+    for line in std::io::stdin().lock().lines() {
+        let line = line.map_err(|e| one(format!("<stdin>: cannot read: {e}")))?;
+        let _ = write!(out, "{}", terminal.type_line(&mut machine, &line));
+        let _ = out.flush();
+        machine.run_until(machine.now() + step);
+    }
+    Ok(())
+}
+
+/// `compile`: ladder projects come with the compiler.
 pub fn not_yet(command: &str, rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(rest, &["machine", "program", "format", "step"]).map_err(one)?;
     let machine = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
-    match (command, machine) {
-        ("console", MachineId::MinasecU) => Err(one(
-            "minasec-u has no serial terminal: console is for io86a and arduino-plc".to_string(),
-        )),
-        _ => {
-            machine.require_supported().map_err(one)?;
-            Err(one(format!(
-                "hashigo {command} is not supported yet for minasec-u"
-            )))
-        }
-    }
+    machine.require_supported().map_err(one)?;
+    Err(one(format!(
+        "hashigo {command} is not supported yet for {}",
+        machine.name()
+    )))
 }

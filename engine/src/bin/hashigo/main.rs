@@ -29,7 +29,8 @@ fn main() -> ExitCode {
         "run" => commands::run(rest),
         "bench" => commands::bench(rest),
         "asm" => commands::asm(rest),
-        "compile" | "console" => commands::not_yet(command, rest),
+        "console" => commands::console(rest),
+        "compile" => commands::not_yet(command, rest),
         "help" | "--help" | "-h" => {
             println!("{USAGE}");
             Ok(())
