@@ -354,6 +354,11 @@ impl Machine {
             .map_or(all.len(), |end| end + 1)
     }
 
+    /// When the next scan runs; `None` while stopped.
+    pub fn next_scan_at(&self) -> Option<SimTime> {
+        self.running.then_some(self.next_scan)
+    }
+
     /// Runs every scan due at or before `t`.
     pub fn run_until(&mut self, t: SimTime) {
         while self.running && self.next_scan <= t {

@@ -13,11 +13,13 @@
 pub mod asm;
 pub mod headless;
 pub mod isa;
+pub mod link;
 pub mod machine;
 pub mod peripherals;
 pub mod terminal;
 
 pub use asm::{AsmError, Program};
 pub use isa::{Bit, Instruction, Word};
+pub use link::LinkedPair;
 pub use machine::{Devices, Machine};
 pub use terminal::Terminal;

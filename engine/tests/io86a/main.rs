@@ -403,3 +403,20 @@ fn pwm_duty_follows_d05_while_y04_is_on() {
     m.run_until(ms(4));
     assert_eq!(m.output_signal(1), OutputSignal::Pwm { hz: 400, duty: 40 });
 }
+
+#[test]
+fn two_linked_devices_a_x00_lights_b_y00() {
+    use engine::io86a::LinkedPair;
+    // The manual's example: device A drives device B's Y00; B needs no ladder.
+    let a = device("LD X00\nSETS Y00\nLDI X00\nRSTS Y00");
+    let b = device("");
+    let mut pair = LinkedPair::new(a, b);
+    pair.run_until(ms(10));
+    assert!(!y(&pair.b, 0));
+    pair.a.set_input(0, true);
+    pair.run_until(ms(12));
+    assert!(y(&pair.b, 0), "A's X00 lights B's Y00");
+    pair.a.set_input(0, false);
+    pair.run_until(ms(14));
+    assert!(!y(&pair.b, 0), "and RSTS puts it out");
+}
