@@ -5,6 +5,7 @@ pub mod bench;
 pub mod components;
 pub mod examples;
 pub mod i18n;
+pub mod io86a;
 pub mod sim;
 pub mod state;
 pub mod storage;
@@ -40,8 +41,9 @@ pub fn start() {
         return;
     }
     let ctx = workspace();
-    leptos::mount::mount_to_body(move || view! { <App ctx=ctx /> });
-    start_loop(ctx);
+    let io = io86a::Io86aCtx::new();
+    leptos::mount::mount_to_body(move || view! { <App ctx=ctx io=io /> });
+    start_loop(ctx, io);
 }
 
 /// A panic must not leave a dead page: say so, in both languages.
@@ -83,6 +85,12 @@ pub fn workspace() -> Ctx {
     let lang = initial_lang();
     set_document_lang(lang);
     let ctx = Ctx::new(Simulator::new(Machine::new()), lang);
+    if let Some(kind) = storage::saved_string(storage::MACHINE_KEY)
+        .as_deref()
+        .and_then(state::MachineKind::from_code)
+    {
+        ctx.machine.set(kind);
+    }
     let texts = lang.texts();
     match storage::restore() {
         Restored::Saved(saved) => {
@@ -107,10 +115,11 @@ pub fn workspace() -> Ctx {
     ctx
 }
 
-/// The workspace: header, notices, board and program pane.
+/// The page: header, notices, and the chosen machine's workspace.
 #[component]
-pub fn App(ctx: Ctx) -> impl IntoView {
+pub fn App(ctx: Ctx, io: io86a::Io86aCtx) -> impl IntoView {
     provide_context(ctx);
+    provide_context(io);
     view! {
         <ErrorBoundary fallback=move |_| {
             view! { <div class="fatal" role="alert">{move || ctx.lang.get().texts().crashed}</div> }
@@ -121,10 +130,15 @@ pub fn App(ctx: Ctx) -> impl IntoView {
                     {move || ctx.notice.get().unwrap_or_default()}
                 </div>
             </Show>
-            <main class="workspace">
-                <Board />
-                <ProgramPane />
-            </main>
+            <Show
+                when=move || ctx.machine.get() == state::MachineKind::MinasecU
+                fallback=move || view! { <io86a::view::Io86aWorkspace io=io /> }
+            >
+                <main class="workspace">
+                    <Board />
+                    <ProgramPane />
+                </main>
+            </Show>
         </ErrorBoundary>
     }
 }
@@ -139,15 +153,20 @@ pub fn now_ms() -> f64 {
 /// The simulation loop: each animation frame advances the simulator by the
 /// frame's wall time (at the chosen speed, capped) and copies the panel into
 /// the signals that changed. Runs for the page's life.
-pub fn start_loop(ctx: Ctx) {
+pub fn start_loop(ctx: Ctx, io: io86a::Io86aCtx) {
     type FrameFn = Closure<dyn FnMut(f64)>;
     let slot: Rc<RefCell<Option<FrameFn>>> = Rc::new(RefCell::new(None));
     let again = Rc::clone(&slot);
     let last = Cell::new(None::<f64>);
     *slot.borrow_mut() = Some(Closure::new(move |timestamp: f64| {
         let wall_ms = last.replace(Some(timestamp)).map_or(0.0, |l| timestamp - l);
-        ctx.sim.update_value(|s| s.frame(wall_ms, now_ms));
-        ctx.refresh();
+        if ctx.machine.get_untracked() == state::MachineKind::Io86a {
+            io.sim.update_value(|s| s.frame(wall_ms, now_ms));
+            io.refresh();
+        } else {
+            ctx.sim.update_value(|s| s.frame(wall_ms, now_ms));
+            ctx.refresh();
+        }
         if let Some(f) = again.borrow().as_ref() {
             request_frame(f);
         }

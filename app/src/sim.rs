@@ -3,8 +3,28 @@
 //! reactive graph; each animation frame advances it and the panel is copied
 //! out into signals.
 
+use engine::io86a::LinkedPair;
 use engine::minasec::{Machine, Panel};
 use engine::SimTime;
+
+/// Something simulated time can advance.
+pub trait Tick {
+    /// Runs `dt` of simulated time.
+    fn tick(&mut self, dt: SimTime);
+}
+
+impl Tick for Machine {
+    fn tick(&mut self, dt: SimTime) {
+        Machine::tick(self, dt);
+    }
+}
+
+impl Tick for LinkedPair {
+    fn tick(&mut self, dt: SimTime) {
+        let t = self.a.now().saturating_add(dt);
+        self.run_until(t);
+    }
+}
 
 /// How fast simulated time runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,15 +74,15 @@ pub const MAX_SPEED_BUDGET_MS: f64 = 10.0;
 const MAX_SPEED_SLICE: SimTime = SimTime::from_millis(20);
 
 /// The machine and its pacing.
-pub struct Simulator {
-    machine: Machine,
+pub struct Simulator<M = Machine> {
+    machine: M,
     speed: Speed,
     paused: bool,
 }
 
-impl Simulator {
+impl<M: Tick> Simulator<M> {
     /// A simulator around `machine`, at ×1, running.
-    pub fn new(machine: Machine) -> Simulator {
+    pub fn new(machine: M) -> Simulator<M> {
         Simulator {
             machine,
             speed: Speed::Times(1),
@@ -71,12 +91,12 @@ impl Simulator {
     }
 
     /// The machine.
-    pub fn machine(&self) -> &Machine {
+    pub fn machine(&self) -> &M {
         &self.machine
     }
 
     /// The machine, to operate it.
-    pub fn machine_mut(&mut self) -> &mut Machine {
+    pub fn machine_mut(&mut self) -> &mut M {
         &mut self.machine
     }
 
@@ -123,7 +143,9 @@ impl Simulator {
             }
         }
     }
+}
 
+impl Simulator<Machine> {
     /// Copies the front panel into `panel`.
     pub fn panel_into(&self, panel: &mut Panel) {
         self.machine.panel_into(panel);

@@ -132,6 +132,32 @@ impl Parsed {
     }
 }
 
+/// Which machine the page shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MachineKind {
+    MinasecU,
+    Io86a,
+}
+
+impl MachineKind {
+    /// The id used in the `machine` select, storage and the CLI.
+    pub const fn code(self) -> &'static str {
+        match self {
+            MachineKind::MinasecU => "minasec-u",
+            MachineKind::Io86a => "io86a",
+        }
+    }
+
+    /// The machine for an id.
+    pub fn from_code(code: &str) -> Option<MachineKind> {
+        match code {
+            "minasec-u" => Some(MachineKind::MinasecU),
+            "io86a" => Some(MachineKind::Io86a),
+            _ => None,
+        }
+    }
+}
+
 /// Everything components share; `Copy`, provided as context.
 #[derive(Clone, Copy)]
 pub struct Ctx {
@@ -139,6 +165,8 @@ pub struct Ctx {
     pub sim: StoredValue<Simulator, LocalStorage>,
     pub panel: PanelSignals,
     pub lang: RwSignal<Lang>,
+    /// The machine shown.
+    pub machine: RwSignal<MachineKind>,
     pub speed: RwSignal<Speed>,
     pub paused: RwSignal<bool>,
     /// The program pane's text.
@@ -158,6 +186,7 @@ impl Ctx {
             sim: StoredValue::new_local(sim),
             panel: PanelSignals::new(),
             lang: RwSignal::new(lang),
+            machine: RwSignal::new(MachineKind::MinasecU),
             speed: RwSignal::new(Speed::Times(1)),
             paused: RwSignal::new(false),
             text: RwSignal::new(String::new()),

@@ -2,12 +2,24 @@
 //! on every change and come back on reload. A saved value that cannot be
 //! read is moved aside under a key of its own and reported, never dropped.
 
+use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
 /// The key of the MINASEC-U workspace.
 pub const KEY: &str = "hashigo.minasec-u.v1";
+/// The key of the IO86A workspace.
+pub const IO86A_KEY: &str = "hashigo.io86a.v1";
 /// The key of the interface language.
 pub const LANG_KEY: &str = "hashigo.lang";
+/// The key of the chosen machine.
+pub const MACHINE_KEY: &str = "hashigo.machine";
+
+/// What is saved for the IO86A workspace: the two devices' program texts.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SavedIo86a {
+    /// Device A's and device B's program pane text.
+    pub programs: [String; 2],
+}
 
 /// What is saved for the MINASEC-U board.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -23,8 +35,19 @@ pub struct Saved {
     pub preset_ones: u8,
 }
 
-impl Saved {
+/// A saved value that can say whether it is usable.
+pub trait Checked {
     /// Why this value cannot be restored, if it cannot.
+    fn problem(&self) -> Option<&'static str>;
+}
+
+impl Checked for SavedIo86a {
+    fn problem(&self) -> Option<&'static str> {
+        None
+    }
+}
+
+impl Checked for Saved {
     fn problem(&self) -> Option<&'static str> {
         if !(100..=1100).contains(&self.rv1_ms) {
             Some("rv1_ms out of range")
@@ -40,11 +63,11 @@ impl Saved {
 
 /// What a reload found.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Restored {
+pub enum Restored<T = Saved> {
     /// Nothing saved yet.
     Nothing,
     /// A good saved workspace.
-    Saved(Saved),
+    Saved(T),
     /// A saved value that could not be read, now kept under `kept_as`.
     Corrupt { kept_as: String },
     /// No localStorage (private mode, disabled): nothing can be saved.
@@ -55,50 +78,70 @@ fn storage() -> Option<web_sys::Storage> {
     web_sys::window()?.local_storage().ok().flatten()
 }
 
-/// Reads the saved workspace.
+/// Reads the saved MINASEC-U workspace.
 pub fn restore() -> Restored {
+    restore_from(KEY)
+}
+
+/// Reads the value saved under `key`.
+pub fn restore_from<T: DeserializeOwned + Checked>(key: &str) -> Restored<T> {
     let Some(store) = storage() else {
         return Restored::Unavailable;
     };
-    let raw = match store.get_item(KEY) {
+    let raw = match store.get_item(key) {
         Ok(Some(raw)) => raw,
         Ok(None) => return Restored::Nothing,
         Err(_) => return Restored::Unavailable,
     };
-    match serde_json::from_str::<Saved>(&raw) {
+    match serde_json::from_str::<T>(&raw) {
         Ok(saved) if saved.problem().is_none() => Restored::Saved(saved),
         _ => {
             // Keep the unreadable value under a key of its own, so the next
             // autosave cannot overwrite it.
-            let kept_as = format!("{KEY}.corrupt.{}", js_sys::Date::now() as u64);
+            let kept_as = format!("{key}.corrupt.{}", js_sys::Date::now() as u64);
             if store.set_item(&kept_as, &raw).is_err() {
                 return Restored::Unavailable;
             }
-            let _ = store.remove_item(KEY);
+            let _ = store.remove_item(key);
             Restored::Corrupt { kept_as }
         }
     }
 }
 
-/// Saves the workspace; false when storage is unavailable or full.
+/// Saves the MINASEC-U workspace; false when storage is unavailable or full.
 pub fn save(saved: &Saved) -> bool {
+    save_to(KEY, saved)
+}
+
+/// Saves `value` under `key`; false when storage is unavailable or full.
+pub fn save_to<T: Serialize>(key: &str, value: &T) -> bool {
     let Some(store) = storage() else {
         return false;
     };
-    match serde_json::to_string(saved) {
-        Ok(json) => store.set_item(KEY, &json).is_ok(),
+    match serde_json::to_string(value) {
+        Ok(json) => store.set_item(key, &json).is_ok(),
         Err(_) => false,
+    }
+}
+
+/// A plain remembered string (language, machine).
+pub fn saved_string(key: &str) -> Option<String> {
+    storage()?.get_item(key).ok().flatten()
+}
+
+/// Remembers a plain string.
+pub fn save_string(key: &str, value: &str) {
+    if let Some(store) = storage() {
+        let _ = store.set_item(key, value);
     }
 }
 
 /// The remembered language code, if any.
 pub fn saved_lang() -> Option<String> {
-    storage()?.get_item(LANG_KEY).ok().flatten()
+    saved_string(LANG_KEY)
 }
 
 /// Remembers the language.
 pub fn save_lang(code: &str) {
-    if let Some(store) = storage() {
-        let _ = store.set_item(LANG_KEY, code);
-    }
+    save_string(LANG_KEY, code);
 }

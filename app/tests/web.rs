@@ -23,16 +23,23 @@ fn document() -> web_sys::Document {
 /// Mounts a fresh workspace (no frame loop: tests advance time themselves)
 /// into its own container and returns the context and the container.
 fn mount() -> (Ctx, Element) {
+    let (ctx, _io, container) = mount_both();
+    (ctx, container)
+}
+
+/// Like [`mount`], also returning the IO86A workspace's context.
+fn mount_both() -> (Ctx, app::io86a::Io86aCtx, Element) {
     if let Some(store) = web_sys::window().unwrap().local_storage().unwrap() {
         store.clear().unwrap();
     }
     let container = document().create_element("div").unwrap();
     document().body().unwrap().append_child(&container).unwrap();
     let ctx = Ctx::new(Simulator::new(engine::minasec::Machine::new()), Lang::En);
+    let io = app::io86a::Io86aCtx::new();
     let html: HtmlElement = container.clone().unchecked_into();
-    let handle = leptos::mount::mount_to(html, move || view! { <App ctx=ctx /> });
+    let handle = leptos::mount::mount_to(html, move || view! { <App ctx=ctx io=io /> });
     handle.forget();
-    (ctx, container)
+    (ctx, io, container)
 }
 
 fn find(container: &Element, testid: &str) -> HtmlElement {
@@ -253,4 +260,24 @@ async fn the_seven_segment_display_shows_the_count() {
         "",
         "dark without power"
     );
+}
+
+#[wasm_bindgen_test]
+async fn the_io86a_workspace_runs_its_terminal() {
+    let (ctx, io, c) = mount_both();
+    ctx.machine.set(app::state::MachineKind::Io86a);
+    settle().await;
+    io.type_line("^C");
+    io.type_line("NA");
+    for line in ["LD M57", "OUT Y05", "END", "Q", "R"] {
+        io.type_line(line);
+    }
+    let _ = io.with_device(0, |m| m.run_until(m.now() + SimTime::from_millis(5)));
+    settle().await;
+    assert_eq!(attr(&c, "io86a-lamp-Y05", "data-on"), "1");
+    let screen = find(&c, "io86a-terminal")
+        .text_content()
+        .unwrap_or_default();
+    assert!(screen.contains("LD M57"), "{screen}");
+    assert!(screen.ends_with("R>"), "{screen}");
 }

@@ -4,17 +4,40 @@ use leptos::prelude::*;
 
 use crate::examples;
 use crate::i18n::Lang;
+use crate::io86a::Io86aCtx;
 use crate::sim::Speed;
-use crate::state::Ctx;
+use crate::state::{Ctx, MachineKind};
 use crate::storage;
 
 #[component]
 pub fn Header() -> impl IntoView {
     let ctx = Ctx::get();
+    let io = expect_context::<Io86aCtx>();
     let t = move || ctx.lang.get().texts();
+    let minasec = move || ctx.machine.get() == MachineKind::MinasecU;
     view! {
         <header class="top">
-            <h1>{move || t().title}</h1>
+            <h1>
+                {move || {
+                    if minasec() { t().title } else { t().title_io86a }
+                }}
+            </h1>
+            <label>
+                {move || t().machine}
+                <select
+                    data-testid="machine"
+                    prop:value=move || ctx.machine.get().code()
+                    on:change=move |e| {
+                        if let Some(kind) = MachineKind::from_code(&event_target_value(&e)) {
+                            ctx.machine.set(kind);
+                            storage::save_string(storage::MACHINE_KEY, kind.code());
+                        }
+                    }
+                >
+                    <option value="minasec-u">"MINASEC-U"</option>
+                    <option value="io86a">"PLC-IO86A"</option>
+                </select>
+            </label>
             <label>
                 {move || t().language}
                 <select
@@ -32,6 +55,7 @@ pub fn Header() -> impl IntoView {
                     <option value="en">"English"</option>
                 </select>
             </label>
+            <Show when=minasec>
             <label>
                 {move || t().example}
                 <select
@@ -54,6 +78,7 @@ pub fn Header() -> impl IntoView {
                     <option value="seed-test">{move || t().example_seed}</option>
                 </select>
             </label>
+            </Show>
             <Show when=move || ctx.before_example.with(Option::is_some)>
                 <button
                     type="button"
@@ -72,6 +97,7 @@ pub fn Header() -> impl IntoView {
                         if let Some(speed) = Speed::from_code(&event_target_value(&e)) {
                             ctx.speed.set(speed);
                             ctx.sim.update_value(|s| s.set_speed(speed));
+                            io.sim.update_value(|s| s.set_speed(speed));
                         }
                     }
                 >
@@ -99,11 +125,12 @@ pub fn Header() -> impl IntoView {
                     let paused = !ctx.paused.get_untracked();
                     ctx.paused.set(paused);
                     ctx.sim.update_value(|s| s.set_paused(paused));
+                    io.sim.update_value(|s| s.set_paused(paused));
                 }
             >
                 {move || if ctx.paused.get() { t().resume } else { t().pause }}
             </button>
-            <span class="clock" data-testid="sim-time">
+            <span class="clock" data-testid="sim-time" class:hidden=move || !minasec()>
                 {move || {
                     let ms = ctx.panel.sim_ms.get();
                     format!(

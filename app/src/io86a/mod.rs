@@ -1,0 +1,221 @@
+//! The PLC-IO86A workspace: two linked devices (B is shown on request),
+//! the serial terminal of device A, and a program pane per device.
+
+pub mod view;
+
+use engine::io86a::peripherals::{InputMode, IrMode, OutputSignal};
+use engine::io86a::{LinkedPair, Machine, Program, Terminal};
+use leptos::prelude::*;
+
+use crate::sim::Simulator;
+use crate::storage::{self, Restored, SavedIo86a};
+
+/// The manual's LED blink, the text a fresh workspace opens with.
+pub const BLINK: &str = "; PLC-IO86A manual: LED blink (0.2 s on, 0.2 s off)\n\
+1 LDI T01\n2 OUT T00\n3 K2\n4 LD T00\n5 OUT T01\n6 K2\n7 LDI T00\n8 OUT Y00\n9 END\n";
+
+/// The most terminal output kept on screen.
+const SCROLLBACK: usize = 20_000;
+
+fn set<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
+    if signal.with_untracked(|old| *old != value) {
+        signal.set(value);
+    }
+}
+
+/// One signal per pin and value of a device.
+#[derive(Clone, Copy)]
+pub struct DeviceSignals {
+    /// Input pins X00..X07 as driven.
+    pub inputs: [RwSignal<bool>; 8],
+    /// Output pins Y00..Y05.
+    pub lamps: [RwSignal<bool>; 6],
+    /// D00..D07 after the last scan.
+    pub d: [RwSignal<i16>; 8],
+    /// X04/X05 volts (mV) and whether they are analog inputs.
+    pub analog_mv: [RwSignal<i64>; 2],
+    pub analog: [RwSignal<bool>; 2],
+    /// X07 is the IR receiver.
+    pub ir: RwSignal<bool>,
+    /// Y03 / Y04 signals.
+    pub outputs: [RwSignal<OutputSignal>; 2],
+    pub running: RwSignal<bool>,
+}
+
+impl DeviceSignals {
+    fn new() -> DeviceSignals {
+        DeviceSignals {
+            inputs: std::array::from_fn(|_| RwSignal::new(false)),
+            lamps: std::array::from_fn(|_| RwSignal::new(false)),
+            d: std::array::from_fn(|_| RwSignal::new(0)),
+            analog_mv: [RwSignal::new(0), RwSignal::new(0)],
+            analog: [RwSignal::new(false), RwSignal::new(false)],
+            ir: RwSignal::new(false),
+            outputs: [
+                RwSignal::new(OutputSignal::Level(false)),
+                RwSignal::new(OutputSignal::Level(false)),
+            ],
+            running: RwSignal::new(true),
+        }
+    }
+
+    fn sync(&self, m: &Machine) {
+        for n in 0..8 {
+            set(self.inputs[n], m.input_terminals() >> n & 1 != 0);
+            set(self.d[n], m.last_scan().d[n]);
+        }
+        for n in 0..6 {
+            set(self.lamps[n], m.output_terminals() >> n & 1 != 0);
+        }
+        for i in 0..2 {
+            set(self.analog_mv[i], m.analog(i));
+            set(self.analog[i], m.settings().analog[i] != InputMode::Digital);
+            set(self.outputs[i], m.output_signal(i));
+        }
+        set(self.ir, m.settings().ir != IrMode::Digital);
+        set(self.running, m.running());
+    }
+}
+
+/// Everything the IO86A workspace's components share.
+#[derive(Clone, Copy)]
+pub struct Io86aCtx {
+    pub sim: StoredValue<Simulator<LinkedPair>, LocalStorage>,
+    /// Device A's serial terminal.
+    pub terminal: StoredValue<Terminal, LocalStorage>,
+    pub devices: [DeviceSignals; 2],
+    /// What device A's terminal has sent (CR LF as LF).
+    pub console: RwSignal<String>,
+    /// The program panes' texts and their errors (line, message).
+    pub texts: [RwSignal<String>; 2],
+    pub errors: [RwSignal<Vec<(usize, String)>>; 2],
+    /// Whether device B is shown.
+    pub two: RwSignal<bool>,
+    pub notice: RwSignal<Option<String>>,
+}
+
+impl Io86aCtx {
+    /// A workspace restored from autosave: each text that parses is loaded.
+    pub fn new() -> Io86aCtx {
+        let empty = || Machine::new(Program::default());
+        let pair = LinkedPair::new(empty(), empty());
+        let terminal = Terminal::new(&pair.a);
+        let ctx = Io86aCtx {
+            sim: StoredValue::new_local(Simulator::new(pair)),
+            terminal: StoredValue::new_local(terminal),
+            devices: [DeviceSignals::new(), DeviceSignals::new()],
+            console: RwSignal::new(String::new()),
+            texts: [
+                RwSignal::new(BLINK.to_string()),
+                RwSignal::new(String::new()),
+            ],
+            errors: [RwSignal::new(Vec::new()), RwSignal::new(Vec::new())],
+            two: RwSignal::new(false),
+            notice: RwSignal::new(None),
+        };
+        match storage::restore_from::<SavedIo86a>(storage::IO86A_KEY) {
+            Restored::Saved(saved) => {
+                for (signal, text) in ctx.texts.iter().zip(saved.programs) {
+                    signal.set(text);
+                }
+            }
+            Restored::Corrupt { kept_as } => ctx.notice.set(Some(kept_as)),
+            Restored::Nothing | Restored::Unavailable => {}
+        }
+        for device in 0..2 {
+            ctx.load(device);
+        }
+        let prompt = ctx
+            .terminal
+            .with_value(|t| ctx.sim.with_value(|s| t.prompt(&s.machine().a)));
+        ctx.console.set(prompt);
+        ctx
+    }
+
+    /// Runs `f` on device `i` (0 = A, 1 = B), then refreshes the signals;
+    /// `None` if the workspace is gone.
+    pub fn with_device<R>(&self, i: usize, f: impl FnOnce(&mut Machine) -> R) -> Option<R> {
+        let r = self.sim.try_update_value(|s| {
+            let pair = s.machine_mut();
+            f(if i == 0 { &mut pair.a } else { &mut pair.b })
+        });
+        self.refresh();
+        r
+    }
+
+    /// Copies both devices into the signals that changed.
+    pub fn refresh(&self) {
+        self.sim.with_value(|s| {
+            self.devices[0].sync(&s.machine().a);
+            self.devices[1].sync(&s.machine().b);
+        });
+    }
+
+    /// Parses device `i`'s pane and, if good, loads it and runs it; the
+    /// errors (by line) go to the pane either way.
+    pub fn load(&self, i: usize) -> bool {
+        let text = self.texts[i].get_untracked();
+        match Program::parse(&text) {
+            Ok(program) => {
+                self.errors[i].set(Vec::new());
+                let _ = self.with_device(i, |m| {
+                    m.set_running(false);
+                    m.load(program);
+                    m.set_running(true);
+                });
+                if i == 0 {
+                    // The terminal edits what is loaded.
+                    let terminal = self.sim.with_value(|s| Terminal::new(&s.machine().a));
+                    self.terminal.set_value(terminal);
+                }
+                true
+            }
+            Err(errors) => {
+                self.errors[i].set(
+                    errors
+                        .iter()
+                        .map(|e| (e.line, e.error.to_string()))
+                        .collect(),
+                );
+                false
+            }
+        }
+    }
+
+    /// Types a line at device A's terminal.
+    pub fn type_line(&self, line: &str) {
+        let reply = self
+            .sim
+            .try_update_value(|s| {
+                let a = &mut s.machine_mut().a;
+                self.terminal.try_update_value(|t| t.type_line(a, line))
+            })
+            .flatten()
+            .unwrap_or_default();
+        self.console.update(|c| {
+            c.push_str(&reply.replace("\r\n", "\n"));
+            if c.len() > SCROLLBACK {
+                let cut = c.len() - SCROLLBACK;
+                let cut = (cut..c.len())
+                    .find(|&i| c.is_char_boundary(i))
+                    .unwrap_or(cut);
+                c.drain(..cut);
+            }
+        });
+        self.refresh();
+    }
+
+    /// Saves both program texts.
+    pub fn save(&self) {
+        let saved = SavedIo86a {
+            programs: [self.texts[0].get_untracked(), self.texts[1].get_untracked()],
+        };
+        storage::save_to(storage::IO86A_KEY, &saved);
+    }
+}
+
+impl Default for Io86aCtx {
+    fn default() -> Self {
+        Io86aCtx::new()
+    }
+}

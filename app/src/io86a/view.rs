@@ -1,0 +1,394 @@
+//! The IO86A workspace's components: the 18-pin chip, its peripherals, the
+//! serial terminal and the program panes.
+
+use engine::io86a::peripherals::OutputSignal;
+use engine::io86a::Program;
+use leptos::ev;
+use leptos::prelude::*;
+
+use super::Io86aCtx;
+use crate::components::controls::Led;
+use crate::state::Ctx;
+
+/// What sits at a pin of the DIP-18 package.
+#[derive(Clone, Copy)]
+enum Pin {
+    X(u8),
+    Y(u8),
+    Other(&'static str),
+}
+
+/// Pins 1-9 down the left side, then 18-10 down the right (the manual's
+/// pin table).
+const LEFT: [(u8, Pin); 9] = [
+    (1, Pin::Y(2)),
+    (2, Pin::Y(3)),
+    (3, Pin::Y(4)),
+    (4, Pin::X(6)),
+    (5, Pin::Other("GND")),
+    (6, Pin::X(0)),
+    (7, Pin::X(1)),
+    (8, Pin::Other("SI")),
+    (9, Pin::X(2)),
+];
+const RIGHT: [(u8, Pin); 9] = [
+    (18, Pin::Y(1)),
+    (17, Pin::Y(0)),
+    (16, Pin::X(7)),
+    (15, Pin::Y(5)),
+    (14, Pin::Other("+5V")),
+    (13, Pin::X(5)),
+    (12, Pin::X(4)),
+    (11, Pin::Other("SO")),
+    (10, Pin::X(3)),
+];
+
+/// IR remote buttons: the manual's A and B codes, and two more NEC frames
+/// with the same custom code.
+const IR_BUTTONS: [(&str, u32); 4] = [
+    ("A", 0x10EF_7807),
+    ("B", 0x10EF_7887),
+    ("C", 0x10EF_40BF),
+    ("D", 0x10EF_C03F),
+];
+
+fn prefix(device: usize) -> &'static str {
+    if device == 0 {
+        "io86a-"
+    } else {
+        "io86a-b-"
+    }
+}
+
+/// The whole IO86A workspace.
+#[component]
+pub fn Io86aWorkspace(io: Io86aCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <Show when=move || io.notice.with(Option::is_some)>
+            <div class="notice" role="alert" data-testid="io86a-notice">
+                {move || format!("{} {}", t().corrupt_saved, io.notice.get().unwrap_or_default())}
+            </div>
+        </Show>
+        <main class="workspace io86a">
+            <div class="devices">
+                <Device device=0 />
+                <Show when=move || io.two.get()>
+                    <Device device=1 />
+                </Show>
+                <button
+                    type="button"
+                    class="toggle"
+                    class:on=move || io.two.get()
+                    data-testid="io86a-two"
+                    aria-pressed=move || io.two.get().to_string()
+                    on:click=move |_| io.two.update(|v| *v = !*v)
+                >
+                    {move || t().two_devices}
+                </button>
+            </div>
+            <div class="side">
+                <TerminalPane />
+                <ProgramPane device=0 />
+                <Show when=move || io.two.get()>
+                    <ProgramPane device=1 />
+                </Show>
+            </div>
+        </main>
+    }
+}
+
+/// One device: the chip and its peripherals.
+#[component]
+fn Device(device: usize) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let d = io.devices[device];
+    let side = move |pins: [(u8, Pin); 9], right: bool| {
+        pins.into_iter()
+            .map(|(number, pin)| view! { <PinRow device=device number=number pin=pin right=right /> })
+            .collect_view()
+    };
+    view! {
+        <section class="device" aria-label=move || if device == 0 { t().device_a } else { t().device_b }>
+            <h2>
+                {move || if device == 0 { t().device_a } else { t().device_b }} " · "
+                <span data-testid=format!("{}state", prefix(device))>
+                    {move || if d.running.get() { t().running } else { t().stopped }}
+                </span>
+            </h2>
+            <div class="dip18">
+                <div class="pins left">{side(LEFT, false)}</div>
+                <div class="package">
+                    <span class="notch"></span>
+                    <span class="part">"PLC-IO86A"</span>
+                </div>
+                <div class="pins right">{side(RIGHT, true)}</div>
+            </div>
+            <Peripherals device=device />
+        </section>
+    }
+}
+
+#[component]
+fn PinRow(device: usize, number: u8, pin: Pin, right: bool) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let d = io.devices[device];
+    let control = match pin {
+        Pin::X(n) => {
+            let on = d.inputs[usize::from(n)];
+            view! {
+                <button
+                    type="button"
+                    class="input-switch small"
+                    class:on=move || on.get()
+                    data-testid=format!("{}input-X{n:02}", prefix(device))
+                    aria-pressed=move || on.get().to_string()
+                    on:click=move |_| {
+                        let v = !on.get_untracked();
+                        let _ = io.with_device(device, |m| m.set_input(n, v));
+                    }
+                >
+                    {format!("X{n:02}")}
+                </button>
+            }
+            .into_any()
+        }
+        Pin::Y(n) => view! {
+            <span class="pin-lamp">
+                <Led
+                    on=d.lamps[usize::from(n)]
+                    testid=format!("{}lamp-Y{n:02}", prefix(device))
+                    colour="amber"
+                    label=format!("Y{n:02}")
+                />
+                {format!("Y{n:02}")}
+            </span>
+        }
+        .into_any(),
+        Pin::Other(name) => view! { <span class="pin-name">{name}</span> }.into_any(),
+    };
+    view! {
+        <div class="pin" class:right=right>
+            <span class="pin-number">{number}</span>
+            {control}
+        </div>
+    }
+}
+
+/// Analog sliders, output gauges and the IR keypad, each when its pin mode
+/// is set.
+#[component]
+fn Peripherals(device: usize) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let d = io.devices[device];
+    let analog = move |i: usize| {
+        let name = format!("X0{}", 4 + i);
+        let testid = format!("{}analog-{name}", prefix(device));
+        view! {
+            <Show when=move || d.analog[i].get()>
+                <label class="analog">
+                    {move || format!("{} {}", t().analog_in, 4 + i)}
+                    <input
+                        type="range"
+                        min="0"
+                        max="5000"
+                        step="10"
+                        data-testid=testid.clone()
+                        prop:value=move || d.analog_mv[i].get().to_string()
+                        on:input=move |e| {
+                            let mv = event_target_value(&e).parse::<i64>().unwrap_or(0);
+                            let _ = io.with_device(device, |m| m.set_analog(i, mv));
+                        }
+                    />
+                    <span>
+                        {move || {
+                            let mv = d.analog_mv[i].get();
+                            format!("{}.{:02} V → D0{} = {}", mv / 1000, mv % 1000 / 10, 6 + i, d.d[6 + i].get())
+                        }}
+                    </span>
+                </label>
+            </Show>
+        }
+    };
+    let gauge = move |i: usize| {
+        let signal = d.outputs[i];
+        view! {
+            <div class="gauge" data-testid=format!("{}out-Y0{}", prefix(device), 3 + i)>
+                {move || match signal.get() {
+                    OutputSignal::Level(_) => ().into_any(),
+                    OutputSignal::Servo(pulse) => {
+                        let us = pulse.map_or(0, |p| p.as_nanos() / 1000);
+                        // 500 µs = -90°, 1500 µs = 0°, 2500 µs = +90°.
+                        let angle = (us as f64 - 1500.0) * 0.09;
+                        view! {
+                            <span>{format!("Y0{} {} {us} µs", 3 + i, t().servo)}</span>
+                            <svg viewBox="-20 -20 40 24" class="servo" aria-hidden="true">
+                                <path d="M -18 0 A 18 18 0 0 1 18 0" class="servo-arc"></path>
+                                <line
+                                    x1="0"
+                                    y1="0"
+                                    x2="0"
+                                    y2="-16"
+                                    class="servo-arm"
+                                    class:off=pulse.is_none()
+                                    transform=format!("rotate({angle:.1})")
+                                ></line>
+                            </svg>
+                        }
+                        .into_any()
+                    }
+                    OutputSignal::Pwm { hz, duty } => view! {
+                        <span>{format!("Y0{} {} {hz} Hz {duty} %", 3 + i, t().pwm)}</span>
+                        <span class="duty">
+                            <span class="duty-fill" style=format!("width: {duty}%")></span>
+                        </span>
+                    }
+                    .into_any(),
+                }}
+            </div>
+        }
+    };
+    let keypad = IR_BUTTONS
+        .iter()
+        .map(|&(name, frame)| {
+            let press = move |on: bool| {
+                io.with_device(device, |m| m.set_ir(on.then_some(frame)));
+            };
+            view! {
+                <button
+                    type="button"
+                    class="push"
+                    data-testid=format!("{}ir-{name}", prefix(device))
+                    on:pointerdown=move |_| press(true)
+                    on:pointerup=move |_| press(false)
+                    on:pointerleave=move |_| press(false)
+                >
+                    {name}
+                </button>
+            }
+        })
+        .collect_view();
+    view! {
+        <div class="peripherals">
+            {analog(0)}
+            {analog(1)}
+            {gauge(0)}
+            {gauge(1)}
+            <Show when=move || d.ir.get()>
+                <div class="ir" role="group" aria-label=move || t().ir_remote>
+                    {move || t().ir_remote}
+                    " "
+                    {keypad.clone()}
+                </div>
+            </Show>
+        </div>
+    }
+}
+
+/// Device A's serial terminal.
+#[component]
+fn TerminalPane() -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let input = RwSignal::new(String::new());
+    view! {
+        <section class="terminal">
+            <h2>{move || t().terminal}</h2>
+            <pre data-testid="io86a-terminal" aria-live="polite">
+                {move || io.console.get()}
+            </pre>
+            <div class="terminal-input">
+                <input
+                    type="text"
+                    data-testid="io86a-terminal-input"
+                    spellcheck="false"
+                    autocomplete="off"
+                    placeholder=move || t().terminal_hint
+                    aria-label=move || t().terminal
+                    prop:value=move || input.get()
+                    on:input=move |e| input.set(event_target_value(&e))
+                    on:keydown=move |e: ev::KeyboardEvent| {
+                        if e.key() == "Enter" {
+                            io.type_line(&input.get_untracked());
+                            input.set(String::new());
+                        } else if e.ctrl_key() && e.key() == "c" {
+                            e.prevent_default();
+                            io.type_line("^C");
+                        }
+                    }
+                />
+                <button type="button" data-testid="io86a-ctrl-c" on:click=move |_| io.type_line("^C")>
+                    {move || t().ctrl_c}
+                </button>
+            </div>
+        </section>
+    }
+}
+
+/// A device's program pane: the listing, its errors as you type, Load.
+#[component]
+fn ProgramPane(device: usize) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let text = io.texts[device];
+    let live = Memo::new(move |_| match Program::parse(&text.get()) {
+        Ok(_) => Vec::new(),
+        Err(errors) => errors
+            .iter()
+            .map(|e| (e.line, e.error.to_string()))
+            .collect::<Vec<_>>(),
+    });
+    let p = prefix(device);
+    view! {
+        <section class="program">
+            <h2>
+                {move || t().program} " · "
+                {move || if device == 0 { t().device_a } else { t().device_b }}
+            </h2>
+            <textarea
+                class="plain"
+                data-testid=format!("{p}program-text")
+                spellcheck="false"
+                aria-label=move || t().program
+                prop:value=move || text.get()
+                on:input=move |e| {
+                    text.set(event_target_value(&e));
+                    io.save();
+                }
+            ></textarea>
+            <div class="program-actions">
+                <button
+                    type="button"
+                    data-testid=format!("{p}program-load")
+                    disabled=move || !live.get().is_empty()
+                    on:click=move |_| {
+                        io.load(device);
+                    }
+                >
+                    {move || t().load}
+                </button>
+            </div>
+            <div class="errors" class:has-errors=move || !live.get().is_empty() data-testid=format!("{p}program-error")>
+                {move || {
+                    let errors = live.get();
+                    if errors.is_empty() {
+                        t().errors_none.to_string()
+                    } else {
+                        errors
+                            .iter()
+                            .map(|(line, message)| format!("{} {line}: {message}", t().line))
+                            .collect::<Vec<_>>()
+                            .join("\n")
+                    }
+                }}
+            </div>
+        </section>
+    }
+}
