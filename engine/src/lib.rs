@@ -3,6 +3,7 @@
 //! same code runs natively (the `hashigo` command, tests, benchmarks) and
 //! in the browser (wasm32).
 
+pub mod arduino;
 pub mod error;
 pub mod events;
 pub mod headless;

@@ -336,7 +336,7 @@ fn bench_prints_steps_seconds_and_rate() {
 
 #[test]
 fn other_machines_say_not_supported_yet() {
-    for machine in ["avr-plc", "arduino-plc"] {
+    for machine in ["avr-plc"] {
         for command in ["run", "asm", "bench"] {
             let out = hashigo(&[command, "--machine", machine, "--program", "-"], "END\n");
             assert_eq!(out.status.code(), Some(2), "{command} {machine}");

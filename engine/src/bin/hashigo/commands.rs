@@ -4,6 +4,7 @@
 use std::io::{BufRead, Write};
 use std::time::Instant;
 
+use engine::arduino;
 use engine::events::parse_events;
 use engine::headless::Simulation;
 use engine::headless::{self, RunError, Schedule};
@@ -50,9 +51,8 @@ impl MachineId {
     /// MINASEC-U and IO86A are emulated so far; the others say so.
     fn require_supported(self) -> Result<(), String> {
         match self {
-            MachineId::MinasecU | MachineId::Io86a => Ok(()),
+            MachineId::MinasecU | MachineId::Io86a | MachineId::ArduinoPlc => Ok(()),
             MachineId::AvrPlc => Err("machine avr-plc is not supported yet".into()),
-            MachineId::ArduinoPlc => Err("machine arduino-plc is not supported yet".into()),
         }
     }
 }
@@ -65,6 +65,7 @@ fn one(problem: String) -> Problems {
 enum Loaded {
     MinasecU(Box<minasec::Program>),
     Io86a(io86a::Program),
+    Arduino(arduino::Program),
 }
 
 /// Reads `--machine`, `--program` and `--format` and parses the program for
@@ -95,6 +96,11 @@ fn load(args: &Args) -> Result<Loaded, Problems> {
         MachineId::MinasecU => minasec::Program::parse(&source.text)
             .map(|p| Loaded::MinasecU(Box::new(p)))
             .map_err(|errors| source.located(&errors)),
+        MachineId::ArduinoPlc => {
+            arduino::Program::parse(&source.text, arduino::Chip::Atmega328.capacity())
+                .map(Loaded::Arduino)
+                .map_err(|errors| source.located(&errors))
+        }
         _ => io86a::Program::parse(&source.text)
             .map(Loaded::Io86a)
             .map_err(|errors| source.located(&errors)),
@@ -120,9 +126,15 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
             run_with(&args, m, Vec::new())
         }
         Ok(Loaded::Io86a(p)) => run_with(&args, io86a::Machine::new(p), Vec::new()),
+        Ok(Loaded::Arduino(p)) => run_with(&args, arduino_for_run(&p), Vec::new()),
         // Still check everything else, on a machine with an empty program.
         Err(problems) => match id {
             MachineId::MinasecU => run_with(&args, Machine::for_run(), problems),
+            MachineId::ArduinoPlc => run_with(
+                &args,
+                arduino_for_run(&arduino::Program::default()),
+                problems,
+            ),
             _ => run_with(
                 &args,
                 io86a::Machine::new(io86a::Program::default()),
@@ -130,6 +142,14 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
             ),
         },
     }
+}
+
+/// An Arduino as `hashigo run` starts it: enabled from t = 0 (the sketch
+/// itself waits for `e`).
+fn arduino_for_run(program: &arduino::Program) -> arduino::Machine {
+    let mut m = arduino::Machine::new(program, arduino::Chip::Atmega328);
+    m.set_enabled(true);
+    m
 }
 
 /// Checks the rest of `hashigo run`'s options against `sim` and runs it;
@@ -233,6 +253,7 @@ pub fn bench(rest: &[String]) -> Result<(), Problems> {
     let program = match loaded {
         Loaded::MinasecU(program) => *program,
         Loaded::Io86a(program) => return bench_io86a(program, steps),
+        Loaded::Arduino(program) => return bench_arduino(&program, steps),
     };
     let mut machine = Machine::for_run();
     machine.load(&program);
@@ -257,6 +278,20 @@ fn print_bench(steps: u64, seconds: f64) {
         f64::INFINITY
     };
     println!("steps={steps} seconds={seconds:.6} steps_per_second={rate:.0}");
+}
+
+/// Arduino: `steps` words executed back to back.
+fn bench_arduino(program: &arduino::Program, steps: u64) -> Result<(), Problems> {
+    let mut machine = arduino_for_run(program);
+    let end = steps
+        .checked_mul(arduino::machine::DEFAULT_STEP.as_nanos())
+        .map(SimTime::from_nanos)
+        .ok_or_else(|| one(format!("--steps {steps}: too many for the simulated clock")))?;
+    let started = Instant::now();
+    machine.run_until(end);
+    let seconds = started.elapsed().as_secs_f64();
+    print_bench(machine.steps(), seconds);
+    Ok(())
 }
 
 /// IO86A: whole scans back to back until at least `steps` instructions ran.
@@ -286,6 +321,10 @@ pub fn asm(rest: &[String]) -> Result<(), Problems> {
     match load(&args)? {
         Loaded::MinasecU(program) => print!("{}", program.sheet()),
         Loaded::Io86a(program) => print!("{}", program.listing()),
+        Loaded::Arduino(program) => {
+            let machine = arduino::Machine::new(&program, arduino::Chip::Atmega328);
+            print!("{}", arduino::monitor::hex_dump(machine.eeprom()));
+        }
     }
     Ok(())
 }
@@ -303,9 +342,7 @@ pub fn console(rest: &[String]) -> Result<(), Problems> {
                 id.name()
             )))
         }
-        MachineId::ArduinoPlc => {
-            return Err(one("machine arduino-plc is not supported yet".to_string()))
-        }
+        MachineId::ArduinoPlc => return arduino_console(&args),
     }
     let step = match args.optional("step").map_err(one)? {
         Some(t) => SimTime::parse(t).map_err(|e| one(format!("--step: {e}")))?,
@@ -314,9 +351,7 @@ pub fn console(rest: &[String]) -> Result<(), Problems> {
     let program = match args.optional("program").map_err(one)? {
         Some(_) => match load(&args)? {
             Loaded::Io86a(program) => program,
-            Loaded::MinasecU(_) => {
-                return Err(one("--machine io86a needs an io86a program".to_string()))
-            }
+            _ => return Err(one("--machine io86a needs an io86a program".to_string())),
         },
         None => io86a::Program::default(),
     };
@@ -327,9 +362,49 @@ pub fn console(rest: &[String]) -> Result<(), Problems> {
     let _ = write!(out, "{}", terminal.prompt(&machine));
     for line in std::io::stdin().lock().lines() {
         let line = line.map_err(|e| one(format!("<stdin>: cannot read: {e}")))?;
-        let _ = write!(out, "{}", terminal.type_line(&mut machine, &line));
-        let _ = out.flush();
-        machine.run_until(machine.now() + step);
+        for typed in typed_lines(&line) {
+            let _ = write!(out, "{}", terminal.type_line(&mut machine, typed));
+            let _ = out.flush();
+            machine.run_until(machine.now() + step);
+        }
+    }
+    Ok(())
+}
+
+/// The lines typed in one line of standard input: LF and CR LF end a line
+/// (cli.md), and a bare CR, which serial terminals send, does too.
+fn typed_lines(line: &str) -> impl Iterator<Item = &str> {
+    line.strip_suffix('\r').unwrap_or(line).split('\r')
+}
+
+/// The Arduino sketch's serial monitor: no echo, no prompt; the PLC waits
+/// for `e` as after power-up.
+fn arduino_console(args: &Args) -> Result<(), Problems> {
+    let step = match args.optional("step").map_err(one)? {
+        Some(t) => SimTime::parse(t).map_err(|e| one(format!("--step: {e}")))?,
+        None => SimTime::from_millis(10),
+    };
+    let program = match args.optional("program").map_err(one)? {
+        Some(_) => match load(args)? {
+            Loaded::Arduino(program) => program,
+            _ => {
+                return Err(one(
+                    "--machine arduino-plc needs an arduino-plc program".to_string()
+                ))
+            }
+        },
+        None => arduino::Program::default(),
+    };
+    let mut machine = arduino::Machine::new(&program, arduino::Chip::Atmega328);
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    for line in std::io::stdin().lock().lines() {
+        let line = line.map_err(|e| one(format!("<stdin>: cannot read: {e}")))?;
+        for typed in typed_lines(&line) {
+            let _ = write!(out, "{}", arduino::monitor::type_line(&mut machine, typed));
+            let _ = out.flush();
+            machine.run_until(machine.now() + step);
+        }
     }
     Ok(())
 }

@@ -1,0 +1,288 @@
+//! The Arduino PLC sketch running: one word per step, inputs read as each
+//! step runs, outputs driven at once, a 16-bit shift register as the stack.
+
+use super::isa::{Op, Program, ERASED};
+use crate::time::SimTime;
+
+/// Which ATmega the sketch runs on: its EEPROM holds 256 or 512 words.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Chip {
+    /// ATmega168: 512-byte EEPROM, 256 steps.
+    Atmega168,
+    /// ATmega328 (Arduino Uno): 1 KB EEPROM, 512 steps.
+    #[default]
+    Atmega328,
+}
+
+impl Chip {
+    /// Steps the EEPROM holds.
+    pub const fn capacity(self) -> usize {
+        match self {
+            Chip::Atmega168 => 256,
+            Chip::Atmega328 => 512,
+        }
+    }
+}
+
+/// How the bit stack pops.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum PopOrder {
+    /// Decided (machines.md): take the top, then shift.
+    #[default]
+    Intended,
+    /// The sketch as written: shift, then take the bit that was under the top.
+    Sketch,
+}
+
+/// The default time one step takes.
+pub const DEFAULT_STEP: SimTime = SimTime::from_micros(10);
+
+/// One Arduino running the PLC sketch.
+#[derive(Clone, Debug)]
+pub struct Machine {
+    eeprom: Vec<u16>,
+    chip: Chip,
+    pop_order: PopOrder,
+    step_time: SimTime,
+    enabled: bool,
+    pc: u16,
+    stack: u16,
+    /// X000..X005 = PD2..PD7, bit n = X00n.
+    inputs: u8,
+    /// PORTB: bit n = Y00n.
+    port_b: u8,
+    now: SimTime,
+    next_step: SimTime,
+    steps: u64,
+}
+
+impl Machine {
+    /// An Arduino with `program` in EEPROM (the rest erased), as after
+    /// power-up: the PLC is disabled until `e`.
+    pub fn new(program: &Program, chip: Chip) -> Machine {
+        let mut eeprom = vec![ERASED; chip.capacity()];
+        for (slot, &word) in eeprom.iter_mut().zip(program.words()) {
+            *slot = word;
+        }
+        Machine {
+            eeprom,
+            chip,
+            pop_order: PopOrder::Intended,
+            step_time: DEFAULT_STEP,
+            enabled: false,
+            pc: 0,
+            stack: 0,
+            inputs: 0,
+            port_b: 0,
+            now: SimTime::ZERO,
+            next_step: DEFAULT_STEP,
+            steps: 0,
+        }
+    }
+
+    /// The EEPROM, one word per step.
+    pub fn eeprom(&self) -> &[u16] {
+        &self.eeprom
+    }
+
+    /// Writes one EEPROM word (the monitor's `s`); false beyond the EEPROM.
+    pub fn write_word(&mut self, step: usize, word: u16) -> bool {
+        match self.eeprom.get_mut(step) {
+            Some(slot) => {
+                *slot = word;
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// The chip.
+    pub fn chip(&self) -> Chip {
+        self.chip
+    }
+
+    /// Changes the chip: the EEPROM grows (erased) or shrinks, refusing to
+    /// drop a programmed word.
+    pub fn set_chip(&mut self, chip: Chip) -> Result<(), String> {
+        let capacity = chip.capacity();
+        if let Some(step) = self.eeprom.iter().skip(capacity).position(|&w| w != ERASED) {
+            return Err(format!(
+                "step {} is programmed but this chip holds {capacity} steps",
+                capacity + step
+            ));
+        }
+        self.eeprom.resize(capacity, ERASED);
+        self.chip = chip;
+        Ok(())
+    }
+
+    /// Chooses how the stack pops.
+    pub fn set_pop_order(&mut self, order: PopOrder) {
+        self.pop_order = order;
+    }
+
+    /// Sets the time a step takes (above zero).
+    pub fn set_step_time(&mut self, t: SimTime) -> Result<(), String> {
+        if t == SimTime::ZERO || t > SimTime::from_secs(1) {
+            return Err(format!(
+                "step time {t}ms is out of range: above 0 and at most 1s"
+            ));
+        }
+        self.step_time = t;
+        self.next_step = self.now + t;
+        Ok(())
+    }
+
+    /// `e` (true) or `d`: the PLC runs from step 0 when enabled.
+    pub fn set_enabled(&mut self, on: bool) {
+        if on && !self.enabled {
+            self.pc = 0;
+            self.next_step = self.now + self.step_time;
+        }
+        self.enabled = on;
+    }
+
+    /// Whether the PLC runs.
+    pub fn enabled(&self) -> bool {
+        self.enabled
+    }
+
+    /// The step that runs next.
+    pub fn pc(&self) -> u16 {
+        self.pc
+    }
+
+    /// The bit stack (bit 0 = top).
+    pub fn stack(&self) -> u16 {
+        self.stack
+    }
+
+    /// Sets input X00n (pin PD(n+2)).
+    pub fn set_input(&mut self, n: u8, on: bool) {
+        if n < 6 {
+            self.inputs = (self.inputs & !(1 << n)) | (u8::from(on) << n);
+        }
+    }
+
+    /// The input pins (bit n = X00n).
+    pub fn inputs(&self) -> u8 {
+        self.inputs
+    }
+
+    /// The output pins (bit n = Y00n).
+    pub fn outputs(&self) -> u8 {
+        self.port_b & 0x3F
+    }
+
+    /// The simulated time.
+    pub fn now(&self) -> SimTime {
+        self.now
+    }
+
+    /// Steps executed.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// Runs every step due at or before `t`.
+    pub fn run_until(&mut self, t: SimTime) {
+        while self.enabled && self.next_step <= t {
+            self.now = self.next_step;
+            self.step();
+            self.next_step = self.now + self.step_time;
+        }
+        self.now = self.now.max(t);
+    }
+
+    /// Runs every step due strictly before `t`; the time becomes `t`.
+    pub fn run_before(&mut self, t: SimTime) {
+        if t > SimTime::ZERO {
+            self.run_until(SimTime::from_nanos(t.as_nanos() - 1));
+        }
+        self.now = self.now.max(t);
+    }
+
+    fn push(&mut self, bit: bool) {
+        self.stack = self.stack << 1 | u16::from(bit);
+    }
+
+    fn pop(&mut self) -> bool {
+        match self.pop_order {
+            PopOrder::Intended => {
+                let bit = self.stack & 1 != 0;
+                self.stack >>= 1;
+                bit
+            }
+            PopOrder::Sketch => {
+                self.stack >>= 1;
+                self.stack & 1 != 0
+            }
+        }
+    }
+
+    /// What an operand reads: bits 0-7 the inputs, 8-15 port B (the sketch
+    /// takes the operand's low four bits).
+    fn read(&self, bit: u8) -> bool {
+        if bit > 7 {
+            self.port_b >> (bit - 8) & 1 != 0
+        } else {
+            self.inputs >> bit & 1 != 0
+        }
+    }
+
+    /// One step: fetch, decode, execute. Every pop happens whatever the
+    /// operand reads (no short-circuit): the stack must move as the sketch's.
+    fn step(&mut self) {
+        let word = self
+            .eeprom
+            .get(usize::from(self.pc))
+            .copied()
+            .unwrap_or(ERASED);
+        self.pc += 1;
+        self.steps += 1;
+        let bit = (word & 0x0F) as u8;
+        match Op::decode(word) {
+            Some(Op::End) => self.pc = 0,
+            Some(Op::Ld) => self.push(self.read(bit)),
+            Some(Op::Ldn) => self.push(!self.read(bit)),
+            Some(Op::And) => {
+                let top = self.pop();
+                let v = self.read(bit) && top;
+                self.push(v);
+            }
+            Some(Op::Andn) => {
+                let top = self.pop();
+                let v = !self.read(bit) && top;
+                self.push(v);
+            }
+            Some(Op::Or) => {
+                let top = self.pop();
+                let v = self.read(bit) || top;
+                self.push(v);
+            }
+            Some(Op::Orn) => {
+                let top = self.pop();
+                let v = !self.read(bit) || top;
+                self.push(v);
+            }
+            Some(Op::Andb) => {
+                let (a, b) = (self.pop(), self.pop());
+                self.push(a && b);
+            }
+            Some(Op::Orb) => {
+                let (a, b) = (self.pop(), self.pop());
+                self.push(a || b);
+            }
+            Some(Op::Out) => {
+                let v = self.pop();
+                // Port B bit (operand - 8): the intent of the sketch, whose
+                // own code shifts by the raw operand (see docs/arduino-plc.md).
+                if let Some(n) = bit.checked_sub(8) {
+                    self.port_b = (self.port_b & !(1 << n)) | (u8::from(v) << n);
+                }
+            }
+            Some(Op::Jump) => self.pc = word & 0xFF,
+            None => {} // opcodes 10-14: the sketch does nothing
+        }
+    }
+}
