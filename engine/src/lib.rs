@@ -4,6 +4,7 @@
 //! in the browser (wasm32).
 
 pub mod arduino;
+pub mod avr;
 pub mod error;
 pub mod events;
 pub mod headless;

@@ -5,6 +5,7 @@ use std::io::{BufRead, Write};
 use std::time::Instant;
 
 use engine::arduino;
+use engine::avr;
 use engine::events::parse_events;
 use engine::headless::Simulation;
 use engine::headless::{self, RunError, Schedule};
@@ -51,8 +52,9 @@ impl MachineId {
     /// MINASEC-U and IO86A are emulated so far; the others say so.
     fn require_supported(self) -> Result<(), String> {
         match self {
-            MachineId::MinasecU | MachineId::Io86a | MachineId::ArduinoPlc => Ok(()),
-            MachineId::AvrPlc => Err("machine avr-plc is not supported yet".into()),
+            MachineId::MinasecU | MachineId::Io86a | MachineId::ArduinoPlc | MachineId::AvrPlc => {
+                Ok(())
+            }
         }
     }
 }
@@ -66,6 +68,7 @@ enum Loaded {
     MinasecU(Box<minasec::Program>),
     Io86a(io86a::Program),
     Arduino(arduino::Program),
+    Avr(avr::Program),
 }
 
 /// Reads `--machine`, `--program` and `--format` and parses the program for
@@ -78,6 +81,7 @@ fn load(args: &Args) -> Result<Loaded, Problems> {
     let source = SourceFile::read(path).map_err(one)?;
     match format {
         Format::Il => {}
+        Format::Asm if machine == MachineId::AvrPlc => {}
         Format::Asm => {
             return Err(one(format!(
                 "{}: {} programs are mnemonic text (.il), not .asm",
@@ -96,15 +100,29 @@ fn load(args: &Args) -> Result<Loaded, Problems> {
         MachineId::MinasecU => minasec::Program::parse(&source.text)
             .map(|p| Loaded::MinasecU(Box::new(p)))
             .map_err(|errors| source.located(&errors)),
+        MachineId::AvrPlc => avr::Program::parse(&source.text, avr_scan_ms(args))
+            .map(Loaded::Avr)
+            .map_err(|errors| source.located(&errors)),
         MachineId::ArduinoPlc => {
             arduino::Program::parse(&source.text, arduino::Chip::Atmega328.capacity())
                 .map(Loaded::Arduino)
                 .map_err(|errors| source.located(&errors))
         }
-        _ => io86a::Program::parse(&source.text)
+        MachineId::Io86a => io86a::Program::parse(&source.text)
             .map(Loaded::Io86a)
             .map_err(|errors| source.located(&errors)),
     }
+}
+
+/// The `Scan` symbol of AVR sources: the scan period in ms from
+/// `--set scan=` (a bad value is reported by the settings), else 10.
+fn avr_scan_ms(args: &Args) -> i64 {
+    args.all("set")
+        .filter_map(|s| s.split_once('='))
+        .filter(|(n, _)| n.trim().eq_ignore_ascii_case("scan"))
+        .filter_map(|(_, v)| SimTime::parse(v.trim()).ok())
+        .last()
+        .map_or(10, |t| (t.as_nanos() / 1_000_000) as i64)
 }
 
 /// `hashigo run`.
@@ -127,6 +145,7 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
         }
         Ok(Loaded::Io86a(p)) => run_with(&args, io86a::Machine::new(p), Vec::new()),
         Ok(Loaded::Arduino(p)) => run_with(&args, arduino_for_run(&p), Vec::new()),
+        Ok(Loaded::Avr(p)) => run_with(&args, avr::Machine::new(p), Vec::new()),
         // Still check everything else, on a machine with an empty program.
         Err(problems) => match id {
             MachineId::MinasecU => run_with(&args, Machine::for_run(), problems),
@@ -254,6 +273,7 @@ pub fn bench(rest: &[String]) -> Result<(), Problems> {
         Loaded::MinasecU(program) => *program,
         Loaded::Io86a(program) => return bench_io86a(program, steps),
         Loaded::Arduino(program) => return bench_arduino(&program, steps),
+        Loaded::Avr(program) => return bench_avr(program, steps),
     };
     let mut machine = Machine::for_run();
     machine.load(&program);
@@ -294,6 +314,27 @@ fn bench_arduino(program: &arduino::Program, steps: u64) -> Result<(), Problems>
     Ok(())
 }
 
+/// AVR: whole scans back to back until at least `steps` records ran.
+fn bench_avr(program: avr::Program, steps: u64) -> Result<(), Problems> {
+    let per_scan = program.instructions().len() as u64;
+    if per_scan == 0 {
+        return Err(one(
+            "--program: the program has no records to run".to_string()
+        ));
+    }
+    let mut machine = avr::Machine::new(program);
+    let scans = steps.div_ceil(per_scan);
+    let end = scans
+        .checked_mul(machine.scan_period().as_nanos())
+        .map(SimTime::from_nanos)
+        .ok_or_else(|| one(format!("--steps {steps}: too many for the simulated clock")))?;
+    let started = Instant::now();
+    machine.run_until(end);
+    let seconds = started.elapsed().as_secs_f64();
+    print_bench(scans * per_scan, seconds);
+    Ok(())
+}
+
 /// IO86A: whole scans back to back until at least `steps` instructions ran.
 fn bench_io86a(program: io86a::Program, steps: u64) -> Result<(), Problems> {
     let mut machine = io86a::Machine::new(program);
@@ -325,6 +366,7 @@ pub fn asm(rest: &[String]) -> Result<(), Problems> {
             let machine = arduino::Machine::new(&program, arduino::Chip::Atmega328);
             print!("{}", arduino::monitor::hex_dump(machine.eeprom()));
         }
+        Loaded::Avr(program) => print!("{}", program.listing()),
     }
     Ok(())
 }

@@ -1,0 +1,236 @@
+//! The simplified PLC's scan: inputs driven into their register bits, the
+//! records run from the first to `End_PLC` with one accumulator, once every
+//! scan period.
+
+use super::program::{BitRef, Instruction, Program, TimerKind};
+use crate::time::SimTime;
+
+/// The default scan period.
+pub const DEFAULT_SCAN: SimTime = SimTime::from_millis(10);
+
+/// A timer's RAM word, plus the pulse timer's state.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TimerWord {
+    /// Scans counted (the 2-byte RAM word; zero after power-up).
+    pub count: u16,
+    /// TP: the input in the last scan, for its rising edge.
+    prev_in: bool,
+    /// TP: a pulse is running.
+    pulsing: bool,
+    /// TP: the pulse ended while the input was still on.
+    done: bool,
+}
+
+impl TimerWord {
+    /// Takes IN, returns Q (scan units; see docs/avr-plc.md).
+    fn run(&mut self, kind: TimerKind, input: bool, preset: u16) -> bool {
+        match kind {
+            // Q once IN has been on for `preset` scans.
+            TimerKind::Ton => {
+                if input {
+                    let q = self.count >= preset;
+                    if !q {
+                        self.count += 1;
+                    }
+                    q
+                } else {
+                    self.count = 0;
+                    false
+                }
+            }
+            // Q while IN, and for `preset` scans after IN drops. The count
+            // starts at zero after power-up, so Q is on then too.
+            TimerKind::Tof => {
+                if input {
+                    self.count = 0;
+                    true
+                } else {
+                    let q = self.count < preset;
+                    if q {
+                        self.count += 1;
+                    }
+                    q
+                }
+            }
+            // Q for `preset` scans from a rising edge of IN; a new pulse
+            // needs IN to drop after the last one ended.
+            TimerKind::Tp => {
+                let rising = input && !self.prev_in;
+                self.prev_in = input;
+                if !self.pulsing && !self.done && rising {
+                    self.pulsing = true;
+                    self.count = 0;
+                }
+                if self.pulsing {
+                    if self.count < preset {
+                        self.count += 1;
+                        return true;
+                    }
+                    self.pulsing = false;
+                    self.done = input;
+                    return false;
+                }
+                if !input {
+                    self.done = false;
+                }
+                false
+            }
+        }
+    }
+}
+
+/// One AVR running the simplified PLC.
+#[derive(Clone, Debug)]
+pub struct Machine {
+    program: Program,
+    scan_period: SimTime,
+    registers: [u8; 32],
+    timers: Vec<TimerWord>,
+    /// Input bits and their levels, written into the registers each scan.
+    driven: Vec<(BitRef, bool)>,
+    now: SimTime,
+    next_scan: SimTime,
+    scans: u64,
+    last_scan: [u8; 32],
+}
+
+impl Machine {
+    /// A powered-up AVR with `program` (RAM cleared: every timer word 0).
+    pub fn new(program: Program) -> Machine {
+        let timers = vec![TimerWord::default(); program.timer_count()];
+        Machine {
+            program,
+            scan_period: DEFAULT_SCAN,
+            registers: [0; 32],
+            timers,
+            driven: Vec::new(),
+            now: SimTime::ZERO,
+            next_scan: DEFAULT_SCAN,
+            scans: 0,
+            last_scan: [0; 32],
+        }
+    }
+
+    /// The program.
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// The scan period.
+    pub fn scan_period(&self) -> SimTime {
+        self.scan_period
+    }
+
+    /// Sets the scan period (the program's presets count scans).
+    pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
+        if period == SimTime::ZERO || period > SimTime::from_secs(10) {
+            return Err(format!(
+                "scan period {period}ms is out of range: above 0 and at most 10s"
+            ));
+        }
+        self.scan_period = period;
+        self.next_scan = self.now + period;
+        Ok(())
+    }
+
+    /// Drives an input bit: from the next scan on, the bit reads `on`.
+    pub fn set_input(&mut self, bit: BitRef, on: bool) {
+        match self.driven.iter_mut().find(|(b, _)| *b == bit) {
+            Some(entry) => entry.1 = on,
+            None => self.driven.push((bit, on)),
+        }
+    }
+
+    /// A bit as the last completed scan left it.
+    pub fn bit(&self, bit: BitRef) -> bool {
+        self.last_scan[usize::from(bit.register)] >> bit.bit & 1 != 0
+    }
+
+    /// The registers as the last completed scan left them.
+    pub fn last_scan_registers(&self) -> &[u8; 32] {
+        &self.last_scan
+    }
+
+    /// A timer's RAM word.
+    pub fn timer(&self, index: usize) -> Option<&TimerWord> {
+        self.timers.get(index)
+    }
+
+    /// The simulated time.
+    pub fn now(&self) -> SimTime {
+        self.now
+    }
+
+    /// Scans run.
+    pub fn scans(&self) -> u64 {
+        self.scans
+    }
+
+    /// Runs every scan due at or before `t`.
+    pub fn run_until(&mut self, t: SimTime) {
+        while self.next_scan <= t {
+            self.now = self.next_scan;
+            self.scan();
+            self.next_scan = self.now + self.scan_period;
+        }
+        self.now = self.now.max(t);
+    }
+
+    /// Runs every scan due strictly before `t`; the time becomes `t`.
+    pub fn run_before(&mut self, t: SimTime) {
+        if t > SimTime::ZERO {
+            self.run_until(SimTime::from_nanos(t.as_nanos() - 1));
+        }
+        self.now = self.now.max(t);
+    }
+
+    fn read(&self, b: BitRef) -> bool {
+        self.registers[usize::from(b.register)] >> b.bit & 1 != 0
+    }
+
+    fn write(&mut self, b: BitRef, on: bool) {
+        let r = &mut self.registers[usize::from(b.register)];
+        *r = (*r & !(1 << b.bit)) | (u8::from(on) << b.bit);
+    }
+
+    fn scan(&mut self) {
+        for i in 0..self.driven.len() {
+            let (b, on) = self.driven[i];
+            self.write(b, on);
+        }
+        let mut acc = false;
+        for i in 0..self.program.instructions().len() {
+            match self.program.instructions()[i] {
+                Instruction::Load(b, inv) => acc = self.read(b) ^ inv,
+                Instruction::And(b, inv) => acc &= self.read(b) ^ inv,
+                Instruction::Or(b, inv) => acc |= self.read(b) ^ inv,
+                Instruction::Coil(b, inv) => self.write(b, acc ^ inv),
+                Instruction::Set(b) if acc => self.write(b, true),
+                Instruction::Reset(b) if acc => self.write(b, false),
+                Instruction::Set(_) | Instruction::Reset(_) => {}
+                Instruction::Timer {
+                    kind,
+                    index,
+                    preset,
+                } => {
+                    if let Some(t) = self.timers.get_mut(index) {
+                        acc = t.run(kind, acc, preset);
+                    }
+                }
+                Instruction::Not => acc = !acc,
+                Instruction::Pulse(memory, falling) => {
+                    let before = self.read(memory);
+                    self.write(memory, acc);
+                    acc = if falling {
+                        !acc && before
+                    } else {
+                        acc && !before
+                    };
+                }
+                Instruction::End => break,
+            }
+        }
+        self.scans += 1;
+        self.last_scan = self.registers;
+    }
+}

@@ -1,0 +1,14 @@
+//! The AVR simplified PLC (machines.md §3): ladder records written as `.db`
+//! lines in AVR assembler, run by an accumulator interpreter.
+//!
+//! - [`asm`]: the assembler subset;
+//! - [`program`]: records decoded into instructions, bit names;
+//! - [`machine`]: the scan and the TON/TOF/TP timers.
+
+pub mod asm;
+pub mod headless;
+pub mod machine;
+pub mod program;
+
+pub use machine::Machine;
+pub use program::{BitRef, Instruction, Program, ProgramError};
