@@ -108,6 +108,15 @@ pub struct Texts {
     pub pwm: &'static str,
     pub running: &'static str,
     pub stopped: &'static str,
+    pub monitor: &'static str,
+    pub monitor_hint: &'static str,
+    pub enabled: &'static str,
+    pub disabled: &'static str,
+    pub quirk_sketch: &'static str,
+    pub warn_spin: &'static str,
+    pub warn_tof: &'static str,
+    pub bits: &'static str,
+    pub drive: &'static str,
 }
 
 static JA: Texts = Texts {
@@ -172,6 +181,15 @@ static JA: Texts = Texts {
     pwm: "PWM",
     running: "実行中",
     stopped: "停止中",
+    monitor: "シリアルモニター",
+    monitor_hint: "コマンド（? s l p e d）を入力して Enter",
+    enabled: "PLC 動作中",
+    disabled: "PLC 停止中（e で開始）",
+    quirk_sketch: "スケッチのままのポップ順",
+    warn_spin: "END も JUMP もありません: 消去済みの EEPROM（JUMP 255）に入り、ステップ 255 で止まり続けます",
+    warn_tof: "TOF は電源投入後、設定時間のあいだ出力が ON になります（元の作者の注意どおり）",
+    bits: "ビット",
+    drive: "入力にする",
 };
 
 static EN: Texts = Texts {
@@ -236,4 +254,14 @@ static EN: Texts = Texts {
     pwm: "PWM",
     running: "running",
     stopped: "stopped",
+    monitor: "Serial monitor",
+    monitor_hint: "Type a command (? s l p e d) and press Enter",
+    enabled: "PLC enabled",
+    disabled: "PLC disabled (e starts it)",
+    quirk_sketch: "The sketch's own pop order",
+    warn_spin:
+        "No END or JUMP: the program runs into erased EEPROM (JUMP 255) and spins at step 255",
+    warn_tof: "TOF: the output is ON for its set time after power-up (as the seed warns)",
+    bits: "Bits",
+    drive: "drive",
 };

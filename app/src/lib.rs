@@ -1,6 +1,8 @@
 //! Hashigo's web app: the MINASEC-U front panel, the program pane and the
 //! simulation loop. It renders and dispatches; the machine is the engine's.
 
+pub mod arduino;
+pub mod avr;
 pub mod bench;
 pub mod components;
 pub mod examples;
@@ -42,8 +44,10 @@ pub fn start() {
     }
     let ctx = workspace();
     let io = io86a::Io86aCtx::new();
-    leptos::mount::mount_to_body(move || view! { <App ctx=ctx io=io /> });
-    start_loop(ctx, io);
+    let ard = arduino::ArduinoCtx::new();
+    let avr = avr::AvrCtx::new();
+    leptos::mount::mount_to_body(move || view! { <App ctx=ctx io=io ard=ard avr=avr /> });
+    start_loop(ctx, io, ard, avr);
 }
 
 /// A panic must not leave a dead page: say so, in both languages.
@@ -117,9 +121,16 @@ pub fn workspace() -> Ctx {
 
 /// The page: header, notices, and the chosen machine's workspace.
 #[component]
-pub fn App(ctx: Ctx, io: io86a::Io86aCtx) -> impl IntoView {
+pub fn App(
+    ctx: Ctx,
+    io: io86a::Io86aCtx,
+    ard: arduino::ArduinoCtx,
+    avr: avr::AvrCtx,
+) -> impl IntoView {
     provide_context(ctx);
     provide_context(io);
+    provide_context(ard);
+    provide_context(avr);
     view! {
         <ErrorBoundary fallback=move |_| {
             view! { <div class="fatal" role="alert">{move || ctx.lang.get().texts().crashed}</div> }
@@ -130,15 +141,20 @@ pub fn App(ctx: Ctx, io: io86a::Io86aCtx) -> impl IntoView {
                     {move || ctx.notice.get().unwrap_or_default()}
                 </div>
             </Show>
-            <Show
-                when=move || ctx.machine.get() == state::MachineKind::MinasecU
-                fallback=move || view! { <io86a::view::Io86aWorkspace io=io /> }
-            >
-                <main class="workspace">
-                    <Board />
-                    <ProgramPane />
-                </main>
-            </Show>
+            {move || match ctx.machine.get() {
+                state::MachineKind::MinasecU => {
+                    view! {
+                        <main class="workspace">
+                            <Board />
+                            <ProgramPane />
+                        </main>
+                    }
+                        .into_any()
+                }
+                state::MachineKind::Io86a => view! { <io86a::view::Io86aWorkspace io=io /> }.into_any(),
+                state::MachineKind::ArduinoPlc => view! { <arduino::ArduinoWorkspace ard=ard /> }.into_any(),
+                state::MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=avr /> }.into_any(),
+            }}
         </ErrorBoundary>
     }
 }
@@ -153,19 +169,30 @@ pub fn now_ms() -> f64 {
 /// The simulation loop: each animation frame advances the simulator by the
 /// frame's wall time (at the chosen speed, capped) and copies the panel into
 /// the signals that changed. Runs for the page's life.
-pub fn start_loop(ctx: Ctx, io: io86a::Io86aCtx) {
+pub fn start_loop(ctx: Ctx, io: io86a::Io86aCtx, ard: arduino::ArduinoCtx, avr: avr::AvrCtx) {
     type FrameFn = Closure<dyn FnMut(f64)>;
     let slot: Rc<RefCell<Option<FrameFn>>> = Rc::new(RefCell::new(None));
     let again = Rc::clone(&slot);
     let last = Cell::new(None::<f64>);
     *slot.borrow_mut() = Some(Closure::new(move |timestamp: f64| {
         let wall_ms = last.replace(Some(timestamp)).map_or(0.0, |l| timestamp - l);
-        if ctx.machine.get_untracked() == state::MachineKind::Io86a {
-            io.sim.update_value(|s| s.frame(wall_ms, now_ms));
-            io.refresh();
-        } else {
-            ctx.sim.update_value(|s| s.frame(wall_ms, now_ms));
-            ctx.refresh();
+        match ctx.machine.get_untracked() {
+            state::MachineKind::MinasecU => {
+                ctx.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                ctx.refresh();
+            }
+            state::MachineKind::Io86a => {
+                io.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                io.refresh();
+            }
+            state::MachineKind::ArduinoPlc => {
+                ard.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                ard.refresh();
+            }
+            state::MachineKind::AvrPlc => {
+                avr.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                avr.refresh();
+            }
         }
         if let Some(f) = again.borrow().as_ref() {
             request_frame(f);

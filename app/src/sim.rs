@@ -19,6 +19,20 @@ impl Tick for Machine {
     }
 }
 
+impl Tick for engine::arduino::Machine {
+    fn tick(&mut self, dt: SimTime) {
+        let t = self.now().saturating_add(dt);
+        self.run_until(t);
+    }
+}
+
+impl Tick for engine::avr::Machine {
+    fn tick(&mut self, dt: SimTime) {
+        let t = self.now().saturating_add(dt);
+        self.run_until(t);
+    }
+}
+
 impl Tick for LinkedPair {
     fn tick(&mut self, dt: SimTime) {
         let t = self.a.now().saturating_add(dt);

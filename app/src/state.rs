@@ -137,6 +137,8 @@ impl Parsed {
 pub enum MachineKind {
     MinasecU,
     Io86a,
+    ArduinoPlc,
+    AvrPlc,
 }
 
 impl MachineKind {
@@ -145,6 +147,8 @@ impl MachineKind {
         match self {
             MachineKind::MinasecU => "minasec-u",
             MachineKind::Io86a => "io86a",
+            MachineKind::ArduinoPlc => "arduino-plc",
+            MachineKind::AvrPlc => "avr-plc",
         }
     }
 
@@ -153,6 +157,8 @@ impl MachineKind {
         match code {
             "minasec-u" => Some(MachineKind::MinasecU),
             "io86a" => Some(MachineKind::Io86a),
+            "arduino-plc" => Some(MachineKind::ArduinoPlc),
+            "avr-plc" => Some(MachineKind::AvrPlc),
             _ => None,
         }
     }

@@ -36,8 +36,13 @@ fn mount_both() -> (Ctx, app::io86a::Io86aCtx, Element) {
     document().body().unwrap().append_child(&container).unwrap();
     let ctx = Ctx::new(Simulator::new(engine::minasec::Machine::new()), Lang::En);
     let io = app::io86a::Io86aCtx::new();
+    let ard = app::arduino::ArduinoCtx::new();
+    let avr = app::avr::AvrCtx::new();
     let html: HtmlElement = container.clone().unchecked_into();
-    let handle = leptos::mount::mount_to(html, move || view! { <App ctx=ctx io=io /> });
+    let handle = leptos::mount::mount_to(
+        html,
+        move || view! { <App ctx=ctx io=io ard=ard avr=avr /> },
+    );
     handle.forget();
     (ctx, io, container)
 }

@@ -13,13 +13,20 @@ use crate::storage;
 pub fn Header() -> impl IntoView {
     let ctx = Ctx::get();
     let io = expect_context::<Io86aCtx>();
+    let ard = expect_context::<crate::arduino::ArduinoCtx>();
+    let avr = expect_context::<crate::avr::AvrCtx>();
     let t = move || ctx.lang.get().texts();
     let minasec = move || ctx.machine.get() == MachineKind::MinasecU;
     view! {
         <header class="top">
             <h1>
                 {move || {
-                    if minasec() { t().title } else { t().title_io86a }
+                    match ctx.machine.get() {
+                        MachineKind::MinasecU => t().title,
+                        MachineKind::Io86a => t().title_io86a,
+                        MachineKind::ArduinoPlc => "Hashigo — Arduino PLC",
+                        MachineKind::AvrPlc => "Hashigo — AVR PLC",
+                    }
                 }}
             </h1>
             <label>
@@ -36,6 +43,8 @@ pub fn Header() -> impl IntoView {
                 >
                     <option value="minasec-u">"MINASEC-U"</option>
                     <option value="io86a">"PLC-IO86A"</option>
+                    <option value="arduino-plc">"Arduino PLC"</option>
+                    <option value="avr-plc">"AVR PLC"</option>
                 </select>
             </label>
             <label>
@@ -98,6 +107,8 @@ pub fn Header() -> impl IntoView {
                             ctx.speed.set(speed);
                             ctx.sim.update_value(|s| s.set_speed(speed));
                             io.sim.update_value(|s| s.set_speed(speed));
+                            ard.sim.update_value(|s| s.set_speed(speed));
+                            avr.sim.update_value(|s| s.set_speed(speed));
                         }
                     }
                 >
@@ -126,6 +137,8 @@ pub fn Header() -> impl IntoView {
                     ctx.paused.set(paused);
                     ctx.sim.update_value(|s| s.set_paused(paused));
                     io.sim.update_value(|s| s.set_paused(paused));
+                    ard.sim.update_value(|s| s.set_paused(paused));
+                    avr.sim.update_value(|s| s.set_paused(paused));
                 }
             >
                 {move || if ctx.paused.get() { t().resume } else { t().pause }}

@@ -1,0 +1,277 @@
+//! The Arduino PLC workspace: the board's PD2-PD7 inputs and PB0-PB5
+//! outputs, the serial monitor, and the program pane in the sketch's
+//! mnemonic text.
+
+use engine::arduino::isa::Op;
+use engine::arduino::{monitor, Chip, Machine, PopOrder, Program};
+use leptos::ev;
+use leptos::prelude::*;
+
+use crate::components::controls::Led;
+use crate::sim::Simulator;
+use crate::state::Ctx;
+use crate::storage;
+
+/// The seed's self-holding example, the text a fresh workspace opens with.
+pub const SELF_HOLD: &str = "; Arduino PLC sketch: self-hold (the seed's example)\n\
+0 LD X000\n1 OR Y000\n2 ANDN X001\n3 OUT Y000\n4 JUMP 0\n";
+
+const KEY: &str = "hashigo.arduino-plc.v1";
+const SCROLLBACK: usize = 20_000;
+
+/// What the Arduino workspace's components share.
+#[derive(Clone, Copy)]
+pub struct ArduinoCtx {
+    pub sim: StoredValue<Simulator<Machine>, LocalStorage>,
+    pub inputs: [RwSignal<bool>; 6],
+    pub outputs: [RwSignal<bool>; 6],
+    pub enabled: RwSignal<bool>,
+    pub sketch_quirk: RwSignal<bool>,
+    pub console: RwSignal<String>,
+    pub text: RwSignal<String>,
+}
+
+fn set<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
+    if signal.with_untracked(|old| *old != value) {
+        signal.set(value);
+    }
+}
+
+impl ArduinoCtx {
+    /// A workspace with the saved text loaded (or the seed's example).
+    pub fn new() -> ArduinoCtx {
+        let text = storage::saved_string(KEY).unwrap_or_else(|| SELF_HOLD.to_string());
+        let ctx = ArduinoCtx {
+            sim: StoredValue::new_local(Simulator::new(Machine::new(
+                &Program::default(),
+                Chip::Atmega328,
+            ))),
+            inputs: std::array::from_fn(|_| RwSignal::new(false)),
+            outputs: std::array::from_fn(|_| RwSignal::new(false)),
+            enabled: RwSignal::new(false),
+            sketch_quirk: RwSignal::new(false),
+            console: RwSignal::new(String::new()),
+            text: RwSignal::new(text),
+        };
+        ctx.load();
+        ctx
+    }
+
+    /// Copies the pins into the signals that changed.
+    pub fn refresh(&self) {
+        self.sim.with_value(|s| {
+            let m = s.machine();
+            for n in 0..6 {
+                set(self.inputs[n], m.inputs() >> n & 1 != 0);
+                set(self.outputs[n], m.outputs() >> n & 1 != 0);
+            }
+            set(self.enabled, m.enabled());
+        });
+    }
+
+    /// Writes the pane's program into EEPROM (as keying it in with `s`)
+    /// and enables the PLC; false if it has errors.
+    pub fn load(&self) -> bool {
+        let Ok(program) = Program::parse(&self.text.get_untracked(), Chip::Atmega328.capacity())
+        else {
+            return false;
+        };
+        let quirk = self.sketch_quirk.get_untracked();
+        self.sim.update_value(|s| {
+            let mut m = Machine::new(&program, Chip::Atmega328);
+            m.set_pop_order(if quirk {
+                PopOrder::Sketch
+            } else {
+                PopOrder::Intended
+            });
+            let inputs = s.machine().inputs();
+            for n in 0..6 {
+                m.set_input(n, inputs >> n & 1 != 0);
+            }
+            m.set_enabled(true);
+            *s.machine_mut() = m;
+        });
+        self.refresh();
+        true
+    }
+
+    /// Types a line at the serial monitor.
+    pub fn type_line(&self, line: &str) {
+        let reply = self
+            .sim
+            .try_update_value(|s| monitor::type_line(s.machine_mut(), line))
+            .unwrap_or_default();
+        self.console.update(|c| {
+            c.push_str(&reply.replace("\r\n", "\n"));
+            if c.len() > SCROLLBACK {
+                let cut = c.len() - SCROLLBACK;
+                let cut = (cut..c.len())
+                    .find(|&i| c.is_char_boundary(i))
+                    .unwrap_or(cut);
+                c.drain(..cut);
+            }
+        });
+        self.refresh();
+    }
+}
+
+impl Default for ArduinoCtx {
+    fn default() -> Self {
+        ArduinoCtx::new()
+    }
+}
+
+/// The whole Arduino workspace.
+#[component]
+pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let inputs = (0..6u8)
+        .map(|n| {
+            let on = ard.inputs[usize::from(n)];
+            view! {
+                <div class="pin">
+                    <span class="pin-name">{format!("PD{}", n + 2)}</span>
+                    <button
+                        type="button"
+                        class="input-switch small"
+                        class:on=move || on.get()
+                        data-testid=format!("arduino-input-X{n:03}")
+                        aria-pressed=move || on.get().to_string()
+                        on:click=move |_| {
+                            let v = !on.get_untracked();
+                            ard.sim.update_value(|s| s.machine_mut().set_input(n, v));
+                            ard.refresh();
+                        }
+                    >
+                        {format!("X{n:03}")}
+                    </button>
+                </div>
+            }
+        })
+        .collect_view();
+    let outputs = (0..6usize)
+        .map(|n| {
+            view! {
+                <div class="pin">
+                    <span class="pin-name">{format!("PB{n}")}</span>
+                    <span class="pin-lamp">
+                        <Led
+                            on=ard.outputs[n]
+                            testid=format!("arduino-lamp-Y{n:03}")
+                            colour="amber"
+                            label=format!("Y{n:03}")
+                        />
+                        {format!("Y{n:03}")}
+                    </span>
+                </div>
+            }
+        })
+        .collect_view();
+    let input = RwSignal::new(String::new());
+    let errors =
+        Memo::new(
+            move |_| match Program::parse(&ard.text.get(), Chip::Atmega328.capacity()) {
+                Ok(p) => (
+                    Vec::new(),
+                    !p.words()
+                        .iter()
+                        .any(|&w| matches!(Op::decode(w), Some(Op::End | Op::Jump)) && w != 0xFFFF),
+                ),
+                Err(e) => (
+                    e.iter()
+                        .map(|e| format!("{} {}: {}", t().line, e.line, e.error))
+                        .collect(),
+                    false,
+                ),
+            },
+        );
+    view! {
+        <main class="workspace arduino">
+            <section class="device arduino-board">
+                <h2>
+                    "Arduino (ATmega328) · "
+                    <span data-testid="arduino-state">
+                        {move || if ard.enabled.get() { t().enabled } else { t().disabled }}
+                    </span>
+                </h2>
+                <div class="arduino-pins">
+                    <div class="pins">{inputs}</div>
+                    <div class="pins">{outputs}</div>
+                </div>
+                <label class="quirk">
+                    <input
+                        type="checkbox"
+                        data-testid="arduino-quirk"
+                        prop:checked=move || ard.sketch_quirk.get()
+                        on:change=move |_| {
+                            ard.sketch_quirk.update(|q| *q = !*q);
+                            ard.load();
+                        }
+                    />
+                    {move || t().quirk_sketch}
+                </label>
+            </section>
+            <div class="side">
+                <section class="terminal">
+                    <h2>{move || t().monitor}</h2>
+                    <pre data-testid="arduino-monitor">{move || ard.console.get()}</pre>
+                    <div class="terminal-input">
+                        <input
+                            type="text"
+                            data-testid="arduino-monitor-input"
+                            spellcheck="false"
+                            autocomplete="off"
+                            placeholder=move || t().monitor_hint
+                            aria-label=move || t().monitor
+                            prop:value=move || input.get()
+                            on:input=move |e| input.set(event_target_value(&e))
+                            on:keydown=move |e: ev::KeyboardEvent| {
+                                if e.key() == "Enter" {
+                                    ard.type_line(&input.get_untracked());
+                                    input.set(String::new());
+                                }
+                            }
+                        />
+                    </div>
+                </section>
+                <section class="program">
+                    <h2>{move || t().program}</h2>
+                    <textarea
+                        class="plain"
+                        data-testid="arduino-program-text"
+                        spellcheck="false"
+                        aria-label=move || t().program
+                        prop:value=move || ard.text.get()
+                        on:input=move |e| {
+                            let text = event_target_value(&e);
+                            storage::save_string(KEY, &text);
+                            ard.text.set(text);
+                        }
+                    ></textarea>
+                    <div class="program-actions">
+                        <button
+                            type="button"
+                            data-testid="arduino-program-load"
+                            disabled=move || !errors.get().0.is_empty()
+                            on:click=move |_| {
+                                ard.load();
+                            }
+                        >
+                            {move || t().load}
+                        </button>
+                    </div>
+                    <div class="errors" class:has-errors=move || !errors.get().0.is_empty() data-testid="arduino-program-error">
+                        {move || {
+                            let (errors, _) = errors.get();
+                            if errors.is_empty() { t().errors_none.to_string() } else { errors.join("\n") }
+                        }}
+                    </div>
+                    <Show when=move || errors.get().1>
+                        <div class="warning" data-testid="arduino-warning">{move || t().warn_spin}</div>
+                    </Show>
+                </section>
+            </div>
+        </main>
+    }
+}

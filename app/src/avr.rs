@@ -1,0 +1,216 @@
+//! The AVR simplified PLC workspace: the bits the source names (`NAME_R` /
+//! `NAME_B`) as switches and lamps, and the program pane in assembler.
+
+use engine::avr::program::TimerKind;
+use engine::avr::{BitRef, Instruction, Machine, Program};
+use leptos::prelude::*;
+
+use crate::components::controls::Led;
+use crate::sim::Simulator;
+use crate::state::Ctx;
+use crate::storage;
+
+/// The seed's self-holding rungs (with End_PLC), the text a fresh
+/// workspace opens with.
+pub const SELF_HOLD: &str = "; AVR simplified PLC: the seed's self-holding rungs\n\
+.equ INPUT1_R=4\n.equ INPUT1_B=Bit0\n.equ INPUT2_R=4\n.equ INPUT2_B=Bit1\n\
+.equ INPUT3_R=4\n.equ INPUT3_B=Bit2\n.equ COIL1_R=5\n.equ COIL1_B=Bit0\n\
+.equ COIL2_R=5\n.equ COIL2_B=Bit1\n.csg\n\
+.db   Load_A,INPUT1_R,INPUT1_B,0\n.db   And_A,INPUT2_R,INPUT2_B,0\n.db   Coil_A,COIL1_R,COIL1_B,0\n\
+.db   Load_A,COIL1_R,COIL1_B,0\n.db   Or_A,COIL2_R,COIL2_B,0\n.db   And_B,INPUT3_R,INPUT3_B,0\n\
+.db   Coil_A,COIL2_R,COIL2_B,0\n.db   End_PLC,0,0,0\n";
+
+const KEY: &str = "hashigo.avr-plc.v1";
+
+/// A named bit and its signals.
+#[derive(Clone)]
+pub struct NamedBit {
+    pub name: String,
+    pub bit: BitRef,
+    pub value: RwSignal<bool>,
+    pub driven: RwSignal<Option<bool>>,
+}
+
+/// What the AVR workspace's components share.
+#[derive(Clone, Copy)]
+pub struct AvrCtx {
+    pub sim: StoredValue<Simulator<Machine>, LocalStorage>,
+    pub bits: RwSignal<Vec<NamedBit>>,
+    pub text: RwSignal<String>,
+}
+
+impl AvrCtx {
+    /// A workspace with the saved text loaded (or the seed's example).
+    pub fn new() -> AvrCtx {
+        let text = storage::saved_string(KEY).unwrap_or_else(|| SELF_HOLD.to_string());
+        let ctx = AvrCtx {
+            sim: StoredValue::new_local(Simulator::new(Machine::new(Program::default()))),
+            bits: RwSignal::new(Vec::new()),
+            text: RwSignal::new(text),
+        };
+        ctx.load();
+        ctx
+    }
+
+    /// Copies the named bits into their signals (only those that changed).
+    pub fn refresh(&self) {
+        self.sim.with_value(|s| {
+            self.bits.with_untracked(|bits| {
+                for b in bits {
+                    let v = s.machine().bit(b.bit);
+                    if b.value.get_untracked() != v {
+                        b.value.set(v);
+                    }
+                }
+            });
+        });
+    }
+
+    /// Assembles the pane's text and, if good, runs it from power-up (timer
+    /// words cleared); false if it has errors.
+    pub fn load(&self) -> bool {
+        let scan_ms = 10;
+        let Ok(program) = Program::parse(&self.text.get_untracked(), scan_ms) else {
+            return false;
+        };
+        let names: Vec<NamedBit> = program
+            .names()
+            .iter()
+            .map(|(name, bit)| NamedBit {
+                name: name.clone(),
+                bit: *bit,
+                value: RwSignal::new(false),
+                driven: RwSignal::new(None),
+            })
+            .collect();
+        self.sim
+            .update_value(|s| *s.machine_mut() = Machine::new(program));
+        self.bits.set(names);
+        self.refresh();
+        true
+    }
+}
+
+impl Default for AvrCtx {
+    fn default() -> Self {
+        AvrCtx::new()
+    }
+}
+
+/// Whether the program has a TOF (the seed's power-up warning applies).
+fn has_tof(program: &Program) -> bool {
+    program.instructions().iter().any(|i| {
+        matches!(
+            i,
+            Instruction::Timer {
+                kind: TimerKind::Tof,
+                ..
+            }
+        )
+    })
+}
+
+/// The whole AVR workspace.
+#[component]
+pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let parsed = Memo::new(move |_| match Program::parse(&avr.text.get(), 10) {
+        Ok(p) => (Vec::new(), has_tof(&p)),
+        Err(e) => (
+            e.iter()
+                .map(|e| format!("{} {}: {}", t().line, e.line, e.error))
+                .collect::<Vec<_>>(),
+            false,
+        ),
+    });
+    view! {
+        <main class="workspace avr">
+            <section class="device avr-bits">
+                <h2>"AVR · " {move || t().bits}</h2>
+                <table class="bits">
+                    <tbody>
+                        <For
+                            each=move || avr.bits.get()
+                            key=|b| (b.name.clone(), b.bit.register, b.bit.bit)
+                            children=move |b: NamedBit| {
+                                let NamedBit { name, bit, value, driven } = b;
+                                let drive = move |on: Option<bool>| {
+                                    driven.set(on);
+                                    if let Some(on) = on {
+                                        avr.sim.update_value(|s| s.machine_mut().set_input(bit, on));
+                                    }
+                                };
+                                view! {
+                                    <tr>
+                                        <td class="bit-name">{name.clone()}</td>
+                                        <td class="bit-ref">{bit.to_string()}</td>
+                                        <td>
+                                            <Led
+                                                on=value
+                                                testid=format!("avr-lamp-{name}")
+                                                colour="amber"
+                                                label=name.clone()
+                                            />
+                                        </td>
+                                        <td>
+                                            <button
+                                                type="button"
+                                                class="input-switch small"
+                                                class:on=move || driven.get() == Some(true)
+                                                data-testid=format!("avr-input-{name}")
+                                                aria-pressed=move || (driven.get() == Some(true)).to_string()
+                                                title=move || t().drive
+                                                on:click=move |_| drive(Some(driven.get_untracked() != Some(true)))
+                                            >
+                                                {move || t().drive}
+                                            </button>
+                                        </td>
+                                    </tr>
+                                }
+                            }
+                        />
+                    </tbody>
+                </table>
+            </section>
+            <div class="side">
+                <section class="program">
+                    <h2>{move || t().program}</h2>
+                    <textarea
+                        class="plain tall"
+                        data-testid="avr-program-text"
+                        spellcheck="false"
+                        aria-label=move || t().program
+                        prop:value=move || avr.text.get()
+                        on:input=move |e| {
+                            let text = event_target_value(&e);
+                            storage::save_string(KEY, &text);
+                            avr.text.set(text);
+                        }
+                    ></textarea>
+                    <div class="program-actions">
+                        <button
+                            type="button"
+                            data-testid="avr-program-load"
+                            disabled=move || !parsed.get().0.is_empty()
+                            on:click=move |_| {
+                                avr.load();
+                            }
+                        >
+                            {move || t().load}
+                        </button>
+                    </div>
+                    <div class="errors" class:has-errors=move || !parsed.get().0.is_empty() data-testid="avr-program-error">
+                        {move || {
+                            let (errors, _) = parsed.get();
+                            if errors.is_empty() { t().errors_none.to_string() } else { errors.join("\n") }
+                        }}
+                    </div>
+                    <Show when=move || parsed.get().1>
+                        <div class="warning" data-testid="avr-warning">{move || t().warn_tof}</div>
+                    </Show>
+                </section>
+            </div>
+        </main>
+    }
+}

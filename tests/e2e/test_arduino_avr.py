@@ -1,0 +1,80 @@
+"""End-to-end: the Arduino PLC and AVR simplified PLC workspaces."""
+
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
+
+from test_app import el, on, open_fresh, severe_console_messages, wait
+
+
+def choose(driver, base_url, machine, ready):
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value(machine)
+    wait(driver, lambda: el(driver, ready))
+
+
+def replace_program(driver, prefix, text):
+    area = el(driver, f"{prefix}-program-text")
+    area.send_keys(Keys.CONTROL, "a")
+    area.send_keys(Keys.DELETE)
+    area.send_keys(text)
+    el(driver, f"{prefix}-program-load").click()
+
+
+def test_arduino_self_hold_monitor_and_quirk(driver, base_url):
+    choose(driver, base_url, "arduino-plc", "arduino-monitor")
+    el(driver, "arduino-input-X000").click()
+    wait(driver, lambda: on(driver, "arduino-lamp-Y000"), message="start")
+    el(driver, "arduino-input-X000").click()
+    assert on(driver, "arduino-lamp-Y000"), "holds itself"
+    el(driver, "arduino-input-X001").click()
+    wait(driver, lambda: not on(driver, "arduino-lamp-Y000"), message="stop")
+
+    box = el(driver, "arduino-monitor-input")
+    box.send_keys("l" + Keys.ENTER)
+    wait(driver, lambda: "JUMP 000" in el(driver, "arduino-monitor").text)
+    assert "LD X000\nOR Y000\nANDN X001\nOUT Y000" in el(driver, "arduino-monitor").text
+    box.send_keys("d" + Keys.ENTER)
+    wait(driver, lambda: "disabled" in el(driver, "arduino-state").text)
+
+    replace_program(driver, "arduino", "LD X000\nOUT Y001\nEND\n")
+    el(driver, "arduino-input-X001").click()  # X001 off again
+    el(driver, "arduino-input-X000").click()  # X000 on
+    wait(driver, lambda: on(driver, "arduino-lamp-Y001"), message="LD X000 / OUT Y001")
+    el(driver, "arduino-quirk").click()
+    wait(driver, lambda: not on(driver, "arduino-lamp-Y001"), message="the sketch's pop order")
+    assert severe_console_messages(driver) == []
+
+
+def test_arduino_warns_about_running_into_erased_eeprom(driver, base_url):
+    choose(driver, base_url, "arduino-plc", "arduino-monitor")
+    area = el(driver, "arduino-program-text")
+    area.send_keys(Keys.CONTROL, "a")
+    area.send_keys(Keys.DELETE)
+    area.send_keys("LD X000\nOUT Y000\n")
+    wait(driver, lambda: "JUMP 255" in el(driver, "arduino-warning").text)
+    area.send_keys("END\n")
+    wait(driver, lambda: not driver.find_elements("css selector", '[data-testid="arduino-warning"]'))
+
+
+def test_avr_named_bits_and_the_tof_warning(driver, base_url):
+    choose(driver, base_url, "avr-plc", "avr-program-text")
+    for name in ["INPUT1", "INPUT2"]:
+        el(driver, f"avr-input-{name}").click()
+    wait(driver, lambda: on(driver, "avr-lamp-COIL1") and on(driver, "avr-lamp-COIL2"))
+    el(driver, "avr-input-INPUT1").click()
+    wait(driver, lambda: not on(driver, "avr-lamp-COIL1"))
+    assert on(driver, "avr-lamp-COIL2"), "COIL2 holds itself"
+    el(driver, "avr-input-INPUT3").click()
+    wait(driver, lambda: not on(driver, "avr-lamp-COIL2"))
+
+    replace_program(
+        driver,
+        "avr",
+        ".equ Run_R=4\n.equ Run_B=Bit0\n.equ E_Stop_R=6\n.equ E_Stop_B=Bit7\n.dseg\nPLC_Timer_Top:\n"
+        "E_Stop_Timer: .byte 2\n.cseg\n.db Load_A,Run_R,Run_B,0\n"
+        ".db TOF,LOW(E_Stop_Timer),LOW(1000/Scan),HIGH(1000/Scan)\n.db Coil_A,E_Stop_R,E_Stop_B,0\n"
+        ".db End_PLC,0,0,0\n",
+    )
+    assert "TOF" in el(driver, "avr-warning").text
+    wait(driver, lambda: on(driver, "avr-lamp-E_Stop"), timeout=2, message="on after power-up")
+    wait(driver, lambda: not on(driver, "avr-lamp-E_Stop"), timeout=5, message="off after 1 s")
