@@ -1,37 +1,14 @@
 //! `hashigo` with `--machine arduino-plc`.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
-fn hashigo(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("hashigo starts");
-    // hashigo may exit before reading its input; the status tells.
-    let _ = child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin.as_bytes());
-    child.wait_with_output().expect("hashigo ends")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use super::common::{hashigo, text, Temp};
 
 const SELF_HOLD: &str = "0 LD X000\n1 OR Y000\n2 ANDN X001\n3 OUT Y000\n4 JUMP 0\n";
 
 #[test]
 fn run_the_self_hold_with_events() {
-    let dir = std::env::temp_dir().join(format!("hashigo-arduino-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let events = dir.join("e.csv");
-    std::fs::write(&events, "10ms,X000,1\n20ms,X000,0\n35ms,X001,1\n").expect("write");
+    let tmp = Temp::new("arduino");
+    let events = tmp.file("e.csv", "10ms,X000,1\n20ms,X000,0\n35ms,X001,1\n");
+
     let out = hashigo(
         &[
             "run",
@@ -40,7 +17,7 @@ fn run_the_self_hold_with_events() {
             "--program",
             "-",
             "--input",
-            &events.to_string_lossy(),
+            &events,
             "--until",
             "50ms",
             "--every",
@@ -50,7 +27,6 @@ fn run_the_self_hold_with_events() {
         ],
         SELF_HOLD,
     );
-    let _ = std::fs::remove_dir_all(&dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert_eq!(
         text(&out.stdout),

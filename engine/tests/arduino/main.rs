@@ -1,5 +1,8 @@
 //! The Arduino PLC sketch: the seed's examples, its quirks, the monitor.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod cli;
 
 use engine::arduino::{monitor, Chip, Machine, PopOrder, Program};

@@ -1,28 +1,6 @@
 //! `hashigo` with `--machine avr-plc`.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
-fn hashigo(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("hashigo starts");
-    // hashigo may exit before reading its input; the status tells.
-    let _ = child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin.as_bytes());
-    child.wait_with_output().expect("hashigo ends")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use super::common::{hashigo, text};
 
 #[test]
 fn run_shows_the_tof_power_up_pulse_and_scan_changes_the_scan_symbol() {

@@ -1,5 +1,8 @@
 //! The AVR simplified PLC: the seed's examples and its timer warning.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod cli;
 
 use engine::avr::{Machine, Program, ProgramError};

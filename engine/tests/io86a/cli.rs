@@ -1,28 +1,6 @@
 //! `hashigo` with `--machine io86a`.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
-fn hashigo(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("hashigo starts");
-    // hashigo may exit before reading its input; the status tells.
-    let _ = child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin.as_bytes());
-    child.wait_with_output().expect("hashigo ends")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use super::common::{hashigo, text, Temp};
 
 const BLINK: &str =
     "1 LDI T01\n2 OUT T00\n3 K2\n4 LD T00\n5 OUT T01\n6 K2\n7 LDI T00\n8 OUT Y00\n9 END\n";
@@ -64,23 +42,21 @@ fn run_blinks_the_led_every_0_2_s() {
 
 #[test]
 fn run_takes_scan_and_input_events() {
-    let dir = std::env::temp_dir().join(format!("hashigo-io86a-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let program = dir.join("p.il");
-    let events = dir.join("e.csv");
-    std::fs::write(&program, "LD X00\nOUT Y00\nEND\n").expect("write");
-    std::fs::write(&events, "35ms,X00,1\n").expect("write");
+    let tmp = Temp::new("io86a");
+    let program = tmp.file("p.il", "LD X00\nOUT Y00\nEND\n");
+    let events = tmp.file("e.csv", "35ms,X00,1\n");
+
     let out = hashigo(
         &[
             "run",
             "--machine",
             "io86a",
             "--program",
-            &program.to_string_lossy(),
+            &program,
             "--set",
             "scan=10ms",
             "--input",
-            &events.to_string_lossy(),
+            &events,
             "--until",
             "70ms",
             "--every",
@@ -90,7 +66,6 @@ fn run_takes_scan_and_input_events() {
         ],
         "",
     );
-    let _ = std::fs::remove_dir_all(&dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
     // Scans every 10 ms: X00 rises at 35 ms; the default input filter (!2)
     // passes it after 20 ms, so the 60 ms scan is the first to see it.
@@ -155,9 +130,8 @@ fn bench_counts_instructions() {
 
 #[test]
 fn run_the_manuals_servo_example_with_pin_settings() {
-    let dir = std::env::temp_dir().join(format!("hashigo-io86a-servo-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let events = dir.join("e.csv");
+    let tmp = Temp::new("io86a-servo");
+    let events = tmp.file("e.csv", "35ms,X00,1\n");
     std::fs::write(&events, "0,X04,0V\n60ms,X04,2.5V\n110ms,X04,5V\n").expect("write");
     let out = hashigo(
         &[
@@ -171,7 +145,7 @@ fn run_the_manuals_servo_example_with_pin_settings() {
             "--set",
             "Y03=R",
             "--input",
-            &events.to_string_lossy(),
+            &events,
             "--until",
             "150ms",
             "--every",
@@ -181,7 +155,6 @@ fn run_the_manuals_servo_example_with_pin_settings() {
         ],
         "1 LD M57\n2 MOV\n3 D06\n4 D04\n5 OUT Y03\n6 END\n",
     );
-    let _ = std::fs::remove_dir_all(&dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert_eq!(
         text(&out.stdout),
@@ -191,9 +164,8 @@ fn run_the_manuals_servo_example_with_pin_settings() {
 
 #[test]
 fn console_runs_the_terminal_with_the_clock_advancing_between_lines() {
-    let dir = std::env::temp_dir().join(format!("hashigo-io86a-console-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let program = dir.join("p.il");
+    let tmp = Temp::new("io86a-console");
+    let program = tmp.file("p.il", "LD X00\nOUT Y00\nEND\n");
     std::fs::write(&program, "LD M57\nOUT Y00\nEND\n").expect("write");
     let out = hashigo(
         &[
@@ -201,13 +173,12 @@ fn console_runs_the_terminal_with_the_clock_advancing_between_lines() {
             "--machine",
             "io86a",
             "--program",
-            &program.to_string_lossy(),
+            &program,
             "--step",
             "5ms",
         ],
         "^C\r\nY?\r\nR\r\nY?\r\n",
     );
-    let _ = std::fs::remove_dir_all(&dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert_eq!(
         text(&out.stdout),

@@ -1,5 +1,8 @@
 //! PLC-IO86A: the manual's examples, run as the manual says they behave.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod cli;
 mod terminal;
 

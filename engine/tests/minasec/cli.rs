@@ -1,53 +1,6 @@
 //! The `hashigo` command per ../shared/spec/cli.md, run as a process.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
-fn hashigo(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("hashigo starts");
-    // hashigo may exit before reading its input (a bad argument): a broken
-    // pipe here is expected then, and the exit status tells the story.
-    let _ = child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin.as_bytes());
-    child.wait_with_output().expect("hashigo ends")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-/// A file in a fresh temporary directory, kept for the test's life.
-struct Temp {
-    dir: std::path::PathBuf,
-}
-
-impl Temp {
-    fn new(name: &str) -> Temp {
-        let dir = std::env::temp_dir().join(format!("hashigo-cli-{name}-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).expect("temp dir");
-        Temp { dir }
-    }
-    fn file(&self, name: &str, contents: &str) -> String {
-        let path = self.dir.join(name);
-        std::fs::write(&path, contents).expect("write temp file");
-        path.to_string_lossy().into_owned()
-    }
-}
-
-impl Drop for Temp {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.dir);
-    }
-}
+use super::common::{hashigo, text, Temp};
 
 const SEED: &str = engine::minasec::SEED_TEST_PROGRAM;
 

@@ -1,6 +1,9 @@
 //! MINASEC-U behaviour tests: the seed's examples and every rule of
 //! machines.md §1, driven through the engine's public API and the CLI.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod cli;
 mod counter;
 mod fast_path;

@@ -1,0 +1,59 @@
+//! Helpers the CLI tests of every machine share: running `hashigo` as a
+//! process and files in a temporary folder.
+
+#![allow(dead_code)] // each test crate uses its own subset of these
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+/// Runs `hashigo` with `args`, `stdin` on its standard input.
+pub fn hashigo(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("hashigo starts");
+    // hashigo may exit before reading its input (a bad argument): a broken
+    // pipe here is expected then, and the exit status tells the story.
+    let _ = child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(stdin.as_bytes());
+    child.wait_with_output().expect("hashigo ends")
+}
+
+/// Output bytes as text.
+pub fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// A temporary folder, removed when dropped.
+pub struct Temp {
+    dir: PathBuf,
+}
+
+impl Temp {
+    /// A fresh folder whose name includes `name` and the process id.
+    pub fn new(name: &str) -> Temp {
+        let dir = std::env::temp_dir().join(format!("hashigo-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        Temp { dir }
+    }
+
+    /// Writes `contents` to `name` in the folder and returns its path.
+    pub fn file(&self, name: &str, contents: &str) -> String {
+        let path = self.dir.join(name);
+        std::fs::write(&path, contents).expect("write temp file");
+        path.to_string_lossy().into_owned()
+    }
+}
+
+impl Drop for Temp {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
+}
