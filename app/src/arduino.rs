@@ -4,9 +4,9 @@
 
 use engine::arduino::isa::Op;
 use engine::arduino::{monitor, Chip, Machine, PopOrder, Program};
-use leptos::ev;
 use leptos::prelude::*;
 
+use crate::components::console::ConsolePane;
 use crate::components::controls::Led;
 use crate::sim::Simulator;
 use crate::state::Ctx;
@@ -17,7 +17,6 @@ pub const SELF_HOLD: &str = "; Arduino PLC sketch: self-hold (the seed's example
 0 LD X000\n1 OR Y000\n2 ANDN X001\n3 OUT Y000\n4 JUMP 0\n";
 
 const KEY: &str = "hashigo.arduino-plc.v1";
-const SCROLLBACK: usize = 20_000;
 
 /// What the Arduino workspace's components share.
 #[derive(Clone, Copy)]
@@ -101,16 +100,7 @@ impl ArduinoCtx {
             .sim
             .try_update_value(|s| monitor::type_line(s.machine_mut(), line))
             .unwrap_or_default();
-        self.console.update(|c| {
-            c.push_str(&reply.replace("\r\n", "\n"));
-            if c.len() > SCROLLBACK {
-                let cut = c.len() - SCROLLBACK;
-                let cut = (cut..c.len())
-                    .find(|&i| c.is_char_boundary(i))
-                    .unwrap_or(cut);
-                c.drain(..cut);
-            }
-        });
+        crate::components::console::append(self.console, &reply);
         self.refresh();
     }
 }
@@ -168,7 +158,6 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
             }
         })
         .collect_view();
-    let input = RwSignal::new(String::new());
     let errors =
         Memo::new(
             move |_| match Program::parse(&ard.text.get(), Chip::Atmega328.capacity()) {
@@ -213,28 +202,13 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
                 </label>
             </section>
             <div class="side">
-                <section class="terminal">
-                    <h2>{move || t().monitor}</h2>
-                    <pre data-testid="arduino-monitor">{move || ard.console.get()}</pre>
-                    <div class="terminal-input">
-                        <input
-                            type="text"
-                            data-testid="arduino-monitor-input"
-                            spellcheck="false"
-                            autocomplete="off"
-                            placeholder=move || t().monitor_hint
-                            aria-label=move || t().monitor
-                            prop:value=move || input.get()
-                            on:input=move |e| input.set(event_target_value(&e))
-                            on:keydown=move |e: ev::KeyboardEvent| {
-                                if e.key() == "Enter" {
-                                    ard.type_line(&input.get_untracked());
-                                    input.set(String::new());
-                                }
-                            }
-                        />
-                    </div>
-                </section>
+                <ConsolePane
+                    title=Signal::derive(move || t().monitor.to_string())
+                    hint=Signal::derive(move || t().monitor_hint.to_string())
+                    testid="arduino-monitor"
+                    console=ard.console
+                    on_line=Callback::new(move |line: String| ard.type_line(&line))
+                />
                 <section class="program">
                     <h2>{move || t().program}</h2>
                     <textarea

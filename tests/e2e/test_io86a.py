@@ -52,7 +52,7 @@ def test_the_terminal_edits_runs_and_reads(driver, base_url):
     wait(driver, lambda: on(driver, "io86a-lamp-Y02"), message="the entered program runs")
     screen = type_at_terminal(driver, "Y?")
     assert "Y:00000100" in screen, screen
-    el(driver, "io86a-ctrl-c").click()
+    el(driver, "io86a-terminal-ctrl-c").click()
     wait(driver, lambda: el(driver, "io86a-terminal").text.endswith(">"))
 
 

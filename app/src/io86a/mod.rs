@@ -14,9 +14,6 @@ use crate::storage::{self, Restored, SavedIo86a};
 pub const BLINK: &str = "; PLC-IO86A manual: LED blink (0.2 s on, 0.2 s off)\n\
 1 LDI T01\n2 OUT T00\n3 K2\n4 LD T00\n5 OUT T01\n6 K2\n7 LDI T00\n8 OUT Y00\n9 END\n";
 
-/// The most terminal output kept on screen.
-const SCROLLBACK: usize = 20_000;
-
 fn set<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
     if signal.with_untracked(|old| *old != value) {
         signal.set(value);
@@ -192,16 +189,7 @@ impl Io86aCtx {
             })
             .flatten()
             .unwrap_or_default();
-        self.console.update(|c| {
-            c.push_str(&reply.replace("\r\n", "\n"));
-            if c.len() > SCROLLBACK {
-                let cut = c.len() - SCROLLBACK;
-                let cut = (cut..c.len())
-                    .find(|&i| c.is_char_boundary(i))
-                    .unwrap_or(cut);
-                c.drain(..cut);
-            }
-        });
+        crate::components::console::append(self.console, &reply);
         self.refresh();
     }
 

@@ -3,10 +3,10 @@
 
 use engine::io86a::peripherals::OutputSignal;
 use engine::io86a::Program;
-use leptos::ev;
 use leptos::prelude::*;
 
 use super::Io86aCtx;
+use crate::components::console::ConsolePane;
 use crate::components::controls::Led;
 use crate::state::Ctx;
 
@@ -296,38 +296,15 @@ fn TerminalPane() -> impl IntoView {
     let io = expect_context::<Io86aCtx>();
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
-    let input = RwSignal::new(String::new());
     view! {
-        <section class="terminal">
-            <h2>{move || t().terminal}</h2>
-            <pre data-testid="io86a-terminal" aria-live="polite">
-                {move || io.console.get()}
-            </pre>
-            <div class="terminal-input">
-                <input
-                    type="text"
-                    data-testid="io86a-terminal-input"
-                    spellcheck="false"
-                    autocomplete="off"
-                    placeholder=move || t().terminal_hint
-                    aria-label=move || t().terminal
-                    prop:value=move || input.get()
-                    on:input=move |e| input.set(event_target_value(&e))
-                    on:keydown=move |e: ev::KeyboardEvent| {
-                        if e.key() == "Enter" {
-                            io.type_line(&input.get_untracked());
-                            input.set(String::new());
-                        } else if e.ctrl_key() && e.key() == "c" {
-                            e.prevent_default();
-                            io.type_line("^C");
-                        }
-                    }
-                />
-                <button type="button" data-testid="io86a-ctrl-c" on:click=move |_| io.type_line("^C")>
-                    {move || t().ctrl_c}
-                </button>
-            </div>
-        </section>
+        <ConsolePane
+            title=Signal::derive(move || t().terminal.to_string())
+            hint=Signal::derive(move || t().terminal_hint.to_string())
+            testid="io86a-terminal"
+            console=io.console
+            on_line=Callback::new(move |line: String| io.type_line(&line))
+            ctrl_c=(Signal::derive(move || t().ctrl_c.to_string()), Callback::new(move |()| io.type_line("^C")))
+        />
     }
 }
 

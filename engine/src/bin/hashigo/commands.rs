@@ -314,43 +314,40 @@ fn bench_arduino(program: &arduino::Program, steps: u64) -> Result<(), Problems>
     Ok(())
 }
 
-/// AVR: whole scans back to back until at least `steps` records ran.
+/// AVR: whole scans of records, back to back.
 fn bench_avr(program: avr::Program, steps: u64) -> Result<(), Problems> {
     let per_scan = program.instructions().len() as u64;
-    if per_scan == 0 {
-        return Err(one(
-            "--program: the program has no records to run".to_string()
-        ));
-    }
     let mut machine = avr::Machine::new(program);
-    let scans = steps.div_ceil(per_scan);
-    let end = scans
-        .checked_mul(machine.scan_period().as_nanos())
-        .map(SimTime::from_nanos)
-        .ok_or_else(|| one(format!("--steps {steps}: too many for the simulated clock")))?;
-    let started = Instant::now();
-    machine.run_until(end);
-    let seconds = started.elapsed().as_secs_f64();
-    print_bench(scans * per_scan, seconds);
-    Ok(())
+    let period = machine.scan_period();
+    bench_scans(steps, per_scan, period, |t| machine.run_until(t))
 }
 
-/// IO86A: whole scans back to back until at least `steps` instructions ran.
+/// IO86A: whole scans of instructions (END included), back to back.
 fn bench_io86a(program: io86a::Program, steps: u64) -> Result<(), Problems> {
     let mut machine = io86a::Machine::new(program);
     let per_scan = machine.steps_per_scan() as u64;
+    let period = machine.scan_period();
+    bench_scans(steps, per_scan, period, |t| machine.run_until(t))
+}
+
+/// Runs whole scans (the devices cannot stop mid-scan) until at least
+/// `steps` steps ran, and prints the steps actually executed.
+fn bench_scans(
+    steps: u64,
+    per_scan: u64,
+    period: SimTime,
+    mut run_until: impl FnMut(SimTime),
+) -> Result<(), Problems> {
     if per_scan == 0 {
-        return Err(one(
-            "--program: the program has no instructions to run".to_string()
-        ));
+        return Err(one("--program: the program has nothing to run".to_string()));
     }
     let scans = steps.div_ceil(per_scan);
     let end = scans
-        .checked_mul(machine.scan_period().as_nanos())
+        .checked_mul(period.as_nanos())
         .map(SimTime::from_nanos)
         .ok_or_else(|| one(format!("--steps {steps}: too many for the simulated clock")))?;
     let started = Instant::now();
-    machine.run_until(end);
+    run_until(end);
     let seconds = started.elapsed().as_secs_f64();
     print_bench(scans * per_scan, seconds);
     Ok(())
