@@ -13,7 +13,8 @@ pub fn open(ctx: Ctx, id: &str) {
         return;
     }
     let previous = ctx.text.get_untracked();
-    if previous != SEED_TEST_PROGRAM {
+    // Keep the replaced text for undo when there is something to lose.
+    if !previous.trim().is_empty() && previous != SEED_TEST_PROGRAM {
         ctx.before_example.set(Some(previous));
     }
     ctx.text.set(SEED_TEST_PROGRAM.to_string());
