@@ -303,3 +303,47 @@ fn unknown_machines_and_commands_and_compile_not_yet() {
         );
     }
 }
+
+#[test]
+fn the_readme_command_with_the_shipped_events_file() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/programs/minasec-u/");
+    let (program, events) = (
+        format!("{dir}seed-test.il"),
+        format!("{dir}seed-test.events.csv"),
+    );
+    let out = hashigo(
+        &[
+            "run",
+            "--machine",
+            "minasec-u",
+            "--program",
+            &program,
+            "--set",
+            "T0=1.1s",
+            "--set",
+            "T1=1s",
+            "--set",
+            "C0=10",
+            "--input",
+            &events,
+            "--until",
+            "30s",
+            "--every",
+            "3s",
+            "--watch",
+            "Y00,Y01,C0.v",
+        ],
+        "",
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let csv = text(&out.stdout);
+    assert!(
+        csv.contains("\n21000,1,1,10\n"),
+        "counted to 10 with Y01: {csv}"
+    );
+    assert!(
+        csv.contains("\n27000,0,1,10\n"),
+        "stop kept the count: {csv}"
+    );
+    assert!(csv.ends_with("\n30000,0,0,0\n"), "X02 cleared it: {csv}");
+}
