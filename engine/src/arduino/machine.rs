@@ -2,6 +2,7 @@
 //! step runs, outputs driven at once, a 16-bit shift register as the stack.
 
 use super::isa::{Op, Program, ERASED};
+use crate::clock::PeriodicClock;
 use crate::time::SimTime;
 
 /// Which ATmega the sketch runs on: its EEPROM holds 256 or 512 words.
@@ -43,7 +44,8 @@ pub struct Machine {
     eeprom: Vec<u16>,
     chip: Chip,
     pop_order: PopOrder,
-    step_time: SimTime,
+    /// Fires once per step.
+    clock: PeriodicClock,
     enabled: bool,
     pc: u16,
     stack: u16,
@@ -51,8 +53,6 @@ pub struct Machine {
     inputs: u8,
     /// PORTB: bit n = Y00n.
     port_b: u8,
-    now: SimTime,
-    next_step: SimTime,
     steps: u64,
 }
 
@@ -68,14 +68,12 @@ impl Machine {
             eeprom,
             chip,
             pop_order: PopOrder::Intended,
-            step_time: DEFAULT_STEP,
+            clock: PeriodicClock::new(DEFAULT_STEP),
             enabled: false,
             pc: 0,
             stack: 0,
             inputs: 0,
             port_b: 0,
-            now: SimTime::ZERO,
-            next_step: DEFAULT_STEP,
             steps: 0,
         }
     }
@@ -128,8 +126,7 @@ impl Machine {
                 "step time {t}ms is out of range: above 0 and at most 1s"
             ));
         }
-        self.step_time = t;
-        self.next_step = self.now + t;
+        self.clock.set_period(t, self.clock.now());
         Ok(())
     }
 
@@ -137,7 +134,7 @@ impl Machine {
     pub fn set_enabled(&mut self, on: bool) {
         if on && !self.enabled {
             self.pc = 0;
-            self.next_step = self.now + self.step_time;
+            self.clock.restart();
         }
         self.enabled = on;
     }
@@ -176,7 +173,7 @@ impl Machine {
 
     /// The simulated time.
     pub fn now(&self) -> SimTime {
-        self.now
+        self.clock.now()
     }
 
     /// Steps executed.
@@ -186,20 +183,16 @@ impl Machine {
 
     /// Runs every step due at or before `t`.
     pub fn run_until(&mut self, t: SimTime) {
-        while self.enabled && self.next_step <= t {
-            self.now = self.next_step;
+        while self.enabled && self.clock.fire_until(t).is_some() {
             self.step();
-            self.next_step = self.now + self.step_time;
         }
-        self.now = self.now.max(t);
+        self.clock.settle(t);
     }
 
     /// Runs every step due strictly before `t`; the time becomes `t`.
     pub fn run_before(&mut self, t: SimTime) {
-        if t > SimTime::ZERO {
-            self.run_until(SimTime::from_nanos(t.as_nanos() - 1));
-        }
-        self.now = self.now.max(t);
+        self.run_until(PeriodicClock::just_before(t));
+        self.clock.settle(t);
     }
 
     fn push(&mut self, bit: bool) {

@@ -3,6 +3,7 @@
 //! scan period.
 
 use super::program::{BitRef, Instruction, Program, TimerKind};
+use crate::clock::PeriodicClock;
 use crate::time::SimTime;
 
 /// The default scan period.
@@ -83,13 +84,11 @@ impl TimerWord {
 #[derive(Clone, Debug)]
 pub struct Machine {
     program: Program,
-    scan_period: SimTime,
+    clock: PeriodicClock,
     registers: [u8; 32],
     timers: Vec<TimerWord>,
     /// Input bits and their levels, written into the registers each scan.
     driven: Vec<(BitRef, bool)>,
-    now: SimTime,
-    next_scan: SimTime,
     scans: u64,
     last_scan: [u8; 32],
 }
@@ -100,12 +99,10 @@ impl Machine {
         let timers = vec![TimerWord::default(); program.timer_count()];
         Machine {
             program,
-            scan_period: DEFAULT_SCAN,
+            clock: PeriodicClock::new(DEFAULT_SCAN),
             registers: [0; 32],
             timers,
             driven: Vec::new(),
-            now: SimTime::ZERO,
-            next_scan: DEFAULT_SCAN,
             scans: 0,
             last_scan: [0; 32],
         }
@@ -118,7 +115,7 @@ impl Machine {
 
     /// The scan period.
     pub fn scan_period(&self) -> SimTime {
-        self.scan_period
+        self.clock.period()
     }
 
     /// Sets the scan period (the program's presets count scans).
@@ -128,8 +125,7 @@ impl Machine {
                 "scan period {period}ms is out of range: above 0 and at most 10s"
             ));
         }
-        self.scan_period = period;
-        self.next_scan = self.now + period;
+        self.clock.set_period(period, self.clock.now());
         Ok(())
     }
 
@@ -158,7 +154,7 @@ impl Machine {
 
     /// The simulated time.
     pub fn now(&self) -> SimTime {
-        self.now
+        self.clock.now()
     }
 
     /// Scans run.
@@ -168,20 +164,16 @@ impl Machine {
 
     /// Runs every scan due at or before `t`.
     pub fn run_until(&mut self, t: SimTime) {
-        while self.next_scan <= t {
-            self.now = self.next_scan;
+        while self.clock.fire_until(t).is_some() {
             self.scan();
-            self.next_scan = self.now + self.scan_period;
         }
-        self.now = self.now.max(t);
+        self.clock.settle(t);
     }
 
     /// Runs every scan due strictly before `t`; the time becomes `t`.
     pub fn run_before(&mut self, t: SimTime) {
-        if t > SimTime::ZERO {
-            self.run_until(SimTime::from_nanos(t.as_nanos() - 1));
-        }
-        self.now = self.now.max(t);
+        self.run_until(PeriodicClock::just_before(t));
+        self.clock.settle(t);
     }
 
     fn read(&self, b: BitRef) -> bool {

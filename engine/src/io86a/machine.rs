@@ -4,6 +4,7 @@
 use super::asm::Program;
 use super::isa::{Bit, Instruction, Word};
 use super::peripherals::{IrMode, OutputSignal, Settings};
+use crate::clock::PeriodicClock;
 use crate::time::SimTime;
 
 /// The default scan period.
@@ -122,7 +123,7 @@ pub struct LinkWrite {
 #[derive(Clone, Debug)]
 pub struct Machine {
     program: Program,
-    scan_period: SimTime,
+    clock: PeriodicClock,
     running: bool,
     settings: Settings,
     /// The input pins as driven (bit n = X0n on).
@@ -141,9 +142,7 @@ pub struct Machine {
     edges: Vec<bool>,
     stack: Vec<bool>,
     first_scan: bool,
-    now: SimTime,
     last_scan_at: SimTime,
-    next_scan: SimTime,
     scans: u64,
     last_scan: Devices,
     link_writes: Vec<LinkWrite>,
@@ -165,7 +164,7 @@ impl Machine {
         let edges = vec![false; program.instructions().len()];
         Machine {
             program,
-            scan_period: DEFAULT_SCAN,
+            clock: PeriodicClock::new(DEFAULT_SCAN),
             running: true,
             settings: Settings::default(),
             input_terminals: 0,
@@ -179,9 +178,7 @@ impl Machine {
             edges,
             stack: Vec::with_capacity(8),
             first_scan: true,
-            now: SimTime::ZERO,
             last_scan_at: SimTime::ZERO,
-            next_scan: DEFAULT_SCAN,
             scans: 0,
             last_scan: Devices::default(),
             link_writes: Vec::new(),
@@ -190,7 +187,7 @@ impl Machine {
 
     /// The scan period.
     pub fn scan_period(&self) -> SimTime {
-        self.scan_period
+        self.clock.period()
     }
 
     /// Sets the scan period (must be above zero); the next scan comes one
@@ -202,14 +199,13 @@ impl Machine {
                 period
             ));
         }
-        self.scan_period = period;
-        self.next_scan = self.last_scan_at + period;
+        self.clock.set_period(period, self.last_scan_at);
         Ok(())
     }
 
     /// The simulated time.
     pub fn now(&self) -> SimTime {
-        self.now
+        self.clock.now()
     }
 
     /// Scans run since power-on.
@@ -236,7 +232,7 @@ impl Machine {
     pub fn set_input(&mut self, n: u8, on: bool) {
         if n < 8 && (self.input_terminals >> n & 1 != 0) != on {
             self.input_terminals ^= 1 << n;
-            self.changed_at[usize::from(n)] = self.now;
+            self.changed_at[usize::from(n)] = self.clock.now();
         }
     }
 
@@ -298,8 +294,8 @@ impl Machine {
     pub fn set_running(&mut self, run: bool) {
         if run && !self.running {
             self.first_scan = true;
-            self.last_scan_at = self.now;
-            self.next_scan = self.now + self.scan_period;
+            self.last_scan_at = self.clock.now();
+            self.clock.restart();
         }
         self.running = run;
     }
@@ -356,36 +352,33 @@ impl Machine {
 
     /// When the next scan runs; `None` while stopped.
     pub fn next_scan_at(&self) -> Option<SimTime> {
-        self.running.then_some(self.next_scan)
+        self.running.then_some(self.clock.next())
     }
 
     /// Runs every scan due at or before `t`.
     pub fn run_until(&mut self, t: SimTime) {
-        while self.running && self.next_scan <= t {
-            self.now = self.next_scan;
+        while self.running && self.clock.fire_until(t).is_some() {
             self.scan();
-            self.next_scan = self.now + self.scan_period;
         }
-        self.now = self.now.max(t);
+        self.clock.settle(t);
     }
 
     /// Runs every scan due strictly before `t`; the time becomes `t`.
     pub fn run_before(&mut self, t: SimTime) {
-        if t > SimTime::ZERO {
-            self.run_until(SimTime::from_nanos(t.as_nanos() - 1));
-        }
-        self.now = self.now.max(t);
+        self.run_until(PeriodicClock::just_before(t));
+        self.clock.settle(t);
     }
 
     /// One scan at the current time.
     fn scan(&mut self) {
-        let elapsed = self.now - self.last_scan_at;
-        self.last_scan_at = self.now;
+        let now = self.clock.now();
+        let elapsed = now - self.last_scan_at;
+        self.last_scan_at = now;
         // The input filter: a change counts once it has held long enough.
         let hold = self.settings.filter_time();
         for n in 0..8u8 {
             let changed = (self.input_terminals ^ self.filtered) >> n & 1 != 0;
-            if changed && self.now.saturating_sub(self.changed_at[usize::from(n)]) >= hold {
+            if changed && now.saturating_sub(self.changed_at[usize::from(n)]) >= hold {
                 self.filtered ^= 1 << n;
             }
         }
@@ -406,7 +399,7 @@ impl Machine {
                 _ => 0,
             };
         }
-        let now_ms = self.now.as_nanos() / 1_000_000;
+        let now_ms = now.as_nanos() / 1_000_000;
         let specials = [
             (M_OFF, false),
             (M_ON, true),
