@@ -128,14 +128,16 @@ enum Operand {
 /// `X000`-`X005` → 0..=5, `Y000`-`Y005` → 8..=13.
 pub fn parse_io(text: &str) -> Option<u8> {
     let upper = text.to_ascii_uppercase();
-    let (kind, digits) = upper.split_at(1.min(upper.len()));
+    let mut chars = upper.chars();
+    let kind = chars.next()?;
+    let digits = chars.as_str();
     if digits.len() != 3 || !digits.bytes().all(|b| b.is_ascii_digit()) {
         return None;
     }
     let n: u8 = digits.parse().ok()?;
     match (kind, n) {
-        ("X", 0..=5) => Some(n),
-        ("Y", 0..=5) => Some(8 + n),
+        ('X', 0..=5) => Some(n),
+        ('Y', 0..=5) => Some(8 + n),
         _ => None,
     }
 }

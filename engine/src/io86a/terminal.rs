@@ -253,7 +253,7 @@ fn is_instruction(word: &str) -> bool {
 fn read_command(m: &Machine, upper: &str) -> Option<Vec<String>> {
     let d = m.devices();
     let kind = upper.chars().next()?;
-    let rest = &upper[1..];
+    let rest = &upper[kind.len_utf8()..];
     let (count, bits): (u8, Box<dyn Fn(u8) -> bool>) = match kind {
         'X' => (8, Box::new(|n| d.bit(Bit::X(n)))),
         'Y' => (6, Box::new(|n| d.bit(Bit::Y(n)))),
@@ -264,13 +264,14 @@ fn read_command(m: &Machine, upper: &str) -> Option<Vec<String>> {
         'D' => (8, Box::new(|_| false)),
         _ => return None,
     };
-    let bit = |n: u8| n < count && bits(n);
+    // Bit numbers are computed in u32: `X?200` must not overflow.
+    let bit = |n: u32| n < u32::from(count) && bits(n as u8);
     if rest == "?" {
         if kind == 'D' {
             return Some((0..8).map(|n| format_d(n, d.d[usize::from(n)])).collect());
         }
         // Groups of eight, each written from its highest bit: M07..M00 M15..M08.
-        let groups: Vec<String> = (0..count.div_ceil(8))
+        let groups: Vec<String> = (0..u32::from(count).div_ceil(8))
             .map(|g| {
                 (0..8)
                     .rev()
@@ -281,7 +282,7 @@ fn read_command(m: &Machine, upper: &str) -> Option<Vec<String>> {
         return Some(vec![format!("{kind}:{}", groups.join(" "))]);
     }
     if let Some(group) = rest.strip_prefix('?') {
-        let g: u8 = group.parse().ok()?;
+        let g: u32 = group.parse::<u8>().ok()?.into();
         let word: u16 = (0..16).fold(0, |w, i| w | u16::from(bit(g * 16 + i)) << i);
         return Some(vec![format!("{word:04X}")]);
     }

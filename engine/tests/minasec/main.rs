@@ -10,6 +10,7 @@ mod fast_path;
 mod harness;
 mod programming;
 mod reset_power;
+mod robustness;
 mod scan_io;
 mod seed_program;
 mod timers;
