@@ -9,6 +9,7 @@ use leptos::prelude::*;
 use crate::components::console::ConsolePane;
 use crate::components::controls::Led;
 use crate::sim::Simulator;
+use crate::state::put;
 use crate::state::Ctx;
 use crate::storage;
 
@@ -28,12 +29,6 @@ pub struct ArduinoCtx {
     pub sketch_quirk: RwSignal<bool>,
     pub console: RwSignal<String>,
     pub text: RwSignal<String>,
-}
-
-fn set<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
-    if signal.with_untracked(|old| *old != value) {
-        signal.set(value);
-    }
 }
 
 impl ArduinoCtx {
@@ -61,10 +56,10 @@ impl ArduinoCtx {
         self.sim.with_value(|s| {
             let m = s.machine();
             for n in 0..6 {
-                set(self.inputs[n], m.inputs() >> n & 1 != 0);
-                set(self.outputs[n], m.outputs() >> n & 1 != 0);
+                put(self.inputs[n], m.inputs() >> n & 1 != 0);
+                put(self.outputs[n], m.outputs() >> n & 1 != 0);
             }
-            set(self.enabled, m.enabled());
+            put(self.enabled, m.enabled());
         });
     }
 

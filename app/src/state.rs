@@ -12,7 +12,7 @@ use crate::storage::{self, Saved};
 
 /// Sets `signal` to `value` only if it differs, so only the elements that
 /// show a changed value repaint.
-fn put<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
+pub fn put<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
     if signal.with_untracked(|old| *old != value) {
         signal.set(value);
     }

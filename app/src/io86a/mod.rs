@@ -8,17 +8,12 @@ use engine::io86a::{LinkedPair, Machine, Program, Terminal};
 use leptos::prelude::*;
 
 use crate::sim::Simulator;
+use crate::state::put;
 use crate::storage::{self, Restored, SavedIo86a};
 
 /// The manual's LED blink, the text a fresh workspace opens with.
 pub const BLINK: &str = "; PLC-IO86A manual: LED blink (0.2 s on, 0.2 s off)\n\
 1 LDI T01\n2 OUT T00\n3 K2\n4 LD T00\n5 OUT T01\n6 K2\n7 LDI T00\n8 OUT Y00\n9 END\n";
-
-fn set<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) {
-    if signal.with_untracked(|old| *old != value) {
-        signal.set(value);
-    }
-}
 
 /// One signal per pin and value of a device.
 #[derive(Clone, Copy)]
@@ -58,19 +53,19 @@ impl DeviceSignals {
 
     fn sync(&self, m: &Machine) {
         for n in 0..8 {
-            set(self.inputs[n], m.input_terminals() >> n & 1 != 0);
-            set(self.d[n], m.last_scan().d[n]);
+            put(self.inputs[n], m.input_terminals() >> n & 1 != 0);
+            put(self.d[n], m.last_scan().d[n]);
         }
         for n in 0..6 {
-            set(self.lamps[n], m.output_terminals() >> n & 1 != 0);
+            put(self.lamps[n], m.output_terminals() >> n & 1 != 0);
         }
         for i in 0..2 {
-            set(self.analog_mv[i], m.analog(i));
-            set(self.analog[i], m.settings().analog[i] != InputMode::Digital);
-            set(self.outputs[i], m.output_signal(i));
+            put(self.analog_mv[i], m.analog(i));
+            put(self.analog[i], m.settings().analog[i] != InputMode::Digital);
+            put(self.outputs[i], m.output_signal(i));
         }
-        set(self.ir, m.settings().ir != IrMode::Digital);
-        set(self.running, m.running());
+        put(self.ir, m.settings().ir != IrMode::Digital);
+        put(self.running, m.running());
     }
 }
 
