@@ -36,10 +36,25 @@ impl PeriodicClock {
         self.next
     }
 
-    /// Sets the period; the next firing comes one new period after `from`.
-    pub fn set_period(&mut self, period: SimTime, from: SimTime) {
+    /// Sets the period, which must be above zero and at most `max`; the
+    /// next firing comes one new period after `from`. `what` names the
+    /// period in the error (`scan period`). Nothing changes on error.
+    pub fn set_period(
+        &mut self,
+        period: SimTime,
+        from: SimTime,
+        max: SimTime,
+        what: &str,
+    ) -> Result<(), String> {
+        if period == SimTime::ZERO || period > max {
+            return Err(format!(
+                "{what} {period}ms is out of range: above 0 and at most {}s",
+                max.as_secs_f64()
+            ));
+        }
         self.period = period;
         self.next = from + period;
+        Ok(())
     }
 
     /// Starts again: the next firing is one period from now.
@@ -87,8 +102,25 @@ mod tests {
         assert_eq!(c.now(), SimTime::from_millis(35));
         c.restart();
         assert_eq!(c.next(), SimTime::from_millis(45));
-        c.set_period(SimTime::from_millis(5), SimTime::from_millis(30));
+        let max = SimTime::from_secs(1);
+        assert_eq!(
+            c.set_period(
+                SimTime::from_millis(5),
+                SimTime::from_millis(30),
+                max,
+                "step"
+            ),
+            Ok(())
+        );
         assert_eq!(c.next(), SimTime::from_millis(35));
+        for bad in [SimTime::ZERO, SimTime::from_millis(1001)] {
+            assert!(c.set_period(bad, SimTime::ZERO, max, "step").is_err());
+        }
+        assert_eq!(
+            (c.period(), c.next()),
+            (SimTime::from_millis(5), SimTime::from_millis(35)),
+            "unchanged"
+        );
         assert_eq!(PeriodicClock::just_before(SimTime::ZERO), SimTime::ZERO);
     }
 }

@@ -120,13 +120,9 @@ impl Machine {
 
     /// Sets the scan period (the program's presets count scans).
     pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
-        if period == SimTime::ZERO || period > SimTime::from_secs(10) {
-            return Err(format!(
-                "scan period {period}ms is out of range: above 0 and at most 10s"
-            ));
-        }
-        self.clock.set_period(period, self.clock.now());
-        Ok(())
+        let now = self.clock.now();
+        self.clock
+            .set_period(period, now, SimTime::from_secs(10), "scan period")
     }
 
     /// Drives an input bit: from the next scan on, the bit reads `on`.

@@ -193,14 +193,12 @@ impl Machine {
     /// Sets the scan period (must be above zero); the next scan comes one
     /// new period after the last.
     pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
-        if period == SimTime::ZERO || period > SimTime::from_secs(10) {
-            return Err(format!(
-                "scan period {}ms is out of range: above 0 and at most 10s",
-                period
-            ));
-        }
-        self.clock.set_period(period, self.last_scan_at);
-        Ok(())
+        self.clock.set_period(
+            period,
+            self.last_scan_at,
+            SimTime::from_secs(10),
+            "scan period",
+        )
     }
 
     /// The simulated time.
