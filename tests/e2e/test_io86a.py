@@ -42,6 +42,9 @@ def test_the_terminal_edits_runs_and_reads(driver, base_url):
     open_io86a(driver, base_url)
     type_at_terminal(driver, "^C")
     assert el(driver, "io86a-state").text in ("stopped", "停止中")
+    # Outputs keep their state across a program change, as on the device:
+    # the blink may have stopped with Y00 on, so reset every Y first.
+    type_at_terminal(driver, "@")
     type_at_terminal(driver, "NA")
     for line in ["LD X00", "OUT Y02", "END", "Q"]:
         type_at_terminal(driver, line)
