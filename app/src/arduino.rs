@@ -2,12 +2,13 @@
 //! outputs, the serial monitor, and the program pane in the sketch's
 //! mnemonic text.
 
-use engine::arduino::isa::Op;
+use engine::arduino::isa::{Op, ERASED};
 use engine::arduino::{monitor, Chip, Machine, PopOrder, Program};
 use leptos::prelude::*;
 
 use crate::components::console::ConsolePane;
 use crate::components::controls::Led;
+use crate::components::text_program::TextProgramPane;
 use crate::sim::Simulator;
 use crate::state::put;
 use crate::state::Ctx;
@@ -153,23 +154,21 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
             }
         })
         .collect_view();
-    let errors =
-        Memo::new(
-            move |_| match Program::parse(&ard.text.get(), Chip::Atmega328.capacity()) {
-                Ok(p) => (
-                    Vec::new(),
-                    !p.words()
-                        .iter()
-                        .any(|&w| matches!(Op::decode(w), Some(Op::End | Op::Jump)) && w != 0xFFFF),
-                ),
-                Err(e) => (
-                    e.iter()
-                        .map(|e| format!("{} {}: {}", t().line, e.line, e.error))
-                        .collect(),
-                    false,
-                ),
-            },
-        );
+    // Errors by line, or whether the program can run into erased EEPROM
+    // (no END and no JUMP: it spins at step 255).
+    let parsed = Memo::new(move |_| {
+        Program::parse(&ard.text.get(), Chip::Atmega328.capacity())
+            .map(|p| {
+                !p.words()
+                    .iter()
+                    .any(|&w| w != ERASED && matches!(Op::decode(w), Some(Op::End | Op::Jump)))
+            })
+            .map_err(|e| {
+                e.iter()
+                    .map(|e| (e.line, e.error.to_string()))
+                    .collect::<Vec<_>>()
+            })
+    });
     view! {
         <main class="workspace arduino">
             <section class="device arduino-board">
@@ -204,42 +203,18 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
                     console=ard.console
                     on_line=Callback::new(move |line: String| ard.type_line(&line))
                 />
-                <section class="program">
-                    <h2>{move || t().program}</h2>
-                    <textarea
-                        class="plain"
-                        data-testid="arduino-program-text"
-                        spellcheck="false"
-                        aria-label=move || t().program
-                        prop:value=move || ard.text.get()
-                        on:input=move |e| {
-                            let text = event_target_value(&e);
-                            storage::save_string(KEY, &text);
-                            ard.text.set(text);
-                        }
-                    ></textarea>
-                    <div class="program-actions">
-                        <button
-                            type="button"
-                            data-testid="arduino-program-load"
-                            disabled=move || !errors.get().0.is_empty()
-                            on:click=move |_| {
-                                ard.load();
-                            }
-                        >
-                            {move || t().load}
-                        </button>
-                    </div>
-                    <div class="errors" class:has-errors=move || !errors.get().0.is_empty() data-testid="arduino-program-error">
-                        {move || {
-                            let (errors, _) = errors.get();
-                            if errors.is_empty() { t().errors_none.to_string() } else { errors.join("\n") }
-                        }}
-                    </div>
-                    <Show when=move || errors.get().1>
-                        <div class="warning" data-testid="arduino-warning">{move || t().warn_spin}</div>
-                    </Show>
-                </section>
+                <TextProgramPane
+                    prefix="arduino-"
+                    text=ard.text
+                    errors=Signal::derive(move || parsed.get().err().unwrap_or_default())
+                    on_edit=Callback::new(|text: String| storage::save_string(KEY, &text))
+                    on_load=Callback::new(move |()| {
+                        ard.load();
+                    })
+                    warning=Signal::derive(move || {
+                        (parsed.get() == Ok(true)).then(|| t().warn_spin.to_string())
+                    })
+                />
             </div>
         </main>
     }

@@ -6,6 +6,7 @@ use engine::avr::{BitRef, Instruction, Machine, Program};
 use leptos::prelude::*;
 
 use crate::components::controls::Led;
+use crate::components::text_program::TextProgramPane;
 use crate::sim::Simulator;
 use crate::state::Ctx;
 use crate::storage;
@@ -115,14 +116,15 @@ fn has_tof(program: &Program) -> bool {
 pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
-    let parsed = Memo::new(move |_| match Program::parse(&avr.text.get(), 10) {
-        Ok(p) => (Vec::new(), has_tof(&p)),
-        Err(e) => (
-            e.iter()
-                .map(|e| format!("{} {}: {}", t().line, e.line, e.error))
-                .collect::<Vec<_>>(),
-            false,
-        ),
+    // Errors by line, or whether the program has a TOF (on after power-up).
+    let parsed = Memo::new(move |_| {
+        Program::parse(&avr.text.get(), 10)
+            .map(|p| has_tof(&p))
+            .map_err(|e| {
+                e.iter()
+                    .map(|e| (e.line, e.error.to_string()))
+                    .collect::<Vec<_>>()
+            })
     });
     view! {
         <main class="workspace avr">
@@ -174,42 +176,19 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
                 </table>
             </section>
             <div class="side">
-                <section class="program">
-                    <h2>{move || t().program}</h2>
-                    <textarea
-                        class="plain tall"
-                        data-testid="avr-program-text"
-                        spellcheck="false"
-                        aria-label=move || t().program
-                        prop:value=move || avr.text.get()
-                        on:input=move |e| {
-                            let text = event_target_value(&e);
-                            storage::save_string(KEY, &text);
-                            avr.text.set(text);
-                        }
-                    ></textarea>
-                    <div class="program-actions">
-                        <button
-                            type="button"
-                            data-testid="avr-program-load"
-                            disabled=move || !parsed.get().0.is_empty()
-                            on:click=move |_| {
-                                avr.load();
-                            }
-                        >
-                            {move || t().load}
-                        </button>
-                    </div>
-                    <div class="errors" class:has-errors=move || !parsed.get().0.is_empty() data-testid="avr-program-error">
-                        {move || {
-                            let (errors, _) = parsed.get();
-                            if errors.is_empty() { t().errors_none.to_string() } else { errors.join("\n") }
-                        }}
-                    </div>
-                    <Show when=move || parsed.get().1>
-                        <div class="warning" data-testid="avr-warning">{move || t().warn_tof}</div>
-                    </Show>
-                </section>
+                <TextProgramPane
+                    prefix="avr-"
+                    text=avr.text
+                    errors=Signal::derive(move || parsed.get().err().unwrap_or_default())
+                    on_edit=Callback::new(|text: String| storage::save_string(KEY, &text))
+                    on_load=Callback::new(move |()| {
+                        avr.load();
+                    })
+                    warning=Signal::derive(move || {
+                        (parsed.get() == Ok(true)).then(|| t().warn_tof.to_string())
+                    })
+                    tall=true
+                />
             </div>
         </main>
     }

@@ -5,3 +5,4 @@ pub mod console;
 pub mod controls;
 pub mod header;
 pub mod program;
+pub mod text_program;

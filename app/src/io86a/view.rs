@@ -8,6 +8,7 @@ use leptos::prelude::*;
 use super::Io86aCtx;
 use crate::components::console::ConsolePane;
 use crate::components::controls::Led;
+use crate::components::text_program::TextProgramPane;
 use crate::state::Ctx;
 
 /// What sits at a pin of the DIP-18 package.
@@ -308,64 +309,32 @@ fn TerminalPane() -> impl IntoView {
     }
 }
 
-/// A device's program pane: the listing, its errors as you type, Load.
+/// A device's program pane.
 #[component]
 fn ProgramPane(device: usize) -> impl IntoView {
     let io = expect_context::<Io86aCtx>();
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
     let text = io.texts[device];
-    let live = Memo::new(move |_| match Program::parse(&text.get()) {
+    let errors = Memo::new(move |_| match Program::parse(&text.get()) {
         Ok(_) => Vec::new(),
         Err(errors) => errors
             .iter()
             .map(|e| (e.line, e.error.to_string()))
-            .collect::<Vec<_>>(),
+            .collect(),
     });
-    let p = prefix(device);
     view! {
-        <section class="program">
-            <h2>
-                {move || t().program} " · "
-                {move || if device == 0 { t().device_a } else { t().device_b }}
-            </h2>
-            <textarea
-                class="plain"
-                data-testid=format!("{p}program-text")
-                spellcheck="false"
-                aria-label=move || t().program
-                prop:value=move || text.get()
-                on:input=move |e| {
-                    text.set(event_target_value(&e));
-                    io.save();
-                }
-            ></textarea>
-            <div class="program-actions">
-                <button
-                    type="button"
-                    data-testid=format!("{p}program-load")
-                    disabled=move || !live.get().is_empty()
-                    on:click=move |_| {
-                        io.load(device);
-                    }
-                >
-                    {move || t().load}
-                </button>
-            </div>
-            <div class="errors" class:has-errors=move || !live.get().is_empty() data-testid=format!("{p}program-error")>
-                {move || {
-                    let errors = live.get();
-                    if errors.is_empty() {
-                        t().errors_none.to_string()
-                    } else {
-                        errors
-                            .iter()
-                            .map(|(line, message)| format!("{} {line}: {message}", t().line))
-                            .collect::<Vec<_>>()
-                            .join("\n")
-                    }
-                }}
-            </div>
-        </section>
+        <TextProgramPane
+            prefix=prefix(device)
+            text=text
+            errors=errors.into()
+            on_edit=Callback::new(move |_| io.save())
+            on_load=Callback::new(move |()| {
+                io.load(device);
+            })
+            subtitle=Signal::derive(move || {
+                (if device == 0 { t().device_a } else { t().device_b }).to_string()
+            })
+        />
     }
 }
