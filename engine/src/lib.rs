@@ -10,8 +10,11 @@ pub mod error;
 pub mod events;
 pub mod headless;
 pub mod io86a;
+pub mod ladder;
+pub mod machine_id;
 pub mod minasec;
 pub mod time;
 
 pub use error::Located;
+pub use machine_id::MachineId;
 pub use time::SimTime;

@@ -24,7 +24,7 @@ pub struct TimerWord {
 
 impl TimerWord {
     /// Takes IN, returns Q (scan units; see docs/avr-plc.md).
-    fn run(&mut self, kind: TimerKind, input: bool, preset: u16) -> bool {
+    pub fn run(&mut self, kind: TimerKind, input: bool, preset: u16) -> bool {
         match kind {
             // Q once IN has been on for `preset` scans.
             TimerKind::Ton => {

@@ -1,0 +1,162 @@
+//! Rungs as the editor draws them: a grid of cells with vertical links.
+//!
+//! Electrically, the left edge of every row's first cell is the left power
+//! rail; a non-empty cell joins the point on its left to the point on its
+//! right; a [`Link`] joins two rows at a column's left edge. Outputs stand
+//! in one column at the rung's right end (docs/ladder.md).
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use serde::{Deserialize, Serialize};
+
+use super::element::Element;
+
+/// A cell's place in a rung, 0-based (errors print it 1-based).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub struct Pos {
+    /// The row, from the top.
+    pub row: usize,
+    /// The column, from the left rail.
+    pub col: usize,
+}
+
+impl Pos {
+    /// The cell at `row`, `col`.
+    pub const fn new(row: usize, col: usize) -> Pos {
+        Pos { row, col }
+    }
+}
+
+/// A vertical wire joining `row` and `row + 1` at the left edge of `col`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(from = "(usize, usize)", into = "(usize, usize)")]
+pub struct Link {
+    /// The upper row.
+    pub row: usize,
+    /// The column whose left edge it runs down.
+    pub col: usize,
+}
+
+impl From<(usize, usize)> for Link {
+    fn from((row, col): (usize, usize)) -> Link {
+        Link { row, col }
+    }
+}
+
+impl From<Link> for (usize, usize) {
+    fn from(l: Link) -> (usize, usize) {
+        (l.row, l.col)
+    }
+}
+
+/// One rung: rows of cells (`None` = empty) and the vertical links.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub struct Rung {
+    /// The rung comment.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub comment: String,
+    /// Rows of cells, top first; rows may be shorter than the widest.
+    pub cells: Vec<Vec<Option<Element>>>,
+    /// Vertical links.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub links: Vec<Link>,
+}
+
+impl Rung {
+    /// The number of columns (the longest row).
+    pub fn width(&self) -> usize {
+        self.cells.iter().map(Vec::len).max().unwrap_or(0)
+    }
+
+    /// The element at `pos`, if any.
+    pub fn get(&self, pos: Pos) -> Option<&Element> {
+        self.cells.get(pos.row)?.get(pos.col)?.as_ref()
+    }
+
+    /// Puts `element` at `pos`, growing the grid as needed.
+    pub fn set(&mut self, pos: Pos, element: Option<Element>) {
+        if self.cells.len() <= pos.row {
+            self.cells.resize(pos.row + 1, Vec::new());
+        }
+        let row = &mut self.cells[pos.row];
+        if row.len() <= pos.col {
+            row.resize(pos.col + 1, None);
+        }
+        row[pos.col] = element;
+    }
+
+    /// Whether the rung holds nothing at all.
+    pub fn is_empty(&self) -> bool {
+        self.cells.iter().flatten().all(Option::is_none) && self.links.is_empty()
+    }
+
+    /// Every element with its place, row by row.
+    pub fn elements(&self) -> impl Iterator<Item = (Pos, &Element)> {
+        self.cells.iter().enumerate().flat_map(|(r, row)| {
+            row.iter()
+                .enumerate()
+                .filter_map(move |(c, e)| e.as_ref().map(|e| (Pos::new(r, c), e)))
+        })
+    }
+}
+
+/// A whole ladder: rungs and device comments.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Ladder {
+    /// The rungs, run top to bottom.
+    pub rungs: Vec<Rung>,
+    /// Comments on devices, by device name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub device_comments: BTreeMap<String, String>,
+}
+
+/// A problem with a ladder, at a rung (1-based) and optionally a cell.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LadderError {
+    /// The 1-based rung number.
+    pub rung: usize,
+    /// The cell, when the problem has one.
+    pub pos: Option<Pos>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl LadderError {
+    /// A problem at a cell of rung index `rung` (0-based).
+    pub fn at(rung: usize, pos: Pos, message: impl Into<String>) -> LadderError {
+        LadderError {
+            rung: rung + 1,
+            pos: Some(pos),
+            message: message.into(),
+        }
+    }
+
+    /// A problem with rung index `rung` (0-based) as a whole.
+    pub fn rung(rung: usize, message: impl Into<String>) -> LadderError {
+        LadderError {
+            rung: rung + 1,
+            pos: None,
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for LadderError {
+    /// `rung 3, row 1, column 2: message` (1-based).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.pos {
+            Some(p) => write!(
+                f,
+                "rung {}, row {}, column {}: {}",
+                self.rung,
+                p.row + 1,
+                p.col + 1,
+                self.message
+            ),
+            None => write!(f, "rung {}: {}", self.rung, self.message),
+        }
+    }
+}
+
+impl std::error::Error for LadderError {}

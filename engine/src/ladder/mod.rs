@@ -1,0 +1,89 @@
+//! Ladder diagrams: the model the editor draws, its logic, the reference
+//! evaluator, the compilers to each machine and back, and the file formats
+//! (docs/ladder.md).
+//!
+//! - [`element`], [`grid`]: cells, rungs, links, device comments;
+//! - [`net`]: a rung's series-parallel logic read off the grid, and back;
+//! - [`target`]: what each machine offers (palette and validation);
+//! - [`eval`]: power flow by the book, per element;
+//! - [`compile`], [`decompile`]: to and from each machine's mnemonic text;
+//! - [`project`], [`share`], [`plcopen`]: JSON projects, share URLs, PLCopen XML.
+
+pub mod compile;
+pub mod decompile;
+pub mod element;
+pub mod eval;
+pub mod grid;
+pub mod net;
+pub mod plcopen;
+pub mod project;
+pub mod share;
+pub mod target;
+
+pub use element::{CoilKind, ContactKind, Element, TimerKind};
+pub use grid::{Ladder, LadderError, Link, Pos, Rung};
+pub use net::{analyse, layout, Net, RungLogic};
+pub use project::Project;
+
+use crate::MachineId;
+
+impl Ladder {
+    /// Every rung's logic, checked against `machine`'s capability table
+    /// with device names in the machine's spelling. Empty rungs are
+    /// skipped; every problem found is returned, each at its rung and cell.
+    pub fn logic(&self, machine: MachineId) -> Result<Vec<RungLogic>, Vec<LadderError>> {
+        let mut errors = Vec::new();
+        let mut out = Vec::new();
+        for (i, rung) in self.rungs.iter().enumerate() {
+            match analyse(rung, i) {
+                Ok(Some(mut logic)) => match check_logic(&mut logic, machine, i) {
+                    Ok(()) => out.push(logic),
+                    Err(e) => errors.extend(e),
+                },
+                Ok(None) => {}
+                Err(e) => errors.extend(e),
+            }
+        }
+        if errors.is_empty() {
+            Ok(out)
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// A ladder of one rung per logic, drawn by [`layout`].
+    pub fn from_logic(rungs: &[RungLogic]) -> Ladder {
+        Ladder {
+            rungs: rungs.iter().map(layout).collect(),
+            ..Ladder::default()
+        }
+    }
+}
+
+fn check_logic(
+    logic: &mut RungLogic,
+    machine: MachineId,
+    index: usize,
+) -> Result<(), Vec<LadderError>> {
+    let mut errors = Vec::new();
+    let mut fix = |e: &mut Element, pos: Pos| match target::check_element(machine, e) {
+        Ok(canonical) => *e = canonical,
+        Err(m) => errors.push(LadderError::at(index, pos, m)),
+    };
+    visit_leaves(&mut logic.condition, &mut fix);
+    for (e, p) in &mut logic.outputs {
+        fix(e, *p);
+    }
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(errors)
+    }
+}
+
+fn visit_leaves(net: &mut Net, f: &mut impl FnMut(&mut Element, Pos)) {
+    match net {
+        Net::Leaf(e, p) => f(e, *p),
+        Net::Series(v) | Net::Parallel(v) => v.iter_mut().for_each(|n| visit_leaves(n, f)),
+    }
+}

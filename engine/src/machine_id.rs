@@ -1,0 +1,58 @@
+//! The four machines by their command-line and project-file names.
+
+use std::fmt;
+
+use serde::{Deserialize, Serialize};
+
+/// One of the four simulated PLCs (../shared/spec/machines.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub enum MachineId {
+    /// MINASEC-U, the logic-IC PLC.
+    #[serde(rename = "minasec-u")]
+    MinasecU,
+    /// PLC-IO86A, the PIC-based FX-style PLC.
+    #[serde(rename = "io86a")]
+    Io86a,
+    /// The AVR simplified PLC.
+    #[serde(rename = "avr-plc")]
+    AvrPlc,
+    /// The Arduino PLC sketch.
+    #[serde(rename = "arduino-plc")]
+    ArduinoPlc,
+}
+
+impl MachineId {
+    /// Every machine, in the order the docs list them.
+    pub const ALL: [MachineId; 4] = [
+        MachineId::MinasecU,
+        MachineId::Io86a,
+        MachineId::AvrPlc,
+        MachineId::ArduinoPlc,
+    ];
+
+    /// The name `--machine` and project files use.
+    pub const fn name(self) -> &'static str {
+        match self {
+            MachineId::MinasecU => "minasec-u",
+            MachineId::Io86a => "io86a",
+            MachineId::AvrPlc => "avr-plc",
+            MachineId::ArduinoPlc => "arduino-plc",
+        }
+    }
+
+    /// Parses a machine name.
+    pub fn parse(id: &str) -> Result<MachineId, String> {
+        MachineId::ALL
+            .into_iter()
+            .find(|m| m.name() == id)
+            .ok_or_else(|| {
+                format!("unknown machine \"{id}\": minasec-u, io86a, avr-plc or arduino-plc")
+            })
+    }
+}
+
+impl fmt::Display for MachineId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}

@@ -1,0 +1,5 @@
+//! The ladder model, compilers, decompilers and formats (issue #6).
+
+mod differential;
+mod model;
+mod seed;

@@ -1,0 +1,1 @@
+//! The grid model: wiring checks, layout, capability tables.
