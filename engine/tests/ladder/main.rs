@@ -1,5 +1,8 @@
 //! The ladder model, compilers, decompilers and formats (issue #6).
 
+mod cli;
+#[path = "../common/mod.rs"]
+mod common;
 mod differential;
 mod model;
 mod seed;

@@ -10,54 +10,15 @@ use engine::events::parse_events;
 use engine::headless::Simulation;
 use engine::headless::{self, RunError, Schedule};
 use engine::io86a;
+use engine::ladder::compile::{compile as compile_ladder, Options};
+use engine::ladder::{plcopen, Ladder, Project};
 use engine::minasec::{self, Machine};
-use engine::SimTime;
+use engine::{MachineId, SimTime};
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};
 
 type Problems = Vec<String>;
-
-/// The machines of cli.md.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum MachineId {
-    MinasecU,
-    Io86a,
-    AvrPlc,
-    ArduinoPlc,
-}
-
-impl MachineId {
-    fn name(self) -> &'static str {
-        match self {
-            MachineId::MinasecU => "minasec-u",
-            MachineId::Io86a => "io86a",
-            MachineId::AvrPlc => "avr-plc",
-            MachineId::ArduinoPlc => "arduino-plc",
-        }
-    }
-
-    fn parse(id: &str) -> Result<MachineId, String> {
-        match id {
-            "minasec-u" => Ok(MachineId::MinasecU),
-            "io86a" => Ok(MachineId::Io86a),
-            "avr-plc" => Ok(MachineId::AvrPlc),
-            "arduino-plc" => Ok(MachineId::ArduinoPlc),
-            other => Err(format!(
-                "unknown machine \"{other}\": minasec-u, io86a, avr-plc or arduino-plc"
-            )),
-        }
-    }
-
-    /// MINASEC-U and IO86A are emulated so far; the others say so.
-    fn require_supported(self) -> Result<(), String> {
-        match self {
-            MachineId::MinasecU | MachineId::Io86a | MachineId::ArduinoPlc | MachineId::AvrPlc => {
-                Ok(())
-            }
-        }
-    }
-}
 
 fn one(problem: String) -> Problems {
     vec![problem]
@@ -71,54 +32,126 @@ enum Loaded {
     Avr(avr::Program),
 }
 
+/// A program ready for its machine, and the settings its project holds.
+struct Source {
+    loaded: Loaded,
+    /// `--set`-style settings from a project file, applied before `--set`.
+    settings: Vec<(String, String)>,
+    /// Where those settings came from, for their errors.
+    name: String,
+}
+
 /// Reads `--machine`, `--program` and `--format` and parses the program for
-/// that machine; `Err` holds every problem found.
-fn load(args: &Args) -> Result<Loaded, Problems> {
-    let machine = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
-    machine.require_supported().map_err(one)?;
+/// that machine, compiling a ladder (`.json`, `.xml`) first; `Err` holds
+/// every problem found.
+fn load(args: &Args) -> Result<Source, Problems> {
+    let flag = machine_flag(args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
     let source = SourceFile::read(path).map_err(one)?;
-    match format {
-        Format::Il => {}
-        Format::Asm if machine == MachineId::AvrPlc => {}
-        Format::Asm => {
-            return Err(one(format!(
-                "{}: {} programs are mnemonic text (.il), not .asm",
-                source.name,
-                machine.name()
-            )))
+    let (machine, compiled, settings) = match format {
+        Format::Il | Format::Asm => {
+            let machine = match flag {
+                Some(m) => m,
+                None => MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?,
+            };
+            if format == Format::Asm && machine != MachineId::AvrPlc {
+                return Err(one(format!(
+                    "{}: {} programs are mnemonic text (.il), not .asm",
+                    source.name,
+                    machine.name()
+                )));
+            }
+            (machine, None, Vec::new())
         }
         Format::Json | Format::Xml => {
-            return Err(one(format!(
-                "{}: ladder projects (.json, .xml) are not supported yet: they come with the ladder compiler",
-                source.name
-            )))
+            let (ladder, machine, settings) = read_ladder(&source, format, flag)?;
+            let options = Options {
+                avr_scan_ms: avr_scan_ms(args, &settings) as u32,
+            };
+            let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
+                errors
+                    .iter()
+                    .map(|e| format!("{}: {e}", source.name))
+                    .collect::<Vec<_>>()
+            })?;
+            (machine, Some(text), settings)
         }
-    }
-    match machine {
-        MachineId::MinasecU => minasec::Program::parse(&source.text)
+    };
+    // A compiled ladder is parsed like a listing; its errors would be the
+    // compiler's, so they name the compiled text.
+    let (text, origin) = match &compiled {
+        Some(t) => (t.as_str(), format!("{} (compiled)", source.name)),
+        None => (source.text.as_str(), source.name.clone()),
+    };
+    let parsed = SourceFile {
+        name: origin,
+        text: text.to_string(),
+    };
+    let loaded = match machine {
+        MachineId::MinasecU => minasec::Program::parse(text)
             .map(|p| Loaded::MinasecU(Box::new(p)))
-            .map_err(|errors| source.located(&errors)),
-        MachineId::AvrPlc => avr::Program::parse(&source.text, avr_scan_ms(args))
+            .map_err(|errors| parsed.located(&errors)),
+        MachineId::AvrPlc => avr::Program::parse(text, avr_scan_ms(args, &settings))
             .map(Loaded::Avr)
-            .map_err(|errors| source.located(&errors)),
-        MachineId::ArduinoPlc => {
-            arduino::Program::parse(&source.text, arduino::Chip::Atmega328.capacity())
-                .map(Loaded::Arduino)
-                .map_err(|errors| source.located(&errors))
-        }
-        MachineId::Io86a => io86a::Program::parse(&source.text)
+            .map_err(|errors| parsed.located(&errors)),
+        MachineId::ArduinoPlc => arduino::Program::parse(text, arduino::Chip::Atmega328.capacity())
+            .map(Loaded::Arduino)
+            .map_err(|errors| parsed.located(&errors)),
+        MachineId::Io86a => io86a::Program::parse(text)
             .map(Loaded::Io86a)
-            .map_err(|errors| source.located(&errors)),
+            .map_err(|errors| parsed.located(&errors)),
+    }?;
+    Ok(Source {
+        loaded,
+        settings,
+        name: source.name,
+    })
+}
+
+/// `--machine`, when given.
+fn machine_flag(args: &Args) -> Result<Option<MachineId>, Problems> {
+    args.optional("machine")
+        .map_err(one)?
+        .map(MachineId::parse)
+        .transpose()
+        .map_err(one)
+}
+
+/// A ladder from a project (`.json`, naming its machine) or PLCopen XML
+/// (which does not: `--machine` says). `--machine` wins over the project's.
+fn read_ladder(
+    source: &SourceFile,
+    format: Format,
+    flag: Option<MachineId>,
+) -> Result<(Ladder, MachineId, Vec<(String, String)>), Problems> {
+    if format == Format::Json {
+        let project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
+        let machine = flag.unwrap_or(project.machine);
+        return Ok((
+            project.ladder,
+            machine,
+            project.settings.into_iter().collect(),
+        ));
     }
+    let machine = flag.ok_or_else(|| {
+        one(format!(
+            "{}: a PLCopen file does not name its machine: give --machine",
+            source.name
+        ))
+    })?;
+    let ladder = plcopen::import(&source.text).map_err(|errors| source.located(&errors))?;
+    Ok((ladder, machine, Vec::new()))
 }
 
 /// The `Scan` symbol of AVR sources: the scan period in ms from
-/// `--set scan=` (a bad value is reported by the settings), else 10.
-fn avr_scan_ms(args: &Args) -> i64 {
-    args.all("set")
-        .filter_map(|s| s.split_once('='))
+/// `--set scan=` (a bad value is reported by the settings), else the
+/// project's, else 10.
+fn avr_scan_ms(args: &Args, project: &[(String, String)]) -> i64 {
+    project
+        .iter()
+        .map(|(n, v)| (n.as_str(), v.as_str()))
+        .chain(args.all("set").filter_map(|s| s.split_once('=')))
         .filter(|(n, _)| n.trim().eq_ignore_ascii_case("scan"))
         .filter_map(|(_, v)| SimTime::parse(v.trim()).ok())
         .last()
@@ -134,31 +167,38 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
         ],
     )
     .map_err(one)?;
-    // An unknown or unsupported machine is the only thing worth saying.
-    let id = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
-    id.require_supported().map_err(one)?;
+    // An unknown machine is the only thing worth saying.
+    let flag = machine_flag(&args)?;
     match load(&args) {
-        Ok(Loaded::MinasecU(p)) => {
-            let mut m = Machine::for_run();
-            m.load(&p);
-            run_with(&args, m, Vec::new())
+        Ok(source) => {
+            let defaults = (source.name.as_str(), source.settings.as_slice());
+            match source.loaded {
+                Loaded::MinasecU(p) => {
+                    let mut m = Machine::for_run();
+                    m.load(&p);
+                    run_with(&args, m, defaults, Vec::new())
+                }
+                Loaded::Io86a(p) => run_with(&args, io86a::Machine::new(p), defaults, Vec::new()),
+                Loaded::Arduino(p) => run_with(&args, arduino_for_run(&p), defaults, Vec::new()),
+                Loaded::Avr(p) => run_with(&args, avr::Machine::new(p), defaults, Vec::new()),
+            }
         }
-        Ok(Loaded::Io86a(p)) => run_with(&args, io86a::Machine::new(p), Vec::new()),
-        Ok(Loaded::Arduino(p)) => run_with(&args, arduino_for_run(&p), Vec::new()),
-        Ok(Loaded::Avr(p)) => run_with(&args, avr::Machine::new(p), Vec::new()),
         // Still check everything else, on a machine with an empty program.
-        Err(problems) => match id {
-            MachineId::MinasecU => run_with(&args, Machine::for_run(), problems),
-            MachineId::ArduinoPlc => run_with(
+        Err(problems) => match flag {
+            Some(MachineId::MinasecU) => run_with(&args, Machine::for_run(), ("", &[]), problems),
+            Some(MachineId::ArduinoPlc) => run_with(
                 &args,
                 arduino_for_run(&arduino::Program::default()),
+                ("", &[]),
                 problems,
             ),
-            _ => run_with(
+            Some(_) => run_with(
                 &args,
                 io86a::Machine::new(io86a::Program::default()),
+                ("", &[]),
                 problems,
             ),
+            None => Err(problems),
         },
     }
 }
@@ -176,6 +216,7 @@ fn arduino_for_run(program: &arduino::Program) -> arduino::Machine {
 fn run_with<S: Simulation>(
     args: &Args,
     mut sim: S,
+    (file, defaults): (&str, &[(String, String)]),
     mut problems: Problems,
 ) -> Result<(), Problems> {
     let until = args
@@ -192,6 +233,11 @@ fn run_with<S: Simulation>(
         .collect();
     if watch.is_empty() || watch.iter().any(String::is_empty) {
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
+    }
+    for (name, value) in defaults {
+        if let Err(e) = sim.setting(name, value) {
+            problems.push(format!("{file}: setting {name}={value}: {e}"));
+        }
     }
     for setting in args.all("set") {
         let result = match setting.split_once('=') {
@@ -261,7 +307,7 @@ fn run_with<S: Simulation>(
 /// `hashigo bench`.
 pub fn bench(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(rest, &["machine", "program", "format", "steps"]).map_err(one)?;
-    let loaded = load(&args)?;
+    let loaded = load(&args)?.loaded;
     let steps_text = args.required("steps").map_err(one)?;
     let steps: u64 = steps_text.parse().ok().filter(|&n| n > 0).ok_or_else(|| {
         one(format!(
@@ -356,7 +402,7 @@ fn bench_scans(
 /// `hashigo asm`.
 pub fn asm(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(rest, &["machine", "program", "format"]).map_err(one)?;
-    match load(&args)? {
+    match load(&args)?.loaded {
         Loaded::MinasecU(program) => print!("{}", program.sheet()),
         Loaded::Io86a(program) => print!("{}", program.listing()),
         Loaded::Arduino(program) => {
@@ -388,7 +434,7 @@ pub fn console(rest: &[String]) -> Result<(), Problems> {
         None => SimTime::from_millis(10),
     };
     let program = match args.optional("program").map_err(one)? {
-        Some(_) => match load(&args)? {
+        Some(_) => match load(&args)?.loaded {
             Loaded::Io86a(program) => program,
             _ => return Err(one("--machine io86a needs an io86a program".to_string())),
         },
@@ -424,7 +470,7 @@ fn arduino_console(args: &Args) -> Result<(), Problems> {
         None => SimTime::from_millis(10),
     };
     let program = match args.optional("program").map_err(one)? {
-        Some(_) => match load(args)? {
+        Some(_) => match load(args)?.loaded {
             Loaded::Arduino(program) => program,
             _ => {
                 return Err(one(
@@ -448,13 +494,29 @@ fn arduino_console(args: &Args) -> Result<(), Problems> {
     Ok(())
 }
 
-/// `compile`: ladder projects come with the compiler.
-pub fn not_yet(command: &str, rest: &[String]) -> Result<(), Problems> {
-    let args = Args::parse(rest, &["machine", "program", "format", "step"]).map_err(one)?;
-    let machine = MachineId::parse(args.required("machine").map_err(one)?).map_err(one)?;
-    machine.require_supported().map_err(one)?;
-    Err(one(format!(
-        "hashigo {command} is not supported yet for {}",
-        machine.name()
-    )))
+/// `hashigo compile`: a ladder (`.json` project or PLCopen `.xml`) to
+/// the machine's program text, which `hashigo run` takes back.
+pub fn compile(rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(rest, &["machine", "program", "format", "set"]).map_err(one)?;
+    let flag = machine_flag(&args)?;
+    let path = args.required("program").map_err(one)?;
+    let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
+    if !matches!(format, Format::Json | Format::Xml) {
+        return Err(one(format!(
+            "{path}: hashigo compile takes a ladder (.json project or PLCopen .xml)"
+        )));
+    }
+    let source = SourceFile::read(path).map_err(one)?;
+    let (ladder, machine, settings) = read_ladder(&source, format, flag)?;
+    let options = Options {
+        avr_scan_ms: avr_scan_ms(&args, &settings) as u32,
+    };
+    let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
+        errors
+            .iter()
+            .map(|e| format!("{}: {e}", source.name))
+            .collect::<Vec<_>>()
+    })?;
+    print!("{text}");
+    Ok(())
 }

@@ -15,7 +15,7 @@ usage: hashigo <command> [options]
            --until TIME [--every TIME] --watch DEV[,DEV...]
   bench    --machine ID --program FILE --steps N
   asm      --machine ID --program FILE
-  compile  --machine ID --program LADDER.json|LADDER.xml
+  compile  [--machine ID] --program LADDER.json|LADDER.xml
   console  --machine io86a|arduino-plc [--program FILE] [--step TIME]
 machines: minasec-u, io86a, avr-plc, arduino-plc";
 
@@ -30,7 +30,7 @@ fn main() -> ExitCode {
         "bench" => commands::bench(rest),
         "asm" => commands::asm(rest),
         "console" => commands::console(rest),
-        "compile" => commands::not_yet(command, rest),
+        "compile" => commands::compile(rest),
         "help" | "--help" | "-h" => {
             println!("{USAGE}");
             Ok(())
