@@ -19,6 +19,8 @@ use crate::args::Args;
 use crate::input::{Format, SourceFile};
 
 type Problems = Vec<String>;
+/// `--set`-style settings a project file holds.
+type Settings = Vec<(String, String)>;
 
 fn one(problem: String) -> Problems {
     vec![problem]
@@ -124,7 +126,7 @@ fn read_ladder(
     source: &SourceFile,
     format: Format,
     flag: Option<MachineId>,
-) -> Result<(Ladder, MachineId, Vec<(String, String)>), Problems> {
+) -> Result<(Ladder, MachineId, Settings), Problems> {
     if format == Format::Json {
         let project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
         let machine = flag.unwrap_or(project.machine);
