@@ -249,6 +249,36 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
     }))
 }
 
+/// The series-parallel network between `rail` and `bus` in a graph of
+/// elements (`from` point, `to` point, leaf): only the edges on a path
+/// from one to the other count. `Err` holds a cell of a part that is not
+/// series-parallel, or `None` when no path joins them.
+pub(crate) fn network(
+    edges: Vec<(usize, usize, Net)>,
+    rail: usize,
+    bus: usize,
+) -> Result<Net, Option<Pos>> {
+    let edges: Vec<Edge> = edges
+        .into_iter()
+        .map(|(from, to, net)| Edge {
+            from,
+            to,
+            key: net.top_left(),
+            net,
+        })
+        .collect();
+    let forward = reach(&edges, rail, |e| (e.from, e.to));
+    let backward = reach(&edges, bus, |e| (e.to, e.from));
+    let useful: Vec<Edge> = edges
+        .into_iter()
+        .filter(|e| forward.contains(&e.from) && backward.contains(&e.to))
+        .collect();
+    if useful.is_empty() {
+        return Err(None);
+    }
+    reduce(useful, rail, bus).map(Net::normalised).map_err(Some)
+}
+
 struct Edge {
     from: usize,
     to: usize,

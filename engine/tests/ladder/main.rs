@@ -5,4 +5,6 @@ mod cli;
 mod common;
 mod differential;
 mod model;
+mod plcopen;
 mod seed;
+mod strategies;

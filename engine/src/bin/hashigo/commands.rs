@@ -142,7 +142,8 @@ fn read_ladder(
             source.name
         ))
     })?;
-    let ladder = plcopen::import(&source.text).map_err(|errors| source.located(&errors))?;
+    let ladder = plcopen::import_for(&source.text, Some(machine))
+        .map_err(|errors| source.located(&errors))?;
     Ok((ladder, machine, Vec::new()))
 }
 

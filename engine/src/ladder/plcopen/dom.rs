@@ -1,0 +1,167 @@
+//! A small element tree over quick-xml events: names without namespace
+//! prefixes, attributes, text, and the line each element starts on.
+
+use quick_xml::events::{BytesStart, Event};
+use quick_xml::Reader;
+
+use crate::error::Located;
+
+/// One XML element.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Node {
+    /// The local name (`contact`, `xhtml:p` → `p`).
+    pub name: String,
+    /// Attributes by local name, in document order.
+    pub attrs: Vec<(String, String)>,
+    /// Child elements.
+    pub children: Vec<Node>,
+    /// The text directly inside (trimmed, CDATA included).
+    pub text: String,
+    /// The 1-based line of the start tag.
+    pub line: usize,
+}
+
+impl Node {
+    /// An attribute's value.
+    pub fn attr(&self, name: &str) -> Option<&str> {
+        self.attrs
+            .iter()
+            .find(|(k, _)| k == name)
+            .map(|(_, v)| v.as_str())
+    }
+
+    /// The first child called `name`.
+    pub fn child(&self, name: &str) -> Option<&Node> {
+        self.children.iter().find(|c| c.name == name)
+    }
+
+    /// Every child called `name`.
+    pub fn all<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Node> + 'a {
+        self.children.iter().filter(move |c| c.name == name)
+    }
+
+    /// Every descendant called `name`, depth first.
+    pub fn descendants<'a>(&'a self, name: &str, out: &mut Vec<&'a Node>) {
+        for c in &self.children {
+            if c.name == name {
+                out.push(c);
+            }
+            c.descendants(name, out);
+        }
+    }
+
+    /// All the text inside, children included.
+    pub fn deep_text(&self) -> String {
+        let mut s = self.text.clone();
+        for c in &self.children {
+            let t = c.deep_text();
+            if !t.is_empty() {
+                if !s.is_empty() {
+                    s.push(' ');
+                }
+                s.push_str(&t);
+            }
+        }
+        s
+    }
+}
+
+fn line_at(text: &str, offset: u64) -> usize {
+    let end = usize::try_from(offset)
+        .unwrap_or(usize::MAX)
+        .min(text.len());
+    text.as_bytes()[..end]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+fn start(e: &BytesStart, line: usize) -> Result<Node, String> {
+    let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
+    let mut attrs = Vec::new();
+    for a in e.attributes() {
+        let a = a.map_err(|err| format!("bad attribute in <{name}>: {err}"))?;
+        let key = String::from_utf8_lossy(a.key.local_name().as_ref()).into_owned();
+        let value = a
+            .unescape_value()
+            .map_err(|err| format!("bad attribute value in <{name}>: {err}"))?
+            .into_owned();
+        // `xmlns` and `xmlns:x` both keep their name, so the namespace is visible.
+        let key = if a.key.as_ref() == b"xmlns" {
+            "xmlns".to_string()
+        } else {
+            key
+        };
+        attrs.push((key, value));
+    }
+    Ok(Node {
+        name,
+        attrs,
+        line,
+        ..Node::default()
+    })
+}
+
+/// Parses `text` into its root element; errors name their line.
+pub fn parse(text: &str) -> Result<Node, Located<String>> {
+    let mut reader = Reader::from_str(text);
+    reader.config_mut().trim_text(true);
+    let mut stack: Vec<Node> = Vec::new();
+    let mut root: Option<Node> = None;
+    loop {
+        // The event starts at the first non-blank byte after the last one.
+        let at = usize::try_from(reader.buffer_position()).unwrap_or(usize::MAX);
+        let skip = text
+            .get(at..)
+            .map_or(0, |rest| rest.len() - rest.trim_start().len());
+        let line = line_at(text, (at + skip) as u64);
+        let event = reader.read_event().map_err(|e| {
+            Located::new(
+                line_at(text, reader.error_position()),
+                format!("not well-formed XML: {e}"),
+            )
+        })?;
+        match event {
+            Event::Start(e) => stack.push(start(&e, line).map_err(|m| Located::new(line, m))?),
+            Event::Empty(e) => {
+                let node = start(&e, line).map_err(|m| Located::new(line, m))?;
+                match stack.last_mut() {
+                    Some(parent) => parent.children.push(node),
+                    None => root = root.or(Some(node)),
+                }
+            }
+            Event::End(_) => {
+                let node = stack
+                    .pop()
+                    .ok_or_else(|| Located::new(line, "an end tag with no start".to_string()))?;
+                match stack.last_mut() {
+                    Some(parent) => parent.children.push(node),
+                    None => root = root.or(Some(node)),
+                }
+            }
+            Event::Text(t) => {
+                if let Some(n) = stack.last_mut() {
+                    let s = t
+                        .unescape()
+                        .map_err(|e| Located::new(line, format!("bad text: {e}")))?;
+                    n.text.push_str(s.trim());
+                }
+            }
+            Event::CData(c) => {
+                if let Some(n) = stack.last_mut() {
+                    n.text.push_str(String::from_utf8_lossy(&c).trim());
+                }
+            }
+            Event::Eof => break,
+            _ => {}
+        }
+    }
+    if !stack.is_empty() {
+        return Err(Located::new(
+            line_at(text, text.len() as u64),
+            format!("<{}> is never closed", stack[stack.len() - 1].name),
+        ));
+    }
+    root.ok_or_else(|| Located::new(1, "no XML element found".to_string()))
+}

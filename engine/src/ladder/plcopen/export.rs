@@ -1,0 +1,379 @@
+//! Rungs to a PLCopen TC6 v2.01 project: one `main` program with an LD
+//! body, one left and right rail a rung, elements at their grid places.
+
+use std::fmt::Write as _;
+
+use quick_xml::escape::escape;
+
+use super::{time_literal, NS_V201};
+use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
+use crate::ladder::grid::{Ladder, LadderError, Pos};
+use crate::ladder::net::{analyse, Net, RungLogic};
+
+const CELL_W: usize = 80;
+const CELL_H: usize = 60;
+
+/// The ladder as a PLCopen project named `name`. Outputs PLCopen has no
+/// LD form for (MOV, CMP, INC, DEC) are errors at their cells.
+pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
+    let mut errors = Vec::new();
+    let mut logic = Vec::new();
+    for (i, rung) in ladder.rungs.iter().enumerate() {
+        match analyse(rung, i) {
+            Ok(Some(l)) => logic.push((i, l)),
+            Ok(None) => {}
+            Err(e) => errors.extend(e),
+        }
+    }
+    let mut w = Writer::default();
+    let mut y0 = 20;
+    for (i, l) in &logic {
+        if let Err((p, m)) = w.rung(l, y0) {
+            errors.push(LadderError::at(*i, p, m));
+        }
+        let rows = ladder.rungs[*i].cells.len().max(l.outputs.len());
+        y0 += rows * CELL_H + CELL_H;
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let mut vars = String::new();
+    for (v, ty) in &w.variables {
+        let _ = writeln!(
+            vars,
+            "          <variable name=\"{}\"><type>{ty}</type></variable>",
+            escape(v.as_str())
+        );
+    }
+    Ok(format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="{NS_V201}" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="Hashigo" productName="Hashigo" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="{name}">
+    <coordinateInfo>
+      <fbd><scaling x="1" y="1"/></fbd>
+      <ld><scaling x="1" y="1"/></ld>
+      <sfc><scaling x="1" y="1"/></sfc>
+    </coordinateInfo>
+  </contentHeader>
+  <types>
+    <dataTypes/>
+    <pous>
+      <pou name="main" pouType="program">
+        <interface>
+          <localVars>
+{vars}          </localVars>
+        </interface>
+        <body>
+          <LD>
+{body}          </LD>
+        </body>
+      </pou>
+    </pous>
+  </types>
+  <instances>
+    <configurations/>
+  </instances>
+</project>
+"#,
+        name = escape(name),
+        body = w.body
+    ))
+}
+
+#[derive(Default)]
+struct Writer {
+    body: String,
+    next_id: usize,
+    variables: Vec<(String, &'static str)>,
+}
+
+/// A connection source: an element's id and, for blocks, its output pin.
+type Source = (usize, Option<&'static str>);
+
+impl Writer {
+    fn id(&mut self) -> usize {
+        self.next_id += 1;
+        self.next_id
+    }
+
+    fn variable(&mut self, name: &str, ty: &'static str) {
+        if !self.variables.iter().any(|(v, _)| v == name) {
+            self.variables.push((name.to_string(), ty));
+        }
+    }
+
+    fn connections(sources: &[Source]) -> String {
+        let mut s = String::new();
+        for (id, pin) in sources {
+            match pin {
+                Some(p) => {
+                    let _ = write!(
+                        s,
+                        "<connection refLocalId=\"{id}\" formalParameter=\"{p}\"/>"
+                    );
+                }
+                None => {
+                    let _ = write!(s, "<connection refLocalId=\"{id}\"/>");
+                }
+            }
+        }
+        s
+    }
+
+    fn rung(&mut self, l: &RungLogic, y0: usize) -> Result<(), (Pos, String)> {
+        let at = |p: Pos| (40 + p.col * CELL_W, y0 + p.row * CELL_H);
+        if !l.comment.is_empty() {
+            let id = self.id();
+            let _ = writeln!(
+                self.body,
+                "            <comment localId=\"{id}\" height=\"30\" width=\"400\"><position x=\"40\" y=\"{}\"/><content><xhtml:p><![CDATA[{}]]></xhtml:p></content></comment>",
+                y0.saturating_sub(40),
+                l.comment.replace("]]>", "]] >")
+            );
+        }
+        let rail = self.id();
+        let _ = writeln!(
+            self.body,
+            "            <leftPowerRail localId=\"{rail}\" height=\"40\" width=\"10\"><position x=\"0\" y=\"{y0}\"/><connectionPointOut formalParameter=\"\"><relPosition x=\"10\" y=\"20\"/></connectionPointOut></leftPowerRail>"
+        );
+        let ends = self.net(&l.condition, &[(rail, None)], &at)?;
+        let mut outs = Vec::new();
+        let mut right_x = 0;
+        for (e, p) in &l.outputs {
+            let (x, y) = at(*p);
+            right_x = right_x.max(x + CELL_W);
+            outs.push(self.output(e, &ends, x, y).map_err(|m| (*p, m))?);
+        }
+        let id = self.id();
+        let _ = writeln!(
+            self.body,
+            "            <rightPowerRail localId=\"{id}\" height=\"40\" width=\"10\"><position x=\"{right_x}\" y=\"{y0}\"/><connectionPointIn><relPosition x=\"0\" y=\"20\"/>{}</connectionPointIn></rightPowerRail>",
+            Self::connections(&outs)
+        );
+        Ok(())
+    }
+
+    /// Writes a network fed from `from`; returns the points it ends on.
+    fn net(
+        &mut self,
+        net: &Net,
+        from: &[Source],
+        at: &dyn Fn(Pos) -> (usize, usize),
+    ) -> Result<Vec<Source>, (Pos, String)> {
+        Ok(match net {
+            Net::Series(v) => {
+                let mut cur = from.to_vec();
+                for n in v {
+                    cur = self.net(n, &cur, at)?;
+                }
+                cur
+            }
+            Net::Parallel(v) => {
+                let mut all = Vec::new();
+                for n in v {
+                    all.extend(self.net(n, from, at)?);
+                }
+                all
+            }
+            Net::Leaf(e, p) => {
+                let (x, y) = at(*p);
+                vec![self.leaf(e, from, x, y).map_err(|m| (*p, m))?]
+            }
+        })
+    }
+
+    fn leaf(&mut self, e: &Element, from: &[Source], x: usize, y: usize) -> Result<Source, String> {
+        let id = self.id();
+        let conns = Self::connections(from);
+        match e {
+            Element::Contact { kind, device } => {
+                self.variable(device, "<BOOL/>");
+                let (negated, edge) = match kind {
+                    ContactKind::No => ("false", ""),
+                    ContactKind::Nc => ("true", ""),
+                    ContactKind::Rising => ("false", " edge=\"rising\""),
+                    ContactKind::Falling => ("false", " edge=\"falling\""),
+                };
+                let _ = writeln!(
+                    self.body,
+                    "            <contact localId=\"{id}\" negated=\"{negated}\"{edge} height=\"20\" width=\"30\"><position x=\"{x}\" y=\"{y}\"/><connectionPointIn><relPosition x=\"0\" y=\"10\"/>{conns}</connectionPointIn><connectionPointOut><relPosition x=\"30\" y=\"10\"/></connectionPointOut><variable>{}</variable></contact>",
+                    escape(device.as_str())
+                );
+                Ok((id, None))
+            }
+            Element::Not => {
+                self.block(id, "NOT", None, "IN", &conns, None, "OUT", x, y);
+                Ok((id, Some("OUT")))
+            }
+            Element::Edge { falling } => {
+                let ty = if *falling { "F_TRIG" } else { "R_TRIG" };
+                let inst = format!("{ty}{id}");
+                self.variable(
+                    &inst,
+                    if *falling {
+                        "<derived name=\"F_TRIG\"/>"
+                    } else {
+                        "<derived name=\"R_TRIG\"/>"
+                    },
+                );
+                self.block(id, ty, Some(&inst), "CLK", &conns, None, "Q", x, y);
+                Ok((id, Some("Q")))
+            }
+            Element::Timer {
+                kind,
+                name,
+                preset_ms,
+            } => {
+                let ty = match kind {
+                    TimerKind::Ton => "TON",
+                    TimerKind::Tof => "TOF",
+                    TimerKind::Tp => "TP",
+                };
+                self.timer(id, ty, name, &conns, *preset_ms, x, y);
+                Ok((id, Some("Q")))
+            }
+            other => Err(format!("{other} cannot stand in a condition")),
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)] // one XML element's parts
+    fn block(
+        &mut self,
+        id: usize,
+        ty: &str,
+        instance: Option<&str>,
+        pin_in: &str,
+        conns: &str,
+        extra: Option<(&str, usize)>,
+        pin_out: &str,
+        x: usize,
+        y: usize,
+    ) {
+        let inst = instance
+            .map(|i| format!(" instanceName=\"{}\"", escape(i)))
+            .unwrap_or_default();
+        let extra = extra
+            .map(|(p, lit)| format!("<variable formalParameter=\"{p}\"><connectionPointIn><relPosition x=\"0\" y=\"40\"/><connection refLocalId=\"{lit}\"/></connectionPointIn></variable>"))
+            .unwrap_or_default();
+        let _ = writeln!(
+            self.body,
+            "            <block localId=\"{id}\" typeName=\"{ty}\"{inst} height=\"60\" width=\"60\"><position x=\"{x}\" y=\"{y}\"/><inputVariables><variable formalParameter=\"{pin_in}\"><connectionPointIn><relPosition x=\"0\" y=\"20\"/>{conns}</connectionPointIn></variable>{extra}</inputVariables><inOutVariables/><outputVariables><variable formalParameter=\"{pin_out}\"><connectionPointOut><relPosition x=\"60\" y=\"20\"/></connectionPointOut></variable></outputVariables></block>"
+        );
+    }
+
+    #[allow(clippy::too_many_arguments)] // one XML element's parts
+    fn timer(
+        &mut self,
+        id: usize,
+        ty: &'static str,
+        name: &str,
+        conns: &str,
+        ms: u32,
+        x: usize,
+        y: usize,
+    ) {
+        let lit = self.literal(&time_literal(ms), x, y);
+        self.variable(
+            name,
+            match ty {
+                "TON" => "<derived name=\"TON\"/>",
+                "TOF" => "<derived name=\"TOF\"/>",
+                _ => "<derived name=\"TP\"/>",
+            },
+        );
+        self.block(
+            id,
+            ty,
+            Some(name),
+            "IN",
+            conns,
+            Some(("PT", lit)),
+            "Q",
+            x,
+            y,
+        );
+    }
+
+    fn literal(&mut self, text: &str, x: usize, y: usize) -> usize {
+        let id = self.id();
+        let _ = writeln!(
+            self.body,
+            "            <inVariable localId=\"{id}\" height=\"20\" width=\"60\" negated=\"false\"><position x=\"{}\" y=\"{}\"/><connectionPointOut><relPosition x=\"60\" y=\"10\"/></connectionPointOut><expression>{}</expression></inVariable>",
+            x.saturating_sub(70),
+            y + 40,
+            escape(text)
+        );
+        id
+    }
+
+    fn output(
+        &mut self,
+        e: &Element,
+        from: &[Source],
+        x: usize,
+        y: usize,
+    ) -> Result<Source, String> {
+        let conns = Self::connections(from);
+        let coil = |w: &mut Writer, attrs: &str, device: &str| {
+            w.variable(device, "<BOOL/>");
+            let id = w.id();
+            let _ = writeln!(
+                w.body,
+                "            <coil localId=\"{id}\"{attrs} height=\"20\" width=\"30\"><position x=\"{x}\" y=\"{y}\"/><connectionPointIn><relPosition x=\"0\" y=\"10\"/>{conns}</connectionPointIn><connectionPointOut><relPosition x=\"30\" y=\"10\"/></connectionPointOut><variable>{}</variable></coil>",
+                escape(device)
+            );
+            (id, None)
+        };
+        Ok(match e {
+            Element::Coil { kind, device } => {
+                let attrs = match kind {
+                    CoilKind::Normal => " negated=\"false\"",
+                    CoilKind::Inverted => " negated=\"true\"",
+                    CoilKind::Set => " negated=\"false\" storage=\"set\"",
+                    CoilKind::Reset => " negated=\"false\" storage=\"reset\"",
+                };
+                coil(self, attrs, device)
+            }
+            Element::Pulse { falling, device } => {
+                let attrs = if *falling {
+                    " negated=\"false\" edge=\"falling\""
+                } else {
+                    " negated=\"false\" edge=\"rising\""
+                };
+                coil(self, attrs, device)
+            }
+            Element::TimerCoil { device, preset } => {
+                let base = match crate::io86a::isa::parse_bit(device) {
+                    Ok(crate::io86a::Bit::T(n)) if n >= 24 => 10,
+                    _ => 100,
+                };
+                let id = self.id();
+                self.timer(id, "TON", device, &conns, u32::from(*preset) * base, x, y);
+                (id, Some("Q"))
+            }
+            Element::CounterCoil { device, preset } => {
+                let id = self.id();
+                let lit = self.literal(&preset.to_string(), x, y);
+                self.variable(device, "<derived name=\"CTU\"/>");
+                self.block(
+                    id,
+                    "CTU",
+                    Some(device),
+                    "CU",
+                    &conns,
+                    Some(("PV", lit)),
+                    "Q",
+                    x,
+                    y,
+                );
+                (id, Some("Q"))
+            }
+            other => {
+                return Err(format!(
+                    "{other} has no PLCopen LD form here: keep it in a Hashigo project (.json)"
+                ))
+            }
+        })
+    }
+}
