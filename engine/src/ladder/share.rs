@@ -1,1 +1,381 @@
-//! TODO
+//! Share URLs: a project as compact binary, deflated, in base64url.
+//!
+//! The text starts with the format version (`1.`) so later versions can
+//! still read old links. Decoding never panics: every length is checked
+//! against what is left, inflation is capped, and the result is a
+//! [`Project`] or an error naming the byte where the data went wrong.
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use base64::Engine as _;
+use miniz_oxide::deflate::compress_to_vec;
+use miniz_oxide::inflate::decompress_to_vec_with_limit;
+
+use super::element::{CoilKind, ContactKind, Element, TimerKind};
+use super::grid::{Ladder, Link, Rung};
+use super::project::Project;
+use crate::MachineId;
+
+/// The prefix of version-1 share texts.
+pub const PREFIX: &str = "1.";
+/// The most bytes a share text may inflate to.
+const MAX_INFLATED: usize = 1 << 20;
+/// Grid limits a decoded rung must respect (the editor's own).
+const MAX_ROWS: usize = 64;
+const MAX_COLS: usize = 64;
+
+/// Why a share text could not be read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ShareError {
+    /// The text does not start with a version this build reads.
+    Version(String),
+    /// Not base64url.
+    Base64,
+    /// Not deflate data, or more than the cap when inflated.
+    Inflate,
+    /// The binary is cut short or holds a bad value at this byte.
+    Data {
+        /// The byte offset in the inflated data.
+        at: usize,
+        /// What was wrong there.
+        what: &'static str,
+    },
+}
+
+impl fmt::Display for ShareError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ShareError::Version(v) => write!(
+                f,
+                "this share link is format \"{v}\", which this Hashigo does not read (it reads {PREFIX}…)"
+            ),
+            ShareError::Base64 => f.write_str("this share link is damaged: it is not base64url text"),
+            ShareError::Inflate => f.write_str("this share link is damaged: its data does not unpack"),
+            ShareError::Data { at, what } => {
+                write!(f, "this share link is damaged at byte {at}: {what}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ShareError {}
+
+/// Encodes a project as share text (`1.` + base64url of deflated binary).
+pub fn encode(project: &Project) -> String {
+    let mut w = Vec::new();
+    w.push(machine_code(project.machine));
+    put_map(&mut w, &project.settings);
+    put_map(&mut w, &project.ladder.device_comments);
+    put_len(&mut w, project.ladder.rungs.len());
+    for rung in &project.ladder.rungs {
+        put_str(&mut w, &rung.comment);
+        put_len(&mut w, rung.cells.len());
+        for row in &rung.cells {
+            put_len(&mut w, row.len());
+            for cell in row {
+                put_cell(&mut w, cell.as_ref());
+            }
+        }
+        put_len(&mut w, rung.links.len());
+        for l in &rung.links {
+            put_len(&mut w, l.row);
+            put_len(&mut w, l.col);
+        }
+    }
+    format!(
+        "{PREFIX}{}",
+        URL_SAFE_NO_PAD.encode(compress_to_vec(&w, 10))
+    )
+}
+
+/// Decodes share text back into a project.
+pub fn decode(text: &str) -> Result<Project, ShareError> {
+    let text = text.trim();
+    let Some(body) = text.strip_prefix(PREFIX) else {
+        let version = text
+            .split('.')
+            .next()
+            .unwrap_or("")
+            .chars()
+            .take(8)
+            .collect();
+        return Err(ShareError::Version(version));
+    };
+    let packed = URL_SAFE_NO_PAD
+        .decode(body.trim_end_matches('='))
+        .map_err(|_| ShareError::Base64)?;
+    let data =
+        decompress_to_vec_with_limit(&packed, MAX_INFLATED).map_err(|_| ShareError::Inflate)?;
+    let mut r = Reader { data: &data, at: 0 };
+    let machine = match r.byte()? {
+        0 => MachineId::MinasecU,
+        1 => MachineId::Io86a,
+        2 => MachineId::AvrPlc,
+        3 => MachineId::ArduinoPlc,
+        _ => return Err(r.bad("unknown machine")),
+    };
+    let settings = r.map()?;
+    let device_comments = r.map()?;
+    let count = r.len(usize::MAX)?;
+    let mut rungs = Vec::new();
+    for _ in 0..count {
+        let comment = r.string()?;
+        let rows = r.len(MAX_ROWS)?;
+        let mut cells = Vec::with_capacity(rows);
+        for _ in 0..rows {
+            let width = r.len(MAX_COLS)?;
+            let mut row = Vec::with_capacity(width);
+            for _ in 0..width {
+                row.push(r.cell()?);
+            }
+            cells.push(row);
+        }
+        let links = r.len(usize::MAX)?;
+        let mut rung = Rung {
+            comment,
+            cells,
+            links: Vec::new(),
+        };
+        for _ in 0..links {
+            let (row, col) = (r.len(MAX_ROWS)?, r.len(MAX_COLS)?);
+            rung.links.push(Link { row, col });
+        }
+        rungs.push(rung);
+    }
+    if r.at != data.len() {
+        return Err(r.bad("data after the last rung"));
+    }
+    let mut project = Project::new(
+        machine,
+        Ladder {
+            rungs,
+            device_comments,
+        },
+    );
+    project.settings = settings;
+    Ok(project)
+}
+
+fn machine_code(m: MachineId) -> u8 {
+    match m {
+        MachineId::MinasecU => 0,
+        MachineId::Io86a => 1,
+        MachineId::AvrPlc => 2,
+        MachineId::ArduinoPlc => 3,
+    }
+}
+
+/// LEB128 unsigned.
+fn put_len(w: &mut Vec<u8>, mut n: usize) {
+    loop {
+        let b = (n & 0x7F) as u8;
+        n >>= 7;
+        if n == 0 {
+            w.push(b);
+            return;
+        }
+        w.push(b | 0x80);
+    }
+}
+
+fn put_str(w: &mut Vec<u8>, s: &str) {
+    put_len(w, s.len());
+    w.extend_from_slice(s.as_bytes());
+}
+
+fn put_map(w: &mut Vec<u8>, m: &BTreeMap<String, String>) {
+    put_len(w, m.len());
+    for (k, v) in m {
+        put_str(w, k);
+        put_str(w, v);
+    }
+}
+
+// Cell tags: 0 empty, 1 wire, 2-5 contacts, 6-9 coils, 10 NOT, 11-12
+// R_TRIG/F_TRIG, 13-15 TON/TOF/TP, 16-17 PLS/PLF, 18 timer coil,
+// 19 counter coil, 20 MOV, 21 CMP, 22 INC, 23 DEC.
+fn put_cell(w: &mut Vec<u8>, cell: Option<&Element>) {
+    let Some(e) = cell else {
+        w.push(0);
+        return;
+    };
+    match e {
+        Element::Wire => w.push(1),
+        Element::Contact { kind, device } => {
+            w.push(2 + *kind as u8);
+            put_str(w, device);
+        }
+        Element::Coil { kind, device } => {
+            w.push(6 + *kind as u8);
+            put_str(w, device);
+        }
+        Element::Not => w.push(10),
+        Element::Edge { falling } => w.push(11 + u8::from(*falling)),
+        Element::Timer {
+            kind,
+            name,
+            preset_ms,
+        } => {
+            w.push(13 + *kind as u8);
+            put_str(w, name);
+            put_len(w, *preset_ms as usize);
+        }
+        Element::Pulse { falling, device } => {
+            w.push(16 + u8::from(*falling));
+            put_str(w, device);
+        }
+        Element::TimerCoil { device, preset } | Element::CounterCoil { device, preset } => {
+            w.push(if matches!(e, Element::TimerCoil { .. }) {
+                18
+            } else {
+                19
+            });
+            put_str(w, device);
+            put_len(w, usize::from(*preset));
+        }
+        Element::Mov { src: a, dst: b } | Element::Cmp { a, b } => {
+            w.push(if matches!(e, Element::Mov { .. }) {
+                20
+            } else {
+                21
+            });
+            put_str(w, a);
+            put_str(w, b);
+        }
+        Element::Inc { dst } | Element::Dec { dst } => {
+            w.push(if matches!(e, Element::Inc { .. }) {
+                22
+            } else {
+                23
+            });
+            put_str(w, dst);
+        }
+    }
+}
+
+struct Reader<'a> {
+    data: &'a [u8],
+    at: usize,
+}
+
+impl Reader<'_> {
+    fn bad(&self, what: &'static str) -> ShareError {
+        ShareError::Data { at: self.at, what }
+    }
+
+    fn byte(&mut self) -> Result<u8, ShareError> {
+        let b = *self.data.get(self.at).ok_or(self.bad("cut short"))?;
+        self.at += 1;
+        Ok(b)
+    }
+
+    /// A length or number up to `max`.
+    fn len(&mut self, max: usize) -> Result<usize, ShareError> {
+        let mut n: u64 = 0;
+        for shift in (0..64).step_by(7) {
+            let b = self.byte()?;
+            n |= u64::from(b & 0x7F) << shift;
+            if b & 0x80 == 0 {
+                // Counts cannot exceed the bytes left (each item takes one).
+                let left = (self.data.len() - self.at) as u64;
+                return usize::try_from(n)
+                    .ok()
+                    .filter(|&v| v <= max && (max != usize::MAX || n <= left))
+                    .ok_or(self.bad("a number out of range"));
+            }
+        }
+        Err(self.bad("a number too long"))
+    }
+
+    fn string(&mut self) -> Result<String, ShareError> {
+        let n = self.len(self.data.len() - self.at.min(self.data.len()))?;
+        let bytes = self
+            .data
+            .get(self.at..self.at + n)
+            .ok_or(self.bad("cut short"))?;
+        let s = std::str::from_utf8(bytes).map_err(|_| self.bad("text that is not UTF-8"))?;
+        self.at += n;
+        Ok(s.to_string())
+    }
+
+    fn map(&mut self) -> Result<BTreeMap<String, String>, ShareError> {
+        let n = self.len(usize::MAX)?;
+        let mut m = BTreeMap::new();
+        for _ in 0..n {
+            let k = self.string()?;
+            let v = self.string()?;
+            m.insert(k, v);
+        }
+        Ok(m)
+    }
+
+    fn number<T: TryFrom<usize>>(&mut self) -> Result<T, ShareError> {
+        let n = self.len(u32::MAX as usize)?;
+        T::try_from(n).map_err(|_| self.bad("a number out of range"))
+    }
+
+    fn cell(&mut self) -> Result<Option<Element>, ShareError> {
+        const CONTACTS: [ContactKind; 4] = [
+            ContactKind::No,
+            ContactKind::Nc,
+            ContactKind::Rising,
+            ContactKind::Falling,
+        ];
+        const COILS: [CoilKind; 4] = [
+            CoilKind::Normal,
+            CoilKind::Inverted,
+            CoilKind::Set,
+            CoilKind::Reset,
+        ];
+        const TIMERS: [TimerKind; 3] = [TimerKind::Ton, TimerKind::Tof, TimerKind::Tp];
+        let tag = self.byte()?;
+        Ok(Some(match tag {
+            0 => return Ok(None),
+            1 => Element::Wire,
+            2..=5 => Element::Contact {
+                kind: CONTACTS[usize::from(tag - 2)],
+                device: self.string()?,
+            },
+            6..=9 => Element::Coil {
+                kind: COILS[usize::from(tag - 6)],
+                device: self.string()?,
+            },
+            10 => Element::Not,
+            11 | 12 => Element::Edge { falling: tag == 12 },
+            13..=15 => Element::Timer {
+                kind: TIMERS[usize::from(tag - 13)],
+                name: self.string()?,
+                preset_ms: self.number()?,
+            },
+            16 | 17 => Element::Pulse {
+                falling: tag == 17,
+                device: self.string()?,
+            },
+            18 => Element::TimerCoil {
+                device: self.string()?,
+                preset: self.number()?,
+            },
+            19 => Element::CounterCoil {
+                device: self.string()?,
+                preset: self.number()?,
+            },
+            20 => Element::Mov {
+                src: self.string()?,
+                dst: self.string()?,
+            },
+            21 => Element::Cmp {
+                a: self.string()?,
+                b: self.string()?,
+            },
+            22 => Element::Inc {
+                dst: self.string()?,
+            },
+            23 => Element::Dec {
+                dst: self.string()?,
+            },
+            _ => return Err(self.bad("an unknown element")),
+        }))
+    }
+}

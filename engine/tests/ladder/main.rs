@@ -7,4 +7,5 @@ mod differential;
 mod model;
 mod plcopen;
 mod seed;
+mod share;
 mod strategies;

@@ -1,0 +1,163 @@
+//! Share URLs: round trips, size goals, and never a panic on any input.
+
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use base64::Engine as _;
+use engine::ladder::share::{decode, encode, ShareError};
+use engine::ladder::{CoilKind, Element, Ladder, Pos, Project, Rung, TimerKind};
+use engine::MachineId;
+use proptest::prelude::*;
+
+use crate::strategies::{pool, rung};
+
+const SEED_JSON: &str = include_str!("../../programs/minasec-u/seed-test.json");
+
+fn every_element() -> Rung {
+    let mut r = Rung::default();
+    let all = [
+        Element::Wire,
+        Element::no("X00"),
+        Element::nc("X01"),
+        Element::Not,
+        Element::Edge { falling: true },
+        Element::Timer {
+            kind: TimerKind::Tp,
+            name: "ちょっと".into(),
+            preset_ms: 123_456,
+        },
+        Element::Coil {
+            kind: CoilKind::Reset,
+            device: "Y00".into(),
+        },
+        Element::Pulse {
+            falling: true,
+            device: "M1".into(),
+        },
+        Element::TimerCoil {
+            device: "T00".into(),
+            preset: 19,
+        },
+        Element::CounterCoil {
+            device: "C07".into(),
+            preset: 32767,
+        },
+        Element::Mov {
+            src: "K10".into(),
+            dst: "D00".into(),
+        },
+        Element::Cmp {
+            a: "D00".into(),
+            b: "K5".into(),
+        },
+        Element::Inc { dst: "D01".into() },
+        Element::Dec { dst: "D02".into() },
+    ];
+    for (i, e) in all.into_iter().enumerate() {
+        r.set(Pos::new(i % 3, i), Some(e));
+    }
+    r.links = vec![(0, 1).into(), (1, 5).into()];
+    r.comment = "every element".into();
+    r
+}
+
+#[test]
+fn every_element_and_the_seed_round_trip() {
+    let mut p = Project::from_json(SEED_JSON).expect("seed");
+    assert_eq!(decode(&encode(&p)), Ok(p.clone()));
+    p.ladder.rungs.push(every_element());
+    p.machine = MachineId::Io86a;
+    assert_eq!(decode(&encode(&p)), Ok(p));
+}
+
+#[test]
+fn size_goals() {
+    // The seed's test program: the five rungs as drawn, without the
+    // comments (those are the user's text, stored as written).
+    let mut seed = Project::from_json(SEED_JSON).expect("seed");
+    seed.ladder.device_comments.clear();
+    for r in &mut seed.ladder.rungs {
+        r.comment.clear();
+    }
+    let text = encode(&seed);
+    assert!(text.len() <= 200, "seed: {} characters: {text}", text.len());
+    let with_comments = encode(&Project::from_json(SEED_JSON).expect("seed"));
+    assert!(
+        with_comments.len() <= 400,
+        "seed with comments: {}",
+        with_comments.len()
+    );
+
+    // A 100-rung program of varied rungs: self-holds, interlocks, timers.
+    let mut ladder = Ladder::default();
+    for i in 0..100 {
+        let x = |n: usize| format!("X{:02}", n % 8);
+        let m = |n: usize| format!("M{:02}", n % 64);
+        let mut r = Rung::default();
+        r.set(Pos::new(0, 0), Some(Element::no(&x(i))));
+        r.set(Pos::new(1, 0), Some(Element::no(&m(i))));
+        r.set(Pos::new(0, 1), Some(Element::nc(&x(i + 3))));
+        r.set(Pos::new(0, 2), Some(Element::no(&m(i + 7))));
+        r.set(Pos::new(0, 3), Some(Element::coil(&m(i))));
+        if i % 4 == 0 {
+            r.set(
+                Pos::new(1, 3),
+                Some(Element::TimerCoil {
+                    device: format!("T{:02}", i % 32),
+                    preset: (i * 7 % 100) as u16,
+                }),
+            );
+            r.links.push((0, 3).into());
+        }
+        r.links.push((0, 1).into());
+        ladder.rungs.push(r);
+    }
+    let p = Project::new(MachineId::Io86a, ladder);
+    p.ladder.logic(MachineId::Io86a).expect("a valid program");
+    let text = encode(&p);
+    assert!(text.len() <= 2000, "100 rungs: {} characters", text.len());
+    assert_eq!(decode(&text), Ok(p));
+}
+
+#[test]
+fn damaged_links_say_what_is_wrong() {
+    let good = encode(&Project::from_json(SEED_JSON).expect("seed"));
+    assert!(matches!(decode("2.abc"), Err(ShareError::Version(v)) if v == "2"));
+    assert_eq!(decode("1.***"), Err(ShareError::Base64));
+    assert_eq!(decode("1.AAAA"), Err(ShareError::Inflate));
+    // Cut short: the data ends inside a rung.
+    let packed = URL_SAFE_NO_PAD.decode(&good[2..]).expect("b64");
+    let raw = miniz_oxide::inflate::decompress_to_vec(&packed).expect("inflate");
+    let cut = format!(
+        "1.{}",
+        URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(
+            &raw[..raw.len() - 3],
+            6
+        ))
+    );
+    let e = decode(&cut).expect_err("cut");
+    assert!(e.to_string().contains("damaged at byte"), "{e}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_ladders_round_trip(rungs in prop::collection::vec(rung(Box::leak(Box::new(pool(MachineId::AvrPlc)))), 0..6)) {
+        let mut p = Project::new(MachineId::AvrPlc, Ladder::from_logic(&rungs));
+        p.settings.insert("scan".into(), "10ms".into());
+        prop_assert_eq!(decode(&encode(&p)), Ok(p));
+    }
+
+    #[test]
+    fn arbitrary_text_never_panics(s in ".{0,200}") {
+        let _ = decode(&s);
+        let _ = decode(&format!("1.{s}"));
+    }
+
+    #[test]
+    fn arbitrary_packed_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..400)) {
+        let _ = decode(&format!("1.{}", URL_SAFE_NO_PAD.encode(&bytes)));
+        // Past base64 and inflate, straight into the binary reader.
+        let packed = miniz_oxide::deflate::compress_to_vec(&bytes, 6);
+        let _ = decode(&format!("1.{}", URL_SAFE_NO_PAD.encode(packed)));
+    }
+}
