@@ -129,7 +129,7 @@ pub(crate) fn used_devices(rungs: &[RungLogic]) -> BTreeSet<String> {
 }
 
 /// The logical negation of a network of NO / NC contacts (De Morgan).
-pub(crate) fn negate(net: &Net) -> Net {
+pub fn negate(net: &Net) -> Net {
     match net {
         Net::Leaf(Element::Contact { kind, device }, p) => {
             let kind = match kind {
