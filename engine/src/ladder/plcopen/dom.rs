@@ -77,6 +77,30 @@ fn line_at(text: &str, offset: u64) -> usize {
         + 1
 }
 
+/// Line numbers for offsets that only grow, counted incrementally (a
+/// count from the start each time would make parsing quadratic).
+struct Lines<'a> {
+    text: &'a [u8],
+    offset: usize,
+    line: usize,
+}
+
+impl Lines<'_> {
+    fn at(&mut self, offset: usize) -> usize {
+        let offset = offset.min(self.text.len());
+        if offset < self.offset {
+            let before = &self.text[..offset];
+            return before.iter().filter(|&&b| b == b'\n').count() + 1;
+        }
+        self.line += self.text[self.offset..offset]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
+        self.offset = offset;
+        self.line
+    }
+}
+
 fn start(e: &BytesStart, line: usize) -> Result<Node, String> {
     let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
     let mut attrs = Vec::new();
@@ -109,13 +133,18 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
     reader.config_mut().trim_text(true);
     let mut stack: Vec<Node> = Vec::new();
     let mut root: Option<Node> = None;
+    let mut lines = Lines {
+        text: text.as_bytes(),
+        offset: 0,
+        line: 1,
+    };
     loop {
         // The event starts at the first non-blank byte after the last one.
         let at = usize::try_from(reader.buffer_position()).unwrap_or(usize::MAX);
         let skip = text
             .get(at..)
             .map_or(0, |rest| rest.len() - rest.trim_start().len());
-        let line = line_at(text, (at + skip) as u64);
+        let line = lines.at(at.saturating_add(skip));
         let event = reader.read_event().map_err(|e| {
             Located::new(
                 line_at(text, reader.error_position()),
