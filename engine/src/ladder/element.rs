@@ -209,7 +209,14 @@ impl fmt::Display for Element {
             Element::Not => f.write_str("NOT"),
             Element::Edge { falling: false } => f.write_str("R_TRIG"),
             Element::Edge { falling: true } => f.write_str("F_TRIG"),
-            Element::Timer { kind, name, .. } => write!(f, "{kind:?} {name}"),
+            Element::Timer { kind, name, .. } => {
+                let k = match kind {
+                    TimerKind::Ton => "TON",
+                    TimerKind::Tof => "TOF",
+                    TimerKind::Tp => "TP",
+                };
+                write!(f, "{k} {name}")
+            }
             Element::Coil { kind, device } => {
                 let k = match kind {
                     CoilKind::Normal => "coil",
