@@ -168,7 +168,7 @@ fn minasec_runs_out_of_steps_and_temporaries_with_a_clear_error() {
     );
     // The ladder itself uses every M relay but M10: one temporary only.
     let mut l = Ladder {
-        rungs: vec![Rung::default(); 0],
+        rungs: Vec::new(),
         ..Ladder::default()
     };
     let relays = [
