@@ -125,10 +125,16 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, S
             }
             element.clone()
         }
-        Element::Coil { kind, device } => Element::Coil {
-            kind: *kind,
-            device: dev(device, Role::Write)?,
-        },
+        Element::Coil { kind, device } => {
+            let device = dev(device, Role::Write)?;
+            if machine == MachineId::MinasecU {
+                minasec_coil(*kind, &device)?;
+            }
+            Element::Coil {
+                kind: *kind,
+                device,
+            }
+        }
         Element::Pulse { falling, device } => {
             if !caps.pulse_outputs {
                 return Err(format!("{name} has no PLS/PLF output"));
@@ -257,5 +263,18 @@ fn io86a_canonical(device: &str, role: Role) -> Result<String, String> {
             }
             Ok(b.to_string())
         }
+    }
+}
+
+/// MINASEC-U's T0 / T1 / C0 / C0R are wired, not latched: a set or reset
+/// coil on them has no meaning, except reset on C0, which is `ST C0R`.
+fn minasec_coil(kind: CoilKind, device: &str) -> Result<(), String> {
+    let special = matches!(device, "T0" | "T1" | "C0" | "C0R");
+    match kind {
+        CoilKind::Set | CoilKind::Reset if special && !(kind == CoilKind::Reset && device == "C0") => Err(format!(
+            "a {} coil on {device} has no meaning on MINASEC-U: drive it with a normal coil (a reset coil on C0 clears the count)",
+            if kind == CoilKind::Set { "set" } else { "reset" }
+        )),
+        _ => Ok(()),
     }
 }

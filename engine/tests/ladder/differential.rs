@@ -346,3 +346,108 @@ fn decompiled_programs_behave_like_the_originals() {
         property(m, 300, check_decompile);
     }
 }
+
+// ----- Shrunk failures found while building the compilers, kept fixed. -----
+
+fn leaf(kind: engine::ladder::ContactKind, d: &str) -> engine::ladder::Net {
+    engine::ladder::Net::Leaf(
+        engine::ladder::Element::Contact {
+            kind,
+            device: d.into(),
+        },
+        engine::ladder::Pos::new(0, 0),
+    )
+}
+
+fn coil(kind: engine::ladder::CoilKind, d: &str) -> (engine::ladder::Element, engine::ladder::Pos) {
+    (
+        engine::ladder::Element::Coil {
+            kind,
+            device: d.into(),
+        },
+        engine::ladder::Pos::new(0, 0),
+    )
+}
+
+fn logic(
+    condition: engine::ladder::Net,
+    outputs: Vec<(engine::ladder::Element, engine::ladder::Pos)>,
+) -> RungLogic {
+    RungLogic {
+        condition,
+        outputs,
+        comment: String::new(),
+    }
+}
+
+#[test]
+fn regression_io86a_outputs_keep_their_order_around_an_inverted_coil() {
+    use engine::ladder::{CoilKind as K, ContactKind as C};
+    // (!M01) then (M01): the last write wins, as drawn.
+    let rungs = [logic(
+        leaf(C::No, "X00"),
+        vec![coil(K::Inverted, "M01"), coil(K::Normal, "M01")],
+    )];
+    assert_eq!(
+        check(
+            MachineId::Io86a,
+            &rungs,
+            &[vec![false; 4], vec![true, false, false, false]]
+        ),
+        Ok(true)
+    );
+}
+
+#[test]
+fn regression_avr_edge_memory_is_never_another_rungs_temporary() {
+    use engine::ladder::{CoilKind as K, ContactKind as C, Net};
+    let rising = || leaf(C::Rising, "R0.0");
+    let rungs = [
+        logic(
+            Net::Series(vec![rising(), leaf(C::No, "R0.0")]),
+            vec![coil(K::Normal, "R1.0")],
+        ),
+        logic(
+            Net::Series(vec![rising(), leaf(C::No, "R0.2")]),
+            vec![coil(K::Normal, "R1.0")],
+        ),
+    ];
+    assert_eq!(
+        check(MachineId::AvrPlc, &rungs, &[vec![true, false, true, false]]),
+        Ok(true)
+    );
+}
+
+#[test]
+fn regression_parallel_branches_keep_their_order_through_the_grid() {
+    use engine::ladder::{CoilKind as K, ContactKind as C, Net};
+    let x = || leaf(C::No, "X00");
+    let rungs = [logic(
+        Net::Parallel(vec![
+            x(),
+            Net::Series(vec![x(), leaf(C::Nc, "X01")]),
+            leaf(C::No, "X02"),
+        ]),
+        vec![coil(K::Normal, "Y00")],
+    )];
+    assert_eq!(
+        check(
+            MachineId::MinasecU,
+            &rungs,
+            &[vec![true, false, false, false]]
+        ),
+        Ok(true)
+    );
+}
+
+#[test]
+fn regression_arduino_refuses_a_result_it_cannot_keep() {
+    use engine::ladder::{CoilKind as K, ContactKind as C};
+    // Set Y002 changes what the rung reads before Set Y000 needs it.
+    let rungs = [logic(
+        leaf(C::No, "Y002"),
+        vec![coil(K::Set, "Y002"), coil(K::Set, "Y000")],
+    )];
+    let e = compile_logic(&rungs, MachineId::ArduinoPlc, Options::default()).expect_err("no relay");
+    assert!(e[0].message.contains("split the rung"), "{e:?}");
+}

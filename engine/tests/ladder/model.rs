@@ -245,3 +245,38 @@ fn projects_round_trip_through_json() {
     p.settings.insert("T0".into(), "0.5s".into());
     assert_eq!(Project::from_json(&p.to_json()), Ok(p));
 }
+
+#[test]
+fn minasec_counter_reset_coil_is_st_c0r() {
+    let mut r = rung(&["X02 (C0)"], &[]);
+    r.set(
+        Pos::new(0, 1),
+        Some(Element::Coil {
+            kind: CoilKind::Reset,
+            device: "C0".into(),
+        }),
+    );
+    let l = Ladder {
+        rungs: vec![r],
+        ..Ladder::default()
+    };
+    let text = compile(&l, MachineId::MinasecU, Options::default()).expect("compiles");
+    assert!(text.contains("000 LD   X02\n001 ST   C0R\n"), "{text}");
+    let mut r = rung(&["X02 (T0)"], &[]);
+    r.set(
+        Pos::new(0, 1),
+        Some(Element::Coil {
+            kind: CoilKind::Set,
+            device: "T0".into(),
+        }),
+    );
+    let l = Ladder {
+        rungs: vec![r],
+        ..Ladder::default()
+    };
+    let e = l.logic(MachineId::MinasecU).expect_err("set on a timer");
+    assert!(
+        e[0].message.starts_with("a set coil on T0 has no meaning"),
+        "{e:?}"
+    );
+}

@@ -313,8 +313,8 @@ impl Compiler {
                     e,
                     Element::Coil {
                         kind: CoilKind::Set | CoilKind::Reset,
-                        ..
-                    }
+                        device,
+                    } if device != "C0"
                 )
         };
         let mut saved: Option<String> = None;
@@ -330,6 +330,8 @@ impl Compiler {
             };
             let d = device.clone();
             match (kind, minasec) {
+                // The counter's clear latch follows the power (FX `RST C`).
+                (CoilKind::Reset, true) if d == "C0" => self.ops.push(Op::St("C0R".into(), false)),
                 (CoilKind::Normal, _) => self.ops.push(Op::St(d, false)),
                 (CoilKind::Inverted, _) => self.ops.push(Op::St(d, true)),
                 (CoilKind::Set, false) => self.ops.push(Op::Set(d)),
