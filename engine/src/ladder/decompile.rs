@@ -91,6 +91,21 @@ fn parallel(a: Net, b: Net) -> Net {
     Net::Parallel(vec![a, b]).normalised()
 }
 
+/// Ends a rung: its condition drives the outputs collected (a condition
+/// with no output drives nothing and is dropped, as the machine ignores it).
+fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Net>, outputs: &mut Vec<Element>) {
+    if let Some(condition) = condition {
+        if !outputs.is_empty() {
+            rungs.push(RungLogic {
+                condition,
+                outputs: outputs.drain(..).map(|e| (e, Pos::new(0, 0))).collect(),
+                comment: String::new(),
+            });
+        }
+    }
+    outputs.clear();
+}
+
 /// The accumulator walk shared by MINASEC-U and the AVR PLC.
 #[derive(Default)]
 struct Acc {
@@ -103,20 +118,7 @@ struct Acc {
 
 impl Acc {
     fn flush(&mut self) {
-        if let Some(condition) = self.a.take() {
-            if !self.outputs.is_empty() {
-                self.rungs.push(RungLogic {
-                    condition,
-                    outputs: self
-                        .outputs
-                        .drain(..)
-                        .map(|e| (e, Pos::new(0, 0)))
-                        .collect(),
-                    comment: String::new(),
-                });
-            }
-        }
-        self.outputs.clear();
+        close_rung(&mut self.rungs, self.a.take(), &mut self.outputs);
     }
 
     fn load(&mut self, n: Net) {
@@ -344,20 +346,7 @@ struct Stack {
 
 impl Stack {
     fn flush(&mut self) {
-        if let Some(condition) = self.cur.take() {
-            if !self.outputs.is_empty() {
-                self.rungs.push(RungLogic {
-                    condition,
-                    outputs: self
-                        .outputs
-                        .drain(..)
-                        .map(|e| (e, Pos::new(0, 0)))
-                        .collect(),
-                    comment: String::new(),
-                });
-            }
-        }
-        self.outputs.clear();
+        close_rung(&mut self.rungs, self.cur.take(), &mut self.outputs);
         self.blocks.clear();
         self.anchor = None;
     }

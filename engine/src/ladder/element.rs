@@ -44,6 +44,17 @@ pub enum TimerKind {
     Tp,
 }
 
+impl TimerKind {
+    /// The IEC name: `TON`, `TOF`, `TP`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            TimerKind::Ton => "TON",
+            TimerKind::Tof => "TOF",
+            TimerKind::Tp => "TP",
+        }
+    }
+}
+
 /// One element of a ladder: what a non-empty cell holds.
 ///
 /// Contacts and the in-line boxes (`Not`, `Edge`, `Timer`) pass power from
@@ -209,14 +220,7 @@ impl fmt::Display for Element {
             Element::Not => f.write_str("NOT"),
             Element::Edge { falling: false } => f.write_str("R_TRIG"),
             Element::Edge { falling: true } => f.write_str("F_TRIG"),
-            Element::Timer { kind, name, .. } => {
-                let k = match kind {
-                    TimerKind::Ton => "TON",
-                    TimerKind::Tof => "TOF",
-                    TimerKind::Tp => "TP",
-                };
-                write!(f, "{k} {name}")
-            }
+            Element::Timer { kind, name, .. } => write!(f, "{} {name}", kind.name()),
             Element::Coil { kind, device } => {
                 let k = match kind {
                     CoilKind::Normal => "coil",

@@ -67,16 +67,7 @@ fn load(args: &Args) -> Result<Source, Problems> {
             (machine, None, Vec::new())
         }
         Format::Json | Format::Xml => {
-            let (ladder, machine, settings) = read_ladder(&source, format, flag)?;
-            let options = Options {
-                avr_scan_ms: avr_scan_ms(args, &settings) as u32,
-            };
-            let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
-                errors
-                    .iter()
-                    .map(|e| format!("{}: {e}", source.name))
-                    .collect::<Vec<_>>()
-            })?;
+            let (machine, text, settings) = compile_source(args, &source, format, flag)?;
             (machine, Some(text), settings)
         }
     };
@@ -109,6 +100,27 @@ fn load(args: &Args) -> Result<Source, Problems> {
         settings,
         name: source.name,
     })
+}
+
+/// A ladder file compiled for its machine: the machine, the program text
+/// and the project's settings. Errors name the file, rung and cell.
+fn compile_source(
+    args: &Args,
+    source: &SourceFile,
+    format: Format,
+    flag: Option<MachineId>,
+) -> Result<(MachineId, String, Settings), Problems> {
+    let (ladder, machine, settings) = read_ladder(source, format, flag)?;
+    let options = Options {
+        avr_scan_ms: avr_scan_ms(args, &settings) as u32,
+    };
+    let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
+        errors
+            .iter()
+            .map(|e| format!("{}: {e}", source.name))
+            .collect::<Vec<_>>()
+    })?;
+    Ok((machine, text, settings))
 }
 
 /// `--machine`, when given.
@@ -510,16 +522,7 @@ pub fn compile(rest: &[String]) -> Result<(), Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let (ladder, machine, settings) = read_ladder(&source, format, flag)?;
-    let options = Options {
-        avr_scan_ms: avr_scan_ms(&args, &settings) as u32,
-    };
-    let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
-        errors
-            .iter()
-            .map(|e| format!("{}: {e}", source.name))
-            .collect::<Vec<_>>()
-    })?;
+    let (_, text, _) = compile_source(&args, &source, format, flag)?;
     print!("{text}");
     Ok(())
 }

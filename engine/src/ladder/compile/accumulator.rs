@@ -421,11 +421,7 @@ impl Compiler {
                     )
                 }
                 Op::Timer(kind, index, ms) => {
-                    let k = match kind {
-                        TimerKind::Ton => "TON",
-                        TimerKind::Tof => "TOF",
-                        TimerKind::Tp => "TP",
-                    };
+                    let k = kind.name();
                     format!("{k},LOW(Timer{index}),LOW({ms}/Scan),HIGH({ms}/Scan)")
                 }
                 Op::Comment(c) => {

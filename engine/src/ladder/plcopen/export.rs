@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use quick_xml::escape::escape;
 
 use super::{time_literal, NS_V201};
-use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
+use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::{Ladder, LadderError, Pos};
 use crate::ladder::net::{analyse, Net, RungLogic};
 
@@ -225,11 +225,7 @@ impl Writer {
                 name,
                 preset_ms,
             } => {
-                let ty = match kind {
-                    TimerKind::Ton => "TON",
-                    TimerKind::Tof => "TOF",
-                    TimerKind::Tp => "TP",
-                };
+                let ty = kind.name();
                 self.timer(id, ty, name, &conns, *preset_ms, x, y);
                 Ok((id, Some("Q")))
             }
