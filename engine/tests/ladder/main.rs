@@ -7,6 +7,7 @@ mod decompile;
 mod differential;
 mod model;
 mod plcopen;
+mod robustness;
 mod seed;
 mod share;
 mod strategies;

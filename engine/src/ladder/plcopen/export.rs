@@ -184,6 +184,7 @@ impl Writer {
     }
 
     fn leaf(&mut self, e: &Element, from: &[Source], x: usize, y: usize) -> Result<Source, String> {
+        named(e)?;
         let id = self.id();
         let conns = Self::connections(from);
         match e {
@@ -321,6 +322,12 @@ impl Writer {
             );
             (id, None)
         };
+        named(e)?;
+        if let Element::TimerCoil { preset, .. } | Element::CounterCoil { preset, .. } = e {
+            if *preset > 32767 {
+                return Err(format!("{e}: set values go up to K32767"));
+            }
+        }
         Ok(match e {
             Element::Coil { kind, device } => {
                 let attrs = match kind {
@@ -340,9 +347,12 @@ impl Writer {
                 coil(self, attrs, device)
             }
             Element::TimerCoil { device, preset } => {
+                // Import reads a TON whose Q drives nothing back as this
+                // coil only when it is named like a timer.
                 let base = match crate::io86a::isa::parse_bit(device) {
                     Ok(crate::io86a::Bit::T(n)) if n >= 24 => 10,
-                    _ => 100,
+                    Ok(crate::io86a::Bit::T(_)) => 100,
+                    _ => return Err(format!("{e}: a timer coil must name a timer T00-T31")),
                 };
                 let id = self.id();
                 self.timer(id, "TON", device, &conns, u32::from(*preset) * base, x, y);
@@ -371,5 +381,15 @@ impl Writer {
                 ))
             }
         })
+    }
+}
+
+/// A device-bearing element must name its device: PLCopen has no empty
+/// variable.
+fn named(e: &Element) -> Result<(), String> {
+    let device = e.read_device().or(e.written_device());
+    match device {
+        Some(d) if d.trim().is_empty() => Err(format!("{e}names no device")),
+        _ => Ok(()),
     }
 }
