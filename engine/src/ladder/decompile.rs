@@ -106,6 +106,29 @@ fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Net>, outputs: &mut 
     outputs.clear();
 }
 
+/// Adds an output to the open rung; the first output that holds the
+/// rung's result becomes the anchor a continuation starts from.
+fn add_output<T>(
+    open: bool,
+    outputs: &mut Vec<Element>,
+    anchor: &mut Option<T>,
+    e: Element,
+    holds: Option<T>,
+    step: usize,
+) -> Result<(), StepError> {
+    if !open {
+        return Err(StepError {
+            step,
+            message: "an output with no LD before it".into(),
+        });
+    }
+    if anchor.is_none() {
+        *anchor = holds;
+    }
+    outputs.push(e);
+    Ok(())
+}
+
 /// The accumulator walk shared by MINASEC-U and the AVR PLC.
 #[derive(Default)]
 struct Acc {
@@ -163,17 +186,8 @@ impl Acc {
         holds: Option<(String, bool)>,
         step: usize,
     ) -> Result<(), StepError> {
-        if self.a.is_none() {
-            return Err(StepError {
-                step,
-                message: "an output with no LD before it".into(),
-            });
-        }
-        if self.anchor.is_none() {
-            self.anchor = holds;
-        }
-        self.outputs.push(e);
-        Ok(())
+        let open = self.a.is_some();
+        add_output(open, &mut self.outputs, &mut self.anchor, e, holds, step)
     }
 }
 
@@ -395,17 +409,8 @@ impl Stack {
     }
 
     fn output(&mut self, e: Element, holds: Option<String>, step: usize) -> Result<(), StepError> {
-        if self.cur.is_none() {
-            return Err(StepError {
-                step,
-                message: "an output with no LD before it".into(),
-            });
-        }
-        if self.anchor.is_none() {
-            self.anchor = holds;
-        }
-        self.outputs.push(e);
-        Ok(())
+        let open = self.cur.is_some();
+        add_output(open, &mut self.outputs, &mut self.anchor, e, holds, step)
     }
 }
 
