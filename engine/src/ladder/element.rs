@@ -197,11 +197,6 @@ impl Element {
             _ => None,
         }
     }
-
-    /// A short name for error messages ("contact X00", "set coil Y01").
-    pub fn describe(&self) -> String {
-        self.to_string()
-    }
 }
 
 impl fmt::Display for Element {

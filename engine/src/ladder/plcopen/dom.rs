@@ -66,15 +66,11 @@ impl Node {
     }
 }
 
-fn line_at(text: &str, offset: u64) -> usize {
+fn line_at(text: &[u8], offset: u64) -> usize {
     let end = usize::try_from(offset)
         .unwrap_or(usize::MAX)
         .min(text.len());
-    text.as_bytes()[..end]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
+    text[..end].iter().filter(|&&b| b == b'\n').count() + 1
 }
 
 /// Line numbers for offsets that only grow, counted incrementally (a
@@ -89,8 +85,7 @@ impl Lines<'_> {
     fn at(&mut self, offset: usize) -> usize {
         let offset = offset.min(self.text.len());
         if offset < self.offset {
-            let before = &self.text[..offset];
-            return before.iter().filter(|&&b| b == b'\n').count() + 1;
+            return line_at(self.text, offset as u64);
         }
         self.line += self.text[self.offset..offset]
             .iter()
@@ -147,7 +142,7 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
         let line = lines.at(at.saturating_add(skip));
         let event = reader.read_event().map_err(|e| {
             Located::new(
-                line_at(text, reader.error_position()),
+                line_at(text.as_bytes(), reader.error_position()),
                 format!("not well-formed XML: {e}"),
             )
         })?;
@@ -188,7 +183,7 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
     }
     if !stack.is_empty() {
         return Err(Located::new(
-            line_at(text, text.len() as u64),
+            line_at(text.as_bytes(), text.len() as u64),
             format!("<{}> is never closed", stack[stack.len() - 1].name),
         ));
     }

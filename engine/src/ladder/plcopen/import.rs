@@ -97,7 +97,7 @@ impl Body {
             parent: vec![RAIL],
             ..Body::default()
         };
-        for (i, n) in ld.children.iter().enumerate() {
+        for n in &ld.children {
             if n.name == "comment" {
                 let y = position(n).0;
                 b.comments.push((y, n.deep_text()));
@@ -120,7 +120,6 @@ impl Body {
                 }
                 _ => {}
             }
-            let _ = i;
         }
         for (seq, n) in ld.children.iter().enumerate() {
             if let Err(m) = b.element(n, seq) {
