@@ -11,7 +11,7 @@
 use super::asm::{Program, STEPS};
 use super::control::{ClockSpeed, Command, Mode, SettingError, TimerId};
 use super::counter::BcdCounter;
-use super::fast::{self, DecodedProgram, ScanDevices};
+use super::fast::{FastCode, ScanDevices};
 use super::isa::{logic_unit, Address, Device, Instruction};
 use super::timer::RcTimer;
 use crate::time::SimTime;
@@ -75,8 +75,9 @@ pub struct Machine {
     last_scan: Option<ScanSnapshot>,
     reset_at: SimTime,
     // The fast path's decoded memory, rebuilt after any write.
-    decoded: Option<DecodedProgram>,
+    decoded: Option<FastCode>,
     fast_path: bool,
+    gate_network: bool,
 }
 
 impl Default for Machine {
@@ -117,6 +118,7 @@ impl Machine {
             reset_at: SimTime::ZERO,
             decoded: None,
             fast_path: true,
+            gate_network: true,
         };
         m.clear_volatile();
         m
@@ -237,6 +239,13 @@ impl Machine {
     /// Results are the same either way; tests and benchmarks compare them.
     pub fn set_fast_path(&mut self, enabled: bool) {
         self.fast_path = enabled;
+    }
+
+    /// Lets the fast path try the compiled gate network before the step
+    /// kernel (the default), or keeps it to the step kernel. Results are the
+    /// same either way; tests and benchmarks compare them.
+    pub fn set_gate_network(&mut self, enabled: bool) {
+        self.gate_network = enabled;
     }
 
     /// Operates one control. A rejected command changes nothing.
@@ -500,7 +509,7 @@ impl Machine {
         let period = self.speed.period();
         let decoded = self
             .decoded
-            .get_or_insert_with(|| DecodedProgram::decode(&self.memory));
+            .get_or_insert_with(|| FastCode::decode(&self.memory));
         self.now = first_rise;
         let bus = u32::from(self.input_image)
             | (self.latches & LATCH_BITS)
@@ -513,7 +522,7 @@ impl Machine {
             first_rise,
             period,
         };
-        let (acc, bus) = fast::run_scan(decoded, bus, self.acc, &mut devices);
+        let (acc, bus) = decoded.run_scan(bus, self.acc, &mut devices, self.gate_network);
         self.acc = acc;
         self.latches = bus & LATCH_BITS;
         self.clocks += STEPS as u64;

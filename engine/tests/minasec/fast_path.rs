@@ -1,7 +1,7 @@
-//! The fast path (decoded, whole scans) must give exactly what the exact
-//! path (one clock edge at a time, straight from the seed's truth table)
-//! gives: compared at every scan boundary over random programs, inputs and
-//! panel settings.
+//! The fast path (whole scans, on the gate network or the step kernel) must
+//! give exactly what the exact path (one clock edge at a time, straight from
+//! the seed's truth table) gives: compared at every scan boundary over
+//! random programs, inputs and panel settings.
 
 use engine::minasec::{Command, Machine, Program, TimerId};
 use engine::SimTime;
@@ -28,14 +28,31 @@ fn timeline() -> impl Strategy<Value = Vec<(u64, u64, u8, bool)>> {
     prop::collection::vec((0u64..120, 0u64..256, 0u8..8, any::<bool>()), 0..30)
 }
 
+/// How a machine runs its scans.
+#[derive(Clone, Copy, Debug)]
+enum Path {
+    /// One clock edge at a time.
+    Exact,
+    /// Fast path, step kernel only.
+    Steps,
+    /// Fast path as shipped: the gate network, the step kernel when refused.
+    Network,
+}
+
+fn machine(path: Path) -> Machine {
+    let mut m = Machine::for_run();
+    m.set_fast_path(!matches!(path, Path::Exact));
+    m.set_gate_network(matches!(path, Path::Network));
+    m
+}
+
 fn run(
     program: &Program,
     events: &[(u64, u64, u8, bool)],
     presets: (u8, u8, u64),
-    fast: bool,
+    path: Path,
 ) -> Vec<String> {
-    let mut m = Machine::for_run();
-    m.set_fast_path(fast);
+    let mut m = machine(path);
     m.load(program);
     let (tens, ones, t0_ms) = presets;
     m.apply(Command::SetCounterPreset(tens, ones)).unwrap();
@@ -84,10 +101,12 @@ proptest! {
         let mut steps = [0u8; 256];
         steps[..bytes.len()].copy_from_slice(&bytes);
         let program = Program::from_bytes(steps);
-        let exact = run(&program, &events, (tens, ones, t0_ms), false);
-        let fast = run(&program, &events, (tens, ones, t0_ms), true);
-        for (e, f) in exact.iter().zip(&fast) {
-            prop_assert_eq!(e, f);
+        let exact = run(&program, &events, (tens, ones, t0_ms), Path::Exact);
+        for path in [Path::Steps, Path::Network] {
+            let fast = run(&program, &events, (tens, ones, t0_ms), path);
+            for (e, f) in exact.iter().zip(&fast) {
+                prop_assert_eq!(e, f, "{:?}", path);
+            }
         }
     }
 }
@@ -95,8 +114,7 @@ proptest! {
 #[test]
 fn the_seed_program_agrees_over_a_whole_count() {
     let program = super::harness::program(engine::minasec::SEED_TEST_PROGRAM);
-    let mut machines = [Machine::for_run(), Machine::for_run()];
-    machines[1].set_fast_path(false);
+    let mut machines = [Path::Network, Path::Steps, Path::Exact].map(machine);
     for m in &mut machines {
         m.load(&program);
         m.apply(Command::SetDelay(TimerId::T0, SimTime::from_millis(1100)))
@@ -109,11 +127,51 @@ fn the_seed_program_agrees_over_a_whole_count() {
         for m in &mut machines {
             m.run_until(end);
         }
-        assert_eq!(
-            machines[0].last_scan(),
-            machines[1].last_scan(),
-            "scan {scan}"
-        );
+        for fast in &machines[..2] {
+            assert_eq!(fast.last_scan(), machines[2].last_scan(), "scan {scan}");
+        }
     }
     assert_eq!(machines[0].counter().count(), 10);
+}
+
+/// A program whose counter latch toggles on every scan (so the network is
+/// refused every scan and backs off) and one whose timer coil follows an
+/// input: both agree with the exact path scan by scan.
+#[test]
+fn devices_acting_every_scan_or_now_and_then_agree() {
+    let programs = [
+        // C0's latch takes the opposite of what it holds: a count every
+        // other scan; X00 clears.
+        "LDI Y00\nST Y00\nST C0\nLD X00\nST C0R\nLD C0\nST Y01\n",
+        // T0 follows X00; its output drives Y00 and counts.
+        "LD X00\nST T0\nLD T0\nST Y00\nST C0\n",
+    ];
+    for text in programs {
+        let program = super::harness::program(text);
+        let mut machines = [Path::Network, Path::Exact].map(machine);
+        for m in &mut machines {
+            m.load(&program);
+            m.apply(Command::SetCounterPreset(2, 5)).unwrap();
+            m.apply(Command::SetDelay(TimerId::T0, SimTime::from_millis(200)))
+                .unwrap();
+        }
+        let mut counts = std::collections::BTreeSet::new();
+        for scan in 1..=600u64 {
+            let end = SimTime::from_nanos(scan * SCAN.as_nanos());
+            for m in &mut machines {
+                // X00 on for 40 scans (338 ms), off for 40.
+                let on = (scan / 40) % 2 == 1;
+                m.apply(Command::SetInput(0, on)).unwrap();
+                m.run_until(end);
+            }
+            assert_eq!(
+                machines[0].last_scan(),
+                machines[1].last_scan(),
+                "{text:?} scan {scan}"
+            );
+            counts.insert(machines[0].last_scan().count);
+        }
+        // The devices really acted: the counter went through many values.
+        assert!(counts.len() > 5, "{text:?}: counts {counts:?}");
+    }
 }

@@ -1,5 +1,5 @@
-//! The fast path: program memory decoded once into micro-steps, and a whole
-//! scan run over a 32-bit image of the read bus.
+//! The exact step kernel: program memory decoded once into micro-steps, and
+//! a whole scan run over a 32-bit image of the read bus.
 //!
 //! Bit `a` of the bus word is what reading address `a` gives. Inside one
 //! scan only stores change it, so loads are a shift and a mask. Stores to
@@ -8,10 +8,10 @@
 //! exact path uses. The machine only takes this path for a scan in which no
 //! timer output can change by itself (see `Machine::fast_scan_fits`).
 
-use super::asm::STEPS;
-use super::counter::BcdCounter;
-use super::isa::{Device, Instruction, Opcode};
-use super::timer::RcTimer;
+use crate::minasec::asm::STEPS;
+use crate::minasec::counter::BcdCounter;
+use crate::minasec::isa::{Device, Instruction, Opcode};
+use crate::minasec::timer::RcTimer;
 use crate::time::SimTime;
 
 /// The number of [`Kind`]s.
@@ -105,7 +105,7 @@ impl DecodedProgram {
 
 /// The out-of-line devices a fast scan can store to, and when each step's
 /// rising edge happens.
-pub(super) struct ScanDevices<'a> {
+pub(in crate::minasec) struct ScanDevices<'a> {
     pub timers: &'a mut [RcTimer; 2],
     pub counter: &'a mut BcdCounter,
     /// The rising edge of step 0.
