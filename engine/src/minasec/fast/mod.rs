@@ -104,3 +104,33 @@ impl Backoff {
         self.skip = self.penalty;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Backoff;
+
+    /// Which of the next `scans` scans try the network, with every try
+    /// refused.
+    fn tries_while_refused(backoff: &mut Backoff, scans: usize) -> Vec<usize> {
+        let mut tries = Vec::new();
+        for scan in 0..scans {
+            if backoff.try_network() {
+                tries.push(scan);
+                backoff.failed();
+            }
+        }
+        tries
+    }
+
+    #[test]
+    fn refusals_back_off_doubling_to_64_scans_and_a_success_resets() {
+        let mut backoff = Backoff::default();
+        // Skips of 1, 2, 4, 8, 16, 32, 64, 64 scans after each refusal.
+        let tries = tries_while_refused(&mut backoff, 300);
+        assert_eq!(tries, [0, 2, 5, 10, 19, 36, 69, 134, 199, 264]);
+        // A success after the skip: the next refusal skips one scan again.
+        while !backoff.try_network() {}
+        backoff.succeeded();
+        assert_eq!(tries_while_refused(&mut backoff, 6), [0, 2, 5]);
+    }
+}
