@@ -76,7 +76,7 @@ impl Specials {
 }
 
 /// A computed value: a slot, possibly read inverted.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Wire {
     slot: u8,
     inverted: bool,
