@@ -7,6 +7,19 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 
+/// The seed test program's machine and panel as `hashigo run` arguments:
+/// T0 at 1.1 s, T1 at 1 s, the counter set to 10 (the book's settings).
+pub const SEED_PANEL: [&str; 8] = [
+    "--machine",
+    "minasec-u",
+    "--set",
+    "T0=1.1s",
+    "--set",
+    "T1=1s",
+    "--set",
+    "C0=10",
+];
+
 /// Runs `hashigo` with `args`, `stdin` on its standard input.
 pub fn hashigo(args: &[&str], stdin: &str) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_hashigo"))

@@ -1,6 +1,6 @@
 //! `hashigo compile` and `hashigo run --program x.json|x.xml` (cli.md).
 
-use crate::common::{hashigo, text, Temp};
+use crate::common::{hashigo, text, Temp, SEED_PANEL};
 
 const SEED_JSON: &str = include_str!("../../programs/minasec-u/seed-test.json");
 const EVENTS: &str = concat!(
@@ -41,39 +41,9 @@ fn compile_prints_a_program_that_run_takes_back() {
     let compiled = tmp.file("compiled.il", &il);
     // The compiled text, the project itself and the seed's listing (with
     // the project's panel settings) all run the same.
-    let a = hashigo(
-        &run_args(
-            &compiled,
-            &[
-                "--machine",
-                "minasec-u",
-                "--set",
-                "T0=1.1s",
-                "--set",
-                "T1=1s",
-                "--set",
-                "C0=10",
-            ],
-        ),
-        "",
-    );
+    let a = hashigo(&run_args(&compiled, &SEED_PANEL), "");
     let b = hashigo(&run_args(&json, &[]), "");
-    let c = hashigo(
-        &run_args(
-            SEED_IL,
-            &[
-                "--machine",
-                "minasec-u",
-                "--set",
-                "T0=1.1s",
-                "--set",
-                "T1=1s",
-                "--set",
-                "C0=10",
-            ],
-        ),
-        "",
-    );
+    let c = hashigo(&run_args(SEED_IL, &SEED_PANEL), "");
     for o in [&a, &b, &c] {
         assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     }

@@ -1,6 +1,6 @@
 //! The `hashigo` command per ../shared/spec/cli.md, run as a process.
 
-use super::common::{hashigo, text, Temp};
+use super::common::{hashigo, text, Temp, SEED_PANEL};
 
 const SEED: &str = engine::minasec::SEED_TEST_PROGRAM;
 
@@ -14,26 +14,20 @@ fn run_reproduces_the_seed_test_program() {
     );
     let out = hashigo(
         &[
-            "run",
-            "--machine",
-            "minasec-u",
-            "--program",
-            &program,
-            "--set",
-            "T0=1.1s",
-            "--set",
-            "T1=1s",
-            "--set",
-            "C0=10",
-            "--input",
-            &events,
-            "--until",
-            "28s",
-            "--every",
-            "500ms",
-            "--watch",
-            "Y00,Y01,C0.v,C0",
-        ],
+            &["run", "--program", &program][..],
+            &SEED_PANEL,
+            &[
+                "--input",
+                &events,
+                "--until",
+                "28s",
+                "--every",
+                "500ms",
+                "--watch",
+                "Y00,Y01,C0.v,C0",
+            ],
+        ]
+        .concat(),
         "",
     );
     assert!(out.status.success(), "{}", text(&out.stderr));
@@ -316,26 +310,20 @@ fn the_readme_command_with_the_shipped_events_file() {
     );
     let out = hashigo(
         &[
-            "run",
-            "--machine",
-            "minasec-u",
-            "--program",
-            &program,
-            "--set",
-            "T0=1.1s",
-            "--set",
-            "T1=1s",
-            "--set",
-            "C0=10",
-            "--input",
-            &events,
-            "--until",
-            "30s",
-            "--every",
-            "3s",
-            "--watch",
-            "Y00,Y01,C0.v",
-        ],
+            &["run", "--program", &program][..],
+            &SEED_PANEL,
+            &[
+                "--input",
+                &events,
+                "--until",
+                "30s",
+                "--every",
+                "3s",
+                "--watch",
+                "Y00,Y01,C0.v",
+            ],
+        ]
+        .concat(),
         "",
     );
     assert!(out.status.success(), "{}", text(&out.stderr));
