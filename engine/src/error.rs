@@ -33,3 +33,37 @@ impl<E: fmt::Display> fmt::Display for Located<E> {
 }
 
 impl<E: fmt::Debug + fmt::Display> std::error::Error for Located<E> {}
+
+/// `text` as an error message repeats it: in quotes, control characters
+/// and quotes escaped, cut to [`crate::limits::MAX_ECHO_CHARS`] characters
+/// with `…` so that one problem stays one short line whatever the input.
+pub fn shown(text: &str) -> String {
+    let mut out = String::from("\"");
+    for (i, c) in text.chars().enumerate() {
+        if i == crate::limits::MAX_ECHO_CHARS {
+            out.push('…');
+            break;
+        }
+        if c.is_control() || c == '"' || c == '\\' {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out.push('"');
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::shown;
+
+    #[test]
+    fn shown_quotes_escapes_and_shortens() {
+        assert_eq!(shown("X00"), "\"X00\"");
+        assert_eq!(shown("a\u{0}b\u{1b}\n"), "\"a\\u{0}b\\u{1b}\\n\"");
+        let long = "x".repeat(50_000_000 / 1000);
+        let s = shown(&long);
+        assert!(s.chars().count() < 50 && s.ends_with("…\""), "{s}");
+    }
+}

@@ -1,10 +1,11 @@
 //! Headless runs: a machine, an input timeline and watched devices in; the
 //! CSV of `hashigo run` out (../shared/spec/cli.md).
 
-use std::fmt::Write as _;
+use std::io::Write;
 
 use crate::error::Located;
 use crate::events::{InputEvent, InputValue};
+use crate::limits::MAX_CSV_VALUES;
 use crate::time::SimTime;
 
 /// What the headless runner needs from a machine.
@@ -46,23 +47,37 @@ pub enum RunError {
     Event(Located<String>),
     /// `--every` is zero while `--until` is not.
     ZeroInterval,
-    /// `--every` so small that the run would print more than this many rows.
-    TooManyRows(u64),
+    /// `--every` so small that the run would print more than this many
+    /// values (rows × watched devices).
+    TooManyValues(u64),
+    /// The output could not be written (the message of the I/O error).
+    Output(String),
 }
 
-/// The largest number of rows one run prints; past it `--every` is
-/// certainly a mistake (and the output would not fit in memory).
-const MAX_ROWS: u64 = 10_000_000;
-
-/// Simulates from the machine's current (power-on) state to `schedule.until`
-/// and returns the CSV. Every watch name and every event is checked before
-/// anything runs, so a bad input yields errors and no partial output.
-pub fn run<S: Simulation>(
+/// [`run`] into a string.
+pub fn run_csv<S: Simulation>(
     sim: &mut S,
     events: &[InputEvent],
     schedule: Schedule,
     watch: &[String],
 ) -> Result<String, Vec<RunError>> {
+    let mut out = Vec::new();
+    run(sim, events, schedule, watch, &mut out)?;
+    String::from_utf8(out).map_err(|e| vec![RunError::Output(e.to_string())])
+}
+
+/// Simulates from the machine's current (power-on) state to `schedule.until`
+/// and writes the CSV to `out` row by row (nothing is buffered, so the
+/// output's size is bounded only by [`MAX_CSV_VALUES`]). Every watch name
+/// and every event is checked before anything runs, so a bad input yields
+/// errors and no output at all.
+pub fn run<S: Simulation, W: Write>(
+    sim: &mut S,
+    events: &[InputEvent],
+    schedule: Schedule,
+    watch: &[String],
+    out: &mut W,
+) -> Result<(), Vec<RunError>> {
     let mut errors = Vec::new();
     let mut watches = Vec::new();
     for name in watch {
@@ -78,21 +93,24 @@ pub fn run<S: Simulation>(
     }
     if schedule.every == SimTime::ZERO && schedule.until > SimTime::ZERO {
         errors.push(RunError::ZeroInterval);
-    } else if schedule.every > SimTime::ZERO
-        && schedule.until.as_nanos() / schedule.every.as_nanos() > MAX_ROWS
-    {
-        errors.push(RunError::TooManyRows(MAX_ROWS));
+    } else if schedule.every > SimTime::ZERO {
+        let rows = schedule.until.as_nanos() / schedule.every.as_nanos() + 2;
+        let values = rows.saturating_mul(watch.len().max(1) as u64);
+        if values > MAX_CSV_VALUES {
+            errors.push(RunError::TooManyValues(MAX_CSV_VALUES));
+        }
     }
     if !errors.is_empty() {
         return Err(errors);
     }
+    let failed = |e: std::io::Error| vec![RunError::Output(e.to_string())];
 
-    let mut out = String::from("time_ms");
+    let mut header = String::from("time_ms");
     for name in watch {
-        out.push(',');
-        out.push_str(name);
+        header.push(',');
+        header.push_str(name);
     }
-    out.push('\n');
+    writeln!(out, "{header}").map_err(failed)?;
 
     let mut pending = events.iter().peekable();
     let mut row_time = SimTime::ZERO;
@@ -104,15 +122,15 @@ pub fn run<S: Simulation>(
             sim.apply_input(&event.device, event.value);
         }
         sim.run_until(row_time);
-        let _ = write!(out, "{row_time}");
+        write!(out, "{row_time}").map_err(failed)?;
         for &w in &watches {
-            let _ = write!(out, ",{}", sim.value(w));
+            write!(out, ",{}", sim.value(w)).map_err(failed)?;
         }
-        out.push('\n');
+        writeln!(out).map_err(failed)?;
         if row_time >= schedule.until {
             break;
         }
         row_time = row_time.saturating_add(schedule.every).min(schedule.until);
     }
-    Ok(out)
+    Ok(())
 }

@@ -11,10 +11,11 @@ pub mod events;
 pub mod headless;
 pub mod io86a;
 pub mod ladder;
+pub mod limits;
 pub mod machine_id;
 pub mod minasec;
 pub mod time;
 
-pub use error::Located;
+pub use error::{shown, Located};
 pub use machine_id::MachineId;
 pub use time::SimTime;

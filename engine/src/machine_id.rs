@@ -46,7 +46,10 @@ impl MachineId {
             .into_iter()
             .find(|m| m.name() == id)
             .ok_or_else(|| {
-                format!("unknown machine \"{id}\": minasec-u, io86a, avr-plc or arduino-plc")
+                format!(
+                    "unknown machine {}: minasec-u, io86a, avr-plc or arduino-plc",
+                    crate::error::shown(&id)
+                )
             })
     }
 }

@@ -52,8 +52,14 @@ impl SimTime {
 
     /// Parses `10us`, `250ms`, `1.5s`, `20s`, `100ns`, or a bare number of
     /// milliseconds (`500`, `2.5`). Fractions are exact to the nanosecond.
+    /// Times past [`crate::limits::MAX_SIM_TIME`] are refused, so sums of
+    /// parsed times cannot overflow the clock.
     pub fn parse(text: &str) -> Result<SimTime, TimeError> {
         let text = text.trim();
+        let shown = crate::error::shown(text);
+        if text.starts_with('-') {
+            return Err(TimeError::Negative(shown));
+        }
         let split = text
             .find(|c: char| !(c.is_ascii_digit() || c == '.'))
             .unwrap_or(text.len());
@@ -63,9 +69,25 @@ impl SimTime {
             "s" => 1_000_000_000,
             "us" | "µs" => 1_000,
             "ns" => 1,
-            _ => return Err(TimeError::BadUnit(text.to_string())),
+            u if u.starts_with(['e', 'E']) && !number.is_empty() => {
+                return Err(TimeError::Exponent(shown))
+            }
+            _ => return Err(TimeError::BadUnit(shown)),
         };
-        parse_scaled(number, scale).ok_or_else(|| TimeError::BadNumber(text.to_string()))
+        let time =
+            parse_scaled(number, scale).ok_or_else(|| TimeError::BadNumber(shown.clone()))?;
+        if time > crate::limits::MAX_SIM_TIME {
+            return Err(TimeError::TooLong(shown));
+        }
+        Ok(time)
+    }
+
+    /// `self + other`, or `None` past [`crate::limits::MAX_SIM_TIME`].
+    pub fn checked_add(self, other: SimTime) -> Option<SimTime> {
+        self.0
+            .checked_add(other.0)
+            .map(SimTime)
+            .filter(|&t| t <= crate::limits::MAX_SIM_TIME)
     }
 }
 
@@ -106,13 +128,20 @@ fn parse_scaled(number: &str, scale: u64) -> Option<SimTime> {
     Some(SimTime(total))
 }
 
-/// Why a time could not be parsed.
+/// Why a time could not be parsed. Each holds the text as written
+/// (shortened and escaped for messages).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum TimeError {
-    /// The number part is malformed, negative, too precise or too large.
+    /// The number part is malformed, too precise or too large.
     BadNumber(String),
     /// The unit is not one of `ns`, `us`, `ms`, `s`.
     BadUnit(String),
+    /// A minus sign: simulated time starts at 0 and runs forward.
+    Negative(String),
+    /// An exponent (`1e30`): times are plain decimals.
+    Exponent(String),
+    /// Past [`crate::limits::MAX_SIM_TIME`].
+    TooLong(String),
 }
 
 impl fmt::Display for TimeError {
@@ -120,11 +149,23 @@ impl fmt::Display for TimeError {
         match self {
             TimeError::BadNumber(t) => write!(
                 f,
-                "bad time \"{t}\": expected a non-negative number such as 10us, 250ms, 1.5s or 20"
+                "bad time {t}: expected a non-negative number such as 10us, 250ms, 1.5s or 20"
             ),
             TimeError::BadUnit(t) => {
-                write!(f, "bad time \"{t}\": the unit must be ns, us, ms or s")
+                write!(f, "bad time {t}: the unit must be ns, us, ms or s")
             }
+            TimeError::Negative(t) => write!(
+                f,
+                "bad time {t}: a time cannot be negative (simulated time starts at 0)"
+            ),
+            TimeError::Exponent(t) => write!(
+                f,
+                "bad time {t}: write a plain decimal such as 1.5s, not an exponent"
+            ),
+            TimeError::TooLong(t) => write!(
+                f,
+                "time {t} is past the simulated clock's limit of 10000000s (docs/limits.md)"
+            ),
         }
     }
 }
@@ -196,6 +237,22 @@ mod tests {
             assert!(SimTime::parse(bad).is_err(), "{bad:?} should be rejected");
         }
         assert!(matches!(SimTime::parse("3 m"), Err(TimeError::BadUnit(_))));
+    }
+
+    #[test]
+    fn negative_exponent_and_huge_times_say_so() {
+        assert!(matches!(SimTime::parse("-1"), Err(TimeError::Negative(_))));
+        assert!(matches!(
+            SimTime::parse("1e30"),
+            Err(TimeError::Exponent(_))
+        ));
+        assert!(matches!(
+            SimTime::parse("10000000000s"),
+            Err(TimeError::TooLong(_))
+        ));
+        assert_eq!(SimTime::parse("10000000s"), Ok(crate::limits::MAX_SIM_TIME));
+        let msg = SimTime::parse("-1").unwrap_err().to_string();
+        assert!(msg.contains("negative"), "{msg}");
     }
 
     #[test]

@@ -21,18 +21,27 @@ impl Machine {
                     self.set_pop_order(PopOrder::Intended);
                     Ok(())
                 }
-                _ => Err(format!("unknown quirk \"{value}\": sketch or none")),
+                _ => Err(format!(
+                    "unknown quirk {}: sketch or none",
+                    crate::error::shown(&value)
+                )),
             },
             "chip" => {
                 let chip = match value {
                     "168" | "atmega168" => Chip::Atmega168,
                     "328" | "atmega328" => Chip::Atmega328,
-                    _ => return Err(format!("unknown chip \"{value}\": 168 or 328")),
+                    _ => {
+                        return Err(format!(
+                            "unknown chip {}: 168 or 328",
+                            crate::error::shown(&value)
+                        ))
+                    }
                 };
                 self.set_chip(chip)
             }
             _ => Err(format!(
-                "unknown setting \"{name}\": arduino-plc takes step, quirk, chip"
+                "unknown setting {}: arduino-plc takes step, quirk, chip",
+                crate::error::shown(&name)
             )),
         }
     }
@@ -47,7 +56,8 @@ fn input_number(device: &str) -> Result<u8, String> {
         Some(n @ 0..=5) => Ok(n),
         Some(_) => Err(format!("{device} is an output: events drive X000-X005")),
         None => Err(format!(
-            "unknown device \"{device}\": the Arduino PLC has X000-X005, Y000-Y005"
+            "unknown device {}: the Arduino PLC has X000-X005, Y000-Y005",
+            crate::error::shown(&device)
         )),
     }
 }
@@ -61,7 +71,10 @@ impl Simulation for Machine {
 
     fn watch(&self, name: &str) -> Result<Watch, String> {
         parse_io(name).map(Watch).ok_or_else(|| {
-            format!("unknown device \"{name}\": the Arduino PLC has X000-X005, Y000-Y005")
+            format!(
+                "unknown device {}: the Arduino PLC has X000-X005, Y000-Y005",
+                crate::error::shown(&name)
+            )
         })
     }
 

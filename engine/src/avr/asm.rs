@@ -131,7 +131,7 @@ pub fn assemble(text: &str, scan_ms: i64) -> Result<Assembly, Vec<Located<AsmErr
                 } else {
                     eval(args, &symbols).and_then(|n| {
                         if n < 0 {
-                            Err(AsmError::Range(args.to_string(), n))
+                            Err(AsmError::Range(crate::error::shown(args), n))
                         } else {
                             dseg += n;
                             Ok(())
@@ -147,7 +147,7 @@ pub fn assemble(text: &str, scan_ms: i64) -> Result<Assembly, Vec<Located<AsmErr
                     Ok(())
                 }
             }
-            other => Err(AsmError::UnknownDirective(other.to_string())),
+            other => Err(AsmError::UnknownDirective(crate::error::shown(other))),
         };
         if let Err(e) = result {
             errors.push(Located::new(line, e));
@@ -157,7 +157,10 @@ pub fn assemble(text: &str, scan_ms: i64) -> Result<Assembly, Vec<Located<AsmErr
         for item in split_args(&args) {
             match eval(item, &symbols) {
                 Ok(v) if (-128..=255).contains(&v) => out.code.push(((v & 0xFF) as u8, line)),
-                Ok(v) => errors.push(Located::new(line, AsmError::Range(item.to_string(), v))),
+                Ok(v) => errors.push(Located::new(
+                    line,
+                    AsmError::Range(crate::error::shown(item), v),
+                )),
                 Err(e) => errors.push(Located::new(line, e)),
             }
         }
@@ -227,10 +230,11 @@ pub fn eval(expr: &str, symbols: &HashMap<String, i64>) -> Result<i64, AsmError>
         pos: 0,
         symbols,
         text: expr,
+        depth: 0,
     };
     let v = p.sum()?;
     if p.pos != tokens.len() {
-        return Err(AsmError::Expression(expr.trim().to_string()));
+        return Err(AsmError::Expression(crate::error::shown(expr.trim())));
     }
     Ok(v)
 }
@@ -243,7 +247,7 @@ enum Token {
 }
 
 fn tokenize(expr: &str) -> Result<Vec<Token>, AsmError> {
-    let bad = || AsmError::Expression(expr.trim().to_string());
+    let bad = || AsmError::Expression(crate::error::shown(expr.trim()));
     let bytes = expr.as_bytes();
     let mut tokens = Vec::new();
     let mut i = 0;
@@ -291,11 +295,27 @@ struct ExprParser<'a> {
     pos: usize,
     symbols: &'a HashMap<String, i64>,
     text: &'a str,
+    /// Parentheses, `LOW(`/`HIGH(` and unary minus open now.
+    depth: usize,
 }
 
 impl ExprParser<'_> {
     fn bad(&self) -> AsmError {
-        AsmError::Expression(self.text.trim().to_string())
+        AsmError::Expression(crate::error::shown(self.text.trim()))
+    }
+
+    fn overflow(&self) -> AsmError {
+        AsmError::Overflow(crate::error::shown(self.text.trim()))
+    }
+
+    /// Enters one nesting level; the parser recurses once per level, so
+    /// the depth is capped before the stack is at risk.
+    fn deeper(&mut self) -> Result<(), AsmError> {
+        self.depth += 1;
+        if self.depth > crate::limits::MAX_EXPRESSION_DEPTH {
+            return Err(AsmError::TooDeep(crate::error::shown(self.text.trim())));
+        }
+        Ok(())
     }
 
     fn next_op(&self, ops: &str) -> Option<char> {
@@ -315,7 +335,7 @@ impl ExprParser<'_> {
             } else {
                 v.checked_sub(rhs)
             }
-            .ok_or_else(|| self.bad())?;
+            .ok_or_else(|| self.overflow())?;
         }
         Ok(v)
     }
@@ -326,11 +346,14 @@ impl ExprParser<'_> {
             self.pos += 1;
             let rhs = self.unary()?;
             v = if op == '*' {
-                v.checked_mul(rhs).ok_or_else(|| self.bad())?
+                v.checked_mul(rhs).ok_or_else(|| self.overflow())?
             } else if rhs == 0 {
-                return Err(AsmError::DivisionByZero(self.text.trim().to_string()));
+                return Err(AsmError::DivisionByZero(crate::error::shown(
+                    self.text.trim(),
+                )));
             } else {
-                v / rhs
+                // i64::MIN / -1 is the one quotient that does not fit.
+                v.checked_div(rhs).ok_or_else(|| self.overflow())?
             };
         }
         Ok(v)
@@ -339,7 +362,10 @@ impl ExprParser<'_> {
     fn unary(&mut self) -> Result<i64, AsmError> {
         if self.next_op("-").is_some() {
             self.pos += 1;
-            return Ok(-self.unary()?);
+            self.deeper()?;
+            let v = self.unary()?;
+            self.depth -= 1;
+            return v.checked_neg().ok_or_else(|| self.overflow());
         }
         self.atom()
     }
@@ -354,17 +380,21 @@ impl ExprParser<'_> {
         match token {
             Token::Num(n) => Ok(n),
             Token::Op('(') => {
+                self.deeper()?;
                 let v = self.sum()?;
                 if self.next_op(")").is_none() {
                     return Err(self.bad());
                 }
                 self.pos += 1;
+                self.depth -= 1;
                 Ok(v)
             }
             Token::Name(name) => {
                 let upper = name.to_ascii_uppercase();
                 if (upper == "LOW" || upper == "HIGH") && self.next_op("(").is_some() {
+                    self.deeper()?;
                     let v = self.atom()?;
+                    self.depth -= 1;
                     return Ok(if upper == "LOW" {
                         v & 0xFF
                     } else {
@@ -374,7 +404,7 @@ impl ExprParser<'_> {
                 self.symbols
                     .get(&upper)
                     .copied()
-                    .ok_or(AsmError::UnknownSymbol(name))
+                    .ok_or(AsmError::UnknownSymbol(crate::error::shown(&name)))
             }
             Token::Op(_) => Err(self.bad()),
         }
@@ -396,6 +426,10 @@ pub enum AsmError {
     Expression(String),
     /// Division by zero.
     DivisionByZero(String),
+    /// A result outside -2^63..2^63.
+    Overflow(String),
+    /// Nested past [`crate::limits::MAX_EXPRESSION_DEPTH`].
+    TooDeep(String),
     /// A value out of range for its place (the value).
     Range(String, i64),
     /// `.byte` outside `.dseg`.
@@ -409,14 +443,24 @@ impl fmt::Display for AsmError {
         match self {
             AsmError::UnknownDirective(d) => write!(
                 f,
-                "unknown directive \"{d}\": this assembler takes .equ .db .cseg .csg .dseg .byte and labels"
+                "unknown directive {d}: this assembler takes .equ .db .cseg .csg .dseg .byte and labels"
             ),
             AsmError::EquSyntax => f.write_str(".equ needs NAME=expression"),
-            AsmError::Redefined(n, first) => write!(f, "{n} is already defined on line {first}"),
-            AsmError::UnknownSymbol(n) => write!(f, "unknown symbol \"{n}\""),
-            AsmError::Expression(e) => write!(f, "bad expression \"{e}\""),
-            AsmError::DivisionByZero(e) => write!(f, "division by zero in \"{e}\""),
-            AsmError::Range(e, v) => write!(f, "\"{e}\" is {v}: a byte is -128..255"),
+            AsmError::Redefined(n, first) => write!(
+                f,
+                "{} is already defined on line {first}",
+                crate::error::shown(n)
+            ),
+            AsmError::UnknownSymbol(n) => write!(f, "unknown symbol {n}"),
+            AsmError::Expression(e) => write!(f, "bad expression {e}"),
+            AsmError::DivisionByZero(e) => write!(f, "division by zero in {e}"),
+            AsmError::Overflow(e) => write!(f, "{e} overflows: values are 64-bit integers"),
+            AsmError::TooDeep(e) => write!(
+                f,
+                "{e} nests more than {} levels of parentheses, LOW/HIGH or minus signs (docs/limits.md)",
+                crate::limits::MAX_EXPRESSION_DEPTH
+            ),
+            AsmError::Range(e, v) => write!(f, "{e} is {v}: a byte is -128..255"),
             AsmError::ByteOutsideDseg => f.write_str(".byte reserves RAM: use it after .dseg"),
             AsmError::DbInDseg => f.write_str(".db puts bytes in program memory: use it after .cseg"),
         }

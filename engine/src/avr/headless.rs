@@ -19,14 +19,18 @@ impl Machine {
     pub fn apply_setting(&mut self, name: &str, value: &str) -> Result<(), String> {
         match name.to_ascii_lowercase().as_str() {
             "scan" => self.set_scan_period(SimTime::parse(value).map_err(|e| e.to_string())?),
-            _ => Err(format!("unknown setting \"{name}\": avr-plc takes scan")),
+            _ => Err(format!(
+                "unknown setting {}: avr-plc takes scan",
+                crate::error::shown(&name)
+            )),
         }
     }
 
     fn named_bit(&self, name: &str) -> Result<super::BitRef, String> {
         self.program().bit(name).ok_or_else(|| {
             format!(
-                "unknown bit \"{name}\": name a bit defined by NAME_R and NAME_B, or write R4.2"
+                "unknown bit {}: name a bit defined by NAME_R and NAME_B, or write R4.2",
+                crate::error::shown(&name)
             )
         })
     }
@@ -42,7 +46,10 @@ impl Simulation for Machine {
     fn watch(&self, name: &str) -> Result<Watch, String> {
         if let Some(base) = name.strip_suffix(".v").or_else(|| name.strip_suffix(".V")) {
             return self.program().timer(base).map(Watch::Timer).ok_or_else(|| {
-                format!("unknown timer \"{base}\": name its label after PLC_Timer_Top")
+                format!(
+                    "unknown timer {}: name its label after PLC_Timer_Top",
+                    crate::error::shown(&base)
+                )
             });
         }
         self.named_bit(name).map(Watch::Bit)

@@ -6,6 +6,20 @@ use super::program::{BitRef, Instruction, Program, TimerKind};
 use crate::clock::PeriodicClock;
 use crate::time::SimTime;
 
+/// The value of the assembler's `Scan` symbol for a scan period: whole
+/// milliseconds, 1 ms to 10 s. The source computes presets as integers
+/// (`LOW(1000/Scan)`), so a period of 1.5 ms or 0.5 ms would silently give
+/// timers of the wrong length (or a division by zero): it is refused.
+pub fn scan_ms(period: SimTime) -> Result<u32, String> {
+    let nanos = period.as_nanos();
+    if nanos == 0 || nanos > 10_000_000_000 || nanos % 1_000_000 != 0 {
+        return Err(format!(
+            "the AVR PLC's scan period is a whole number of milliseconds from 1ms to 10s (its programs compute timer presets as ms/Scan), not {period}ms"
+        ));
+    }
+    Ok((nanos / 1_000_000) as u32)
+}
+
 /// The default scan period.
 pub const DEFAULT_SCAN: SimTime = SimTime::from_millis(10);
 
@@ -118,8 +132,10 @@ impl Machine {
         self.clock.period()
     }
 
-    /// Sets the scan period (the program's presets count scans).
+    /// Sets the scan period (the program's presets count scans); it must
+    /// pass [`scan_ms`]. Nothing changes on error.
     pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
+        scan_ms(period)?;
         let now = self.clock.now();
         self.clock
             .set_period(period, now, SimTime::from_secs(10), "scan period")

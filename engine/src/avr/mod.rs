@@ -10,5 +10,5 @@ pub mod headless;
 pub mod machine;
 pub mod program;
 
-pub use machine::{Machine, TimerWord};
+pub use machine::{scan_ms, Machine, TimerWord};
 pub use program::{parse_register_bit, BitRef, Instruction, Program, ProgramError, TimerKind};

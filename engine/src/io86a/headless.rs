@@ -39,7 +39,8 @@ impl Machine {
                 .apply(&format!("{name}{value}"))
                 .map_err(|e| e.to_string()),
             _ => Err(format!(
-                "unknown setting \"{name}\": io86a takes scan, filter, X04, X05, X07, Y03, Y04"
+                "unknown setting {}: io86a takes scan, filter, X04, X05, X07, Y03, Y04",
+                crate::error::shown(&name)
             )),
         }
     }

@@ -200,7 +200,7 @@ impl Terminal {
                 t.enter(1, &upper)
             });
         }
-        err(&format!("unknown command \"{line}\""))
+        err(&format!("unknown command {}", crate::error::shown(&line)))
     }
 
     /// Program edits happen only while stopped, as on the device.
@@ -291,7 +291,10 @@ fn read_command(m: &Machine, upper: &str) -> Option<Vec<String>> {
     if kind == 'D' {
         return Some(match parse_word(&device) {
             Ok(Word::D(n)) => vec![format_d(n, d.d[usize::from(n)])],
-            _ => vec![format!("ERR unknown device \"{device}\"")],
+            _ => vec![format!(
+                "ERR unknown device {}",
+                crate::error::shown(&device)
+            )],
         });
     }
     Some(match parse_bit(&device) {
@@ -309,13 +312,18 @@ fn format_d(n: u8, value: i16) -> String {
 fn write_command(m: &mut Machine, device: &str, value: &str) -> Result<(), String> {
     if device.starts_with('D') {
         let Ok(Word::D(n)) = parse_word(device) else {
-            return Err(format!("unknown device \"{device}\""));
+            return Err(format!("unknown device {}", crate::error::shown(&device)));
         };
         let parsed = match value.strip_prefix('X') {
             Some(hex) => u16::from_str_radix(hex, 16).map(|v| v as i16).ok(),
             None => value.parse::<i16>().ok(),
         };
-        let v = parsed.ok_or_else(|| format!("bad value \"{value}\": decimal, or hex as xFF"))?;
+        let v = parsed.ok_or_else(|| {
+            format!(
+                "bad value {}: decimal, or hex as xFF",
+                crate::error::shown(&value)
+            )
+        })?;
         m.write_word(n, v);
         return Ok(());
     }
@@ -326,7 +334,7 @@ fn write_command(m: &mut Machine, device: &str, value: &str) -> Result<(), Strin
     let on = match value {
         "1" => true,
         "0" => false,
-        _ => return Err(format!("bad value \"{value}\": 0 or 1")),
+        _ => return Err(format!("bad value {}: 0 or 1", crate::error::shown(&value))),
     };
     m.write_bit(bit, on);
     Ok(())

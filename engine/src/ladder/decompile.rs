@@ -16,7 +16,8 @@ use std::fmt;
 use super::compile::negate;
 use super::element::{CoilKind, ContactKind, Element, TimerKind};
 use super::grid::{Ladder, Pos};
-use super::net::{Net, RungLogic};
+use super::net::{try_layout, Net, RungLogic};
+use crate::limits::MAX_NESTING;
 use crate::{arduino, avr, io86a, minasec, MachineId};
 
 /// Why a program has no ladder form, at its step (0-based, as listed).
@@ -36,6 +37,50 @@ impl fmt::Display for StepError {
 
 impl std::error::Error for StepError {}
 
+/// Why a program could not be decompiled.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DecompileError {
+    /// A step has no ladder form.
+    Step(StepError),
+    /// A rung (1-based) is too large to draw (docs/limits.md).
+    Drawing {
+        /// The rung, 1-based.
+        rung: usize,
+        /// What is too large.
+        message: String,
+    },
+}
+
+impl From<StepError> for DecompileError {
+    fn from(e: StepError) -> Self {
+        DecompileError::Step(e)
+    }
+}
+
+impl fmt::Display for DecompileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DecompileError::Step(e) => e.fmt(f),
+            DecompileError::Drawing { rung, message } => write!(f, "rung {rung}: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for DecompileError {}
+
+/// The rungs drawn on grids, each refused past the rung size limit.
+fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
+    let mut ladder = Ladder::default();
+    for (i, logic) in rungs.iter().enumerate() {
+        let rung = try_layout(logic).map_err(|message| DecompileError::Drawing {
+            rung: i + 1,
+            message,
+        })?;
+        ladder.rungs.push(rung);
+    }
+    Ok(ladder)
+}
+
 /// A program parsed for its machine.
 pub enum Source<'a> {
     /// A MINASEC-U listing.
@@ -49,7 +94,7 @@ pub enum Source<'a> {
 }
 
 /// The program as a ladder.
-pub fn decompile(source: Source<'_>) -> Result<Ladder, StepError> {
+pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
     let mut ladder = match source {
         Source::Minasec(p) => minasec_ladder(p)?,
         Source::Avr(p, scan) => avr_ladder(p, scan)?,
@@ -83,18 +128,50 @@ fn contact(device: String, inverted: bool) -> Net {
     Net::Leaf(Element::Contact { kind, device }, Pos::new(0, 0))
 }
 
-fn series(a: Net, b: Net) -> Net {
-    Net::Series(vec![a, b]).normalised()
+/// A condition being built, with how deeply it nests, so that a program
+/// that nests blocks past [`MAX_NESTING`] is refused at the step that
+/// would (and no deeper network is ever built).
+struct Part {
+    net: Net,
+    depth: usize,
 }
 
-fn parallel(a: Net, b: Net) -> Net {
-    Net::Parallel(vec![a, b]).normalised()
+impl Part {
+    fn of(net: Net) -> Part {
+        let depth = net.depth();
+        Part { net, depth }
+    }
+
+    /// `self` and `b` in series (`and`) or in parallel.
+    fn join(self, b: Part, and: bool, step: usize) -> Result<Part, StepError> {
+        let merges = |p: &Part| match p.net {
+            Net::Series(_) => and,
+            Net::Parallel(_) => !and,
+            Net::Leaf(..) => false,
+        };
+        let level = |p: &Part| if merges(p) { p.depth } else { p.depth + 1 };
+        let depth = level(&self).max(level(&b));
+        if depth > MAX_NESTING {
+            return Err(StepError {
+                step,
+                message: format!(
+                    "blocks nest more than {MAX_NESTING} deep here: a ladder cannot draw it (docs/limits.md)"
+                ),
+            });
+        }
+        let net = if and {
+            Net::series(self.net, b.net)
+        } else {
+            Net::parallel(self.net, b.net)
+        };
+        Ok(Part { net, depth })
+    }
 }
 
 /// Ends a rung: its condition drives the outputs collected (a condition
 /// with no output drives nothing and is dropped, as the machine ignores it).
-fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Net>, outputs: &mut Vec<Element>) {
-    if let Some(condition) = condition {
+fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Part>, outputs: &mut Vec<Element>) {
+    if let Some(Part { net: condition, .. }) = condition {
         if !outputs.is_empty() {
             rungs.push(RungLogic {
                 condition,
@@ -133,7 +210,7 @@ fn add_output<T>(
 #[derive(Default)]
 struct Acc {
     rungs: Vec<RungLogic>,
-    a: Option<Net>,
+    a: Option<Part>,
     outputs: Vec<Element>,
     /// An output holding the accumulator's value: (device, inverted).
     anchor: Option<(String, bool)>,
@@ -147,11 +224,11 @@ impl Acc {
     fn load(&mut self, n: Net) {
         self.flush();
         self.anchor = None;
-        self.a = Some(n);
+        self.a = Some(Part::of(n));
     }
 
     /// The running result, restarting from the anchor after outputs.
-    fn current(&mut self, step: usize) -> Result<Net, StepError> {
+    fn current(&mut self, step: usize) -> Result<Part, StepError> {
         if !self.outputs.is_empty() {
             let Some((d, inv)) = self.anchor.clone() else {
                 return Err(StepError {
@@ -160,7 +237,7 @@ impl Acc {
                 });
             };
             self.flush();
-            self.a = Some(contact(d, inv));
+            self.a = Some(Part::of(contact(d, inv)));
         }
         self.a.take().ok_or(StepError {
             step,
@@ -170,13 +247,13 @@ impl Acc {
 
     fn and(&mut self, n: Net, step: usize) -> Result<(), StepError> {
         let a = self.current(step)?;
-        self.a = Some(series(a, n));
+        self.a = Some(a.join(Part::of(n), true, step)?);
         Ok(())
     }
 
     fn or(&mut self, n: Net, step: usize) -> Result<(), StepError> {
         let a = self.current(step)?;
-        self.a = Some(parallel(a, n));
+        self.a = Some(a.join(Part::of(n), false, step)?);
         Ok(())
     }
 
@@ -191,7 +268,7 @@ impl Acc {
     }
 }
 
-fn minasec_ladder(p: &minasec::Program) -> Result<Ladder, StepError> {
+fn minasec_ladder(p: &minasec::Program) -> Result<Ladder, DecompileError> {
     use minasec::isa::Device;
     use minasec::Opcode;
     let mut acc = Acc::default();
@@ -216,10 +293,10 @@ fn minasec_ladder(p: &minasec::Program) -> Result<Ladder, StepError> {
     }
     acc.flush();
     let rungs = fold_temporaries(acc.rungs, &["M10", "M11", "M12", "M13"]);
-    Ok(Ladder::from_logic(&rungs))
+    drawn(&rungs)
 }
 
-fn avr_ladder(p: &avr::Program, scan_ms: u32) -> Result<Ladder, StepError> {
+fn avr_ladder(p: &avr::Program, scan_ms: u32) -> Result<Ladder, DecompileError> {
     use avr::Instruction as I;
     let mut acc = Acc::default();
     for (step, &i) in p.instructions().iter().enumerate() {
@@ -283,7 +360,7 @@ fn avr_ladder(p: &avr::Program, scan_ms: u32) -> Result<Ladder, StepError> {
         }
     }
     acc.flush();
-    Ok(Ladder::from_logic(&acc.rungs))
+    drawn(&acc.rungs)
 }
 
 /// Folds a temporary stored by one rung and read once by a later one back
@@ -325,7 +402,14 @@ fn fold_temporaries(mut rungs: Vec<RungLogic>, temps: &[&str]) -> Vec<RungLogic>
                     && inputs.iter().all(|d| d != &t);
                 if untouched {
                     let cond = rungs[i].condition.clone();
-                    rungs[j].condition = substitute(&rungs[j].condition, &t, &cond).normalised();
+                    let folded = substitute(&rungs[j].condition, &t, &cond).normalised();
+                    // Folding stacks one rung's logic into another; a fold
+                    // that would nest too deep is not made.
+                    if folded.depth() > MAX_NESTING {
+                        i += 1;
+                        continue;
+                    }
+                    rungs[j].condition = folded;
                     rungs.remove(i);
                     continue;
                 }
@@ -352,8 +436,8 @@ fn substitute(net: &Net, device: &str, with: &Net) -> Net {
 #[derive(Default)]
 struct Stack {
     rungs: Vec<RungLogic>,
-    blocks: Vec<Net>,
-    cur: Option<Net>,
+    blocks: Vec<Part>,
+    cur: Option<Part>,
     outputs: Vec<Element>,
     anchor: Option<String>,
 }
@@ -371,7 +455,7 @@ impl Stack {
         } else if let Some(c) = self.cur.take() {
             self.blocks.push(c);
         }
-        self.cur = Some(n);
+        self.cur = Some(Part::of(n));
     }
 
     fn grow(&mut self, n: Net, and: bool, step: usize) -> Result<(), StepError> {
@@ -383,17 +467,13 @@ impl Stack {
                 });
             };
             self.flush();
-            self.cur = Some(contact(d, false));
+            self.cur = Some(Part::of(contact(d, false)));
         }
         let cur = self.cur.take().ok_or(StepError {
             step,
             message: "no LD before this step".into(),
         })?;
-        self.cur = Some(if and {
-            series(cur, n)
-        } else {
-            parallel(cur, n)
-        });
+        self.cur = Some(cur.join(Part::of(n), and, step)?);
         Ok(())
     }
 
@@ -404,7 +484,7 @@ impl Stack {
                 message: "ORB / ANB needs two blocks".into(),
             });
         };
-        self.cur = Some(if and { series(a, b) } else { parallel(a, b) });
+        self.cur = Some(a.join(b, and, step)?);
         Ok(())
     }
 
@@ -423,7 +503,7 @@ fn word(w: io86a::Word) -> String {
     }
 }
 
-fn io86a_ladder(p: &io86a::Program) -> Result<Ladder, StepError> {
+fn io86a_ladder(p: &io86a::Program) -> Result<Ladder, DecompileError> {
     use io86a::{Bit, Instruction as I};
     let mut s = Stack::default();
     for (step, &i) in p.instructions().iter().enumerate() {
@@ -451,10 +531,10 @@ fn io86a_ladder(p: &io86a::Program) -> Result<Ladder, StepError> {
             )?,
             I::OutTimer(n, w) | I::OutCounter(n, w) => {
                 let io86a::Word::K(k) = w else {
-                    return Err(StepError {
+                    return Err(DecompileError::Step(StepError {
                         step,
                         message: "a set value from a data register has no ladder form here: use a K constant".into(),
-                    });
+                    }));
                 };
                 let preset = u16::try_from(k).unwrap_or(0);
                 let e = if matches!(i, I::OutTimer(..)) {
@@ -501,20 +581,20 @@ fn io86a_ladder(p: &io86a::Program) -> Result<Ladder, StepError> {
                 step,
             )?,
             I::Sets(_) | I::Rsts(_) => {
-                return Err(StepError {
+                return Err(DecompileError::Step(StepError {
                     step,
                     message: "SETS / RSTS drive a second device: they have no ladder form here"
                         .into(),
-                })
+                }))
             }
             I::End => break,
         }
     }
     s.flush();
-    Ok(Ladder::from_logic(&s.rungs))
+    drawn(&s.rungs)
 }
 
-fn arduino_ladder(p: &arduino::Program) -> Result<Ladder, StepError> {
+fn arduino_ladder(p: &arduino::Program) -> Result<Ladder, DecompileError> {
     use arduino::isa::{io_name, Op};
     let words = p.words();
     let mut s = Stack::default();
@@ -548,21 +628,21 @@ fn arduino_ladder(p: &arduino::Program) -> Result<Ladder, StepError> {
             Some(Op::End) => break,
             Some(Op::Jump) if operand == 0 => break,
             Some(Op::Jump) => {
-                return Err(StepError {
+                return Err(DecompileError::Step(StepError {
                     step,
                     message: format!(
                         "JUMP {operand} has no ladder form: only a final JUMP 0 (or END)"
                     ),
-                })
+                }))
             }
             None => {
-                return Err(StepError {
+                return Err(DecompileError::Step(StepError {
                     step,
                     message: format!("word {w:04X} is no instruction"),
-                })
+                }))
             }
         }
     }
     s.flush();
-    Ok(Ladder::from_logic(&s.rungs))
+    drawn(&s.rungs)
 }

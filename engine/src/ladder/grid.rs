@@ -111,6 +111,30 @@ pub struct Ladder {
     pub device_comments: BTreeMap<String, String>,
 }
 
+/// What sort of problem a [`LadderError`] is, so that an editor can mark
+/// cells by kind (the message says the rest).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LadderErrorKind {
+    /// Wires and links that do not make a circuit: shorts, outputs not
+    /// joined, an output on the rail, links off the grid.
+    Wiring,
+    /// An element in the wrong column (outputs last, nothing after them).
+    Placement,
+    /// The rung has no output.
+    NoOutput,
+    /// An element or wire on no path from the rail to the outputs.
+    Dangling,
+    /// A bridge between branches.
+    NotSeriesParallel,
+    /// The machine lacks the element or the device, or the device cannot
+    /// be used that way.
+    Device,
+    /// The program does not fit the machine: steps, temporaries, timers.
+    Capacity,
+    /// One of the engine's documented limits (docs/limits.md).
+    Limit,
+}
+
 /// A problem with a ladder, at a rung (1-based) and optionally a cell.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LadderError {
@@ -118,27 +142,38 @@ pub struct LadderError {
     pub rung: usize,
     /// The cell, when the problem has one.
     pub pos: Option<Pos>,
+    /// What sort of problem.
+    pub kind: LadderErrorKind,
     /// What is wrong.
     pub message: String,
 }
 
 impl LadderError {
-    /// A problem at a cell of rung index `rung` (0-based).
+    /// A problem with the element at a cell of rung index `rung`
+    /// (0-based): by default the machine lacks it ([`LadderErrorKind::Device`]).
     pub fn at(rung: usize, pos: Pos, message: impl Into<String>) -> LadderError {
         LadderError {
-            rung: rung + 1,
+            rung: rung.saturating_add(1),
             pos: Some(pos),
+            kind: LadderErrorKind::Device,
             message: message.into(),
         }
     }
 
-    /// A problem with rung index `rung` (0-based) as a whole.
+    /// A problem with rung index `rung` (0-based) as a whole: by default
+    /// it does not fit the machine ([`LadderErrorKind::Capacity`]).
     pub fn rung(rung: usize, message: impl Into<String>) -> LadderError {
         LadderError {
-            rung: rung + 1,
+            rung: rung.saturating_add(1),
             pos: None,
+            kind: LadderErrorKind::Capacity,
             message: message.into(),
         }
+    }
+
+    /// The same problem, of `kind`.
+    pub fn kind(self, kind: LadderErrorKind) -> LadderError {
+        LadderError { kind, ..self }
     }
 }
 
@@ -146,12 +181,13 @@ impl fmt::Display for LadderError {
     /// `rung 3, row 1, column 2: message` (1-based).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.pos {
+            // Widened: a position read from a file may be usize::MAX.
             Some(p) => write!(
                 f,
                 "rung {}, row {}, column {}: {}",
                 self.rung,
-                p.row + 1,
-                p.col + 1,
+                p.row as u128 + 1,
+                p.col as u128 + 1,
                 self.message
             ),
             None => write!(f, "rung {}: {}", self.rung, self.message),

@@ -21,8 +21,8 @@ pub mod share;
 pub mod target;
 
 pub use element::{CoilKind, ContactKind, Element, TimerKind};
-pub use grid::{Ladder, LadderError, Link, Pos, Rung};
-pub use net::{analyse, layout, Net, RungLogic};
+pub use grid::{Ladder, LadderError, LadderErrorKind, Link, Pos, Rung};
+pub use net::{analyse, layout, try_layout, Net, NetError, RungLogic};
 pub use project::Project;
 
 use crate::MachineId;

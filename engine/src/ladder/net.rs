@@ -1,11 +1,22 @@
 //! A rung as logic: a series-parallel network of contacts and in-line
 //! boxes from the left rail to one or more outputs. [`analyse`] reads it
 //! off the grid (checking the wiring); [`layout`] draws it back.
+//!
+//! Grids come from other people's files, so every step here is linear or
+//! n log n in the rung's size, and nothing recurses deeper than
+//! [`MAX_NESTING`] (docs/limits.md).
 
-use std::collections::{BTreeMap, BTreeSet};
+mod layout;
+mod reduce;
+
+use std::fmt;
+
+pub use layout::{layout, try_layout};
+pub(crate) use reduce::Edge;
 
 use super::element::Element;
-use super::grid::{LadderError, Link, Pos, Rung};
+use super::grid::{LadderError, LadderErrorKind, Pos, Rung};
+use crate::limits::{MAX_NESTING, MAX_RUNG_CELLS};
 
 /// A series-parallel network; leaves keep the cell they came from.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -22,22 +33,65 @@ impl Net {
     /// Every leaf, left to right and top to bottom.
     pub fn leaves(&self) -> Vec<(&Element, Pos)> {
         let mut out = Vec::new();
-        self.collect(&mut out);
+        let mut todo = vec![self];
+        while let Some(n) = todo.pop() {
+            match n {
+                Net::Leaf(e, p) => out.push((e, *p)),
+                Net::Series(v) | Net::Parallel(v) => todo.extend(v.iter().rev()),
+            }
+        }
         out
     }
 
-    fn collect<'a>(&'a self, out: &mut Vec<(&'a Element, Pos)>) {
-        match self {
-            Net::Leaf(e, p) => out.push((e, *p)),
-            Net::Series(v) | Net::Parallel(v) => v.iter().for_each(|n| n.collect(out)),
+    /// How deeply series and parallel groups nest: 0 for a leaf.
+    pub fn depth(&self) -> usize {
+        let mut deepest = 0;
+        let mut todo = vec![(self, 0)];
+        while let Some((n, d)) = todo.pop() {
+            deepest = deepest.max(d);
+            if let Net::Series(v) | Net::Parallel(v) = n {
+                todo.extend(v.iter().map(|c| (c, d + 1)));
+            }
+        }
+        deepest
+    }
+
+    /// `a` then `b` in series, flattened one level (both already normal).
+    pub fn series(a: Net, b: Net) -> Net {
+        Net::join(a, b, true)
+    }
+
+    /// `a` above `b` in parallel, flattened one level (both already normal).
+    pub fn parallel(a: Net, b: Net) -> Net {
+        Net::join(a, b, false)
+    }
+
+    fn join(a: Net, b: Net, series: bool) -> Net {
+        let open = |n: Net| match n {
+            Net::Series(v) if series => v,
+            Net::Parallel(v) if !series => v,
+            other => vec![other],
+        };
+        let mut items = open(a);
+        items.extend(open(b));
+        if series {
+            Net::Series(items)
+        } else {
+            Net::Parallel(items)
         }
     }
 
     /// The first cell of the network (for error messages).
     pub fn first_pos(&self) -> Pos {
-        match self {
-            Net::Leaf(_, p) => *p,
-            Net::Series(v) | Net::Parallel(v) => v.first().map_or(Pos::new(0, 0), Net::first_pos),
+        let mut n = self;
+        loop {
+            match n {
+                Net::Leaf(_, p) => return *p,
+                Net::Series(v) | Net::Parallel(v) => match v.first() {
+                    Some(first) => n = first,
+                    None => return Pos::new(0, 0),
+                },
+            }
         }
     }
 
@@ -89,6 +143,34 @@ fn group(items: Vec<Net>, series: bool) -> Net {
     }
 }
 
+/// Why a set of elements is not one series-parallel network.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NetError {
+    /// A bridge between branches (or a loop): a cell of the part that
+    /// would not reduce.
+    NotSeriesParallel(Pos),
+    /// Series and parallel blocks nest deeper than [`MAX_NESTING`]: a cell
+    /// of the innermost part that does.
+    TooDeep(Pos),
+    /// No path joins the rail to the outputs.
+    NoPath,
+}
+
+impl fmt::Display for NetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NetError::NotSeriesParallel(_) => f.write_str(
+                "this network is not series-parallel (a bridge between branches): redraw it as series and parallel blocks",
+            ),
+            NetError::TooDeep(_) => write!(
+                f,
+                "series and parallel blocks nest more than {MAX_NESTING} deep here (docs/limits.md)"
+            ),
+            NetError::NoPath => f.write_str("no path of contacts joins the left rail to this output"),
+        }
+    }
+}
+
 /// A rung's meaning: one condition driving its outputs, top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct RungLogic {
@@ -106,9 +188,18 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
     if rung.is_empty() {
         return Ok(None);
     }
-    let err = |pos: Pos, m: &str| LadderError::at(index, pos, m);
+    let err = |pos: Pos, kind: LadderErrorKind, m: &str| LadderError::at(index, pos, m).kind(kind);
     let rows = rung.cells.len();
     let width = rung.width();
+    if (rows as u128) * (width as u128 + 1) > MAX_RUNG_CELLS as u128 {
+        return Err(vec![LadderError::rung(
+            index,
+            format!(
+                "the rung spans {rows} rows and {width} columns, more than the {MAX_RUNG_CELLS} cells a rung may have (docs/limits.md)"
+            ),
+        )
+        .kind(LadderErrorKind::Limit)]);
+    }
     let mut errors = Vec::new();
 
     // The output column: every output stands in it, nothing to its right.
@@ -121,32 +212,38 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
         return Err(vec![LadderError::rung(
             index,
             "the rung has no output: end it with a coil or an output box",
-        )]);
+        )
+        .kind(LadderErrorKind::NoOutput)]);
     };
     for (p, e) in rung.elements() {
         if e.is_output() && p.col != out_col {
             errors.push(err(
                 p,
+                LadderErrorKind::Placement,
                 "outputs must line up in the rung's last column: move this one right",
             ));
         } else if !e.is_output() && p.col >= out_col {
             errors.push(err(
                 p,
+                LadderErrorKind::Placement,
                 "nothing may follow an output: coils and output boxes end the rung",
             ));
         }
     }
 
     // Electrical points: (row, edge) for edge 0..=width; edge 0 is the rail.
+    let points = rows * (width + 1);
     let node = |r: usize, b: usize| r * (width + 1) + b;
-    let mut uf = UnionFind::new(rows * (width + 1));
+    let mut uf = UnionFind::new(points);
     for r in 1..rows {
         uf.union(node(0, 0), node(r, 0));
     }
     for link in &rung.links {
-        if link.row + 1 >= rows || link.col > width {
+        // Checked: a link's numbers come straight from the file.
+        if link.row.checked_add(1).is_none_or(|below| below >= rows) || link.col > width {
             errors.push(err(
                 Pos::new(link.row, link.col),
+                LadderErrorKind::Wiring,
                 "a vertical link reaches past the rung's last row or column",
             ));
             continue;
@@ -169,15 +266,10 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
         if uf.find(node(p.row, out_col)) != bus {
             errors.push(err(
                 *p,
+                LadderErrorKind::Wiring,
                 "this output is not joined to the first output's condition: give it its own rung or link it",
             ));
         }
-    }
-    if bus == rail {
-        errors.push(err(
-            outputs[0].1,
-            "the output is wired straight to the left rail: put a contact before it",
-        ));
     }
 
     // Edges: every contact and in-line box, left point to right point.
@@ -190,6 +282,7 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
         if a == b {
             errors.push(err(
                 p,
+                LadderErrorKind::Wiring,
                 "short circuit: a wire joins both sides of this element",
             ));
             continue;
@@ -198,8 +291,20 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
             from: a,
             to: b,
             net: Net::Leaf(e.clone(), p),
-            key: p,
         });
+    }
+    // A shorted contact is the cause when the output also sits on the
+    // rail; only then is the output itself the problem.
+    if bus == rail
+        && !errors
+            .iter()
+            .any(|e| e.message.starts_with("short circuit"))
+    {
+        errors.push(err(
+            outputs[0].1,
+            LadderErrorKind::Wiring,
+            "the output is wired straight to the left rail: put a contact before it",
+        ));
     }
     if !errors.is_empty() {
         return Err(errors);
@@ -207,13 +312,15 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
 
     // Only what lies on a path from the rail to the outputs counts; an
     // element or wire that does not is dangling.
-    let forward = reach(&edges, rail, |e| (e.from, e.to));
-    let backward = reach(&edges, bus, |e| (e.to, e.from));
-    let useful = |n: usize| forward.contains(&n) && backward.contains(&n);
+    let ends: Vec<(usize, usize)> = edges.iter().map(|e| (e.from, e.to)).collect();
+    let forward = reduce::reach(&ends, points, rail, true);
+    let backward = reduce::reach(&ends, points, bus, false);
+    let useful = |n: usize| forward[n] && backward[n];
     for e in &edges {
         if !(useful(e.from) && useful(e.to)) {
             errors.push(err(
-                e.key,
+                e.net.first_pos(),
+                LadderErrorKind::Dangling,
                 "dangling: this element is not on a path from the left rail to the outputs",
             ));
         }
@@ -222,6 +329,7 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
         if matches!(e, Element::Wire) && !useful(uf.find(node(p.row, p.col))) {
             errors.push(err(
                 p,
+                LadderErrorKind::Dangling,
                 "dangling wire: it does not join the left rail to the outputs",
             ));
         }
@@ -229,6 +337,7 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
     if !useful(bus) && errors.is_empty() {
         errors.push(err(
             outputs[0].1,
+            LadderErrorKind::Wiring,
             "no path of contacts joins the left rail to this output",
         ));
     }
@@ -236,136 +345,73 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
         return Err(errors);
     }
 
-    let condition = reduce(edges, rail, bus).map_err(|pos| {
-        vec![err(
-            pos,
-            "this network is not series-parallel (a bridge between branches): redraw it as series and parallel blocks",
-        )]
+    let condition = reduce::reduce(edges, points, rail, bus).map_err(|e| {
+        let (pos, kind) = match e {
+            NetError::NotSeriesParallel(p) => (p, LadderErrorKind::NotSeriesParallel),
+            NetError::TooDeep(p) => (p, LadderErrorKind::Limit),
+            NetError::NoPath => (outputs[0].1, LadderErrorKind::Wiring),
+        };
+        vec![err(pos, kind, &e.to_string())]
     })?;
     Ok(Some(RungLogic {
-        condition: condition.normalised(),
+        condition,
         outputs,
         comment: rung.comment.clone(),
     }))
 }
 
-/// The series-parallel network between `rail` and `bus` in a graph of
-/// elements (`from` point, `to` point, leaf): only the edges on a path
-/// from one to the other count. `Err` holds a cell of a part that is not
-/// series-parallel, or `None` when no path joins them.
-pub(crate) fn network(
-    edges: Vec<(usize, usize, Net)>,
+/// The network between `rail` and each of `buses` in one graph of
+/// elements over `points` points (PLCopen bodies feed many coils from one
+/// rail). Each is reduced from only the part of the graph on a path from
+/// the rail to its bus, so the work is the sum of those parts, not the
+/// whole graph once per bus.
+pub(crate) fn reduce_all(
+    edges: &[Edge],
+    points: usize,
     rail: usize,
-    bus: usize,
-) -> Result<Net, Option<Pos>> {
-    let edges: Vec<Edge> = edges
-        .into_iter()
-        .map(|(from, to, net)| Edge {
-            from,
-            to,
-            key: net.top_left(),
-            net,
-        })
-        .collect();
-    let forward = reach(&edges, rail, |e| (e.from, e.to));
-    let backward = reach(&edges, bus, |e| (e.to, e.from));
-    let useful: Vec<Edge> = edges
-        .into_iter()
-        .filter(|e| forward.contains(&e.from) && backward.contains(&e.to))
-        .collect();
-    if useful.is_empty() {
-        return Err(None);
-    }
-    reduce(useful, rail, bus).map(Net::normalised).map_err(Some)
-}
-
-struct Edge {
-    from: usize,
-    to: usize,
-    net: Net,
-    key: Pos,
-}
-
-fn reach(edges: &[Edge], start: usize, dir: impl Fn(&Edge) -> (usize, usize)) -> BTreeSet<usize> {
-    let mut seen = BTreeSet::from([start]);
-    let mut todo = vec![start];
-    while let Some(n) = todo.pop() {
-        for e in edges {
-            let (a, b) = dir(e);
-            if a == n && seen.insert(b) {
-                todo.push(b);
-            }
+    buses: &[usize],
+) -> Vec<Result<Net, NetError>> {
+    let ends: Vec<(usize, usize)> = edges.iter().map(|e| (e.from, e.to)).collect();
+    let forward = reduce::reach(&ends, points, rail, true);
+    let mut entering: Vec<Vec<usize>> = vec![Vec::new(); points];
+    for (i, &(from, to)) in ends.iter().enumerate() {
+        if forward[from] {
+            entering[to].push(i);
         }
     }
-    seen
-}
-
-/// Series-parallel reduction; on failure, a cell of the part that would
-/// not reduce.
-fn reduce(mut edges: Vec<Edge>, rail: usize, bus: usize) -> Result<Net, Pos> {
-    loop {
-        let before = edges.len();
-        // Parallel: edges with the same ends merge, top branch first.
-        let mut groups: BTreeMap<(usize, usize), Vec<Edge>> = BTreeMap::new();
-        for e in edges.drain(..) {
-            groups.entry((e.from, e.to)).or_default().push(e);
-        }
-        for ((from, to), group) in groups {
-            if group.len() == 1 {
-                edges.extend(group);
-                continue;
-            }
-            // Branches merged earlier are spread out again so that all
-            // of them sort top to bottom together.
-            let key = group.iter().map(|e| e.key).min().unwrap_or(Pos::new(0, 0));
-            let mut branches: Vec<Net> = Vec::new();
-            for e in group {
-                match e.net {
-                    Net::Parallel(v) => branches.extend(v),
-                    other => branches.push(other),
+    buses
+        .iter()
+        .map(|&bus| {
+            // Backwards from the bus: the edges that lead to it from the rail.
+            let mut local: std::collections::HashMap<usize, usize> = Default::default();
+            local.insert(bus, 0);
+            let mut todo = vec![bus];
+            let mut part = Vec::new();
+            while let Some(n) = todo.pop() {
+                for &i in &entering[n] {
+                    let from = ends[i].0;
+                    let next = local.len();
+                    local.entry(from).or_insert_with(|| {
+                        todo.push(from);
+                        next
+                    });
+                    part.push(i);
                 }
             }
-            branches.sort_by_key(Net::top_left);
-            edges.push(Edge {
-                from,
-                to,
-                net: Net::Parallel(branches),
-                key,
-            });
-        }
-        // Series: a point with one edge in and one out joins them.
-        let mut degree: BTreeMap<usize, (usize, usize)> = BTreeMap::new();
-        for e in &edges {
-            degree.entry(e.from).or_default().1 += 1;
-            degree.entry(e.to).or_default().0 += 1;
-        }
-        if let Some((&mid, _)) = degree
-            .iter()
-            .find(|(&n, &d)| n != rail && n != bus && d == (1, 1))
-        {
-            let i = edges.iter().position(|e| e.to == mid).unwrap_or(0);
-            let left = edges.swap_remove(i);
-            let j = edges.iter().position(|e| e.from == mid).unwrap_or(0);
-            let right = edges.swap_remove(j);
-            edges.push(Edge {
-                from: left.from,
-                to: right.to,
-                key: left.key.min(right.key),
-                net: Net::Series(vec![left.net, right.net]),
-            });
-        }
-        if edges.len() == 1 && edges[0].from == rail && edges[0].to == bus {
-            return Ok(edges.remove(0).net);
-        }
-        if edges.len() == before {
-            let stuck = edges
-                .iter()
-                .find(|e| e.from != rail || e.to != bus)
-                .or(edges.first())
-                .map_or(Pos::new(0, 0), |e| e.net.first_pos());
-            return Err(stuck);
-        }
-    }
+            let Some(&local_rail) = local.get(&rail) else {
+                return Err(NetError::NoPath);
+            };
+            let part = part
+                .into_iter()
+                .map(|i| Edge {
+                    from: local[&ends[i].0],
+                    to: local[&ends[i].1],
+                    net: edges[i].net.clone(),
+                })
+                .collect();
+            reduce::reduce(part, local.len(), local_rail, 0)
+        })
+        .collect()
 }
 
 struct UnionFind(Vec<usize>);
@@ -390,84 +436,6 @@ impl UnionFind {
             self.0[b] = a;
         } else {
             self.0[a] = b;
-        }
-    }
-}
-
-/// Draws a rung's logic on a grid: series left to right, parallel
-/// branches below each other, outputs in the last column.
-pub fn layout(logic: &RungLogic) -> Rung {
-    let mut rung = Rung {
-        comment: logic.comment.clone(),
-        ..Rung::default()
-    };
-    let (width, _) = place(&logic.condition, &mut rung, 0, 0);
-    for (i, (e, _)) in logic.outputs.iter().enumerate() {
-        rung.set(Pos::new(i, width), Some(e.clone()));
-        if i > 0 {
-            rung.links.push(Link {
-                row: i - 1,
-                col: width,
-            });
-        }
-    }
-    rung.links.sort();
-    rung.links.dedup();
-    rung
-}
-
-/// The (width, height) a network takes.
-fn measure(net: &Net) -> (usize, usize) {
-    match net {
-        Net::Leaf(..) => (1, 1),
-        Net::Series(v) => v
-            .iter()
-            .map(measure)
-            .fold((0, 1), |(w, h), (cw, ch)| (w + cw, h.max(ch))),
-        Net::Parallel(v) => v
-            .iter()
-            .map(measure)
-            .fold((0, 0), |(w, h), (cw, ch)| (w.max(cw), h + ch)),
-    }
-}
-
-fn place(net: &Net, rung: &mut Rung, row: usize, col: usize) -> (usize, usize) {
-    match net {
-        Net::Leaf(e, _) => {
-            rung.set(Pos::new(row, col), Some(e.clone()));
-            (1, 1)
-        }
-        Net::Series(v) => {
-            let (mut x, mut h) = (col, 1);
-            for n in v {
-                let (w, nh) = place(n, rung, row, x);
-                x += w;
-                h = h.max(nh);
-            }
-            (x - col, h)
-        }
-        Net::Parallel(v) => {
-            let (width, _) = measure(net);
-            let mut r = row;
-            let mut last_top = row;
-            for n in v {
-                let (w, h) = place(n, rung, r, col);
-                for c in col + w..col + width {
-                    rung.set(Pos::new(r, c), Some(Element::Wire));
-                }
-                last_top = r;
-                r += h;
-            }
-            for k in row..last_top {
-                if col > 0 {
-                    rung.links.push(Link { row: k, col });
-                }
-                rung.links.push(Link {
-                    row: k,
-                    col: col + width,
-                });
-            }
-            (width, r - row)
         }
     }
 }

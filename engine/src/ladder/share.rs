@@ -49,7 +49,7 @@ impl fmt::Display for ShareError {
         match self {
             ShareError::Version(v) => write!(
                 f,
-                "this share link is format \"{v}\", which this Hashigo does not read (it reads {PREFIX}…)"
+                "this share link is format {}, which this Hashigo does not read (it reads {PREFIX}…)", crate::error::shown(&v)
             ),
             ShareError::Base64 => f.write_str("this share link is damaged: it is not base64url text"),
             ShareError::Inflate => f.write_str("this share link is damaged: its data does not unpack"),

@@ -130,6 +130,9 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, S
             if machine == MachineId::MinasecU {
                 minasec_coil(*kind, &device)?;
             }
+            if machine == MachineId::Io86a {
+                io86a_coil(*kind, &device)?;
+            }
             Element::Coil {
                 kind: *kind,
                 device,
@@ -211,11 +214,17 @@ fn canonical(machine: MachineId, device: &str, role: Role) -> Result<String, Str
         MachineId::AvrPlc => parse_register_bit(device)
             .map(|b| b.to_string())
             .ok_or_else(|| {
-                format!("unknown device \"{device}\": avr-plc ladders name bits R0.0-R31.7")
+                format!(
+                    "unknown device {}: avr-plc ladders name bits R0.0-R31.7",
+                    crate::error::shown(&device)
+                )
             }),
         MachineId::ArduinoPlc => {
             let n = arduino::isa::parse_io(device).ok_or_else(|| {
-                format!("unknown device \"{device}\": arduino-plc has X000-X005 and Y000-Y005")
+                format!(
+                    "unknown device {}: arduino-plc has X000-X005 and Y000-Y005",
+                    crate::error::shown(&device)
+                )
             })?;
             if role == Role::Write && n < 8 {
                 return Err(format!(
@@ -264,6 +273,18 @@ fn io86a_canonical(device: &str, role: Role) -> Result<String, String> {
             Ok(b.to_string())
         }
     }
+}
+
+/// An IO86A counter is driven by a counter coil with its set value
+/// (`OUT C07 K10`); a plain or inverted coil would compile to `OUT C07`
+/// with no `K`, which the machine refuses.
+fn io86a_coil(kind: CoilKind, device: &str) -> Result<(), String> {
+    if matches!(kind, CoilKind::Normal | CoilKind::Inverted) && device.starts_with('C') {
+        return Err(format!(
+            "a plain coil cannot drive counter {device}: use a counter coil with its set value (OUT {device} K10), or a set/reset coil"
+        ));
+    }
+    Ok(())
 }
 
 /// MINASEC-U's T0 / T1 / C0 / C0R are wired, not latched: a set or reset

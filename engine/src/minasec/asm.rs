@@ -263,7 +263,11 @@ pub enum AsmError {
 impl fmt::Display for AsmError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            AsmError::BadStepNumber(n) => write!(f, "bad step number \"{n}\": steps are 0..255"),
+            AsmError::BadStepNumber(n) => write!(
+                f,
+                "bad step number {}: steps are 0..255",
+                crate::error::shown(&n)
+            ),
             AsmError::StepOutOfOrder { found, expected } => write!(
                 f,
                 "step {found} is out of order: the next step here is {expected} or later"
@@ -271,13 +275,15 @@ impl fmt::Display for AsmError {
             AsmError::MissingOpcode => f.write_str("a step number without an instruction"),
             AsmError::UnknownOpcode(w) => write!(
                 f,
-                "unknown opcode \"{w}\": MINASEC-U has LD LDI AND ANDI OR ORI ST STI"
+                "unknown opcode {}: MINASEC-U has LD LDI AND ANDI OR ORI ST STI",
+                crate::error::shown(&w)
             ),
             AsmError::MissingOperand(op) => write!(f, "{op} needs an operand, e.g. {op} X00"),
             AsmError::Operand(e) => e.fmt(f),
             AsmError::Unexpected(w) => write!(
                 f,
-                "unexpected \"{w}\" after the operand (a binary column is 8 bits, e.g. 100 01000)"
+                "unexpected {} after the operand (a binary column is 8 bits, e.g. 100 01000)",
+                crate::error::shown(&w)
             ),
             AsmError::BinaryMismatch { written, expected } => write!(
                 f,

@@ -152,12 +152,16 @@ impl fmt::Display for SettingError {
                 )
             }
             SettingError::PresetOutOfRange(v) => {
-                write!(f, "counter set value {v} is out of range: 0..99 (two BCD digits)")
+                write!(
+                    f,
+                    "counter set value {v} is out of range: 0..99 (two BCD digits)"
+                )
             }
             SettingError::NoSuchInput(n) => write!(f, "input X{n:02} does not exist: X00..X07"),
             SettingError::BadClock(t) => write!(
                 f,
-                "bad clock \"{t}\": write fast, slow, or a frequency in Hz from {MIN_HZ} to {MAX_HZ}"
+                "bad clock {}: write fast, slow, or a frequency in Hz from {MIN_HZ} to {MAX_HZ}",
+                crate::error::shown(&t)
             ),
         }
     }

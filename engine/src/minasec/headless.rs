@@ -79,7 +79,8 @@ impl Machine {
             "CLOCK" => Command::SetClock(ClockSpeed::parse(value).map_err(|e| e.to_string())?),
             _ => {
                 return Err(format!(
-                    "unknown setting \"{name}\": minasec-u takes T0, T1, C0 and clock"
+                    "unknown setting {}: minasec-u takes T0, T1, C0 and clock",
+                    crate::error::shown(&name)
                 ))
             }
         };

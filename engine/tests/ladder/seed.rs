@@ -1,7 +1,7 @@
 //! The seed's MINASEC-U test program drawn as a ladder compiles to a
 //! program that behaves like the seed's own listing.
 
-use engine::headless::{run, Schedule, Simulation};
+use engine::headless::{run_csv as run, Schedule, Simulation};
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::Project;
 use engine::minasec::{Machine, Program};

@@ -85,9 +85,12 @@ fn load(args: &Args) -> Result<Source, Problems> {
         MachineId::MinasecU => minasec::Program::parse(text)
             .map(|p| Loaded::MinasecU(Box::new(p)))
             .map_err(|errors| parsed.located(&errors)),
-        MachineId::AvrPlc => avr::Program::parse(text, avr_scan_ms(args, &settings))
-            .map(Loaded::Avr)
-            .map_err(|errors| parsed.located(&errors)),
+        MachineId::AvrPlc => {
+            let scan = avr_scan_ms(args, &source.name, &settings)?;
+            avr::Program::parse(text, i64::from(scan))
+                .map(Loaded::Avr)
+                .map_err(|errors| parsed.located(&errors))
+        }
         MachineId::ArduinoPlc => arduino::Program::parse(text, arduino::Chip::Atmega328.capacity())
             .map(Loaded::Arduino)
             .map_err(|errors| parsed.located(&errors)),
@@ -111,9 +114,12 @@ fn compile_source(
     flag: Option<MachineId>,
 ) -> Result<(MachineId, String, Settings), Problems> {
     let (ladder, machine, settings) = read_ladder(source, format, flag)?;
-    let options = Options {
-        avr_scan_ms: avr_scan_ms(args, &settings) as u32,
+    let avr_scan_ms = if machine == MachineId::AvrPlc {
+        avr_scan_ms(args, &source.name, &settings)?
+    } else {
+        10
     };
+    let options = Options { avr_scan_ms };
     let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
         errors
             .iter()
@@ -159,18 +165,28 @@ fn read_ladder(
     Ok((ladder, machine, Vec::new()))
 }
 
-/// The `Scan` symbol of AVR sources: the scan period in ms from
-/// `--set scan=` (a bad value is reported by the settings), else the
-/// project's, else 10.
-fn avr_scan_ms(args: &Args, project: &[(String, String)]) -> i64 {
-    project
+/// The `Scan` symbol of AVR sources: the scan period in ms from the last
+/// `--set scan=`, else the project's, else 10. A bad value is one problem,
+/// worded as the settings check words it (so a run that also applies the
+/// settings reports it once).
+fn avr_scan_ms(args: &Args, source: &str, project: &[(String, String)]) -> Result<u32, Problems> {
+    let from_project = project
         .iter()
-        .map(|(n, v)| (n.as_str(), v.as_str()))
-        .chain(args.all("set").filter_map(|s| s.split_once('=')))
         .filter(|(n, _)| n.trim().eq_ignore_ascii_case("scan"))
-        .filter_map(|(_, v)| SimTime::parse(v.trim()).ok())
-        .last()
-        .map_or(10, |t| (t.as_nanos() / 1_000_000) as i64)
+        .map(|(n, v)| (format!("{source}: setting {n}={v}"), v.as_str()));
+    let from_flags = args.all("set").filter_map(|s| {
+        let (n, v) = s.split_once('=')?;
+        n.trim()
+            .eq_ignore_ascii_case("scan")
+            .then(|| (format!("--set {s}"), v))
+    });
+    let Some((what, value)) = from_project.chain(from_flags).last() else {
+        return Ok(10);
+    };
+    SimTime::parse(value.trim())
+        .map_err(|e| e.to_string())
+        .and_then(avr::scan_ms)
+        .map_err(|e| one(format!("{what}: {e}")))
 }
 
 /// `hashigo run`.
@@ -207,9 +223,15 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
                 ("", &[]),
                 problems,
             ),
-            Some(_) => run_with(
+            Some(MachineId::Io86a) => run_with(
                 &args,
                 io86a::Machine::new(io86a::Program::default()),
+                ("", &[]),
+                problems,
+            ),
+            Some(MachineId::AvrPlc) => run_with(
+                &args,
+                avr::Machine::new(avr::Program::default()),
                 ("", &[]),
                 problems,
             ),
@@ -283,8 +305,18 @@ fn run_with<S: Simulation>(
             None
         }
     };
+    if args.optional("program") == Ok(Some("-")) && args.optional("input") == Ok(Some("-")) {
+        problems.push(
+            "--program - and --input - both read standard input: give one of them as a file"
+                .to_string(),
+        );
+    }
     let until = until.map_err(|p| problems.push(p)).ok();
     let every = every.map_err(|p| problems.push(p)).ok();
+    // A problem found both while loading and while checking settings is
+    // said once.
+    let mut seen = std::collections::HashSet::new();
+    problems.retain(|p| seen.insert(p.clone()));
     let (Some(until), Some(every)) = (until, every) else {
         return Err(problems);
     };
@@ -300,7 +332,9 @@ fn run_with<S: Simulation>(
         Some((source, list)) => (source.name.as_str(), list.as_slice()),
         None => ("", &[][..]),
     };
-    let csv = headless::run(&mut sim, event_list, schedule, &watch).map_err(|errors| {
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    headless::run(&mut sim, event_list, schedule, &watch, &mut out).map_err(|errors| {
         errors
             .into_iter()
             .map(|e| match e {
@@ -309,13 +343,15 @@ fn run_with<S: Simulation>(
                     format!("{source_name}:{}: {}", located.line, located.error)
                 }
                 RunError::ZeroInterval => "--every must be greater than zero".to_string(),
-                RunError::TooManyRows(n) => {
-                    format!("--every is so small that the run would print more than {n} rows")
-                }
+                RunError::TooManyValues(n) => format!(
+                    "--every is so small that the run would print more than {n} values (rows × watched devices; docs/limits.md)"
+                ),
+                RunError::Output(e) => format!("<stdout>: cannot write: {e}"),
             })
             .collect::<Vec<_>>()
     })?;
-    print!("{csv}");
+    out.flush()
+        .map_err(|e| one(format!("<stdout>: cannot write: {e}")))?;
     Ok(())
 }
 
@@ -465,10 +501,21 @@ pub fn console(rest: &[String]) -> Result<(), Problems> {
         for typed in typed_lines(&line) {
             let _ = write!(out, "{}", terminal.type_line(&mut machine, typed));
             let _ = out.flush();
-            machine.run_until(machine.now() + step);
+            machine.run_until(advance(machine.now(), step)?);
         }
     }
     Ok(())
+}
+
+/// `now + step` on the simulated clock, or the problem when that passes
+/// the clock's limit (docs/limits.md).
+fn advance(now: SimTime, step: SimTime) -> Result<SimTime, Problems> {
+    now.checked_add(step).ok_or_else(|| {
+        one(format!(
+            "--step: the simulated clock would pass its limit of {}s (docs/limits.md)",
+            engine::limits::MAX_SIM_TIME.as_nanos() / 1_000_000_000
+        ))
+    })
 }
 
 /// The lines typed in one line of standard input: LF and CR LF end a line
@@ -503,7 +550,7 @@ fn arduino_console(args: &Args) -> Result<(), Problems> {
         for typed in typed_lines(&line) {
             let _ = write!(out, "{}", arduino::monitor::type_line(&mut machine, typed));
             let _ = out.flush();
-            machine.run_until(machine.now() + step);
+            machine.run_until(advance(machine.now(), step)?);
         }
     }
     Ok(())
@@ -522,7 +569,48 @@ pub fn compile(rest: &[String]) -> Result<(), Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let (_, text, _) = compile_source(&args, &source, format, flag)?;
+    let (machine, text, _) = compile_source(&args, &source, format, flag)?;
+    check_settings(&args, machine)?;
     print!("{text}");
     Ok(())
+}
+
+/// Checks every `--set` against `machine` (compile takes them for the
+/// AVR PLC's scan period; a setting the machine lacks is still an error).
+fn check_settings(args: &Args, machine: MachineId) -> Result<(), Problems> {
+    let mut problems = Vec::new();
+    let mut check = |sim: &mut dyn FnMut(&str, &str) -> Result<(), String>| {
+        for setting in args.all("set") {
+            let result = match setting.split_once('=') {
+                Some((name, value)) => sim(name.trim(), value.trim()),
+                None => Err("expected NAME=VALUE".to_string()),
+            };
+            if let Err(e) = result {
+                problems.push(format!("--set {setting}: {e}"));
+            }
+        }
+    };
+    match machine {
+        MachineId::MinasecU => {
+            let mut m = Machine::for_run();
+            check(&mut |n, v| m.apply_setting(n, v));
+        }
+        MachineId::Io86a => {
+            let mut m = io86a::Machine::new(io86a::Program::default());
+            check(&mut |n, v| m.apply_setting(n, v));
+        }
+        MachineId::AvrPlc => {
+            let mut m = avr::Machine::new(avr::Program::default());
+            check(&mut |n, v| m.apply_setting(n, v));
+        }
+        MachineId::ArduinoPlc => {
+            let mut m = arduino_for_run(&arduino::Program::default());
+            check(&mut |n, v| m.apply_setting(n, v));
+        }
+    }
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(problems)
+    }
 }

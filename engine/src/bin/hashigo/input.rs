@@ -59,7 +59,8 @@ impl Format {
                 "json" => Ok(Format::Json),
                 "xml" => Ok(Format::Xml),
                 other => Err(format!(
-                    "unknown --format \"{other}\": il, asm, json or xml"
+                    "unknown --format {}: il, asm, json or xml",
+                    engine::shown(&other)
                 )),
             };
         }

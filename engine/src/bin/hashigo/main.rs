@@ -35,7 +35,10 @@ fn main() -> ExitCode {
             println!("{USAGE}");
             Ok(())
         }
-        other => Err(vec![format!("unknown command \"{other}\"\n{USAGE}")]),
+        other => Err(vec![format!(
+            "unknown command {}\n{USAGE}",
+            engine::shown(&other)
+        )]),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

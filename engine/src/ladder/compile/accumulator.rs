@@ -34,6 +34,8 @@ enum Op {
 
 struct Compiler {
     machine: MachineId,
+    /// The AVR PLC's scan period in ms: in-line timers count scans.
+    scan_ms: u32,
     ops: Vec<Op>,
     temps: Temps,
     timers: Vec<String>,
@@ -62,6 +64,7 @@ pub fn compile(
     };
     let mut c = Compiler {
         machine,
+        scan_ms: options.avr_scan_ms,
         ops: Vec::new(),
         temps: Temps::new(candidates, rungs, what),
         timers: Vec::new(),
@@ -229,6 +232,7 @@ impl Compiler {
                 name,
                 preset_ms,
             } => {
+                timer_scans(*kind, *preset_ms, self.scan_ms)?;
                 let index = self.timers.len();
                 self.timers.push(name.clone());
                 self.ops.push(Op::Timer(*kind, index, *preset_ms));
@@ -436,6 +440,26 @@ impl Compiler {
         out.push_str(".db End_PLC,0,0,0\n");
         out
     }
+}
+
+/// The preset of an AVR in-line timer in scans: its record holds a 16-bit
+/// count of scans (`LOW(ms/Scan), HIGH(ms/Scan)`), so a set time that is
+/// not a whole number of scans, is under one scan, or needs more than
+/// 65 535 scans would run for another time than the one drawn: refused.
+fn timer_scans(kind: TimerKind, preset_ms: u32, scan_ms: u32) -> Result<u16, String> {
+    let name = kind.name();
+    let scan_ms = scan_ms.max(1);
+    if preset_ms < scan_ms || !preset_ms.is_multiple_of(scan_ms) {
+        return Err(format!(
+            "{name} {preset_ms} ms is not a whole number of {scan_ms} ms scans: the AVR PLC's timers count scans"
+        ));
+    }
+    u16::try_from(preset_ms / scan_ms).map_err(|_| {
+        format!(
+            "{name} {preset_ms} ms is {} scans of {scan_ms} ms: the AVR PLC's timers count at most 65535",
+            preset_ms / scan_ms
+        )
+    })
 }
 
 /// A comment on one line (newlines would end the `;` comment).

@@ -5,6 +5,7 @@ use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
 use crate::error::Located;
+use crate::limits::{MAX_INPUT_BYTES, MAX_XML_DEPTH};
 
 /// One XML element.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -122,8 +123,19 @@ fn start(e: &BytesStart, line: usize) -> Result<Node, String> {
     })
 }
 
-/// Parses `text` into its root element; errors name their line.
+/// Parses `text` into its root element; errors name their line. Nesting
+/// past [`MAX_XML_DEPTH`] and text past [`MAX_INPUT_BYTES`] are refused
+/// before they are built, so every walk over the tree is shallow.
 pub fn parse(text: &str) -> Result<Node, Located<String>> {
+    if text.len() > MAX_INPUT_BYTES {
+        return Err(Located::new(
+            1,
+            format!(
+                "the file is {} bytes, more than the {MAX_INPUT_BYTES} a PLCopen file may have (docs/limits.md)",
+                text.len()
+            ),
+        ));
+    }
     let mut reader = Reader::from_str(text);
     reader.config_mut().trim_text(true);
     let mut stack: Vec<Node> = Vec::new();
@@ -147,7 +159,17 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
             )
         })?;
         match event {
-            Event::Start(e) => stack.push(start(&e, line).map_err(|m| Located::new(line, m))?),
+            Event::Start(e) => {
+                if stack.len() >= MAX_XML_DEPTH {
+                    return Err(Located::new(
+                        line,
+                        format!(
+                            "elements nest more than {MAX_XML_DEPTH} deep here (docs/limits.md)"
+                        ),
+                    ));
+                }
+                stack.push(start(&e, line).map_err(|m| Located::new(line, m))?)
+            }
             Event::Empty(e) => {
                 let node = start(&e, line).map_err(|m| Located::new(line, m))?;
                 match stack.last_mut() {

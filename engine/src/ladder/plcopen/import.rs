@@ -3,7 +3,7 @@
 //! group of coils fed from one point becomes a rung whose condition is the
 //! series-parallel network between the left rail and that point.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::dom::{self, Node};
 use super::{parse_time_literal, NS_V10, NS_V201};
@@ -11,8 +11,9 @@ use crate::error::Located;
 use crate::io86a::{isa::parse_bit, Bit};
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{Ladder, Pos};
-use crate::ladder::net::{layout, network, Net, RungLogic};
+use crate::ladder::net::{reduce_all, try_layout, Edge, Net, NetError, RungLogic};
 use crate::ladder::target::check_element;
+use crate::limits::MAX_RUNGS;
 use crate::MachineId;
 
 type Errors = Vec<Located<String>>;
@@ -40,7 +41,10 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
         Some(other) => {
             return Err(vec![Located::new(
                 root.line,
-                format!("namespace \"{other}\" is not PLCopen TC6 ({NS_V201} or {NS_V10})"),
+                format!(
+                    "namespace {} is not PLCopen TC6 ({NS_V201} or {NS_V10})",
+                    crate::error::shown(&other)
+                ),
             )])
         }
     }
@@ -60,7 +64,20 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
     let mut errors = Vec::new();
     for ld in bodies {
         match Body::read(ld).and_then(|b| b.rungs(machine)) {
-            Ok(rungs) => ladder.rungs.extend(rungs.iter().map(layout)),
+            Ok(rungs) => {
+                for (logic, line) in rungs {
+                    match try_layout(&logic) {
+                        Ok(rung) => ladder.rungs.push(rung),
+                        Err(m) => errors.push(Located::new(line, m)),
+                    }
+                }
+                if ladder.rungs.len() > MAX_RUNGS {
+                    return Err(vec![Located::new(
+                        ld.line,
+                        format!("the project has more than {MAX_RUNGS} rungs (docs/limits.md)"),
+                    )]);
+                }
+            }
             Err(e) => errors.extend(e),
         }
     }
@@ -76,8 +93,8 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
 struct Body {
     parent: Vec<usize>,
     points: HashMap<(String, String), usize>,
-    rails: Vec<String>,
-    kinds: HashMap<String, String>,
+    rails: HashSet<String>,
+    kinds: HashMap<String, (String, usize)>,
     literals: HashMap<String, (String, usize)>,
     /// Contacts and in-line blocks: (in point, out point, leaf, line).
     edges: Vec<(usize, usize, Net, usize)>,
@@ -108,9 +125,21 @@ impl Body {
                     .push(Located::new(n.line, format!("<{}> has no localId", n.name)));
                 continue;
             };
-            b.kinds.insert(id.to_string(), n.name.clone());
+            if let Some((_, first)) = b.kinds.get(id) {
+                b.errors.push(Located::new(
+                    n.line,
+                    format!(
+                        "localId {} is used again (first on line {first}): every element needs its own",
+                        crate::error::shown(id)
+                    ),
+                ));
+                continue;
+            }
+            b.kinds.insert(id.to_string(), (n.name.clone(), n.line));
             match n.name.as_str() {
-                "leftPowerRail" => b.rails.push(id.to_string()),
+                "leftPowerRail" => {
+                    b.rails.insert(id.to_string());
+                }
                 "inVariable" => {
                     let expr = n
                         .child("expression")
@@ -134,7 +163,7 @@ impl Body {
     }
 
     fn point(&mut self, id: &str, pin: &str) -> usize {
-        if self.rails.iter().any(|r| r == id) {
+        if self.rails.contains(id) {
             return RAIL;
         }
         let key = (id.to_string(), pin.to_string());
@@ -174,7 +203,7 @@ impl Body {
             let Some(r) = c.attr("refLocalId") else {
                 return Err(format!("a connection of the {what} has no refLocalId"));
             };
-            let kind = self.kinds.get(r).cloned();
+            let kind = self.kinds.get(r).map(|(k, _)| k.clone());
             let pin = match kind.as_deref() {
                 None => return Err(format!("the {what} connects to localId {r}, which does not exist")),
                 Some("block") => c.attr("formalParameter").unwrap_or("Q").to_string(),
@@ -202,12 +231,12 @@ impl Body {
                 let device = variable()
                     .filter(|v| !v.is_empty())
                     .ok_or("a contact with no variable")?;
-                let kind = match (n.attr("negated") == Some("true"), n.attr("edge")) {
-                    (false, None | Some("none")) => ContactKind::No,
-                    (true, None | Some("none")) => ContactKind::Nc,
+                let kind = match (negated(n)?, edge(n)?) {
+                    (false, None) => ContactKind::No,
+                    (true, None) => ContactKind::Nc,
                     (false, Some("rising")) => ContactKind::Rising,
-                    (false, Some("falling")) => ContactKind::Falling,
-                    _ => {
+                    (false, Some(_)) => ContactKind::Falling,
+                    (true, Some(_)) => {
                         return Err(format!(
                             "contact {device}: a negated edge contact has no ladder form here"
                         ))
@@ -228,13 +257,12 @@ impl Body {
                 let device = variable()
                     .filter(|v| !v.is_empty())
                     .ok_or("a coil with no variable")?;
-                let negated = n.attr("negated") == Some("true");
-                let element = match (negated, n.attr("storage"), n.attr("edge")) {
-                    (false, None | Some("none"), None | Some("none")) => coil(CoilKind::Normal, device),
-                    (true, None | Some("none"), None | Some("none")) => coil(CoilKind::Inverted, device),
-                    (false, Some("set"), None | Some("none")) => coil(CoilKind::Set, device),
-                    (false, Some("reset"), None | Some("none")) => coil(CoilKind::Reset, device),
-                    (false, None | Some("none"), Some(e @ ("rising" | "falling"))) => Element::Pulse {
+                let element = match (negated(n)?, storage(n)?, edge(n)?) {
+                    (false, None, None) => coil(CoilKind::Normal, device),
+                    (true, None, None) => coil(CoilKind::Inverted, device),
+                    (false, Some("set"), None) => coil(CoilKind::Set, device),
+                    (false, Some(_), None) => coil(CoilKind::Reset, device),
+                    (false, None, Some(e)) => Element::Pulse {
                         falling: e == "falling",
                         device,
                     },
@@ -304,7 +332,8 @@ impl Body {
             "TON" | "TOF" | "TP" => {
                 let (expr, _) = literal("PT")?;
                 let preset_ms = parse_time_literal(&expr).ok_or(format!(
-                    "{what}: PT \"{expr}\" is not a time literal like T#500ms"
+                    "{what}: PT {} is not a time literal like T#500ms",
+                    crate::error::shown(&expr)
                 ))?;
                 let kind = match ty.as_str() {
                     "TON" => TimerKind::Ton,
@@ -326,10 +355,12 @@ impl Body {
                     return Err(format!("{what}: wire R to nothing and reset the counter with a reset coil on {instance}"));
                 }
                 let (expr, _) = literal("PV")?;
-                let preset: u16 = expr
-                    .trim()
-                    .parse()
-                    .map_err(|_| format!("{what}: PV \"{expr}\" is not a whole number 0..32767"))?;
+                let preset: u16 = expr.trim().parse().map_err(|_| {
+                    format!(
+                        "{what}: PV {} is not a whole number 0..32767",
+                        crate::error::shown(&expr)
+                    )
+                })?;
                 Element::CounterCoil {
                     device: instance.clone(),
                     preset,
@@ -346,10 +377,11 @@ impl Body {
         Ok(())
     }
 
-    fn rungs(mut self, machine: Option<MachineId>) -> Result<Vec<RungLogic>, Errors> {
+    /// The rungs, each with the XML line of its first output.
+    fn rungs(mut self, machine: Option<MachineId>) -> Result<Vec<(RungLogic, usize)>, Errors> {
         // A TON or CTU whose output drives nothing is the machine's timer
         // or counter coil (`OUT T00 K19`).
-        let consumed: Vec<usize> = self
+        let consumed: HashSet<usize> = self
             .consumed
             .clone()
             .into_iter()
@@ -386,11 +418,15 @@ impl Body {
                     _ => {}
                 }
             }
-            edges.push((a, b, net));
+            edges.push(Edge {
+                from: a,
+                to: b,
+                net,
+            });
         }
         if let Some(m) = machine {
             let mut errors = Vec::new();
-            let leaves = edges.iter().filter_map(|(_, _, n)| match n {
+            let leaves = edges.iter().filter_map(|e| match &e.net {
                 Net::Leaf(e, p) => Some((e, lines.get(p).copied().unwrap_or(1))),
                 _ => None,
             });
@@ -410,66 +446,83 @@ impl Body {
             let bus = self.find(input);
             groups.entry(bus).or_default().push((e, pos, line));
         }
-        let mut rungs = Vec::new();
+        let mut buses = Vec::new();
         let mut errors = Vec::new();
-        let mut used = Vec::new();
-        for (bus, mut outs) in groups {
+        for (bus, outs) in &mut groups {
             outs.sort_by_key(|(_, p, _)| *p);
-            let first_line = outs[0].2;
-            if bus == rail {
+            if *bus == rail {
                 errors.push(Located::new(
-                    first_line,
+                    outs[0].2,
                     format!(
                         "{} is wired straight to the left rail: put a contact before it",
                         outs[0].0
                     ),
                 ));
-                continue;
+            } else {
+                buses.push(*bus);
             }
-            match network(edges.clone(), rail, bus) {
+        }
+        // Every group's network at once, each from the part of the graph
+        // that leads to it (linear in the sum of their sizes).
+        let conditions = reduce_all(&edges, self.parent.len(), rail, &buses);
+        let mut rungs = Vec::new();
+        let mut used = HashSet::new();
+        for (bus, condition) in buses.iter().zip(conditions) {
+            let outs = groups.remove(bus).unwrap_or_default();
+            let first_line = outs.first().map_or(1, |o| o.2);
+            let what = outs.first().map(|o| o.0.to_string()).unwrap_or_default();
+            match condition {
                 Ok(condition) => {
                     used.extend(condition.leaves().iter().map(|(_, p)| *p));
-                    rungs.push(RungLogic {
+                    let logic = RungLogic {
                         condition,
                         outputs: outs.into_iter().map(|(e, p, _)| (e, p)).collect(),
                         comment: String::new(),
-                    });
+                    };
+                    rungs.push((top(&logic), logic, first_line));
                 }
-                Err(None) => errors.push(Located::new(first_line, format!("no path joins the left rail to {}", outs[0].0))),
-                Err(Some(p)) => errors.push(Located::new(
+                Err(NetError::NoPath) => errors.push(Located::new(
+                    first_line,
+                    format!("no path joins the left rail to {what}"),
+                )),
+                Err(NetError::NotSeriesParallel(p)) => errors.push(Located::new(
                     lines.get(&p).copied().unwrap_or(first_line),
                     "this network is not series-parallel: Hashigo's ladders are series and parallel blocks".to_string(),
                 )),
+                Err(e @ NetError::TooDeep(p)) => errors.push(Located::new(
+                    lines.get(&p).copied().unwrap_or(first_line),
+                    e.to_string(),
+                )),
             }
         }
-        for (_, _, net) in &edges {
-            if let Net::Leaf(e, p) = net {
-                if !used.contains(p) && errors.is_empty() {
-                    errors.push(Located::new(
-                        lines.get(p).copied().unwrap_or(1),
-                        format!("{e} leads to no coil"),
-                    ));
-                }
+        if errors.is_empty() {
+            if let Some(p) = edges.iter().find_map(|e| match &e.net {
+                Net::Leaf(leaf, p) if !used.contains(p) => Some((leaf, *p)),
+                _ => None,
+            }) {
+                errors.push(Located::new(
+                    lines.get(&p.1).copied().unwrap_or(1),
+                    format!("{} leads to no coil", p.0),
+                ));
             }
         }
         if !errors.is_empty() {
             return Err(errors);
         }
-        rungs.sort_by_key(top);
+        rungs.sort_by_key(|(top, _, _)| *top);
         // A comment belongs to the first rung at or below it.
         for (y, text) in std::mem::take(&mut self.comments) {
             let i = rungs
-                .iter()
-                .position(|r| top(r).row >= y)
-                .unwrap_or(rungs.len().saturating_sub(1));
-            if let Some(r) = rungs.get_mut(i) {
+                .partition_point(|(top, _, _)| top.row < y)
+                .min(rungs.len().saturating_sub(1));
+            if let Some((_, r, _)) = rungs.get_mut(i) {
                 if !r.comment.is_empty() {
                     r.comment.push('\n');
                 }
                 r.comment.push_str(&text);
             }
         }
-        Ok(rungs)
+        Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
     }
 }
 
@@ -507,6 +560,45 @@ fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, String> {
         device: name.to_string(),
         preset,
     })
+}
+
+/// An XML Schema boolean attribute (`true`, `false`, `1`, `0`); absent
+/// is false.
+fn negated(n: &Node) -> Result<bool, String> {
+    match n.attr("negated").map(str::trim) {
+        None | Some("false" | "0") => Ok(false),
+        Some("true" | "1") => Ok(true),
+        Some(other) => Err(format!(
+            "negated={} is not a boolean: true, false, 1 or 0",
+            crate::error::shown(other)
+        )),
+    }
+}
+
+/// The `edge` attribute: `None` for none, else `rising` or `falling`.
+fn edge(n: &Node) -> Result<Option<&'static str>, String> {
+    match n.attr("edge").map(str::trim) {
+        None | Some("none") => Ok(None),
+        Some("rising") => Ok(Some("rising")),
+        Some("falling") => Ok(Some("falling")),
+        Some(other) => Err(format!(
+            "edge={} is not none, rising or falling",
+            crate::error::shown(other)
+        )),
+    }
+}
+
+/// The coil `storage` attribute: `None` for none, else `set` or `reset`.
+fn storage(n: &Node) -> Result<Option<&'static str>, String> {
+    match n.attr("storage").map(str::trim) {
+        None | Some("none") => Ok(None),
+        Some("set") => Ok(Some("set")),
+        Some("reset") => Ok(Some("reset")),
+        Some(other) => Err(format!(
+            "storage={} is not none, set or reset",
+            crate::error::shown(other)
+        )),
+    }
 }
 
 /// An element's `<position x y>` (0, 0 when absent or odd), as (y, x).

@@ -1,0 +1,101 @@
+//! Drawing a rung's logic back onto a grid: series left to right,
+//! parallel branches below each other, outputs in the last column.
+
+use super::{Net, RungLogic};
+use crate::ladder::element::Element;
+use crate::ladder::grid::{Link, Pos, Rung};
+use crate::limits::MAX_RUNG_CELLS;
+
+/// [`layout`], refusing a drawing larger than [`MAX_RUNG_CELLS`] before
+/// anything is drawn. The logic must nest at most
+/// [`crate::limits::MAX_NESTING`] deep (every [`Net`] the engine builds does).
+pub fn try_layout(logic: &RungLogic) -> Result<Rung, String> {
+    let (width, height) = measure(&logic.condition);
+    let rows = height.max(logic.outputs.len()) as u128;
+    let cells = (width as u128 + 1) * rows;
+    if cells > MAX_RUNG_CELLS as u128 {
+        return Err(format!(
+            "drawn as a ladder this rung would span {rows} rows and {} columns, more than the {MAX_RUNG_CELLS} cells a rung may have",
+            width + 1
+        ));
+    }
+    Ok(layout(logic))
+}
+
+/// Draws a rung's logic on a grid: series left to right, parallel
+/// branches below each other, outputs in the last column.
+pub fn layout(logic: &RungLogic) -> Rung {
+    let mut rung = Rung {
+        comment: logic.comment.clone(),
+        ..Rung::default()
+    };
+    let (width, _) = place(&logic.condition, &mut rung, 0, 0);
+    for (i, (e, _)) in logic.outputs.iter().enumerate() {
+        rung.set(Pos::new(i, width), Some(e.clone()));
+        if i > 0 {
+            rung.links.push(Link {
+                row: i - 1,
+                col: width,
+            });
+        }
+    }
+    rung.links.sort();
+    rung.links.dedup();
+    rung
+}
+
+/// The (width, height) a network takes.
+fn measure(net: &Net) -> (usize, usize) {
+    match net {
+        Net::Leaf(..) => (1, 1),
+        Net::Series(v) => v
+            .iter()
+            .map(measure)
+            .fold((0, 1), |(w, h), (cw, ch)| (w + cw, h.max(ch))),
+        Net::Parallel(v) => v
+            .iter()
+            .map(measure)
+            .fold((0, 0), |(w, h), (cw, ch)| (w.max(cw), h + ch)),
+    }
+}
+
+fn place(net: &Net, rung: &mut Rung, row: usize, col: usize) -> (usize, usize) {
+    match net {
+        Net::Leaf(e, _) => {
+            rung.set(Pos::new(row, col), Some(e.clone()));
+            (1, 1)
+        }
+        Net::Series(v) => {
+            let (mut x, mut h) = (col, 1);
+            for n in v {
+                let (w, nh) = place(n, rung, row, x);
+                x += w;
+                h = h.max(nh);
+            }
+            (x - col, h)
+        }
+        Net::Parallel(v) => {
+            let (width, _) = measure(net);
+            let mut r = row;
+            let mut last_top = row;
+            for n in v {
+                let (w, h) = place(n, rung, r, col);
+                for c in col + w..col + width {
+                    rung.set(Pos::new(r, c), Some(Element::Wire));
+                }
+                last_top = r;
+                r += h;
+            }
+            for k in row..last_top {
+                if col > 0 {
+                    rung.links.push(Link { row: k, col });
+                }
+                rung.links.push(Link {
+                    row: k,
+                    col: col + width,
+                });
+            }
+            (width, r - row)
+        }
+    }
+}

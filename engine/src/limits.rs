@@ -1,0 +1,52 @@
+//! Hard limits on what the engine accepts from outside (docs/limits.md).
+//!
+//! Programs, projects, share links and PLCopen files come from other
+//! people, and the same code runs in the page, where a stack overflow or an
+//! allocation failure kills the tab. Each limit is checked before the work
+//! it guards starts and is reported as an ordinary located error.
+
+use crate::time::SimTime;
+
+/// The largest text file any reader takes (program, project, PLCopen
+/// file, events): 16 MiB.
+pub const MAX_INPUT_BYTES: usize = 16 << 20;
+
+/// How deeply PLCopen XML elements may nest. Real files nest about 12 deep.
+pub const MAX_XML_DEPTH: usize = 256;
+
+/// Rungs in one ladder.
+pub const MAX_RUNGS: usize = 10_000;
+
+/// Cells a rung's grid may span: rows × columns of its bounding box. A
+/// single row of 20 000 contacts fits; a 6 000 × 6 000 layout does not.
+pub const MAX_RUNG_CELLS: usize = 1 << 20;
+
+/// How deeply series and parallel blocks may nest inside one rung. Every
+/// walk over a rung's logic is bounded by this; hand-drawn rungs nest a
+/// handful of levels.
+pub const MAX_NESTING: usize = 100;
+
+/// Lines of one program text (the machines hold at most a few thousand
+/// instructions; the rest is comments).
+pub const MAX_PROGRAM_LINES: usize = 100_000;
+
+/// Parentheses, `LOW(`/`HIGH(` and unary minus nested in one AVR
+/// assembler expression.
+pub const MAX_EXPRESSION_DEPTH: usize = 64;
+
+/// Lines of one events file.
+pub const MAX_EVENTS: usize = 1_000_000;
+
+/// Values one `hashigo run` prints: rows × watched devices.
+pub const MAX_CSV_VALUES: u64 = 50_000_000;
+
+/// The longest simulated time a run, a step or a setting may reach:
+/// 10 000 000 s (about 116 days), far below the clock's 584-year range, so
+/// sums of simulated times never overflow.
+pub const MAX_SIM_TIME: SimTime = SimTime::from_nanos(10_000_000 * 1_000_000_000);
+
+/// The longest share link fragment the decoder takes: 64 KiB.
+pub const MAX_SHARE_FRAGMENT: usize = 64 << 10;
+
+/// How much of a user's token an error message repeats.
+pub const MAX_ECHO_CHARS: usize = 40;
