@@ -50,7 +50,7 @@ impl fmt::Display for EventError {
             EventError::MissingDevice => f.write_str("the device field is empty"),
             EventError::BadValue(v) => write!(
                 f,
-                "bad value {}: write 0 or 1 for a bit, an integer for a word, or a voltage such as 2.5V", crate::error::shown(&v)
+                "bad value {}: write 0 or 1 for a bit, an integer for a word, or a voltage such as 2.5V", crate::error::shown(v)
             ),
         }
     }

@@ -48,7 +48,7 @@ impl MachineId {
             .ok_or_else(|| {
                 format!(
                     "unknown machine {}: minasec-u, io86a, avr-plc or arduino-plc",
-                    crate::error::shown(&id)
+                    crate::error::shown(id)
                 )
             })
     }

@@ -23,7 +23,7 @@ impl Machine {
                 }
                 _ => Err(format!(
                     "unknown quirk {}: sketch or none",
-                    crate::error::shown(&value)
+                    crate::error::shown(value)
                 )),
             },
             "chip" => {
@@ -33,7 +33,7 @@ impl Machine {
                     _ => {
                         return Err(format!(
                             "unknown chip {}: 168 or 328",
-                            crate::error::shown(&value)
+                            crate::error::shown(value)
                         ))
                     }
                 };
@@ -41,7 +41,7 @@ impl Machine {
             }
             _ => Err(format!(
                 "unknown setting {}: arduino-plc takes step, quirk, chip",
-                crate::error::shown(&name)
+                crate::error::shown(name)
             )),
         }
     }
@@ -57,7 +57,7 @@ fn input_number(device: &str) -> Result<u8, String> {
         Some(_) => Err(format!("{device} is an output: events drive X000-X005")),
         None => Err(format!(
             "unknown device {}: the Arduino PLC has X000-X005, Y000-Y005",
-            crate::error::shown(&device)
+            crate::error::shown(device)
         )),
     }
 }
@@ -73,7 +73,7 @@ impl Simulation for Machine {
         parse_io(name).map(Watch).ok_or_else(|| {
             format!(
                 "unknown device {}: the Arduino PLC has X000-X005, Y000-Y005",
-                crate::error::shown(&name)
+                crate::error::shown(name)
             )
         })
     }

@@ -308,13 +308,13 @@ impl fmt::Display for AsmError {
         match self {
             AsmError::UnknownMnemonic(m) => write!(
                 f,
-                "unknown instruction {}: the sketch has END OUT LD LDN AND ANDN OR ORN ANDB ORB JUMP", crate::error::shown(&m)
+                "unknown instruction {}: the sketch has END OUT LD LDN AND ANDN OR ORN ANDB ORB JUMP", crate::error::shown(m)
             ),
             AsmError::MissingOperand(m) => write!(f, "{m} needs an operand"),
-            AsmError::BadOperand(o) => write!(f, "bad operand {}: X000-X005 or Y000-Y005", crate::error::shown(&o)),
+            AsmError::BadOperand(o) => write!(f, "bad operand {}: X000-X005 or Y000-Y005", crate::error::shown(o)),
             AsmError::OutToInput(o) => write!(f, "OUT {o}: outputs are Y000-Y005"),
-            AsmError::BadStep(s) => write!(f, "bad step {}: JUMP takes 0..255", crate::error::shown(&s)),
-            AsmError::Unexpected(w) => write!(f, "unexpected {}", crate::error::shown(&w)),
+            AsmError::BadStep(s) => write!(f, "bad step {}: JUMP takes 0..255", crate::error::shown(s)),
+            AsmError::Unexpected(w) => write!(f, "unexpected {}", crate::error::shown(w)),
             AsmError::MissingMnemonic => f.write_str("a step number without an instruction"),
             AsmError::StepOrder { found, next } => {
                 write!(f, "step {found} is out of order: the next step is {next} or later")

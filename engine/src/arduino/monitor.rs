@@ -79,7 +79,7 @@ fn store(machine: &mut Machine, rest: &str) -> Result<(), String> {
     let mnemonic = words.next().ok_or("a mnemonic after the step")?;
     let operand = words.next();
     if let Some(extra) = words.next() {
-        return Err(format!("unexpected {}", crate::error::shown(&extra)));
+        return Err(format!("unexpected {}", crate::error::shown(extra)));
     }
     let word = assemble(mnemonic, operand).map_err(|e| e.to_string())?;
     if machine.write_word(step, word) {

@@ -21,7 +21,7 @@ impl Machine {
             "scan" => self.set_scan_period(SimTime::parse(value).map_err(|e| e.to_string())?),
             _ => Err(format!(
                 "unknown setting {}: avr-plc takes scan",
-                crate::error::shown(&name)
+                crate::error::shown(name)
             )),
         }
     }
@@ -30,7 +30,7 @@ impl Machine {
         self.program().bit(name).ok_or_else(|| {
             format!(
                 "unknown bit {}: name a bit defined by NAME_R and NAME_B, or write R4.2",
-                crate::error::shown(&name)
+                crate::error::shown(name)
             )
         })
     }
@@ -48,7 +48,7 @@ impl Simulation for Machine {
             return self.program().timer(base).map(Watch::Timer).ok_or_else(|| {
                 format!(
                     "unknown timer {}: name its label after PLC_Timer_Top",
-                    crate::error::shown(&base)
+                    crate::error::shown(base)
                 )
             });
         }

@@ -12,7 +12,7 @@ use crate::time::SimTime;
 /// timers of the wrong length (or a division by zero): it is refused.
 pub fn scan_ms(period: SimTime) -> Result<u32, String> {
     let nanos = period.as_nanos();
-    if nanos == 0 || nanos > 10_000_000_000 || nanos % 1_000_000 != 0 {
+    if nanos == 0 || nanos > 10_000_000_000 || !nanos.is_multiple_of(1_000_000) {
         return Err(format!(
             "the AVR PLC's scan period is a whole number of milliseconds from 1ms to 10s (its programs compute timer presets as ms/Scan), not {period}ms"
         ));

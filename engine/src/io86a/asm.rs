@@ -459,13 +459,13 @@ impl fmt::Display for AsmError {
             AsmError::MissingInstruction => f.write_str("a step number without an instruction"),
             AsmError::UnknownMnemonic(m) => write!(
                 f,
-                "unknown instruction {}: PLC-IO86A has LD LDI AND ANI OR ORI ORB ANB OUT PLS PLF SET RST SETS RSTS CMP MOV INC DEC END", crate::error::shown(&m)
+                "unknown instruction {}: PLC-IO86A has LD LDI AND ANI OR ORI ORB ANB OUT PLS PLF SET RST SETS RSTS CMP MOV INC DEC END", crate::error::shown(m)
             ),
             AsmError::MissingOperand(m, n) => match *m {
                 "OUT" => f.write_str("OUT T/C needs its set value on the next step, e.g. K10"),
                 _ => write!(f, "{m} needs {n} operand(s)"),
             },
-            AsmError::Unexpected(w) => write!(f, "unexpected {}", crate::error::shown(&w)),
+            AsmError::Unexpected(w) => write!(f, "unexpected {}", crate::error::shown(w)),
             AsmError::StrayOperand(w) => {
                 write!(f, "operand {w} has no instruction waiting for it (OUT T/C, MOV, CMP, INC, DEC)")
             }

@@ -40,7 +40,7 @@ impl Machine {
                 .map_err(|e| e.to_string()),
             _ => Err(format!(
                 "unknown setting {}: io86a takes scan, filter, X04, X05, X07, Y03, Y04",
-                crate::error::shown(&name)
+                crate::error::shown(name)
             )),
         }
     }

@@ -164,11 +164,11 @@ impl fmt::Display for OperandError {
         match self {
             OperandError::UnknownDevice(d) => write!(
                 f,
-                "unknown device {}: PLC-IO86A has X00-X07, Y00-Y05, M00-M63, S00-S07, T00-T31, C00-C07, D00-D07", crate::error::shown(&d)
+                "unknown device {}: PLC-IO86A has X00-X07, Y00-Y05, M00-M63, S00-S07, T00-T31, C00-C07, D00-D07", crate::error::shown(d)
             ),
-            OperandError::BadConstant(k) => write!(f, "bad constant {}: K0..K32767", crate::error::shown(&k)),
+            OperandError::BadConstant(k) => write!(f, "bad constant {}: K0..K32767", crate::error::shown(k)),
             OperandError::NotAWord(d) => {
-                write!(f, "{} is a bit: this operand is a word (K, D, T or C)", crate::error::shown(&d))
+                write!(f, "{} is a bit: this operand is a word (K, D, T or C)", crate::error::shown(d))
             }
         }
     }

@@ -249,18 +249,18 @@ pub enum SettingError {
 impl fmt::Display for SettingError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SettingError::Unknown(c) => write!(f, "unknown setting {}", crate::error::shown(&c)),
+            SettingError::Unknown(c) => write!(f, "unknown setting {}", crate::error::shown(c)),
             SettingError::Analog(c) => {
                 write!(
                     f,
                     "bad analog setting {}: X04A:n1:n2 with n1 2..1024",
-                    crate::error::shown(&c)
+                    crate::error::shown(c)
                 )
             }
             SettingError::CustomCode(c) => write!(
                 f,
                 "bad custom code {}: four hex digits, e.g. X07I:10EF",
-                crate::error::shown(&c)
+                crate::error::shown(c)
             ),
             SettingError::Filter(n) => write!(f, "bad input filter \"!{n}\": !0..!10"),
         }

@@ -200,7 +200,7 @@ impl Terminal {
                 t.enter(1, &upper)
             });
         }
-        err(&format!("unknown command {}", crate::error::shown(&line)))
+        err(&format!("unknown command {}", crate::error::shown(line)))
     }
 
     /// Program edits happen only while stopped, as on the device.
@@ -312,7 +312,7 @@ fn format_d(n: u8, value: i16) -> String {
 fn write_command(m: &mut Machine, device: &str, value: &str) -> Result<(), String> {
     if device.starts_with('D') {
         let Ok(Word::D(n)) = parse_word(device) else {
-            return Err(format!("unknown device {}", crate::error::shown(&device)));
+            return Err(format!("unknown device {}", crate::error::shown(device)));
         };
         let parsed = match value.strip_prefix('X') {
             Some(hex) => u16::from_str_radix(hex, 16).map(|v| v as i16).ok(),
@@ -321,7 +321,7 @@ fn write_command(m: &mut Machine, device: &str, value: &str) -> Result<(), Strin
         let v = parsed.ok_or_else(|| {
             format!(
                 "bad value {}: decimal, or hex as xFF",
-                crate::error::shown(&value)
+                crate::error::shown(value)
             )
         })?;
         m.write_word(n, v);
@@ -334,7 +334,7 @@ fn write_command(m: &mut Machine, device: &str, value: &str) -> Result<(), Strin
     let on = match value {
         "1" => true,
         "0" => false,
-        _ => return Err(format!("bad value {}: 0 or 1", crate::error::shown(&value))),
+        _ => return Err(format!("bad value {}: 0 or 1", crate::error::shown(value))),
     };
     m.write_bit(bit, on);
     Ok(())

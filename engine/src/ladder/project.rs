@@ -6,7 +6,8 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 
 use super::grid::Ladder;
-use crate::error::Located;
+use crate::error::{shown, Located};
+use crate::limits::{MAX_INPUT_BYTES, MAX_RUNGS};
 use crate::MachineId;
 
 /// The `format` field every project file carries.
@@ -42,26 +43,68 @@ impl Project {
         }
     }
 
-    /// Reads a project; errors name the line of the JSON text.
+    /// Reads a project; errors name the line of the JSON text. A leading
+    /// byte-order mark (some Windows editors write one) is skipped.
     pub fn from_json(text: &str) -> Result<Project, Located<String>> {
-        let project: Project = serde_json::from_str(text)
-            .map_err(|e| Located::new(e.line().max(1), format!("not a Hashigo project: {e}")))?;
-        if project.format != FORMAT {
-            return Err(Located::new(
-                1,
-                format!("\"format\" is \"{}\", not \"{FORMAT}\"", project.format),
-            ));
-        }
-        if project.version == 0 || project.version > VERSION {
+        if text.len() > MAX_INPUT_BYTES {
             return Err(Located::new(
                 1,
                 format!(
-                    "project version {} is not one this Hashigo reads (1..={VERSION}): a newer Hashigo made it",
+                    "the file is {} bytes, more than the {MAX_INPUT_BYTES} a project may have (docs/limits.md)",
+                    text.len()
+                ),
+            ));
+        }
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let project: Project = serde_json::from_str(text).map_err(|e| {
+            Located::new(
+                e.line().max(1),
+                format!("not a Hashigo project: {}", one_line(&e.to_string())),
+            )
+        })?;
+        if project.format != FORMAT {
+            return Err(Located::new(
+                key_line(text, "format"),
+                format!("\"format\" is {}, not \"{FORMAT}\"", shown(&project.format)),
+            ));
+        }
+        if project.version == 0 {
+            return Err(Located::new(
+                key_line(text, "version"),
+                format!("project version 0 does not exist: versions start at 1 (this Hashigo reads 1..={VERSION})"),
+            ));
+        }
+        if project.version > VERSION {
+            return Err(Located::new(
+                key_line(text, "version"),
+                format!(
+                    "project version {} is newer than this Hashigo reads (1..={VERSION}): a newer Hashigo made it",
                     project.version
                 ),
             ));
         }
+        if project.ladder.rungs.len() > MAX_RUNGS {
+            return Err(Located::new(
+                key_line(text, "rungs"),
+                format!(
+                    "the ladder has {} rungs, more than the {MAX_RUNGS} a ladder may have (docs/limits.md)",
+                    project.ladder.rungs.len()
+                ),
+            ));
+        }
         Ok(project)
+    }
+
+    /// The 1-based line of setting `name` in the project's JSON `text`
+    /// (1 when it cannot be found), for errors about its value.
+    pub fn setting_line(text: &str, name: &str) -> usize {
+        let start = key_line(text, "settings");
+        let key = format!("\"{name}\"");
+        text.lines()
+            .enumerate()
+            .skip(start.saturating_sub(1))
+            .find(|(_, l)| l.contains(&key))
+            .map_or(start, |(i, _)| i + 1)
     }
 
     /// The project as pretty JSON.
@@ -69,4 +112,23 @@ impl Project {
         // Serialising plain data to a string cannot fail.
         serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
     }
+}
+
+/// The 1-based line where `"key"` first appears in `text` (1 if nowhere):
+/// the place to point at for an error about that field.
+fn key_line(text: &str, key: &str) -> usize {
+    let key = format!("\"{key}\"");
+    text.lines()
+        .position(|l| l.contains(&key))
+        .map_or(1, |i| i + 1)
+}
+
+/// An error message on one line, shortened (serde repeats input in them).
+fn one_line(message: &str) -> String {
+    let flat: String = message
+        .chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .take(300)
+        .collect();
+    flat
 }

@@ -35,6 +35,8 @@ pub enum ShareError {
     Base64,
     /// Not deflate data, or more than the cap when inflated.
     Inflate,
+    /// Longer than [`crate::limits::MAX_SHARE_FRAGMENT`] (the length).
+    TooLong(usize),
     /// The binary is cut short or holds a bad value at this byte.
     Data {
         /// The byte offset in the inflated data.
@@ -49,10 +51,15 @@ impl fmt::Display for ShareError {
         match self {
             ShareError::Version(v) => write!(
                 f,
-                "this share link is format {}, which this Hashigo does not read (it reads {PREFIX}…)", crate::error::shown(&v)
+                "this share link is format {}, which this Hashigo does not read (it reads {PREFIX}…)", crate::error::shown(v)
             ),
             ShareError::Base64 => f.write_str("this share link is damaged: it is not base64url text"),
             ShareError::Inflate => f.write_str("this share link is damaged: its data does not unpack"),
+            ShareError::TooLong(n) => write!(
+                f,
+                "this share link is {n} characters long, more than the {} a link may have (docs/limits.md)",
+                crate::limits::MAX_SHARE_FRAGMENT
+            ),
             ShareError::Data { at, what } => {
                 write!(f, "this share link is damaged at byte {at}: {what}")
             }
@@ -93,6 +100,9 @@ pub fn encode(project: &Project) -> String {
 /// Decodes share text back into a project.
 pub fn decode(text: &str) -> Result<Project, ShareError> {
     let text = text.trim();
+    if text.len() > crate::limits::MAX_SHARE_FRAGMENT {
+        return Err(ShareError::TooLong(text.len()));
+    }
     let Some(body) = text.strip_prefix(PREFIX) else {
         let version = text
             .split('.')

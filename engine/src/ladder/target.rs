@@ -216,14 +216,14 @@ fn canonical(machine: MachineId, device: &str, role: Role) -> Result<String, Str
             .ok_or_else(|| {
                 format!(
                     "unknown device {}: avr-plc ladders name bits R0.0-R31.7",
-                    crate::error::shown(&device)
+                    crate::error::shown(device)
                 )
             }),
         MachineId::ArduinoPlc => {
             let n = arduino::isa::parse_io(device).ok_or_else(|| {
                 format!(
                     "unknown device {}: arduino-plc has X000-X005 and Y000-Y005",
-                    crate::error::shown(&device)
+                    crate::error::shown(device)
                 )
             })?;
             if role == Role::Write && n < 8 {

@@ -266,7 +266,7 @@ impl fmt::Display for AsmError {
             AsmError::BadStepNumber(n) => write!(
                 f,
                 "bad step number {}: steps are 0..255",
-                crate::error::shown(&n)
+                crate::error::shown(n)
             ),
             AsmError::StepOutOfOrder { found, expected } => write!(
                 f,
@@ -276,14 +276,14 @@ impl fmt::Display for AsmError {
             AsmError::UnknownOpcode(w) => write!(
                 f,
                 "unknown opcode {}: MINASEC-U has LD LDI AND ANDI OR ORI ST STI",
-                crate::error::shown(&w)
+                crate::error::shown(w)
             ),
             AsmError::MissingOperand(op) => write!(f, "{op} needs an operand, e.g. {op} X00"),
             AsmError::Operand(e) => e.fmt(f),
             AsmError::Unexpected(w) => write!(
                 f,
                 "unexpected {} after the operand (a binary column is 8 bits, e.g. 100 01000)",
-                crate::error::shown(&w)
+                crate::error::shown(w)
             ),
             AsmError::BinaryMismatch { written, expected } => write!(
                 f,

@@ -161,7 +161,7 @@ impl fmt::Display for SettingError {
             SettingError::BadClock(t) => write!(
                 f,
                 "bad clock {}: write fast, slow, or a frequency in Hz from {MIN_HZ} to {MAX_HZ}",
-                crate::error::shown(&t)
+                crate::error::shown(t)
             ),
         }
     }

@@ -80,7 +80,7 @@ impl Machine {
             _ => {
                 return Err(format!(
                     "unknown setting {}: minasec-u takes T0, T1, C0 and clock",
-                    crate::error::shown(&name)
+                    crate::error::shown(name)
                 ))
             }
         };

@@ -245,11 +245,11 @@ impl fmt::Display for OperandError {
         match self {
             OperandError::UnknownDevice(d) => write!(
                 f,
-                "unknown device {}: MINASEC-U has X00-X07, Y00-Y07, M00-M07, M10-M13, T0, T1, C0, C0R", crate::error::shown(&d)
+                "unknown device {}: MINASEC-U has X00-X07, Y00-Y07, M00-M07, M10-M13, T0, T1, C0, C0R", crate::error::shown(d)
             ),
             OperandError::BadRawAddress(d) => write!(
                 f,
-                "bad raw address {}: write %00000..%11111 or $00..$1F", crate::error::shown(&d)
+                "bad raw address {}: write %00000..%11111 or $00..$1F", crate::error::shown(d)
             ),
         }
     }

@@ -13,7 +13,7 @@ impl Args {
         let mut words = rest.iter();
         while let Some(word) = words.next() {
             let Some(flag) = word.strip_prefix("--") else {
-                return Err(format!("unexpected argument {}", engine::shown(&word)));
+                return Err(format!("unexpected argument {}", engine::shown(word)));
             };
             let (name, value) = match flag.split_once('=') {
                 Some((n, v)) => (n.to_string(), v.to_string()),

@@ -19,8 +19,8 @@ use crate::args::Args;
 use crate::input::{Format, SourceFile};
 
 type Problems = Vec<String>;
-/// `--set`-style settings a project file holds.
-type Settings = Vec<(String, String)>;
+/// `--set`-style settings a project file holds: name, value, line.
+type Settings = Vec<(String, String, usize)>;
 
 fn one(problem: String) -> Problems {
     vec![problem]
@@ -38,7 +38,7 @@ enum Loaded {
 struct Source {
     loaded: Loaded,
     /// `--set`-style settings from a project file, applied before `--set`.
-    settings: Vec<(String, String)>,
+    settings: Settings,
     /// Where those settings came from, for their errors.
     name: String,
 }
@@ -148,11 +148,15 @@ fn read_ladder(
     if format == Format::Json {
         let project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
         let machine = flag.unwrap_or(project.machine);
-        return Ok((
-            project.ladder,
-            machine,
-            project.settings.into_iter().collect(),
-        ));
+        let settings = project
+            .settings
+            .into_iter()
+            .map(|(n, v)| {
+                let line = Project::setting_line(&source.text, &n);
+                (n, v, line)
+            })
+            .collect();
+        return Ok((project.ladder, machine, settings));
     }
     let machine = flag.ok_or_else(|| {
         one(format!(
@@ -169,11 +173,15 @@ fn read_ladder(
 /// `--set scan=`, else the project's, else 10. A bad value is one problem,
 /// worded as the settings check words it (so a run that also applies the
 /// settings reports it once).
-fn avr_scan_ms(args: &Args, source: &str, project: &[(String, String)]) -> Result<u32, Problems> {
+fn avr_scan_ms(
+    args: &Args,
+    source: &str,
+    project: &[(String, String, usize)],
+) -> Result<u32, Problems> {
     let from_project = project
         .iter()
-        .filter(|(n, _)| n.trim().eq_ignore_ascii_case("scan"))
-        .map(|(n, v)| (format!("{source}: setting {n}={v}"), v.as_str()));
+        .filter(|(n, _, _)| n.trim().eq_ignore_ascii_case("scan"))
+        .map(|(n, v, line)| (setting_place(source, *line, n, v), v.as_str()));
     let from_flags = args.all("set").filter_map(|s| {
         let (n, v) = s.split_once('=')?;
         n.trim()
@@ -187,6 +195,16 @@ fn avr_scan_ms(args: &Args, source: &str, project: &[(String, String)]) -> Resul
         .map_err(|e| e.to_string())
         .and_then(avr::scan_ms)
         .map_err(|e| one(format!("{what}: {e}")))
+}
+
+/// Where a project's setting stands, as its errors name it:
+/// `FILE:LINE: setting NAME=VALUE`.
+fn setting_place(file: &str, line: usize, name: &str, value: &str) -> String {
+    format!(
+        "{file}:{line}: setting {}={}",
+        engine::shown(name).trim_matches('"'),
+        engine::shown(value).trim_matches('"')
+    )
 }
 
 /// `hashigo run`.
@@ -253,7 +271,7 @@ fn arduino_for_run(program: &arduino::Program) -> arduino::Machine {
 fn run_with<S: Simulation>(
     args: &Args,
     mut sim: S,
-    (file, defaults): (&str, &[(String, String)]),
+    (file, defaults): (&str, &[(String, String, usize)]),
     mut problems: Problems,
 ) -> Result<(), Problems> {
     let until = args
@@ -271,9 +289,9 @@ fn run_with<S: Simulation>(
     if watch.is_empty() || watch.iter().any(String::is_empty) {
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
-    for (name, value) in defaults {
+    for (name, value, line) in defaults {
         if let Err(e) = sim.setting(name, value) {
-            problems.push(format!("{file}: setting {name}={value}: {e}"));
+            problems.push(format!("{}: {e}", setting_place(file, *line, name, value)));
         }
     }
     for setting in args.all("set") {

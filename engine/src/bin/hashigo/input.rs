@@ -2,6 +2,8 @@
 
 use std::io::Read;
 
+use engine::limits::MAX_INPUT_BYTES;
+
 /// A file's name as errors print it, and its text.
 pub struct SourceFile {
     pub name: String,
@@ -9,24 +11,43 @@ pub struct SourceFile {
 }
 
 impl SourceFile {
-    /// Reads `path`, or standard input for `-`.
+    /// Reads `path`, or standard input for `-`: UTF-8 text of at most
+    /// [`MAX_INPUT_BYTES`] (a longer file is refused before it is read
+    /// whole).
     pub fn read(path: &str) -> Result<SourceFile, String> {
-        let (name, text) = if path == "-" {
-            let mut text = String::new();
-            std::io::stdin()
-                .read_to_string(&mut text)
-                .map_err(|e| format!("<stdin>: cannot read: {e}"))?;
-            ("<stdin>".to_string(), text)
+        let name = if path == "-" {
+            "<stdin>".to_string()
         } else {
-            let bytes = std::fs::read(path).map_err(|e| format!("{path}: cannot read: {e}"))?;
-            let text = String::from_utf8(bytes).map_err(|e| {
-                format!(
-                    "{path}: not UTF-8 text (first bad byte at offset {})",
-                    e.utf8_error().valid_up_to()
-                )
-            })?;
-            (path.to_string(), text)
+            path.to_string()
         };
+        let mut bytes = Vec::new();
+        let limit = MAX_INPUT_BYTES as u64 + 1;
+        let read = if path == "-" {
+            std::io::stdin().lock().take(limit).read_to_end(&mut bytes)
+        } else {
+            std::fs::File::open(path).and_then(|f| f.take(limit).read_to_end(&mut bytes))
+        };
+        read.map_err(|e| format!("{name}: cannot read: {e}"))?;
+        if bytes.len() > MAX_INPUT_BYTES {
+            return Err(format!(
+                "{name}: the file is larger than the {MAX_INPUT_BYTES} bytes an input may have (docs/limits.md)"
+            ));
+        }
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let at = e.utf8_error().valid_up_to();
+            let bytes = e.as_bytes();
+            let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+            let column = at
+                - bytes[..at]
+                    .iter()
+                    .rposition(|&b| b == b'\n')
+                    .map_or(0, |p| p + 1)
+                + 1;
+            format!(
+                "{name}:{line}: not UTF-8 text: byte {:#04x} at column {column} (byte offset {at})",
+                bytes[at]
+            )
+        })?;
         Ok(SourceFile { name, text })
     }
 
@@ -60,7 +81,7 @@ impl Format {
                 "xml" => Ok(Format::Xml),
                 other => Err(format!(
                     "unknown --format {}: il, asm, json or xml",
-                    engine::shown(&other)
+                    engine::shown(other)
                 )),
             };
         }

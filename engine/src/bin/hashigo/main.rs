@@ -37,16 +37,40 @@ fn main() -> ExitCode {
         }
         other => Err(vec![format!(
             "unknown command {}\n{USAGE}",
-            engine::shown(&other)
+            engine::shown(other)
         )]),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(problems) => {
             for problem in problems {
-                eprintln!("error: {problem}");
+                eprintln!("error: {}", printable(&problem));
             }
             ExitCode::from(2)
         }
     }
+}
+
+/// A problem as one printable line: control characters (a raw newline,
+/// NUL, ESC from a hostile file) escaped, and cut at 2 000 characters.
+/// The messages themselves already quote and shorten what they repeat;
+/// this is the last guard for the terminal.
+fn printable(problem: &str) -> String {
+    // The usage text after an unknown command is the one intended multi-line message.
+    if let Some((first, usage)) = problem.split_once("\nusage: ") {
+        return format!("{}\nusage: {usage}", printable(first));
+    }
+    let mut out = String::new();
+    for (i, c) in problem.chars().enumerate() {
+        if i == 2000 {
+            out.push('…');
+            break;
+        }
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }

@@ -43,7 +43,7 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
                 root.line,
                 format!(
                     "namespace {} is not PLCopen TC6 ({NS_V201} or {NS_V10})",
-                    crate::error::shown(&other)
+                    crate::error::shown(other)
                 ),
             )])
         }

@@ -1,0 +1,117 @@
+//! Generators for large and deep inputs.
+
+use std::fmt::Write as _;
+
+/// A project for `machine` whose rungs are given as JSON text.
+pub fn project(machine: &str, rungs: &[String]) -> String {
+    format!(
+        r#"{{"format":"hashigo-project","version":1,"machine":"{machine}","ladder":{{"rungs":[{}]}}}}"#,
+        rungs.join(",")
+    )
+}
+
+/// A contact's JSON.
+pub fn contact(device: &str) -> String {
+    format!(r#"{{"type":"contact","kind":"no","device":"{device}"}}"#)
+}
+
+/// A normal coil's JSON.
+pub fn coil(device: &str) -> String {
+    format!(r#"{{"type":"coil","kind":"normal","device":"{device}"}}"#)
+}
+
+/// One rung: rows of cell JSON and links.
+pub fn rung(rows: &[Vec<String>], links: &str) -> String {
+    let rows: Vec<String> = rows.iter().map(|r| format!("[{}]", r.join(","))).collect();
+    format!(r#"{{"cells":[{}],"links":[{links}]}}"#, rows.join(","))
+}
+
+/// A rung of `n` contacts on `input` in series driving `output`.
+pub fn series_rung(n: usize, input: &str, output: &str) -> String {
+    let mut row = vec![contact(input); n];
+    row.push(coil(output));
+    rung(&[row], "")
+}
+
+const HEAD: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+<types><pous><pou name="main" pouType="program"><body><LD>
+<leftPowerRail localId="1"><connectionPointOut formalParameter=""/></leftPowerRail>
+"#;
+const TAIL: &str = "</LD></body></pou></pous></types></project>\n";
+
+fn conn(refs: &[usize]) -> String {
+    let mut s = String::from("<connectionPointIn>");
+    for r in refs {
+        let _ = write!(s, r#"<connection refLocalId="{r}"/>"#);
+    }
+    s + "</connectionPointIn>"
+}
+
+/// A PLCopen LD body of `n` contact→coil rungs on one rail.
+pub fn plcopen_rungs(n: usize, input: &str, output: &str) -> String {
+    let mut s = String::from(HEAD);
+    for i in 0..n {
+        let (c, k) = (10 + 2 * i, 11 + 2 * i);
+        let _ = writeln!(
+            s,
+            r#"<contact localId="{c}"><position x="10" y="{}"/>{}<variable>{input}</variable></contact>"#,
+            i * 10,
+            conn(&[1])
+        );
+        let _ = writeln!(
+            s,
+            r#"<coil localId="{k}"><position x="50" y="{}"/>{}<variable>{output}</variable></coil>"#,
+            i * 10,
+            conn(&[c])
+        );
+    }
+    s + TAIL
+}
+
+/// A PLCopen network `levels` deep: a contact in series, then one in
+/// parallel with everything so far, and so on.
+pub fn plcopen_alternating(levels: usize) -> String {
+    let mut s = String::from(HEAD);
+    let mut current = vec![1];
+    let mut id = 2;
+    for level in 0..levels {
+        if level % 2 == 0 {
+            let _ = writeln!(
+                s,
+                r#"<contact localId="{id}">{}<variable>X00</variable></contact>"#,
+                conn(&current)
+            );
+            current = vec![id];
+        } else {
+            let _ = writeln!(
+                s,
+                r#"<contact localId="{id}">{}<variable>X01</variable></contact>"#,
+                conn(&[1])
+            );
+            current.push(id);
+        }
+        id += 1;
+    }
+    let _ = writeln!(
+        s,
+        r#"<coil localId="{id}">{}<variable>Y00</variable></coil>"#,
+        conn(&current)
+    );
+    s + TAIL
+}
+
+/// A PLCopen file of `rails` left rails and one contact→coil rung.
+pub fn plcopen_rails(rails: usize) -> String {
+    let mut s = String::from(HEAD);
+    for i in 0..rails {
+        let _ = writeln!(s, r#"<leftPowerRail localId="{}"/>"#, 100 + i);
+    }
+    let _ = writeln!(
+        s,
+        r#"<contact localId="2">{}<variable>X00</variable></contact><coil localId="3">{}<variable>Y00</variable></coil>"#,
+        conn(&[100 + rails - 1]),
+        conn(&[2])
+    );
+    s + TAIL
+}

@@ -1,0 +1,13 @@
+//! Hostile and extreme input (docs/limits.md): every input that once made
+//! the engine panic, overflow its stack, run out of memory, hang or give a
+//! silently wrong result, kept as a regression test.
+
+#[path = "../common/mod.rs"]
+mod common;
+mod gen;
+
+mod avr_source;
+mod cli;
+mod ladders;
+mod messages;
+mod plcopen;
