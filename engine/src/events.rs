@@ -38,6 +38,8 @@ pub enum EventError {
     MissingDevice,
     /// The value is neither an integer nor a voltage like `2.5V`.
     BadValue(String),
+    /// More lines than [`crate::limits::MAX_EVENTS`] (how many).
+    TooMany(usize),
 }
 
 impl fmt::Display for EventError {
@@ -48,6 +50,11 @@ impl fmt::Display for EventError {
             }
             EventError::Time(e) => e.fmt(f),
             EventError::MissingDevice => f.write_str("the device field is empty"),
+            EventError::TooMany(n) => write!(
+                f,
+                "the file has {n} lines, more than the {} an events file may have (docs/limits.md)",
+                crate::limits::MAX_EVENTS
+            ),
             EventError::BadValue(v) => write!(
                 f,
                 "bad value {}: write 0 or 1 for a bit, an integer for a word, or a voltage such as 2.5V", crate::error::shown(v)
@@ -61,6 +68,13 @@ impl std::error::Error for EventError {}
 /// Parses an events file. Returns the events sorted by time, keeping file
 /// order at equal times; or every bad line.
 pub fn parse_events(text: &str) -> Result<Vec<InputEvent>, Vec<Located<EventError>>> {
+    let lines = text.lines().count();
+    if lines > crate::limits::MAX_EVENTS {
+        return Err(vec![Located::new(
+            crate::limits::MAX_EVENTS + 1,
+            EventError::TooMany(lines),
+        )]);
+    }
     let mut events = Vec::new();
     let mut errors = Vec::new();
     let mut seen_data = false;

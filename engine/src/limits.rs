@@ -50,3 +50,13 @@ pub const MAX_SHARE_FRAGMENT: usize = 64 << 10;
 
 /// How much of a user's token an error message repeats.
 pub const MAX_ECHO_CHARS: usize = 40;
+
+/// Checks a program text's line count against [`MAX_PROGRAM_LINES`]
+/// before any line is parsed: `Err((first line past the limit, lines))`.
+pub fn check_program_lines(text: &str) -> Result<(), (usize, usize)> {
+    let lines = text.lines().count();
+    if lines > MAX_PROGRAM_LINES {
+        return Err((MAX_PROGRAM_LINES + 1, lines));
+    }
+    Ok(())
+}

@@ -202,6 +202,8 @@ impl Program {
     /// `;` comments. A step number places the word at that step (gaps stay
     /// erased); numbers must increase. `capacity` is 256 or 512.
     pub fn parse(text: &str, capacity: usize) -> Result<Program, Vec<Located<AsmError>>> {
+        crate::limits::check_program_lines(text)
+            .map_err(|(line, n)| vec![Located::new(line, AsmError::TooManyLines(n))])?;
         let mut words: Vec<u16> = Vec::new();
         let mut errors = Vec::new();
         for (index, raw) in text.lines().enumerate() {
@@ -273,6 +275,8 @@ pub const ERASED: u16 = 0xFFFF;
 /// A problem with one line of an Arduino PLC listing.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum AsmError {
+    /// More lines than [`crate::limits::MAX_PROGRAM_LINES`] (how many).
+    TooManyLines(usize),
     /// Not one of END OUT LD LDN AND ANDN OR ORN ANDB ORB JUMP.
     UnknownMnemonic(String),
     /// The instruction needs an operand.
@@ -306,6 +310,11 @@ pub enum AsmError {
 impl fmt::Display for AsmError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            AsmError::TooManyLines(n) => write!(
+                f,
+                "the program has {n} lines, more than the {} a program may have (docs/limits.md)",
+                crate::limits::MAX_PROGRAM_LINES
+            ),
             AsmError::UnknownMnemonic(m) => write!(
                 f,
                 "unknown instruction {}: the sketch has END OUT LD LDN AND ANDN OR ORN ANDB ORB JUMP", crate::error::shown(m)

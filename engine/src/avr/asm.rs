@@ -71,6 +71,8 @@ enum Segment {
 /// Assembles `text`. `scan_ms` is the value of the predefined symbol
 /// `Scan` (so `1000/Scan` is one second of scans).
 pub fn assemble(text: &str, scan_ms: i64) -> Result<Assembly, Vec<Located<AsmError>>> {
+    crate::limits::check_program_lines(text)
+        .map_err(|(line, n)| vec![Located::new(line, AsmError::TooManyLines(n))])?;
     let mut symbols: HashMap<String, i64> = PREDEFINED
         .iter()
         .map(|&(n, v)| (n.to_ascii_uppercase(), v))
@@ -414,6 +416,8 @@ impl ExprParser<'_> {
 /// A problem with one line of AVR PLC source.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum AsmError {
+    /// More lines than [`crate::limits::MAX_PROGRAM_LINES`] (how many).
+    TooManyLines(usize),
     /// Not a directive this subset knows.
     UnknownDirective(String),
     /// `.equ` without `NAME=expr`.
@@ -441,6 +445,11 @@ pub enum AsmError {
 impl fmt::Display for AsmError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            AsmError::TooManyLines(n) => write!(
+                f,
+                "the program has {n} lines, more than the {} a program may have (docs/limits.md)",
+                crate::limits::MAX_PROGRAM_LINES
+            ),
             AsmError::UnknownDirective(d) => write!(
                 f,
                 "unknown directive {d}: this assembler takes .equ .db .cseg .csg .dseg .byte and labels"

@@ -43,6 +43,8 @@ impl Program {
     /// Parses a listing; every bad line is reported, nothing is returned
     /// unless all of it is good.
     pub fn parse(text: &str) -> Result<Program, Vec<Located<AsmError>>> {
+        crate::limits::check_program_lines(text)
+            .map_err(|(line, n)| vec![Located::new(line, AsmError::TooManyLines(n))])?;
         let mut parser = Parser::default();
         for (index, raw) in text.lines().enumerate() {
             let code = raw.split(';').next().unwrap_or("").trim();
@@ -413,6 +415,8 @@ fn check_coil(mnemonic: &'static str, bit: Bit, kinds: CoilKinds) -> Result<(), 
 /// A problem with one line of an IO86A listing.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum AsmError {
+    /// More lines than [`crate::limits::MAX_PROGRAM_LINES`] (how many).
+    TooManyLines(usize),
     /// A written step number that is not this step's.
     StepNumber {
         /// As written.
@@ -453,6 +457,11 @@ pub enum AsmError {
 impl fmt::Display for AsmError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            AsmError::TooManyLines(n) => write!(
+                f,
+                "the program has {n} lines, more than the {} a program may have (docs/limits.md)",
+                crate::limits::MAX_PROGRAM_LINES
+            ),
             AsmError::StepNumber { found, expected } => {
                 write!(f, "step number {found} does not match: this is step {expected}")
             }

@@ -81,6 +81,8 @@ impl Program {
     /// follow it); skipped addresses stay erased. A trailing binary column
     /// (`100 01000`, as on the programming sheet) must agree with the step.
     pub fn parse(text: &str) -> Result<Program, Vec<Located<AsmError>>> {
+        crate::limits::check_program_lines(text)
+            .map_err(|(line, n)| vec![Located::new(line, AsmError::TooManyLines(n))])?;
         let mut program = Program::erased();
         let mut errors = Vec::new();
         let mut next: usize = 0;
@@ -230,6 +232,8 @@ impl fmt::Display for ProgrammingSheet {
 /// A problem with one line of a MINASEC-U listing.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum AsmError {
+    /// More lines than [`crate::limits::MAX_PROGRAM_LINES`] (how many).
+    TooManyLines(usize),
     /// A step number is above 255 or malformed.
     BadStepNumber(String),
     /// A step number goes backwards or repeats an earlier step.
@@ -263,6 +267,11 @@ pub enum AsmError {
 impl fmt::Display for AsmError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            AsmError::TooManyLines(n) => write!(
+                f,
+                "the program has {n} lines, more than the {} a program may have (docs/limits.md)",
+                crate::limits::MAX_PROGRAM_LINES
+            ),
             AsmError::BadStepNumber(n) => write!(
                 f,
                 "bad step number {}: steps are 0..255",

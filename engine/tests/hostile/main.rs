@@ -11,3 +11,4 @@ mod cli;
 mod ladders;
 mod messages;
 mod plcopen;
+mod properties;

@@ -51,3 +51,38 @@ fn echoed_text_is_quoted_escaped_and_short() {
         .to_string();
     assert!(e.len() < 200, "{:.300}", e);
 }
+
+#[test]
+fn program_and_event_line_limits_are_checked_first() {
+    let program = "; comment\n".repeat(100_001);
+    let errors = engine::io86a::Program::parse(&program).expect_err("too long");
+    assert_eq!(errors.len(), 1);
+    assert_eq!(errors[0].line, 100_001);
+    assert!(errors[0]
+        .error
+        .to_string()
+        .contains("100001 lines, more than the 100000"));
+    assert!(engine::io86a::Program::parse(&"; comment\n".repeat(100_000)).is_ok());
+    for parsed in [
+        engine::minasec::Program::parse(&program)
+            .map(|_| ())
+            .map_err(|e| e[0].error.to_string()),
+        engine::arduino::Program::parse(&program, 512)
+            .map(|_| ())
+            .map_err(|e| e[0].error.to_string()),
+        engine::avr::Program::parse(&program, 10)
+            .map(|_| ())
+            .map_err(|e| e[0].error.to_string()),
+    ] {
+        assert!(parsed
+            .expect_err("too long")
+            .contains("more than the 100000"));
+    }
+    let events = "0,X00,1\n".repeat(1_000_001);
+    let errors = engine::events::parse_events(&events).expect_err("too many");
+    assert_eq!(errors.len(), 1);
+    assert!(errors[0]
+        .error
+        .to_string()
+        .contains("more than the 1000000"));
+}

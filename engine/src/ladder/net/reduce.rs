@@ -208,35 +208,48 @@ pub(crate) fn reduce(
 }
 
 /// Turns the arena below `root` into a normalised [`Net`], children
-/// before parents, refusing nesting past [`MAX_NESTING`].
+/// before parents, refusing nesting past [`MAX_NESTING`]. A series part
+/// inside a series part is not built on its own: its top-most series
+/// ancestor collects the whole run in one walk (building each level would
+/// copy a long chain once per contact).
 fn build(mut arena: Vec<Node>, root: usize) -> Result<Net, NetError> {
-    // Each finished part: its net, its depth, its top-left cell.
-    let mut done: Vec<Option<(Net, usize, Pos)>> = Vec::new();
+    // Each finished part: its net, its depth.
+    let mut done: Vec<Option<(Net, usize)>> = Vec::new();
     done.resize_with(arena.len(), || None);
-    let mut stack = vec![(root, false)];
-    while let Some((i, children_done)) = stack.pop() {
+    // (part, its children are done, it sits directly inside a series part)
+    let mut stack = vec![(root, false, false)];
+    while let Some((i, children_done, in_series)) = stack.pop() {
         let children: Vec<usize> = match &arena[i].part {
             Part::Done(_) => Vec::new(),
             Part::Series(a, b) => vec![*a, *b],
             Part::Parallel(v) => v.clone(),
         };
+        let series = matches!(arena[i].part, Part::Series(..));
         if !children_done && !children.is_empty() {
-            stack.push((i, true));
-            stack.extend(children.iter().map(|&c| (c, false)));
+            stack.push((i, true, in_series));
+            stack.extend(children.iter().map(|&c| (c, false, series)));
             continue;
         }
+        if series && in_series {
+            continue; // collected by the series part above
+        }
         let key = arena[i].key;
-        let part = std::mem::replace(&mut arena[i].part, Part::Parallel(Vec::new()));
-        let finished = match part {
+        let finished = match std::mem::replace(&mut arena[i].part, Part::Parallel(Vec::new())) {
             Part::Done(net) => {
                 let depth = net.depth();
-                (net, depth, key)
+                (net, depth)
             }
-            Part::Series(..) => {
+            Part::Series(a, b) => {
                 let mut items = Vec::new();
                 let mut depth = 0;
-                for c in children {
-                    let Some((net, d, _)) = done[c].take() else {
+                // Left to right through the nested series parts.
+                let mut walk = vec![b, a];
+                while let Some(c) = walk.pop() {
+                    if let Part::Series(l, r) = arena[c].part {
+                        walk.extend([r, l]);
+                        continue;
+                    }
+                    let Some((net, d)) = done[c].take() else {
                         continue;
                     };
                     match net {
@@ -250,13 +263,13 @@ fn build(mut arena: Vec<Node>, root: usize) -> Result<Net, NetError> {
                         }
                     }
                 }
-                (Net::Series(items), depth, key)
+                (Net::Series(items), depth)
             }
             Part::Parallel(_) => {
                 let mut items = Vec::new();
                 let mut depth = 0;
                 for c in children {
-                    let Some((net, d, k)) = done[c].take() else {
+                    let Some((net, d)) = done[c].take() else {
                         continue;
                     };
                     match net {
@@ -267,23 +280,23 @@ fn build(mut arena: Vec<Node>, root: usize) -> Result<Net, NetError> {
                         }
                         other => {
                             depth = depth.max(d + 1);
-                            items.push((k, other));
+                            items.push((arena[c].key, other));
                         }
                     }
                 }
                 items.sort_by_key(|(k, _)| *k);
                 let items = items.into_iter().map(|(_, n)| n).collect();
-                (Net::Parallel(items), depth, key)
+                (Net::Parallel(items), depth)
             }
         };
         if finished.1 > MAX_NESTING {
-            return Err(NetError::TooDeep(finished.0.first_pos()));
+            return Err(NetError::TooDeep(key));
         }
         done[i] = Some(finished);
     }
     done[root]
         .take()
-        .map(|(net, _, _)| net)
+        .map(|(net, _)| net)
         .ok_or(NetError::NotSeriesParallel(Pos::new(0, 0)))
 }
 
