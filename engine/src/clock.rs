@@ -1,6 +1,7 @@
 //! The periodic clock of the scan-based machines (IO86A and AVR scans,
 //! Arduino steps): what time it is and when the machine acts next.
 
+use crate::plc::SettingError;
 use crate::time::SimTime;
 
 /// Fires every `period`; the machine acts at each firing.
@@ -44,13 +45,10 @@ impl PeriodicClock {
         period: SimTime,
         from: SimTime,
         max: SimTime,
-        what: &str,
-    ) -> Result<(), String> {
+        what: &'static str,
+    ) -> Result<(), SettingError> {
         if period == SimTime::ZERO || period > max {
-            return Err(format!(
-                "{what} {period}ms is out of range: above 0 and at most {}s",
-                max.as_secs_f64()
-            ));
+            return Err(SettingError::PeriodOutOfRange { what, period, max });
         }
         self.period = period;
         self.next = from + period;

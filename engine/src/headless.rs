@@ -3,31 +3,12 @@
 
 use std::io::Write;
 
+use crate::plc::{Command, Plc, PlcError};
+
 use crate::error::Located;
-use crate::events::{InputEvent, InputValue};
+use crate::events::InputEvent;
 use crate::limits::MAX_CSV_VALUES;
 use crate::time::SimTime;
-
-/// What the headless runner needs from a machine.
-pub trait Simulation {
-    /// A watched device, resolved once before the run.
-    type Watch: Copy;
-
-    /// Applies a `--set NAME=VALUE`; nothing changes on error.
-    fn setting(&mut self, name: &str, value: &str) -> Result<(), String>;
-    /// Resolves a device name given to `--watch`.
-    fn watch(&self, name: &str) -> Result<Self::Watch, String>;
-    /// The watched value after the last completed scan.
-    fn value(&self, watch: Self::Watch) -> i64;
-    /// Checks that `device` can take `value` without applying it.
-    fn check_input(&self, device: &str, value: InputValue) -> Result<(), String>;
-    /// Applies an input event (already checked) at the current time.
-    fn apply_input(&mut self, device: &str, value: InputValue);
-    /// Runs every clock edge strictly before `t`; the time becomes `t`.
-    fn run_before(&mut self, t: SimTime);
-    /// Runs every clock edge at or before `t`; the time becomes `t`.
-    fn run_until(&mut self, t: SimTime);
-}
 
 /// When to print rows: at 0, every, 2·every, … up to and including until.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,9 +23,9 @@ pub struct Schedule {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RunError {
     /// A `--watch` name the machine does not have.
-    Watch(String),
+    Watch(PlcError),
     /// An event the machine cannot take, at its line of the events file.
-    Event(Located<String>),
+    Event(Located<PlcError>),
     /// `--every` is zero while `--until` is not.
     ZeroInterval,
     /// `--every` so small that the run would print more than this many
@@ -55,8 +36,8 @@ pub enum RunError {
 }
 
 /// [`run`] into a string.
-pub fn run_csv<S: Simulation>(
-    sim: &mut S,
+pub fn run_csv<P: Plc + ?Sized>(
+    sim: &mut P,
     events: &[InputEvent],
     schedule: Schedule,
     watch: &[String],
@@ -71,8 +52,8 @@ pub fn run_csv<S: Simulation>(
 /// output's size is bounded only by [`MAX_CSV_VALUES`]). Every watch name
 /// and every event is checked before anything runs, so a bad input yields
 /// errors and no output at all.
-pub fn run<S: Simulation, W: Write>(
-    sim: &mut S,
+pub fn run<P: Plc + ?Sized, W: Write>(
+    sim: &mut P,
     events: &[InputEvent],
     schedule: Schedule,
     watch: &[String],
@@ -81,14 +62,19 @@ pub fn run<S: Simulation, W: Write>(
     let mut errors = Vec::new();
     let mut watches = Vec::new();
     for name in watch {
-        match sim.watch(name) {
+        match sim.device(name) {
             Ok(w) => watches.push(w),
             Err(e) => errors.push(RunError::Watch(e)),
         }
     }
+    let mut inputs = Vec::with_capacity(events.len());
     for event in events {
-        if let Err(e) = sim.check_input(&event.device, event.value) {
-            errors.push(RunError::Event(Located::new(event.line, e)));
+        let checked = sim
+            .device(&event.device)
+            .and_then(|d| sim.check_input(d, event.value).map(|()| d));
+        match checked {
+            Ok(d) => inputs.push(d),
+            Err(e) => errors.push(RunError::Event(Located::new(event.line, e))),
         }
     }
     if schedule.every == SimTime::ZERO && schedule.until > SimTime::ZERO {
@@ -112,19 +98,20 @@ pub fn run<S: Simulation, W: Write>(
     }
     writeln!(out, "{header}").map_err(failed)?;
 
-    let mut pending = events.iter().peekable();
+    let mut pending = events.iter().zip(inputs).peekable();
     let mut row_time = SimTime::ZERO;
     loop {
         // Events at or before this row's time come first, each applied
         // before any clock edge at its own instant.
-        while let Some(event) = pending.next_if(|e| e.time <= row_time) {
+        while let Some((event, device)) = pending.next_if(|(e, _)| e.time <= row_time) {
             sim.run_before(event.time);
-            sim.apply_input(&event.device, event.value);
+            // Checked above: the machine takes it.
+            let _ = sim.apply(Command::SetInput(device, event.value));
         }
         sim.run_until(row_time);
         write!(out, "{row_time}").map_err(failed)?;
         for &w in &watches {
-            write!(out, ",{}", sim.value(w)).map_err(failed)?;
+            write!(out, ",{}", sim.read(w)).map_err(failed)?;
         }
         writeln!(out).map_err(failed)?;
         if row_time >= schedule.until {

@@ -14,6 +14,7 @@ pub mod ladder;
 pub mod limits;
 pub mod machine_id;
 pub mod minasec;
+pub mod plc;
 pub mod time;
 
 pub use error::{shown, Located};

@@ -3,6 +3,7 @@
 
 use super::isa::{Op, Program, ERASED};
 use crate::clock::PeriodicClock;
+use crate::plc::SettingError;
 use crate::time::SimTime;
 
 /// Which ATmega the sketch runs on: its EEPROM holds 256 or 512 words.
@@ -54,6 +55,8 @@ pub struct Machine {
     /// PORTB: bit n = Y00n.
     port_b: u8,
     steps: u64,
+    /// Times the run came back to step 0 (END, JUMP 0).
+    passes: u64,
 }
 
 impl Machine {
@@ -75,7 +78,30 @@ impl Machine {
             inputs: 0,
             port_b: 0,
             steps: 0,
+            passes: 0,
         }
+    }
+
+    /// Power off and on: the program counter, the bit stack and the
+    /// outputs cleared, the PLC disabled until `e` (as after power-up);
+    /// the EEPROM stays.
+    pub fn power_cycle(&mut self) {
+        self.pc = 0;
+        self.stack = 0;
+        self.port_b = 0;
+        self.enabled = false;
+        self.clock.restart();
+    }
+
+    /// Writes `program` into EEPROM (the rest erased), as uploading it
+    /// does; the run starts again from step 0 with an empty stack.
+    pub fn load(&mut self, program: &Program) {
+        self.eeprom.iter_mut().for_each(|w| *w = ERASED);
+        for (slot, &word) in self.eeprom.iter_mut().zip(program.words()) {
+            *slot = word;
+        }
+        self.pc = 0;
+        self.stack = 0;
     }
 
     /// The EEPROM, one word per step.
@@ -101,13 +127,13 @@ impl Machine {
 
     /// Changes the chip: the EEPROM grows (erased) or shrinks, refusing to
     /// drop a programmed word.
-    pub fn set_chip(&mut self, chip: Chip) -> Result<(), String> {
+    pub fn set_chip(&mut self, chip: Chip) -> Result<(), SettingError> {
         let capacity = chip.capacity();
         if let Some(step) = self.eeprom.iter().skip(capacity).position(|&w| w != ERASED) {
-            return Err(format!(
-                "step {} is programmed but this chip holds {capacity} steps",
-                capacity + step
-            ));
+            return Err(SettingError::ChipTooSmall {
+                step: capacity + step,
+                capacity,
+            });
         }
         self.eeprom.resize(capacity, ERASED);
         self.chip = chip;
@@ -120,7 +146,7 @@ impl Machine {
     }
 
     /// Sets the time a step takes (above zero).
-    pub fn set_step_time(&mut self, t: SimTime) -> Result<(), String> {
+    pub fn set_step_time(&mut self, t: SimTime) -> Result<(), SettingError> {
         let now = self.clock.now();
         self.clock
             .set_period(t, now, SimTime::from_secs(1), "step time")
@@ -172,9 +198,42 @@ impl Machine {
         self.clock.now()
     }
 
+    /// The time one step takes.
+    pub fn step_time(&self) -> SimTime {
+        self.clock.period()
+    }
+
+    /// Times the run came back to step 0 (END or JUMP 0): the sketch's
+    /// nearest thing to completed scans.
+    pub fn passes(&self) -> u64 {
+        self.passes
+    }
+
     /// Steps executed.
     pub fn steps(&self) -> u64 {
         self.steps
+    }
+
+    /// Runs the next step at its time; returns its address (`None` while
+    /// the PLC is not enabled).
+    pub fn step_instruction(&mut self) -> Option<u16> {
+        if !self.enabled {
+            return None;
+        }
+        let pc = self.pc;
+        self.run_until(self.clock.next());
+        Some(pc)
+    }
+
+    /// Runs steps until the program returns to step 0 (END or JUMP 0):
+    /// the sketch's nearest thing to a scan.
+    pub fn step_scan(&mut self) {
+        for _ in 0..=self.eeprom.len() {
+            match self.step_instruction() {
+                Some(_) if self.pc != 0 => {}
+                _ => break,
+            }
+        }
     }
 
     /// Runs every step due at or before `t`.
@@ -272,6 +331,9 @@ impl Machine {
             }
             Some(Op::Jump) => self.pc = word & 0xFF,
             None => {} // opcodes 10-14: the sketch does nothing
+        }
+        if self.pc == 0 {
+            self.passes += 1;
         }
     }
 }

@@ -6,10 +6,11 @@
 //!   erased EEPROM as `JUMP 255`;
 //! - [`monitor`]: the serial monitor's commands.
 
-pub mod headless;
 pub mod isa;
 pub mod machine;
 pub mod monitor;
+pub mod plc;
 
 pub use isa::Program;
 pub use machine::{Chip, Machine, PopOrder};
+pub use plc::ArduinoPlc;

@@ -4,18 +4,17 @@
 
 use super::program::{BitRef, Instruction, Program, TimerKind};
 use crate::clock::PeriodicClock;
+use crate::plc::SettingError;
 use crate::time::SimTime;
 
 /// The value of the assembler's `Scan` symbol for a scan period: whole
 /// milliseconds, 1 ms to 10 s. The source computes presets as integers
 /// (`LOW(1000/Scan)`), so a period of 1.5 ms or 0.5 ms would silently give
 /// timers of the wrong length (or a division by zero): it is refused.
-pub fn scan_ms(period: SimTime) -> Result<u32, String> {
+pub fn scan_ms(period: SimTime) -> Result<u32, SettingError> {
     let nanos = period.as_nanos();
     if nanos == 0 || nanos > 10_000_000_000 || !nanos.is_multiple_of(1_000_000) {
-        return Err(format!(
-            "the AVR PLC's scan period is a whole number of milliseconds from 1ms to 10s (its programs compute timer presets as ms/Scan), not {period}ms"
-        ));
+        return Err(SettingError::AvrScan(period));
     }
     Ok((nanos / 1_000_000) as u32)
 }
@@ -105,6 +104,9 @@ pub struct Machine {
     driven: Vec<(BitRef, bool)>,
     scans: u64,
     last_scan: [u8; 32],
+    /// The scan under way when stepping one record at a time: the next
+    /// record and the running result.
+    in_scan: Option<(usize, bool)>,
 }
 
 impl Machine {
@@ -119,7 +121,29 @@ impl Machine {
             driven: Vec::new(),
             scans: 0,
             last_scan: [0; 32],
+            in_scan: None,
         }
+    }
+
+    /// Power off and on: registers and timer RAM cleared (so a TOF is on
+    /// for its set time again); the program and the driven inputs stay.
+    /// The next scan comes one period from now.
+    pub fn power_cycle(&mut self) {
+        self.in_scan = None;
+        self.registers = [0; 32];
+        self.last_scan = [0; 32];
+        self.timers
+            .iter_mut()
+            .for_each(|t| *t = TimerWord::default());
+        self.clock.restart();
+    }
+
+    /// Replaces the program, as flashing the AVR does: the device starts
+    /// again from power-up; the scan period and the driven inputs stay.
+    pub fn load(&mut self, program: Program) {
+        self.timers = vec![TimerWord::default(); program.timer_count()];
+        self.program = program;
+        self.power_cycle();
     }
 
     /// The program.
@@ -134,7 +158,7 @@ impl Machine {
 
     /// Sets the scan period (the program's presets count scans); it must
     /// pass [`scan_ms`]. Nothing changes on error.
-    pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
+    pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), SettingError> {
         scan_ms(period)?;
         let now = self.clock.now();
         self.clock
@@ -174,8 +198,10 @@ impl Machine {
         self.scans
     }
 
-    /// Runs every scan due at or before `t`.
+    /// Runs every scan due at or before `t` (first finishing one that was
+    /// being stepped).
     pub fn run_until(&mut self, t: SimTime) {
+        self.finish_scan();
         while self.clock.fire_until(t).is_some() {
             self.scan();
         }
@@ -198,43 +224,106 @@ impl Machine {
     }
 
     fn scan(&mut self) {
+        let mut state = self.begin_scan();
+        while self.execute(&mut state) {}
+        self.end_scan();
+    }
+
+    /// Finishes a scan that was being stepped.
+    fn finish_scan(&mut self) {
+        if let Some(mut state) = self.in_scan.take() {
+            while self.execute(&mut state) {}
+            self.end_scan();
+        }
+    }
+
+    /// Runs one record: the first starts the next scan at its time, the
+    /// last ends it. Returns the index of the record run (`None` for an
+    /// empty program, when a whole empty scan runs instead).
+    pub fn step_instruction(&mut self) -> Option<usize> {
+        let mut state = match self.in_scan.take() {
+            Some(state) => state,
+            None => {
+                let next = self.clock.next();
+                self.clock.fire_until(next);
+                self.begin_scan()
+            }
+        };
+        let index = state.0;
+        if self.execute(&mut state) {
+            self.in_scan = Some(state);
+        } else {
+            self.end_scan();
+        }
+        (index < self.program.instructions().len()).then_some(index)
+    }
+
+    /// Runs to the end of the scan under way, or one whole next scan.
+    pub fn step_scan(&mut self) {
+        if self.in_scan.is_some() {
+            self.finish_scan();
+        } else {
+            let next = self.clock.next();
+            self.clock.fire_until(next);
+            self.scan();
+        }
+    }
+
+    /// The next record of a scan being stepped, if one is.
+    pub fn scan_position(&self) -> Option<usize> {
+        self.in_scan.map(|(pc, _)| pc)
+    }
+
+    /// Writes the driven input bits into their registers.
+    fn begin_scan(&mut self) -> (usize, bool) {
         for i in 0..self.driven.len() {
             let (b, on) = self.driven[i];
             self.write(b, on);
         }
-        let mut acc = false;
-        for i in 0..self.program.instructions().len() {
-            match self.program.instructions()[i] {
-                Instruction::Load(b, inv) => acc = self.read(b) ^ inv,
-                Instruction::And(b, inv) => acc &= self.read(b) ^ inv,
-                Instruction::Or(b, inv) => acc |= self.read(b) ^ inv,
-                Instruction::Coil(b, inv) => self.write(b, acc ^ inv),
-                Instruction::Set(b) if acc => self.write(b, true),
-                Instruction::Reset(b) if acc => self.write(b, false),
-                Instruction::Set(_) | Instruction::Reset(_) => {}
-                Instruction::Timer {
-                    kind,
-                    index,
-                    preset,
-                } => {
-                    if let Some(t) = self.timers.get_mut(index) {
-                        acc = t.run(kind, acc, preset);
-                    }
-                }
-                Instruction::Not => acc = !acc,
-                Instruction::Pulse(memory, falling) => {
-                    let before = self.read(memory);
-                    self.write(memory, acc);
-                    acc = if falling {
-                        !acc && before
-                    } else {
-                        acc && !before
-                    };
-                }
-                Instruction::End => break,
-            }
-        }
+        (0, false)
+    }
+
+    fn end_scan(&mut self) {
         self.scans += 1;
         self.last_scan = self.registers;
+    }
+
+    /// Runs the record at `pc` with the running result `acc`; false once
+    /// the scan is over.
+    fn execute(&mut self, (pc, acc): &mut (usize, bool)) -> bool {
+        let Some(&instruction) = self.program.instructions().get(*pc) else {
+            return false;
+        };
+        *pc += 1;
+        match instruction {
+            Instruction::Load(b, inv) => *acc = self.read(b) ^ inv,
+            Instruction::And(b, inv) => *acc &= self.read(b) ^ inv,
+            Instruction::Or(b, inv) => *acc |= self.read(b) ^ inv,
+            Instruction::Coil(b, inv) => self.write(b, *acc ^ inv),
+            Instruction::Set(b) if *acc => self.write(b, true),
+            Instruction::Reset(b) if *acc => self.write(b, false),
+            Instruction::Set(_) | Instruction::Reset(_) => {}
+            Instruction::Timer {
+                kind,
+                index,
+                preset,
+            } => {
+                if let Some(t) = self.timers.get_mut(index) {
+                    *acc = t.run(kind, *acc, preset);
+                }
+            }
+            Instruction::Not => *acc = !*acc,
+            Instruction::Pulse(memory, falling) => {
+                let before = self.read(memory);
+                self.write(memory, *acc);
+                *acc = if falling {
+                    !*acc && before
+                } else {
+                    *acc && !before
+                };
+            }
+            Instruction::End => return false,
+        }
+        true
     }
 }

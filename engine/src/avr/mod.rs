@@ -6,9 +6,10 @@
 //! - [`machine`]: the scan and the TON/TOF/TP timers.
 
 pub mod asm;
-pub mod headless;
 pub mod machine;
+pub mod plc;
 pub mod program;
 
 pub use machine::{scan_ms, Machine, TimerWord};
+pub use plc::AvrPlc;
 pub use program::{parse_register_bit, BitRef, Instruction, Program, ProgramError, TimerKind};

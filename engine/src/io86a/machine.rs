@@ -3,8 +3,10 @@
 
 use super::asm::Program;
 use super::isa::{Bit, Instruction, Word};
-use super::peripherals::{IrMode, OutputSignal, Settings};
+use super::peripherals::{OutputSignal, Settings};
+use super::scan::ScanState;
 use crate::clock::PeriodicClock;
+use crate::plc::SettingError;
 use crate::time::SimTime;
 
 /// The default scan period.
@@ -90,7 +92,7 @@ impl Devices {
         }
     }
 
-    fn set_bit(&mut self, bit: Bit, on: bool) {
+    pub(super) fn set_bit(&mut self, bit: Bit, on: bool) {
         fn put8(v: &mut u8, n: u8, on: bool) {
             *v = (*v & !(1 << n)) | (u8::from(on) << n);
         }
@@ -122,41 +124,43 @@ pub struct LinkWrite {
 /// One PLC-IO86A.
 #[derive(Clone, Debug)]
 pub struct Machine {
-    program: Program,
-    clock: PeriodicClock,
-    running: bool,
-    settings: Settings,
+    pub(super) program: Program,
+    pub(super) clock: PeriodicClock,
+    pub(super) running: bool,
+    pub(super) settings: Settings,
     /// The input pins as driven (bit n = X0n on).
-    input_terminals: u8,
+    pub(super) input_terminals: u8,
     /// The inputs after the filter, and when each pin last changed.
-    filtered: u8,
-    changed_at: [SimTime; 8],
+    pub(super) filtered: u8,
+    pub(super) changed_at: [SimTime; 8],
     /// Volts on X04 / X05, in millivolts.
-    analog_mv: [i64; 2],
+    pub(super) analog_mv: [i64; 2],
     /// The IR frame being received (a button held), and the last one seen.
-    ir_frame: Option<u32>,
-    last_ir: Option<u32>,
-    devices: Devices,
-    output_terminals: u8,
+    pub(super) ir_frame: Option<u32>,
+    pub(super) last_ir: Option<u32>,
+    pub(super) devices: Devices,
+    pub(super) output_terminals: u8,
     /// The previous rung state of each instruction (PLS, PLF, OUT C).
-    edges: Vec<bool>,
-    stack: Vec<bool>,
-    first_scan: bool,
-    last_scan_at: SimTime,
-    scans: u64,
-    last_scan: Devices,
-    link_writes: Vec<LinkWrite>,
+    pub(super) edges: Vec<bool>,
+    pub(super) stack: Vec<bool>,
+    pub(super) first_scan: bool,
+    pub(super) last_scan_at: SimTime,
+    pub(super) scans: u64,
+    pub(super) last_scan: Devices,
+    pub(super) link_writes: Vec<LinkWrite>,
+    /// The scan under way when stepping one instruction at a time.
+    pub(super) in_scan: Option<ScanState>,
 }
 
 /// The system relays.
-const M_OFF: u8 = 56;
-const M_ON: u8 = 57;
-const M_5HZ: u8 = 58;
-const M_1S: u8 = 59;
-const M_GT: u8 = 60;
-const M_EQ: u8 = 61;
-const M_LT: u8 = 62;
-const M_FIRST: u8 = 63;
+pub(super) const M_OFF: u8 = 56;
+pub(super) const M_ON: u8 = 57;
+pub(super) const M_5HZ: u8 = 58;
+pub(super) const M_1S: u8 = 59;
+pub(super) const M_GT: u8 = 60;
+pub(super) const M_EQ: u8 = 61;
+pub(super) const M_LT: u8 = 62;
+pub(super) const M_FIRST: u8 = 63;
 
 impl Machine {
     /// A device with `program`, powered on and in RUN (as after power-up).
@@ -182,6 +186,7 @@ impl Machine {
             scans: 0,
             last_scan: Devices::default(),
             link_writes: Vec::new(),
+            in_scan: None,
         }
     }
 
@@ -192,7 +197,7 @@ impl Machine {
 
     /// Sets the scan period (must be above zero); the next scan comes one
     /// new period after the last.
-    pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), String> {
+    pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), SettingError> {
         self.clock.set_period(
             period,
             self.last_scan_at,
@@ -290,6 +295,9 @@ impl Machine {
     /// Runs (`R`) or stops (Ctrl-C) the program. Running again starts from
     /// the first scan (M63 pulses), with the devices as they are.
     pub fn set_running(&mut self, run: bool) {
+        if !run {
+            self.finish_scan();
+        }
         if run && !self.running {
             self.first_scan = true;
             self.last_scan_at = self.clock.now();
@@ -298,9 +306,29 @@ impl Machine {
         self.running = run;
     }
 
+    /// Power off and on: every device, timer, counter and edge cleared,
+    /// the outputs off, the first-scan relay set again; the program, the
+    /// pin settings and the driven inputs stay. The next scan comes one
+    /// period from now.
+    pub fn power_cycle(&mut self) {
+        self.in_scan = None;
+        self.devices = Devices::default();
+        self.last_scan = Devices::default();
+        self.output_terminals = 0;
+        self.edges.iter_mut().for_each(|e| *e = false);
+        self.stack.clear();
+        self.link_writes.clear();
+        self.first_scan = true;
+        self.running = true;
+        self.last_scan_at = self.clock.now();
+        self.clock.restart();
+    }
+
     /// Replaces the program (edited at the terminal); the edge memory of
     /// PLS/PLF/counters starts again.
     pub fn load(&mut self, program: Program) {
+        // A scan being stepped ends with the program it started with.
+        self.finish_scan();
         self.edges = vec![false; program.instructions().len()];
         self.program = program;
     }
@@ -353,8 +381,10 @@ impl Machine {
         self.running.then_some(self.clock.next())
     }
 
-    /// Runs every scan due at or before `t`.
+    /// Runs every scan due at or before `t` (first finishing one that
+    /// was being stepped).
     pub fn run_until(&mut self, t: SimTime) {
+        self.finish_scan();
         while self.running && self.clock.fire_until(t).is_some() {
             self.scan();
         }
@@ -365,144 +395,5 @@ impl Machine {
     pub fn run_before(&mut self, t: SimTime) {
         self.run_until(PeriodicClock::just_before(t));
         self.clock.settle(t);
-    }
-
-    /// One scan at the current time.
-    fn scan(&mut self) {
-        let now = self.clock.now();
-        let elapsed = now - self.last_scan_at;
-        self.last_scan_at = now;
-        // The input filter: a change counts once it has held long enough.
-        let hold = self.settings.filter_time();
-        for n in 0..8u8 {
-            let changed = (self.input_terminals ^ self.filtered) >> n & 1 != 0;
-            if changed && now.saturating_sub(self.changed_at[usize::from(n)]) >= hold {
-                self.filtered ^= 1 << n;
-            }
-        }
-        let d = &mut self.devices;
-        d.x = self.filtered;
-        for (i, mode) in self.settings.analog.iter().enumerate() {
-            if let Some(value) = mode.convert(self.analog_mv[i]) {
-                d.x &= !(1 << (4 + i)); // the pin is no digital input now
-                d.d[6 + i] = value;
-            }
-        }
-        if let IrMode::Ir { custom } = self.settings.ir {
-            d.x &= !(1 << 7);
-            d.d[3] = match self.ir_frame {
-                Some(frame) if custom.is_none_or(|c| u32::from(c) == frame >> 16) => {
-                    frame as u16 as i16
-                }
-                _ => 0,
-            };
-        }
-        let now_ms = now.as_nanos() / 1_000_000;
-        let specials = [
-            (M_OFF, false),
-            (M_ON, true),
-            (M_5HZ, (now_ms / 100) % 2 == 1),
-            (M_1S, (now_ms / 1000) % 2 == 1),
-            (M_FIRST, self.first_scan),
-        ];
-        for (n, on) in specials {
-            d.set_bit(Bit::M(n), on);
-        }
-        self.first_scan = false;
-
-        let mut acc = false;
-        let mut open = false; // a rung has started since the last output
-        let mut after_output = false;
-        self.stack.clear();
-        for (index, &instruction) in self.program.instructions().iter().enumerate() {
-            let d = &mut self.devices;
-            let mut output = true;
-            match instruction {
-                Instruction::Ld(b) | Instruction::Ldi(b) => {
-                    if open && !after_output {
-                        self.stack.push(acc);
-                    } else {
-                        self.stack.clear();
-                    }
-                    acc = d.bit(b) ^ matches!(instruction, Instruction::Ldi(_));
-                    open = true;
-                    after_output = false;
-                    output = false;
-                }
-                Instruction::And(b) => (acc, output) = (acc && d.bit(b), false),
-                Instruction::Ani(b) => (acc, output) = (acc && !d.bit(b), false),
-                Instruction::Or(b) => (acc, output) = (acc || d.bit(b), false),
-                Instruction::Ori(b) => (acc, output) = (acc || !d.bit(b), false),
-                Instruction::Orb => {
-                    (acc, output) = (self.stack.pop().unwrap_or(false) || acc, false)
-                }
-                Instruction::Anb => {
-                    (acc, output) = (self.stack.pop().unwrap_or(false) && acc, false)
-                }
-                Instruction::Out(b) => d.set_bit(b, acc),
-                Instruction::OutTimer(n, preset) => {
-                    let k = i64::from(d.word(preset));
-                    let t = &mut d.timers[usize::from(n)];
-                    if acc {
-                        t.elapsed = if t.coil {
-                            t.elapsed + elapsed
-                        } else {
-                            SimTime::ZERO
-                        };
-                        t.coil = true;
-                        t.on = i64::from(t.current(n)) >= k;
-                    } else {
-                        *t = Timer::default();
-                    }
-                }
-                Instruction::OutCounter(n, preset) => {
-                    let k = d.word(preset);
-                    let c = &mut d.counters[usize::from(n)];
-                    if acc && !self.edges[index] && c.count < k {
-                        c.count += 1;
-                    }
-                    c.on = c.count >= k;
-                    self.edges[index] = acc;
-                }
-                Instruction::Pls(b) => {
-                    d.set_bit(b, acc && !self.edges[index]);
-                    self.edges[index] = acc;
-                }
-                Instruction::Plf(b) => {
-                    d.set_bit(b, !acc && self.edges[index]);
-                    self.edges[index] = acc;
-                }
-                Instruction::Set(b) if acc => d.set_bit(b, true),
-                Instruction::Rst(b) if acc => d.set_bit(b, false),
-                Instruction::Sets(b) if acc => {
-                    self.link_writes.push(LinkWrite { bit: b, on: true })
-                }
-                Instruction::Rsts(b) if acc => {
-                    self.link_writes.push(LinkWrite { bit: b, on: false })
-                }
-                Instruction::Cmp(a, b) if acc => {
-                    let (a, b) = (d.word(a), d.word(b));
-                    d.set_bit(Bit::M(M_GT), a > b);
-                    d.set_bit(Bit::M(M_EQ), a == b);
-                    d.set_bit(Bit::M(M_LT), a < b);
-                }
-                Instruction::Mov(a, to) if acc => d.d[usize::from(to)] = d.word(a),
-                Instruction::Inc(r) if acc => {
-                    d.d[usize::from(r)] = d.d[usize::from(r)].wrapping_add(1)
-                }
-                Instruction::Dec(r) if acc => {
-                    d.d[usize::from(r)] = d.d[usize::from(r)].wrapping_sub(1)
-                }
-                Instruction::End => break,
-                // SET, RST, SETS, RSTS, CMP, MOV, INC, DEC with the rung OFF.
-                _ => {}
-            }
-            if output {
-                after_output = true;
-            }
-        }
-        self.output_terminals = self.devices.y;
-        self.scans += 1;
-        self.last_scan.clone_from(&self.devices);
     }
 }

@@ -11,15 +11,18 @@
 //! - [`terminal`]: the serial terminal's commands.
 
 pub mod asm;
-pub mod headless;
 pub mod isa;
 pub mod link;
 pub mod machine;
 pub mod peripherals;
+pub mod plc;
+mod scan;
 pub mod terminal;
 
 pub use asm::{AsmError, Program};
 pub use isa::{Bit, Instruction, Word};
 pub use link::LinkedPair;
 pub use machine::{Devices, Machine};
+pub use plc::Io86aPlc;
+pub use scan::ScanState;
 pub use terminal::Terminal;

@@ -472,6 +472,40 @@ impl Machine {
         self.now = t;
     }
 
+    /// Runs the next clock edge, if the CPU is clocked (RUN, powered).
+    /// Returns whether an edge ran.
+    pub fn step_clock(&mut self) -> bool {
+        if !self.running() {
+            return false;
+        }
+        self.run_until(self.next_edge);
+        true
+    }
+
+    /// Runs one whole clock (the rising and the falling edge): one step.
+    /// Returns the address of the step executed.
+    pub fn step_instruction(&mut self) -> Option<u8> {
+        let pc = self.pc;
+        if !self.step_clock() {
+            return None;
+        }
+        if self.clk_high {
+            self.step_clock();
+        }
+        Some(pc)
+    }
+
+    /// Runs to the end of the scan (the next PC wrap).
+    pub fn step_scan(&mut self) {
+        let scans = self.scans;
+        // 256 steps a scan; one more clock covers a half-clock start.
+        for _ in 0..=STEPS {
+            if self.scans != scans || self.step_instruction().is_none() {
+                break;
+            }
+        }
+    }
+
     /// Runs edges strictly before `t` (so that events at `t` come first).
     pub fn run_before(&mut self, t: SimTime) {
         if t > self.now {

@@ -10,10 +10,10 @@ pub mod asm;
 pub mod control;
 pub mod counter;
 mod fast;
-pub mod headless;
 pub mod isa;
 pub mod machine;
 pub mod panel;
+pub mod plc;
 pub mod timer;
 
 pub use asm::{AsmError, Program, ProgrammingSheet};
@@ -21,6 +21,7 @@ pub use control::{ClockSpeed, Command, Mode, SettingError, TimerId};
 pub use isa::{Address, Instruction, Opcode};
 pub use machine::{Machine, ScanSnapshot};
 pub use panel::{CpuSignals, Panel};
+pub use plc::MinasecPlc;
 
 /// The seed book's test program (machines.md §1): X00 start, X01 stop,
 /// self-holding Y00; T0/T1 flicker while running; each T0 rise counts C0;

@@ -174,6 +174,7 @@ fn chips_hold_256_or_512_steps() {
     assert!(m
         .apply_setting("chip", "168")
         .unwrap_err()
+        .to_string()
         .contains("step 300"));
     let mut small = Machine::new(&Program::parse("END\n", 512).unwrap(), Chip::Atmega328);
     assert_eq!(small.apply_setting("chip", "168"), Ok(()));

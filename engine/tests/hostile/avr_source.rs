@@ -54,7 +54,10 @@ fn the_scan_symbol_is_whole_milliseconds_or_refused() {
     for bad in ["1500us", "500us", "0", "11s"] {
         let t = SimTime::parse(bad).expect("a time");
         let e = avr::scan_ms(t).expect_err(bad);
-        assert!(e.contains("whole number of milliseconds"), "{bad}: {e}");
+        assert!(
+            e.to_string().contains("whole number of milliseconds"),
+            "{bad}: {e}"
+        );
     }
     let mut m = avr::Machine::new(avr::Program::default());
     assert!(m.apply_setting("scan", "1500us").is_err());

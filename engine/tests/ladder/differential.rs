@@ -5,11 +5,11 @@
 //! 10 000. Shrunk failures are kept as regression tests at the end.
 
 use engine::events::InputValue;
-use engine::headless::Simulation;
 use engine::ladder::compile::{compile_logic, Options};
 use engine::ladder::decompile::{decompile, Source};
 use engine::ladder::eval::Reference;
 use engine::ladder::{Ladder, RungLogic};
+use engine::plc::{new_plc, Command, Plc};
 
 use crate::strategies::{case, pool, Pool};
 use engine::{arduino, avr, io86a, minasec, MachineId, SimTime};
@@ -35,88 +35,55 @@ fn latency(machine: MachineId) -> u64 {
     }
 }
 
-fn load(machine: MachineId, text: &str) -> Result<(Box<dyn Sim>, Timing), String> {
+fn load(machine: MachineId, text: &str) -> Result<(Box<dyn Plc>, Timing), String> {
     let fail = |e: String| format!("compiled program does not load: {e}\n{text}");
-    Ok(match machine {
+    let mut plc = new_plc(machine);
+    plc.load_text(text).map_err(|e| fail(e.to_string()))?;
+    let (period, offset) = match machine {
         MachineId::MinasecU => {
-            let program = minasec::Program::parse(text).map_err(|e| fail(format!("{e:?}")))?;
-            let mut m = minasec::Machine::for_run();
-            m.load(&program);
             let clock = SimTime::from_micros(33);
             let period = SimTime::from_nanos(clock.as_nanos() * 256);
             let offset = SimTime::from_nanos(period.as_nanos() / 2 + clock.as_nanos() / 2);
-            (
-                Box::new(m),
-                Timing {
-                    period,
-                    offset,
-                    latency: latency(machine),
-                },
-            )
+            (period, offset)
         }
         MachineId::Io86a => {
-            let program = io86a::Program::parse(text).map_err(|e| fail(format!("{e:?}")))?;
-            let mut m = io86a::Machine::new(program);
-            m.setting("filter", "0")?;
-            let period = SimTime::from_millis(1);
-            (
-                Box::new(m),
-                Timing {
-                    period,
-                    offset: SimTime::from_micros(500),
-                    latency: latency(machine),
-                },
-            )
+            plc.apply(Command::Setting {
+                name: "filter".into(),
+                value: "0".into(),
+            })
+            .map_err(|e| e.to_string())?;
+            (SimTime::from_millis(1), SimTime::from_micros(500))
         }
-        MachineId::AvrPlc => {
-            let program = avr::Program::parse(text, 10).map_err(|e| fail(format!("{e:?}")))?;
-            let m = avr::Machine::new(program);
-            let period = SimTime::from_millis(10);
-            (
-                Box::new(m),
-                Timing {
-                    period,
-                    offset: SimTime::from_millis(5),
-                    latency: latency(machine),
-                },
-            )
-        }
+        MachineId::AvrPlc => (SimTime::from_millis(10), SimTime::from_millis(5)),
         MachineId::ArduinoPlc => {
             let program = arduino::Program::parse(text, 512).map_err(|e| fail(format!("{e:?}")))?;
             let steps = program.words().len() as u64;
-            let mut m = arduino::Machine::new(&program, arduino::Chip::Atmega328);
-            m.set_enabled(true);
             let step = SimTime::from_micros(10);
-            let period = SimTime::from_nanos(step.as_nanos() * steps);
             (
-                Box::new(m),
-                Timing {
-                    period,
-                    offset: SimTime::from_micros(5),
-                    latency: latency(machine),
-                },
+                SimTime::from_nanos(step.as_nanos() * steps),
+                SimTime::from_micros(5),
             )
         }
-    })
+    };
+    let timing = Timing {
+        period,
+        offset,
+        latency: latency(machine),
+    };
+    Ok((plc, timing))
 }
 
-/// The headless interface with watches by name, object-safe.
-trait Sim {
-    fn input(&mut self, device: &str, on: bool);
-    fn bit(&self, device: &str) -> Result<bool, String>;
-    fn until(&mut self, t: SimTime);
+/// Drives an input bit by name.
+fn input(plc: &mut dyn Plc, device: &str, on: bool) {
+    if let Ok(d) = plc.device(device) {
+        let _ = plc.apply(Command::SetInput(d, InputValue::Int(i64::from(on))));
+    }
 }
 
-impl<S: Simulation> Sim for S {
-    fn input(&mut self, device: &str, on: bool) {
-        self.apply_input(device, InputValue::Int(i64::from(on)));
-    }
-    fn bit(&self, device: &str) -> Result<bool, String> {
-        Ok(self.value(self.watch(device)?) != 0)
-    }
-    fn until(&mut self, t: SimTime) {
-        self.run_until(t);
-    }
+/// A bit by name, as the last scan left it.
+fn bit(plc: &dyn Plc, device: &str) -> Result<bool, String> {
+    let d = plc.device(device).map_err(|e| e.to_string())?;
+    Ok(plc.read(d) != 0)
 }
 
 /// Runs one case; `Ok(false)` when the ladder needs more than the machine
@@ -206,18 +173,18 @@ fn machine_run(
     let at = |j: u64| SimTime::from_nanos(j * timing.period.as_nanos() + timing.offset.as_nanos());
     let mut out = Vec::new();
     for j in 0..timeline.len() as u64 + timing.latency {
-        sim.until(at(j));
+        sim.run_until(at(j));
         if j >= timing.latency {
             out.push(
                 watched
                     .iter()
-                    .map(|d| sim.bit(d))
+                    .map(|d| bit(sim.as_ref(), d))
                     .collect::<Result<Vec<_>, _>>()?,
             );
         }
         if let Some(vector) = timeline.get(j as usize) {
             for (d, &on) in inputs.iter().zip(vector) {
-                sim.input(d, on);
+                input(sim.as_mut(), d, on);
             }
         }
     }

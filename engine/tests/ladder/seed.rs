@@ -1,10 +1,11 @@
 //! The seed's MINASEC-U test program drawn as a ladder compiles to a
 //! program that behaves like the seed's own listing.
 
-use engine::headless::{run_csv as run, Schedule, Simulation};
+use engine::headless::{run_csv as run, Schedule};
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::Project;
-use engine::minasec::{Machine, Program};
+use engine::minasec::Program;
+use engine::plc::{Command, MinasecPlc, Plc};
 use engine::{events, MachineId, SimTime};
 
 const SEED_JSON: &str = include_str!("../../programs/minasec-u/seed-test.json");
@@ -12,10 +13,14 @@ const SEED_IL: &str = include_str!("../../programs/minasec-u/seed-test.il");
 const EVENTS: &str = include_str!("../../programs/minasec-u/seed-test.events.csv");
 
 fn run_program(program: &Program, settings: &[(String, String)]) -> String {
-    let mut m = Machine::for_run();
-    m.load(program);
-    for (k, v) in settings {
-        m.setting(k, v).expect("seed setting");
+    let mut m = MinasecPlc::new();
+    m.load_text(&program.to_text()).expect("loads");
+    for (name, value) in settings {
+        let setting = Command::Setting {
+            name: name.clone(),
+            value: value.clone(),
+        };
+        m.apply(setting).expect("seed setting");
     }
     let events = events::parse_events(EVENTS).expect("events");
     let watch: Vec<String> = ["X00", "Y00", "Y01", "T0", "T1", "C0.v"]

@@ -105,14 +105,17 @@ fn potentiometer_ranges_are_enforced() {
     assert!(m
         .apply_setting("T0", "1.2s")
         .unwrap_err()
+        .to_string()
         .contains("out of range"));
     assert!(m
         .apply_setting("T1", "0.5s")
         .unwrap_err()
+        .to_string()
         .contains("out of range"));
     assert!(m
         .apply_setting("T1", "soon")
         .unwrap_err()
+        .to_string()
         .contains("bad time"));
     assert_eq!(m.apply_setting("T1", "11s"), Ok(()));
 }

@@ -1,0 +1,224 @@
+//! The AVR simplified PLC behind the [`Plc`] interface: `--set scan=`,
+//! bits by name or `R4.2`, timer words by label.
+
+use super::machine::Machine;
+use super::program::{BitRef, Instruction, TimerKind};
+use super::Program;
+use crate::events::InputValue;
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
+use crate::plc::{SettingInfo, Warning};
+use crate::time::SimTime;
+use crate::{Located, MachineId};
+
+const SETTINGS: &[SettingInfo] = &[SettingInfo {
+    name: "scan",
+    range: "whole milliseconds, 1ms..10s",
+    default: "10ms",
+}];
+
+// Handles: a bit (register × 8 + bit), a timer word's count (0x1000 + index).
+const TIMER: u32 = 0x1000;
+
+impl Machine {
+    /// Applies one `--set NAME=VALUE`: `scan=<time>`.
+    pub fn apply_setting(&mut self, name: &str, value: &str) -> Result<(), SettingError> {
+        match name.to_ascii_lowercase().as_str() {
+            "scan" => self.set_scan_period(SimTime::parse(value)?),
+            _ => Err(SettingError::Unknown {
+                machine: MachineId::AvrPlc,
+                name: name.to_string(),
+                takes: "scan",
+            }),
+        }
+    }
+}
+
+/// The AVR PLC as a [`Plc`].
+#[derive(Clone, Debug)]
+pub struct AvrPlc {
+    machine: Machine,
+}
+
+impl Default for AvrPlc {
+    fn default() -> Self {
+        AvrPlc::new()
+    }
+}
+
+impl AvrPlc {
+    /// An AVR with no program, at a 10 ms scan.
+    pub fn new() -> AvrPlc {
+        AvrPlc {
+            machine: Machine::new(Program::default()),
+        }
+    }
+
+    /// The AVR.
+    pub fn machine(&self) -> &Machine {
+        &self.machine
+    }
+
+    fn bit(h: u32) -> BitRef {
+        BitRef {
+            register: (h >> 3) as u8,
+            bit: (h & 7) as u8,
+        }
+    }
+}
+
+impl Plc for AvrPlc {
+    fn id(&self) -> MachineId {
+        MachineId::AvrPlc
+    }
+
+    /// Assembles with `Scan` = this machine's scan period in ms.
+    fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
+        let scan = super::scan_ms(self.machine.scan_period())?;
+        let program = Program::parse(text, i64::from(scan)).map_err(|errors| {
+            PlcError::Program(
+                errors
+                    .into_iter()
+                    .map(|e| Located::new(e.line, ProgramProblem::Avr(e.error)))
+                    .collect(),
+            )
+        })?;
+        self.machine.load(program);
+        Ok(())
+    }
+
+    fn listing(&self) -> String {
+        self.machine.program().listing()
+    }
+
+    fn apply(&mut self, command: plc::Command) -> Result<(), PlcError> {
+        match command {
+            plc::Command::SetInput(device, value) => {
+                self.check_input(device, value)?;
+                self.machine
+                    .set_input(AvrPlc::bit(device.0), value == InputValue::Int(1));
+                Ok(())
+            }
+            plc::Command::Setting { name, value } => {
+                Ok(self.machine.apply_setting(name.trim(), value.trim())?)
+            }
+            plc::Command::PowerCycle => {
+                self.machine.power_cycle();
+                Ok(())
+            }
+            plc::Command::Run(_) => Err(PlcError::NotThisMachine {
+                machine: MachineId::AvrPlc,
+                lacks: "RUN/STOP switch: it runs whenever it is powered",
+            }),
+            plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
+                machine: MachineId::AvrPlc,
+                lacks: "MINASEC-U front panel",
+            }),
+        }
+    }
+
+    fn device(&self, name: &str) -> Result<Device, PlcError> {
+        if let Some(base) = name.strip_suffix(".v").or_else(|| name.strip_suffix(".V")) {
+            let index = self
+                .machine
+                .program()
+                .timer(base)
+                .ok_or_else(|| DeviceError::AvrTimer(base.to_string()))?;
+            return Ok(Device(TIMER | index as u32));
+        }
+        let b = self
+            .machine
+            .program()
+            .bit(name)
+            .ok_or_else(|| DeviceError::AvrBit(name.to_string()))?;
+        Ok(Device(u32::from(b.register) << 3 | u32::from(b.bit)))
+    }
+
+    fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError> {
+        if device.0 >= TIMER {
+            return Err(DeviceError::NotAnInput {
+                device: format!("timer {}", device.0 - TIMER),
+                drives: "bits",
+            }
+            .into());
+        }
+        match value {
+            InputValue::Int(0 | 1) => Ok(()),
+            _ => Err(DeviceError::BitValue(AvrPlc::bit(device.0).to_string()).into()),
+        }
+    }
+
+    fn read(&self, device: Device) -> i64 {
+        match device.0 {
+            h if h >= TIMER => self
+                .machine
+                .timer((h - TIMER) as usize)
+                .map_or(0, |t| i64::from(t.count)),
+            h => i64::from(self.machine.bit(AvrPlc::bit(h))),
+        }
+    }
+
+    fn now(&self) -> SimTime {
+        self.machine.now()
+    }
+
+    fn scans(&self) -> u64 {
+        self.machine.scans()
+    }
+
+    fn run_until(&mut self, t: SimTime) {
+        self.machine.run_until(t);
+    }
+
+    fn run_before(&mut self, t: SimTime) {
+        self.machine.run_before(t);
+    }
+
+    fn step_scan(&mut self) {
+        self.machine.step_scan();
+    }
+
+    fn step_instruction(&mut self) -> Option<usize> {
+        self.machine.step_instruction()
+    }
+
+    /// R0-R31 as the last scan left them, then each timer word's count
+    /// (2 bytes, little-endian).
+    fn image_into(&self, image: &mut Vec<u8>) {
+        image.clear();
+        image.extend_from_slice(self.machine.last_scan_registers());
+        for i in 0..self.machine.program().timer_count() {
+            let count = self.machine.timer(i).map_or(0, |t| t.count);
+            image.extend_from_slice(&count.to_le_bytes());
+        }
+    }
+
+    fn warnings(&self) -> Vec<Warning> {
+        let tof = self.machine.program().instructions().iter().any(|i| {
+            matches!(
+                i,
+                Instruction::Timer {
+                    kind: TimerKind::Tof,
+                    ..
+                }
+            )
+        });
+        if tof {
+            vec![Warning::TofOnAtPowerUp]
+        } else {
+            Vec::new()
+        }
+    }
+
+    fn settings(&self) -> &'static [SettingInfo] {
+        SETTINGS
+    }
+
+    /// Whole scans of every record.
+    fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
+        plc::whole_scans(
+            steps,
+            self.machine.program().instructions().len() as u64,
+            self.machine.scan_period(),
+        )
+    }
+}

@@ -1,0 +1,232 @@
+//! `--program` read, compiled when it is a ladder, and loaded into a new
+//! machine of its kind, through the engine's one machine interface.
+
+use engine::ladder::compile::{compile as compile_ladder, Options};
+use engine::ladder::{plcopen, Ladder, Project};
+use engine::plc::{new_plc, Command, Plc, PlcError};
+use engine::{MachineId, SimTime};
+
+use crate::args::Args;
+use crate::input::{Format, SourceFile};
+
+/// Problem lines, without `error: `.
+pub type Problems = Vec<String>;
+/// `--set`-style settings a project file holds: name, value, line.
+pub type Settings = Vec<(String, String, usize)>;
+
+/// One problem.
+pub fn one(problem: String) -> Problems {
+    vec![problem]
+}
+
+/// A machine with the program loaded, and the settings its project holds.
+pub struct Source {
+    /// The machine, powered on, program loaded.
+    pub plc: Box<dyn Plc>,
+    /// `--set`-style settings from a project file, applied before `--set`.
+    pub settings: Settings,
+    /// Where those settings came from, for their errors.
+    pub name: String,
+}
+
+/// `--machine`, when given.
+pub fn machine_flag(args: &Args) -> Result<Option<MachineId>, Problems> {
+    args.optional("machine")
+        .map_err(one)?
+        .map(|m| MachineId::parse(m).map_err(|e| e.to_string()))
+        .transpose()
+        .map_err(one)
+}
+
+/// Reads `--machine`, `--program` and `--format`, compiles a ladder
+/// (`.json`, `.xml`) first, and loads the program into a new machine;
+/// `Err` holds every problem found.
+pub fn load(args: &Args) -> Result<Source, Problems> {
+    let flag = machine_flag(args)?;
+    let path = args.required("program").map_err(one)?;
+    let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
+    let source = SourceFile::read(path).map_err(one)?;
+    let (machine, compiled, settings) = match format {
+        Format::Il | Format::Asm => {
+            let machine = match flag {
+                Some(m) => m,
+                None => MachineId::parse(args.required("machine").map_err(one)?)
+                    .map_err(|e| one(e.to_string()))?,
+            };
+            if format == Format::Asm && machine != MachineId::AvrPlc {
+                return Err(one(format!(
+                    "{}: {} programs are mnemonic text (.il), not .asm",
+                    source.name,
+                    machine.name()
+                )));
+            }
+            (machine, None, Vec::new())
+        }
+        Format::Json | Format::Xml => {
+            let (machine, text, settings) = compile_source(args, &source, format, flag)?;
+            (machine, Some(text), settings)
+        }
+    };
+    let mut plc = new_plc(machine);
+    if machine == MachineId::AvrPlc {
+        // The AVR assembler's `Scan` symbol is the scan period: set it
+        // before the source is assembled.
+        let scan = avr_scan_ms(args, &source.name, &settings)?;
+        let value = format!("{scan}ms");
+        let setting = Command::Setting {
+            name: "scan".into(),
+            value,
+        };
+        plc.apply(setting).map_err(|e| one(e.to_string()))?;
+    }
+    // A compiled ladder is parsed like a listing; its errors would be the
+    // compiler's, so they name the compiled text.
+    let (text, origin) = match &compiled {
+        Some(t) => (t.as_str(), format!("{} (compiled)", source.name)),
+        None => (source.text.as_str(), source.name.clone()),
+    };
+    plc.load_text(text).map_err(|e| located(&origin, e))?;
+    Ok(Source {
+        plc,
+        settings,
+        name: source.name,
+    })
+}
+
+/// A machine error as problem lines: one per program line at fault.
+pub fn located(file: &str, error: PlcError) -> Problems {
+    match error {
+        PlcError::Program(problems) => problems
+            .iter()
+            .map(|p| format!("{file}:{}: {}", p.line, p.error))
+            .collect(),
+        other => one(format!("{file}: {other}")),
+    }
+}
+
+/// A ladder file compiled for its machine: the machine, the program text
+/// and the project's settings. Errors name the file, rung and cell.
+pub fn compile_source(
+    args: &Args,
+    source: &SourceFile,
+    format: Format,
+    flag: Option<MachineId>,
+) -> Result<(MachineId, String, Settings), Problems> {
+    let (ladder, machine, settings) = read_ladder(source, format, flag)?;
+    let avr_scan_ms = if machine == MachineId::AvrPlc {
+        avr_scan_ms(args, &source.name, &settings)?
+    } else {
+        10
+    };
+    let options = Options { avr_scan_ms };
+    let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
+        errors
+            .iter()
+            .map(|e| format!("{}: {e}", source.name))
+            .collect::<Vec<_>>()
+    })?;
+    Ok((machine, text, settings))
+}
+
+/// A ladder from a project (`.json`, naming its machine) or PLCopen XML
+/// (which does not: `--machine` says). `--machine` wins over the project's.
+fn read_ladder(
+    source: &SourceFile,
+    format: Format,
+    flag: Option<MachineId>,
+) -> Result<(Ladder, MachineId, Settings), Problems> {
+    if format == Format::Json {
+        let project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
+        let machine = flag.unwrap_or(project.machine);
+        let settings = project
+            .settings
+            .into_iter()
+            .map(|(n, v)| {
+                let line = Project::setting_line(&source.text, &n);
+                (n, v, line)
+            })
+            .collect();
+        return Ok((project.ladder, machine, settings));
+    }
+    let machine = flag.ok_or_else(|| {
+        one(format!(
+            "{}: a PLCopen file does not name its machine: give --machine",
+            source.name
+        ))
+    })?;
+    let ladder = plcopen::import_for(&source.text, Some(machine))
+        .map_err(|errors| source.located(&errors))?;
+    Ok((ladder, machine, Vec::new()))
+}
+
+/// The `Scan` symbol of AVR sources: the scan period in ms from the last
+/// `--set scan=`, else the project's, else 10. A bad value is one problem,
+/// worded as the settings check words it (so a run that also applies the
+/// settings reports it once).
+fn avr_scan_ms(
+    args: &Args,
+    source: &str,
+    project: &[(String, String, usize)],
+) -> Result<u32, Problems> {
+    let from_project = project
+        .iter()
+        .filter(|(n, _, _)| n.trim().eq_ignore_ascii_case("scan"))
+        .map(|(n, v, line)| (setting_place(source, *line, n, v), v.as_str()));
+    let from_flags = args.all("set").filter_map(|s| {
+        let (n, v) = s.split_once('=')?;
+        n.trim()
+            .eq_ignore_ascii_case("scan")
+            .then(|| (format!("--set {s}"), v))
+    });
+    let Some((what, value)) = from_project.chain(from_flags).last() else {
+        return Ok(10);
+    };
+    SimTime::parse(value.trim())
+        .map_err(|e| e.to_string())
+        .and_then(|t| engine::avr::scan_ms(t).map_err(|e| e.to_string()))
+        .map_err(|e| one(format!("{what}: {e}")))
+}
+
+/// Where a project's setting stands, as its errors name it:
+/// `FILE:LINE: setting NAME=VALUE`.
+pub fn setting_place(file: &str, line: usize, name: &str, value: &str) -> String {
+    format!(
+        "{file}:{line}: setting {}={}",
+        engine::shown(name).trim_matches('"'),
+        engine::shown(value).trim_matches('"')
+    )
+}
+
+/// Applies the project's settings, then every `--set`, to `plc`; the
+/// problems found, each naming where the setting came from.
+pub fn apply_settings(
+    plc: &mut dyn Plc,
+    args: &Args,
+    (file, defaults): (&str, &[(String, String, usize)]),
+) -> Problems {
+    let mut problems = Vec::new();
+    for (name, value, line) in defaults {
+        let setting = Command::Setting {
+            name: name.clone(),
+            value: value.clone(),
+        };
+        if let Err(e) = plc.apply(setting) {
+            problems.push(format!("{}: {e}", setting_place(file, *line, name, value)));
+        }
+    }
+    for setting in args.all("set") {
+        let result = match setting.split_once('=') {
+            Some((name, value)) => plc
+                .apply(Command::Setting {
+                    name: name.trim().to_string(),
+                    value: value.trim().to_string(),
+                })
+                .map_err(|e| e.to_string()),
+            None => Err("expected NAME=VALUE".to_string()),
+        };
+        if let Err(e) = result {
+            problems.push(format!("--set {setting}: {e}"));
+        }
+    }
+    problems
+}

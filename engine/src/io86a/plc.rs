@@ -1,0 +1,381 @@
+//! PLC-IO86A behind the [`Plc`] interface: `--set` settings, devices by
+//! handle, inputs (digital, analog, IR) and the serial terminal.
+
+use super::isa::{parse_bit, parse_word, Bit, Word};
+use super::machine::Machine;
+use super::peripherals::{InputMode, IrMode};
+use super::{Program, Terminal};
+use crate::events::InputValue;
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
+use crate::plc::{SettingInfo, Warning};
+use crate::time::SimTime;
+use crate::{Located, MachineId};
+
+const SETTINGS: &[SettingInfo] = &[
+    SettingInfo {
+        name: "scan",
+        range: "above 0, at most 10s",
+        default: "1ms",
+    },
+    SettingInfo {
+        name: "filter",
+        range: "0..10 (input filter, scans)",
+        default: "0",
+    },
+    SettingInfo {
+        name: "X04",
+        range: "D, or A:n1:n2 (analog)",
+        default: "D",
+    },
+    SettingInfo {
+        name: "X05",
+        range: "D, or A:n1:n2 (analog)",
+        default: "D",
+    },
+    SettingInfo {
+        name: "X07",
+        range: "D, I, or I:code (IR)",
+        default: "D",
+    },
+    SettingInfo {
+        name: "Y03",
+        range: "D, R (servo), S, M, H (PWM)",
+        default: "D",
+    },
+    SettingInfo {
+        name: "Y04",
+        range: "D, R (servo), S, M, H (PWM)",
+        default: "D",
+    },
+];
+
+/// What events can drive.
+const INPUTS: &str = "X00-X07";
+
+// Handles: a bit (kind × 0x100 + n), a value (0x1000 + kind × 0x100 + n),
+// an output signal (0x2000 + index).
+const VALUE: u32 = 0x1000;
+const SIGNAL: u32 = 0x2000;
+
+fn bit_handle(b: Bit) -> u32 {
+    let (kind, n) = match b {
+        Bit::X(n) => (0, n),
+        Bit::Y(n) => (1, n),
+        Bit::M(n) => (2, n),
+        Bit::S(n) => (3, n),
+        Bit::T(n) => (4, n),
+        Bit::C(n) => (5, n),
+    };
+    kind << 8 | u32::from(n)
+}
+
+fn handle_bit(h: u32) -> Bit {
+    let n = (h & 0xFF) as u8;
+    match h >> 8 {
+        0 => Bit::X(n),
+        1 => Bit::Y(n),
+        2 => Bit::M(n),
+        3 => Bit::S(n),
+        4 => Bit::T(n),
+        _ => Bit::C(n),
+    }
+}
+
+fn word_handle(w: Word) -> u32 {
+    let (kind, n) = match w {
+        Word::D(n) => (0, n),
+        Word::T(n) => (1, n),
+        Word::C(n) => (2, n),
+        Word::K(_) => (3, 0),
+    };
+    VALUE | kind << 8 | u32::from(n)
+}
+
+fn handle_word(h: u32) -> Word {
+    let n = (h & 0xFF) as u8;
+    match (h >> 8) & 0xF {
+        0 => Word::D(n),
+        1 => Word::T(n),
+        _ => Word::C(n),
+    }
+}
+
+impl Machine {
+    /// Applies one `--set NAME=VALUE`: `scan=<time>`, `filter=<0..10>`, or
+    /// a pin setting in the terminal's words: `X04=A:401:100`, `X05=D`,
+    /// `X07=I:10EF`, `Y03=R` (S, M, H, D).
+    pub fn apply_setting(&mut self, name: &str, value: &str) -> Result<(), SettingError> {
+        match name.to_ascii_uppercase().as_str() {
+            "SCAN" => self.set_scan_period(SimTime::parse(value)?),
+            "FILTER" => self
+                .settings_mut()
+                .apply(&format!("!{value}"))
+                .map_err(SettingError::Io86a),
+            "X04" | "X05" | "X07" | "Y03" | "Y04" => self
+                .settings_mut()
+                .apply(&format!("{name}{value}"))
+                .map_err(SettingError::Io86a),
+            _ => Err(SettingError::Unknown {
+                machine: MachineId::Io86a,
+                name: name.to_string(),
+                takes: "scan, filter, X04, X05, X07, Y03, Y04",
+            }),
+        }
+    }
+}
+
+/// PLC-IO86A as a [`Plc`]: the device in RUN and its serial terminal.
+#[derive(Clone, Debug)]
+pub struct Io86aPlc {
+    machine: Machine,
+    terminal: Terminal,
+}
+
+impl Default for Io86aPlc {
+    fn default() -> Self {
+        Io86aPlc::new()
+    }
+}
+
+impl Io86aPlc {
+    /// A device with no program, powered on and in RUN.
+    pub fn new() -> Io86aPlc {
+        Io86aPlc::with(Machine::new(Program::default()))
+    }
+
+    /// `machine` as a [`Plc`].
+    pub fn with(machine: Machine) -> Io86aPlc {
+        let terminal = Terminal::new(&machine);
+        Io86aPlc { machine, terminal }
+    }
+
+    /// The device.
+    pub fn machine(&self) -> &Machine {
+        &self.machine
+    }
+
+    /// The device, to operate it directly.
+    pub fn machine_mut(&mut self) -> &mut Machine {
+        &mut self.machine
+    }
+
+    fn input_number(&self, device: Device) -> Result<u8, PlcError> {
+        match device.0 {
+            h if h < VALUE => match handle_bit(h) {
+                Bit::X(n) => Ok(n),
+                other => Err(DeviceError::NotAnInput {
+                    device: other.to_string(),
+                    drives: INPUTS,
+                }
+                .into()),
+            },
+            h => Err(DeviceError::NotAnInput {
+                device: self.name(h),
+                drives: INPUTS,
+            }
+            .into()),
+        }
+    }
+
+    fn name(&self, h: u32) -> String {
+        match h {
+            h if h >= SIGNAL => format!("Y0{}.v", 3 + (h & 1)),
+            h if h >= VALUE => match handle_word(h) {
+                Word::D(n) => format!("D{n:02}"),
+                Word::T(n) => format!("T{n:02}.v"),
+                Word::C(n) => format!("C{n:02}.v"),
+                Word::K(k) => format!("K{k}"),
+            },
+            h => handle_bit(h).to_string(),
+        }
+    }
+}
+
+impl Plc for Io86aPlc {
+    fn id(&self) -> MachineId {
+        MachineId::Io86a
+    }
+
+    fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
+        let program = Program::parse(text).map_err(|errors| {
+            PlcError::Program(
+                errors
+                    .into_iter()
+                    .map(|e| Located::new(e.line, ProgramProblem::Io86a(e.error)))
+                    .collect(),
+            )
+        })?;
+        self.machine.load(program);
+        // The terminal edits its own copy of the program: start it anew.
+        self.terminal = Terminal::new(&self.machine);
+        Ok(())
+    }
+
+    fn listing(&self) -> String {
+        self.machine.program().listing()
+    }
+
+    fn apply(&mut self, command: plc::Command) -> Result<(), PlcError> {
+        match command {
+            plc::Command::SetInput(device, value) => {
+                self.check_input(device, value)?;
+                let n = self.input_number(device)?;
+                match value {
+                    InputValue::Millivolts(mv) => self
+                        .machine
+                        .set_analog(usize::from(n.saturating_sub(4)), mv),
+                    InputValue::Int(frame)
+                        if n == 7 && self.machine.settings().ir != IrMode::Digital =>
+                    {
+                        self.machine
+                            .set_ir(u32::try_from(frame).ok().filter(|&f| f != 0));
+                    }
+                    InputValue::Int(v) => self.machine.set_input(n, v == 1),
+                }
+                Ok(())
+            }
+            plc::Command::Setting { name, value } => {
+                Ok(self.machine.apply_setting(name.trim(), value.trim())?)
+            }
+            plc::Command::PowerCycle => {
+                self.machine.power_cycle();
+                Ok(())
+            }
+            plc::Command::Run(on) => {
+                self.machine.set_running(on);
+                Ok(())
+            }
+            plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
+                machine: MachineId::Io86a,
+                lacks: "MINASEC-U front panel",
+            }),
+        }
+    }
+
+    fn device(&self, name: &str) -> Result<Device, PlcError> {
+        let upper = name.to_ascii_uppercase();
+        match upper.as_str() {
+            "Y03.V" => return Ok(Device(SIGNAL)),
+            "Y04.V" => return Ok(Device(SIGNAL | 1)),
+            _ => {}
+        }
+        if let Some(base) = upper.strip_suffix(".V") {
+            return match parse_word(base).map_err(DeviceError::Io86a)? {
+                Word::K(_) => Err(DeviceError::Constant(name.to_string()).into()),
+                word => Ok(Device(word_handle(word))),
+            };
+        }
+        if upper.starts_with('D') {
+            let word = parse_word(&upper).map_err(DeviceError::Io86a)?;
+            return Ok(Device(word_handle(word)));
+        }
+        let bit = parse_bit(name).map_err(DeviceError::Io86a)?;
+        Ok(Device(bit_handle(bit)))
+    }
+
+    fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError> {
+        let n = self.input_number(device)?;
+        let name = handle_bit(device.0).to_string();
+        let settings = self.machine.settings();
+        let analog =
+            matches!(n, 4 | 5) && settings.analog[usize::from(n - 4)] != InputMode::Digital;
+        let ir = n == 7 && settings.ir != IrMode::Digital;
+        let error = match value {
+            InputValue::Millivolts(_) if analog => return Ok(()),
+            InputValue::Millivolts(_) => DeviceError::NeedsAnalogMode(name),
+            InputValue::Int(frame) if ir => match u32::try_from(frame) {
+                Ok(_) => return Ok(()),
+                Err(_) => DeviceError::IrFrame(name),
+            },
+            InputValue::Int(_) if analog => DeviceError::NeedsVoltage(name),
+            InputValue::Int(0 | 1) => return Ok(()),
+            InputValue::Int(_) => DeviceError::BitValue(name),
+        };
+        Err(error.into())
+    }
+
+    fn read(&self, device: Device) -> i64 {
+        let scan = self.machine.last_scan();
+        match device.0 {
+            h if h >= SIGNAL => self.machine.output_signal((h & 1) as usize).value(),
+            h if h >= VALUE => i64::from(scan.word(handle_word(h))),
+            h => match handle_bit(h) {
+                Bit::Y(n) => i64::from(self.machine.output_terminals() >> n & 1),
+                bit => i64::from(scan.bit(bit)),
+            },
+        }
+    }
+
+    fn now(&self) -> SimTime {
+        self.machine.now()
+    }
+
+    fn scans(&self) -> u64 {
+        self.machine.scans()
+    }
+
+    fn run_until(&mut self, t: SimTime) {
+        self.machine.run_until(t);
+    }
+
+    fn run_before(&mut self, t: SimTime) {
+        self.machine.run_before(t);
+    }
+
+    fn step_scan(&mut self) {
+        self.machine.step_scan();
+    }
+
+    fn step_instruction(&mut self) -> Option<usize> {
+        self.machine.step_instruction()
+    }
+
+    /// X, Y, M (8 bytes, bit n = device n), S, then T and C contacts (4
+    /// bytes, 1 byte), then D00-D07, T00-T31 and C00-C07 values (2 bytes
+    /// each, little-endian), as the last scan left them.
+    fn image_into(&self, image: &mut Vec<u8>) {
+        let scan = self.machine.last_scan();
+        image.clear();
+        let bits = |kind: fn(u8) -> Bit, count: u8| -> u64 {
+            (0..count).fold(0, |acc, n| acc | u64::from(scan.bit(kind(n))) << n)
+        };
+        image.push(bits(Bit::X, 8) as u8);
+        image.push(self.machine.output_terminals());
+        image.extend_from_slice(&bits(Bit::M, 64).to_le_bytes());
+        image.push(bits(Bit::S, 8) as u8);
+        image.extend_from_slice(&(bits(Bit::T, 32) as u32).to_le_bytes());
+        image.push(bits(Bit::C, 8) as u8);
+        let words = (0..8)
+            .map(Word::D)
+            .chain((0..32).map(Word::T))
+            .chain((0..8).map(Word::C));
+        for w in words {
+            image.extend_from_slice(&scan.word(w).to_le_bytes());
+        }
+    }
+
+    fn warnings(&self) -> Vec<Warning> {
+        Vec::new()
+    }
+
+    fn settings(&self) -> &'static [SettingInfo] {
+        SETTINGS
+    }
+
+    /// Whole scans of every instruction (END included).
+    fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
+        plc::whole_scans(
+            steps,
+            self.machine.steps_per_scan() as u64,
+            self.machine.scan_period(),
+        )
+    }
+
+    fn serial_open(&mut self) -> Result<String, PlcError> {
+        Ok(self.terminal.prompt(&self.machine))
+    }
+
+    fn serial(&mut self, line: &str) -> Result<String, PlcError> {
+        Ok(self.terminal.type_line(&mut self.machine, line))
+    }
+}

@@ -1,0 +1,203 @@
+//! One interface to the four machines (docs/architecture.md).
+//!
+//! The command line, the page and the tests drive every machine through
+//! [`Plc`]: load a program, apply [`Command`]s, advance simulated time (by
+//! a span, a scan, an instruction or a clock edge), resolve device names
+//! once to [`Device`] handles and read them cheaply. Each machine's folder
+//! holds its implementation (`minasec/plc.rs`, …); [`new_plc`] makes one
+//! for a [`MachineId`], so adding a machine touches that one place.
+//! Errors are typed ([`PlcError`]); wall-clock time never enters: the
+//! caller says how far to go.
+
+pub mod error;
+
+pub use crate::arduino::ArduinoPlc;
+pub use crate::avr::AvrPlc;
+pub use crate::io86a::Io86aPlc;
+pub use crate::minasec::MinasecPlc;
+pub use error::{DeviceError, PlcError, ProgramProblem, SettingError};
+
+use crate::events::InputValue;
+use crate::limits::MAX_SIM_TIME;
+use crate::time::SimTime;
+use crate::{arduino, avr, io86a, minasec, MachineId};
+
+/// A device resolved once by [`Plc::device`]; reading it is a match and a
+/// shift, no name look-up. Only meaningful to the machine that made it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Device(pub(crate) u32);
+
+/// A command into a machine: everything that changes it other than time.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// Drives an input device (resolved by [`Plc::device`]) to a value:
+    /// `0`/`1` for bits, a word, or millivolts for an analog input.
+    SetInput(Device, InputValue),
+    /// A setting as `--set NAME=VALUE` writes it (`scan=10ms`, `T0=1.1s`).
+    Setting {
+        /// The setting's name.
+        name: String,
+        /// Its value, in the setting's own words.
+        value: String,
+    },
+    /// Power off, then on: volatile state cleared; the program, the
+    /// settings and the inputs as they are stay. Simulated time goes on.
+    PowerCycle,
+    /// Runs (`true`) or stops the program: MINASEC-U's RUN / HALT switch,
+    /// IO86A's `R` / `S`, the Arduino sketch's `e` / `d`. The AVR PLC has
+    /// no such switch.
+    Run(bool),
+    /// MINASEC-U's front panel: switches, buttons, knobs.
+    Minasec(minasec::Command),
+}
+
+/// A warning about the loaded program: what it does is legal but
+/// probably not what its author meant.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Warning {
+    /// Arduino: neither END nor JUMP, so the PLC runs on through erased
+    /// EEPROM and spins at its last step (docs/arduino-plc.md).
+    RunsIntoErasedEeprom,
+    /// AVR: a TOF's output is on for its set time after power-up, as the
+    /// seed warns (docs/avr-plc.md).
+    TofOnAtPowerUp,
+}
+
+/// A setting a machine takes, for the page's controls and for messages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SettingInfo {
+    /// Its name for `--set` and in project files.
+    pub name: &'static str,
+    /// The values it takes, in words (`0.1s..1.1s`).
+    pub range: &'static str,
+    /// Its value on a new machine.
+    pub default: &'static str,
+}
+
+/// The longest span one [`Plc::tick`] simulates: a frame that comes late
+/// (a hidden tab, a breakpoint in the debugger) resumes instead of racing
+/// through the gap.
+pub const MAX_TICK: SimTime = SimTime::from_secs(10);
+
+/// One simulated PLC.
+pub trait Plc {
+    /// Which machine this is.
+    fn id(&self) -> MachineId;
+
+    /// Parses `text` in the machine's own program format (mnemonic
+    /// listing, AVR `.db` source) and loads it. On error nothing changes.
+    fn load_text(&mut self, text: &str) -> Result<(), PlcError>;
+
+    /// The loaded program as the machine stores it (what `hashigo asm`
+    /// prints: MINASEC-U's programming sheet, IO86A's `L` listing,
+    /// the Arduino EEPROM dump, AVR `.db` records).
+    fn listing(&self) -> String;
+
+    /// Applies a command. On error nothing changes.
+    fn apply(&mut self, command: Command) -> Result<(), PlcError>;
+
+    /// Resolves a device name (`X00`, `C0.v`, `R4.2`, a named AVR bit).
+    fn device(&self, name: &str) -> Result<Device, PlcError>;
+
+    /// Checks that `value` can drive the input `device` without driving it.
+    fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError>;
+
+    /// A device's value after the last completed scan (for the Arduino
+    /// sketch, which has no scan, now): bits are 0 or 1, words signed.
+    fn read(&self, device: Device) -> i64;
+
+    /// The simulated time.
+    fn now(&self) -> SimTime;
+
+    /// Scans completed (Arduino: program passes back to step 0).
+    fn scans(&self) -> u64;
+
+    /// Runs every clock edge, step or scan due at or before `t`; the time
+    /// becomes `t`.
+    fn run_until(&mut self, t: SimTime);
+
+    /// Runs everything due strictly before `t` (so that an event at `t`
+    /// comes first); the time becomes `t`.
+    fn run_before(&mut self, t: SimTime);
+
+    /// Advances by `dt` (at most [`MAX_TICK`], never past the clock's
+    /// limit) in whole scans or steps.
+    fn tick(&mut self, dt: SimTime) {
+        let t = self
+            .now()
+            .saturating_add(dt.min(MAX_TICK))
+            .min(MAX_SIM_TIME);
+        self.run_until(t);
+    }
+
+    /// Runs the rest of the scan under way, or one whole scan.
+    fn step_scan(&mut self);
+
+    /// Runs one instruction (the next scan's first when none is under
+    /// way); returns its step number, or `None` when the machine is not
+    /// running a program.
+    fn step_instruction(&mut self) -> Option<usize>;
+
+    /// Runs one clock edge where the machine has a visible clock
+    /// (MINASEC-U); false where it has none or is not clocked.
+    fn step_clock(&mut self) -> bool {
+        false
+    }
+
+    /// Copies the device memory as the last scan left it into `image`
+    /// (replacing its contents; the caller keeps the buffer between
+    /// frames), in the machine's own layout (docs/architecture.md).
+    fn image_into(&self, image: &mut Vec<u8>);
+
+    /// Warnings about the loaded program.
+    fn warnings(&self) -> Vec<Warning>;
+
+    /// The settings this machine takes.
+    fn settings(&self) -> &'static [SettingInfo];
+
+    /// For `hashigo bench`: the time by which at least `steps` steps have
+    /// run from power-on when running flat out, and how many that is
+    /// (scan machines run whole scans); `None` past the clock's range.
+    fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)>;
+
+    /// Opens the device's serial terminal: what it shows first (IO86A's
+    /// prompt; the Arduino sketch shows nothing).
+    fn serial_open(&mut self) -> Result<String, PlcError> {
+        Err(PlcError::NotThisMachine {
+            machine: self.id(),
+            lacks: "serial terminal: console is for io86a and arduino-plc",
+        })
+    }
+
+    /// Types one line at the device's serial port and returns what it
+    /// sends back (`hashigo console`).
+    fn serial(&mut self, line: &str) -> Result<String, PlcError> {
+        let _ = line;
+        Err(PlcError::NotThisMachine {
+            machine: self.id(),
+            lacks: "serial terminal: console is for io86a and arduino-plc",
+        })
+    }
+}
+
+/// A new machine of kind `id`, powered on, with no program, ready to run
+/// (MINASEC-U's switch at RUN, the Arduino PLC enabled).
+pub fn new_plc(id: MachineId) -> Box<dyn Plc> {
+    match id {
+        MachineId::MinasecU => Box::new(minasec::MinasecPlc::new()),
+        MachineId::Io86a => Box::new(io86a::Io86aPlc::new()),
+        MachineId::AvrPlc => Box::new(avr::AvrPlc::new()),
+        MachineId::ArduinoPlc => Box::new(arduino::ArduinoPlc::new()),
+    }
+}
+
+/// Steps in whole scans: the time `scans` periods from power-on for at
+/// least `steps` steps of `per_scan` each.
+pub(crate) fn whole_scans(steps: u64, per_scan: u64, period: SimTime) -> Option<(SimTime, u64)> {
+    if per_scan == 0 {
+        return None;
+    }
+    let scans = steps.div_ceil(per_scan);
+    let t = scans.checked_mul(period.as_nanos())?;
+    Some((SimTime::from_nanos(t), scans.checked_mul(per_scan)?))
+}
