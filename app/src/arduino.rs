@@ -2,8 +2,8 @@
 //! outputs, the serial monitor, and the program pane in the sketch's
 //! mnemonic text.
 
-use engine::arduino::isa::{Op, ERASED};
 use engine::arduino::{monitor, Chip, Machine, PopOrder, Program};
+use engine::plc::Warning;
 use leptos::prelude::*;
 
 use crate::components::console::ConsolePane;
@@ -158,11 +158,7 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
     // (no END and no JUMP: it spins at step 255).
     let parsed = Memo::new(move |_| {
         Program::parse(&ard.text.get(), Chip::Atmega328.capacity())
-            .map(|p| {
-                !p.words()
-                    .iter()
-                    .any(|&w| w != ERASED && matches!(Op::decode(w), Some(Op::End | Op::Jump)))
-            })
+            .map(|p| engine::arduino::warnings(p.words()).contains(&Warning::RunsIntoErasedEeprom))
             .map_err(|e| {
                 e.iter()
                     .map(|e| (e.line, e.error.to_string()))

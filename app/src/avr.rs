@@ -1,8 +1,8 @@
 //! The AVR simplified PLC workspace: the bits the source names (`NAME_R` /
 //! `NAME_B`) as switches and lamps, and the program pane in assembler.
 
-use engine::avr::program::TimerKind;
-use engine::avr::{BitRef, Instruction, Machine, Program};
+use engine::avr::{scan_ms, BitRef, Machine, Program};
+use engine::plc::Warning;
 use leptos::prelude::*;
 
 use crate::components::controls::Led;
@@ -67,26 +67,32 @@ impl AvrCtx {
         });
     }
 
-    /// Assembles the pane's text and, if good, runs it from power-up (timer
-    /// words cleared); false if it has errors.
+    /// Assembles the pane's text (with `Scan` = the machine's scan
+    /// period) and, if good, runs it from power-up (timer words cleared);
+    /// false if it has errors.
+    ///
+    /// A bit the new program names again keeps its row, its signals and
+    /// the level it is driven to: the keyed `<For>` keeps such a row, so
+    /// giving it new signals would leave its lamp and switch bound to the
+    /// old ones. A bit no longer named stops being driven.
     pub fn load(&self) -> bool {
-        let scan_ms = 10;
-        let Ok(program) = Program::parse(&self.text.get_untracked(), scan_ms) else {
+        let scan_ms = self
+            .sim
+            .with_value(|s| scan_ms(s.machine().scan_period()))
+            .unwrap_or(10);
+        let Ok(program) = Program::parse(&self.text.get_untracked(), i64::from(scan_ms)) else {
             return false;
         };
-        let names: Vec<NamedBit> = program
-            .names()
-            .iter()
-            .map(|(name, bit)| NamedBit {
-                name: name.clone(),
-                bit: *bit,
-                value: RwSignal::new(false),
-                driven: RwSignal::new(None),
-            })
-            .collect();
-        self.sim
-            .update_value(|s| *s.machine_mut() = Machine::new(program));
-        self.bits.set(names);
+        let old = self.bits.get_untracked();
+        let rows = rows_for(&old, program.names());
+        self.sim.update_value(|s| {
+            let machine = s.machine_mut();
+            for gone in old.iter().filter(|o| !rows.iter().any(|r| r.bit == o.bit)) {
+                machine.release_input(gone.bit);
+            }
+            machine.load(program);
+        });
+        self.bits.set(rows);
         self.refresh();
         true
     }
@@ -98,17 +104,23 @@ impl Default for AvrCtx {
     }
 }
 
-/// Whether the program has a TOF (the seed's power-up warning applies).
-fn has_tof(program: &Program) -> bool {
-    program.instructions().iter().any(|i| {
-        matches!(
-            i,
-            Instruction::Timer {
-                kind: TimerKind::Tof,
-                ..
-            }
-        )
-    })
+/// The rows for a program's named bits: an old row whose name and bit
+/// are named again is kept as it is (same signals), the others are new.
+pub fn rows_for(old: &[NamedBit], names: &[(String, BitRef)]) -> Vec<NamedBit> {
+    names
+        .iter()
+        .map(|(name, bit)| {
+            old.iter()
+                .find(|o| &o.name == name && o.bit == *bit)
+                .cloned()
+                .unwrap_or_else(|| NamedBit {
+                    name: name.clone(),
+                    bit: *bit,
+                    value: RwSignal::new(false),
+                    driven: RwSignal::new(None),
+                })
+        })
+        .collect()
 }
 
 /// The whole AVR workspace.
@@ -118,8 +130,12 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
     let t = move || ctx.lang.get().texts();
     // Errors by line, or whether the program has a TOF (on after power-up).
     let parsed = Memo::new(move |_| {
-        Program::parse(&avr.text.get(), 10)
-            .map(|p| has_tof(&p))
+        let scan = avr
+            .sim
+            .with_value(|s| scan_ms(s.machine().scan_period()))
+            .unwrap_or(10);
+        Program::parse(&avr.text.get(), i64::from(scan))
+            .map(|p| engine::avr::warnings(&p).contains(&Warning::TofOnAtPowerUp))
             .map_err(|e| {
                 e.iter()
                     .map(|e| (e.line, e.error.to_string()))

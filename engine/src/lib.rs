@@ -18,5 +18,5 @@ pub mod plc;
 pub mod time;
 
 pub use error::{shown, Located};
-pub use machine_id::MachineId;
+pub use machine_id::{MachineId, UnknownMachine};
 pub use time::SimTime;

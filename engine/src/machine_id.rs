@@ -41,18 +41,29 @@ impl MachineId {
     }
 
     /// Parses a machine name.
-    pub fn parse(id: &str) -> Result<MachineId, String> {
+    pub fn parse(id: &str) -> Result<MachineId, UnknownMachine> {
         MachineId::ALL
             .into_iter()
             .find(|m| m.name() == id)
-            .ok_or_else(|| {
-                format!(
-                    "unknown machine {}: minasec-u, io86a, avr-plc or arduino-plc",
-                    crate::error::shown(id)
-                )
-            })
+            .ok_or_else(|| UnknownMachine(id.to_string()))
     }
 }
+
+/// A machine name that is none of the four (as written).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UnknownMachine(pub String);
+
+impl fmt::Display for UnknownMachine {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "unknown machine {}: minasec-u, io86a, avr-plc or arduino-plc",
+            crate::error::shown(&self.0)
+        )
+    }
+}
+
+impl std::error::Error for UnknownMachine {}
 
 impl fmt::Display for MachineId {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

@@ -78,3 +78,21 @@ def test_avr_named_bits_and_the_tof_warning(driver, base_url):
     assert "TOF" in el(driver, "avr-warning").text
     wait(driver, lambda: on(driver, "avr-lamp-E_Stop"), timeout=2, message="on after power-up")
     wait(driver, lambda: not on(driver, "avr-lamp-E_Stop"), timeout=5, message="off after 1 s")
+
+
+def test_avr_reloading_a_program_keeps_its_lamps_live(driver, base_url):
+    """Issue #11: load a program, load it again with the same bit names,
+    switch an input on: its lamp must still light (a keyed row used to
+    stay bound to the replaced signals)."""
+    choose(driver, base_url, "avr-plc", "avr-program-text")
+    el(driver, "avr-program-load").click()
+    el(driver, "avr-program-load").click()
+    el(driver, "avr-input-INPUT1").click()
+    el(driver, "avr-input-INPUT2").click()
+    wait(driver, lambda: on(driver, "avr-lamp-COIL1"), message="COIL1 after a reload")
+    # A switch keeps its level across a reload, and drives the new program.
+    el(driver, "avr-program-load").click()
+    assert el(driver, "avr-input-INPUT1").get_attribute("aria-pressed") == "true"
+    el(driver, "avr-input-INPUT2").click()
+    wait(driver, lambda: not on(driver, "avr-lamp-COIL1"), message="COIL1 off with INPUT2 off")
+    assert severe_console_messages(driver) == []

@@ -13,4 +13,4 @@ pub mod plc;
 
 pub use isa::Program;
 pub use machine::{Chip, Machine, PopOrder};
-pub use plc::ArduinoPlc;
+pub use plc::{warnings, ArduinoPlc};

@@ -71,6 +71,19 @@ fn choice(setting: &'static str, value: &str, choices: &'static str) -> SettingE
     }
 }
 
+/// The warnings a program (its EEPROM words) earns: with neither END nor
+/// JUMP the PLC runs on through erased EEPROM and spins at its last step.
+pub fn warnings(words: &[u16]) -> Vec<Warning> {
+    let stops = words
+        .iter()
+        .any(|&w| w != ERASED && matches!(Op::decode(w), Some(Op::End | Op::Jump)));
+    if stops {
+        Vec::new()
+    } else {
+        vec![Warning::RunsIntoErasedEeprom]
+    }
+}
+
 /// The Arduino PLC as a [`Plc`]: an ATmega328 with the PLC enabled (the
 /// sketch waits for `e` after power-up; `hashigo run` and the page start
 /// it at once). Inputs and outputs are pins, read as they are now.
@@ -219,16 +232,7 @@ impl Plc for ArduinoPlc {
     }
 
     fn warnings(&self) -> Vec<Warning> {
-        let stops = self
-            .machine
-            .eeprom()
-            .iter()
-            .any(|&w| w != ERASED && matches!(Op::decode(w), Some(Op::End | Op::Jump)));
-        if stops {
-            Vec::new()
-        } else {
-            vec![Warning::RunsIntoErasedEeprom]
-        }
+        warnings(self.machine.eeprom())
     }
 
     fn settings(&self) -> &'static [SettingInfo] {

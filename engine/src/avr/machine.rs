@@ -165,6 +165,11 @@ impl Machine {
             .set_period(period, now, SimTime::from_secs(10), "scan period")
     }
 
+    /// Stops driving `bit`: from the next scan on, only the program writes it.
+    pub fn release_input(&mut self, bit: BitRef) {
+        self.driven.retain(|(b, _)| *b != bit);
+    }
+
     /// Drives an input bit: from the next scan on, the bit reads `on`.
     pub fn set_input(&mut self, bit: BitRef, on: bool) {
         match self.driven.iter_mut().find(|(b, _)| *b == bit) {

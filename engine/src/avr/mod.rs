@@ -11,5 +11,5 @@ pub mod plc;
 pub mod program;
 
 pub use machine::{scan_ms, Machine, TimerWord};
-pub use plc::AvrPlc;
+pub use plc::{warnings, AvrPlc};
 pub use program::{parse_register_bit, BitRef, Instruction, Program, ProgramError, TimerKind};

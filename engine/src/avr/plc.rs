@@ -33,6 +33,25 @@ impl Machine {
     }
 }
 
+/// The warnings a program earns: a TOF is on for its set time after
+/// power-up (the seed's warning).
+pub fn warnings(program: &Program) -> Vec<Warning> {
+    let tof = program.instructions().iter().any(|i| {
+        matches!(
+            i,
+            Instruction::Timer {
+                kind: TimerKind::Tof,
+                ..
+            }
+        )
+    });
+    if tof {
+        vec![Warning::TofOnAtPowerUp]
+    } else {
+        Vec::new()
+    }
+}
+
 /// The AVR PLC as a [`Plc`].
 #[derive(Clone, Debug)]
 pub struct AvrPlc {
@@ -193,20 +212,7 @@ impl Plc for AvrPlc {
     }
 
     fn warnings(&self) -> Vec<Warning> {
-        let tof = self.machine.program().instructions().iter().any(|i| {
-            matches!(
-                i,
-                Instruction::Timer {
-                    kind: TimerKind::Tof,
-                    ..
-                }
-            )
-        });
-        if tof {
-            vec![Warning::TofOnAtPowerUp]
-        } else {
-            Vec::new()
-        }
+        warnings(self.machine.program())
     }
 
     fn settings(&self) -> &'static [SettingInfo] {

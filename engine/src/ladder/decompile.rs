@@ -16,7 +16,7 @@ use std::fmt;
 use super::compile::negate;
 use super::element::{CoilKind, ContactKind, Element, TimerKind};
 use super::grid::{Ladder, Pos};
-use super::net::{try_layout, Net, RungLogic};
+use super::net::{try_layout, Net, RungLogic, TooLarge};
 use crate::limits::MAX_NESTING;
 use crate::{arduino, avr, io86a, minasec, MachineId};
 
@@ -46,8 +46,8 @@ pub enum DecompileError {
     Drawing {
         /// The rung, 1-based.
         rung: usize,
-        /// What is too large.
-        message: String,
+        /// How large it would be.
+        size: TooLarge,
     },
 }
 
@@ -61,7 +61,7 @@ impl fmt::Display for DecompileError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             DecompileError::Step(e) => e.fmt(f),
-            DecompileError::Drawing { rung, message } => write!(f, "rung {rung}: {message}"),
+            DecompileError::Drawing { rung, size } => write!(f, "rung {rung}: {size}"),
         }
     }
 }
@@ -72,10 +72,8 @@ impl std::error::Error for DecompileError {}
 fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
     let mut ladder = Ladder::default();
     for (i, logic) in rungs.iter().enumerate() {
-        let rung = try_layout(logic).map_err(|message| DecompileError::Drawing {
-            rung: i + 1,
-            message,
-        })?;
+        let rung =
+            try_layout(logic).map_err(|size| DecompileError::Drawing { rung: i + 1, size })?;
         ladder.rungs.push(rung);
     }
     Ok(ladder)

@@ -23,7 +23,7 @@ pub mod target;
 pub use element::{CoilKind, ContactKind, Element, TimerKind};
 pub use grid::{Ladder, LadderError, LadderErrorKind, Link, Pos, Rung};
 pub use net::{analyse, layout, try_layout, Net, NetError, RungLogic};
-pub use project::Project;
+pub use project::{Project, ProjectError};
 
 use crate::MachineId;
 
@@ -68,7 +68,7 @@ fn check_logic(
     let mut errors = Vec::new();
     let mut fix = |e: &mut Element, pos: Pos| match target::check_element(machine, e) {
         Ok(canonical) => *e = canonical,
-        Err(m) => errors.push(LadderError::at(index, pos, m)),
+        Err(m) => errors.push(LadderError::at(index, pos, m.to_string())),
     };
     visit_leaves(&mut logic.condition, &mut fix);
     for (e, p) in &mut logic.outputs {

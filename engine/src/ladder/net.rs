@@ -11,7 +11,7 @@ mod reduce;
 
 use std::fmt;
 
-pub use layout::{layout, try_layout};
+pub use layout::{layout, try_layout, TooLarge};
 pub(crate) use reduce::Edge;
 
 use super::element::Element;

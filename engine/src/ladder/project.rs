@@ -45,52 +45,32 @@ impl Project {
 
     /// Reads a project; errors name the line of the JSON text. A leading
     /// byte-order mark (some Windows editors write one) is skipped.
-    pub fn from_json(text: &str) -> Result<Project, Located<String>> {
+    pub fn from_json(text: &str) -> Result<Project, Located<ProjectError>> {
         if text.len() > MAX_INPUT_BYTES {
-            return Err(Located::new(
-                1,
-                format!(
-                    "the file is {} bytes, more than the {MAX_INPUT_BYTES} a project may have (docs/limits.md)",
-                    text.len()
-                ),
-            ));
+            return Err(Located::new(1, ProjectError::TooLarge(text.len())));
         }
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let project: Project = serde_json::from_str(text).map_err(|e| {
             Located::new(
                 e.line().max(1),
-                format!("not a Hashigo project: {}", one_line(&e.to_string())),
+                ProjectError::Json(one_line(&e.to_string())),
             )
         })?;
+        let at = |key: &str, e: ProjectError| Err(Located::new(key_line(text, key), e));
         if project.format != FORMAT {
-            return Err(Located::new(
-                key_line(text, "format"),
-                format!("\"format\" is {}, not \"{FORMAT}\"", shown(&project.format)),
-            ));
+            return at("format", ProjectError::Format(project.format));
         }
         if project.version == 0 {
-            return Err(Located::new(
-                key_line(text, "version"),
-                format!("project version 0 does not exist: versions start at 1 (this Hashigo reads 1..={VERSION})"),
-            ));
+            return at("version", ProjectError::VersionZero);
         }
         if project.version > VERSION {
-            return Err(Located::new(
-                key_line(text, "version"),
-                format!(
-                    "project version {} is newer than this Hashigo reads (1..={VERSION}): a newer Hashigo made it",
-                    project.version
-                ),
-            ));
+            return at("version", ProjectError::Newer(project.version));
         }
         if project.ladder.rungs.len() > MAX_RUNGS {
-            return Err(Located::new(
-                key_line(text, "rungs"),
-                format!(
-                    "the ladder has {} rungs, more than the {MAX_RUNGS} a ladder may have (docs/limits.md)",
-                    project.ladder.rungs.len()
-                ),
-            ));
+            return at(
+                "rungs",
+                ProjectError::TooManyRungs(project.ladder.rungs.len()),
+            );
         }
         Ok(project)
     }
@@ -113,6 +93,52 @@ impl Project {
         serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
     }
 }
+
+/// Why a text is not a project this build reads.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ProjectError {
+    /// Larger than [`MAX_INPUT_BYTES`] (its size).
+    TooLarge(usize),
+    /// Not JSON of a project's shape (the parser's words, on one line).
+    Json(String),
+    /// The `format` field is not [`FORMAT`] (as written).
+    Format(String),
+    /// `"version": 0`.
+    VersionZero,
+    /// A version newer than [`VERSION`].
+    Newer(u32),
+    /// More rungs than [`MAX_RUNGS`] (how many).
+    TooManyRungs(usize),
+}
+
+impl std::fmt::Display for ProjectError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ProjectError::TooLarge(n) => write!(
+                f,
+                "the file is {n} bytes, more than the {MAX_INPUT_BYTES} a project may have (docs/limits.md)"
+            ),
+            ProjectError::Json(e) => write!(f, "not a Hashigo project: {e}"),
+            ProjectError::Format(v) => {
+                write!(f, "\"format\" is {}, not \"{FORMAT}\"", shown(v))
+            }
+            ProjectError::VersionZero => write!(
+                f,
+                "project version 0 does not exist: versions start at 1 (this Hashigo reads 1..={VERSION})"
+            ),
+            ProjectError::Newer(v) => write!(
+                f,
+                "project version {v} is newer than this Hashigo reads (1..={VERSION}): a newer Hashigo made it"
+            ),
+            ProjectError::TooManyRungs(n) => write!(
+                f,
+                "the ladder has {n} rungs, more than the {MAX_RUNGS} a ladder may have (docs/limits.md)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ProjectError {}
 
 /// The 1-based line where `"key"` first appears in `text` (1 if nowhere):
 /// the place to point at for an error about that field.

@@ -1,8 +1,11 @@
 //! What each machine offers a ladder: its elements and devices. The
 //! editor's palette and the validator both read this one table.
 
+use std::fmt;
+
 use super::element::{CoilKind, ContactKind, Element};
 use crate::avr::parse_register_bit;
+use crate::error::shown;
 use crate::io86a::{isa::parse_bit as io86a_bit, isa::parse_word, Bit, Word};
 use crate::minasec::{isa::Device as MinasecDevice, Address};
 use crate::{arduino, MachineId};
@@ -92,210 +95,312 @@ enum Role {
     WordTarget,
 }
 
+/// Why a machine cannot take an element as drawn: what the editor shows
+/// on the cell and the compiler reports at it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ElementError {
+    /// The machine has no such element (`what` names it, `why` adds a
+    /// reason or a hint, possibly empty).
+    Lacks {
+        /// The machine.
+        machine: MachineId,
+        /// The element, as [`Element`]'s `Display` names it.
+        what: String,
+        /// The rest of the sentence: a reason or what to use instead.
+        why: &'static str,
+    },
+    /// An in-line timer with a set time of 0 ms.
+    ZeroTimer,
+    /// A timer or counter set value above K32767.
+    PresetTooLarge(u16),
+    /// A MINASEC-U device name that does not parse.
+    Minasec(crate::minasec::isa::OperandError),
+    /// A PLC-IO86A device name that does not parse.
+    Io86a(crate::io86a::isa::OperandError),
+    /// A device name the machine does not have.
+    UnknownDevice {
+        /// The machine.
+        machine: MachineId,
+        /// The name as written.
+        device: String,
+    },
+    /// A coil on an input.
+    InputAsCoil(String),
+    /// A word target that is not a data register.
+    NotADataRegister(String),
+    /// A device this element cannot drive (`want` says what it can).
+    CannotDrive {
+        /// The device.
+        device: String,
+        /// What the element drives.
+        want: &'static str,
+    },
+    /// A set or reset coil on MINASEC-U's wired T0 / T1 / C0 / C0R.
+    MinasecLatch {
+        /// `set` or `reset`.
+        kind: &'static str,
+        /// The device.
+        device: String,
+    },
+    /// A plain or inverted coil on an IO86A counter (it needs its set value).
+    Io86aCounterCoil(String),
+}
+
+impl fmt::Display for ElementError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ElementError::Lacks { machine, what, why } => write!(f, "{machine} has no {what}{why}"),
+            ElementError::ZeroTimer => f.write_str("a timer needs a set time above 0 ms"),
+            ElementError::PresetTooLarge(k) => write!(f, "set value K{k} is above K32767"),
+            ElementError::Minasec(e) => e.fmt(f),
+            ElementError::Io86a(e) => e.fmt(f),
+            ElementError::UnknownDevice { machine, device } => {
+                let has = match machine {
+                    MachineId::AvrPlc => "avr-plc ladders name bits R0.0-R31.7",
+                    MachineId::ArduinoPlc => "arduino-plc has X000-X005 and Y000-Y005",
+                    _ => capabilities(*machine).devices,
+                };
+                write!(f, "unknown device {}: {has}", shown(device))
+            }
+            ElementError::InputAsCoil(d) => write!(f, "{d} is an input: a coil cannot drive it"),
+            ElementError::NotADataRegister(d) => {
+                write!(f, "{d}: only a data register D00-D07 can take a value")
+            }
+            ElementError::CannotDrive { device, want } => {
+                write!(f, "{device} cannot be driven here: use {want}")
+            }
+            ElementError::MinasecLatch { kind, device } => write!(
+                f,
+                "a {kind} coil on {device} has no meaning on MINASEC-U: drive it with a normal coil (a reset coil on C0 clears the count)"
+            ),
+            ElementError::Io86aCounterCoil(d) => write!(
+                f,
+                "a plain coil cannot drive counter {d}: use a counter coil with its set value (OUT {d} K10), or a set/reset coil"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ElementError {}
+
 /// Checks that `machine` has `element` and its devices; returns the
 /// element with device names in the machine's canonical spelling.
-pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, String> {
-    let caps = capabilities(machine);
-    let name = machine.name();
-    let dev = |d: &str, role: Role| canonical(machine, d, role);
-    Ok(match element {
-        Element::Wire => Element::Wire,
+pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, ElementError> {
+    match element {
+        Element::Wire => Ok(Element::Wire),
         Element::Contact { kind, device } => {
-            if !caps.contacts.contains(kind) {
-                return Err(format!("{name} has no {element}: it has no edge contacts"));
+            if !capabilities(machine).contacts.contains(kind) {
+                return Err(lacks(machine, element, ": it has no edge contacts"));
             }
-            Element::Contact {
+            Ok(Element::Contact {
                 kind: *kind,
-                device: dev(device, Role::Read)?,
-            }
+                device: canonical(machine, device, Role::Read)?,
+            })
         }
         Element::Not | Element::Edge { .. } | Element::Timer { .. } => {
-            if !caps.inline_boxes {
-                let why = if machine == MachineId::ArduinoPlc {
-                    " (the Arduino sketch has no timers)"
-                } else {
-                    ""
-                };
-                return Err(format!("{name} has no in-line {element} box{why}"));
-            }
-            if let Element::Timer { preset_ms, .. } = element {
-                if *preset_ms == 0 {
-                    return Err("a timer needs a set time above 0 ms".to_string());
-                }
-            }
-            element.clone()
+            check_inline_box(machine, element)
         }
-        Element::Coil { kind, device } => {
-            let device = dev(device, Role::Write)?;
-            if machine == MachineId::MinasecU {
-                minasec_coil(*kind, &device)?;
-            }
-            if machine == MachineId::Io86a {
-                io86a_coil(*kind, &device)?;
-            }
-            Element::Coil {
-                kind: *kind,
-                device,
-            }
-        }
+        Element::Coil { kind, device } => check_coil(machine, *kind, device),
         Element::Pulse { falling, device } => {
-            if !caps.pulse_outputs {
-                return Err(format!("{name} has no PLS/PLF output"));
+            if !capabilities(machine).pulse_outputs {
+                return Err(lacks(machine, element, ""));
             }
-            Element::Pulse {
+            Ok(Element::Pulse {
                 falling: *falling,
-                device: dev(device, Role::Write)?,
-            }
+                device: canonical(machine, device, Role::Write)?,
+            })
         }
-        Element::TimerCoil { device, preset } | Element::CounterCoil { device, preset } => {
-            if !caps.timer_counter_coils {
-                let hint = match machine {
-                    MachineId::MinasecU => ": drive T0/T1 or C0 with a coil; their delay and set value are panel settings",
-                    MachineId::AvrPlc => ": use an in-line TON/TOF/TP box",
-                    _ => " (the Arduino sketch has no timers or counters)",
-                };
-                return Err(format!("{name} has no {element}{hint}"));
-            }
-            if i32::from(*preset) > crate::io86a::isa::K_MAX {
-                return Err(format!("set value K{preset} is above K32767"));
-            }
-            let timer = matches!(element, Element::TimerCoil { .. });
-            let d = dev(device, if timer { Role::Timer } else { Role::Counter })?;
-            if timer {
-                Element::TimerCoil {
-                    device: d,
-                    preset: *preset,
-                }
-            } else {
-                Element::CounterCoil {
-                    device: d,
-                    preset: *preset,
-                }
-            }
+        Element::TimerCoil { .. } | Element::CounterCoil { .. } => {
+            check_timer_counter_coil(machine, element)
         }
         Element::Mov { .. } | Element::Cmp { .. } | Element::Inc { .. } | Element::Dec { .. } => {
-            if !caps.data_boxes {
-                return Err(format!(
-                    "{name} has no {element} box: it has no data registers"
-                ));
-            }
-            match element {
-                Element::Mov { src, dst } => Element::Mov {
-                    src: dev(src, Role::WordSource)?,
-                    dst: dev(dst, Role::WordTarget)?,
-                },
-                Element::Cmp { a, b } => Element::Cmp {
-                    a: dev(a, Role::WordSource)?,
-                    b: dev(b, Role::WordSource)?,
-                },
-                Element::Inc { dst } => Element::Inc {
-                    dst: dev(dst, Role::WordTarget)?,
-                },
-                Element::Dec { dst } => Element::Dec {
-                    dst: dev(dst, Role::WordTarget)?,
-                },
-                _ => element.clone(),
-            }
+            check_data_box(machine, element)
         }
+    }
+}
+
+fn lacks(machine: MachineId, element: &Element, why: &'static str) -> ElementError {
+    let what = match element {
+        Element::Not | Element::Edge { .. } | Element::Timer { .. } => {
+            format!("in-line {element} box")
+        }
+        Element::Pulse { .. } => "PLS/PLF output".to_string(),
+        Element::Mov { .. } | Element::Cmp { .. } | Element::Inc { .. } | Element::Dec { .. } => {
+            format!("{element} box")
+        }
+        other => other.to_string(),
+    };
+    ElementError::Lacks { machine, what, why }
+}
+
+fn check_inline_box(machine: MachineId, element: &Element) -> Result<Element, ElementError> {
+    if !capabilities(machine).inline_boxes {
+        let why = if machine == MachineId::ArduinoPlc {
+            " (the Arduino sketch has no timers)"
+        } else {
+            ""
+        };
+        return Err(lacks(machine, element, why));
+    }
+    if let Element::Timer { preset_ms: 0, .. } = element {
+        return Err(ElementError::ZeroTimer);
+    }
+    Ok(element.clone())
+}
+
+fn check_coil(machine: MachineId, kind: CoilKind, device: &str) -> Result<Element, ElementError> {
+    let device = canonical(machine, device, Role::Write)?;
+    match machine {
+        MachineId::MinasecU => minasec_coil(kind, &device)?,
+        MachineId::Io86a => io86a_coil(kind, &device)?,
+        _ => {}
+    }
+    Ok(Element::Coil { kind, device })
+}
+
+fn check_timer_counter_coil(
+    machine: MachineId,
+    element: &Element,
+) -> Result<Element, ElementError> {
+    if !capabilities(machine).timer_counter_coils {
+        let hint = match machine {
+            MachineId::MinasecU => {
+                ": drive T0/T1 or C0 with a coil; their delay and set value are panel settings"
+            }
+            MachineId::AvrPlc => ": use an in-line TON/TOF/TP box",
+            _ => " (the Arduino sketch has no timers or counters)",
+        };
+        return Err(lacks(machine, element, hint));
+    }
+    match element {
+        Element::TimerCoil { device, preset } | Element::CounterCoil { device, preset } => {
+            if i32::from(*preset) > crate::io86a::isa::K_MAX {
+                return Err(ElementError::PresetTooLarge(*preset));
+            }
+            let preset = *preset;
+            Ok(if matches!(element, Element::TimerCoil { .. }) {
+                let device = canonical(machine, device, Role::Timer)?;
+                Element::TimerCoil { device, preset }
+            } else {
+                let device = canonical(machine, device, Role::Counter)?;
+                Element::CounterCoil { device, preset }
+            })
+        }
+        other => Ok(other.clone()),
+    }
+}
+
+fn check_data_box(machine: MachineId, element: &Element) -> Result<Element, ElementError> {
+    if !capabilities(machine).data_boxes {
+        return Err(lacks(machine, element, ": it has no data registers"));
+    }
+    let word = |d: &str, role| canonical(machine, d, role);
+    Ok(match element {
+        Element::Mov { src, dst } => Element::Mov {
+            src: word(src, Role::WordSource)?,
+            dst: word(dst, Role::WordTarget)?,
+        },
+        Element::Cmp { a, b } => Element::Cmp {
+            a: word(a, Role::WordSource)?,
+            b: word(b, Role::WordSource)?,
+        },
+        Element::Inc { dst } => Element::Inc {
+            dst: word(dst, Role::WordTarget)?,
+        },
+        Element::Dec { dst } => Element::Dec {
+            dst: word(dst, Role::WordTarget)?,
+        },
+        other => other.clone(),
     })
 }
 
-fn canonical(machine: MachineId, device: &str, role: Role) -> Result<String, String> {
+fn canonical(machine: MachineId, device: &str, role: Role) -> Result<String, ElementError> {
     let device = device.trim();
+    let unknown = || ElementError::UnknownDevice {
+        machine,
+        device: device.to_string(),
+    };
     match machine {
         MachineId::MinasecU => {
-            let a = Address::parse(device).map_err(|e| e.to_string())?;
+            let a = Address::parse(device).map_err(ElementError::Minasec)?;
             if role == Role::Write && matches!(a.device(), MinasecDevice::Input(_)) {
-                return Err(format!("{a} is an input: a coil cannot drive it"));
+                return Err(ElementError::InputAsCoil(a.to_string()));
             }
             Ok(a.to_string())
         }
         MachineId::Io86a => io86a_canonical(device, role),
         MachineId::AvrPlc => parse_register_bit(device)
             .map(|b| b.to_string())
-            .ok_or_else(|| {
-                format!(
-                    "unknown device {}: avr-plc ladders name bits R0.0-R31.7",
-                    crate::error::shown(device)
-                )
-            }),
+            .ok_or_else(unknown),
         MachineId::ArduinoPlc => {
-            let n = arduino::isa::parse_io(device).ok_or_else(|| {
-                format!(
-                    "unknown device {}: arduino-plc has X000-X005 and Y000-Y005",
-                    crate::error::shown(device)
-                )
-            })?;
+            let n = arduino::isa::parse_io(device).ok_or_else(unknown)?;
             if role == Role::Write && n < 8 {
-                return Err(format!(
-                    "{} is an input: a coil cannot drive it",
-                    arduino::isa::io_name(n)
-                ));
+                return Err(ElementError::InputAsCoil(arduino::isa::io_name(n)));
             }
             Ok(arduino::isa::io_name(n))
         }
     }
 }
 
-fn io86a_canonical(device: &str, role: Role) -> Result<String, String> {
-    match role {
-        Role::WordSource | Role::WordTarget => {
-            let w = parse_word(device).map_err(|e| e.to_string())?;
-            if role == Role::WordTarget && !matches!(w, Word::D(_)) {
-                return Err(format!(
-                    "{device}: only a data register D00-D07 can take a value"
-                ));
-            }
-            Ok(match w {
-                Word::K(k) => format!("K{k}"),
-                Word::D(n) => format!("D{n:02}"),
-                Word::T(n) => format!("T{n:02}"),
-                Word::C(n) => format!("C{n:02}"),
-            })
+fn io86a_canonical(device: &str, role: Role) -> Result<String, ElementError> {
+    if matches!(role, Role::WordSource | Role::WordTarget) {
+        let w = parse_word(device).map_err(ElementError::Io86a)?;
+        if role == Role::WordTarget && !matches!(w, Word::D(_)) {
+            return Err(ElementError::NotADataRegister(device.to_string()));
         }
-        _ => {
-            let b = io86a_bit(device).map_err(|e| e.to_string())?;
-            let ok = matches!(
-                (role, b),
-                (Role::Read, _)
-                    | (Role::Write, Bit::Y(_) | Bit::M(_) | Bit::S(_) | Bit::C(_))
-                    | (Role::Timer, Bit::T(_))
-                    | (Role::Counter, Bit::C(_))
-            );
-            if !ok {
-                let want = match role {
-                    Role::Timer => "a timer T00-T31",
-                    Role::Counter => "a counter C00-C07",
-                    _ => "a Y, M or S device (C only with set/reset)",
-                };
-                return Err(format!("{b} cannot be driven here: use {want}"));
-            }
-            Ok(b.to_string())
-        }
+        return Ok(match w {
+            Word::K(k) => format!("K{k}"),
+            Word::D(n) => format!("D{n:02}"),
+            Word::T(n) => format!("T{n:02}"),
+            Word::C(n) => format!("C{n:02}"),
+        });
     }
+    let b = io86a_bit(device).map_err(ElementError::Io86a)?;
+    let ok = matches!(
+        (role, b),
+        (Role::Read, _)
+            | (Role::Write, Bit::Y(_) | Bit::M(_) | Bit::S(_) | Bit::C(_))
+            | (Role::Timer, Bit::T(_))
+            | (Role::Counter, Bit::C(_))
+    );
+    if !ok {
+        let want = match role {
+            Role::Timer => "a timer T00-T31",
+            Role::Counter => "a counter C00-C07",
+            _ => "a Y, M or S device (C only with set/reset)",
+        };
+        return Err(ElementError::CannotDrive {
+            device: b.to_string(),
+            want,
+        });
+    }
+    Ok(b.to_string())
 }
 
 /// An IO86A counter is driven by a counter coil with its set value
 /// (`OUT C07 K10`); a plain or inverted coil would compile to `OUT C07`
 /// with no `K`, which the machine refuses.
-fn io86a_coil(kind: CoilKind, device: &str) -> Result<(), String> {
+fn io86a_coil(kind: CoilKind, device: &str) -> Result<(), ElementError> {
     if matches!(kind, CoilKind::Normal | CoilKind::Inverted) && device.starts_with('C') {
-        return Err(format!(
-            "a plain coil cannot drive counter {device}: use a counter coil with its set value (OUT {device} K10), or a set/reset coil"
-        ));
+        return Err(ElementError::Io86aCounterCoil(device.to_string()));
     }
     Ok(())
 }
 
 /// MINASEC-U's T0 / T1 / C0 / C0R are wired, not latched: a set or reset
 /// coil on them has no meaning, except reset on C0, which is `ST C0R`.
-fn minasec_coil(kind: CoilKind, device: &str) -> Result<(), String> {
+fn minasec_coil(kind: CoilKind, device: &str) -> Result<(), ElementError> {
     let special = matches!(device, "T0" | "T1" | "C0" | "C0R");
-    match kind {
-        CoilKind::Set | CoilKind::Reset if special && !(kind == CoilKind::Reset && device == "C0") => Err(format!(
-            "a {} coil on {device} has no meaning on MINASEC-U: drive it with a normal coil (a reset coil on C0 clears the count)",
-            if kind == CoilKind::Set { "set" } else { "reset" }
-        )),
-        _ => Ok(()),
+    let latch = match kind {
+        CoilKind::Set => "set",
+        CoilKind::Reset if device != "C0" => "reset",
+        _ => return Ok(()),
+    };
+    if special {
+        return Err(ElementError::MinasecLatch {
+            kind: latch,
+            device: device.to_string(),
+        });
     }
+    Ok(())
 }

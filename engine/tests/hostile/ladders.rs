@@ -2,7 +2,7 @@
 //! messages, and the per-machine checks that once let wrong programs by.
 
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::{LadderErrorKind, Project};
+use engine::ladder::{LadderErrorKind, Project, ProjectError};
 use engine::MachineId;
 
 use crate::gen::{coil, contact, project, rung, series_rung};
@@ -70,7 +70,13 @@ fn a_grid_larger_than_the_rung_limit_is_refused_before_analysis() {
 fn too_many_rungs_are_refused_when_read() {
     let rungs = vec![series_rung(1, "X00", "Y00"); 10_001];
     let e = Project::from_json(&project("io86a", &rungs)).expect_err("too many");
-    assert!(e.error.contains("10001 rungs, more than the 10000"), "{e}");
+    assert_eq!(e.error, ProjectError::TooManyRungs(10_001));
+    assert!(
+        e.error
+            .to_string()
+            .contains("10001 rungs, more than the 10000"),
+        "{e}"
+    );
 }
 
 #[test]

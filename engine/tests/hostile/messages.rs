@@ -1,6 +1,6 @@
 //! Messages: what they say about times, versions and what they echo.
 
-use engine::ladder::Project;
+use engine::ladder::{Project, ProjectError};
 use engine::{shown, SimTime};
 
 const SEED: &str = include_str!("../../programs/minasec-u/seed-test.json");
@@ -32,13 +32,13 @@ fn version_zero_is_not_from_a_newer_hashigo() {
     let v0 = SEED.replace("\"version\": 1", "\"version\": 0");
     let e = Project::from_json(&v0).expect_err("version 0");
     assert_eq!(e.line, 3);
-    assert!(e.error.contains("versions start at 1"), "{e}");
-    assert!(!e.error.contains("newer"), "{e}");
+    assert_eq!(e.error, ProjectError::VersionZero);
+    assert!(e.error.to_string().contains("versions start at 1"), "{e}");
     let v9 = SEED.replace("\"version\": 1", "\"version\": 9");
-    assert!(Project::from_json(&v9)
-        .expect_err("v9")
-        .error
-        .contains("newer"));
+    assert_eq!(
+        Project::from_json(&v9).expect_err("v9").error,
+        ProjectError::Newer(9)
+    );
 }
 
 #[test]

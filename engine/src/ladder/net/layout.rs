@@ -9,18 +9,36 @@ use crate::limits::MAX_RUNG_CELLS;
 /// [`layout`], refusing a drawing larger than [`MAX_RUNG_CELLS`] before
 /// anything is drawn. The logic must nest at most
 /// [`crate::limits::MAX_NESTING`] deep (every [`Net`] the engine builds does).
-pub fn try_layout(logic: &RungLogic) -> Result<Rung, String> {
+pub fn try_layout(logic: &RungLogic) -> Result<Rung, TooLarge> {
     let (width, height) = measure(&logic.condition);
-    let rows = height.max(logic.outputs.len()) as u128;
-    let cells = (width as u128 + 1) * rows;
-    if cells > MAX_RUNG_CELLS as u128 {
-        return Err(format!(
-            "drawn as a ladder this rung would span {rows} rows and {} columns, more than the {MAX_RUNG_CELLS} cells a rung may have",
-            width + 1
-        ));
+    let rows = height.max(logic.outputs.len());
+    let columns = width.saturating_add(1);
+    if rows as u128 * columns as u128 > MAX_RUNG_CELLS as u128 {
+        return Err(TooLarge { rows, columns });
     }
     Ok(layout(logic))
 }
+
+/// A rung whose drawing would span more than [`MAX_RUNG_CELLS`] cells.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TooLarge {
+    /// Rows it would span.
+    pub rows: usize,
+    /// Columns it would span.
+    pub columns: usize,
+}
+
+impl std::fmt::Display for TooLarge {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "drawn as a ladder this rung would span {} rows and {} columns, more than the {MAX_RUNG_CELLS} cells a rung may have (docs/limits.md)",
+            self.rows, self.columns
+        )
+    }
+}
+
+impl std::error::Error for TooLarge {}
 
 /// Draws a rung's logic on a grid: series left to right, parallel
 /// branches below each other, outputs in the last column.

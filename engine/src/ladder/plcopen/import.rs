@@ -68,7 +68,7 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
                 for (logic, line) in rungs {
                     match try_layout(&logic) {
                         Ok(rung) => ladder.rungs.push(rung),
-                        Err(m) => errors.push(Located::new(line, m)),
+                        Err(m) => errors.push(Located::new(line, m.to_string())),
                     }
                 }
                 if ladder.rungs.len() > MAX_RUNGS {
@@ -433,7 +433,7 @@ impl Body {
             let outs = self.outputs.iter().map(|(_, e, _, line)| (e, *line));
             for (e, line) in leaves.chain(outs) {
                 if let Err(msg) = check_element(m, e) {
-                    errors.push(Located::new(line, msg));
+                    errors.push(Located::new(line, msg.to_string()));
                 }
             }
             if !errors.is_empty() {
