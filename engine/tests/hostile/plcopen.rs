@@ -16,7 +16,10 @@ fn deep_nesting_is_refused_at_its_line() {
     assert_eq!(errors.len(), 1);
     assert_eq!(errors[0].line, 2);
     assert!(
-        errors[0].error.contains("nest more than 256 deep"),
+        errors[0]
+            .error
+            .to_string()
+            .contains("nest more than 256 deep"),
         "{errors:?}"
     );
 }
@@ -41,7 +44,10 @@ fn fifty_thousand_rails_import() {
 fn a_network_nested_past_the_limit_is_refused_not_drawn() {
     let errors = import(&plcopen_alternating(6_000)).expect_err("too deep");
     assert!(
-        errors[0].error.contains("nest more than 100 deep"),
+        errors[0]
+            .error
+            .to_string()
+            .contains("nest more than 100 deep"),
         "{errors:?}"
     );
     // Shallow alternation draws fine.
@@ -70,6 +76,7 @@ fn a_local_id_used_twice_is_an_error() {
     assert!(
         errors[0]
             .error
+            .to_string()
             .contains("localId \"2\" is used again (first on line 3)"),
         "{errors:?}"
     );
@@ -104,7 +111,10 @@ fn negated_accepts_every_xml_boolean() {
     );
     let errors = import(&xml).expect_err("not a boolean");
     assert!(
-        errors[0].error.contains("negated=\"yes\" is not a boolean"),
+        errors[0]
+            .error
+            .to_string()
+            .contains("negated=\"yes\" is not a boolean"),
         "{errors:?}"
     );
 }
@@ -119,6 +129,10 @@ fn an_unknown_edge_is_called_what_it_is() {
     assert_eq!(errors[0].line, 3);
     assert_eq!(
         errors[0].error,
+        engine::ladder::plcopen::ImportError::BadEdge("bogus".into())
+    );
+    assert_eq!(
+        errors[0].error.to_string(),
         "edge=\"bogus\" is not none, rising or falling"
     );
 }

@@ -107,7 +107,10 @@ fn check_depth(levels: usize) -> Result<(), TestCaseError> {
             prop_assert!(levels <= 2 * MAX_NESTING + 2, "{levels} levels imported");
         }
         Err(errors) => {
-            prop_assert!(errors[0].error.contains("nest more than"), "{errors:?}");
+            prop_assert!(
+                errors[0].error.to_string().contains("nest more than"),
+                "{errors:?}"
+            );
             prop_assert!(levels > MAX_NESTING, "{levels} levels refused");
         }
     }

@@ -131,12 +131,15 @@ proptest! {
 fn bad_files_are_errors_at_their_lines() {
     let err = |xml: &str| import(xml).expect_err("must fail");
     let e = err("<project xmlns=\"urn:other\"/>");
-    assert!(e[0].error.contains("not PLCopen TC6"), "{e:?}");
+    assert!(e[0].error.to_string().contains("not PLCopen TC6"), "{e:?}");
     let e = err("<project>\n<types>\n</project>");
     assert_eq!(e[0].line, 3, "{e:?}");
-    assert!(e[0].error.contains("not well-formed"), "{e:?}");
+    assert!(e[0].error.to_string().contains("not well-formed"), "{e:?}");
     let e = err("<project><types/></project>");
-    assert!(e[0].error.contains("no POU with an LD body"), "{e:?}");
+    assert!(
+        e[0].error.to_string().contains("no POU with an LD body"),
+        "{e:?}"
+    );
     // An unknown block, at its line.
     let bad = BLINK.replacen(
         "typeName=\"TON\" instanceName=\"TON0\"",
@@ -150,7 +153,10 @@ fn bad_files_are_errors_at_their_lines() {
         + 1;
     let e = err(&bad);
     assert_eq!(
-        (e[0].line, e[0].error.contains("block SR is not supported")),
+        (
+            e[0].line,
+            e[0].error.to_string().contains("block SR is not supported")
+        ),
         (line, true),
         "{e:?}"
     );
@@ -162,7 +168,9 @@ fn bad_files_are_errors_at_their_lines() {
     );
     let e = err(&dangling);
     assert!(
-        e[0].error.contains("contact R3.3 leads to no coil"),
+        e[0].error
+            .to_string()
+            .contains("contact R3.3 leads to no coil"),
         "{e:?}"
     );
     // A PLCopen variable that is not the machine's device: at its line.

@@ -4,6 +4,7 @@
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
+use super::error::XmlError;
 use crate::error::Located;
 use crate::limits::{MAX_INPUT_BYTES, MAX_XML_DEPTH};
 
@@ -97,15 +98,15 @@ impl Lines<'_> {
     }
 }
 
-fn start(e: &BytesStart, line: usize) -> Result<Node, String> {
+fn start(e: &BytesStart, line: usize) -> Result<Node, XmlError> {
     let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
     let mut attrs = Vec::new();
     for a in e.attributes() {
-        let a = a.map_err(|err| format!("bad attribute in <{name}>: {err}"))?;
+        let a = a.map_err(|err| XmlError::BadAttribute(name.clone(), err.to_string()))?;
         let key = String::from_utf8_lossy(a.key.local_name().as_ref()).into_owned();
         let value = a
             .unescape_value()
-            .map_err(|err| format!("bad attribute value in <{name}>: {err}"))?
+            .map_err(|err| XmlError::BadAttribute(name.clone(), err.to_string()))?
             .into_owned();
         // `xmlns` and `xmlns:x` both keep their name, so the namespace is visible.
         let key = if a.key.as_ref() == b"xmlns" {
@@ -126,15 +127,9 @@ fn start(e: &BytesStart, line: usize) -> Result<Node, String> {
 /// Parses `text` into its root element; errors name their line. Nesting
 /// past [`MAX_XML_DEPTH`] and text past [`MAX_INPUT_BYTES`] are refused
 /// before they are built, so every walk over the tree is shallow.
-pub fn parse(text: &str) -> Result<Node, Located<String>> {
+pub fn parse(text: &str) -> Result<Node, Located<XmlError>> {
     if text.len() > MAX_INPUT_BYTES {
-        return Err(Located::new(
-            1,
-            format!(
-                "the file is {} bytes, more than the {MAX_INPUT_BYTES} a PLCopen file may have (docs/limits.md)",
-                text.len()
-            ),
-        ));
+        return Err(Located::new(1, XmlError::TooLarge(text.len())));
     }
     let mut reader = Reader::from_str(text);
     reader.config_mut().trim_text(true);
@@ -155,18 +150,13 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
         let event = reader.read_event().map_err(|e| {
             Located::new(
                 line_at(text.as_bytes(), reader.error_position()),
-                format!("not well-formed XML: {e}"),
+                XmlError::NotWellFormed(e.to_string()),
             )
         })?;
         match event {
             Event::Start(e) => {
                 if stack.len() >= MAX_XML_DEPTH {
-                    return Err(Located::new(
-                        line,
-                        format!(
-                            "elements nest more than {MAX_XML_DEPTH} deep here (docs/limits.md)"
-                        ),
-                    ));
+                    return Err(Located::new(line, XmlError::TooDeep));
                 }
                 stack.push(start(&e, line).map_err(|m| Located::new(line, m))?)
             }
@@ -180,7 +170,7 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
             Event::End(_) => {
                 let node = stack
                     .pop()
-                    .ok_or_else(|| Located::new(line, "an end tag with no start".to_string()))?;
+                    .ok_or_else(|| Located::new(line, XmlError::EndWithoutStart))?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(node),
                     None => root = root.or(Some(node)),
@@ -190,7 +180,7 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
                 if let Some(n) = stack.last_mut() {
                     let s = t
                         .unescape()
-                        .map_err(|e| Located::new(line, format!("bad text: {e}")))?;
+                        .map_err(|e| Located::new(line, XmlError::BadText(e.to_string())))?;
                     n.text.push_str(s.trim());
                 }
             }
@@ -206,8 +196,8 @@ pub fn parse(text: &str) -> Result<Node, Located<String>> {
     if !stack.is_empty() {
         return Err(Located::new(
             line_at(text.as_bytes(), text.len() as u64),
-            format!("<{}> is never closed", stack[stack.len() - 1].name),
+            XmlError::NeverClosed(stack[stack.len() - 1].name.clone()),
         ));
     }
-    root.ok_or_else(|| Located::new(1, "no XML element found".to_string()))
+    root.ok_or_else(|| Located::new(1, XmlError::Empty))
 }

@@ -6,6 +6,7 @@
 use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::dom::{self, Node};
+use super::error::{Connection, ImportError};
 use super::{parse_time_literal, NS_V10, NS_V201};
 use crate::error::Located;
 use crate::io86a::{isa::parse_bit, Bit};
@@ -16,7 +17,7 @@ use crate::ladder::target::check_element;
 use crate::limits::MAX_RUNGS;
 use crate::MachineId;
 
-type Errors = Vec<Located<String>>;
+type Errors = Vec<Located<ImportError>>;
 
 /// Reads the LD bodies of a PLCopen TC6 project (v2.01 or v1.0) into a
 /// ladder. Variables name the machine's devices (`X00`); the compiler
@@ -29,11 +30,11 @@ pub fn import(text: &str) -> Result<Ladder, Errors> {
 /// [`import`], also checking every element and device against `machine`
 /// so that an unknown device is reported at its line of the XML.
 pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Errors> {
-    let root = dom::parse(text).map_err(|e| vec![e])?;
+    let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
     if root.name != "project" {
         return Err(vec![Located::new(
             root.line,
-            format!("not a PLCopen project: the root element is <{}>", root.name),
+            ImportError::NotAProject(root.name.clone()),
         )]);
     }
     match root.attr("xmlns") {
@@ -41,10 +42,7 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
         Some(other) => {
             return Err(vec![Located::new(
                 root.line,
-                format!(
-                    "namespace {} is not PLCopen TC6 ({NS_V201} or {NS_V10})",
-                    crate::error::shown(other)
-                ),
+                ImportError::Namespace(other.to_string()),
             )])
         }
     }
@@ -55,10 +53,7 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
         .filter_map(|p| p.child("body")?.child("LD"))
         .collect();
     if bodies.is_empty() {
-        return Err(vec![Located::new(
-            root.line,
-            "the project has no POU with an LD body".to_string(),
-        )]);
+        return Err(vec![Located::new(root.line, ImportError::NoLdBody)]);
     }
     let mut ladder = Ladder::default();
     let mut errors = Vec::new();
@@ -68,14 +63,11 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
                 for (logic, line) in rungs {
                     match try_layout(&logic) {
                         Ok(rung) => ladder.rungs.push(rung),
-                        Err(m) => errors.push(Located::new(line, m.to_string())),
+                        Err(m) => errors.push(Located::new(line, ImportError::Drawing(m))),
                     }
                 }
                 if ladder.rungs.len() > MAX_RUNGS {
-                    return Err(vec![Located::new(
-                        ld.line,
-                        format!("the project has more than {MAX_RUNGS} rungs (docs/limits.md)"),
-                    )]);
+                    return Err(vec![Located::new(ld.line, ImportError::TooManyRungs)]);
                 }
             }
             Err(e) => errors.extend(e),
@@ -122,16 +114,16 @@ impl Body {
             }
             let Some(id) = n.attr("localId") else {
                 b.errors
-                    .push(Located::new(n.line, format!("<{}> has no localId", n.name)));
+                    .push(Located::new(n.line, ImportError::NoLocalId(n.name.clone())));
                 continue;
             };
             if let Some((_, first)) = b.kinds.get(id) {
                 b.errors.push(Located::new(
                     n.line,
-                    format!(
-                        "localId {} is used again (first on line {first}): every element needs its own",
-                        crate::error::shown(id)
-                    ),
+                    ImportError::DuplicateLocalId {
+                        id: id.to_string(),
+                        first: *first,
+                    },
                 ));
                 continue;
             }
@@ -194,22 +186,24 @@ impl Body {
     }
 
     /// The point a `connectionPointIn` joins, or an error when it joins none.
-    fn join(&mut self, cpi: Option<&Node>, what: &str) -> Result<usize, String> {
+    fn join(&mut self, cpi: Option<&Node>, what: &str) -> Result<usize, ImportError> {
+        let fail = |problem| ImportError::Connection {
+            what: what.to_string(),
+            problem,
+        };
         let conns: Vec<&Node> = cpi
             .map(|c| c.all("connection").collect())
             .unwrap_or_default();
         let mut joined = None;
         for c in conns {
             let Some(r) = c.attr("refLocalId") else {
-                return Err(format!("a connection of the {what} has no refLocalId"));
+                return Err(fail(Connection::NoRef));
             };
             let kind = self.kinds.get(r).map(|(k, _)| k.clone());
             let pin = match kind.as_deref() {
-                None => return Err(format!("the {what} connects to localId {r}, which does not exist")),
+                None => return Err(fail(Connection::Missing(r.to_string()))),
                 Some("block") => c.attr("formalParameter").unwrap_or("Q").to_string(),
-                Some("inVariable") => {
-                    return Err(format!("the {what} takes power from a variable box (localId {r}): wire it from the rail through a contact"))
-                }
+                Some("inVariable") => return Err(fail(Connection::FromVariable(r.to_string()))),
                 Some(_) => String::new(),
             };
             let p = self.point(r, &pin);
@@ -218,10 +212,10 @@ impl Body {
                 Some(j) => self.union(j, p),
             }
         }
-        joined.ok_or_else(|| format!("the {what} is not connected on its left"))
+        joined.ok_or_else(|| fail(Connection::Unconnected))
     }
 
-    fn element(&mut self, n: &Node, seq: usize) -> Result<(), String> {
+    fn element(&mut self, n: &Node, seq: usize) -> Result<(), ImportError> {
         let id = n.attr("localId").unwrap_or_default().to_string();
         let (y, x) = position(n);
         let pos = Pos::new(y, x * 65_536 + seq);
@@ -230,17 +224,13 @@ impl Body {
             "contact" => {
                 let device = variable()
                     .filter(|v| !v.is_empty())
-                    .ok_or("a contact with no variable")?;
+                    .ok_or(ImportError::NoVariable("contact"))?;
                 let kind = match (negated(n)?, edge(n)?) {
                     (false, None) => ContactKind::No,
                     (true, None) => ContactKind::Nc,
                     (false, Some("rising")) => ContactKind::Rising,
                     (false, Some(_)) => ContactKind::Falling,
-                    (true, Some(_)) => {
-                        return Err(format!(
-                            "contact {device}: a negated edge contact has no ladder form here"
-                        ))
-                    }
+                    (true, Some(_)) => return Err(ImportError::NegatedEdge(device)),
                 };
                 let input =
                     self.join(n.child("connectionPointIn"), &format!("contact {device}"))?;
@@ -256,7 +246,7 @@ impl Body {
             "coil" => {
                 let device = variable()
                     .filter(|v| !v.is_empty())
-                    .ok_or("a coil with no variable")?;
+                    .ok_or(ImportError::NoVariable("coil"))?;
                 let element = match (negated(n)?, storage(n)?, edge(n)?) {
                     (false, None, None) => coil(CoilKind::Normal, device),
                     (true, None, None) => coil(CoilKind::Inverted, device),
@@ -266,7 +256,7 @@ impl Body {
                         falling: e == "falling",
                         device,
                     },
-                    _ => return Err(format!("coil {device}: this mix of negated / storage / edge has no ladder form here")),
+                    _ => return Err(ImportError::CoilMix(device)),
                 };
                 let input = self.join(n.child("connectionPointIn"), &format!("coil {element}"))?;
                 self.consumed.push(input);
@@ -277,18 +267,13 @@ impl Body {
             }
             "block" => self.block(n, &id, pos)?,
             "leftPowerRail" | "rightPowerRail" | "inVariable" | "comment" => {}
-            "outVariable" | "inOutVariable" => {
-                return Err(format!(
-                    "<{}> is not imported: Hashigo's ladders have no word outputs from blocks",
-                    n.name
-                ))
-            }
-            other => return Err(format!("<{other}> is not supported in LD bodies here")),
+            "outVariable" | "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
+            other => return Err(ImportError::Unsupported(other.to_string())),
         }
         Ok(())
     }
 
-    fn block(&mut self, n: &Node, id: &str, pos: Pos) -> Result<(), String> {
+    fn block(&mut self, n: &Node, id: &str, pos: Pos) -> Result<(), ImportError> {
         let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
         let instance = n.attr("instanceName").unwrap_or_default().to_string();
         let inputs: Vec<&Node> = n
@@ -305,11 +290,7 @@ impl Body {
             "TON" | "TOF" | "TP" | "NOT" => ("IN", if ty == "NOT" { "OUT" } else { "Q" }),
             "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
             "CTU" => ("CU", "Q"),
-            _ => {
-                return Err(format!(
-                    "block {ty} is not supported: Hashigo imports TON, TOF, TP, CTU, R_TRIG, F_TRIG and NOT"
-                ))
-            }
+            _ => return Err(ImportError::UnsupportedBlock(ty)),
         };
         let what = format!("{ty} block {instance}");
         let input = self.join(
@@ -317,24 +298,24 @@ impl Body {
             &what,
         )?;
         self.consumed.push(input);
-        let literal = |name: &str| -> Result<(String, usize), String> {
-            let v = pin(name).ok_or(format!("{what}: its {name} input is not connected"))?;
+        let literal = |name: &'static str| -> Result<(String, usize), ImportError> {
+            let unconnected = || ImportError::PinNotConnected(what.clone(), name);
+            let v = pin(name).ok_or_else(unconnected)?;
             let r = v
                 .child("connectionPointIn")
                 .and_then(|c| c.child("connection"))
                 .and_then(|c| c.attr("refLocalId"))
-                .ok_or(format!("{what}: its {name} input is not connected"))?;
-            self.literals.get(r).cloned().ok_or(format!(
-                "{what}: its {name} input must come from a literal (an inVariable)"
-            ))
+                .ok_or_else(unconnected)?;
+            self.literals
+                .get(r)
+                .cloned()
+                .ok_or_else(|| ImportError::PinNotLiteral(what.clone(), name))
         };
         let element = match ty.as_str() {
             "TON" | "TOF" | "TP" => {
                 let (expr, _) = literal("PT")?;
-                let preset_ms = parse_time_literal(&expr).ok_or(format!(
-                    "{what}: PT {} is not a time literal like T#500ms",
-                    crate::error::shown(&expr)
-                ))?;
+                let preset_ms = parse_time_literal(&expr)
+                    .ok_or_else(|| ImportError::BadTimeLiteral(what.clone(), expr.to_string()))?;
                 let kind = match ty.as_str() {
                     "TON" => TimerKind::Ton,
                     "TOF" => TimerKind::Tof,
@@ -352,15 +333,13 @@ impl Body {
                     .and_then(|c| c.child("connection"))
                     .is_some()
                 {
-                    return Err(format!("{what}: wire R to nothing and reset the counter with a reset coil on {instance}"));
+                    return Err(ImportError::CounterReset(what, instance));
                 }
                 let (expr, _) = literal("PV")?;
-                let preset: u16 = expr.trim().parse().map_err(|_| {
-                    format!(
-                        "{what}: PV {} is not a whole number 0..32767",
-                        crate::error::shown(&expr)
-                    )
-                })?;
+                let preset: u16 = expr
+                    .trim()
+                    .parse()
+                    .map_err(|_| ImportError::BadCounterPreset(what.clone(), expr.clone()))?;
                 Element::CounterCoil {
                     device: instance.clone(),
                     preset,
@@ -413,7 +392,10 @@ impl Body {
                         continue;
                     }
                     (Element::CounterCoil { device, .. }, false) => {
-                        return Err(vec![Located::new(line, format!("CTU {device}: read the counter with a contact on {device} instead of wiring its Q on"))]);
+                        return Err(vec![Located::new(
+                            line,
+                            ImportError::CounterQWired(device.clone()),
+                        )]);
                     }
                     _ => {}
                 }
@@ -432,8 +414,8 @@ impl Body {
             });
             let outs = self.outputs.iter().map(|(_, e, _, line)| (e, *line));
             for (e, line) in leaves.chain(outs) {
-                if let Err(msg) = check_element(m, e) {
-                    errors.push(Located::new(line, msg.to_string()));
+                if let Err(e) = check_element(m, e) {
+                    errors.push(Located::new(line, ImportError::Element(e)));
                 }
             }
             if !errors.is_empty() {
@@ -453,10 +435,7 @@ impl Body {
             if *bus == rail {
                 errors.push(Located::new(
                     outs[0].2,
-                    format!(
-                        "{} is wired straight to the left rail: put a contact before it",
-                        outs[0].0
-                    ),
+                    ImportError::OnRail(outs[0].0.to_string()),
                 ));
             } else {
                 buses.push(*bus);
@@ -481,18 +460,15 @@ impl Body {
                     };
                     rungs.push((top(&logic), logic, first_line));
                 }
-                Err(NetError::NoPath) => errors.push(Located::new(
-                    first_line,
-                    format!("no path joins the left rail to {what}"),
-                )),
-                Err(NetError::NotSeriesParallel(p)) => errors.push(Located::new(
-                    lines.get(&p).copied().unwrap_or(first_line),
-                    "this network is not series-parallel: Hashigo's ladders are series and parallel blocks".to_string(),
-                )),
-                Err(e @ NetError::TooDeep(p)) => errors.push(Located::new(
-                    lines.get(&p).copied().unwrap_or(first_line),
-                    e.to_string(),
-                )),
+                Err(NetError::NoPath) => {
+                    errors.push(Located::new(first_line, ImportError::NoPath(what)))
+                }
+                Err(e @ (NetError::NotSeriesParallel(p) | NetError::TooDeep(p))) => {
+                    errors.push(Located::new(
+                        lines.get(&p).copied().unwrap_or(first_line),
+                        ImportError::Net(e),
+                    ))
+                }
             }
         }
         if errors.is_empty() {
@@ -502,7 +478,7 @@ impl Body {
             }) {
                 errors.push(Located::new(
                     lines.get(&p.1).copied().unwrap_or(1),
-                    format!("{} leads to no coil", p.0),
+                    ImportError::LeadsNowhere(p.0.to_string()),
                 ));
             }
         }
@@ -540,22 +516,22 @@ fn coil(kind: CoilKind, device: String) -> Element {
 }
 
 /// `OUT Tnn K…` from a TON named like an IO86A timer.
-fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, String> {
+fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, ImportError> {
     let Ok(Bit::T(n)) = parse_bit(name) else {
-        return Err(format!(
-            "TON {name}: its Q drives nothing, which makes it a timer coil, and then it must be named like a timer (T00-T31)"
-        ));
+        return Err(ImportError::TimerName(name.to_string()));
     };
     let base = if n < 24 { 100 } else { 10 };
     if !preset_ms.is_multiple_of(base) {
-        return Err(format!(
-            "TON {name}: {preset_ms} ms is not a whole number of {name}'s {base} ms units"
-        ));
+        return Err(ImportError::TimerUnits {
+            name: name.to_string(),
+            ms: preset_ms,
+            base,
+        });
     }
     let preset = u16::try_from(preset_ms / base)
         .ok()
         .filter(|&k| k <= 32767)
-        .ok_or(format!("TON {name}: {preset_ms} ms is too long"))?;
+        .ok_or_else(|| ImportError::TimerTooLong(name.to_string(), preset_ms))?;
     Ok(Element::TimerCoil {
         device: name.to_string(),
         preset,
@@ -564,40 +540,31 @@ fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, String> {
 
 /// An XML Schema boolean attribute (`true`, `false`, `1`, `0`); absent
 /// is false.
-fn negated(n: &Node) -> Result<bool, String> {
+fn negated(n: &Node) -> Result<bool, ImportError> {
     match n.attr("negated").map(str::trim) {
         None | Some("false" | "0") => Ok(false),
         Some("true" | "1") => Ok(true),
-        Some(other) => Err(format!(
-            "negated={} is not a boolean: true, false, 1 or 0",
-            crate::error::shown(other)
-        )),
+        Some(other) => Err(ImportError::NotBoolean(other.to_string())),
     }
 }
 
 /// The `edge` attribute: `None` for none, else `rising` or `falling`.
-fn edge(n: &Node) -> Result<Option<&'static str>, String> {
+fn edge(n: &Node) -> Result<Option<&'static str>, ImportError> {
     match n.attr("edge").map(str::trim) {
         None | Some("none") => Ok(None),
         Some("rising") => Ok(Some("rising")),
         Some("falling") => Ok(Some("falling")),
-        Some(other) => Err(format!(
-            "edge={} is not none, rising or falling",
-            crate::error::shown(other)
-        )),
+        Some(other) => Err(ImportError::BadEdge(other.to_string())),
     }
 }
 
 /// The coil `storage` attribute: `None` for none, else `set` or `reset`.
-fn storage(n: &Node) -> Result<Option<&'static str>, String> {
+fn storage(n: &Node) -> Result<Option<&'static str>, ImportError> {
     match n.attr("storage").map(str::trim) {
         None | Some("none") => Ok(None),
         Some("set") => Ok(Some("set")),
         Some("reset") => Ok(Some("reset")),
-        Some(other) => Err(format!(
-            "storage={} is not none, set or reset",
-            crate::error::shown(other)
-        )),
+        Some(other) => Err(ImportError::BadStorage(other.to_string())),
     }
 }
 

@@ -6,9 +6,11 @@
 //! - [`export`](mod@export): rungs to a project file both tools open.
 
 pub mod dom;
+pub mod error;
 pub mod export;
 pub mod import;
 
+pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
 pub use import::{import, import_for};
 

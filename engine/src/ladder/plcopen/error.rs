@@ -1,0 +1,274 @@
+//! Why a PLCopen file could not be read or imported, each at its line
+//! (`Located<ImportError>`).
+
+use std::fmt;
+
+use super::{NS_V10, NS_V201};
+use crate::error::shown;
+use crate::ladder::net::{NetError, TooLarge};
+use crate::ladder::target::ElementError;
+use crate::limits::{MAX_INPUT_BYTES, MAX_RUNGS, MAX_XML_DEPTH};
+
+/// Why the text is not XML the reader takes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum XmlError {
+    /// Larger than [`MAX_INPUT_BYTES`] (its size).
+    TooLarge(usize),
+    /// The XML parser's words.
+    NotWellFormed(String),
+    /// An attribute that does not parse (element, parser's words).
+    BadAttribute(String, String),
+    /// Text that does not unescape (parser's words).
+    BadText(String),
+    /// An end tag with no start.
+    EndWithoutStart,
+    /// An element never closed (its name).
+    NeverClosed(String),
+    /// No element at all.
+    Empty,
+    /// Elements nested past [`MAX_XML_DEPTH`].
+    TooDeep,
+}
+
+impl fmt::Display for XmlError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            XmlError::TooLarge(n) => write!(
+                f,
+                "the file is {n} bytes, more than the {MAX_INPUT_BYTES} a PLCopen file may have (docs/limits.md)"
+            ),
+            XmlError::NotWellFormed(e) => write!(f, "not well-formed XML: {e}"),
+            XmlError::BadAttribute(el, e) => write!(f, "bad attribute in <{el}>: {e}"),
+            XmlError::BadText(e) => write!(f, "bad text: {e}"),
+            XmlError::EndWithoutStart => f.write_str("an end tag with no start"),
+            XmlError::NeverClosed(el) => write!(f, "<{el}> is never closed"),
+            XmlError::Empty => f.write_str("no XML element found"),
+            XmlError::TooDeep => write!(
+                f,
+                "elements nest more than {MAX_XML_DEPTH} deep here (docs/limits.md)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for XmlError {}
+
+/// What is wrong with an element's input connection.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Connection {
+    /// A `<connection>` with no `refLocalId`.
+    NoRef,
+    /// It names a `localId` no element has.
+    Missing(String),
+    /// It takes power from a variable box (`inVariable`).
+    FromVariable(String),
+    /// Nothing is connected.
+    Unconnected,
+}
+
+/// Why a PLCopen file could not be imported.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ImportError {
+    /// Not XML the reader takes.
+    Xml(XmlError),
+    /// The root element is not `<project>` (its name).
+    NotAProject(String),
+    /// A namespace that is not PLCopen TC6's.
+    Namespace(String),
+    /// No POU has an LD body.
+    NoLdBody,
+    /// More rungs than [`MAX_RUNGS`].
+    TooManyRungs,
+    /// A rung too large to draw.
+    Drawing(TooLarge),
+    /// An element without `localId` (its name).
+    NoLocalId(String),
+    /// A `localId` given twice.
+    DuplicateLocalId {
+        /// The id.
+        id: String,
+        /// The line of its first use.
+        first: usize,
+    },
+    /// A bad input connection of `what`.
+    Connection {
+        /// The element (`contact X00`, `TON block T1`).
+        what: String,
+        /// What is wrong.
+        problem: Connection,
+    },
+    /// A contact or coil (`kind`) without a variable.
+    NoVariable(&'static str),
+    /// A negated edge contact (its device).
+    NegatedEdge(String),
+    /// A coil mixing negated / storage / edge (its device).
+    CoilMix(String),
+    /// `negated=` that is not an XML boolean (as written).
+    NotBoolean(String),
+    /// `edge=` that is not none, rising or falling.
+    BadEdge(String),
+    /// `storage=` that is not none, set or reset.
+    BadStorage(String),
+    /// `outVariable` / `inOutVariable` (its name).
+    WordOutput(String),
+    /// An element Hashigo does not import (its name).
+    Unsupported(String),
+    /// A block type Hashigo does not import.
+    UnsupportedBlock(String),
+    /// A block pin with nothing connected (block, pin).
+    PinNotConnected(String, &'static str),
+    /// A block pin not fed by a literal (block, pin).
+    PinNotLiteral(String, &'static str),
+    /// A PT that is not a time literal (block, text).
+    BadTimeLiteral(String, String),
+    /// A CTU whose R is wired (block, instance).
+    CounterReset(String, String),
+    /// A PV that is not 0..32767 (block, text).
+    BadCounterPreset(String, String),
+    /// A CTU whose Q feeds other elements (its instance).
+    CounterQWired(String),
+    /// A TON used as a timer coil, named unlike T00-T31.
+    TimerName(String),
+    /// A timer coil's time not a whole number of its units.
+    TimerUnits {
+        /// The timer.
+        name: String,
+        /// The time in ms.
+        ms: u32,
+        /// Its unit in ms.
+        base: u32,
+    },
+    /// A timer coil's time above K32767 units (name, ms).
+    TimerTooLong(String, u32),
+    /// The machine cannot take an element.
+    Element(ElementError),
+    /// An output wired straight to the rail (the element).
+    OnRail(String),
+    /// An output no path reaches (the element).
+    NoPath(String),
+    /// The network is not series-parallel, or too deep.
+    Net(NetError),
+    /// An element that leads to no coil.
+    LeadsNowhere(String),
+}
+
+impl fmt::Display for ImportError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use ImportError as E;
+        match self {
+            E::Xml(e) => e.fmt(f),
+            E::NotAProject(root) => {
+                write!(f, "not a PLCopen project: the root element is <{root}>")
+            }
+            E::Namespace(ns) => write!(
+                f,
+                "namespace {} is not PLCopen TC6 ({NS_V201} or {NS_V10})",
+                shown(ns)
+            ),
+            E::NoLdBody => f.write_str("the project has no POU with an LD body"),
+            E::TooManyRungs => {
+                write!(f, "the project has more than {MAX_RUNGS} rungs (docs/limits.md)")
+            }
+            E::Drawing(e) => e.fmt(f),
+            E::NoLocalId(el) => write!(f, "<{el}> has no localId"),
+            E::DuplicateLocalId { id, first } => write!(
+                f,
+                "localId {} is used again (first on line {first}): every element needs its own",
+                shown(id)
+            ),
+            E::Connection { what, problem } => match problem {
+                Connection::NoRef => write!(f, "a connection of the {what} has no refLocalId"),
+                Connection::Missing(r) => write!(
+                    f,
+                    "the {what} connects to localId {}, which does not exist",
+                    shown(r)
+                ),
+                Connection::FromVariable(r) => write!(
+                    f,
+                    "the {what} takes power from a variable box (localId {}): wire it from the rail through a contact",
+                    shown(r)
+                ),
+                Connection::Unconnected => write!(f, "the {what} is not connected on its left"),
+            },
+            E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
+            E::NegatedEdge(d) => write!(
+                f,
+                "contact {d}: a negated edge contact has no ladder form here"
+            ),
+            E::CoilMix(d) => write!(
+                f,
+                "coil {d}: this mix of negated / storage / edge has no ladder form here"
+            ),
+            E::NotBoolean(v) => write!(
+                f,
+                "negated={} is not a boolean: true, false, 1 or 0",
+                shown(v)
+            ),
+            E::BadEdge(v) => write!(f, "edge={} is not none, rising or falling", shown(v)),
+            E::BadStorage(v) => write!(f, "storage={} is not none, set or reset", shown(v)),
+            E::WordOutput(el) => write!(
+                f,
+                "<{el}> is not imported: Hashigo's ladders have no word outputs from blocks"
+            ),
+            E::Unsupported(el) => write!(f, "<{el}> is not supported in LD bodies here"),
+            E::UnsupportedBlock(ty) => write!(
+                f,
+                "block {} is not supported: Hashigo imports TON, TOF, TP, CTU, R_TRIG, F_TRIG and NOT",
+                shown(ty).trim_matches('"')
+            ),
+            E::PinNotConnected(what, pin) => {
+                write!(f, "{what}: its {pin} input is not connected")
+            }
+            E::PinNotLiteral(what, pin) => write!(
+                f,
+                "{what}: its {pin} input must come from a literal (an inVariable)"
+            ),
+            E::BadTimeLiteral(what, expr) => write!(
+                f,
+                "{what}: PT {} is not a time literal like T#500ms",
+                shown(expr)
+            ),
+            E::CounterReset(what, instance) => write!(
+                f,
+                "{what}: wire R to nothing and reset the counter with a reset coil on {instance}"
+            ),
+            E::BadCounterPreset(what, expr) => write!(
+                f,
+                "{what}: PV {} is not a whole number 0..32767",
+                shown(expr)
+            ),
+            E::CounterQWired(d) => write!(
+                f,
+                "CTU {d}: read the counter with a contact on {d} instead of wiring its Q on"
+            ),
+            E::TimerName(name) => write!(
+                f,
+                "TON {name}: its Q drives nothing, which makes it a timer coil, and then it must be named like a timer (T00-T31)"
+            ),
+            E::TimerUnits { name, ms, base } => write!(
+                f,
+                "TON {name}: {ms} ms is not a whole number of {name}'s {base} ms units"
+            ),
+            E::TimerTooLong(name, ms) => write!(f, "TON {name}: {ms} ms is too long"),
+            E::Element(e) => e.fmt(f),
+            E::OnRail(el) => write!(
+                f,
+                "{el} is wired straight to the left rail: put a contact before it"
+            ),
+            E::NoPath(el) => write!(f, "no path joins the left rail to {el}"),
+            E::Net(NetError::NotSeriesParallel(_)) => f.write_str(
+                "this network is not series-parallel: Hashigo's ladders are series and parallel blocks",
+            ),
+            E::Net(e) => e.fmt(f),
+            E::LeadsNowhere(el) => write!(f, "{el} leads to no coil"),
+        }
+    }
+}
+
+impl std::error::Error for ImportError {}
+
+impl From<XmlError> for ImportError {
+    fn from(e: XmlError) -> Self {
+        ImportError::Xml(e)
+    }
+}
