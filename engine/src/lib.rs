@@ -15,6 +15,7 @@ pub mod limits;
 pub mod machine_id;
 pub mod minasec;
 pub mod plc;
+pub mod scan_timer;
 pub mod time;
 
 pub use error::{shown, Located};

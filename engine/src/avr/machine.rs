@@ -2,9 +2,10 @@
 //! records run from the first to `End_PLC` with one accumulator, once every
 //! scan period.
 
-use super::program::{BitRef, Instruction, Program, TimerKind};
+use super::program::{BitRef, Instruction, Program};
 use crate::clock::PeriodicClock;
 use crate::plc::SettingError;
+pub use crate::scan_timer::ScanTimer as TimerWord;
 use crate::time::SimTime;
 
 /// The value of the assembler's `Scan` symbol for a scan period: whole
@@ -21,77 +22,6 @@ pub fn scan_ms(period: SimTime) -> Result<u32, SettingError> {
 
 /// The default scan period.
 pub const DEFAULT_SCAN: SimTime = SimTime::from_millis(10);
-
-/// A timer's RAM word, plus the pulse timer's state.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct TimerWord {
-    /// Scans counted (the 2-byte RAM word; zero after power-up).
-    pub count: u16,
-    /// TP: the input in the last scan, for its rising edge.
-    prev_in: bool,
-    /// TP: a pulse is running.
-    pulsing: bool,
-    /// TP: the pulse ended while the input was still on.
-    done: bool,
-}
-
-impl TimerWord {
-    /// Takes IN, returns Q (scan units; see docs/avr-plc.md).
-    pub fn run(&mut self, kind: TimerKind, input: bool, preset: u16) -> bool {
-        match kind {
-            // Q once IN has been on for `preset` scans.
-            TimerKind::Ton => {
-                if input {
-                    let q = self.count >= preset;
-                    if !q {
-                        self.count += 1;
-                    }
-                    q
-                } else {
-                    self.count = 0;
-                    false
-                }
-            }
-            // Q while IN, and for `preset` scans after IN drops. The count
-            // starts at zero after power-up, so Q is on then too.
-            TimerKind::Tof => {
-                if input {
-                    self.count = 0;
-                    true
-                } else {
-                    let q = self.count < preset;
-                    if q {
-                        self.count += 1;
-                    }
-                    q
-                }
-            }
-            // Q for `preset` scans from a rising edge of IN; a new pulse
-            // needs IN to drop after the last one ended.
-            TimerKind::Tp => {
-                let rising = input && !self.prev_in;
-                self.prev_in = input;
-                if !self.pulsing && !self.done && rising {
-                    self.pulsing = true;
-                    self.count = 0;
-                }
-                if self.pulsing {
-                    if self.count < preset {
-                        self.count += 1;
-                        return true;
-                    }
-                    self.pulsing = false;
-                    self.done = input;
-                    return false;
-                }
-                if !input {
-                    self.done = false;
-                }
-                false
-            }
-        }
-    }
-}
 
 /// One AVR running the simplified PLC.
 #[derive(Clone, Debug)]

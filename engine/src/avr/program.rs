@@ -23,16 +23,8 @@ impl fmt::Display for BitRef {
     }
 }
 
-/// The three timer kinds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TimerKind {
-    /// On-delay.
-    Ton,
-    /// Off-delay (on for its time after power-up: the seed's warning).
-    Tof,
-    /// Pulse, not retriggerable.
-    Tp,
-}
+/// The three timer kinds (shared with the ladder model).
+pub use crate::scan_timer::TimerKind;
 
 /// One decoded record.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -33,27 +33,7 @@ pub enum CoilKind {
 }
 
 /// The IEC timer kinds, as in-line boxes (power in = IN, power out = Q).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum TimerKind {
-    /// On-delay.
-    Ton,
-    /// Off-delay.
-    Tof,
-    /// Pulse.
-    Tp,
-}
-
-impl TimerKind {
-    /// The IEC name: `TON`, `TOF`, `TP`.
-    pub const fn name(self) -> &'static str {
-        match self {
-            TimerKind::Ton => "TON",
-            TimerKind::Tof => "TOF",
-            TimerKind::Tp => "TP",
-        }
-    }
-}
+pub use crate::scan_timer::TimerKind;
 
 /// One element of a ladder: what a non-empty cell holds.
 ///

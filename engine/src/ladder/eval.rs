@@ -3,13 +3,18 @@
 //! output written at once; every element reports its power in and out.
 //! The compilers' differential tests compare each machine against it; the
 //! editor colours elements from the same [`power_flow`].
+//!
+//! Devices are resolved once: a contact is read by its place among the
+//! rung's leaves (`Net::leaves` order), and whoever implements
+//! [`FlowState`] maps that place to a device handle of its own, so no
+//! name is looked up while a scan runs.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::HashMap;
 
 use super::element::{CoilKind, ContactKind, Element};
 use super::grid::{LadderError, Pos};
 use super::net::{Net, RungLogic};
-use crate::avr::{TimerKind as AvrTimerKind, TimerWord};
+use crate::scan_timer::ScanTimer;
 
 /// Power into and out of one element in the last evaluation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,14 +27,15 @@ pub struct ElementPower {
     pub power_out: bool,
 }
 
-/// What the evaluator reads and keeps between scans.
+/// What the evaluator reads and keeps between scans, by leaf: `leaf` is
+/// the element's place among its rung's leaves, in [`Net::leaves`] order.
 pub trait FlowState {
-    /// A bit device's state.
-    fn bit(&self, device: &str) -> bool;
-    /// The one-bit memory of an edge element (its last input).
-    fn edge_memory(&mut self, rung: usize, pos: Pos) -> &mut bool;
-    /// An in-line timer's word (a scan counter), when timers are simulated.
-    fn timer(&mut self, rung: usize, pos: Pos) -> Option<&mut TimerWord>;
+    /// The state of the device the contact at `leaf` reads.
+    fn bit(&self, rung: usize, leaf: usize) -> bool;
+    /// The one-bit memory of the edge element at `leaf` (its last input).
+    fn edge_memory(&mut self, rung: usize, leaf: usize) -> &mut bool;
+    /// The in-line timer at `leaf`, when timers are simulated.
+    fn timer(&mut self, rung: usize, leaf: usize) -> Option<&mut ScanTimer>;
 }
 
 /// Evaluates rung `rung`'s condition and returns the power reaching its
@@ -41,9 +47,16 @@ pub fn power_flow(
     scan_ms: u32,
     report: &mut Vec<ElementPower>,
 ) -> bool {
-    let power = eval(&logic.condition, true, rung, state, scan_ms, report);
+    let mut walk = Walk {
+        rung,
+        state,
+        scan_ms,
+        report,
+        leaf: 0,
+    };
+    let power = walk.eval(&logic.condition, true);
     for (_, pos) in &logic.outputs {
-        report.push(ElementPower {
+        walk.report.push(ElementPower {
             pos: *pos,
             power_in: power,
             power_out: power,
@@ -52,67 +65,74 @@ pub fn power_flow(
     power
 }
 
-fn eval(
-    net: &Net,
-    pin: bool,
+/// One rung's evaluation: the state, and the next leaf's place.
+struct Walk<'a> {
     rung: usize,
-    st: &mut dyn FlowState,
+    state: &'a mut dyn FlowState,
     scan_ms: u32,
-    report: &mut Vec<ElementPower>,
-) -> bool {
-    match net {
-        Net::Series(v) => v
-            .iter()
-            .fold(pin, |p, n| eval(n, p, rung, st, scan_ms, report)),
-        // Every branch is evaluated (no short cut): edge memories must see
-        // every scan.
-        Net::Parallel(v) => v
-            .iter()
-            .map(|n| eval(n, pin, rung, st, scan_ms, report))
-            .fold(false, |a, b| a | b),
-        Net::Leaf(e, pos) => {
-            let out = match e {
-                Element::Contact { kind, device } => {
-                    let on = st.bit(device);
-                    match kind {
-                        ContactKind::No => pin & on,
-                        ContactKind::Nc => pin & !on,
-                        ContactKind::Rising | ContactKind::Falling => {
-                            let m = st.edge_memory(rung, *pos);
-                            let before = std::mem::replace(m, on);
-                            let edge = if *kind == ContactKind::Rising {
-                                on && !before
-                            } else {
-                                !on && before
-                            };
-                            pin & edge
-                        }
+    report: &'a mut Vec<ElementPower>,
+    leaf: usize,
+}
+
+impl Walk<'_> {
+    fn eval(&mut self, net: &Net, pin: bool) -> bool {
+        match net {
+            Net::Series(v) => v.iter().fold(pin, |p, n| self.eval(n, p)),
+            // Every branch is evaluated (no short cut): edge memories must
+            // see every scan.
+            Net::Parallel(v) => v.iter().fold(false, |a, n| self.eval(n, pin) | a),
+            Net::Leaf(e, pos) => {
+                let leaf = self.leaf;
+                self.leaf += 1;
+                let out = self.leaf_power(e, leaf, pin);
+                self.report.push(ElementPower {
+                    pos: *pos,
+                    power_in: pin,
+                    power_out: out,
+                });
+                out
+            }
+        }
+    }
+
+    fn leaf_power(&mut self, e: &Element, leaf: usize, pin: bool) -> bool {
+        let rung = self.rung;
+        match e {
+            Element::Contact { kind, .. } => {
+                let on = self.state.bit(rung, leaf);
+                match kind {
+                    ContactKind::No => pin & on,
+                    ContactKind::Nc => pin & !on,
+                    ContactKind::Rising | ContactKind::Falling => {
+                        let before = std::mem::replace(self.state.edge_memory(rung, leaf), on);
+                        let edge = if *kind == ContactKind::Rising {
+                            on && !before
+                        } else {
+                            !on && before
+                        };
+                        pin & edge
                     }
                 }
-                Element::Not => !pin,
-                Element::Edge { falling } => {
-                    let m = st.edge_memory(rung, *pos);
-                    let before = std::mem::replace(m, pin);
-                    if *falling {
-                        !pin && before
-                    } else {
-                        pin && !before
-                    }
+            }
+            Element::Not => !pin,
+            Element::Edge { falling } => {
+                let before = std::mem::replace(self.state.edge_memory(rung, leaf), pin);
+                if *falling {
+                    !pin && before
+                } else {
+                    pin && !before
                 }
-                Element::Timer {
-                    kind, preset_ms, ..
-                } => match st.timer(rung, *pos) {
-                    Some(t) => t.run(avr_kind(*kind), pin, preset_scans(*preset_ms, scan_ms)),
+            }
+            Element::Timer {
+                kind, preset_ms, ..
+            } => {
+                let preset = preset_scans(*preset_ms, self.scan_ms);
+                match self.state.timer(rung, leaf) {
+                    Some(t) => t.run(*kind, pin, preset),
                     None => false,
-                },
-                _ => pin,
-            };
-            report.push(ElementPower {
-                pos: *pos,
-                power_in: pin,
-                power_out: out,
-            });
-            out
+                }
+            }
+            _ => pin,
         }
     }
 }
@@ -123,39 +143,43 @@ pub fn preset_scans(preset_ms: u32, scan_ms: u32) -> u16 {
     u16::try_from(scans.max(1)).unwrap_or(u16::MAX)
 }
 
-fn avr_kind(k: super::element::TimerKind) -> AvrTimerKind {
-    match k {
-        super::element::TimerKind::Ton => AvrTimerKind::Ton,
-        super::element::TimerKind::Tof => AvrTimerKind::Tof,
-        super::element::TimerKind::Tp => AvrTimerKind::Tp,
-    }
-}
-
 /// A ladder run by the book on bit devices: the reference the machines'
 /// compiled programs are compared with.
 #[derive(Clone, Debug)]
 pub struct Reference {
     rungs: Vec<RungLogic>,
     scan_ms: u32,
+    /// Device names to their index in `state.bits`.
+    names: HashMap<String, usize>,
+    /// Each output's device index, per rung (`None` for outputs that
+    /// drive no bit).
+    outputs: Vec<Vec<Option<usize>>>,
+    /// Each pulse output's memory, per rung and output.
+    pulse_memory: Vec<Vec<bool>>,
     state: RefState,
 }
 
+/// The devices and memories, by index: what [`FlowState`] reads.
 #[derive(Clone, Debug, Default)]
 struct RefState {
-    bits: BTreeMap<String, bool>,
-    memory: HashMap<(usize, Pos), bool>,
-    timers: HashMap<(usize, Pos), TimerWord>,
+    bits: Vec<bool>,
+    /// Per rung, per leaf: the device index a contact reads.
+    contacts: Vec<Vec<usize>>,
+    /// Per rung, per leaf: edge memories and timers.
+    memory: Vec<Vec<bool>>,
+    timers: Vec<Vec<ScanTimer>>,
 }
 
 impl FlowState for RefState {
-    fn bit(&self, device: &str) -> bool {
-        self.bits.get(device).copied().unwrap_or(false)
+    fn bit(&self, rung: usize, leaf: usize) -> bool {
+        let device = self.contacts[rung][leaf];
+        self.bits[device]
     }
-    fn edge_memory(&mut self, rung: usize, pos: Pos) -> &mut bool {
-        self.memory.entry((rung, pos)).or_default()
+    fn edge_memory(&mut self, rung: usize, leaf: usize) -> &mut bool {
+        &mut self.memory[rung][leaf]
     }
-    fn timer(&mut self, rung: usize, pos: Pos) -> Option<&mut TimerWord> {
-        Some(self.timers.entry((rung, pos)).or_default())
+    fn timer(&mut self, rung: usize, leaf: usize) -> Option<&mut ScanTimer> {
+        Some(&mut self.timers[rung][leaf])
     }
 }
 
@@ -180,21 +204,57 @@ impl Reference {
         if !errors.is_empty() {
             return Err(errors);
         }
-        Ok(Reference {
-            rungs,
+        let mut r = Reference {
+            rungs: Vec::new(),
             scan_ms,
+            names: HashMap::new(),
+            outputs: Vec::new(),
+            pulse_memory: Vec::new(),
             state: RefState::default(),
-        })
+        };
+        for logic in &rungs {
+            let leaves = logic.condition.leaves();
+            let contacts = leaves
+                .iter()
+                .map(|(e, _)| e.read_device().map_or(0, |d| r.device(d)))
+                .collect();
+            r.state.contacts.push(contacts);
+            r.state.memory.push(vec![false; leaves.len()]);
+            r.state
+                .timers
+                .push(vec![ScanTimer::default(); leaves.len()]);
+            let outputs = logic
+                .outputs
+                .iter()
+                .map(|(e, _)| e.written_device().map(|d| r.device(d)))
+                .collect();
+            r.outputs.push(outputs);
+            r.pulse_memory.push(vec![false; logic.outputs.len()]);
+        }
+        r.rungs = rungs;
+        Ok(r)
+    }
+
+    /// The index of device `name`, added (off) if new.
+    fn device(&mut self, name: &str) -> usize {
+        if let Some(&i) = self.names.get(name) {
+            return i;
+        }
+        self.state.bits.push(false);
+        let i = self.state.bits.len() - 1;
+        self.names.insert(name.to_string(), i);
+        i
     }
 
     /// Sets a bit device (an input, between scans).
     pub fn set(&mut self, device: &str, on: bool) {
-        self.state.bits.insert(device.to_string(), on);
+        let i = self.device(device);
+        self.state.bits[i] = on;
     }
 
     /// A bit device's state.
     pub fn get(&self, device: &str) -> bool {
-        self.state.bit(device)
+        self.names.get(device).is_some_and(|&i| self.state.bits[i])
     }
 
     /// Runs one scan; returns every element's power, rung by rung.
@@ -203,26 +263,25 @@ impl Reference {
         for (i, logic) in self.rungs.iter().enumerate() {
             let mut report = Vec::new();
             let power = power_flow(logic, i, &mut self.state, self.scan_ms, &mut report);
-            for (e, pos) in &logic.outputs {
+            for (k, (e, _)) in logic.outputs.iter().enumerate() {
+                let Some(device) = self.outputs[i][k] else {
+                    continue;
+                };
+                let bit = &mut self.state.bits[device];
                 match e {
-                    Element::Coil { kind, device } => {
-                        let bit = self.state.bits.entry(device.clone()).or_default();
-                        match kind {
-                            CoilKind::Normal => *bit = power,
-                            CoilKind::Inverted => *bit = !power,
-                            CoilKind::Set => *bit |= power,
-                            CoilKind::Reset => *bit &= !power,
-                        }
-                    }
-                    Element::Pulse { falling, device } => {
-                        let m = self.state.memory.entry((i, *pos)).or_default();
-                        let before = std::mem::replace(m, power);
-                        let on = if *falling {
+                    Element::Coil { kind, .. } => match kind {
+                        CoilKind::Normal => *bit = power,
+                        CoilKind::Inverted => *bit = !power,
+                        CoilKind::Set => *bit |= power,
+                        CoilKind::Reset => *bit &= !power,
+                    },
+                    Element::Pulse { falling, .. } => {
+                        let before = std::mem::replace(&mut self.pulse_memory[i][k], power);
+                        *bit = if *falling {
                             !power && before
                         } else {
                             power && !before
                         };
-                        self.state.bits.insert(device.clone(), on);
                     }
                     _ => {}
                 }
