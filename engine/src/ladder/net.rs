@@ -188,176 +188,245 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
     if rung.is_empty() {
         return Ok(None);
     }
-    let err = |pos: Pos, kind: LadderErrorKind, m: &str| LadderError::at(index, pos, m).kind(kind);
-    let rows = rung.cells.len();
-    let width = rung.width();
-    if (rows as u128) * (width as u128 + 1) > MAX_RUNG_CELLS as u128 {
-        return Err(vec![LadderError::rung(
-            index,
-            format!(
-                "the rung spans {rows} rows and {width} columns, more than the {MAX_RUNG_CELLS} cells a rung may have (docs/limits.md)"
-            ),
-        )
-        .kind(LadderErrorKind::Limit)]);
-    }
-    let mut errors = Vec::new();
-
-    // The output column: every output stands in it, nothing to its right.
-    let outputs: Vec<(Element, Pos)> = rung
-        .elements()
-        .filter(|(_, e)| e.is_output())
-        .map(|(p, e)| (e.clone(), p))
-        .collect();
-    let Some(out_col) = outputs.iter().map(|(_, p)| p.col).max() else {
-        return Err(vec![LadderError::rung(
-            index,
-            "the rung has no output: end it with a coil or an output box",
-        )
-        .kind(LadderErrorKind::NoOutput)]);
-    };
-    for (p, e) in rung.elements() {
-        if e.is_output() && p.col != out_col {
-            errors.push(err(
-                p,
-                LadderErrorKind::Placement,
-                "outputs must line up in the rung's last column: move this one right",
-            ));
-        } else if !e.is_output() && p.col >= out_col {
-            errors.push(err(
-                p,
-                LadderErrorKind::Placement,
-                "nothing may follow an output: coils and output boxes end the rung",
-            ));
-        }
-    }
-
-    // Electrical points: (row, edge) for edge 0..=width; edge 0 is the rail.
-    let points = rows * (width + 1);
-    let node = |r: usize, b: usize| r * (width + 1) + b;
-    let mut uf = UnionFind::new(points);
-    for r in 1..rows {
-        uf.union(node(0, 0), node(r, 0));
-    }
-    for link in &rung.links {
-        // Checked: a link's numbers come straight from the file.
-        if link.row.checked_add(1).is_none_or(|below| below >= rows) || link.col > width {
-            errors.push(err(
-                Pos::new(link.row, link.col),
-                LadderErrorKind::Wiring,
-                "a vertical link reaches past the rung's last row or column",
-            ));
-            continue;
-        }
-        uf.union(node(link.row, link.col), node(link.row + 1, link.col));
-    }
-    for (p, e) in rung.elements() {
-        if matches!(e, Element::Wire) {
-            uf.union(node(p.row, p.col), node(p.row, p.col + 1));
-        }
-    }
-    if !errors.is_empty() {
-        return Err(errors);
-    }
-    let rail = uf.find(node(0, 0));
-
-    // The outputs share one driving point.
-    let bus = uf.find(node(outputs[0].1.row, out_col));
-    for (_, p) in &outputs[1..] {
-        if uf.find(node(p.row, out_col)) != bus {
-            errors.push(err(
-                *p,
-                LadderErrorKind::Wiring,
-                "this output is not joined to the first output's condition: give it its own rung or link it",
-            ));
-        }
-    }
-
-    // Edges: every contact and in-line box, left point to right point.
-    let mut edges = Vec::new();
-    for (p, e) in rung.elements() {
-        if e.is_output() || matches!(e, Element::Wire) {
-            continue;
-        }
-        let (a, b) = (uf.find(node(p.row, p.col)), uf.find(node(p.row, p.col + 1)));
-        if a == b {
-            errors.push(err(
-                p,
-                LadderErrorKind::Wiring,
-                "short circuit: a wire joins both sides of this element",
-            ));
-            continue;
-        }
-        edges.push(Edge {
-            from: a,
-            to: b,
-            net: Net::Leaf(e.clone(), p),
-        });
-    }
-    // A shorted contact is the cause when the output also sits on the
-    // rail; only then is the output itself the problem.
-    if bus == rail
-        && !errors
-            .iter()
-            .any(|e| e.message.starts_with("short circuit"))
-    {
-        errors.push(err(
-            outputs[0].1,
-            LadderErrorKind::Wiring,
-            "the output is wired straight to the left rail: put a contact before it",
-        ));
-    }
-    if !errors.is_empty() {
-        return Err(errors);
-    }
-
-    // Only what lies on a path from the rail to the outputs counts; an
-    // element or wire that does not is dangling.
-    let ends: Vec<(usize, usize)> = edges.iter().map(|e| (e.from, e.to)).collect();
-    let forward = reduce::reach(&ends, points, rail, true);
-    let backward = reduce::reach(&ends, points, bus, false);
-    let useful = |n: usize| forward[n] && backward[n];
-    for e in &edges {
-        if !(useful(e.from) && useful(e.to)) {
-            errors.push(err(
-                e.net.first_pos(),
-                LadderErrorKind::Dangling,
-                "dangling: this element is not on a path from the left rail to the outputs",
-            ));
-        }
-    }
-    for (p, e) in rung.elements() {
-        if matches!(e, Element::Wire) && !useful(uf.find(node(p.row, p.col))) {
-            errors.push(err(
-                p,
-                LadderErrorKind::Dangling,
-                "dangling wire: it does not join the left rail to the outputs",
-            ));
-        }
-    }
-    if !useful(bus) && errors.is_empty() {
-        errors.push(err(
-            outputs[0].1,
-            LadderErrorKind::Wiring,
-            "no path of contacts joins the left rail to this output",
-        ));
-    }
-    if !errors.is_empty() {
-        return Err(errors);
-    }
-
-    let condition = reduce::reduce(edges, points, rail, bus).map_err(|e| {
+    let grid = Grid::new(rung, index)?;
+    let outputs = grid.outputs()?;
+    let mut points = grid.points()?;
+    let (edges, rail, bus) = grid.edges(&mut points, &outputs)?;
+    grid.reaches(&edges, &mut points, rail, bus, &outputs)?;
+    let condition = reduce::reduce(edges, points.len(), rail, bus).map_err(|e| {
         let (pos, kind) = match e {
             NetError::NotSeriesParallel(p) => (p, LadderErrorKind::NotSeriesParallel),
             NetError::TooDeep(p) => (p, LadderErrorKind::Limit),
             NetError::NoPath => (outputs[0].1, LadderErrorKind::Wiring),
         };
-        vec![err(pos, kind, &e.to_string())]
+        vec![grid.err(pos, kind, &e.to_string())]
     })?;
     Ok(Some(RungLogic {
         condition,
         outputs,
         comment: rung.comment.clone(),
     }))
+}
+
+/// A rung's grid being read: its size and where errors go.
+struct Grid<'a> {
+    rung: &'a Rung,
+    index: usize,
+    rows: usize,
+    width: usize,
+}
+
+impl<'a> Grid<'a> {
+    /// The grid, refused past [`MAX_RUNG_CELLS`] before any work.
+    fn new(rung: &'a Rung, index: usize) -> Result<Grid<'a>, Vec<LadderError>> {
+        let (rows, width) = (rung.cells.len(), rung.width());
+        if (rows as u128) * (width as u128 + 1) > MAX_RUNG_CELLS as u128 {
+            return Err(vec![LadderError::rung(
+                index,
+                format!(
+                    "the rung spans {rows} rows and {width} columns, more than the {MAX_RUNG_CELLS} cells a rung may have (docs/limits.md)"
+                ),
+            )
+            .kind(LadderErrorKind::Limit)]);
+        }
+        Ok(Grid {
+            rung,
+            index,
+            rows,
+            width,
+        })
+    }
+
+    fn err(&self, pos: Pos, kind: LadderErrorKind, message: &str) -> LadderError {
+        LadderError::at(self.index, pos, message).kind(kind)
+    }
+
+    /// The electrical point at the left edge of column `b` in row `r`
+    /// (edge 0 is the rail).
+    fn node(&self, r: usize, b: usize) -> usize {
+        r * (self.width + 1) + b
+    }
+
+    /// The outputs, checked to stand in one column with nothing after
+    /// them.
+    fn outputs(&self) -> Result<Vec<(Element, Pos)>, Vec<LadderError>> {
+        let outputs: Vec<(Element, Pos)> = self
+            .rung
+            .elements()
+            .filter(|(_, e)| e.is_output())
+            .map(|(p, e)| (e.clone(), p))
+            .collect();
+        let Some(out_col) = outputs.iter().map(|(_, p)| p.col).max() else {
+            return Err(vec![LadderError::rung(
+                self.index,
+                "the rung has no output: end it with a coil or an output box",
+            )
+            .kind(LadderErrorKind::NoOutput)]);
+        };
+        let mut errors = Vec::new();
+        for (p, e) in self.rung.elements() {
+            if e.is_output() && p.col != out_col {
+                errors.push(self.err(
+                    p,
+                    LadderErrorKind::Placement,
+                    "outputs must line up in the rung's last column: move this one right",
+                ));
+            } else if !e.is_output() && p.col >= out_col {
+                errors.push(self.err(
+                    p,
+                    LadderErrorKind::Placement,
+                    "nothing may follow an output: coils and output boxes end the rung",
+                ));
+            }
+        }
+        if errors.is_empty() {
+            Ok(outputs)
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// The points joined by the rail, the links and the wires.
+    fn points(&self) -> Result<UnionFind, Vec<LadderError>> {
+        let mut uf = UnionFind::new(self.rows * (self.width + 1));
+        for r in 1..self.rows {
+            uf.union(self.node(0, 0), self.node(r, 0));
+        }
+        let mut errors = Vec::new();
+        for link in &self.rung.links {
+            // Checked: a link's numbers come straight from the file.
+            let below = link.row.checked_add(1).filter(|&b| b < self.rows);
+            match below {
+                Some(below) if link.col <= self.width => {
+                    uf.union(self.node(link.row, link.col), self.node(below, link.col));
+                }
+                _ => errors.push(self.err(
+                    Pos::new(link.row, link.col),
+                    LadderErrorKind::Wiring,
+                    "a vertical link reaches past the rung's last row or column",
+                )),
+            }
+        }
+        for (p, e) in self.rung.elements() {
+            if matches!(e, Element::Wire) {
+                uf.union(self.node(p.row, p.col), self.node(p.row, p.col + 1));
+            }
+        }
+        if errors.is_empty() {
+            Ok(uf)
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// Every contact and in-line box as an edge from its left point to its
+    /// right point; the rail's and the outputs' points.
+    fn edges(
+        &self,
+        uf: &mut UnionFind,
+        outputs: &[(Element, Pos)],
+    ) -> Result<(Vec<Edge>, usize, usize), Vec<LadderError>> {
+        let rail = uf.find(self.node(0, 0));
+        let out_col = outputs[0].1.col;
+        let bus = uf.find(self.node(outputs[0].1.row, out_col));
+        let mut errors = Vec::new();
+        for (_, p) in &outputs[1..] {
+            if uf.find(self.node(p.row, out_col)) != bus {
+                errors.push(self.err(
+                    *p,
+                    LadderErrorKind::Wiring,
+                    "this output is not joined to the first output's condition: give it its own rung or link it",
+                ));
+            }
+        }
+        let mut edges = Vec::new();
+        for (p, e) in self.rung.elements() {
+            if e.is_output() || matches!(e, Element::Wire) {
+                continue;
+            }
+            let (a, b) = (
+                uf.find(self.node(p.row, p.col)),
+                uf.find(self.node(p.row, p.col + 1)),
+            );
+            if a == b {
+                errors.push(self.err(
+                    p,
+                    LadderErrorKind::Wiring,
+                    "short circuit: a wire joins both sides of this element",
+                ));
+                continue;
+            }
+            edges.push(Edge {
+                from: a,
+                to: b,
+                net: Net::Leaf(e.clone(), p),
+            });
+        }
+        // A shorted contact is the cause when the output also sits on the
+        // rail; only then is the output itself the problem.
+        let shorted = errors
+            .iter()
+            .any(|e| e.message.starts_with("short circuit"));
+        if bus == rail && !shorted {
+            errors.push(self.err(
+                outputs[0].1,
+                LadderErrorKind::Wiring,
+                "the output is wired straight to the left rail: put a contact before it",
+            ));
+        }
+        if errors.is_empty() {
+            Ok((edges, rail, bus))
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// Checks that every element and wire lies on a path from the rail to
+    /// the outputs (one that does not is dangling).
+    fn reaches(
+        &self,
+        edges: &[Edge],
+        uf: &mut UnionFind,
+        rail: usize,
+        bus: usize,
+        outputs: &[(Element, Pos)],
+    ) -> Result<(), Vec<LadderError>> {
+        let ends: Vec<(usize, usize)> = edges.iter().map(|e| (e.from, e.to)).collect();
+        let forward = reduce::reach(&ends, uf.len(), rail, true);
+        let backward = reduce::reach(&ends, uf.len(), bus, false);
+        let useful = |n: usize| forward[n] && backward[n];
+        let mut errors = Vec::new();
+        for e in edges {
+            if !(useful(e.from) && useful(e.to)) {
+                errors.push(self.err(
+                    e.net.first_pos(),
+                    LadderErrorKind::Dangling,
+                    "dangling: this element is not on a path from the left rail to the outputs",
+                ));
+            }
+        }
+        for (p, e) in self.rung.elements() {
+            if matches!(e, Element::Wire) && !useful(uf.find(self.node(p.row, p.col))) {
+                errors.push(self.err(
+                    p,
+                    LadderErrorKind::Dangling,
+                    "dangling wire: it does not join the left rail to the outputs",
+                ));
+            }
+        }
+        if !useful(bus) && errors.is_empty() {
+            errors.push(self.err(
+                outputs[0].1,
+                LadderErrorKind::Wiring,
+                "no path of contacts joins the left rail to this output",
+            ));
+        }
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(errors)
+        }
+    }
 }
 
 /// The network between `rail` and each of `buses` in one graph of
@@ -419,6 +488,10 @@ struct UnionFind(Vec<usize>);
 impl UnionFind {
     fn new(n: usize) -> UnionFind {
         UnionFind((0..n).collect())
+    }
+
+    fn len(&self) -> usize {
+        self.0.len()
     }
 
     fn find(&mut self, mut x: usize) -> usize {

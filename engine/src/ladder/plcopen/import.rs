@@ -358,8 +358,69 @@ impl Body {
 
     /// The rungs, each with the XML line of its first output.
     fn rungs(mut self, machine: Option<MachineId>) -> Result<Vec<(RungLogic, usize)>, Errors> {
-        // A TON or CTU whose output drives nothing is the machine's timer
-        // or counter coil (`OUT T00 K19`).
+        let (edges, lines) = self.graph()?;
+        if let Some(m) = machine {
+            self.check_machine(m, &edges, &lines)?;
+        }
+        let rail = self.find(RAIL);
+        let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
+        for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
+            let bus = self.find(input);
+            groups.entry(bus).or_default().push((e, pos, line));
+        }
+        let mut buses = Vec::new();
+        let mut errors = Vec::new();
+        for (bus, outs) in &mut groups {
+            outs.sort_by_key(|(_, p, _)| *p);
+            if *bus == rail {
+                let on_rail = ImportError::OnRail(outs[0].0.to_string());
+                errors.push(Located::new(outs[0].2, on_rail));
+            } else {
+                buses.push(*bus);
+            }
+        }
+        // Every group's network at once, each from the part of the graph
+        // that leads to it (linear in the sum of their sizes).
+        let conditions = reduce_all(&edges, self.parent.len(), rail, &buses);
+        let mut rungs = Vec::new();
+        for (bus, condition) in buses.iter().zip(conditions) {
+            let outs = groups.remove(bus).unwrap_or_default();
+            let first_line = outs.first().map_or(1, |o| o.2);
+            match condition {
+                Ok(condition) => {
+                    let logic = RungLogic {
+                        condition,
+                        outputs: outs.into_iter().map(|(e, p, _)| (e, p)).collect(),
+                        comment: String::new(),
+                    };
+                    rungs.push((top(&logic), logic, first_line));
+                }
+                Err(NetError::NoPath) => {
+                    let what = outs.first().map(|o| o.0.to_string()).unwrap_or_default();
+                    errors.push(Located::new(first_line, ImportError::NoPath(what)))
+                }
+                Err(e @ (NetError::NotSeriesParallel(p) | NetError::TooDeep(p))) => {
+                    let line = lines.get(&p).copied().unwrap_or(first_line);
+                    errors.push(Located::new(line, ImportError::Net(e)))
+                }
+            }
+        }
+        if errors.is_empty() {
+            errors.extend(unused(&edges, &rungs, &lines));
+        }
+        if !errors.is_empty() {
+            return Err(errors);
+        }
+        rungs.sort_by_key(|(top, _, _)| *top);
+        self.attach_comments(&mut rungs);
+        Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
+    }
+
+    /// The elements as edges between their (joined) points, and each
+    /// leaf's line. A TON or CTU whose output drives nothing becomes the
+    /// machine's timer or counter coil (`OUT T00 K19`).
+    #[allow(clippy::type_complexity)] // a pair of plain collections, named at the call
+    fn graph(&mut self) -> Result<(Vec<Edge>, HashMap<Pos, usize>), Errors> {
         let consumed: HashSet<usize> = self
             .consumed
             .clone()
@@ -392,10 +453,8 @@ impl Body {
                         continue;
                     }
                     (Element::CounterCoil { device, .. }, false) => {
-                        return Err(vec![Located::new(
-                            line,
-                            ImportError::CounterQWired(device.clone()),
-                        )]);
+                        let wired = ImportError::CounterQWired(device.clone());
+                        return Err(vec![Located::new(line, wired)]);
                     }
                     _ => {}
                 }
@@ -406,87 +465,38 @@ impl Body {
                 net,
             });
         }
-        if let Some(m) = machine {
-            let mut errors = Vec::new();
-            let leaves = edges.iter().filter_map(|e| match &e.net {
-                Net::Leaf(e, p) => Some((e, lines.get(p).copied().unwrap_or(1))),
-                _ => None,
-            });
-            let outs = self.outputs.iter().map(|(_, e, _, line)| (e, *line));
-            for (e, line) in leaves.chain(outs) {
-                if let Err(e) = check_element(m, e) {
-                    errors.push(Located::new(line, ImportError::Element(e)));
-                }
-            }
-            if !errors.is_empty() {
-                return Err(errors);
-            }
-        }
-        let rail = self.find(RAIL);
-        let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
-        for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
-            let bus = self.find(input);
-            groups.entry(bus).or_default().push((e, pos, line));
-        }
-        let mut buses = Vec::new();
-        let mut errors = Vec::new();
-        for (bus, outs) in &mut groups {
-            outs.sort_by_key(|(_, p, _)| *p);
-            if *bus == rail {
-                errors.push(Located::new(
-                    outs[0].2,
-                    ImportError::OnRail(outs[0].0.to_string()),
-                ));
-            } else {
-                buses.push(*bus);
-            }
-        }
-        // Every group's network at once, each from the part of the graph
-        // that leads to it (linear in the sum of their sizes).
-        let conditions = reduce_all(&edges, self.parent.len(), rail, &buses);
-        let mut rungs = Vec::new();
-        let mut used = HashSet::new();
-        for (bus, condition) in buses.iter().zip(conditions) {
-            let outs = groups.remove(bus).unwrap_or_default();
-            let first_line = outs.first().map_or(1, |o| o.2);
-            let what = outs.first().map(|o| o.0.to_string()).unwrap_or_default();
-            match condition {
-                Ok(condition) => {
-                    used.extend(condition.leaves().iter().map(|(_, p)| *p));
-                    let logic = RungLogic {
-                        condition,
-                        outputs: outs.into_iter().map(|(e, p, _)| (e, p)).collect(),
-                        comment: String::new(),
-                    };
-                    rungs.push((top(&logic), logic, first_line));
-                }
-                Err(NetError::NoPath) => {
-                    errors.push(Located::new(first_line, ImportError::NoPath(what)))
-                }
-                Err(e @ (NetError::NotSeriesParallel(p) | NetError::TooDeep(p))) => {
-                    errors.push(Located::new(
-                        lines.get(&p).copied().unwrap_or(first_line),
-                        ImportError::Net(e),
-                    ))
-                }
-            }
-        }
+        Ok((edges, lines))
+    }
+
+    /// Every element and device checked against `machine`, at its line.
+    fn check_machine(
+        &self,
+        machine: MachineId,
+        edges: &[Edge],
+        lines: &HashMap<Pos, usize>,
+    ) -> Result<(), Errors> {
+        let leaves = edges.iter().filter_map(|e| match &e.net {
+            Net::Leaf(e, p) => Some((e, lines.get(p).copied().unwrap_or(1))),
+            _ => None,
+        });
+        let outs = self.outputs.iter().map(|(_, e, _, line)| (e, *line));
+        let errors: Errors = leaves
+            .chain(outs)
+            .filter_map(|(e, line)| {
+                check_element(machine, e)
+                    .err()
+                    .map(|e| Located::new(line, ImportError::Element(e)))
+            })
+            .collect();
         if errors.is_empty() {
-            if let Some(p) = edges.iter().find_map(|e| match &e.net {
-                Net::Leaf(leaf, p) if !used.contains(p) => Some((leaf, *p)),
-                _ => None,
-            }) {
-                errors.push(Located::new(
-                    lines.get(&p.1).copied().unwrap_or(1),
-                    ImportError::LeadsNowhere(p.0.to_string()),
-                ));
-            }
+            Ok(())
+        } else {
+            Err(errors)
         }
-        if !errors.is_empty() {
-            return Err(errors);
-        }
-        rungs.sort_by_key(|(top, _, _)| *top);
-        // A comment belongs to the first rung at or below it.
+    }
+
+    /// A comment belongs to the first rung at or below it.
+    fn attach_comments(&mut self, rungs: &mut [(Pos, RungLogic, usize)]) {
         for (y, text) in std::mem::take(&mut self.comments) {
             let i = rungs
                 .partition_point(|(top, _, _)| top.row < y)
@@ -498,8 +508,26 @@ impl Body {
                 r.comment.push_str(&text);
             }
         }
-        Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
     }
+}
+
+/// The first element that no rung uses: it leads to no coil.
+fn unused(
+    edges: &[Edge],
+    rungs: &[(Pos, RungLogic, usize)],
+    lines: &HashMap<Pos, usize>,
+) -> Option<Located<ImportError>> {
+    let used: HashSet<Pos> = rungs
+        .iter()
+        .flat_map(|(_, r, _)| r.condition.leaves().into_iter().map(|(_, p)| p))
+        .collect();
+    edges.iter().find_map(|e| match &e.net {
+        Net::Leaf(leaf, p) if !used.contains(p) => Some(Located::new(
+            lines.get(p).copied().unwrap_or(1),
+            ImportError::LeadsNowhere(leaf.to_string()),
+        )),
+        _ => None,
+    })
 }
 
 fn top(r: &RungLogic) -> Pos {

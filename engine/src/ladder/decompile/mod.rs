@@ -1,0 +1,209 @@
+//! Programs back to ladders: each machine's mnemonic text read as rungs.
+//!
+//! Accumulator machines (MINASEC-U, AVR PLC): `LD` starts a condition,
+//! `AND` / `OR` grow it, each store is an output of the rung. When the
+//! program goes on from a stored result (`ST Y00` then `ANDI T1`), the
+//! next rung starts from a contact on that output, which holds the same
+//! value. A temporary relay (M10-M13 on MINASEC-U) stored once and read
+//! once later is folded back into the rung that reads it; other relays
+//! stay visible as rungs of their own.
+//!
+//! Block-stack machines (IO86A, Arduino sketch): `LD` opens a block, `ORB`
+//! / `ANB` join the top two, outputs close the rung.
+
+use std::fmt;
+
+mod accumulator;
+mod stack;
+
+use super::element::{ContactKind, Element};
+use super::grid::{Ladder, Pos};
+use super::net::{try_layout, Net, RungLogic, TooLarge};
+use crate::limits::MAX_NESTING;
+use crate::{arduino, avr, io86a, minasec, MachineId};
+use accumulator::{avr_ladder, minasec_ladder};
+use stack::{arduino_ladder, io86a_ladder};
+
+/// Why a program has no ladder form, at its step (0-based, as listed).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StepError {
+    /// The step.
+    pub step: usize,
+    /// What cannot be drawn.
+    pub message: String,
+}
+
+impl fmt::Display for StepError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "step {}: {}", self.step, self.message)
+    }
+}
+
+impl std::error::Error for StepError {}
+
+/// Why a program could not be decompiled.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DecompileError {
+    /// A step has no ladder form.
+    Step(StepError),
+    /// A rung (1-based) is too large to draw (docs/limits.md).
+    Drawing {
+        /// The rung, 1-based.
+        rung: usize,
+        /// How large it would be.
+        size: TooLarge,
+    },
+}
+
+impl From<StepError> for DecompileError {
+    fn from(e: StepError) -> Self {
+        DecompileError::Step(e)
+    }
+}
+
+impl fmt::Display for DecompileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DecompileError::Step(e) => e.fmt(f),
+            DecompileError::Drawing { rung, size } => write!(f, "rung {rung}: {size}"),
+        }
+    }
+}
+
+impl std::error::Error for DecompileError {}
+
+/// The rungs drawn on grids, each refused past the rung size limit.
+fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
+    let mut ladder = Ladder::default();
+    for (i, logic) in rungs.iter().enumerate() {
+        let rung =
+            try_layout(logic).map_err(|size| DecompileError::Drawing { rung: i + 1, size })?;
+        ladder.rungs.push(rung);
+    }
+    Ok(ladder)
+}
+
+/// A program parsed for its machine.
+pub enum Source<'a> {
+    /// A MINASEC-U listing.
+    Minasec(&'a minasec::Program),
+    /// An AVR PLC program and its scan period in ms (for timer presets).
+    Avr(&'a avr::Program, u32),
+    /// An IO86A listing.
+    Io86a(&'a io86a::Program),
+    /// An Arduino sketch program.
+    Arduino(&'a arduino::Program),
+}
+
+/// The program as a ladder.
+pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
+    let mut ladder = match source {
+        Source::Minasec(p) => minasec_ladder(p)?,
+        Source::Avr(p, scan) => avr_ladder(p, scan)?,
+        Source::Io86a(p) => io86a_ladder(p)?,
+        Source::Arduino(p) => arduino_ladder(p)?,
+    };
+    if let Source::Avr(p, _) = source {
+        for (name, bit) in p.names() {
+            ladder.device_comments.insert(bit.to_string(), name.clone());
+        }
+    }
+    Ok(ladder)
+}
+
+/// The machine a [`Source`] is for.
+pub fn machine_of(source: &Source<'_>) -> MachineId {
+    match source {
+        Source::Minasec(_) => MachineId::MinasecU,
+        Source::Avr(..) => MachineId::AvrPlc,
+        Source::Io86a(_) => MachineId::Io86a,
+        Source::Arduino(_) => MachineId::ArduinoPlc,
+    }
+}
+
+fn contact(device: String, inverted: bool) -> Net {
+    let kind = if inverted {
+        ContactKind::Nc
+    } else {
+        ContactKind::No
+    };
+    Net::Leaf(Element::Contact { kind, device }, Pos::new(0, 0))
+}
+
+/// A condition being built, with how deeply it nests, so that a program
+/// that nests blocks past [`MAX_NESTING`] is refused at the step that
+/// would (and no deeper network is ever built).
+struct Part {
+    net: Net,
+    depth: usize,
+}
+
+impl Part {
+    fn of(net: Net) -> Part {
+        let depth = net.depth();
+        Part { net, depth }
+    }
+
+    /// `self` and `b` in series (`and`) or in parallel.
+    fn join(self, b: Part, and: bool, step: usize) -> Result<Part, StepError> {
+        let merges = |p: &Part| match p.net {
+            Net::Series(_) => and,
+            Net::Parallel(_) => !and,
+            Net::Leaf(..) => false,
+        };
+        let level = |p: &Part| if merges(p) { p.depth } else { p.depth + 1 };
+        let depth = level(&self).max(level(&b));
+        if depth > MAX_NESTING {
+            return Err(StepError {
+                step,
+                message: format!(
+                    "blocks nest more than {MAX_NESTING} deep here: a ladder cannot draw it (docs/limits.md)"
+                ),
+            });
+        }
+        let net = if and {
+            Net::series(self.net, b.net)
+        } else {
+            Net::parallel(self.net, b.net)
+        };
+        Ok(Part { net, depth })
+    }
+}
+
+/// Ends a rung: its condition drives the outputs collected (a condition
+/// with no output drives nothing and is dropped, as the machine ignores it).
+fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Part>, outputs: &mut Vec<Element>) {
+    if let Some(Part { net: condition, .. }) = condition {
+        if !outputs.is_empty() {
+            rungs.push(RungLogic {
+                condition,
+                outputs: outputs.drain(..).map(|e| (e, Pos::new(0, 0))).collect(),
+                comment: String::new(),
+            });
+        }
+    }
+    outputs.clear();
+}
+
+/// Adds an output to the open rung; the first output that holds the
+/// rung's result becomes the anchor a continuation starts from.
+fn add_output<T>(
+    open: bool,
+    outputs: &mut Vec<Element>,
+    anchor: &mut Option<T>,
+    e: Element,
+    holds: Option<T>,
+    step: usize,
+) -> Result<(), StepError> {
+    if !open {
+        return Err(StepError {
+            step,
+            message: "an output with no LD before it".into(),
+        });
+    }
+    if anchor.is_none() {
+        *anchor = holds;
+    }
+    outputs.push(e);
+    Ok(())
+}
