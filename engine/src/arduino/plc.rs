@@ -196,24 +196,10 @@ impl Plc for ArduinoPlc {
         i64::from(pins & 1)
     }
 
-    fn now(&self) -> SimTime {
-        self.machine.now()
-    }
+    plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {
         self.machine.passes()
-    }
-
-    fn run_until(&mut self, t: SimTime) {
-        self.machine.run_until(t);
-    }
-
-    fn run_before(&mut self, t: SimTime) {
-        self.machine.run_before(t);
-    }
-
-    fn step_scan(&mut self) {
-        self.machine.step_scan();
     }
 
     fn step_instruction(&mut self) -> Option<usize> {

@@ -306,24 +306,10 @@ impl Plc for Io86aPlc {
         }
     }
 
-    fn now(&self) -> SimTime {
-        self.machine.now()
-    }
+    plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {
         self.machine.scans()
-    }
-
-    fn run_until(&mut self, t: SimTime) {
-        self.machine.run_until(t);
-    }
-
-    fn run_before(&mut self, t: SimTime) {
-        self.machine.run_before(t);
-    }
-
-    fn step_scan(&mut self) {
-        self.machine.step_scan();
     }
 
     fn step_instruction(&mut self) -> Option<usize> {

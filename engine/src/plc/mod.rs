@@ -180,6 +180,30 @@ pub trait Plc {
     }
 }
 
+/// The time methods every [`Plc`] implementation forwards unchanged to
+/// the machine in its field `$field` (`now`, `run_until`, `run_before`,
+/// `step_scan`).
+macro_rules! forward_time {
+    ($field:ident) => {
+        fn now(&self) -> $crate::time::SimTime {
+            self.$field.now()
+        }
+
+        fn run_until(&mut self, t: $crate::time::SimTime) {
+            self.$field.run_until(t);
+        }
+
+        fn run_before(&mut self, t: $crate::time::SimTime) {
+            self.$field.run_before(t);
+        }
+
+        fn step_scan(&mut self) {
+            self.$field.step_scan();
+        }
+    };
+}
+pub(crate) use forward_time;
+
 /// A new machine of kind `id`, powered on, with no program, ready to run
 /// (MINASEC-U's switch at RUN, the Arduino PLC enabled).
 pub fn new_plc(id: MachineId) -> Box<dyn Plc> {
