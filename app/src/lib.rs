@@ -176,21 +176,25 @@ pub fn start_loop(ctx: Ctx, io: io86a::Io86aCtx, ard: arduino::ArduinoCtx, avr: 
     let last = Cell::new(None::<f64>);
     *slot.borrow_mut() = Some(Closure::new(move |timestamp: f64| {
         let wall_ms = last.replace(Some(timestamp)).map_or(0.0, |l| timestamp - l);
+        let pace = sim::Pace {
+            speed: ctx.speed.get_untracked(),
+            paused: ctx.paused.get_untracked(),
+        };
         match ctx.machine.get_untracked() {
             state::MachineKind::MinasecU => {
-                ctx.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                ctx.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
                 ctx.refresh();
             }
             state::MachineKind::Io86a => {
-                io.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                io.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
                 io.refresh();
             }
             state::MachineKind::ArduinoPlc => {
-                ard.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                ard.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
                 ard.refresh();
             }
             state::MachineKind::AvrPlc => {
-                avr.sim.update_value(|s| s.frame(wall_ms, now_ms));
+                avr.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
                 avr.refresh();
             }
         }

@@ -87,21 +87,25 @@ pub const MAX_SPEED_BUDGET_MS: f64 = 10.0;
 /// the budget between slices.
 const MAX_SPEED_SLICE: SimTime = SimTime::from_millis(20);
 
-/// The machine and its pacing.
+/// How the page paces simulated time. Page-wide state: the header sets
+/// it, the frame loop hands it to whichever workspace is shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pace {
+    /// How fast simulated time runs.
+    pub speed: Speed,
+    /// Whether simulated time is frozen.
+    pub paused: bool,
+}
+
+/// A machine the frame loop advances.
 pub struct Simulator<M = Machine> {
     machine: M,
-    speed: Speed,
-    paused: bool,
 }
 
 impl<M: Tick> Simulator<M> {
-    /// A simulator around `machine`, at ×1, running.
+    /// A simulator around `machine`.
     pub fn new(machine: M) -> Simulator<M> {
-        Simulator {
-            machine,
-            speed: Speed::Times(1),
-            paused: false,
-        }
+        Simulator { machine }
     }
 
     /// The machine.
@@ -114,34 +118,15 @@ impl<M: Tick> Simulator<M> {
         &mut self.machine
     }
 
-    /// The speed.
-    pub fn speed(&self) -> Speed {
-        self.speed
-    }
-
-    /// Sets the speed.
-    pub fn set_speed(&mut self, speed: Speed) {
-        self.speed = speed;
-    }
-
-    /// Whether simulated time is frozen.
-    pub fn paused(&self) -> bool {
-        self.paused
-    }
-
-    /// Freezes or resumes simulated time.
-    pub fn set_paused(&mut self, paused: bool) {
-        self.paused = paused;
-    }
-
-    /// Advances for one animation frame that came `wall_ms` after the last.
-    /// `now_ms` reads the wall clock (for `Speed::Max`'s budget).
-    pub fn frame(&mut self, wall_ms: f64, mut now_ms: impl FnMut() -> f64) {
-        if self.paused || !wall_ms.is_finite() || wall_ms <= 0.0 {
+    /// Advances for one animation frame that came `wall_ms` after the
+    /// last, at `pace`. `now_ms` reads the wall clock (for `Speed::Max`'s
+    /// budget).
+    pub fn frame(&mut self, pace: Pace, wall_ms: f64, mut now_ms: impl FnMut() -> f64) {
+        if pace.paused || !wall_ms.is_finite() || wall_ms <= 0.0 {
             return;
         }
         let wall_ms = wall_ms.min(CATCH_UP_CAP_MS);
-        match self.speed {
+        match pace.speed {
             Speed::Times(factor) => {
                 let nanos = wall_ms * 1e6 * f64::from(factor);
                 self.machine.tick(SimTime::from_nanos(nanos as u64));

@@ -1,10 +1,11 @@
-//! The header: language, examples, speed and pause, and the clock readout.
+//! The header: the machine, the language, examples, speed and pause, and
+//! the clock readout. Speed and pause are page-wide (`Ctx`); the frame
+//! loop hands them to whichever workspace is shown.
 
 use leptos::prelude::*;
 
 use crate::examples;
 use crate::i18n::Lang;
-use crate::io86a::Io86aCtx;
 use crate::sim::Speed;
 use crate::state::{Ctx, MachineKind};
 use crate::storage;
@@ -12,81 +13,21 @@ use crate::storage;
 #[component]
 pub fn Header() -> impl IntoView {
     let ctx = Ctx::get();
-    let io = expect_context::<Io86aCtx>();
-    let ard = expect_context::<crate::arduino::ArduinoCtx>();
-    let avr = expect_context::<crate::avr::AvrCtx>();
     let t = move || ctx.lang.get().texts();
-    let minasec = move || ctx.machine.get() == MachineKind::MinasecU;
     view! {
         <header class="top">
             <h1>
-                {move || {
-                    match ctx.machine.get() {
-                        MachineKind::MinasecU => t().title,
-                        MachineKind::Io86a => t().title_io86a,
-                        MachineKind::ArduinoPlc => "Hashigo — Arduino PLC",
-                        MachineKind::AvrPlc => "Hashigo — AVR PLC",
-                    }
+                {move || match ctx.machine.get() {
+                    MachineKind::MinasecU => t().title,
+                    MachineKind::Io86a => t().title_io86a,
+                    MachineKind::ArduinoPlc => t().title_arduino,
+                    MachineKind::AvrPlc => t().title_avr,
                 }}
             </h1>
-            <label>
-                {move || t().machine}
-                <select
-                    data-testid="machine"
-                    prop:value=move || ctx.machine.get().code()
-                    on:change=move |e| {
-                        if let Some(kind) = MachineKind::from_code(&event_target_value(&e)) {
-                            ctx.machine.set(kind);
-                            storage::save_string(storage::MACHINE_KEY, kind.code());
-                        }
-                    }
-                >
-                    <option value="minasec-u">"MINASEC-U"</option>
-                    <option value="io86a">"PLC-IO86A"</option>
-                    <option value="arduino-plc">"Arduino PLC"</option>
-                    <option value="avr-plc">"AVR PLC"</option>
-                </select>
-            </label>
-            <label>
-                {move || t().language}
-                <select
-                    data-testid="lang"
-                    prop:value=move || ctx.lang.get().code()
-                    on:change=move |e| {
-                        if let Some(lang) = Lang::from_code(&event_target_value(&e)) {
-                            ctx.lang.set(lang);
-                            storage::save_lang(lang.code());
-                            set_document_lang(lang);
-                        }
-                    }
-                >
-                    <option value="ja">"日本語"</option>
-                    <option value="en">"English"</option>
-                </select>
-            </label>
-            <Show when=minasec>
-            <label>
-                {move || t().example}
-                <select
-                    data-testid="example"
-                    prop:value=""
-                    on:change=move |e| {
-                        let id = event_target_value(&e);
-                        examples::open(ctx, &id);
-                        // Back to the prompt, so the same example can be opened again.
-                        use leptos::wasm_bindgen::JsCast;
-                        if let Some(select) = e
-                            .target()
-                            .and_then(|t| t.dyn_into::<web_sys::HtmlSelectElement>().ok())
-                        {
-                            select.set_value("");
-                        }
-                    }
-                >
-                    <option value="">{move || t().example_none}</option>
-                    <option value="seed-test">{move || t().example_seed}</option>
-                </select>
-            </label>
+            <MachineSelect />
+            <LangSelect />
+            <Show when=move || ctx.machine.get() == MachineKind::MinasecU>
+                <ExampleSelect />
             </Show>
             <Show when=move || ctx.before_example.with(Option::is_some)>
                 <button
@@ -97,67 +38,172 @@ pub fn Header() -> impl IntoView {
                     {move || t().undo_open}
                 </button>
             </Show>
-            <label>
-                {move || t().speed}
-                <select
-                    data-testid="speed"
-                    prop:value=move || ctx.speed.get().code()
-                    on:change=move |e| {
-                        if let Some(speed) = Speed::from_code(&event_target_value(&e)) {
-                            ctx.speed.set(speed);
-                            ctx.sim.update_value(|s| s.set_speed(speed));
-                            io.sim.update_value(|s| s.set_speed(speed));
-                            ard.sim.update_value(|s| s.set_speed(speed));
-                            avr.sim.update_value(|s| s.set_speed(speed));
-                        }
+            <SpeedSelect />
+            <PauseButton />
+            <SimClock />
+        </header>
+    }
+}
+
+/// Which machine the page shows (remembered).
+#[component]
+fn MachineSelect() -> impl IntoView {
+    let ctx = Ctx::get();
+    view! {
+        <label>
+            {move || ctx.lang.get().texts().machine}
+            <select
+                data-testid="machine"
+                prop:value=move || ctx.machine.get().code()
+                on:change=move |e| {
+                    if let Some(kind) = MachineKind::from_code(&event_target_value(&e)) {
+                        ctx.machine.set(kind);
+                        storage::save_string(storage::MACHINE_KEY, kind.code());
                     }
-                >
-                    {Speed::ALL
-                        .iter()
-                        .map(|&speed| {
-                            let code = speed.code();
-                            view! {
-                                <option value=code.clone()>
-                                    {move || match speed {
-                                        Speed::Times(n) => format!("×{n}"),
-                                        Speed::Max => t().speed_max.to_string(),
-                                    }}
-                                </option>
-                            }
-                        })
-                        .collect_view()}
-                </select>
-            </label>
-            <button
-                type="button"
-                data-testid="pause"
-                aria-pressed=move || ctx.paused.get().to_string()
-                on:click=move |_| {
-                    let paused = !ctx.paused.get_untracked();
-                    ctx.paused.set(paused);
-                    ctx.sim.update_value(|s| s.set_paused(paused));
-                    io.sim.update_value(|s| s.set_paused(paused));
-                    ard.sim.update_value(|s| s.set_paused(paused));
-                    avr.sim.update_value(|s| s.set_paused(paused));
                 }
             >
-                {move || if ctx.paused.get() { t().resume } else { t().pause }}
-            </button>
-            <span class="clock" data-testid="sim-time" class:hidden=move || !minasec()>
-                {move || {
-                    let ms = ctx.panel.sim_ms.get();
-                    format!(
-                        "{} {}.{:03} {} · {} {}",
-                        t().sim_time,
-                        ms / 1000,
-                        ms % 1000,
-                        t().seconds,
-                        ctx.panel.scans.get(),
-                        t().scans,
-                    )
-                }}
-            </span>
-        </header>
+                <option value="minasec-u">"MINASEC-U"</option>
+                <option value="io86a">"PLC-IO86A"</option>
+                <option value="arduino-plc">"Arduino PLC"</option>
+                <option value="avr-plc">"AVR PLC"</option>
+            </select>
+        </label>
+    }
+}
+
+/// The interface language (remembered).
+#[component]
+fn LangSelect() -> impl IntoView {
+    let ctx = Ctx::get();
+    view! {
+        <label>
+            {move || ctx.lang.get().texts().language}
+            <select
+                data-testid="lang"
+                prop:value=move || ctx.lang.get().code()
+                on:change=move |e| {
+                    if let Some(lang) = Lang::from_code(&event_target_value(&e)) {
+                        ctx.lang.set(lang);
+                        storage::save_lang(lang.code());
+                        set_document_lang(lang);
+                    }
+                }
+            >
+                <option value="ja">"日本語"</option>
+                <option value="en">"English"</option>
+            </select>
+        </label>
+    }
+}
+
+/// MINASEC-U's examples: opening one replaces the text (undoable).
+#[component]
+fn ExampleSelect() -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <label>
+            {move || t().example}
+            <select
+                data-testid="example"
+                prop:value=""
+                on:change=move |e| {
+                    let id = event_target_value(&e);
+                    examples::open(ctx, &id);
+                    // Back to the prompt, so the same example can be opened again.
+                    use leptos::wasm_bindgen::JsCast;
+                    if let Some(select) = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<web_sys::HtmlSelectElement>().ok())
+                    {
+                        select.set_value("");
+                    }
+                }
+            >
+                <option value="">{move || t().example_none}</option>
+                <option value="seed-test">{move || t().example_seed}</option>
+            </select>
+        </label>
+    }
+}
+
+/// How fast simulated time runs, for every machine.
+#[component]
+fn SpeedSelect() -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <label>
+            {move || t().speed}
+            <select
+                data-testid="speed"
+                prop:value=move || ctx.speed.get().code()
+                on:change=move |e| {
+                    if let Some(speed) = Speed::from_code(&event_target_value(&e)) {
+                        ctx.speed.set(speed);
+                    }
+                }
+            >
+                {Speed::ALL
+                    .iter()
+                    .map(|&speed| {
+                        let code = speed.code();
+                        view! {
+                            <option value=code.clone()>
+                                {move || match speed {
+                                    Speed::Times(n) => format!("×{n}"),
+                                    Speed::Max => t().speed_max.to_string(),
+                                }}
+                            </option>
+                        }
+                    })
+                    .collect_view()}
+            </select>
+        </label>
+    }
+}
+
+/// Freezes or resumes simulated time, for every machine.
+#[component]
+fn PauseButton() -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <button
+            type="button"
+            data-testid="pause"
+            aria-pressed=move || ctx.paused.get().to_string()
+            on:click=move |_| ctx.paused.update(|p| *p = !*p)
+        >
+            {move || if ctx.paused.get() { t().resume } else { t().pause }}
+        </button>
+    }
+}
+
+/// MINASEC-U's simulated time and scans.
+#[component]
+fn SimClock() -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <span
+            class="clock"
+            data-testid="sim-time"
+            class:hidden=move || ctx.machine.get() != MachineKind::MinasecU
+        >
+            {move || {
+                let ms = ctx.panel.sim_ms.get();
+                format!(
+                    "{} {}.{:03} {} · {} {}",
+                    t().sim_time,
+                    ms / 1000,
+                    ms % 1000,
+                    t().seconds,
+                    ctx.panel.scans.get(),
+                    t().scans,
+                )
+            }}
+        </span>
     }
 }
 
