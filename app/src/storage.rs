@@ -2,6 +2,7 @@
 //! on every change and come back on reload. A saved value that cannot be
 //! read is moved aside under a key of its own and reported, never dropped.
 
+use engine::minasec::TimerId;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
@@ -26,9 +27,9 @@ pub struct SavedIo86a {
 pub struct Saved {
     /// The program pane's text, as typed (loaded or not).
     pub program: String,
-    /// RV1's delay in ms (100..=1100).
+    /// RV1's delay in ms (T0's range, 100..=1100).
     pub rv1_ms: u64,
-    /// RV2's delay in ms (1000..=11000).
+    /// RV2's delay in ms (T1's range, 1000..=11000).
     pub rv2_ms: u64,
     /// The counter's rotary switches.
     pub preset_tens: u8,
@@ -47,11 +48,18 @@ impl Checked for SavedIo86a {
     }
 }
 
+/// Whether `ms` is a delay timer `id`'s potentiometer gives (the
+/// engine's range, not a copy of it).
+fn pot_gives(id: TimerId, ms: u64) -> bool {
+    let (low, high) = id.range();
+    (low.as_nanos() / 1_000_000..=high.as_nanos() / 1_000_000).contains(&ms)
+}
+
 impl Checked for Saved {
     fn problem(&self) -> Option<&'static str> {
-        if !(100..=1100).contains(&self.rv1_ms) {
+        if !pot_gives(TimerId::T0, self.rv1_ms) {
             Some("rv1_ms out of range")
-        } else if !(1000..=11000).contains(&self.rv2_ms) {
+        } else if !pot_gives(TimerId::T1, self.rv2_ms) {
             Some("rv2_ms out of range")
         } else if self.preset_tens > 9 || self.preset_ones > 9 {
             Some("counter preset out of range")
