@@ -11,6 +11,7 @@
 
 pub mod compile;
 pub mod decompile;
+pub mod edit;
 pub mod element;
 pub mod eval;
 pub mod grid;
