@@ -161,3 +161,66 @@ proptest! {
         let _ = decode(&format!("1.{}", URL_SAFE_NO_PAD.encode(packed)));
     }
 }
+
+/// `hashigo share` then `hashigo unshare`: the project back, as JSON.
+fn through_the_cli(project: &Project) -> Result<Project, String> {
+    use crate::common::{hashigo, text, Temp};
+    let tmp = Temp::new(&format!("share-{}", project.ladder.rungs.len()));
+    let path = tmp.file("p.json", &project.to_json());
+    let out = hashigo(&["share", "--program", &path], "");
+    if out.status.code() != Some(0) {
+        return Err(text(&out.stderr));
+    }
+    let fragment = text(&out.stdout).trim().to_string();
+    let url = format!("https://example.invalid/hashigo/#{fragment}");
+    let back = hashigo(&["unshare", &url], "");
+    if back.status.code() != Some(0) {
+        return Err(text(&back.stderr));
+    }
+    Project::from_json(&text(&back.stdout)).map_err(|e| e.to_string())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_projects_round_trip_through_share_and_unshare(
+        rungs in prop::collection::vec(rung(Box::leak(Box::new(pool(MachineId::Io86a)))), 0..5),
+    ) {
+        let mut p = Project::new(MachineId::Io86a, Ladder::from_logic(&rungs));
+        p.settings.insert("scan".into(), "2ms".into());
+        p.ladder.device_comments.insert("X00".into(), "start <b>".into());
+        prop_assert_eq!(through_the_cli(&p), Ok(p));
+    }
+}
+
+#[test]
+fn share_and_unshare_from_the_command_line() {
+    use crate::common::{hashigo, text};
+    let seed =
+        Project::from_json(include_str!("../../programs/minasec-u/seed-test.json")).expect("seed");
+    assert_eq!(through_the_cli(&seed), Ok(seed.clone()));
+    // A text program is decompiled to its ladder first.
+    let il = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/programs/minasec-u/seed-test.il"
+    );
+    let out = hashigo(&["share", "--machine", "minasec-u", "--program", il], "");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let fragment = text(&out.stdout).trim().to_string();
+    let back = hashigo(&["unshare", &fragment], "");
+    let project = Project::from_json(&text(&back.stdout)).expect("a project");
+    assert_eq!(project.machine, MachineId::MinasecU);
+    assert_eq!(project.ladder.rungs.len(), seed.ladder.rungs.len());
+    // Damaged, foreign and oversized links: exit 2, one line, no output.
+    for bad in ["1.AAAA", "2.abc", "x", &"1.".repeat(40_000)] {
+        let out = hashigo(&["unshare", bad], "");
+        assert_eq!(out.status.code(), Some(2), "{bad:.20}");
+        assert!(out.stdout.is_empty());
+        let err = text(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.starts_with("error: <link>: this share link"), "{err}");
+    }
+    let out = hashigo(&["unshare"], "");
+    assert_eq!(out.status.code(), Some(2));
+}

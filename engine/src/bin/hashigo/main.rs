@@ -6,6 +6,7 @@
 mod args;
 mod commands;
 mod input;
+mod share;
 mod source;
 
 use std::process::ExitCode;
@@ -18,6 +19,8 @@ usage: hashigo <command> [options]
   asm      --machine ID --program FILE
   compile  [--machine ID] --program LADDER.json|LADDER.xml
   console  --machine io86a|arduino-plc [--program FILE] [--step TIME]
+  share    --program FILE [--machine ID]      (prints the share link's fragment)
+  unshare  FRAGMENT|URL                       (prints the project as JSON)
 machines: minasec-u, io86a, avr-plc, arduino-plc";
 
 fn main() -> ExitCode {
@@ -32,6 +35,8 @@ fn main() -> ExitCode {
         "asm" => commands::asm(rest),
         "console" => commands::console(rest),
         "compile" => commands::compile(rest),
+        "share" => share::share(rest),
+        "unshare" => share::unshare(rest),
         "help" | "--help" | "-h" => {
             println!("{USAGE}");
             Ok(())

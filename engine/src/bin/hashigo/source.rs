@@ -128,6 +128,20 @@ pub fn compile_source(
     Ok((machine, text, settings))
 }
 
+/// The project a ladder file stands for: its ladder, machine and
+/// settings. It is not compiled: a ladder with wiring errors is still a
+/// ladder to share.
+pub fn read_project(
+    source: &SourceFile,
+    format: Format,
+    flag: Option<MachineId>,
+) -> Result<Project, Problems> {
+    let (ladder, machine, settings) = read_ladder(source, format, flag)?;
+    let mut project = Project::new(machine, ladder);
+    project.settings = settings.into_iter().map(|(n, v, _)| (n, v)).collect();
+    Ok(project)
+}
+
 /// A ladder from a project (`.json`, naming its machine) or PLCopen XML
 /// (which does not: `--machine` says). `--machine` wins over the project's.
 fn read_ladder(

@@ -111,6 +111,72 @@ pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
     Ok(ladder)
 }
 
+/// Why a program text could not become a ladder.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TextError {
+    /// The text is no program for the machine (problems at their lines).
+    Program(Vec<crate::Located<crate::plc::ProgramProblem>>),
+    /// The program has no ladder form.
+    Decompile(DecompileError),
+}
+
+impl fmt::Display for TextError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            TextError::Program(problems) => {
+                for (i, p) in problems.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str("; ")?;
+                    }
+                    write!(f, "{p}")?;
+                }
+                Ok(())
+            }
+            TextError::Decompile(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for TextError {}
+
+/// A program in `machine`'s own text (the AVR's with `Scan` = `scan_ms`)
+/// as a ladder.
+pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<Ladder, TextError> {
+    use crate::plc::ProgramProblem as P;
+    fn located<E>(
+        errors: Vec<crate::Located<E>>,
+        f: impl Fn(E) -> crate::plc::ProgramProblem,
+    ) -> TextError {
+        TextError::Program(
+            errors
+                .into_iter()
+                .map(|e| crate::Located::new(e.line, f(e.error)))
+                .collect(),
+        )
+    }
+    let ladder = match machine {
+        MachineId::MinasecU => {
+            let p = minasec::Program::parse(text).map_err(|e| located(e, P::Minasec))?;
+            decompile(Source::Minasec(&p))
+        }
+        MachineId::Io86a => {
+            let p = io86a::Program::parse(text).map_err(|e| located(e, P::Io86a))?;
+            decompile(Source::Io86a(&p))
+        }
+        MachineId::AvrPlc => {
+            let p =
+                avr::Program::parse(text, i64::from(scan_ms)).map_err(|e| located(e, P::Avr))?;
+            decompile(Source::Avr(&p, scan_ms))
+        }
+        MachineId::ArduinoPlc => {
+            let p = arduino::Program::parse(text, arduino::Chip::Atmega328.capacity())
+                .map_err(|e| located(e, P::Arduino))?;
+            decompile(Source::Arduino(&p))
+        }
+    };
+    ladder.map_err(TextError::Decompile)
+}
+
 /// The machine a [`Source`] is for.
 pub fn machine_of(source: &Source<'_>) -> MachineId {
     match source {
