@@ -159,6 +159,10 @@ impl Plc for ArduinoPlc {
                 self.machine.set_enabled(on);
                 Ok(())
             }
+            plc::Command::LoadLinked(_) => Err(PlcError::NotThisMachine {
+                machine: self.id(),
+                lacks: "linked second device",
+            }),
             plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
                 machine: MachineId::ArduinoPlc,
                 lacks: "MINASEC-U front panel",
@@ -215,6 +219,10 @@ impl Plc for ArduinoPlc {
         image.push(self.machine.outputs());
         image.extend_from_slice(&self.machine.pc().to_le_bytes());
         image.extend_from_slice(&self.machine.stack().to_le_bytes());
+    }
+
+    fn running(&self) -> bool {
+        self.machine.enabled()
     }
 
     fn warnings(&self) -> Vec<Warning> {

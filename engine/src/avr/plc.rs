@@ -128,6 +128,10 @@ impl Plc for AvrPlc {
                 machine: MachineId::AvrPlc,
                 lacks: "RUN/STOP switch: it runs whenever it is powered",
             }),
+            plc::Command::LoadLinked(_) => Err(PlcError::NotThisMachine {
+                machine: self.id(),
+                lacks: "linked second device",
+            }),
             plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
                 machine: MachineId::AvrPlc,
                 lacks: "MINASEC-U front panel",
@@ -195,6 +199,10 @@ impl Plc for AvrPlc {
             let count = self.machine.timer(i).map_or(0, |t| t.count);
             image.extend_from_slice(&count.to_le_bytes());
         }
+    }
+
+    fn running(&self) -> bool {
+        true
     }
 
     fn warnings(&self) -> Vec<Warning> {

@@ -4,7 +4,7 @@
 use super::isa::{parse_bit, parse_word, Bit, Word};
 use super::machine::Machine;
 use super::peripherals::{InputMode, IrMode};
-use super::{Program, Terminal};
+use super::{LinkedPair, Program, Terminal};
 use crate::events::InputValue;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
 use crate::plc::{SettingInfo, Warning};
@@ -124,12 +124,21 @@ impl Machine {
     }
 }
 
-/// PLC-IO86A as a [`Plc`]: the device in RUN and its serial terminal.
+/// PLC-IO86A as a [`Plc`]: the device in RUN and its serial terminal,
+/// and a second device linked to it by SETS / RSTS once one is loaded
+/// ([`plc::Command::LoadLinked`]; its devices are named `B.X00`).
+/// Stepping by scan or instruction steps device A; device B follows when
+/// time next runs.
 #[derive(Clone, Debug)]
 pub struct Io86aPlc {
-    machine: Machine,
+    pair: LinkedPair,
+    /// Whether device B is in use (else only A runs).
+    linked: bool,
     terminal: Terminal,
 }
+
+/// The handle bit that names device B.
+const DEVICE_B: u32 = 0x8000;
 
 impl Default for Io86aPlc {
     fn default() -> Self {
@@ -146,21 +155,37 @@ impl Io86aPlc {
     /// `machine` as a [`Plc`].
     pub fn with(machine: Machine) -> Io86aPlc {
         let terminal = Terminal::new(&machine);
-        Io86aPlc { machine, terminal }
+        Io86aPlc {
+            pair: LinkedPair::new(machine, Machine::new(Program::default())),
+            linked: false,
+            terminal,
+        }
     }
 
-    /// The device.
+    /// Device A.
     pub fn machine(&self) -> &Machine {
-        &self.machine
+        &self.pair.a
     }
 
-    /// The device, to operate it directly.
-    pub fn machine_mut(&mut self) -> &mut Machine {
-        &mut self.machine
+    /// The device a handle names.
+    fn unit(&self, device: Device) -> &Machine {
+        if device.0 & DEVICE_B != 0 {
+            &self.pair.b
+        } else {
+            &self.pair.a
+        }
+    }
+
+    fn unit_mut(&mut self, device: Device) -> &mut Machine {
+        if device.0 & DEVICE_B != 0 {
+            &mut self.pair.b
+        } else {
+            &mut self.pair.a
+        }
     }
 
     fn input_number(&self, device: Device) -> Result<u8, PlcError> {
-        match device.0 {
+        match device.0 & !DEVICE_B {
             h if h < VALUE => match handle_bit(h) {
                 Bit::X(n) => Ok(n),
                 other => Err(DeviceError::NotAnInput {
@@ -178,7 +203,9 @@ impl Io86aPlc {
     }
 
     fn name(&self, h: u32) -> String {
-        match h {
+        let prefix = if h & DEVICE_B != 0 { "B." } else { "" };
+        let h = h & !DEVICE_B;
+        let name = match h {
             h if h >= SIGNAL => format!("Y0{}.v", 3 + (h & 1)),
             h if h >= VALUE => match handle_word(h) {
                 Word::D(n) => format!("D{n:02}"),
@@ -187,7 +214,8 @@ impl Io86aPlc {
                 Word::K(k) => format!("K{k}"),
             },
             h => handle_bit(h).to_string(),
-        }
+        };
+        format!("{prefix}{name}")
     }
 }
 
@@ -205,14 +233,14 @@ impl Plc for Io86aPlc {
                     .collect(),
             )
         })?;
-        self.machine.load(program);
+        self.pair.a.load(program);
         // The terminal edits its own copy of the program: start it anew.
-        self.terminal = Terminal::new(&self.machine);
+        self.terminal = Terminal::new(&self.pair.a);
         Ok(())
     }
 
     fn listing(&self) -> String {
-        self.machine.program().listing()
+        self.pair.a.program().listing()
     }
 
     fn apply(&mut self, command: plc::Command) -> Result<(), PlcError> {
@@ -220,29 +248,51 @@ impl Plc for Io86aPlc {
             plc::Command::SetInput(device, value) => {
                 self.check_input(device, value)?;
                 let n = self.input_number(device)?;
+                let m = self.unit_mut(device);
                 match value {
-                    InputValue::Millivolts(mv) => self
-                        .machine
-                        .set_analog(usize::from(n.saturating_sub(4)), mv),
-                    InputValue::Int(frame)
-                        if n == 7 && self.machine.settings().ir != IrMode::Digital =>
-                    {
-                        self.machine
-                            .set_ir(u32::try_from(frame).ok().filter(|&f| f != 0));
+                    InputValue::Millivolts(mv) => {
+                        m.set_analog(usize::from(n.saturating_sub(4)), mv)
                     }
-                    InputValue::Int(v) => self.machine.set_input(n, v == 1),
+                    InputValue::Int(frame) if n == 7 && m.settings().ir != IrMode::Digital => {
+                        m.set_ir(u32::try_from(frame).ok().filter(|&f| f != 0));
+                    }
+                    InputValue::Int(v) => m.set_input(n, v == 1),
                 }
                 Ok(())
             }
             plc::Command::Setting { name, value } => {
-                Ok(self.machine.apply_setting(name.trim(), value.trim())?)
+                let (name, m) = match name.trim().strip_prefix("B.") {
+                    Some(rest) => (rest, &mut self.pair.b),
+                    None => (name.trim(), &mut self.pair.a),
+                };
+                Ok(m.apply_setting(name, value.trim())?)
             }
             plc::Command::PowerCycle => {
-                self.machine.power_cycle();
+                self.pair.a.power_cycle();
+                self.pair.b.power_cycle();
                 Ok(())
             }
             plc::Command::Run(on) => {
-                self.machine.set_running(on);
+                self.pair.a.set_running(on);
+                Ok(())
+            }
+            plc::Command::LoadLinked(text) => {
+                let program = Program::parse(&text).map_err(|errors| {
+                    PlcError::Program(
+                        errors
+                            .into_iter()
+                            .map(|e| Located::new(e.line, ProgramProblem::Io86a(e.error)))
+                            .collect(),
+                    )
+                })?;
+                let now = self.pair.a.now();
+                let b = &mut self.pair.b;
+                b.set_running(false);
+                b.load(program);
+                // B's clock joins A's: it was idle, not running, until now.
+                b.run_until(now);
+                b.set_running(true);
+                self.linked = !text.trim().is_empty();
                 Ok(())
             }
             plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
@@ -253,6 +303,9 @@ impl Plc for Io86aPlc {
     }
 
     fn device(&self, name: &str) -> Result<Device, PlcError> {
+        if let Some(rest) = name.strip_prefix("B.").or_else(|| name.strip_prefix("b.")) {
+            return Ok(Device(self.device(rest)?.0 | DEVICE_B));
+        }
         let upper = name.to_ascii_uppercase();
         match upper.as_str() {
             "Y03.V" => return Ok(Device(SIGNAL)),
@@ -275,8 +328,8 @@ impl Plc for Io86aPlc {
 
     fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError> {
         let n = self.input_number(device)?;
-        let name = handle_bit(device.0).to_string();
-        let settings = self.machine.settings();
+        let name = self.name(device.0);
+        let settings = self.unit(device).settings();
         let analog =
             matches!(n, 4 | 5) && settings.analog[usize::from(n - 4)] != InputMode::Digital;
         let ir = n == 7 && settings.ir != IrMode::Digital;
@@ -295,38 +348,75 @@ impl Plc for Io86aPlc {
     }
 
     fn read(&self, device: Device) -> i64 {
-        let scan = self.machine.last_scan();
-        match device.0 {
-            h if h >= SIGNAL => self.machine.output_signal((h & 1) as usize).value(),
+        let m = self.unit(device);
+        let scan = m.last_scan();
+        match device.0 & !DEVICE_B {
+            h if h >= SIGNAL => m.output_signal((h & 1) as usize).value(),
             h if h >= VALUE => i64::from(scan.word(handle_word(h))),
             h => match handle_bit(h) {
-                Bit::Y(n) => i64::from(self.machine.output_terminals() >> n & 1),
+                Bit::Y(n) => i64::from(m.output_terminals() >> n & 1),
                 bit => i64::from(scan.bit(bit)),
             },
         }
     }
 
-    plc::forward_time!(machine);
+    fn now(&self) -> SimTime {
+        self.pair.a.now()
+    }
+
+    fn run_until(&mut self, t: SimTime) {
+        if self.linked {
+            self.pair.run_until(t);
+        } else {
+            self.pair.a.run_until(t);
+        }
+    }
+
+    fn run_before(&mut self, t: SimTime) {
+        if self.linked {
+            self.pair
+                .run_until(crate::clock::PeriodicClock::just_before(t));
+            self.pair.b.run_before(t);
+        }
+        self.pair.a.run_before(t);
+    }
+
+    fn step_scan(&mut self) {
+        self.pair.a.step_scan();
+    }
 
     fn scans(&self) -> u64 {
-        self.machine.scans()
+        self.pair.a.scans()
     }
 
     fn step_instruction(&mut self) -> Option<usize> {
-        self.machine.step_instruction()
+        self.pair.a.step_instruction()
+    }
+
+    fn running(&self) -> bool {
+        self.pair.a.running()
+    }
+
+    /// Both devices' pins (device B's stays at rest until one is linked).
+    fn front_into(&self, front: &mut plc::Front) {
+        *front = plc::Front::Io86a([
+            plc::Io86aFront::of(&self.pair.a),
+            plc::Io86aFront::of(&self.pair.b),
+        ]);
     }
 
     /// X, Y, M (8 bytes, bit n = device n), S, then T and C contacts (4
     /// bytes, 1 byte), then D00-D07, T00-T31 and C00-C07 values (2 bytes
     /// each, little-endian), as the last scan left them.
     fn image_into(&self, image: &mut Vec<u8>) {
-        let scan = self.machine.last_scan();
+        let m = &self.pair.a;
+        let scan = m.last_scan();
         image.clear();
         let bits = |kind: fn(u8) -> Bit, count: u8| -> u64 {
             (0..count).fold(0, |acc, n| acc | u64::from(scan.bit(kind(n))) << n)
         };
         image.push(bits(Bit::X, 8) as u8);
-        image.push(self.machine.output_terminals());
+        image.push(m.output_terminals());
         image.extend_from_slice(&bits(Bit::M, 64).to_le_bytes());
         image.push(bits(Bit::S, 8) as u8);
         image.extend_from_slice(&(bits(Bit::T, 32) as u32).to_le_bytes());
@@ -352,16 +442,16 @@ impl Plc for Io86aPlc {
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
         plc::whole_scans(
             steps,
-            self.machine.steps_per_scan() as u64,
-            self.machine.scan_period(),
+            self.pair.a.steps_per_scan() as u64,
+            self.pair.a.scan_period(),
         )
     }
 
     fn serial_open(&mut self) -> Result<String, PlcError> {
-        Ok(self.terminal.prompt(&self.machine))
+        Ok(self.terminal.prompt(&self.pair.a))
     }
 
     fn serial(&mut self, line: &str) -> Result<String, PlcError> {
-        Ok(self.terminal.type_line(&mut self.machine, line))
+        Ok(self.terminal.type_line(&mut self.pair.a, line))
     }
 }

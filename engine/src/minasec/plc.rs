@@ -198,6 +198,10 @@ impl Plc for MinasecPlc {
                     .map_err(PlcError::Panel)
             }
             plc::Command::Minasec(c) => self.machine.apply(c).map_err(PlcError::Panel),
+            plc::Command::LoadLinked(_) => Err(PlcError::NotThisMachine {
+                machine: MachineId::MinasecU,
+                lacks: "linked second device",
+            }),
         }
     }
 
@@ -257,6 +261,22 @@ impl Plc for MinasecPlc {
         for t in scan.timer_elapsed {
             let ms = u32::try_from(t.as_nanos() / 1_000_000).unwrap_or(u32::MAX);
             image.extend_from_slice(&ms.to_le_bytes());
+        }
+    }
+
+    fn running(&self) -> bool {
+        self.machine.powered() && self.machine.mode() == Mode::Run
+    }
+
+    /// The front panel, copied in place.
+    fn front_into(&self, front: &mut plc::Front) {
+        match front {
+            plc::Front::Minasec(panel) => self.machine.panel_into(panel),
+            other => {
+                let mut panel = super::Panel::default();
+                self.machine.panel_into(&mut panel);
+                *other = plc::Front::Minasec(panel);
+            }
         }
     }
 

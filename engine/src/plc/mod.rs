@@ -10,12 +10,14 @@
 //! caller says how far to go.
 
 pub mod error;
+pub mod front;
 
 pub use crate::arduino::ArduinoPlc;
 pub use crate::avr::AvrPlc;
 pub use crate::io86a::Io86aPlc;
 pub use crate::minasec::MinasecPlc;
 pub use error::{DeviceError, PlcError, ProgramProblem, SettingError};
+pub use front::{Front, Io86aFront};
 
 use crate::events::InputValue;
 use crate::limits::MAX_SIM_TIME;
@@ -49,6 +51,10 @@ pub enum Command {
     Run(bool),
     /// MINASEC-U's front panel: switches, buttons, knobs.
     Minasec(minasec::Command),
+    /// IO86A: loads a second device, linked to the first by SETS / RSTS
+    /// (the manual's two-device example); its devices are named `B.X00`.
+    /// Text in the IO86A listing format; an empty text unlinks it.
+    LoadLinked(String),
 }
 
 /// A warning about the loaded program: what it does is legal but
@@ -148,6 +154,15 @@ pub trait Plc {
     /// (replacing its contents; the caller keeps the buffer between
     /// frames), in the machine's own layout (docs/architecture.md).
     fn image_into(&self, image: &mut Vec<u8>);
+
+    /// Whether the program runs: RUN, enabled (the AVR PLC always runs).
+    fn running(&self) -> bool;
+
+    /// Copies what the machine's front shows beyond its devices into
+    /// `front` (replacing it; the caller keeps it between frames).
+    fn front_into(&self, front: &mut Front) {
+        *front = Front::None;
+    }
 
     /// Warnings about the loaded program.
     fn warnings(&self) -> Vec<Warning>;

@@ -250,3 +250,60 @@ fn inputs_are_checked_against_the_machine() {
         );
     }
 }
+
+#[test]
+fn the_io86a_takes_a_linked_second_device() {
+    let mut plc = new_plc(MachineId::Io86a);
+    plc.load_text("LD X00\nSETS Y01\nLD X01\nRSTS Y01\nEND\n")
+        .expect("A");
+    plc.apply(Command::LoadLinked("LD Y01\nOUT Y02\nEND\n".into()))
+        .expect("B");
+    set(plc.as_mut(), "X00", true);
+    settle(plc.as_mut());
+    assert_eq!(read(plc.as_ref(), "B.Y01"), 1, "A's SETS reached B");
+    assert_eq!(read(plc.as_ref(), "B.Y02"), 1, "B runs its own program");
+    assert_eq!(read(plc.as_ref(), "Y01"), 0, "A's own Y01 is untouched");
+    set(plc.as_mut(), "X00", false);
+    set(plc.as_mut(), "X01", true);
+    settle(plc.as_mut());
+    assert_eq!(read(plc.as_ref(), "B.Y02"), 0);
+    // B's inputs are its own.
+    set(plc.as_mut(), "B.X03", true);
+    settle(plc.as_mut());
+    let mut front = engine::plc::Front::None;
+    plc.front_into(&mut front);
+    match front {
+        engine::plc::Front::Io86a([a, b]) => {
+            assert_eq!(b.inputs, 1 << 3);
+            assert_eq!(a.inputs, 1 << 1);
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!(matches!(
+        plc.apply(Command::LoadLinked("BOGUS\n".into())),
+        Err(PlcError::Program(_))
+    ));
+}
+
+#[test]
+fn running_and_fronts() {
+    for id in MachineId::ALL {
+        let mut plc = loaded(id);
+        assert!(
+            plc.running(),
+            "{id} runs after power-up (as the CLI starts it)"
+        );
+        let mut front = engine::plc::Front::None;
+        plc.front_into(&mut front);
+        let expected = match id {
+            MachineId::MinasecU => matches!(front, engine::plc::Front::Minasec(_)),
+            MachineId::Io86a => matches!(front, engine::plc::Front::Io86a(_)),
+            _ => front == engine::plc::Front::None,
+        };
+        assert!(expected, "{id}: {front:?}");
+        if id != MachineId::AvrPlc {
+            plc.apply(Command::Run(false)).expect("stop");
+            assert!(!plc.running(), "{id}");
+        }
+    }
+}
