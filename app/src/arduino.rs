@@ -2,8 +2,10 @@
 //! outputs, the serial monitor, and the program pane in the sketch's
 //! mnemonic text.
 
-use engine::arduino::{monitor, Chip, Machine, PopOrder, Program};
+use engine::arduino::{Chip, Program};
+use engine::events::InputValue;
 use engine::plc::Warning;
+use engine::plc::{ArduinoPlc, Command, Device, Plc};
 use leptos::prelude::*;
 
 use crate::components::console::ConsolePane;
@@ -23,7 +25,9 @@ const KEY: &str = "hashigo.arduino-plc.v1";
 /// What the Arduino workspace's components share.
 #[derive(Clone, Copy)]
 pub struct ArduinoCtx {
-    pub sim: StoredValue<Simulator<Machine>, LocalStorage>,
+    pub sim: StoredValue<Simulator<ArduinoPlc>, LocalStorage>,
+    /// X000-X005 and Y000-Y005, resolved once.
+    pins: [[Device; 6]; 2],
     pub inputs: [RwSignal<bool>; 6],
     pub outputs: [RwSignal<bool>; 6],
     pub enabled: RwSignal<bool>,
@@ -36,11 +40,16 @@ impl ArduinoCtx {
     /// A workspace with the saved text loaded (or the seed's example).
     pub fn new() -> ArduinoCtx {
         let text = storage::saved_string(KEY).unwrap_or_else(|| SELF_HOLD.to_string());
+        let plc = ArduinoPlc::new();
+        // The pin names are the machine's own: they always resolve.
+        let pin = |name: String| plc.device(&name).unwrap_or_else(|_| unreachable!("{name}"));
+        let pins = [
+            std::array::from_fn(|n| pin(format!("X{n:03}"))),
+            std::array::from_fn(|n| pin(format!("Y{n:03}"))),
+        ];
         let ctx = ArduinoCtx {
-            sim: StoredValue::new_local(Simulator::new(Machine::new(
-                &Program::default(),
-                Chip::Atmega328,
-            ))),
+            sim: StoredValue::new_local(Simulator::new(plc)),
+            pins,
             inputs: std::array::from_fn(|_| RwSignal::new(false)),
             outputs: std::array::from_fn(|_| RwSignal::new(false)),
             enabled: RwSignal::new(false),
@@ -57,44 +66,57 @@ impl ArduinoCtx {
         self.sim.with_value(|s| {
             let m = s.machine();
             for n in 0..6 {
-                put(self.inputs[n], m.inputs() >> n & 1 != 0);
-                put(self.outputs[n], m.outputs() >> n & 1 != 0);
+                put(self.inputs[n], m.read(self.pins[0][n]) != 0);
+                put(self.outputs[n], m.read(self.pins[1][n]) != 0);
             }
-            put(self.enabled, m.enabled());
+            put(self.enabled, m.running());
         });
     }
 
     /// Writes the pane's program into EEPROM (as keying it in with `s`)
     /// and enables the PLC; false if it has errors.
     pub fn load(&self) -> bool {
-        let Ok(program) = Program::parse(&self.text.get_untracked(), Chip::Atmega328.capacity())
-        else {
-            return false;
+        let text = self.text.get_untracked();
+        let quirk = if self.sketch_quirk.get_untracked() {
+            "sketch"
+        } else {
+            "none"
         };
-        let quirk = self.sketch_quirk.get_untracked();
+        // Written into EEPROM, then started afresh (the pins as driven stay).
+        let loaded = self
+            .sim
+            .try_update_value(|s| {
+                let m = s.machine_mut();
+                m.load_text(&text)?;
+                m.apply(Command::Setting {
+                    name: "quirk".into(),
+                    value: quirk.into(),
+                })?;
+                m.apply(Command::PowerCycle)?;
+                m.apply(Command::Run(true))
+            })
+            .is_some_and(|r| r.is_ok());
+        self.refresh();
+        loaded
+    }
+
+    /// Drives input X00n.
+    pub fn drive(&self, n: usize, on: bool) {
+        let input = self.pins[0][n];
         self.sim.update_value(|s| {
-            let mut m = Machine::new(&program, Chip::Atmega328);
-            m.set_pop_order(if quirk {
-                PopOrder::Sketch
-            } else {
-                PopOrder::Intended
-            });
-            let inputs = s.machine().inputs();
-            for n in 0..6 {
-                m.set_input(n, inputs >> n & 1 != 0);
-            }
-            m.set_enabled(true);
-            *s.machine_mut() = m;
+            // X000-X005 take 0 and 1: the command cannot be refused.
+            let _ = s
+                .machine_mut()
+                .apply(Command::SetInput(input, InputValue::Int(i64::from(on))));
         });
         self.refresh();
-        true
     }
 
     /// Types a line at the serial monitor.
     pub fn type_line(&self, line: &str) {
         let reply = self
             .sim
-            .try_update_value(|s| monitor::type_line(s.machine_mut(), line))
+            .try_update_value(|s| s.machine_mut().serial(line).unwrap_or_default())
             .unwrap_or_default();
         crate::components::console::append(self.console, &reply);
         self.refresh();
@@ -126,8 +148,7 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
                         aria-pressed=move || on.get().to_string()
                         on:click=move |_| {
                             let v = !on.get_untracked();
-                            ard.sim.update_value(|s| s.machine_mut().set_input(n, v));
-                            ard.refresh();
+                            ard.drive(usize::from(n), v);
                         }
                     >
                         {format!("X{n:03}")}

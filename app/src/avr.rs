@@ -1,8 +1,10 @@
 //! The AVR simplified PLC workspace: the bits the source names (`NAME_R` /
 //! `NAME_B`) as switches and lamps, and the program pane in assembler.
 
-use engine::avr::{scan_ms, BitRef, Machine, Program};
-use engine::plc::Warning;
+use engine::avr::machine::DEFAULT_SCAN;
+use engine::avr::{scan_ms, BitRef, Program};
+use engine::events::InputValue;
+use engine::plc::{AvrPlc, Command, Device, Plc, Warning};
 use leptos::prelude::*;
 
 use crate::components::controls::Led;
@@ -28,6 +30,8 @@ const KEY: &str = "hashigo.avr-plc.v1";
 pub struct NamedBit {
     pub name: String,
     pub bit: BitRef,
+    /// The bit's handle in the machine.
+    pub device: Device,
     pub value: RwSignal<bool>,
     pub driven: RwSignal<Option<bool>>,
 }
@@ -35,7 +39,7 @@ pub struct NamedBit {
 /// What the AVR workspace's components share.
 #[derive(Clone, Copy)]
 pub struct AvrCtx {
-    pub sim: StoredValue<Simulator<Machine>, LocalStorage>,
+    pub sim: StoredValue<Simulator<AvrPlc>, LocalStorage>,
     pub bits: RwSignal<Vec<NamedBit>>,
     pub text: RwSignal<String>,
 }
@@ -45,7 +49,7 @@ impl AvrCtx {
     pub fn new() -> AvrCtx {
         let text = storage::saved_string(KEY).unwrap_or_else(|| SELF_HOLD.to_string());
         let ctx = AvrCtx {
-            sim: StoredValue::new_local(Simulator::new(Machine::new(Program::default()))),
+            sim: StoredValue::new_local(Simulator::new(AvrPlc::new())),
             bits: RwSignal::new(Vec::new()),
             text: RwSignal::new(text),
         };
@@ -58,7 +62,7 @@ impl AvrCtx {
         self.sim.with_value(|s| {
             self.bits.with_untracked(|bits| {
                 for b in bits {
-                    let v = s.machine().bit(b.bit);
+                    let v = s.machine().read(b.device) != 0;
                     if b.value.get_untracked() != v {
                         b.value.set(v);
                     }
@@ -76,25 +80,44 @@ impl AvrCtx {
     /// giving it new signals would leave its lamp and switch bound to the
     /// old ones. A bit no longer named stops being driven.
     pub fn load(&self) -> bool {
-        let scan_ms = self
-            .sim
-            .with_value(|s| scan_ms(s.machine().scan_period()))
-            .unwrap_or(10);
-        let Ok(program) = Program::parse(&self.text.get_untracked(), i64::from(scan_ms)) else {
+        let text = self.text.get_untracked();
+        let Ok(program) = Program::parse(&text, scan()) else {
             return false;
         };
         let old = self.bits.get_untracked();
-        let rows = rows_for(&old, program.names());
-        self.sim.update_value(|s| {
-            let machine = s.machine_mut();
-            for gone in old.iter().filter(|o| !rows.iter().any(|r| r.bit == o.bit)) {
-                machine.release_input(gone.bit);
-            }
-            machine.load(program);
-        });
+        let loaded = self
+            .sim
+            .try_update_value(|s| {
+                let machine = s.machine_mut();
+                machine.load_text(&text)?;
+                for gone in old
+                    .iter()
+                    .filter(|o| !program.names().iter().any(|(_, b)| *b == o.bit))
+                {
+                    machine.apply(Command::ReleaseInput(gone.device))?;
+                }
+                Ok::<_, engine::plc::PlcError>(rows_for(&old, program.names(), machine))
+            })
+            .and_then(Result::ok);
+        let Some(rows) = loaded else {
+            return false;
+        };
         self.bits.set(rows);
         self.refresh();
         true
+    }
+
+    /// Drives (or releases) a named bit.
+    pub fn drive(&self, device: Device, on: Option<bool>) {
+        self.sim.update_value(|s| {
+            let command = match on {
+                Some(on) => Command::SetInput(device, InputValue::Int(i64::from(on))),
+                None => Command::ReleaseInput(device),
+            };
+            // A named bit takes 0 and 1: the command cannot be refused.
+            let _ = s.machine_mut().apply(command);
+        });
+        self.refresh();
     }
 }
 
@@ -104,21 +127,28 @@ impl Default for AvrCtx {
     }
 }
 
+/// The `Scan` symbol the page's AVR runs with (its default scan period).
+fn scan() -> i64 {
+    scan_ms(DEFAULT_SCAN).map_or(10, i64::from)
+}
+
 /// The rows for a program's named bits: an old row whose name and bit
-/// are named again is kept as it is (same signals), the others are new.
-pub fn rows_for(old: &[NamedBit], names: &[(String, BitRef)]) -> Vec<NamedBit> {
+/// are named again is kept as it is (same signals), the others are new;
+/// each row's device is resolved by `plc` once.
+fn rows_for(old: &[NamedBit], names: &[(String, BitRef)], plc: &AvrPlc) -> Vec<NamedBit> {
     names
         .iter()
-        .map(|(name, bit)| {
-            old.iter()
-                .find(|o| &o.name == name && o.bit == *bit)
-                .cloned()
-                .unwrap_or_else(|| NamedBit {
-                    name: name.clone(),
-                    bit: *bit,
-                    value: RwSignal::new(false),
-                    driven: RwSignal::new(None),
-                })
+        .filter_map(|(name, bit)| {
+            if let Some(row) = old.iter().find(|o| &o.name == name && o.bit == *bit) {
+                return Some(row.clone());
+            }
+            Some(NamedBit {
+                name: name.clone(),
+                bit: *bit,
+                device: plc.device(name).ok()?,
+                value: RwSignal::new(false),
+                driven: RwSignal::new(None),
+            })
         })
         .collect()
 }
@@ -130,11 +160,7 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
     let t = move || ctx.lang.get().texts();
     // Errors by line, or whether the program has a TOF (on after power-up).
     let parsed = Memo::new(move |_| {
-        let scan = avr
-            .sim
-            .with_value(|s| scan_ms(s.machine().scan_period()))
-            .unwrap_or(10);
-        Program::parse(&avr.text.get(), i64::from(scan))
+        Program::parse(&avr.text.get(), scan())
             .map(|p| engine::avr::warnings(&p).contains(&Warning::TofOnAtPowerUp))
             .map_err(|e| {
                 e.iter()
@@ -152,12 +178,10 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
                             each=move || avr.bits.get()
                             key=|b| (b.name.clone(), b.bit.register, b.bit.bit)
                             children=move |b: NamedBit| {
-                                let NamedBit { name, bit, value, driven } = b;
+                                let NamedBit { name, bit, device, value, driven } = b;
                                 let drive = move |on: Option<bool>| {
                                     driven.set(on);
-                                    if let Some(on) = on {
-                                        avr.sim.update_value(|s| s.machine_mut().set_input(bit, on));
-                                    }
+                                    avr.drive(device, on);
                                 };
                                 view! {
                                     <tr>

@@ -4,9 +4,8 @@
 
 use std::time::Duration;
 
-use engine::minasec::control::FAST_PERIOD;
-use engine::minasec::{Machine, Program};
-use engine::SimTime;
+use engine::plc::new_plc;
+use engine::MachineId;
 use leptos::prelude::*;
 
 /// The 256-step benchmark program (the seed test program repeated).
@@ -15,15 +14,16 @@ pub const BENCH_PROGRAM: &str = include_str!("../../engine/programs/minasec-u/be
 /// Steps the page runs: 1e6 scans.
 pub const BENCH_STEPS: u64 = 256_000_000;
 
-/// Runs `steps` steps and returns the seconds they took.
+/// Runs `steps` steps and returns the seconds they took (as `hashigo
+/// bench` does: through the machine interface).
 pub fn measure(steps: u64) -> Option<f64> {
-    let program = Program::parse(BENCH_PROGRAM).ok()?;
-    let mut machine = Machine::for_run();
-    machine.load(&program);
+    let mut machine = new_plc(MachineId::MinasecU);
+    machine.load_text(BENCH_PROGRAM).ok()?;
+    let (end, executed) = machine.time_for_steps(steps)?;
     let start = crate::now_ms();
-    machine.run_until(SimTime::from_nanos(steps * FAST_PERIOD.as_nanos()));
+    machine.run_until(end);
     let seconds = (crate::now_ms() - start) / 1000.0;
-    (machine.clocks() == steps).then_some(seconds)
+    (executed == steps).then_some(seconds)
 }
 
 #[component]

@@ -15,7 +15,7 @@ pub mod storage;
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 
-use engine::minasec::Machine;
+use engine::plc::{Command, MinasecPlc, Plc};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::JsCast;
@@ -88,7 +88,10 @@ fn initial_lang() -> Lang {
 pub fn workspace() -> Ctx {
     let lang = initial_lang();
     set_document_lang(lang);
-    let ctx = Ctx::new(Simulator::new(Machine::new()), lang);
+    // The board as it comes out of its box: powered, switch at HALT.
+    let mut board = MinasecPlc::new();
+    let _ = board.apply(Command::Run(false));
+    let ctx = Ctx::new(Simulator::new(board), lang);
     if let Some(kind) = storage::saved_string(storage::MACHINE_KEY)
         .as_deref()
         .and_then(state::MachineKind::from_code)

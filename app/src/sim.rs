@@ -3,42 +3,8 @@
 //! reactive graph; each animation frame advances it and the panel is copied
 //! out into signals.
 
-use engine::io86a::LinkedPair;
-use engine::minasec::{Machine, Panel};
+use engine::plc::Plc;
 use engine::SimTime;
-
-/// Something simulated time can advance.
-pub trait Tick {
-    /// Runs `dt` of simulated time.
-    fn tick(&mut self, dt: SimTime);
-}
-
-impl Tick for Machine {
-    fn tick(&mut self, dt: SimTime) {
-        Machine::tick(self, dt);
-    }
-}
-
-impl Tick for engine::arduino::Machine {
-    fn tick(&mut self, dt: SimTime) {
-        let t = self.now().saturating_add(dt);
-        self.run_until(t);
-    }
-}
-
-impl Tick for engine::avr::Machine {
-    fn tick(&mut self, dt: SimTime) {
-        let t = self.now().saturating_add(dt);
-        self.run_until(t);
-    }
-}
-
-impl Tick for LinkedPair {
-    fn tick(&mut self, dt: SimTime) {
-        let t = self.a.now().saturating_add(dt);
-        self.run_until(t);
-    }
-}
 
 /// How fast simulated time runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -97,12 +63,13 @@ pub struct Pace {
     pub paused: bool,
 }
 
-/// A machine the frame loop advances.
-pub struct Simulator<M = Machine> {
+/// A machine the frame loop advances, reached only through the engine's
+/// [`Plc`] interface.
+pub struct Simulator<M> {
     machine: M,
 }
 
-impl<M: Tick> Simulator<M> {
+impl<M: Plc> Simulator<M> {
     /// A simulator around `machine`.
     pub fn new(machine: M) -> Simulator<M> {
         Simulator { machine }
@@ -144,9 +111,73 @@ impl<M: Tick> Simulator<M> {
     }
 }
 
-impl Simulator<Machine> {
-    /// Copies the front panel into `panel`.
-    pub fn panel_into(&self, panel: &mut Panel) {
-        self.machine.panel_into(panel);
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use engine::plc::AvrPlc;
+
+    fn sim() -> Simulator<AvrPlc> {
+        Simulator::new(AvrPlc::new())
+    }
+
+    fn run(speed: Speed, paused: bool, wall_ms: f64) -> SimTime {
+        let mut s = sim();
+        s.frame(Pace { speed, paused }, wall_ms, || 0.0);
+        s.machine().now()
+    }
+
+    #[test]
+    fn a_frame_runs_its_wall_time_times_the_speed() {
+        assert_eq!(run(Speed::Times(1), false, 16.0), SimTime::from_millis(16));
+        assert_eq!(
+            run(Speed::Times(10), false, 16.0),
+            SimTime::from_millis(160)
+        );
+        assert_eq!(run(Speed::Times(100), false, 0.5), SimTime::from_millis(50));
+    }
+
+    #[test]
+    fn paused_or_odd_frames_run_nothing() {
+        assert_eq!(run(Speed::Times(1), true, 16.0), SimTime::ZERO);
+        for odd in [0.0, -5.0, f64::NAN, f64::INFINITY] {
+            assert_eq!(run(Speed::Times(1), false, odd), SimTime::ZERO, "{odd}");
+        }
+    }
+
+    #[test]
+    fn a_late_frame_catches_up_at_most_the_cap() {
+        assert_eq!(
+            run(Speed::Times(1), false, 5_000.0),
+            SimTime::from_millis(CATCH_UP_CAP_MS as u64)
+        );
+    }
+
+    #[test]
+    fn max_speed_runs_slices_until_the_budget_is_spent() {
+        let mut s = sim();
+        // A wall clock that moves 4 ms per reading: the budget of 10 ms is
+        // spent after three slices.
+        let mut clock = 0.0;
+        let now = move || {
+            clock += 4.0;
+            clock
+        };
+        s.frame(
+            Pace {
+                speed: Speed::Max,
+                paused: false,
+            },
+            16.0,
+            now,
+        );
+        assert_eq!(s.machine().now(), SimTime::from_millis(3 * 20));
+    }
+
+    #[test]
+    fn speeds_read_back_from_their_codes() {
+        for speed in Speed::ALL {
+            assert_eq!(Speed::from_code(&speed.code()), Some(speed));
+        }
+        assert_eq!(Speed::from_code("fast"), None);
     }
 }

@@ -3,6 +3,7 @@
 //! through [`Ctx`], a `Copy` handle in context.
 
 use engine::minasec::{Command, Mode, Panel, Program, TimerId};
+use engine::plc::{self, Front, MinasecPlc, Plc};
 use engine::SimTime;
 use leptos::prelude::*;
 
@@ -168,7 +169,7 @@ impl MachineKind {
 #[derive(Clone, Copy)]
 pub struct Ctx {
     /// The simulator, outside the reactive graph.
-    pub sim: StoredValue<Simulator, LocalStorage>,
+    pub sim: StoredValue<Simulator<MinasecPlc>, LocalStorage>,
     pub panel: PanelSignals,
     pub lang: RwSignal<Lang>,
     /// The machine shown.
@@ -187,7 +188,7 @@ pub struct Ctx {
 
 impl Ctx {
     /// A fresh context around `sim`.
-    pub fn new(sim: Simulator, lang: Lang) -> Ctx {
+    pub fn new(sim: Simulator<MinasecPlc>, lang: Lang) -> Ctx {
         let ctx = Ctx {
             sim: StoredValue::new_local(sim),
             panel: PanelSignals::new(),
@@ -214,7 +215,11 @@ impl Ctx {
     pub fn send(&self, command: Command) -> bool {
         let ok = self
             .sim
-            .try_update_value(|s| s.machine_mut().apply(command).is_ok())
+            .try_update_value(|s| {
+                s.machine_mut()
+                    .apply(plc::Command::Minasec(command))
+                    .is_ok()
+            })
             .unwrap_or(false);
         self.refresh();
         ok
@@ -223,29 +228,28 @@ impl Ctx {
     /// Copies the board's panel into the signals.
     pub fn refresh(&self) {
         self.sim.with_value(|s| {
-            let mut panel = Panel::default();
-            s.panel_into(&mut panel);
             let machine = s.machine();
-            self.panel.sync(
-                &panel,
-                machine.now().as_nanos() / 1_000_000,
-                machine.scans(),
-            );
+            let mut front = Front::Minasec(Panel::default());
+            machine.front_into(&mut front);
+            if let Front::Minasec(panel) = &front {
+                self.panel
+                    .sync(panel, machine.now().as_nanos() / 1_000_000, machine.scans());
+            }
         });
     }
 
     /// Loads the pane's text into the board if it parses; true if loaded.
     pub fn load_text(&self) -> bool {
         let text = self.text.get_untracked();
-        match Parsed::of(&text) {
-            Parsed::Good(program) => {
-                self.sim.update_value(|s| s.machine_mut().load(&program));
-                self.loaded.set(Some(text));
-                self.refresh();
-                true
-            }
-            Parsed::Bad(_) => false,
+        let loaded = self
+            .sim
+            .try_update_value(|s| s.machine_mut().load_text(&text).is_ok())
+            .unwrap_or(false);
+        if loaded {
+            self.loaded.set(Some(text));
+            self.refresh();
         }
+        loaded
     }
 
     /// Saves the program text and the panel settings.

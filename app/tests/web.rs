@@ -13,6 +13,7 @@ use app::i18n::Lang;
 use app::sim::Simulator;
 use app::state::Ctx;
 use app::App;
+use engine::plc::Plc;
 
 wasm_bindgen_test_configure!(run_in_browser);
 
@@ -34,7 +35,12 @@ fn mount_both() -> (Ctx, app::io86a::Io86aCtx, Element) {
     }
     let container = document().create_element("div").unwrap();
     document().body().unwrap().append_child(&container).unwrap();
-    let ctx = Ctx::new(Simulator::new(engine::minasec::Machine::new()), Lang::En);
+    let ctx = Ctx::new(
+        Simulator::new(engine::plc::MinasecPlc::with(
+            engine::minasec::Machine::new(),
+        )),
+        Lang::En,
+    );
     let io = app::io86a::Io86aCtx::new();
     let ard = app::arduino::ArduinoCtx::new();
     let avr = app::avr::AvrCtx::new();
@@ -102,12 +108,20 @@ async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
     pointer(&x02, "pointerup");
     settle().await;
     assert_eq!(attr(&c, "input-X02", "aria-pressed"), "true");
-    assert_eq!(ctx.sim.with_value(|s| s.machine().input_terminals()), 0b100);
+    assert_eq!(
+        ctx.sim
+            .with_value(|s| s.machine().machine().input_terminals()),
+        0b100
+    );
     pointer(&x02, "pointerdown");
     pointer(&x02, "pointerup");
     settle().await;
     assert_eq!(attr(&c, "input-X02", "aria-pressed"), "false");
-    assert_eq!(ctx.sim.with_value(|s| s.machine().input_terminals()), 0);
+    assert_eq!(
+        ctx.sim
+            .with_value(|s| s.machine().machine().input_terminals()),
+        0
+    );
 }
 
 #[wasm_bindgen_test]
@@ -143,7 +157,7 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
     assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.10");
     let delay = ctx
         .sim
-        .with_value(|s| s.machine().timer(TimerId::T0).delay());
+        .with_value(|s| s.machine().machine().timer(TimerId::T0).delay());
     assert_eq!(delay, SimTime::from_millis(1100));
     key(&rv1, "keydown", "ArrowDown");
     settle().await;
@@ -157,13 +171,20 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
     key(&ones, "keydown", "ArrowUp");
     settle().await;
     assert_eq!(attr(&c, "counter-set-ones", "aria-valuenow"), "2");
-    assert_eq!(ctx.sim.with_value(|s| s.machine().counter().set_value()), 2);
+    assert_eq!(
+        ctx.sim
+            .with_value(|s| s.machine().machine().counter().set_value()),
+        2
+    );
 }
 
 #[wasm_bindgen_test]
 async fn the_clock_button_steps_one_instruction_per_press() {
     let (ctx, c) = mount();
-    assert_eq!(ctx.sim.with_value(|s| s.machine().mode()), Mode::Halt);
+    assert_eq!(
+        ctx.sim.with_value(|s| s.machine().machine().mode()),
+        Mode::Halt
+    );
     let button = find(&c, "clock-button");
     pointer(&button, "pointerdown");
     settle().await;
@@ -219,7 +240,7 @@ async fn opening_the_seed_example_sets_the_panel_and_can_be_undone() {
     assert_eq!(attr(&c, "rv2", "aria-valuenow"), "1.0");
     assert_eq!(attr(&c, "counter-set-tens", "aria-valuenow"), "1");
     assert_eq!(select.value(), "", "the select returns to its prompt");
-    let memory = ctx.sim.with_value(|s| *s.machine().memory());
+    let memory = ctx.sim.with_value(|s| *s.machine().machine().memory());
     assert_eq!(memory[1], 0b100_01000, "loaded into the board");
     find(&c, "example-undo").click();
     settle().await;
@@ -277,7 +298,9 @@ async fn the_io86a_workspace_runs_its_terminal() {
     for line in ["LD M57", "OUT Y05", "END", "Q", "R"] {
         io.type_line(line);
     }
-    let _ = io.with_device(0, |m| m.run_until(m.now() + SimTime::from_millis(5)));
+    io.sim
+        .update_value(|s| s.machine_mut().tick(SimTime::from_millis(5)));
+    io.refresh();
     settle().await;
     assert_eq!(attr(&c, "io86a-lamp-Y05", "data-on"), "1");
     let screen = find(&c, "io86a-terminal")

@@ -3,8 +3,10 @@
 
 pub mod view;
 
-use engine::io86a::peripherals::{InputMode, IrMode, OutputSignal};
-use engine::io86a::{LinkedPair, Machine, Program, Terminal};
+use engine::events::InputValue;
+use engine::io86a::peripherals::OutputSignal;
+use engine::io86a::Program;
+use engine::plc::{Command, Front, Io86aFront, Io86aPlc, Plc};
 use leptos::prelude::*;
 
 use crate::sim::Simulator;
@@ -51,30 +53,31 @@ impl DeviceSignals {
         }
     }
 
-    fn sync(&self, m: &Machine) {
+    fn sync(&self, m: &Io86aFront) {
         for n in 0..8 {
-            put(self.inputs[n], m.input_terminals() >> n & 1 != 0);
-            put(self.d[n], m.last_scan().d[n]);
+            put(self.inputs[n], m.inputs >> n & 1 != 0);
+            put(self.d[n], m.d[n]);
         }
         for n in 0..6 {
-            put(self.lamps[n], m.output_terminals() >> n & 1 != 0);
+            put(self.lamps[n], m.outputs >> n & 1 != 0);
         }
         for i in 0..2 {
-            put(self.analog_mv[i], m.analog(i));
-            put(self.analog[i], m.settings().analog[i] != InputMode::Digital);
-            put(self.outputs[i], m.output_signal(i));
+            put(self.analog_mv[i], m.analog_mv[i]);
+            put(self.analog[i], m.analog[i]);
+            if let Some(signal) = m.signals[i] {
+                put(self.outputs[i], signal);
+            }
         }
-        put(self.ir, m.settings().ir != IrMode::Digital);
-        put(self.running, m.running());
+        put(self.ir, m.ir);
+        put(self.running, m.running);
     }
 }
 
 /// Everything the IO86A workspace's components share.
 #[derive(Clone, Copy)]
 pub struct Io86aCtx {
-    pub sim: StoredValue<Simulator<LinkedPair>, LocalStorage>,
-    /// Device A's serial terminal.
-    pub terminal: StoredValue<Terminal, LocalStorage>,
+    /// Device A, and device B linked to it, with A's serial terminal.
+    pub sim: StoredValue<Simulator<Io86aPlc>, LocalStorage>,
     pub devices: [DeviceSignals; 2],
     /// What device A's terminal has sent (CR LF as LF).
     pub console: RwSignal<String>,
@@ -89,12 +92,8 @@ pub struct Io86aCtx {
 impl Io86aCtx {
     /// A workspace restored from autosave: each text that parses is loaded.
     pub fn new() -> Io86aCtx {
-        let empty = || Machine::new(Program::default());
-        let pair = LinkedPair::new(empty(), empty());
-        let terminal = Terminal::new(&pair.a);
         let ctx = Io86aCtx {
-            sim: StoredValue::new_local(Simulator::new(pair)),
-            terminal: StoredValue::new_local(terminal),
+            sim: StoredValue::new_local(Simulator::new(Io86aPlc::new())),
             devices: [DeviceSignals::new(), DeviceSignals::new()],
             console: RwSignal::new(String::new()),
             texts: [
@@ -118,71 +117,79 @@ impl Io86aCtx {
             ctx.load(device);
         }
         let prompt = ctx
-            .terminal
-            .with_value(|t| ctx.sim.with_value(|s| t.prompt(&s.machine().a)));
+            .sim
+            .try_update_value(|s| s.machine_mut().serial_open().unwrap_or_default())
+            .unwrap_or_default();
         ctx.console.set(prompt);
         ctx
     }
 
-    /// Runs `f` on device `i` (0 = A, 1 = B), then refreshes the signals;
-    /// `None` if the workspace is gone.
-    pub fn with_device<R>(&self, i: usize, f: impl FnOnce(&mut Machine) -> R) -> Option<R> {
-        let r = self.sim.try_update_value(|s| {
-            let pair = s.machine_mut();
-            f(if i == 0 { &mut pair.a } else { &mut pair.b })
-        });
+    /// Drives input `pin` (`X00`…) of device `i` (0 = A, 1 = B) to
+    /// `value`; false when the device refuses it (a voltage on a digital
+    /// input).
+    pub fn drive(&self, i: usize, pin: &str, value: InputValue) -> bool {
+        let name = if i == 0 {
+            pin.to_string()
+        } else {
+            format!("B.{pin}")
+        };
+        let ok = self
+            .sim
+            .try_update_value(|s| {
+                let m = s.machine_mut();
+                let device = m.device(&name)?;
+                m.apply(Command::SetInput(device, value))
+            })
+            .is_some_and(|r| r.is_ok());
         self.refresh();
-        r
+        ok
     }
 
     /// Copies both devices into the signals that changed.
     pub fn refresh(&self) {
         self.sim.with_value(|s| {
-            self.devices[0].sync(&s.machine().a);
-            self.devices[1].sync(&s.machine().b);
+            let mut front = Front::None;
+            s.machine().front_into(&mut front);
+            if let Front::Io86a([a, b]) = &front {
+                self.devices[0].sync(a);
+                self.devices[1].sync(b);
+            }
         });
     }
 
-    /// Parses device `i`'s pane and, if good, loads it and runs it; the
-    /// errors (by line) go to the pane either way.
+    /// Parses device `i`'s pane and, if good, loads it and runs it from
+    /// the first scan; the errors (by line) go to the pane either way.
     pub fn load(&self, i: usize) -> bool {
         let text = self.texts[i].get_untracked();
-        match Program::parse(&text) {
-            Ok(program) => {
-                self.errors[i].set(Vec::new());
-                let _ = self.with_device(i, |m| {
-                    m.set_running(false);
-                    m.load(program);
-                    m.set_running(true);
-                });
-                if i == 0 {
-                    // The terminal edits what is loaded.
-                    let terminal = self.sim.with_value(|s| Terminal::new(&s.machine().a));
-                    self.terminal.set_value(terminal);
-                }
-                true
-            }
-            Err(errors) => {
-                self.errors[i].set(
-                    errors
-                        .iter()
-                        .map(|e| (e.line, e.error.to_string()))
-                        .collect(),
-                );
-                false
-            }
+        if let Err(errors) = Program::parse(&text) {
+            self.errors[i].set(
+                errors
+                    .iter()
+                    .map(|e| (e.line, e.error.to_string()))
+                    .collect(),
+            );
+            return false;
         }
+        self.errors[i].set(Vec::new());
+        let loaded = self.sim.try_update_value(|s| {
+            let m = s.machine_mut();
+            if i == 0 {
+                m.apply(Command::Run(false))?;
+                m.load_text(&text)?;
+                m.apply(Command::Run(true))
+            } else {
+                m.apply(Command::LoadLinked(text))
+            }
+        });
+        self.refresh();
+        loaded.is_some_and(|r| r.is_ok())
     }
 
     /// Types a line at device A's terminal.
     pub fn type_line(&self, line: &str) {
         let reply = self
             .sim
-            .try_update_value(|s| {
-                let a = &mut s.machine_mut().a;
-                self.terminal.try_update_value(|t| t.type_line(a, line))
-            })
-            .flatten()
+            .try_update_value(|s| s.machine_mut().serial(line).unwrap_or_default())
             .unwrap_or_default();
         crate::components::console::append(self.console, &reply);
         self.refresh();

@@ -1,6 +1,7 @@
 //! The IO86A workspace's components: the 18-pin chip, its peripherals, the
 //! serial terminal and the program panes.
 
+use engine::events::InputValue;
 use engine::io86a::peripherals::OutputSignal;
 use engine::io86a::Program;
 use leptos::prelude::*;
@@ -149,7 +150,7 @@ fn PinRow(device: usize, number: u8, pin: Pin, right: bool) -> impl IntoView {
                     aria-pressed=move || on.get().to_string()
                     on:click=move |_| {
                         let v = !on.get_untracked();
-                        let _ = io.with_device(device, |m| m.set_input(n, v));
+                        io.drive(device, &format!("X{n:02}"), InputValue::Int(i64::from(v)));
                     }
                 >
                     {format!("X{n:02}")}
@@ -203,7 +204,7 @@ fn Peripherals(device: usize) -> impl IntoView {
                         prop:value=move || d.analog_mv[i].get().to_string()
                         on:input=move |e| {
                             let mv = event_target_value(&e).parse::<i64>().unwrap_or(0);
-                            let _ = io.with_device(device, |m| m.set_analog(i, mv));
+                            io.drive(device, &format!("X0{}", 4 + i), InputValue::Millivolts(mv));
                         }
                     />
                     <span>
@@ -258,7 +259,8 @@ fn Peripherals(device: usize) -> impl IntoView {
         .iter()
         .map(|&(name, frame)| {
             let press = move |on: bool| {
-                io.with_device(device, |m| m.set_ir(on.then_some(frame)));
+                let frame = if on { i64::from(frame) } else { 0 };
+                io.drive(device, "X07", InputValue::Int(frame));
             };
             view! {
                 <button

@@ -146,6 +146,9 @@ impl Plc for ArduinoPlc {
                     .set_input(device.0 as u8, value == InputValue::Int(1));
                 Ok(())
             }
+            plc::Command::ReleaseInput(device) => {
+                self.apply(plc::Command::SetInput(device, InputValue::Int(0)))
+            }
             plc::Command::Setting { name, value } => {
                 Ok(self.machine.apply_setting(name.trim(), value.trim())?)
             }

@@ -117,6 +117,11 @@ impl Plc for AvrPlc {
                     .set_input(AvrPlc::bit(device.0), value == InputValue::Int(1));
                 Ok(())
             }
+            plc::Command::ReleaseInput(device) => {
+                self.check_input(device, InputValue::Int(0))?;
+                self.machine.release_input(AvrPlc::bit(device.0));
+                Ok(())
+            }
             plc::Command::Setting { name, value } => {
                 Ok(self.machine.apply_setting(name.trim(), value.trim())?)
             }

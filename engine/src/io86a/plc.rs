@@ -260,6 +260,9 @@ impl Plc for Io86aPlc {
                 }
                 Ok(())
             }
+            plc::Command::ReleaseInput(device) => {
+                self.apply(plc::Command::SetInput(device, InputValue::Int(0)))
+            }
             plc::Command::Setting { name, value } => {
                 let (name, m) = match name.trim().strip_prefix("B.") {
                     Some(rest) => (rest, &mut self.pair.b),

@@ -110,6 +110,14 @@ impl MinasecPlc {
         }
     }
 
+    /// `machine` (as it is: switch, knobs, memory) as a [`Plc`].
+    pub fn with(machine: Machine) -> MinasecPlc {
+        MinasecPlc {
+            machine,
+            program: Program::erased(),
+        }
+    }
+
     /// The board.
     pub fn machine(&self) -> &Machine {
         &self.machine
@@ -175,6 +183,9 @@ impl Plc for MinasecPlc {
                     n => Command::SetInput(n as u8, on),
                 };
                 self.machine.apply(command).map_err(PlcError::Panel)
+            }
+            plc::Command::ReleaseInput(device) => {
+                self.apply(plc::Command::SetInput(device, InputValue::Int(0)))
             }
             plc::Command::Setting { name, value } => {
                 Ok(self.machine.apply_setting(name.trim(), value.trim())?)

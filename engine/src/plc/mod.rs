@@ -42,6 +42,9 @@ pub enum Command {
         /// Its value, in the setting's own words.
         value: String,
     },
+    /// Stops driving an input: the AVR PLC's bit is left to the program;
+    /// a terminal input (the other machines) goes off.
+    ReleaseInput(Device),
     /// Power off, then on: volatile state cleared; the program, the
     /// settings and the inputs as they are stay. Simulated time goes on.
     PowerCycle,
