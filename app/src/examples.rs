@@ -3,33 +3,33 @@
 use engine::minasec::SEED_TEST_PROGRAM;
 use leptos::prelude::*;
 
-use crate::state::Ctx;
+use crate::minasec::MinasecCtx;
 
 /// Opens example `id` (`seed-test`): its text replaces the pane's, it is
 /// loaded into the board, and the panel takes the example's settings. The
 /// replaced text is kept for [`undo`].
-pub fn open(ctx: Ctx, id: &str) {
+pub fn open(board: MinasecCtx, id: &str) {
     if id != "seed-test" {
         return;
     }
-    let previous = ctx.text.get_untracked();
+    let previous = board.text.get_untracked();
     // Keep the replaced text for undo when there is something to lose.
     if !previous.trim().is_empty() && previous != SEED_TEST_PROGRAM {
-        ctx.before_example.set(Some(previous));
+        board.before_example.set(Some(previous));
     }
-    ctx.text.set(SEED_TEST_PROGRAM.to_string());
-    ctx.load_text();
+    board.text.set(SEED_TEST_PROGRAM.to_string());
+    board.load_text();
     // The book's panel: RV1 almost fully on (≈ 1.1 s), RV2 at 0 (1 s),
     // rotary switches at 1 and 0.
-    ctx.apply_settings(1100, 1000, 1, 0);
-    ctx.save();
+    board.apply_settings(1100, 1000, 1, 0);
+    board.save();
 }
 
 /// Puts back the text an example replaced.
-pub fn undo(ctx: Ctx) {
-    if let Some(previous) = ctx.before_example.get_untracked() {
-        ctx.text.set(previous);
-        ctx.before_example.set(None);
-        ctx.save();
+pub fn undo(board: MinasecCtx) {
+    if let Some(previous) = board.before_example.get_untracked() {
+        board.text.set(previous);
+        board.before_example.set(None);
+        board.save();
     }
 }

@@ -8,25 +8,23 @@ pub mod components;
 pub mod examples;
 pub mod i18n;
 pub mod io86a;
+pub mod minasec;
 pub mod sim;
 pub mod state;
 pub mod storage;
+pub mod workspaces;
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 
-use engine::plc::{Command, MinasecPlc, Plc};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::JsCast;
 
-use components::board::Board;
 use components::header::{set_document_lang, Header};
-use components::program::ProgramPane;
 use i18n::Lang;
-use sim::Simulator;
 use state::Ctx;
-use storage::Restored;
+use workspaces::Workspaces;
 
 /// Starts the page: the benchmark when the URL asks for `?bench`, else the
 /// workspace with its simulation loop.
@@ -42,12 +40,10 @@ pub fn start() {
         leptos::mount::mount_to_body(bench::BenchPage);
         return;
     }
-    let ctx = workspace();
-    let io = io86a::Io86aCtx::new();
-    let ard = arduino::ArduinoCtx::new();
-    let avr = avr::AvrCtx::new();
-    leptos::mount::mount_to_body(move || view! { <App ctx=ctx io=io ard=ard avr=avr /> });
-    start_loop(ctx, io, ard, avr);
+    let ctx = page();
+    let workspaces = Workspaces::restore(ctx);
+    leptos::mount::mount_to_body(move || view! { <App ctx=ctx workspaces=workspaces /> });
+    start_loop(ctx, workspaces);
 }
 
 /// A panic must not leave a dead page: say so, in both languages.
@@ -84,56 +80,25 @@ fn initial_lang() -> Lang {
         })
 }
 
-/// A workspace restored from autosave (or fresh).
-pub fn workspace() -> Ctx {
+/// The page's state: the language and the machine shown, remembered.
+pub fn page() -> Ctx {
     let lang = initial_lang();
     set_document_lang(lang);
-    // The board as it comes out of its box: powered, switch at HALT.
-    let mut board = MinasecPlc::new();
-    let _ = board.apply(Command::Run(false));
-    let ctx = Ctx::new(Simulator::new(board), lang);
+    let ctx = Ctx::new(lang);
     if let Some(kind) = storage::saved_string(storage::MACHINE_KEY)
         .as_deref()
         .and_then(state::MachineKind::from_code)
     {
         ctx.machine.set(kind);
     }
-    let texts = lang.texts();
-    match storage::restore() {
-        Restored::Saved(saved) => {
-            ctx.text.set(saved.program);
-            ctx.apply_settings(
-                saved.rv1_ms,
-                saved.rv2_ms,
-                saved.preset_tens,
-                saved.preset_ones,
-            );
-            // Program memory is battery-backed: the board keeps what was
-            // loaded. A text with errors stays in the pane, unloaded.
-            ctx.load_text();
-        }
-        Restored::Corrupt { kept_as } => {
-            ctx.notice
-                .set(Some(format!("{} {kept_as}", texts.corrupt_saved)));
-        }
-        Restored::Unavailable => ctx.notice.set(Some(texts.storage_unavailable.to_string())),
-        Restored::Nothing => {}
-    }
     ctx
 }
 
 /// The page: header, notices, and the chosen machine's workspace.
 #[component]
-pub fn App(
-    ctx: Ctx,
-    io: io86a::Io86aCtx,
-    ard: arduino::ArduinoCtx,
-    avr: avr::AvrCtx,
-) -> impl IntoView {
+pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
     provide_context(ctx);
-    provide_context(io);
-    provide_context(ard);
-    provide_context(avr);
+    workspaces.provide();
     view! {
         <ErrorBoundary fallback=move |_| {
             view! { <div class="fatal" role="alert">{move || ctx.lang.get().texts().crashed}</div> }
@@ -144,20 +109,7 @@ pub fn App(
                     {move || ctx.notice.get().unwrap_or_default()}
                 </div>
             </Show>
-            {move || match ctx.machine.get() {
-                state::MachineKind::MinasecU => {
-                    view! {
-                        <main class="workspace">
-                            <Board />
-                            <ProgramPane />
-                        </main>
-                    }
-                        .into_any()
-                }
-                state::MachineKind::Io86a => view! { <io86a::view::Io86aWorkspace io=io /> }.into_any(),
-                state::MachineKind::ArduinoPlc => view! { <arduino::ArduinoWorkspace ard=ard /> }.into_any(),
-                state::MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=avr /> }.into_any(),
-            }}
+            {move || workspaces.view(ctx.machine.get())}
         </ErrorBoundary>
     }
 }
@@ -172,35 +124,14 @@ pub fn now_ms() -> f64 {
 /// The simulation loop: each animation frame advances the simulator by the
 /// frame's wall time (at the chosen speed, capped) and copies the panel into
 /// the signals that changed. Runs for the page's life.
-pub fn start_loop(ctx: Ctx, io: io86a::Io86aCtx, ard: arduino::ArduinoCtx, avr: avr::AvrCtx) {
+pub fn start_loop(ctx: Ctx, workspaces: Workspaces) {
     type FrameFn = Closure<dyn FnMut(f64)>;
     let slot: Rc<RefCell<Option<FrameFn>>> = Rc::new(RefCell::new(None));
     let again = Rc::clone(&slot);
     let last = Cell::new(None::<f64>);
     *slot.borrow_mut() = Some(Closure::new(move |timestamp: f64| {
         let wall_ms = last.replace(Some(timestamp)).map_or(0.0, |l| timestamp - l);
-        let pace = sim::Pace {
-            speed: ctx.speed.get_untracked(),
-            paused: ctx.paused.get_untracked(),
-        };
-        match ctx.machine.get_untracked() {
-            state::MachineKind::MinasecU => {
-                ctx.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                ctx.refresh();
-            }
-            state::MachineKind::Io86a => {
-                io.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                io.refresh();
-            }
-            state::MachineKind::ArduinoPlc => {
-                ard.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                ard.refresh();
-            }
-            state::MachineKind::AvrPlc => {
-                avr.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                avr.refresh();
-            }
-        }
+        workspaces.frame(ctx.machine.get_untracked(), ctx.pace(), wall_ms, now_ms);
         if let Some(f) = again.borrow().as_ref() {
             request_frame(f);
         }

@@ -2,14 +2,11 @@
 //! signal per panel element, and the editor's state. Components reach it
 //! through [`Ctx`], a `Copy` handle in context.
 
-use engine::minasec::{Command, Mode, Panel, Program, TimerId};
-use engine::plc::{self, Front, MinasecPlc, Plc};
-use engine::SimTime;
+use engine::minasec::{Mode, Panel, Program};
 use leptos::prelude::*;
 
 use crate::i18n::Lang;
-use crate::sim::{Simulator, Speed};
-use crate::storage::{self, Saved};
+use crate::sim::Speed;
 
 /// Sets `signal` to `value` only if it differs, so only the elements that
 /// show a changed value repaint.
@@ -54,8 +51,15 @@ pub struct PanelSignals {
     pub scans: RwSignal<u64>,
 }
 
+impl Default for PanelSignals {
+    fn default() -> Self {
+        PanelSignals::new()
+    }
+}
+
 impl PanelSignals {
-    fn new() -> PanelSignals {
+    /// Every element dark, switches off.
+    pub fn new() -> PanelSignals {
         PanelSignals {
             power: RwSignal::new(false),
             mode: RwSignal::new(Mode::Halt),
@@ -165,44 +169,30 @@ impl MachineKind {
     }
 }
 
-/// Everything components share; `Copy`, provided as context.
+/// The page's own state, shared by every workspace; `Copy`, provided as
+/// context. Each machine's workspace has a context of its own
+/// (`crate::workspaces`).
 #[derive(Clone, Copy)]
 pub struct Ctx {
-    /// The simulator, outside the reactive graph.
-    pub sim: StoredValue<Simulator<MinasecPlc>, LocalStorage>,
-    pub panel: PanelSignals,
     pub lang: RwSignal<Lang>,
     /// The machine shown.
     pub machine: RwSignal<MachineKind>,
     pub speed: RwSignal<Speed>,
     pub paused: RwSignal<bool>,
-    /// The program pane's text.
-    pub text: RwSignal<String>,
-    /// The text last loaded into the board.
-    pub loaded: RwSignal<Option<String>>,
-    /// The text before an example replaced it, for undo.
-    pub before_example: RwSignal<Option<String>>,
     /// A message about saved data (corrupt, storage unavailable).
     pub notice: RwSignal<Option<String>>,
 }
 
 impl Ctx {
-    /// A fresh context around `sim`.
-    pub fn new(sim: Simulator<MinasecPlc>, lang: Lang) -> Ctx {
-        let ctx = Ctx {
-            sim: StoredValue::new_local(sim),
-            panel: PanelSignals::new(),
+    /// The page in `lang`, showing MINASEC-U, at ×1, running.
+    pub fn new(lang: Lang) -> Ctx {
+        Ctx {
             lang: RwSignal::new(lang),
             machine: RwSignal::new(MachineKind::MinasecU),
             speed: RwSignal::new(Speed::Times(1)),
             paused: RwSignal::new(false),
-            text: RwSignal::new(String::new()),
-            loaded: RwSignal::new(None),
-            before_example: RwSignal::new(None),
             notice: RwSignal::new(None),
-        };
-        ctx.refresh();
-        ctx
+        }
     }
 
     /// The context provided by [`crate::App`].
@@ -210,68 +200,11 @@ impl Ctx {
         expect_context::<Ctx>()
     }
 
-    /// Operates a panel control and shows the result at once (even paused).
-    /// Returns whether the board took the command.
-    pub fn send(&self, command: Command) -> bool {
-        let ok = self
-            .sim
-            .try_update_value(|s| {
-                s.machine_mut()
-                    .apply(plc::Command::Minasec(command))
-                    .is_ok()
-            })
-            .unwrap_or(false);
-        self.refresh();
-        ok
-    }
-
-    /// Copies the board's panel into the signals.
-    pub fn refresh(&self) {
-        self.sim.with_value(|s| {
-            let machine = s.machine();
-            let mut front = Front::Minasec(Panel::default());
-            machine.front_into(&mut front);
-            if let Front::Minasec(panel) = &front {
-                self.panel
-                    .sync(panel, machine.now().as_nanos() / 1_000_000, machine.scans());
-            }
-        });
-    }
-
-    /// Loads the pane's text into the board if it parses; true if loaded.
-    pub fn load_text(&self) -> bool {
-        let text = self.text.get_untracked();
-        let loaded = self
-            .sim
-            .try_update_value(|s| s.machine_mut().load_text(&text).is_ok())
-            .unwrap_or(false);
-        if loaded {
-            self.loaded.set(Some(text));
-            self.refresh();
+    /// The pace the frame loop runs the shown workspace at.
+    pub fn pace(&self) -> crate::sim::Pace {
+        crate::sim::Pace {
+            speed: self.speed.get_untracked(),
+            paused: self.paused.get_untracked(),
         }
-        loaded
-    }
-
-    /// Saves the program text and the panel settings.
-    pub fn save(&self) {
-        let saved = Saved {
-            program: self.text.get_untracked(),
-            rv1_ms: self.panel.delays_ms[0].get_untracked(),
-            rv2_ms: self.panel.delays_ms[1].get_untracked(),
-            preset_tens: self.panel.preset[0].get_untracked(),
-            preset_ones: self.panel.preset[1].get_untracked(),
-        };
-        if !storage::save(&saved) {
-            let texts = self.lang.get_untracked().texts();
-            self.notice.set(Some(texts.storage_unavailable.to_string()));
-        }
-    }
-
-    /// Applies saved panel settings; values out of range are refused by the
-    /// board and left as they were.
-    pub fn apply_settings(&self, rv1_ms: u64, rv2_ms: u64, tens: u8, ones: u8) {
-        self.send(Command::SetDelay(TimerId::T0, SimTime::from_millis(rv1_ms)));
-        self.send(Command::SetDelay(TimerId::T1, SimTime::from_millis(rv2_ms)));
-        self.send(Command::SetCounterPreset(tens, ones));
     }
 }

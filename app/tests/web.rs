@@ -10,8 +10,10 @@ use wasm_bindgen_test::*;
 use web_sys::{Element, HtmlElement};
 
 use app::i18n::Lang;
+use app::minasec::MinasecCtx;
 use app::sim::Simulator;
 use app::state::Ctx;
+use app::workspaces::Workspaces;
 use app::App;
 use engine::plc::Plc;
 
@@ -23,34 +25,37 @@ fn document() -> web_sys::Document {
 
 /// Mounts a fresh workspace (no frame loop: tests advance time themselves)
 /// into its own container and returns the context and the container.
-fn mount() -> (Ctx, Element) {
-    let (ctx, _io, container) = mount_both();
-    (ctx, container)
+fn mount() -> (Ctx, MinasecCtx, Element) {
+    let (ctx, board, _io, container) = mount_both();
+    (ctx, board, container)
 }
 
 /// Like [`mount`], also returning the IO86A workspace's context.
-fn mount_both() -> (Ctx, app::io86a::Io86aCtx, Element) {
+fn mount_both() -> (Ctx, MinasecCtx, app::io86a::Io86aCtx, Element) {
     if let Some(store) = web_sys::window().unwrap().local_storage().unwrap() {
         store.clear().unwrap();
     }
     let container = document().create_element("div").unwrap();
     document().body().unwrap().append_child(&container).unwrap();
-    let ctx = Ctx::new(
-        Simulator::new(engine::plc::MinasecPlc::with(
-            engine::minasec::Machine::new(),
-        )),
-        Lang::En,
-    );
-    let io = app::io86a::Io86aCtx::new();
-    let ard = app::arduino::ArduinoCtx::new();
-    let avr = app::avr::AvrCtx::new();
+    let ctx = Ctx::new(Lang::En);
+    let workspaces = Workspaces {
+        minasec: MinasecCtx::new(
+            ctx,
+            Simulator::new(engine::plc::MinasecPlc::with(
+                engine::minasec::Machine::new(),
+            )),
+        ),
+        io86a: app::io86a::Io86aCtx::new(),
+        arduino: app::arduino::ArduinoCtx::new(),
+        avr: app::avr::AvrCtx::new(),
+    };
     let html: HtmlElement = container.clone().unchecked_into();
     let handle = leptos::mount::mount_to(
         html,
-        move || view! { <App ctx=ctx io=io ard=ard avr=avr /> },
+        move || view! { <App ctx=ctx workspaces=workspaces /> },
     );
     handle.forget();
-    (ctx, io, container)
+    (ctx, workspaces.minasec, workspaces.io86a, container)
 }
 
 fn find(container: &Element, testid: &str) -> HtmlElement {
@@ -102,14 +107,15 @@ fn change(target: &HtmlElement, kind: &str) {
 
 #[wasm_bindgen_test]
 async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
-    let (ctx, c) = mount();
+    let (_ctx, board, c) = mount();
     let x02 = find(&c, "input-X02");
     pointer(&x02, "pointerdown");
     pointer(&x02, "pointerup");
     settle().await;
     assert_eq!(attr(&c, "input-X02", "aria-pressed"), "true");
     assert_eq!(
-        ctx.sim
+        board
+            .sim
             .with_value(|s| s.machine().machine().input_terminals()),
         0b100
     );
@@ -118,7 +124,8 @@ async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
     settle().await;
     assert_eq!(attr(&c, "input-X02", "aria-pressed"), "false");
     assert_eq!(
-        ctx.sim
+        board
+            .sim
             .with_value(|s| s.machine().machine().input_terminals()),
         0
     );
@@ -126,16 +133,17 @@ async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
 
 #[wasm_bindgen_test]
 async fn lamps_and_leds_follow_the_machine_without_being_replaced() {
-    let (ctx, c) = mount();
-    ctx.text.set("LD X00\nST Y03\n".to_string());
-    assert!(ctx.load_text());
-    ctx.send(Command::SetInput(0, true));
-    ctx.send(Command::SetMode(Mode::Run));
+    let (_ctx, board, c) = mount();
+    board.text.set("LD X00\nST Y03\n".to_string());
+    assert!(board.load_text());
+    board.send(Command::SetInput(0, true));
+    board.send(Command::SetMode(Mode::Run));
     let lamp_before = find(&c, "lamp-Y03");
     assert_eq!(attr(&c, "lamp-Y03", "data-on"), "0");
-    ctx.sim
+    board
+        .sim
         .update_value(|s| s.machine_mut().tick(SimTime::from_millis(20)));
-    ctx.refresh();
+    board.refresh();
     settle().await;
     assert_eq!(attr(&c, "lamp-Y03", "data-on"), "1");
     assert!(
@@ -147,7 +155,7 @@ async fn lamps_and_leds_follow_the_machine_without_being_replaced() {
 
 #[wasm_bindgen_test]
 async fn knobs_are_sliders_driven_by_the_keyboard() {
-    let (ctx, c) = mount();
+    let (_ctx, board, c) = mount();
     let rv1 = find(&c, "rv1");
     assert_eq!(attr(&c, "rv1", "role"), "slider");
     assert_eq!(attr(&c, "rv1", "aria-valuemin"), "0.10");
@@ -155,7 +163,7 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
     key(&rv1, "keydown", "End");
     settle().await;
     assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.10");
-    let delay = ctx
+    let delay = board
         .sim
         .with_value(|s| s.machine().machine().timer(TimerId::T0).delay());
     assert_eq!(delay, SimTime::from_millis(1100));
@@ -172,7 +180,8 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
     settle().await;
     assert_eq!(attr(&c, "counter-set-ones", "aria-valuenow"), "2");
     assert_eq!(
-        ctx.sim
+        board
+            .sim
             .with_value(|s| s.machine().machine().counter().set_value()),
         2
     );
@@ -180,9 +189,9 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
 
 #[wasm_bindgen_test]
 async fn the_clock_button_steps_one_instruction_per_press() {
-    let (ctx, c) = mount();
+    let (_ctx, board, c) = mount();
     assert_eq!(
-        ctx.sim.with_value(|s| s.machine().machine().mode()),
+        board.sim.with_value(|s| s.machine().machine().mode()),
         Mode::Halt
     );
     let button = find(&c, "clock-button");
@@ -205,7 +214,7 @@ async fn the_clock_button_steps_one_instruction_per_press() {
 
 #[wasm_bindgen_test]
 async fn program_errors_appear_as_you_type_and_block_loading() {
-    let (_ctx, c) = mount();
+    let (_ctx, _board, c) = mount();
     let text: web_sys::HtmlTextAreaElement = find(&c, "program-text").unchecked_into();
     text.set_value("LD X00\nST Q1\n");
     change(&text.clone().unchecked_into(), "input");
@@ -229,27 +238,30 @@ async fn program_errors_appear_as_you_type_and_block_loading() {
 
 #[wasm_bindgen_test]
 async fn opening_the_seed_example_sets_the_panel_and_can_be_undone() {
-    let (ctx, c) = mount();
-    ctx.text.set("; my own work\nLD X07\n".to_string());
+    let (_ctx, board, c) = mount();
+    board.text.set("; my own work\nLD X07\n".to_string());
     let select: web_sys::HtmlSelectElement = find(&c, "example").unchecked_into();
     select.set_value("seed-test");
     change(&select.clone().unchecked_into(), "change");
     settle().await;
-    assert_eq!(ctx.text.get_untracked(), engine::minasec::SEED_TEST_PROGRAM);
+    assert_eq!(
+        board.text.get_untracked(),
+        engine::minasec::SEED_TEST_PROGRAM
+    );
     assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.10");
     assert_eq!(attr(&c, "rv2", "aria-valuenow"), "1.0");
     assert_eq!(attr(&c, "counter-set-tens", "aria-valuenow"), "1");
     assert_eq!(select.value(), "", "the select returns to its prompt");
-    let memory = ctx.sim.with_value(|s| *s.machine().machine().memory());
+    let memory = board.sim.with_value(|s| *s.machine().machine().memory());
     assert_eq!(memory[1], 0b100_01000, "loaded into the board");
     find(&c, "example-undo").click();
     settle().await;
-    assert_eq!(ctx.text.get_untracked(), "; my own work\nLD X07\n");
+    assert_eq!(board.text.get_untracked(), "; my own work\nLD X07\n");
 }
 
 #[wasm_bindgen_test]
 async fn the_language_select_switches_every_label() {
-    let (_ctx, c) = mount();
+    let (_ctx, _board, c) = mount();
     assert_eq!(
         find(&c, "program-load").text_content().unwrap(),
         "Load into the board"
@@ -263,23 +275,25 @@ async fn the_language_select_switches_every_label() {
 
 #[wasm_bindgen_test]
 async fn the_seven_segment_display_shows_the_count() {
-    let (ctx, c) = mount();
-    ctx.text.set("LD X00\nST C0\n".to_string());
-    assert!(ctx.load_text());
-    ctx.send(Command::SetCounterPreset(5, 0));
-    ctx.send(Command::SetMode(Mode::Run));
+    let (_ctx, board, c) = mount();
+    board.text.set("LD X00\nST C0\n".to_string());
+    assert!(board.load_text());
+    board.send(Command::SetCounterPreset(5, 0));
+    board.send(Command::SetMode(Mode::Run));
     for _ in 0..3 {
-        ctx.send(Command::SetInput(0, true));
-        ctx.sim
+        board.send(Command::SetInput(0, true));
+        board
+            .sim
             .update_value(|s| s.machine_mut().tick(SimTime::from_millis(20)));
-        ctx.send(Command::SetInput(0, false));
-        ctx.sim
+        board.send(Command::SetInput(0, false));
+        board
+            .sim
             .update_value(|s| s.machine_mut().tick(SimTime::from_millis(20)));
     }
-    ctx.refresh();
+    board.refresh();
     settle().await;
     assert_eq!(find(&c, "seg7").text_content().unwrap(), "03");
-    ctx.send(Command::Power(false));
+    board.send(Command::Power(false));
     settle().await;
     assert_eq!(
         find(&c, "seg7").text_content().unwrap(),
@@ -290,7 +304,7 @@ async fn the_seven_segment_display_shows_the_count() {
 
 #[wasm_bindgen_test]
 async fn the_io86a_workspace_runs_its_terminal() {
-    let (ctx, io, c) = mount_both();
+    let (ctx, _board, io, c) = mount_both();
     ctx.machine.set(app::state::MachineKind::Io86a);
     settle().await;
     io.type_line("^C");

@@ -9,6 +9,7 @@ use leptos::ev;
 use leptos::prelude::*;
 
 use super::controls::{Knob, Led, Momentary, Toggle};
+use crate::minasec::MinasecCtx;
 use crate::state::Ctx;
 
 /// A press held at least this long acts as a push button, not a toggle.
@@ -18,6 +19,7 @@ const MOMENTARY_MS: f64 = 300.0;
 #[component]
 pub fn Board() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     view! {
         <section class="board" aria-label="MINASEC-U">
@@ -26,12 +28,12 @@ pub fn Board() -> impl IntoView {
                 <PowerAndMode />
                 <div class="group">
                     <h3>{move || t().pc}</h3>
-                    <LedRow signals=ctx.panel.pc prefix="pc-led" label="PC" colour="red" />
+                    <LedRow signals=board.panel.pc prefix="pc-led" label="PC" colour="red" />
                 </div>
                 <div class="group">
                     <h3>{move || t().instruction}</h3>
                     <LedRow
-                        signals=ctx.panel.instruction
+                        signals=board.panel.instruction
                         prefix="inst-led"
                         label="INST"
                         colour="green"
@@ -40,7 +42,7 @@ pub fn Board() -> impl IntoView {
                 <div class="group">
                     <h3>"A"</h3>
                     <Led
-                        on=ctx.panel.acc
+                        on=board.panel.acc
                         testid="acc-led".to_string()
                         colour="amber"
                         label="ACC".to_string()
@@ -91,6 +93,7 @@ fn LedRow(
 #[component]
 fn PowerAndMode() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     let mode_button = move |mode: Mode, testid: &'static str| {
         let label = Signal::derive(move || {
@@ -103,11 +106,11 @@ fn PowerAndMode() -> impl IntoView {
         });
         view! {
             <Toggle
-                on=Signal::derive(move || ctx.panel.mode.get() == mode)
+                on=Signal::derive(move || board.panel.mode.get() == mode)
                 testid=testid.to_string()
                 label=label
                 set=Callback::new(move |_| {
-                    ctx.send(Command::SetMode(mode));
+                    board.send(Command::SetMode(mode));
                 })
                 class="mode"
             />
@@ -116,11 +119,11 @@ fn PowerAndMode() -> impl IntoView {
     view! {
         <div class="group controls">
             <Toggle
-                on=ctx.panel.power.into()
+                on=board.panel.power.into()
                 testid="power".to_string()
                 label=Signal::derive(move || t().power.to_string())
                 set=Callback::new(move |on| {
-                    ctx.send(Command::Power(on));
+                    board.send(Command::Power(on));
                 })
                 class="power"
             />
@@ -130,22 +133,22 @@ fn PowerAndMode() -> impl IntoView {
                 {mode_button(Mode::Reset, "mode-reset")}
             </div>
             <Toggle
-                on=ctx.panel.slow.into()
+                on=board.panel.slow.into()
                 testid="clock-slow".to_string()
                 label=Signal::derive(move || {
                     let t = t();
                     format!("{} / {}", t.slow, t.fast)
                 })
                 set=Callback::new(move |slow| {
-                    ctx.send(Command::SetClock(if slow { ClockSpeed::Slow } else { ClockSpeed::Fast }));
+                    board.send(Command::SetClock(if slow { ClockSpeed::Slow } else { ClockSpeed::Fast }));
                 })
             />
             <Momentary
-                held=ctx.panel.clock_held.into()
+                held=board.panel.clock_held.into()
                 testid="clock-button".to_string()
                 label=Signal::derive(move || t().clock.to_string())
                 set=Callback::new(move |pressed| {
-                    ctx.send(Command::ClockButton(pressed));
+                    board.send(Command::ClockButton(pressed));
                 })
             />
         </div>
@@ -155,12 +158,13 @@ fn PowerAndMode() -> impl IntoView {
 #[component]
 fn DipSwitches() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     const NAMES: [&str; 8] = ["A0", "A1", "A2", "A3", "A4", "OP0", "OP1", "OP2"];
     let switches = (0..8)
         .rev()
         .map(|bit| {
-            let on = ctx.panel.dip[bit];
+            let on = board.panel.dip[bit];
             view! {
                 <Toggle
                     on=on.into()
@@ -168,13 +172,13 @@ fn DipSwitches() -> impl IntoView {
                     label=Signal::derive(move || NAMES[bit].to_string())
                     set=Callback::new(move |v: bool| {
                         let mut dip = 0u8;
-                        for (b, s) in ctx.panel.dip.iter().enumerate() {
+                        for (b, s) in board.panel.dip.iter().enumerate() {
                             if s.get_untracked() {
                                 dip |= 1 << b;
                             }
                         }
                         dip = (dip & !(1 << bit)) | (u8::from(v) << bit);
-                        ctx.send(Command::SetDip(dip));
+                        board.send(Command::SetDip(dip));
                     })
                     class="dip"
                 />
@@ -186,11 +190,11 @@ fn DipSwitches() -> impl IntoView {
             <h3>{move || t().dip}</h3>
             <div class="dips">{switches}</div>
             <Momentary
-                held=ctx.panel.write_held.into()
+                held=board.panel.write_held.into()
                 testid="write".to_string()
                 label=Signal::derive(move || t().write.to_string())
                 set=Callback::new(move |pressed| {
-                    ctx.send(Command::WriteButton(pressed));
+                    board.send(Command::WriteButton(pressed));
                 })
             />
         </div>
@@ -201,13 +205,14 @@ fn DipSwitches() -> impl IntoView {
 #[component]
 fn Inputs() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     let switches = (0..8u8)
         .map(|n| {
-            let on = ctx.panel.inputs[usize::from(n)];
+            let on = board.panel.inputs[usize::from(n)];
             let pressed_at = StoredValue::new(None::<(f64, bool)>);
             let set = move |v: bool| {
-                ctx.send(Command::SetInput(n, v));
+                board.send(Command::SetInput(n, v));
             };
             view! {
                 <button
@@ -257,13 +262,14 @@ fn Inputs() -> impl IntoView {
 #[component]
 fn Outputs() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     let lamps = (0..8usize)
         .map(|n| {
             view! {
                 <span class="cell">
                     <Led
-                        on=ctx.panel.lamps[n]
+                        on=board.panel.lamps[n]
                         testid=format!("lamp-Y{n:02}")
                         colour="amber"
                         label=format!("Y{n:02}")
@@ -284,12 +290,13 @@ fn Outputs() -> impl IntoView {
 #[component]
 fn Timers() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     // RV1 in 10 ms steps (0.10..1.10 s), RV2 in 100 ms steps (1.0..11.0 s).
     let knob = move |id: TimerId, unit_ms: u64, testid: &'static str, name: &'static str| {
         let (lo, hi) = id.range();
         let to_steps = move |d: SimTime| (d.as_nanos() / 1_000_000 / unit_ms) as i64;
-        let signal = ctx.panel.delays_ms[id.index()];
+        let signal = board.panel.delays_ms[id.index()];
         view! {
             <div class="cell knob-cell">
                 <Knob
@@ -304,8 +311,8 @@ fn Timers() -> impl IntoView {
                     })
                     set=Callback::new(move |steps: i64| {
                         let delay = SimTime::from_millis(steps as u64 * unit_ms);
-                        if ctx.send(Command::SetDelay(id, delay)) {
-                            ctx.save();
+                        if board.send(Command::SetDelay(id, delay)) {
+                            board.save();
                         }
                     })
                 />
@@ -335,10 +342,11 @@ fn seconds_from_decis(v: i64) -> String {
 #[component]
 fn CounterPanel() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
-    let digits = ctx.panel.digits;
+    let digits = board.panel.digits;
     let rotary = move |index: usize, testid: &'static str| {
-        let signal = ctx.panel.preset[index];
+        let signal = board.panel.preset[index];
         view! {
             <Knob
                 value=Signal::derive(move || i64::from(signal.get()))
@@ -351,10 +359,10 @@ fn CounterPanel() -> impl IntoView {
                 now=|v| v.to_string()
                 text=Callback::new(|v: i64| v.to_string())
                 set=Callback::new(move |v: i64| {
-                    let mut preset = [ctx.panel.preset[0].get_untracked(), ctx.panel.preset[1].get_untracked()];
+                    let mut preset = [board.panel.preset[0].get_untracked(), board.panel.preset[1].get_untracked()];
                     preset[index] = v as u8;
-                    if ctx.send(Command::SetCounterPreset(preset[0], preset[1])) {
-                        ctx.save();
+                    if board.send(Command::SetCounterPreset(preset[0], preset[1])) {
+                        board.save();
                     }
                 })
             />
@@ -383,11 +391,11 @@ fn CounterPanel() -> impl IntoView {
                     {rotary(1, "counter-set-ones")}
                 </div>
                 <Momentary
-                    held=ctx.panel.count_clear_held.into()
+                    held=board.panel.count_clear_held.into()
                     testid="cntclr".to_string()
                     label=Signal::derive(move || t().count_clear.to_string())
                     set=Callback::new(move |pressed| {
-                        ctx.send(Command::CountClearButton(pressed));
+                        board.send(Command::CountClearButton(pressed));
                     })
                 />
             </div>

@@ -6,6 +6,7 @@ use leptos::prelude::*;
 
 use crate::examples;
 use crate::i18n::Lang;
+use crate::minasec::MinasecCtx;
 use crate::sim::Speed;
 use crate::state::{Ctx, MachineKind};
 use crate::storage;
@@ -13,6 +14,7 @@ use crate::storage;
 #[component]
 pub fn Header() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     view! {
         <header class="top">
@@ -29,11 +31,11 @@ pub fn Header() -> impl IntoView {
             <Show when=move || ctx.machine.get() == MachineKind::MinasecU>
                 <ExampleSelect />
             </Show>
-            <Show when=move || ctx.before_example.with(Option::is_some)>
+            <Show when=move || board.before_example.with(Option::is_some)>
                 <button
                     type="button"
                     data-testid="example-undo"
-                    on:click=move |_| examples::undo(ctx)
+                    on:click=move |_| examples::undo(board)
                 >
                     {move || t().undo_open}
                 </button>
@@ -100,6 +102,7 @@ fn LangSelect() -> impl IntoView {
 #[component]
 fn ExampleSelect() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     view! {
         <label>
@@ -109,7 +112,7 @@ fn ExampleSelect() -> impl IntoView {
                 prop:value=""
                 on:change=move |e| {
                     let id = event_target_value(&e);
-                    examples::open(ctx, &id);
+                    examples::open(board, &id);
                     // Back to the prompt, so the same example can be opened again.
                     use leptos::wasm_bindgen::JsCast;
                     if let Some(select) = e
@@ -184,6 +187,7 @@ fn PauseButton() -> impl IntoView {
 #[component]
 fn SimClock() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     view! {
         <span
@@ -192,14 +196,14 @@ fn SimClock() -> impl IntoView {
             class:hidden=move || ctx.machine.get() != MachineKind::MinasecU
         >
             {move || {
-                let ms = ctx.panel.sim_ms.get();
+                let ms = board.panel.sim_ms.get();
                 format!(
                     "{} {}.{:03} {} · {} {}",
                     t().sim_time,
                     ms / 1000,
                     ms % 1000,
                     t().seconds,
-                    ctx.panel.scans.get(),
+                    board.panel.scans.get(),
                     t().scans,
                 )
             }}

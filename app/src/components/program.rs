@@ -4,22 +4,25 @@
 
 use leptos::prelude::*;
 
+use crate::minasec::MinasecCtx;
 use crate::state::{Ctx, Parsed};
 
 #[component]
 pub fn ProgramPane() -> impl IntoView {
     let ctx = Ctx::get();
+    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
-    let parsed = Memo::new(move |_| Parsed::of(&ctx.text.get()));
+    let parsed = Memo::new(move |_| Parsed::of(&board.text.get()));
     let errors = Memo::new(move |_| match parsed.get() {
         Parsed::Good(_) => Vec::new(),
         Parsed::Bad(errors) => errors,
     });
     let gutter_scroll = RwSignal::new(0);
-    let line_count = Memo::new(move |_| ctx.text.with(|t| t.lines().count().max(1)));
+    let line_count = Memo::new(move |_| board.text.with(|t| t.lines().count().max(1)));
     let up_to_date = move || {
-        ctx.loaded
-            .with(|l| l.as_deref() == Some(ctx.text.get().as_str()))
+        board
+            .loaded
+            .with(|l| l.as_deref() == Some(board.text.get().as_str()))
     };
 
     view! {
@@ -45,10 +48,10 @@ pub fn ProgramPane() -> impl IntoView {
                     data-testid="program-text"
                     spellcheck="false"
                     aria-label=move || t().program
-                    prop:value=move || ctx.text.get()
+                    prop:value=move || board.text.get()
                     on:input=move |e| {
-                        ctx.text.set(event_target_value(&e));
-                        ctx.save();
+                        board.text.set(event_target_value(&e));
+                        board.save();
                     }
                     on:scroll=move |e| {
                         use leptos::wasm_bindgen::JsCast;
@@ -67,7 +70,7 @@ pub fn ProgramPane() -> impl IntoView {
                     data-testid="program-load"
                     disabled=move || !errors.get().is_empty()
                     on:click=move |_| {
-                        ctx.load_text();
+                        board.load_text();
                     }
                 >
                     {move || t().load}
