@@ -28,6 +28,9 @@ step "engine builds for wasm32"
 cargo build -p engine --lib --no-default-features --target wasm32-unknown-unknown --release --locked
 
 if [ -d app ]; then
+  step "app logic tests (native: pacing, storage validation)"
+  cargo test -p app --lib --locked
+
   step "clippy, wasm32 (the app)"
   cargo clippy -p app --all-targets --target wasm32-unknown-unknown --locked -- -D warnings
 

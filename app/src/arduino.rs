@@ -20,7 +20,10 @@ use crate::storage;
 pub const SELF_HOLD: &str = "; Arduino PLC sketch: self-hold (the seed's example)\n\
 0 LD X000\n1 OR Y000\n2 ANDN X001\n3 OUT Y000\n4 JUMP 0\n";
 
-const KEY: &str = "hashigo.arduino-plc.v1";
+/// Where the workspace is saved (`SavedText`), and where an earlier
+/// version kept the plain text.
+const KEY: &str = "hashigo.arduino-plc.v2";
+const LEGACY_KEY: &str = "hashigo.arduino-plc.v1";
 
 /// What the Arduino workspace's components share.
 #[derive(Clone, Copy)]
@@ -37,9 +40,21 @@ pub struct ArduinoCtx {
 }
 
 impl ArduinoCtx {
-    /// A workspace with the saved text loaded (or the seed's example).
-    pub fn new() -> ArduinoCtx {
-        let text = storage::saved_string(KEY).unwrap_or_else(|| SELF_HOLD.to_string());
+    /// A workspace on `page` with its saved text loaded (or the seed's
+    /// example); a saved value that does not read is kept aside and
+    /// reported in the page's notice.
+    pub fn restore(page: Ctx) -> ArduinoCtx {
+        let text = match storage::restore_text(KEY, LEGACY_KEY) {
+            storage::Restored::Saved(saved) => saved.program,
+            storage::Restored::Corrupt { kept_as } => {
+                page.notice.set(Some(format!(
+                    "{} {kept_as}",
+                    page.lang.get_untracked().texts().corrupt_saved
+                )));
+                SELF_HOLD.to_string()
+            }
+            storage::Restored::Nothing | storage::Restored::Unavailable => SELF_HOLD.to_string(),
+        };
         let plc = ArduinoPlc::new();
         // The pin names are the machine's own: they always resolve.
         let pin = |name: String| plc.device(&name).unwrap_or_else(|_| unreachable!("{name}"));
@@ -120,12 +135,6 @@ impl ArduinoCtx {
             .unwrap_or_default();
         crate::components::console::append(self.console, &reply);
         self.refresh();
-    }
-}
-
-impl Default for ArduinoCtx {
-    fn default() -> Self {
-        ArduinoCtx::new()
     }
 }
 
@@ -224,7 +233,9 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
                     prefix="arduino-"
                     text=ard.text
                     errors=Signal::derive(move || parsed.get().err().unwrap_or_default())
-                    on_edit=Callback::new(|text: String| storage::save_string(KEY, &text))
+                    on_edit=Callback::new(|program: String| {
+                        storage::save_to(KEY, &storage::SavedText { program });
+                    })
                     on_load=Callback::new(move |()| {
                         ard.load();
                     })

@@ -23,7 +23,10 @@ pub const SELF_HOLD: &str = "; AVR simplified PLC: the seed's self-holding rungs
 .db   Load_A,COIL1_R,COIL1_B,0\n.db   Or_A,COIL2_R,COIL2_B,0\n.db   And_B,INPUT3_R,INPUT3_B,0\n\
 .db   Coil_A,COIL2_R,COIL2_B,0\n.db   End_PLC,0,0,0\n";
 
-const KEY: &str = "hashigo.avr-plc.v1";
+/// Where the workspace is saved (`SavedText`), and where an earlier
+/// version kept the plain text.
+const KEY: &str = "hashigo.avr-plc.v2";
+const LEGACY_KEY: &str = "hashigo.avr-plc.v1";
 
 /// A named bit and its signals.
 #[derive(Clone)]
@@ -45,9 +48,21 @@ pub struct AvrCtx {
 }
 
 impl AvrCtx {
-    /// A workspace with the saved text loaded (or the seed's example).
-    pub fn new() -> AvrCtx {
-        let text = storage::saved_string(KEY).unwrap_or_else(|| SELF_HOLD.to_string());
+    /// A workspace on `page` with its saved text loaded (or the seed's
+    /// example); a saved value that does not read is kept aside and
+    /// reported in the page's notice.
+    pub fn restore(page: Ctx) -> AvrCtx {
+        let text = match storage::restore_text(KEY, LEGACY_KEY) {
+            storage::Restored::Saved(saved) => saved.program,
+            storage::Restored::Corrupt { kept_as } => {
+                page.notice.set(Some(format!(
+                    "{} {kept_as}",
+                    page.lang.get_untracked().texts().corrupt_saved
+                )));
+                SELF_HOLD.to_string()
+            }
+            storage::Restored::Nothing | storage::Restored::Unavailable => SELF_HOLD.to_string(),
+        };
         let ctx = AvrCtx {
             sim: StoredValue::new_local(Simulator::new(AvrPlc::new())),
             bits: RwSignal::new(Vec::new()),
@@ -118,12 +133,6 @@ impl AvrCtx {
             let _ = s.machine_mut().apply(command);
         });
         self.refresh();
-    }
-}
-
-impl Default for AvrCtx {
-    fn default() -> Self {
-        AvrCtx::new()
     }
 }
 
@@ -220,7 +229,9 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
                     prefix="avr-"
                     text=avr.text
                     errors=Signal::derive(move || parsed.get().err().unwrap_or_default())
-                    on_edit=Callback::new(|text: String| storage::save_string(KEY, &text))
+                    on_edit=Callback::new(|program: String| {
+                        storage::save_to(KEY, &storage::SavedText { program });
+                    })
                     on_load=Callback::new(move |()| {
                         avr.load();
                     })

@@ -36,6 +36,26 @@ pub struct Saved {
     pub preset_ones: u8,
 }
 
+/// What is saved for a workspace whose state is one program text (the
+/// Arduino PLC, the AVR PLC).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SavedText {
+    /// The program pane's text, as typed.
+    pub program: String,
+}
+
+impl Checked for SavedText {
+    fn problem(&self) -> Option<&'static str> {
+        if self.program.len() > engine::limits::MAX_INPUT_BYTES {
+            Some("program larger than any input may be")
+        } else if self.program.lines().count() > engine::limits::MAX_PROGRAM_LINES {
+            Some("program longer than any program may be")
+        } else {
+            None
+        }
+    }
+}
+
 /// A saved value that can say whether it is usable.
 pub trait Checked {
     /// Why this value cannot be restored, if it cannot.
@@ -101,9 +121,9 @@ pub fn restore_from<T: DeserializeOwned + Checked>(key: &str) -> Restored<T> {
         Ok(None) => return Restored::Nothing,
         Err(_) => return Restored::Unavailable,
     };
-    match serde_json::from_str::<T>(&raw) {
-        Ok(saved) if saved.problem().is_none() => Restored::Saved(saved),
-        _ => {
+    match read_saved::<T>(&raw) {
+        Some(saved) => Restored::Saved(saved),
+        None => {
             // Keep the unreadable value under a key of its own, so the next
             // autosave cannot overwrite it.
             let kept_as = format!("{key}.corrupt.{}", js_sys::Date::now() as u64);
@@ -113,6 +133,26 @@ pub fn restore_from<T: DeserializeOwned + Checked>(key: &str) -> Restored<T> {
             let _ = store.remove_item(key);
             Restored::Corrupt { kept_as }
         }
+    }
+}
+
+/// A saved value read back: `None` when it does not parse or does not
+/// pass its checks.
+pub fn read_saved<T: DeserializeOwned + Checked>(raw: &str) -> Option<T> {
+    serde_json::from_str::<T>(raw)
+        .ok()
+        .filter(|saved| saved.problem().is_none())
+}
+
+/// Reads a program text saved under `key`, or else the plain text an
+/// earlier version saved under `legacy` (taken over as it is).
+pub fn restore_text(key: &str, legacy: &str) -> Restored<SavedText> {
+    match restore_from::<SavedText>(key) {
+        Restored::Nothing => match saved_string(legacy) {
+            Some(program) => Restored::Saved(SavedText { program }),
+            None => Restored::Nothing,
+        },
+        other => other,
     }
 }
 
@@ -152,4 +192,54 @@ pub fn saved_lang() -> Option<String> {
 /// Remembers the language.
 pub fn save_lang(code: &str) {
     save_string(LANG_KEY, code);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn saved(rv1_ms: u64, tens: u8) -> String {
+        format!(
+            r#"{{"program":"LD X00","rv1_ms":{rv1_ms},"rv2_ms":1000,"preset_tens":{tens},"preset_ones":0}}"#
+        )
+    }
+
+    #[test]
+    fn a_saved_board_reads_back_only_when_it_is_in_range() {
+        assert!(read_saved::<Saved>(&saved(1100, 1)).is_some());
+        assert!(
+            read_saved::<Saved>(&saved(99, 1)).is_none(),
+            "below RV1's range"
+        );
+        assert!(
+            read_saved::<Saved>(&saved(1101, 1)).is_none(),
+            "above RV1's range"
+        );
+        assert!(
+            read_saved::<Saved>(&saved(500, 10)).is_none(),
+            "a rotary past 9"
+        );
+        assert!(read_saved::<Saved>("{not json").is_none());
+        assert!(read_saved::<Saved>(r#"{"program":"LD X00"}"#).is_none());
+    }
+
+    #[test]
+    fn a_saved_text_reads_back_within_the_limits() {
+        let ok = serde_json::to_string(&SavedText {
+            program: "LD X000\nEND\n".into(),
+        })
+        .expect("json");
+        assert!(read_saved::<SavedText>(&ok).is_some());
+        let long = SavedText {
+            program: "; x\n".repeat(engine::limits::MAX_PROGRAM_LINES + 1),
+        };
+        assert_eq!(
+            long.problem(),
+            Some("program longer than any program may be")
+        );
+        assert!(read_saved::<SavedText>(r#"{"text":"LD X000"}"#).is_none());
+        let io86a = r#"{"programs":["LD X00","END"]}"#;
+        assert!(read_saved::<SavedIo86a>(io86a).is_some());
+        assert!(read_saved::<SavedIo86a>(r#"{"programs":["only one"]}"#).is_none());
+    }
 }

@@ -25,8 +25,8 @@ impl Workspaces {
         Workspaces {
             minasec: MinasecCtx::restore(page),
             io86a: io86a::Io86aCtx::new(),
-            arduino: arduino::ArduinoCtx::new(),
-            avr: avr::AvrCtx::new(),
+            arduino: arduino::ArduinoCtx::restore(page),
+            avr: avr::AvrCtx::restore(page),
         }
     }
 

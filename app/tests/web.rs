@@ -46,8 +46,8 @@ fn mount_both() -> (Ctx, MinasecCtx, app::io86a::Io86aCtx, Element) {
             )),
         ),
         io86a: app::io86a::Io86aCtx::new(),
-        arduino: app::arduino::ArduinoCtx::new(),
-        avr: app::avr::AvrCtx::new(),
+        arduino: app::arduino::ArduinoCtx::restore(ctx),
+        avr: app::avr::AvrCtx::restore(ctx),
     };
     let html: HtmlElement = container.clone().unchecked_into();
     let handle = leptos::mount::mount_to(
