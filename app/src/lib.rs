@@ -87,7 +87,7 @@ pub fn page() -> Ctx {
     let ctx = Ctx::new(lang);
     if let Some(kind) = storage::saved_string(storage::MACHINE_KEY)
         .as_deref()
-        .and_then(state::MachineKind::from_code)
+        .and_then(|code| state::MachineKind::parse(code).ok())
     {
         ctx.machine.set(kind);
     }

@@ -137,37 +137,9 @@ impl Parsed {
     }
 }
 
-/// Which machine the page shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MachineKind {
-    MinasecU,
-    Io86a,
-    ArduinoPlc,
-    AvrPlc,
-}
-
-impl MachineKind {
-    /// The id used in the `machine` select, storage and the CLI.
-    pub const fn code(self) -> &'static str {
-        match self {
-            MachineKind::MinasecU => "minasec-u",
-            MachineKind::Io86a => "io86a",
-            MachineKind::ArduinoPlc => "arduino-plc",
-            MachineKind::AvrPlc => "avr-plc",
-        }
-    }
-
-    /// The machine for an id.
-    pub fn from_code(code: &str) -> Option<MachineKind> {
-        match code {
-            "minasec-u" => Some(MachineKind::MinasecU),
-            "io86a" => Some(MachineKind::Io86a),
-            "arduino-plc" => Some(MachineKind::ArduinoPlc),
-            "avr-plc" => Some(MachineKind::AvrPlc),
-            _ => None,
-        }
-    }
-}
+/// Which machine the page shows: the engine's own list of machines (the
+/// `machine` select, storage and the CLI share their names).
+pub type MachineKind = engine::MachineId;
 
 /// The page's own state, shared by every workspace; `Copy`, provided as
 /// context. Each machine's workspace has a context of its own

@@ -56,20 +56,30 @@ fn MachineSelect() -> impl IntoView {
             {move || ctx.lang.get().texts().machine}
             <select
                 data-testid="machine"
-                prop:value=move || ctx.machine.get().code()
+                prop:value=move || ctx.machine.get().name()
                 on:change=move |e| {
-                    if let Some(kind) = MachineKind::from_code(&event_target_value(&e)) {
+                    if let Ok(kind) = MachineKind::parse(&event_target_value(&e)) {
                         ctx.machine.set(kind);
-                        storage::save_string(storage::MACHINE_KEY, kind.code());
+                        storage::save_string(storage::MACHINE_KEY, kind.name());
                     }
                 }
             >
-                <option value="minasec-u">"MINASEC-U"</option>
-                <option value="io86a">"PLC-IO86A"</option>
-                <option value="arduino-plc">"Arduino PLC"</option>
-                <option value="avr-plc">"AVR PLC"</option>
+                {MachineKind::ALL
+                    .iter()
+                    .map(|&kind| view! { <option value=kind.name()>{product_name(kind)}</option> })
+                    .collect_view()}
             </select>
         </label>
+    }
+}
+
+/// A machine's product name, as its maker writes it.
+fn product_name(kind: MachineKind) -> &'static str {
+    match kind {
+        MachineKind::MinasecU => "MINASEC-U",
+        MachineKind::Io86a => "PLC-IO86A",
+        MachineKind::ArduinoPlc => "Arduino PLC",
+        MachineKind::AvrPlc => "AVR PLC",
     }
 }
 
