@@ -143,6 +143,46 @@ impl ArduinoCtx {
 pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
+    view! {
+        <main class="workspace arduino">
+            <section class="device arduino-board">
+                <h2>
+                    "Arduino (ATmega328) · "
+                    <span data-testid="arduino-state">
+                        {move || if ard.enabled.get() { t().enabled } else { t().disabled }}
+                    </span>
+                </h2>
+                <Pins ard=ard />
+                <label class="quirk">
+                    <input
+                        type="checkbox"
+                        data-testid="arduino-quirk"
+                        prop:checked=move || ard.sketch_quirk.get()
+                        on:change=move |_| {
+                            ard.sketch_quirk.update(|q| *q = !*q);
+                            ard.load();
+                        }
+                    />
+                    {move || t().quirk_sketch}
+                </label>
+            </section>
+            <div class="side">
+                <ConsolePane
+                    title=Signal::derive(move || t().monitor.to_string())
+                    hint=Signal::derive(move || t().monitor_hint.to_string())
+                    testid="arduino-monitor"
+                    console=ard.console
+                    on_line=Callback::new(move |line: String| ard.type_line(&line))
+                />
+                <ProgramPane ard=ard />
+            </div>
+        </main>
+    }
+}
+
+/// PD2-PD7 as input switches, PB0-PB5 as lamps.
+#[component]
+fn Pins(ard: ArduinoCtx) -> impl IntoView {
     let inputs = (0..6u8)
         .map(|n| {
             let on = ard.inputs[usize::from(n)];
@@ -184,6 +224,19 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
             }
         })
         .collect_view();
+    view! {
+        <div class="arduino-pins">
+            <div class="pins">{inputs}</div>
+            <div class="pins">{outputs}</div>
+        </div>
+    }
+}
+
+/// The program pane in the sketch's mnemonic text.
+#[component]
+fn ProgramPane(ard: ArduinoCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
     // Errors by line, or whether the program can run into erased EEPROM
     // (no END and no JUMP: it spins at step 255).
     let parsed = Memo::new(move |_| {
@@ -196,39 +249,6 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
             })
     });
     view! {
-        <main class="workspace arduino">
-            <section class="device arduino-board">
-                <h2>
-                    "Arduino (ATmega328) · "
-                    <span data-testid="arduino-state">
-                        {move || if ard.enabled.get() { t().enabled } else { t().disabled }}
-                    </span>
-                </h2>
-                <div class="arduino-pins">
-                    <div class="pins">{inputs}</div>
-                    <div class="pins">{outputs}</div>
-                </div>
-                <label class="quirk">
-                    <input
-                        type="checkbox"
-                        data-testid="arduino-quirk"
-                        prop:checked=move || ard.sketch_quirk.get()
-                        on:change=move |_| {
-                            ard.sketch_quirk.update(|q| *q = !*q);
-                            ard.load();
-                        }
-                    />
-                    {move || t().quirk_sketch}
-                </label>
-            </section>
-            <div class="side">
-                <ConsolePane
-                    title=Signal::derive(move || t().monitor.to_string())
-                    hint=Signal::derive(move || t().monitor_hint.to_string())
-                    testid="arduino-monitor"
-                    console=ard.console
-                    on_line=Callback::new(move |line: String| ard.type_line(&line))
-                />
                 <TextProgramPane
                     prefix="arduino-"
                     text=ard.text
@@ -243,7 +263,5 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
                         (parsed.get() == Ok(true)).then(|| t().warn_spin.to_string())
                     })
                 />
-            </div>
-        </main>
     }
 }

@@ -188,74 +188,109 @@ fn Peripherals(device: usize) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
     let d = io.devices[device];
-    let analog = move |i: usize| {
-        let name = format!("X0{}", 4 + i);
-        let testid = format!("{}analog-{name}", prefix(device));
-        view! {
-            <Show when=move || d.analog[i].get()>
-                <label class="analog">
-                    {move || format!("{} {}", t().analog_in, 4 + i)}
-                    <input
-                        type="range"
-                        min="0"
-                        max="5000"
-                        step="10"
-                        data-testid=testid.clone()
-                        prop:value=move || d.analog_mv[i].get().to_string()
-                        on:input=move |e| {
-                            let mv = event_target_value(&e).parse::<i64>().unwrap_or(0);
-                            io.drive(device, &format!("X0{}", 4 + i), InputValue::Millivolts(mv));
-                        }
-                    />
-                    <span>
-                        {move || {
-                            let mv = d.analog_mv[i].get();
-                            format!("{}.{:02} V → D0{} = {}", mv / 1000, mv % 1000 / 10, 6 + i, d.d[6 + i].get())
-                        }}
-                    </span>
-                </label>
+    view! {
+        <div class="peripherals">
+            <AnalogInput device=device i=0 />
+            <AnalogInput device=device i=1 />
+            <OutputGauge device=device i=0 />
+            <OutputGauge device=device i=1 />
+            <Show when=move || d.ir.get()>
+                <div class="ir" role="group" aria-label=move || t().ir_remote>
+                    {move || t().ir_remote}
+                    " "
+                    <IrKeypad device=device />
+                </div>
             </Show>
-        }
-    };
-    let gauge = move |i: usize| {
-        let signal = d.outputs[i];
-        view! {
-            <div class="gauge" data-testid=format!("{}out-Y0{}", prefix(device), 3 + i)>
-                {move || match signal.get() {
-                    OutputSignal::Level(_) => ().into_any(),
-                    OutputSignal::Servo(pulse) => {
-                        let us = pulse.map_or(0, |p| p.as_nanos() / 1000);
-                        // 500 µs = -90°, 1500 µs = 0°, 2500 µs = +90°.
-                        let angle = (us as f64 - 1500.0) * 0.09;
-                        view! {
-                            <span>{format!("Y0{} {} {us} µs", 3 + i, t().servo)}</span>
-                            <svg viewBox="-20 -20 40 24" class="servo" aria-hidden="true">
-                                <path d="M -18 0 A 18 18 0 0 1 18 0" class="servo-arc"></path>
-                                <line
-                                    x1="0"
-                                    y1="0"
-                                    x2="0"
-                                    y2="-16"
-                                    class="servo-arm"
-                                    class:off=pulse.is_none()
-                                    transform=format!("rotate({angle:.1})")
-                                ></line>
-                            </svg>
-                        }
-                        .into_any()
+        </div>
+    }
+}
+
+/// X04 (`i` = 0) or X05 in analog mode: a slider of volts and the D
+/// register it gives.
+#[component]
+fn AnalogInput(device: usize, i: usize) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let d = io.devices[device];
+    let name = format!("X0{}", 4 + i);
+    let testid = format!("{}analog-{name}", prefix(device));
+    view! {
+        <Show when=move || d.analog[i].get()>
+            <label class="analog">
+                {move || format!("{} {}", t().analog_in, 4 + i)}
+                <input
+                    type="range"
+                    min="0"
+                    max="5000"
+                    step="10"
+                    data-testid=testid.clone()
+                    prop:value=move || d.analog_mv[i].get().to_string()
+                    on:input=move |e| {
+                        let mv = event_target_value(&e).parse::<i64>().unwrap_or(0);
+                        io.drive(device, &format!("X0{}", 4 + i), InputValue::Millivolts(mv));
                     }
-                    OutputSignal::Pwm { hz, duty } => view! {
-                        <span>{format!("Y0{} {} {hz} Hz {duty} %", 3 + i, t().pwm)}</span>
-                        <span class="duty">
-                            <span class="duty-fill" style=format!("width: {duty}%")></span>
-                        </span>
+                />
+                <span>
+                    {move || {
+                        let mv = d.analog_mv[i].get();
+                        format!("{}.{:02} V → D0{} = {}", mv / 1000, mv % 1000 / 10, 6 + i, d.d[6 + i].get())
+                    }}
+                </span>
+            </label>
+        </Show>
+    }
+}
+
+/// Y03 (`i` = 0) or Y04 as a servo dial or a PWM duty bar.
+#[component]
+fn OutputGauge(device: usize, i: usize) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let signal = io.devices[device].outputs[i];
+    view! {
+        <div class="gauge" data-testid=format!("{}out-Y0{}", prefix(device), 3 + i)>
+            {move || match signal.get() {
+                OutputSignal::Level(_) => ().into_any(),
+                OutputSignal::Servo(pulse) => {
+                    let us = pulse.map_or(0, |p| p.as_nanos() / 1000);
+                    // 500 µs = -90°, 1500 µs = 0°, 2500 µs = +90°.
+                    let angle = (us as f64 - 1500.0) * 0.09;
+                    view! {
+                        <span>{format!("Y0{} {} {us} µs", 3 + i, t().servo)}</span>
+                        <svg viewBox="-20 -20 40 24" class="servo" aria-hidden="true">
+                            <path d="M -18 0 A 18 18 0 0 1 18 0" class="servo-arc"></path>
+                            <line
+                                x1="0"
+                                y1="0"
+                                x2="0"
+                                y2="-16"
+                                class="servo-arm"
+                                class:off=pulse.is_none()
+                                transform=format!("rotate({angle:.1})")
+                            ></line>
+                        </svg>
                     }
-                    .into_any(),
-                }}
-            </div>
-        }
-    };
-    let keypad = IR_BUTTONS
+                    .into_any()
+                }
+                OutputSignal::Pwm { hz, duty } => view! {
+                    <span>{format!("Y0{} {} {hz} Hz {duty} %", 3 + i, t().pwm)}</span>
+                    <span class="duty">
+                        <span class="duty-fill" style=format!("width: {duty}%")></span>
+                    </span>
+                }
+                .into_any(),
+            }}
+        </div>
+    }
+}
+
+/// The IR remote's buttons: a frame on X07 while a button is held.
+#[component]
+fn IrKeypad(device: usize) -> impl IntoView {
+    let io = expect_context::<Io86aCtx>();
+    IR_BUTTONS
         .iter()
         .map(|&(name, frame)| {
             let press = move |on: bool| {
@@ -275,22 +310,7 @@ fn Peripherals(device: usize) -> impl IntoView {
                 </button>
             }
         })
-        .collect_view();
-    view! {
-        <div class="peripherals">
-            {analog(0)}
-            {analog(1)}
-            {gauge(0)}
-            {gauge(1)}
-            <Show when=move || d.ir.get()>
-                <div class="ir" role="group" aria-label=move || t().ir_remote>
-                    {move || t().ir_remote}
-                    " "
-                    {keypad.clone()}
-                </div>
-            </Show>
-        </div>
-    }
+        .collect_view()
 }
 
 /// Device A's serial terminal.

@@ -73,105 +73,144 @@ enum Segment {
 pub fn assemble(text: &str, scan_ms: i64) -> Result<Assembly, Vec<Located<AsmError>>> {
     crate::limits::check_program_lines(text)
         .map_err(|(line, n)| vec![Located::new(line, AsmError::TooManyLines(n))])?;
-    let mut symbols: HashMap<String, i64> = PREDEFINED
-        .iter()
-        .map(|&(n, v)| (n.to_ascii_uppercase(), v))
-        .collect();
-    symbols.insert("SCAN".to_string(), scan_ms);
-    let mut defined_here: HashMap<String, usize> = HashMap::new();
-    let mut out = Assembly::default();
-    let mut errors = Vec::new();
-    let mut segment = Segment::Code;
-    let mut dseg = DSEG_START;
-    // `.db` lines are evaluated at the end, so they may use later labels.
-    let mut pending_db: Vec<(usize, String)> = Vec::new();
-
+    let mut a = Assembler::new(scan_ms);
     for (index, raw) in text.lines().enumerate() {
-        let line = index + 1;
-        let mut code = raw.split(';').next().unwrap_or("").trim();
-        // A label: `Name:` at the start of the line.
-        if let Some((name, rest)) = code.split_once(':') {
-            if is_identifier(name.trim()) && !name.trim().starts_with('.') {
-                let name = name.trim();
-                let key = name.to_ascii_uppercase();
-                if let Some(first) = defined_here.insert(key.clone(), line) {
-                    errors.push(Located::new(
-                        line,
-                        AsmError::Redefined(name.to_string(), first),
-                    ));
-                } else {
-                    let address = if segment == Segment::Data { dseg } else { 0 };
-                    symbols.insert(key, address);
-                    out.labels.push((name.to_string(), address));
-                }
-                code = rest.trim();
-            }
+        a.line(index + 1, raw);
+    }
+    a.finish()
+}
+
+/// The assembler's state between lines.
+struct Assembler {
+    symbols: HashMap<String, i64>,
+    /// Names this source defines, with their line.
+    defined_here: HashMap<String, usize>,
+    out: Assembly,
+    errors: Vec<Located<AsmError>>,
+    segment: Segment,
+    /// The next free `.dseg` address.
+    dseg: i64,
+    /// `.db` lines are evaluated at the end, so they may use later labels.
+    pending_db: Vec<(usize, String)>,
+}
+
+impl Assembler {
+    fn new(scan_ms: i64) -> Assembler {
+        let mut symbols: HashMap<String, i64> = PREDEFINED
+            .iter()
+            .map(|&(n, v)| (n.to_ascii_uppercase(), v))
+            .collect();
+        symbols.insert("SCAN".to_string(), scan_ms);
+        Assembler {
+            symbols,
+            defined_here: HashMap::new(),
+            out: Assembly::default(),
+            errors: Vec::new(),
+            segment: Segment::Code,
+            dseg: DSEG_START,
+            pending_db: Vec::new(),
         }
+    }
+
+    /// One source line: an optional label, then a directive.
+    fn line(&mut self, line: usize, raw: &str) {
+        let code = self.label(line, raw.split(';').next().unwrap_or("").trim());
         if code.is_empty() {
-            continue;
+            return;
         }
         let (directive, args) = match code.split_once(char::is_whitespace) {
             Some((d, a)) => (d, a.trim()),
             None => (code, ""),
         };
-        let result = match directive.to_ascii_lowercase().as_str() {
-            ".cseg" | ".csg" => {
-                segment = Segment::Code;
-                Ok(())
-            }
-            ".dseg" => {
-                segment = Segment::Data;
-                Ok(())
-            }
+        if let Err(e) = self.directive(line, directive, args) {
+            self.errors.push(Located::new(line, e));
+        }
+    }
+
+    /// Defines a label `Name:` at the start of `code`; the rest of it.
+    fn label<'c>(&mut self, line: usize, code: &'c str) -> &'c str {
+        let Some((name, rest)) = code.split_once(':') else {
+            return code;
+        };
+        let name = name.trim();
+        if !is_identifier(name) || name.starts_with('.') {
+            return code;
+        }
+        let key = name.to_ascii_uppercase();
+        if let Some(first) = self.defined_here.insert(key.clone(), line) {
+            self.errors.push(Located::new(
+                line,
+                AsmError::Redefined(name.to_string(), first),
+            ));
+        } else {
+            let address = if self.segment == Segment::Data {
+                self.dseg
+            } else {
+                0
+            };
+            self.symbols.insert(key, address);
+            self.out.labels.push((name.to_string(), address));
+        }
+        rest.trim()
+    }
+
+    fn directive(&mut self, line: usize, directive: &str, args: &str) -> Result<(), AsmError> {
+        match directive.to_ascii_lowercase().as_str() {
+            ".cseg" | ".csg" => self.segment = Segment::Code,
+            ".dseg" => self.segment = Segment::Data,
             // The seed splits its source over files; their definitions are
             // predefined here, so an include has nothing left to bring.
-            ".include" | ".list" | ".nolist" | ".device" => Ok(()),
-            ".equ" | ".set" => define(args, &mut symbols, &mut defined_here, line, &mut out.equs),
+            ".include" | ".list" | ".nolist" | ".device" => {}
+            ".equ" | ".set" => define(
+                args,
+                &mut self.symbols,
+                &mut self.defined_here,
+                line,
+                &mut self.out.equs,
+            )?,
             ".byte" => {
-                if segment != Segment::Data {
-                    Err(AsmError::ByteOutsideDseg)
-                } else {
-                    eval(args, &symbols).and_then(|n| {
-                        if n < 0 {
-                            Err(AsmError::Range(crate::error::shown(args), n))
-                        } else {
-                            dseg += n;
-                            Ok(())
-                        }
-                    })
+                if self.segment != Segment::Data {
+                    return Err(AsmError::ByteOutsideDseg);
                 }
+                let n = eval(args, &self.symbols)?;
+                if n < 0 {
+                    return Err(AsmError::Range(crate::error::shown(args), n));
+                }
+                self.dseg += n;
             }
             ".db" => {
-                if segment == Segment::Data {
-                    Err(AsmError::DbInDseg)
-                } else {
-                    pending_db.push((line, args.to_string()));
-                    Ok(())
+                if self.segment == Segment::Data {
+                    return Err(AsmError::DbInDseg);
+                }
+                self.pending_db.push((line, args.to_string()));
+            }
+            other => return Err(AsmError::UnknownDirective(crate::error::shown(other))),
+        }
+        Ok(())
+    }
+
+    /// Evaluates the `.db` lines, now that every label is known.
+    fn finish(mut self) -> Result<Assembly, Vec<Located<AsmError>>> {
+        for (line, args) in std::mem::take(&mut self.pending_db) {
+            for item in split_args(&args) {
+                match eval(item, &self.symbols) {
+                    Ok(v) if (-128..=255).contains(&v) => {
+                        self.out.code.push(((v & 0xFF) as u8, line))
+                    }
+                    Ok(v) => self.errors.push(Located::new(
+                        line,
+                        AsmError::Range(crate::error::shown(item), v),
+                    )),
+                    Err(e) => self.errors.push(Located::new(line, e)),
                 }
             }
-            other => Err(AsmError::UnknownDirective(crate::error::shown(other))),
-        };
-        if let Err(e) = result {
-            errors.push(Located::new(line, e));
         }
-    }
-    for (line, args) in pending_db {
-        for item in split_args(&args) {
-            match eval(item, &symbols) {
-                Ok(v) if (-128..=255).contains(&v) => out.code.push(((v & 0xFF) as u8, line)),
-                Ok(v) => errors.push(Located::new(
-                    line,
-                    AsmError::Range(crate::error::shown(item), v),
-                )),
-                Err(e) => errors.push(Located::new(line, e)),
-            }
+        if self.errors.is_empty() {
+            Ok(self.out)
+        } else {
+            self.errors.sort_by_key(|e| e.line);
+            Err(self.errors)
         }
-    }
-    if errors.is_empty() {
-        Ok(out)
-    } else {
-        errors.sort_by_key(|e| e.line);
-        Err(errors)
     }
 }
 
