@@ -52,17 +52,7 @@ impl AvrCtx {
     /// example); a saved value that does not read is kept aside and
     /// reported in the page's notice.
     pub fn restore(page: Ctx) -> AvrCtx {
-        let text = match storage::restore_text(KEY, LEGACY_KEY) {
-            storage::Restored::Saved(saved) => saved.program,
-            storage::Restored::Corrupt { kept_as } => {
-                page.notice.set(Some(format!(
-                    "{} {kept_as}",
-                    page.lang.get_untracked().texts().corrupt_saved
-                )));
-                SELF_HOLD.to_string()
-            }
-            storage::Restored::Nothing | storage::Restored::Unavailable => SELF_HOLD.to_string(),
-        };
+        let text = storage::restored_text(page, KEY, LEGACY_KEY, SELF_HOLD);
         let ctx = AvrCtx {
             sim: StoredValue::new_local(Simulator::new(AvrPlc::new())),
             bits: RwSignal::new(Vec::new()),

@@ -124,6 +124,18 @@ impl Machine {
     }
 }
 
+/// A listing parsed, its problems as a [`PlcError`].
+fn parse(text: &str) -> Result<Program, PlcError> {
+    Program::parse(text).map_err(|errors| {
+        PlcError::Program(
+            errors
+                .into_iter()
+                .map(|e| Located::new(e.line, ProgramProblem::Io86a(e.error)))
+                .collect(),
+        )
+    })
+}
+
 /// PLC-IO86A as a [`Plc`]: the device in RUN and its serial terminal,
 /// and a second device linked to it by SETS / RSTS once one is loaded
 /// ([`plc::Command::LoadLinked`]; its devices are named `B.X00`).
@@ -225,14 +237,7 @@ impl Plc for Io86aPlc {
     }
 
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
-        let program = Program::parse(text).map_err(|errors| {
-            PlcError::Program(
-                errors
-                    .into_iter()
-                    .map(|e| Located::new(e.line, ProgramProblem::Io86a(e.error)))
-                    .collect(),
-            )
-        })?;
+        let program = parse(text)?;
         self.pair.a.load(program);
         // The terminal edits its own copy of the program: start it anew.
         self.terminal = Terminal::new(&self.pair.a);
@@ -280,14 +285,7 @@ impl Plc for Io86aPlc {
                 Ok(())
             }
             plc::Command::LoadLinked(text) => {
-                let program = Program::parse(&text).map_err(|errors| {
-                    PlcError::Program(
-                        errors
-                            .into_iter()
-                            .map(|e| Located::new(e.line, ProgramProblem::Io86a(e.error)))
-                            .collect(),
-                    )
-                })?;
+                let program = parse(&text)?;
                 let now = self.pair.a.now();
                 let b = &mut self.pair.b;
                 b.set_running(false);
