@@ -5,6 +5,7 @@
 
 pub mod arduino;
 pub mod avr;
+pub mod cases;
 pub mod clock;
 pub mod error;
 pub mod events;

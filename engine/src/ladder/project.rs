@@ -29,6 +29,13 @@ pub struct Project {
     pub settings: BTreeMap<String, String>,
     /// The ladder.
     pub ladder: Ladder,
+    /// Test cases that travel with the ladder (docs/tests.md).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub tests: Vec<crate::cases::TestCase>,
+    /// The tests are an exercise: a link opens with them shown and the
+    /// ladder as its author left it.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub exercise: bool,
 }
 
 impl Project {
@@ -40,6 +47,8 @@ impl Project {
             machine,
             settings: BTreeMap::new(),
             ladder,
+            tests: Vec::new(),
+            exercise: false,
         }
     }
 

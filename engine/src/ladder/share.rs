@@ -20,6 +20,8 @@ use crate::MachineId;
 
 /// The prefix of version-1 share texts.
 pub const PREFIX: &str = "1.";
+/// The prefix of a link that also carries test cases (and the exercise flag).
+pub const PREFIX_TESTS: &str = "2.";
 /// The most bytes a share text may inflate to.
 const MAX_INFLATED: usize = 1 << 20;
 /// Grid limits a decoded rung must respect (the editor's own).
@@ -69,7 +71,10 @@ impl fmt::Display for ShareError {
 
 impl std::error::Error for ShareError {}
 
-/// Encodes a project as share text (`1.` + base64url of deflated binary).
+/// Encodes a project as share text (`1.` + base64url of deflated binary;
+/// a project with test cases, or marked as an exercise, is `2.`: the same
+/// binary followed by the exercise flag and the cases, so that links
+/// without tests stay what they were).
 pub fn encode(project: &Project) -> String {
     let mut w = Vec::new();
     w.push(machine_code(project.machine));
@@ -91,8 +96,23 @@ pub fn encode(project: &Project) -> String {
             put_len(&mut w, l.col);
         }
     }
+    let prefix = if project.tests.is_empty() && !project.exercise {
+        PREFIX
+    } else {
+        w.push(u8::from(project.exercise));
+        put_len(&mut w, project.tests.len());
+        for case in &project.tests {
+            put_str(&mut w, &case.name);
+            put_str(&mut w, &case.events);
+            put_len(&mut w, case.expect.len());
+            for line in &case.expect {
+                put_str(&mut w, line);
+            }
+        }
+        PREFIX_TESTS
+    };
     format!(
-        "{PREFIX}{}",
+        "{prefix}{}",
         URL_SAFE_NO_PAD.encode(compress_to_vec(&w, 10))
     )
 }
@@ -103,7 +123,11 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if text.len() > crate::limits::MAX_SHARE_FRAGMENT {
         return Err(ShareError::TooLong(text.len()));
     }
-    let Some(body) = text.strip_prefix(PREFIX) else {
+    let with_tests = text.starts_with(PREFIX_TESTS);
+    let Some(body) = text
+        .strip_prefix(PREFIX)
+        .or_else(|| text.strip_prefix(PREFIX_TESTS))
+    else {
         let version = text
             .split('.')
             .next()
@@ -154,9 +178,6 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
         }
         rungs.push(rung);
     }
-    if r.at != data.len() {
-        return Err(r.bad("data after the last rung"));
-    }
     let mut project = Project::new(
         machine,
         Ladder {
@@ -164,6 +185,31 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
             device_comments,
         },
     );
+    if with_tests {
+        project.exercise = match r.byte()? {
+            0 => false,
+            1 => true,
+            _ => return Err(r.bad("the exercise flag is neither 0 nor 1")),
+        };
+        let count = r.len(usize::MAX)?;
+        for _ in 0..count {
+            let name = r.string()?;
+            let events = r.string()?;
+            let lines = r.len(usize::MAX)?;
+            let mut expect = Vec::new();
+            for _ in 0..lines {
+                expect.push(r.string()?);
+            }
+            project.tests.push(crate::cases::TestCase {
+                name,
+                events,
+                expect,
+            });
+        }
+    }
+    if r.at != data.len() {
+        return Err(r.bad("data after the last rung"));
+    }
     project.settings = settings;
     Ok(project)
 }

@@ -39,6 +39,11 @@ impl Args {
         Ok(Args { pairs })
     }
 
+    /// No flags at all.
+    pub fn empty() -> Args {
+        Args { pairs: Vec::new() }
+    }
+
     /// The value of a flag given at most once.
     pub fn optional(&self, name: &str) -> Result<Option<&str>, String> {
         let mut found = self.pairs.iter().filter(|(n, _)| n == name);

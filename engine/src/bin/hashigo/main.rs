@@ -8,6 +8,7 @@ mod commands;
 mod input;
 mod share;
 mod source;
+mod test;
 
 use std::process::ExitCode;
 
@@ -21,6 +22,7 @@ usage: hashigo <command> [options]
   console  --machine io86a|arduino-plc [--program FILE] [--step TIME]
   share    --program FILE [--machine ID]      (prints the share link's fragment)
   unshare  FRAGMENT|URL                       (prints the project as JSON)
+  test     --program P.json [--machine ID] [--junit FILE]
 machines: minasec-u, io86a, avr-plc, arduino-plc";
 
 fn main() -> ExitCode {
@@ -29,6 +31,9 @@ fn main() -> ExitCode {
         eprintln!("{USAGE}");
         return ExitCode::from(2);
     };
+    if command == "test" {
+        return test::main(rest);
+    }
     let result = match command.as_str() {
         "run" => commands::run(rest),
         "bench" => commands::bench(rest),
@@ -61,7 +66,7 @@ fn main() -> ExitCode {
 /// NUL, ESC from a hostile file) escaped, and cut at 2 000 characters.
 /// The messages themselves already quote and shorten what they repeat;
 /// this is the last guard for the terminal.
-fn printable(problem: &str) -> String {
+pub(crate) fn printable(problem: &str) -> String {
     // The usage text after an unknown command is the one intended multi-line message.
     if let Some((first, usage)) = problem.split_once("\nusage: ") {
         return format!("{}\nusage: {usage}", printable(first));

@@ -139,6 +139,13 @@ pub fn read_project(
     let (ladder, machine, settings) = read_ladder(source, format, flag)?;
     let mut project = Project::new(machine, ladder);
     project.settings = settings.into_iter().map(|(n, v, _)| (n, v)).collect();
+    if format == Format::Json {
+        // The cases and the exercise flag travel with the ladder.
+        if let Ok(saved) = Project::from_json(&source.text) {
+            project.tests = saved.tests;
+            project.exercise = saved.exercise;
+        }
+    }
     Ok(project)
 }
 
