@@ -34,6 +34,20 @@ impl<E: fmt::Display> fmt::Display for Located<E> {
 
 impl<E: fmt::Debug + fmt::Display> std::error::Error for Located<E> {}
 
+/// Writes `items` separated by `; `: several problems as one message.
+pub fn write_joined<T: fmt::Display>(
+    f: &mut fmt::Formatter<'_>,
+    items: impl IntoIterator<Item = T>,
+) -> fmt::Result {
+    for (i, item) in items.into_iter().enumerate() {
+        if i > 0 {
+            f.write_str("; ")?;
+        }
+        write!(f, "{item}")?;
+    }
+    Ok(())
+}
+
 /// `text` as an error message repeats it: in quotes, control characters
 /// and quotes escaped, cut to [`crate::limits::MAX_ECHO_CHARS`] characters
 /// with `…` so that one problem stays one short line whatever the input.

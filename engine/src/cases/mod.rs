@@ -71,15 +71,12 @@ pub enum CaseError {
 impl fmt::Display for CaseError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CaseError::Events(errors) => {
-                for (i, e) in errors.iter().enumerate() {
-                    if i > 0 {
-                        f.write_str("; ")?;
-                    }
-                    write!(f, "events line {}: {}", e.line, e.error)?;
-                }
-                Ok(())
-            }
+            CaseError::Events(errors) => crate::error::write_joined(
+                f,
+                errors
+                    .iter()
+                    .map(|e| format!("events line {}: {}", e.line, e.error)),
+            ),
             CaseError::Event(e) => write!(f, "events line {}: {}", e.line, e.error),
             CaseError::Expect(i, e) => write!(f, "expectation {}: {e}", i + 1),
             CaseError::Device(i, e) => write!(f, "expectation {}: {e}", i + 1),

@@ -31,15 +31,7 @@ pub enum PlcError {
 impl fmt::Display for PlcError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            PlcError::Program(problems) => {
-                for (i, p) in problems.iter().enumerate() {
-                    if i > 0 {
-                        f.write_str("; ")?;
-                    }
-                    write!(f, "{p}")?;
-                }
-                Ok(())
-            }
+            PlcError::Program(problems) => crate::error::write_joined(f, problems),
             PlcError::Device(e) => e.fmt(f),
             PlcError::Setting(e) => e.fmt(f),
             PlcError::Panel(e) => e.fmt(f),
