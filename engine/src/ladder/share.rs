@@ -39,6 +39,15 @@ pub enum ShareError {
     Inflate,
     /// Longer than [`crate::limits::MAX_SHARE_FRAGMENT`] (the length).
     TooLong(usize),
+    /// A rung larger than a link holds (64 × 64 cells), when encoding.
+    RungTooLarge {
+        /// The rung, 1-based.
+        rung: usize,
+        /// Its rows.
+        rows: usize,
+        /// Its columns (or a link's column past them).
+        columns: usize,
+    },
     /// The binary is cut short or holds a bad value at this byte.
     Data {
         /// The byte offset in the inflated data.
@@ -57,6 +66,10 @@ impl fmt::Display for ShareError {
             ),
             ShareError::Base64 => f.write_str("this share link is damaged: it is not base64url text"),
             ShareError::Inflate => f.write_str("this share link is damaged: its data does not unpack"),
+            ShareError::RungTooLarge { rung, rows, columns } => write!(
+                f,
+                "rung {rung} spans {rows} rows and {columns} columns: a share link holds rungs of at most {MAX_ROWS} × {MAX_COLS} cells"
+            ),
             ShareError::TooLong(n) => write!(
                 f,
                 "this share link is {n} characters long, more than the {} a link may have (docs/limits.md)",
@@ -74,8 +87,23 @@ impl std::error::Error for ShareError {}
 /// Encodes a project as share text (`1.` + base64url of deflated binary;
 /// a project with test cases, or marked as an exercise, is `2.`: the same
 /// binary followed by the exercise flag and the cases, so that links
-/// without tests stay what they were).
-pub fn encode(project: &Project) -> String {
+/// without tests stay what they were). A rung larger than a link holds is
+/// refused, so that no link is made that would not open.
+pub fn encode(project: &Project) -> Result<String, ShareError> {
+    for (i, rung) in project.ladder.rungs.iter().enumerate() {
+        let rows = rung.cells.len();
+        let columns = rung
+            .width()
+            .max(rung.links.iter().map(|l| l.col).max().unwrap_or(0));
+        let link_rows = rung.links.iter().map(|l| l.row).max().unwrap_or(0);
+        if rows > MAX_ROWS || columns > MAX_COLS || link_rows > MAX_ROWS {
+            return Err(ShareError::RungTooLarge {
+                rung: i + 1,
+                rows: rows.max(link_rows),
+                columns,
+            });
+        }
+    }
     let mut w = Vec::new();
     w.push(machine_code(project.machine));
     put_map(&mut w, &project.settings);
@@ -111,10 +139,10 @@ pub fn encode(project: &Project) -> String {
         }
         PREFIX_TESTS
     };
-    format!(
+    Ok(format!(
         "{prefix}{}",
         URL_SAFE_NO_PAD.encode(compress_to_vec(&w, 10))
-    )
+    ))
 }
 
 /// Decodes share text back into a project.

@@ -62,10 +62,10 @@ fn every_element() -> Rung {
 #[test]
 fn every_element_and_the_seed_round_trip() {
     let mut p = Project::from_json(SEED_JSON).expect("seed");
-    assert_eq!(decode(&encode(&p)), Ok(p.clone()));
+    assert_eq!(decode(&encode(&p).expect("encodes")), Ok(p.clone()));
     p.ladder.rungs.push(every_element());
     p.machine = MachineId::Io86a;
-    assert_eq!(decode(&encode(&p)), Ok(p));
+    assert_eq!(decode(&encode(&p).expect("encodes")), Ok(p));
 }
 
 #[test]
@@ -79,11 +79,11 @@ fn size_goals() {
     for r in &mut seed.ladder.rungs {
         r.comment.clear();
     }
-    let text = encode(&seed);
+    let text = encode(&seed).expect("encodes");
     assert!(text.len() <= 200, "seed: {} characters: {text}", text.len());
     let mut with_comments = Project::from_json(SEED_JSON).expect("seed");
     with_comments.tests.clear();
-    let with_comments = encode(&with_comments);
+    let with_comments = encode(&with_comments).expect("encodes");
     assert!(
         with_comments.len() <= 400,
         "seed with comments: {}",
@@ -116,7 +116,7 @@ fn size_goals() {
     }
     let p = Project::new(MachineId::Io86a, ladder);
     p.ladder.logic(MachineId::Io86a).expect("a valid program");
-    let text = encode(&p);
+    let text = encode(&p).expect("encodes");
     assert!(text.len() <= 2000, "100 rungs: {} characters", text.len());
     assert_eq!(decode(&text), Ok(p));
 }
@@ -125,7 +125,7 @@ fn size_goals() {
 fn damaged_links_say_what_is_wrong() {
     let mut seed = Project::from_json(SEED_JSON).expect("seed");
     seed.tests.clear();
-    let good = encode(&seed);
+    let good = encode(&seed).expect("encodes");
     assert!(matches!(decode("3.abc"), Err(ShareError::Version(v)) if v == "3"));
     assert_eq!(decode("1.***"), Err(ShareError::Base64));
     assert_eq!(decode("1.AAAA"), Err(ShareError::Inflate));
@@ -150,7 +150,7 @@ proptest! {
     fn random_ladders_round_trip(rungs in prop::collection::vec(rung(Box::leak(Box::new(pool(MachineId::AvrPlc)))), 0..6)) {
         let mut p = Project::new(MachineId::AvrPlc, Ladder::from_logic(&rungs));
         p.settings.insert("scan".into(), "10ms".into());
-        prop_assert_eq!(decode(&encode(&p)), Ok(p));
+        prop_assert_eq!(decode(&encode(&p).expect("encodes")), Ok(p));
     }
 
     #[test]
@@ -229,4 +229,27 @@ fn share_and_unshare_from_the_command_line() {
     }
     let out = hashigo(&["unshare"], "");
     assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn a_rung_too_large_for_a_link_is_refused_when_encoding() {
+    let mut p = Project::from_json(SEED_JSON).expect("seed");
+    p.ladder.rungs[1].set(Pos::new(0, 70), Some(Element::coil("Y00")));
+    assert_eq!(
+        encode(&p),
+        Err(ShareError::RungTooLarge {
+            rung: 2,
+            rows: 1,
+            columns: 71
+        })
+    );
+    let msg = encode(&p).expect_err("too wide").to_string();
+    assert!(
+        msg.starts_with("rung 2 spans 1 rows and 71 columns"),
+        "{msg}"
+    );
+    // 64 × 64 still opens.
+    let mut p = Project::from_json(SEED_JSON).expect("seed");
+    p.ladder.rungs[1].set(Pos::new(63, 63), Some(Element::Wire));
+    assert_eq!(decode(&encode(&p).expect("fits")), Ok(p));
 }

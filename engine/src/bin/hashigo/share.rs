@@ -36,7 +36,8 @@ pub fn share(rest: &[String]) -> Result<(), Problems> {
             Project::new(machine, ladder)
         }
     };
-    println!("{}", share::encode(&project));
+    let link = share::encode(&project).map_err(|e| one(format!("{}: {e}", source.name)))?;
+    println!("{link}");
     Ok(())
 }
 
