@@ -8,7 +8,7 @@ use crate::events::InputValue;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
-use crate::{Located, MachineId};
+use crate::MachineId;
 
 const SETTINGS: &[SettingInfo] = &[
     SettingInfo {
@@ -122,14 +122,8 @@ impl Plc for ArduinoPlc {
     }
 
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
-        let program = Program::parse(text, self.machine.chip().capacity()).map_err(|errors| {
-            PlcError::Program(
-                errors
-                    .into_iter()
-                    .map(|e| Located::new(e.line, ProgramProblem::Arduino(e.error)))
-                    .collect(),
-            )
-        })?;
+        let program = Program::parse(text, self.machine.chip().capacity())
+            .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Arduino)))?;
         self.machine.load(&program);
         Ok(())
     }

@@ -8,7 +8,7 @@ use crate::events::InputValue;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
-use crate::{Located, MachineId};
+use crate::MachineId;
 
 const SETTINGS: &[SettingInfo] = &[SettingInfo {
     name: "scan",
@@ -93,14 +93,8 @@ impl Plc for AvrPlc {
     /// Assembles with `Scan` = this machine's scan period in ms.
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
         let scan = super::scan_ms(self.machine.scan_period())?;
-        let program = Program::parse(text, i64::from(scan)).map_err(|errors| {
-            PlcError::Program(
-                errors
-                    .into_iter()
-                    .map(|e| Located::new(e.line, ProgramProblem::Avr(e.error)))
-                    .collect(),
-            )
-        })?;
+        let program = Program::parse(text, i64::from(scan))
+            .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Avr)))?;
         self.machine.load(program);
         Ok(())
     }

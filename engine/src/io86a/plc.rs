@@ -9,7 +9,7 @@ use crate::events::InputValue;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
-use crate::{Located, MachineId};
+use crate::MachineId;
 
 const SETTINGS: &[SettingInfo] = &[
     SettingInfo {
@@ -126,14 +126,8 @@ impl Machine {
 
 /// A listing parsed, its problems as a [`PlcError`].
 fn parse(text: &str) -> Result<Program, PlcError> {
-    Program::parse(text).map_err(|errors| {
-        PlcError::Program(
-            errors
-                .into_iter()
-                .map(|e| Located::new(e.line, ProgramProblem::Io86a(e.error)))
-                .collect(),
-        )
-    })
+    Program::parse(text)
+        .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Io86a)))
 }
 
 /// PLC-IO86A as a [`Plc`]: the device in RUN and its serial terminal,

@@ -156,14 +156,8 @@ impl Plc for MinasecPlc {
     }
 
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
-        let program = Program::parse(text).map_err(|errors| {
-            PlcError::Program(
-                errors
-                    .into_iter()
-                    .map(|e| crate::Located::new(e.line, ProgramProblem::Minasec(e.error)))
-                    .collect(),
-            )
-        })?;
+        let program = Program::parse(text)
+            .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Minasec)))?;
         self.machine.load(&program);
         self.program = program;
         Ok(())

@@ -42,6 +42,18 @@ impl fmt::Display for PlcError {
 
 impl std::error::Error for PlcError {}
 
+/// A parser's located errors as [`ProgramProblem`]s, `f` naming the
+/// machine (`ProgramProblem::Io86a`).
+pub fn problems<E>(
+    errors: Vec<Located<E>>,
+    f: impl Fn(E) -> ProgramProblem,
+) -> Vec<Located<ProgramProblem>> {
+    errors
+        .into_iter()
+        .map(|e| Located::new(e.line, f(e.error)))
+        .collect()
+}
+
 impl From<DeviceError> for PlcError {
     fn from(e: DeviceError) -> Self {
         PlcError::Device(e)

@@ -16,7 +16,7 @@ pub use crate::arduino::ArduinoPlc;
 pub use crate::avr::AvrPlc;
 pub use crate::io86a::Io86aPlc;
 pub use crate::minasec::MinasecPlc;
-pub use error::{DeviceError, PlcError, ProgramProblem, SettingError};
+pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
 pub use front::{Front, Io86aFront};
 
 use crate::events::InputValue;

@@ -134,35 +134,26 @@ impl std::error::Error for TextError {}
 /// A program in `machine`'s own text (the AVR's with `Scan` = `scan_ms`)
 /// as a ladder.
 pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<Ladder, TextError> {
-    use crate::plc::ProgramProblem as P;
-    fn located<E>(
-        errors: Vec<crate::Located<E>>,
-        f: impl Fn(E) -> crate::plc::ProgramProblem,
-    ) -> TextError {
-        TextError::Program(
-            errors
-                .into_iter()
-                .map(|e| crate::Located::new(e.line, f(e.error)))
-                .collect(),
-        )
-    }
+    use crate::plc::{problems, ProgramProblem as P};
     let ladder = match machine {
         MachineId::MinasecU => {
-            let p = minasec::Program::parse(text).map_err(|e| located(e, P::Minasec))?;
+            let p = minasec::Program::parse(text)
+                .map_err(|e| TextError::Program(problems(e, P::Minasec)))?;
             decompile(Source::Minasec(&p))
         }
         MachineId::Io86a => {
-            let p = io86a::Program::parse(text).map_err(|e| located(e, P::Io86a))?;
+            let p = io86a::Program::parse(text)
+                .map_err(|e| TextError::Program(problems(e, P::Io86a)))?;
             decompile(Source::Io86a(&p))
         }
         MachineId::AvrPlc => {
-            let p =
-                avr::Program::parse(text, i64::from(scan_ms)).map_err(|e| located(e, P::Avr))?;
+            let p = avr::Program::parse(text, i64::from(scan_ms))
+                .map_err(|e| TextError::Program(problems(e, P::Avr)))?;
             decompile(Source::Avr(&p, scan_ms))
         }
         MachineId::ArduinoPlc => {
             let p = arduino::Program::parse(text, arduino::Chip::Atmega328.capacity())
-                .map_err(|e| located(e, P::Arduino))?;
+                .map_err(|e| TextError::Program(problems(e, P::Arduino)))?;
             decompile(Source::Arduino(&p))
         }
     };
