@@ -19,7 +19,7 @@ pub fn share(rest: &[String]) -> Result<(), Problems> {
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
     let source = SourceFile::read(path).map_err(one)?;
     let project = match format {
-        Format::Json | Format::Xml => read_project(&source, format, flag)?,
+        Format::Json | Format::Xml => read_project(&source, format, flag)?.0,
         Format::Il | Format::Asm => {
             let machine = match flag {
                 Some(m) => m,

@@ -2,7 +2,7 @@
 //! machine of its kind, through the engine's one machine interface.
 
 use engine::ladder::compile::{compile as compile_ladder, Options};
-use engine::ladder::{plcopen, Ladder, Project};
+use engine::ladder::{plcopen, Project};
 use engine::plc::{new_plc, Command, Plc, PlcError};
 use engine::{MachineId, SimTime};
 
@@ -112,62 +112,53 @@ pub fn compile_source(
     format: Format,
     flag: Option<MachineId>,
 ) -> Result<(MachineId, String, Settings), Problems> {
-    let (ladder, machine, settings) = read_ladder(source, format, flag)?;
-    let avr_scan_ms = if machine == MachineId::AvrPlc {
-        avr_scan_ms(args, &source.name, &settings)?
+    let (project, settings) = read_project(source, format, flag)?;
+    let text = compile_project(args, source, &project, &settings)?;
+    Ok((project.machine, text, settings))
+}
+
+/// `project` (read from `source`) compiled for its machine.
+pub fn compile_project(
+    args: &Args,
+    source: &SourceFile,
+    project: &Project,
+    settings: &Settings,
+) -> Result<String, Problems> {
+    let avr_scan_ms = if project.machine == MachineId::AvrPlc {
+        avr_scan_ms(args, &source.name, settings)?
     } else {
         10
     };
     let options = Options { avr_scan_ms };
-    let text = compile_ladder(&ladder, machine, options).map_err(|errors| {
+    compile_ladder(&project.ladder, project.machine, options).map_err(|errors| {
         errors
             .iter()
             .map(|e| format!("{}: {e}", source.name))
             .collect::<Vec<_>>()
-    })?;
-    Ok((machine, text, settings))
+    })
 }
 
-/// The project a ladder file stands for: its ladder, machine and
-/// settings. It is not compiled: a ladder with wiring errors is still a
-/// ladder to share.
+/// The project a ladder file stands for (`--machine` wins over the one a
+/// `.json` project names; a PLCopen file names none), with its settings
+/// and the line of each. It is not compiled: a ladder with wiring errors
+/// is still a ladder to share.
 pub fn read_project(
     source: &SourceFile,
     format: Format,
     flag: Option<MachineId>,
-) -> Result<Project, Problems> {
-    let (ladder, machine, settings) = read_ladder(source, format, flag)?;
-    let mut project = Project::new(machine, ladder);
-    project.settings = settings.into_iter().map(|(n, v, _)| (n, v)).collect();
+) -> Result<(Project, Settings), Problems> {
     if format == Format::Json {
-        // The cases and the exercise flag travel with the ladder.
-        if let Ok(saved) = Project::from_json(&source.text) {
-            project.tests = saved.tests;
-            project.exercise = saved.exercise;
-        }
-    }
-    Ok(project)
-}
-
-/// A ladder from a project (`.json`, naming its machine) or PLCopen XML
-/// (which does not: `--machine` says). `--machine` wins over the project's.
-fn read_ladder(
-    source: &SourceFile,
-    format: Format,
-    flag: Option<MachineId>,
-) -> Result<(Ladder, MachineId, Settings), Problems> {
-    if format == Format::Json {
-        let project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
-        let machine = flag.unwrap_or(project.machine);
+        let mut project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
+        project.machine = flag.unwrap_or(project.machine);
         let settings = project
             .settings
-            .into_iter()
+            .iter()
             .map(|(n, v)| {
-                let line = Project::setting_line(&source.text, &n);
-                (n, v, line)
+                let line = Project::setting_line(&source.text, n);
+                (n.clone(), v.clone(), line)
             })
             .collect();
-        return Ok((project.ladder, machine, settings));
+        return Ok((project, settings));
     }
     let machine = flag.ok_or_else(|| {
         one(format!(
@@ -177,7 +168,7 @@ fn read_ladder(
     })?;
     let ladder = plcopen::import_for(&source.text, Some(machine))
         .map_err(|errors| source.located(&errors))?;
-    Ok((ladder, machine, Vec::new()))
+    Ok((Project::new(machine, ladder), Vec::new()))
 }
 
 /// The `Scan` symbol of AVR sources: the scan period in ms from the last

@@ -5,12 +5,11 @@
 use std::process::ExitCode;
 
 use engine::cases::{run_case, Outcome};
-use engine::ladder::Project;
 use engine::plc::new_plc;
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};
-use crate::source::{apply_settings, compile_source, machine_flag, one, Problems};
+use crate::source::{apply_settings, compile_project, machine_flag, one, read_project, Problems};
 
 /// Runs the command; the exit code as cli.md gives it.
 pub fn main(rest: &[String]) -> ExitCode {
@@ -38,14 +37,15 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
+    let (project, settings) = read_project(&source, format, flag)?;
     if project.tests.is_empty() {
         return Err(one(format!(
             "{}: the project has no test cases",
             source.name
         )));
     }
-    let (machine, text, settings) = compile_source(&args, &source, format, flag)?;
+    let text = compile_project(&args, &source, &project, &settings)?;
+    let machine = project.machine;
     let mut results = Vec::new();
     let mut problems = Vec::new();
     for case in &project.tests {
