@@ -5,7 +5,6 @@
 
 mod expect;
 
-use std::collections::BTreeSet;
 use std::fmt;
 
 use serde::{Deserialize, Serialize};
@@ -188,7 +187,11 @@ pub fn run_case(plc: &mut dyn Plc, case: &TestCase) -> Result<Outcome, CaseError
             seen: false,
         });
     }
-    let instants = instants(&events, &watches)?;
+    let instants = Instants::new(&events, &watches);
+    // Counted before anything runs: a case past the limit runs nothing.
+    if instants.clone().nth(MAX_SAMPLES).is_some() {
+        return Err(CaseError::TooLong);
+    }
     let mut pending = events.iter().zip(inputs).peekable();
     for t in instants {
         while let Some((event, device)) = pending.next_if(|(e, _)| e.time <= t) {
@@ -215,27 +218,122 @@ pub fn run_case(plc: &mut dyn Plc, case: &TestCase) -> Result<Outcome, CaseError
         .unwrap_or(Outcome::Pass))
 }
 
-/// Every instant to look at: the events' times, the expectations' times,
-/// and each window sampled every [`SAMPLE`].
-fn instants(
-    events: &[crate::events::InputEvent],
-    watches: &[Watch],
-) -> Result<BTreeSet<SimTime>, CaseError> {
-    let mut out: BTreeSet<SimTime> = events.iter().map(|e| e.time).collect();
-    for w in watches {
-        let (from, to) = w.expectation.span();
-        out.insert(from);
-        out.insert(to);
-        if from != to {
+/// Every instant to look at, in order, each once: the events' times, the
+/// expectations' times and windows' ends, and each window sampled every
+/// [`SAMPLE`] from its start. Yielded one at a time, so a long window
+/// costs no memory.
+#[derive(Clone)]
+struct Instants {
+    /// The single instants, sorted, each once.
+    points: Vec<SimTime>,
+    /// The next point not yet passed.
+    next_point: usize,
+    /// Windows `(from, to)` with `from < to`.
+    windows: Vec<(SimTime, SimTime)>,
+    /// The last instant yielded.
+    last: Option<SimTime>,
+}
+
+impl Instants {
+    fn new(events: &[crate::events::InputEvent], watches: &[Watch]) -> Instants {
+        let mut points: Vec<SimTime> = events.iter().map(|e| e.time).collect();
+        let mut windows = Vec::new();
+        for w in watches {
+            let (from, to) = w.expectation.span();
+            points.extend([from, to]);
+            if from < to {
+                windows.push((from, to));
+            }
+        }
+        points.sort_unstable();
+        points.dedup();
+        Instants {
+            points,
+            next_point: 0,
+            windows,
+            last: None,
+        }
+    }
+}
+
+impl Iterator for Instants {
+    type Item = SimTime;
+
+    fn next(&mut self) -> Option<SimTime> {
+        let after = |t: SimTime| self.last.is_none_or(|last| t > last);
+        while self.points.get(self.next_point).is_some_and(|&p| !after(p)) {
+            self.next_point += 1;
+        }
+        let mut next = self.points.get(self.next_point).copied();
+        if let Some(last) = self.last {
+            // The next sample of each window the last instant lies in (a
+            // window's start is a point, so none starts between samples).
+            for &(from, to) in &self.windows {
+                if (from..to).contains(&last) {
+                    let steps = (last - from).as_nanos() / SAMPLE.as_nanos() + 1;
+                    let sample =
+                        from.saturating_add(SimTime::from_nanos(steps * SAMPLE.as_nanos()));
+                    if sample < to && next.is_none_or(|n| sample < n) {
+                        next = Some(sample);
+                    }
+                }
+            }
+        }
+        self.last = next;
+        next
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeSet;
+
+    fn watch(line: &str) -> Watch {
+        Watch {
+            expectation: Expectation::parse(line).expect("expectation"),
+            device: Device(0),
+            failed: None,
+            last: None,
+            seen: false,
+        }
+    }
+
+    /// The instants as a set, built the obvious way.
+    fn naive(events: &[crate::events::InputEvent], watches: &[Watch]) -> Vec<SimTime> {
+        let mut out: BTreeSet<SimTime> = events.iter().map(|e| e.time).collect();
+        for w in watches {
+            let (from, to) = w.expectation.span();
+            out.extend([from, to]);
             let mut t = from;
             while t < to {
                 out.insert(t);
-                if out.len() > MAX_SAMPLES {
-                    return Err(CaseError::TooLong);
-                }
                 t = t.saturating_add(SAMPLE);
             }
         }
+        out.into_iter().collect()
     }
-    Ok(out)
+
+    #[test]
+    fn instants_are_every_point_and_every_sample_once_in_order() {
+        let events = parse_events("0.5ms,X00,1\n3ms,X00,0\n7.25ms,X01,1\n").expect("events");
+        let watches = [
+            watch("Y00 = 1 at 2.5ms"),
+            watch("Y00 stays 1 from 0.3ms to 4.1ms"),
+            watch("Y01 rises within 2ms..9ms"),
+            watch("Y02 falls within 8.7ms..8.7ms"),
+        ];
+        let walked: Vec<SimTime> = Instants::new(&events, &watches).collect();
+        assert_eq!(walked, naive(&events, &watches));
+        assert!(walked.windows(2).all(|w| w[0] < w[1]));
+    }
+
+    #[test]
+    fn a_case_past_the_sample_limit_is_refused_before_it_runs() {
+        let watches = [watch("Y00 stays 0 from 0s to 10001s")];
+        let walked = Instants::new(&[], &watches);
+        assert!(walked.clone().nth(MAX_SAMPLES).is_some());
+        let watches = [watch("Y00 stays 0 from 0s to 9999s")];
+        assert!(Instants::new(&[], &watches).nth(MAX_SAMPLES).is_none());
+    }
 }
