@@ -340,6 +340,7 @@ impl<'a> Grid<'a> {
             }
         }
         let mut edges = Vec::new();
+        let mut shorted = false;
         for (p, e) in self.rung.elements() {
             if e.is_output() || matches!(e, Element::Wire) {
                 continue;
@@ -354,6 +355,7 @@ impl<'a> Grid<'a> {
                     LadderErrorKind::Wiring,
                     "short circuit: a wire joins both sides of this element",
                 ));
+                shorted = true;
                 continue;
             }
             edges.push(Edge {
@@ -363,10 +365,7 @@ impl<'a> Grid<'a> {
             });
         }
         // A shorted contact is the cause when the output also sits on the
-        // rail; only then is the output itself the problem.
-        let shorted = errors
-            .iter()
-            .any(|e| e.message.starts_with("short circuit"));
+        // rail; only without one is the output itself the problem.
         if bus == rail && !shorted {
             errors.push(self.err(
                 outputs[0].1,
