@@ -64,9 +64,7 @@ impl DeviceSignals {
         for i in 0..2 {
             put(self.analog_mv[i], m.analog_mv[i]);
             put(self.analog[i], m.analog[i]);
-            if let Some(signal) = m.signals[i] {
-                put(self.outputs[i], signal);
-            }
+            put(self.outputs[i], m.signals[i]);
         }
         put(self.ir, m.ir);
         put(self.running, m.running);

@@ -19,7 +19,7 @@ pub enum Front {
 }
 
 /// One IO86A's pins as its front shows them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Io86aFront {
     /// The input pins as driven (bit n = X0n).
     pub inputs: u8,
@@ -34,7 +34,7 @@ pub struct Io86aFront {
     /// Whether X07 is the IR receiver.
     pub ir: bool,
     /// What Y03 / Y04 put out.
-    pub signals: [Option<OutputSignal>; 2],
+    pub signals: [OutputSignal; 2],
     /// RUN (else STOP).
     pub running: bool,
 }
@@ -50,7 +50,7 @@ impl Io86aFront {
             analog_mv: [m.analog(0), m.analog(1)],
             analog: settings.analog.map(|a| a != InputMode::Digital),
             ir: settings.ir != IrMode::Digital,
-            signals: [Some(m.output_signal(0)), Some(m.output_signal(1))],
+            signals: [m.output_signal(0), m.output_signal(1)],
             running: m.running(),
         }
     }
