@@ -8,7 +8,7 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 use super::change::Step;
-use super::command::{EditError, PlanSteps};
+use super::command::{EditError, Plan};
 use super::{Cursor, MAX_COLUMNS, MAX_ROWS};
 use crate::ladder::element::Element;
 use crate::ladder::grid::{Ladder, Link, Pos, Rung};
@@ -193,12 +193,12 @@ impl Clip {
     }
 
     /// Plans the paste at `at`; the cursor's place afterwards.
-    pub(super) fn paste(&self, steps: &mut PlanSteps, at: Cursor) -> Result<Cursor, EditError> {
+    pub(super) fn paste(&self, plan: &mut Plan, at: Cursor) -> Result<Cursor, EditError> {
         match self {
             Clip::Rungs { rungs } => {
-                let index = at.rung.min(steps.ladder().rungs.len());
+                let index = at.rung.min(plan.ladder.rungs.len());
                 for (i, rung) in rungs.iter().enumerate() {
-                    steps.push(Step::Insert {
+                    plan.steps.push(Step::Insert {
                         index: index + i,
                         rung: rung.clone(),
                     });
@@ -211,7 +211,7 @@ impl Clip {
                 if at.row + height > MAX_ROWS || at.col + width > MAX_COLUMNS {
                     return Err(EditError::Clip(ClipError::OutsideGrid));
                 }
-                let mut rung = steps.rung(at.rung)?;
+                let mut rung = plan.rung(at.rung)?;
                 for (r, row) in cells.iter().enumerate() {
                     for (c, cell) in row.iter().enumerate() {
                         rung.set(Pos::new(at.row + r, at.col + c), cell.clone());
@@ -227,7 +227,7 @@ impl Clip {
                     }
                 }
                 rung.links.sort();
-                steps.set(at.rung, rung)?;
+                plan.set(at.rung, rung)?;
                 Ok(Cursor::new(at.rung, at.row, at.col + width))
             }
         }

@@ -168,9 +168,11 @@ impl std::error::Error for EditError {}
 
 /// A change being planned: the steps so far, on a scratch copy of the
 /// rungs it touches.
-struct Plan<'a> {
-    ladder: &'a Ladder,
-    steps: Vec<Step>,
+pub(super) struct Plan<'a> {
+    /// The ladder before the edit.
+    pub(super) ladder: &'a Ladder,
+    /// The steps so far.
+    pub(super) steps: Vec<Step>,
     /// Rungs appended so far (a cell one past the last rung creates it).
     appended: Vec<Rung>,
 }
@@ -186,7 +188,7 @@ impl<'a> Plan<'a> {
 
     /// The rung at `index` as the plan has it, to change; `index` may be
     /// one past the last rung, which creates it.
-    fn rung(&mut self, index: usize) -> Result<Rung, EditError> {
+    pub(super) fn rung(&mut self, index: usize) -> Result<Rung, EditError> {
         let len = self.ladder.rungs.len();
         match index.cmp(&len) {
             std::cmp::Ordering::Less => Ok(self.ladder.rungs[index].clone()),
@@ -203,7 +205,7 @@ impl<'a> Plan<'a> {
     }
 
     /// Records rung `index` becoming `after` (if it changed).
-    fn set(&mut self, index: usize, after: Rung) -> Result<(), EditError> {
+    pub(super) fn set(&mut self, index: usize, after: Rung) -> Result<(), EditError> {
         let before = self.ladder.rungs.get(index).cloned().unwrap_or_default();
         if before == after && self.appended.is_empty() {
             return Err(EditError::NothingToDo);
@@ -408,7 +410,7 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
             });
             cursor
         }
-        Edit::Paste { at, clip } => clip.paste(&mut plan_steps(&mut plan), at)?,
+        Edit::Paste { at, clip } => clip.paste(&mut plan, at)?,
         Edit::ReplaceDevices { from, to } => {
             let uses = super::replace_plan(ladder, &from, &to).map_err(EditError::Replace)?;
             if uses.is_empty() {
@@ -482,35 +484,4 @@ fn place(
         });
     }
     Ok(Cursor::new(next, 0, 0))
-}
-
-/// The paste's view of a plan: the ladder and where its steps go.
-pub(super) struct PlanSteps<'p, 'a> {
-    plan: &'p mut Plan<'a>,
-}
-
-impl PlanSteps<'_, '_> {
-    /// The ladder before the edit.
-    pub fn ladder(&self) -> &Ladder {
-        self.plan.ladder
-    }
-
-    /// The rung at `index` (one past the last creates it), to change.
-    pub fn rung(&mut self, index: usize) -> Result<Rung, EditError> {
-        self.plan.rung(index)
-    }
-
-    /// Records rung `index` becoming `after`.
-    pub fn set(&mut self, index: usize, after: Rung) -> Result<(), EditError> {
-        self.plan.set(index, after)
-    }
-
-    /// Records a step.
-    pub fn push(&mut self, step: Step) {
-        self.plan.steps.push(step);
-    }
-}
-
-fn plan_steps<'p, 'a>(plan: &'p mut Plan<'a>) -> PlanSteps<'p, 'a> {
-    PlanSteps { plan }
 }
