@@ -4,6 +4,7 @@
 //! replace).
 
 mod devices;
+mod entry;
 mod properties;
 
 use engine::ladder::compile::{compile, Options};

@@ -47,6 +47,15 @@ pub fn compile(
     machine: MachineId,
     options: Options,
 ) -> Result<String, Vec<LadderError>> {
+    compile_mapped(rungs, machine, options).map(|(text, _)| text)
+}
+
+/// [`compile`], with the step each rung starts at.
+pub(crate) fn compile_mapped(
+    rungs: &[RungLogic],
+    machine: MachineId,
+    options: Options,
+) -> Result<(String, Vec<usize>), Vec<LadderError>> {
     let candidates = match machine {
         MachineId::MinasecU => ["M10", "M11", "M12", "M13"]
             .into_iter()
@@ -70,7 +79,9 @@ pub fn compile(
         timers: Vec::new(),
     };
     let mut errors = Vec::new();
+    let mut starts = Vec::with_capacity(rungs.len());
     for (i, logic) in rungs.iter().enumerate() {
+        starts.push(c.steps());
         if let Err((pos, m)) = c.rung(logic) {
             errors.push(match pos {
                 Some(p) => LadderError::at(i, p, m),
@@ -90,10 +101,11 @@ pub fn compile(
     if !errors.is_empty() {
         return Err(errors);
     }
-    Ok(match machine {
+    let text = match machine {
         MachineId::MinasecU => c.minasec_text(),
         _ => c.avr_text(options),
-    })
+    };
+    Ok((text, starts))
 }
 
 type RungResult = Result<(), (Option<Pos>, String)>;

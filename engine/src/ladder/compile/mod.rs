@@ -3,10 +3,14 @@
 //!
 //! - [`accumulator`]: MINASEC-U and the AVR PLC (one accumulator; partial
 //!   results go to temporary relays);
+//! - [`compile_listing`]: the same, with each rung's steps (for the editor);
 //! - [`stack`]: PLC-IO86A and the Arduino sketch (block stacks, ORB / ANB).
 
 pub mod accumulator;
+mod listing;
 pub mod stack;
+
+pub use listing::{compile_listing, Listing, RungStart};
 
 use std::collections::BTreeSet;
 

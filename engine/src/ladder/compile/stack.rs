@@ -27,6 +27,14 @@ struct Compiler {
 
 /// Compiles checked rung logic for IO86A or the Arduino sketch.
 pub fn compile(rungs: &[RungLogic], machine: MachineId) -> Result<String, Vec<LadderError>> {
+    compile_mapped(rungs, machine).map(|(text, _)| text)
+}
+
+/// [`compile`], with the step each rung starts at.
+pub(crate) fn compile_mapped(
+    rungs: &[RungLogic],
+    machine: MachineId,
+) -> Result<(String, Vec<usize>), Vec<LadderError>> {
     let arduino = machine == MachineId::ArduinoPlc;
     let candidates = if arduino {
         Vec::new()
@@ -41,7 +49,16 @@ pub fn compile(rungs: &[RungLogic], machine: MachineId) -> Result<String, Vec<La
         temps: Temps::new(candidates, rungs, "unused M00-M55"),
     };
     let mut errors = Vec::new();
+    let mut starts = Vec::with_capacity(rungs.len());
+    // Steps so far, counted over the lines added since the last rung.
+    let (mut steps, mut counted) = (0, 0);
     for (i, logic) in rungs.iter().enumerate() {
+        steps += c.lines[counted..]
+            .iter()
+            .filter(|l| !l.starts_with(';'))
+            .count();
+        counted = c.lines.len();
+        starts.push(steps);
         if !logic.comment.is_empty() {
             c.lines.push(format!("; {}", one_line(&logic.comment)));
         }
@@ -72,7 +89,7 @@ pub fn compile(rungs: &[RungLogic], machine: MachineId) -> Result<String, Vec<La
     }
     let mut text = c.lines.join("\n");
     text.push('\n');
-    Ok(text)
+    Ok((text, starts))
 }
 
 type RungResult = Result<(), (Pos, String)>;

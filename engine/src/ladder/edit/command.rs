@@ -115,6 +115,13 @@ pub enum Edit {
     },
     /// An empty ladder (the old one comes back with undo).
     NewLadder,
+    /// Another whole ladder: text loaded as a ladder, an example, a
+    /// ladder brought from another machine (the old one comes back with
+    /// undo).
+    Replace {
+        /// The new ladder.
+        ladder: Ladder,
+    },
 }
 
 /// Why an edit was refused; nothing changed.
@@ -431,16 +438,8 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
             }
             cursor
         }
-        Edit::NewLadder => {
-            if *ladder == Ladder::default() {
-                return Err(EditError::NothingToDo);
-            }
-            plan.steps.push(Step::Ladder {
-                before: Box::new(ladder.clone()),
-                after: Box::default(),
-            });
-            Cursor::default()
-        }
+        Edit::NewLadder => replace_all(&mut plan, ladder, Ladder::default())?,
+        Edit::Replace { ladder: new } => replace_all(&mut plan, ladder, new)?,
     };
     plan.done(cursor, after)
 }
@@ -484,4 +483,16 @@ fn place(
         });
     }
     Ok(Cursor::new(next, 0, 0))
+}
+
+/// Plans replacing the whole ladder; the cursor goes to the first cell.
+fn replace_all(plan: &mut Plan<'_>, ladder: &Ladder, new: Ladder) -> Result<Cursor, EditError> {
+    if *ladder == new {
+        return Err(EditError::NothingToDo);
+    }
+    plan.steps.push(Step::Ladder {
+        before: Box::new(ladder.clone()),
+        after: Box::new(new),
+    });
+    Ok(Cursor::default())
 }

@@ -13,11 +13,13 @@ mod change;
 mod clip;
 mod command;
 mod devices;
+mod entry;
 
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
 pub use devices::{complete, device_names, find, replace_plan, xref, Found, Use, UseRole};
+pub use entry::{parse_entry, EntryError, EntryKind};
 
 use super::grid::{Ladder, Pos};
 

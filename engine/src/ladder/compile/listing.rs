@@ -1,0 +1,107 @@
+//! A compiled program together with where each rung's steps are, so the
+//! editor can number rungs by their first step (as GX Works does) and
+//! highlight a rung's steps in the listing.
+
+use std::ops::Range;
+
+use super::{accumulator, stack, Options};
+use crate::ladder::grid::{Ladder, LadderError};
+use crate::MachineId;
+
+/// A compiled ladder: the program text and its steps by rung.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Listing {
+    /// The program in the machine's own format.
+    pub text: String,
+    /// For each rung that compiled to steps: its index in the ladder and
+    /// its first step, in order.
+    pub rungs: Vec<RungStart>,
+    /// The 0-based text line of each step, in step order.
+    pub step_lines: Vec<usize>,
+    /// Steps the rungs produced (the rest is the machine's end marker).
+    rung_steps: usize,
+}
+
+/// Where a rung's steps begin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RungStart {
+    /// The rung's index in the ladder (0-based).
+    pub rung: usize,
+    /// Its first step (0-based).
+    pub first_step: usize,
+}
+
+impl Listing {
+    /// The steps of ladder rung `rung` (none for an empty rung).
+    pub fn steps_of(&self, rung: usize) -> Option<Range<usize>> {
+        let i = self.rungs.iter().position(|r| r.rung == rung)?;
+        let end = self
+            .rungs
+            .get(i + 1)
+            .map_or(self.rung_steps, |next| next.first_step);
+        Some(self.rungs[i].first_step..end)
+    }
+
+    /// The ladder rung step `step` came from (none for the end marker).
+    pub fn rung_of_step(&self, step: usize) -> Option<usize> {
+        if step >= self.rung_steps {
+            return None;
+        }
+        let i = self.rungs.partition_point(|r| r.first_step <= step);
+        self.rungs.get(i.checked_sub(1)?).map(|r| r.rung)
+    }
+
+    /// The step on 0-based text line `line`, if that line is a step.
+    pub fn step_at_line(&self, line: usize) -> Option<usize> {
+        self.step_lines.binary_search(&line).ok()
+    }
+}
+
+/// Compiles `ladder` for `machine` like [`super::compile`], keeping where
+/// each rung's steps are.
+pub fn compile_listing(
+    ladder: &Ladder,
+    machine: MachineId,
+    options: Options,
+) -> Result<Listing, Vec<LadderError>> {
+    let logic = ladder.logic(machine)?;
+    // `logic` holds the non-empty rungs, in order.
+    let indices = ladder
+        .rungs
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| !r.is_empty())
+        .map(|(i, _)| i);
+    let (text, starts) = match machine {
+        MachineId::MinasecU | MachineId::AvrPlc => {
+            accumulator::compile_mapped(&logic, machine, options)?
+        }
+        MachineId::Io86a | MachineId::ArduinoPlc => stack::compile_mapped(&logic, machine)?,
+    };
+    let step_lines: Vec<usize> = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| is_step(machine, l))
+        .map(|(i, _)| i)
+        .collect();
+    // Every machine but MINASEC-U ends its program with one end marker.
+    let trailer = usize::from(machine != MachineId::MinasecU);
+    Ok(Listing {
+        rung_steps: step_lines.len().saturating_sub(trailer),
+        rungs: indices
+            .zip(starts)
+            .map(|(rung, first_step)| RungStart { rung, first_step })
+            .collect(),
+        step_lines,
+        text,
+    })
+}
+
+/// Whether a line of compiled text is a step of the machine's program.
+fn is_step(machine: MachineId, line: &str) -> bool {
+    let line = line.trim();
+    match machine {
+        MachineId::AvrPlc => line.starts_with(".db"),
+        _ => !line.is_empty() && !line.starts_with(';'),
+    }
+}
