@@ -1,14 +1,41 @@
-//! Example programs and opening them without losing the user's own text.
+//! Example programs and opening them without losing the user's own work.
 
+use engine::ladder::edit::Edit;
 use engine::minasec::SEED_TEST_PROGRAM;
+use engine::MachineId;
 use leptos::prelude::*;
 
-use crate::minasec::MinasecCtx;
+use crate::editor::LadderCtx;
+use crate::machines::minasec::MinasecCtx;
 
-/// Opens example `id` (`seed-test`): its text replaces the pane's, it is
-/// loaded into the board, and the panel takes the example's settings. The
-/// replaced text is kept for [`undo`].
-pub fn open(board: MinasecCtx, id: &str) {
+/// Opens example `id` of `machine` as a ladder in `ladder` (the old
+/// ladder is one undo away; the text pane follows the ladder while it
+/// holds the ladder's listing). MINASEC-U's test program also goes to
+/// the board as before, see [`open_minasec`].
+pub fn open(machine: MachineId, id: &str, board: MinasecCtx, ladder: LadderCtx) {
+    let Some(example) = engine::examples::examples_of(machine).find(|e| e.id == id) else {
+        return;
+    };
+    if machine == MachineId::MinasecU {
+        open_minasec(board, id);
+    }
+    let scan = ladder.options.get_untracked().avr_scan_ms;
+    match engine::ladder::decompile::decompile_text(machine, example.text, scan) {
+        Ok(new) => {
+            ladder.apply(Edit::Replace { ladder: new });
+            if machine == MachineId::MinasecU {
+                // The pane holds the example's own text: the same program.
+                ladder.adopt_text();
+            }
+        }
+        Err(e) => ladder.message.set(Some(e.to_string())),
+    }
+}
+
+/// Opens MINASEC-U example `id` (`seed-test`): its text replaces the
+/// pane's, it is loaded into the board, and the panel takes the example's
+/// settings. The replaced text is kept for [`undo`].
+pub fn open_minasec(board: MinasecCtx, id: &str) {
     if id != "seed-test" {
         return;
     }

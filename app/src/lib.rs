@@ -1,14 +1,12 @@
 //! Hashigo's web app: the MINASEC-U front panel, the program pane and the
 //! simulation loop. It renders and dispatches; the machine is the engine's.
 
-pub mod arduino;
-pub mod avr;
 pub mod bench;
-pub mod components;
+pub mod chrome;
+pub mod editor;
 pub mod examples;
 pub mod i18n;
-pub mod io86a;
-pub mod minasec;
+pub mod machines;
 pub mod sim;
 pub mod state;
 pub mod storage;
@@ -21,7 +19,7 @@ use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::JsCast;
 
-use components::header::{set_document_lang, Header};
+use chrome::header::{set_document_lang, Header};
 use i18n::Lang;
 use state::Ctx;
 use workspaces::Workspaces;

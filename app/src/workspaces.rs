@@ -3,12 +3,15 @@
 
 use leptos::prelude::*;
 
-use crate::components::board::Board;
-use crate::components::program::ProgramPane;
-use crate::minasec::MinasecCtx;
+use engine::MachineId;
+
+use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
+use crate::machines::minasec::board::Board;
+use crate::machines::minasec::program::ProgramPane;
+use crate::machines::minasec::MinasecCtx;
+use crate::machines::{arduino, avr, io86a};
 use crate::sim::Pace;
 use crate::state::{Ctx, MachineKind};
-use crate::{arduino, avr, io86a};
 
 /// Every workspace's context; `Copy`.
 #[derive(Clone, Copy)]
@@ -17,16 +20,78 @@ pub struct Workspaces {
     pub io86a: io86a::Io86aCtx,
     pub arduino: arduino::ArduinoCtx,
     pub avr: avr::AvrCtx,
+    /// Each machine's ladder editor.
+    pub ladders: Ladders,
 }
 
 impl Workspaces {
     /// Every workspace on `page`, each restored from its autosave.
     pub fn restore(page: Ctx) -> Workspaces {
+        let minasec = MinasecCtx::restore(page);
+        let io86a = io86a::Io86aCtx::new();
+        let arduino = arduino::ArduinoCtx::restore(page);
+        let avr = avr::AvrCtx::restore(page);
+        Workspaces::around(page, minasec, io86a, arduino, avr)
+    }
+
+    /// The workspaces of these machines, each with its ladder editor
+    /// connected to its program pane.
+    pub fn around(
+        page: Ctx,
+        minasec: MinasecCtx,
+        io86a: io86a::Io86aCtx,
+        arduino: arduino::ArduinoCtx,
+        avr: avr::AvrCtx,
+    ) -> Workspaces {
+        let editor = |machine| LadderCtx::restore(page, machine);
+        let ladders = Ladders {
+            minasec: editor(MachineId::MinasecU),
+            io86a: editor(MachineId::Io86a),
+            avr: editor(MachineId::AvrPlc),
+            arduino: editor(MachineId::ArduinoPlc),
+        };
+        ladders.minasec.connect(Program {
+            text: minasec.text,
+            load: Callback::new(move |()| {
+                minasec.load_text();
+                minasec.save();
+            }),
+            save: Callback::new(move |()| minasec.save()),
+        });
+        ladders.io86a.connect(Program {
+            text: io86a.texts[0],
+            load: Callback::new(move |()| {
+                io86a.load(0);
+                io86a.save();
+            }),
+            save: Callback::new(move |()| io86a.save()),
+        });
+        ladders.arduino.connect(Program {
+            text: arduino.text,
+            load: Callback::new(move |()| {
+                arduino.load();
+                arduino.save();
+            }),
+            save: Callback::new(move |()| arduino.save()),
+        });
+        ladders
+            .avr
+            .options
+            .update(|o| o.avr_scan_ms = avr::scan_ms_default());
+        ladders.avr.connect(Program {
+            text: avr.text,
+            load: Callback::new(move |()| {
+                avr.load();
+                avr.save();
+            }),
+            save: Callback::new(move |()| avr.save()),
+        });
         Workspaces {
-            minasec: MinasecCtx::restore(page),
-            io86a: io86a::Io86aCtx::new(),
-            arduino: arduino::ArduinoCtx::restore(page),
-            avr: avr::AvrCtx::restore(page),
+            minasec,
+            io86a,
+            arduino,
+            avr,
+            ladders,
         }
     }
 
@@ -36,6 +101,7 @@ impl Workspaces {
         provide_context(self.io86a);
         provide_context(self.arduino);
         provide_context(self.avr);
+        provide_context(self.ladders);
     }
 
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall
@@ -65,8 +131,20 @@ impl Workspaces {
         }
     }
 
-    /// The workspace of `kind`.
+    /// The workspace of `kind`: its ladder editor above its panel and
+    /// program pane (which find the editor in context for "Load as ladder").
     pub fn view(&self, kind: MachineKind) -> AnyView {
+        let ladder = self.ladders.of(kind);
+        provide_context(ladder);
+        let machine = self.machine_view(kind);
+        view! {
+            <LadderEditor ctx=ladder />
+            {machine}
+        }
+        .into_any()
+    }
+
+    fn machine_view(&self, kind: MachineKind) -> AnyView {
         match kind {
             MachineKind::MinasecU => view! {
                 <main class="workspace">

@@ -10,7 +10,7 @@ use wasm_bindgen_test::*;
 use web_sys::{Element, HtmlElement};
 
 use app::i18n::Lang;
-use app::minasec::MinasecCtx;
+use app::machines::minasec::MinasecCtx;
 use app::sim::Simulator;
 use app::state::Ctx;
 use app::workspaces::Workspaces;
@@ -31,31 +31,38 @@ fn mount() -> (Ctx, MinasecCtx, Element) {
 }
 
 /// Like [`mount`], also returning the IO86A workspace's context.
-fn mount_both() -> (Ctx, MinasecCtx, app::io86a::Io86aCtx, Element) {
+fn mount_both() -> (Ctx, MinasecCtx, app::machines::io86a::Io86aCtx, Element) {
+    let (ctx, workspaces, container) = mount_workspaces();
+    (ctx, workspaces.minasec, workspaces.io86a, container)
+}
+
+/// Mounts every workspace; returns them all.
+fn mount_workspaces() -> (Ctx, Workspaces, Element) {
     if let Some(store) = web_sys::window().unwrap().local_storage().unwrap() {
         store.clear().unwrap();
     }
     let container = document().create_element("div").unwrap();
     document().body().unwrap().append_child(&container).unwrap();
     let ctx = Ctx::new(Lang::En);
-    let workspaces = Workspaces {
-        minasec: MinasecCtx::new(
+    let workspaces = Workspaces::around(
+        ctx,
+        MinasecCtx::new(
             ctx,
             Simulator::new(engine::plc::MinasecPlc::with(
                 engine::minasec::Machine::new(),
             )),
         ),
-        io86a: app::io86a::Io86aCtx::new(),
-        arduino: app::arduino::ArduinoCtx::restore(ctx),
-        avr: app::avr::AvrCtx::restore(ctx),
-    };
+        app::machines::io86a::Io86aCtx::new(),
+        app::machines::arduino::ArduinoCtx::restore(ctx),
+        app::machines::avr::AvrCtx::restore(ctx),
+    );
     let html: HtmlElement = container.clone().unchecked_into();
     let handle = leptos::mount::mount_to(
         html,
         move || view! { <App ctx=ctx workspaces=workspaces /> },
     );
     handle.forget();
-    (ctx, workspaces.minasec, workspaces.io86a, container)
+    (ctx, workspaces, container)
 }
 
 fn find(container: &Element, testid: &str) -> HtmlElement {
@@ -322,4 +329,79 @@ async fn the_io86a_workspace_runs_its_terminal() {
         .unwrap_or_default();
     assert!(screen.contains("LD M57"), "{screen}");
     assert!(screen.ends_with("R>"), "{screen}");
+}
+
+/// Every drawn cell of the ladder in `container`, by its test id.
+fn ladder_cells(container: &Element) -> Vec<(String, Element)> {
+    let list = container
+        .query_selector_all("[data-testid=ladder] [data-testid^=cell-]")
+        .unwrap();
+    (0..list.length())
+        .filter_map(|i| list.item(i))
+        .map(|n| {
+            let e: Element = n.unchecked_into();
+            (e.get_attribute("data-testid").unwrap(), e)
+        })
+        .collect()
+}
+
+#[wasm_bindgen_test]
+async fn an_edit_redraws_only_the_cells_it_changed() {
+    use engine::ladder::edit::{Cursor, Edit};
+    use engine::ladder::Element as Part;
+    let (_ctx, workspaces, c) = mount_workspaces();
+    let ladder = workspaces.ladders.minasec;
+    for (rung, input, output) in [(0, "X00", "Y00"), (1, "X01", "Y01")] {
+        assert!(ladder.apply(Edit::Place {
+            at: Cursor::new(rung, 0, 0),
+            element: Part::no(input),
+        }));
+        assert!(ladder.apply(Edit::Place {
+            at: Cursor::new(rung, 0, 1),
+            element: Part::coil(output),
+        }));
+    }
+    settle().await;
+    let before = ladder_cells(&c);
+    assert!(
+        before.len() > 40,
+        "two rungs of two rows and ten columns, and the end line"
+    );
+    assert_eq!(attr(&c, "cell-1-0-0", "data-device"), "X01");
+
+    // One cell changes: only its node is new.
+    assert!(ladder.apply(Edit::Place {
+        at: Cursor::new(1, 0, 0),
+        element: Part::nc("X02"),
+    }));
+    settle().await;
+    assert_eq!(attr(&c, "cell-1-0-0", "data-kind"), "nc");
+    let mut redrawn = Vec::new();
+    for (id, node) in &before {
+        let now = find(&c, id);
+        if !node.is_same_node(Some(&now)) {
+            redrawn.push(id.clone());
+        }
+    }
+    assert_eq!(redrawn, vec!["cell-1-0-0".to_string()]);
+
+    // A rung inserted above: every cell keeps its node, renumbered.
+    let coil = find(&c, "cell-0-0-9");
+    assert!(ladder.apply(Edit::InsertRung { index: 0 }));
+    settle().await;
+    let moved = find(&c, "cell-1-0-9");
+    assert!(
+        coil.is_same_node(Some(&moved)),
+        "the rung moved down, not redrawn"
+    );
+    assert_eq!(attr(&c, "cell-1-0-9", "data-device"), "Y00");
+    assert_eq!(
+        attr(&c, "cell-1-0-9", "aria-label"),
+        "rung 2, row 1, column 10: coil Y00"
+    );
+    // The cursor is one cell: aria-selected on it alone.
+    let selected = c
+        .query_selector_all("[data-testid=ladder] [aria-selected=true]")
+        .unwrap();
+    assert_eq!(selected.length(), 1);
 }

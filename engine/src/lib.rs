@@ -9,6 +9,7 @@ pub mod cases;
 pub mod clock;
 pub mod error;
 pub mod events;
+pub mod examples;
 pub mod headless;
 pub mod io86a;
 pub mod ladder;

@@ -5,6 +5,7 @@
 
 mod devices;
 mod entry;
+mod examples;
 mod properties;
 
 use engine::ladder::compile::{compile, Options};

@@ -4,7 +4,7 @@
 
 use leptos::prelude::*;
 
-use crate::minasec::MinasecCtx;
+use crate::machines::minasec::MinasecCtx;
 use crate::state::{Ctx, Parsed};
 
 #[component]
@@ -75,6 +75,7 @@ pub fn ProgramPane() -> impl IntoView {
                 >
                     {move || t().load}
                 </button>
+                <crate::chrome::text_program::LoadAsLadder />
                 <span class="status" data-testid="program-status">
                     {move || if up_to_date() { t().loaded } else { t().not_loaded }}
                 </span>

@@ -8,8 +8,8 @@ use engine::SimTime;
 use leptos::ev;
 use leptos::prelude::*;
 
-use super::controls::{Knob, Led, Momentary, Toggle};
-use crate::minasec::MinasecCtx;
+use crate::chrome::controls::{Knob, Led, Momentary, Toggle};
+use crate::machines::minasec::MinasecCtx;
 use crate::state::Ctx;
 
 /// A press held at least this long acts as a push button, not a toggle.

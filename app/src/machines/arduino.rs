@@ -8,9 +8,9 @@ use engine::plc::Warning;
 use engine::plc::{ArduinoPlc, Command, Device, Plc};
 use leptos::prelude::*;
 
-use crate::components::console::ConsolePane;
-use crate::components::controls::Led;
-use crate::components::text_program::TextProgramPane;
+use crate::chrome::console::ConsolePane;
+use crate::chrome::controls::Led;
+use crate::chrome::text_program::TextProgramPane;
 use crate::sim::Simulator;
 use crate::state::put;
 use crate::state::Ctx;
@@ -78,6 +78,12 @@ impl ArduinoCtx {
         });
     }
 
+    /// Saves the program text.
+    pub fn save(&self) {
+        let program = self.text.get_untracked();
+        storage::save_to(KEY, &storage::SavedText { program });
+    }
+
     /// Writes the pane's program into EEPROM (as keying it in with `s`)
     /// and enables the PLC; false if it has errors.
     pub fn load(&self) -> bool {
@@ -123,7 +129,7 @@ impl ArduinoCtx {
             .sim
             .try_update_value(|s| s.machine_mut().serial(line).unwrap_or_default())
             .unwrap_or_default();
-        crate::components::console::append(self.console, &reply);
+        crate::chrome::console::append(self.console, &reply);
         self.refresh();
     }
 }
@@ -240,6 +246,7 @@ fn ProgramPane(ard: ArduinoCtx) -> impl IntoView {
     });
     view! {
                 <TextProgramPane
+                    as_ladder=true
                     prefix="arduino-"
                     text=ard.text
                     errors=Signal::derive(move || parsed.get().err().unwrap_or_default())

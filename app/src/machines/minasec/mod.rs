@@ -1,6 +1,9 @@
 //! The MINASEC-U workspace's state: the board (outside the reactive
 //! graph), one signal per panel element, and the program pane.
 
+pub mod board;
+pub mod program;
+
 use engine::minasec::{Command, Panel, TimerId};
 use engine::plc::{self, Front, MinasecPlc, Plc};
 use engine::SimTime;

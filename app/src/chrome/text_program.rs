@@ -27,6 +27,9 @@ pub fn TextProgramPane(
     /// A taller text area (for assembler sources).
     #[prop(optional)]
     tall: bool,
+    /// This pane is the ladder's second view: it offers "Load as ladder".
+    #[prop(optional)]
+    as_ladder: bool,
 ) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
@@ -60,6 +63,7 @@ pub fn TextProgramPane(
                 >
                     {move || t().load}
                 </button>
+                {as_ladder.then(LoadAsLadder)}
             </div>
             <div class="errors" class:has-errors=has_errors data-testid=format!("{prefix}program-error")>
                 {move || {
@@ -84,4 +88,27 @@ pub fn TextProgramPane(
             </Show>
         </section>
     }
+}
+
+/// "Load as ladder" `[data-testid=load-as-ladder]`: the pane's program
+/// becomes the workspace's ladder (one undo away), or the engine's
+/// located error is shown and nothing changes.
+#[component]
+pub fn LoadAsLadder() -> impl IntoView {
+    let ladder = use_context::<crate::editor::LadderCtx>();
+    let ctx = Ctx::get();
+    ladder.map(|ladder| {
+        view! {
+            <button
+                type="button"
+                data-testid="load-as-ladder"
+                on:click=move |_| {
+                    let result = ladder.load_text_as_ladder();
+                    ladder.message.set(result.err());
+                }
+            >
+                {move || crate::editor::texts::texts(ctx.lang.get()).load_as_ladder}
+            </button>
+        }
+    })
 }

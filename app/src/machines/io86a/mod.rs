@@ -189,7 +189,7 @@ impl Io86aCtx {
             .sim
             .try_update_value(|s| s.machine_mut().serial(line).unwrap_or_default())
             .unwrap_or_default();
-        crate::components::console::append(self.console, &reply);
+        crate::chrome::console::append(self.console, &reply);
         self.refresh();
     }
 

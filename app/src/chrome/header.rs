@@ -6,7 +6,7 @@ use leptos::prelude::*;
 
 use crate::examples;
 use crate::i18n::Lang;
-use crate::minasec::MinasecCtx;
+use crate::machines::minasec::MinasecCtx;
 use crate::sim::Speed;
 use crate::state::{Ctx, MachineKind};
 use crate::storage;
@@ -28,9 +28,10 @@ pub fn Header() -> impl IntoView {
             </h1>
             <MachineSelect />
             <LangSelect />
-            <Show when=move || ctx.machine.get() == MachineKind::MinasecU>
-                <ExampleSelect />
-            </Show>
+            {move || {
+                let machine = ctx.machine.get();
+                view! { <ExampleSelect machine /> }
+            }}
             <Show when=move || board.before_example.with(Option::is_some)>
                 <button
                     type="button"
@@ -74,7 +75,7 @@ fn MachineSelect() -> impl IntoView {
 }
 
 /// A machine's product name, as its maker writes it.
-fn product_name(kind: MachineKind) -> &'static str {
+pub fn product_name(kind: MachineKind) -> &'static str {
     match kind {
         MachineKind::MinasecU => "MINASEC-U",
         MachineKind::Io86a => "PLC-IO86A",
@@ -108,12 +109,23 @@ fn LangSelect() -> impl IntoView {
     }
 }
 
-/// MINASEC-U's examples: opening one replaces the text (undoable).
+/// The machine's examples: each opens as a ladder (one undo brings the
+/// old ladder back); MINASEC-U's also replaces the text (undoable).
 #[component]
-fn ExampleSelect() -> impl IntoView {
+fn ExampleSelect(machine: MachineKind) -> impl IntoView {
     let ctx = Ctx::get();
     let board = MinasecCtx::get();
+    let ladders = expect_context::<crate::editor::Ladders>();
     let t = move || ctx.lang.get().texts();
+    let options = engine::examples::examples_of(machine)
+        .map(|e| {
+            view! {
+                <option value=e.id>
+                    {move || if ctx.lang.get() == Lang::Ja { e.title_ja } else { e.title_en }}
+                </option>
+            }
+        })
+        .collect_view();
     view! {
         <label>
             {move || t().example}
@@ -122,7 +134,7 @@ fn ExampleSelect() -> impl IntoView {
                 prop:value=""
                 on:change=move |e| {
                     let id = event_target_value(&e);
-                    examples::open(board, &id);
+                    examples::open(machine, &id, board, ladders.of(machine));
                     // Back to the prompt, so the same example can be opened again.
                     use leptos::wasm_bindgen::JsCast;
                     if let Some(select) = e
@@ -134,7 +146,7 @@ fn ExampleSelect() -> impl IntoView {
                 }
             >
                 <option value="">{move || t().example_none}</option>
-                <option value="seed-test">{move || t().example_seed}</option>
+                {options}
             </select>
         </label>
     }

@@ -7,9 +7,9 @@ use engine::io86a::Program;
 use leptos::prelude::*;
 
 use super::Io86aCtx;
-use crate::components::console::ConsolePane;
-use crate::components::controls::Led;
-use crate::components::text_program::TextProgramPane;
+use crate::chrome::console::ConsolePane;
+use crate::chrome::controls::Led;
+use crate::chrome::text_program::TextProgramPane;
 use crate::state::Ctx;
 
 /// What sits at a pin of the DIP-18 package.
@@ -357,6 +357,7 @@ fn ProgramPane(device: usize) -> impl IntoView {
             subtitle=Signal::derive(move || {
                 (if device == 0 { t().device_a } else { t().device_b }).to_string()
             })
+            as_ladder=device == 0
         />
     }
 }

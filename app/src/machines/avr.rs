@@ -7,8 +7,8 @@ use engine::events::InputValue;
 use engine::plc::{AvrPlc, Command, Device, Plc, Warning};
 use leptos::prelude::*;
 
-use crate::components::controls::Led;
-use crate::components::text_program::TextProgramPane;
+use crate::chrome::controls::Led;
+use crate::chrome::text_program::TextProgramPane;
 use crate::sim::Simulator;
 use crate::state::Ctx;
 use crate::storage;
@@ -76,6 +76,12 @@ impl AvrCtx {
         });
     }
 
+    /// Saves the program text.
+    pub fn save(&self) {
+        let program = self.text.get_untracked();
+        storage::save_to(KEY, &storage::SavedText { program });
+    }
+
     /// Assembles the pane's text (with `Scan` = the machine's scan
     /// period) and, if good, runs it from power-up (timer words cleared);
     /// false if it has errors.
@@ -128,7 +134,12 @@ impl AvrCtx {
 
 /// The `Scan` symbol the page's AVR runs with (its default scan period).
 fn scan() -> i64 {
-    scan_ms(DEFAULT_SCAN).map_or(10, i64::from)
+    i64::from(scan_ms_default())
+}
+
+/// The page's AVR scan period in ms (what the ladder compiles for).
+pub fn scan_ms_default() -> u32 {
+    scan_ms(DEFAULT_SCAN).unwrap_or(10)
 }
 
 /// The rows for a program's named bits: an old row whose name and bit
@@ -216,6 +227,7 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
             </section>
             <div class="side">
                 <TextProgramPane
+                    as_ladder=true
                     prefix="avr-"
                     text=avr.text
                     errors=Signal::derive(move || parsed.get().err().unwrap_or_default())

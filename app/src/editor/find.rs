@@ -1,0 +1,144 @@
+//! Ctrl+F: find a device or comment text, batch-replace devices with a
+//! preview (`X00`→`X03`, `M00-M07`→`M20-M27`), and the cross-reference
+//! list of a device with its rungs and steps. Every result is one click
+//! from its cell.
+
+use engine::ladder::edit::{find, replace_plan, xref, Cursor, Edit, UseRole};
+use leptos::prelude::*;
+
+use super::state::LadderCtx;
+use super::texts;
+
+/// The find pane.
+#[component]
+pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
+    let query = RwSignal::new(String::new());
+    let from = RwSignal::new(String::new());
+    let to = RwSignal::new(String::new());
+    // Re-read on every change of the ladder (the listing and problems
+    // both change with it; the rung list covers rung moves).
+    let version = move || {
+        ctx.rungs.track();
+        ctx.problems.track();
+        ctx.listing.track();
+    };
+    let found = move || {
+        version();
+        let q = query.get();
+        ctx.with_editor(|e| find(e.ladder(), &q))
+    };
+    let uses = move || {
+        version();
+        let q = query.get();
+        let steps = ctx.listing.get();
+        ctx.with_editor(|e| {
+            xref(e.ladder(), &q)
+                .into_iter()
+                .map(|u| {
+                    let step = steps
+                        .as_ref()
+                        .and_then(|l| l.steps_of(u.rung))
+                        .map(|s| s.start);
+                    (u, step)
+                })
+                .collect::<Vec<_>>()
+        })
+    };
+    let plan = move || {
+        version();
+        let (f, w) = (from.get(), to.get());
+        if f.trim().is_empty() || w.trim().is_empty() {
+            return Ok(Vec::new());
+        }
+        ctx.with_editor(|e| replace_plan(e.ladder(), &f, &w))
+    };
+    let pick = move |c: Cursor| {
+        ctx.move_to(c);
+        on_pick.run(());
+    };
+    view! {
+        <section class="find-pane" aria-label=move || t().find>
+            <div class="find-row">
+                <label>
+                    {move || t().find}
+                    <input
+                        data-testid="find"
+                        spellcheck="false"
+                        prop:value=move || query.get()
+                        on:input=move |e| query.set(event_target_value(&e))
+                        on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
+                            ctx.find_open.set(false);
+                            on_pick.run(());
+                        }
+                    />
+                </label>
+                <button type="button" on:click=move |_| { ctx.find_open.set(false); on_pick.run(()); }>
+                    {move || t().close}
+                </button>
+            </div>
+            <ul class="found" data-testid="found">
+                {move || found().into_iter().map(|f| {
+                    let at = Cursor::new(f.rung, f.pos.map_or(0, |p| p.row), f.pos.map_or(0, |p| p.col));
+                    let what = match f.pos {
+                        Some(p) => format!("{} {}, row {}, column {}", t().rung, f.rung + 1, p.row + 1, p.col + 1),
+                        None => format!("{} {} ({})", t().rung, f.rung + 1, t().rung_comment),
+                    };
+                    view! { <li><button type="button" on:click=move |_| pick(at)>{what}</button></li> }
+                }).collect_view()}
+            </ul>
+            <h4>{move || t().xref}</h4>
+            <table class="xref" data-testid="xref">
+                <tbody>
+                    {move || uses().into_iter().map(|(u, step)| {
+                        let role = match u.role {
+                            UseRole::Contact => "contact",
+                            UseRole::Coil => "coil",
+                            UseRole::Box => "box",
+                        };
+                        let at = Cursor::new(u.rung, u.pos.row, u.pos.col);
+                        view! {
+                            <tr>
+                                <td>{role}</td>
+                                <td>{format!("{} {}", t().rung, u.rung + 1)}</td>
+                                <td>{step.map(|s| format!("{} {s}", t().step))}</td>
+                                <td><button type="button" on:click=move |_| pick(at)>
+                                    {format!("row {}, column {}", u.pos.row + 1, u.pos.col + 1)}
+                                </button></td>
+                            </tr>
+                        }
+                    }).collect_view()}
+                </tbody>
+            </table>
+            <h4>{move || t().replace}</h4>
+            <div class="find-row">
+                <input data-testid="replace-from" placeholder="X00 / M00-M07" spellcheck="false"
+                    prop:value=move || from.get() on:input=move |e| from.set(event_target_value(&e)) />
+                <span>{move || t().replace_with}</span>
+                <input data-testid="replace-to" placeholder="X03 / M20-M27" spellcheck="false"
+                    prop:value=move || to.get() on:input=move |e| to.set(event_target_value(&e)) />
+                <button
+                    type="button"
+                    data-testid="replace-apply"
+                    disabled=move || !plan().is_ok_and(|p| !p.is_empty())
+                    on:click=move |_| {
+                        if ctx.apply(Edit::ReplaceDevices { from: from.get_untracked(), to: to.get_untracked() }) {
+                            from.set(String::new());
+                            to.set(String::new());
+                        }
+                    }
+                >
+                    {move || t().replace_apply}
+                </button>
+            </div>
+            <ul class="replace-preview" data-testid="replace-preview">
+                {move || match plan() {
+                    Ok(list) => list.into_iter().map(|(rung, pos, was, will)| view! {
+                        <li>{format!("{} {}, row {}, column {}: {was} → {will}", t().rung, rung + 1, pos.row + 1, pos.col + 1)}</li>
+                    }).collect_view().into_any(),
+                    Err(why) => view! { <li class="error">{why}</li> }.into_any(),
+                }}
+            </ul>
+        </section>
+    }
+}

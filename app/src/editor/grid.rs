@@ -1,0 +1,327 @@
+//! The ladder grid: one component per rung (keyed by the rung's id) and
+//! one per cell (keyed by what it draws), so an edit redraws only the
+//! cells it changed. Keys go to [`LadderCtx::key`]; clicks put the
+//! cursor; palette items dropped on a cell act there.
+
+use engine::ladder::edit::Cursor;
+use leptos::prelude::*;
+
+use super::model::{CellData, RungData};
+use super::palette;
+use super::state::{LadderCtx, RungView};
+use super::texts;
+
+/// The focusable grid, `[data-testid=ladder]`.
+#[component]
+pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl IntoView {
+    let cursor = ctx.cursor;
+    let selected = Selector::new(move || cursor.get());
+    // The block being selected, unchanged (and so silent) while there is none.
+    let block = Memo::new(move |_| ctx.anchor.get().map(|a| (a, cursor.get())));
+    // Keep the cursor's cell in view.
+    Effect::new(move |_| {
+        let c = cursor.get();
+        let Some(grid) = grid.get() else { return };
+        let selector = format!("[data-testid=\"cell-{}-{}-{}\"]", c.rung, c.row, c.col);
+        if let Ok(Some(cell)) = grid.query_selector(&selector) {
+            let options = web_sys::ScrollIntoViewOptions::new();
+            options.set_block(web_sys::ScrollLogicalPosition::Nearest);
+            options.set_inline(web_sys::ScrollLogicalPosition::Nearest);
+            cell.scroll_into_view_with_scroll_into_view_options(&options);
+        }
+    });
+    let on_key = move |e: web_sys::KeyboardEvent| {
+        if ctx.entry.with_untracked(Option::is_some) {
+            return;
+        }
+        let (ctrl, key) = (e.ctrl_key() || e.meta_key(), e.key());
+        // Copy, cut and paste go on to the clipboard events.
+        if ctrl && matches!(key.to_ascii_lowercase().as_str(), "c" | "x" | "v") {
+            if key.eq_ignore_ascii_case("v") {
+                schedule_fallback_paste(ctx);
+            }
+            return;
+        }
+        if ctx.key(&key, e.shift_key(), ctrl, e.alt_key()) {
+            e.prevent_default();
+        }
+    };
+    let end_cells = move || (0..=ctx.out_col.get()).collect::<Vec<_>>();
+    let selected_end = selected.clone();
+    view! {
+        <div
+            class="ladder"
+            node_ref=grid
+            data-testid="ladder"
+            role="grid"
+            tabindex="0"
+            aria-label=move || texts::texts(ctx.page.lang.get()).ladder
+            aria-multiselectable="true"
+            on:keydown=on_key
+        >
+            <For
+                each=move || ctx.rungs.get()
+                key=|r: &RungView| r.id
+                children=move |r: RungView| {
+                    let selected = selected.clone();
+                    view! { <RungRows ctx r selected block grid /> }
+                }
+            />
+            <div class="rung end" role="rowgroup" data-testid="end-line">
+                <div class="rung-head">
+                    <span class="rung-num">{move || texts::texts(ctx.page.lang.get()).end}</span>
+                </div>
+                <div
+                    class="rung-grid"
+                    role="row"
+                    style=move || format!("grid-template-columns: repeat({}, var(--cell-w))", ctx.out_col.get() + 1)
+                >
+                    <For
+                        each=end_cells
+                        key=|c| *c
+                        children=move |col| {
+                            let selected = selected_end.clone();
+                            let here = move || Cursor::new(ctx.rungs.with(Vec::len), 0, col);
+                            view! {
+                                <div
+                                    class="cell"
+                                    role="gridcell"
+                                    data-testid=move || format!("cell-{}-0-{col}", ctx.rungs.with(Vec::len))
+                                    data-kind=""
+                                    aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
+                                    aria-label=move || format!("end of ladder, column {}", col + 1)
+                                    on:mousedown=move |_| ctx.move_to(here())
+                                    on:dragover=|e: web_sys::DragEvent| e.prevent_default()
+                                    on:drop=move |e: web_sys::DragEvent| dropped(ctx, here(), e)
+                                ></div>
+                            }
+                        }
+                    />
+                </div>
+            </div>
+        </div>
+    }
+}
+
+/// Ctrl+V where the browser sends no paste event (nothing editable has
+/// focus): this page's own clipboard is pasted instead, once.
+fn schedule_fallback_paste(ctx: LadderCtx) {
+    PASTED.with(|p| p.set(false));
+    set_timeout(
+        move || {
+            if !PASTED.with(std::cell::Cell::get) {
+                ctx.paste_text(None);
+            }
+        },
+        std::time::Duration::ZERO,
+    );
+}
+
+thread_local! {
+    /// Whether a paste event arrived since the last Ctrl+V.
+    pub(super) static PASTED: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
+}
+
+/// A palette item (or nothing) dropped on cell `at`.
+fn dropped(ctx: LadderCtx, at: Cursor, e: web_sys::DragEvent) {
+    e.prevent_default();
+    let data = e
+        .data_transfer()
+        .and_then(|dt| dt.get_data("text/plain").ok())
+        .unwrap_or_default();
+    if let Some(id) = data.strip_prefix("palette:") {
+        ctx.move_to(at);
+        palette::activate(ctx, id);
+    }
+}
+
+/// One rung: its number and first step, its comment, and its rows.
+#[component]
+fn RungRows(
+    ctx: LadderCtx,
+    r: RungView,
+    selected: Selector<Cursor>,
+    block: Memo<Option<(Cursor, Cursor)>>,
+    grid: NodeRef<leptos::html::Div>,
+) -> impl IntoView {
+    let number = r.number.clone();
+    let data = r.data.clone();
+    let rows = {
+        let data = data.clone();
+        move || (0..data.with(|d| d.rows)).collect::<Vec<_>>()
+    };
+    let columns = {
+        let data = data.clone();
+        move || {
+            format!(
+                "grid-template-columns: repeat({}, var(--cell-w))",
+                data.with(|d| d.cols)
+            )
+        }
+    };
+    let t = move || texts::texts(ctx.page.lang.get());
+    let (n1, n2, n3) = (number.clone(), number.clone(), number.clone());
+    let first = r.first_step.clone();
+    let first2 = r.first_step.clone();
+    let (d1, d2, d3) = (data.clone(), data.clone(), data.clone());
+    view! {
+        <div class="rung" role="rowgroup" data-testid=move || format!("rung-{}", n1.get())
+            data-first-step=move || first2.get().map(|s| s.to_string())>
+            <div class="rung-head">
+                <span class="rung-num">{move || format!("{} {}", t().rung, n2.get() + 1)}</span>
+                <span class="rung-step">{move || first.get().map(|s| format!("{} {s}", t().step))}</span>
+            </div>
+            <Show when=move || d1.with(|d| !d.comment.is_empty())>
+                <div class="rung-comment">{let d = d2.clone(); move || d.with(|d| d.comment.clone())}</div>
+            </Show>
+            <div class="rung-grid" style=columns>
+                <For
+                    each=rows
+                    key=|row| *row
+                    children=move |row| {
+                        let selected = selected.clone();
+                        let data = d3.clone();
+                        let number = n3.clone();
+                        let cells = move || data.with(|d: &RungData| {
+                            d.cells.iter().filter(|c| c.row == row).cloned().collect::<Vec<_>>()
+                        });
+                        view! {
+                            <div class="rung-row" role="row">
+                                <For
+                                    each=cells
+                                    key=|c: &CellData| c.clone()
+                                    children=move |c| {
+                                        let selected = selected.clone();
+                                        view! { <Cell ctx c number=number.clone() selected block grid /> }
+                                    }
+                                />
+                            </div>
+                        }
+                    }
+                />
+            </div>
+            {let d = data.clone(); move || d.with(|d| d.errors.iter().map(|e| view! {
+                <div class="rung-error" data-testid="rung-error">{e.clone()}</div>
+            }).collect_view())}
+        </div>
+    }
+}
+
+/// One cell. Drawn once per content; only its place in the ladder (the
+/// rung may move) and its selection are reactive.
+#[component]
+fn Cell(
+    ctx: LadderCtx,
+    c: CellData,
+    number: ArcRwSignal<usize>,
+    selected: Selector<Cursor>,
+    block: Memo<Option<(Cursor, Cursor)>>,
+    grid: NodeRef<leptos::html::Div>,
+) -> impl IntoView {
+    let (row, col) = (c.row, c.col);
+    let n = number.clone();
+    let here = move || Cursor::new(n.get(), row, col);
+    let here2 = here.clone();
+    let here3 = here.clone();
+    let here4 = here.clone();
+    let here5 = here.clone();
+    let testid = {
+        let n = number.clone();
+        move || format!("cell-{}-{row}-{col}", n.get())
+    };
+    let words = if c.kind.is_empty() {
+        "empty".to_string()
+    } else if c.comment.is_empty() {
+        c.words.clone()
+    } else {
+        format!("{}, {}", c.words, c.comment)
+    };
+    let label = {
+        let n = number.clone();
+        let err = c.error.clone();
+        move || {
+            let mut s = format!(
+                "rung {}, row {}, column {}: {words}",
+                n.get() + 1,
+                row + 1,
+                col + 1
+            );
+            if let Some(e) = &err {
+                s.push_str(&format!(" (error: {e})"));
+            }
+            s
+        }
+    };
+    let in_block = move || {
+        block.with(|b| {
+            b.is_some_and(|(a, z)| {
+                let at = here4();
+                if a.rung == z.rung {
+                    at.rung == a.rung
+                        && (a.row.min(z.row)..=a.row.max(z.row)).contains(&at.row)
+                        && (a.col.min(z.col)..=a.col.max(z.col)).contains(&at.col)
+                } else {
+                    (a.rung.min(z.rung)..=a.rung.max(z.rung)).contains(&at.rung)
+                }
+            })
+        })
+    };
+    let class = format!(
+        "cell{}{}{}{}",
+        if c.kind.is_empty() {
+            String::new()
+        } else {
+            format!(" filled k-{}", c.kind)
+        },
+        if c.link_up { " link-up" } else { "" },
+        if c.link_down { " link-down" } else { "" },
+        if c.error.is_some() { " has-error" } else { "" },
+    );
+    let device = (!c.device.is_empty()).then(|| c.device.clone());
+    let focus = move || {
+        if let Some(g) = grid.get() {
+            let _ = g.focus();
+        }
+    };
+    view! {
+        <div
+            class=class
+            class:sel=in_block
+            role="gridcell"
+            data-testid=testid
+            data-kind=c.kind
+            data-device=device
+            data-error=c.error.clone()
+            title=c.error.clone()
+            aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
+            aria-label=label
+            style=format!("grid-row: {}; grid-column: {}", row + 1, col + 1)
+            on:mousedown=move |e: web_sys::MouseEvent| {
+                e.prevent_default();
+                if e.shift_key() {
+                    ctx.extend_to(here2());
+                } else {
+                    ctx.move_to(here2());
+                }
+                focus();
+            }
+            on:dblclick=move |_| {
+                ctx.move_to(here3());
+                ctx.dispatch(super::keys::Action::EditCell);
+            }
+            on:dragover=|e: web_sys::DragEvent| e.prevent_default()
+            on:drop=move |e: web_sys::DragEvent| dropped(ctx, here5(), e)
+        >
+            <span class="dev">{c.device.clone()}</span>
+            <span class="sym">{c.symbol.clone()}</span>
+            <span class="cmt">{c.comment.clone()}</span>
+        </div>
+    }
+}
+
+/// Gives the grid the keyboard focus back.
+pub fn focus(grid: NodeRef<leptos::html::Div>) {
+    if let Some(g) = grid.get_untracked() {
+        let _ = g.focus();
+    }
+}

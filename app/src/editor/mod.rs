@@ -1,0 +1,237 @@
+//! The ladder editor, the main view of every machine's workspace
+//! (issue #13, docs/editor.md). The editing model is the engine's
+//! (`engine::ladder::edit`); here it is rendered and fed keys:
+//!
+//! - [`state`]: one machine's editor and the signals the view reads;
+//! - [`model`], [`keys`]: what the cells show and what keys do (plain
+//!   Rust, tested natively);
+//! - [`grid`], [`entry`], [`palette`], [`side`], [`find`]: the views;
+//! - [`store`]: the autosave.
+
+pub mod entry;
+pub mod find;
+pub mod grid;
+pub mod keys;
+pub mod model;
+pub mod palette;
+pub mod side;
+pub mod state;
+pub mod store;
+pub mod texts;
+
+use engine::ladder::edit::Edit;
+use engine::MachineId;
+use leptos::prelude::*;
+
+pub use state::{LadderCtx, Program};
+
+/// The four machines' editors; `Copy`, provided as context so that a
+/// ladder can be copied to another machine.
+#[derive(Clone, Copy)]
+pub struct Ladders {
+    pub minasec: LadderCtx,
+    pub io86a: LadderCtx,
+    pub avr: LadderCtx,
+    pub arduino: LadderCtx,
+}
+
+impl Ladders {
+    /// The editor of `machine`.
+    pub fn of(&self, machine: MachineId) -> LadderCtx {
+        match machine {
+            MachineId::MinasecU => self.minasec,
+            MachineId::Io86a => self.io86a,
+            MachineId::AvrPlc => self.avr,
+            MachineId::ArduinoPlc => self.arduino,
+        }
+    }
+}
+
+/// The editor: toolbar, device entry, palette, grid, listing, problems.
+#[component]
+pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
+    let grid = NodeRef::<leptos::html::Div>::new();
+    let refocus = Callback::new(move |()| grid::focus(grid));
+    let t = move || texts::texts(ctx.page.lang.get());
+    clipboard_events(ctx);
+    view! {
+        <section class="ladder-editor" data-machine=ctx.machine.name()>
+            <Toolbar ctx refocus />
+            <CommentBar ctx />
+            <entry::DeviceEntry ctx on_close=refocus />
+            <div class="edit-message" role="alert" data-testid="edit-message">
+                {move || ctx.message.get()}
+            </div>
+            <div class="ladder-main">
+                <palette::Palette ctx on_done=refocus />
+                <grid::LadderGrid ctx grid />
+                <div class="ladder-side">
+                    <side::ListingPane ctx on_pick=refocus />
+                    <side::ProblemsPane ctx on_pick=refocus />
+                </div>
+            </div>
+            <Show when=move || ctx.find_open.get()>
+                <find::FindPane ctx on_pick=refocus />
+            </Show>
+            <Show when=move || ctx.help.get()>
+                <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys>
+                    <table>
+                        {keys::KEY_MAP.iter().map(|(k, what)| view! {
+                            <tr><th>{*k}</th><td>{*what}</td></tr>
+                        }).collect_view()}
+                    </table>
+                    <button type="button" on:click=move |_| { ctx.help.set(false); grid::focus(grid); }>
+                        {move || t().close}
+                    </button>
+                </div>
+            </Show>
+        </section>
+    }
+}
+
+/// New, undo, redo, write to the machine, find, keys, copy elsewhere.
+#[component]
+fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
+    let ladders = use_context::<Ladders>();
+    let others: Vec<MachineId> = MachineId::ALL
+        .into_iter()
+        .filter(|m| *m != ctx.machine)
+        .collect();
+    view! {
+        <div class="ladder-toolbar" role="toolbar">
+            <button type="button" data-testid="new-ladder" on:click=move |_| {
+                ctx.apply(Edit::NewLadder);
+                refocus.run(());
+            }>{move || t().new_ladder}</button>
+            <button type="button" data-testid="undo" disabled=move || !ctx.can_undo.get()
+                on:click=move |_| { ctx.undo(); refocus.run(()); }>{move || t().undo}</button>
+            <button type="button" data-testid="redo" disabled=move || !ctx.can_redo.get()
+                on:click=move |_| { ctx.redo(); refocus.run(()); }>{move || t().redo}</button>
+            <button type="button" data-testid="ladder-write" disabled=move || ctx.listing.with(Option::is_none)
+                on:click=move |_| { ctx.write_to_machine(); }>{move || t().write}</button>
+            <button type="button" data-testid="find-open" on:click=move |_| ctx.find_open.update(|f| *f = !*f)>
+                {move || t().find}
+            </button>
+            <button type="button" data-testid="keys" on:click=move |_| ctx.help.update(|h| *h = !*h)>
+                {move || t().keys}
+            </button>
+            <label>
+                {move || t().copy_to}
+                <select data-testid="copy-to" prop:value="" on:change=move |e| {
+                    let target = MachineId::parse(&event_target_value(&e)).ok();
+                    if let (Some(target), Some(ladders)) = (target, ladders) {
+                        let other = ladders.of(target);
+                        other.apply(Edit::Replace { ladder: ctx.ladder() });
+                        ctx.page.machine.set(target);
+                    }
+                }>
+                    <option value="">"—"</option>
+                    {others.into_iter().map(|m| view! {
+                        <option value=m.name()>{crate::chrome::header::product_name(m)}</option>
+                    }).collect_view()}
+                </select>
+            </label>
+        </div>
+    }
+}
+
+/// The cursor's rung comment and its device's comment, edited in place.
+#[component]
+fn CommentBar(ctx: LadderCtx) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
+    let rung_comment = move || {
+        ctx.rungs.track();
+        let rung = ctx.cursor.get().rung;
+        ctx.with_editor(|e| e.ladder().rungs.get(rung).map(|r| r.comment.clone()))
+    };
+    let device = move || {
+        ctx.rungs.track();
+        let c = ctx.cursor.get();
+        ctx.with_editor(|e| {
+            let element = e.ladder().rungs.get(c.rung)?.get(c.pos())?;
+            element
+                .read_device()
+                .or_else(|| element.written_device())
+                .map(str::to_string)
+        })
+    };
+    view! {
+        <div class="comment-bar">
+            <label>
+                {move || t().rung_comment}
+                <input
+                    data-testid="rung-comment-input"
+                    disabled=move || rung_comment().is_none()
+                    prop:value=move || rung_comment().unwrap_or_default()
+                    on:change=move |e| {
+                        let index = ctx.cursor.get_untracked().rung;
+                        ctx.apply(Edit::RungComment { index, text: event_target_value(&e) });
+                    }
+                />
+            </label>
+            <label>
+                {move || format!("{} {}", t().device_comment, device().unwrap_or_default())}
+                <input
+                    data-testid="device-comment-input"
+                    disabled=move || device().is_none()
+                    prop:value=move || device().and_then(|d| ctx.comments.with(|c| c.get(&d).cloned())).unwrap_or_default()
+                    on:change=move |e| {
+                        if let Some(device) = device() {
+                            ctx.apply(Edit::DeviceComment { device, text: event_target_value(&e) });
+                        }
+                    }
+                />
+            </label>
+        </div>
+    }
+}
+
+/// Copy, cut and paste through the system clipboard while the ladder has
+/// the focus (the events reach the document, not the grid, when nothing
+/// editable is focused), so rungs go between two tabs of the page.
+fn clipboard_events(ctx: LadderCtx) {
+    fn on_ladder() -> bool {
+        web_sys::window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.active_element())
+            .and_then(|e| e.get_attribute("data-testid"))
+            .as_deref()
+            == Some("ladder")
+    }
+    let copy = window_event_listener(leptos::ev::copy, move |e| {
+        if !on_ladder() {
+            return;
+        }
+        if let (Some(text), Some(dt)) = (ctx.copy_text(), e.clipboard_data()) {
+            let _ = dt.set_data("text/plain", &text);
+            e.prevent_default();
+        }
+    });
+    let cut = window_event_listener(leptos::ev::cut, move |e| {
+        if !on_ladder() {
+            return;
+        }
+        if let (Some(text), Some(dt)) = (ctx.cut_text(), e.clipboard_data()) {
+            let _ = dt.set_data("text/plain", &text);
+            e.prevent_default();
+        }
+    });
+    let paste = window_event_listener(leptos::ev::paste, move |e| {
+        if !on_ladder() {
+            return;
+        }
+        grid::PASTED.with(|p| p.set(true));
+        e.prevent_default();
+        let text = e
+            .clipboard_data()
+            .and_then(|dt| dt.get_data("text/plain").ok())
+            .filter(|t| !t.is_empty());
+        ctx.paste_text(text);
+    });
+    on_cleanup(move || {
+        copy.remove();
+        cut.remove();
+        paste.remove();
+    });
+}

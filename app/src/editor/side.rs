@@ -1,0 +1,100 @@
+//! Beside the ladder: the compiled listing in the machine's own format
+//! (the selected rung's steps highlighted; a click on a step shows its
+//! rung) and the problems list (a click puts the cursor there).
+
+use engine::ladder::edit::Cursor;
+use leptos::prelude::*;
+
+use super::state::LadderCtx;
+use super::texts;
+
+/// `[data-testid=il-listing]`.
+#[component]
+pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
+    // The steps of the cursor's rung.
+    let chosen = Memo::new(move |_| {
+        let rung = ctx.cursor.get().rung;
+        ctx.listing
+            .with(|l| l.as_ref().and_then(|l| l.steps_of(rung)))
+    });
+    let lines = Memo::new(move |_| {
+        ctx.listing.with(|l| {
+            l.as_ref().map_or_else(Vec::new, |l| {
+                l.text
+                    .lines()
+                    .enumerate()
+                    .map(|(i, line)| (i, line.to_string(), l.step_at_line(i)))
+                    .collect::<Vec<_>>()
+            })
+        })
+    });
+    view! {
+        <section class="listing-pane">
+            <h3>{move || t().listing}</h3>
+            <Show
+                when=move || ctx.listing.with(Option::is_some)
+                fallback=move || view! { <p class="muted" data-testid="il-listing-none">{move || t().listing_none}</p> }
+            >
+                <pre class="listing" data-testid="il-listing">
+                    <For
+                        each=move || lines.get()
+                        key=|(i, line, _)| (*i, line.clone())
+                        children=move |(_, line, step)| {
+                            let lit = move || step.is_some_and(|s| chosen.with(|c| c.as_ref().is_some_and(|r| r.contains(&s))));
+                            view! {
+                                <span
+                                    class="line"
+                                    class:step=step.is_some()
+                                    class:lit=lit
+                                    data-step=step.map(|s| s.to_string())
+                                    on:click=move |_| {
+                                        let rung = step.and_then(|s| ctx.listing.with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s))));
+                                        if let Some(rung) = rung {
+                                            ctx.move_to(Cursor::new(rung, 0, 0));
+                                            on_pick.run(());
+                                        }
+                                    }
+                                >
+                                    {line}
+                                    "\n"
+                                </span>
+                            }
+                        }
+                    />
+                </pre>
+            </Show>
+        </section>
+    }
+}
+
+/// `[data-testid=problems]`.
+#[component]
+pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
+    view! {
+        <section class="problems-pane">
+            <h3>{move || t().problems}</h3>
+            <ul class="problems" data-testid="problems" role="status" aria-live="polite">
+                <Show when=move || ctx.problems.with(Vec::is_empty)>
+                    <li class="muted">{move || t().problems_none}</li>
+                </Show>
+                <For
+                    each=move || ctx.problems.get()
+                    key=|p| p.clone()
+                    children=move |p| {
+                        let at = Cursor::new(p.rung, p.pos.map_or(0, |p| p.row), p.pos.map_or(0, |p| p.col));
+                        view! {
+                            <li>
+                                <button type="button" class="problem" on:click=move |_| {
+                                    ctx.move_to(at);
+                                    on_pick.run(());
+                                }>{p.text.clone()}</button>
+                            </li>
+                        }
+                    }
+                />
+            </ul>
+        </section>
+    }
+}

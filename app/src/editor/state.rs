@@ -1,0 +1,651 @@
+//! One machine's ladder editor: the engine's [`Editor`] outside the
+//! reactive graph, and the signals the view reads (one per rung, the
+//! cursor, the listing, the problems). Every key, click and drop comes
+//! here as an [`Action`] or an edit; after each change the ladder is
+//! checked and compiled, the changed rungs repainted, the text pane
+//! kept in step and the project autosaved.
+
+use std::collections::BTreeMap;
+
+use engine::ladder::compile::{compile_listing, Listing, Options};
+use engine::ladder::edit::{parse_entry, Clip, Cursor, Edit, Editor, EntryKind};
+use engine::ladder::{Element, Ladder, Pos};
+use engine::MachineId;
+use leptos::prelude::*;
+
+use super::keys::{self, Action, Move};
+use super::model::{entry_for, reuse, rung_data, RungData};
+use super::store;
+use crate::state::Ctx;
+
+/// One rung's view: a stable id (the `<For>` key) and its signals.
+#[derive(Clone)]
+pub struct RungView {
+    /// Stays with the rung while it is moved or edited.
+    pub id: u64,
+    /// Its index (0-based) in the ladder now.
+    pub number: ArcRwSignal<usize>,
+    /// Its first step in the listing, when it compiled to steps.
+    pub first_step: ArcRwSignal<Option<usize>>,
+    /// What it shows.
+    pub data: ArcRwSignal<RungData>,
+}
+
+/// One problem of the ladder, where it is.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Problem {
+    /// The rung (0-based).
+    pub rung: usize,
+    /// The cell, when it has one.
+    pub pos: Option<Pos>,
+    /// `rung 2, row 1, column 3: …` (1-based, the engine's words).
+    pub text: String,
+}
+
+/// The device entry while it is open.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EntryState {
+    /// What it places.
+    pub kind: EntryKind,
+    /// As an OR branch (Shift+F5 / Shift+F6).
+    pub branch: bool,
+    /// The cell it places at.
+    pub at: Cursor,
+    /// What is typed.
+    pub text: String,
+    /// Why the last commit was refused.
+    pub error: Option<String>,
+}
+
+/// Where the editor sends the program: the machine's text pane and how
+/// to load it into the machine.
+#[derive(Clone, Copy)]
+pub struct Program {
+    /// The machine's text pane.
+    pub text: RwSignal<String>,
+    /// Loads the text pane into the machine (and saves it).
+    pub load: Callback<()>,
+    /// Saves the text pane (after the ladder changed it).
+    pub save: Callback<()>,
+}
+
+/// One machine's ladder editor; `Copy`.
+#[derive(Clone, Copy)]
+pub struct LadderCtx {
+    /// The machine the ladder is for.
+    pub machine: MachineId,
+    /// The page (language, notices).
+    pub page: Ctx,
+    editor: StoredValue<Editor, LocalStorage>,
+    next_id: StoredValue<u64>,
+    /// The rungs, in order.
+    pub rungs: RwSignal<Vec<RungView>>,
+    /// The cursor (the rung after the last is the end line).
+    pub cursor: RwSignal<Cursor>,
+    /// The other corner of the selection, while there is one.
+    pub anchor: RwSignal<Option<Cursor>>,
+    /// The column outputs stand in.
+    pub out_col: RwSignal<usize>,
+    pub can_undo: RwSignal<bool>,
+    pub can_redo: RwSignal<bool>,
+    /// The compiled program, when the ladder compiles.
+    pub listing: RwSignal<Option<Listing>>,
+    /// Every problem, rung by rung.
+    pub problems: RwSignal<Vec<Problem>>,
+    /// The device entry, while open.
+    pub entry: RwSignal<Option<EntryState>>,
+    /// Why the last edit was refused.
+    pub message: RwSignal<Option<String>>,
+    /// The `?` key map is shown.
+    pub help: RwSignal<bool>,
+    /// The find / replace / cross-reference pane is shown.
+    pub find_open: RwSignal<bool>,
+    /// The ladder's device comments.
+    pub comments: RwSignal<BTreeMap<String, String>>,
+    /// The program pane and loading.
+    program: StoredValue<Option<Program>>,
+    /// The text last put in the pane from the ladder (or loaded from it):
+    /// while the pane still holds it, the pane follows the ladder.
+    synced: StoredValue<Option<String>>,
+    /// The compiler's settings (the AVR scan period).
+    pub options: RwSignal<Options>,
+    /// The clipboard of this page, for when the system's is not offered.
+    clip: StoredValue<Option<String>>,
+}
+
+impl LadderCtx {
+    /// An editor for `machine` on `page`, restored from its autosave.
+    pub fn restore(page: Ctx, machine: MachineId) -> LadderCtx {
+        let ladder = store::restore(page, machine);
+        let ctx = LadderCtx {
+            machine,
+            page,
+            editor: StoredValue::new_local(Editor::new(ladder.clone().unwrap_or_default())),
+            next_id: StoredValue::new(0),
+            rungs: RwSignal::new(Vec::new()),
+            cursor: RwSignal::new(Cursor::default()),
+            anchor: RwSignal::new(None),
+            out_col: RwSignal::new(engine::ladder::edit::COLUMNS - 1),
+            can_undo: RwSignal::new(false),
+            can_redo: RwSignal::new(false),
+            listing: RwSignal::new(None),
+            problems: RwSignal::new(Vec::new()),
+            entry: RwSignal::new(None),
+            message: RwSignal::new(None),
+            help: RwSignal::new(false),
+            find_open: RwSignal::new(false),
+            comments: RwSignal::new(BTreeMap::new()),
+            program: StoredValue::new(None),
+            synced: StoredValue::new(None),
+            options: RwSignal::new(Options::default()),
+            clip: StoredValue::new(None),
+        };
+        ctx.refresh(false);
+        ctx
+    }
+
+    /// Connects the machine's text pane. The pane follows the ladder while
+    /// it holds the ladder's listing or nothing; a fresh editor with no
+    /// saved ladder starts from the pane's program when it decompiles.
+    pub fn connect(&self, program: Program) {
+        self.program.set_value(Some(program));
+        let text = program.text.get_untracked();
+        let empty = self.editor.with_value(|e| e.ladder().rungs.is_empty());
+        if empty && !text.trim().is_empty() {
+            let scan = self.options.get_untracked().avr_scan_ms;
+            if let Ok(ladder) = engine::ladder::decompile::decompile_text(self.machine, &text, scan)
+            {
+                self.editor.update_value(|e| *e = Editor::new(ladder));
+                self.refresh(false);
+            }
+        }
+        let listing = self
+            .listing
+            .with_untracked(|l| l.as_ref().map(|l| l.text.clone()));
+        if text.trim().is_empty() || listing.as_deref() == Some(text.as_str()) || empty {
+            self.synced.set_value(Some(text));
+        }
+    }
+
+    /// The context provided for `machine`'s workspace.
+    pub fn get() -> LadderCtx {
+        expect_context::<LadderCtx>()
+    }
+
+    /// The ladder as it stands (a copy).
+    pub fn ladder(&self) -> Ladder {
+        self.editor.with_value(|e| e.ladder().clone())
+    }
+
+    /// Reads the editor without copying the ladder.
+    pub fn with_editor<R>(&self, f: impl FnOnce(&Editor) -> R) -> R {
+        self.editor.with_value(f)
+    }
+
+    /// Applies an edit; a refusal is shown and changes nothing.
+    pub fn apply(&self, edit: Edit) -> bool {
+        let result = self
+            .editor
+            .try_update_value(|e| e.apply(edit))
+            .unwrap_or(Ok(()));
+        match result {
+            Ok(()) => {
+                self.message.set(None);
+                self.anchor.set(None);
+                self.refresh(true);
+                true
+            }
+            Err(e) => {
+                self.message.set(Some(e.to_string()));
+                false
+            }
+        }
+    }
+
+    /// Undoes the last edit.
+    pub fn undo(&self) {
+        if self.editor.try_update_value(Editor::undo).unwrap_or(false) {
+            self.anchor.set(None);
+            self.refresh(true);
+        }
+    }
+
+    /// Redoes the last undone edit.
+    pub fn redo(&self) {
+        if self.editor.try_update_value(Editor::redo).unwrap_or(false) {
+            self.anchor.set(None);
+            self.refresh(true);
+        }
+    }
+
+    /// Puts the cursor on a cell (a click, a problem, a find result).
+    pub fn move_to(&self, to: Cursor) {
+        self.editor.update_value(|e| e.move_to(to));
+        self.anchor.set(None);
+        self.cursor.set(self.editor.with_value(Editor::cursor));
+    }
+
+    /// Grows the selection to `to` (Shift+click).
+    pub fn extend_to(&self, to: Cursor) {
+        if self.anchor.get_untracked().is_none() {
+            self.anchor.set(Some(self.cursor.get_untracked()));
+        }
+        self.editor.update_value(|e| e.move_to(to));
+        self.cursor.set(self.editor.with_value(Editor::cursor));
+    }
+
+    /// The selection's corners, when there is one.
+    pub fn selection(&self) -> Option<(Cursor, Cursor)> {
+        let anchor = self.anchor.get_untracked()?;
+        Some((anchor, self.cursor.get_untracked()))
+    }
+
+    /// A key on the ladder; false when the ladder leaves it alone.
+    pub fn key(&self, key: &str, shift: bool, ctrl: bool, alt: bool) -> bool {
+        match keys::action(key, shift, ctrl, alt) {
+            Some(action) => {
+                self.dispatch(action);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Does what an action asks.
+    pub fn dispatch(&self, action: Action) {
+        let at = self.cursor.get_untracked();
+        match action {
+            Action::Move(mv, extend) => self.step(mv, extend),
+            Action::Entry {
+                kind,
+                branch,
+                prefill,
+            } => self.open_entry(kind, branch, prefill.to_string()),
+            Action::EditCell => {
+                let (kind, text) = self
+                    .editor
+                    .with_value(|e| e.ladder().rungs.get(at.rung)?.get(at.pos()).map(entry_for))
+                    .unwrap_or((EntryKind::Open, String::new()));
+                self.open_entry(kind, false, text);
+            }
+            Action::Wire => {
+                self.apply(Edit::Wire { at });
+            }
+            Action::ToggleLink => {
+                self.apply(Edit::ToggleLink { at });
+            }
+            Action::DeleteWire => {
+                self.apply(Edit::DeleteWire { at });
+            }
+            Action::DeleteLink => {
+                self.apply(Edit::DeleteLink { at });
+            }
+            Action::Clear => {
+                let edit = match self.selection() {
+                    Some((a, b)) if a.rung == b.rung => Edit::ClearBlock { from: a, to: b },
+                    Some((a, b)) => Edit::DeleteRungs {
+                        first: a.rung.min(b.rung),
+                        last: a.rung.max(b.rung).min(self.rung_count().saturating_sub(1)),
+                    },
+                    None => Edit::Clear { at },
+                };
+                self.apply(edit);
+            }
+            Action::InsertAbove => {
+                self.apply(Edit::InsertRung { index: at.rung });
+            }
+            Action::InsertBelow => {
+                let index = (at.rung + 1).min(self.rung_count());
+                self.apply(Edit::InsertRung { index });
+            }
+            Action::DeleteRungs => {
+                let (first, last) = match self.selection() {
+                    Some((a, b)) => (a.rung.min(b.rung), a.rung.max(b.rung)),
+                    None => (at.rung, at.rung),
+                };
+                let last = last.min(self.rung_count().saturating_sub(1));
+                self.apply(Edit::DeleteRungs { first, last });
+            }
+            Action::RungUp | Action::RungDown => {
+                self.apply(Edit::MoveRung {
+                    index: at.rung,
+                    up: action == Action::RungUp,
+                });
+            }
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            // The clipboard events carry these; the keys only make sure a
+            // copy works where the browser sends no event.
+            Action::Copy => {
+                self.copy_text();
+            }
+            Action::Cut | Action::Paste => {}
+            Action::Find => self.find_open.set(true),
+            Action::Help => self.help.update(|h| *h = !*h),
+            Action::Cancel => {
+                self.anchor.set(None);
+                self.help.set(false);
+                self.message.set(None);
+            }
+        }
+    }
+
+    fn rung_count(&self) -> usize {
+        self.editor.with_value(|e| e.ladder().rungs.len())
+    }
+
+    fn step(&self, mv: Move, extend: bool) {
+        let from = self.cursor.get_untracked();
+        let to = self
+            .editor
+            .with_value(|e| keys::moved(e.ladder(), e.output_column(), from, mv));
+        if extend {
+            if self.anchor.get_untracked().is_none() {
+                self.anchor.set(Some(from));
+            }
+        } else {
+            self.anchor.set(None);
+        }
+        self.editor.update_value(|e| e.move_to(to));
+        self.cursor.set(to);
+    }
+
+    /// Opens the device entry at the cursor.
+    pub fn open_entry(&self, kind: EntryKind, branch: bool, text: String) {
+        self.entry.set(Some(EntryState {
+            kind,
+            branch,
+            at: self.cursor.get_untracked(),
+            text,
+            error: None,
+        }));
+    }
+
+    /// Enter in the device entry: the element goes in when the machine
+    /// has it; otherwise the entry stays open with the engine's message.
+    pub fn commit_entry(&self) -> bool {
+        let Some(state) = self.entry.get_untracked() else {
+            return false;
+        };
+        let refuse = |message: String| {
+            self.entry.update(|e| {
+                if let Some(e) = e {
+                    e.error = Some(message);
+                }
+            });
+            false
+        };
+        let element = match parse_entry(self.machine, state.kind, &state.text) {
+            Ok(e) => e,
+            Err(e) => return refuse(e.to_string()),
+        };
+        let edit = if state.branch {
+            Edit::PlaceBranch {
+                at: state.at,
+                element,
+            }
+        } else {
+            Edit::Place {
+                at: state.at,
+                element,
+            }
+        };
+        let result = self
+            .editor
+            .try_update_value(|e| e.apply(edit))
+            .unwrap_or(Ok(()));
+        match result {
+            Ok(()) => {
+                self.entry.set(None);
+                self.message.set(None);
+                self.refresh(true);
+                true
+            }
+            Err(e) => refuse(e.to_string()),
+        }
+    }
+
+    /// Places `element` at the cursor without the entry (the palette's
+    /// wire, NOT, R_TRIG).
+    pub fn place(&self, element: Element) -> bool {
+        let at = self.cursor.get_untracked();
+        self.apply(Edit::Place { at, element })
+    }
+
+    /// The selection (or the cursor's cell) as clipboard text, also kept
+    /// as this page's clipboard.
+    pub fn copy_text(&self) -> Option<String> {
+        let at = self.cursor.get_untracked();
+        let clip = self.editor.with_value(|e| match self.selection() {
+            Some((a, b)) if a.rung == b.rung => Clip::cells(e.ladder(), a, b),
+            Some((a, b)) => {
+                let last = a
+                    .rung
+                    .max(b.rung)
+                    .min(e.ladder().rungs.len().saturating_sub(1));
+                Clip::rungs(e.ladder(), a.rung.min(b.rung), last)
+            }
+            None => Clip::cells(e.ladder(), at, at),
+        });
+        match clip {
+            Ok(clip) => {
+                let text = clip.to_text();
+                self.clip.set_value(Some(text.clone()));
+                Some(text)
+            }
+            Err(e) => {
+                self.message.set(Some(e.to_string()));
+                None
+            }
+        }
+    }
+
+    /// Cut: copies, then clears what was copied.
+    pub fn cut_text(&self) -> Option<String> {
+        let text = self.copy_text()?;
+        self.dispatch(Action::Clear);
+        Some(text)
+    }
+
+    /// Pastes clipboard text at the cursor (this page's clipboard when
+    /// `text` is `None`); what the machine lacks is refused, all of it.
+    pub fn paste_text(&self, text: Option<String>) {
+        let Some(text) = text.or_else(|| self.clip.get_value()) else {
+            return;
+        };
+        let clip = match Clip::from_text(&text) {
+            Ok(c) => c,
+            Err(e) => {
+                self.message.set(Some(e.to_string()));
+                return;
+            }
+        };
+        match clip.for_machine(self.machine) {
+            Ok(clip) => {
+                let at = self.cursor.get_untracked();
+                self.apply(Edit::Paste { at, clip });
+            }
+            Err(errors) => {
+                let all: Vec<String> = errors.iter().map(ToString::to_string).collect();
+                self.message.set(Some(all.join("; ")));
+            }
+        }
+    }
+
+    /// "Load as ladder": the text pane's program becomes the ladder
+    /// (one undo brings the old one back); the engine's located error
+    /// otherwise, with nothing changed.
+    pub fn load_text_as_ladder(&self) -> Result<(), String> {
+        let Some(program) = self.program.get_value() else {
+            return Err("no program pane".into());
+        };
+        let text = program.text.get_untracked();
+        let scan = self.options.get_untracked().avr_scan_ms;
+        let ladder = engine::ladder::decompile::decompile_text(self.machine, &text, scan)
+            .map_err(|e| e.to_string())?;
+        // The pane holds the same program: it follows the ladder again.
+        self.synced.set_value(Some(text));
+        if self.ladder() != ladder {
+            self.apply(Edit::Replace { ladder });
+        }
+        Ok(())
+    }
+
+    /// The text pane's program is the ladder's (it was opened from the
+    /// same example): the pane follows the ladder from now on.
+    pub fn adopt_text(&self) {
+        if let Some(program) = self.program.get_value() {
+            self.synced.set_value(Some(program.text.get_untracked()));
+        }
+    }
+
+    /// "Write to PLC": the listing goes into the text pane and is loaded
+    /// into the machine. False while the ladder does not compile.
+    pub fn write_to_machine(&self) -> bool {
+        let Some(listing) = self.listing.get_untracked() else {
+            return false;
+        };
+        let Some(program) = self.program.get_value() else {
+            return false;
+        };
+        program.text.set(listing.text.clone());
+        self.synced.set_value(Some(listing.text));
+        program.load.run(());
+        true
+    }
+
+    /// Re-reads the editor into the signals: problems and listing, the
+    /// rungs whose drawing changed, cursor, undo state; then the text pane
+    /// (when `edited` and it follows the ladder) and the autosave.
+    pub fn refresh(&self, edited: bool) {
+        let options = self.options.get_untracked();
+        let (listing, errors, out_col, comments, cursor, undo, redo) =
+            self.editor.with_value(|e| {
+                let (listing, errors) = match compile_listing(e.ladder(), self.machine, options) {
+                    Ok(l) => (Some(l), Vec::new()),
+                    Err(errors) => (None, errors),
+                };
+                (
+                    listing,
+                    errors,
+                    e.output_column(),
+                    e.ladder().device_comments.clone(),
+                    e.cursor(),
+                    e.can_undo(),
+                    e.can_redo(),
+                )
+            });
+        let problems: Vec<Problem> = errors
+            .iter()
+            .map(|err| Problem {
+                rung: err.rung.saturating_sub(1),
+                pos: err.pos,
+                text: err.to_string(),
+            })
+            .collect();
+        self.repaint(&problems, out_col, &comments, listing.as_ref());
+        self.out_col.set(out_col);
+        if self.comments.with_untracked(|c| *c != comments) {
+            self.comments.set(comments);
+        }
+        if self.cursor.get_untracked() != cursor {
+            self.cursor.set(cursor);
+        }
+        self.can_undo.set(undo);
+        self.can_redo.set(redo);
+        if self.problems.with_untracked(|p| *p != problems) {
+            self.problems.set(problems);
+        }
+        if edited {
+            self.follow(listing.as_ref());
+            self.editor
+                .with_value(|e| store::save(self.page, self.machine, e.ladder()));
+        }
+        if self.listing.with_untracked(|l| *l != listing) {
+            self.listing.set(listing);
+        }
+    }
+
+    /// The text pane takes the new listing while it still holds the last.
+    fn follow(&self, listing: Option<&Listing>) {
+        let (Some(program), Some(listing)) = (self.program.get_value(), listing) else {
+            return;
+        };
+        let text = program.text.get_untracked();
+        let follows = self
+            .synced
+            .with_value(|s| s.as_deref() == Some(text.as_str()));
+        if follows && text != listing.text {
+            program.text.set(listing.text.clone());
+            self.synced.set_value(Some(listing.text.clone()));
+            program.save.run(());
+        }
+    }
+
+    /// Updates the rung views: same-drawn rungs keep theirs, edited ones
+    /// get new data (their changed cells redraw), new ones are made.
+    fn repaint(
+        &self,
+        problems: &[Problem],
+        out_col: usize,
+        comments: &BTreeMap<String, String>,
+        listing: Option<&Listing>,
+    ) {
+        let data: Vec<RungData> = self.editor.with_value(|e| {
+            e.ladder()
+                .rungs
+                .iter()
+                .enumerate()
+                .map(|(i, rung)| {
+                    let errors: Vec<(Option<Pos>, String)> = problems
+                        .iter()
+                        .filter(|p| p.rung == i)
+                        .map(|p| (p.pos, p.text.clone()))
+                        .collect();
+                    rung_data(rung, out_col, &errors, comments)
+                })
+                .collect()
+        });
+        let old = self.rungs.get_untracked();
+        let plan = {
+            let guards: Vec<_> = old.iter().map(|v| v.data.read_untracked()).collect();
+            let refs: Vec<&RungData> = guards.iter().map(|g| &**g).collect();
+            reuse(&refs, &data)
+        };
+        let mut views = Vec::with_capacity(data.len());
+        for (number, (d, from)) in data.into_iter().zip(plan).enumerate() {
+            let first = listing.and_then(|l| l.steps_of(number).map(|s| s.start));
+            let view = match from {
+                Some(i) => {
+                    let v = old[i].clone();
+                    if v.data.with_untracked(|old| *old != d) {
+                        v.data.set(d);
+                    }
+                    v
+                }
+                None => {
+                    let id = self.next_id.get_value();
+                    self.next_id.set_value(id + 1);
+                    RungView {
+                        id,
+                        number: ArcRwSignal::new(number),
+                        first_step: ArcRwSignal::new(first),
+                        data: ArcRwSignal::new(d),
+                    }
+                }
+            };
+            if view.number.get_untracked() != number {
+                view.number.set(number);
+            }
+            if view.first_step.get_untracked() != first {
+                view.first_step.set(first);
+            }
+            views.push(view);
+        }
+        let same_order =
+            views.len() == old.len() && views.iter().zip(&old).all(|(a, b)| a.id == b.id);
+        if !same_order {
+            self.rungs.set(views);
+        }
+    }
+}

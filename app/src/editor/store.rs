@@ -1,0 +1,63 @@
+//! The ladder's autosave: the engine's versioned project JSON, one per
+//! machine, written on every edit and read back on reload. A saved value
+//! that does not read is kept aside and reported, never dropped.
+
+use engine::ladder::{Ladder, Project};
+use engine::MachineId;
+use leptos::prelude::*;
+
+use crate::state::Ctx;
+use crate::storage::{self, Checked, Restored};
+
+/// Where `machine`'s ladder is saved.
+pub fn key(machine: MachineId) -> String {
+    format!("hashigo.ladder.{}.v1", machine.name())
+}
+
+/// A project as saved: read through the engine's own reader, so a saved
+/// value is held to what a project file is held to.
+#[derive(Clone, Debug)]
+struct Saved(Project);
+
+impl<'de> serde::Deserialize<'de> for Saved {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Saved, D::Error> {
+        let value = serde_json::Value::deserialize(d)?;
+        Project::from_json(&value.to_string())
+            .map(Saved)
+            .map_err(|e| serde::de::Error::custom(e.to_string()))
+    }
+}
+
+impl Checked for Saved {
+    fn problem(&self) -> Option<&'static str> {
+        None
+    }
+}
+
+/// The ladder saved for `machine`, if any; a saved value that does not
+/// read (or is for another machine) is kept aside and reported.
+pub fn restore(page: Ctx, machine: MachineId) -> Option<Ladder> {
+    match storage::restore_from::<Saved>(&key(machine)) {
+        Restored::Saved(Saved(project)) if project.machine == machine => Some(project.ladder),
+        Restored::Saved(_) => None,
+        Restored::Corrupt { kept_as } => {
+            let texts = page.lang.get_untracked().texts();
+            page.notice
+                .set(Some(format!("{} {kept_as}", texts.corrupt_saved)));
+            None
+        }
+        Restored::Nothing | Restored::Unavailable => None,
+    }
+}
+
+/// Saves `ladder` for `machine`; a storage that refuses is reported.
+pub fn save(page: Ctx, machine: MachineId, ladder: &Ladder) {
+    let project = Project::new(machine, ladder.clone());
+    let ok = web_sys::window()
+        .and_then(|w| w.local_storage().ok().flatten())
+        .is_some_and(|s| s.set_item(&key(machine), &project.to_json()).is_ok());
+    if !ok {
+        let texts = page.lang.get_untracked().texts();
+        page.notice.set(Some(texts.storage_unavailable.to_string()));
+    }
+}

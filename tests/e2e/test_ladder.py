@@ -1,0 +1,270 @@
+"""End-to-end: the ladder editor (issue #13) in headless Chromium."""
+
+import json
+import subprocess
+
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
+
+from test_app import ROOT, el, on, open_fresh, severe_console_messages, wait
+
+HASHIGO = ROOT / "target" / "release" / "hashigo"
+
+
+def keys(driver, *k):
+    """Types into whatever has the focus (the ladder, or the device entry)."""
+    driver.switch_to.active_element.send_keys(*k)
+
+
+def focus_ladder(driver, cell="cell-0-0-0"):
+    el(driver, cell).click()
+    assert driver.switch_to.active_element.get_attribute("data-testid") == "ladder"
+
+
+def place(driver, key, device, shift=False):
+    """F5/F6/F7/F8 (with Shift for an OR branch), the device, Enter."""
+    if shift:
+        ActionChains(driver).key_down(Keys.SHIFT).send_keys(key).key_up(Keys.SHIFT).perform()
+    else:
+        keys(driver, key)
+    assert driver.switch_to.active_element.get_attribute("data-testid") == "device-input"
+    keys(driver, device, Keys.ENTER)
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder",
+         message=f"{device} placed, focus back on the ladder")
+
+
+def saved_ladder(driver, machine):
+    raw = driver.execute_script("return localStorage.getItem(arguments[0])", f"hashigo.ladder.{machine}.v1")
+    return json.loads(raw)["ladder"] if raw else None
+
+
+def steps(listing):
+    """The instruction lines of a listing, without comments."""
+    return [l for l in listing.splitlines() if l.strip() and not l.startswith(";")]
+
+
+def cursor(driver):
+    return driver.find_element(By.CSS_SELECTOR, '[data-testid="ladder"] [aria-selected="true"]').get_attribute("data-testid")
+
+
+def test_draw_the_seed_program_with_the_keyboard_and_run_it(driver, base_url, artifacts):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    # Rung 0: X00, /X01, (Y00), and Y00 in parallel with X00.
+    place(driver, Keys.F5, "X00")
+    assert cursor(driver) == "cell-0-0-1", "after a contact the cursor moves right"
+    place(driver, Keys.F6, "X01")
+    place(driver, Keys.F7, "Y00")
+    assert cursor(driver) == "cell-1-0-0", "after an output: the next rung, created"
+    keys(driver, Keys.ARROW_UP)
+    assert cursor(driver) == "cell-0-1-0"
+    place(driver, Keys.F5, "Y00", shift=True)
+    keys(driver, Keys.ARROW_DOWN, Keys.ARROW_DOWN, Keys.HOME)
+    assert cursor(driver) == "cell-1-0-0"
+    # Rung 1: Y00, /T1, (T0).
+    place(driver, Keys.F5, "Y00")
+    place(driver, Keys.F6, "T1")
+    place(driver, Keys.F7, "T0")
+    # Rung 2: T0, (T1) and (C0) in parallel.
+    place(driver, Keys.F5, "T0")
+    place(driver, Keys.F7, "T1")
+    keys(driver, Keys.ARROW_UP, Keys.END)
+    assert cursor(driver) == "cell-2-1-9"
+    place(driver, Keys.F7, "C0")
+    assert cursor(driver) == "cell-2-2-0", "after an output on a lower row: the next row"
+    keys(driver, Keys.ARROW_UP, Keys.ARROW_UP, Keys.END)
+    ActionChains(driver).key_down(Keys.SHIFT).send_keys(Keys.F9).key_up(Keys.SHIFT).perform()
+    keys(driver, Keys.ARROW_DOWN, Keys.ARROW_DOWN, Keys.ARROW_DOWN, Keys.HOME)
+    assert cursor(driver) == "cell-3-0-0"
+    # Rung 3: C0, (Y01). Rung 4: X02, (C0R).
+    place(driver, Keys.F5, "C0")
+    place(driver, Keys.F7, "Y01")
+    place(driver, Keys.F5, "X02")
+    place(driver, Keys.F7, "C0R")
+
+    cell = el(driver, "cell-0-0-0")
+    assert (cell.get_attribute("data-kind"), cell.get_attribute("data-device")) == ("no", "X00")
+    assert el(driver, "cell-0-0-1").get_attribute("data-kind") == "nc"
+    assert el(driver, "cell-0-1-0").get_attribute("data-kind") == "no"
+    assert el(driver, "cell-2-1-9").get_attribute("data-kind") == "coil"
+    assert el(driver, "cell-0-0-4").get_attribute("data-kind") == "hwire"
+    assert "rung 1, row 1, column 1: normally open contact X00" in cell.get_attribute("aria-label")
+    assert el(driver, "problems").text.strip() == "No problems."
+    assert el(driver, "rung-2").get_attribute("data-first-step") == "7"
+
+    # The listing is the seed's program, step for step.
+    seed = subprocess.run(
+        [str(HASHIGO), "compile", "--program", str(ROOT / "engine/programs/minasec-u/seed-test.json")],
+        check=True, capture_output=True, text=True,
+    ).stdout
+    assert steps(el(driver, "il-listing").text) == steps(seed)
+    driver.save_screenshot(str(artifacts / "ladder-seed.png"))
+
+    # Write it to the board and run it.
+    el(driver, "ladder-write").click()
+    wait(driver, lambda: "ST   C0R" in el(driver, "program-text").get_attribute("value"))
+    el(driver, "counter-set-ones").send_keys(Keys.ARROW_UP, Keys.ARROW_UP, Keys.ARROW_UP)
+    wait(driver, lambda: el(driver, "counter-set-ones").get_attribute("aria-valuenow") == "3")
+    Select(el(driver, "speed")).select_by_value("max")
+    el(driver, "mode-run").click()
+    el(driver, "input-X00").click()
+    wait(driver, lambda: on(driver, "lamp-Y00"), message="Y00 latches on")
+    el(driver, "input-X00").click()
+    wait(driver, lambda: el(driver, "seg7").text == "03" and on(driver, "lamp-Y01"), timeout=60,
+         message="the count climbs to the preset and Y01 lights")
+    assert severe_console_messages(driver) == []
+
+    # Reloading brings the ladder back.
+    driver.refresh()
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+
+
+def test_an_io86a_orb_rung_drawn_with_the_mouse_and_palette(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("io86a")
+    wait(driver, lambda: el(driver, "palette"))
+    # What IO86A lacks is shown disabled, with the reason.
+    ton = el(driver, "palette-ton")
+    assert ton.get_attribute("aria-disabled") == "true"
+    assert "has no in-line timers" in ton.get_attribute("data-reason")
+    assert el(driver, "palette-mov").get_attribute("aria-disabled") == "false"
+
+    def drop(item, cell):
+        driver.execute_script(
+            """const dt = new DataTransfer(); dt.setData('text/plain', 'palette:' + arguments[0]);
+               arguments[1].dispatchEvent(new DragEvent('drop', {dataTransfer: dt, bubbles: true, cancelable: true}));""",
+            item, el(driver, cell))
+
+    def entry(device):
+        wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "device-input")
+        keys(driver, device, Keys.ENTER)
+        wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
+
+    # The workspace opened with device A's program as a ladder; start anew.
+    assert el(driver, "cell-0-0-0").get_attribute("data-kind") != ""
+    el(driver, "new-ladder").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-kind") == "")
+    el(driver, "cell-0-0-0").click()
+    el(driver, "palette-no").click(); entry("X00")
+    el(driver, "palette-no").click(); entry("X01")
+    el(driver, "palette-coil").click(); entry("Y00")
+    el(driver, "cell-0-1-0").click()
+    drop("no", "cell-0-1-0"); entry("X02")      # dragged from the palette
+    el(driver, "palette-no").click(); entry("X03")
+    el(driver, "cell-0-0-2").click()
+    el(driver, "palette-link").click()
+    assert "link-down" in el(driver, "cell-0-0-2").get_attribute("class")
+    wait(driver, lambda: "ORB" in el(driver, "il-listing").text)
+    assert steps(el(driver, "il-listing").text) == [
+        "LD X00", "AND X01", "LD X02", "AND X03", "ORB", "OUT Y00", "END",
+    ]
+    # Double-click edits a cell.
+    ActionChains(driver).double_click(el(driver, "cell-0-1-1")).perform()
+    wait(driver, lambda: el(driver, "device-input").get_attribute("value") == "X03")
+    keys(driver, Keys.BACKSPACE, "4", Keys.ENTER)
+    wait(driver, lambda: el(driver, "cell-0-1-1").get_attribute("data-device") == "X04")
+
+
+def test_fifty_edits_undone_and_redone_restore_the_exact_ladder(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    edits = 0
+    for rung in range(5):
+        for col in range(4):
+            place(driver, Keys.F5 if col % 2 == 0 else Keys.F6, f"X0{(rung + col) % 8}")
+            edits += 1
+        place(driver, Keys.F7, f"Y0{rung}")
+        edits += 1
+    # Five rungs of 4 contacts and a coil: 25 edits; the rest are wires,
+    # branches, comments, moves and deletions.
+    for rung in range(5):
+        el(driver, f"cell-{rung}-0-8").click()
+        keys(driver, Keys.DELETE)  # the wire before the coil
+        keys(driver, Keys.F9)      # and back
+        edits += 2
+    while edits < 50:
+        keys(driver, Keys.INSERT)
+        edits += 1
+    final = saved_ladder(driver, "minasec-u")
+    assert final and len(final["rungs"]) > 5
+    for _ in range(edits):
+        ActionChains(driver).key_down(Keys.CONTROL).send_keys("z").key_up(Keys.CONTROL).perform()
+    wait(driver, lambda: saved_ladder(driver, "minasec-u") == {"rungs": []}, message="all undone")
+    assert el(driver, "undo").get_attribute("disabled") is not None
+    for _ in range(edits):
+        ActionChains(driver).key_down(Keys.CONTROL).send_keys("y").key_up(Keys.CONTROL).perform()
+    wait(driver, lambda: saved_ladder(driver, "minasec-u") == final, message="all redone")
+    assert el(driver, "redo").get_attribute("disabled") is not None
+
+
+def test_a_device_the_machine_lacks_is_refused_at_entry(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    keys(driver, Keys.F5)
+    keys(driver, "X09", Keys.ENTER)
+    wait(driver, lambda: el(driver, "device-error").text != "")
+    assert "X09" in el(driver, "device-error").text
+    assert driver.switch_to.active_element.get_attribute("data-testid") == "device-input"
+    assert el(driver, "cell-0-0-0").get_attribute("data-kind") == ""
+    assert saved_ladder(driver, "minasec-u") is None, "nothing changed, nothing saved"
+    keys(driver, Keys.ESCAPE)
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
+    # Completion offers the machine's devices with their comments.
+    keys(driver, Keys.F5)
+    keys(driver, "X0")
+    options = el(driver, "device-options").text
+    assert "X00" in options and "X07" in options and "Y00" not in options
+
+
+def test_errors_mark_their_cells_and_a_problem_moves_the_cursor(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    # A contact on the free row, joined to nothing: dangling.
+    el(driver, "cell-0-1-2").click()
+    place(driver, Keys.F5, "X01")
+    wait(driver, lambda: el(driver, "cell-0-1-2").get_attribute("data-error"))
+    assert "dangling" in el(driver, "cell-0-1-2").get_attribute("data-error")
+    assert el(driver, "cell-0-0-0").get_attribute("data-error") is None
+    assert el(driver, "il-listing-none")
+    assert el(driver, "ladder-write").get_attribute("disabled") is not None
+    # Saved although it does not compile.
+    assert saved_ladder(driver, "minasec-u")["rungs"][0]["cells"][1][2]["device"] == "X01"
+    keys(driver, Keys.HOME, Keys.ARROW_UP)
+    driver.find_element(By.CSS_SELECTOR, '[data-testid="problems"] .problem').click()
+    assert cursor(driver) == "cell-0-1-2"
+    assert driver.switch_to.active_element.get_attribute("data-testid") == "ladder"
+    # Linking it in parallel with X00 fixes it.
+    keys(driver, Keys.DELETE)
+    el(driver, "cell-0-1-0").click()
+    place(driver, Keys.F5, "X01", shift=True)
+    wait(driver, lambda: el(driver, "problems").text.strip() == "No problems.")
+    assert steps(el(driver, "il-listing").text)[:3] == ["000 LD   X00", "001 OR   X01", "002 ST   Y00"]
+
+
+def test_copy_and_paste_rungs_and_load_text_as_ladder(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("io86a")
+    text = el(driver, "io86a-program-text")
+    text.clear()
+    text.send_keys("LD X00\nOR Y00\nANI X01\nOUT Y00\nLD X02\nOUT Y01\nEND\n")
+    el(driver, "load-as-ladder").click()
+    wait(driver, lambda: el(driver, "cell-1-0-0").get_attribute("data-device") == "X02")
+    assert el(driver, "cell-0-1-0").get_attribute("data-device") == "Y00"
+    # Select rung 0 and 1 (Shift+Down into the next rung), copy, paste at the end.
+    focus_ladder(driver)
+    ActionChains(driver).key_down(Keys.SHIFT).send_keys(Keys.DOWN, Keys.DOWN, Keys.DOWN).key_up(Keys.SHIFT).perform()
+    ActionChains(driver).key_down(Keys.CONTROL).send_keys("c").key_up(Keys.CONTROL).perform()
+    ActionChains(driver).key_down(Keys.CONTROL).send_keys(Keys.END).key_up(Keys.CONTROL).perform()
+    ActionChains(driver).key_down(Keys.CONTROL).send_keys("v").key_up(Keys.CONTROL).perform()
+    wait(driver, lambda: len(driver.find_elements(By.CSS_SELECTOR, '.ladder .rung:not(.end)')) == 4,
+         message="two rungs pasted")
+    assert el(driver, "cell-3-0-0").get_attribute("data-device") == "X02"
+    # The whole ladder goes to MINASEC-U, whose devices it happens to use.
+    Select(el(driver, "copy-to")).select_by_value("minasec-u")
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "minasec-u")
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X00")
+    assert el(driver, "problems").text.strip() == "No problems."
