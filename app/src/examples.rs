@@ -19,8 +19,7 @@ pub fn open(machine: MachineId, id: &str, board: MinasecCtx, ladder: LadderCtx) 
     if machine == MachineId::MinasecU {
         open_minasec(board, id);
     }
-    let scan = ladder.options.get_untracked().avr_scan_ms;
-    match engine::ladder::decompile::decompile_text(machine, example.text, scan) {
+    match ladder.ladder_of_text(example.text) {
         Ok(new) => {
             ladder.apply(Edit::Replace { ladder: new });
             if machine == MachineId::MinasecU {
@@ -28,7 +27,7 @@ pub fn open(machine: MachineId, id: &str, board: MinasecCtx, ladder: LadderCtx) 
                 ladder.adopt_text();
             }
         }
-        Err(e) => ladder.message.set(Some(e.to_string())),
+        Err(e) => ladder.message.set(Some(e)),
     }
 }
 

@@ -268,3 +268,80 @@ def test_copy_and_paste_rungs_and_load_text_as_ladder(driver, base_url):
     wait(driver, lambda: el(driver, "machine").get_attribute("value") == "minasec-u")
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X00")
     assert el(driver, "problems").text.strip() == "No problems."
+
+
+def test_find_cross_reference_and_batch_replace(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R",
+         message="the example opens as a ladder")
+    # A device comment shows under the device in every cell that uses it.
+    el(driver, "cell-1-0-0").click()  # Y00's contact
+    el(driver, "device-comment-input").send_keys("running", Keys.ENTER)
+    wait(driver, lambda: "running" in el(driver, "cell-0-0-9").text)
+    assert "running" in el(driver, "cell-0-1-0").text and "running" in el(driver, "cell-1-0-0").text
+    assert "running" in el(driver, "cell-1-0-0").get_attribute("aria-label")
+    el(driver, "rung-comment-input").send_keys("flicker", Keys.ENTER)
+    wait(driver, lambda: "flicker" in el(driver, "rung-1").text)
+    focus_ladder(driver, "cell-3-0-0")
+    ActionChains(driver).key_down(Keys.CONTROL).send_keys("f").key_up(Keys.CONTROL).perform()
+    find = el(driver, "find")
+    find.send_keys("Y00")
+    wait(driver, lambda: len(el(driver, "xref").find_elements(By.TAG_NAME, "tr")) == 3)
+    rows = [r.text for r in el(driver, "xref").find_elements(By.TAG_NAME, "tr")]
+    assert [r.split()[0] for r in rows] == ["coil", "contact", "contact"]
+    assert "step 4" in rows[2], rows
+    el(driver, "xref").find_elements(By.TAG_NAME, "button")[2].click()
+    assert cursor(driver) == "cell-1-0-0"
+    # Selecting a rung lights its steps in the listing; a step shows its rung.
+    lit = [s.get_attribute("data-step") for s in driver.find_elements(By.CSS_SELECTOR, '.listing .lit')]
+    assert lit == ["4", "5", "6"]
+    driver.find_element(By.CSS_SELECTOR, '.listing [data-step="12"]').click()
+    assert cursor(driver) == "cell-4-0-0"
+    # Batch replace with a preview.
+    el(driver, "replace-from").send_keys("X00")
+    el(driver, "replace-to").send_keys("X03")
+    wait(driver, lambda: "contact X00 → contact X03" in el(driver, "replace-preview").text)
+    el(driver, "replace-apply").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X03")
+    # The key map.
+    focus_ladder(driver, "cell-0-0-0")
+    keys(driver, "?")
+    assert "F5" in el(driver, "keymap").text
+    keys(driver, Keys.ESCAPE)
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="keymap"]'))
+
+
+def test_a_clip_from_another_tab_pastes_through_the_clipboard(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    clip = ('hashigo-clip 1\n{"kind":"rungs","rungs":[{"comment":"from the other tab","cells":'
+            '[[{"type":"contact","kind":"no","device":"X05"},{"type":"coil","kind":"normal","device":"Y05"}]]}]}\n')
+    paste = """const dt = new DataTransfer(); dt.setData('text/plain', arguments[0]);
+               document.activeElement.dispatchEvent(new ClipboardEvent('paste', {clipboardData: dt, bubbles: true, cancelable: true}));"""
+    driver.execute_script(paste, clip)
+    wait(driver, lambda: el(driver, "cell-0-0-1").get_attribute("data-device") == "Y05")
+    assert "from the other tab" in el(driver, "rung-0").text
+    # What the machine lacks is refused, all of it.
+    driver.execute_script(paste, clip.replace("X05", "X09"))
+    wait(driver, lambda: "X09" in el(driver, "edit-message").text)
+    assert len(driver.find_elements(By.CSS_SELECTOR, ".ladder .rung:not(.end)")) == 1
+    # Ctrl+C puts the same text form on the system clipboard's event.
+    driver.execute_script("""window.copied = null;
+        window.addEventListener('copy', e => { window.copied = e.clipboardData.getData('text/plain'); });""")
+    focus_ladder(driver)
+    ActionChains(driver).key_down(Keys.CONTROL).send_keys("c").key_up(Keys.CONTROL).perform()
+    wait(driver, lambda: driver.execute_script("return window.copied"), message="a copy event")
+    copied = driver.execute_script("return window.copied")
+    assert copied.startswith("hashigo-clip 1\n") and "X05" in copied
+
+
+def test_a_saved_ladder_that_does_not_read_is_kept_aside(driver, base_url):
+    open_fresh(driver, base_url)
+    driver.execute_script("localStorage.setItem('hashigo.ladder.minasec-u.v1', '{\"format\": \"nope\"}')")
+    driver.refresh()
+    wait(driver, lambda: "hashigo.ladder.minasec-u.v1.corrupt." in el(driver, "notice").text)
+    kept = driver.execute_script(
+        "return Object.keys(localStorage).filter(k => k.startsWith('hashigo.ladder.minasec-u.v1.corrupt.'))")
+    assert len(kept) == 1
+    assert driver.execute_script("return localStorage.getItem(arguments[0])", kept[0]) == '{"format": "nope"}'

@@ -8,7 +8,9 @@
 use std::collections::BTreeMap;
 
 use engine::ladder::compile::{compile_listing, Listing, Options};
-use engine::ladder::edit::{parse_entry, Clip, Cursor, Edit, Editor, EntryKind};
+use engine::ladder::edit::{
+    align_outputs, parse_entry, Clip, Cursor, Edit, Editor, EntryKind, COLUMNS,
+};
 use engine::ladder::{Element, Ladder, Pos};
 use engine::MachineId;
 use leptos::prelude::*;
@@ -125,7 +127,7 @@ impl LadderCtx {
             rungs: RwSignal::new(Vec::new()),
             cursor: RwSignal::new(Cursor::default()),
             anchor: RwSignal::new(None),
-            out_col: RwSignal::new(engine::ladder::edit::COLUMNS - 1),
+            out_col: RwSignal::new(COLUMNS - 1),
             can_undo: RwSignal::new(false),
             can_redo: RwSignal::new(false),
             listing: RwSignal::new(None),
@@ -472,6 +474,15 @@ impl LadderCtx {
         }
     }
 
+    /// The ladder of a program in the machine's text, drawn with its
+    /// outputs in the output column; the engine's located error if not.
+    pub fn ladder_of_text(&self, text: &str) -> Result<Ladder, String> {
+        let scan = self.options.get_untracked().avr_scan_ms;
+        let ladder = engine::ladder::decompile::decompile_text(self.machine, text, scan)
+            .map_err(|e| e.to_string())?;
+        Ok(align_outputs(&ladder, COLUMNS - 1))
+    }
+
     /// "Load as ladder": the text pane's program becomes the ladder
     /// (one undo brings the old one back); the engine's located error
     /// otherwise, with nothing changed.
@@ -480,9 +491,7 @@ impl LadderCtx {
             return Err("no program pane".into());
         };
         let text = program.text.get_untracked();
-        let scan = self.options.get_untracked().avr_scan_ms;
-        let ladder = engine::ladder::decompile::decompile_text(self.machine, &text, scan)
-            .map_err(|e| e.to_string())?;
+        let ladder = self.ladder_of_text(&text)?;
         // The pane holds the same program: it follows the ladder again.
         self.synced.set_value(Some(text));
         if self.ladder() != ladder {

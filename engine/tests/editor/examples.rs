@@ -54,3 +54,42 @@ fn every_example_opens_as_a_ladder_that_runs_like_its_text() {
         }
     }
 }
+
+#[test]
+fn outputs_move_to_the_output_column_and_the_logic_stays() {
+    use engine::ladder::edit::{align_outputs, COLUMNS};
+    let seed = {
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/programs/minasec-u/seed-test.json"
+        ))
+        .expect("seed");
+        engine::ladder::Project::from_json(&text)
+            .expect("reads")
+            .ladder
+    };
+    let ladders = EXAMPLES
+        .iter()
+        .map(|ex| {
+            (
+                ex.machine,
+                decompile_text(ex.machine, ex.text, 10).expect("opens"),
+            )
+        })
+        .chain([(engine::MachineId::MinasecU, seed)]);
+    for (machine, ladder) in ladders {
+        let aligned = align_outputs(&ladder, COLUMNS - 1);
+        for (i, rung) in aligned.rungs.iter().enumerate() {
+            for (pos, e) in rung.elements() {
+                if e.is_output() {
+                    assert_eq!(pos.col, COLUMNS - 1, "{machine} rung {i}: {e}");
+                }
+            }
+        }
+        let before = compile(&ladder, machine, Options::default()).expect("compiles");
+        let after = compile(&aligned, machine, Options::default());
+        assert_eq!(after.as_ref(), Ok(&before), "{machine}: {aligned:#?}");
+        // Already aligned: nothing moves.
+        assert_eq!(align_outputs(&aligned, COLUMNS - 1), aligned);
+    }
+}

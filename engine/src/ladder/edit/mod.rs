@@ -9,12 +9,14 @@
 //! backwards, so memory grows with what an edit touched, not with the
 //! ladder's size.
 
+mod align;
 mod change;
 mod clip;
 mod command;
 mod devices;
 mod entry;
 
+pub use align::align_outputs;
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
