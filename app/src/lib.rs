@@ -40,6 +40,14 @@ pub fn start() {
     }
     let ctx = page();
     let workspaces = Workspaces::restore(ctx);
+    editor::shared::open_from_location(ctx, workspaces.ladders);
+    // A link pasted into the address bar of the open page.
+    let ladders = workspaces.ladders;
+    let listener = window_event_listener(leptos::ev::hashchange, move |_| {
+        editor::shared::open_from_location(ctx, ladders);
+    });
+    // It listens for the page's life.
+    std::mem::forget(listener);
     leptos::mount::mount_to_body(move || view! { <App ctx=ctx workspaces=workspaces /> });
     start_loop(ctx, workspaces);
 }

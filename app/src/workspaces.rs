@@ -57,6 +57,8 @@ impl Workspaces {
                 minasec.save();
             }),
             save: Callback::new(move |()| minasec.save()),
+            settings: Callback::new(move |()| minasec.project_settings()),
+            apply_settings: Callback::new(move |settings| minasec.apply_project_settings(settings)),
         });
         ladders.io86a.connect(Program {
             text: io86a.texts[0],
@@ -65,6 +67,8 @@ impl Workspaces {
                 io86a.save();
             }),
             save: Callback::new(move |()| io86a.save()),
+            settings: Callback::new(|()| Vec::new()),
+            apply_settings: Callback::new(not_applied),
         });
         ladders.arduino.connect(Program {
             text: arduino.text,
@@ -73,6 +77,8 @@ impl Workspaces {
                 arduino.save();
             }),
             save: Callback::new(move |()| arduino.save()),
+            settings: Callback::new(|()| Vec::new()),
+            apply_settings: Callback::new(not_applied),
         });
         ladders
             .avr
@@ -85,6 +91,8 @@ impl Workspaces {
                 avr.save();
             }),
             save: Callback::new(move |()| avr.save()),
+            settings: Callback::new(|()| Vec::new()),
+            apply_settings: Callback::new(not_applied),
         });
         Workspaces {
             minasec,
@@ -162,4 +170,15 @@ impl Workspaces {
             MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=self.avr /> }.into_any(),
         }
     }
+}
+
+/// The settings a project brings to a workspace that keeps none of its
+/// own: each is reported, none is dropped silently.
+fn not_applied(settings: Vec<(String, String)>) -> Vec<String> {
+    settings
+        .into_iter()
+        .map(|(name, value)| {
+            format!("{name}={value}: this workspace keeps no settings; not applied.")
+        })
+        .collect()
 }

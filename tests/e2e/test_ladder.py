@@ -345,3 +345,80 @@ def test_a_saved_ladder_that_does_not_read_is_kept_aside(driver, base_url):
         "return Object.keys(localStorage).filter(k => k.startsWith('hashigo.ladder.minasec-u.v1.corrupt.'))")
     assert len(kept) == 1
     assert driver.execute_script("return localStorage.getItem(arguments[0])", kept[0]) == '{"format": "nope"}'
+
+
+def test_share_a_ladder_and_open_the_link_without_losing_your_own(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    el(driver, "share").click()
+    link = el(driver, "share-url").get_attribute("value")
+    assert link.startswith(base_url + "/#1.") or link.startswith(base_url + "/#2."), link
+    shared = saved_ladder(driver, "minasec-u")
+    # The CLI reads the same link back into the same ladder.
+    project = json.loads(subprocess.run([str(HASHIGO), "unshare", link], check=True,
+                                        capture_output=True, text=True).stdout)
+    assert project["machine"] == "minasec-u" and project["ladder"] == shared
+    assert project["settings"]["C0"] == "10"
+
+    # Someone else, with work of their own.
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X07")
+    place(driver, Keys.F7, "Y07")
+    own = saved_ladder(driver, "minasec-u")
+    driver.get(link)
+    wait(driver, lambda: el(driver, "shared-banner"), message="the banner")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    assert saved_ladder(driver, "minasec-u") == own, "opening a link saves nothing"
+    # Back: their own ladder, untouched.
+    el(driver, "shared-back").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X07")
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="shared-banner"]')
+    assert saved_ladder(driver, "minasec-u") == own
+    # Open it again and keep it: it is saved, the old one set aside.
+    driver.get(link)
+    wait(driver, lambda: el(driver, "shared-banner"))
+    el(driver, "shared-keep").click()
+    wait(driver, lambda: saved_ladder(driver, "minasec-u") == shared)
+    aside = driver.execute_script(
+        "return Object.keys(localStorage).filter(k => k.includes('.before-shared.'))")
+    assert len(aside) == 1 and aside[0] in el(driver, "notice").text
+    assert json.loads(driver.execute_script("return localStorage.getItem(arguments[0])", aside[0]))["ladder"] == own
+    assert el(driver, "counter-set-tens").get_attribute("aria-valuenow") == "1", "settings came too"
+    # The old ladder is one undo away.
+    focus_ladder(driver)
+    ActionChains(driver).key_down(Keys.CONTROL).send_keys("z").key_up(Keys.CONTROL).perform()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X07")
+
+
+def test_a_broken_link_changes_nothing(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X07")
+    place(driver, Keys.F7, "Y07")
+    own = saved_ladder(driver, "minasec-u")
+    for fragment in ["1.AAAA", "9.xyz", "1." + "A" * 70000]:
+        driver.get(f"{base_url}/#{fragment}")
+        wait(driver, lambda: "does not hold a ladder" in el(driver, "notice").text)
+        assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="shared-banner"]')
+        assert el(driver, "cell-0-0-0").get_attribute("data-device") == "X07"
+        assert saved_ladder(driver, "minasec-u") == own
+    assert "65536" in el(driver, "notice").text or "64" in el(driver, "notice").text
+
+
+def test_an_io86a_link_opens_on_the_io86a(driver, base_url):
+    project = ROOT / "tests/e2e/artifacts/io86a-project.json"
+    project.parent.mkdir(exist_ok=True)
+    project.write_text(json.dumps({
+        "format": "hashigo-project", "version": 1, "machine": "io86a",
+        "ladder": {"rungs": [{"cells": [[{"type": "contact", "kind": "no", "device": "X03"},
+                                         {"type": "coil", "kind": "normal", "device": "Y02"}]]}]},
+    }))
+    fragment = subprocess.run([str(HASHIGO), "share", "--program", str(project)], check=True,
+                              capture_output=True, text=True).stdout.strip()
+    open_fresh(driver, base_url)
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "io86a")
+    wait(driver, lambda: el(driver, "cell-0-0-1").get_attribute("data-device") == "Y02")
+    assert el(driver, "shared-banner")

@@ -14,6 +14,7 @@ pub mod grid;
 pub mod keys;
 pub mod model;
 pub mod palette;
+pub mod shared;
 pub mod side;
 pub mod state;
 pub mod store;
@@ -56,6 +57,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
     clipboard_events(ctx);
     view! {
         <section class="ladder-editor" data-machine=ctx.machine.name()>
+            <shared::SharedBanner ctx />
             <Toolbar ctx refocus />
             <CommentBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
@@ -110,6 +112,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 on:click=move |_| { ctx.redo(); refocus.run(()); }>{move || t().redo}</button>
             <button type="button" data-testid="ladder-write" disabled=move || ctx.listing.with(Option::is_none)
                 on:click=move |_| { ctx.write_to_machine(); }>{move || t().write}</button>
+            <shared::ShareButton ctx />
             <button type="button" data-testid="find-open" on:click=move |_| ctx.find_open.update(|f| *f = !*f)>
                 {move || t().find}
             </button>

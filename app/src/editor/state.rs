@@ -69,6 +69,10 @@ pub struct Program {
     pub load: Callback<()>,
     /// Saves the text pane (after the ladder changed it).
     pub save: Callback<()>,
+    /// The machine's settings as a project keeps them (`T0` = `1100ms`).
+    pub settings: Callback<(), Vec<(String, String)>>,
+    /// Applies (and saves) settings from a project; returns the refusals.
+    pub apply_settings: Callback<Vec<(String, String)>, Vec<String>>,
 }
 
 /// One machine's ladder editor; `Copy`.
@@ -113,6 +117,11 @@ pub struct LadderCtx {
     pub options: RwSignal<Options>,
     /// The clipboard of this page, for when the system's is not offered.
     clip: StoredValue<Option<String>>,
+    /// A shared project is shown, unsaved (docs/editor.md, "Share links").
+    pub shared: RwSignal<bool>,
+    /// The shared project's settings, applied when it is kept; and
+    /// whether showing it replaced the ladder (so going back undoes it).
+    shared_with: StoredValue<(Vec<(String, String)>, bool)>,
 }
 
 impl LadderCtx {
@@ -141,9 +150,77 @@ impl LadderCtx {
             synced: StoredValue::new(None),
             options: RwSignal::new(Options::default()),
             clip: StoredValue::new(None),
+            shared: RwSignal::new(false),
+            shared_with: StoredValue::new((Vec::new(), false)),
         };
         ctx.refresh(false);
         ctx
+    }
+
+    /// The machine's settings as a project keeps them.
+    pub fn settings(&self) -> Vec<(String, String)> {
+        self.program
+            .get_value()
+            .map(|p| p.settings.run(()))
+            .unwrap_or_default()
+    }
+
+    /// Shows a shared project's ladder, unsaved, until it is kept or left.
+    pub fn show_shared(&self, project: engine::ladder::Project) {
+        if self.shared.get_untracked() {
+            self.leave_shared();
+        }
+        self.shared.set(true);
+        let replaced = self.apply(Edit::Replace {
+            ladder: project.ladder,
+        });
+        self.message.set(None);
+        self.shared_with
+            .set_value((project.settings.into_iter().collect(), replaced));
+    }
+
+    /// "Keep it": the shared ladder becomes this machine's ladder and is
+    /// saved; the ladder saved before is set aside under a key of its own
+    /// (named in the notice) and is one undo away.
+    pub fn keep_shared(&self) {
+        if !self.shared.get_untracked() {
+            return;
+        }
+        let kept_as = store::set_aside(self.machine);
+        self.shared.set(false);
+        let (settings, _) = self.shared_with.get_value();
+        let refused = self
+            .program
+            .get_value()
+            .map(|p| p.apply_settings.run(settings))
+            .unwrap_or_default();
+        self.refresh(true);
+        let texts = super::texts::texts(self.page.lang.get_untracked());
+        let mut notice = match kept_as {
+            Some(key) => format!("{} {key}", texts.shared_kept),
+            None => String::new(),
+        };
+        for r in refused {
+            notice.push_str(&format!(" {r}"));
+        }
+        self.page
+            .notice
+            .set((!notice.trim().is_empty()).then_some(notice));
+    }
+
+    /// "Back to my work": the ladder as it was before the link opened.
+    pub fn leave_shared(&self) {
+        if !self.shared.get_untracked() {
+            return;
+        }
+        let (_, replaced) = self.shared_with.get_value();
+        if replaced {
+            self.editor.update_value(|e| {
+                e.undo();
+            });
+        }
+        self.refresh(false);
+        self.shared.set(false);
     }
 
     /// Connects the machine's text pane. The pane follows the ladder while
@@ -565,7 +642,8 @@ impl LadderCtx {
         if self.problems.with_untracked(|p| *p != problems) {
             self.problems.set(problems);
         }
-        if edited {
+        // A shared project is not saved until it is kept.
+        if edited && !self.shared.get_untracked() {
             self.follow(listing.as_ref());
             self.editor
                 .with_value(|e| store::save(self.page, self.machine, e.ladder()));

@@ -61,3 +61,15 @@ pub fn save(page: Ctx, machine: MachineId, ladder: &Ladder) {
         page.notice.set(Some(texts.storage_unavailable.to_string()));
     }
 }
+
+/// Moves the ladder saved for `machine` aside under
+/// `<key>.before-shared.<ms>` (before a shared ladder replaces it);
+/// returns that key, or `None` when nothing was saved.
+pub fn set_aside(machine: MachineId) -> Option<String> {
+    let store = web_sys::window()?.local_storage().ok()??;
+    let key = key(machine);
+    let raw = store.get_item(&key).ok()??;
+    let aside = format!("{key}.before-shared.{}", js_sys::Date::now() as u64);
+    store.set_item(&aside, &raw).ok()?;
+    Some(aside)
+}

@@ -34,6 +34,12 @@ pub struct EditorTexts {
     pub device_comment: &'static str,
     pub rung_comment: &'static str,
     pub close: &'static str,
+    pub share: &'static str,
+    pub shared_note: &'static str,
+    pub shared_keep: &'static str,
+    pub shared_back: &'static str,
+    pub shared_broken: &'static str,
+    pub shared_kept: &'static str,
 }
 
 const EN: EditorTexts = EditorTexts {
@@ -67,6 +73,12 @@ const EN: EditorTexts = EditorTexts {
     device_comment: "Device comment",
     rung_comment: "Rung comment",
     close: "Close",
+    share: "Share",
+    shared_note: "A shared ladder, not saved: keep it, or go back to your own work.",
+    shared_keep: "Keep it",
+    shared_back: "Back to my work",
+    shared_broken: "This link does not hold a ladder; nothing was changed:",
+    shared_kept: "Kept. Your previous ladder is one undo away and stored as",
 };
 
 const JA: EditorTexts = EditorTexts {
@@ -100,6 +112,12 @@ const JA: EditorTexts = EditorTexts {
     device_comment: "デバイスコメント",
     rung_comment: "回路コメント",
     close: "閉じる",
+    share: "共有",
+    shared_note: "共有されたラダーです (未保存)。保存するか、自分の作業に戻ってください。",
+    shared_keep: "保存する",
+    shared_back: "自分の作業に戻る",
+    shared_broken: "このリンクはラダーを含んでいません。何も変更していません:",
+    shared_kept: "保存しました。以前のラダーは元に戻すで戻せます。保存先:",
 };
 
 /// The editor's strings in `lang`.

@@ -139,6 +139,43 @@ impl MinasecCtx {
         }
     }
 
+    /// The panel's settings as a project keeps them (`T0`, `T1`, `C0`).
+    pub fn project_settings(&self) -> Vec<(String, String)> {
+        let p = self.panel;
+        vec![
+            ("T0".into(), format!("{}ms", p.delays_ms[0].get_untracked())),
+            ("T1".into(), format!("{}ms", p.delays_ms[1].get_untracked())),
+            (
+                "C0".into(),
+                (p.preset[0].get_untracked() * 10 + p.preset[1].get_untracked()).to_string(),
+            ),
+        ]
+    }
+
+    /// Applies a project's settings to the board (through the engine, so
+    /// a bad value is refused with its message) and saves them; returns
+    /// the refusals.
+    pub fn apply_project_settings(&self, settings: Vec<(String, String)>) -> Vec<String> {
+        let mut refused = Vec::new();
+        for (name, value) in settings {
+            let result = self
+                .sim
+                .try_update_value(|s| {
+                    s.machine_mut().apply(plc::Command::Setting {
+                        name: name.clone(),
+                        value: value.clone(),
+                    })
+                })
+                .unwrap_or(Ok(()));
+            if let Err(e) = result {
+                refused.push(format!("{name}={value}: {e}"));
+            }
+        }
+        self.refresh();
+        self.save();
+        refused
+    }
+
     /// Applies saved panel settings; values out of range are refused by the
     /// board and left as they were.
     pub fn apply_settings(&self, rv1_ms: u64, rv2_ms: u64, tens: u8, ones: u8) {

@@ -1,0 +1,143 @@
+//! Share links: the Share button puts a URL whose fragment holds the
+//! whole project (ladder, comments, machine, settings) in
+//! `[data-testid=share-url]` and on the clipboard; a page opened with such
+//! a fragment shows the project as unsaved work under a banner, to keep or
+//! to leave. The fragment never reaches a server (browsers do not send
+//! it), and opening a link never overwrites the autosaved ladder: saving
+//! waits for "Keep", which first sets the old ladder aside.
+
+use engine::ladder::share;
+use engine::ladder::Project;
+use leptos::prelude::*;
+
+use super::{LadderCtx, Ladders};
+use crate::state::Ctx;
+
+/// The fragment of the page's URL, without `#`, when it has one.
+fn location_fragment() -> Option<String> {
+    let hash = web_sys::window()?.location().hash().ok()?;
+    let fragment = hash.strip_prefix('#').unwrap_or(&hash).to_string();
+    (!fragment.is_empty()).then_some(fragment)
+}
+
+/// Removes the fragment from the address bar (the page stays).
+fn clear_fragment() {
+    let Some(window) = web_sys::window() else {
+        return;
+    };
+    let Ok(history) = window.history() else {
+        return;
+    };
+    let location = window.location();
+    let path = format!(
+        "{}{}",
+        location.pathname().unwrap_or_default(),
+        location.search().unwrap_or_default()
+    );
+    let _ = history.replace_state_with_url(&leptos::wasm_bindgen::JsValue::NULL, "", Some(&path));
+}
+
+/// Opens the project in the page's fragment, if there is one: its machine
+/// is shown with the project's ladder, unsaved, under the banner. A
+/// fragment that does not read is reported and changes nothing.
+pub fn open_from_location(page: Ctx, ladders: Ladders) {
+    let Some(fragment) = location_fragment() else {
+        return;
+    };
+    open_fragment(page, ladders, &fragment);
+}
+
+/// Opens share text `fragment` (see [`open_from_location`]).
+pub fn open_fragment(page: Ctx, ladders: Ladders, fragment: &str) {
+    match share::decode(fragment) {
+        Ok(project) => {
+            page.machine.set(project.machine);
+            ladders.of(project.machine).show_shared(project);
+        }
+        Err(e) => {
+            let texts = super::texts::texts(page.lang.get_untracked());
+            page.notice
+                .set(Some(format!("{} {e}", texts.shared_broken)));
+        }
+    }
+}
+
+/// The URL of the page with `fragment`.
+fn url_with(fragment: &str) -> String {
+    let Some(window) = web_sys::window() else {
+        return format!("#{fragment}");
+    };
+    let l = window.location();
+    format!(
+        "{}{}{}#{fragment}",
+        l.origin().unwrap_or_default(),
+        l.pathname().unwrap_or_default(),
+        l.search().unwrap_or_default()
+    )
+}
+
+/// The project as shared: the ladder, its comments, the machine's settings.
+pub fn project_of(ctx: LadderCtx) -> Project {
+    let mut project = Project::new(ctx.machine, ctx.ladder());
+    project.settings = ctx.settings().into_iter().collect();
+    project
+}
+
+/// The Share button and the link it made.
+#[component]
+pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let url = RwSignal::new(None::<String>);
+    let share = move |_| match share::encode(&project_of(ctx)) {
+        Ok(fragment) => {
+            let link = url_with(&fragment);
+            if let Some(window) = web_sys::window() {
+                // The clipboard may be refused (permissions); the link
+                // stays in the field to copy by hand.
+                let _ = window.navigator().clipboard().write_text(&link);
+            }
+            url.set(Some(link));
+            ctx.message.set(None);
+        }
+        Err(e) => ctx.message.set(Some(e.to_string())),
+    };
+    view! {
+        <button type="button" data-testid="share" on:click=share>{move || t().share}</button>
+        <Show when=move || url.with(Option::is_some)>
+            <input
+                class="share-url"
+                data-testid="share-url"
+                readonly
+                aria-label=move || t().share
+                prop:value=move || url.get().unwrap_or_default()
+                on:focus=|e| {
+                    use leptos::wasm_bindgen::JsCast;
+                    if let Some(i) = e.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok()) {
+                        i.select();
+                    }
+                }
+            />
+        </Show>
+    }
+}
+
+/// The banner over a shared project: keep it, or go back to your own.
+#[component]
+pub fn SharedBanner(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    view! {
+        <Show when=move || ctx.shared.get()>
+            <div class="shared-banner" role="status" data-testid="shared-banner">
+                <span>{move || t().shared_note}</span>
+                <button type="button" data-testid="shared-keep" on:click=move |_| {
+                    ctx.keep_shared();
+                    clear_fragment();
+                }>{move || t().shared_keep}</button>
+                <button type="button" data-testid="shared-back" on:click=move |_| {
+                    ctx.leave_shared();
+                    clear_fragment();
+                }>{move || t().shared_back}</button>
+            </div>
+        </Show>
+    }
+}
