@@ -422,3 +422,60 @@ def test_an_io86a_link_opens_on_the_io86a(driver, base_url):
     wait(driver, lambda: el(driver, "machine").get_attribute("value") == "io86a")
     wait(driver, lambda: el(driver, "cell-0-0-1").get_attribute("data-device") == "Y02")
     assert el(driver, "shared-banner")
+
+
+CAPTURE = """
+window.downloads = [];
+HTMLAnchorElement.prototype.click = function () {
+  const name = this.download, href = this.href;
+  fetch(href).then(r => href.startsWith('data:image/png') ? r.arrayBuffer().then(b => b.byteLength)
+                                                         : r.text())
+    .then(body => window.downloads.push({name, body}));
+};
+"""
+
+
+def downloads(driver, n):
+    wait(driver, lambda: len(driver.execute_script("return window.downloads")) >= n, message="downloads")
+    return {d["name"]: d["body"] for d in driver.execute_script("return window.downloads")}
+
+
+def test_files_save_open_and_pictures(driver, base_url, tmp_path):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    el(driver, "cell-0-0-0").click()
+    el(driver, "device-comment-input").send_keys("<b>start</b> & go", Keys.ENTER)
+    wait(driver, lambda: "<b>start</b>" in el(driver, "cell-0-0-0").text, message="comments are text")
+    driver.execute_script(CAPTURE)
+    for button in ["save-json", "export-plcopen", "export-text", "export-svg", "export-png"]:
+        el(driver, button).click()
+    got = downloads(driver, 5)
+    project = json.loads(got["minasec-u-ladder.json"])
+    assert project["ladder"] == saved_ladder(driver, "minasec-u")
+    assert "<project" in got["minasec-u-ladder.xml"] and "X00" in got["minasec-u-ladder.xml"]
+    assert steps(got["minasec-u-ladder.txt"]) == steps(el(driver, "il-listing").text)
+    svg = got["minasec-u-ladder.svg"]
+    assert svg.startswith("<svg") and "&lt;b&gt;start&lt;/b&gt; &amp; go" in svg and "<b>" not in svg
+    assert ">C0R<" in svg
+    assert got["minasec-u-ladder.png"] > 1000, "a PNG of some size"
+
+    # The saved project opens again (after a new ladder), one undo away.
+    saved = tmp_path / "mine.json"
+    saved.write_text(got["minasec-u-ladder.json"])
+    el(driver, "new-ladder").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-kind") == "")
+    el(driver, "open-file").send_keys(str(saved))
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    # A bad file is refused at its line; nothing changes.
+    bad = tmp_path / "bad.json"
+    bad.write_text('{\n  "format": "hashigo-project",\n  "version": 99,\n  "machine": "minasec-u",\n  "ladder": {"rungs": []}\n}\n')
+    el(driver, "open-file").send_keys(str(bad))
+    wait(driver, lambda: "bad.json:3:" in el(driver, "edit-message").text)
+    assert el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R"
+    # The exported PLCopen file opens too.
+    xml = tmp_path / "main.xml"
+    xml.write_text(got["minasec-u-ladder.xml"])
+    el(driver, "new-ladder").click()
+    el(driver, "open-file").send_keys(str(xml))
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")

@@ -9,11 +9,13 @@
 //! - [`store`]: the autosave.
 
 pub mod entry;
+pub mod files;
 pub mod find;
 pub mod grid;
 pub mod keys;
 pub mod model;
 pub mod palette;
+pub mod picture;
 pub mod shared;
 pub mod side;
 pub mod state;
@@ -113,6 +115,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
             <button type="button" data-testid="ladder-write" disabled=move || ctx.listing.with(Option::is_none)
                 on:click=move |_| { ctx.write_to_machine(); }>{move || t().write}</button>
             <shared::ShareButton ctx />
+            <files::FileButtons ctx />
             <button type="button" data-testid="find-open" on:click=move |_| ctx.find_open.update(|f| *f = !*f)>
                 {move || t().find}
             </button>

@@ -40,6 +40,10 @@ pub struct EditorTexts {
     pub shared_back: &'static str,
     pub shared_broken: &'static str,
     pub shared_kept: &'static str,
+    pub save_json: &'static str,
+    pub open_file: &'static str,
+    pub export_text: &'static str,
+    pub print: &'static str,
 }
 
 const EN: EditorTexts = EditorTexts {
@@ -79,6 +83,10 @@ const EN: EditorTexts = EditorTexts {
     shared_back: "Back to my work",
     shared_broken: "This link does not hold a ladder; nothing was changed:",
     shared_kept: "Kept. Your previous ladder is one undo away and stored as",
+    save_json: "Save",
+    open_file: "Open…",
+    export_text: "Program text",
+    print: "Print",
 };
 
 const JA: EditorTexts = EditorTexts {
@@ -118,6 +126,10 @@ const JA: EditorTexts = EditorTexts {
     shared_back: "自分の作業に戻る",
     shared_broken: "このリンクはラダーを含んでいません。何も変更していません:",
     shared_kept: "保存しました。以前のラダーは元に戻すで戻せます。保存先:",
+    save_json: "保存",
+    open_file: "開く…",
+    export_text: "プログラム",
+    print: "印刷",
 };
 
 /// The editor's strings in `lang`.

@@ -1,0 +1,210 @@
+//! Files: the project as JSON (the engine's versioned format), PLCopen
+//! XML out and in, the machine's program text, the ladder as SVG and PNG,
+//! and printing. Downloads are made in the page (a Blob and a link); an
+//! opened file is read by the engine, which names the line of a problem,
+//! and becomes the ladder (one undo away) only when it reads.
+
+use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
+use engine::ladder::{plcopen, Project};
+use leptos::prelude::*;
+use leptos::wasm_bindgen::closure::Closure;
+use leptos::wasm_bindgen::{JsCast, JsValue};
+
+use super::model::RungData;
+use super::{picture, LadderCtx, Ladders};
+
+/// Offers `content` as a download named `name`.
+pub fn download(name: &str, mime: &str, content: &str) {
+    let parts = js_sys::Array::of1(&JsValue::from_str(content));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type(mime);
+    let Ok(blob) = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options) else {
+        return;
+    };
+    if let Ok(url) = web_sys::Url::create_object_url_with_blob(&blob) {
+        click_link(name, &url);
+    }
+}
+
+fn click_link(name: &str, href: &str) {
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    if let Ok(a) = document.create_element("a") {
+        let a: web_sys::HtmlAnchorElement = a.unchecked_into();
+        a.set_href(href);
+        a.set_download(name);
+        a.click();
+    }
+}
+
+/// The rung drawings as the screen has them, with numbers and steps.
+fn drawings(ctx: LadderCtx) -> Vec<(usize, Option<usize>, RungData)> {
+    ctx.rungs
+        .get_untracked()
+        .iter()
+        .map(|r| {
+            (
+                r.number.get_untracked(),
+                r.first_step.get_untracked(),
+                r.data.get_untracked(),
+            )
+        })
+        .collect()
+}
+
+/// The ladder as SVG text.
+pub fn svg_of(ctx: LadderCtx) -> String {
+    let rungs = drawings(ctx);
+    let refs: Vec<(usize, Option<usize>, &RungData)> =
+        rungs.iter().map(|(n, s, d)| (*n, *s, d)).collect();
+    picture::svg(&refs)
+}
+
+/// A file name for this machine's ladder.
+fn name(ctx: LadderCtx, ext: &str) -> String {
+    format!("{}-ladder.{ext}", ctx.machine.name())
+}
+
+/// The ladder as PNG: the SVG drawn on a canvas by the browser.
+fn export_png(ctx: LadderCtx) {
+    let svg = svg_of(ctx);
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    let Ok(image) = web_sys::HtmlImageElement::new() else {
+        return;
+    };
+    let file = name(ctx, "png");
+    let img = image.clone();
+    let onload = Closure::once_into_js(move || {
+        let Ok(canvas) = document.create_element("canvas") else {
+            return;
+        };
+        let canvas: web_sys::HtmlCanvasElement = canvas.unchecked_into();
+        canvas.set_width(img.natural_width());
+        canvas.set_height(img.natural_height());
+        let context = canvas
+            .get_context("2d")
+            .ok()
+            .flatten()
+            .and_then(|c| c.dyn_into::<web_sys::CanvasRenderingContext2d>().ok());
+        if let Some(context) = context {
+            let _ = context.draw_image_with_html_image_element(&img, 0.0, 0.0);
+            if let Ok(url) = canvas.to_data_url() {
+                click_link(&file, &url);
+            }
+        }
+    });
+    image.set_onload(Some(onload.unchecked_ref()));
+    let encoded: String = js_sys::encode_uri_component(&svg).into();
+    image.set_src(&format!("data:image/svg+xml;charset=utf-8,{encoded}"));
+}
+
+/// Reads an opened file: a project (`.json`) or PLCopen XML. A project
+/// for another machine opens on that machine.
+fn open_text(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
+    let is_xml = text
+        .trim_start_matches('\u{feff}')
+        .trim_start()
+        .starts_with('<');
+    let (target, ladder) = if is_xml {
+        match plcopen::import_for(text, Some(ctx.machine)) {
+            Ok(l) => (ctx, l),
+            Err(errors) => {
+                let all: Vec<String> = errors
+                    .iter()
+                    .map(|e| format!("{file}:{}: {}", e.line, e.error))
+                    .collect();
+                ctx.message.set(Some(all.join("; ")));
+                return;
+            }
+        }
+    } else {
+        match Project::from_json(text) {
+            Ok(p) => {
+                let target = ladders.map_or(ctx, |l| l.of(p.machine));
+                ctx.page.machine.set(p.machine);
+                (target, p.ladder)
+            }
+            Err(e) => {
+                ctx.message
+                    .set(Some(format!("{file}:{}: {}", e.line, e.error)));
+                return;
+            }
+        }
+    };
+    let ladder = align_outputs(&ladder, COLUMNS - 1);
+    if target.ladder() != ladder {
+        target.apply(Edit::Replace { ladder });
+    }
+}
+
+/// The file buttons.
+#[component]
+pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let ladders = use_context::<Ladders>();
+    let on_file = move |e: web_sys::Event| {
+        let Some(input) = e
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok())
+        else {
+            return;
+        };
+        let Some(file) = input.files().and_then(|f| f.get(0)) else {
+            return;
+        };
+        let name = file.name();
+        input.set_value("");
+        let Ok(reader) = web_sys::FileReader::new() else {
+            return;
+        };
+        let r = reader.clone();
+        let onload = Closure::once_into_js(move || {
+            let text = r
+                .result()
+                .ok()
+                .and_then(|v| v.as_string())
+                .unwrap_or_default();
+            open_text(ctx, ladders, &name, &text);
+        });
+        reader.set_onload(Some(onload.unchecked_ref()));
+        let _ = reader.read_as_text(&file);
+    };
+    view! {
+        <span class="files">
+            <button type="button" data-testid="save-json" on:click=move |_| {
+                let project = super::shared::project_of(ctx);
+                download(&name(ctx, "json"), "application/json", &project.to_json());
+            }>{move || t().save_json}</button>
+            <label class="file-open">
+                {move || t().open_file}
+                <input type="file" data-testid="open-file" accept=".json,.xml,application/json,text/xml" on:change=on_file />
+            </label>
+            <button type="button" data-testid="export-plcopen" on:click=move |_| {
+                match plcopen::export(&ctx.ladder(), "Main") {
+                    Ok(xml) => download(&name(ctx, "xml"), "application/xml", &xml),
+                    Err(errors) => {
+                        let all: Vec<String> = errors.iter().map(ToString::to_string).collect();
+                        ctx.message.set(Some(all.join("; ")));
+                    }
+                }
+            }>"PLCopen"</button>
+            <button type="button" data-testid="export-text" disabled=move || ctx.listing.with(Option::is_none) on:click=move |_| {
+                if let Some(listing) = ctx.listing.get_untracked() {
+                    download(&name(ctx, "txt"), "text/plain", &listing.text);
+                }
+            }>{move || t().export_text}</button>
+            <button type="button" data-testid="export-svg" on:click=move |_| {
+                download(&name(ctx, "svg"), "image/svg+xml", &svg_of(ctx));
+            }>"SVG"</button>
+            <button type="button" data-testid="export-png" on:click=move |_| export_png(ctx)>"PNG"</button>
+            <button type="button" data-testid="print" on:click=|_| {
+                if let Some(w) = web_sys::window() {
+                    let _ = w.print();
+                }
+            }>{move || t().print}</button>
+        </span>
+    }
+}
