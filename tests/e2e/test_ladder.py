@@ -479,3 +479,16 @@ def test_files_save_open_and_pictures(driver, base_url, tmp_path):
     el(driver, "new-ladder").click()
     el(driver, "open-file").send_keys(str(xml))
     wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+
+
+def test_the_page_runs_under_a_csp_with_no_inline_script(driver, base_url):
+    open_fresh(driver, base_url)
+    assert driver.execute_script("return document.querySelectorAll('script:not([src])').length") == 0
+    csp = driver.execute_script(
+        "return document.querySelector('meta[http-equiv=\"Content-Security-Policy\"]').content")
+    assert "script-src 'self' 'wasm-unsafe-eval'" in csp and "unsafe-inline" not in csp.split("script-src")[1].split(";")[0]
+    # An inline script injected now is refused by the policy.
+    driver.execute_script("""const s = document.createElement('script'); s.textContent = 'window.ran = 1';
+                             document.body.appendChild(s);""")
+    assert driver.execute_script("return window.ran === undefined")
+    assert el(driver, "ladder")

@@ -1,0 +1,27 @@
+#!/usr/bin/env python3
+"""Trunk post-build hook: moves the loader Trunk writes inline into
+index.html to a file of its own, so the page's Content-Security-Policy
+can forbid inline scripts (docs/app.md, "Security"). The file is named by
+a hash of its content, like Trunk's own files."""
+
+import hashlib
+import os
+import pathlib
+import re
+import sys
+
+staging = pathlib.Path(os.environ.get("TRUNK_STAGING_DIR", sys.argv[1] if len(sys.argv) > 1 else "dist"))
+index = staging / "index.html"
+html = index.read_text(encoding="utf-8")
+pattern = re.compile(r'<script type="module">(.*?)</script>', re.S)
+match = pattern.search(html)
+if match is None:
+    sys.exit(0)
+code = match.group(1).strip() + "\n"
+digest = hashlib.sha384(code.encode()).hexdigest()[:16]
+name = f"init-{digest}.js"
+(staging / name).write_text(code, encoding="utf-8")
+html = html[: match.start()] + f'<script type="module" src="/{name}"></script>' + html[match.end():]
+index.write_text(html, encoding="utf-8")
+if pattern.search(html) or "<script>" in html:
+    sys.exit("an inline script is left in index.html")
