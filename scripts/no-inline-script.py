@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Trunk post-build hook: moves the loader Trunk writes inline into
 index.html to a file of its own, so the page's Content-Security-Policy
-can forbid inline scripts (docs/app.md, "Security"). The file is named by
-a hash of its content, like Trunk's own files."""
+can forbid inline scripts (docs/app.md, "Security"); the file is named by
+a hash of its content, like Trunk's own files. Then writes the release's
+file list and version into the service worker (web/sw.js), so that a new
+release caches itself anew."""
 
 import hashlib
 import os
@@ -25,3 +27,12 @@ html = html[: match.start()] + f'<script type="module" src="/{name}"></script>' 
 index.write_text(html, encoding="utf-8")
 if pattern.search(html) or "<script>" in html:
     sys.exit("an inline script is left in index.html")
+
+worker = staging / "sw.js"
+if worker.exists():
+    files = sorted(p.name for p in staging.iterdir() if p.is_file() and p.name != "sw.js")
+    version = hashlib.sha384("".join(files).encode() + html.encode()).hexdigest()[:16]
+    listed = '", "'.join(["/"] + [f"/{f}" for f in files])
+    text = worker.read_text(encoding="utf-8")
+    text = text.replace("__VERSION__", version).replace('"__FILES__"', f'"{listed}"')
+    worker.write_text(text, encoding="utf-8")

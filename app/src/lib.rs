@@ -38,6 +38,7 @@ pub fn start() {
         leptos::mount::mount_to_body(bench::BenchPage);
         return;
     }
+    register_service_worker();
     let ctx = page();
     let workspaces = Workspaces::restore(ctx);
     editor::shared::open_from_location(ctx, workspaces.ladders);
@@ -50,6 +51,22 @@ pub fn start() {
     std::mem::forget(listener);
     leptos::mount::mount_to_body(move || view! { <App ctx=ctx workspaces=workspaces /> });
     start_loop(ctx, workspaces);
+}
+
+/// Registers the service worker that keeps the page working offline
+/// (`web/sw.js`); where the browser offers none (an insecure origin) the
+/// page works online only.
+fn register_service_worker() {
+    let Some(window) = web_sys::window() else {
+        return;
+    };
+    let navigator = window.navigator();
+    let offered = js_sys::Reflect::get(&navigator, &"serviceWorker".into())
+        .is_ok_and(|v| !v.is_undefined() && !v.is_null());
+    if offered {
+        // A refusal (private mode, a policy) leaves the page as it is.
+        let _ = navigator.service_worker().register("sw.js");
+    }
 }
 
 /// A panic must not leave a dead page: say so, in both languages.

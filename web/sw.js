@@ -1,0 +1,35 @@
+// Hashigo's service worker: after the first visit the page works with no
+// network. The build (scripts/no-inline-script.py) writes the release's
+// files and a version into FILES and VERSION; a new release installs a
+// new cache and the old one is deleted when it takes over.
+const VERSION = "__VERSION__";
+const FILES = ["__FILES__"];
+const CACHE = `hashigo-${VERSION}`;
+
+self.addEventListener("install", (event) => {
+  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(FILES)).then(() => self.skipWaiting()));
+});
+
+self.addEventListener("activate", (event) => {
+  event.waitUntil(
+    caches.keys()
+      .then((keys) => Promise.all(keys.filter((k) => k.startsWith("hashigo-") && k !== CACHE).map((k) => caches.delete(k))))
+      .then(() => self.clients.claim()),
+  );
+});
+
+// The page itself: the network first (a new release shows at once),
+// the cache when offline. Its files have hashed names: the cache first.
+self.addEventListener("fetch", (event) => {
+  const request = event.request;
+  if (request.method !== "GET" || new URL(request.url).origin !== self.location.origin) {
+    return;
+  }
+  if (request.mode === "navigate") {
+    event.respondWith(
+      fetch(request).catch(() => caches.open(CACHE).then((cache) => cache.match("/index.html"))),
+    );
+    return;
+  }
+  event.respondWith(caches.match(request).then((hit) => hit || fetch(request)));
+});
