@@ -189,6 +189,13 @@ pub fn save_to<T: Serialize>(key: &str, value: &T) -> bool {
     }
 }
 
+/// Forgets a remembered string.
+pub fn remove(key: &str) {
+    if let Some(store) = storage() {
+        let _ = store.remove_item(key);
+    }
+}
+
 /// A plain remembered string (language, machine).
 pub fn saved_string(key: &str) -> Option<String> {
     storage()?.get_item(key).ok().flatten()

@@ -22,6 +22,8 @@ pub struct Workspaces {
     pub avr: avr::AvrCtx,
     /// Each machine's ladder editor.
     pub ladders: Ladders,
+    /// The named projects.
+    pub projects: crate::editor::projects::Projects,
 }
 
 impl Workspaces {
@@ -100,6 +102,7 @@ impl Workspaces {
             arduino,
             avr,
             ladders,
+            projects: crate::editor::projects::Projects::restore(page),
         }
     }
 
@@ -110,6 +113,7 @@ impl Workspaces {
         provide_context(self.arduino);
         provide_context(self.avr);
         provide_context(self.ladders);
+        provide_context(self.projects);
     }
 
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall

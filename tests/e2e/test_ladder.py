@@ -376,20 +376,24 @@ def test_share_a_ladder_and_open_the_link_without_losing_your_own(driver, base_u
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X07")
     assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="shared-banner"]')
     assert saved_ladder(driver, "minasec-u") == own
-    # Open it again and keep it: it is saved, the old one set aside.
+    # Open it again and keep it: it becomes a project of its own; their
+    # own ladder stays saved where it was.
     driver.get(link)
     wait(driver, lambda: el(driver, "shared-banner"))
     el(driver, "shared-keep").click()
-    wait(driver, lambda: saved_ladder(driver, "minasec-u") == shared)
-    aside = driver.execute_script(
-        "return Object.keys(localStorage).filter(k => k.includes('.before-shared.'))")
-    assert len(aside) == 1 and aside[0] in el(driver, "notice").text
-    assert json.loads(driver.execute_script("return localStorage.getItem(arguments[0])", aside[0]))["ladder"] == own
+    wait(driver, lambda: "Kept as the project" in el(driver, "notice").text)
+    index = json.loads(driver.execute_script("return localStorage.getItem('hashigo.projects.v1')"))
+    [entry] = index["projects"]
+    kept = json.loads(driver.execute_script("return localStorage.getItem(arguments[0])",
+                                            f"hashigo.project.{entry['id']}.v1"))
+    assert kept["ladder"] == shared and entry["machine"] == "minasec-u"
+    assert saved_ladder(driver, "minasec-u") == own
     assert el(driver, "counter-set-tens").get_attribute("aria-valuenow") == "1", "settings came too"
-    # The old ladder is one undo away.
-    focus_ladder(driver)
-    ActionChains(driver).key_down(Keys.CONTROL).send_keys("z").key_up(Keys.CONTROL).perform()
-    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X07")
+    # A reload shows the kept project; their own ladder is one click away.
+    driver.get(base_url)
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    el(driver, "projects-open").click()
+    assert entry["name"] in el(driver, "project-open-name").text
 
 
 def test_a_broken_link_changes_nothing(driver, base_url):
@@ -518,3 +522,74 @@ def test_after_the_first_visit_the_page_works_offline(driver, artifacts):
     place(driver, Keys.F5, "X00")
     place(driver, Keys.F7, "Y00")
     assert "ST   Y00" in el(driver, "il-listing").text
+
+
+def test_projects_new_open_rename_duplicate_delete(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X01")
+    place(driver, Keys.F7, "Y01")
+    own = saved_ladder(driver, "minasec-u")
+    el(driver, "projects-open").click()
+    el(driver, "project-name").send_keys("Pump")
+    el(driver, "project-new").click()
+    wait(driver, lambda: el(driver, "project-open-name").text == "Pump")
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-kind") == "")
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X02")
+    place(driver, Keys.F7, "Y02")
+    index = lambda: json.loads(driver.execute_script("return localStorage.getItem('hashigo.projects.v1')"))["projects"]
+    pump = index()[0]
+    saved = lambda pid: json.loads(driver.execute_script(
+        "return localStorage.getItem(arguments[0])", f"hashigo.project.{pid}.v1"))["ladder"]
+    wait(driver, lambda: saved(pump["id"])["rungs"][0]["cells"][0][0]["device"] == "X02")
+    assert saved_ladder(driver, "minasec-u") == own, "the machine's own ladder is untouched"
+    # Duplicate, rename the copy, open it.
+    el(driver, "project-Pump").find_element(By.CSS_SELECTOR, '[data-testid="project-duplicate"]').click()
+    wait(driver, lambda: len(index()) == 2)
+    el(driver, "project-name").send_keys("Fan")
+    el(driver, "project-Pump (copy)").find_element(By.CSS_SELECTOR, '[data-testid="project-rename"]').click()
+    wait(driver, lambda: [p["name"] for p in index()] == ["Pump", "Fan"])
+    el(driver, "project-Fan").find_element(By.CSS_SELECTOR, '[data-testid="project-open"]').click()
+    wait(driver, lambda: el(driver, "project-open-name").text == "Fan")
+    assert el(driver, "cell-0-0-0").get_attribute("data-device") == "X02"
+    # Delete Pump (not open), then undo.
+    el(driver, "project-Pump").find_element(By.CSS_SELECTOR, '[data-testid="project-delete"]').click()
+    wait(driver, lambda: [p["name"] for p in index()] == ["Fan"])
+    el(driver, "project-undo-delete").click()
+    wait(driver, lambda: [p["name"] for p in index()] == ["Pump", "Fan"])
+    assert saved(pump["id"])["rungs"][0]["cells"][0][0]["device"] == "X02"
+    # The open one cannot be deleted.
+    el(driver, "project-Fan").find_element(By.CSS_SELECTOR, '[data-testid="project-delete"]').click()
+    wait(driver, lambda: "open" in el(driver, "edit-message").text)
+    assert len(index()) == 2
+    # Reload: Fan is still open.
+    driver.refresh()
+    el(driver, "projects-open").click()
+    wait(driver, lambda: el(driver, "project-open-name").text == "Fan")
+
+
+def test_text_from_a_link_is_shown_as_text(driver, base_url, tmp_path):
+    from selenium.common.exceptions import NoAlertPresentException
+
+    hostile = "<img src=x onerror=alert(1)>"
+    project = tmp_path / "hostile.json"
+    project.write_text(json.dumps({
+        "format": "hashigo-project", "version": 1, "machine": "minasec-u",
+        "ladder": {"rungs": [{"comment": hostile, "cells": [[
+            {"type": "contact", "kind": "no", "device": "X00"},
+            {"type": "coil", "kind": "normal", "device": "Y00"}]]}],
+                   "device_comments": {"X00": hostile}},
+    }))
+    fragment = subprocess.run([str(HASHIGO), "share", "--program", str(project)], check=True,
+                              capture_output=True, text=True).stdout.strip()
+    open_fresh(driver, base_url)
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: hostile in el(driver, "rung-0").text)
+    assert hostile in el(driver, "cell-0-0-0").text
+    assert not driver.find_elements(By.CSS_SELECTOR, ".ladder img")
+    try:
+        driver.switch_to.alert
+        raise AssertionError("a dialog opened")
+    except NoAlertPresentException:
+        pass

@@ -16,6 +16,7 @@ pub mod keys;
 pub mod model;
 pub mod palette;
 pub mod picture;
+pub mod projects;
 pub mod shared;
 pub mod side;
 pub mod state;
@@ -74,6 +75,9 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                     <side::ProblemsPane ctx on_pick=refocus />
                 </div>
             </div>
+            <Show when=move || ctx.projects_open.get()>
+                <projects::ProjectsPane ctx />
+            </Show>
             <Show when=move || ctx.find_open.get()>
                 <find::FindPane ctx on_pick=refocus />
             </Show>
@@ -116,6 +120,9 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 on:click=move |_| { ctx.write_to_machine(); }>{move || t().write}</button>
             <shared::ShareButton ctx />
             <files::FileButtons ctx />
+            <button type="button" data-testid="projects-open" on:click=move |_| ctx.projects_open.update(|f| *f = !*f)>
+                {move || t().projects}
+            </button>
             <button type="button" data-testid="find-open" on:click=move |_| ctx.find_open.update(|f| *f = !*f)>
                 {move || t().find}
             </button>

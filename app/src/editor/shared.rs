@@ -130,7 +130,7 @@ pub fn SharedBanner(ctx: LadderCtx) -> impl IntoView {
             <div class="shared-banner" role="status" data-testid="shared-banner">
                 <span>{move || t().shared_note}</span>
                 <button type="button" data-testid="shared-keep" on:click=move |_| {
-                    ctx.keep_shared();
+                    ctx.keep_shared(use_context::<super::projects::Projects>());
                     clear_fragment();
                 }>{move || t().shared_keep}</button>
                 <button type="button" data-testid="shared-back" on:click=move |_| {

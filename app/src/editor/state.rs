@@ -106,6 +106,8 @@ pub struct LadderCtx {
     pub help: RwSignal<bool>,
     /// The find / replace / cross-reference pane is shown.
     pub find_open: RwSignal<bool>,
+    /// The projects pane is shown.
+    pub projects_open: RwSignal<bool>,
     /// The ladder's device comments.
     pub comments: RwSignal<BTreeMap<String, String>>,
     /// The program pane and loading.
@@ -122,12 +124,14 @@ pub struct LadderCtx {
     /// The shared project's settings, applied when it is kept; and
     /// whether showing it replaced the ladder (so going back undoes it).
     shared_with: StoredValue<(Vec<(String, String)>, bool)>,
+    /// The project open here (`None`: the machine's own ladder).
+    pub project: RwSignal<Option<u64>>,
 }
 
 impl LadderCtx {
     /// An editor for `machine` on `page`, restored from its autosave.
     pub fn restore(page: Ctx, machine: MachineId) -> LadderCtx {
-        let ladder = store::restore(page, machine);
+        let (project, ladder) = store::restore(page, machine);
         let ctx = LadderCtx {
             machine,
             page,
@@ -145,6 +149,7 @@ impl LadderCtx {
             message: RwSignal::new(None),
             help: RwSignal::new(false),
             find_open: RwSignal::new(false),
+            projects_open: RwSignal::new(false),
             comments: RwSignal::new(BTreeMap::new()),
             program: StoredValue::new(None),
             synced: StoredValue::new(None),
@@ -152,6 +157,7 @@ impl LadderCtx {
             clip: StoredValue::new(None),
             shared: RwSignal::new(false),
             shared_with: StoredValue::new((Vec::new(), false)),
+            project: RwSignal::new(project),
         };
         ctx.refresh(false);
         ctx
@@ -182,11 +188,30 @@ impl LadderCtx {
     /// "Keep it": the shared ladder becomes this machine's ladder and is
     /// saved; the ladder saved before is set aside under a key of its own
     /// (named in the notice) and is one undo away.
-    pub fn keep_shared(&self) {
+    pub fn keep_shared(&self, projects: Option<super::projects::Projects>) {
         if !self.shared.get_untracked() {
             return;
         }
-        let kept_as = store::set_aside(self.machine);
+        let texts = super::texts::texts(self.page.lang.get_untracked());
+        // It becomes a project of its own; the ladder before stays where
+        // it was saved, untouched.
+        let made = projects.and_then(|p| {
+            let name = format!(
+                "{} {}",
+                texts.shared_project,
+                js_sys::Date::new_0().to_iso_string()
+            );
+            p.create(&name, self.machine, self.ladder())
+                .map(|id| (id, name))
+        });
+        let kept_as = match made {
+            Some((id, name)) => {
+                self.project.set(Some(id));
+                store::remember_open(self.machine, Some(id));
+                Some(name)
+            }
+            None => store::set_aside(self.machine),
+        };
         self.shared.set(false);
         let (settings, _) = self.shared_with.get_value();
         let refused = self
@@ -195,7 +220,6 @@ impl LadderCtx {
             .map(|p| p.apply_settings.run(settings))
             .unwrap_or_default();
         self.refresh(true);
-        let texts = super::texts::texts(self.page.lang.get_untracked());
         let mut notice = match kept_as {
             Some(key) => format!("{} {key}", texts.shared_kept),
             None => String::new(),
@@ -206,6 +230,16 @@ impl LadderCtx {
         self.page
             .notice
             .set((!notice.trim().is_empty()).then_some(notice));
+    }
+
+    /// Opens `ladder` as project `project` here (the ladder before is one
+    /// undo away; it stays saved where it was).
+    pub fn open_project(&self, project: Option<u64>, ladder: Ladder) {
+        self.project.set(project);
+        store::remember_open(self.machine, project);
+        if self.ladder() != ladder {
+            self.apply(Edit::Replace { ladder });
+        }
     }
 
     /// "Back to my work": the ladder as it was before the link opened.
@@ -645,8 +679,9 @@ impl LadderCtx {
         // A shared project is not saved until it is kept.
         if edited && !self.shared.get_untracked() {
             self.follow(listing.as_ref());
+            let project = self.project.get_untracked();
             self.editor
-                .with_value(|e| store::save(self.page, self.machine, e.ladder()));
+                .with_value(|e| store::save(self.page, self.machine, project, e.ladder()));
         }
         if self.listing.with_untracked(|l| *l != listing) {
             self.listing.set(listing);

@@ -34,10 +34,41 @@ impl Checked for Saved {
     }
 }
 
-/// The ladder saved for `machine`, if any; a saved value that does not
-/// read (or is for another machine) is kept aside and reported.
-pub fn restore(page: Ctx, machine: MachineId) -> Option<Ladder> {
-    match storage::restore_from::<Saved>(&key(machine)) {
+/// Where the id of the project open in `machine`'s editor is kept.
+fn open_key(machine: MachineId) -> String {
+    format!("hashigo.open-project.{}", machine.name())
+}
+
+/// Where `machine`'s ladder is saved: the open project's key, or the
+/// machine's own.
+pub fn slot(machine: MachineId, project: Option<u64>) -> String {
+    project.map_or_else(|| key(machine), super::projects::key_of)
+}
+
+/// Remembers which project `machine`'s editor has open.
+pub fn remember_open(machine: MachineId, project: Option<u64>) {
+    match project {
+        Some(id) => storage::save_string(&open_key(machine), &id.to_string()),
+        None => storage::remove(&open_key(machine)),
+    }
+}
+
+/// The project open in `machine`'s editor when the page was left (if it
+/// is still there) and the ladder to edit: that project's, else the
+/// machine's own. A saved value that does not read (or is for another
+/// machine) is kept aside and reported.
+pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Ladder>) {
+    let open = storage::saved_string(&open_key(machine)).and_then(|s| s.parse::<u64>().ok());
+    if let Some(id) = open {
+        if let Some(ladder) = restore_from(page, machine, &super::projects::key_of(id)) {
+            return (Some(id), Some(ladder));
+        }
+    }
+    (None, restore_from(page, machine, &key(machine)))
+}
+
+fn restore_from(page: Ctx, machine: MachineId, key: &str) -> Option<Ladder> {
+    match storage::restore_from::<Saved>(key) {
         Restored::Saved(Saved(project)) if project.machine == machine => Some(project.ladder),
         Restored::Saved(_) => None,
         Restored::Corrupt { kept_as } => {
@@ -50,12 +81,13 @@ pub fn restore(page: Ctx, machine: MachineId) -> Option<Ladder> {
     }
 }
 
-/// Saves `ladder` for `machine`; a storage that refuses is reported.
-pub fn save(page: Ctx, machine: MachineId, ladder: &Ladder) {
-    let project = Project::new(machine, ladder.clone());
+/// Saves `ladder` for `machine` in `project` (or the machine's own
+/// slot); a storage that refuses is reported.
+pub fn save(page: Ctx, machine: MachineId, project: Option<u64>, ladder: &Ladder) {
+    let json = Project::new(machine, ladder.clone()).to_json();
     let ok = web_sys::window()
         .and_then(|w| w.local_storage().ok().flatten())
-        .is_some_and(|s| s.set_item(&key(machine), &project.to_json()).is_ok());
+        .is_some_and(|s| s.set_item(&slot(machine, project), &json).is_ok());
     if !ok {
         let texts = page.lang.get_untracked().texts();
         page.notice.set(Some(texts.storage_unavailable.to_string()));
