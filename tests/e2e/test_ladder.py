@@ -471,6 +471,8 @@ def test_files_save_open_and_pictures(driver, base_url, tmp_path):
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-kind") == "")
     el(driver, "open-file").send_keys(str(saved))
     wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    assert saved_ladder(driver, "minasec-u") == project["ladder"], "JSON out and in: the same project"
+    listing = steps(el(driver, "il-listing").text)
     # A bad file is refused at its line; nothing changes.
     bad = tmp_path / "bad.json"
     bad.write_text('{\n  "format": "hashigo-project",\n  "version": 99,\n  "machine": "minasec-u",\n  "ladder": {"rungs": []}\n}\n')
@@ -483,6 +485,9 @@ def test_files_save_open_and_pictures(driver, base_url, tmp_path):
     el(driver, "new-ladder").click()
     el(driver, "open-file").send_keys(str(xml))
     wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    assert steps(el(driver, "il-listing").text) == listing, "PLCopen out and in: the same program"
+    opened = saved_ladder(driver, "minasec-u")
+    assert [r.get("comment", "") for r in opened["rungs"]] == [r.get("comment", "") for r in project["ladder"]["rungs"]]
 
 
 def test_the_page_runs_under_a_csp_with_no_inline_script(driver, base_url):
