@@ -114,11 +114,30 @@ impl Workspaces {
         provide_context(self.avr);
         provide_context(self.ladders);
         provide_context(self.projects);
+        provide_context(*self);
+    }
+
+    /// Runs `f` on the machine of `kind`'s workspace.
+    pub fn with_plc(&self, kind: MachineKind, f: impl FnOnce(&dyn engine::plc::Plc)) {
+        match kind {
+            MachineKind::MinasecU => self.minasec.sim.with_value(|s| f(s.machine())),
+            MachineKind::Io86a => self.io86a.sim.with_value(|s| f(s.machine())),
+            MachineKind::ArduinoPlc => self.arduino.sim.with_value(|s| f(s.machine())),
+            MachineKind::AvrPlc => self.avr.sim.with_value(|s| f(s.machine())),
+        }
     }
 
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall
     /// time at `pace`, then its signals refreshed. The others rest.
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
+        self.advance(kind, pace, wall_ms, now_ms);
+        let ladder = self.ladders.of(kind);
+        if ladder.recording() {
+            self.with_plc(kind, |plc| ladder.observe(plc));
+        }
+    }
+
+    fn advance(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
         match kind {
             MachineKind::MinasecU => {
                 let w = self.minasec;

@@ -598,3 +598,70 @@ def test_text_from_a_link_is_shown_as_text(driver, base_url, tmp_path):
         raise AssertionError("a dialog opened")
     except NoAlertPresentException:
         pass
+
+
+def test_an_exercise_link_checks_the_students_ladder(driver, base_url, tmp_path):
+    exercise = tmp_path / "exercise.json"
+    exercise.write_text(json.dumps({
+        "format": "hashigo-project", "version": 1, "machine": "io86a",
+        "ladder": {"rungs": []},
+        "tests": [
+            {"name": "start holds", "events": "0.1s,X00,1\n0.2s,X00,0\n",
+             "expect": ["Y00 = 0 at 0.05s", "Y00 stays 1 from 0.2s to 0.5s"]},
+            {"name": "stop drops", "events": "0.1s,X00,1\n0.2s,X00,0\n0.6s,X01,1\n0.7s,X01,0\n",
+             "expect": ["Y00 stays 0 from 0.7s to 1s"]},
+        ],
+        "exercise": True,
+    }))
+    assert subprocess.run([str(HASHIGO), "test", "--program", str(exercise)]).returncode == 1
+    fragment = subprocess.run([str(HASHIGO), "share", "--program", str(exercise)], check=True,
+                              capture_output=True, text=True).stdout.strip()
+    assert fragment.startswith("2.")
+    open_fresh(driver, base_url)
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "tests"), message="the tests are shown")
+    assert el(driver, "exercise").is_selected()
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "fail")
+    assert el(driver, "test-case-1").get_attribute("data-result") in ("pass", "fail")
+    assert "Y00" in el(driver, "test-case-0").text
+    # The student draws the self-hold.
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F6, "X01")
+    place(driver, Keys.F7, "Y00")
+    keys(driver, Keys.ARROW_UP)
+    place(driver, Keys.F5, "Y00", shift=True)
+    el(driver, "run-tests").click()
+    wait(driver, lambda: [el(driver, f"test-case-{i}").get_attribute("data-result") for i in (0, 1)] == ["pass", "pass"])
+    assert el(driver, "tests-summary").text.startswith("2 / 2")
+    # hashigo test agrees on the saved project.
+    driver.execute_script(CAPTURE)
+    el(driver, "save-json").click()
+    saved = tmp_path / "answer.json"
+    saved.write_text(downloads(driver, 1)["io86a-ladder.json"])
+    out = subprocess.run([str(HASHIGO), "test", "--program", str(saved)], capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert out.stdout.endswith("2 passed, 0 failed\n")
+
+
+def test_cases_are_added_edited_and_saved_with_the_project(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "tests-open").click()
+    el(driver, "add-test").click()
+    case = el(driver, "test-case-0")
+    case.find_element(By.CSS_SELECTOR, '[data-testid="test-events"]').send_keys("0.1s,X00,1\n")
+    case.find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]').send_keys("Y00 = 1 at 0.2s\nY00 = 0 at 0.05s")
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "pass")
+    # A wrong expectation fails, with what was seen.
+    expect = el(driver, "test-case-0").find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]')
+    expect.send_keys("\nY00 = 0 at 0.3s")
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "fail")
+    assert "Y00 was 1 at 300ms" in el(driver, "test-case-0").text
+    raw = driver.execute_script("return localStorage.getItem('hashigo.ladder.minasec-u.v1')")
+    assert json.loads(raw)["tests"][0]["expect"][-1] == "Y00 = 0 at 0.3s"

@@ -21,6 +21,7 @@ pub mod shared;
 pub mod side;
 pub mod state;
 pub mod store;
+pub mod tests;
 pub mod texts;
 
 use engine::ladder::edit::Edit;
@@ -75,6 +76,9 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                     <side::ProblemsPane ctx on_pick=refocus />
                 </div>
             </div>
+            <Show when=move || ctx.tests_open.get()>
+                <tests::TestsPane ctx />
+            </Show>
             <Show when=move || ctx.projects_open.get()>
                 <projects::ProjectsPane ctx />
             </Show>
@@ -120,6 +124,9 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 on:click=move |_| { ctx.write_to_machine(); }>{move || t().write}</button>
             <shared::ShareButton ctx />
             <files::FileButtons ctx />
+            <button type="button" data-testid="tests-open" on:click=move |_| ctx.tests_open.update(|f| *f = !*f)>
+                {move || t().tests}
+            </button>
             <button type="button" data-testid="projects-open" on:click=move |_| ctx.projects_open.update(|f| *f = !*f)>
                 {move || t().projects}
             </button>

@@ -84,10 +84,11 @@ impl Projects {
         now.max(top + 1)
     }
 
-    /// Adds a project holding `ladder` for `machine`; returns its id.
-    pub fn create(&self, name: &str, machine: MachineId, ladder: Ladder) -> Option<u64> {
+    /// Adds `project` under `name`; returns its id.
+    pub fn create(&self, name: &str, project: &Project) -> Option<u64> {
         let id = self.next_id();
-        let json = Project::new(machine, ladder).to_json();
+        let machine = project.machine;
+        let json = project.to_json();
         if !write(&key_of(id), &json) {
             return None;
         }
@@ -130,7 +131,7 @@ impl Projects {
                     .map(|e| e.name.clone())
             })
             .unwrap_or_default();
-        self.create(&format!("{name} (copy)"), project.machine, project.ladder)
+        self.create(&format!("{name} (copy)"), &project)
             .ok_or_else(|| "storage refused the copy".to_string())
     }
 
@@ -187,9 +188,10 @@ fn remove(key: &str) {
 /// one undo away), and shows that machine.
 pub fn open(projects: Projects, ladders: Ladders, id: u64) -> Result<(), String> {
     let project = projects.load(id)?;
-    let ctx = ladders.of(project.machine);
-    ctx.open_project(Some(id), project.ladder);
-    ctx.page.machine.set(project.machine);
+    let machine = project.machine;
+    let ctx = ladders.of(machine);
+    ctx.open_project(Some(id), project);
+    ctx.page.machine.set(machine);
     Ok(())
 }
 
@@ -222,7 +224,7 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
                 <button type="button" data-testid="project-new" on:click=move |_| {
                     let n = name.get_untracked();
                     let n = if n.trim().is_empty() { t().project_untitled.to_string() } else { n };
-                    if let Some(id) = projects.create(&n, ctx.machine, Ladder::default()) {
+                    if let Some(id) = projects.create(&n, &Project::new(ctx.machine, Ladder::default())) {
                         fail(open(projects, ladders, id));
                         name.set(String::new());
                     }
@@ -230,8 +232,9 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
                 <button type="button" data-testid="project-save-as" on:click=move |_| {
                     let n = name.get_untracked();
                     let n = if n.trim().is_empty() { t().project_untitled.to_string() } else { n };
-                    if let Some(id) = projects.create(&n, ctx.machine, ctx.ladder()) {
-                        ctx.open_project(Some(id), ctx.ladder());
+                    let now = ctx.project_now();
+                    if let Some(id) = projects.create(&n, &now) {
+                        ctx.open_project(Some(id), now);
                         name.set(String::new());
                     }
                 }>{move || t().project_save_as}</button>

@@ -78,7 +78,7 @@ fn url_with(fragment: &str) -> String {
 
 /// The project as shared: the ladder, its comments, the machine's settings.
 pub fn project_of(ctx: LadderCtx) -> Project {
-    let mut project = Project::new(ctx.machine, ctx.ladder());
+    let mut project = ctx.project_now();
     project.settings = ctx.settings().into_iter().collect();
     project
 }

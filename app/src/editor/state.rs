@@ -11,6 +11,7 @@ use engine::ladder::compile::{compile_listing, Listing, Options};
 use engine::ladder::edit::{
     align_outputs, parse_entry, Clip, Cursor, Edit, Editor, EntryKind, COLUMNS,
 };
+use engine::cases::TestCase;
 use engine::ladder::{Element, Ladder, Pos};
 use engine::MachineId;
 use leptos::prelude::*;
@@ -123,15 +124,50 @@ pub struct LadderCtx {
     pub shared: RwSignal<bool>,
     /// The shared project's settings, applied when it is kept; and
     /// whether showing it replaced the ladder (so going back undoes it).
-    shared_with: StoredValue<(Vec<(String, String)>, bool)>,
+    shared_with: StoredValue<SharedWith>,
     /// The project open here (`None`: the machine's own ladder).
     pub project: RwSignal<Option<u64>>,
+    /// The project's test cases (docs/tests.md).
+    pub tests: RwSignal<Vec<TestCase>>,
+    /// The tests are an exercise: a link opens with them shown.
+    pub exercise: RwSignal<bool>,
+    /// The Tests pane is shown.
+    pub tests_open: RwSignal<bool>,
+    /// The last run's result of each case (by index), when run.
+    pub results: RwSignal<Vec<Option<CaseResult>>>,
+    /// Inputs being recorded into a new case, while recording.
+    recorder: StoredValue<Option<super::tests::Recorder>>,
+}
+
+/// What showing a shared project set aside: its settings (applied when
+/// kept), whether it replaced the ladder, and the cases it replaced.
+#[derive(Clone, Debug, Default)]
+struct SharedWith {
+    settings: Vec<(String, String)>,
+    replaced: bool,
+    own_tests: Vec<TestCase>,
+    own_exercise: bool,
+}
+
+/// How one case came out in the page.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CaseResult {
+    /// Every expectation held.
+    Pass,
+    /// The first expectation that did not, and what was seen.
+    Fail(String),
+    /// The case could not run (a bad line, a device the machine lacks).
+    Error(String),
 }
 
 impl LadderCtx {
     /// An editor for `machine` on `page`, restored from its autosave.
     pub fn restore(page: Ctx, machine: MachineId) -> LadderCtx {
-        let (project, ladder) = store::restore(page, machine);
+        let (project, saved) = store::restore(page, machine);
+        let (ladder, tests, exercise) = match saved {
+            Some(p) => (Some(p.ladder), p.tests, p.exercise),
+            None => (None, Vec::new(), false),
+        };
         let ctx = LadderCtx {
             machine,
             page,
@@ -156,8 +192,13 @@ impl LadderCtx {
             options: RwSignal::new(Options::default()),
             clip: StoredValue::new(None),
             shared: RwSignal::new(false),
-            shared_with: StoredValue::new((Vec::new(), false)),
+            shared_with: StoredValue::new(SharedWith::default()),
             project: RwSignal::new(project),
+            tests: RwSignal::new(tests),
+            exercise: RwSignal::new(exercise),
+            tests_open: RwSignal::new(exercise),
+            results: RwSignal::new(Vec::new()),
+            recorder: StoredValue::new(None),
         };
         ctx.refresh(false);
         ctx
@@ -177,12 +218,24 @@ impl LadderCtx {
             self.leave_shared();
         }
         self.shared.set(true);
+        let own_tests = self.tests.get_untracked();
+        let own_exercise = self.exercise.get_untracked();
+        self.tests.set(project.tests);
+        self.exercise.set(project.exercise);
+        self.results.set(Vec::new());
+        if project.exercise {
+            self.tests_open.set(true);
+        }
         let replaced = self.apply(Edit::Replace {
             ladder: project.ladder,
         });
         self.message.set(None);
-        self.shared_with
-            .set_value((project.settings.into_iter().collect(), replaced));
+        self.shared_with.set_value(SharedWith {
+            settings: project.settings.into_iter().collect(),
+            replaced,
+            own_tests,
+            own_exercise,
+        });
     }
 
     /// "Keep it": the shared ladder becomes this machine's ladder and is
@@ -201,7 +254,7 @@ impl LadderCtx {
                 texts.shared_project,
                 js_sys::Date::new_0().to_iso_string()
             );
-            p.create(&name, self.machine, self.ladder())
+            p.create(&name, &self.project_now())
                 .map(|id| (id, name))
         });
         let kept_as = match made {
@@ -213,7 +266,7 @@ impl LadderCtx {
             None => store::set_aside(self.machine),
         };
         self.shared.set(false);
-        let (settings, _) = self.shared_with.get_value();
+        let settings = self.shared_with.with_value(|w| w.settings.clone());
         let refused = self
             .program
             .get_value()
@@ -234,11 +287,18 @@ impl LadderCtx {
 
     /// Opens `ladder` as project `project` here (the ladder before is one
     /// undo away; it stays saved where it was).
-    pub fn open_project(&self, project: Option<u64>, ladder: Ladder) {
-        self.project.set(project);
-        store::remember_open(self.machine, project);
-        if self.ladder() != ladder {
-            self.apply(Edit::Replace { ladder });
+    pub fn open_project(&self, id: Option<u64>, project: engine::ladder::Project) {
+        self.project.set(id);
+        store::remember_open(self.machine, id);
+        self.tests.set(project.tests);
+        self.exercise.set(project.exercise);
+        self.results.set(Vec::new());
+        if self.ladder() != project.ladder {
+            self.apply(Edit::Replace {
+                ladder: project.ladder,
+            });
+        } else {
+            self.save();
         }
     }
 
@@ -247,8 +307,11 @@ impl LadderCtx {
         if !self.shared.get_untracked() {
             return;
         }
-        let (_, replaced) = self.shared_with.get_value();
-        if replaced {
+        let with = self.shared_with.get_value();
+        self.tests.set(with.own_tests);
+        self.exercise.set(with.own_exercise);
+        self.results.set(Vec::new());
+        if with.replaced {
             self.editor.update_value(|e| {
                 e.undo();
             });
@@ -679,13 +742,60 @@ impl LadderCtx {
         // A shared project is not saved until it is kept.
         if edited && !self.shared.get_untracked() {
             self.follow(listing.as_ref());
-            let project = self.project.get_untracked();
-            self.editor
-                .with_value(|e| store::save(self.page, self.machine, project, e.ladder()));
+            self.save();
         }
         if self.listing.with_untracked(|l| *l != listing) {
             self.listing.set(listing);
         }
+    }
+
+    /// The project as it stands: the ladder, its cases, the exercise flag.
+    pub fn project_now(&self) -> engine::ladder::Project {
+        let mut project = engine::ladder::Project::new(self.machine, self.ladder());
+        project.tests = self.tests.get_untracked();
+        project.exercise = self.exercise.get_untracked();
+        project
+    }
+
+    /// Autosaves the project (not while a shared one is shown).
+    pub fn save(&self) {
+        if !self.shared.get_untracked() {
+            store::save(self.page, self.project.get_untracked(), &self.project_now());
+        }
+    }
+
+    /// Starts recording the inputs the user changes into a new case.
+    pub fn start_recording(&self, plc: &dyn engine::plc::Plc) {
+        let rec = super::tests::Recorder::new(&self.ladder(), plc);
+        self.recorder.set_value(Some(rec));
+    }
+
+    /// Whether inputs are being recorded.
+    pub fn recording(&self) -> bool {
+        self.recorder.with_value(Option::is_some)
+    }
+
+    /// Each frame while recording: notes the inputs that changed.
+    pub fn observe(&self, plc: &dyn engine::plc::Plc) {
+        self.recorder.update_value(|r| {
+            if let Some(r) = r {
+                r.observe(plc);
+            }
+        });
+    }
+
+    /// Stops recording; the timeline becomes a new case, with what the
+    /// outputs show now as its expectations.
+    pub fn stop_recording(&self, plc: &dyn engine::plc::Plc) {
+        let Some(rec) = self.recorder.get_value() else {
+            return;
+        };
+        self.recorder.set_value(None);
+        let n = self.tests.with_untracked(Vec::len) + 1;
+        let case = rec.finish(plc, &format!("recorded {n}"));
+        self.tests.update(|t| t.push(case));
+        self.results.update(|r| r.push(None));
+        self.save();
     }
 
     /// The text pane takes the new listing while it still holds the last.

@@ -2,7 +2,7 @@
 //! machine, written on every edit and read back on reload. A saved value
 //! that does not read is kept aside and reported, never dropped.
 
-use engine::ladder::{Ladder, Project};
+use engine::ladder::Project;
 use engine::MachineId;
 use leptos::prelude::*;
 
@@ -57,7 +57,7 @@ pub fn remember_open(machine: MachineId, project: Option<u64>) {
 /// is still there) and the ladder to edit: that project's, else the
 /// machine's own. A saved value that does not read (or is for another
 /// machine) is kept aside and reported.
-pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Ladder>) {
+pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Project>) {
     let open = storage::saved_string(&open_key(machine)).and_then(|s| s.parse::<u64>().ok());
     if let Some(id) = open {
         if let Some(ladder) = restore_from(page, machine, &super::projects::key_of(id)) {
@@ -67,9 +67,9 @@ pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Ladder>) {
     (None, restore_from(page, machine, &key(machine)))
 }
 
-fn restore_from(page: Ctx, machine: MachineId, key: &str) -> Option<Ladder> {
+fn restore_from(page: Ctx, machine: MachineId, key: &str) -> Option<Project> {
     match storage::restore_from::<Saved>(key) {
-        Restored::Saved(Saved(project)) if project.machine == machine => Some(project.ladder),
+        Restored::Saved(Saved(project)) if project.machine == machine => Some(project),
         Restored::Saved(_) => None,
         Restored::Corrupt { kept_as } => {
             let texts = page.lang.get_untracked().texts();
@@ -81,10 +81,11 @@ fn restore_from(page: Ctx, machine: MachineId, key: &str) -> Option<Ladder> {
     }
 }
 
-/// Saves `ladder` for `machine` in `project` (or the machine's own
-/// slot); a storage that refuses is reported.
-pub fn save(page: Ctx, machine: MachineId, project: Option<u64>, ladder: &Ladder) {
-    let json = Project::new(machine, ladder.clone()).to_json();
+/// Saves `saved` (the ladder and its test cases) in `project` (or the
+/// machine's own slot); a storage that refuses is reported.
+pub fn save(page: Ctx, project: Option<u64>, saved: &Project) {
+    let machine = saved.machine;
+    let json = saved.to_json();
     let ok = web_sys::window()
         .and_then(|w| w.local_storage().ok().flatten())
         .is_some_and(|s| s.set_item(&slot(machine, project), &json).is_ok());

@@ -57,6 +57,19 @@ pub struct EditorTexts {
     pub project_undo_delete: &'static str,
     pub project_delete_open: &'static str,
     pub shared_project: &'static str,
+    pub tests: &'static str,
+    pub run_tests: &'static str,
+    pub add_test: &'static str,
+    pub record_start: &'static str,
+    pub record_stop: &'static str,
+    pub exercise: &'static str,
+    pub passed: &'static str,
+    pub delete_test: &'static str,
+    pub timeline: &'static str,
+    pub expectations: &'static str,
+    pub test_pass: &'static str,
+    pub test_fail: &'static str,
+    pub tests_need_compile: &'static str,
 }
 
 const EN: EditorTexts = EditorTexts {
@@ -113,6 +126,19 @@ const EN: EditorTexts = EditorTexts {
     project_undo_delete: "Undo delete",
     project_delete_open: "This project is open: open another before deleting it.",
     shared_project: "Shared",
+    tests: "Tests",
+    run_tests: "Run all tests",
+    add_test: "Add a case",
+    record_start: "Record inputs",
+    record_stop: "Stop recording",
+    exercise: "These tests are an exercise",
+    passed: "passed",
+    delete_test: "Delete",
+    timeline: "Input timeline (time,device,value)",
+    expectations: "Expectations, one a line",
+    test_pass: "pass",
+    test_fail: "fail",
+    tests_need_compile: "The ladder must compile before its tests can run: see the problems.",
 };
 
 const JA: EditorTexts = EditorTexts {
@@ -170,6 +196,19 @@ const JA: EditorTexts = EditorTexts {
     project_delete_open:
         "開いているプロジェクトは削除できません。別のものを開いてから削除してください。",
     shared_project: "共有",
+    tests: "テスト",
+    run_tests: "すべてのテストを実行",
+    add_test: "ケースを追加",
+    record_start: "入力を記録",
+    record_stop: "記録を終了",
+    exercise: "このテストを課題にする",
+    passed: "合格",
+    delete_test: "削除",
+    timeline: "入力タイムライン (時刻,デバイス,値)",
+    expectations: "期待値 (1行に1つ)",
+    test_pass: "合格",
+    test_fail: "不合格",
+    tests_need_compile: "テストを実行するにはラダーが変換できる必要があります。問題一覧を見てください。",
 };
 
 /// The editor's strings in `lang`.

@@ -1,0 +1,319 @@
+//! The Tests pane (issue #17, docs/tests.md): the project's cases, edited
+//! in place, run each on a fresh machine as fast as the engine goes, with
+//! pass / fail per case; a timeline recorded from the inputs the user
+//! changes while the machine runs; the exercise flag that makes a share
+//! link open with the tests shown.
+
+use engine::cases::{run_case, Outcome, TestCase};
+use engine::ladder::Ladder;
+use engine::plc::{new_plc, Command, Device, Plc};
+use engine::{MachineId, SimTime};
+use leptos::prelude::*;
+
+use super::state::{CaseResult, LadderCtx};
+use crate::workspaces::Workspaces;
+
+/// Runs `cases` on `machine`, each on a fresh machine with `settings`
+/// applied and `program` loaded.
+pub fn run_cases(
+    machine: MachineId,
+    settings: &[(String, String)],
+    program: &str,
+    cases: &[TestCase],
+) -> Vec<CaseResult> {
+    cases
+        .iter()
+        .map(|case| {
+            let mut plc = new_plc(machine);
+            for (name, value) in settings {
+                let setting = Command::Setting {
+                    name: name.clone(),
+                    value: value.clone(),
+                };
+                if let Err(e) = plc.apply(setting) {
+                    return CaseResult::Error(format!("{name}={value}: {e}"));
+                }
+            }
+            if let Err(e) = plc.load_text(program) {
+                return CaseResult::Error(e.to_string());
+            }
+            match run_case(plc.as_mut(), case) {
+                Ok(Outcome::Pass) => CaseResult::Pass,
+                Ok(Outcome::Fail {
+                    expectation,
+                    observed,
+                    ..
+                }) => CaseResult::Fail(format!("{expectation}: {observed}")),
+                Err(e) => CaseResult::Error(e.to_string()),
+            }
+        })
+        .collect()
+}
+
+/// Records the inputs a user changes while the machine runs: the devices
+/// the ladder's contacts read and no output writes, read each frame, each
+/// change timed at the frame the machine first shows it (after its input
+/// filter, where it has one).
+#[derive(Clone, Debug)]
+pub struct Recorder {
+    start: SimTime,
+    inputs: Vec<(String, Device, i64)>,
+    outputs: Vec<(String, Device)>,
+    events: Vec<(SimTime, String, i64)>,
+}
+
+impl Recorder {
+    /// Starts recording on `plc` for `ladder`'s devices; inputs already
+    /// on are the timeline's first events.
+    pub fn new(ladder: &Ladder, plc: &dyn Plc) -> Recorder {
+        let mut read = Vec::new();
+        let mut written = Vec::new();
+        for (_, e) in ladder.rungs.iter().flat_map(|r| r.elements()) {
+            if let Some(d) = e.read_device() {
+                read.push(d.to_string());
+            }
+            if let Some(d) = e.written_device() {
+                written.push(d.to_string());
+            }
+        }
+        read.sort();
+        read.dedup();
+        written.sort();
+        written.dedup();
+        let resolve = |name: &String| plc.device(name).ok().map(|d| (name.clone(), d));
+        let inputs: Vec<(String, Device, i64)> = read
+            .iter()
+            .filter(|d| !written.contains(d))
+            .filter_map(resolve)
+            .map(|(n, d)| (n, d, 0))
+            .collect();
+        let mut r = Recorder {
+            start: plc.now(),
+            inputs,
+            outputs: written.iter().filter_map(resolve).collect(),
+            events: Vec::new(),
+        };
+        r.observe(plc);
+        r
+    }
+
+    /// Notes every input whose value changed since the last look.
+    pub fn observe(&mut self, plc: &dyn Plc) {
+        let t = SimTime::from_nanos(plc.now().as_nanos().saturating_sub(self.start.as_nanos()));
+        for (name, device, last) in &mut self.inputs {
+            let value = plc.read(*device);
+            if value != *last {
+                *last = value;
+                self.events.push((t, name.clone(), value));
+            }
+        }
+    }
+
+    /// The recorded case: its timeline, and each output's value now as
+    /// an expectation at this moment.
+    pub fn finish(mut self, plc: &dyn Plc, name: &str) -> TestCase {
+        self.observe(plc);
+        let ms = |t: SimTime| t.as_nanos() / 1_000_000;
+        let now = ms(SimTime::from_nanos(
+            plc.now().as_nanos().saturating_sub(self.start.as_nanos()),
+        ));
+        TestCase {
+            name: name.to_string(),
+            events: self
+                .events
+                .iter()
+                .map(|(t, d, v)| format!("{}ms,{d},{v}\n", ms(*t)))
+                .collect(),
+            expect: self
+                .outputs
+                .iter()
+                .map(|(d, device)| format!("{d} = {} at {now}ms", plc.read(*device)))
+                .collect(),
+        }
+    }
+}
+
+/// Runs every case of `ctx`'s project and shows the results.
+pub fn run_all(ctx: LadderCtx) {
+    let Some(listing) = ctx.listing.get_untracked() else {
+        let t = super::texts::texts(ctx.page.lang.get_untracked());
+        ctx.message.set(Some(t.tests_need_compile.to_string()));
+        return;
+    };
+    let cases = ctx.tests.get_untracked();
+    let results = run_cases(ctx.machine, &ctx.settings(), &listing.text, &cases);
+    ctx.results.set(results.into_iter().map(Some).collect());
+}
+
+/// `[data-testid=tests]`.
+#[component]
+pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let workspaces = use_context::<Workspaces>();
+    let recording = RwSignal::new(ctx.recording());
+    let edit = move |i: usize, f: Box<dyn Fn(&mut TestCase)>| {
+        ctx.tests.update(|tests| {
+            if let Some(c) = tests.get_mut(i) {
+                f(c);
+            }
+        });
+        ctx.results.update(|r| {
+            if let Some(slot) = r.get_mut(i) {
+                *slot = None;
+            }
+        });
+        ctx.save();
+    };
+    let record = move |_| {
+        let Some(w) = workspaces else { return };
+        if ctx.recording() {
+            w.with_plc(ctx.machine, |plc| ctx.stop_recording(plc));
+        } else {
+            w.with_plc(ctx.machine, |plc| ctx.start_recording(plc));
+        }
+        recording.set(ctx.recording());
+    };
+    let cases = move || (0..ctx.tests.with(Vec::len)).collect::<Vec<_>>();
+    view! {
+        <section class="tests-pane" data-testid="tests">
+            <div class="find-row">
+                <button type="button" data-testid="run-tests" on:click=move |_| run_all(ctx)>{move || t().run_tests}</button>
+                <button type="button" data-testid="add-test" on:click=move |_| {
+                    let n = ctx.tests.with_untracked(Vec::len) + 1;
+                    ctx.tests.update(|v| v.push(TestCase { name: format!("case {n}"), ..TestCase::default() }));
+                    ctx.save();
+                }>{move || t().add_test}</button>
+                <button type="button" data-testid="record-test" aria-pressed=move || recording.get().to_string() on:click=record>
+                    {move || if recording.get() { t().record_stop } else { t().record_start }}
+                </button>
+                <label>
+                    <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.exercise.get()
+                        on:change=move |_| { ctx.exercise.update(|e| *e = !*e); ctx.save(); } />
+                    {move || t().exercise}
+                </label>
+                <span data-testid="tests-summary">{move || {
+                    ctx.results.with(|r| {
+                        let pass = r.iter().filter(|x| **x == Some(CaseResult::Pass)).count();
+                        let run = r.iter().filter(|x| x.is_some()).count();
+                        if run == 0 { String::new() } else { format!("{pass} / {run} {}", t().passed) }
+                    })
+                }}</span>
+            </div>
+            <For
+                each=cases
+                key=|i| *i
+                children=move |i| {
+                    let case = move || ctx.tests.with(|v| v.get(i).cloned().unwrap_or_default());
+                    let result = move || ctx.results.with(|r| r.get(i).cloned().flatten());
+                    view! {
+                        <div
+                            class="test-case"
+                            data-testid=format!("test-case-{i}")
+                            data-result=move || match result() {
+                                Some(CaseResult::Pass) => "pass",
+                                Some(CaseResult::Fail(_)) => "fail",
+                                Some(CaseResult::Error(_)) => "error",
+                                None => "",
+                            }
+                        >
+                            <input class="test-name" data-testid="test-name" prop:value=move || case().name
+                                on:change=move |e| { let v = event_target_value(&e); edit(i, Box::new(move |c| c.name = v.clone())); } />
+                            <button type="button" data-testid="test-delete" on:click=move |_| {
+                                ctx.tests.update(|v| { if i < v.len() { v.remove(i); } });
+                                ctx.results.update(|r| { if i < r.len() { r.remove(i); } });
+                                ctx.save();
+                            }>{move || t().delete_test}</button>
+                            <div class="test-fields">
+                                <label>{move || t().timeline}
+                                    <textarea data-testid="test-events" spellcheck="false" prop:value=move || case().events
+                                        on:change=move |e| { let v = event_target_value(&e); edit(i, Box::new(move |c| c.events = v.clone())); } />
+                                </label>
+                                <label>{move || t().expectations}
+                                    <textarea data-testid="test-expect" spellcheck="false" prop:value=move || case().expect.join("\n")
+                                        on:change=move |e| {
+                                            let v = event_target_value(&e);
+                                            edit(i, Box::new(move |c| c.expect = v.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect()));
+                                        } />
+                                </label>
+                            </div>
+                            <div class="test-result" data-testid="test-result">{move || match result() {
+                                Some(CaseResult::Pass) => t().test_pass.to_string(),
+                                Some(CaseResult::Fail(why)) => format!("{}: {why}", t().test_fail),
+                                Some(CaseResult::Error(why)) => why,
+                                None => String::new(),
+                            }}</div>
+                        </div>
+                    }
+                }
+            />
+        </section>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use engine::events::InputValue;
+    use engine::ladder::compile::{compile, Options};
+    use engine::ladder::{Element, Rung};
+
+    fn self_hold() -> Ladder {
+        Ladder {
+            rungs: vec![Rung {
+                cells: vec![
+                    vec![
+                        Some(Element::no("X00")),
+                        Some(Element::nc("X01")),
+                        Some(Element::coil("Y00")),
+                    ],
+                    vec![Some(Element::no("Y00"))],
+                ],
+                links: vec![engine::ladder::Link { row: 0, col: 1 }],
+                ..Rung::default()
+            }],
+            ..Ladder::default()
+        }
+    }
+
+    #[test]
+    fn a_recorded_timeline_replays_to_the_same_outputs() {
+        let ladder = self_hold();
+        let program = compile(&ladder, MachineId::Io86a, Options::default()).expect("compiles");
+        let mut plc = new_plc(MachineId::Io86a);
+        plc.load_text(&program).expect("loads");
+        plc.run_until(SimTime::from_millis(100));
+        let mut rec = Recorder::new(&ladder, plc.as_ref());
+        let press = |plc: &mut Box<dyn Plc>, name: &str, on: bool| {
+            let d = plc.device(name).expect("device");
+            plc.apply(Command::SetInput(d, InputValue::Int(i64::from(on))))
+                .expect("input");
+        };
+        for (at, name, on) in [(300, "X00", true), (450, "X00", false), (900, "X01", true), (1000, "X01", false)] {
+            plc.run_until(SimTime::from_millis(100 + at));
+            press(&mut plc, name, on);
+            // A few frames later: the IO86A filters its inputs for ~20 ms.
+            plc.run_until(SimTime::from_millis(150 + at));
+            rec.observe(plc.as_ref());
+        }
+        plc.run_until(SimTime::from_millis(1500));
+        let case = rec.finish(plc.as_ref(), "recorded");
+        assert_eq!(
+            case.events,
+            "350ms,X00,1\n500ms,X00,0\n950ms,X01,1\n1050ms,X01,0\n"
+        );
+        assert_eq!(case.expect, vec!["Y00 = 0 at 1400ms".to_string()]);
+        let results = run_cases(MachineId::Io86a, &[], &program, &[case.clone()]);
+        assert_eq!(results, vec![CaseResult::Pass]);
+        // Replayed, the hold is there between the presses, and gone after.
+        let mut held = case.clone();
+        held.expect = vec!["Y00 stays 1 from 550ms to 950ms".into()];
+        let mut wrong = case;
+        wrong.expect = vec!["Y00 = 1 at 1200ms".into()];
+        let results = run_cases(MachineId::Io86a, &[], &program, &[held, wrong]);
+        assert_eq!(results[0], CaseResult::Pass);
+        assert_eq!(
+            results[1],
+            CaseResult::Fail("Y00 = 1 at 1200ms: Y00 was 0 at 1200ms".into())
+        );
+    }
+}
