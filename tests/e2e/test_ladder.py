@@ -1,6 +1,7 @@
 """End-to-end: the ladder editor (issue #13) in headless Chromium."""
 
 import json
+import re
 import subprocess
 
 from selenium.webdriver.common.action_chains import ActionChains
@@ -665,3 +666,25 @@ def test_cases_are_added_edited_and_saved_with_the_project(driver, base_url):
     assert "Y00 was 1 at 300ms" in el(driver, "test-case-0").text
     raw = driver.execute_script("return localStorage.getItem('hashigo.ladder.minasec-u.v1')")
     assert json.loads(raw)["tests"][0]["expect"][-1] == "Y00 = 0 at 0.3s"
+
+
+def test_a_timeline_is_recorded_from_what_the_user_clicks(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "ladder-write").click()
+    el(driver, "mode-run").click()
+    el(driver, "tests-open").click()
+    el(driver, "record-test").click()
+    assert el(driver, "record-test").get_attribute("aria-pressed") == "true"
+    el(driver, "input-X00").click()
+    wait(driver, lambda: on(driver, "lamp-Y00"))
+    el(driver, "record-test").click()
+    case = wait(driver, lambda: el(driver, "test-case-0"))
+    events = case.find_element(By.CSS_SELECTOR, '[data-testid="test-events"]').get_attribute("value")
+    assert re.fullmatch(r"\d+ms,X00,1\n", events), events
+    expect = case.find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]').get_attribute("value")
+    assert re.fullmatch(r"Y00 = 1 at \d+ms", expect), expect
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "pass")

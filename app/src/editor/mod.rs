@@ -6,8 +6,11 @@
 //! - [`model`], [`keys`]: what the cells show and what keys do (plain
 //!   Rust, tested natively);
 //! - [`grid`], [`entry`], [`palette`], [`side`], [`find`]: the views;
-//! - [`store`]: the autosave.
+//! - [`store`], [`projects`]: the autosave and named projects;
+//! - [`shared`], [`files`], [`picture`]: share links, files, SVG / PNG;
+//! - [`cases`]: the Tests pane.
 
+pub mod cases;
 pub mod entry;
 pub mod files;
 pub mod find;
@@ -21,7 +24,6 @@ pub mod shared;
 pub mod side;
 pub mod state;
 pub mod store;
-pub mod tests;
 pub mod texts;
 
 use engine::ladder::edit::Edit;
@@ -77,7 +79,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                 </div>
             </div>
             <Show when=move || ctx.tests_open.get()>
-                <tests::TestsPane ctx />
+                <cases::TestsPane ctx />
             </Show>
             <Show when=move || ctx.projects_open.get()>
                 <projects::ProjectsPane ctx />

@@ -7,11 +7,11 @@
 
 use std::collections::BTreeMap;
 
+use engine::cases::TestCase;
 use engine::ladder::compile::{compile_listing, Listing, Options};
 use engine::ladder::edit::{
     align_outputs, parse_entry, Clip, Cursor, Edit, Editor, EntryKind, COLUMNS,
 };
-use engine::cases::TestCase;
 use engine::ladder::{Element, Ladder, Pos};
 use engine::MachineId;
 use leptos::prelude::*;
@@ -136,7 +136,7 @@ pub struct LadderCtx {
     /// The last run's result of each case (by index), when run.
     pub results: RwSignal<Vec<Option<CaseResult>>>,
     /// Inputs being recorded into a new case, while recording.
-    recorder: StoredValue<Option<super::tests::Recorder>>,
+    recorder: StoredValue<Option<super::cases::Recorder>>,
 }
 
 /// What showing a shared project set aside: its settings (applied when
@@ -254,8 +254,7 @@ impl LadderCtx {
                 texts.shared_project,
                 js_sys::Date::new_0().to_iso_string()
             );
-            p.create(&name, &self.project_now())
-                .map(|id| (id, name))
+            p.create(&name, &self.project_now()).map(|id| (id, name))
         });
         let kept_as = match made {
             Some((id, name)) => {
@@ -766,7 +765,7 @@ impl LadderCtx {
 
     /// Starts recording the inputs the user changes into a new case.
     pub fn start_recording(&self, plc: &dyn engine::plc::Plc) {
-        let rec = super::tests::Recorder::new(&self.ladder(), plc);
+        let rec = super::cases::Recorder::new(&self.ladder(), plc);
         self.recorder.set_value(Some(rec));
     }
 

@@ -208,7 +208,8 @@ const JA: EditorTexts = EditorTexts {
     expectations: "期待値 (1行に1つ)",
     test_pass: "合格",
     test_fail: "不合格",
-    tests_need_compile: "テストを実行するにはラダーが変換できる必要があります。問題一覧を見てください。",
+    tests_need_compile:
+        "テストを実行するにはラダーが変換できる必要があります。問題一覧を見てください。",
 };
 
 /// The editor's strings in `lang`.

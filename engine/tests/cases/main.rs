@@ -203,8 +203,16 @@ fn cases_and_the_exercise_flag_travel_in_share_links() {
 /// The other seeds' examples with their cases, and the case a mutation
 /// (the first normally open contact made normally closed) must fail.
 const EXAMPLES: &[(&str, &str, &str)] = &[
-    ("io86a/timer.json", include_str!("../../programs/io86a/timer.json"), "X00 lights Y00"),
-    ("io86a/orb.json", include_str!("../../programs/io86a/orb.json"), "X00 and X01"),
+    (
+        "io86a/timer.json",
+        include_str!("../../programs/io86a/timer.json"),
+        "X00 lights Y00",
+    ),
+    (
+        "io86a/orb.json",
+        include_str!("../../programs/io86a/orb.json"),
+        "X00 and X01",
+    ),
     (
         "io86a/push-on-off.json",
         include_str!("../../programs/io86a/push-on-off.json"),
@@ -234,7 +242,12 @@ fn the_other_seeds_examples_pass_their_cases_and_a_mutation_fails_the_right_one(
         let path = tmp.file("example.json", json);
         let out = hashigo(&["test", "--program", &path], "");
         let stdout = text(&out.stdout);
-        assert_eq!(out.status.code(), Some(0), "{name}: {stdout}{}", text(&out.stderr));
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{name}: {stdout}{}",
+            text(&out.stderr)
+        );
         assert!(stdout.ends_with(" 0 failed\n"), "{name}: {stdout}");
 
         let at = json.find("\"kind\": \"no\"").expect("a NO contact");
@@ -245,6 +258,9 @@ fn the_other_seeds_examples_pass_their_cases_and_a_mutation_fails_the_right_one(
         assert_eq!(out.status.code(), Some(1), "{name}: {stdout}");
         let failed: Vec<&str> = stdout.lines().filter(|l| l.starts_with("fail ")).collect();
         assert_eq!(failed.len(), 1, "{name}: {stdout}");
-        assert!(failed[0].starts_with(&format!("fail {breaks}: ")), "{name}: {stdout}");
+        assert!(
+            failed[0].starts_with(&format!("fail {breaks}: ")),
+            "{name}: {stdout}"
+        );
     }
 }

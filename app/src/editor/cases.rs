@@ -288,7 +288,12 @@ mod tests {
             plc.apply(Command::SetInput(d, InputValue::Int(i64::from(on))))
                 .expect("input");
         };
-        for (at, name, on) in [(300, "X00", true), (450, "X00", false), (900, "X01", true), (1000, "X01", false)] {
+        for (at, name, on) in [
+            (300, "X00", true),
+            (450, "X00", false),
+            (900, "X01", true),
+            (1000, "X01", false),
+        ] {
             plc.run_until(SimTime::from_millis(100 + at));
             press(&mut plc, name, on);
             // A few frames later: the IO86A filters its inputs for ~20 ms.
@@ -302,7 +307,7 @@ mod tests {
             "350ms,X00,1\n500ms,X00,0\n950ms,X01,1\n1050ms,X01,0\n"
         );
         assert_eq!(case.expect, vec!["Y00 = 0 at 1400ms".to_string()]);
-        let results = run_cases(MachineId::Io86a, &[], &program, &[case.clone()]);
+        let results = run_cases(MachineId::Io86a, &[], &program, std::slice::from_ref(&case));
         assert_eq!(results, vec![CaseResult::Pass]);
         // Replayed, the hold is there between the presses, and gone after.
         let mut held = case.clone();
