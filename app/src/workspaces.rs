@@ -117,6 +117,31 @@ impl Workspaces {
         provide_context(*self);
     }
 
+    /// Operates the machine of `kind`'s workspace, then shows the result
+    /// in its panel and on its ladder at once (even paused).
+    pub fn operate(&self, kind: MachineKind, f: impl FnOnce(&mut dyn engine::plc::Plc)) {
+        match kind {
+            MachineKind::MinasecU => {
+                self.minasec.sim.update_value(|s| f(s.machine_mut()));
+                self.minasec.refresh();
+            }
+            MachineKind::Io86a => {
+                self.io86a.sim.update_value(|s| f(s.machine_mut()));
+                self.io86a.refresh();
+            }
+            MachineKind::ArduinoPlc => {
+                self.arduino.sim.update_value(|s| f(s.machine_mut()));
+                self.arduino.refresh();
+            }
+            MachineKind::AvrPlc => {
+                self.avr.sim.update_value(|s| f(s.machine_mut()));
+                self.avr.refresh();
+            }
+        }
+        let ladder = self.ladders.of(kind);
+        self.with_plc(kind, |plc| ladder.show_live(plc));
+    }
+
     /// Runs `f` on the machine of `kind`'s workspace.
     pub fn with_plc(&self, kind: MachineKind, f: impl FnOnce(&dyn engine::plc::Plc)) {
         match kind {
@@ -132,9 +157,12 @@ impl Workspaces {
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
         self.advance(kind, pace, wall_ms, now_ms);
         let ladder = self.ladders.of(kind);
-        if ladder.recording() {
-            self.with_plc(kind, |plc| ladder.observe(plc));
-        }
+        self.with_plc(kind, |plc| {
+            if ladder.recording() {
+                ladder.observe(plc);
+            }
+            ladder.show_live(plc);
+        });
     }
 
     fn advance(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {

@@ -2,6 +2,7 @@
 
 import json
 import re
+import time
 import subprocess
 
 from selenium.webdriver.common.action_chains import ActionChains
@@ -688,3 +689,38 @@ def test_a_timeline_is_recorded_from_what_the_user_clicks(driver, base_url):
     assert re.fullmatch(r"Y00 = 1 at \d+ms", expect), expect
     el(driver, "run-tests").click()
     wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "pass")
+
+
+def scans(driver):
+    return int(re.search(r"· (\d+) scans", el(driver, "sim-time").text).group(1))
+
+
+def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    Select(el(driver, "speed")).select_by_value("max")
+    el(driver, "run").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0", message="live states")
+    assert el(driver, "cell-0-0-1").get_attribute("data-on") == "0"  # X01: off
+    assert el(driver, "cell-0-0-9").get_attribute("data-on") == "0"  # Y00: off
+    assert el(driver, "cell-0-0-4").get_attribute("data-on") is None, "a wire shows no device"
+    el(driver, "watch-input").send_keys("C0", Keys.ENTER)
+    assert el(driver, "watch-C0")
+    el(driver, "input-X00").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "1")
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="Y00 on")
+    assert "on" in el(driver, "cell-0-1-0").get_attribute("class"), "the Y00 contact shows Y00 on"
+    el(driver, "input-X00").click()
+    wait(driver, lambda: "(" in el(driver, "watch-C0").text and not el(driver, "watch-C0").text.endswith("(0)"),
+         timeout=30, message="the count shows in the watch table")
+    # Step one scan at a time, paused.
+    el(driver, "step-scan").click()
+    before = scans(driver)
+    el(driver, "step-scan").click()
+    wait(driver, lambda: scans(driver) == before + 1)
+    time.sleep(0.3)
+    assert scans(driver) == before + 1, "paused after a step"
+    el(driver, "step-instr").click()
+    wait(driver, lambda: el(driver, "step-at").text.startswith("step "))
+    assert "step-clock" in [b.get_attribute("data-testid") for b in driver.find_elements(By.CSS_SELECTOR, ".run-bar button")]

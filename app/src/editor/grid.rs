@@ -163,6 +163,7 @@ fn RungRows(
     let (n1, n2, n3) = (number.clone(), number.clone(), number.clone());
     let first = r.first_step.clone();
     let first2 = r.first_step.clone();
+    let on = r.on.clone();
     let (d1, d2, d3) = (data.clone(), data.clone(), data.clone());
     view! {
         <div class="rung" role="rowgroup" data-testid=move || format!("rung-{}", n1.get())
@@ -180,6 +181,7 @@ fn RungRows(
                     key=|row| *row
                     children=move |row| {
                         let selected = selected.clone();
+                        let on = on.clone();
                         let data = d3.clone();
                         let number = n3.clone();
                         let cells = move || data.with(|d: &RungData| {
@@ -192,7 +194,7 @@ fn RungRows(
                                     key=|c: &CellData| c.clone()
                                     children=move |c| {
                                         let selected = selected.clone();
-                                        view! { <Cell ctx c number=number.clone() selected block grid /> }
+                                        view! { <Cell ctx c number=number.clone() on=on.clone() selected block grid /> }
                                     }
                                 />
                             </div>
@@ -214,6 +216,7 @@ fn Cell(
     ctx: LadderCtx,
     c: CellData,
     number: ArcRwSignal<usize>,
+    on: ArcRwSignal<Vec<Option<bool>>>,
     selected: Selector<Cursor>,
     block: Memo<Option<(Cursor, Cursor)>>,
     grid: NodeRef<leptos::html::Div>,
@@ -278,6 +281,12 @@ fn Cell(
         if c.error.is_some() { " has-error" } else { "" },
     );
     let device = (!c.device.is_empty()).then(|| c.device.clone());
+    // The cell's place in its rung's cells (rows are drawn full width).
+    let index = c.row * c.cols + c.col;
+    let live = move || {
+        on.with(|v| v.get(index).copied().flatten())
+            .map(|b| if b { "1" } else { "0" })
+    };
     let focus = move || {
         if let Some(g) = grid.get() {
             let _ = g.focus();
@@ -291,6 +300,8 @@ fn Cell(
             data-testid=testid
             data-kind=c.kind
             data-device=device
+            data-on=live.clone()
+            class:on=move || live() == Some("1")
             data-error=c.error.clone()
             title=c.error.clone()
             aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }

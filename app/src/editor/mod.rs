@@ -16,6 +16,7 @@ pub mod files;
 pub mod find;
 pub mod grid;
 pub mod keys;
+pub mod live;
 pub mod model;
 pub mod palette;
 pub mod picture;
@@ -65,6 +66,9 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
         <section class="ladder-editor" data-machine=ctx.machine.name()>
             <shared::SharedBanner ctx />
             <Toolbar ctx refocus />
+            <div class="ladder-toolbar run-toolbar">
+                <live::RunBar ctx />
+            </div>
             <CommentBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
             <div class="edit-message" role="alert" data-testid="edit-message">
@@ -76,6 +80,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                 <div class="ladder-side">
                     <side::ListingPane ctx on_pick=refocus />
                     <side::ProblemsPane ctx on_pick=refocus />
+                    <live::WatchTable ctx />
                 </div>
             </div>
             <Show when=move || ctx.tests_open.get()>

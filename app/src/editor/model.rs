@@ -16,6 +16,9 @@ pub struct CellData {
     pub row: usize,
     /// Column (0-based).
     pub col: usize,
+    /// Columns in its rung (the cell is `row * cols + col` in its rung's
+    /// cells).
+    pub cols: usize,
     /// The `data-kind` hook: `no`, `nc`, `rise`, `fall`, `coil`,
     /// `coil-not`, `set`, `reset`, `box`, `hwire`; empty for an empty cell.
     pub kind: &'static str,
@@ -83,6 +86,7 @@ pub fn rung_data(
             };
             cell.row = row;
             cell.col = col;
+            cell.cols = cols;
             cell.comment = comments.get(&cell.device).cloned().unwrap_or_default();
             cell.link_down = rung.links.iter().any(|l| l.row == row && l.col == col);
             cell.link_up = row > 0 && rung.links.iter().any(|l| l.row + 1 == row && l.col == col);

@@ -32,6 +32,9 @@ pub struct RungView {
     pub first_step: ArcRwSignal<Option<usize>>,
     /// What it shows.
     pub data: ArcRwSignal<RungData>,
+    /// Each cell's device state on the running machine (by the cell's
+    /// place in `data.cells`; `None` where the cell shows no device).
+    pub on: ArcRwSignal<Vec<Option<bool>>>,
 }
 
 /// One problem of the ladder, where it is.
@@ -137,6 +140,14 @@ pub struct LadderCtx {
     pub results: RwSignal<Vec<Option<CaseResult>>>,
     /// Inputs being recorded into a new case, while recording.
     recorder: StoredValue<Option<super::cases::Recorder>>,
+    /// Device handles on the machine, by name (cleared when the ladder or
+    /// the program changes).
+    handles: StoredValue<std::collections::HashMap<String, Option<engine::plc::Device>>>,
+    /// The watch table's devices and what they show.
+    pub watch: RwSignal<Vec<String>>,
+    pub watch_values: RwSignal<Vec<String>>,
+    /// The step the last single step ran, and its rung.
+    pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
 }
 
 /// What showing a shared project set aside: its settings (applied when
@@ -199,6 +210,10 @@ impl LadderCtx {
             tests_open: RwSignal::new(exercise),
             results: RwSignal::new(Vec::new()),
             recorder: StoredValue::new(None),
+            handles: StoredValue::new(std::collections::HashMap::new()),
+            watch: RwSignal::new(Vec::new()),
+            watch_values: RwSignal::new(Vec::new()),
+            stepped: RwSignal::new(None),
         };
         ctx.refresh(false);
         ctx
@@ -693,6 +708,7 @@ impl LadderCtx {
         program.text.set(listing.text.clone());
         self.synced.set_value(Some(listing.text));
         program.load.run(());
+        self.forget_handles();
         true
     }
 
@@ -797,6 +813,65 @@ impl LadderCtx {
         self.save();
     }
 
+    /// The device `name` on `plc`, resolved once.
+    fn handle(&self, plc: &dyn engine::plc::Plc, name: &str) -> Option<engine::plc::Device> {
+        if let Some(h) = self.handles.with_value(|m| m.get(name).copied()) {
+            return h;
+        }
+        let h = plc.device(name).ok();
+        self.handles.update_value(|m| {
+            m.insert(name.to_string(), h);
+        });
+        h
+    }
+
+    /// Each frame: every contact's and coil's device state as the
+    /// machine's last scan left it (`data-on`), and the watch table. Only
+    /// the rungs whose states changed are touched.
+    pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
+        let running = plc.scans() > 0;
+        for view in self.rungs.get_untracked() {
+            let states: Vec<Option<bool>> = view.data.with_untracked(|d| {
+                d.cells
+                    .iter()
+                    .map(|c| {
+                        let shows =
+                            running && !c.device.is_empty() && c.kind != "box" && c.kind != "hwire";
+                        if !shows {
+                            return None;
+                        }
+                        self.handle(plc, &c.device).map(|h| plc.read(h) != 0)
+                    })
+                    .collect()
+            });
+            if view.on.with_untracked(|old| *old != states) {
+                view.on.set(states);
+            }
+        }
+        let values: Vec<String> = self.watch.with_untracked(|w| {
+            w.iter()
+                .map(|name| {
+                    let value = self.handle(plc, name).map(|h| plc.read(h));
+                    let current = self.handle(plc, &format!("{name}.v")).map(|h| plc.read(h));
+                    match (value, current) {
+                        (Some(v), Some(c)) => format!("{v} ({c})"),
+                        (Some(v), None) => v.to_string(),
+                        (None, Some(c)) => c.to_string(),
+                        (None, None) => "?".to_string(),
+                    }
+                })
+                .collect()
+        });
+        if self.watch_values.with_untracked(|old| *old != values) {
+            self.watch_values.set(values);
+        }
+    }
+
+    /// Forgets resolved device handles (a new program was loaded).
+    pub fn forget_handles(&self) {
+        self.handles.update_value(std::collections::HashMap::clear);
+    }
+
     /// The text pane takes the new listing while it still holds the last.
     fn follow(&self, listing: Option<&Listing>) {
         let (Some(program), Some(listing)) = (self.program.get_value(), listing) else {
@@ -862,6 +937,7 @@ impl LadderCtx {
                         number: ArcRwSignal::new(number),
                         first_step: ArcRwSignal::new(first),
                         data: ArcRwSignal::new(d),
+                        on: ArcRwSignal::new(Vec::new()),
                     }
                 }
             };

@@ -70,6 +70,11 @@ pub struct EditorTexts {
     pub test_pass: &'static str,
     pub test_fail: &'static str,
     pub tests_need_compile: &'static str,
+    pub run: &'static str,
+    pub step_scan: &'static str,
+    pub step_instr: &'static str,
+    pub step_clock: &'static str,
+    pub watch: &'static str,
 }
 
 const EN: EditorTexts = EditorTexts {
@@ -139,6 +144,11 @@ const EN: EditorTexts = EditorTexts {
     test_pass: "pass",
     test_fail: "fail",
     tests_need_compile: "The ladder must compile before its tests can run: see the problems.",
+    run: "▶ Run",
+    step_scan: "Step scan",
+    step_instr: "Step instruction",
+    step_clock: "Step clock",
+    watch: "Watch",
 };
 
 const JA: EditorTexts = EditorTexts {
@@ -210,6 +220,11 @@ const JA: EditorTexts = EditorTexts {
     test_fail: "不合格",
     tests_need_compile:
         "テストを実行するにはラダーが変換できる必要があります。問題一覧を見てください。",
+    run: "▶ 実行",
+    step_scan: "1スキャン",
+    step_instr: "1命令",
+    step_clock: "1クロック",
+    watch: "モニタ",
 };
 
 /// The editor's strings in `lang`.

@@ -1,0 +1,121 @@
+//! Running the drawn ladder: Run writes it to the machine and starts it;
+//! Step scan, Step instruction and (MINASEC-U) Step clock advance it by
+//! hand, paused; the watch table shows chosen devices live. Contacts and
+//! coils show their device's state on the ladder (`data-on`, each frame,
+//! from the machine's last scan). Power flow along the rungs is issue #14.
+
+use engine::ladder::edit::device_names;
+use engine::plc::Command;
+use engine::MachineId;
+use leptos::prelude::*;
+
+use super::LadderCtx;
+use crate::workspaces::Workspaces;
+
+/// The run and step buttons.
+#[component]
+pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let workspaces = use_context::<Workspaces>();
+    let kind = ctx.machine;
+    let operate = move |f: &dyn Fn(&mut dyn engine::plc::Plc)| {
+        if let Some(w) = workspaces {
+            w.operate(kind, f);
+        }
+    };
+    let run = move |_| {
+        if !ctx.write_to_machine() {
+            ctx.message.set(Some(t().tests_need_compile.to_string()));
+            return;
+        }
+        operate(&|plc| {
+            let _ = plc.apply(Command::Run(true));
+        });
+        ctx.page.paused.set(false);
+    };
+    let step = move |which: u8| {
+        ctx.page.paused.set(true);
+        let stepped = std::cell::Cell::new(None);
+        operate(&|plc| match which {
+            0 => plc.step_scan(),
+            1 => stepped.set(plc.step_instruction()),
+            _ => {
+                plc.step_clock();
+            }
+        });
+        if which == 1 {
+            let rung = stepped.get().and_then(|s| {
+                ctx.listing
+                    .with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s)))
+            });
+            ctx.stepped.set(stepped.get().map(|s| (s, rung)));
+        }
+    };
+    view! {
+        <span class="run-bar">
+            <button type="button" data-testid="run" on:click=run>{move || t().run}</button>
+            <button type="button" data-testid="step-scan" on:click=move |_| step(0)>{move || t().step_scan}</button>
+            <button type="button" data-testid="step-instr" on:click=move |_| step(1)>{move || t().step_instr}</button>
+            {(kind == MachineId::MinasecU).then(|| view! {
+                <button type="button" data-testid="step-clock" on:click=move |_| step(2)>{move || t().step_clock}</button>
+            })}
+            <span data-testid="step-at">{move || ctx.stepped.get().map(|(s, rung)| match rung {
+                Some(r) => format!("{} {s} · {} {}", t().step, t().rung, r + 1),
+                None => format!("{} {s}", t().step),
+            })}</span>
+        </span>
+    }
+}
+
+/// `[data-testid=watch]`: devices by name, with their live values (a
+/// timer's or counter's current value in brackets).
+#[component]
+pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let name = RwSignal::new(String::new());
+    let names = device_names(ctx.machine);
+    let add = move || {
+        let n = name.get_untracked().trim().to_string();
+        if n.is_empty() {
+            return;
+        }
+        if ctx.watch.with_untracked(|w| w.contains(&n)) {
+            return;
+        }
+        ctx.watch.update(|w| w.push(n));
+        name.set(String::new());
+    };
+    let list_id = format!("watch-names-{}", ctx.machine.name());
+    view! {
+        <section class="watch-pane">
+            <h3>{move || t().watch}</h3>
+            <div class="find-row">
+                <input data-testid="watch-input" list=list_id.clone() spellcheck="false"
+                    prop:value=move || name.get() on:input=move |e| name.set(event_target_value(&e))
+                    on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { add() } />
+                <datalist id=list_id>
+                    {names.into_iter().map(|n| view! { <option value=n></option> }).collect_view()}
+                </datalist>
+                <button type="button" data-testid="watch-add" on:click=move |_| add()>"+"</button>
+            </div>
+            <table class="watch" data-testid="watch">
+                <tbody>
+                    {move || {
+                        let values = ctx.watch_values.get();
+                        ctx.watch.get().into_iter().enumerate().map(|(i, n)| {
+                            let v = values.get(i).cloned().unwrap_or_default();
+                            let gone = n.clone();
+                            view! {
+                                <tr data-testid=format!("watch-{n}")>
+                                    <th>{n.clone()}</th>
+                                    <td class="watch-value">{v}</td>
+                                    <td><button type="button" on:click=move |_| ctx.watch.update(|w| { w.retain(|x| *x != gone); })>"×"</button></td>
+                                </tr>
+                            }
+                        }).collect_view()
+                    }}
+                </tbody>
+            </table>
+        </section>
+    }
+}
