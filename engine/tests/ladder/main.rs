@@ -10,4 +10,5 @@ mod plcopen;
 mod robustness;
 mod seed;
 mod share;
+mod source_map;
 mod strategies;

@@ -8,7 +8,7 @@
 //! temporaries before the rung; in-line boxes (AVR) act on the running
 //! result, so they must stand on the rung's main line.
 
-use super::{contact, is_pure, replace_edges, series_items, size, Options, Temps};
+use super::{contact, is_pure, replace_edges, series_items, size, Mapped, Options, Temps};
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{LadderError, Pos};
 use crate::ladder::net::{Net, RungLogic};
@@ -39,6 +39,11 @@ struct Compiler {
     ops: Vec<Op>,
     temps: Temps,
     timers: Vec<String>,
+    /// The rung being compiled (its index among the rungs given).
+    rung_index: usize,
+    /// For each leaf: its rung, its cell, and the op that reads its
+    /// device (a contact) or computes its output (an in-line box).
+    sources: Vec<(usize, Pos, usize)>,
 }
 
 /// Compiles checked rung logic for MINASEC-U or the AVR PLC.
@@ -47,15 +52,15 @@ pub fn compile(
     machine: MachineId,
     options: Options,
 ) -> Result<String, Vec<LadderError>> {
-    compile_mapped(rungs, machine, options).map(|(text, _)| text)
+    compile_mapped(rungs, machine, options).map(|m| m.text)
 }
 
-/// [`compile`], with the step each rung starts at.
+/// [`compile`], with the step each rung starts at and each leaf's line.
 pub(crate) fn compile_mapped(
     rungs: &[RungLogic],
     machine: MachineId,
     options: Options,
-) -> Result<(String, Vec<usize>), Vec<LadderError>> {
+) -> Result<Mapped, Vec<LadderError>> {
     let candidates = match machine {
         MachineId::MinasecU => ["M10", "M11", "M12", "M13"]
             .into_iter()
@@ -77,11 +82,14 @@ pub(crate) fn compile_mapped(
         ops: Vec::new(),
         temps: Temps::new(candidates, rungs, what),
         timers: Vec::new(),
+        rung_index: 0,
+        sources: Vec::new(),
     };
     let mut errors = Vec::new();
     let mut starts = Vec::with_capacity(rungs.len());
     for (i, logic) in rungs.iter().enumerate() {
         starts.push(c.steps());
+        c.rung_index = i;
         if let Err((pos, m)) = c.rung(logic) {
             errors.push(match pos {
                 Some(p) => LadderError::at(i, p, m),
@@ -101,16 +109,30 @@ pub(crate) fn compile_mapped(
     if !errors.is_empty() {
         return Err(errors);
     }
-    let text = match machine {
+    let (text, op_lines) = match machine {
         MachineId::MinasecU => c.minasec_text(),
         _ => c.avr_text(options),
     };
-    Ok((text, starts))
+    let sources = c
+        .sources
+        .iter()
+        .filter_map(|&(rung, pos, op)| Some((rung, pos, op_lines.get(op).copied().flatten()?)))
+        .collect();
+    Ok(Mapped {
+        text,
+        starts,
+        sources,
+    })
 }
 
 type RungResult = Result<(), (Option<Pos>, String)>;
 
 impl Compiler {
+    /// Notes that the next op reads (or computes) the leaf at `pos`.
+    fn source(&mut self, pos: Pos) {
+        self.sources.push((self.rung_index, pos, self.ops.len()));
+    }
+
     fn steps(&self) -> usize {
         self.ops
             .iter()
@@ -190,11 +212,15 @@ impl Compiler {
         self.acc(&head).map_err(|m| (Some(head.first_pos()), m))?;
         for item in items.iter().skip(head_end) {
             match item {
-                Net::Leaf(Element::Contact { .. }, _) => {
+                Net::Leaf(Element::Contact { .. }, p) => {
                     let (d, inv) = contact(item).unwrap_or(("", false));
+                    self.source(*p);
                     self.ops.push(Op::And(d.to_string(), inv));
                 }
-                Net::Leaf(e, p) => self.inline_box(e).map_err(|m| (Some(*p), m))?,
+                Net::Leaf(e, p) => {
+                    self.source(*p);
+                    self.inline_box(e).map_err(|m| (Some(*p), m))?;
+                }
                 _ => {
                     let p = item.first_pos();
                     if let Some(i) = later.iter().position(|(q, _)| *q == p) {
@@ -257,8 +283,9 @@ impl Compiler {
     /// Leaves A = `net` (contacts only).
     fn acc(&mut self, net: &Net) -> Result<(), String> {
         match net {
-            Net::Leaf(..) => {
+            Net::Leaf(_, p) => {
                 let (d, inv) = contact(net).ok_or("only contacts can stand here")?;
+                self.source(*p);
                 self.ops.push(Op::Ld(d.to_string(), inv));
                 Ok(())
             }
@@ -310,6 +337,7 @@ impl Compiler {
         }
         for l in rest {
             let (d, inv) = contact(l).ok_or("only contacts can stand here")?;
+            self.source(l.first_pos());
             self.ops.push(op(d, inv));
         }
         for t in held {
@@ -375,8 +403,11 @@ impl Compiler {
         Ok(())
     }
 
-    fn minasec_text(&self) -> String {
+    /// The MINASEC-U sheet, and the text line of each op.
+    fn minasec_text(&self) -> (String, Vec<Option<usize>>) {
         let mut out = String::from("; compiled by hashigo from a ladder\n");
+        let mut lines = Vec::with_capacity(self.ops.len());
+        let mut line = 1;
         let mut step = 0;
         for op in &self.ops {
             let (m, d) = match op {
@@ -386,18 +417,26 @@ impl Compiler {
                 Op::St(d, inv) => (if *inv { "STI" } else { "ST" }, d),
                 Op::Comment(c) => {
                     out.push_str(&format!("; {}\n", one_line(c)));
+                    lines.push(None);
+                    line += 1;
                     continue;
                 }
                 // Not offered on MINASEC-U (the capability table says so).
-                _ => continue,
+                _ => {
+                    lines.push(None);
+                    continue;
+                }
             };
             out.push_str(&format!("{step:03} {m:<4} {d}\n"));
+            lines.push(Some(line));
+            line += 1;
             step += 1;
         }
-        out
+        (out, lines)
     }
 
-    fn avr_text(&self, options: Options) -> String {
+    /// The AVR source, and the text line of each op.
+    fn avr_text(&self, options: Options) -> (String, Vec<Option<usize>>) {
         let mut out = String::from("; compiled by hashigo from a ladder\n");
         out.push_str(&format!(
             "; timer presets are ms/Scan (compiled for a {} ms scan)\n",
@@ -416,6 +455,9 @@ impl Compiler {
                 |b| format!("{},Bit{}", b.register, b.bit),
             )
         };
+        let mut lines = Vec::with_capacity(self.ops.len());
+        // The next line's number (the header is written above).
+        let mut next = out.matches('\n').count();
         for op in &self.ops {
             let line = match op {
                 Op::Ld(d, inv) => {
@@ -442,15 +484,19 @@ impl Compiler {
                 }
                 Op::Comment(c) => {
                     out.push_str(&format!("; {}\n", one_line(c)));
+                    lines.push(None);
+                    next += 1;
                     continue;
                 }
             };
+            lines.push(Some(next));
+            next += 1;
             out.push_str(".db ");
             out.push_str(&line);
             out.push('\n');
         }
         out.push_str(".db End_PLC,0,0,0\n");
-        out
+        (out, lines)
     }
 }
 

@@ -18,8 +18,24 @@ pub struct Listing {
     pub rungs: Vec<RungStart>,
     /// The 0-based text line of each step, in step order.
     pub step_lines: Vec<usize>,
+    /// Where each leaf (contact or in-line box) is computed: the first
+    /// line of the listing that reads its device or computes its output.
+    pub sources: Vec<LeafSource>,
     /// Steps the rungs produced (the rest is the machine's end marker).
     rung_steps: usize,
+}
+
+/// A leaf's place in the listing: the compiler's source map, so the
+/// editor can point from an element to its step and back.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LeafSource {
+    /// The rung's index in the ladder.
+    pub rung: usize,
+    /// The leaf's cell.
+    pub pos: crate::ladder::grid::Pos,
+    /// The 0-based text line of the op reading its device (a contact; an
+    /// edge contact's computed relay) or computing its output (a box).
+    pub line: usize,
 }
 
 /// Where a rung's steps begin.
@@ -51,6 +67,15 @@ impl Listing {
         self.rungs.get(i.checked_sub(1)?).map(|r| r.rung)
     }
 
+    /// The step that reads (or computes) the leaf at `pos` of `rung`.
+    pub fn step_of_leaf(&self, rung: usize, pos: crate::ladder::grid::Pos) -> Option<usize> {
+        let s = self
+            .sources
+            .iter()
+            .find(|s| s.rung == rung && s.pos == pos)?;
+        self.step_at_line(s.line)
+    }
+
     /// The step on 0-based text line `line`, if that line is a step.
     pub fn step_at_line(&self, line: usize) -> Option<usize> {
         self.step_lines.binary_search(&line).ok()
@@ -72,12 +97,23 @@ pub fn compile_listing(
         .enumerate()
         .filter(|(_, r)| !r.is_empty())
         .map(|(i, _)| i);
-    let (text, starts) = match machine {
+    let mapped = match machine {
         MachineId::MinasecU | MachineId::AvrPlc => {
             accumulator::compile_mapped(&logic, machine, options)?
         }
         MachineId::Io86a | MachineId::ArduinoPlc => stack::compile_mapped(&logic, machine)?,
     };
+    let indices: Vec<usize> = indices.collect();
+    let mut sources: Vec<LeafSource> = Vec::new();
+    for &(i, pos, line) in &mapped.sources {
+        let rung = indices[i];
+        // The first op that reads a leaf is its place in the listing (the
+        // Arduino sketch may compute a rung's condition again).
+        if !sources.iter().any(|s| s.rung == rung && s.pos == pos) {
+            sources.push(LeafSource { rung, pos, line });
+        }
+    }
+    let (text, starts) = (mapped.text, mapped.starts);
     let step_lines: Vec<usize> = text
         .lines()
         .enumerate()
@@ -88,7 +124,9 @@ pub fn compile_listing(
     let trailer = usize::from(machine != MachineId::MinasecU);
     Ok(Listing {
         rung_steps: step_lines.len().saturating_sub(trailer),
+        sources,
         rungs: indices
+            .into_iter()
             .zip(starts)
             .map(|(rung, first_step)| RungStart { rung, first_step })
             .collect(),

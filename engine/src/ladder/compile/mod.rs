@@ -10,14 +10,25 @@ pub mod accumulator;
 mod listing;
 pub mod stack;
 
-pub use listing::{compile_listing, Listing, RungStart};
+pub use listing::{compile_listing, LeafSource, Listing, RungStart};
 
 use std::collections::BTreeSet;
 
 use super::element::{ContactKind, Element};
-use super::grid::{Ladder, LadderError};
+use super::grid::{Ladder, LadderError, Pos};
 use super::net::{Net, RungLogic};
 use crate::MachineId;
+
+/// A compiled program with where its rungs and leaves are.
+pub(crate) struct Mapped {
+    /// The program text.
+    pub(crate) text: String,
+    /// Each rung's first step.
+    pub(crate) starts: Vec<usize>,
+    /// (rung among those given, leaf's cell, 0-based text line of the op
+    /// reading or computing it), in emission order.
+    pub(crate) sources: Vec<(usize, Pos, usize)>,
+}
 
 /// Settings a compiler needs beyond the ladder.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -8,7 +8,7 @@
 //! relays, so later outputs reload the first output's pin instead.
 
 use super::accumulator::one_line;
-use super::{contact, negate, replace_edges, size, Temps};
+use super::{contact, negate, replace_edges, size, Mapped, Temps};
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::{LadderError, Pos};
 use crate::ladder::net::{Net, RungLogic};
@@ -23,18 +23,22 @@ struct Compiler {
     depth: usize,
     max_depth: usize,
     temps: Temps,
+    /// The rung being compiled (its index among the rungs given).
+    rung_index: usize,
+    /// (rung, leaf's cell, 0-based line of the op reading its device).
+    sources: Vec<(usize, Pos, usize)>,
 }
 
 /// Compiles checked rung logic for IO86A or the Arduino sketch.
 pub fn compile(rungs: &[RungLogic], machine: MachineId) -> Result<String, Vec<LadderError>> {
-    compile_mapped(rungs, machine).map(|(text, _)| text)
+    compile_mapped(rungs, machine).map(|m| m.text)
 }
 
-/// [`compile`], with the step each rung starts at.
+/// [`compile`], with the step each rung starts at and each leaf's line.
 pub(crate) fn compile_mapped(
     rungs: &[RungLogic],
     machine: MachineId,
-) -> Result<(String, Vec<usize>), Vec<LadderError>> {
+) -> Result<Mapped, Vec<LadderError>> {
     let arduino = machine == MachineId::ArduinoPlc;
     let candidates = if arduino {
         Vec::new()
@@ -47,6 +51,8 @@ pub(crate) fn compile_mapped(
         depth: 0,
         max_depth: 0,
         temps: Temps::new(candidates, rungs, "unused M00-M55"),
+        rung_index: 0,
+        sources: Vec::new(),
     };
     let mut errors = Vec::new();
     let mut starts = Vec::with_capacity(rungs.len());
@@ -59,6 +65,7 @@ pub(crate) fn compile_mapped(
             .count();
         counted = c.lines.len();
         starts.push(steps);
+        c.rung_index = i;
         if !logic.comment.is_empty() {
             c.lines.push(format!("; {}", one_line(&logic.comment)));
         }
@@ -89,7 +96,11 @@ pub(crate) fn compile_mapped(
     }
     let mut text = c.lines.join("\n");
     text.push('\n');
-    Ok((text, starts))
+    Ok(Mapped {
+        text,
+        starts,
+        sources: c.sources,
+    })
 }
 
 type RungResult = Result<(), (Pos, String)>;
@@ -108,7 +119,12 @@ impl Compiler {
         self.max_depth = self.max_depth.max(self.depth);
     }
 
-    fn contact_op(&mut self, kind: &str, device: &str, inv: bool) {
+    /// A contact op; `pos` is the leaf it reads for (none for a reload
+    /// of an output's pin).
+    fn contact_op(&mut self, kind: &str, device: &str, inv: bool, pos: Option<Pos>) {
+        if let Some(pos) = pos {
+            self.sources.push((self.rung_index, pos, self.lines.len()));
+        }
         let m = match (kind, inv, self.arduino) {
             ("LD", false, _) => "LD",
             ("LD", true, false) => "LDI",
@@ -129,9 +145,9 @@ impl Compiler {
     /// Pushes a block computing `net` (contacts only).
     fn block(&mut self, net: &Net) -> Result<(), String> {
         match net {
-            Net::Leaf(..) => {
+            Net::Leaf(_, p) => {
                 let (d, inv) = contact(net).ok_or("only contacts can stand here")?;
-                self.contact_op("LD", d, inv);
+                self.contact_op("LD", d, inv, Some(*p));
                 Ok(())
             }
             Net::Series(v) => self.group(v, true),
@@ -155,7 +171,10 @@ impl Compiler {
         }
         for n in it {
             match contact(n) {
-                Some((d, inv)) => self.contact_op(if and { "AND" } else { "OR" }, d, inv),
+                Some((d, inv)) => {
+                    let op = if and { "AND" } else { "OR" };
+                    self.contact_op(op, d, inv, Some(n.first_pos()));
+                }
                 None => {
                     self.block(n)?;
                     let join = match (and, self.arduino) {
@@ -355,7 +374,7 @@ impl Compiler {
             let result = |c: &mut Compiler, negated: bool| -> Result<(), String> {
                 match &source {
                     Some((pin, inv)) => {
-                        c.contact_op("LD", pin, *inv ^ negated);
+                        c.contact_op("LD", pin, *inv ^ negated, None);
                         Ok(())
                     }
                     None if negated => c.block(&negate(cond)),
@@ -366,7 +385,7 @@ impl Compiler {
                 CoilKind::Normal => result(self, false),
                 CoilKind::Inverted => result(self, true),
                 CoilKind::Set | CoilKind::Reset => {
-                    self.contact_op("LD", device, false);
+                    self.contact_op("LD", device, false, None);
                     let set = *kind == CoilKind::Set;
                     let r = result(self, !set);
                     self.emit(if set { "ORB" } else { "ANDB" }, "");

@@ -1,0 +1,101 @@
+//! The compiler's source map (issue #14's groundwork): for random ladders
+//! on every machine, each contact and in-line box of the drawing has the
+//! line of the listing that reads its device or computes its output,
+//! within its rung's steps.
+
+use engine::ladder::compile::{compile_listing, Options};
+use engine::ladder::{ContactKind, Element, Ladder};
+use engine::MachineId;
+use proptest::test_runner::{Config, TestCaseError, TestRunner};
+
+use crate::strategies::{case, pool, Pool};
+
+/// How `device` appears in a line of `machine`'s listing.
+fn spelled(machine: MachineId, device: &str) -> String {
+    match machine {
+        MachineId::AvrPlc => {
+            let (r, b) = device
+                .trim_start_matches('R')
+                .split_once('.')
+                .unwrap_or(("", ""));
+            format!(",{r},Bit{b},")
+        }
+        _ => device.to_string(),
+    }
+}
+
+fn check(machine: MachineId, ladder: &Ladder) -> Result<bool, String> {
+    let Ok(listing) = compile_listing(ladder, machine, Options::default()) else {
+        return Ok(false);
+    };
+    let lines: Vec<&str> = listing.text.lines().collect();
+    for (i, rung) in ladder.rungs.iter().enumerate() {
+        let steps = listing
+            .steps_of(i)
+            .ok_or(format!("rung {i} has no steps"))?;
+        for (pos, e) in rung.elements() {
+            if e.is_output() || *e == Element::Wire {
+                continue;
+            }
+            let source = listing
+                .sources
+                .iter()
+                .find(|s| s.rung == i && s.pos == pos)
+                .ok_or(format!("rung {i} {pos:?} {e}: no source\n{}", listing.text))?;
+            let step = listing
+                .step_at_line(source.line)
+                .ok_or(format!("rung {i} {pos:?}: line {} is no step", source.line))?;
+            if !steps.contains(&step) {
+                return Err(format!("rung {i} {pos:?}: step {step} outside {steps:?}"));
+            }
+            if let Element::Contact {
+                kind: ContactKind::No | ContactKind::Nc,
+                device,
+            } = e
+            {
+                let line = lines[source.line];
+                if !line.contains(&spelled(machine, device)) {
+                    return Err(format!(
+                        "rung {i} {pos:?} {e}: line {line:?} does not read it\n{}",
+                        listing.text
+                    ));
+                }
+            }
+        }
+    }
+    Ok(true)
+}
+
+fn property(machine: MachineId, cases: u32) {
+    let p: &'static Pool = Box::leak(Box::new(pool(machine)));
+    let mut runner = TestRunner::new(Config {
+        cases,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let ran = std::cell::Cell::new(0u32);
+    let result = runner.run(&case(p), |(rungs, _)| {
+        match check(machine, &Ladder::from_logic(&rungs)) {
+            Ok(done) => {
+                ran.set(ran.get() + u32::from(done));
+                Ok(())
+            }
+            Err(e) => Err(TestCaseError::fail(e)),
+        }
+    });
+    if let Err(e) = result {
+        panic!("{machine}: {e}");
+    }
+    assert!(
+        ran.get() * 10 >= cases * 6,
+        "{machine}: only {} compiled",
+        ran.get()
+    );
+}
+
+#[test]
+fn every_leaf_has_its_line_on_every_machine() {
+    for machine in MachineId::ALL {
+        property(machine, 300);
+    }
+}
