@@ -57,6 +57,8 @@ pub struct Machine {
     steps: u64,
     /// Times the run came back to step 0 (END, JUMP 0).
     passes: u64,
+    /// Per-step tracing, when on (a pass is a scan).
+    pub(crate) tracer: crate::plc::Tracer,
 }
 
 impl Machine {
@@ -79,6 +81,7 @@ impl Machine {
             port_b: 0,
             steps: 0,
             passes: 0,
+            tracer: crate::plc::Tracer::default(),
         }
     }
 
@@ -286,51 +289,70 @@ impl Machine {
             .get(usize::from(self.pc))
             .copied()
             .unwrap_or(ERASED);
+        let step = usize::from(self.pc);
         self.pc += 1;
         self.steps += 1;
         let bit = (word & 0x0F) as u8;
+        // What the step read and left on top, for tracing.
+        let (mut read, mut result) = (false, false);
+        let mut operand = |m: &Self| {
+            read = m.read(bit);
+            read
+        };
         match Op::decode(word) {
             Some(Op::End) => self.pc = 0,
-            Some(Op::Ld) => self.push(self.read(bit)),
-            Some(Op::Ldn) => self.push(!self.read(bit)),
+            Some(Op::Ld) => {
+                result = operand(self);
+                self.push(result);
+            }
+            Some(Op::Ldn) => {
+                result = !operand(self);
+                self.push(result);
+            }
             Some(Op::And) => {
                 let top = self.pop();
-                let v = self.read(bit) && top;
-                self.push(v);
+                result = operand(self) && top;
+                self.push(result);
             }
             Some(Op::Andn) => {
                 let top = self.pop();
-                let v = !self.read(bit) && top;
-                self.push(v);
+                result = !operand(self) && top;
+                self.push(result);
             }
             Some(Op::Or) => {
                 let top = self.pop();
-                let v = self.read(bit) || top;
-                self.push(v);
+                result = operand(self) || top;
+                self.push(result);
             }
             Some(Op::Orn) => {
                 let top = self.pop();
-                let v = !self.read(bit) || top;
-                self.push(v);
+                result = !operand(self) || top;
+                self.push(result);
             }
             Some(Op::Andb) => {
                 let (a, b) = (self.pop(), self.pop());
-                self.push(a && b);
+                result = a && b;
+                self.push(result);
             }
             Some(Op::Orb) => {
                 let (a, b) = (self.pop(), self.pop());
-                self.push(a || b);
+                result = a || b;
+                self.push(result);
             }
             Some(Op::Out) => {
-                let v = self.pop();
+                result = self.pop();
                 // Port B bit (operand - 8): the intent of the sketch, whose
                 // own code shifts by the raw operand (see docs/arduino-plc.md).
                 if let Some(n) = bit.checked_sub(8) {
-                    self.port_b = (self.port_b & !(1 << n)) | (u8::from(v) << n);
+                    self.port_b = (self.port_b & !(1 << n)) | (u8::from(result) << n);
                 }
             }
             Some(Op::Jump) => self.pc = word & 0xFF,
             None => {} // opcodes 10-14: the sketch does nothing
+        }
+        self.tracer.step(step, read, result);
+        if self.pc == 0 {
+            self.tracer.end_scan();
         }
         if self.pc == 0 {
             self.passes += 1;

@@ -37,6 +37,8 @@ pub struct Machine {
     /// The scan under way when stepping one record at a time: the next
     /// record and the running result.
     in_scan: Option<(usize, bool)>,
+    /// Per-step tracing, when on.
+    pub(crate) tracer: crate::plc::Tracer,
 }
 
 impl Machine {
@@ -52,6 +54,7 @@ impl Machine {
             scans: 0,
             last_scan: [0; 32],
             in_scan: None,
+            tracer: crate::plc::Tracer::default(),
         }
     }
 
@@ -221,6 +224,7 @@ impl Machine {
     fn end_scan(&mut self) {
         self.scans += 1;
         self.last_scan = self.registers;
+        self.tracer.end_scan();
     }
 
     /// Runs the record at `pc` with the running result `acc`; false once
@@ -229,11 +233,22 @@ impl Machine {
         let Some(&instruction) = self.program.instructions().get(*pc) else {
             return false;
         };
+        let step = *pc;
         *pc += 1;
+        let mut read = false;
         match instruction {
-            Instruction::Load(b, inv) => *acc = self.read(b) ^ inv,
-            Instruction::And(b, inv) => *acc &= self.read(b) ^ inv,
-            Instruction::Or(b, inv) => *acc |= self.read(b) ^ inv,
+            Instruction::Load(b, inv) => {
+                read = self.read(b);
+                *acc = read ^ inv;
+            }
+            Instruction::And(b, inv) => {
+                read = self.read(b);
+                *acc &= read ^ inv;
+            }
+            Instruction::Or(b, inv) => {
+                read = self.read(b);
+                *acc |= read ^ inv;
+            }
             Instruction::Coil(b, inv) => self.write(b, *acc ^ inv),
             Instruction::Set(b) if *acc => self.write(b, true),
             Instruction::Reset(b) if *acc => self.write(b, false),
@@ -259,6 +274,7 @@ impl Machine {
             }
             Instruction::End => return false,
         }
+        self.tracer.step(step, read, *acc);
         true
     }
 }

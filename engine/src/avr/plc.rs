@@ -189,6 +189,15 @@ impl Plc for AvrPlc {
         self.machine.step_instruction()
     }
 
+    /// Record `n` is step `n`: a load, and, or reads its bit.
+    fn set_tracing(&mut self, on: bool) {
+        self.machine.tracer.set(on);
+    }
+
+    fn trace(&self) -> Option<&crate::plc::ScanTrace> {
+        self.machine.tracer.last()
+    }
+
     /// R0-R31 as the last scan left them, then each timer word's count
     /// (2 bytes, little-endian).
     fn image_into(&self, image: &mut Vec<u8>) {

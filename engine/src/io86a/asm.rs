@@ -17,6 +17,9 @@ pub const MAX_STEPS: usize = 511;
 pub struct Program {
     instructions: Vec<Instruction>,
     listing: Vec<String>,
+    /// Each instruction's first step (0-based): `MOV` / `K10` / `D00` is
+    /// one instruction on three steps.
+    first_steps: Vec<usize>,
 }
 
 impl Program {
@@ -24,6 +27,11 @@ impl Program {
     /// and any after it: they are kept but do not run).
     pub fn instructions(&self) -> &[Instruction] {
         &self.instructions
+    }
+
+    /// The first step (0-based) of instruction `index`.
+    pub fn first_step(&self, index: usize) -> usize {
+        self.first_steps.get(index).copied().unwrap_or(index)
     }
 
     /// The number of steps.
@@ -59,6 +67,8 @@ impl Program {
 /// An instruction whose operands are still to come on later lines.
 struct Pending {
     line: usize,
+    /// The step of its mnemonic.
+    step: usize,
     mnemonic: &'static str,
     head: Option<Bit>,
     words: Vec<Word>,
@@ -69,6 +79,9 @@ struct Pending {
 struct Parser {
     instructions: Vec<Instruction>,
     listing: Vec<String>,
+    first_steps: Vec<usize>,
+    /// The first step of the instruction being completed from later lines.
+    pending_step: Option<usize>,
     errors: Vec<Located<AsmError>>,
     pending: Option<Pending>,
     blocks: BlockCheck,
@@ -227,6 +240,7 @@ impl Parser {
         let inline = if head.is_some() { &ops[1..] } else { ops };
         let mut pending = Pending {
             line,
+            step: self.listing.len().saturating_sub(1),
             mnemonic,
             head,
             words: Vec::new(),
@@ -250,6 +264,7 @@ impl Parser {
 
     /// Builds an instruction once all its operands are there.
     fn complete(&mut self, p: Pending) {
+        self.pending_step = Some(p.step);
         let built = match (p.mnemonic, p.head, p.words.as_slice()) {
             ("OUT", Some(Bit::T(n)), [preset]) => {
                 preset_of(*preset).map(|w| Instruction::OutTimer(n, w))
@@ -330,7 +345,12 @@ impl Parser {
                 b.after_output = true;
             }
         }
+        let step = self
+            .pending_step
+            .take()
+            .unwrap_or_else(|| self.listing.len().saturating_sub(1));
         self.instructions.push(instruction);
+        self.first_steps.push(step);
         Ok(())
     }
 
@@ -342,6 +362,7 @@ impl Parser {
             Ok(Program {
                 instructions: self.instructions,
                 listing: self.listing,
+                first_steps: self.first_steps,
             })
         } else {
             self.errors.sort_by_key(|e| e.line);

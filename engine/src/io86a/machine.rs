@@ -147,6 +147,8 @@ pub struct Machine {
     pub(super) last_scan_at: SimTime,
     pub(super) scans: u64,
     pub(super) last_scan: Devices,
+    /// Per-step tracing, when on.
+    pub(crate) tracer: crate::plc::Tracer,
     pub(super) link_writes: Vec<LinkWrite>,
     /// The scan under way when stepping one instruction at a time.
     pub(super) in_scan: Option<ScanState>,
@@ -185,6 +187,7 @@ impl Machine {
             last_scan_at: SimTime::ZERO,
             scans: 0,
             last_scan: Devices::default(),
+            tracer: crate::plc::Tracer::default(),
             link_writes: Vec::new(),
             in_scan: None,
         }

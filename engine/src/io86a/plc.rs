@@ -388,6 +388,16 @@ impl Plc for Io86aPlc {
         self.pair.a.step_instruction()
     }
 
+    /// Device A's steps, numbered as its listing numbers them (an
+    /// instruction's first line).
+    fn set_tracing(&mut self, on: bool) {
+        self.pair.a.tracer.set(on);
+    }
+
+    fn trace(&self) -> Option<&crate::plc::ScanTrace> {
+        self.pair.a.tracer.last()
+    }
+
     fn running(&self) -> bool {
         self.pair.a.running()
     }

@@ -139,6 +139,7 @@ impl Machine {
         self.output_terminals = self.devices.y;
         self.scans += 1;
         self.last_scan.clone_from(&self.devices);
+        self.tracer.end_scan();
     }
 
     /// Runs the instruction at `state.pc`; false once the scan is over
@@ -152,22 +153,33 @@ impl Machine {
         let acc = state.acc;
         let d = &mut self.devices;
         let mut output = true;
+        // The bit a contact step reads, for tracing.
+        let read = match instruction {
+            Instruction::Ld(b)
+            | Instruction::Ldi(b)
+            | Instruction::And(b)
+            | Instruction::Ani(b)
+            | Instruction::Or(b)
+            | Instruction::Ori(b) => d.bit(b),
+            _ => false,
+        };
         match instruction {
-            Instruction::Ld(b) | Instruction::Ldi(b) => {
+            Instruction::Ld(_) | Instruction::Ldi(_) => {
                 if state.open && !state.after_output {
                     self.stack.push(acc);
                 } else {
                     self.stack.clear();
                 }
-                state.acc = d.bit(b) ^ matches!(instruction, Instruction::Ldi(_));
+                state.acc = read ^ matches!(instruction, Instruction::Ldi(_));
                 state.open = true;
                 state.after_output = false;
+                self.trace_result(index, read, state.acc);
                 return true;
             }
-            Instruction::And(b) => (state.acc, output) = (acc && d.bit(b), false),
-            Instruction::Ani(b) => (state.acc, output) = (acc && !d.bit(b), false),
-            Instruction::Or(b) => (state.acc, output) = (acc || d.bit(b), false),
-            Instruction::Ori(b) => (state.acc, output) = (acc || !d.bit(b), false),
+            Instruction::And(_) => (state.acc, output) = (acc && read, false),
+            Instruction::Ani(_) => (state.acc, output) = (acc && !read, false),
+            Instruction::Or(_) => (state.acc, output) = (acc || read, false),
+            Instruction::Ori(_) => (state.acc, output) = (acc || !read, false),
             Instruction::Orb => {
                 (state.acc, output) = (self.stack.pop().unwrap_or(false) || acc, false)
             }
@@ -213,7 +225,16 @@ impl Machine {
         if output {
             state.after_output = true;
         }
+        self.trace_result(index, read, state.acc);
         true
+    }
+
+    /// Records instruction `index`'s step while tracing.
+    fn trace_result(&mut self, index: usize, read: bool, result: bool) {
+        if self.tracer.on() {
+            self.tracer
+                .step(self.program.first_step(index), read, result);
+        }
     }
 
     /// The instructions that act only while the rung is on.

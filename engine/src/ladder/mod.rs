@@ -7,7 +7,8 @@
 //! - [`target`]: what each machine offers (palette and validation);
 //! - [`eval`]: power flow by the book, per element;
 //! - [`compile`], [`decompile`]: to and from each machine's mnemonic text;
-//! - [`project`], [`share`], [`plcopen`]: JSON projects, share URLs, PLCopen XML.
+//! - [`project`], [`share`], [`plcopen`]: JSON projects, share URLs, PLCopen XML;
+//! - [`live`]: each element's power in the last scan, from the machine's trace.
 
 pub mod compile;
 pub mod decompile;
@@ -15,6 +16,7 @@ pub mod edit;
 pub mod element;
 pub mod eval;
 pub mod grid;
+pub mod live;
 pub mod net;
 pub mod plcopen;
 pub mod project;

@@ -78,6 +78,8 @@ pub struct Machine {
     decoded: Option<FastCode>,
     fast_path: bool,
     gate_network: bool,
+    /// Per-step tracing, when on (the exact path runs meanwhile).
+    pub(crate) tracer: crate::plc::Tracer,
 }
 
 impl Default for Machine {
@@ -118,6 +120,7 @@ impl Machine {
             reset_at: SimTime::ZERO,
             decoded: None,
             fast_path: true,
+            tracer: crate::plc::Tracer::default(),
             gate_network: true,
         };
         m.clear_volatile();
@@ -394,6 +397,7 @@ impl Machine {
             self.write(address, self.acc ^ opcode.inverts());
         }
         self.acc = logic_unit(opcode, data_in, self.acc);
+        self.tracer.step(usize::from(self.pc), data_in, self.acc);
         self.clk_high = true;
         self.clocks += 1;
     }
@@ -426,6 +430,7 @@ impl Machine {
         self.input_image = self.input_terminals;
         self.scans += 1;
         self.last_scan = Some(self.snapshot());
+        self.tracer.end_scan();
     }
 
     fn snapshot(&self) -> ScanSnapshot {
@@ -454,7 +459,13 @@ impl Machine {
             return;
         }
         while self.running() && self.next_edge <= t {
-            if self.fast_path && !self.clk_high && self.pc == 0 && !self.write_held {
+            // Tracing needs each step: the exact path then.
+            if self.fast_path
+                && !self.tracer.on()
+                && !self.clk_high
+                && self.pc == 0
+                && !self.write_held
+            {
                 if let Some(end) = self.fast_scan_fits(t) {
                     self.fast_scan(end);
                     continue;

@@ -11,6 +11,7 @@
 
 pub mod error;
 pub mod front;
+pub mod trace;
 
 pub use crate::arduino::ArduinoPlc;
 pub use crate::avr::AvrPlc;
@@ -18,6 +19,7 @@ pub use crate::io86a::Io86aPlc;
 pub use crate::minasec::MinasecPlc;
 pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
 pub use front::{Front, Io86aFront};
+pub use trace::{ScanTrace, Tracer};
 
 use crate::events::InputValue;
 use crate::limits::MAX_SIM_TIME;
@@ -151,6 +153,16 @@ pub trait Plc {
     /// (MINASEC-U); false where it has none or is not clocked.
     fn step_clock(&mut self) -> bool {
         false
+    }
+
+    /// Starts or stops per-step tracing ([`ScanTrace`]); a machine that
+    /// cannot trace ignores it.
+    fn set_tracing(&mut self, _on: bool) {}
+
+    /// While tracing: what each step of the last completed scan read and
+    /// left, by step number (the listing's numbering).
+    fn trace(&self) -> Option<&ScanTrace> {
+        None
     }
 
     /// Copies the device memory as the last scan left it into `image`

@@ -428,3 +428,73 @@ fn regression_arduino_refuses_a_result_it_cannot_keep() {
     let e = compile_logic(&rungs, MachineId::ArduinoPlc, Options::default()).expect_err("no relay");
     assert!(e[0].message.contains("split the rung"), "{e:?}");
 }
+
+/// The live ladder's colours (issue #14): for random ladders and inputs,
+/// each element's power in each scan, walked from the machine's own trace
+/// through the compiler's source map, equals the reference evaluator's.
+fn check_colours(
+    machine: MachineId,
+    rungs: &[RungLogic],
+    timeline: &[Vec<bool>],
+) -> Result<bool, String> {
+    use engine::ladder::live::LiveLadder;
+    let ladder = Ladder::from_logic(rungs);
+    let logic = ladder.logic(machine).map_err(|e| format!("{e:?}"))?;
+    let live = match LiveLadder::new(&ladder, machine, Options::default()) {
+        Ok(l) => l,
+        Err(e) if beyond_the_machine(&e) => return Ok(false),
+        Err(e) => return Err(format!("compile failed: {e:?}")),
+    };
+    let p = pool(machine);
+    let mut reference = Reference::new(logic, 10).map_err(|e| format!("{e:?}"))?;
+    let latency = latency(machine);
+    for _ in 1..latency {
+        reference.scan();
+    }
+    let mut expected = Vec::new();
+    for inputs in timeline {
+        for (d, &on) in p.inputs.iter().zip(inputs) {
+            reference.set(d, on);
+        }
+        expected.push(reference.scan());
+    }
+    let text = &live.listing.text;
+    let (mut sim, timing) = load(machine, text)?;
+    sim.set_tracing(true);
+    let at = |j: u64| SimTime::from_nanos(j * timing.period.as_nanos() + timing.offset.as_nanos());
+    for j in 0..timeline.len() as u64 + timing.latency {
+        sim.run_until(at(j));
+        if j >= timing.latency {
+            let k = (j - timing.latency) as usize;
+            let trace = sim.trace().ok_or("tracing on, but no scan traced")?;
+            let got: Vec<Vec<(bool, bool)>> = live
+                .power(trace)
+                .into_iter()
+                .map(|(_, r)| r.iter().map(|e| (e.power_in, e.power_out)).collect())
+                .collect();
+            let want: Vec<Vec<(bool, bool)>> = expected[k]
+                .iter()
+                .map(|r| r.iter().map(|e| (e.power_in, e.power_out)).collect())
+                .collect();
+            if got != want {
+                return Err(format!(
+                    "scan {k}: machine colours {got:?}\nreference {want:?}\ninputs {:?}\nprogram:\n{text}",
+                    &timeline[..=k]
+                ));
+            }
+        }
+        if let Some(vector) = timeline.get(j as usize) {
+            for (d, &on) in p.inputs.iter().zip(vector) {
+                input(sim.as_mut(), d, on);
+            }
+        }
+    }
+    Ok(true)
+}
+
+#[test]
+fn the_live_colours_are_the_machines_own_on_every_machine() {
+    for machine in MachineId::ALL {
+        property(machine, 200, check_colours);
+    }
+}
