@@ -705,13 +705,26 @@ def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
     assert el(driver, "cell-0-0-1").get_attribute("data-on") == "0"  # X01: off
     assert el(driver, "cell-0-0-9").get_attribute("data-on") == "0"  # Y00: off
     assert el(driver, "cell-0-0-4").get_attribute("data-on") is None, "a wire shows no device"
+    # Power as the machine computed it: nothing gets past X00 yet, the
+    # NC contact of X01 conducts but has no power to pass.
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-powered") == "0")
+    assert el(driver, "cell-0-0-1").get_attribute("data-powered") == "0"
+    assert el(driver, "cell-0-0-9").get_attribute("data-powered") == "0"
+    assert el(driver, "cell-0-0-5").get_attribute("data-powered") == "0", "a wire too"
     el(driver, "watch-input").send_keys("C0", Keys.ENTER)
     assert el(driver, "watch-C0")
     el(driver, "input-X00").click()
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "1")
     wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="Y00 on")
     assert "on" in el(driver, "cell-0-1-0").get_attribute("class"), "the Y00 contact shows Y00 on"
+    for cell in ["cell-0-0-0", "cell-0-0-1", "cell-0-0-5", "cell-0-0-9", "cell-0-1-0"]:
+        wait(driver, lambda: el(driver, cell).get_attribute("data-powered") == "1", message=f"{cell} powered")
     el(driver, "input-X00").click()
+    # The start button released: its contact off and unpowered, the
+    # self-hold carrying the power.
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-powered") == "0")
+    assert el(driver, "cell-0-1-0").get_attribute("data-powered") == "1"
+    assert el(driver, "cell-0-0-9").get_attribute("data-powered") == "1"
     wait(driver, lambda: "(" in el(driver, "watch-C0").text and not el(driver, "watch-C0").text.endswith("(0)"),
          timeout=30, message="the count shows in the watch table")
     # Step one scan at a time, paused.

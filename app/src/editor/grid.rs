@@ -164,6 +164,7 @@ fn RungRows(
     let first = r.first_step.clone();
     let first2 = r.first_step.clone();
     let on = r.on.clone();
+    let powered = r.powered.clone();
     let (d1, d2, d3) = (data.clone(), data.clone(), data.clone());
     view! {
         <div class="rung" role="rowgroup" data-testid=move || format!("rung-{}", n1.get())
@@ -182,6 +183,7 @@ fn RungRows(
                     children=move |row| {
                         let selected = selected.clone();
                         let on = on.clone();
+                        let powered = powered.clone();
                         let data = d3.clone();
                         let number = n3.clone();
                         let cells = move || data.with(|d: &RungData| {
@@ -194,7 +196,7 @@ fn RungRows(
                                     key=|c: &CellData| c.clone()
                                     children=move |c| {
                                         let selected = selected.clone();
-                                        view! { <Cell ctx c number=number.clone() on=on.clone() selected block grid /> }
+                                        view! { <Cell ctx c number=number.clone() on=on.clone() powered=powered.clone() selected block grid /> }
                                     }
                                 />
                             </div>
@@ -217,6 +219,7 @@ fn Cell(
     c: CellData,
     number: ArcRwSignal<usize>,
     on: ArcRwSignal<Vec<Option<bool>>>,
+    powered: ArcRwSignal<Vec<Option<bool>>>,
     selected: Selector<Cursor>,
     block: Memo<Option<(Cursor, Cursor)>>,
     grid: NodeRef<leptos::html::Div>,
@@ -287,6 +290,11 @@ fn Cell(
         on.with(|v| v.get(index).copied().flatten())
             .map(|b| if b { "1" } else { "0" })
     };
+    let power = move || {
+        powered
+            .with(|v| v.get(index).copied().flatten())
+            .map(|b| if b { "1" } else { "0" })
+    };
     let focus = move || {
         if let Some(g) = grid.get() {
             let _ = g.focus();
@@ -302,6 +310,8 @@ fn Cell(
             data-device=device
             data-on=live.clone()
             class:on=move || live() == Some("1")
+            data-powered=power.clone()
+            class:powered=move || power() == Some("1")
             data-error=c.error.clone()
             title=c.error.clone()
             aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }

@@ -1,8 +1,9 @@
 //! Running the drawn ladder: Run writes it to the machine and starts it;
 //! Step scan, Step instruction and (MINASEC-U) Step clock advance it by
 //! hand, paused; the watch table shows chosen devices live. Contacts and
-//! coils show their device's state on the ladder (`data-on`, each frame,
-//! from the machine's last scan). Power flow along the rungs is issue #14.
+//! coils show their device's state (`data-on`), and every cell the power
+//! the machine computed for it in its last scan (`data-powered`, from its
+//! trace through the compiler's source map: `engine::ladder::live`).
 
 use engine::ladder::edit::device_names;
 use engine::plc::Command;
@@ -24,11 +25,12 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
         }
     };
     let run = move |_| {
-        if !ctx.write_to_machine() {
+        if !ctx.start_live() || !ctx.write_to_machine() {
             ctx.message.set(Some(t().tests_need_compile.to_string()));
             return;
         }
         operate(&|plc| {
+            plc.set_tracing(true);
             let _ = plc.apply(Command::Run(true));
         });
         ctx.page.paused.set(false);

@@ -347,3 +347,72 @@ mod tests {
         assert_eq!(reuse(&refs, &new), vec![Some(0), Some(2)]);
     }
 }
+
+/// Each cell's power in the last scan (`data-powered`), by its place in
+/// `d.cells`: an element's from `powers` (the machine's, see
+/// `engine::ladder::live`), a wire's from what feeds it on its left (the
+/// rail at column 0), an empty cell none.
+pub fn cell_power(d: &RungData, powers: &[(Pos, bool)]) -> Vec<Option<bool>> {
+    let at = |row: usize, col: usize| d.cells.get(row * d.cols + col);
+    let element = |row: usize, col: usize| {
+        powers
+            .iter()
+            .find(|(p, _)| p.row == row && p.col == col)
+            .map(|(_, on)| *on)
+    };
+    d.cells
+        .iter()
+        .map(|c| match c.kind {
+            "" => None,
+            "hwire" => {
+                let mut col = c.col;
+                loop {
+                    if col == 0 {
+                        return Some(true);
+                    }
+                    col -= 1;
+                    match at(c.row, col).map(|x| x.kind) {
+                        Some("hwire") => continue,
+                        Some("") | None => return Some(false),
+                        Some(_) => return Some(element(c.row, col).unwrap_or(false)),
+                    }
+                }
+            }
+            _ => element(c.row, c.col),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod power_tests {
+    use super::*;
+    use engine::ladder::{Element, Rung};
+
+    #[test]
+    fn wires_take_the_power_of_what_feeds_them() {
+        let rung = Rung {
+            cells: vec![vec![
+                Some(Element::no("X00")),
+                Some(Element::Wire),
+                Some(Element::Wire),
+                Some(Element::coil("Y00")),
+            ]],
+            ..Rung::default()
+        };
+        let d = rung_data(&rung, 3, &[], &BTreeMap::new());
+        let off = cell_power(&d, &[(Pos::new(0, 0), false), (Pos::new(0, 3), false)]);
+        assert_eq!(
+            &off[..4],
+            &[Some(false), Some(false), Some(false), Some(false)]
+        );
+        let on = cell_power(&d, &[(Pos::new(0, 0), true), (Pos::new(0, 3), true)]);
+        assert_eq!(&on[..4], &[Some(true), Some(true), Some(true), Some(true)]);
+        assert_eq!(on[4], None, "the free row's cells show nothing");
+        let from_rail = Rung {
+            cells: vec![vec![Some(Element::Wire), Some(Element::coil("Y00"))]],
+            ..Rung::default()
+        };
+        let d = rung_data(&from_rail, 1, &[], &BTreeMap::new());
+        assert_eq!(cell_power(&d, &[(Pos::new(0, 1), true)])[0], Some(true));
+    }
+}

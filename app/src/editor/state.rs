@@ -35,6 +35,9 @@ pub struct RungView {
     /// Each cell's device state on the running machine (by the cell's
     /// place in `data.cells`; `None` where the cell shows no device).
     pub on: ArcRwSignal<Vec<Option<bool>>>,
+    /// Each cell's power in the machine's last scan, while it runs the
+    /// ladder as drawn (same places).
+    pub powered: ArcRwSignal<Vec<Option<bool>>>,
 }
 
 /// One problem of the ladder, where it is.
@@ -148,6 +151,9 @@ pub struct LadderCtx {
     pub watch_values: RwSignal<Vec<String>>,
     /// The step the last single step ran, and its rung.
     pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
+    /// The ladder the machine runs, compiled with its source map, from
+    /// Run until the next edit: the colours come from it.
+    live: StoredValue<Option<engine::ladder::live::LiveLadder>>,
 }
 
 /// What showing a shared project set aside: its settings (applied when
@@ -214,6 +220,7 @@ impl LadderCtx {
             watch: RwSignal::new(Vec::new()),
             watch_values: RwSignal::new(Vec::new()),
             stepped: RwSignal::new(None),
+            live: StoredValue::new(None),
         };
         ctx.refresh(false);
         ctx
@@ -754,6 +761,10 @@ impl LadderCtx {
         if self.problems.with_untracked(|p| *p != problems) {
             self.problems.set(problems);
         }
+        if edited {
+            // The machine no longer runs the ladder as drawn.
+            self.live.set_value(None);
+        }
         // A shared project is not saved until it is kept.
         if edited && !self.shared.get_untracked() {
             self.follow(listing.as_ref());
@@ -825,12 +836,50 @@ impl LadderCtx {
         h
     }
 
+    /// Run: the ladder compiled with its source map becomes what the
+    /// colours are read against; false (with the problems shown) when it
+    /// does not compile.
+    pub fn start_live(&self) -> bool {
+        let options = self.options.get_untracked();
+        let live = self.editor.with_value(|e| {
+            engine::ladder::live::LiveLadder::new(e.ladder(), self.machine, options)
+        });
+        match live {
+            Ok(l) => {
+                self.live.set_value(Some(l));
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
     /// Each frame: every contact's and coil's device state as the
-    /// machine's last scan left it (`data-on`), and the watch table. Only
-    /// the rungs whose states changed are touched.
+    /// machine's last scan left it (`data-on`), every cell's power in
+    /// that scan as the machine computed it (`data-powered`, while it runs
+    /// the ladder as drawn), and the watch table. Only the rungs whose
+    /// states changed are touched.
     pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
         let running = plc.scans() > 0;
+        let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
+            Some(trace) => self.live.with_value(|l| {
+                l.as_ref().map_or_else(Vec::new, |l| {
+                    l.power(trace)
+                        .into_iter()
+                        .map(|(i, r)| (i, r.iter().map(|e| (e.pos, e.power_out)).collect()))
+                        .collect()
+                })
+            }),
+            None => Vec::new(),
+        };
         for view in self.rungs.get_untracked() {
+            let number = view.number.get_untracked();
+            let powered: Vec<Option<bool>> = match powers.iter().find(|(i, _)| *i == number) {
+                Some((_, p)) => view.data.with_untracked(|d| super::model::cell_power(d, p)),
+                None => Vec::new(),
+            };
+            if view.powered.with_untracked(|old| *old != powered) {
+                view.powered.set(powered);
+            }
             let states: Vec<Option<bool>> = view.data.with_untracked(|d| {
                 d.cells
                     .iter()
@@ -938,6 +987,7 @@ impl LadderCtx {
                         first_step: ArcRwSignal::new(first),
                         data: ArcRwSignal::new(d),
                         on: ArcRwSignal::new(Vec::new()),
+                        powered: ArcRwSignal::new(Vec::new()),
                     }
                 }
             };
