@@ -216,6 +216,10 @@ impl Plc for ArduinoPlc {
         self.machine.tracer.last()
     }
 
+    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
+        self.machine.tracer.take_history()
+    }
+
     /// The input pins (X000-X005 in bits 0-5), the output port (Y000-Y005
     /// in bits 0-5), the program counter and the bit stack (2 bytes each,
     /// little-endian).

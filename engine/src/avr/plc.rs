@@ -198,6 +198,10 @@ impl Plc for AvrPlc {
         self.machine.tracer.last()
     }
 
+    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
+        self.machine.tracer.take_history()
+    }
+
     /// R0-R31 as the last scan left them, then each timer word's count
     /// (2 bytes, little-endian).
     fn image_into(&self, image: &mut Vec<u8>) {

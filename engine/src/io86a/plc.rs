@@ -398,6 +398,10 @@ impl Plc for Io86aPlc {
         self.pair.a.tracer.last()
     }
 
+    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
+        self.pair.a.tracer.take_history()
+    }
+
     fn running(&self) -> bool {
         self.pair.a.running()
     }

@@ -10,9 +10,11 @@
 use super::compile::{compile_listing, Listing, Options};
 use super::element::{ContactKind, Element};
 use super::eval::ElementPower;
+use super::grid::Pos;
 use super::grid::{Ladder, LadderError};
 use super::net::{Net, RungLogic};
-use crate::plc::ScanTrace;
+use crate::plc::trace::{SEEN_READ_OFF, SEEN_READ_ON, SEEN_RESULT_OFF, SEEN_RESULT_ON};
+use crate::plc::{ScanTrace, TraceHistory};
 use crate::MachineId;
 
 /// A ladder compiled for a machine, ready to colour from its traces.
@@ -70,6 +72,91 @@ impl LiveLadder {
                 (*index, report)
             })
             .collect()
+    }
+}
+
+/// An element whose power may have changed in some scan since the last
+/// look: marked for a frame so a one-scan pulse is never lost.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pulse {
+    /// Its cell.
+    pub pos: Pos,
+    /// How often its step's read bit rose (a contact), since the last look.
+    pub rises: u32,
+}
+
+impl LiveLadder {
+    /// The elements whose power was on in some scan and off in another
+    /// since the history was taken, rung by rung. It never misses one
+    /// that changed (it may name one whose inputs changed in ways that
+    /// cancel out).
+    pub fn pulses(&self, history: &TraceHistory) -> Vec<(usize, Vec<Pulse>)> {
+        self.rungs
+            .iter()
+            .map(|(index, logic)| {
+                let mut found = Vec::new();
+                let span = Span {
+                    rung: *index,
+                    listing: &self.listing,
+                    history,
+                };
+                let (on, off) = span.eval(&logic.condition, (true, false), &mut found);
+                if on && off {
+                    for (_, pos) in &logic.outputs {
+                        found.push(Pulse {
+                            pos: *pos,
+                            rises: 0,
+                        });
+                    }
+                }
+                (*index, found)
+            })
+            .collect()
+    }
+}
+
+/// Which values each point took over many scans: (could be on, could be
+/// off), from the values each step's bits took.
+struct Span<'a> {
+    rung: usize,
+    listing: &'a Listing,
+    history: &'a TraceHistory,
+}
+
+impl Span<'_> {
+    fn eval(&self, net: &Net, pin: (bool, bool), found: &mut Vec<Pulse>) -> (bool, bool) {
+        match net {
+            Net::Series(v) => v.iter().fold(pin, |p, n| self.eval(n, p, found)),
+            Net::Parallel(v) => {
+                let all: Vec<(bool, bool)> = v.iter().map(|n| self.eval(n, pin, found)).collect();
+                (all.iter().any(|x| x.0), all.iter().all(|x| x.1))
+            }
+            Net::Leaf(e, pos) => {
+                let step = self.listing.step_of_leaf(self.rung, *pos);
+                let seen = step
+                    .and_then(|s| self.history.seen.get(s).copied())
+                    .unwrap_or(0);
+                let rises = step
+                    .and_then(|s| self.history.rises.get(s).copied())
+                    .unwrap_or(0);
+                let out = if seen == 0 {
+                    (false, true)
+                } else if let Element::Contact { kind, .. } = e {
+                    let (on, off) = (seen & SEEN_READ_ON != 0, seen & SEEN_READ_OFF != 0);
+                    let (conducts, blocks) = match kind {
+                        ContactKind::Nc => (off, on),
+                        _ => (on, off),
+                    };
+                    (pin.0 && conducts, pin.1 || blocks)
+                } else {
+                    (seen & SEEN_RESULT_ON != 0, seen & SEEN_RESULT_OFF != 0)
+                };
+                if out.0 && out.1 {
+                    found.push(Pulse { pos: *pos, rises });
+                }
+                out
+            }
+        }
     }
 }
 

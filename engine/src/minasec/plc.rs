@@ -265,6 +265,10 @@ impl Plc for MinasecPlc {
         self.machine.tracer.last()
     }
 
+    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
+        self.machine.tracer.take_history()
+    }
+
     /// The bus word the last scan left (4 bytes, little-endian: bit `a` =
     /// address `a`), the count, and each timer's value in ms (4 bytes each).
     fn image_into(&self, image: &mut Vec<u8>) {

@@ -19,7 +19,7 @@ pub use crate::io86a::Io86aPlc;
 pub use crate::minasec::MinasecPlc;
 pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
 pub use front::{Front, Io86aFront};
-pub use trace::{ScanTrace, Tracer};
+pub use trace::{ScanTrace, TraceHistory, Tracer};
 
 use crate::events::InputValue;
 use crate::limits::MAX_SIM_TIME;
@@ -163,6 +163,12 @@ pub trait Plc {
     /// left, by step number (the listing's numbering).
     fn trace(&self) -> Option<&ScanTrace> {
         None
+    }
+
+    /// While tracing: what each step did in every scan since the last
+    /// call ([`TraceHistory`]), then forgotten.
+    fn take_trace_history(&mut self) -> TraceHistory {
+        TraceHistory::default()
     }
 
     /// Copies the device memory as the last scan left it into `image`

@@ -35,12 +35,34 @@ impl ScanTrace {
     }
 }
 
+/// What each step did over the scans since it was last asked: which
+/// values its read bit and its result took ([`SEEN_READ_ON`], …), and how
+/// often its read bit rose. A one-scan pulse between two frames shows
+/// here although neither frame's scan has it.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct TraceHistory {
+    /// Flags per step.
+    pub seen: Vec<u8>,
+    /// Rises of the read bit per step (from one scan to the next).
+    pub rises: Vec<u32>,
+}
+
+/// The read bit was on in some scan.
+pub const SEEN_READ_ON: u8 = 1;
+/// The read bit was off in some scan.
+pub const SEEN_READ_OFF: u8 = 2;
+/// The result was on in some scan.
+pub const SEEN_RESULT_ON: u8 = 4;
+/// The result was off in some scan.
+pub const SEEN_RESULT_OFF: u8 = 8;
+
 /// The recorder a machine carries.
 #[derive(Clone, Debug, Default)]
 pub struct Tracer {
     on: bool,
     current: ScanTrace,
     last: Option<ScanTrace>,
+    history: TraceHistory,
 }
 
 impl Tracer {
@@ -50,6 +72,7 @@ impl Tracer {
         if !on {
             self.current = ScanTrace::default();
             self.last = None;
+            self.history = TraceHistory::default();
         }
     }
 
@@ -66,11 +89,45 @@ impl Tracer {
         }
     }
 
+    /// Adds the scan just completed to the history (whole scans only, so
+    /// a look between two scans' steps never splits one).
+    fn remember(&mut self) {
+        let h = &mut self.history;
+        let scan = &self.current;
+        if h.seen.len() < scan.ran.len() {
+            h.seen.resize(scan.ran.len(), 0);
+            h.rises.resize(scan.ran.len(), 0);
+        }
+        for step in (0..scan.ran.len()).filter(|&s| scan.ran[s]) {
+            let (read, result) = (scan.read[step], scan.result[step]);
+            h.seen[step] |= if read { SEEN_READ_ON } else { SEEN_READ_OFF }
+                | if result {
+                    SEEN_RESULT_ON
+                } else {
+                    SEEN_RESULT_OFF
+                };
+            let was = self
+                .last
+                .as_ref()
+                .and_then(|l| l.read.get(step).copied())
+                .unwrap_or(false);
+            if read && !was {
+                h.rises[step] += 1;
+            }
+        }
+    }
+
+    /// What the steps did since the last call (then forgotten).
+    pub fn take_history(&mut self) -> TraceHistory {
+        std::mem::take(&mut self.history)
+    }
+
     /// The scan ended: its record becomes the last one.
     pub fn end_scan(&mut self) {
         if !self.on {
             return;
         }
+        self.remember();
         // The older buffer is reused for the next scan.
         let mut next = self.last.take().unwrap_or_default();
         next.clear();
@@ -108,6 +165,13 @@ mod tests {
         let ran = |s: usize| second.ran.get(s).copied().unwrap_or(false);
         assert_eq!((ran(0), ran(1), ran(2)), (false, true, false));
         assert!(second.read[1] && !second.result[1]);
+        let history = t.take_history();
+        // Step 0 read on in the first scan; step 1 read on in the second
+        // (a rise from the first scan's off).
+        assert_eq!(history.seen[0], SEEN_READ_ON | SEEN_RESULT_ON);
+        assert_eq!(history.seen[1], SEEN_READ_ON | SEEN_RESULT_OFF);
+        assert_eq!(history.rises[..2], [1, 1]);
+        assert_eq!(t.take_history(), TraceHistory::default(), "taken");
         t.set(false);
         assert_eq!(t.last(), None);
     }

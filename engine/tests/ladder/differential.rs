@@ -462,10 +462,38 @@ fn check_colours(
     let (mut sim, timing) = load(machine, text)?;
     sim.set_tracing(true);
     let at = |j: u64| SimTime::from_nanos(j * timing.period.as_nanos() + timing.offset.as_nanos());
+    // Each element's power seen on / off since the history was last taken.
+    let mut seen: std::collections::HashMap<(usize, engine::ladder::Pos), (bool, bool)> =
+        std::collections::HashMap::new();
     for j in 0..timeline.len() as u64 + timing.latency {
         sim.run_until(at(j));
         if j >= timing.latency {
             let k = (j - timing.latency) as usize;
+            let trace = sim.trace().ok_or("tracing on, but no scan traced")?;
+            for (rung, report) in live.power(trace) {
+                for e in report {
+                    let s = seen.entry((rung, e.pos)).or_default();
+                    if e.power_out {
+                        s.0 = true;
+                    } else {
+                        s.1 = true;
+                    }
+                }
+            }
+            // Every third scan, as a frame would: no change is lost.
+            if k % 3 == 2 {
+                let pulses = live.pulses(&sim.take_trace_history());
+                for ((rung, pos), (on, off)) in seen.drain() {
+                    let marked = pulses
+                        .iter()
+                        .any(|(r, p)| *r == rung && p.iter().any(|x| x.pos == pos));
+                    if on && off && !marked {
+                        return Err(format!(
+                            "scan {k}: rung {rung} {pos:?} changed but is not marked\nprogram:\n{text}"
+                        ));
+                    }
+                }
+            }
             let trace = sim.trace().ok_or("tracing on, but no scan traced")?;
             let got: Vec<Vec<(bool, bool)>> = live
                 .power(trace)
