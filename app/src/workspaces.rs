@@ -142,6 +142,19 @@ impl Workspaces {
         self.with_plc(kind, |plc| ladder.show_live(plc));
     }
 
+    /// What the machine of `kind` traced since the last frame.
+    fn take_history(&self, kind: MachineKind) -> engine::plc::TraceHistory {
+        use engine::plc::Plc;
+        let take = |f: &mut dyn Plc| f.take_trace_history();
+        match kind {
+            MachineKind::MinasecU => self.minasec.sim.try_update_value(|s| take(s.machine_mut())),
+            MachineKind::Io86a => self.io86a.sim.try_update_value(|s| take(s.machine_mut())),
+            MachineKind::ArduinoPlc => self.arduino.sim.try_update_value(|s| take(s.machine_mut())),
+            MachineKind::AvrPlc => self.avr.sim.try_update_value(|s| take(s.machine_mut())),
+        }
+        .unwrap_or_default()
+    }
+
     /// Runs `f` on the machine of `kind`'s workspace.
     pub fn with_plc(&self, kind: MachineKind, f: impl FnOnce(&dyn engine::plc::Plc)) {
         match kind {
@@ -157,6 +170,8 @@ impl Workspaces {
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
         self.advance(kind, pace, wall_ms, now_ms);
         let ladder = self.ladders.of(kind);
+        let history = self.take_history(kind);
+        ladder.show_pulses(&history);
         self.with_plc(kind, |plc| {
             if ladder.recording() {
                 ladder.observe(plc);

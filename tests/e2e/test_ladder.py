@@ -737,3 +737,29 @@ def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
     el(driver, "step-instr").click()
     wait(driver, lambda: el(driver, "step-at").text.startswith("step "))
     assert "step-clock" in [b.get_attribute("data-testid") for b in driver.find_elements(By.CSS_SELECTOR, ".run-bar button")]
+
+
+def test_a_one_scan_pulse_is_marked_in_the_frame_after_it(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("io86a")
+    wait(driver, lambda: el(driver, "palette"))
+    el(driver, "new-ladder").click()
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F8, "PLS M00")
+    place(driver, Keys.F5, "M00")
+    place(driver, Keys.F8, "SET Y02")
+    assert "PLS M00" in el(driver, "il-listing").text
+    el(driver, "run").click()
+    wait(driver, lambda: el(driver, "cell-1-0-0").get_attribute("data-powered") == "0")
+    driver.execute_script("""
+        window.marks = [];
+        const cell = document.querySelector('[data-testid="cell-1-0-0"]');
+        new MutationObserver(() => window.marks.push(cell.getAttribute('data-pulsed')))
+          .observe(cell, {attributes: true, attributeFilter: ['data-pulsed']});""")
+    el(driver, "io86a-input-X00").click()
+    wait(driver, lambda: "1" in driver.execute_script("return window.marks"),
+         message="M00's one-scan pulse is marked")
+    wait(driver, lambda: el(driver, "cell-1-0-9").get_attribute("data-on") == "1", message="Y02 set by it")
+    # M00 itself is off again in every frame's scan.
+    assert el(driver, "cell-1-0-0").get_attribute("data-on") == "0"

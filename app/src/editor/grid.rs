@@ -165,6 +165,7 @@ fn RungRows(
     let first2 = r.first_step.clone();
     let on = r.on.clone();
     let powered = r.powered.clone();
+    let pulsed = r.pulsed.clone();
     let (d1, d2, d3) = (data.clone(), data.clone(), data.clone());
     view! {
         <div class="rung" role="rowgroup" data-testid=move || format!("rung-{}", n1.get())
@@ -184,6 +185,7 @@ fn RungRows(
                         let selected = selected.clone();
                         let on = on.clone();
                         let powered = powered.clone();
+                        let pulsed = pulsed.clone();
                         let data = d3.clone();
                         let number = n3.clone();
                         let cells = move || data.with(|d: &RungData| {
@@ -196,7 +198,7 @@ fn RungRows(
                                     key=|c: &CellData| c.clone()
                                     children=move |c| {
                                         let selected = selected.clone();
-                                        view! { <Cell ctx c number=number.clone() on=on.clone() powered=powered.clone() selected block grid /> }
+                                        view! { <Cell ctx c number=number.clone() on=on.clone() powered=powered.clone() pulsed=pulsed.clone() selected block grid /> }
                                     }
                                 />
                             </div>
@@ -220,6 +222,7 @@ fn Cell(
     number: ArcRwSignal<usize>,
     on: ArcRwSignal<Vec<Option<bool>>>,
     powered: ArcRwSignal<Vec<Option<bool>>>,
+    pulsed: ArcRwSignal<Vec<Option<u32>>>,
     selected: Selector<Cursor>,
     block: Memo<Option<(Cursor, Cursor)>>,
     grid: NodeRef<leptos::html::Div>,
@@ -290,6 +293,27 @@ fn Cell(
         on.with(|v| v.get(index).copied().flatten())
             .map(|b| if b { "1" } else { "0" })
     };
+    let pulses = pulsed.clone();
+    let pulse = move || {
+        pulses
+            .with(|v| v.get(index).copied().flatten())
+            .map(|_| "1")
+    };
+    let rises = move || {
+        pulsed
+            .with(|v| v.get(index).copied().flatten())
+            .filter(|n| *n > 0)
+            .map(|n| n.to_string())
+    };
+    let error = c.error.clone();
+    let rises_for_title = rises.clone();
+    // The error, else how often the contact's device rose since the last
+    // frame (a pulse too short to see).
+    let hover = move || {
+        error
+            .clone()
+            .or_else(|| rises_for_title().map(|n| format!("{n} ↑")))
+    };
     let power = move || {
         powered
             .with(|v| v.get(index).copied().flatten())
@@ -312,8 +336,11 @@ fn Cell(
             class:on=move || live() == Some("1")
             data-powered=power.clone()
             class:powered=move || power() == Some("1")
+            data-pulsed=pulse.clone()
+            class:pulsed=move || pulse().is_some()
+            data-rises=move || rises()
             data-error=c.error.clone()
-            title=c.error.clone()
+            title=hover
             aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
             aria-label=label
             style=format!("grid-row: {}; grid-column: {}", row + 1, col + 1)

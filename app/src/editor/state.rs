@@ -38,6 +38,9 @@ pub struct RungView {
     /// Each cell's power in the machine's last scan, while it runs the
     /// ladder as drawn (same places).
     pub powered: ArcRwSignal<Vec<Option<bool>>>,
+    /// Cells whose power changed in some scan since the last frame, with
+    /// how often their contact's device rose (same places).
+    pub pulsed: ArcRwSignal<Vec<Option<u32>>>,
 }
 
 /// One problem of the ladder, where it is.
@@ -916,6 +919,35 @@ impl LadderCtx {
         }
     }
 
+    /// Each frame: marks every cell whose power changed in some scan since
+    /// the last frame, so a one-scan pulse shows at any speed.
+    pub fn show_pulses(&self, history: &engine::plc::TraceHistory) {
+        let pulses = self
+            .live
+            .with_value(|l| l.as_ref().map(|l| l.pulses(history)));
+        let pulses = pulses.unwrap_or_default();
+        for view in self.rungs.get_untracked() {
+            let number = view.number.get_untracked();
+            let marked: Vec<Option<u32>> = match pulses.iter().find(|(i, _)| *i == number) {
+                Some((_, found)) if !found.is_empty() => view.data.with_untracked(|d| {
+                    d.cells
+                        .iter()
+                        .map(|c| {
+                            found
+                                .iter()
+                                .find(|p| p.pos.row == c.row && p.pos.col == c.col)
+                                .map(|p| p.rises)
+                        })
+                        .collect()
+                }),
+                _ => Vec::new(),
+            };
+            if view.pulsed.with_untracked(|old| *old != marked) {
+                view.pulsed.set(marked);
+            }
+        }
+    }
+
     /// Forgets resolved device handles (a new program was loaded).
     pub fn forget_handles(&self) {
         self.handles.update_value(std::collections::HashMap::clear);
@@ -988,6 +1020,7 @@ impl LadderCtx {
                         data: ArcRwSignal::new(d),
                         on: ArcRwSignal::new(Vec::new()),
                         powered: ArcRwSignal::new(Vec::new()),
+                        pulsed: ArcRwSignal::new(Vec::new()),
                     }
                 }
             };
