@@ -338,7 +338,7 @@ fn Cell(
             class:powered=move || power() == Some("1")
             data-pulsed=pulse.clone()
             class:pulsed=move || pulse().is_some()
-            data-rises=move || rises()
+            data-rises=rises
             data-error=c.error.clone()
             title=hover
             aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
