@@ -763,3 +763,32 @@ def test_a_one_scan_pulse_is_marked_in_the_frame_after_it(driver, base_url):
     wait(driver, lambda: el(driver, "cell-1-0-9").get_attribute("data-on") == "1", message="Y02 set by it")
     # M00 itself is off again in every frame's scan.
     assert el(driver, "cell-1-0-0").get_attribute("data-on") == "0"
+
+
+def test_inputs_driven_from_the_ladder_and_the_stepped_element(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    Select(el(driver, "speed")).select_by_value("max")
+    el(driver, "run").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0")
+    # A click on the X00 contact drives X00 (held until released).
+    el(driver, "cell-0-0-0").click()
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="Y00 latched")
+    assert el(driver, "cell-0-0-0").get_attribute("data-forced") == "1"
+    assert "X00 = 1" in el(driver, "forces").text
+    el(driver, "force-X00").find_element(By.CSS_SELECTOR, '[data-testid="force-release"]').click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0", message="released")
+    assert "X00" not in el(driver, "forces").text
+    # An output is not an input: refused with the engine's words.
+    el(driver, "cell-3-0-0").click()  # C0's contact
+    wait(driver, lambda: "only an input" in el(driver, "edit-message").text)
+    # Shift+click: X01 (stop) on for one scan drops the self-hold.
+    ActionChains(driver).key_down(Keys.SHIFT).click(el(driver, "cell-0-0-1")).key_up(Keys.SHIFT).perform()
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "0", message="stopped by a pulse")
+    assert el(driver, "cell-0-0-1").get_attribute("data-on") == "0", "the pulse is over"
+    # Step one instruction: its element is outlined, its step lit.
+    el(driver, "step-instr").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, ".ladder .cell.stepped")
+         or driver.find_elements(By.CSS_SELECTOR, ".listing .current"))
+    assert driver.find_elements(By.CSS_SELECTOR, ".listing .line.current")

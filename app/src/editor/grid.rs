@@ -287,6 +287,16 @@ fn Cell(
         if c.error.is_some() { " has-error" } else { "" },
     );
     let device = (!c.device.is_empty()).then(|| c.device.clone());
+    let is_contact = matches!(c.kind, "no" | "nc" | "rise" | "fall");
+    let driven = device.clone();
+    let forced_device = c.device.clone();
+    let forced_here = move || {
+        !forced_device.is_empty()
+            && ctx
+                .forced
+                .with(|f| f.iter().any(|(d, _)| *d == forced_device))
+    };
+    let here6 = here.clone();
     // The cell's place in its rung's cells (rows are drawn full width).
     let index = c.row * c.cols + c.col;
     let live = move || {
@@ -353,6 +363,18 @@ fn Cell(
                 }
                 focus();
             }
+            on:click=move |e: web_sys::MouseEvent| {
+                // While the machine runs the drawn ladder, a contact drives
+                // its input.
+                if ctx.monitor.get_untracked() && is_contact {
+                    if let Some(d) = &driven {
+                        super::live::drive_from_ladder(ctx, d, e.shift_key());
+                    }
+                }
+            }
+            class:stepped=move || ctx.stepped_cell.with(|s| *s == Some(here6()))
+            class:forced=forced_here.clone()
+            data-forced=move || forced_here().then_some("1")
             on:dblclick=move |_| {
                 ctx.move_to(here3());
                 ctx.dispatch(super::keys::Action::EditCell);

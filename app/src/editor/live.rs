@@ -51,6 +51,8 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
                     .with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s)))
             });
             ctx.stepped.set(stepped.get().map(|s| (s, rung)));
+            ctx.stepped_cell
+                .set(stepped.get().and_then(|s| ctx.cell_of_step(s)));
         }
     };
     view! {
@@ -118,6 +120,87 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
                     }}
                 </tbody>
             </table>
+        </section>
+    }
+}
+
+/// A click on a contact while the machine runs the drawn ladder: its
+/// device, when the machine takes it as an input, toggles (held until
+/// released from the force list); with Shift it is on for one scan.
+pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
+    let Some(workspaces) = use_context::<Workspaces>() else {
+        return;
+    };
+    let t = super::texts::texts(ctx.page.lang.get_untracked());
+    let mut refused = None;
+    let mut held = None;
+    workspaces.operate(ctx.machine, |plc| {
+        let Ok(d) = plc.device(device) else {
+            return;
+        };
+        let on = engine::events::InputValue::Int(1);
+        if let Err(e) = plc.check_input(d, on) {
+            refused = Some(e.to_string());
+            return;
+        }
+        if pulse {
+            let off = engine::events::InputValue::Int(0);
+            let _ = plc.apply(Command::SetInput(d, on));
+            plc.step_scan();
+            let _ = plc.apply(Command::SetInput(d, off));
+            held = Some(false);
+        } else {
+            let now = plc.read(d) != 0;
+            let value = engine::events::InputValue::Int(i64::from(!now));
+            let _ = plc.apply(Command::SetInput(d, value));
+            held = Some(!now);
+        }
+    });
+    if let Some(why) = refused {
+        ctx.message
+            .set(Some(format!("{device}: {why} ({})", t.not_an_input)));
+        return;
+    }
+    if let Some(value) = held {
+        ctx.forced.update(|f| {
+            f.retain(|(d, _)| d != device);
+            f.push((device.to_string(), value));
+        });
+    }
+}
+
+/// `[data-testid=forces]`: the inputs held from the ladder, each with
+/// its value and a release.
+#[component]
+pub fn ForceList(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let workspaces = use_context::<Workspaces>();
+    let release = move |device: String| {
+        if let Some(w) = workspaces {
+            w.operate(ctx.machine, |plc| {
+                if let Ok(d) = plc.device(&device) {
+                    let _ = plc.apply(Command::ReleaseInput(d));
+                }
+            });
+        }
+        ctx.forced.update(|f| f.retain(|(d, _)| *d != device));
+    };
+    view! {
+        <section class="forces-pane" data-testid="forces">
+            <h3>{move || t().forces}</h3>
+            <ul>
+                {move || ctx.forced.get().into_iter().map(|(device, value)| {
+                    let d = device.clone();
+                    view! {
+                        <li data-testid=format!("force-{device}")>
+                            <b>{device.clone()}</b> " = " {u8::from(value)} " "
+                            <button type="button" data-testid="force-release" on:click=move |_| release(d.clone())>
+                                {move || t().release}
+                            </button>
+                        </li>
+                    }
+                }).collect_view()}
+            </ul>
         </section>
     }
 }

@@ -81,6 +81,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                     <side::ListingPane ctx on_pick=refocus />
                     <side::ProblemsPane ctx on_pick=refocus />
                     <live::WatchTable ctx />
+                    <live::ForceList ctx />
                 </div>
             </div>
             <Show when=move || ctx.tests_open.get()>

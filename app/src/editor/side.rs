@@ -47,6 +47,7 @@ pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                                     class="line"
                                     class:step=step.is_some()
                                     class:lit=lit
+                                    class:current=move || step.is_some() && ctx.stepped.with(|s| s.map(|x| x.0) == step)
                                     data-step=step.map(|s| s.to_string())
                                     on:click=move |_| {
                                         let rung = step.and_then(|s| ctx.listing.with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s))));

@@ -157,6 +157,13 @@ pub struct LadderCtx {
     /// The ladder the machine runs, compiled with its source map, from
     /// Run until the next edit: the colours come from it.
     live: StoredValue<Option<engine::ladder::live::LiveLadder>>,
+    /// The element the last single instruction came from.
+    pub stepped_cell: RwSignal<Option<Cursor>>,
+    /// Run was pressed and nothing edited since: a click on a contact
+    /// drives its input (docs/editor.md, "Inputs from the ladder").
+    pub monitor: RwSignal<bool>,
+    /// Inputs held from the ladder at a value until released.
+    pub forced: RwSignal<Vec<(String, bool)>>,
 }
 
 /// What showing a shared project set aside: its settings (applied when
@@ -224,6 +231,9 @@ impl LadderCtx {
             watch_values: RwSignal::new(Vec::new()),
             stepped: RwSignal::new(None),
             live: StoredValue::new(None),
+            stepped_cell: RwSignal::new(None),
+            monitor: RwSignal::new(false),
+            forced: RwSignal::new(Vec::new()),
         };
         ctx.refresh(false);
         ctx
@@ -767,6 +777,9 @@ impl LadderCtx {
         if edited {
             // The machine no longer runs the ladder as drawn.
             self.live.set_value(None);
+            if self.monitor.get_untracked() {
+                self.monitor.set(false);
+            }
         }
         // A shared project is not saved until it is kept.
         if edited && !self.shared.get_untracked() {
@@ -850,6 +863,7 @@ impl LadderCtx {
         match live {
             Ok(l) => {
                 self.live.set_value(Some(l));
+                self.monitor.set(true);
                 true
             }
             Err(_) => false,
@@ -946,6 +960,18 @@ impl LadderCtx {
                 view.pulsed.set(marked);
             }
         }
+    }
+
+    /// The element step `step` reads or computes, by the source map.
+    pub fn cell_of_step(&self, step: usize) -> Option<Cursor> {
+        self.listing.with_untracked(|l| {
+            let l = l.as_ref()?;
+            let s = l
+                .sources
+                .iter()
+                .find(|s| l.step_at_line(s.line) == Some(step))?;
+            Some(Cursor::new(s.rung, s.pos.row, s.pos.col))
+        })
     }
 
     /// Forgets resolved device handles (a new program was loaded).

@@ -75,6 +75,9 @@ pub struct EditorTexts {
     pub step_instr: &'static str,
     pub step_clock: &'static str,
     pub watch: &'static str,
+    pub forces: &'static str,
+    pub release: &'static str,
+    pub not_an_input: &'static str,
 }
 
 const EN: EditorTexts = EditorTexts {
@@ -149,6 +152,9 @@ const EN: EditorTexts = EditorTexts {
     step_instr: "Step instruction",
     step_clock: "Step clock",
     watch: "Watch",
+    forces: "Inputs held from the ladder",
+    release: "Release",
+    not_an_input: "only an input can be driven from the ladder",
 };
 
 const JA: EditorTexts = EditorTexts {
@@ -225,6 +231,9 @@ const JA: EditorTexts = EditorTexts {
     step_instr: "1命令",
     step_clock: "1クロック",
     watch: "モニタ",
+    forces: "ラダーから操作中の入力",
+    release: "解除",
+    not_an_input: "ラダーから操作できるのは入力だけです",
 };
 
 /// The editor's strings in `lang`.
