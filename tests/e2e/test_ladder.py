@@ -787,8 +787,60 @@ def test_inputs_driven_from_the_ladder_and_the_stepped_element(driver, base_url)
     ActionChains(driver).key_down(Keys.SHIFT).click(el(driver, "cell-0-0-1")).key_up(Keys.SHIFT).perform()
     wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "0", message="stopped by a pulse")
     assert el(driver, "cell-0-0-1").get_attribute("data-on") == "0", "the pulse is over"
-    # Step one instruction: its element is outlined, its step lit.
+    # Step one instruction (the first of a scan): its element is outlined,
+    # its step lit.
+    el(driver, "step-scan").click()
     el(driver, "step-instr").click()
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, ".ladder .cell.stepped")
-         or driver.find_elements(By.CSS_SELECTOR, ".listing .current"))
-    assert driver.find_elements(By.CSS_SELECTOR, ".listing .line.current")
+    wait(driver, lambda: el(driver, "step-at").text.startswith("step 0"))
+    wait(driver, lambda: "stepped" in el(driver, "cell-0-0-0").get_attribute("class"))
+    current = driver.find_elements(By.CSS_SELECTOR, ".listing .line.current")
+    assert [c.get_attribute("data-step") for c in current] == ["0"]
+
+
+def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, artifacts, tmp_path):
+    """Measures frame times (not a pass/fail speed test): 200 rungs of 10
+    columns on the AVR PLC, every coil toggling every scan, run flat out;
+    requestAnimationFrame deltas running and paused go to figures.json."""
+    rungs = []
+    for i in range(200):
+        bit = f"R{i // 8}.{i % 8}"
+        rungs.append({"cells": [[{"type": "contact", "kind": "nc", "device": bit}]
+                                + [{"type": "wire"}] * 8
+                                + [{"type": "coil", "kind": "normal", "device": bit}]]})
+    project = tmp_path / "r200.json"
+    project.write_text(json.dumps({"format": "hashigo-project", "version": 1, "machine": "avr-plc",
+                                   "ladder": {"rungs": rungs}}))
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("avr-plc")
+    wait(driver, lambda: el(driver, "palette"))
+    el(driver, "open-file").send_keys(str(project))
+    wait(driver, lambda: el(driver, "cell-199-0-9").get_attribute("data-device") == "R24.7")
+    Select(el(driver, "speed")).select_by_value("max")
+    el(driver, "run").click()
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-powered") in ("0", "1"))
+    measure = """
+        const done = arguments[arguments.length - 1];
+        const deltas = []; let last = null; const end = performance.now() + 3000;
+        function frame(t) { if (last !== null) deltas.push(t - last); last = t;
+          if (t < end) requestAnimationFrame(frame); else done(deltas); }
+        requestAnimationFrame(frame);"""
+    driver.set_script_timeout(30)
+    running = driver.execute_async_script(measure)
+    # Toggling every scan, each coil changed between any two frames.
+    assert el(driver, "cell-100-0-9").get_attribute("data-pulsed") == "1"
+    assert el(driver, "cell-199-0-0").get_attribute("data-pulsed") == "1"
+    el(driver, "pause").click()
+    paused = driver.execute_async_script(measure)
+
+    def stats(d):
+        d = sorted(d)
+        pick = lambda q: round(d[min(len(d) - 1, int(q * len(d)))], 2)
+        return {"p50": pick(0.5), "p95": pick(0.95), "max": round(d[-1], 2), "frames": len(d)}
+
+    figures_file = artifacts / "figures.json"
+    figures = json.loads(figures_file.read_text()) if figures_file.exists() else {}
+    figures["ladder_200_rungs_running_frame_ms"] = stats(running)
+    figures["ladder_200_rungs_paused_frame_ms"] = stats(paused)
+    figures_file.write_text(json.dumps(figures, indent=2) + "\n")
+    print(figures["ladder_200_rungs_running_frame_ms"], figures["ladder_200_rungs_paused_frame_ms"])
+    assert len(running) > 30 and len(paused) > 30

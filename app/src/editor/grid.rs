@@ -163,9 +163,7 @@ fn RungRows(
     let (n1, n2, n3) = (number.clone(), number.clone(), number.clone());
     let first = r.first_step.clone();
     let first2 = r.first_step.clone();
-    let on = r.on.clone();
-    let powered = r.powered.clone();
-    let pulsed = r.pulsed.clone();
+    let view = r.clone();
     let (d1, d2, d3) = (data.clone(), data.clone(), data.clone());
     view! {
         <div class="rung" role="rowgroup" data-testid=move || format!("rung-{}", n1.get())
@@ -183,9 +181,7 @@ fn RungRows(
                     key=|row| *row
                     children=move |row| {
                         let selected = selected.clone();
-                        let on = on.clone();
-                        let powered = powered.clone();
-                        let pulsed = pulsed.clone();
+                        let view = view.clone();
                         let data = d3.clone();
                         let number = n3.clone();
                         let cells = move || data.with(|d: &RungData| {
@@ -198,7 +194,8 @@ fn RungRows(
                                     key=|c: &CellData| c.clone()
                                     children=move |c| {
                                         let selected = selected.clone();
-                                        view! { <Cell ctx c number=number.clone() on=on.clone() powered=powered.clone() pulsed=pulsed.clone() selected block grid /> }
+                                        let cell_slot = view.slot(c.row * c.cols + c.col);
+                                        view! { <Cell ctx c number=number.clone() cell_slot selected block grid /> }
                                     }
                                 />
                             </div>
@@ -220,9 +217,7 @@ fn Cell(
     ctx: LadderCtx,
     c: CellData,
     number: ArcRwSignal<usize>,
-    on: ArcRwSignal<Vec<Option<bool>>>,
-    powered: ArcRwSignal<Vec<Option<bool>>>,
-    pulsed: ArcRwSignal<Vec<Option<u32>>>,
+    cell_slot: super::state::CellSlot,
     selected: Selector<Cursor>,
     block: Memo<Option<(Cursor, Cursor)>>,
     grid: NodeRef<leptos::html::Div>,
@@ -297,24 +292,15 @@ fn Cell(
                 .with(|f| f.iter().any(|(d, _)| *d == forced_device))
     };
     let here6 = here.clone();
-    // The cell's place in its rung's cells (rows are drawn full width).
-    let index = c.row * c.cols + c.col;
-    let live = move || {
-        on.with(|v| v.get(index).copied().flatten())
-            .map(|b| if b { "1" } else { "0" })
-    };
+    let super::state::CellSlot {
+        on,
+        powered,
+        pulsed,
+    } = cell_slot;
+    let live = move || on.get().map(|b| if b { "1" } else { "0" });
     let pulses = pulsed.clone();
-    let pulse = move || {
-        pulses
-            .with(|v| v.get(index).copied().flatten())
-            .map(|_| "1")
-    };
-    let rises = move || {
-        pulsed
-            .with(|v| v.get(index).copied().flatten())
-            .filter(|n| *n > 0)
-            .map(|n| n.to_string())
-    };
+    let pulse = move || pulses.get().map(|_| "1");
+    let rises = move || pulsed.get().filter(|n| *n > 0).map(|n| n.to_string());
     let error = c.error.clone();
     let rises_for_title = rises.clone();
     // The error, else how often the contact's device rose since the last
@@ -324,11 +310,7 @@ fn Cell(
             .clone()
             .or_else(|| rises_for_title().map(|n| format!("{n} ↑")))
     };
-    let power = move || {
-        powered
-            .with(|v| v.get(index).copied().flatten())
-            .map(|b| if b { "1" } else { "0" })
-    };
+    let power = move || powered.get().map(|b| if b { "1" } else { "0" });
     let focus = move || {
         if let Some(g) = grid.get() {
             let _ = g.focus();

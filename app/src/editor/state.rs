@@ -32,15 +32,55 @@ pub struct RungView {
     pub first_step: ArcRwSignal<Option<usize>>,
     /// What it shows.
     pub data: ArcRwSignal<RungData>,
-    /// Each cell's device state on the running machine (by the cell's
-    /// place in `data.cells`; `None` where the cell shows no device).
-    pub on: ArcRwSignal<Vec<Option<bool>>>,
-    /// Each cell's power in the machine's last scan, while it runs the
-    /// ladder as drawn (same places).
-    pub powered: ArcRwSignal<Vec<Option<bool>>>,
-    /// Cells whose power changed in some scan since the last frame, with
-    /// how often their contact's device rose (same places).
-    pub pulsed: ArcRwSignal<Vec<Option<u32>>>,
+    /// One live slot per cell (by the cell's place in `data.cells`): a
+    /// frame sets only the signals whose value changed, so only those
+    /// cells repaint.
+    pub slots: std::sync::Arc<std::sync::Mutex<Vec<CellSlot>>>,
+}
+
+/// A cell's live signals.
+#[derive(Clone, Default)]
+pub struct CellSlot {
+    /// Its device's state on the running machine (`None`: no device).
+    pub on: ArcRwSignal<Option<bool>>,
+    /// Its power in the machine's last scan, while it runs the ladder as
+    /// drawn.
+    pub powered: ArcRwSignal<Option<bool>>,
+    /// Its power changed in a scan since the last frame: how often its
+    /// contact's device rose.
+    pub pulsed: ArcRwSignal<Option<u32>>,
+}
+
+impl RungView {
+    /// The live slot of cell `index` (made when first asked for).
+    pub fn slot(&self, index: usize) -> CellSlot {
+        let Ok(mut slots) = self.slots.lock() else {
+            return CellSlot::default();
+        };
+        if slots.len() <= index {
+            slots.resize_with(index + 1, CellSlot::default);
+        }
+        slots[index].clone()
+    }
+
+    /// Sets each cell's value from `values` (by place; missing: `None`),
+    /// touching only the signals whose value changes.
+    fn update<T: Clone + PartialEq + Send + Sync + 'static>(
+        &self,
+        values: &[Option<T>],
+        field: impl Fn(&CellSlot) -> &ArcRwSignal<Option<T>>,
+    ) {
+        let Ok(slots) = self.slots.lock() else {
+            return;
+        };
+        for (i, slot) in slots.iter().enumerate() {
+            let new = values.get(i).cloned().flatten();
+            let signal = field(slot);
+            if signal.with_untracked(|old| *old != new) {
+                signal.set(new);
+            }
+        }
+    }
 }
 
 /// One problem of the ladder, where it is.
@@ -894,9 +934,7 @@ impl LadderCtx {
                 Some((_, p)) => view.data.with_untracked(|d| super::model::cell_power(d, p)),
                 None => Vec::new(),
             };
-            if view.powered.with_untracked(|old| *old != powered) {
-                view.powered.set(powered);
-            }
+            view.update(&powered, |s| &s.powered);
             let states: Vec<Option<bool>> = view.data.with_untracked(|d| {
                 d.cells
                     .iter()
@@ -910,9 +948,7 @@ impl LadderCtx {
                     })
                     .collect()
             });
-            if view.on.with_untracked(|old| *old != states) {
-                view.on.set(states);
-            }
+            view.update(&states, |s| &s.on);
         }
         let values: Vec<String> = self.watch.with_untracked(|w| {
             w.iter()
@@ -956,9 +992,7 @@ impl LadderCtx {
                 }),
                 _ => Vec::new(),
             };
-            if view.pulsed.with_untracked(|old| *old != marked) {
-                view.pulsed.set(marked);
-            }
+            view.update(&marked, |s| &s.pulsed);
         }
     }
 
@@ -1044,9 +1078,7 @@ impl LadderCtx {
                         number: ArcRwSignal::new(number),
                         first_step: ArcRwSignal::new(first),
                         data: ArcRwSignal::new(d),
-                        on: ArcRwSignal::new(Vec::new()),
-                        powered: ArcRwSignal::new(Vec::new()),
-                        pulsed: ArcRwSignal::new(Vec::new()),
+                        slots: Default::default(),
                     }
                 }
             };

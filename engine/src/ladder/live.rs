@@ -20,8 +20,9 @@ use crate::MachineId;
 /// A ladder compiled for a machine, ready to colour from its traces.
 #[derive(Clone, Debug)]
 pub struct LiveLadder {
-    /// The non-empty rungs' logic, with their index in the ladder.
-    rungs: Vec<(usize, RungLogic)>,
+    /// The non-empty rungs' logic, with their index in the ladder and
+    /// each leaf's step (in the network's leaf order), looked up once.
+    rungs: Vec<(usize, RungLogic, Vec<Option<usize>>)>,
     /// The compiled program and its source map.
     pub listing: Listing,
 }
@@ -41,10 +42,19 @@ impl LiveLadder {
             .enumerate()
             .filter(|(_, r)| !r.is_empty())
             .map(|(i, _)| i);
-        Ok(LiveLadder {
-            rungs: indices.zip(logic).collect(),
-            listing,
-        })
+        let rungs = indices
+            .zip(logic)
+            .map(|(i, l)| {
+                let steps = l
+                    .condition
+                    .leaves()
+                    .iter()
+                    .map(|(_, pos)| listing.step_of_leaf(i, *pos))
+                    .collect();
+                (i, l, steps)
+            })
+            .collect();
+        Ok(LiveLadder { rungs, listing })
     }
 
     /// Every element's power in the traced scan, rung by rung (ladder
@@ -54,11 +64,11 @@ impl LiveLadder {
     pub fn power(&self, trace: &ScanTrace) -> Vec<(usize, Vec<ElementPower>)> {
         self.rungs
             .iter()
-            .map(|(index, logic)| {
+            .map(|(index, logic, steps)| {
                 let mut report = Vec::new();
-                let walk = Walk {
-                    rung: *index,
-                    listing: &self.listing,
+                let mut walk = Walk {
+                    steps,
+                    next: 0,
                     trace,
                 };
                 let power = walk.eval(&logic.condition, true, &mut report);
@@ -93,11 +103,11 @@ impl LiveLadder {
     pub fn pulses(&self, history: &TraceHistory) -> Vec<(usize, Vec<Pulse>)> {
         self.rungs
             .iter()
-            .map(|(index, logic)| {
+            .map(|(index, logic, steps)| {
                 let mut found = Vec::new();
-                let span = Span {
-                    rung: *index,
-                    listing: &self.listing,
+                let mut span = Span {
+                    steps,
+                    next: 0,
                     history,
                 };
                 let (on, off) = span.eval(&logic.condition, (true, false), &mut found);
@@ -118,13 +128,14 @@ impl LiveLadder {
 /// Which values each point took over many scans: (could be on, could be
 /// off), from the values each step's bits took.
 struct Span<'a> {
-    rung: usize,
-    listing: &'a Listing,
+    /// Each leaf's step, in leaf order, and the next leaf's place.
+    steps: &'a [Option<usize>],
+    next: usize,
     history: &'a TraceHistory,
 }
 
 impl Span<'_> {
-    fn eval(&self, net: &Net, pin: (bool, bool), found: &mut Vec<Pulse>) -> (bool, bool) {
+    fn eval(&mut self, net: &Net, pin: (bool, bool), found: &mut Vec<Pulse>) -> (bool, bool) {
         match net {
             Net::Series(v) => v.iter().fold(pin, |p, n| self.eval(n, p, found)),
             Net::Parallel(v) => {
@@ -132,7 +143,8 @@ impl Span<'_> {
                 (all.iter().any(|x| x.0), all.iter().all(|x| x.1))
             }
             Net::Leaf(e, pos) => {
-                let step = self.listing.step_of_leaf(self.rung, *pos);
+                let step = self.steps.get(self.next).copied().flatten();
+                self.next += 1;
                 let seen = step
                     .and_then(|s| self.history.seen.get(s).copied())
                     .unwrap_or(0);
@@ -161,21 +173,25 @@ impl Span<'_> {
 }
 
 struct Walk<'a> {
-    rung: usize,
-    listing: &'a Listing,
+    /// Each leaf's step, in leaf order, and the next leaf's place.
+    steps: &'a [Option<usize>],
+    next: usize,
     trace: &'a ScanTrace,
 }
 
 impl Walk<'_> {
-    fn eval(&self, net: &Net, pin: bool, report: &mut Vec<ElementPower>) -> bool {
+    fn eval(&mut self, net: &Net, pin: bool, report: &mut Vec<ElementPower>) -> bool {
         match net {
             Net::Series(v) => v.iter().fold(pin, |p, n| self.eval(n, p, report)),
             Net::Parallel(v) => v.iter().fold(false, |a, n| self.eval(n, pin, report) | a),
             Net::Leaf(e, pos) => {
                 let step = self
-                    .listing
-                    .step_of_leaf(self.rung, *pos)
+                    .steps
+                    .get(self.next)
+                    .copied()
+                    .flatten()
                     .filter(|&s| self.trace.ran.get(s).copied().unwrap_or(false));
+                self.next += 1;
                 let out = match (e, step) {
                     (_, None) => false,
                     (Element::Contact { kind, .. }, Some(s)) => {
