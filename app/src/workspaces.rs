@@ -212,8 +212,10 @@ impl Workspaces {
         provide_context(ladder);
         let machine = self.machine_view(kind);
         view! {
-            <LadderEditor ctx=ladder />
-            {machine}
+            <div class="machine-view">
+                <LadderEditor ctx=ladder />
+                <div class="machine-side">{machine}</div>
+            </div>
         }
         .into_any()
     }

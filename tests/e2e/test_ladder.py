@@ -725,6 +725,10 @@ def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-powered") == "0")
     assert el(driver, "cell-0-1-0").get_attribute("data-powered") == "1"
     assert el(driver, "cell-0-0-9").get_attribute("data-powered") == "1"
+    # The counter's coil shows its count; the board's display climbs too.
+    count = lambda: el(driver, "cell-2-1-9").find_element(By.CSS_SELECTOR, ".val").get_attribute("data-value")
+    wait(driver, lambda: count() not in (None, "", "0"), timeout=30, message="the count on C0's coil")
+    wait(driver, lambda: el(driver, "seg7").text not in ("", "00"), message="the 7-segment count")
     wait(driver, lambda: "(" in el(driver, "watch-C0").text and not el(driver, "watch-C0").text.endswith("(0)"),
          timeout=30, message="the count shows in the watch table")
     # Step one scan at a time, paused.
@@ -844,3 +848,18 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, ar
     figures_file.write_text(json.dumps(figures, indent=2) + "\n")
     print(figures["ladder_200_rungs_running_frame_ms"], figures["ladder_200_rungs_paused_frame_ms"])
     assert len(running) > 30 and len(paused) > 30
+
+
+def test_an_io86a_timer_coil_shows_current_and_preset(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("io86a")
+    wait(driver, lambda: el(driver, "palette"))
+    Select(el(driver, "example")).select_by_value("timer")
+    wait(driver, lambda: "K19" in el(driver, "il-listing").text)
+    timer = driver.find_element(By.CSS_SELECTOR, '.ladder [data-device="T00"][data-kind="coil"]')
+    assert "K19" in timer.text
+    el(driver, "watch-input").send_keys("T00", Keys.ENTER)
+    el(driver, "run").click()
+    wait(driver, lambda: (timer.find_element(By.CSS_SELECTOR, ".val").get_attribute("data-value") or "0") != "0",
+         message="T00 counts on its coil")
+    wait(driver, lambda: "/K19)" in el(driver, "watch-T00").text, message="current / preset in the watch table")

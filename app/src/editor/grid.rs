@@ -296,7 +296,11 @@ fn Cell(
         on,
         powered,
         pulsed,
+        value,
     } = cell_slot;
+    let value_attr = value.clone();
+    let value_text = move || value.get().map(|v| v.to_string());
+    let value_attr = move || value_attr.get().map(|v| v.to_string());
     let live = move || on.get().map(|b| if b { "1" } else { "0" });
     let pulses = pulsed.clone();
     let pulse = move || pulses.get().map(|_| "1");
@@ -367,6 +371,7 @@ fn Cell(
             <span class="dev">{c.device.clone()}</span>
             <span class="sym">{c.symbol.clone()}</span>
             <span class="cmt">{c.comment.clone()}</span>
+            <span class="val" data-value=value_attr>{value_text}</span>
         </div>
     }
 }

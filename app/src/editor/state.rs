@@ -49,6 +49,8 @@ pub struct CellSlot {
     /// Its power changed in a scan since the last frame: how often its
     /// contact's device rose.
     pub pulsed: ArcRwSignal<Option<u32>>,
+    /// A timer's or counter's current value, on its coil.
+    pub value: ArcRwSignal<Option<i64>>,
 }
 
 impl RungView {
@@ -949,14 +951,37 @@ impl LadderCtx {
                     .collect()
             });
             view.update(&states, |s| &s.on);
+            let values: Vec<Option<i64>> = if running {
+                view.data.with_untracked(|d| {
+                    d.cells
+                        .iter()
+                        .map(|c| {
+                            let counts = c.kind == "coil"
+                                && (c.device.starts_with('T') || c.device.starts_with('C'));
+                            if !counts {
+                                return None;
+                            }
+                            self.handle(plc, &format!("{}.v", c.device))
+                                .map(|h| plc.read(h))
+                        })
+                        .collect()
+                })
+            } else {
+                Vec::new()
+            };
+            view.update(&values, |s| &s.value);
         }
         let values: Vec<String> = self.watch.with_untracked(|w| {
             w.iter()
                 .map(|name| {
                     let value = self.handle(plc, name).map(|h| plc.read(h));
                     let current = self.handle(plc, &format!("{name}.v")).map(|h| plc.read(h));
+                    let preset = self.preset_of(name);
                     match (value, current) {
-                        (Some(v), Some(c)) => format!("{v} ({c})"),
+                        (Some(v), Some(c)) => match preset {
+                            Some(k) => format!("{v} ({c}/K{k})"),
+                            None => format!("{v} ({c})"),
+                        },
                         (Some(v), None) => v.to_string(),
                         (None, Some(c)) => c.to_string(),
                         (None, None) => "?".to_string(),
@@ -1005,6 +1030,25 @@ impl LadderCtx {
                 .iter()
                 .find(|s| l.step_at_line(s.line) == Some(step))?;
             Some(Cursor::new(s.rung, s.pos.row, s.pos.col))
+        })
+    }
+
+    /// The set value the ladder gives timer or counter `device`, if any.
+    fn preset_of(&self, device: &str) -> Option<u16> {
+        self.editor.with_value(|e| {
+            e.ladder()
+                .rungs
+                .iter()
+                .flat_map(|r| r.elements())
+                .find_map(|(_, el)| match el {
+                    Element::TimerCoil { device: d, preset }
+                    | Element::CounterCoil { device: d, preset }
+                        if d == device =>
+                    {
+                        Some(*preset)
+                    }
+                    _ => None,
+                })
         })
     }
 

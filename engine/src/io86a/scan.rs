@@ -65,7 +65,9 @@ impl Machine {
         } else {
             self.end_scan();
         }
-        (index < self.program.instructions().len()).then_some(index)
+        // The step number, as the listing numbers it (MOV's operands are
+        // steps of their own).
+        (index < self.program.instructions().len()).then(|| self.program.first_step(index))
     }
 
     /// Runs to the end of the scan under way, or one whole next scan.

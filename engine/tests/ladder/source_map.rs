@@ -99,3 +99,71 @@ fn every_leaf_has_its_line_on_every_machine() {
         property(machine, 300);
     }
 }
+
+/// Step instruction walks a whole scan in listing order on every machine,
+/// and each step it names is a step of the listing (so the page can point
+/// at its element).
+#[test]
+fn step_instruction_walks_the_scan_in_listing_order() {
+    use engine::ladder::{Element, Rung};
+    use engine::plc::{new_plc, Command};
+    let devices = |m: MachineId| match m {
+        MachineId::MinasecU => ("X00", "X01", "Y00"),
+        MachineId::Io86a => ("X00", "X01", "Y00"),
+        MachineId::AvrPlc => ("R4.0", "R4.1", "R5.0"),
+        MachineId::ArduinoPlc => ("X000", "X001", "Y000"),
+    };
+    for machine in MachineId::ALL {
+        let (a, b, y) = devices(machine);
+        let rung = Rung {
+            cells: vec![
+                vec![
+                    Some(Element::no(a)),
+                    Some(Element::nc(b)),
+                    Some(Element::coil(y)),
+                ],
+                vec![Some(Element::no(y))],
+            ],
+            links: vec![engine::ladder::Link { row: 0, col: 1 }],
+            ..Rung::default()
+        };
+        let ladder = Ladder {
+            rungs: vec![rung.clone(), rung],
+            ..Ladder::default()
+        };
+        let listing = compile_listing(&ladder, machine, Options::default()).expect("compiles");
+        let mut plc = new_plc(machine);
+        plc.load_text(&listing.text).expect("loads");
+        let _ = plc.apply(Command::Run(true));
+        // Finish the scan under way; the next step starts a scan.
+        plc.step_scan();
+        let mut steps = Vec::new();
+        let scans = plc.scans();
+        while plc.scans() == scans && steps.len() < 1000 {
+            match plc.step_instruction() {
+                Some(s) => steps.push(s),
+                None => break,
+            }
+        }
+        let program_steps = listing.step_lines.len();
+        let in_listing: Vec<usize> = steps
+            .iter()
+            .copied()
+            .filter(|&s| s < program_steps)
+            .collect();
+        assert_eq!(
+            in_listing,
+            (0..in_listing.len()).collect::<Vec<_>>(),
+            "{machine}: {steps:?}"
+        );
+        assert!(
+            in_listing.len() + 1 >= program_steps,
+            "{machine}: {steps:?} of {program_steps}"
+        );
+        // The first step reads the first contact: the page outlines it.
+        assert_eq!(
+            listing.step_of_leaf(0, engine::ladder::Pos::new(0, 0)),
+            Some(0)
+        );
+    }
+}
