@@ -434,17 +434,25 @@ impl LadderCtx {
         self.editor.with_value(f)
     }
 
-    /// Applies an edit; a refusal is shown and changes nothing.
-    pub fn apply(&self, edit: Edit) -> bool {
+    /// Applies an edit to the editor; on success the message clears and
+    /// the view is refreshed. The one place edits go in.
+    fn try_apply(&self, edit: Edit) -> Result<(), engine::ladder::edit::EditError> {
         let result = self
             .editor
             .try_update_value(|e| e.apply(edit))
             .unwrap_or(Ok(()));
-        match result {
+        if result.is_ok() {
+            self.message.set(None);
+            self.refresh(true);
+        }
+        result
+    }
+
+    /// Applies an edit; a refusal is shown and changes nothing.
+    pub fn apply(&self, edit: Edit) -> bool {
+        match self.try_apply(edit) {
             Ok(()) => {
-                self.message.set(None);
                 self.anchor.set(None);
-                self.refresh(true);
                 true
             }
             Err(e) => {
@@ -642,15 +650,9 @@ impl LadderCtx {
                 element,
             }
         };
-        let result = self
-            .editor
-            .try_update_value(|e| e.apply(edit))
-            .unwrap_or(Ok(()));
-        match result {
+        match self.try_apply(edit) {
             Ok(()) => {
                 self.entry.set(None);
-                self.message.set(None);
-                self.refresh(true);
                 true
             }
             Err(e) => refuse(e.to_string()),

@@ -17,8 +17,7 @@ use crate::state::Ctx;
 use crate::storage;
 
 /// The seed's self-holding example, the text a fresh workspace opens with.
-pub const SELF_HOLD: &str = "; Arduino PLC sketch: self-hold (the seed's example)\n\
-0 LD X000\n1 OR Y000\n2 ANDN X001\n3 OUT Y000\n4 JUMP 0\n";
+pub const SELF_HOLD: &str = include_str!("../../../engine/programs/arduino-plc/self-hold.txt");
 
 /// Where the workspace is saved (`SavedText`), and where an earlier
 /// version kept the plain text.

@@ -15,13 +15,7 @@ use crate::storage;
 
 /// The seed's self-holding rungs (with End_PLC), the text a fresh
 /// workspace opens with.
-pub const SELF_HOLD: &str = "; AVR simplified PLC: the seed's self-holding rungs\n\
-.equ INPUT1_R=4\n.equ INPUT1_B=Bit0\n.equ INPUT2_R=4\n.equ INPUT2_B=Bit1\n\
-.equ INPUT3_R=4\n.equ INPUT3_B=Bit2\n.equ COIL1_R=5\n.equ COIL1_B=Bit0\n\
-.equ COIL2_R=5\n.equ COIL2_B=Bit1\n.csg\n\
-.db   Load_A,INPUT1_R,INPUT1_B,0\n.db   And_A,INPUT2_R,INPUT2_B,0\n.db   Coil_A,COIL1_R,COIL1_B,0\n\
-.db   Load_A,COIL1_R,COIL1_B,0\n.db   Or_A,COIL2_R,COIL2_B,0\n.db   And_B,INPUT3_R,INPUT3_B,0\n\
-.db   Coil_A,COIL2_R,COIL2_B,0\n.db   End_PLC,0,0,0\n";
+pub const SELF_HOLD: &str = include_str!("../../../engine/programs/avr-plc/self-hold.asm");
 
 /// Where the workspace is saved (`SavedText`), and where an earlier
 /// version kept the plain text.
