@@ -120,21 +120,10 @@ fn check(machine: MachineId, rungs: &[RungLogic], timeline: &[Vec<bool>]) -> Res
         })
     };
     let watched: Vec<&str> = p.outputs.iter().copied().filter(|d| mentioned(d)).collect();
-    let mut reference = Reference::new(logic, 10).map_err(|e| format!("{e:?}"))?;
-    let latency = latency(machine);
-    // A machine whose inputs wait for a scan boundary has run scans with
-    // every input off before the first vector arrives.
-    for _ in 1..latency {
-        reference.scan();
-    }
     let mut expected = Vec::new();
-    for inputs in timeline {
-        for (d, &on) in p.inputs.iter().zip(inputs) {
-            reference.set(d, on);
-        }
-        reference.scan();
+    reference_run(machine, logic, timeline, |reference, _| {
         expected.push(watched.iter().map(|d| reference.get(d)).collect::<Vec<_>>());
-    }
+    })?;
     let got = machine_run(machine, &text, p.inputs, timeline, &watched)?;
     if let Some(read) = (0..expected.len()).find(|&j| got[j] != expected[j]) {
         let drawn: Vec<String> = rungs
@@ -158,6 +147,32 @@ fn check(machine: MachineId, rungs: &[RungLogic], timeline: &[Vec<bool>]) -> Res
         ));
     }
     Ok(true)
+}
+
+/// Runs the reference evaluator over `timeline` as `machine` sees it (a
+/// scan per input vector, after the scans a latched machine runs before
+/// the first), calling `each` after every vector's scan with its powers.
+fn reference_run(
+    machine: MachineId,
+    logic: Vec<RungLogic>,
+    timeline: &[Vec<bool>],
+    mut each: impl FnMut(&Reference, Vec<Vec<engine::ladder::eval::ElementPower>>),
+) -> Result<(), String> {
+    let p = pool(machine);
+    let mut reference = Reference::new(logic, 10).map_err(|e| format!("{e:?}"))?;
+    // A machine whose inputs wait for a scan boundary has run scans with
+    // every input off before the first vector arrives.
+    for _ in 1..latency(machine) {
+        reference.scan();
+    }
+    for inputs in timeline {
+        for (d, &on) in p.inputs.iter().zip(inputs) {
+            reference.set(d, on);
+        }
+        let powers = reference.scan();
+        each(&reference, powers);
+    }
+    Ok(())
 }
 
 /// Runs `text` on `machine` with one input vector a scan; returns the
@@ -258,9 +273,11 @@ fn differential(machine: MachineId, cases: u32) {
     property(machine, cases, check);
 }
 
-type Check = fn(MachineId, &[RungLogic], &[Vec<bool>]) -> Result<bool, String>;
+pub type Check = fn(MachineId, &[RungLogic], &[Vec<bool>]) -> Result<bool, String>;
 
-fn property(machine: MachineId, cases: u32, check: Check) {
+/// Runs `check` over `cases` random ladders and timelines for `machine`;
+/// most of them must fit the machine.
+pub fn property(machine: MachineId, cases: u32, check: Check) {
     let p: &'static Pool = Box::leak(Box::new(pool(machine)));
     let mut runner = TestRunner::new(Config {
         cases,
@@ -446,18 +463,8 @@ fn check_colours(
         Err(e) => return Err(format!("compile failed: {e:?}")),
     };
     let p = pool(machine);
-    let mut reference = Reference::new(logic, 10).map_err(|e| format!("{e:?}"))?;
-    let latency = latency(machine);
-    for _ in 1..latency {
-        reference.scan();
-    }
     let mut expected = Vec::new();
-    for inputs in timeline {
-        for (d, &on) in p.inputs.iter().zip(inputs) {
-            reference.set(d, on);
-        }
-        expected.push(reference.scan());
-    }
+    reference_run(machine, logic, timeline, |_, powers| expected.push(powers))?;
     let text = &live.listing.text;
     let (mut sim, timing) = load(machine, text)?;
     sim.set_tracing(true);
