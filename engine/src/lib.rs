@@ -17,6 +17,7 @@ pub mod limits;
 pub mod machine_id;
 pub mod minasec;
 pub mod plc;
+pub mod record;
 pub mod scan_timer;
 pub mod time;
 

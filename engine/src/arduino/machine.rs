@@ -239,6 +239,11 @@ impl Machine {
         }
     }
 
+    /// When the next step runs; `None` while disabled.
+    pub fn next_step_at(&self) -> Option<SimTime> {
+        self.enabled.then(|| self.clock.next())
+    }
+
     /// Runs every step due at or before `t`.
     pub fn run_until(&mut self, t: SimTime) {
         while self.enabled && self.clock.fire_until(t).is_some() {

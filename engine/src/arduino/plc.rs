@@ -197,6 +197,21 @@ impl Plc for ArduinoPlc {
         i64::from(pins & 1)
     }
 
+    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+        let n = device.0 as u8;
+        let pins = if n >= 8 {
+            image.get(1)? >> (n - 8)
+        } else {
+            image.first()? >> n
+        };
+        Some(i64::from(pins & 1))
+    }
+
+    /// The next step's time: a pass ends wherever the program jumps to 0.
+    fn next_scan_end(&self) -> Option<SimTime> {
+        self.machine.next_step_at()
+    }
+
     plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {

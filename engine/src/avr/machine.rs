@@ -196,6 +196,15 @@ impl Machine {
         (index < self.program.instructions().len()).then_some(index)
     }
 
+    /// When the scan being stepped ends (now) or the next one runs.
+    pub fn next_scan_end(&self) -> SimTime {
+        if self.in_scan.is_some() {
+            self.now()
+        } else {
+            self.clock.next()
+        }
+    }
+
     /// Runs to the end of the scan under way, or one whole next scan.
     pub fn step_scan(&mut self) {
         if self.in_scan.is_some() {

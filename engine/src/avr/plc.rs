@@ -179,6 +179,25 @@ impl Plc for AvrPlc {
         }
     }
 
+    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+        let registers = self.machine.last_scan_registers().len();
+        match device.0 {
+            h if h >= TIMER => {
+                let at = registers + 2 * (h - TIMER) as usize;
+                plc::image_bytes(image, at).map(|b| i64::from(u16::from_le_bytes(b)))
+            }
+            h => {
+                let bit = AvrPlc::bit(h);
+                let r = image.get(usize::from(bit.register))?;
+                Some(i64::from(r >> bit.bit & 1))
+            }
+        }
+    }
+
+    fn next_scan_end(&self) -> Option<SimTime> {
+        Some(self.machine.next_scan_end())
+    }
+
     plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {

@@ -143,6 +143,17 @@ pub struct Io86aPlc {
     terminal: Terminal,
 }
 
+/// A word's place among the image's words (after its 16 bytes of bits):
+/// D00-D07, T00-T31, C00-C07 (`image_into`).
+fn image_word_index(word: Word) -> Option<usize> {
+    match word {
+        Word::D(n) => Some(usize::from(n)),
+        Word::T(n) => Some(8 + usize::from(n)),
+        Word::C(n) => Some(40 + usize::from(n)),
+        Word::K(_) => None,
+    }
+}
+
 /// The handle bit that names device B.
 const DEVICE_B: u32 = 0x8000;
 
@@ -374,6 +385,33 @@ impl Plc for Io86aPlc {
             self.pair.b.run_before(t);
         }
         self.pair.a.run_before(t);
+    }
+
+    fn next_scan_end(&self) -> Option<SimTime> {
+        let a = &self.pair.a;
+        if a.scan_position().is_some() {
+            return Some(a.now());
+        }
+        a.next_scan_at()
+    }
+
+    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+        if device.0 & DEVICE_B != 0 || device.0 >= SIGNAL {
+            return None;
+        }
+        if device.0 >= VALUE {
+            let at = 16 + 2 * image_word_index(handle_word(device.0))?;
+            return plc::image_bytes(image, at).map(|b| i64::from(i16::from_le_bytes(b)));
+        }
+        let (at, n) = match handle_bit(device.0) {
+            Bit::X(n) => (0, n),
+            Bit::Y(n) => (1, n),
+            Bit::M(n) => (2 + usize::from(n / 8), n % 8),
+            Bit::S(n) => (10, n),
+            Bit::T(n) => (11 + usize::from(n / 8), n % 8),
+            Bit::C(n) => (15, n),
+        };
+        image.get(at).map(|b| i64::from(b >> n & 1))
     }
 
     fn step_scan(&mut self) {

@@ -506,6 +506,24 @@ impl Machine {
         Some(pc)
     }
 
+    /// When the scan under way ends (the falling edge that wraps the PC
+    /// to 0), if the clock runs and no setting changes meanwhile.
+    pub fn next_scan_end(&self) -> Option<SimTime> {
+        if !self.running() {
+            return None;
+        }
+        // Falling edges until the PC wraps: 256 from PC 0.
+        let falls = STEPS as u64 - u64::from(self.pc);
+        let period = self.speed.period().as_nanos();
+        let first_fall = if self.clk_high {
+            self.next_edge
+        } else {
+            self.next_edge + self.high_time()
+        };
+        let rest = (falls - 1).checked_mul(period)?;
+        first_fall.as_nanos().checked_add(rest).map(SimTime::from_nanos)
+    }
+
     /// Runs to the end of the scan (the next PC wrap).
     pub fn step_scan(&mut self) {
         let scans = self.scans;

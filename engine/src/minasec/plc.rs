@@ -242,6 +242,23 @@ impl Plc for MinasecPlc {
         }
     }
 
+    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+        let byte = |at: usize| image.get(at).copied();
+        match device.0 {
+            COUNT => byte(4).map(i64::from),
+            COUNT_CLEAR_BUTTON => None,
+            h if h & !1 == TIMER_VALUE => {
+                let at = 5 + 4 * (h & 1) as usize;
+                plc::image_bytes(image, at).map(|b| i64::from(u32::from_le_bytes(b)))
+            }
+            a => plc::image_bytes(image, 0).map(|b| i64::from(u32::from_le_bytes(b) >> a & 1)),
+        }
+    }
+
+    fn next_scan_end(&self) -> Option<SimTime> {
+        self.machine.next_scan_end()
+    }
+
     plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {

@@ -144,6 +144,14 @@ pub trait Plc {
     /// Runs the rest of the scan under way, or one whole scan.
     fn step_scan(&mut self);
 
+    /// The earliest time at which the scan under way (or the next one)
+    /// can complete, if nothing is applied meanwhile: `run_until` of it
+    /// completes at most one scan. `None` while no scan runs (HALT,
+    /// stopped). A machine that cannot tell in advance (the Arduino
+    /// sketch, whose scan ends wherever its program jumps) gives its next
+    /// step's time. Recording uses it to stop at every scan's end.
+    fn next_scan_end(&self) -> Option<SimTime>;
+
     /// Runs one instruction (the next scan's first when none is under
     /// way); returns its step number, or `None` when the machine is not
     /// running a program.
@@ -175,6 +183,11 @@ pub trait Plc {
     /// (replacing its contents; the caller keeps the buffer between
     /// frames), in the machine's own layout (docs/architecture.md).
     fn image_into(&self, image: &mut Vec<u8>);
+
+    /// A device's value in an image [`Plc::image_into`] made (on this
+    /// machine or a copy of it); `None` for a device the image does not
+    /// hold (IO86A's device B, a MINASEC-U button).
+    fn read_image(&self, image: &[u8], device: Device) -> Option<i64>;
 
     /// Whether the program runs: RUN, enabled (the AVR PLC always runs).
     fn running(&self) -> bool;
@@ -239,6 +252,11 @@ macro_rules! forward_time {
     };
 }
 pub(crate) use forward_time;
+
+/// Reads `N` little-endian bytes of `image` at `at`.
+pub(crate) fn image_bytes<const N: usize>(image: &[u8], at: usize) -> Option<[u8; N]> {
+    image.get(at..at + N)?.try_into().ok()
+}
 
 /// A new machine of kind `id`, powered on, with no program, ready to run
 /// (MINASEC-U's switch at RUN, the Arduino PLC enabled).

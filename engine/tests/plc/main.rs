@@ -5,6 +5,8 @@ use engine::events::InputValue;
 use engine::plc::{new_plc, Command, Plc, PlcError, SettingError, Warning, MAX_TICK};
 use engine::{MachineId, SimTime};
 
+mod record;
+
 /// A program in each machine's own text that copies one input to one
 /// output, and the two devices' names.
 fn copy_program(id: MachineId) -> (&'static str, &'static str, &'static str) {
