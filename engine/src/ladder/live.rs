@@ -13,6 +13,7 @@ use super::eval::ElementPower;
 use super::grid::Pos;
 use super::grid::{Ladder, LadderError};
 use super::net::{Net, RungLogic};
+use super::why::{self, Explanation};
 use crate::plc::trace::{SEEN_READ_OFF, SEEN_READ_ON, SEEN_RESULT_OFF, SEEN_RESULT_ON};
 use crate::plc::{ScanTrace, TraceHistory};
 use crate::MachineId;
@@ -64,25 +65,59 @@ impl LiveLadder {
     pub fn power(&self, trace: &ScanTrace) -> Vec<(usize, Vec<ElementPower>)> {
         self.rungs
             .iter()
-            .map(|(index, logic, steps)| {
-                let mut report = Vec::new();
-                let mut walk = Walk {
-                    steps,
-                    next: 0,
-                    trace,
-                };
-                let power = walk.eval(&logic.condition, true, &mut report);
-                for (_, pos) in &logic.outputs {
-                    report.push(ElementPower {
-                        pos: *pos,
-                        power_in: power,
-                        power_out: power,
-                    });
-                }
-                (*index, report)
-            })
+            .map(|(index, logic, steps)| (*index, rung_power(logic, steps, trace)))
             .collect()
     }
+
+    /// Why the power at `target` in rung `rung` (ladder index) is what it
+    /// was in the traced scan ([`why::explain`]); `None` for an empty
+    /// rung or a cell that is neither a contact nor an output.
+    pub fn explain(&self, trace: &ScanTrace, rung: usize, target: Pos) -> Option<Explanation> {
+        let (_, logic, steps) = self.rungs.iter().find(|(i, _, _)| *i == rung)?;
+        let report = rung_power(logic, steps, trace);
+        let conducts: Vec<bool> = logic
+            .condition
+            .leaves()
+            .iter()
+            .enumerate()
+            .map(|(i, (e, _))| {
+                let read = steps
+                    .get(i)
+                    .copied()
+                    .flatten()
+                    .filter(|&s| trace.ran.get(s).copied().unwrap_or(false))
+                    .is_some_and(|s| trace.read[s]);
+                let p = report[i];
+                why::leaf_conducts(e, read, p.power_in, p.power_out)
+            })
+            .collect();
+        why::explain(logic, target, &conducts)
+    }
+
+    /// The ladder index and logic of every non-empty rung.
+    pub fn rungs(&self) -> impl Iterator<Item = (usize, &RungLogic)> {
+        self.rungs.iter().map(|(i, l, _)| (*i, l))
+    }
+}
+
+/// One rung's elements' power in the traced scan: its leaves in
+/// [`Net::leaves`] order, then its outputs.
+fn rung_power(logic: &RungLogic, steps: &[Option<usize>], trace: &ScanTrace) -> Vec<ElementPower> {
+    let mut report = Vec::new();
+    let mut walk = Walk {
+        steps,
+        next: 0,
+        trace,
+    };
+    let power = walk.eval(&logic.condition, true, &mut report);
+    for (_, pos) in &logic.outputs {
+        report.push(ElementPower {
+            pos: *pos,
+            power_in: power,
+            power_out: power,
+        });
+    }
+    report
 }
 
 /// An element whose power may have changed in some scan since the last

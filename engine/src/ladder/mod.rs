@@ -22,6 +22,7 @@ pub mod plcopen;
 pub mod project;
 pub mod share;
 pub mod target;
+pub mod why;
 
 pub use element::{CoilKind, ContactKind, Element, TimerKind};
 pub use grid::{Ladder, LadderError, LadderErrorKind, Link, Pos, Rung};

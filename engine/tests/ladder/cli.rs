@@ -158,3 +158,68 @@ fn compile_refuses_listings_and_xml_needs_a_machine() {
         text(&out.stderr)
     );
 }
+
+fn why(program: &str, events: &str, at: &str, device: &str, extra: &[&str]) -> (i32, String, String) {
+    let mut args = vec![
+        "why", "--program", program, "--input", events, "--at", at, "--device", device,
+    ];
+    args.extend_from_slice(extra);
+    let out = hashigo(&args, "");
+    (
+        out.status.code().unwrap_or(-1),
+        text(&out.stdout),
+        text(&out.stderr),
+    )
+}
+
+#[test]
+fn why_names_the_stop_button_that_turned_the_seeds_lamp_off() {
+    let tmp = Temp::new("why-seed");
+    let events = tmp.file("stop.csv", "0.5s,X00,1\n0.7s,X00,0\n3s,X01,1\n");
+    let json = tmp.file("seed.json", SEED_JSON);
+    // Running, then stopped: the NC X01 contact is what blocks Y00.
+    let (code, before, err) = why(&json, &events, "2s", "Y00", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(before.starts_with("Y00 = 1 at 2000 ms"), "{before}");
+    assert!(before.contains("would lose power if any one of these changed"), "{before}");
+    assert!(before.contains("contact Y00; Y00 = 1"), "{before}");
+    assert!(before.contains("driven by rung 1"), "{before}");
+    let (code, after, err) = why(&json, &events, "4s", "Y00", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(after.starts_with("Y00 = 0 at 4000 ms"), "{after}");
+    assert!(after.contains("gets no power"), "{after}");
+    let x01 = after
+        .lines()
+        .find(|l| l.contains("NC contact X01"))
+        .unwrap_or_else(|| panic!("X01 named: {after}"));
+    assert!(x01.contains("X01 = 1, since 30"), "changed at about 3 s: {x01}");
+    assert!(x01.contains("an input"), "{x01}");
+    // The same program as text is explained through its ladder.
+    let (code, text_out, err) = why(SEED_IL, &events, "4s", "Y00", &["--machine", "minasec-u"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text_out.contains("NC contact X01"), "{text_out}");
+}
+
+#[test]
+fn why_follows_a_timer_upstream_and_refuses_an_unknown_device() {
+    let tmp = Temp::new("why-timer");
+    let program = concat!(env!("CARGO_MANIFEST_DIR"), "/programs/io86a/timer.il");
+    let events = tmp.file("x00.csv", "100ms,X00,1\n");
+    let io = ["--machine", "io86a"];
+    // 1 s after X00: T00 (1.9 s) not yet up, so Y01 waits for it.
+    let (code, out, err) = why(program, &events, "1100ms", "Y01", &io);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Y01 = 0"), "{out}");
+    let t00 = out
+        .lines()
+        .find(|l| l.contains("contact T00"))
+        .unwrap_or_else(|| panic!("T00 named: {out}"));
+    assert!(t00.contains("driven by rung"), "the timer coil's rung: {t00}");
+    let (code, out, err) = why(program, &events, "2500ms", "Y01", &io);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Y01 = 1"), "{out}");
+    let (code, out, err) = why(program, &events, "1s", "Q7", &io);
+    assert_eq!(code, 2, "{out}");
+    assert!(err.starts_with("error: --device: unknown device"), "{err}");
+    assert!(out.is_empty());
+}

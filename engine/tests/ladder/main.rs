@@ -12,3 +12,4 @@ mod seed;
 mod share;
 mod source_map;
 mod strategies;
+mod why;

@@ -38,6 +38,33 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
     }
 }
 
+/// `--input`'s events, if given; its problems go to `problems`.
+pub fn read_events(
+    args: &Args,
+    problems: &mut Problems,
+) -> Option<(SourceFile, Vec<engine::events::InputEvent>)> {
+    match args.optional("input") {
+        Ok(Some(path)) => match SourceFile::read(path) {
+            Ok(source) => match parse_events(&source.text) {
+                Ok(events) => Some((source, events)),
+                Err(errors) => {
+                    problems.extend(source.located(&errors));
+                    None
+                }
+            },
+            Err(e) => {
+                problems.push(e);
+                None
+            }
+        },
+        Ok(None) => None,
+        Err(e) => {
+            problems.push(e);
+            None
+        }
+    }
+}
+
 /// Checks the rest of `hashigo run`'s options against `plc` and runs it;
 /// `problems` already found are reported with any new ones.
 fn run_with(
@@ -62,26 +89,7 @@ fn run_with(
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
     problems.extend(apply_settings(plc.as_mut(), args, defaults));
-    let events = match args.optional("input") {
-        Ok(Some(path)) => match SourceFile::read(path) {
-            Ok(source) => match parse_events(&source.text) {
-                Ok(events) => Some((source, events)),
-                Err(errors) => {
-                    problems.extend(source.located(&errors));
-                    None
-                }
-            },
-            Err(e) => {
-                problems.push(e);
-                None
-            }
-        },
-        Ok(None) => None,
-        Err(e) => {
-            problems.push(e);
-            None
-        }
-    };
+    let events = read_events(args, &mut problems);
     if args.optional("program") == Ok(Some("-")) && args.optional("input") == Ok(Some("-")) {
         problems.push(
             "--program - and --input - both read standard input: give one of them as a file"

@@ -9,6 +9,7 @@ mod input;
 mod share;
 mod source;
 mod test;
+mod why;
 
 use std::process::ExitCode;
 
@@ -23,6 +24,8 @@ usage: hashigo <command> [options]
   share    --program FILE [--machine ID]      (prints the share link's fragment)
   unshare  FRAGMENT|URL                       (prints the project as JSON)
   test     --program P.json [--machine ID] [--junit FILE]
+  why      --machine ID --program FILE [--input EVENTS.csv] [--set NAME=VALUE]...
+           --at TIME --device DEV       (why DEV is on or off at the end of that scan)
 machines: minasec-u, io86a, avr-plc, arduino-plc";
 
 fn main() -> ExitCode {
@@ -42,6 +45,7 @@ fn main() -> ExitCode {
         "compile" => commands::compile(rest),
         "share" => share::share(rest),
         "unshare" => share::unshare(rest),
+        "why" => why::why(rest),
         "help" | "--help" | "-h" => {
             println!("{USAGE}");
             Ok(())

@@ -2,6 +2,7 @@
 //! machine of its kind, through the engine's one machine interface.
 
 use engine::ladder::compile::{compile as compile_ladder, Options};
+use engine::ladder::decompile::decompile_text;
 use engine::ladder::{plcopen, Project};
 use engine::plc::{new_plc, Command, Plc, PlcError};
 use engine::{MachineId, SimTime};
@@ -27,6 +28,9 @@ pub struct Source {
     pub settings: Settings,
     /// Where those settings came from, for their errors.
     pub name: String,
+    /// The file as read, and its format.
+    pub file: SourceFile,
+    pub format: Format,
 }
 
 /// `--machine`, when given.
@@ -89,7 +93,9 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
     Ok(Source {
         plc,
         settings,
-        name: source.name,
+        name: source.name.clone(),
+        file: source,
+        format,
     })
 }
 
@@ -171,11 +177,40 @@ pub fn read_project(
     Ok((Project::new(machine, ladder), Vec::new()))
 }
 
+/// The ladder a `--program` stands for: a ladder file's project, or a
+/// program text decompiled (an AVR source with `Scan` = `scan_ms`).
+pub fn ladder_project(
+    args: &Args,
+    source: &SourceFile,
+    format: Format,
+    flag: Option<MachineId>,
+    scan_ms: u32,
+) -> Result<Project, Problems> {
+    Ok(match format {
+        Format::Json | Format::Xml => read_project(&source, format, flag)?.0,
+        Format::Il | Format::Asm => {
+            let machine = match flag {
+                Some(m) => m,
+                None => MachineId::parse(args.required("machine").map_err(one)?)
+                    .map_err(|e| one(e.to_string()))?,
+            };
+            let ladder = decompile_text(machine, &source.text, scan_ms).map_err(|e| match e {
+                engine::ladder::decompile::TextError::Program(problems) => problems
+                    .iter()
+                    .map(|p| format!("{}:{}: {}", source.name, p.line, p.error))
+                    .collect(),
+                other => one(format!("{}: {other}", source.name)),
+            })?;
+            Project::new(machine, ladder)
+        }
+    })
+}
+
 /// The `Scan` symbol of AVR sources: the scan period in ms from the last
 /// `--set scan=`, else the project's, else 10. A bad value is one problem,
 /// worded as the settings check words it (so a run that also applies the
 /// settings reports it once).
-fn avr_scan_ms(
+pub fn avr_scan_ms(
     args: &Args,
     source: &str,
     project: &[(String, String, usize)],

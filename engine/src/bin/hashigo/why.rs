@@ -1,0 +1,214 @@
+//! `hashigo why` (cli.md): runs to `--at` and explains a device's state
+//! at the end of that scan with the page's own explanation
+//! (`engine::ladder::why`): the elements that block or carry its power,
+//! each device's state, the rungs that drive it and when it last changed.
+
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+use engine::ladder::compile::Options;
+use engine::ladder::live::LiveLadder;
+use engine::ladder::why::{causes, deciding_output, Explanation};
+use engine::ladder::Ladder;
+use engine::plc::{Command, Device, Plc};
+use engine::record::run_scans;
+use engine::{MachineId, SimTime};
+
+use crate::args::Args;
+use crate::commands::read_events;
+use crate::input::Format;
+use crate::source::{self, apply_settings, ladder_project, load, located, one, Problems};
+
+/// When a watched device last changed: (time, scan) or never.
+type Changes = BTreeMap<String, (Device, i64, Option<(SimTime, u64)>)>;
+
+/// `hashigo why`.
+pub fn why(rest: &[String]) -> Result<(), Problems> {
+    let args = Args::parse(
+        rest,
+        &[
+            "machine", "program", "format", "set", "input", "at", "device",
+        ],
+    )
+    .map_err(one)?;
+    let source = load(&args)?;
+    let mut plc = source.plc;
+    let machine = plc.id();
+    let scan_ms = if machine == MachineId::AvrPlc {
+        source::avr_scan_ms(&args, &source.name, &source.settings)?
+    } else {
+        10
+    };
+    let flag = Some(machine);
+    let project = ladder_project(&args, &source.file, source.format, flag, scan_ms)?;
+    let ladder = project.ladder;
+    // The ladder's own compiled program runs, so that its source map
+    // names each contact's step (a text program is its decompiled ladder).
+    let live = LiveLadder::new(&ladder, machine, Options {
+        avr_scan_ms: scan_ms,
+    })
+    .map_err(|errors| {
+        errors
+            .iter()
+            .map(|e| format!("{}: {e}", source.name))
+            .collect::<Vec<_>>()
+    })?;
+    let origin = match source.format {
+        Format::Il | Format::Asm => format!("{} (as its ladder)", source.name),
+        Format::Json | Format::Xml => format!("{} (compiled)", source.name),
+    };
+    plc.load_text(&live.listing.text)
+        .map_err(|e| located(&origin, e))?;
+
+    let mut problems = apply_settings(plc.as_mut(), &args, (&source.name, &source.settings));
+    let events = read_events(&args, &mut problems);
+    let at = args
+        .required("at")
+        .and_then(|t| SimTime::parse(t).map_err(|e| format!("--at: {e}")))
+        .map_err(|p| problems.push(p))
+        .ok();
+    let name = args.required("device").map_err(|p| problems.push(p)).ok();
+    let device = name.map(|n| plc.device(n).map_err(|e| problems.push(format!("--device: {e}"))));
+    let mut inputs = Vec::new();
+    if let Some((file, list)) = &events {
+        for e in list {
+            let checked = plc
+                .device(&e.device)
+                .and_then(|d| plc.check_input(d, e.value).map(|()| d));
+            match checked {
+                Ok(d) => inputs.push((e.time, d, e.value)),
+                Err(err) => problems.push(format!("{}:{}: {err}", file.name, e.line)),
+            }
+        }
+    }
+    let (Some(at), Some(name), Some(Ok(device))) = (at, name, device) else {
+        return Err(problems);
+    };
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+
+    // Every device a contact reads, to say when it last changed.
+    let mut changes: Changes = BTreeMap::new();
+    for (_, rung) in ladder.rungs.iter().enumerate() {
+        for (_, e) in rung.elements() {
+            if let engine::ladder::element::Element::Contact { device, .. } = e {
+                if let Ok(d) = plc.device(device) {
+                    changes.insert(device.clone(), (d, plc.read(d), None));
+                }
+            }
+        }
+    }
+    changes.insert(name.to_string(), (device, plc.read(device), None));
+    let mut observe = |m: &(dyn Plc + 'static)| {
+        for (d, last, changed) in changes.values_mut() {
+            let now = m.read(*d);
+            if now != *last {
+                *last = now;
+                *changed = Some((m.now(), m.scans()));
+            }
+        }
+        true
+    };
+    plc.set_tracing(true);
+    for (t, d, value) in inputs.into_iter().filter(|(t, _, _)| *t <= at) {
+        // Everything due strictly before the event runs first.
+        if let Some(before) = t.as_nanos().checked_sub(1) {
+            run_scans(plc.as_mut(), SimTime::from_nanos(before), &mut observe);
+        }
+        plc.run_before(t);
+        // Checked above: the machine takes it.
+        let _ = plc.apply(Command::SetInput(d, value));
+    }
+    run_scans(plc.as_mut(), at, &mut observe);
+
+    print!("{}", report(&ladder, &live, plc.as_ref(), name, device, &changes));
+    Ok(())
+}
+
+/// The explanation as text.
+fn report(
+    ladder: &Ladder,
+    live: &LiveLadder,
+    plc: &dyn Plc,
+    name: &str,
+    device: Device,
+    changes: &Changes,
+) -> String {
+    let mut out = String::new();
+    let value = plc.read(device);
+    let scans = plc.scans();
+    let _ = writeln!(
+        out,
+        "{name} = {value} at {} ms, end of scan {scans}{}",
+        plc.now(),
+        since(changes.get(name))
+    );
+    let Some((rung, pos)) = deciding_output(ladder, name) else {
+        let _ = writeln!(
+            out,
+            "No output of the ladder writes {name}: it is an input or driven from outside."
+        );
+        return out;
+    };
+    let why = plc.trace().and_then(|t| live.explain(t, rung, pos));
+    let Some(why) = why else {
+        let _ = writeln!(out, "Rung {} did not run in that scan.", rung + 1);
+        return out;
+    };
+    let element = ladder.rungs[rung]
+        .get(pos)
+        .map_or_else(String::new, ToString::to_string);
+    let _ = writeln!(
+        out,
+        "Rung {}, row {}, column {}: {element} {}.",
+        rung + 1,
+        pos.row + 1,
+        pos.col + 1,
+        if why.powered { "gets power" } else { "gets no power" }
+    );
+    let _ = writeln!(out, "{}", lead(&why));
+    for cause in causes(ladder, rung, &why) {
+        let _ = write!(
+            out,
+            "  rung {}, row {}, column {}: {}",
+            rung + 1,
+            cause.pos.row + 1,
+            cause.pos.col + 1,
+            cause.element
+        );
+        if let Some(d) = &cause.device {
+            let state = changes
+                .get(d)
+                .map_or_else(|| "?".to_string(), |(_, v, _)| v.to_string());
+            let _ = write!(out, "; {d} = {state}{}", since(changes.get(d)));
+            let drivers = if cause.drivers.is_empty() {
+                "an input or driven from outside".to_string()
+            } else {
+                let list: Vec<String> = cause.drivers.iter().map(|r| (r + 1).to_string()).collect();
+                format!("driven by rung {}", list.join(", "))
+            };
+            let _ = write!(out, "; {drivers}");
+        }
+        let _ = writeln!(out);
+    }
+    out
+}
+
+/// The line before the causes.
+fn lead(why: &Explanation) -> &'static str {
+    match (why.powered, why.together) {
+        (false, false) => "It would get power if any one of these changed:",
+        (false, true) => "It would get power only if all of these changed:",
+        (true, false) => "It would lose power if any one of these changed:",
+        (true, true) => "It would lose power only if all of these changed:",
+    }
+}
+
+/// `, since 1200 ms (scan 120)` or `, unchanged since power-on`.
+fn since(change: Option<&(Device, i64, Option<(SimTime, u64)>)>) -> String {
+    match change.and_then(|(_, _, c)| *c) {
+        Some((t, scan)) => format!(", since {t} ms (scan {scan})"),
+        None => ", unchanged since power-on".to_string(),
+    }
+}
