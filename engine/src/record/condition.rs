@@ -12,6 +12,8 @@ use crate::plc::{Device, Plc};
 pub struct Condition {
     /// The device's name as written.
     pub name: String,
+    /// The whole condition as written.
+    text: String,
     device: Device,
     test: Test,
     /// The device's value at the last check (for rises, falls, changes).
@@ -98,10 +100,16 @@ impl Condition {
             .map_err(|e| ConditionError::Device(e.to_string()))?;
         Ok(Condition {
             name: name.to_string(),
+            text: text.trim().to_string(),
             device,
             test,
             last: machine.read(device),
         })
+    }
+
+    /// The condition as written.
+    pub fn text(&self) -> &str {
+        &self.text
     }
 
     /// Whether it holds after the scan `machine` just completed.

@@ -16,10 +16,12 @@
 //! (or becomes plainly "dropped") as old scans are dropped.
 
 pub mod condition;
+mod recorded;
 mod run;
 mod store;
 
 pub use condition::{Condition, ConditionError};
+pub use recorded::Recorded;
 pub use run::run_scans;
 
 use std::collections::VecDeque;
@@ -50,12 +52,29 @@ enum Op {
     StepScan(SimTime),
     StepInstruction(SimTime),
     StepClock(SimTime),
+    /// The serial terminal was opened, or a line typed at it.
+    SerialOpen(SimTime),
+    Serial(SimTime, String),
 }
 
 impl Op {
+    /// Its memory, estimated.
+    fn bytes(&self) -> usize {
+        let text = match self {
+            Op::Serial(_, line) => line.len(),
+            _ => 0,
+        };
+        std::mem::size_of::<Op>() + text
+    }
+
     fn time(&self) -> SimTime {
         match self {
-            Op::Apply(t, _) | Op::StepScan(t) | Op::StepInstruction(t) | Op::StepClock(t) => *t,
+            Op::Apply(t, _)
+            | Op::StepScan(t)
+            | Op::StepInstruction(t)
+            | Op::StepClock(t)
+            | Op::SerialOpen(t)
+            | Op::Serial(t, _) => *t,
         }
     }
 }
@@ -274,8 +293,25 @@ impl<M: Plc + Clone> Recording<M> {
         ran
     }
 
+    /// Opens the serial terminal, logged and recorded.
+    pub fn serial_open(&mut self, machine: &mut M) -> Result<String, PlcError> {
+        self.log(Op::SerialOpen(machine.now()));
+        let shown = machine.serial_open();
+        self.scanned(machine);
+        shown
+    }
+
+    /// Types `line` at the serial terminal, logged and recorded (a line
+    /// can run the program, stop it or rewrite it).
+    pub fn serial(&mut self, machine: &mut M, line: &str) -> Result<String, PlcError> {
+        self.log(Op::Serial(machine.now(), line.to_string()));
+        let reply = machine.serial(line);
+        self.scanned(machine);
+        reply
+    }
+
     fn log(&mut self, op: Op) {
-        self.bytes += std::mem::size_of::<Op>();
+        self.bytes += op.bytes();
         self.ops.push_back(op);
     }
 
@@ -314,9 +350,12 @@ impl<M: Plc + Clone> Recording<M> {
             };
             self.bytes = self.bytes.saturating_sub(old.bytes(self.machine_bytes));
             let keep_from = self.chunks.front().map_or(self.ops_first, |c| c.ops_at);
-            while self.ops_first < keep_from && self.ops.pop_front().is_some() {
+            while self.ops_first < keep_from {
+                let Some(op) = self.ops.pop_front() else {
+                    break;
+                };
                 self.ops_first += 1;
-                self.bytes = self.bytes.saturating_sub(std::mem::size_of::<Op>());
+                self.bytes = self.bytes.saturating_sub(op.bytes());
             }
         }
     }
@@ -364,6 +403,12 @@ impl<M: Plc + Clone> Recording<M> {
                 Op::StepClock(_) => {
                     m.step_clock();
                 }
+                Op::SerialOpen(_) => {
+                    let _ = m.serial_open();
+                }
+                Op::Serial(_, line) => {
+                    let _ = m.serial(line);
+                }
             }
             count.more(&m);
             next += 1;
@@ -392,11 +437,9 @@ impl<M: Plc + Clone> Recording<M> {
         }
         // The log up to the replayed state: what the replay applied.
         let keep = next_op.saturating_sub(self.ops_first) as usize;
-        let dropped = self.ops.len().saturating_sub(keep);
+        let dropped: usize = self.ops.iter().skip(keep).map(Op::bytes).sum();
         self.ops.truncate(keep);
-        self.bytes = self
-            .bytes
-            .saturating_sub(dropped * std::mem::size_of::<Op>());
+        self.bytes = self.bytes.saturating_sub(dropped);
         let mut image = std::mem::take(&mut self.image);
         self.image_at(mark, &mut image);
         self.image = image;

@@ -193,3 +193,93 @@ fn the_oldest_scans_go_first_once_over_budget_and_the_rest_still_replay() {
     // 10 000 scans at 1 ms, each reading X00 and a timer.
     assert_eq!(rec.last(), 10_000);
 }
+
+/// The seed program under a recording: press start, break when the count
+/// lamp Y01 rises (the count reached 10), look five scans back.
+#[test]
+fn the_seed_breaks_when_its_count_lamp_rises_and_shows_the_scans_before() {
+    use engine::record::{Condition, Recorded};
+    let (m, inputs) = loaded(
+        MinasecPlc::new(),
+        engine::minasec::SEED_TEST_PROGRAM,
+        &["X00"],
+    );
+    let mut r = Recorded::new(m);
+    // The book's panel: RV1 1.1 s, RV2 1 s, the counter set to 10.
+    for (name, value) in [("T0", "1.1s"), ("T1", "1s"), ("C0", "10")] {
+        let setting = Command::Setting {
+            name: name.into(),
+            value: value.into(),
+        };
+        r.apply(setting).expect("a panel setting");
+    }
+    let count = r.device("C0.v").expect("count");
+    let y01 = r.device("Y01").expect("lamp");
+    let stop = Condition::parse("Y01 rises", &r).expect("condition");
+    r.set_break(Some(stop));
+    let press = |r: &mut Recorded<MinasecPlc>, on: i64| {
+        r.apply(Command::SetInput(inputs[0], InputValue::Int(on)))
+            .expect("start button");
+    };
+    press(&mut r, 1);
+    r.tick(SimTime::from_millis(200));
+    press(&mut r, 0);
+    let mut hit = None;
+    for _ in 0..600 {
+        r.tick(SimTime::from_millis(100));
+        hit = r.take_break();
+        if hit.is_some() {
+            break;
+        }
+    }
+    let hit = hit.expect("the count lamp rose within a minute");
+    assert_eq!(r.recording().last(), hit.mark, "stopped at that scan's end");
+    assert_eq!((r.read(y01), r.read(count)), (1, 10));
+    assert_eq!(r.breaks(), &[hit.mark]);
+    // Five scans back the lamp was off and the count one lower.
+    assert!(r.show(hit.mark - 5));
+    assert_eq!(r.shown(), Some(hit.mark - 5));
+    assert_eq!((r.read(y01), r.read(count)), (0, 9));
+    assert!(r.now() < r.recording().time_at(hit.mark).expect("kept"));
+    // Back to live, then resume from a past scan: the later scans go.
+    r.go_live();
+    assert_eq!(r.read(count), 10);
+    assert!(r.show(hit.mark - 5));
+    assert!(r.resume_here());
+    assert_eq!(r.recording().last(), hit.mark - 5);
+    assert_eq!(r.shown(), None);
+    assert!(r.breaks().is_empty(), "the break's scan was dropped");
+    // Run on: the same rise comes again, at the same scan.
+    for _ in 0..100 {
+        r.tick(SimTime::from_millis(100));
+        if let Some(again) = r.take_break() {
+            assert_eq!(again.mark, hit.mark, "deterministic");
+            return;
+        }
+    }
+    panic!("the rise came again");
+}
+
+/// Anything that changes the machine while a past scan is shown resumes
+/// from it; a refused command changes nothing, not even the travel.
+#[test]
+fn operating_a_past_scan_resumes_from_it_and_a_refusal_changes_nothing() {
+    use engine::record::Recorded;
+    let text = include_str!("../../programs/io86a/timer.il");
+    let (m, inputs) = loaded(Io86aPlc::new(), text, &["X00"]);
+    let mut r = Recorded::new(m);
+    r.tick(SimTime::from_millis(50));
+    let last = r.recording().last();
+    assert!(last >= 40, "{last} scans");
+    assert!(r.show(10));
+    let y00 = r.device("Y00").expect("output");
+    assert!(r
+        .apply(Command::SetInput(y00, InputValue::Int(1)))
+        .is_err());
+    assert_eq!(r.shown(), Some(10), "still travelling");
+    assert_eq!(r.recording().last(), last, "nothing dropped");
+    r.apply(Command::SetInput(inputs[0], InputValue::Int(1)))
+        .expect("X00 is an input");
+    assert_eq!(r.shown(), None, "live again, from scan 10");
+    assert_eq!(r.recording().last(), 10);
+}
