@@ -32,6 +32,12 @@ impl PeriodicClock {
         self.period
     }
 
+    /// When the clock fires for the `n`-th time from now (`n` ≥ 1).
+    pub fn nth(&self, n: u64) -> Option<SimTime> {
+        let rest = n.checked_sub(1)?.checked_mul(self.period.as_nanos())?;
+        self.next().checked_add(SimTime::from_nanos(rest))
+    }
+
     /// When the clock fires next.
     pub const fn next(&self) -> SimTime {
         self.next

@@ -239,9 +239,48 @@ impl Machine {
         }
     }
 
-    /// When the next step runs; `None` while disabled.
-    pub fn next_step_at(&self) -> Option<SimTime> {
-        self.enabled.then(|| self.clock.next())
+    /// When the pass under way ends (the step that returns to step 0), if
+    /// nothing is written meanwhile; `None` while disabled or when the
+    /// program never returns to 0 from here. The sketch has no
+    /// conditional jump, so where each step goes is fixed by the EEPROM.
+    pub fn next_pass_end(&self) -> Option<SimTime> {
+        self.nth_pass_end(1)
+    }
+
+    /// When the `n`-th pass from now ends (`n` ≥ 1): the rest of this
+    /// one, then whole passes from step 0.
+    pub fn nth_pass_end(&self, n: u64) -> Option<SimTime> {
+        if !self.enabled || n == 0 {
+            return None;
+        }
+        let rest = self.steps_to_zero(self.pc)?;
+        let whole = match n {
+            1 => 0,
+            _ => self.steps_to_zero(0)?.checked_mul(n - 1)?,
+        };
+        let steps = rest
+            .checked_add(whole)?
+            .checked_sub(1)?
+            .checked_mul(self.step_time().as_nanos())?;
+        self.clock.next().checked_add(SimTime::from_nanos(steps))
+    }
+
+    /// How many steps from `pc` until the program is back at step 0.
+    fn steps_to_zero(&self, mut pc: u16) -> Option<u64> {
+        // Past that many steps a pc repeats: the program loops elsewhere.
+        let limit = self.eeprom.len().max(256) + 2;
+        for k in 1..=limit as u64 {
+            let word = self.eeprom.get(usize::from(pc)).copied().unwrap_or(ERASED);
+            pc = match Op::decode(word) {
+                Some(Op::End) => 0,
+                Some(Op::Jump) => word & 0xFF,
+                _ => pc.wrapping_add(1),
+            };
+            if pc == 0 {
+                return Some(k);
+            }
+        }
+        None
     }
 
     /// Runs every step due at or before `t`.

@@ -207,9 +207,13 @@ impl Plc for ArduinoPlc {
         Some(i64::from(pins & 1))
     }
 
-    /// The next step's time: a pass ends wherever the program jumps to 0.
+    /// A pass ends where the program returns to step 0.
     fn next_scan_end(&self) -> Option<SimTime> {
-        self.machine.next_step_at()
+        self.machine.next_pass_end()
+    }
+
+    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
+        self.machine.nth_pass_end(n)
     }
 
     plc::forward_time!(machine);

@@ -205,6 +205,16 @@ impl Machine {
         }
     }
 
+    /// When the `n`-th scan from now ends (`n` ≥ 1).
+    pub fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
+        match (n, self.in_scan.is_some()) {
+            (0, _) => None,
+            (1, true) => Some(self.now()),
+            (_, true) => self.clock.nth(n - 1),
+            (_, false) => self.clock.nth(n),
+        }
+    }
+
     /// Runs to the end of the scan under way, or one whole next scan.
     pub fn step_scan(&mut self) {
         if self.in_scan.is_some() {

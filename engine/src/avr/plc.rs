@@ -198,6 +198,10 @@ impl Plc for AvrPlc {
         Some(self.machine.next_scan_end())
     }
 
+    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
+        self.machine.nth_scan_end(n)
+    }
+
     plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {

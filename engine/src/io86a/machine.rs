@@ -39,6 +39,10 @@ impl Timer {
 
     /// The current value in base units, capped at 32767.
     pub fn current(&self, n: u8) -> i16 {
+        // Most timers never run: no division for them.
+        if self.elapsed == SimTime::ZERO {
+            return 0;
+        }
         (self.elapsed.as_nanos() / Timer::base(n).as_nanos()).min(CURRENT_MAX) as i16
     }
 }
@@ -377,6 +381,11 @@ impl Machine {
         all.iter()
             .position(|i| *i == Instruction::End)
             .map_or(all.len(), |end| end + 1)
+    }
+
+    /// When the `n`-th scan from now runs (`n` ≥ 1); `None` while stopped.
+    pub fn nth_scan_at(&self, n: u64) -> Option<SimTime> {
+        self.running.then(|| self.clock.nth(n)).flatten()
     }
 
     /// When the next scan runs; `None` while stopped.

@@ -143,6 +143,9 @@ pub struct Io86aPlc {
     terminal: Terminal,
 }
 
+/// The image's length: 16 bytes of bits, then 48 words.
+const IMAGE_BYTES: usize = 16 + 2 * 48;
+
 /// A word's place among the image's words (after its 16 bytes of bits):
 /// D00-D07, T00-T31, C00-C07 (`image_into`).
 fn image_word_index(word: Word) -> Option<usize> {
@@ -388,11 +391,17 @@ impl Plc for Io86aPlc {
     }
 
     fn next_scan_end(&self) -> Option<SimTime> {
+        self.nth_scan_end(1)
+    }
+
+    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
         let a = &self.pair.a;
-        if a.scan_position().is_some() {
-            return Some(a.now());
+        match (n, a.scan_position().is_some()) {
+            (0, _) => None,
+            (1, true) => Some(a.now()),
+            (_, true) => a.nth_scan_at(n - 1),
+            (_, false) => a.nth_scan_at(n),
         }
-        a.next_scan_at()
     }
 
     fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
@@ -458,23 +467,33 @@ impl Plc for Io86aPlc {
     fn image_into(&self, image: &mut Vec<u8>) {
         let m = &self.pair.a;
         let scan = m.last_scan();
-        image.clear();
-        let bits = |kind: fn(u8) -> Bit, count: u8| -> u64 {
-            (0..count).fold(0, |acc, n| acc | u64::from(scan.bit(kind(n))) << n)
+        // Filled field by field in one buffer, not device by device:
+        // recording takes an image every scan (issue #16).
+        let mut buf = [0u8; IMAGE_BYTES];
+        let timers = (0..32).fold(0u32, |acc, n| acc | u32::from(scan.timers[n].on) << n);
+        let counters = (0..8).fold(0u8, |acc, n| acc | u8::from(scan.counters[n].on) << n);
+        buf[0] = scan.x;
+        buf[1] = m.output_terminals();
+        buf[2..10].copy_from_slice(&scan.m.to_le_bytes());
+        buf[10] = scan.s;
+        buf[11..15].copy_from_slice(&timers.to_le_bytes());
+        buf[15] = counters;
+        let mut put = |i: usize, w: i16| {
+            let [lo, hi] = w.to_le_bytes();
+            buf[16 + 2 * i] = lo;
+            buf[17 + 2 * i] = hi;
         };
-        image.push(bits(Bit::X, 8) as u8);
-        image.push(m.output_terminals());
-        image.extend_from_slice(&bits(Bit::M, 64).to_le_bytes());
-        image.push(bits(Bit::S, 8) as u8);
-        image.extend_from_slice(&(bits(Bit::T, 32) as u32).to_le_bytes());
-        image.push(bits(Bit::C, 8) as u8);
-        let words = (0..8)
-            .map(Word::D)
-            .chain((0..32).map(Word::T))
-            .chain((0..8).map(Word::C));
-        for w in words {
-            image.extend_from_slice(&scan.word(w).to_le_bytes());
+        for (i, &d) in scan.d.iter().enumerate() {
+            put(i, d);
         }
+        for (n, t) in (0u8..).zip(&scan.timers) {
+            put(8 + usize::from(n), t.current(n));
+        }
+        for (i, c) in scan.counters.iter().enumerate() {
+            put(40 + i, c.count);
+        }
+        image.clear();
+        image.extend_from_slice(&buf);
     }
 
     fn warnings(&self) -> Vec<Warning> {

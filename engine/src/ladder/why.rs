@@ -142,13 +142,14 @@ fn on_cost(net: &Net, state: &impl Fn(Pos) -> bool) -> (usize, Vec<Pos>) {
     match net {
         Net::Leaf(_, p) if state(*p) => (0, Vec::new()),
         Net::Leaf(_, p) => (1, vec![*p]),
-        Net::Series(v) => v.iter().map(|n| on_cost(n, state)).fold(
-            (0, Vec::new()),
-            |(n, mut set), (m, more)| {
-                set.extend(more);
-                (n + m, set)
-            },
-        ),
+        Net::Series(v) => {
+            v.iter()
+                .map(|n| on_cost(n, state))
+                .fold((0, Vec::new()), |(n, mut set), (m, more)| {
+                    set.extend(more);
+                    (n + m, set)
+                })
+        }
         Net::Parallel(v) => cheapest(v.iter().map(|n| on_cost(n, state))),
     }
 }
@@ -159,20 +160,19 @@ fn off_cost(net: &Net, state: &impl Fn(Pos) -> bool) -> (usize, Vec<Pos>) {
         Net::Leaf(_, p) if state(*p) => (1, vec![*p]),
         Net::Leaf(_, _) => (0, Vec::new()),
         Net::Series(v) => cheapest(v.iter().map(|n| off_cost(n, state))),
-        Net::Parallel(v) => v.iter().map(|n| off_cost(n, state)).fold(
-            (0, Vec::new()),
-            |(n, mut set), (m, more)| {
-                set.extend(more);
-                (n + m, set)
-            },
-        ),
+        Net::Parallel(v) => {
+            v.iter()
+                .map(|n| off_cost(n, state))
+                .fold((0, Vec::new()), |(n, mut set), (m, more)| {
+                    set.extend(more);
+                    (n + m, set)
+                })
+        }
     }
 }
 
 fn cheapest(options: impl Iterator<Item = (usize, Vec<Pos>)>) -> (usize, Vec<Pos>) {
-    options
-        .min_by_key(|(n, _)| *n)
-        .unwrap_or((0, Vec::new()))
+    options.min_by_key(|(n, _)| *n).unwrap_or((0, Vec::new()))
 }
 
 /// Whether a leaf passes power when it gets it: a contact by the bit its
@@ -216,7 +216,9 @@ pub fn causes(ladder: &Ladder, rung: usize, why: &Explanation) -> Vec<Cause> {
                 Element::Contact { device, .. } => Some(device.clone()),
                 _ => None,
             };
-            let drivers = device.as_deref().map_or_else(Vec::new, |d| drivers(ladder, d));
+            let drivers = device
+                .as_deref()
+                .map_or_else(Vec::new, |d| drivers(ladder, d));
             Some(Cause {
                 pos,
                 element,

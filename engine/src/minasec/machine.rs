@@ -75,7 +75,7 @@ pub struct Machine {
     last_scan: Option<ScanSnapshot>,
     reset_at: SimTime,
     // The fast path's decoded memory, rebuilt after any write.
-    decoded: Option<FastCode>,
+    decoded: FastCache,
     fast_path: bool,
     gate_network: bool,
     /// Per-step tracing, when on (the exact path runs meanwhile).
@@ -118,7 +118,7 @@ impl Machine {
             scans: 0,
             last_scan: None,
             reset_at: SimTime::ZERO,
-            decoded: None,
+            decoded: FastCache(None),
             fast_path: true,
             tracer: crate::plc::Tracer::default(),
             gate_network: true,
@@ -235,7 +235,7 @@ impl Machine {
     /// same memory). Steps the program does not define are erased.
     pub fn load(&mut self, program: &Program) {
         self.memory = *program.bytes();
-        self.decoded = None;
+        self.decoded = FastCache(None);
     }
 
     /// Turns the fast path off (every clock through the exact path) or on.
@@ -340,7 +340,7 @@ impl Machine {
     fn write_through(&mut self) {
         if self.write_held && self.powered {
             self.memory[usize::from(self.pc)] = self.dip;
-            self.decoded = None;
+            self.decoded = FastCache(None);
         }
     }
 
@@ -521,7 +521,15 @@ impl Machine {
             self.next_edge + self.high_time()
         };
         let rest = (falls - 1).checked_mul(period)?;
-        first_fall.as_nanos().checked_add(rest).map(SimTime::from_nanos)
+        first_fall
+            .as_nanos()
+            .checked_add(rest)
+            .map(SimTime::from_nanos)
+    }
+
+    /// One whole scan's length: 256 clocks.
+    pub fn scan_period(&self) -> SimTime {
+        SimTime::from_nanos(self.speed.period().as_nanos() * STEPS as u64)
     }
 
     /// Runs to the end of the scan (the next PC wrap).
@@ -572,6 +580,7 @@ impl Machine {
         let period = self.speed.period();
         let decoded = self
             .decoded
+            .0
             .get_or_insert_with(|| FastCode::decode(&self.memory));
         self.now = first_rise;
         let bus = u32::from(self.input_image)
@@ -594,5 +603,18 @@ impl Machine {
         // The last falling edge wraps the PC: the scan boundary.
         self.pc = 0;
         self.scan_boundary();
+    }
+}
+
+/// The fast path's code: a cache, derived from program memory, that a
+/// copy of the machine does not take along (it is rebuilt on first use).
+/// Recording copies the machine every few hundred scans; the compiled
+/// networks would make each copy cost more than the scans between.
+#[derive(Debug, Default)]
+struct FastCache(Option<FastCode>);
+
+impl Clone for FastCache {
+    fn clone(&self) -> Self {
+        FastCache(None)
     }
 }

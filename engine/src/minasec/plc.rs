@@ -259,6 +259,15 @@ impl Plc for MinasecPlc {
         self.machine.next_scan_end()
     }
 
+    /// Every scan after the one under way is 256 whole clocks.
+    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
+        let first = self.machine.next_scan_end()?;
+        let rest = n
+            .checked_sub(1)?
+            .checked_mul(self.machine.scan_period().as_nanos())?;
+        first.checked_add(SimTime::from_nanos(rest))
+    }
+
     plc::forward_time!(machine);
 
     fn scans(&self) -> u64 {

@@ -152,6 +152,17 @@ pub trait Plc {
     /// step's time. Recording uses it to stop at every scan's end.
     fn next_scan_end(&self) -> Option<SimTime>;
 
+    /// When the `n`-th scan from now ends (`n` = 1: [`Plc::next_scan_end`]),
+    /// if nothing is applied meanwhile; `None` where the machine cannot
+    /// tell. Recording runs to just before a keyframe's scan in one go.
+    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
+        if n == 1 {
+            self.next_scan_end()
+        } else {
+            None
+        }
+    }
+
     /// Runs one instruction (the next scan's first when none is under
     /// way); returns its step number, or `None` when the machine is not
     /// running a program.

@@ -152,7 +152,14 @@ mod tests {
     #[test]
     fn conditions_read_with_or_without_spaces_and_refuse_what_they_cannot() {
         let m = Io86aPlc::new();
-        for text in ["Y01 rises", "C00.v = 5", "C00.v=5", "T00 on", "X00 off", "D00 >= -3"] {
+        for text in [
+            "Y01 rises",
+            "C00.v = 5",
+            "C00.v=5",
+            "T00 on",
+            "X00 off",
+            "D00 >= -3",
+        ] {
             assert!(Condition::parse(text, &m).is_ok(), "{text}");
         }
         assert!(matches!(

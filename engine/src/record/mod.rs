@@ -37,7 +37,7 @@ pub type Mark = u64;
 
 /// A whole machine copy and image every this many scans: replaying to
 /// any scan runs at most this many scans again.
-pub const KEYFRAME_EVERY: u64 = 64;
+pub const KEYFRAME_EVERY: u64 = 256;
 
 /// The memory a recording keeps by default (64 MB).
 pub const DEFAULT_BUDGET: usize = 64 << 20;
@@ -99,9 +99,6 @@ pub struct Recording<M> {
     bytes: usize,
     /// The estimated size of one machine copy.
     machine_bytes: usize,
-    /// The last scan's image, and a buffer for the next.
-    image: Vec<u8>,
-    scratch: Vec<u8>,
     /// The machine's scan count when last seen.
     scans_seen: u64,
 }
@@ -110,10 +107,10 @@ impl<M: Plc + Clone> Recording<M> {
     /// Starts recording `machine` as it is now (mark 0), keeping at most
     /// about `budget` bytes.
     pub fn new(machine: &M, budget: usize) -> Recording<M> {
-        let machine_bytes = std::mem::size_of::<M>() + machine.listing().len();
-        let mut image = Vec::new();
-        machine.image_into(&mut image);
-        let first = Chunk::new(0, machine.clone(), 0, &image, machine.now());
+        // Its own size and about as much again on the heap (program,
+        // buffers): an estimate, cheap enough to make per recording.
+        let machine_bytes = 2 * std::mem::size_of::<M>();
+        let first = Chunk::new(0, machine.clone(), 0);
         let mut r = Recording {
             bytes: first.bytes(machine_bytes),
             chunks: VecDeque::from([first]),
@@ -121,8 +118,6 @@ impl<M: Plc + Clone> Recording<M> {
             ops_first: 0,
             budget,
             machine_bytes,
-            image,
-            scratch: Vec::new(),
             scans_seen: machine.scans(),
         };
         r.trim();
@@ -136,7 +131,7 @@ impl<M: Plc + Clone> Recording<M> {
 
     /// The last mark recorded.
     pub fn last(&self) -> Mark {
-        self.chunks.back().map_or(0, |c| c.first + c.len() as u64 - 1)
+        self.chunks.back().map_or(0, Chunk::last)
     }
 
     /// Memory in use, estimated (images, changes, machine copies, log).
@@ -144,38 +139,49 @@ impl<M: Plc + Clone> Recording<M> {
         self.bytes
     }
 
-    /// The simulated time at the end of the scan at `mark`.
-    pub fn time_at(&self, mark: Mark) -> Option<SimTime> {
-        let (chunk, i) = self.locate(mark)?;
-        Some(chunk.times[i])
+    /// The simulated time at the end of the scan at `mark` (made, as
+    /// images are, when first asked for).
+    pub fn time_at(&mut self, mark: Mark) -> Option<SimTime> {
+        let c = self.chunk_index(mark)?;
+        self.fill(c);
+        let chunk = &self.chunks[c];
+        chunk.time((mark - chunk.first) as usize)
     }
 
     /// The device image at `mark`, into `image`; false if not kept.
-    pub fn image_at(&self, mark: Mark, image: &mut Vec<u8>) -> bool {
-        match self.locate(mark) {
-            Some((chunk, i)) => {
-                chunk.image_at(i, image);
-                true
-            }
-            None => false,
-        }
+    /// Images are made when first asked for, by replaying the keyframe's
+    /// scans (recording itself copies nothing per scan), then kept.
+    pub fn image_at(&mut self, mark: Mark, image: &mut Vec<u8>) -> bool {
+        let Some(c) = self.chunk_index(mark) else {
+            return false;
+        };
+        self.fill(c);
+        let chunk = &self.chunks[c];
+        chunk.image_at((mark - chunk.first) as usize, image)
     }
 
     /// `device`'s value at every kept mark in `from..=to`, read through
     /// `machine` (the device's owner) from each scan's image; `None` where
     /// the image does not hold it.
-    pub fn values(&self, machine: &M, device: Device, from: Mark, to: Mark) -> Vec<Option<i64>> {
+    pub fn values(
+        &mut self,
+        machine: &M,
+        device: Device,
+        from: Mark,
+        to: Mark,
+    ) -> Vec<Option<i64>> {
         let from = from.max(self.first());
         let to = to.min(self.last());
         let mut out = Vec::new();
         let mut image = Vec::new();
-        for chunk in &self.chunks {
-            let end = chunk.first + chunk.len() as u64 - 1;
-            if end < from || chunk.first > to {
+        for c in 0..self.chunks.len() {
+            let (first, last) = (self.chunks[c].first, self.chunks[c].last());
+            if last < from || first > to {
                 continue;
             }
-            chunk.each_image(&mut image, |i, img| {
-                let mark = chunk.first + i as u64;
+            self.fill(c);
+            self.chunks[c].each_image(&mut image, |i, img| {
+                let mark = first + i as u64;
                 if (from..=to).contains(&mark) {
                     out.push(machine.read_image(img, device));
                 }
@@ -186,7 +192,7 @@ impl<M: Plc + Clone> Recording<M> {
 
     /// The last mark at or before `at` where `device` took the value it
     /// has at `at` (the scan it last changed), if that is kept.
-    pub fn last_change(&self, machine: &M, device: Device, at: Mark) -> Option<Mark> {
+    pub fn last_change(&mut self, machine: &M, device: Device, at: Mark) -> Option<Mark> {
         let first = self.first();
         let values = self.values(machine, device, first, at);
         let now = *values.last()?;
@@ -194,25 +200,39 @@ impl<M: Plc + Clone> Recording<M> {
         Some(first + i as u64 + 1)
     }
 
-    /// The mark whose scan ended last at or before `t`.
-    pub fn mark_at_time(&self, t: SimTime) -> Option<Mark> {
-        let mut found = None;
-        for chunk in &self.chunks {
-            if chunk.times.first().is_some_and(|&c| c > t) {
-                break;
-            }
-            let i = chunk.times.partition_point(|&c| c <= t);
-            if i > 0 {
-                found = Some(chunk.first + i as u64 - 1);
-            }
+    /// Makes chunk `c`'s images, if not all held, by replaying it with
+    /// tracing off (the images do not need it, and some machines run
+    /// faster without).
+    fn fill(&mut self, c: usize) {
+        let chunk = &self.chunks[c];
+        if chunk.filled() {
+            return;
         }
-        found
+        let mut shots: Vec<(Vec<u8>, SimTime)> = Vec::with_capacity(chunk.len());
+        let last = chunk.last();
+        let replayed = self.replay_with(last, false, |m| {
+            let mut image = Vec::new();
+            m.image_into(&mut image);
+            shots.push((image, m.now()));
+        });
+        if replayed.is_none() {
+            return;
+        }
+        let (new, old) = self.chunks[c].fill(shots.iter().map(|(i, t)| (i.as_slice(), *t)));
+        self.bytes = self.bytes.saturating_sub(old) + new;
     }
 
-    fn locate(&self, mark: Mark) -> Option<(&Chunk<M>, usize)> {
-        let c = self.chunk_index(mark)?;
+    /// The mark whose scan ended last at or before `t`.
+    pub fn mark_at_time(&mut self, t: SimTime) -> Option<Mark> {
+        // A keyframe's copy is at its first scan's end.
+        let c = self
+            .chunks
+            .partition_point(|c| c.machine.now() <= t)
+            .checked_sub(1)?;
+        self.fill(c);
         let chunk = &self.chunks[c];
-        Some((chunk, (mark - chunk.first) as usize))
+        let i = chunk.times().partition_point(|&x| x <= t);
+        Some(chunk.first + i.checked_sub(1)? as u64)
     }
 
     fn chunk_index(&self, mark: Mark) -> Option<usize> {
@@ -249,6 +269,10 @@ impl<M: Plc + Clone> Recording<M> {
         t: SimTime,
         mut stop: Option<&mut Condition>,
     ) -> Option<Break> {
+        if stop.is_none() {
+            self.run_to_keyframes(machine, t);
+            return None;
+        }
         let mut hit = None;
         run_scans(machine, t, |m| {
             self.scanned(m);
@@ -259,6 +283,37 @@ impl<M: Plc + Clone> Recording<M> {
             !holds
         });
         hit
+    }
+
+    /// With no condition to check after every scan: runs in one go to
+    /// just before each keyframe's scan (where the machine can tell when
+    /// that is), then scan by scan to it, so that the copy is taken at
+    /// that scan's end.
+    fn run_to_keyframes(&mut self, machine: &mut M, t: SimTime) {
+        loop {
+            let held = self.chunks.back().map_or(0, |c| c.len() as u64);
+            let to_keyframe = KEYFRAME_EVERY.saturating_sub(held).max(1);
+            let before = machine.scans();
+            // The scan before the keyframe's, or (next to it, or where the
+            // machine cannot tell) the next one.
+            let stride = match to_keyframe {
+                1 => None,
+                n => machine.nth_scan_end(n - 1),
+            };
+            let end = match stride.or_else(|| machine.next_scan_end()) {
+                Some(end) if end <= t => end,
+                _ => {
+                    machine.run_until(t);
+                    self.scanned(machine);
+                    return;
+                }
+            };
+            machine.run_until(end);
+            if machine.scans() == before && machine.now() >= t {
+                return;
+            }
+            self.scanned(machine);
+        }
     }
 
     /// Applies `command` to `machine` and logs it; on error nothing
@@ -315,30 +370,35 @@ impl<M: Plc + Clone> Recording<M> {
         self.ops.push_back(op);
     }
 
-    /// Records a scan if `machine` completed one since the last look.
+    /// Counts a scan if `machine` completed one since the last look, and
+    /// every [`KEYFRAME_EVERY`] scans keeps a copy of the machine. Nothing
+    /// else is copied per scan: images and times are made by replay when
+    /// first asked for, which keeps recording cheap (README: figures).
     fn scanned(&mut self, machine: &M) {
         let scans = machine.scans();
         if scans == self.scans_seen {
             return;
         }
+        // Scans run in one go count together; the last of them ends now.
+        // A count that went back (power cycled) is one change, as replay
+        // sees it.
+        let more = scans.checked_sub(self.scans_seen).unwrap_or(1);
         self.scans_seen = scans;
-        machine.image_into(&mut self.scratch);
-        let now = machine.now();
-        let ops_at = self.ops_first + self.ops.len() as u64;
-        let last = self.last();
-        let full = self
-            .chunks
-            .back()
-            .is_none_or(|c| c.len() as u64 >= KEYFRAME_EVERY);
-        if full {
-            let chunk = Chunk::new(last + 1, machine.clone(), ops_at, &self.scratch, now);
-            self.bytes += chunk.bytes(self.machine_bytes);
-            self.chunks.push_back(chunk);
-        } else if let Some(chunk) = self.chunks.back_mut() {
-            self.bytes += chunk.push(&self.image, &self.scratch, now);
+        if more > 1 {
+            if let Some(chunk) = self.chunks.back_mut() {
+                chunk.push_many(more - 1);
+            }
         }
-        std::mem::swap(&mut self.image, &mut self.scratch);
-        self.trim();
+        match self.chunks.back_mut() {
+            Some(chunk) if (chunk.len() as u64) < KEYFRAME_EVERY => chunk.push(),
+            _ => {
+                let ops_at = self.ops_first + self.ops.len() as u64;
+                let chunk = Chunk::new(self.last() + 1, machine.clone(), ops_at);
+                self.bytes += chunk.bytes(self.machine_bytes);
+                self.chunks.push_back(chunk);
+                self.trim();
+            }
+        }
     }
 
     /// Drops the oldest keyframes' scans while over budget (always
@@ -365,30 +425,48 @@ impl<M: Plc + Clone> Recording<M> {
     /// The whole machine as it was at the end of the scan at `mark`: the
     /// keyframe before it, replayed. `None` if `mark` is not kept.
     pub fn machine_at(&self, mark: Mark) -> Option<M> {
-        self.replay(mark).map(|(m, _)| m)
+        self.replay_with(mark, true, |_| {}).map(|(m, _)| m)
     }
 
-    /// The machine at `mark` and the absolute index of the first op the
-    /// replay did not apply.
-    fn replay(&self, mark: Mark) -> Option<(M, u64)> {
+    /// Replays from the keyframe before `mark` to `mark`, calling
+    /// `at_scan` with the keyframe and after every scan; with `trace`
+    /// false, tracing is off in the replay. Returns the machine and the
+    /// absolute index of the first op it did not apply.
+    fn replay_with(
+        &self,
+        mark: Mark,
+        trace: bool,
+        mut at_scan: impl FnMut(&M),
+    ) -> Option<(M, u64)> {
         let c = self.chunk_index(mark)?;
         let chunk = &self.chunks[c];
         let mut m = chunk.machine.clone();
+        if !trace {
+            m.set_tracing(false);
+        }
+        at_scan(&m);
         let mut count = Counter {
             seen: m.scans(),
             reached: chunk.first,
             target: mark,
         };
+        let mut more = |m: &M| {
+            let counted = count.more(m);
+            if counted.0 {
+                at_scan(m);
+            }
+            counted.1
+        };
         let mut next = chunk.ops_at;
         let from = (chunk.ops_at - self.ops_first) as usize;
         for op in self.ops.iter().skip(from) {
-            if count.done() {
+            if !more(&m) {
                 break;
             }
             // An op that came at the time the machine already is (mid-step)
             // came before anything else ran.
             let t = op.time();
-            if m.now() < t && !run_scans(&mut m, t, |m| count.more(m)) {
+            if m.now() < t && !run_scans(&mut m, t, &mut more) {
                 break;
             }
             match op {
@@ -410,12 +488,11 @@ impl<M: Plc + Clone> Recording<M> {
                     let _ = m.serial(line);
                 }
             }
-            count.more(&m);
             next += 1;
         }
-        if !count.done() {
-            let end = self.time_at(mark)?;
-            run_scans(&mut m, end, |m| count.more(m));
+        if more(&m) {
+            // The scans were recorded, so they come before any limit.
+            run_scans(&mut m, MAX_SIM_TIME, &mut more);
         }
         (count.reached == mark).then_some((m, next))
     }
@@ -424,7 +501,7 @@ impl<M: Plc + Clone> Recording<M> {
     /// resumes from there ("Resume from here"). Returns the machine at
     /// `mark`, which the caller runs on; `None` if `mark` is not kept.
     pub fn resume_from(&mut self, mark: Mark) -> Option<M> {
-        let (machine, next_op) = self.replay(mark)?;
+        let (machine, next_op) = self.replay_with(mark, true, |_| {})?;
         let c = self.chunk_index(mark)?;
         while self.chunks.len() > c + 1 {
             if let Some(old) = self.chunks.pop_back() {
@@ -440,9 +517,6 @@ impl<M: Plc + Clone> Recording<M> {
         let dropped: usize = self.ops.iter().skip(keep).map(Op::bytes).sum();
         self.ops.truncate(keep);
         self.bytes = self.bytes.saturating_sub(dropped);
-        let mut image = std::mem::take(&mut self.image);
-        self.image_at(mark, &mut image);
-        self.image = image;
         self.scans_seen = machine.scans();
         Some(machine)
     }
@@ -456,13 +530,15 @@ struct Counter {
 }
 
 impl Counter {
-    /// Counts a scan if `m` completed one; whether to go on.
-    fn more<M: Plc>(&mut self, m: &M) -> bool {
-        if m.scans() != self.seen {
+    /// Counts a scan if `m` completed one: (whether it did, whether to go
+    /// on).
+    fn more<M: Plc>(&mut self, m: &M) -> (bool, bool) {
+        let counted = m.scans() != self.seen && !self.done();
+        if counted {
             self.seen = m.scans();
             self.reached += 1;
         }
-        !self.done()
+        (counted, !self.done())
     }
 
     fn done(&self) -> bool {

@@ -54,6 +54,11 @@ impl<M: Plc + Clone> Recorded<M> {
         &self.recording
     }
 
+    /// The recording, to read images and times from (made on demand).
+    pub fn recording_mut(&mut self) -> &mut Recording<M> {
+        &mut self.recording
+    }
+
     /// The machine shown: the past scan's while travelling, else live.
     pub fn shown_machine(&self) -> &M {
         self.past.as_ref().map_or(&self.live, |(_, m)| m)

@@ -159,9 +159,23 @@ fn compile_refuses_listings_and_xml_needs_a_machine() {
     );
 }
 
-fn why(program: &str, events: &str, at: &str, device: &str, extra: &[&str]) -> (i32, String, String) {
+fn why(
+    program: &str,
+    events: &str,
+    at: &str,
+    device: &str,
+    extra: &[&str],
+) -> (i32, String, String) {
     let mut args = vec![
-        "why", "--program", program, "--input", events, "--at", at, "--device", device,
+        "why",
+        "--program",
+        program,
+        "--input",
+        events,
+        "--at",
+        at,
+        "--device",
+        device,
     ];
     args.extend_from_slice(extra);
     let out = hashigo(&args, "");
@@ -181,7 +195,10 @@ fn why_names_the_stop_button_that_turned_the_seeds_lamp_off() {
     let (code, before, err) = why(&json, &events, "2s", "Y00", &[]);
     assert_eq!(code, 0, "{err}");
     assert!(before.starts_with("Y00 = 1 at 2000 ms"), "{before}");
-    assert!(before.contains("would lose power if any one of these changed"), "{before}");
+    assert!(
+        before.contains("would lose power if any one of these changed"),
+        "{before}"
+    );
     assert!(before.contains("contact Y00; Y00 = 1"), "{before}");
     assert!(before.contains("driven by rung 1"), "{before}");
     let (code, after, err) = why(&json, &events, "4s", "Y00", &[]);
@@ -192,7 +209,10 @@ fn why_names_the_stop_button_that_turned_the_seeds_lamp_off() {
         .lines()
         .find(|l| l.contains("NC contact X01"))
         .unwrap_or_else(|| panic!("X01 named: {after}"));
-    assert!(x01.contains("X01 = 1, since 30"), "changed at about 3 s: {x01}");
+    assert!(
+        x01.contains("X01 = 1, since 30"),
+        "changed at about 3 s: {x01}"
+    );
     assert!(x01.contains("an input"), "{x01}");
     // The same program as text is explained through its ladder.
     let (code, text_out, err) = why(SEED_IL, &events, "4s", "Y00", &["--machine", "minasec-u"]);
@@ -214,7 +234,10 @@ fn why_follows_a_timer_upstream_and_refuses_an_unknown_device() {
         .lines()
         .find(|l| l.contains("contact T00"))
         .unwrap_or_else(|| panic!("T00 named: {out}"));
-    assert!(t00.contains("driven by rung"), "the timer coil's rung: {t00}");
+    assert!(
+        t00.contains("driven by rung"),
+        "the timer coil's rung: {t00}"
+    );
     let (code, out, err) = why(program, &events, "2500ms", "Y01", &io);
     assert_eq!(code, 0, "{err}");
     assert!(out.starts_with("Y01 = 1"), "{out}");

@@ -108,7 +108,11 @@ fn check(logic: &RungLogic, bits: &[bool], target: Pos) -> Result<(), TestCaseEr
         for skip in 0..causes.len() {
             let mut fewer = causes.clone();
             fewer.remove(skip);
-            prop_assert!(!flips(&fewer), "no fewer would: without {:?}", why.causes[skip]);
+            prop_assert!(
+                !flips(&fewer),
+                "no fewer would: without {:?}",
+                why.causes[skip]
+            );
         }
         for i in 0..leaves.len() {
             prop_assert!(!flips(&[i]), "no leaf flips it alone");
@@ -185,7 +189,11 @@ fn a_latch_is_held_by_its_own_contact_and_the_stop_button() {
     // Started and released: X00 off, Y00 on, X01 off (the NC conducts).
     let held = why_coil(net.clone(), &[false, true, true]);
     assert!(held.powered && !held.together);
-    assert_eq!(held.causes, vec![Pos::new(0, 1), Pos::new(1, 0)], "stop and self-hold");
+    assert_eq!(
+        held.causes,
+        vec![Pos::new(0, 1), Pos::new(1, 0)],
+        "stop and self-hold"
+    );
     // Stop pressed: the NC X01 blocks, alone.
     let stopped = why_coil(net, &[false, true, false]);
     assert!(!stopped.powered);

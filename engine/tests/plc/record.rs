@@ -4,7 +4,7 @@
 
 use engine::events::InputValue;
 use engine::plc::{ArduinoPlc, AvrPlc, Command, Io86aPlc, MinasecPlc, Plc};
-use engine::record::{Mark, Recording, DEFAULT_BUDGET, KEYFRAME_EVERY};
+use engine::record::{run_scans, Mark, Recording, DEFAULT_BUDGET, KEYFRAME_EVERY};
 use engine::SimTime;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
@@ -36,23 +36,60 @@ fn loaded<M: Plc>(mut m: M, text: &str, inputs: &[&str]) -> (M, Vec<engine::plc:
     (m, inputs)
 }
 
-/// Runs `actions` under a recording; returns it and, after each frame,
-/// (index of the action, the last mark, the time).
+/// What a run under a recording gives: the recording, after each action
+/// the last mark and the time, and the truth: every scan's image and end
+/// time as a twin machine, driven the same way with no recording, showed
+/// them.
+struct Recorded<M> {
+    rec: Recording<M>,
+    after: Vec<(Mark, SimTime)>,
+    truth: Vec<(Vec<u8>, SimTime)>,
+}
+
 fn record<M: Plc + Clone>(
     m: &mut M,
     inputs: &[engine::plc::Device],
     actions: &[Action],
     budget: usize,
-) -> (Recording<M>, Vec<(usize, Mark, SimTime)>) {
+) -> Recorded<M> {
+    let mut twin = m.clone();
+    let mut truth = vec![shot(&twin)];
     let mut rec = Recording::new(m, budget);
-    let mut frames = Vec::new();
-    for (i, a) in actions.iter().enumerate() {
+    let mut after = Vec::new();
+    for a in actions {
         act(&mut rec, m, inputs, a);
-        if let Action::Frame(_) = a {
-            frames.push((i, rec.last(), m.now()));
+        let seen = twin.scans();
+        match *a {
+            Action::Frame(ms) => {
+                let t = twin.now().saturating_add(SimTime::from_millis(ms));
+                run_scans(&mut twin, t, |x| {
+                    truth.push(shot(x));
+                    true
+                });
+            }
+            Action::Set(n, on) => {
+                let d = inputs[n % inputs.len()];
+                let value = InputValue::Int(i64::from(on));
+                twin.apply(Command::SetInput(d, value)).expect("input");
+            }
+            Action::StepScan => twin.step_scan(),
+            Action::StepInstruction => {
+                twin.step_instruction();
+            }
         }
+        if !matches!(a, Action::Frame(_)) && twin.scans() != seen {
+            truth.push(shot(&twin));
+        }
+        after.push((rec.last(), m.now()));
     }
-    (rec, frames)
+    Recorded { rec, after, truth }
+}
+
+/// A machine's image and time.
+fn shot<M: Plc>(m: &M) -> (Vec<u8>, SimTime) {
+    let mut image = Vec::new();
+    m.image_into(&mut image);
+    (image, m.now())
 }
 
 fn act<M: Plc + Clone>(
@@ -77,7 +114,7 @@ fn act<M: Plc + Clone>(
     }
 }
 
-fn images<M: Plc + Clone>(rec: &Recording<M>, from: Mark) -> Vec<(Vec<u8>, SimTime)> {
+fn images<M: Plc + Clone>(rec: &mut Recording<M>, from: Mark) -> Vec<(Vec<u8>, SimTime)> {
     (from..=rec.last())
         .map(|k| {
             let mut image = Vec::new();
@@ -87,8 +124,9 @@ fn images<M: Plc + Clone>(rec: &Recording<M>, from: Mark) -> Vec<(Vec<u8>, SimTi
         .collect()
 }
 
-/// Every mark replays to the image and time recorded; resuming after a
-/// frame and doing the same again records the same scans.
+/// Every mark replays to the image and time recorded; resuming at the
+/// mark an action left and doing again what followed that scan records
+/// the same scans.
 fn check<M: Plc + Clone>(
     m: M,
     inputs: &[engine::plc::Device],
@@ -96,29 +134,43 @@ fn check<M: Plc + Clone>(
     resume_at: usize,
 ) -> Result<(), TestCaseError> {
     let mut live = m.clone();
-    let (rec, frames) = record(&mut live, inputs, actions, DEFAULT_BUDGET);
+    let Recorded {
+        mut rec,
+        after,
+        truth,
+    } = record(&mut live, inputs, actions, DEFAULT_BUDGET);
+    prop_assert_eq!(rec.last() + 1, truth.len() as u64, "one mark per scan");
     let mut image = Vec::new();
     for k in rec.first()..=rec.last() {
         let again = rec.machine_at(k).expect("every kept mark replays");
+        let (true_image, true_time) = &truth[k as usize];
         again.image_into(&mut image);
-        let mut recorded = Vec::new();
-        rec.image_at(k, &mut recorded);
-        prop_assert_eq!(&image, &recorded, "image at mark {}", k);
-        prop_assert_eq!(Some(again.now()), rec.time_at(k), "time at mark {}", k);
+        prop_assert_eq!(&image, true_image, "the machine at mark {}", k);
+        prop_assert_eq!(again.now(), *true_time, "its time at mark {}", k);
+        prop_assert_eq!(rec.time_at(k), Some(*true_time), "time at mark {}", k);
+        prop_assert!(rec.image_at(k, &mut image), "kept");
+        prop_assert_eq!(&image, true_image, "the image at mark {}", k);
     }
-    if frames.is_empty() {
-        return Ok(());
-    }
-    let (i, mark, t) = frames[resume_at % frames.len()];
+    let (mark, _) = after[resume_at % after.len()];
     let mut branch = rec.clone();
     let mut resumed = branch.resume_from(mark).expect("the mark is kept");
     prop_assert_eq!(branch.last(), mark, "later scans dropped");
-    branch.run(&mut resumed, t, None);
-    for a in &actions[i + 1..] {
+    // What came after that scan: the rest of the action that completed it
+    // (a frame runs on to its end), then every later action.
+    let next = match after.iter().position(|&(m, _)| m == mark) {
+        Some(p) if mark > 0 => {
+            if let Action::Frame(_) = actions[p] {
+                branch.run(&mut resumed, after[p].1, None);
+            }
+            p + 1
+        }
+        _ => 0,
+    };
+    for a in &actions[next..] {
         act(&mut branch, &mut resumed, inputs, a);
     }
     prop_assert_eq!(branch.last(), rec.last(), "as many scans");
-    prop_assert_eq!(images(&branch, mark), images(&rec, mark));
+    prop_assert_eq!(images(&mut branch, mark), images(&mut rec, mark));
     Ok(())
 }
 
@@ -171,15 +223,20 @@ fn every_recorded_scan_replays_and_resumes_exactly_on_arduino_plc() {
 fn the_oldest_scans_go_first_once_over_budget_and_the_rest_still_replay() {
     let text = include_str!("../../programs/io86a/timer.il");
     let (mut m, inputs) = loaded(Io86aPlc::new(), text, &["X00"]);
-    let budget = 256 << 10;
+    let budget = 64 << 10;
     let mut rec = Recording::new(&m, budget);
     for n in 0..400u64 {
         let on = InputValue::Int(i64::from(n % 3 == 0));
-        rec.apply(&mut m, Command::SetInput(inputs[0], on)).expect("input");
+        rec.apply(&mut m, Command::SetInput(inputs[0], on))
+            .expect("input");
         rec.tick(&mut m, SimTime::from_millis(25), None);
     }
     assert!(rec.first() > 0, "old scans dropped");
-    assert_eq!(rec.first() % KEYFRAME_EVERY, 0, "a whole keyframe at a time");
+    assert_eq!(
+        rec.first() % KEYFRAME_EVERY,
+        0,
+        "a whole keyframe at a time"
+    );
     assert!(rec.bytes() <= budget, "{} bytes over {budget}", rec.bytes());
     assert!(rec.machine_at(rec.first() - 1).is_none(), "dropped is gone");
     let mut image = Vec::new();
@@ -187,7 +244,7 @@ fn the_oldest_scans_go_first_once_over_budget_and_the_rest_still_replay() {
         let again = rec.machine_at(k).expect("kept");
         again.image_into(&mut image);
         let mut recorded = Vec::new();
-        rec.image_at(k, &mut recorded);
+        assert!(rec.image_at(k, &mut recorded));
         assert_eq!(image, recorded, "mark {k}");
     }
     // 10 000 scans at 1 ms, each reading X00 and a timer.
@@ -240,7 +297,8 @@ fn the_seed_breaks_when_its_count_lamp_rises_and_shows_the_scans_before() {
     assert!(r.show(hit.mark - 5));
     assert_eq!(r.shown(), Some(hit.mark - 5));
     assert_eq!((r.read(y01), r.read(count)), (0, 9));
-    assert!(r.now() < r.recording().time_at(hit.mark).expect("kept"));
+    let then = r.now();
+    assert!(then < r.recording_mut().time_at(hit.mark).expect("kept"));
     // Back to live, then resume from a past scan: the later scans go.
     r.go_live();
     assert_eq!(r.read(count), 10);
@@ -273,13 +331,76 @@ fn operating_a_past_scan_resumes_from_it_and_a_refusal_changes_nothing() {
     assert!(last >= 40, "{last} scans");
     assert!(r.show(10));
     let y00 = r.device("Y00").expect("output");
-    assert!(r
-        .apply(Command::SetInput(y00, InputValue::Int(1)))
-        .is_err());
+    assert!(r.apply(Command::SetInput(y00, InputValue::Int(1))).is_err());
     assert_eq!(r.shown(), Some(10), "still travelling");
     assert_eq!(r.recording().last(), last, "nothing dropped");
     r.apply(Command::SetInput(inputs[0], InputValue::Int(1)))
         .expect("X00 is an input");
     assert_eq!(r.shown(), None, "live again, from scan 10");
     assert_eq!(r.recording().last(), 10);
+}
+
+/// A case the property once found: resuming at the frame before an input
+/// changes, on the AVR PLC (10 ms scans).
+#[test]
+fn resuming_just_before_an_input_change_replays_it() {
+    let text = include_str!("../../programs/avr-plc/e-stop-timer.asm");
+    let (m, inputs) = loaded(AvrPlc::new(), text, &["Run", "Direct"]);
+    let actions = [
+        Action::Frame(53),
+        Action::Frame(27),
+        Action::Frame(55),
+        Action::Frame(31),
+        Action::Frame(47),
+        Action::Set(0, true),
+        Action::Frame(4),
+        Action::Frame(3),
+    ];
+    for resume_at in 0..7 {
+        check(m.clone(), &inputs, &actions, resume_at)
+            .unwrap_or_else(|e| panic!("{resume_at}: {e}"));
+    }
+}
+
+/// `nth_scan_end` says when the n-th scan from now ends: running scan by
+/// scan meets each prediction exactly (so recording, which runs in one go
+/// to just before a keyframe, takes its copy at a scan's end).
+fn predictions_hold<M: Plc + Clone>(mut m: M) {
+    // Mid-scan, as after a Step instruction.
+    m.step_instruction();
+    let predicted: Vec<Option<SimTime>> = (1..=300).map(|n| m.nth_scan_end(n)).collect();
+    let mut ends = Vec::new();
+    let far = predicted[299]
+        .expect("a prediction")
+        .saturating_add(SimTime::from_secs(1));
+    run_scans(&mut m, far, |x| {
+        ends.push(x.now());
+        ends.len() < 300
+    });
+    let predicted: Vec<SimTime> = predicted
+        .into_iter()
+        .map(|p| p.expect("predicted"))
+        .collect();
+    assert_eq!(predicted, ends, "{:?}", m.id());
+}
+
+#[test]
+fn each_machine_says_when_its_nth_scan_ends() {
+    let (m, _) = loaded(MinasecPlc::new(), engine::minasec::SEED_TEST_PROGRAM, &[]);
+    predictions_hold(m);
+    let (m, _) = loaded(
+        Io86aPlc::new(),
+        include_str!("../../programs/io86a/timer.il"),
+        &[],
+    );
+    predictions_hold(m);
+    let (m, _) = loaded(
+        AvrPlc::new(),
+        include_str!("../../programs/avr-plc/e-stop-timer.asm"),
+        &[],
+    );
+    predictions_hold(m);
+    let text = include_str!("../../programs/arduino-plc/self-hold.txt");
+    let (m, _) = loaded(ArduinoPlc::new(), text, &[]);
+    predictions_hold(m);
 }

@@ -187,7 +187,7 @@ pub fn ladder_project(
     scan_ms: u32,
 ) -> Result<Project, Problems> {
     Ok(match format {
-        Format::Json | Format::Xml => read_project(&source, format, flag)?.0,
+        Format::Json | Format::Xml => read_project(source, format, flag)?.0,
         Format::Il | Format::Asm => {
             let machine = match flag {
                 Some(m) => m,

@@ -19,8 +19,11 @@ use crate::commands::read_events;
 use crate::input::Format;
 use crate::source::{self, apply_settings, ladder_project, load, located, one, Problems};
 
-/// When a watched device last changed: (time, scan) or never.
-type Changes = BTreeMap<String, (Device, i64, Option<(SimTime, u64)>)>;
+/// A watched device: its handle, its value, and when it last changed
+/// (time, scan), if it did.
+type Watched = (Device, i64, Option<(SimTime, u64)>);
+/// Every watched device by name.
+type Changes = BTreeMap<String, Watched>;
 
 /// `hashigo why`.
 pub fn why(rest: &[String]) -> Result<(), Problems> {
@@ -44,9 +47,13 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     let ladder = project.ladder;
     // The ladder's own compiled program runs, so that its source map
     // names each contact's step (a text program is its decompiled ladder).
-    let live = LiveLadder::new(&ladder, machine, Options {
-        avr_scan_ms: scan_ms,
-    })
+    let live = LiveLadder::new(
+        &ladder,
+        machine,
+        Options {
+            avr_scan_ms: scan_ms,
+        },
+    )
     .map_err(|errors| {
         errors
             .iter()
@@ -68,7 +75,10 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         .map_err(|p| problems.push(p))
         .ok();
     let name = args.required("device").map_err(|p| problems.push(p)).ok();
-    let device = name.map(|n| plc.device(n).map_err(|e| problems.push(format!("--device: {e}"))));
+    let device = name.map(|n| {
+        plc.device(n)
+            .map_err(|e| problems.push(format!("--device: {e}")))
+    });
     let mut inputs = Vec::new();
     if let Some((file, list)) = &events {
         for e in list {
@@ -90,7 +100,7 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
 
     // Every device a contact reads, to say when it last changed.
     let mut changes: Changes = BTreeMap::new();
-    for (_, rung) in ladder.rungs.iter().enumerate() {
+    for rung in &ladder.rungs {
         for (_, e) in rung.elements() {
             if let engine::ladder::element::Element::Contact { device, .. } = e {
                 if let Ok(d) = plc.device(device) {
@@ -122,7 +132,10 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     }
     run_scans(plc.as_mut(), at, &mut observe);
 
-    print!("{}", report(&ladder, &live, plc.as_ref(), name, device, &changes));
+    print!(
+        "{}",
+        report(&ladder, &live, plc.as_ref(), name, device, &changes)
+    );
     Ok(())
 }
 
@@ -165,7 +178,11 @@ fn report(
         rung + 1,
         pos.row + 1,
         pos.col + 1,
-        if why.powered { "gets power" } else { "gets no power" }
+        if why.powered {
+            "gets power"
+        } else {
+            "gets no power"
+        }
     );
     let _ = writeln!(out, "{}", lead(&why));
     for cause in causes(ladder, rung, &why) {
@@ -206,7 +223,7 @@ fn lead(why: &Explanation) -> &'static str {
 }
 
 /// `, since 1200 ms (scan 120)` or `, unchanged since power-on`.
-fn since(change: Option<&(Device, i64, Option<(SimTime, u64)>)>) -> String {
+fn since(change: Option<&Watched>) -> String {
     match change.and_then(|(_, _, c)| *c) {
         Some((t, scan)) => format!(", since {t} ms (scan {scan})"),
         None => ", unchanged since power-on".to_string(),
