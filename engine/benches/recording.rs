@@ -22,7 +22,7 @@ fn segments<M: Plc + Clone>(m: &M) -> Vec<SimTime> {
     let mut probe = m.clone();
     let mut ends = Vec::new();
     run_scans(&mut probe, SimTime::from_secs(36_000), |x| {
-        if x.scans() % SEGMENT == 0 {
+        if x.scans().is_multiple_of(SEGMENT) {
             ends.push(x.now());
         }
         x.scans() < SCANS
@@ -31,7 +31,7 @@ fn segments<M: Plc + Clone>(m: &M) -> Vec<SimTime> {
 }
 
 fn toggle(n: usize, input: Device) -> Command {
-    Command::SetInput(input, InputValue::Int(i64::from(n % 2 == 0)))
+    Command::SetInput(input, InputValue::Int(i64::from(n.is_multiple_of(2))))
 }
 
 fn bench_machine<M: Plc + Clone>(c: &mut Criterion, name: &str, m: M, input: &str) {
