@@ -4,6 +4,7 @@
 //! out into signals.
 
 use engine::plc::Plc;
+use engine::record::Recorded;
 use engine::SimTime;
 
 /// How fast simulated time runs.
@@ -64,24 +65,28 @@ pub struct Pace {
 }
 
 /// A machine the frame loop advances, reached only through the engine's
-/// [`Plc`] interface.
+/// [`Plc`] interface. It records itself ([`Recorded`]): every command and
+/// scan goes into its recording, and time travel shows a past scan
+/// through the same interface.
 pub struct Simulator<M> {
-    machine: M,
+    machine: Recorded<M>,
 }
 
-impl<M: Plc> Simulator<M> {
+impl<M: Plc + Clone> Simulator<M> {
     /// A simulator around `machine`.
     pub fn new(machine: M) -> Simulator<M> {
-        Simulator { machine }
+        Simulator {
+            machine: Recorded::new(machine),
+        }
     }
 
-    /// The machine.
-    pub fn machine(&self) -> &M {
+    /// The machine (as shown: a past scan's while travelling).
+    pub fn machine(&self) -> &Recorded<M> {
         &self.machine
     }
 
     /// The machine, to operate it.
-    pub fn machine_mut(&mut self) -> &mut M {
+    pub fn machine_mut(&mut self) -> &mut Recorded<M> {
         &mut self.machine
     }
 
@@ -89,7 +94,9 @@ impl<M: Plc> Simulator<M> {
     /// last, at `pace`. `now_ms` reads the wall clock (for `Speed::Max`'s
     /// budget).
     pub fn frame(&mut self, pace: Pace, wall_ms: f64, mut now_ms: impl FnMut() -> f64) {
-        if pace.paused || !wall_ms.is_finite() || wall_ms <= 0.0 {
+        // A past scan on show holds time still.
+        let travelling = self.machine.shown().is_some();
+        if pace.paused || travelling || !wall_ms.is_finite() || wall_ms <= 0.0 {
             return;
         }
         let wall_ms = wall_ms.min(CATCH_UP_CAP_MS);
@@ -102,7 +109,7 @@ impl<M: Plc> Simulator<M> {
                 let start = now_ms();
                 loop {
                     self.machine.tick(MAX_SPEED_SLICE);
-                    if now_ms() - start >= MAX_SPEED_BUDGET_MS {
+                    if now_ms() - start >= MAX_SPEED_BUDGET_MS || self.machine.has_break() {
                         break;
                     }
                 }

@@ -142,6 +142,34 @@ impl Workspaces {
         self.with_plc(kind, |plc| ladder.show_live(plc));
     }
 
+    /// Runs `f` on the recording of `kind`'s machine (time travel, the
+    /// timing chart, breaks).
+    pub fn travel<R>(
+        &self,
+        kind: MachineKind,
+        f: impl FnOnce(&mut dyn engine::record::TimeTravel) -> R,
+    ) -> Option<R> {
+        match kind {
+            MachineKind::MinasecU => self.minasec.sim.try_update_value(|s| f(s.machine_mut())),
+            MachineKind::Io86a => self.io86a.sim.try_update_value(|s| f(s.machine_mut())),
+            MachineKind::ArduinoPlc => self.arduino.sim.try_update_value(|s| f(s.machine_mut())),
+            MachineKind::AvrPlc => self.avr.sim.try_update_value(|s| f(s.machine_mut())),
+        }
+    }
+
+    /// Shows the machine of `kind` as it now is (after a seek): its panel
+    /// and its ladder.
+    pub fn show(&self, kind: MachineKind) {
+        match kind {
+            MachineKind::MinasecU => self.minasec.refresh(),
+            MachineKind::Io86a => self.io86a.refresh(),
+            MachineKind::ArduinoPlc => self.arduino.refresh(),
+            MachineKind::AvrPlc => self.avr.refresh(),
+        }
+        let ladder = self.ladders.of(kind);
+        self.with_plc(kind, |plc| ladder.show_live(plc));
+    }
+
     /// What the machine of `kind` traced since the last frame.
     fn take_history(&self, kind: MachineKind) -> engine::plc::TraceHistory {
         use engine::plc::Plc;
@@ -168,8 +196,22 @@ impl Workspaces {
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall
     /// time at `pace`, then its signals refreshed. The others rest.
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
-        self.advance(kind, pace, wall_ms, now_ms);
         let ladder = self.ladders.of(kind);
+        if !pace.paused && ladder.travel.shown.get_untracked().is_some() {
+            // Running again from a past scan on show: live first (Resume
+            // from here is the way to run on from the past).
+            crate::editor::travel::travel_with(*self, ladder, |t| t.go_live());
+        }
+        self.advance(kind, pace, wall_ms, now_ms);
+        let hit = self.travel(kind, |t| {
+            let hit = t.take_break();
+            crate::editor::travel::sync(ladder, t, now_ms(), hit.is_some());
+            hit
+        });
+        if let Some(Some(_)) = hit {
+            // Paused at the end of the scan where the condition held.
+            ladder.page.paused.set(true);
+        }
         let history = self.take_history(kind);
         ladder.show_pulses(&history);
         self.with_plc(kind, |plc| {

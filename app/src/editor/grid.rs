@@ -292,6 +292,7 @@ fn Cell(
                 .with(|f| f.iter().any(|(d, _)| *d == forced_device))
     };
     let here6 = here.clone();
+    let here7 = here.clone();
     let super::state::CellSlot {
         on,
         powered,
@@ -372,6 +373,9 @@ fn Cell(
             <span class="sym">{c.symbol.clone()}</span>
             <span class="cmt">{c.comment.clone()}</span>
             <span class="val" data-value=value_attr>{value_text}</span>
+            // "Why": the cell asked about and the cells that decide it
+            // (a child: the cell already carries tachys's most attributes).
+            <span class="why" data-why=move || ctx.travel.why.with(|w| w.as_ref().and_then(|w| w.role_at(&here7())))></span>
         </div>
     }
 }

@@ -65,6 +65,8 @@ pub enum Action {
     Help,
     /// Escape: drop the selection, close what is open.
     Cancel,
+    /// W: why is the cell under the cursor on or off (docs/editor.md).
+    Why,
 }
 
 /// The action of a key (`KeyboardEvent.key`) with its modifiers; `None`
@@ -125,6 +127,7 @@ pub fn action(key: &str, shift: bool, ctrl: bool, alt: bool) -> Option<Action> {
             "m" | "M" => entry(EntryKind::Instruction, false, "MOV "),
             "-" => Wire,
             "|" => ToggleLink,
+            "w" | "W" => Why,
             _ => return None,
         },
         _ => return None,
@@ -177,6 +180,7 @@ pub const KEY_MAP: &[(&str, &str)] = &[
         "move the cursor",
     ),
     ("Shift + arrows", "select cells (across rungs: whole rungs)"),
+    ("W", "why is the cell under the cursor on or off"),
     ("F5 / F6 (c / Shift+C)", "normally open / closed contact"),
     ("Shift+F5 / Shift+F6", "the contact as an OR branch"),
     ("F7 (l)", "output coil in the output column"),

@@ -36,6 +36,11 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
         ctx.page.paused.set(false);
     };
     let step = move |which: u8| {
+        if which == 0 && ctx.travel.shown.get_untracked().is_some() {
+            // Travelling: the next recorded scan, not a new branch.
+            super::travel::step_forward(ctx);
+            return;
+        }
         ctx.page.paused.set(true);
         let stepped = std::cell::Cell::new(None);
         operate(&|plc| match which {

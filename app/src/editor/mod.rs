@@ -11,6 +11,7 @@
 //! - [`cases`]: the Tests pane.
 
 pub mod cases;
+pub mod chart;
 pub mod entry;
 pub mod files;
 pub mod find;
@@ -26,6 +27,8 @@ pub mod side;
 pub mod state;
 pub mod store;
 pub mod texts;
+pub mod travel;
+pub mod why;
 
 use engine::ladder::edit::Edit;
 use engine::MachineId;
@@ -69,6 +72,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
             <div class="ladder-toolbar run-toolbar">
                 <live::RunBar ctx />
             </div>
+            <travel::TravelBar ctx />
             <CommentBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
             <div class="edit-message" role="alert" data-testid="edit-message">
@@ -80,10 +84,12 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                 <div class="ladder-side">
                     <side::ListingPane ctx on_pick=refocus />
                     <side::ProblemsPane ctx on_pick=refocus />
+                    <why::WhyPanel ctx />
                     <live::WatchTable ctx />
                     <live::ForceList ctx />
                 </div>
             </div>
+            <chart::TimingChart ctx />
             <Show when=move || ctx.tests_open.get()>
                 <cases::TestsPane ctx />
             </Show>

@@ -206,6 +206,8 @@ pub struct LadderCtx {
     pub monitor: RwSignal<bool>,
     /// Inputs held from the ladder at a value until released.
     pub forced: RwSignal<Vec<(String, bool)>>,
+    /// The recording as shown: time travel, breaks, chart, "why".
+    pub travel: super::travel::TravelState,
 }
 
 /// What showing a shared project set aside: its settings (applied when
@@ -276,6 +278,7 @@ impl LadderCtx {
             stepped_cell: RwSignal::new(None),
             monitor: RwSignal::new(false),
             forced: RwSignal::new(Vec::new()),
+            travel: super::travel::TravelState::new(),
         };
         ctx.refresh(false);
         ctx
@@ -516,6 +519,7 @@ impl LadderCtx {
         let at = self.cursor.get_untracked();
         match action {
             Action::Move(mv, extend) => self.step(mv, extend),
+            Action::Why => self.travel.why_request.update(|n| *n += 1),
             Action::Entry {
                 kind,
                 branch,
@@ -912,6 +916,14 @@ impl LadderCtx {
             }
             Err(_) => false,
         }
+    }
+
+    /// Runs `f` with the ladder the machine runs (compiled at Run), if any.
+    pub fn with_live<R>(
+        &self,
+        f: impl FnOnce(Option<&engine::ladder::live::LiveLadder>) -> R,
+    ) -> R {
+        self.live.with_value(|l| f(l.as_ref()))
     }
 
     /// Each frame: every contact's and coil's device state as the

@@ -139,7 +139,7 @@ pub fn scan_ms_default() -> u32 {
 /// The rows for a program's named bits: an old row whose name and bit
 /// are named again is kept as it is (same signals), the others are new;
 /// each row's device is resolved by `plc` once.
-fn rows_for(old: &[NamedBit], names: &[(String, BitRef)], plc: &AvrPlc) -> Vec<NamedBit> {
+fn rows_for(old: &[NamedBit], names: &[(String, BitRef)], plc: &dyn Plc) -> Vec<NamedBit> {
     names
         .iter()
         .filter_map(|(name, bit)| {

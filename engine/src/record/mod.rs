@@ -19,10 +19,12 @@ pub mod condition;
 mod recorded;
 mod run;
 mod store;
+mod travel;
 
 pub use condition::{Condition, ConditionError};
 pub use recorded::Recorded;
 pub use run::run_scans;
+pub use travel::TimeTravel;
 
 use std::collections::VecDeque;
 
@@ -220,6 +222,25 @@ impl<M: Plc + Clone> Recording<M> {
         }
         let (new, old) = self.chunks[c].fill(shots.iter().map(|(i, t)| (i.as_slice(), *t)));
         self.bytes = self.bytes.saturating_sub(old) + new;
+    }
+
+    /// The end time of each kept scan in `from..=to`.
+    pub fn times(&mut self, from: Mark, to: Mark) -> Vec<SimTime> {
+        let from = from.max(self.first());
+        let to = to.min(self.last());
+        let mut out = Vec::new();
+        for c in 0..self.chunks.len() {
+            let (first, last) = (self.chunks[c].first, self.chunks[c].last());
+            if last < from || first > to {
+                continue;
+            }
+            self.fill(c);
+            let chunk = &self.chunks[c];
+            let skip = from.saturating_sub(first) as usize;
+            let take = (to.min(last) + 1 - first.max(from)) as usize;
+            out.extend(chunk.times().iter().skip(skip).take(take));
+        }
+        out
     }
 
     /// The mark whose scan ended last at or before `t`.

@@ -59,6 +59,11 @@ impl<M: Plc + Clone> Recorded<M> {
         &mut self.recording
     }
 
+    /// The recording, and the live machine to read its images through.
+    pub fn recording_and_machine(&mut self) -> (&mut Recording<M>, &M) {
+        (&mut self.recording, &self.live)
+    }
+
     /// The machine shown: the past scan's while travelling, else live.
     pub fn shown_machine(&self) -> &M {
         self.past.as_ref().map_or(&self.live, |(_, m)| m)
@@ -110,6 +115,11 @@ impl<M: Plc + Clone> Recorded<M> {
     /// The break condition.
     pub fn break_condition(&self) -> Option<&Condition> {
         self.stop.as_ref()
+    }
+
+    /// Whether the condition held since the last [`Recorded::take_break`].
+    pub fn has_break(&self) -> bool {
+        self.hit.is_some()
     }
 
     /// Where the condition held since the last call, then forgotten.

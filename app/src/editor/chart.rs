@@ -1,0 +1,373 @@
+//! The timing chart (issue #16), `[data-testid=timing-chart]`: chosen
+//! devices against the recorded scans, bits as steps and values as
+//! lines. Each pixel column shows every value its scans took (so a
+//! one-scan pulse is always at least a pixel wide, never merged away);
+//! zoom and pan move over the recording, Follow keeps the newest scans
+//! in view; a click puts the cursor on a scan (and, paused, travels
+//! there); Export writes the visible scans as `hashigo run`'s CSV.
+
+use engine::record::Mark;
+use engine::SimTime;
+use leptos::prelude::*;
+
+use super::LadderCtx;
+use crate::workspaces::Workspaces;
+
+/// The chart's width in pixels (one column per pixel).
+const WIDTH: usize = 600;
+/// Each device's row height in pixels.
+const ROW: usize = 26;
+/// Scans in view when following, at first.
+const SPAN: u64 = 600;
+
+/// Which scans are in view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Window {
+    /// How many scans wide.
+    span: u64,
+    /// The last scan in view; `None` follows the newest.
+    end: Option<Mark>,
+}
+
+/// What is drawn: the scans in view, each device's values, their times.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct ChartData {
+    from: Mark,
+    times: Vec<SimTime>,
+    rows: Vec<(String, Vec<Option<i64>>)>,
+}
+
+/// Each pixel column's scans: `[start, end)` indices into `n` scans.
+fn columns(n: usize) -> impl Iterator<Item = (usize, usize)> {
+    (0..WIDTH).map(move |c| {
+        let start = c * n / WIDTH;
+        let end = ((c + 1) * n / WIDTH).max(start + 1).min(n.max(1));
+        (start.min(n.saturating_sub(1)), end)
+    })
+}
+
+/// A bit row as an SVG path: a level where a column's scans agree, a
+/// full-height stroke where they differ (a change or a pulse).
+fn bit_path(values: &[Option<i64>]) -> String {
+    let (high, low) = (3.0, (ROW - 4) as f64);
+    let mut d = String::new();
+    for (x, (start, end)) in columns(values.len()).enumerate() {
+        let slice = values.get(start..end).unwrap_or(&[]);
+        let on = slice.iter().any(|v| v.is_some_and(|v| v != 0));
+        let off = slice.iter().any(|v| v.is_none_or(|v| v == 0));
+        let x = x as f64;
+        if on && off {
+            d.push_str(&format!("M{x} {low}V{high}"));
+        } else if on || off {
+            let y = if on { high } else { low };
+            d.push_str(&format!("M{x} {y}h1"));
+        }
+    }
+    d
+}
+
+/// A value row: each column's lowest to highest value, scaled to the row.
+fn value_path(values: &[Option<i64>]) -> String {
+    let known = values.iter().flatten();
+    let (lo, hi) = known.fold((i64::MAX, i64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+    if lo > hi {
+        return String::new();
+    }
+    let range = (hi - lo).max(1) as f64;
+    let y = |v: i64| (ROW - 4) as f64 - (v - lo) as f64 / range * (ROW - 7) as f64;
+    let mut d = String::new();
+    for (x, (start, end)) in columns(values.len()).enumerate() {
+        let slice = values.get(start..end).unwrap_or(&[]);
+        let (a, b) = slice
+            .iter()
+            .flatten()
+            .fold((i64::MAX, i64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+        if a <= b {
+            d.push_str(&format!("M{x} {}V{}h1", y(a), y(b)));
+        }
+    }
+    d
+}
+
+/// Whether a row is bits: every value 0 or 1.
+fn is_bits(values: &[Option<i64>]) -> bool {
+    values.iter().flatten().all(|&v| v == 0 || v == 1)
+}
+
+/// How often a row rose (0 to non-zero) in view.
+fn rises(values: &[Option<i64>]) -> usize {
+    values
+        .windows(2)
+        .filter(|w| w[0].unwrap_or(0) == 0 && w[1].unwrap_or(0) != 0)
+        .count()
+}
+
+/// The devices a new chart shows: the ladder's outputs, then its
+/// contacts, each once, at most eight.
+fn default_devices(ctx: LadderCtx) -> Vec<String> {
+    use engine::ladder::element::Element;
+    let ladder = ctx.ladder();
+    let mut out: Vec<String> = Vec::new();
+    let mut add = |d: &str| {
+        if !d.is_empty() && !out.iter().any(|o| o.eq_ignore_ascii_case(d)) && out.len() < 8 {
+            out.push(d.to_string());
+        }
+    };
+    for pass in 0..2 {
+        for rung in &ladder.rungs {
+            for (_, e) in rung.elements() {
+                match (pass, e) {
+                    (0, Element::Coil { device, .. } | Element::TimerCoil { device, .. }) => {
+                        add(device)
+                    }
+                    (0, Element::CounterCoil { device, .. }) => add(&format!("{device}.v")),
+                    (1, Element::Contact { device, .. }) => add(device),
+                    _ => {}
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The chart.
+#[component]
+pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let workspaces = use_context::<Workspaces>();
+    // `None` until the user picks: the ladder's own devices, as it is now.
+    let devices = RwSignal::new(None::<Vec<String>>);
+    let chosen = move || {
+        devices
+            .get_untracked()
+            .unwrap_or_else(|| default_devices(ctx))
+    };
+    let window = RwSignal::new(Window {
+        span: SPAN,
+        end: None,
+    });
+    let cursor = RwSignal::new(None::<Mark>);
+    let adding = RwSignal::new(String::new());
+    let error = RwSignal::new(None::<String>);
+    let data = RwSignal::new(ChartData::default());
+    // Redrawn when the recording moved on (at most every 250 ms while
+    // running), the view moved, or the devices changed.
+    Effect::new(move |_| {
+        ctx.travel.chart_tick.track();
+        let w = window.get();
+        let names = devices.get().unwrap_or_else(|| default_devices(ctx));
+        let Some(ws) = workspaces else {
+            return;
+        };
+        let fresh = ws.travel(ctx.machine, |tr| {
+            let (first, last) = tr.marks();
+            let end = w.end.unwrap_or(last).clamp(first, last);
+            let from = end.saturating_sub(w.span.saturating_sub(1)).max(first);
+            let rows = names
+                .iter()
+                .map(|n| {
+                    let values = tr.series(n, from, end).unwrap_or_default();
+                    (n.clone(), values)
+                })
+                .collect();
+            ChartData {
+                from,
+                times: tr.times(from, end),
+                rows,
+            }
+        });
+        if let Some(fresh) = fresh {
+            if data.with_untracked(|d| *d != fresh) {
+                data.set(fresh);
+            }
+        }
+    });
+    let add = move || {
+        let name = adding.get_untracked().trim().to_string();
+        if name.is_empty() {
+            return;
+        }
+        let known = workspaces
+            .and_then(|w| {
+                let mut ok = None;
+                w.with_plc(ctx.machine, |plc| ok = Some(plc.device(&name).map(|_| ())));
+                ok
+            })
+            .unwrap_or(Ok(()));
+        match known {
+            Ok(()) => {
+                error.set(None);
+                let mut list = chosen();
+                if !list.contains(&name) {
+                    list.push(name);
+                }
+                devices.set(Some(list));
+                adding.set(String::new());
+            }
+            Err(e) => error.set(Some(e.to_string())),
+        }
+    };
+    let zoom = move |factor: f64| {
+        window.update(|w| {
+            let span = (w.span as f64 * factor).round() as u64;
+            w.span = span.clamp(8, 1_000_000);
+        });
+    };
+    let pan = move |dir: i64| {
+        let (first, last) = ctx.travel.marks.get_untracked();
+        window.update(|w| {
+            let end = w.end.unwrap_or(last) as i64 + dir * (w.span as i64 / 2);
+            let end = (end.max(first as i64) as u64).min(last);
+            w.end = Some(end);
+        });
+    };
+    let export = move || {
+        let csv = data.with_untracked(|d| {
+            let mut out = String::from("time_ms");
+            for (name, _) in &d.rows {
+                out.push(',');
+                out.push_str(name);
+            }
+            out.push('\n');
+            for (i, time) in d.times.iter().enumerate() {
+                out.push_str(&time.to_string());
+                for (_, values) in &d.rows {
+                    out.push(',');
+                    if let Some(Some(v)) = values.get(i) {
+                        out.push_str(&v.to_string());
+                    }
+                }
+                out.push('\n');
+            }
+            out
+        });
+        super::files::download("timing.csv", "text/csv", &csv);
+    };
+    let pick = move |e: web_sys::MouseEvent| {
+        let n = data.with_untracked(|d| d.times.len());
+        if n == 0 {
+            return;
+        }
+        let x = e.offset_x().max(0) as usize;
+        let from = data.with_untracked(|d| d.from);
+        let mark = from + (x.min(WIDTH - 1) * n / WIDTH) as u64;
+        cursor.set(Some(mark));
+        if ctx.page.paused.get_untracked() {
+            super::travel::seek(ctx, mark);
+        }
+    };
+    let height = move || data.with(|d| d.rows.len().max(1) * ROW);
+    view! {
+        <section class="chart-pane" data-testid="timing-chart">
+            <h3>{move || t().chart}</h3>
+            <div class="find-row">
+                <input data-testid="chart-add" placeholder=move || t().chart_add spellcheck="false"
+                    prop:value=move || adding.get()
+                    on:input=move |e| adding.set(event_target_value(&e))
+                    on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { add() } />
+                <button type="button" on:click=move |_| add()>"+"</button>
+                <button type="button" data-testid="chart-zoom-in" title=move || t().zoom_in on:click=move |_| zoom(0.5)>"+🔍"</button>
+                <button type="button" data-testid="chart-zoom-out" title=move || t().zoom_out on:click=move |_| zoom(2.0)>"−🔍"</button>
+                <button type="button" data-testid="chart-pan-left" title=move || t().pan_left on:click=move |_| pan(-1)>"◀"</button>
+                <button type="button" data-testid="chart-pan-right" title=move || t().pan_right on:click=move |_| pan(1)>"▶"</button>
+                <button type="button" data-testid="chart-follow" on:click=move |_| window.update(|w| w.end = None)>{move || t().chart_follow}</button>
+                <button type="button" data-testid="chart-export" on:click=move |_| export()>{move || t().chart_export}</button>
+            </div>
+            <p class="chart-error" role="alert">{move || error.get()}</p>
+            <div class="chart-body">
+                <div class="chart-names">
+                    {move || data.with(|d| d.rows.iter().map(|(name, _)| {
+                        let gone = name.clone();
+                        view! {
+                            <div class="chart-name" style=format!("height: {ROW}px")>
+                                {name.clone()}
+                                <button type="button" on:click=move |_| {
+                                    let mut list = chosen();
+                                    list.retain(|x| *x != gone);
+                                    devices.set(Some(list));
+                                }>"×"</button>
+                            </div>
+                        }
+                    }).collect_view())}
+                </div>
+                <svg class="chart" width=WIDTH height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
+                    on:click=pick>
+                    {move || data.with(|d| d.rows.iter().enumerate().map(|(i, (name, values))| {
+                        let path = if is_bits(values) { bit_path(values) } else { value_path(values) };
+                        view! {
+                            <g class="chart-row" data-testid=format!("chart-row-{name}")
+                                data-rises=rises(values).to_string()
+                                data-scans=values.len().to_string()
+                                transform=format!("translate(0 {})", i * ROW)>
+                                <path d=path />
+                            </g>
+                        }
+                    }).collect_view())}
+                    {move || {
+                        let (from, n) = data.with(|d| (d.from, d.times.len() as u64));
+                        let x = move |m: Mark| (m.saturating_sub(from) * WIDTH as u64 / n.max(1)) as usize;
+                        let inside = move |m: &Mark| *m >= from && *m < from + n;
+                        let breaks = ctx.travel.breaks.get().into_iter().filter(inside).map(|m| view! {
+                            <line class="chart-break" data-testid="chart-break" x1=x(m) x2=x(m) y1="0" y2=height() />
+                        }).collect_view();
+                        let shown = ctx.travel.shown.get().or(cursor.get()).filter(inside).map(|m| view! {
+                            <line class="chart-cursor" x1=x(m) x2=x(m) y1="0" y2=height() />
+                        });
+                        (breaks, shown)
+                    }}
+                </svg>
+            </div>
+            <table class="chart-values" data-testid="chart-cursor">
+                <tbody>
+                    {move || {
+                        let at = ctx.travel.shown.get().or(cursor.get());
+                        data.with(|d| {
+                            let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
+                            let time = i.and_then(|i| d.times.get(i)).map(|t| format!("{t} ms"));
+                            let head = view! { <tr><th>{at.map(|m| format!("{} {m}", t().scan))}</th><td>{time}</td></tr> };
+                            let rows = d.rows.iter().map(|(name, values)| {
+                                let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
+                                view! { <tr data-testid=format!("chart-value-{name}")><th>{name.clone()}</th><td>{v}</td></tr> }
+                            }).collect_view();
+                            (head, rows)
+                        })
+                    }}
+                </tbody>
+            </table>
+        </section>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_one_scan_pulse_among_thousands_still_takes_a_column() {
+        let mut values = vec![Some(0); 100_000];
+        values[54_321] = Some(1);
+        let d = bit_path(&values);
+        // Exactly one column shows both levels: a stroke from low to high.
+        assert_eq!(d.matches('V').count(), 1, "{}", &d[..200.min(d.len())]);
+        assert_eq!(rises(&values), 1);
+    }
+
+    #[test]
+    fn few_scans_spread_over_the_columns_and_keep_their_levels() {
+        let values = [Some(0), Some(1), Some(1), Some(0)];
+        let d = bit_path(&values);
+        assert_eq!(d.matches('V').count(), 0, "no column mixes levels");
+        assert_eq!(d.matches('M').count(), WIDTH);
+        assert_eq!(rises(&values), 1);
+        assert!(is_bits(&values));
+        assert!(!is_bits(&[Some(5)]));
+    }
+
+    #[test]
+    fn value_rows_cover_each_columns_range() {
+        let values: Vec<Option<i64>> = (0..1200).map(|i| Some(i % 10)).collect();
+        let d = value_path(&values);
+        assert_eq!(d.matches('M').count(), WIDTH);
+        assert!(value_path(&[None, None]).is_empty());
+    }
+}

@@ -1,0 +1,206 @@
+//! Time travel in the page (issue #16): the machine records every scan
+//! (`engine::record`); paused, the user steps back and forward a scan at
+//! a time or drags the timeline, and the ladder, the panel and the watch
+//! table show that scan exactly (the machine is replayed to it). Resume
+//! from here makes that scan the live one; a break condition pauses the
+//! run at the end of the first scan where it holds.
+
+use engine::record::{Mark, TimeTravel};
+use leptos::prelude::*;
+
+use super::LadderCtx;
+use crate::workspaces::Workspaces;
+
+/// What the page shows of a machine's recording; `Copy`.
+#[derive(Clone, Copy)]
+pub struct TravelState {
+    /// The first and last recorded scans.
+    pub marks: RwSignal<(Mark, Mark)>,
+    /// The scan shown, while travelling.
+    pub shown: RwSignal<Option<Mark>>,
+    /// Every scan where the break condition held.
+    pub breaks: RwSignal<Vec<Mark>>,
+    /// The break condition as typed, and why it was refused.
+    pub break_text: RwSignal<String>,
+    pub break_error: RwSignal<Option<String>>,
+    /// Bumped when the recording changed enough to redraw the chart.
+    pub chart_tick: RwSignal<u64>,
+    /// Wall time of the last chart redraw while running (ms).
+    pub chart_drawn_ms: StoredValue<f64>,
+    /// The last "why" explanation shown.
+    pub why: RwSignal<Option<super::why::WhyView>>,
+    /// Bumped by the W key: explain the cell under the cursor.
+    pub why_request: RwSignal<u64>,
+}
+
+impl TravelState {
+    /// Nothing recorded yet.
+    pub fn new() -> TravelState {
+        TravelState {
+            marks: RwSignal::new((0, 0)),
+            shown: RwSignal::new(None),
+            breaks: RwSignal::new(Vec::new()),
+            break_text: RwSignal::new(String::new()),
+            break_error: RwSignal::new(None),
+            chart_tick: RwSignal::new(0),
+            chart_drawn_ms: StoredValue::new(f64::NEG_INFINITY),
+            why: RwSignal::new(None),
+            why_request: RwSignal::new(0),
+        }
+    }
+}
+
+impl Default for TravelState {
+    fn default() -> Self {
+        TravelState::new()
+    }
+}
+
+/// The chart redraws at most this often while the machine runs.
+const CHART_EVERY_MS: f64 = 250.0;
+
+/// Copies the recording's marks, the shown scan and the breaks into the
+/// signals that changed; `redraw` forces a chart redraw.
+pub fn sync(ctx: LadderCtx, t: &mut dyn TimeTravel, now_ms: f64, redraw: bool) {
+    let s = ctx.travel;
+    let marks = t.marks();
+    if s.marks.get_untracked() != marks {
+        s.marks.set(marks);
+    }
+    let shown = t.shown();
+    if s.shown.get_untracked() != shown {
+        s.shown.set(shown);
+    }
+    let breaks = t.breaks();
+    if s.breaks.with_untracked(|b| *b != breaks) {
+        s.breaks.set(breaks);
+    }
+    let due = now_ms - s.chart_drawn_ms.get_value() >= CHART_EVERY_MS;
+    if redraw || due {
+        s.chart_drawn_ms.set_value(now_ms);
+        s.chart_tick.update(|n| *n += 1);
+    }
+}
+
+/// Runs `f` on `ctx`'s machine's recording, then shows the result: the
+/// signals, the panel and the ladder (a seek changes what they show).
+pub fn travel<R>(ctx: LadderCtx, f: impl FnOnce(&mut dyn TimeTravel) -> R) -> Option<R> {
+    let workspaces = use_context::<Workspaces>()?;
+    travel_with(workspaces, ctx, f)
+}
+
+/// [`travel`] with the workspaces at hand.
+pub fn travel_with<R>(
+    workspaces: Workspaces,
+    ctx: LadderCtx,
+    f: impl FnOnce(&mut dyn TimeTravel) -> R,
+) -> Option<R> {
+    let kind = ctx.machine;
+    let result = workspaces.travel(kind, |t| {
+        let r = f(t);
+        sync(ctx, t, now_ms(), true);
+        r
+    });
+    workspaces.show(kind);
+    result
+}
+
+/// Shows recorded scan `mark` (pausing first).
+pub fn seek(ctx: LadderCtx, mark: Mark) {
+    ctx.page.paused.set(true);
+    travel(ctx, |t| {
+        let (first, last) = t.marks();
+        t.show(mark.clamp(first, last));
+    });
+}
+
+/// One scan back from the shown one (or from the newest).
+pub fn step_back(ctx: LadderCtx) {
+    let (first, last) = ctx.travel.marks.get_untracked();
+    let at = ctx.travel.shown.get_untracked().unwrap_or(last);
+    seek(ctx, at.saturating_sub(1).max(first));
+}
+
+/// One scan forward; past the newest, live again.
+pub fn step_forward(ctx: LadderCtx) {
+    let (_, last) = ctx.travel.marks.get_untracked();
+    match ctx.travel.shown.get_untracked() {
+        Some(at) if at < last => seek(ctx, at + 1),
+        _ => go_live(ctx),
+    }
+}
+
+/// Back to the live machine.
+pub fn go_live(ctx: LadderCtx) {
+    travel(ctx, |t| t.go_live());
+}
+
+fn now_ms() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map_or(0.0, |p| p.now())
+}
+
+/// The time-travel bar: back, the timeline, forward, where it is, Live,
+/// Resume from here, and the break condition.
+#[component]
+pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let s = ctx.travel;
+    let at = move || s.shown.get().unwrap_or(s.marks.get().1);
+    let label = move || {
+        let (first, last) = s.marks.get();
+        match s.shown.get() {
+            Some(m) => format!("{} {m} / {last} ({} {first})", t().scan, t().kept_from),
+            None => format!("{} · {} {last}", t().live, t().scan),
+        }
+    };
+    let set_break = move || {
+        let text = s.break_text.get_untracked();
+        let result = travel(ctx, |tr| tr.set_break(&text));
+        let error = match result {
+            Some(Err(e)) => Some(e.to_string()),
+            _ => None,
+        };
+        s.break_error.set(error);
+    };
+    view! {
+        <div class="travel-bar" data-testid="travel-bar">
+            <button type="button" data-testid="step-back" title=move || t().step_back
+                on:click=move |_| step_back(ctx)>"◀"</button>
+            <input type="range" data-testid="timeline" class="timeline"
+                min=move || s.marks.get().0.to_string()
+                max=move || s.marks.get().1.to_string()
+                prop:value=move || at().to_string()
+                on:input=move |e| {
+                    if let Ok(m) = event_target_value(&e).parse::<Mark>() {
+                        seek(ctx, m);
+                    }
+                } />
+            <button type="button" data-testid="step-forward" title=move || t().step_forward
+                on:click=move |_| step_forward(ctx)>"▶"</button>
+            <span class="travel-at" data-testid="travel-at" data-shown=move || s.shown.get().map(|m| m.to_string())>
+                {label}
+            </span>
+            <button type="button" data-testid="go-live" disabled=move || s.shown.get().is_none()
+                on:click=move |_| go_live(ctx)>{move || t().live}</button>
+            <button type="button" data-testid="resume-here" disabled=move || s.shown.get().is_none()
+                on:click=move |_| {
+                    travel(ctx, |tr| tr.resume_here());
+                }>{move || t().resume_here}</button>
+            <label class="break">
+                {move || t().break_on} " "
+                <input data-testid="break-input" spellcheck="false" placeholder="Y01 rises"
+                    prop:value=move || s.break_text.get()
+                    on:input=move |e| s.break_text.set(event_target_value(&e))
+                    on:change=move |_| set_break()
+                    on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { set_break() } />
+            </label>
+            <span class="break-status" data-testid="break-status" role="status">
+                {move || s.break_error.get().or_else(|| {
+                    s.breaks.get().last().map(|m| format!("{} {m}", t().break_hit))
+                })}
+            </span>
+        </div>
+    }
+}

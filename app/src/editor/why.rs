@@ -1,0 +1,232 @@
+//! "Why is this coil off (or on)?" in the page: the W key or the Why?
+//! button explains the cell under the cursor in the scan shown, with the
+//! engine's answer (`engine::ladder::why`, from the machine's own trace).
+//! The deciding cells are marked on the ladder (`data-why`), each listed
+//! with its device's state, the scan it last changed (a click travels
+//! there) and the rungs that drive it (a click goes there).
+
+use engine::ladder::grid::Pos;
+use engine::ladder::why::{causes, drivers};
+use engine::record::Mark;
+use leptos::prelude::*;
+
+use super::LadderCtx;
+use crate::workspaces::Workspaces;
+use engine::ladder::edit::Cursor;
+
+/// One explanation as the page shows it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WhyView {
+    /// The rung (0-based) and cell asked about.
+    pub rung: usize,
+    pub target: Pos,
+    /// What the cell is (`coil Y00`).
+    pub what: String,
+    /// Whether power reaches it.
+    pub powered: bool,
+    /// Whether only all causes together would change it.
+    pub together: bool,
+    /// The scan explained (`None`: live).
+    pub scan: Option<Mark>,
+    /// The deciding cells.
+    pub causes: Vec<CauseView>,
+}
+
+/// One deciding cell.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CauseView {
+    pub pos: Pos,
+    /// The element (`NC contact X01`).
+    pub what: String,
+    /// Its device and the device's value, if it reads one.
+    pub device: Option<(String, i64)>,
+    /// The scan the device last changed, if recorded.
+    pub changed: Option<Mark>,
+    /// Where its device is written: (rung, cell) of each driving output.
+    pub drivers: Vec<(usize, Pos)>,
+}
+
+impl WhyView {
+    /// `"target"`, `"cause"` or nothing, for the cell at `at`.
+    pub fn role_at(&self, at: &Cursor) -> Option<&'static str> {
+        if at.rung != self.rung {
+            return None;
+        }
+        let pos = Pos::new(at.row, at.col);
+        if pos == self.target {
+            Some("target")
+        } else if self.causes.iter().any(|c| c.pos == pos) {
+            Some("cause")
+        } else {
+            None
+        }
+    }
+}
+
+/// Explains the cell under the cursor in the scan shown; `None` when the
+/// ladder is not running as drawn or the cell decides nothing.
+pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
+    let at = ctx.cursor.get_untracked();
+    let target = Pos::new(at.row, at.col);
+    let ladder = ctx.ladder();
+    let scan = ctx.travel.shown.get_untracked();
+    let mut found = None;
+    workspaces.with_plc(ctx.machine, |plc| {
+        let why = plc
+            .trace()
+            .and_then(|trace| ctx.with_live(|l| l?.explain(trace, at.rung, target)));
+        let Some(why) = why else {
+            return;
+        };
+        let listed = causes(&ladder, at.rung, &why)
+            .into_iter()
+            .map(|c| {
+                let device = c.device.as_ref().and_then(|d| {
+                    let handle = plc.device(d).ok()?;
+                    Some((d.clone(), plc.read(handle)))
+                });
+                let drivers = c
+                    .device
+                    .as_deref()
+                    .map_or_else(Vec::new, |d| outputs(&ladder, d));
+                CauseView {
+                    pos: c.pos,
+                    what: c.element.to_string(),
+                    device,
+                    changed: None,
+                    drivers,
+                }
+            })
+            .collect();
+        let what = ladder.rungs[at.rung]
+            .get(target)
+            .map_or_else(String::new, ToString::to_string);
+        found = Some(WhyView {
+            rung: at.rung,
+            target,
+            what,
+            powered: why.powered,
+            together: why.together,
+            scan,
+            causes: listed,
+        });
+    });
+    let mut view = found?;
+    // When each device last changed, from the recording.
+    workspaces.travel(ctx.machine, |t| {
+        let at = t.shown().unwrap_or(t.marks().1);
+        for cause in &mut view.causes {
+            if let Some((device, _)) = &cause.device {
+                cause.changed = t.last_change(device, at);
+            }
+        }
+    });
+    Some(view)
+}
+
+/// The outputs that write `device`: (rung, cell), top to bottom.
+fn outputs(ladder: &engine::ladder::Ladder, device: &str) -> Vec<(usize, Pos)> {
+    drivers(ladder, device)
+        .into_iter()
+        .filter_map(|rung| {
+            let pos = ladder.rungs.get(rung)?.elements().find_map(|(p, e)| {
+                let writes = match e {
+                    engine::ladder::element::Element::Coil { device: d, .. }
+                    | engine::ladder::element::Element::Pulse { device: d, .. }
+                    | engine::ladder::element::Element::TimerCoil { device: d, .. }
+                    | engine::ladder::element::Element::CounterCoil { device: d, .. } => {
+                        d.eq_ignore_ascii_case(device)
+                    }
+                    _ => false,
+                };
+                writes.then_some(p)
+            })?;
+            Some((rung, pos))
+        })
+        .collect()
+}
+
+/// The Why? button and the explanation: `[data-testid=why-panel]`.
+#[component]
+pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let workspaces = use_context::<Workspaces>();
+    let ask = move || {
+        if let Some(w) = workspaces {
+            ctx.travel.why.set(explain(ctx, w));
+        }
+    };
+    // The W key asks through the editor, which has no workspaces.
+    Effect::new(move |first: Option<()>| {
+        ctx.travel.why_request.track();
+        if first.is_some() {
+            ask();
+        }
+    });
+    view! {
+        <section class="why-pane" data-testid="why-panel">
+            <h3>
+                <button type="button" data-testid="why" on:click=move |_| ask()>{move || t().why}</button>
+            </h3>
+            {move || match ctx.travel.why.get() {
+                None => view! { <p class="why-none">{t().why_none}</p> }.into_any(),
+                Some(w) => {
+                    let head = format!(
+                        "{} {} ({} {}{})",
+                        w.what,
+                        if w.powered { t().why_on } else { t().why_off },
+                        t().rung,
+                        w.rung + 1,
+                        w.scan.map(|s| format!(", {} {s}", t().scan)).unwrap_or_default(),
+                    );
+                    let lead = if w.together { t().why_all } else { t().why_any };
+                    view! {
+                        <p data-testid="why-head" data-powered=if w.powered { "1" } else { "0" }>{head}</p>
+                        <p>{lead}</p>
+                        <ul>
+                            {w.causes.into_iter().map(|c| cause_view(ctx, c)).collect_view()}
+                        </ul>
+                    }.into_any()
+                }
+            }}
+        </section>
+    }
+}
+
+fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let device = c.device.clone().map(|(d, _)| d).unwrap_or_default();
+    let state = c.device.as_ref().map(|(d, v)| format!(" · {d} = {v}"));
+    let changed = c.changed;
+    let pos = c.pos;
+    view! {
+        <li data-testid="why-cause" data-device=device>
+            <button type="button" class="why-cell"
+                on:click=move |_| ctx.move_to(Cursor::new(ctx.travel.why.get_untracked().map_or(0, |w| w.rung), pos.row, pos.col))>
+                {c.what.clone()}
+            </button>
+            {state}
+            " · "
+            {match changed {
+                Some(m) => view! {
+                    <button type="button" data-testid="why-changed" data-scan=m.to_string()
+                        on:click=move |_| super::travel::seek(ctx, m)>
+                        {format!("{} {m}", t().why_changed)}
+                    </button>
+                }.into_any(),
+                None => view! { <span>{t().why_unchanged}</span> }.into_any(),
+            }}
+            " · "
+            {if c.drivers.is_empty() {
+                view! { <span data-testid="why-input">{t().why_input}</span> }.into_any()
+            } else {
+                c.drivers.into_iter().map(|(rung, at)| view! {
+                    <button type="button" data-testid="why-driver" data-rung=(rung + 1).to_string()
+                        on:click=move |_| ctx.move_to(Cursor::new(rung, at.row, at.col))>
+                        {format!("{} {}", t().why_driven_by, rung + 1)}
+                    </button>
+                }).collect_view().into_any()
+            }}
+        </li>
+    }
+}
