@@ -123,7 +123,7 @@ async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
     assert_eq!(
         board
             .sim
-            .with_value(|s| s.machine().machine().input_terminals()),
+            .with_value(|s| s.machine().shown_machine().machine().input_terminals()),
         0b100
     );
     pointer(&x02, "pointerdown");
@@ -133,7 +133,7 @@ async fn a_click_on_an_input_switch_toggles_it_and_the_terminal() {
     assert_eq!(
         board
             .sim
-            .with_value(|s| s.machine().machine().input_terminals()),
+            .with_value(|s| s.machine().shown_machine().machine().input_terminals()),
         0
     );
 }
@@ -170,9 +170,13 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
     key(&rv1, "keydown", "End");
     settle().await;
     assert_eq!(attr(&c, "rv1", "aria-valuenow"), "1.10");
-    let delay = board
-        .sim
-        .with_value(|s| s.machine().machine().timer(TimerId::T0).delay());
+    let delay = board.sim.with_value(|s| {
+        s.machine()
+            .shown_machine()
+            .machine()
+            .timer(TimerId::T0)
+            .delay()
+    });
     assert_eq!(delay, SimTime::from_millis(1100));
     key(&rv1, "keydown", "ArrowDown");
     settle().await;
@@ -189,7 +193,7 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
     assert_eq!(
         board
             .sim
-            .with_value(|s| s.machine().machine().counter().set_value()),
+            .with_value(|s| s.machine().shown_machine().machine().counter().set_value()),
         2
     );
 }
@@ -198,7 +202,9 @@ async fn knobs_are_sliders_driven_by_the_keyboard() {
 async fn the_clock_button_steps_one_instruction_per_press() {
     let (_ctx, board, c) = mount();
     assert_eq!(
-        board.sim.with_value(|s| s.machine().machine().mode()),
+        board
+            .sim
+            .with_value(|s| s.machine().shown_machine().machine().mode()),
         Mode::Halt
     );
     let button = find(&c, "clock-button");
@@ -259,7 +265,9 @@ async fn opening_the_seed_example_sets_the_panel_and_can_be_undone() {
     assert_eq!(attr(&c, "rv2", "aria-valuenow"), "1.0");
     assert_eq!(attr(&c, "counter-set-tens", "aria-valuenow"), "1");
     assert_eq!(select.value(), "", "the select returns to its prompt");
-    let memory = board.sim.with_value(|s| *s.machine().machine().memory());
+    let memory = board
+        .sim
+        .with_value(|s| *s.machine().shown_machine().machine().memory());
     assert_eq!(memory[1], 0b100_01000, "loaded into the board");
     find(&c, "example-undo").click();
     settle().await;

@@ -8,6 +8,7 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 from test_app import ROOT, el, open_fresh, severe_console_messages, wait
+from test_ladder import CAPTURE, downloads
 
 FIGURES = ROOT / "tests" / "e2e" / "artifacts" / "figures.json"
 
@@ -54,6 +55,18 @@ def test_break_on_the_count_lamp_then_step_back_and_see_the_earlier_count(driver
          message="the chart marks the break")
     t0 = el(driver, "chart-row-T0")
     assert int(t0.get_attribute("data-rises")) >= 2, "T0's pulses in view"
+    assert f"scan {hit}" in el(driver, "chart-axis").text, "the newest scan at the axis' end"
+    # Export: the scans in view as `hashigo run` prints rows.
+    driver.execute_script(CAPTURE)
+    el(driver, "chart-export").click()
+    csv = downloads(driver, 1)["timing.csv"].splitlines()
+    header = csv[0].split(",")
+    assert header[0] == "time_ms" and "Y01" in header and "T0" in header, header
+    assert len(csv) - 1 == int(t0.get_attribute("data-scans")), "one row per scan in view"
+    last = dict(zip(header, csv[-1].split(",")))
+    assert last["Y01"] == "1", "the lamp at the break's scan"
+    t0_column = [row.split(",")[header.index("T0")] for row in csv[1:]]
+    assert "0" in t0_column and "1" in t0_column, "T0 toggles in view"
     # Five scans back: the ladder shows the count before the last rise.
     for _ in range(5):
         el(driver, "step-back").click()

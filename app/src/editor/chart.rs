@@ -130,6 +130,11 @@ fn default_devices(ctx: LadderCtx) -> Vec<String> {
     out
 }
 
+/// The word "scan" in the page's language.
+fn t_scan(ctx: LadderCtx) -> &'static str {
+    super::texts::texts(ctx.page.lang.get_untracked()).scan
+}
+
 /// The chart.
 #[component]
 pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
@@ -316,6 +321,18 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
                         (breaks, shown)
                     }}
                 </svg>
+            </div>
+            // The axis: the scans and simulated times at both ends.
+            <div class="chart-axis" data-testid="chart-axis" style=format!("width: {WIDTH}px")>
+                {move || data.with(|d| {
+                    let end = |i: usize| d.times.get(i).map(|t| {
+                        format!("{} {} · {t} ms", t_scan(ctx), d.from + i as u64)
+                    });
+                    (
+                        view! { <span>{end(0)}</span> },
+                        view! { <span>{end(d.times.len().saturating_sub(1))}</span> },
+                    )
+                })}
             </div>
             <table class="chart-values" data-testid="chart-cursor">
                 <tbody>
