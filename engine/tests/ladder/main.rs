@@ -3,6 +3,7 @@
 mod cli;
 #[path = "../common/mod.rs"]
 mod common;
+mod declare;
 mod decompile;
 mod differential;
 mod model;

@@ -3,6 +3,7 @@
 
 use engine::ladder::compile::{compile as compile_ladder, Options};
 use engine::ladder::decompile::decompile_text;
+use engine::ladder::plcopen::VarMap;
 use engine::ladder::{plcopen, Project};
 use engine::plc::{new_plc, Command, Plc, PlcError};
 use engine::{MachineId, SimTime};
@@ -118,7 +119,8 @@ pub fn compile_source(
     format: Format,
     flag: Option<MachineId>,
 ) -> Result<(MachineId, String, Settings), Problems> {
-    let (project, settings) = read_project(source, format, flag)?;
+    let map = read_map(args)?;
+    let (project, settings) = read_project(source, format, flag, map.as_ref())?;
     let text = compile_project(args, source, &project, &settings)?;
     Ok((project.machine, text, settings))
 }
@@ -152,6 +154,7 @@ pub fn read_project(
     source: &SourceFile,
     format: Format,
     flag: Option<MachineId>,
+    map: Option<&(SourceFile, VarMap)>,
 ) -> Result<(Project, Settings), Problems> {
     if format == Format::Json {
         let mut project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
@@ -172,9 +175,35 @@ pub fn read_project(
             source.name
         ))
     })?;
-    let ladder = plcopen::import_for(&source.text, Some(machine))
+    let imported = plcopen::import_mapped(&source.text, Some(machine), map.map(|(_, m)| m))
         .map_err(|errors| source.located(&errors))?;
-    Ok((Project::new(machine, ladder), Vec::new()))
+    if let Some((file, _)) = map {
+        // Said next to errors, but they do not stop the import.
+        for (name, line) in &imported.unused_map_entries {
+            eprintln!(
+                "warning: {}:{line}: {} is not a variable or block of {}",
+                file.name,
+                engine::shown(name),
+                source.name
+            );
+        }
+    }
+    Ok((Project::new(machine, imported.ladder), Vec::new()))
+}
+
+/// `--map`'s file (`name,device` a line), when given; errors at its lines.
+pub fn read_map(args: &Args) -> Result<Option<(SourceFile, VarMap)>, Problems> {
+    let Some(path) = args.optional("map").map_err(one)? else {
+        return Ok(None);
+    };
+    let file = SourceFile::read(path).map_err(one)?;
+    let map = VarMap::parse(&file.text).map_err(|errors| {
+        errors
+            .iter()
+            .map(|e| format!("{}:{}: {}", file.name, e.line, e.error))
+            .collect::<Vec<_>>()
+    })?;
+    Ok(Some((file, map)))
 }
 
 /// The ladder a `--program` stands for: a ladder file's project, or a
@@ -187,7 +216,9 @@ pub fn ladder_project(
     scan_ms: u32,
 ) -> Result<Project, Problems> {
     Ok(match format {
-        Format::Json | Format::Xml => read_project(source, format, flag)?.0,
+        Format::Json | Format::Xml => {
+            read_project(source, format, flag, read_map(args)?.as_ref())?.0
+        }
         Format::Il | Format::Asm => {
             let machine = match flag {
                 Some(m) => m,

@@ -30,7 +30,7 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(
         rest,
         &[
-            "machine", "program", "format", "set", "input", "at", "device",
+            "machine", "program", "format", "set", "input", "at", "device", "map",
         ],
     )
     .map_err(one)?;

@@ -99,6 +99,8 @@ pub enum ImportError {
     },
     /// A contact or coil (`kind`) without a variable.
     NoVariable(&'static str),
+    /// A declared variable with no device (the declarations' words).
+    Variable(String),
     /// A negated edge contact (its device).
     NegatedEdge(String),
     /// A coil mixing negated / storage / edge (its device).
@@ -191,6 +193,7 @@ impl fmt::Display for ImportError {
                 Connection::Unconnected => write!(f, "the {what} is not connected on its left"),
             },
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
+            E::Variable(why) => f.write_str(why),
             E::NegatedEdge(d) => write!(
                 f,
                 "contact {d}: a negated edge contact has no ladder form here"

@@ -5,9 +5,10 @@
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 
+use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::{Connection, ImportError};
-use super::{parse_time_literal, NS_V10, NS_V201};
+use super::{parse_time_literal, NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::io86a::{isa::parse_bit, Bit};
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
@@ -30,6 +31,26 @@ pub fn import(text: &str) -> Result<Ladder, Errors> {
 /// [`import`], also checking every element and device against `machine`
 /// so that an unknown device is reported at its line of the XML.
 pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Errors> {
+    import_mapped(text, machine, None).map(|i| i.ladder)
+}
+
+/// A file imported for a machine, with what is worth saying about it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Imported {
+    /// The ladder.
+    pub ladder: Ladder,
+    /// Map entries the file does not use: (name, line of the map).
+    pub unused_map_entries: Vec<(String, usize)>,
+}
+
+/// [`import_for`] reading the file's declarations (issue #18): located
+/// variables map by rule, others through `map` ([`VarMap`]); the
+/// variables' names become device comments.
+pub fn import_mapped(
+    text: &str,
+    machine: Option<MachineId>,
+    map: Option<&VarMap>,
+) -> Result<Imported, Errors> {
     let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
     if root.name != "project" {
         return Err(vec![Located::new(
@@ -38,7 +59,7 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
         )]);
     }
     match root.attr("xmlns") {
-        None | Some(NS_V201) | Some(NS_V10) => {}
+        None | Some(NS_V201) | Some(NS_V200) | Some(NS_V10) => {}
         Some(other) => {
             return Err(vec![Located::new(
                 root.line,
@@ -55,10 +76,14 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
     if bodies.is_empty() {
         return Err(vec![Located::new(root.line, ImportError::NoLdBody)]);
     }
+    let names = match machine {
+        Some(m) => declare::names(&root, m, map),
+        None => Names::none(),
+    };
     let mut ladder = Ladder::default();
     let mut errors = Vec::new();
     for ld in bodies {
-        match Body::read(ld).and_then(|b| b.rungs(machine)) {
+        match Body::read(ld, &names).and_then(|b| b.rungs(machine)) {
             Ok(rungs) => {
                 for (logic, line) in rungs {
                     match try_layout(&logic) {
@@ -73,10 +98,34 @@ pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Erro
             Err(e) => errors.extend(e),
         }
     }
-    if errors.is_empty() {
-        Ok(ladder)
-    } else {
-        Err(errors)
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let used: std::collections::BTreeSet<String> = ladder
+        .rungs
+        .iter()
+        .flat_map(|r| r.elements().filter_map(|(_, e)| bit_device(e)))
+        .collect();
+    for (device, name) in names.comments() {
+        if used.contains(&device) {
+            ladder.device_comments.entry(device).or_insert(name);
+        }
+    }
+    Ok(Imported {
+        ladder,
+        unused_map_entries: names.unused_map_lines(),
+    })
+}
+
+/// The bit device a contact or output names.
+fn bit_device(e: &Element) -> Option<String> {
+    match e {
+        Element::Contact { device, .. }
+        | Element::Coil { device, .. }
+        | Element::Pulse { device, .. }
+        | Element::TimerCoil { device, .. }
+        | Element::CounterCoil { device, .. } => Some(device.clone()),
+        _ => None,
     }
 }
 
@@ -101,7 +150,7 @@ struct Body {
 const RAIL: usize = 0;
 
 impl Body {
-    fn read(ld: &Node) -> Result<Body, Errors> {
+    fn read(ld: &Node, names: &Names) -> Result<Body, Errors> {
         let mut b = Body {
             parent: vec![RAIL],
             ..Body::default()
@@ -143,7 +192,7 @@ impl Body {
             }
         }
         for (seq, n) in ld.children.iter().enumerate() {
-            if let Err(m) = b.element(n, seq) {
+            if let Err(m) = b.element(n, seq, names) {
                 b.errors.push(Located::new(n.line, m));
             }
         }
@@ -215,14 +264,22 @@ impl Body {
         joined.ok_or_else(|| fail(Connection::Unconnected))
     }
 
-    fn element(&mut self, n: &Node, seq: usize) -> Result<(), ImportError> {
+    fn element(&mut self, n: &Node, seq: usize, names: &Names) -> Result<(), ImportError> {
         let id = n.attr("localId").unwrap_or_default().to_string();
         let (y, x) = position(n);
         let pos = Pos::new(y, x * 65_536 + seq);
-        let variable = || n.child("variable").map(|v| v.text.trim().to_string());
+        // A declared name stands for its device (located or mapped).
+        let variable = || -> Result<Option<String>, ImportError> {
+            match n.child("variable").map(|v| v.text.trim().to_string()) {
+                Some(v) if !v.is_empty() => {
+                    names.device(&v).map(Some).map_err(ImportError::Variable)
+                }
+                other => Ok(other),
+            }
+        };
         match n.name.as_str() {
             "contact" => {
-                let device = variable()
+                let device = variable()?
                     .filter(|v| !v.is_empty())
                     .ok_or(ImportError::NoVariable("contact"))?;
                 let kind = match (negated(n)?, edge(n)?) {
@@ -244,7 +301,7 @@ impl Body {
                 ));
             }
             "coil" => {
-                let device = variable()
+                let device = variable()?
                     .filter(|v| !v.is_empty())
                     .ok_or(ImportError::NoVariable("coil"))?;
                 let element = match (negated(n)?, storage(n)?, edge(n)?) {
@@ -265,7 +322,7 @@ impl Body {
                 self.union(input, out);
                 self.outputs.push((input, element, pos, n.line));
             }
-            "block" => self.block(n, &id, pos)?,
+            "block" => self.block(n, &id, pos, names)?,
             "leftPowerRail" | "rightPowerRail" | "inVariable" | "comment" => {}
             "outVariable" | "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
             other => return Err(ImportError::Unsupported(other.to_string())),
@@ -273,9 +330,13 @@ impl Body {
         Ok(())
     }
 
-    fn block(&mut self, n: &Node, id: &str, pos: Pos) -> Result<(), ImportError> {
+    fn block(&mut self, n: &Node, id: &str, pos: Pos, names: &Names) -> Result<(), ImportError> {
         let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
-        let instance = n.attr("instanceName").unwrap_or_default().to_string();
+        let written = n.attr("instanceName").unwrap_or_default();
+        // A map may give the instance a device (`TON0,T00`).
+        let instance = names
+            .instance(written)
+            .unwrap_or_else(|| written.to_string());
         let inputs: Vec<&Node> = n
             .child("inputVariables")
             .map(|v| v.all("variable").collect())

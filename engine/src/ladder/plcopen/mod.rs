@@ -5,17 +5,21 @@
 //! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
 //! - [`export`](mod@export): rungs to a project file both tools open.
 
+pub mod declare;
 pub mod dom;
 pub mod error;
 pub mod export;
 pub mod import;
 
+pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
-pub use import::{import, import_for};
+pub use import::{import, import_for, import_mapped, Imported};
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";
+/// The TC6 v2.00 namespace (CODESYS V3 exports).
+pub const NS_V200: &str = "http://www.plcopen.org/xml/tc6_0200";
 /// The TC6 v1.0 namespace.
 pub const NS_V10: &str = "http://www.plcopen.org/xml/tc6.xsd";
 

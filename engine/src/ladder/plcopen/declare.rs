@@ -1,0 +1,311 @@
+//! Declarations (issue #18): the names a PLCopen file gives its variables
+//! (`Start`, `Q1`, `lamp`) turned into the machine's devices. A located
+//! variable maps by rule ([`located`]: `%IX0.n` an input, `%QX0.n` an
+//! output, `%MX0.n` / `%M0.n` an internal relay, the machine's sizes
+//! checked); any other from a map file (`name,device` a line, given as
+//! `--map`), which may name function-block instances too (`TON0,T00`).
+//! A map entry the file does not use is a warning. Names the file does not
+//! declare, and declared names that are the machine's own devices, stay as
+//! written (a file written for Hashigo uses `X00`).
+
+use std::collections::{HashMap, HashSet};
+
+use super::dom::Node;
+use crate::error::Located;
+use crate::ladder::element::Element;
+use crate::ladder::target::check_element;
+use crate::MachineId;
+
+/// A map file: `name,device` a line (`#` comments, blank lines and a
+/// `name,device` header skipped).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct VarMap {
+    /// (name, device, line), in file order.
+    pub entries: Vec<(String, String, usize)>,
+}
+
+impl VarMap {
+    /// Reads a map file; every malformed line is an error at its line.
+    pub fn parse(text: &str) -> Result<VarMap, Vec<Located<String>>> {
+        let mut entries = Vec::new();
+        let mut errors = Vec::new();
+        let mut seen: HashMap<String, usize> = HashMap::new();
+        for (i, raw) in text.lines().enumerate() {
+            let line = i + 1;
+            let content = raw.split('#').next().unwrap_or("").trim();
+            if content.is_empty() || (line == 1 && content.eq_ignore_ascii_case("name,device")) {
+                continue;
+            }
+            let Some((name, device)) = content.split_once(',') else {
+                errors.push(Located::new(
+                    line,
+                    format!("expected NAME,DEVICE, found {}", crate::shown(content)),
+                ));
+                continue;
+            };
+            let (name, device) = (name.trim(), device.trim());
+            if name.is_empty() || device.is_empty() || device.contains(',') {
+                errors.push(Located::new(
+                    line,
+                    format!("expected NAME,DEVICE, found {}", crate::shown(content)),
+                ));
+                continue;
+            }
+            if let Some(first) = seen.insert(name.to_ascii_lowercase(), line) {
+                errors.push(Located::new(
+                    line,
+                    format!(
+                        "{} is mapped twice (first at line {first})",
+                        crate::shown(name)
+                    ),
+                ));
+                continue;
+            }
+            entries.push((name.to_string(), device.to_string(), line));
+        }
+        if errors.is_empty() {
+            Ok(VarMap { entries })
+        } else {
+            Err(errors)
+        }
+    }
+}
+
+/// What a name stands for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Meaning {
+    /// A device, from the variable's address or the map (its line).
+    Device(String, Option<usize>),
+    /// A declared variable with neither (the declaration's line).
+    Unmapped(usize),
+    /// A located variable the machine has no device for (why, line).
+    Refused(String, usize),
+}
+
+/// A file's names and what each stands for on one machine.
+#[derive(Debug, Default)]
+pub struct Names {
+    by_name: HashMap<String, (String, Meaning)>,
+    used_map_lines: std::cell::RefCell<HashSet<usize>>,
+    map_lines: Vec<(String, usize)>,
+}
+
+impl Names {
+    /// No names: every variable as written.
+    pub fn none() -> Names {
+        Names::default()
+    }
+
+    /// The device `name` (a variable or block instance, as written in the
+    /// body) stands for: mapped, located, or `name` itself when the file
+    /// does not declare it.
+    pub fn device(&self, name: &str) -> Result<String, String> {
+        match self.by_name.get(&name.trim().to_ascii_lowercase()) {
+            None => Ok(name.trim().to_string()),
+            Some((declared, meaning)) => match meaning {
+                Meaning::Device(d, map_line) => {
+                    if let Some(l) = map_line {
+                        self.used_map_lines.borrow_mut().insert(*l);
+                    }
+                    Ok(d.clone())
+                }
+                Meaning::Unmapped(line) => Err(format!(
+                    "variable {declared} (declared at line {line}) has no device: give it an \
+                     address (%IX0.0, %QX0.0, %MX0.0) or map it (--map: {declared},DEVICE)"
+                )),
+                Meaning::Refused(why, line) => {
+                    Err(format!("variable {declared} (line {line}): {why}"))
+                }
+            },
+        }
+    }
+
+    /// The device a block instance stands for, if the map names it.
+    pub fn instance(&self, name: &str) -> Option<String> {
+        match self.by_name.get(&name.trim().to_ascii_lowercase()) {
+            Some((_, Meaning::Device(d, Some(l)))) => {
+                self.used_map_lines.borrow_mut().insert(*l);
+                Some(d.clone())
+            }
+            _ => None,
+        }
+    }
+
+    /// The variable names of the devices used, for device comments.
+    pub fn comments(&self) -> Vec<(String, String)> {
+        let mut out: Vec<(String, String)> = self
+            .by_name
+            .values()
+            .filter_map(|(name, m)| match m {
+                Meaning::Device(d, _) if !d.eq_ignore_ascii_case(name) => {
+                    Some((d.clone(), name.clone()))
+                }
+                _ => None,
+            })
+            .collect();
+        out.sort();
+        out
+    }
+
+    /// The map's lines that no element used.
+    pub fn unused_map_lines(&self) -> Vec<(String, usize)> {
+        let used = self.used_map_lines.borrow();
+        self.map_lines
+            .iter()
+            .filter(|(_, l)| !used.contains(l))
+            .cloned()
+            .collect()
+    }
+}
+
+/// Reads every variable declared in `root` (each POU's interface, the
+/// configurations' and resources' globals) for `machine`, with `map`.
+pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
+    let mut names = Names::none();
+    let mut variables = Vec::new();
+    for scope in [
+        "localVars",
+        "inputVars",
+        "outputVars",
+        "inOutVars",
+        "externalVars",
+        "globalVars",
+        "tempVars",
+    ] {
+        let mut blocks = Vec::new();
+        root.descendants(scope, &mut blocks);
+        for b in blocks {
+            variables.extend(b.all("variable"));
+        }
+    }
+    for v in variables {
+        let Some(name) = v.attr("name") else {
+            continue;
+        };
+        // A file written for Hashigo names the devices themselves.
+        if check_element(machine, &Element::no(name)).is_ok() {
+            continue;
+        }
+        let elementary = v
+            .child("type")
+            .is_some_and(|t| t.children.iter().all(|c| c.name != "derived"));
+        let meaning = match v.attr("address") {
+            Some(address) => match located(machine, address) {
+                Ok(device) => Meaning::Device(device, None),
+                Err(why) => Meaning::Refused(why, v.line),
+            },
+            // A function-block instance is the block itself unless mapped.
+            None if !elementary => continue,
+            None => Meaning::Unmapped(v.line),
+        };
+        names
+            .by_name
+            .insert(name.to_ascii_lowercase(), (name.to_string(), meaning));
+    }
+    for (name, device, line) in map.map(|m| m.entries.as_slice()).unwrap_or(&[]) {
+        names.map_lines.push((name.clone(), *line));
+        names.by_name.insert(
+            name.to_ascii_lowercase(),
+            (name.clone(), Meaning::Device(device.clone(), Some(*line))),
+        );
+    }
+    names
+}
+
+/// The device a located variable's address stands for on `machine`:
+/// `%IX0.n` input n, `%QX0.n` output n, `%MX0.n` (or `%M0.n`) internal
+/// relay n (byte b, bit n: b × 8 + n), within the machine's sizes.
+pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
+    let a = address.trim().to_ascii_uppercase();
+    let bad = || {
+        format!(
+            "address {} is not %IX0.0, %QX0.0 or %MX0.0",
+            crate::shown(address)
+        )
+    };
+    let rest = a.strip_prefix('%').ok_or_else(bad)?;
+    let mut chars = rest.chars();
+    let area = chars.next().ok_or_else(bad)?;
+    let rest = chars.as_str();
+    let rest = match rest.chars().next() {
+        Some('X') => &rest[1..],
+        Some('B' | 'W' | 'D' | 'L') => {
+            return Err(format!(
+                "{address} is a word: Hashigo's ladders import bit variables only"
+            ))
+        }
+        _ => rest,
+    };
+    let (byte, bit) = rest.split_once('.').ok_or_else(bad)?;
+    let (byte, bit): (u32, u32) = (
+        byte.parse().map_err(|_| bad())?,
+        bit.parse().map_err(|_| bad())?,
+    );
+    if bit > 7 {
+        return Err(bad());
+    }
+    let n = byte.saturating_mul(8).saturating_add(bit);
+    let device =
+        match (machine, area) {
+            (MachineId::Io86a | MachineId::MinasecU, 'I') => format!("X{n:02}"),
+            (MachineId::Io86a | MachineId::MinasecU, 'Q') => format!("Y{n:02}"),
+            (MachineId::Io86a, 'M') => format!("M{n:02}"),
+            // MINASEC-U's relays are M00-M07 and M10-M13.
+            (MachineId::MinasecU, 'M') => format!("M{}{}", n / 8, n % 8),
+            (MachineId::ArduinoPlc, 'I') => format!("X{n:03}"),
+            (MachineId::ArduinoPlc, 'Q') => format!("Y{n:03}"),
+            (MachineId::ArduinoPlc, 'M') => {
+                return Err("the Arduino PLC has no internal relays".to_string())
+            }
+            (MachineId::AvrPlc, _) => return Err(
+                "the AVR PLC names its bits in its own source: map the variable (--map NAME,R4.0)"
+                    .to_string(),
+            ),
+            _ => return Err(bad()),
+        };
+    check_element(machine, &Element::no(&device))
+        .map(|_| device)
+        .map_err(|e| format!("{address} is {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn located_variables_map_by_rule_within_the_machines_sizes() {
+        let io = MachineId::Io86a;
+        assert_eq!(located(io, "%IX0.3").as_deref(), Ok("X03"));
+        assert_eq!(located(io, "%QX0.5").as_deref(), Ok("Y05"));
+        assert_eq!(located(io, "%MX1.2").as_deref(), Ok("M10"));
+        assert_eq!(located(io, "%m0.1").as_deref(), Ok("M01"));
+        assert!(located(io, "%QX0.6").is_err(), "IO86A has Y00-Y05");
+        assert!(located(io, "%IW0").is_err(), "a word");
+        assert!(located(io, "IX0.0").is_err());
+        assert!(located(io, "%IX0.9").is_err());
+        let m = MachineId::MinasecU;
+        assert_eq!(located(m, "%MX1.3").as_deref(), Ok("M13"));
+        assert!(located(m, "%MX1.4").is_err(), "MINASEC-U has M10-M13");
+        assert_eq!(
+            located(MachineId::ArduinoPlc, "%QX0.0").as_deref(),
+            Ok("Y000")
+        );
+        assert!(located(MachineId::AvrPlc, "%IX0.0").is_err());
+    }
+
+    #[test]
+    fn map_files_read_and_refuse_by_line() {
+        let map = VarMap::parse("name,device\n# lamps\nStart, X00\nTON0,T00 # the timer\n\n")
+            .expect("a map");
+        assert_eq!(
+            map.entries,
+            vec![
+                ("Start".into(), "X00".into(), 3),
+                ("TON0".into(), "T00".into(), 4)
+            ]
+        );
+        let errors = VarMap::parse("Start\nA,X00\na,X01\nB,\n").expect_err("bad lines");
+        let lines: Vec<usize> = errors.iter().map(|e| e.line).collect();
+        assert_eq!(lines, vec![1, 3, 4]);
+    }
+}
