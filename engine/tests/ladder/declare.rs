@@ -176,3 +176,87 @@ fn a_real_openplc_lab_imports_with_a_map() {
         ]
     );
 }
+
+const TIMER: &str = include_str!("fixtures/openplc-timer.xml");
+
+/// The 1-based line of `TIMER` holding `needle`.
+fn line_of(needle: &str) -> usize {
+    TIMER
+        .lines()
+        .position(|l| l.contains(needle))
+        .expect("in the fixture")
+        + 1
+}
+
+#[test]
+fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
+    use engine::ladder::plcopen::import_pou;
+    // IO86A: the in-line TON becomes T00's coil and contact (TON0 mapped).
+    let map = VarMap::parse("TON0,T00\n").expect("a map");
+    let io = import_mapped(TIMER, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let il = engine::ladder::compile::compile(&io.ladder, MachineId::Io86a, Default::default())
+        .expect("compiles");
+    let steps: Vec<&str> = il.lines().filter(|l| !l.starts_with(';')).collect();
+    assert_eq!(
+        steps,
+        ["LD X00", "OUT T00", "K20", "LD T00", "OUT Y00", "END"],
+        "{il}"
+    );
+    let said: Vec<(usize, String)> = io
+        .warnings
+        .iter()
+        .map(|w| (w.line, w.error.clone()))
+        .collect();
+    let expected = [
+        (
+            line_of("<pou name=\"helper\""),
+            "functionBlock helper skipped",
+        ),
+        (line_of("<vendorElement"), "\"Network title\" skipped"),
+        (
+            line_of("<outVariable localId=\"6\""),
+            "ET feeds only the variable \"elapsed\"",
+        ),
+    ];
+    for (line, what) in expected {
+        assert!(
+            said.iter().any(|(l, w)| *l == line && w.contains(what)),
+            "{what} at {line}: {said:?}"
+        );
+    }
+    // Unmapped, TON0 is no IO86A timer: said at the block.
+    let errors = import_for(TIMER, Some(MachineId::Io86a)).expect_err("TON0 is no Tnn");
+    assert_eq!(
+        errors[0].line,
+        line_of("<block localId=\"3\""),
+        "{errors:?}"
+    );
+    // The AVR PLC keeps the box in line; its bits come from the map.
+    let map = VarMap::parse("start,R4.0\nlamp,R5.0\n").expect("a map");
+    let avr = import_mapped(TIMER, Some(MachineId::AvrPlc), Some(&map)).expect("imports");
+    let text = engine::ladder::compile::compile(&avr.ladder, MachineId::AvrPlc, Default::default())
+        .expect("compiles");
+    assert!(
+        text.contains(".db TON,LOW(Timer0),LOW(2000/Scan)"),
+        "{text}"
+    );
+    // --pou takes the function block alone; a name the file lacks is said.
+    let helper = import_pou(
+        TIMER,
+        Some(MachineId::Io86a),
+        Some(&VarMap::parse("a,X01\nb,Y01\n").expect("map")),
+        Some("HELPER"),
+    )
+    .expect("imports");
+    assert_eq!(helper.ladder.rungs.len(), 1);
+    let none =
+        import_pou(TIMER, Some(MachineId::Io86a), None, Some("nope")).expect_err("no such POU");
+    assert!(
+        none[0]
+            .error
+            .to_string()
+            .contains("the file has helper, main"),
+        "{:?}",
+        none
+    );
+}

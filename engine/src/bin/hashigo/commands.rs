@@ -19,7 +19,7 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(
         rest,
         &[
-            "machine", "program", "format", "set", "input", "until", "every", "watch", "map",
+            "machine", "program", "format", "set", "input", "until", "every", "watch", "map", "pou",
         ],
     )
     .map_err(one)?;
@@ -170,7 +170,7 @@ pub fn bench(rest: &[String]) -> Result<(), Problems> {
 
 /// `hashigo asm`.
 pub fn asm(rest: &[String]) -> Result<(), Problems> {
-    let args = Args::parse(rest, &["machine", "program", "format", "map"]).map_err(one)?;
+    let args = Args::parse(rest, &["machine", "program", "format", "map", "pou"]).map_err(one)?;
     print!("{}", load(&args)?.plc.listing());
     Ok(())
 }
@@ -230,7 +230,8 @@ fn typed_lines(line: &str) -> impl Iterator<Item = &str> {
 /// `hashigo compile`: a ladder (`.json` project or PLCopen `.xml`) to
 /// the machine's program text, which `hashigo run` takes back.
 pub fn compile(rest: &[String]) -> Result<(), Problems> {
-    let args = Args::parse(rest, &["machine", "program", "format", "set", "map"]).map_err(one)?;
+    let args =
+        Args::parse(rest, &["machine", "program", "format", "set", "map", "pou"]).map_err(one)?;
     let flag = machine_flag(&args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;

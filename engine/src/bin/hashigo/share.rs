@@ -11,7 +11,7 @@ use crate::source::{ladder_project, machine_flag, one, Problems};
 /// A ladder (`.json`, `.xml`) goes as it is; a program text is
 /// decompiled to its ladder first.
 pub fn share(rest: &[String]) -> Result<(), Problems> {
-    let args = Args::parse(rest, &["machine", "program", "format", "map"]).map_err(one)?;
+    let args = Args::parse(rest, &["machine", "program", "format", "map", "pou"]).map_err(one)?;
     let flag = machine_flag(&args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;

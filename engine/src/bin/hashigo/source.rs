@@ -119,8 +119,8 @@ pub fn compile_source(
     format: Format,
     flag: Option<MachineId>,
 ) -> Result<(MachineId, String, Settings), Problems> {
-    let map = read_map(args)?;
-    let (project, settings) = read_project(source, format, flag, map.as_ref())?;
+    let xml = XmlOptions::read(args)?;
+    let (project, settings) = read_project(source, format, flag, &xml)?;
     let text = compile_project(args, source, &project, &settings)?;
     Ok((project.machine, text, settings))
 }
@@ -154,7 +154,7 @@ pub fn read_project(
     source: &SourceFile,
     format: Format,
     flag: Option<MachineId>,
-    map: Option<&(SourceFile, VarMap)>,
+    xml: &XmlOptions,
 ) -> Result<(Project, Settings), Problems> {
     if format == Format::Json {
         let mut project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
@@ -175,8 +175,17 @@ pub fn read_project(
             source.name
         ))
     })?;
-    let imported = plcopen::import_mapped(&source.text, Some(machine), map.map(|(_, m)| m))
-        .map_err(|errors| source.located(&errors))?;
+    let map = xml.map.as_ref();
+    let imported = plcopen::import_pou(
+        &source.text,
+        Some(machine),
+        map.map(|(_, m)| m),
+        xml.pou.as_deref(),
+    )
+    .map_err(|errors| source.located(&errors))?;
+    for w in &imported.warnings {
+        eprintln!("warning: {}:{}: {}", source.name, w.line, w.error);
+    }
     if let Some((file, _)) = map {
         // Said next to errors, but they do not stop the import.
         for (name, line) in &imported.unused_map_entries {
@@ -191,19 +200,34 @@ pub fn read_project(
     Ok((Project::new(machine, imported.ladder), Vec::new()))
 }
 
-/// `--map`'s file (`name,device` a line), when given; errors at its lines.
-pub fn read_map(args: &Args) -> Result<Option<(SourceFile, VarMap)>, Problems> {
-    let Some(path) = args.optional("map").map_err(one)? else {
-        return Ok(None);
-    };
-    let file = SourceFile::read(path).map_err(one)?;
-    let map = VarMap::parse(&file.text).map_err(|errors| {
-        errors
-            .iter()
-            .map(|e| format!("{}:{}: {}", file.name, e.line, e.error))
-            .collect::<Vec<_>>()
-    })?;
-    Ok(Some((file, map)))
+/// How a PLCopen file is read: `--map` (its file and entries) and
+/// `--pou`.
+#[derive(Default)]
+pub struct XmlOptions {
+    pub map: Option<(SourceFile, VarMap)>,
+    pub pou: Option<String>,
+}
+
+impl XmlOptions {
+    /// `--map`'s file (`name,device` a line; errors at its lines) and
+    /// `--pou`, when given.
+    pub fn read(args: &Args) -> Result<XmlOptions, Problems> {
+        let pou = args.optional("pou").map_err(one)?.map(str::to_string);
+        let Some(path) = args.optional("map").map_err(one)? else {
+            return Ok(XmlOptions { map: None, pou });
+        };
+        let file = SourceFile::read(path).map_err(one)?;
+        let map = VarMap::parse(&file.text).map_err(|errors| {
+            errors
+                .iter()
+                .map(|e| format!("{}:{}: {}", file.name, e.line, e.error))
+                .collect::<Vec<_>>()
+        })?;
+        Ok(XmlOptions {
+            map: Some((file, map)),
+            pou,
+        })
+    }
 }
 
 /// The ladder a `--program` stands for: a ladder file's project, or a
@@ -217,7 +241,7 @@ pub fn ladder_project(
 ) -> Result<Project, Problems> {
     Ok(match format {
         Format::Json | Format::Xml => {
-            read_project(source, format, flag, read_map(args)?.as_ref())?.0
+            read_project(source, format, flag, &XmlOptions::read(args)?)?.0
         }
         Format::Il | Format::Asm => {
             let machine = match flag {

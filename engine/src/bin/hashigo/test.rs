@@ -37,7 +37,7 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let (project, settings) = read_project(&source, format, flag, None)?;
+    let (project, settings) = read_project(&source, format, flag, &Default::default())?;
     if project.tests.is_empty() {
         return Err(one(format!(
             "{}: the project has no test cases",

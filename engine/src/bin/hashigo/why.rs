@@ -30,7 +30,7 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(
         rest,
         &[
-            "machine", "program", "format", "set", "input", "at", "device", "map",
+            "machine", "program", "format", "set", "input", "at", "device", "map", "pou",
         ],
     )
     .map_err(one)?;

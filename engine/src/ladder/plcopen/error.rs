@@ -101,6 +101,10 @@ pub enum ImportError {
     NoVariable(&'static str),
     /// A declared variable with no device (the declarations' words).
     Variable(String),
+    /// `--pou` names no POU of the file (the name, the file's POUs).
+    NoSuchPou(String, String),
+    /// The programs that run have no LD body (theirs, the POUs with one).
+    NoLdInPrograms(String, String),
     /// A negated edge contact (its device).
     NegatedEdge(String),
     /// A coil mixing negated / storage / edge (its device).
@@ -194,6 +198,11 @@ impl fmt::Display for ImportError {
             },
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
             E::Variable(why) => f.write_str(why),
+            E::NoSuchPou(name, all) => write!(f, "no POU is named {name}: the file has {all}"),
+            E::NoLdInPrograms(run, ld) => write!(
+                f,
+                "the programs the tasks run ({run}) have no LD body; LD is in {ld} (--pou NAME imports one)"
+            ),
             E::NegatedEdge(d) => write!(
                 f,
                 "contact {d}: a negated edge contact has no ladder form here"

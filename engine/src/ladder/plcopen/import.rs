@@ -41,6 +41,8 @@ pub struct Imported {
     pub ladder: Ladder,
     /// Map entries the file does not use: (name, line of the map).
     pub unused_map_entries: Vec<(String, usize)>,
+    /// What was dropped or skipped, at its line of the file.
+    pub warnings: Vec<Located<String>>,
 }
 
 /// [`import_for`] reading the file's declarations (issue #18): located
@@ -50,6 +52,17 @@ pub fn import_mapped(
     text: &str,
     machine: Option<MachineId>,
     map: Option<&VarMap>,
+) -> Result<Imported, Errors> {
+    import_pou(text, machine, map, None)
+}
+
+/// [`import_mapped`] of one POU (`--pou NAME`), or, with `None`, of the
+/// programs the configuration's tasks run ([`choose_pous`]).
+pub fn import_pou(
+    text: &str,
+    machine: Option<MachineId>,
+    map: Option<&VarMap>,
+    pou: Option<&str>,
 ) -> Result<Imported, Errors> {
     let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
     if root.name != "project" {
@@ -69,12 +82,25 @@ pub fn import_mapped(
     }
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
-    let bodies: Vec<&Node> = pous
+    let mut warnings = Vec::new();
+    let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
+    let bodies: Vec<&Node> = chosen
         .iter()
         .filter_map(|p| p.child("body")?.child("LD"))
         .collect();
     if bodies.is_empty() {
-        return Err(vec![Located::new(root.line, ImportError::NoLdBody)]);
+        let with_ld: Vec<&str> = pous
+            .iter()
+            .filter(|p| p.child("body").and_then(|b| b.child("LD")).is_some())
+            .filter_map(|p| p.attr("name"))
+            .collect();
+        let error = if with_ld.is_empty() {
+            ImportError::NoLdBody
+        } else {
+            let run: Vec<&str> = chosen.iter().filter_map(|p| p.attr("name")).collect();
+            ImportError::NoLdInPrograms(run.join(", "), with_ld.join(", "))
+        };
+        return Err(vec![Located::new(root.line, error)]);
     }
     let names = match machine {
         Some(m) => declare::names(&root, m, map),
@@ -83,7 +109,7 @@ pub fn import_mapped(
     let mut ladder = Ladder::default();
     let mut errors = Vec::new();
     for ld in bodies {
-        match Body::read(ld, &names).and_then(|b| b.rungs(machine)) {
+        match Body::read(ld, &names).and_then(|b| b.rungs(machine, &mut warnings)) {
             Ok(rungs) => {
                 for (logic, line) in rungs {
                     match try_layout(&logic) {
@@ -111,10 +137,75 @@ pub fn import_mapped(
             ladder.device_comments.entry(device).or_insert(name);
         }
     }
+    warnings.sort_by_key(|w| w.line);
     Ok(Imported {
         ladder,
         unused_map_entries: names.unused_map_lines(),
+        warnings,
     })
+}
+
+/// The POUs that run: `only` if given; else the programs the
+/// configurations instance (tasks' and resources' `pouInstance`), in that
+/// order; else every program; else every POU. Other POUs with an LD body
+/// (function blocks no task runs, unused programs) are skipped with a
+/// warning.
+fn choose_pous<'a>(
+    root: &Node,
+    pous: &[&'a Node],
+    only: Option<&str>,
+    warnings: &mut Vec<Located<String>>,
+) -> Result<Vec<&'a Node>, Errors> {
+    let name = |p: &Node| p.attr("name").unwrap_or_default().to_ascii_lowercase();
+    if let Some(only) = only {
+        let wanted = only.trim().to_ascii_lowercase();
+        return match pous.iter().find(|p| name(p) == wanted) {
+            Some(p) => Ok(vec![*p]),
+            None => {
+                let names: Vec<&str> = pous.iter().filter_map(|p| p.attr("name")).collect();
+                Err(vec![Located::new(
+                    root.line,
+                    ImportError::NoSuchPou(only.to_string(), names.join(", ")),
+                )])
+            }
+        };
+    }
+    let mut instances = Vec::new();
+    root.descendants("pouInstance", &mut instances);
+    let mut chosen: Vec<&Node> = Vec::new();
+    for i in instances {
+        let ty = i.attr("typeName").unwrap_or_default().to_ascii_lowercase();
+        if let Some(p) = pous.iter().find(|p| name(p) == ty) {
+            if !chosen.iter().any(|c| std::ptr::eq(*c, *p)) {
+                chosen.push(p);
+            }
+        }
+    }
+    if chosen.is_empty() {
+        chosen = pous
+            .iter()
+            .copied()
+            .filter(|p| p.attr("pouType") == Some("program"))
+            .collect();
+    }
+    if chosen.is_empty() {
+        return Ok(pous.to_vec());
+    }
+    for p in pous {
+        let has_ld = p.child("body").and_then(|b| b.child("LD")).is_some();
+        if has_ld && !chosen.iter().any(|c| std::ptr::eq(*c, *p)) {
+            let kind = p.attr("pouType").unwrap_or("POU");
+            warnings.push(Located::new(
+                p.line,
+                format!(
+                    "{kind} {} skipped: no task runs it (--pou {} imports it alone)",
+                    p.attr("name").unwrap_or_default(),
+                    p.attr("name").unwrap_or_default()
+                ),
+            ));
+        }
+    }
+    Ok(chosen)
 }
 
 /// The bit device a contact or output names.
@@ -144,6 +235,8 @@ struct Body {
     /// Points some element takes power from (not the right rail).
     consumed: Vec<usize>,
     comments: Vec<(usize, String)>,
+    /// What is worth saying but does not stop the import.
+    warnings: Vec<Located<String>>,
     errors: Errors,
 }
 
@@ -324,9 +417,65 @@ impl Body {
             }
             "block" => self.block(n, &id, pos, names)?,
             "leftPowerRail" | "rightPowerRail" | "inVariable" | "comment" => {}
-            "outVariable" | "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
+            "outVariable" => self.out_variable(n, pos, names)?,
+            "vendorElement" => {
+                let what = n
+                    .child("alternativeText")
+                    .map(|t| t.deep_text().trim().to_string())
+                    .filter(|t| !t.is_empty())
+                    .unwrap_or_else(|| "a vendor element".to_string());
+                self.warnings.push(Located::new(
+                    n.line,
+                    format!("{} skipped: a vendor's own element", crate::shown(&what)),
+                ));
+            }
+            "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
             other => return Err(ImportError::Unsupported(other.to_string())),
         }
+        Ok(())
+    }
+
+    /// An output variable box: fed with power (a contact's, a block's
+    /// Q), a coil on its variable; fed from a timer's ET or a counter's
+    /// CV, which Hashigo's ladders do not carry, dropped with a warning.
+    fn out_variable(&mut self, n: &Node, pos: Pos, names: &Names) -> Result<(), ImportError> {
+        let expr = n
+            .child("expression")
+            .map(|e| e.text.trim().to_string())
+            .unwrap_or_default();
+        let cpi = n.child("connectionPointIn");
+        let from = cpi.and_then(|c| c.child("connection"));
+        let pin = from
+            .and_then(|c| c.attr("formalParameter"))
+            .unwrap_or_default()
+            .to_ascii_uppercase();
+        let block = from
+            .and_then(|c| c.attr("refLocalId"))
+            .and_then(|r| self.kinds.get(r))
+            .is_some_and(|(k, _)| k == "block");
+        if block && matches!(pin.as_str(), "ET" | "CV") {
+            self.warnings.push(Located::new(
+                n.line,
+                format!(
+                    "the block's {pin} feeds only the variable {}: dropped (Hashigo's ladders carry no word outputs)",
+                    crate::shown(&expr)
+                ),
+            ));
+            return Ok(());
+        }
+        if expr.is_empty() {
+            return Err(ImportError::NoVariable("output variable"));
+        }
+        let device = names.device(&expr).map_err(ImportError::Variable)?;
+        let kind = if negated(n)? {
+            CoilKind::Inverted
+        } else {
+            CoilKind::Normal
+        };
+        let element = coil(kind, device);
+        let input = self.join(cpi, &format!("output variable {expr}"))?;
+        self.consumed.push(input);
+        self.outputs.push((input, element, pos, n.line));
         Ok(())
     }
 
@@ -418,8 +567,13 @@ impl Body {
     }
 
     /// The rungs, each with the XML line of its first output.
-    fn rungs(mut self, machine: Option<MachineId>) -> Result<Vec<(RungLogic, usize)>, Errors> {
-        let (edges, lines) = self.graph()?;
+    fn rungs(
+        mut self,
+        machine: Option<MachineId>,
+        warnings: &mut Vec<Located<String>>,
+    ) -> Result<Vec<(RungLogic, usize)>, Errors> {
+        warnings.append(&mut self.warnings);
+        let (edges, lines) = self.graph(machine)?;
         if let Some(m) = machine {
             self.check_machine(m, &edges, &lines)?;
         }
@@ -481,7 +635,16 @@ impl Body {
     /// leaf's line. A TON or CTU whose output drives nothing becomes the
     /// machine's timer or counter coil (`OUT T00 K19`).
     #[allow(clippy::type_complexity)] // a pair of plain collections, named at the call
-    fn graph(&mut self) -> Result<(Vec<Edge>, HashMap<Pos, usize>), Errors> {
+    fn graph(
+        &mut self,
+        machine: Option<MachineId>,
+    ) -> Result<(Vec<Edge>, HashMap<Pos, usize>), Errors> {
+        // IO86A's timers are coils (`OUT T00 K19`) with contacts: an
+        // in-line TON becomes its coil, fed where the box was, and its
+        // contact, from the rail, where the box's Q went (Q is the timer's
+        // done bit, on only while IN is).
+        let timer_coils = machine == Some(MachineId::Io86a);
+        let rail = self.find(RAIL);
         let consumed: HashSet<usize> = self
             .consumed
             .clone()
@@ -507,6 +670,27 @@ impl Body {
                         let coil = timer_coil(name, *preset_ms)
                             .map_err(|m| vec![Located::new(line, m)])?;
                         self.outputs.push((a, coil, *pos, line));
+                        continue;
+                    }
+                    (
+                        Element::Timer {
+                            kind: TimerKind::Ton,
+                            name,
+                            preset_ms,
+                        },
+                        false,
+                    ) if timer_coils => {
+                        let coil = timer_coil(name, *preset_ms)
+                            .map_err(|m| vec![Located::new(line, m)])?;
+                        self.outputs.push((a, coil, *pos, line));
+                        // A place of its own, beside the box's.
+                        let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
+                        lines.insert(at, line);
+                        edges.push(Edge {
+                            from: rail,
+                            to: b,
+                            net: Net::Leaf(Element::no(name), at),
+                        });
                         continue;
                     }
                     (Element::CounterCoil { .. }, true) => {

@@ -14,7 +14,7 @@ pub mod import;
 pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
-pub use import::{import, import_for, import_mapped, Imported};
+pub use import::{import, import_for, import_mapped, import_pou, Imported};
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";
