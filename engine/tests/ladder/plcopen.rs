@@ -143,19 +143,21 @@ fn bad_files_are_errors_at_their_lines() {
     // An unknown block, at its line.
     let bad = BLINK.replacen(
         "typeName=\"TON\" instanceName=\"TON0\"",
-        "typeName=\"SR\" instanceName=\"TON0\"",
+        "typeName=\"CTUD\" instanceName=\"TON0\"",
         1,
     );
     let line = bad
         .lines()
-        .position(|l| l.contains("typeName=\"SR\""))
+        .position(|l| l.contains("typeName=\"CTUD\""))
         .expect("line")
         + 1;
     let e = err(&bad);
     assert_eq!(
         (
             e[0].line,
-            e[0].error.to_string().contains("block SR is not supported")
+            e[0].error
+                .to_string()
+                .contains("block CTUD is not supported")
         ),
         (line, true),
         "{e:?}"

@@ -101,6 +101,8 @@ pub enum ImportError {
     NoVariable(&'static str),
     /// A declared variable with no device (the declarations' words).
     Variable(String),
+    /// A boolean block that cannot be lowered (the block, why).
+    Gate(String, String),
     /// `--pou` names no POU of the file (the name, the file's POUs).
     NoSuchPou(String, String),
     /// The programs that run have no LD body (theirs, the POUs with one).
@@ -198,6 +200,7 @@ impl fmt::Display for ImportError {
             },
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
             E::Variable(why) => f.write_str(why),
+            E::Gate(what, why) => write!(f, "{what}: {why}"),
             E::NoSuchPou(name, all) => write!(f, "no POU is named {name}: the file has {all}"),
             E::NoLdInPrograms(run, ld) => write!(
                 f,

@@ -8,6 +8,7 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::{Connection, ImportError};
+use super::gates::{Gate, GateKind};
 use super::{parse_time_literal, NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::io86a::{isa::parse_bit, Bit};
@@ -208,6 +209,52 @@ fn choose_pous<'a>(
     Ok(chosen)
 }
 
+/// The boolean block `ty` as a gate, if it is one; a flip-flop needs a
+/// relay from the map for its instance.
+fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, ImportError> {
+    Ok(Some(match ty {
+        "AND" => GateKind::And,
+        "OR" => GateKind::Or,
+        "XOR" => GateKind::Xor,
+        "SR" | "RS" => {
+            if relay == written {
+                return Err(ImportError::Gate(
+                    format!("{ty} block {written}"),
+                    format!("its state needs a relay: map it (--map {written},M10)"),
+                ));
+            }
+            GateKind::Flip {
+                relay: relay.to_string(),
+                set_wins: ty == "SR",
+            }
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// A pin's name for messages ('static, as the errors keep it).
+fn pin_name(name: &str) -> &'static str {
+    match name {
+        "S1" => "S1",
+        "S" => "S",
+        "R" => "R",
+        "R1" => "R1",
+        _ => "IN",
+    }
+}
+
+/// Whether a variable box's expression is a variable's name (not a
+/// literal: `T#1s`, `10`, `TRUE`).
+fn is_variable_name(expr: &str) -> bool {
+    let e = expr.trim();
+    let first = e.chars().next();
+    first.is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && !e.contains('#')
+        && !matches!(e.to_ascii_uppercase().as_str(), "TRUE" | "FALSE")
+        && e.chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.')
+}
+
 /// The bit device a contact or output names.
 fn bit_device(e: &Element) -> Option<String> {
     match e {
@@ -222,25 +269,30 @@ fn bit_device(e: &Element) -> Option<String> {
 
 /// One LD body as a graph of points.
 #[derive(Default)]
-struct Body {
-    parent: Vec<usize>,
+pub(super) struct Body {
+    pub(super) parent: Vec<usize>,
     points: HashMap<(String, String), usize>,
     rails: HashSet<String>,
     kinds: HashMap<String, (String, usize)>,
     literals: HashMap<String, (String, usize)>,
+    /// Variable boxes that feed power: a contact of their device from
+    /// the rail (the device, or why it has none; its place).
+    variables: HashMap<String, (Result<String, String>, Pos)>,
     /// Contacts and in-line blocks: (in point, out point, leaf, line).
-    edges: Vec<(usize, usize, Net, usize)>,
+    pub(super) edges: Vec<(usize, usize, Net, usize)>,
     /// Outputs: (in point, element, place, line).
-    outputs: Vec<(usize, Element, Pos, usize)>,
+    pub(super) outputs: Vec<(usize, Element, Pos, usize)>,
     /// Points some element takes power from (not the right rail).
-    consumed: Vec<usize>,
+    pub(super) consumed: Vec<usize>,
+    /// Boolean blocks to lower once every element is read.
+    pub(super) gates: Vec<Gate>,
     comments: Vec<(usize, String)>,
     /// What is worth saying but does not stop the import.
     warnings: Vec<Located<String>>,
     errors: Errors,
 }
 
-const RAIL: usize = 0;
+pub(super) const RAIL: usize = 0;
 
 impl Body {
     fn read(ld: &Node, names: &Names) -> Result<Body, Errors> {
@@ -279,6 +331,12 @@ impl Body {
                         .child("expression")
                         .map(|e| e.text.clone())
                         .unwrap_or_default();
+                    if is_variable_name(&expr) {
+                        let (y, x) = position(n);
+                        let at = Pos::new(y, x * 65_536 + b.kinds.len());
+                        b.variables
+                            .insert(id.to_string(), (names.device(expr.trim()), at));
+                    }
                     b.literals.insert(id.to_string(), (expr, n.line));
                 }
                 _ => {}
@@ -310,7 +368,22 @@ impl Body {
         p
     }
 
-    fn find(&mut self, mut x: usize) -> usize {
+    /// The point after variable box `id`'s contact of `device` (made
+    /// once, from the rail).
+    fn variable_point(&mut self, id: &str, device: String, at: Pos) -> usize {
+        let key = (id.to_string(), "var".to_string());
+        if let Some(&p) = self.points.get(&key) {
+            return p;
+        }
+        let p = self.point(id, "var");
+        let line = self.kinds.get(id).map_or(1, |(_, l)| *l);
+        self.consumed.push(RAIL);
+        self.edges
+            .push((RAIL, p, Net::Leaf(Element::no(&device), at), line));
+        p
+    }
+
+    pub(super) fn find(&mut self, mut x: usize) -> usize {
         while self.parent[x] != x {
             self.parent[x] = self.parent[self.parent[x]];
             x = self.parent[x];
@@ -318,7 +391,7 @@ impl Body {
         x
     }
 
-    fn union(&mut self, a: usize, b: usize) {
+    pub(super) fn union(&mut self, a: usize, b: usize) {
         let (a, b) = (self.find(a), self.find(b));
         if a < b {
             self.parent[b] = a;
@@ -345,7 +418,19 @@ impl Body {
             let pin = match kind.as_deref() {
                 None => return Err(fail(Connection::Missing(r.to_string()))),
                 Some("block") => c.attr("formalParameter").unwrap_or("Q").to_string(),
-                Some("inVariable") => return Err(fail(Connection::FromVariable(r.to_string()))),
+                Some("inVariable") => match self.variables.get(r).cloned() {
+                    // A BOOL variable feeding power: its contact.
+                    Some((Ok(device), at)) => {
+                        let p = self.variable_point(r, device, at);
+                        match joined {
+                            None => joined = Some(p),
+                            Some(j) => self.union(j, p),
+                        }
+                        continue;
+                    }
+                    Some((Err(why), _)) => return Err(ImportError::Variable(why)),
+                    None => return Err(fail(Connection::FromVariable(r.to_string()))),
+                },
                 Some(_) => String::new(),
             };
             let p = self.point(r, &pin);
@@ -435,6 +520,62 @@ impl Body {
         Ok(())
     }
 
+    /// A boolean block: its inputs joined, its output a point, lowered
+    /// once the whole body is read ([`super::gates`]).
+    fn gate(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        kind: GateKind,
+        ty: &str,
+        instance: &str,
+    ) -> Result<(), ImportError> {
+        let what = format!("{ty} block {instance}").trim().to_string();
+        let pins: Vec<&Node> = n
+            .child("inputVariables")
+            .map(|v| v.all("variable").collect())
+            .unwrap_or_default();
+        let order: Vec<&str> = match kind {
+            GateKind::Flip { .. } => vec![
+                if ty == "SR" { "S1" } else { "S" },
+                if ty == "SR" { "R" } else { "R1" },
+            ],
+            _ => pins
+                .iter()
+                .filter_map(|v| v.attr("formalParameter"))
+                .collect(),
+        };
+        let mut inputs = Vec::new();
+        for name in order {
+            let v = pins
+                .iter()
+                .find(|v| v.attr("formalParameter") == Some(name))
+                .ok_or_else(|| ImportError::PinNotConnected(what.clone(), pin_name(name)))?;
+            let p = self.join(v.child("connectionPointIn"), &what)?;
+            self.consumed.push(p);
+            inputs.push(p);
+        }
+        if inputs.len() < 2 {
+            return Err(ImportError::Gate(what, "it needs two inputs".into()));
+        }
+        let out_pin = if matches!(kind, GateKind::Flip { .. }) {
+            "Q1"
+        } else {
+            "OUT"
+        };
+        let out = self.point(id, out_pin);
+        self.gates.push(Gate {
+            kind,
+            inputs,
+            out,
+            pos,
+            line: n.line,
+            what,
+        });
+        Ok(())
+    }
+
     /// An output variable box: fed with power (a contact's, a block's
     /// Q), a coil on its variable; fed from a timer's ET or a counter's
     /// CV, which Hashigo's ladders do not carry, dropped with a warning.
@@ -496,6 +637,9 @@ impl Body {
                 .copied()
                 .find(|v| v.attr("formalParameter") == Some(name))
         };
+        if let Some(kind) = gate_kind(&ty, &instance, written)? {
+            return self.gate(n, id, pos, kind, &ty, written);
+        }
         let (power_in, power_out) = match ty.as_str() {
             "TON" | "TOF" | "TP" | "NOT" => ("IN", if ty == "NOT" { "OUT" } else { "Q" }),
             "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
@@ -573,6 +717,7 @@ impl Body {
         warnings: &mut Vec<Located<String>>,
     ) -> Result<Vec<(RungLogic, usize)>, Errors> {
         warnings.append(&mut self.warnings);
+        self.lower_gates()?;
         let (edges, lines) = self.graph(machine)?;
         if let Some(m) = machine {
             self.check_machine(m, &edges, &lines)?;

@@ -9,6 +9,7 @@ pub mod declare;
 pub mod dom;
 pub mod error;
 pub mod export;
+mod gates;
 pub mod import;
 
 pub use declare::VarMap;

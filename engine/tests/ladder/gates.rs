@@ -1,0 +1,135 @@
+//! Boolean blocks from other tools lowered to ladder (issue #18): each
+//! imported program runs on IO86A as the block's truth table says.
+
+use engine::events::InputValue;
+use engine::ladder::compile::compile;
+use engine::ladder::plcopen::{import_mapped, VarMap};
+use engine::plc::{Command, Io86aPlc, Plc};
+use engine::{MachineId, SimTime};
+
+/// A project whose one program's LD body is `body` (OpenPLC's dialect).
+fn project(body: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <types><pous><pou name="main" pouType="program">
+    <interface><localVars>
+      <variable name="a" address="%IX0.0"><type><BOOL/></type></variable>
+      <variable name="b" address="%IX0.1"><type><BOOL/></type></variable>
+      <variable name="q" address="%QX0.0"><type><BOOL/></type></variable>
+    </localVars></interface>
+    <body><LD>
+      <leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut/></leftPowerRail>
+      <contact localId="2"><position x="10" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>a</variable></contact>
+      <contact localId="3"><position x="10" y="30"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>b</variable></contact>
+{body}
+    </LD></body>
+  </pou></pous></types>
+</project>"#
+    )
+}
+
+/// A two-input block of `ty` fed by contacts a and b, its output to q.
+fn gate(ty: &str, instance: &str, pins: [&str; 2], out: &str) -> String {
+    project(&format!(
+        r#"      <block localId="4" typeName="{ty}" instanceName="{instance}"><position x="30" y="10"/>
+        <inputVariables>
+          <variable formalParameter="{}"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          <variable formalParameter="{}"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+        </inputVariables>
+        <outputVariables><variable formalParameter="{out}"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="{out}"/></connectionPointIn><variable>q</variable></coil>"#,
+        pins[0], pins[1]
+    ))
+}
+
+/// Y00 after each (X00, X01) in turn, a scan or two each.
+fn run(xml: &str, map: &str, inputs: &[(bool, bool)]) -> Vec<bool> {
+    let map = VarMap::parse(map).expect("a map");
+    let imported =
+        import_mapped(xml, Some(MachineId::Io86a), Some(&map)).unwrap_or_else(|e| panic!("{e:?}"));
+    let text = compile(&imported.ladder, MachineId::Io86a, Default::default())
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    let mut m = Io86aPlc::new();
+    m.load_text(&text).expect("loads");
+    m.apply(Command::Setting {
+        name: "filter".into(),
+        value: "0ms".into(),
+    })
+    .ok();
+    let (x0, x1, y0) = (m.device("X00"), m.device("X01"), m.device("Y00"));
+    let (x0, x1, y0) = (x0.expect("X00"), x1.expect("X01"), y0.expect("Y00"));
+    let mut out = Vec::new();
+    for &(a, b) in inputs {
+        m.apply(Command::SetInput(x0, InputValue::Int(i64::from(a))))
+            .expect("input");
+        m.apply(Command::SetInput(x1, InputValue::Int(i64::from(b))))
+            .expect("input");
+        let t = m.now().saturating_add(SimTime::from_millis(50));
+        m.run_until(t);
+        out.push(m.read(y0) != 0);
+    }
+    out
+}
+
+const TABLE: [(bool, bool); 4] = [(false, false), (true, false), (false, true), (true, true)];
+
+#[test]
+fn and_or_xor_follow_their_truth_tables() {
+    let and = run(&gate("AND", "", ["IN1", "IN2"], "OUT"), "", &TABLE);
+    assert_eq!(and, [false, false, false, true]);
+    let or = run(&gate("OR", "", ["IN1", "IN2"], "OUT"), "", &TABLE);
+    assert_eq!(or, [false, true, true, true]);
+    let xor = run(&gate("XOR", "", ["IN1", "IN2"], "OUT"), "", &TABLE);
+    assert_eq!(xor, [false, true, true, false]);
+}
+
+#[test]
+fn sr_sets_and_holds_and_set_wins_rs_lets_reset_win() {
+    // a sets, b resets; both at once: SR stays set, RS resets.
+    let steps = [
+        (true, false),
+        (false, false),
+        (true, true),
+        (false, false),
+        (false, true),
+    ];
+    let sr = run(&gate("SR", "SR0", ["S1", "R"], "Q1"), "SR0,M10\n", &steps);
+    assert_eq!(sr, [true, true, true, true, false]);
+    let rs = run(&gate("RS", "RS0", ["S", "R1"], "Q1"), "RS0,M11\n", &steps);
+    assert_eq!(rs, [true, true, false, false, false]);
+}
+
+#[test]
+fn what_does_not_fit_is_refused_with_the_reason() {
+    let xml = gate("SR", "SR0", ["S1", "R"], "Q1");
+    let errors = import_mapped(&xml, Some(MachineId::Io86a), None).expect_err("no relay");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains("map it (--map SR0,M10)"),
+        "{errors:?}"
+    );
+    // An OR whose input also feeds a coil would feed power back: refused.
+    let shared = project(
+        r#"      <block localId="4" typeName="OR"><position x="30" y="10"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+        </inputVariables>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><variable>q</variable></coil>
+      <coil localId="6"><position x="60" y="30"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn><variable>Y01</variable></coil>"#,
+    );
+    let errors = import_mapped(&shared, Some(MachineId::Io86a), None).expect_err("shared input");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains("OR block: an input also feeds another element"),
+        "{errors:?}"
+    );
+}
