@@ -129,8 +129,6 @@ pub enum ImportError {
     PinNotLiteral(String, &'static str),
     /// A PT that is not a time literal (block, text).
     BadTimeLiteral(String, String),
-    /// A CTU whose R is wired (block, instance).
-    CounterReset(String, String),
     /// A PV that is not 0..32767 (block, text).
     BadCounterPreset(String, String),
     /// A CTU whose Q feeds other elements (its instance).
@@ -242,10 +240,6 @@ impl fmt::Display for ImportError {
                 f,
                 "{what}: PT {} is not a time literal like T#500ms",
                 shown(expr)
-            ),
-            E::CounterReset(what, instance) => write!(
-                f,
-                "{what}: wire R to nothing and reset the counter with a reset coil on {instance}"
             ),
             E::BadCounterPreset(what, expr) => write!(
                 f,

@@ -652,6 +652,27 @@ impl Body {
             &what,
         )?;
         self.consumed.push(input);
+        // A counter's R: a reset coil on the counter, fed as R is (a
+        // literal FALSE resets nothing).
+        let reset = pin("R")
+            .and_then(|v| v.child("connectionPointIn"))
+            .filter(|c| c.child("connection").is_some());
+        if ty == "CTU" {
+            if let Some(cpi) = reset {
+                let constant = cpi
+                    .child("connection")
+                    .and_then(|c| c.attr("refLocalId"))
+                    .and_then(|r| self.literals.get(r))
+                    .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("FALSE"));
+                if !constant {
+                    let p = self.join(Some(cpi), &what)?;
+                    self.consumed.push(p);
+                    let at = Pos::new(pos.row, pos.col.wrapping_add(1));
+                    self.outputs
+                        .push((p, coil(CoilKind::Reset, instance.clone()), at, n.line));
+                }
+            }
+        }
         let literal = |name: &'static str| -> Result<(String, usize), ImportError> {
             let unconnected = || ImportError::PinNotConnected(what.clone(), name);
             let v = pin(name).ok_or_else(unconnected)?;
@@ -682,13 +703,6 @@ impl Body {
                 }
             }
             "CTU" => {
-                if pin("R")
-                    .and_then(|v| v.child("connectionPointIn"))
-                    .and_then(|c| c.child("connection"))
-                    .is_some()
-                {
-                    return Err(ImportError::CounterReset(what, instance));
-                }
                 let (expr, _) = literal("PV")?;
                 let preset: u16 = expr
                     .trim()
