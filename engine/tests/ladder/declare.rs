@@ -260,3 +260,56 @@ fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
         none
     );
 }
+
+#[test]
+fn a_time_from_a_constant_initialised_variable_and_a_proposed_map() {
+    let xml = TIMER
+        .replace("<expression>T#2s</expression>", "<expression>delay</expression>")
+        .replace(
+            r#"<variable name="elapsed">"#,
+            r#"<variable name="delay"><type><TIME/></type><initialValue><simpleValue value="T#2s"/></initialValue></variable>
+            <variable name="elapsed">"#,
+        );
+    let map = VarMap::parse("TON0,T00\n").expect("a map");
+    let io = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let il = engine::ladder::compile::compile(&io.ladder, MachineId::Io86a, Default::default())
+        .expect("compiles");
+    assert!(
+        il.contains("OUT T00\nK20"),
+        "T#2s from delay's initial value: {il}"
+    );
+    // `hashigo map` proposes a device for what has none; compile takes it.
+    let tmp = Temp::new("declare-map");
+    let path = tmp.file("named.xml", NAMED);
+    let out = hashigo(&["map", "--machine", "io86a", "--program", &path], "");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let proposed = text(&out.stdout);
+    let entries: Vec<&str> = proposed.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(
+        entries,
+        ["memo,Y01"],
+        "memo is written, Y00 is lamp's: {proposed}"
+    );
+    let map = tmp.file("proposed.csv", &proposed);
+    let out = hashigo(
+        &[
+            "compile",
+            "--machine",
+            "io86a",
+            "--program",
+            &path,
+            "--map",
+            &map,
+        ],
+        "",
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).contains("OUT Y01"));
+    let timer = tmp.file("timer.xml", TIMER);
+    let out = hashigo(&["map", "--machine", "io86a", "--program", &timer], "");
+    assert!(
+        text(&out.stdout).contains("\nTON0,T00\n"),
+        "{}",
+        text(&out.stdout)
+    );
+}

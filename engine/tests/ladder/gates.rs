@@ -133,3 +133,36 @@ fn what_does_not_fit_is_refused_with_the_reason() {
         "{errors:?}"
     );
 }
+
+#[test]
+fn a_counter_in_line_and_a_coil_on_the_rail_run_on_io86a() {
+    // a counts CTU0 (PV 2 from a variable declared with it), its Q lights
+    // q; Y01 hangs on the rail itself (always on).
+    let xml = project(
+        r#"      <block localId="4" typeName="CTU" instanceName="CTU0"><position x="30" y="10"/>
+        <inputVariables>
+          <variable formalParameter="CU"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          <variable formalParameter="R"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+          <variable formalParameter="PV"><connectionPointIn><connection refLocalId="7"/></connectionPointIn></variable>
+        </inputVariables>
+        <outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>limit</expression></inVariable>
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="Q"/></connectionPointIn><variable>q</variable></coil>
+      <coil localId="6"><position x="60" y="50"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>Y01</variable></coil>"#,
+    )
+    .replace(
+        "</localVars>",
+        r#"<variable name="limit"><type><INT/></type><initialValue><simpleValue value="2"/></initialValue></variable></localVars>"#,
+    );
+    // a pulses twice: the count reaches 2 and q lights; b resets it.
+    let steps = [
+        (true, false),
+        (false, false),
+        (true, false),
+        (false, false),
+        (false, true),
+    ];
+    let q = run(&xml, "CTU0,C00\n", &steps);
+    assert_eq!(q, [false, false, true, true, false]);
+}

@@ -86,6 +86,8 @@ enum Meaning {
 #[derive(Debug, Default)]
 pub struct Names {
     by_name: HashMap<String, (String, Meaning)>,
+    /// Declared initial values (`T#2s`, `10`), by lower-case name.
+    initial: HashMap<String, String>,
     used_map_lines: std::cell::RefCell<HashSet<usize>>,
     map_lines: Vec<(String, usize)>,
 }
@@ -118,6 +120,14 @@ impl Names {
                 }
             },
         }
+    }
+
+    /// The initial value `name` is declared with (a PT or PV given by a
+    /// constant-initialised variable).
+    pub fn initial(&self, name: &str) -> Option<&str> {
+        self.initial
+            .get(&name.trim().to_ascii_lowercase())
+            .map(String::as_str)
     }
 
     /// The device a block instance stands for, if the map names it.
@@ -182,6 +192,15 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
         let Some(name) = v.attr("name") else {
             continue;
         };
+        let initial = v
+            .child("initialValue")
+            .and_then(|i| i.child("simpleValue"))
+            .and_then(|s| s.attr("value"));
+        if let Some(value) = initial {
+            names
+                .initial
+                .insert(name.to_ascii_lowercase(), value.to_string());
+        }
         // A file written for Hashigo names the devices themselves.
         if check_element(machine, &Element::no(name)).is_ok() {
             continue;
@@ -307,5 +326,167 @@ mod tests {
         let errors = VarMap::parse("Start\nA,X00\na,X01\nB,\n").expect_err("bad lines");
         let lines: Vec<usize> = errors.iter().map(|e| e.line).collect();
         assert_eq!(lines, vec![1, 3, 4]);
+    }
+}
+
+/// A device proposed for every declared variable and block instance of
+/// the file that has none yet (`map` and addresses first), for the page's
+/// mapping table and `hashigo map`: a variable some coil writes gets the
+/// next free output (then relay), one only read the next free input
+/// (then relay); a timer instance the next free timer, a counter the next
+/// counter, a flip-flop the next relay. Where the machine runs out, or has
+/// no such device (the AVR PLC names its bits in its source), the name is
+/// left out: the user maps it by hand. In file order, each once.
+pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(String, String)> {
+    let names = names(root, machine, map);
+    let mut taken: HashSet<String> = names
+        .by_name
+        .values()
+        .filter_map(|(_, m)| match m {
+            Meaning::Device(d, _) => Some(d.to_ascii_uppercase()),
+            _ => None,
+        })
+        .collect();
+    // Every name the bodies use for power, and whether something writes it.
+    let mut used: Vec<(String, bool)> = Vec::new();
+    let mut note = |name: &str, writes: bool| {
+        let name = name.trim();
+        match used.iter_mut().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
+            Some((_, w)) => *w |= writes,
+            None if !name.is_empty() => used.push((name.to_string(), writes)),
+            None => {}
+        }
+    };
+    for (tag, child, writes) in [
+        ("contact", "variable", false),
+        ("coil", "variable", true),
+        ("outVariable", "expression", true),
+    ] {
+        let mut found = Vec::new();
+        root.descendants(tag, &mut found);
+        for n in found {
+            if let Some(v) = n.child(child) {
+                note(&v.text, writes);
+            }
+        }
+    }
+    let written: HashSet<String> = used
+        .iter()
+        .filter(|(_, w)| *w)
+        .map(|(n, _)| n.to_ascii_lowercase())
+        .collect();
+    let mut blocks = Vec::new();
+    root.descendants("block", &mut blocks);
+    let mut instances: Vec<(String, String)> = Vec::new();
+    for b in blocks {
+        let (Some(ty), Some(name)) = (b.attr("typeName"), b.attr("instanceName")) else {
+            continue;
+        };
+        if !name.is_empty() && !instances.iter().any(|(n, _)| n.eq_ignore_ascii_case(name)) {
+            instances.push((name.to_string(), ty.to_ascii_uppercase()));
+        }
+    }
+    let pools = Pools::of(machine);
+    let next = |pool: &[String], taken: &mut HashSet<String>| {
+        let free = pool.iter().find(|d| !taken.contains(*d))?.clone();
+        taken.insert(free.clone());
+        Some(free)
+    };
+    let mut out: Vec<(String, String)> = Vec::new();
+    // Declared BOOLs with no device (or an address the machine lacks),
+    // then names the bodies use without declaring them.
+    let mut variables = Vec::new();
+    root.descendants("variable", &mut variables);
+    let declared = variables.iter().filter_map(|v| {
+        let name = v.attr("name")?;
+        let bool_typed = v.child("type").is_some_and(|t| t.child("BOOL").is_some());
+        let open = matches!(
+            names.by_name.get(&name.to_ascii_lowercase()),
+            Some((_, Meaning::Unmapped(_) | Meaning::Refused(..)))
+        );
+        (bool_typed && open).then(|| name.to_string())
+    });
+    let undeclared = used.iter().filter_map(|(name, _)| {
+        let known = names.by_name.contains_key(&name.to_ascii_lowercase())
+            || check_element(machine, &Element::no(name)).is_ok();
+        (!known).then(|| name.clone())
+    });
+    let candidates: Vec<String> = declared.chain(undeclared).collect();
+    for name in candidates {
+        let key = name.to_ascii_lowercase();
+        if out.iter().any(|(n, _)| n.eq_ignore_ascii_case(&name)) {
+            continue;
+        }
+        let device = if written.contains(&key) {
+            next(&pools.outputs, &mut taken).or_else(|| next(&pools.relays, &mut taken))
+        } else {
+            next(&pools.inputs, &mut taken).or_else(|| next(&pools.relays, &mut taken))
+        };
+        if let Some(d) = device {
+            out.push((name, d));
+        }
+    }
+    for (name, ty) in instances {
+        if names.instance(&name).is_some() || check_element(machine, &Element::no(&name)).is_ok() {
+            continue;
+        }
+        let pool = match ty.as_str() {
+            "TON" | "TOF" | "TP" => &pools.timers,
+            "CTU" | "CTD" | "CTUD" => &pools.counters,
+            "SR" | "RS" => &pools.relays,
+            _ => continue,
+        };
+        if let Some(d) = next(pool, &mut taken) {
+            out.push((name, d));
+        }
+    }
+    out
+}
+
+/// A machine's devices by kind, in the order proposals take them.
+struct Pools {
+    inputs: Vec<String>,
+    outputs: Vec<String>,
+    relays: Vec<String>,
+    timers: Vec<String>,
+    counters: Vec<String>,
+}
+
+impl Pools {
+    fn of(machine: MachineId) -> Pools {
+        let range = |prefix: &str, width: usize, ns: std::ops::Range<u32>| -> Vec<String> {
+            ns.map(|n| format!("{prefix}{n:0width$}")).collect()
+        };
+        match machine {
+            MachineId::Io86a => Pools {
+                inputs: range("X", 2, 0..8),
+                outputs: range("Y", 2, 0..6),
+                // M56-M63 are the special relays.
+                relays: range("M", 2, 0..56),
+                timers: range("T", 2, 0..32),
+                counters: range("C", 2, 0..8),
+            },
+            MachineId::MinasecU => Pools {
+                inputs: range("X", 2, 0..8),
+                outputs: range("Y", 2, 0..8),
+                relays: [range("M", 2, 0..8), range("M1", 1, 0..4)].concat(),
+                timers: vec!["T0".into(), "T1".into()],
+                counters: vec!["C0".into()],
+            },
+            MachineId::ArduinoPlc => Pools {
+                inputs: range("X", 3, 0..6),
+                outputs: range("Y", 3, 0..6),
+                relays: Vec::new(),
+                timers: Vec::new(),
+                counters: Vec::new(),
+            },
+            MachineId::AvrPlc => Pools {
+                inputs: Vec::new(),
+                outputs: Vec::new(),
+                relays: Vec::new(),
+                timers: Vec::new(),
+                counters: Vec::new(),
+            },
+        }
     }
 }

@@ -689,7 +689,9 @@ impl Body {
         let element = match ty.as_str() {
             "TON" | "TOF" | "TP" => {
                 let (expr, _) = literal("PT")?;
+                // A literal, or a variable declared with one.
                 let preset_ms = parse_time_literal(&expr)
+                    .or_else(|| names.initial(&expr).and_then(parse_time_literal))
                     .ok_or_else(|| ImportError::BadTimeLiteral(what.clone(), expr.to_string()))?;
                 let kind = match ty.as_str() {
                     "TON" => TimerKind::Ton,
@@ -704,10 +706,12 @@ impl Body {
             }
             "CTU" => {
                 let (expr, _) = literal("PV")?;
-                let preset: u16 = expr
-                    .trim()
+                let value = names.initial(&expr).unwrap_or(&expr).trim().to_string();
+                let preset: u16 = value
                     .parse()
-                    .map_err(|_| ImportError::BadCounterPreset(what.clone(), expr.clone()))?;
+                    .ok()
+                    .filter(|&k| k <= 32767)
+                    .ok_or_else(|| ImportError::BadCounterPreset(what.clone(), expr.clone()))?;
                 Element::CounterCoil {
                     device: instance.clone(),
                     preset,
@@ -732,7 +736,7 @@ impl Body {
     ) -> Result<Vec<(RungLogic, usize)>, Errors> {
         warnings.append(&mut self.warnings);
         self.lower_gates()?;
-        let (edges, lines) = self.graph(machine)?;
+        let (mut edges, mut lines) = self.graph(machine)?;
         if let Some(m) = machine {
             self.check_machine(m, &edges, &lines)?;
         }
@@ -744,13 +748,33 @@ impl Body {
         }
         let mut buses = Vec::new();
         let mut errors = Vec::new();
+        let mut moved = Vec::new();
         for (bus, outs) in &mut groups {
             outs.sort_by_key(|(_, p, _)| *p);
-            if *bus == rail {
+            if *bus == rail && machine == Some(MachineId::Io86a) {
+                // Always on: IO86A's M57 (ON) carries the rail to it.
+                let q = self.parent.len();
+                self.parent.push(q);
+                let (_, p, line) = &outs[0];
+                let at = Pos::new(p.row, p.col.wrapping_sub(1));
+                lines.insert(at, *line);
+                edges.push(Edge {
+                    from: rail,
+                    to: q,
+                    net: Net::Leaf(Element::no("M57"), at),
+                });
+                moved.push((*bus, q));
+                buses.push(q);
+            } else if *bus == rail {
                 let on_rail = ImportError::OnRail(outs[0].0.to_string());
                 errors.push(Located::new(outs[0].2, on_rail));
             } else {
                 buses.push(*bus);
+            }
+        }
+        for (from, to) in moved {
+            if let Some(outs) = groups.remove(&from) {
+                groups.insert(to, outs);
             }
         }
         // Every group's network at once, each from the part of the graph
@@ -854,6 +878,19 @@ impl Body {
                     }
                     (Element::CounterCoil { .. }, true) => {
                         self.outputs.push((a, e.clone(), *pos, line));
+                        continue;
+                    }
+                    (Element::CounterCoil { device, .. }, false) if timer_coils => {
+                        // As a TON: the coil where the box was, its contact
+                        // where Q went (Q is the counter's count-reached bit).
+                        self.outputs.push((a, e.clone(), *pos, line));
+                        let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
+                        lines.insert(at, line);
+                        edges.push(Edge {
+                            from: rail,
+                            to: b,
+                            net: Net::Leaf(Element::no(device), at),
+                        });
                         continue;
                     }
                     (Element::CounterCoil { device, .. }, false) => {
