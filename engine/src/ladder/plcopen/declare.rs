@@ -287,48 +287,6 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
         .map_err(|e| format!("{address} is {e}"))
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn located_variables_map_by_rule_within_the_machines_sizes() {
-        let io = MachineId::Io86a;
-        assert_eq!(located(io, "%IX0.3").as_deref(), Ok("X03"));
-        assert_eq!(located(io, "%QX0.5").as_deref(), Ok("Y05"));
-        assert_eq!(located(io, "%MX1.2").as_deref(), Ok("M10"));
-        assert_eq!(located(io, "%m0.1").as_deref(), Ok("M01"));
-        assert!(located(io, "%QX0.6").is_err(), "IO86A has Y00-Y05");
-        assert!(located(io, "%IW0").is_err(), "a word");
-        assert!(located(io, "IX0.0").is_err());
-        assert!(located(io, "%IX0.9").is_err());
-        let m = MachineId::MinasecU;
-        assert_eq!(located(m, "%MX1.3").as_deref(), Ok("M13"));
-        assert!(located(m, "%MX1.4").is_err(), "MINASEC-U has M10-M13");
-        assert_eq!(
-            located(MachineId::ArduinoPlc, "%QX0.0").as_deref(),
-            Ok("Y000")
-        );
-        assert!(located(MachineId::AvrPlc, "%IX0.0").is_err());
-    }
-
-    #[test]
-    fn map_files_read_and_refuse_by_line() {
-        let map = VarMap::parse("name,device\n# lamps\nStart, X00\nTON0,T00 # the timer\n\n")
-            .expect("a map");
-        assert_eq!(
-            map.entries,
-            vec![
-                ("Start".into(), "X00".into(), 3),
-                ("TON0".into(), "T00".into(), 4)
-            ]
-        );
-        let errors = VarMap::parse("Start\nA,X00\na,X01\nB,\n").expect_err("bad lines");
-        let lines: Vec<usize> = errors.iter().map(|e| e.line).collect();
-        assert_eq!(lines, vec![1, 3, 4]);
-    }
-}
-
 /// A device proposed for every declared variable and block instance of
 /// the file that has none yet (`map` and addresses first), for the page's
 /// mapping table and `hashigo map`: a variable some coil writes gets the
@@ -488,5 +446,47 @@ impl Pools {
                 counters: Vec::new(),
             },
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn located_variables_map_by_rule_within_the_machines_sizes() {
+        let io = MachineId::Io86a;
+        assert_eq!(located(io, "%IX0.3").as_deref(), Ok("X03"));
+        assert_eq!(located(io, "%QX0.5").as_deref(), Ok("Y05"));
+        assert_eq!(located(io, "%MX1.2").as_deref(), Ok("M10"));
+        assert_eq!(located(io, "%m0.1").as_deref(), Ok("M01"));
+        assert!(located(io, "%QX0.6").is_err(), "IO86A has Y00-Y05");
+        assert!(located(io, "%IW0").is_err(), "a word");
+        assert!(located(io, "IX0.0").is_err());
+        assert!(located(io, "%IX0.9").is_err());
+        let m = MachineId::MinasecU;
+        assert_eq!(located(m, "%MX1.3").as_deref(), Ok("M13"));
+        assert!(located(m, "%MX1.4").is_err(), "MINASEC-U has M10-M13");
+        assert_eq!(
+            located(MachineId::ArduinoPlc, "%QX0.0").as_deref(),
+            Ok("Y000")
+        );
+        assert!(located(MachineId::AvrPlc, "%IX0.0").is_err());
+    }
+
+    #[test]
+    fn map_files_read_and_refuse_by_line() {
+        let map = VarMap::parse("name,device\n# lamps\nStart, X00\nTON0,T00 # the timer\n\n")
+            .expect("a map");
+        assert_eq!(
+            map.entries,
+            vec![
+                ("Start".into(), "X00".into(), 3),
+                ("TON0".into(), "T00".into(), 4)
+            ]
+        );
+        let errors = VarMap::parse("Start\nA,X00\na,X01\nB,\n").expect_err("bad lines");
+        let lines: Vec<usize> = errors.iter().map(|e| e.line).collect();
+        assert_eq!(lines, vec![1, 3, 4]);
     }
 }
