@@ -226,7 +226,7 @@ impl fmt::Display for ImportError {
             E::Unsupported(el) => write!(f, "<{el}> is not supported in LD bodies here"),
             E::UnsupportedBlock(ty) => write!(
                 f,
-                "block {} is not supported: Hashigo imports TON, TOF, TP, CTU, R_TRIG, F_TRIG and NOT",
+                "block {} is not supported: Hashigo imports TON, TOF, TP, CTU, R_TRIG, F_TRIG, NOT, AND, OR, XOR, SR and RS",
                 shown(ty).trim_matches('"')
             ),
             E::PinNotConnected(what, pin) => {
