@@ -103,23 +103,22 @@ fn export_png(ctx: LadderCtx) {
 
 /// Reads an opened file: a project (`.json`) or PLCopen XML. A project
 /// for another machine opens on that machine.
-fn open_text(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
+fn open_text(
+    ctx: LadderCtx,
+    ladders: Option<Ladders>,
+    pending: RwSignal<Option<super::import::Pending>>,
+    file: &str,
+    text: &str,
+) {
     let is_xml = text
         .trim_start_matches('\u{feff}')
         .trim_start()
         .starts_with('<');
     let (target, ladder) = if is_xml {
-        match plcopen::import_for(text, Some(ctx.machine)) {
-            Ok(l) => (ctx, l),
-            Err(errors) => {
-                let all: Vec<String> = errors
-                    .iter()
-                    .map(|e| format!("{file}:{}: {}", e.line, e.error))
-                    .collect();
-                ctx.message.set(Some(all.join("; ")));
-                return;
-            }
-        }
+        // Another tool's project may need devices for its variables: the
+        // import dialog (docs/ladder.md, "Declarations").
+        super::import::open(ctx, pending, file, text);
+        return;
     } else {
         match Project::from_json(text) {
             Ok(p) => {
@@ -145,6 +144,7 @@ fn open_text(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
 pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
     let ladders = use_context::<Ladders>();
+    let pending = RwSignal::new(None::<super::import::Pending>);
     let on_file = move |e: web_sys::Event| {
         let Some(input) = e
             .target()
@@ -167,7 +167,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 .ok()
                 .and_then(|v| v.as_string())
                 .unwrap_or_default();
-            open_text(ctx, ladders, &name, &text);
+            open_text(ctx, ladders, pending, &name, &text);
         });
         reader.set_onload(Some(onload.unchecked_ref()));
         let _ = reader.read_as_text(&file);
@@ -205,6 +205,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                     let _ = w.print();
                 }
             }>{move || t().print}</button>
+            <super::import::ImportDialog ctx shown=pending />
         </span>
     }
 }

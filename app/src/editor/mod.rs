@@ -16,6 +16,7 @@ pub mod entry;
 pub mod files;
 pub mod find;
 pub mod grid;
+pub mod import;
 pub mod keys;
 pub mod live;
 pub mod model;
