@@ -370,3 +370,42 @@ fn the_real_projects_that_compile_with_a_proposed_map() {
     assert_eq!(compiled["arduino-plc"], ["lab1-seal-in"], "{compiled:?}");
     assert!(compiled["avr-plc"].is_empty(), "{compiled:?}");
 }
+
+#[test]
+fn an_enable_pin_is_honoured_or_refused_and_initial_values_are_said() {
+    let with_en = |from: &str| {
+        TIMER.replace(
+            r#"<variable formalParameter="IN">"#,
+            &format!(
+                r#"<variable formalParameter="EN"><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn></variable>
+                <variable formalParameter="IN">"#
+            ),
+        )
+    };
+    let map = VarMap::parse("TON0,T00\n").expect("a map");
+    // From the rail: always enabled, as Hashigo's blocks are.
+    assert!(import_mapped(&with_en("1"), Some(MachineId::Io86a), Some(&map)).is_ok());
+    // From a contact: refused at the block, never ignored.
+    let errors =
+        import_mapped(&with_en("2"), Some(MachineId::Io86a), Some(&map)).expect_err("EN wired");
+    assert!(
+        errors[0].error.to_string().contains("its EN is wired"),
+        "{errors:?}"
+    );
+    // A variable declared TRUE: IO86A starts every device off.
+    let xml = NAMED.replace(
+        r#"<variable name="latch" address="%MX0.2"><type><BOOL/></type></variable>"#,
+        r#"<variable name="latch" address="%MX0.2"><type><BOOL/></type><initialValue><simpleValue value="TRUE"/></initialValue></variable>"#,
+    );
+    let map = VarMap::parse("memo,M05\n").expect("a map");
+    let imported = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let said: Vec<String> = imported
+        .warnings
+        .iter()
+        .map(|w| format!("{}: {}", w.line, w.error))
+        .collect();
+    assert_eq!(
+        said,
+        ["30: latch starts at TRUE in the file, but io86a starts M02 off at power-up"],
+    );
+}

@@ -86,8 +86,9 @@ enum Meaning {
 #[derive(Debug, Default)]
 pub struct Names {
     by_name: HashMap<String, (String, Meaning)>,
-    /// Declared initial values (`T#2s`, `10`), by lower-case name.
-    initial: HashMap<String, String>,
+    /// Declared initial values (`T#2s`, `10`) and their lines, by
+    /// lower-case name.
+    initial: HashMap<String, (String, String, usize)>,
     used_map_lines: std::cell::RefCell<HashSet<usize>>,
     map_lines: Vec<(String, usize)>,
 }
@@ -127,7 +128,32 @@ impl Names {
     pub fn initial(&self, name: &str) -> Option<&str> {
         self.initial
             .get(&name.trim().to_ascii_lowercase())
-            .map(String::as_str)
+            .map(|(_, v, _)| v.as_str())
+    }
+
+    /// Variables declared to start on (a BOOL `TRUE`, a non-zero number)
+    /// and the device each stands for: (name, device, value, line).
+    pub fn starting_on(&self) -> Vec<(String, String, String, usize)> {
+        let mut out: Vec<(String, String, String, usize)> = self
+            .initial
+            .iter()
+            .filter(|(_, (_, v, _))| {
+                let v = v.trim();
+                !v.eq_ignore_ascii_case("FALSE")
+                    && v.parse::<f64>()
+                        .map_or(v.eq_ignore_ascii_case("TRUE"), |n| n != 0.0)
+            })
+            .filter_map(|(key, (name, value, line))| {
+                let device = match self.by_name.get(key) {
+                    Some((_, Meaning::Device(d, _))) => d.clone(),
+                    Some(_) => return None,
+                    None => name.clone(),
+                };
+                Some((name.clone(), device, value.clone(), *line))
+            })
+            .collect();
+        out.sort_by_key(|o| o.3);
+        out
     }
 
     /// The device a block instance stands for, if the map names it.
@@ -197,9 +223,10 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
             .and_then(|i| i.child("simpleValue"))
             .and_then(|s| s.attr("value"));
         if let Some(value) = initial {
-            names
-                .initial
-                .insert(name.to_ascii_lowercase(), value.to_string());
+            names.initial.insert(
+                name.to_ascii_lowercase(),
+                (name.to_string(), value.to_string(), v.line),
+            );
         }
         // A file written for Hashigo names the devices themselves.
         if check_element(machine, &Element::no(name)).is_ok() {

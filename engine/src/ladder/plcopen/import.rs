@@ -138,6 +138,18 @@ pub fn import_pou(
             ladder.device_comments.entry(device).or_insert(name);
         }
     }
+    // No machine here keeps a power-up value for a bit device.
+    for (name, device, value, line) in names.starting_on() {
+        if used.contains(&device) {
+            let machine = machine.map_or("the machine", MachineId::name);
+            warnings.push(Located::new(
+                line,
+                format!(
+                    "{name} starts at {value} in the file, but {machine} starts {device} off at power-up"
+                ),
+            ));
+        }
+    }
     warnings.sort_by_key(|w| w.line);
     Ok(Imported {
         ladder,
@@ -520,6 +532,40 @@ impl Body {
         Ok(())
     }
 
+    /// A block's EN: open, or from the rail or a literal TRUE, it always
+    /// runs, as Hashigo's blocks do; wired to anything else it is refused
+    /// (never ignored).
+    fn check_enable(&self, pins: &[&Node], ty: &str, instance: &str) -> Result<(), ImportError> {
+        let Some(en) = pins
+            .iter()
+            .find(|v| v.attr("formalParameter") == Some("EN"))
+        else {
+            return Ok(());
+        };
+        let refs: Vec<&str> = en
+            .child("connectionPointIn")
+            .map(|c| {
+                c.all("connection")
+                    .filter_map(|c| c.attr("refLocalId"))
+                    .collect()
+            })
+            .unwrap_or_default();
+        let always = refs.iter().all(|r| {
+            self.rails.contains(*r)
+                || self
+                    .literals
+                    .get(*r)
+                    .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("TRUE"))
+        });
+        if always {
+            return Ok(());
+        }
+        Err(ImportError::Gate(
+            format!("{ty} block {instance}").trim().to_string(),
+            "its EN is wired: Hashigo's blocks always run; connect EN to the left rail or leave it open".into(),
+        ))
+    }
+
     /// A boolean block: its inputs joined, its output a point, lowered
     /// once the whole body is read ([`super::gates`]).
     fn gate(
@@ -637,6 +683,7 @@ impl Body {
                 .copied()
                 .find(|v| v.attr("formalParameter") == Some(name))
         };
+        self.check_enable(&inputs, &ty, written)?;
         if let Some(kind) = gate_kind(&ty, &instance, written)? {
             return self.gate(n, id, pos, kind, &ty, written);
         }
