@@ -11,6 +11,11 @@ use crate::time::SimTime;
 /// file, events): 16 MiB.
 pub const MAX_INPUT_BYTES: usize = 16 << 20;
 
+/// Steps (edges and points visited) lowering a PLCopen file's boolean
+/// blocks may take in all: a real file takes a few thousand; a hostile one
+/// with thousands of blocks is refused instead of taking minutes.
+pub const MAX_GATE_WORK: usize = 10_000_000;
+
 /// How deeply PLCopen XML elements may nest. Real files nest about 12 deep.
 pub const MAX_XML_DEPTH: usize = 256;
 

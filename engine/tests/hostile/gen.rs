@@ -115,3 +115,30 @@ pub fn plcopen_rails(rails: usize) -> String {
     );
     s + TAIL
 }
+
+/// A PLCopen LD body of `n` OR blocks, each of two contacts, each to a coil.
+pub fn plcopen_ors(n: usize) -> String {
+    let mut s = String::from(HEAD);
+    for i in 0..n {
+        let (a, b, g, k) = (10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i);
+        let y = i * 10;
+        for c in [a, b] {
+            let _ = writeln!(
+                s,
+                r#"<contact localId="{c}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>"#,
+                conn(&[1])
+            );
+        }
+        let _ = writeln!(
+            s,
+            r#"<block localId="{g}" typeName="OR"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN1">{}</variable><variable formalParameter="IN2">{}</variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#,
+            conn(&[a]),
+            conn(&[b])
+        );
+        let _ = writeln!(
+            s,
+            r#"<coil localId="{k}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{g}" formalParameter="OUT"/></connectionPointIn><variable>Y00</variable></coil>"#
+        );
+    }
+    s + TAIL
+}

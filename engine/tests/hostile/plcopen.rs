@@ -136,3 +136,20 @@ fn an_unknown_edge_is_called_what_it_is() {
         "edge=\"bogus\" is not none, rising or falling"
     );
 }
+
+#[test]
+fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
+    let ladder = import(&crate::gen::plcopen_ors(300)).expect("imports");
+    assert_eq!(ladder.rungs.len(), 300);
+    let started = std::time::Instant::now();
+    let errors = import(&crate::gen::plcopen_ors(2_000)).expect_err("refused");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains("steps to lower (docs/limits.md)"),
+        "{errors:?}"
+    );
+    // Not a speed test: the refusal comes long before minutes of work.
+    assert!(started.elapsed().as_secs() < 120);
+}

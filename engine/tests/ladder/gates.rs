@@ -166,3 +166,37 @@ fn a_counter_in_line_and_a_coil_on_the_rail_run_on_io86a() {
     let q = run(&xml, "CTU0,C00\n", &steps);
     assert_eq!(q, [false, false, true, true, false]);
 }
+
+#[test]
+fn an_and_input_moved_after_another_counts_as_taking_its_power() {
+    // AND(a, b) to q, then OR(a, c) to Y01: a's point now also feeds b's
+    // contact, so joining it into the OR would feed power back: refused.
+    let xml = project(
+        r#"      <block localId="4" typeName="AND"><position x="30" y="10"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+        </inputVariables>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><variable>q</variable></coil>
+      <contact localId="8"><position x="10" y="60"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X02</variable></contact>
+      <block localId="6" typeName="OR"><position x="30" y="60"/>
+        <inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="8"/></connectionPointIn></variable>
+        </inputVariables>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <coil localId="7"><position x="60" y="60"/><connectionPointIn><connection refLocalId="6" formalParameter="OUT"/></connectionPointIn><variable>Y01</variable></coil>"#,
+    );
+    let errors =
+        import_mapped(&xml, Some(MachineId::Io86a), None).expect_err("shared after the AND");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains("OR block: an input also feeds"),
+        "{errors:?}"
+    );
+}

@@ -24,6 +24,7 @@ use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
+use crate::limits::MAX_GATE_WORK;
 
 /// A boolean block waiting to be lowered.
 #[derive(Clone, Debug)]
@@ -59,6 +60,13 @@ impl Body {
         let gates = std::mem::take(&mut self.gates);
         let mut errors = Vec::new();
         for g in gates {
+            if self.gate_work > MAX_GATE_WORK {
+                let why = format!(
+                    "the file's blocks take more than {MAX_GATE_WORK} steps to lower (docs/limits.md)"
+                );
+                errors.push(Located::new(g.line, super::ImportError::Gate(g.what, why)));
+                break;
+            }
             if let Err(why) = self.lower(&g) {
                 let what = g.what.clone();
                 errors.push(Located::new(g.line, super::ImportError::Gate(what, why)));
@@ -73,6 +81,7 @@ impl Body {
 
     /// How many elements take power from each point (joined points).
     fn takers(&mut self) -> HashMap<usize, usize> {
+        self.gate_work += self.consumed.len();
         let mut count = HashMap::new();
         for p in self.consumed.clone() {
             *count.entry(self.find(p)).or_insert(0) += 1;
@@ -170,6 +179,7 @@ impl Body {
         let p = self.find(p);
         let rail = self.find(super::import::RAIL);
         let takers = self.takers();
+        self.gate_work += self.edges.len();
         let feeding: Vec<usize> = (0..self.edges.len())
             .filter(|&i| {
                 let b = self.edges[i].1;
@@ -200,6 +210,7 @@ impl Body {
         let mut todo = vec![target];
         let mut seen = vec![target];
         while let Some(q) = todo.pop() {
+            self.gate_work += self.edges.len();
             for i in 0..self.edges.len() {
                 let (a, b) = (self.edges[i].0, self.edges[i].1);
                 if self.find(b) != q {
@@ -234,6 +245,8 @@ impl Body {
             let a = self.edges[i].0;
             if self.find(a) == rail {
                 self.edges[i].0 = from;
+                // `from` now feeds it too: a later OR must see that.
+                self.consumed.push(from);
             }
         }
         Ok(())

@@ -296,8 +296,10 @@ pub(super) struct Body {
     pub(super) outputs: Vec<(usize, Element, Pos, usize)>,
     /// Points some element takes power from (not the right rail).
     pub(super) consumed: Vec<usize>,
-    /// Boolean blocks to lower once every element is read.
+    /// Boolean blocks to lower once every element is read, and the steps
+    /// lowering them has taken ([`crate::limits::MAX_GATE_WORK`]).
     pub(super) gates: Vec<Gate>,
+    pub(super) gate_work: usize,
     comments: Vec<(usize, String)>,
     /// What is worth saying but does not stop the import.
     warnings: Vec<Located<String>>,
