@@ -359,7 +359,7 @@ fn the_real_projects_that_compile_with_a_proposed_map() {
     }
     assert_eq!(
         compiled["io86a"],
-        ["dnp3-test", "lab1-seal-in", "pr009g"],
+        ["dnp3-test", "lab1-seal-in", "lab4-ton-tof", "pr009g"],
         "{compiled:?}"
     );
     assert_eq!(

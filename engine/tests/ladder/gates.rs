@@ -200,3 +200,45 @@ fn an_and_input_moved_after_another_counts_as_taking_its_power() {
         "{errors:?}"
     );
 }
+
+/// A timer block from `a` to `q`, with PT 300 ms.
+fn timer_block(ty: &str) -> String {
+    project(&format!(
+        r#"      <block localId="4" typeName="{ty}" instanceName="{ty}0"><position x="30" y="10"/>
+        <inputVariables>
+          <variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          <variable formalParameter="PT"><connectionPointIn><connection refLocalId="7"/></connectionPointIn></variable>
+        </inputVariables>
+        <outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables>
+      </block>
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>T#300ms</expression></inVariable>
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="Q"/></connectionPointIn><variable>q</variable></coil>
+      <coil localId="9"><position x="60" y="30"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn><variable>Y01</variable></coil>"#
+    ))
+}
+
+#[test]
+fn tof_and_tp_on_io86a_use_its_on_delay_timer_and_a_relay() {
+    // 50 ms a step. TOF: on with a, held 300 ms after a falls.
+    let mut steps = vec![(true, false), (true, false)];
+    steps.extend([(false, false); 10]);
+    let q = run(&timer_block("TOF"), "TOF0,T01+M20\n", &steps);
+    assert!(q[..6].iter().all(|&on| on), "held after a falls: {q:?}");
+    assert!(q[9..].iter().all(|&on| !on), "off 300 ms after: {q:?}");
+    // TP: 300 ms from a's rise, however long a stays on; again after a
+    // falls and rises.
+    let mut steps = vec![(true, false); 10];
+    steps.extend([(false, false), (true, false)]);
+    let q = run(&timer_block("TP"), "TP0,T02+M21\n", &steps);
+    assert!(q[0] && q[3], "the pulse: {q:?}");
+    assert!(!q[8] && !q[9], "over while a is still on: {q:?}");
+    assert!(q[11], "a new rise, a new pulse: {q:?}");
+    // Mapped to a timer alone, a TOF is refused as before.
+    let errors = import_mapped(
+        &timer_block("TOF"),
+        Some(MachineId::Io86a),
+        Some(&VarMap::parse("TOF0,T01\n").expect("map")),
+    )
+    .expect_err("no relay");
+    assert!(errors[0].error.to_string().contains("TOF"), "{errors:?}");
+}

@@ -415,6 +415,16 @@ pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(St
         if names.instance(&name).is_some() || check_element(machine, &Element::no(&name)).is_ok() {
             continue;
         }
+        // IO86A's timers are on-delay: a TOF or TP also holds its output
+        // in a relay (`T01+M20`).
+        if machine == MachineId::Io86a && matches!(ty.as_str(), "TOF" | "TP") {
+            let timer = next(&pools.timers, &mut taken);
+            let relay = next(&pools.relays, &mut taken);
+            if let (Some(t), Some(m)) = (timer, relay) {
+                out.push((name, format!("{t}+{m}")));
+            }
+            continue;
+        }
         let pool = match ty.as_str() {
             "TON" | "TOF" | "TP" => &pools.timers,
             "CTU" | "CTD" | "CTUD" => &pools.counters,

@@ -52,6 +52,14 @@ pub(super) enum GateKind {
         relay: String,
         set_wins: bool,
     },
+    /// A TOF (or, `pulse`, a TP) from an on-delay timer coil and a relay
+    /// that holds its output.
+    Delay {
+        coil: Element,
+        timer: String,
+        relay: String,
+        pulse: bool,
+    },
 }
 
 impl Body {
@@ -120,8 +128,8 @@ impl Body {
                 let [a, b] = g.inputs[..] else {
                     return Err("XOR of more than two inputs: draw the branches".into());
                 };
-                let (ca, la) = self.single_contact(a)?;
-                let (cb, lb) = self.single_contact(b)?;
+                let (ca, _, la) = self.single_contact(a)?;
+                let (cb, _, lb) = self.single_contact(b)?;
                 let out = g.out;
                 let mid = [self.fresh(), self.fresh()];
                 let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
@@ -134,11 +142,17 @@ impl Body {
                 self.edges.push((mid[1], out, Net::Leaf(cb, at(4)), lb));
                 Ok(())
             }
+            GateKind::Delay {
+                coil,
+                timer,
+                relay,
+                pulse,
+            } => self.lower_delay(g, coil, timer, relay, *pulse),
             GateKind::Flip { relay, set_wins } => {
                 let [s, r] = g.inputs[..] else {
                     return Err("a flip-flop has S and R".into());
                 };
-                let (cr, lr) = self.single_contact(r)?;
+                let (cr, _, lr) = self.single_contact(r)?;
                 let not_r = invert(&cr)?;
                 let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
                 let held = Element::no(relay);
@@ -166,6 +180,56 @@ impl Body {
         }
     }
 
+    /// TOF: `R := IN or (R and not T)`, T's coil on `R and not IN`, Q is
+    /// R. TP: `R := IN rising or (R and not T)`, T's coil on R, Q is R.
+    /// IN must be one contact from the rail (it is used twice).
+    fn lower_delay(
+        &mut self,
+        g: &Gate,
+        coil: &Element,
+        timer: &str,
+        relay: &str,
+        pulse: bool,
+    ) -> Result<(), String> {
+        let rail = super::import::RAIL;
+        let input = g.inputs.first().copied().ok_or("no IN")?;
+        let (c_in, at_in, line) = self.single_contact(input)?;
+        let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
+        let set = if pulse { rising(&c_in)? } else { c_in.clone() };
+        let (hold, running) = (self.fresh(), self.fresh());
+        // The relay: set by IN (its rise), held until the timer is done.
+        self.edges.push((rail, input, Net::Leaf(set, at_in), line));
+        self.edges
+            .push((rail, hold, Net::Leaf(Element::no(relay), at(1)), g.line));
+        self.edges
+            .push((hold, input, Net::Leaf(Element::nc(timer), at(2)), g.line));
+        self.consumed.extend([rail, rail, hold, input]);
+        let held = Element::Coil {
+            kind: CoilKind::Normal,
+            device: relay.to_string(),
+        };
+        self.outputs.push((input, held, at(3), g.line));
+        // The timer: runs while the relay holds (and, TOF, IN is off).
+        self.edges
+            .push((rail, running, Net::Leaf(Element::no(relay), at(4)), g.line));
+        let timing = if pulse {
+            running
+        } else {
+            let off = self.fresh();
+            self.edges
+                .push((running, off, Net::Leaf(invert(&c_in)?, at(5)), line));
+            self.consumed.push(running);
+            off
+        };
+        self.consumed.extend([rail, timing]);
+        self.outputs.push((timing, coil.clone(), at(6), g.line));
+        // Q: the relay.
+        self.edges
+            .push((rail, g.out, Net::Leaf(Element::no(relay), at(7)), g.line));
+        self.consumed.push(rail);
+        Ok(())
+    }
+
     /// A new point.
     fn fresh(&mut self) -> usize {
         let p = self.parent.len();
@@ -174,8 +238,8 @@ impl Body {
     }
 
     /// The one contact from the rail that feeds `p` and nothing else,
-    /// taken out of the graph (its element and line).
-    fn single_contact(&mut self, p: usize) -> Result<(Element, usize), String> {
+    /// taken out of the graph (its element, place and line).
+    fn single_contact(&mut self, p: usize) -> Result<(Element, Pos, usize), String> {
         let p = self.find(p);
         let rail = self.find(super::import::RAIL);
         let takers = self.takers();
@@ -192,9 +256,9 @@ impl Body {
         };
         let (a, _, net, line) = self.edges[only].clone();
         match net {
-            Net::Leaf(e @ Element::Contact { .. }, _) if self.find(a) == rail => {
+            Net::Leaf(e @ Element::Contact { .. }, at) if self.find(a) == rail => {
                 self.edges.remove(only);
-                Ok((e, line))
+                Ok((e, at, line))
             }
             _ => Err("this input must be one contact from the rail".into()),
         }
@@ -250,6 +314,25 @@ impl Body {
             }
         }
         Ok(())
+    }
+}
+
+/// The contact that conducts in the scan `c` starts conducting.
+fn rising(c: &Element) -> Result<Element, String> {
+    match c {
+        Element::Contact { kind, device } => {
+            let kind = match kind {
+                ContactKind::No => ContactKind::Rising,
+                // NC conducts from when the device falls.
+                ContactKind::Nc => ContactKind::Falling,
+                _ => return Err("IN is already an edge contact".into()),
+            };
+            Ok(Element::Contact {
+                kind,
+                device: device.clone(),
+            })
+        }
+        _ => Err("not a contact".into()),
     }
 }
 

@@ -287,6 +287,8 @@ pub(super) struct Body {
     rails: HashSet<String>,
     kinds: HashMap<String, (String, usize)>,
     literals: HashMap<String, (String, usize)>,
+    /// Each block's EN connections: (refLocalId, formalParameter).
+    enables: HashMap<String, Vec<(String, String)>>,
     /// Variable boxes that feed power: a contact of their device from
     /// the rail (the device, or why it has none; its place).
     variables: HashMap<String, (Result<String, String>, Pos)>,
@@ -339,6 +341,28 @@ impl Body {
             match n.name.as_str() {
                 "leftPowerRail" => {
                     b.rails.insert(id.to_string());
+                }
+                "block" => {
+                    let en = n
+                        .child("inputVariables")
+                        .and_then(|v| {
+                            v.all("variable")
+                                .find(|p| p.attr("formalParameter") == Some("EN"))
+                        })
+                        .and_then(|p| p.child("connectionPointIn"))
+                        .map(|c| {
+                            c.all("connection")
+                                .filter_map(|c| {
+                                    let r = c.attr("refLocalId")?.to_string();
+                                    Some((
+                                        r,
+                                        c.attr("formalParameter").unwrap_or_default().to_string(),
+                                    ))
+                                })
+                                .collect()
+                        })
+                        .unwrap_or_default();
+                    b.enables.insert(id.to_string(), en);
                 }
                 "inVariable" => {
                     let expr = n
@@ -544,28 +568,43 @@ impl Body {
         else {
             return Ok(());
         };
-        let refs: Vec<&str> = en
+        let refs: Vec<(String, String)> = en
             .child("connectionPointIn")
             .map(|c| {
                 c.all("connection")
-                    .filter_map(|c| c.attr("refLocalId"))
+                    .filter_map(|c| {
+                        let r = c.attr("refLocalId")?.to_string();
+                        Some((r, c.attr("formalParameter").unwrap_or_default().to_string()))
+                    })
                     .collect()
             })
             .unwrap_or_default();
-        let always = refs.iter().all(|r| {
-            self.rails.contains(*r)
-                || self
-                    .literals
-                    .get(*r)
-                    .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("TRUE"))
-        });
-        if always {
+        if self.always_enabled(&refs, 0) {
             return Ok(());
         }
         Err(ImportError::Gate(
             format!("{ty} block {instance}").trim().to_string(),
             "its EN is wired: Hashigo's blocks always run; connect EN to the left rail or leave it open".into(),
         ))
+    }
+
+    /// Whether EN connections `refs` always carry power: from the rail, a
+    /// literal TRUE, or another block's ENO whose own EN always does
+    /// (OpenPLC Editor chains EN to ENO); `depth` bounds the chain.
+    fn always_enabled(&self, refs: &[(String, String)], depth: usize) -> bool {
+        depth < 64
+            && refs.iter().all(|(r, pin)| {
+                self.rails.contains(r)
+                    || self
+                        .literals
+                        .get(r)
+                        .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("TRUE"))
+                    || (pin.eq_ignore_ascii_case("ENO")
+                        && self
+                            .enables
+                            .get(r)
+                            .is_some_and(|en| self.always_enabled(en, depth + 1)))
+            })
     }
 
     /// A boolean block: its inputs joined, its output a point, lowered
@@ -747,6 +786,27 @@ impl Body {
                     "TOF" => TimerKind::Tof,
                     _ => TimerKind::Tp,
                 };
+                // A TOF or TP mapped to a timer and a relay (`T01+M20`):
+                // built from the machine's on-delay timer coil.
+                if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == "TON") {
+                    let coil = timer_coil(timer.trim(), preset_ms)?;
+                    let kind = GateKind::Delay {
+                        coil,
+                        timer: timer.trim().to_string(),
+                        relay: relay.trim().to_string(),
+                        pulse: ty == "TP",
+                    };
+                    let out = self.point(id, "Q");
+                    self.gates.push(Gate {
+                        kind,
+                        inputs: vec![input],
+                        out,
+                        pos,
+                        line: n.line,
+                        what,
+                    });
+                    return Ok(());
+                }
                 Element::Timer {
                     kind,
                     name: instance.clone(),
