@@ -32,15 +32,12 @@ pub struct Pending {
 impl Pending {
     /// The map the rows make.
     fn map(&self) -> VarMap {
-        VarMap {
-            entries: self
-                .rows
+        VarMap::from_pairs(
+            self.rows
                 .iter()
                 .filter(|(_, d)| !d.trim().is_empty())
-                .enumerate()
-                .map(|(i, (n, d))| (n.clone(), d.trim().to_string(), i + 1))
-                .collect(),
-        }
+                .map(|(n, d)| (n.clone(), d.trim().to_string())),
+        )
     }
 }
 

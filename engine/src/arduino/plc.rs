@@ -226,18 +226,8 @@ impl Plc for ArduinoPlc {
         self.machine.step_instruction().map(usize::from)
     }
 
-    /// Word `n` of the EEPROM is step `n`; a pass back to word 0 ends a scan.
-    fn set_tracing(&mut self, on: bool) {
-        self.machine.tracer.set(on);
-    }
-
-    fn trace(&self) -> Option<&crate::plc::ScanTrace> {
-        self.machine.tracer.last()
-    }
-
-    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
-        self.machine.tracer.take_history()
-    }
+    // Word `n` of the EEPROM is step `n`; a pass back to word 0 ends a scan.
+    plc::forward_tracing!(machine.tracer);
 
     /// The input pins (X000-X005 in bits 0-5), the output port (Y000-Y005
     /// in bits 0-5), the program counter and the bit stack (2 bytes each,

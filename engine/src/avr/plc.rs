@@ -212,18 +212,8 @@ impl Plc for AvrPlc {
         self.machine.step_instruction()
     }
 
-    /// Record `n` is step `n`: a load, and, or reads its bit.
-    fn set_tracing(&mut self, on: bool) {
-        self.machine.tracer.set(on);
-    }
-
-    fn trace(&self) -> Option<&crate::plc::ScanTrace> {
-        self.machine.tracer.last()
-    }
-
-    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
-        self.machine.tracer.take_history()
-    }
+    // Record `n` is step `n`: a load, and, or reads its bit.
+    plc::forward_tracing!(machine.tracer);
 
     /// R0-R31 as the last scan left them, then each timer word's count
     /// (2 bytes, little-endian).

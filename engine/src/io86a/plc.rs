@@ -435,19 +435,9 @@ impl Plc for Io86aPlc {
         self.pair.a.step_instruction()
     }
 
-    /// Device A's steps, numbered as its listing numbers them (an
-    /// instruction's first line).
-    fn set_tracing(&mut self, on: bool) {
-        self.pair.a.tracer.set(on);
-    }
-
-    fn trace(&self) -> Option<&crate::plc::ScanTrace> {
-        self.pair.a.tracer.last()
-    }
-
-    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
-        self.pair.a.tracer.take_history()
-    }
+    // Device A's steps, numbered as its listing numbers them (an
+    // instruction's first line).
+    plc::forward_tracing!(pair.a.tracer);
 
     fn running(&self) -> bool {
         self.pair.a.running()

@@ -37,13 +37,9 @@ impl LiveLadder {
     ) -> Result<LiveLadder, Vec<LadderError>> {
         let listing = compile_listing(ladder, machine, options)?;
         let logic = ladder.logic(machine)?;
-        let indices = ladder
-            .rungs
-            .iter()
-            .enumerate()
-            .filter(|(_, r)| !r.is_empty())
-            .map(|(i, _)| i);
-        let rungs = indices
+        let rungs = ladder
+            .logic_indices()
+            .into_iter()
             .zip(logic)
             .map(|(i, l)| {
                 let steps = l

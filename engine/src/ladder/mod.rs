@@ -55,6 +55,14 @@ impl Ladder {
         }
     }
 
+    /// The ladder index of each rung [`Ladder::logic`] returns (the
+    /// non-empty ones), in order.
+    pub fn logic_indices(&self) -> Vec<usize> {
+        (0..self.rungs.len())
+            .filter(|&i| !self.rungs[i].is_empty())
+            .collect()
+    }
+
     /// A ladder of one rung per logic, drawn by [`layout`].
     pub fn from_logic(rungs: &[RungLogic]) -> Ladder {
         Ladder {

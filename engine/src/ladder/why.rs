@@ -142,14 +142,7 @@ fn on_cost(net: &Net, state: &impl Fn(Pos) -> bool) -> (usize, Vec<Pos>) {
     match net {
         Net::Leaf(_, p) if state(*p) => (0, Vec::new()),
         Net::Leaf(_, p) => (1, vec![*p]),
-        Net::Series(v) => {
-            v.iter()
-                .map(|n| on_cost(n, state))
-                .fold((0, Vec::new()), |(n, mut set), (m, more)| {
-                    set.extend(more);
-                    (n + m, set)
-                })
-        }
+        Net::Series(v) => all_of(v.iter().map(|n| on_cost(n, state))),
         Net::Parallel(v) => cheapest(v.iter().map(|n| on_cost(n, state))),
     }
 }
@@ -160,17 +153,19 @@ fn off_cost(net: &Net, state: &impl Fn(Pos) -> bool) -> (usize, Vec<Pos>) {
         Net::Leaf(_, p) if state(*p) => (1, vec![*p]),
         Net::Leaf(_, _) => (0, Vec::new()),
         Net::Series(v) => cheapest(v.iter().map(|n| off_cost(n, state))),
-        Net::Parallel(v) => {
-            v.iter()
-                .map(|n| off_cost(n, state))
-                .fold((0, Vec::new()), |(n, mut set), (m, more)| {
-                    set.extend(more);
-                    (n + m, set)
-                })
-        }
+        Net::Parallel(v) => all_of(v.iter().map(|n| off_cost(n, state))),
     }
 }
 
+/// Every option's changes together.
+fn all_of(options: impl Iterator<Item = (usize, Vec<Pos>)>) -> (usize, Vec<Pos>) {
+    options.fold((0, Vec::new()), |(n, mut set), (m, more)| {
+        set.extend(more);
+        (n + m, set)
+    })
+}
+
+/// The option with the fewest changes.
 fn cheapest(options: impl Iterator<Item = (usize, Vec<Pos>)>) -> (usize, Vec<Pos>) {
     options.min_by_key(|(n, _)| *n).unwrap_or((0, Vec::new()))
 }

@@ -282,18 +282,8 @@ impl Plc for MinasecPlc {
         self.machine.step_clock()
     }
 
-    /// Address `n` is step `n`; the scan ends at the wrap to address 0.
-    fn set_tracing(&mut self, on: bool) {
-        self.machine.tracer.set(on);
-    }
-
-    fn trace(&self) -> Option<&crate::plc::ScanTrace> {
-        self.machine.tracer.last()
-    }
-
-    fn take_trace_history(&mut self) -> crate::plc::TraceHistory {
-        self.machine.tracer.take_history()
-    }
+    // Address `n` is step `n`; the scan ends at the wrap to address 0.
+    plc::forward_tracing!(machine.tracer);
 
     /// The bus word the last scan left (4 bytes, little-endian: bit `a` =
     /// address `a`), the count, and each timer's value in ms (4 bytes each).

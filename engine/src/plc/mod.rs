@@ -134,11 +134,7 @@ pub trait Plc {
     /// Advances by `dt` (at most [`MAX_TICK`], never past the clock's
     /// limit) in whole scans or steps.
     fn tick(&mut self, dt: SimTime) {
-        let t = self
-            .now()
-            .saturating_add(dt.min(MAX_TICK))
-            .min(MAX_SIM_TIME);
-        self.run_until(t);
+        self.run_until(tick_end(self.now(), dt));
     }
 
     /// Runs the rest of the scan under way, or one whole scan.
@@ -263,6 +259,32 @@ macro_rules! forward_time {
     };
 }
 pub(crate) use forward_time;
+
+/// The tracing methods every [`Plc`] implementation forwards to the
+/// [`Tracer`] at `$($path).+` (`machine.tracer`, `pair.a.tracer`); each
+/// machine says next to the call how its steps are numbered.
+macro_rules! forward_tracing {
+    ($($path:ident).+) => {
+        fn set_tracing(&mut self, on: bool) {
+            self.$($path).+.set(on);
+        }
+
+        fn trace(&self) -> Option<&$crate::plc::ScanTrace> {
+            self.$($path).+.last()
+        }
+
+        fn take_trace_history(&mut self) -> $crate::plc::TraceHistory {
+            self.$($path).+.take_history()
+        }
+    };
+}
+pub(crate) use forward_tracing;
+
+/// Where a [`Plc::tick`] of `dt` from `now` ends: at most [`MAX_TICK`]
+/// on, never past the clock's limit.
+pub fn tick_end(now: SimTime, dt: SimTime) -> SimTime {
+    now.saturating_add(dt.min(MAX_TICK)).min(MAX_SIM_TIME)
+}
 
 /// Reads `N` little-endian bytes of `image` at `at`.
 pub(crate) fn image_bytes<const N: usize>(image: &[u8], at: usize) -> Option<[u8; N]> {

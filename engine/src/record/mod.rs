@@ -29,7 +29,7 @@ pub use travel::TimeTravel;
 use std::collections::VecDeque;
 
 use crate::limits::MAX_SIM_TIME;
-use crate::plc::{Command, Device, Plc, PlcError, MAX_TICK};
+use crate::plc::{tick_end, Command, Device, Plc, PlcError};
 use crate::time::SimTime;
 use store::Chunk;
 
@@ -172,16 +172,11 @@ impl<M: Plc + Clone> Recording<M> {
         from: Mark,
         to: Mark,
     ) -> Vec<Option<i64>> {
-        let from = from.max(self.first());
-        let to = to.min(self.last());
+        let (from, to, chunks) = self.filled_between(from, to);
         let mut out = Vec::new();
         let mut image = Vec::new();
-        for c in 0..self.chunks.len() {
-            let (first, last) = (self.chunks[c].first, self.chunks[c].last());
-            if last < from || first > to {
-                continue;
-            }
-            self.fill(c);
+        for c in chunks {
+            let first = self.chunks[c].first;
             self.chunks[c].each_image(&mut image, |i, img| {
                 let mark = first + i as u64;
                 if (from..=to).contains(&mark) {
@@ -200,6 +195,20 @@ impl<M: Plc + Clone> Recording<M> {
         let now = *values.last()?;
         let i = values.iter().rposition(|v| *v != now)?;
         Some(first + i as u64 + 1)
+    }
+
+    /// `from..=to` within the kept marks, and the chunks holding any of
+    /// it, their images and times made.
+    fn filled_between(&mut self, from: Mark, to: Mark) -> (Mark, Mark, Vec<usize>) {
+        let from = from.max(self.first());
+        let to = to.min(self.last());
+        let chunks: Vec<usize> = (0..self.chunks.len())
+            .filter(|&c| self.chunks[c].last() >= from && self.chunks[c].first <= to)
+            .collect();
+        for &c in &chunks {
+            self.fill(c);
+        }
+        (from, to, chunks)
     }
 
     /// Makes chunk `c`'s images, if not all held, by replaying it with
@@ -226,16 +235,11 @@ impl<M: Plc + Clone> Recording<M> {
 
     /// The end time of each kept scan in `from..=to`.
     pub fn times(&mut self, from: Mark, to: Mark) -> Vec<SimTime> {
-        let from = from.max(self.first());
-        let to = to.min(self.last());
+        let (from, to, chunks) = self.filled_between(from, to);
         let mut out = Vec::new();
-        for c in 0..self.chunks.len() {
-            let (first, last) = (self.chunks[c].first, self.chunks[c].last());
-            if last < from || first > to {
-                continue;
-            }
-            self.fill(c);
+        for c in chunks {
             let chunk = &self.chunks[c];
+            let (first, last) = (chunk.first, chunk.last());
             let skip = from.saturating_sub(first) as usize;
             let take = (to.min(last) + 1 - first.max(from)) as usize;
             out.extend(chunk.times().iter().skip(skip).take(take));
@@ -275,11 +279,7 @@ impl<M: Plc + Clone> Recording<M> {
         dt: SimTime,
         stop: Option<&mut Condition>,
     ) -> Option<Break> {
-        let t = machine
-            .now()
-            .saturating_add(dt.min(MAX_TICK))
-            .min(MAX_SIM_TIME);
-        self.run(machine, t, stop)
+        self.run(machine, tick_end(machine.now(), dt), stop)
     }
 
     /// Runs `machine` to `t` one scan at a time, recording each; stops at

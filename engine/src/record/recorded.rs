@@ -4,6 +4,7 @@
 //! travel shows a past scan through the same [`Plc`] reads.
 
 use super::{Break, Condition, Mark, Recording, DEFAULT_BUDGET};
+use crate::clock::PeriodicClock;
 use crate::events::InputValue;
 use crate::plc::{
     Command, Device, Front, Plc, PlcError, ScanTrace, SettingInfo, TraceHistory, Warning,
@@ -207,9 +208,7 @@ impl<M: Plc + Clone> Plc for Recorded<M> {
     }
 
     fn run_before(&mut self, t: SimTime) {
-        if let Some(before) = t.as_nanos().checked_sub(1) {
-            self.run_recorded(SimTime::from_nanos(before));
-        }
+        self.run_recorded(PeriodicClock::just_before(t));
         if self.hit.is_none() {
             self.live.run_before(t);
         }

@@ -6,6 +6,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
+use engine::clock::PeriodicClock;
 use engine::ladder::compile::Options;
 use engine::ladder::live::LiveLadder;
 use engine::ladder::why::{causes, deciding_output, Explanation};
@@ -123,9 +124,7 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     plc.set_tracing(true);
     for (t, d, value) in inputs.into_iter().filter(|(t, _, _)| *t <= at) {
         // Everything due strictly before the event runs first.
-        if let Some(before) = t.as_nanos().checked_sub(1) {
-            run_scans(plc.as_mut(), SimTime::from_nanos(before), &mut observe);
-        }
+        run_scans(plc.as_mut(), PeriodicClock::just_before(t), &mut observe);
         plc.run_before(t);
         // Checked above: the machine takes it.
         let _ = plc.apply(Command::SetInput(d, value));

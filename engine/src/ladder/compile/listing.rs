@@ -90,20 +90,13 @@ pub fn compile_listing(
     options: Options,
 ) -> Result<Listing, Vec<LadderError>> {
     let logic = ladder.logic(machine)?;
-    // `logic` holds the non-empty rungs, in order.
-    let indices = ladder
-        .rungs
-        .iter()
-        .enumerate()
-        .filter(|(_, r)| !r.is_empty())
-        .map(|(i, _)| i);
+    let indices = ladder.logic_indices();
     let mapped = match machine {
         MachineId::MinasecU | MachineId::AvrPlc => {
             accumulator::compile_mapped(&logic, machine, options)?
         }
         MachineId::Io86a | MachineId::ArduinoPlc => stack::compile_mapped(&logic, machine)?,
     };
-    let indices: Vec<usize> = indices.collect();
     let mut sources: Vec<LeafSource> = Vec::new();
     for &(i, pos, line) in &mapped.sources {
         let rung = indices[i];

@@ -25,6 +25,17 @@ pub struct VarMap {
 }
 
 impl VarMap {
+    /// A map of `pairs` (name, device), numbered as lines 1, 2, … (what
+    /// a file of them would be: the page's mapping table, a proposal).
+    pub fn from_pairs(pairs: impl IntoIterator<Item = (String, String)>) -> VarMap {
+        let entries = pairs
+            .into_iter()
+            .enumerate()
+            .map(|(i, (name, device))| (name, device, i + 1))
+            .collect();
+        VarMap { entries }
+    }
+
     /// Reads a map file; every malformed line is an error at its line.
     pub fn parse(text: &str) -> Result<VarMap, Vec<Located<String>>> {
         let mut entries = Vec::new();

@@ -319,37 +319,35 @@ impl Body {
 
 /// The contact that conducts in the scan `c` starts conducting.
 fn rising(c: &Element) -> Result<Element, String> {
-    match c {
-        Element::Contact { kind, device } => {
-            let kind = match kind {
-                ContactKind::No => ContactKind::Rising,
-                // NC conducts from when the device falls.
-                ContactKind::Nc => ContactKind::Falling,
-                _ => return Err("IN is already an edge contact".into()),
-            };
-            Ok(Element::Contact {
-                kind,
-                device: device.clone(),
-            })
-        }
-        _ => Err("not a contact".into()),
-    }
+    rekind(c, "IN is already an edge contact", |kind| match kind {
+        ContactKind::No => Some(ContactKind::Rising),
+        // NC conducts from when the device falls.
+        ContactKind::Nc => Some(ContactKind::Falling),
+        _ => None,
+    })
 }
 
 /// The contact that conducts when `c` does not.
 fn invert(c: &Element) -> Result<Element, String> {
+    rekind(c, "an edge contact cannot be inverted", |kind| match kind {
+        ContactKind::No => Some(ContactKind::Nc),
+        ContactKind::Nc => Some(ContactKind::No),
+        _ => None,
+    })
+}
+
+/// Contact `c` on the same device with the kind `to` gives (`None`: the
+/// reason `edge` says).
+fn rekind(
+    c: &Element,
+    edge: &str,
+    to: impl Fn(ContactKind) -> Option<ContactKind>,
+) -> Result<Element, String> {
     match c {
-        Element::Contact { kind, device } => {
-            let kind = match kind {
-                ContactKind::No => ContactKind::Nc,
-                ContactKind::Nc => ContactKind::No,
-                _ => return Err("an edge contact cannot be inverted".into()),
-            };
-            Ok(Element::Contact {
-                kind,
-                device: device.clone(),
-            })
-        }
+        Element::Contact { kind, device } => Ok(Element::Contact {
+            kind: to(*kind).ok_or(edge)?,
+            device: device.clone(),
+        }),
         _ => Err("not a contact".into()),
     }
 }

@@ -558,28 +558,13 @@ impl Body {
         Ok(())
     }
 
-    /// A block's EN: open, or from the rail or a literal TRUE, it always
-    /// runs, as Hashigo's blocks do; wired to anything else it is refused
-    /// (never ignored).
-    fn check_enable(&self, pins: &[&Node], ty: &str, instance: &str) -> Result<(), ImportError> {
-        let Some(en) = pins
-            .iter()
-            .find(|v| v.attr("formalParameter") == Some("EN"))
-        else {
-            return Ok(());
-        };
-        let refs: Vec<(String, String)> = en
-            .child("connectionPointIn")
-            .map(|c| {
-                c.all("connection")
-                    .filter_map(|c| {
-                        let r = c.attr("refLocalId")?.to_string();
-                        Some((r, c.attr("formalParameter").unwrap_or_default().to_string()))
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
-        if self.always_enabled(&refs, 0) {
+    /// A block's EN (its connections read with the body, `enables`):
+    /// open, or from the rail, a literal TRUE or an always-running
+    /// block's ENO, it always runs, as Hashigo's blocks do; wired to
+    /// anything else it is refused (never ignored).
+    fn check_enable(&self, id: &str, ty: &str, instance: &str) -> Result<(), ImportError> {
+        let refs = self.enables.get(id).map_or(&[][..], Vec::as_slice);
+        if self.always_enabled(refs, 0) {
             return Ok(());
         }
         Err(ImportError::Gate(
@@ -724,7 +709,7 @@ impl Body {
                 .copied()
                 .find(|v| v.attr("formalParameter") == Some(name))
         };
-        self.check_enable(&inputs, &ty, written)?;
+        self.check_enable(id, &ty, written)?;
         if let Some(kind) = gate_kind(&ty, &instance, written)? {
             return self.gate(n, id, pos, kind, &ty, written);
         }
@@ -931,12 +916,9 @@ impl Body {
         &mut self,
         machine: Option<MachineId>,
     ) -> Result<(Vec<Edge>, HashMap<Pos, usize>), Errors> {
-        // IO86A's timers are coils (`OUT T00 K19`) with contacts: an
-        // in-line TON becomes its coil, fed where the box was, and its
-        // contact, from the rail, where the box's Q went (Q is the timer's
-        // done bit, on only while IN is).
+        // IO86A's timers and counters are coils (`OUT T00 K19`) with
+        // contacts: an in-line TON or CTU is split ([`Body::split_box`]).
         let timer_coils = machine == Some(MachineId::Io86a);
-        let rail = self.find(RAIL);
         let consumed: HashSet<usize> = self
             .consumed
             .clone()
@@ -974,15 +956,8 @@ impl Body {
                     ) if timer_coils => {
                         let coil = timer_coil(name, *preset_ms)
                             .map_err(|m| vec![Located::new(line, m)])?;
-                        self.outputs.push((a, coil, *pos, line));
-                        // A place of its own, beside the box's.
-                        let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
-                        lines.insert(at, line);
-                        edges.push(Edge {
-                            from: rail,
-                            to: b,
-                            net: Net::Leaf(Element::no(name), at),
-                        });
+                        let contact = Element::no(name);
+                        self.split_box((a, b), coil, contact, *pos, line, (&mut edges, &mut lines));
                         continue;
                     }
                     (Element::CounterCoil { .. }, true) => {
@@ -990,16 +965,16 @@ impl Body {
                         continue;
                     }
                     (Element::CounterCoil { device, .. }, false) if timer_coils => {
-                        // As a TON: the coil where the box was, its contact
-                        // where Q went (Q is the counter's count-reached bit).
-                        self.outputs.push((a, e.clone(), *pos, line));
-                        let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
-                        lines.insert(at, line);
-                        edges.push(Edge {
-                            from: rail,
-                            to: b,
-                            net: Net::Leaf(Element::no(device), at),
-                        });
+                        // Q is the counter's count-reached bit.
+                        let contact = Element::no(device);
+                        self.split_box(
+                            (a, b),
+                            e.clone(),
+                            contact,
+                            *pos,
+                            line,
+                            (&mut edges, &mut lines),
+                        );
                         continue;
                     }
                     (Element::CounterCoil { device, .. }, false) => {
@@ -1016,6 +991,30 @@ impl Body {
             });
         }
         Ok((edges, lines))
+    }
+
+    /// An in-line timer or counter box from point `a` to `b` as IO86A
+    /// has it: its `coil` where the box was fed, and its `contact`, from
+    /// the rail, where its Q went (Q is on only while the coil's
+    /// condition has held long enough), at a place of its own.
+    fn split_box(
+        &mut self,
+        (a, b): (usize, usize),
+        coil: Element,
+        contact: Element,
+        pos: Pos,
+        line: usize,
+        (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
+    ) {
+        self.outputs.push((a, coil, pos, line));
+        let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
+        lines.insert(at, line);
+        let rail = self.find(RAIL);
+        edges.push(Edge {
+            from: rail,
+            to: b,
+            net: Net::Leaf(contact, at),
+        });
     }
 
     /// Every element and device checked against `machine`, at its line.
