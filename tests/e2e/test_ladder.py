@@ -695,13 +695,18 @@ def scans(driver):
     return int(re.search(r"· (\d+) scans", el(driver, "sim-time").text).group(1))
 
 
-def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
+def seed_running(driver, base_url, speed):
+    """The seed example drawn, written to the board and running at `speed`."""
     open_fresh(driver, base_url)
     Select(el(driver, "example")).select_by_value("seed-test")
     wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
-    Select(el(driver, "speed")).select_by_value("max")
+    Select(el(driver, "speed")).select_by_value(speed)
     el(driver, "run").click()
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0", message="live states")
+
+
+def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
+    seed_running(driver, base_url, "max")
     assert el(driver, "cell-0-0-1").get_attribute("data-on") == "0"  # X01: off
     assert el(driver, "cell-0-0-9").get_attribute("data-on") == "0"  # Y00: off
     assert el(driver, "cell-0-0-4").get_attribute("data-on") is None, "a wire shows no device"
@@ -770,12 +775,7 @@ def test_a_one_scan_pulse_is_marked_in_the_frame_after_it(driver, base_url):
 
 
 def test_inputs_driven_from_the_ladder_and_the_stepped_element(driver, base_url):
-    open_fresh(driver, base_url)
-    Select(el(driver, "example")).select_by_value("seed-test")
-    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
-    Select(el(driver, "speed")).select_by_value("max")
-    el(driver, "run").click()
-    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0")
+    seed_running(driver, base_url, "max")
     # A click on the X00 contact drives X00 (held until released).
     el(driver, "cell-0-0-0").click()
     wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="Y00 latched")

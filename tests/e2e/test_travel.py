@@ -5,22 +5,17 @@ import statistics
 
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
-from selenium.webdriver.support.ui import Select
 
-from test_app import ROOT, el, open_fresh, severe_console_messages, wait
+from test_app import ROOT, el, severe_console_messages, wait
 from test_ladder import CAPTURE, downloads
+from test_ladder import seed_running as running_at
 
 FIGURES = ROOT / "tests" / "e2e" / "artifacts" / "figures.json"
 
 
 def seed_running(driver, base_url):
     """The seed example drawn, written to the board and running at x100."""
-    open_fresh(driver, base_url)
-    Select(el(driver, "example")).select_by_value("seed-test")
-    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
-    Select(el(driver, "speed")).select_by_value("100")
-    el(driver, "run").click()
-    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0", message="running")
+    running_at(driver, base_url, "100")
 
 
 def count(driver):

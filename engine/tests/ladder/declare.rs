@@ -10,6 +10,10 @@ use crate::common::{hashigo, text, Temp};
 
 const NAMED: &str = include_str!("fixtures/openplc-named.xml");
 
+/// The workplace's real projects from other tools (read when present,
+/// never committed).
+const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/plcopen");
+
 #[test]
 fn located_variables_map_by_rule_and_the_rest_need_a_map() {
     let errors = import_for(NAMED, Some(MachineId::Io86a)).expect_err("memo has no device");
@@ -150,11 +154,8 @@ fn the_command_line_takes_a_map_and_warns_of_what_it_does_not_use() {
 /// committed here): the seal-in lab imports on IO86A with a map.
 #[test]
 fn a_real_openplc_lab_imports_with_a_map() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/fixtures/plcopen/lab1-seal-in.xml"
-    );
-    let Ok(xml) = std::fs::read_to_string(path) else {
+    let path = format!("{REAL}/lab1-seal-in.xml");
+    let Ok(xml) = std::fs::read_to_string(&path) else {
         eprintln!("skipped: {path} is not here");
         return;
     };
@@ -319,9 +320,8 @@ fn a_time_from_a_constant_initialised_variable_and_a_proposed_map() {
 #[test]
 fn the_real_projects_that_compile_with_a_proposed_map() {
     use engine::ladder::plcopen::{declare, dom};
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/plcopen");
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        eprintln!("skipped: {dir} is not here");
+    let Ok(entries) = std::fs::read_dir(REAL) else {
+        eprintln!("skipped: {REAL} is not here");
         return;
     };
     let mut files: Vec<_> = entries
@@ -340,12 +340,7 @@ fn the_real_projects_that_compile_with_a_proposed_map() {
             let Ok(root) = dom::parse(&xml) else {
                 continue;
             };
-            let entries = declare::propose(&root, machine, None)
-                .into_iter()
-                .enumerate()
-                .map(|(i, (n, d))| (n, d, i + 1))
-                .collect();
-            let map = VarMap { entries };
+            let map = VarMap::from_pairs(declare::propose(&root, machine, None));
             let Ok(imported) = import_mapped(&xml, Some(machine), Some(&map)) else {
                 continue;
             };

@@ -29,19 +29,49 @@ fn project(body: &str) -> String {
     )
 }
 
-/// A two-input block of `ty` fed by contacts a and b, its output to q.
-fn gate(ty: &str, instance: &str, pins: [&str; 2], out: &str) -> String {
-    project(&format!(
-        r#"      <block localId="4" typeName="{ty}" instanceName="{instance}"><position x="30" y="10"/>
-        <inputVariables>
-          <variable formalParameter="{}"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
-          <variable formalParameter="{}"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+/// A block of `ty` at row `y`, each input pin fed from an element
+/// (`(pin, localId)`), its output pin `out`.
+fn block(id: u32, ty: &str, instance: &str, y: u32, inputs: &[(&str, u32)], out: &str) -> String {
+    let pins: String = inputs
+        .iter()
+        .map(|(pin, from)| {
+            format!(
+                r#"
+          <variable formalParameter="{pin}"><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn></variable>"#
+            )
+        })
+        .collect();
+    format!(
+        r#"
+      <block localId="{id}" typeName="{ty}" instanceName="{instance}"><position x="30" y="{y}"/>
+        <inputVariables>{pins}
         </inputVariables>
         <outputVariables><variable formalParameter="{out}"><connectionPointOut/></variable></outputVariables>
-      </block>
-      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="{out}"/></connectionPointIn><variable>q</variable></coil>"#,
-        pins[0], pins[1]
-    ))
+      </block>"#
+    )
+}
+
+/// A coil of `variable` at row `y`, fed from element `from` (its pin
+/// `pin`, empty for a contact or rail).
+fn coil(id: u32, y: u32, from: u32, pin: &str, variable: &str) -> String {
+    let pin = if pin.is_empty() {
+        String::new()
+    } else {
+        format!(r#" formalParameter="{pin}""#)
+    };
+    format!(
+        r#"
+      <coil localId="{id}"><position x="60" y="{y}"/><connectionPointIn><connection refLocalId="{from}"{pin}/></connectionPointIn><variable>{variable}</variable></coil>"#
+    )
+}
+
+/// A two-input block of `ty` fed by contacts a and b, its output to q.
+fn gate_body(ty: &str, instance: &str, pins: [&str; 2], out: &str) -> String {
+    block(4, ty, instance, 10, &[(pins[0], 2), (pins[1], 3)], out) + &coil(5, 10, 4, out, "q")
+}
+
+fn gate(ty: &str, instance: &str, pins: [&str; 2], out: &str) -> String {
+    project(&gate_body(ty, instance, pins, out))
 }
 
 /// Y00 after each (X00, X01) in turn, a scan or two each.
@@ -113,17 +143,8 @@ fn what_does_not_fit_is_refused_with_the_reason() {
         "{errors:?}"
     );
     // An OR whose input also feeds a coil would feed power back: refused.
-    let shared = project(
-        r#"      <block localId="4" typeName="OR"><position x="30" y="10"/>
-        <inputVariables>
-          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
-          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
-        </inputVariables>
-        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
-      </block>
-      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><variable>q</variable></coil>
-      <coil localId="6"><position x="60" y="30"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn><variable>Y01</variable></coil>"#,
-    );
+    let shared =
+        project(&(gate_body("OR", "", ["IN1", "IN2"], "OUT") + &coil(6, 30, 3, "", "Y01")));
     let errors = import_mapped(&shared, Some(MachineId::Io86a), None).expect_err("shared input");
     assert!(
         errors[0]
@@ -138,19 +159,12 @@ fn what_does_not_fit_is_refused_with_the_reason() {
 fn a_counter_in_line_and_a_coil_on_the_rail_run_on_io86a() {
     // a counts CTU0 (PV 2 from a variable declared with it), its Q lights
     // q; Y01 hangs on the rail itself (always on).
-    let xml = project(
-        r#"      <block localId="4" typeName="CTU" instanceName="CTU0"><position x="30" y="10"/>
-        <inputVariables>
-          <variable formalParameter="CU"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
-          <variable formalParameter="R"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
-          <variable formalParameter="PV"><connectionPointIn><connection refLocalId="7"/></connectionPointIn></variable>
-        </inputVariables>
-        <outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables>
-      </block>
-      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>limit</expression></inVariable>
-      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="Q"/></connectionPointIn><variable>q</variable></coil>
-      <coil localId="6"><position x="60" y="50"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>Y01</variable></coil>"#,
-    )
+    let body = block(4, "CTU", "CTU0", 10, &[("CU", 2), ("R", 3), ("PV", 7)], "Q")
+        + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>limit</expression></inVariable>"#
+        + &coil(5, 10, 4, "Q", "q")
+        + &coil(6, 50, 1, "", "Y01");
+    let xml = project(&body)
     .replace(
         "</localVars>",
         r#"<variable name="limit"><type><INT/></type><initialValue><simpleValue value="2"/></initialValue></variable></localVars>"#,
@@ -171,25 +185,12 @@ fn a_counter_in_line_and_a_coil_on_the_rail_run_on_io86a() {
 fn an_and_input_moved_after_another_counts_as_taking_its_power() {
     // AND(a, b) to q, then OR(a, c) to Y01: a's point now also feeds b's
     // contact, so joining it into the OR would feed power back: refused.
-    let xml = project(
-        r#"      <block localId="4" typeName="AND"><position x="30" y="10"/>
-        <inputVariables>
-          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
-          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
-        </inputVariables>
-        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
-      </block>
-      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><variable>q</variable></coil>
-      <contact localId="8"><position x="10" y="60"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X02</variable></contact>
-      <block localId="6" typeName="OR"><position x="30" y="60"/>
-        <inputVariables>
-          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
-          <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="8"/></connectionPointIn></variable>
-        </inputVariables>
-        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables>
-      </block>
-      <coil localId="7"><position x="60" y="60"/><connectionPointIn><connection refLocalId="6" formalParameter="OUT"/></connectionPointIn><variable>Y01</variable></coil>"#,
-    );
+    let body = gate_body("AND", "", ["IN1", "IN2"], "OUT")
+        + r#"
+      <contact localId="8"><position x="10" y="60"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X02</variable></contact>"#
+        + &block(6, "OR", "", 60, &[("IN1", 2), ("IN2", 8)], "OUT")
+        + &coil(7, 60, 6, "OUT", "Y01");
+    let xml = project(&body);
     let errors =
         import_mapped(&xml, Some(MachineId::Io86a), None).expect_err("shared after the AND");
     assert!(
@@ -203,18 +204,12 @@ fn an_and_input_moved_after_another_counts_as_taking_its_power() {
 
 /// A timer block from `a` to `q`, with PT 300 ms.
 fn timer_block(ty: &str) -> String {
-    project(&format!(
-        r#"      <block localId="4" typeName="{ty}" instanceName="{ty}0"><position x="30" y="10"/>
-        <inputVariables>
-          <variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
-          <variable formalParameter="PT"><connectionPointIn><connection refLocalId="7"/></connectionPointIn></variable>
-        </inputVariables>
-        <outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables>
-      </block>
-      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>T#300ms</expression></inVariable>
-      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="Q"/></connectionPointIn><variable>q</variable></coil>
-      <coil localId="9"><position x="60" y="30"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn><variable>Y01</variable></coil>"#
-    ))
+    let body = block(4, ty, &format!("{ty}0"), 10, &[("IN", 2), ("PT", 7)], "Q")
+        + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>T#300ms</expression></inVariable>"#
+        + &coil(5, 10, 4, "Q", "q")
+        + &coil(9, 30, 3, "", "Y01");
+    project(&body)
 }
 
 #[test]
