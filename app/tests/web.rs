@@ -413,3 +413,47 @@ async fn an_edit_redraws_only_the_cells_it_changed() {
         .unwrap();
     assert_eq!(selected.length(), 1);
 }
+
+/// The timing chart's rows, top to bottom, by test id.
+fn chart_rows(container: &Element) -> Vec<String> {
+    let list = find(container, "timing-chart")
+        .query_selector_all("[data-testid^=chart-row-]")
+        .unwrap();
+    (0..list.length())
+        .filter_map(|i| list.item(i))
+        .map(|n| {
+            n.unchecked_into::<Element>()
+                .get_attribute("data-testid")
+                .unwrap()
+        })
+        .collect()
+}
+
+#[wasm_bindgen_test]
+async fn the_timing_chart_follows_an_edit_without_waiting_for_a_frame() {
+    use engine::ladder::edit::{Cursor, Edit};
+    use engine::ladder::Element as Part;
+    // No frame loop here: only the edit itself can redraw the chart.
+    let (_ctx, workspaces, c) = mount_workspaces();
+    let ladder = workspaces.ladders.minasec;
+    settle().await;
+    assert!(chart_rows(&c).is_empty(), "an empty ladder has no devices");
+    assert!(ladder.apply(Edit::Place {
+        at: Cursor::new(0, 0, 0),
+        element: Part::no("X00"),
+    }));
+    assert!(ladder.apply(Edit::Place {
+        at: Cursor::new(0, 0, 1),
+        element: Part::coil("Y00"),
+    }));
+    settle().await;
+    assert_eq!(
+        chart_rows(&c),
+        ["chart-row-Y00", "chart-row-X00"],
+        "outputs first"
+    );
+    // Undone, the coil's row goes with it.
+    ladder.undo();
+    settle().await;
+    assert_eq!(chart_rows(&c), ["chart-row-X00"]);
+}

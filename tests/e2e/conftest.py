@@ -65,3 +65,23 @@ def driver(tmp_path):
 def artifacts():
     ARTIFACTS.mkdir(exist_ok=True)
     return ARTIFACTS
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    """On a failure: the page's screenshot goes to artifacts/ and its
+    console into the report, so a failure seen once in CI can be read."""
+    outcome = yield
+    report = outcome.get_result()
+    drv = item.funcargs.get("driver") if report.when == "call" and report.failed else None
+    if drv is None:
+        return
+    try:
+        ARTIFACTS.mkdir(exist_ok=True)
+        shot = ARTIFACTS / f"failed-{item.name}.png"
+        drv.save_screenshot(str(shot))
+        console = "\n".join(f"{e['level']} {e['message']}" for e in drv.get_log("browser"))
+        report.sections.append(("browser console", console or "(empty)"))
+        report.sections.append(("screenshot", str(shot)))
+    except Exception as e:  # the browser may be gone; the failure stands
+        report.sections.append(("diagnostics", f"not taken: {e}"))

@@ -653,8 +653,9 @@ def test_cases_are_added_edited_and_saved_with_the_project(driver, base_url):
     place(driver, Keys.F5, "X00")
     place(driver, Keys.F7, "Y00")
     el(driver, "tests-open").click()
-    el(driver, "add-test").click()
-    case = el(driver, "test-case-0")
+    # The pane and its first case mount on the next frame (a race under load).
+    wait(driver, lambda: el(driver, "add-test")).click()
+    case = wait(driver, lambda: el(driver, "test-case-0"))
     case.find_element(By.CSS_SELECTOR, '[data-testid="test-events"]').send_keys("0.1s,X00,1\n")
     case.find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]').send_keys("Y00 = 1 at 0.2s\nY00 = 0 at 0.05s")
     el(driver, "run-tests").click()
@@ -667,6 +668,23 @@ def test_cases_are_added_edited_and_saved_with_the_project(driver, base_url):
     assert "Y00 was 1 at 300ms" in el(driver, "test-case-0").text
     raw = driver.execute_script("return localStorage.getItem('hashigo.ladder.minasec-u.v1')")
     assert json.loads(raw)["tests"][0]["expect"][-1] == "Y00 = 0 at 0.3s"
+
+
+def test_the_page_does_not_move_after_an_edit_has_shown(driver, base_url):
+    """Whatever follows an edit (listing, problems, the chart's rows) is
+    drawn with it: nothing below the ladder moves a few frames later, when
+    the user may already be clicking there (a late chart redraw once moved
+    the tests pane under a click)."""
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "tests-open").click()
+    button = wait(driver, lambda: el(driver, "add-test"))
+    top = "return arguments[0].getBoundingClientRect().top + window.scrollY"
+    before = driver.execute_script(top, button)
+    time.sleep(0.6)  # more than two of the chart's 250 ms redraws
+    assert driver.execute_script(top, button) == before
 
 
 def test_a_timeline_is_recorded_from_what_the_user_clicks(driver, base_url):

@@ -156,9 +156,12 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
     let error = RwSignal::new(None::<String>);
     let data = RwSignal::new(ChartData::default());
     // Redrawn when the recording moved on (at most every 250 ms while
-    // running), the view moved, or the devices changed.
+    // running), the view moved, or the devices changed. An edit redraws at
+    // once: the rows follow the ladder in the same frame, so the page
+    // below does not jump up to 250 ms after the edit.
     Effect::new(move |_| {
         ctx.travel.chart_tick.track();
+        ctx.revision.track();
         let w = window.get();
         let names = devices.get().unwrap_or_else(|| default_devices(ctx));
         let Some(ws) = workspaces else {

@@ -146,6 +146,10 @@ pub struct LadderCtx {
     pub out_col: RwSignal<usize>,
     pub can_undo: RwSignal<bool>,
     pub can_redo: RwSignal<bool>,
+    /// Counts the ladder's refreshes (an edit, undo, redo, a replaced
+    /// ladder): views that follow the ladder's content without a signal of
+    /// their own (the chart's devices) track it to follow at once.
+    pub revision: RwSignal<u64>,
     /// The compiled program, when the ladder compiles.
     pub listing: RwSignal<Option<Listing>>,
     /// Every problem, rung by rung.
@@ -250,6 +254,7 @@ impl LadderCtx {
             out_col: RwSignal::new(COLUMNS - 1),
             can_undo: RwSignal::new(false),
             can_redo: RwSignal::new(false),
+            revision: RwSignal::new(0),
             listing: RwSignal::new(None),
             problems: RwSignal::new(Vec::new()),
             entry: RwSignal::new(None),
@@ -837,6 +842,7 @@ impl LadderCtx {
         if self.listing.with_untracked(|l| *l != listing) {
             self.listing.set(listing);
         }
+        self.revision.update(|n| *n += 1);
     }
 
     /// The project as it stands: the ladder, its cases, the exercise flag.
