@@ -16,6 +16,11 @@ pub const MAX_INPUT_BYTES: usize = 16 << 20;
 /// with thousands of blocks is refused instead of taking minutes.
 pub const MAX_GATE_WORK: usize = 10_000_000;
 
+/// How many PLCopen connectors one wire may pass through, each
+/// continuation feeding the next connector (followed recursively): real
+/// files pass one or two.
+pub const MAX_CONNECTOR_CHAIN: usize = 64;
+
 /// How deeply PLCopen XML elements may nest. Real files nest about 12 deep.
 pub const MAX_XML_DEPTH: usize = 256;
 

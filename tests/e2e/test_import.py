@@ -15,12 +15,18 @@ def devices(driver):
     return {c.get_attribute("data-device") for c in cells}
 
 
-def test_a_project_with_named_variables_imports_through_the_mapping_table(driver, base_url):
+def import_dialog(driver, base_url, path, why):
+    """A fresh IO86A page with `path` opened: its import dialog (`why`
+    it is shown)."""
     open_fresh(driver, base_url)
     Select(el(driver, "machine")).select_by_value("io86a")
     wait(driver, lambda: el(driver, "palette"))
-    el(driver, "open-file").send_keys(str(NAMED))
-    wait(driver, lambda: el(driver, "import-dialog"), message="the dialog, since memo has no device")
+    el(driver, "open-file").send_keys(str(path))
+    return wait(driver, lambda: el(driver, "import-dialog"), message=why)
+
+
+def test_a_project_with_named_variables_imports_through_the_mapping_table(driver, base_url):
+    import_dialog(driver, base_url, NAMED, "the dialog, since memo has no device")
     memo = el(driver, "import-map-memo")
     assert memo.get_attribute("value") == "Y01", "a free output proposed for what a coil writes"
     # A device the machine lacks: refused at the file's line, nothing changed.
@@ -42,3 +48,19 @@ def test_a_project_with_named_variables_imports_through_the_mapping_table(driver
     # One undo away from the ladder before.
     el(driver, "undo").click()
     wait(driver, lambda: devices(driver) == before)
+
+
+FBD = ROOT / "engine/tests/ladder/fixtures/openplc-fbd.xml"
+
+
+def test_an_fbd_program_imports_as_the_ladder_its_blocks_say(driver, base_url):
+    import_dialog(driver, base_url, FBD, "the dialog, since lamp has no device")
+    assert el(driver, "import-map-lamp").get_attribute("value") == "Y00"
+    el(driver, "import-apply").click()
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]'))
+    # lamp = start AND NOT stop (the negated box is X01's NC contact); alarm = stop.
+    assert {"X00", "X01", "Y00", "Y01"} <= devices(driver)
+    nc = driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-device="X01"][data-kind="nc"]')
+    assert len(nc) == 1, "X01 read negated once, plainly once"
+    listing = el(driver, "il-listing").text
+    assert "ANI X01" in listing and "OUT Y01" in listing, listing

@@ -7,7 +7,7 @@
 //! replaces the ladder (one undo away) only when the file imports whole.
 
 use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
-use engine::ladder::plcopen::{declare, dom, import_pou, VarMap};
+use engine::ladder::plcopen::{declare, dom, drawn_body, import_pou, VarMap};
 use leptos::prelude::*;
 
 use super::LadderCtx;
@@ -18,7 +18,7 @@ pub struct Pending {
     /// The file's name and text.
     pub file: String,
     pub text: String,
-    /// The POUs with an LD body, and the one chosen (`None`: what the
+    /// The POUs with an LD or FBD body, and the one chosen (`None`: what the
     /// tasks run).
     pub pous: Vec<String>,
     pub pou: Option<String>,
@@ -88,7 +88,7 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
             root.descendants("pou", &mut found);
             let pous = found
                 .iter()
-                .filter(|p| p.child("body").and_then(|b| b.child("LD")).is_some())
+                .filter(|p| drawn_body(p).is_some())
                 .filter_map(|p| p.attr("name").map(str::to_string))
                 .collect();
             (pous, declare::propose(&root, ctx.machine, None))

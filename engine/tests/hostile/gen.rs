@@ -142,3 +142,25 @@ pub fn plcopen_ors(n: usize) -> String {
     }
     s + TAIL
 }
+
+/// `n` rungs, each X00 into an in-line TON named T00 (PT 1 s) whose Q
+/// lights Y00: on IO86A every one is split into `OUT T00` and a contact
+/// of T00, all of them ordered writers before readers.
+pub fn plcopen_timers(n: usize) -> String {
+    let mut s = String::from(HEAD);
+    for i in 0..n {
+        let (c, t, p, k) = (10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i);
+        let y = i * 10;
+        let _ = writeln!(
+            s,
+            r#"<contact localId="{c}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>
+<inVariable localId="{p}"><position x="20" y="{y}"/><connectionPointOut/><expression>T#1s</expression></inVariable>
+<block localId="{t}" typeName="TON" instanceName="T00"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN">{}</variable><variable formalParameter="PT">{}</variable></inputVariables><outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables></block>
+<coil localId="{k}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{t}" formalParameter="Q"/></connectionPointIn><variable>Y00</variable></coil>"#,
+            conn(&[1]),
+            conn(&[c]),
+            conn(&[p])
+        );
+    }
+    s + TAIL
+}

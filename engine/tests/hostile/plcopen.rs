@@ -153,3 +153,67 @@ fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
     // Not a speed test: the refusal comes long before minutes of work.
     assert!(started.elapsed().as_secs() < 120);
 }
+
+#[test]
+fn thousands_of_split_timers_are_ordered_without_quadratic_work() {
+    // 3 000 in-line TONs on one timer: 3 000 writers and 3 000 readers of
+    // T00 to order (each reader after every writer).
+    let xml = crate::gen::plcopen_timers(3_000);
+    let started = std::time::Instant::now();
+    let ladder = engine::ladder::plcopen::import_for(&xml, Some(engine::MachineId::Io86a))
+        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
+    assert_eq!(
+        ladder.rungs.len(),
+        6_000,
+        "a coil rung and a contact rung each"
+    );
+    let first_reader = ladder
+        .rungs
+        .iter()
+        .position(|r| r.elements().any(|(_, e)| e.read_device() == Some("T00")));
+    assert_eq!(first_reader, Some(3_000), "every OUT T00 first");
+    // Not a speed test: quadratic ordering would take minutes here.
+    assert!(started.elapsed().as_secs() < 60);
+}
+
+#[test]
+fn a_long_chain_of_connectors_is_refused_not_followed_to_the_end() {
+    // X00 feeds connector c0; continuation k(i) carries c(i) into
+    // connector c(i+1); the last one feeds a coil. Followed recursively
+    // without a limit, a long enough chain overflows the page's stack.
+    let chain = |n: usize| {
+        let mut e = String::from(
+            r#"<contact localId="x"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X00</variable></contact>
+<connector name="c0" localId="c0"><connectionPointIn><connection refLocalId="x"/></connectionPointIn></connector>"#,
+        );
+        for i in 0..n {
+            e.push_str(&format!(
+                r#"
+<continuation name="c{i}" localId="k{i}"><connectionPointOut/></continuation>
+<connector name="c{}" localId="c{}"><connectionPointIn><connection refLocalId="k{i}"/></connectionPointIn></connector>"#,
+                i + 1,
+                i + 1
+            ));
+        }
+        e.push_str(&format!(
+            r#"
+<continuation name="c{n}" localId="last"><connectionPointOut/></continuation>
+<coil localId="y"><connectionPointIn><connection refLocalId="last"/></connectionPointIn><variable>Y00</variable></coil>"#
+        ));
+        body(&e)
+    };
+    let errors = import(&chain(5_000)).expect_err("too long");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains("passes through more than 64 connectors in a row"),
+        "{errors:?}"
+    );
+    // A few in a row carry the rail's power to the coil.
+    let ladder = import(&chain(5)).expect("imports");
+    let text =
+        engine::ladder::compile::compile(&ladder, engine::MachineId::Io86a, Default::default())
+            .expect("compiles");
+    assert!(text.contains("LD X00\nOUT Y00\n"), "{text}");
+}

@@ -354,12 +354,26 @@ fn the_real_projects_that_compile_with_a_proposed_map() {
     }
     assert_eq!(
         compiled["io86a"],
-        ["dnp3-test", "lab1-seal-in", "lab4-ton-tof", "pr009g"],
+        [
+            "assembly-area",
+            "ctu-ton-prueba",
+            "dancing-lights",
+            "dnp3-test",
+            "lab1-seal-in",
+            "lab4-ton-tof",
+            "lab5-ctu-ctd",
+            "mixer-lld",
+            "openplc-ex-7segments",
+            "openplc-ex-blink",
+            "pr009g",
+            "utn-circuit",
+            "water-pump"
+        ],
         "{compiled:?}"
     );
     assert_eq!(
         compiled["minasec-u"],
-        ["lab1-seal-in", "pr009g"],
+        ["lab1-seal-in", "pr009g", "water-pump"],
         "{compiled:?}"
     );
     assert_eq!(compiled["arduino-plc"], ["lab1-seal-in"], "{compiled:?}");
@@ -394,13 +408,58 @@ fn an_enable_pin_is_honoured_or_refused_and_initial_values_are_said() {
     );
     let map = VarMap::parse("memo,M05\n").expect("a map");
     let imported = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
-    let said: Vec<String> = imported
-        .warnings
-        .iter()
-        .map(|w| format!("{}: {}", w.line, w.error))
-        .collect();
+    let said = crate::plcopen::said_warnings(&imported);
     assert_eq!(
         said,
         ["30: latch starts at TRUE in the file, but io86a starts M02 off at power-up"],
+    );
+}
+
+#[test]
+fn map_proposes_for_one_pou_with_the_globals_it_names() {
+    // Two programs: first lights lamp; second sounds horn while the
+    // global alarm is on.
+    let pou = |name: &str, var: &str, contact: &str, coil: &str| {
+        format!(
+            r#"<pou name="{name}" pouType="program"><interface><localVars><variable name="{var}"><type><BOOL/></type></variable></localVars></interface><body><LD>
+<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut/></leftPowerRail>
+<contact localId="2"><position x="10" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>{contact}</variable></contact>
+<coil localId="3"><position x="30" y="10"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>{coil}</variable></coil>
+</LD></body></pou>"#
+        )
+    };
+    let xml = format!(
+        r#"<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>{}{}</pous></types>
+<instances><configurations><configuration name="c"><globalVars><variable name="alarm"><type><BOOL/></type></variable></globalVars></configuration></configurations></instances></project>"#,
+        pou("first", "lamp", "X00", "lamp"),
+        pou("second", "horn", "alarm", "horn")
+    );
+    let tmp = Temp::new("declare-map-pou");
+    let path = tmp.file("two.xml", &xml);
+    let proposal = |extra: &[&str]| {
+        let mut args = vec!["map", "--machine", "io86a", "--program", &path];
+        args.extend_from_slice(extra);
+        let out = hashigo(&args, "");
+        (out.status.code(), text(&out.stdout), text(&out.stderr))
+    };
+    let entries = |stdout: &str| -> Vec<String> {
+        stdout
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(str::to_string)
+            .collect()
+    };
+    let (code, all, _) = proposal(&[]);
+    assert_eq!(code, Some(0));
+    // X00, named in first's body, is not proposed again.
+    assert_eq!(entries(&all), ["lamp,Y00", "horn,Y01", "alarm,X01"]);
+    let (code, second, err) = proposal(&["--pou", "SECOND"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(entries(&second), ["horn,Y00", "alarm,X00"]);
+    let (code, _, err) = proposal(&["--pou", "third"]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("no POU is named third: the file has first, second"),
+        "{err}"
     );
 }

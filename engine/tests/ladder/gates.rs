@@ -76,20 +76,36 @@ fn gate(ty: &str, instance: &str, pins: [&str; 2], out: &str) -> String {
 
 /// Y00 after each (X00, X01) in turn, a scan or two each.
 fn run(xml: &str, map: &str, inputs: &[(bool, bool)]) -> Vec<bool> {
-    let map = VarMap::parse(map).expect("a map");
+    run_both(xml, map, inputs)
+        .into_iter()
+        .map(|(y0, _)| y0)
+        .collect()
+}
+
+/// `xml` imported for IO86A with `map`, compiled and loaded, its input
+/// filter off (an input counts from the next scan); and the program text.
+pub(crate) fn io86a_loaded(xml: &str, map: &VarMap) -> Result<(Io86aPlc, String), String> {
     let imported =
-        import_mapped(xml, Some(MachineId::Io86a), Some(&map)).unwrap_or_else(|e| panic!("{e:?}"));
+        import_mapped(xml, Some(MachineId::Io86a), Some(map)).map_err(|e| format!("{e:?}"))?;
     let text = compile(&imported.ladder, MachineId::Io86a, Default::default())
-        .unwrap_or_else(|e| panic!("{e:?}"));
+        .map_err(|e| format!("{e:?}"))?;
     let mut m = Io86aPlc::new();
-    m.load_text(&text).expect("loads");
+    m.load_text(&text).map_err(|e| format!("{e:?}"))?;
     m.apply(Command::Setting {
         name: "filter".into(),
-        value: "0ms".into(),
+        value: "0".into(),
     })
-    .ok();
+    .map_err(|e| format!("{e:?}"))?;
+    Ok((m, text))
+}
+
+/// (Y00, Y01) after each (X00, X01) in turn, 50 ms each.
+fn run_both(xml: &str, map: &str, inputs: &[(bool, bool)]) -> Vec<(bool, bool)> {
+    let map = VarMap::parse(map).expect("a map");
+    let (mut m, _) = io86a_loaded(xml, &map).unwrap_or_else(|e| panic!("{e}"));
     let (x0, x1, y0) = (m.device("X00"), m.device("X01"), m.device("Y00"));
     let (x0, x1, y0) = (x0.expect("X00"), x1.expect("X01"), y0.expect("Y00"));
+    let y1 = m.device("Y01").expect("Y01");
     let mut out = Vec::new();
     for &(a, b) in inputs {
         m.apply(Command::SetInput(x0, InputValue::Int(i64::from(a))))
@@ -98,7 +114,7 @@ fn run(xml: &str, map: &str, inputs: &[(bool, bool)]) -> Vec<bool> {
             .expect("input");
         let t = m.now().saturating_add(SimTime::from_millis(50));
         m.run_until(t);
-        out.push(m.read(y0) != 0);
+        out.push((m.read(y0) != 0, m.read(y1) != 0));
     }
     out
 }
@@ -142,64 +158,78 @@ fn what_does_not_fit_is_refused_with_the_reason() {
             .contains("map it (--map SR0,M10)"),
         "{errors:?}"
     );
-    // An OR whose input also feeds a coil would feed power back: refused.
+}
+
+#[test]
+fn an_input_that_also_feeds_more_is_carried_by_a_spare_relay() {
+    // OR(a, b) to q while b also lights Y01: joining b's point into the
+    // OR would feed a's power to Y01, so a relay holds b's.
     let shared =
         project(&(gate_body("OR", "", ["IN1", "IN2"], "OUT") + &coil(6, 30, 3, "", "Y01")));
-    let errors = import_mapped(&shared, Some(MachineId::Io86a), None).expect_err("shared input");
+    let seen = run_both(&shared, "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, false), (true, false), (true, true), (true, true)]
+    );
+    let imported = import_mapped(&shared, Some(MachineId::Io86a), None).expect("imports");
+    assert_eq!(
+        imported
+            .ladder
+            .device_comments
+            .get("M55")
+            .map(String::as_str),
+        Some("OR block's input"),
+        "the highest free relay, named"
+    );
     assert!(
-        errors[0]
-            .error
-            .to_string()
-            .contains("OR block: an input also feeds another element"),
-        "{errors:?}"
+        imported
+            .warnings
+            .iter()
+            .any(|w| w.error.contains("M55 holds OR block's input")),
+        "{:?}",
+        imported.warnings
     );
-}
-
-#[test]
-fn a_counter_in_line_and_a_coil_on_the_rail_run_on_io86a() {
-    // a counts CTU0 (PV 2 from a variable declared with it), its Q lights
-    // q; Y01 hangs on the rail itself (always on).
-    let body = block(4, "CTU", "CTU0", 10, &[("CU", 2), ("R", 3), ("PV", 7)], "Q")
-        + r#"
-      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>limit</expression></inVariable>"#
-        + &coil(5, 10, 4, "Q", "q")
-        + &coil(6, 50, 1, "", "Y01");
-    let xml = project(&body)
-    .replace(
-        "</localVars>",
-        r#"<variable name="limit"><type><INT/></type><initialValue><simpleValue value="2"/></initialValue></variable></localVars>"#,
-    );
-    // a pulses twice: the count reaches 2 and q lights; b resets it.
-    let steps = [
-        (true, false),
-        (false, false),
-        (true, false),
-        (false, false),
-        (false, true),
-    ];
-    let q = run(&xml, "CTU0,C00\n", &steps);
-    assert_eq!(q, [false, false, true, true, false]);
-}
-
-#[test]
-fn an_and_input_moved_after_another_counts_as_taking_its_power() {
-    // AND(a, b) to q, then OR(a, c) to Y01: a's point now also feeds b's
-    // contact, so joining it into the OR would feed power back: refused.
+    // AND(a, b) to q, then OR(a, X02) to Y01: a's point feeds b's contact
+    // after the AND, so the OR takes a through a relay too.
     let body = gate_body("AND", "", ["IN1", "IN2"], "OUT")
         + r#"
       <contact localId="8"><position x="10" y="60"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X02</variable></contact>"#
         + &block(6, "OR", "", 60, &[("IN1", 2), ("IN2", 8)], "OUT")
         + &coil(7, 60, 6, "OUT", "Y01");
-    let xml = project(&body);
-    let errors =
-        import_mapped(&xml, Some(MachineId::Io86a), None).expect_err("shared after the AND");
-    assert!(
-        errors[0]
-            .error
-            .to_string()
-            .contains("OR block: an input also feeds"),
-        "{errors:?}"
+    let seen = run_both(&project(&body), "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, false), (false, true), (false, false), (true, true)]
     );
+}
+
+#[test]
+fn a_not_box_io86a_lacks_in_line_is_a_relay_and_its_nc_contact() {
+    let body = block(4, "NOT", "", 10, &[("IN", 2)], "OUT") + &coil(5, 10, 4, "OUT", "q");
+    let seen = run(&project(&body), "", &TABLE);
+    assert_eq!(seen, [true, false, true, false]);
+}
+
+#[test]
+fn a_tof_whose_input_is_a_network_holds_it_in_a_relay() {
+    // IN is a then b in series (b's contact fed by a's).
+    let body = r#"
+      <contact localId="8"><position x="20" y="10"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>b</variable></contact>"#
+        .to_string()
+        + &block(4, "TOF", "TOF0", 10, &[("IN", 8), ("PT", 7)], "Q")
+        + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>T#300ms</expression></inVariable>"#
+        + &coil(5, 10, 4, "Q", "q");
+    let xml = project(&body).replace(
+        r#"<contact localId="3"><position x="10" y="30"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>b</variable></contact>"#,
+        "",
+    );
+    let mut steps = vec![(true, false), (true, true), (true, true)];
+    steps.extend([(true, false); 10]);
+    let q = run(&xml, "TOF0,T01+M20\n", &steps);
+    assert!(!q[0], "a alone is not IN: {q:?}");
+    assert!(q[1..8].iter().all(|&on| on), "on, then held: {q:?}");
+    assert!(q[10..].iter().all(|&on| !on), "off 300 ms after: {q:?}");
 }
 
 /// A timer block from `a` to `q`, with PT 300 ms.
@@ -236,4 +266,477 @@ fn tof_and_tp_on_io86a_use_its_on_delay_timer_and_a_relay() {
     )
     .expect_err("no relay");
     assert!(errors[0].error.to_string().contains("TOF"), "{errors:?}");
+}
+
+/// A counter `ty` with its count pin on a and its second pin (`LD` or
+/// `R`) on b, PV 2, its outputs `outs` to q and Y01.
+fn counter(ty: &str, count: &str, other: &str, outs: [&str; 2]) -> String {
+    let pins = [(count, 2), (other, 3), ("PV", 7)];
+    let body = block(4, ty, &format!("{ty}0"), 10, &pins, outs[0]).replace(
+        "</outputVariables>",
+        &format!(
+            r#"<variable formalParameter="{}"><connectionPointOut/></variable></outputVariables>"#,
+            outs[1]
+        ),
+    ) + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>2</expression></inVariable>"#
+        + &coil(5, 10, 4, outs[0], "q")
+        + &coil(6, 20, 4, outs[1], "Y01");
+    project(&body)
+}
+
+#[test]
+fn ctd_counts_down_from_its_load_on_io86a_s_up_counter() {
+    // CTD: Q (CV <= 0) is on from power-up until LD loads PV; two rises of
+    // CD bring CV to 0 again; LD again reloads. Y01 shows Q too.
+    let xml = counter("CTD", "CD", "LD", ["Q", "Q"]);
+    let steps = [
+        (false, false),
+        (false, true),
+        (false, false),
+        (true, false),
+        (false, false),
+        (true, false),
+        (false, false),
+        (false, true),
+    ];
+    let q = run(&xml, "CTD0,C01\n", &steps);
+    assert_eq!(q, [true, false, false, false, false, true, true, false]);
+}
+
+#[test]
+fn ctud_counting_up_gives_qu_and_qd_and_refuses_what_it_cannot_load() {
+    // CU on a, R on b, PV 2: QU (q) at two rises; QD (Y01) until the first.
+    let xml = counter("CTUD", "CU", "R", ["QU", "QD"]);
+    let steps = [
+        (false, false),
+        (true, false),
+        (false, false),
+        (true, false),
+        (true, true),
+        (true, false),
+    ];
+    let seen = run_both(&xml, "CTUD0,C02\n", &steps);
+    assert_eq!(
+        seen,
+        [
+            (false, true),
+            (false, false),
+            (false, false),
+            (true, false),
+            (false, true),
+            (false, true)
+        ],
+        "after R, a held on is no new rise"
+    );
+    // Its LD wired: IO86A's counters cannot be loaded.
+    let loaded = counter("CTUD", "CU", "LD", ["QU", "QD"]);
+    let map = VarMap::parse("CTUD0,C02\n").expect("map");
+    let errors = import_mapped(&loaded, Some(MachineId::Io86a), Some(&map)).expect_err("LD wired");
+    assert!(
+        errors[0].error.to_string().contains("its LD is wired"),
+        "{errors:?}"
+    );
+}
+
+#[test]
+fn comparisons_run_as_cmp_and_a_relay_each() {
+    // CTU0 (C00) counts a, b resets it; n is its count: q = n >= 2,
+    // Y01 = n < 1. Two CMPs share M60-M62: each result is copied first.
+    // Each result reaches its coil through an NC contact of X07 drawn at
+    // the top: the rung reading it sorts first, and must still see this
+    // scan's comparison.
+    let compare = |id: u32, ty: &str, k: &str, y: u32, to: &str| {
+        format!(
+            r#"
+      <contact localId="{}" negated="true"><position x="50" y="0"/><connectionPointIn><connection refLocalId="{id}" formalParameter="OUT"/></connectionPointIn><variable>X07</variable></contact>"#,
+            id + 4
+        ) + &format!(
+            r#"
+      <inVariable localId="{}"><position x="20" y="{y}"/><connectionPointOut/><expression>n</expression></inVariable>
+      <inVariable localId="{}"><position x="20" y="{y}"/><connectionPointOut/><expression>{k}</expression></inVariable>"#,
+            id + 1,
+            id + 2
+        ) + &block(id, ty, "", y, &[("IN1", id + 1), ("IN2", id + 2)], "OUT")
+            + &coil(id + 3, y, id + 4, "", to)
+    };
+    let body = block(4, "CTU", "CTU0", 10, &[("CU", 2), ("R", 3), ("PV", 7)], "Q")
+        + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>9</expression></inVariable>"#
+        + &compare(10, "GE", "2", 60, "q")
+        + &compare(20, "LT", "1", 80, "Y01");
+    let xml = project(&body).replace(
+        "</localVars>",
+        r#"<variable name="n"><type><INT/></type></variable></localVars>"#,
+    );
+    let steps = [
+        (false, false),
+        (true, false),
+        (false, false),
+        (true, false),
+        (false, false),
+        (false, true),
+    ];
+    let seen = run_both(&xml, "CTU0,C00\nn,C00\n", &steps);
+    assert_eq!(
+        seen,
+        [
+            (false, true),
+            (false, false),
+            (false, false),
+            (true, false),
+            (true, false),
+            (false, true)
+        ]
+    );
+    // A word with no device is refused, naming the map entry to add.
+    let errors = import_mapped(
+        &xml,
+        Some(MachineId::Io86a),
+        Some(&VarMap::parse("CTU0,C00\n").expect("map")),
+    )
+    .expect_err("n unmapped");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains(r#"IN1 "n": is no word: map it to a data register (--map n,D00)"#),
+        "{errors:?}"
+    );
+    // On a machine without CMP: refused with the reason.
+    let errors = import_mapped(
+        &xml,
+        Some(MachineId::MinasecU),
+        Some(&VarMap::parse("n,C0\n").expect("map")),
+    )
+    .expect_err("no CMP");
+    assert!(
+        errors
+            .iter()
+            .any(|e| e.error.to_string().contains("comparisons need IO86A's CMP")),
+        "{errors:?}"
+    );
+}
+
+#[test]
+fn an_fbd_program_runs_as_its_blocks_say() {
+    // FBD draws the same graph as LD without rails, contacts or coils:
+    // variables feed blocks, blocks feed variables. Y00 = a AND b,
+    // Y01 = NOT b (b feeds both: a spare relay holds it).
+    let boxes = |ty: &str, id: u32, y: u32, pins: &[(&str, u32)], to: &str| {
+        let pins: String = pins
+            .iter()
+            .map(|(pin, from)| {
+                format!(
+                    r#"<variable formalParameter="{pin}"><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn></variable>"#
+                )
+            })
+            .collect();
+        format!(
+            r#"
+      <block localId="{id}" typeName="{ty}"><position x="50" y="{y}"/><inputVariables>{pins}</inputVariables>
+        <outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+      <outVariable localId="{}"><position x="100" y="{y}"/><connectionPointIn><connection refLocalId="{id}" formalParameter="OUT"/></connectionPointIn><expression>{to}</expression></outVariable>"#,
+            id + 1
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <types><pous><pou name="main" pouType="program">
+    <interface><localVars>
+      <variable name="a" address="%IX0.0"><type><BOOL/></type></variable>
+      <variable name="b" address="%IX0.1"><type><BOOL/></type></variable>
+      <variable name="q" address="%QX0.0"><type><BOOL/></type></variable>
+    </localVars></interface>
+    <body><FBD>
+      <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>a</expression></inVariable>
+      <inVariable localId="2"><position x="10" y="40"/><connectionPointOut/><expression>b</expression></inVariable>{}{}
+    </FBD></body>
+  </pou></pous></types>
+</project>"#,
+        boxes("AND", 3, 10, &[("IN1", 1), ("IN2", 2)], "q"),
+        boxes("NOT", 5, 60, &[("IN", 2)], "Y01")
+    );
+    let seen = run_both(&xml, "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, true), (false, true), (false, false), (true, false)]
+    );
+    // A negated variable box reads its NC contact: a AND NOT b, NOT NOT b.
+    let b_box = r#"<inVariable localId="2">"#;
+    assert!(xml.contains(b_box));
+    let negated = xml.replace(b_box, r#"<inVariable localId="2" negated="true">"#);
+    let seen = run_both(&negated, "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, false), (true, false), (false, true), (false, true)]
+    );
+    // A negation circle or edge mark on a block's pin is refused by name.
+    for (mark, why) in [
+        (
+            r#" negated="true""#,
+            "its pin IN2 is negated: put a NOT block on it instead",
+        ),
+        (
+            r#" edge="rising""#,
+            "its pin IN2 is marked rising: put an R_TRIG or F_TRIG block on it instead",
+        ),
+    ] {
+        let marked = xml.replacen(
+            r#"<variable formalParameter="IN2">"#,
+            &format!(r#"<variable formalParameter="IN2"{mark}>"#),
+            1,
+        );
+        assert_ne!(marked, xml);
+        let errors = import_mapped(&marked, Some(MachineId::Io86a), None).expect_err("marked pin");
+        assert_eq!(errors[0].error.to_string(), format!("AND block: {why}"));
+    }
+    // A mark that is no XML boolean is refused as on a contact, not ignored.
+    let garbled = xml.replacen(
+        r#"<variable formalParameter="IN2">"#,
+        r#"<variable formalParameter="IN2" negated="maybe">"#,
+        1,
+    );
+    let errors = import_mapped(&garbled, Some(MachineId::Io86a), None).expect_err("garbled pin");
+    assert_eq!(
+        errors[0].error.to_string(),
+        r#"negated="maybe" is not a boolean: true, false, 1 or 0"#
+    );
+    // A jump is refused at its line.
+    let jump = xml.replace(
+        "</FBD>",
+        "<jump label=\"x\" localId=\"9\"><position x=\"1\" y=\"1\"/></jump>\n    </FBD>",
+    );
+    let errors = import_mapped(&jump, Some(MachineId::Io86a), None).expect_err("jump");
+    let line = 1 + jump[..jump.find("<jump").expect("added")]
+        .matches('\n')
+        .count();
+    assert_eq!(errors[0].line, line);
+    assert_eq!(
+        errors[0].error.to_string(),
+        "<jump> is not supported in LD or FBD bodies here"
+    );
+}
+
+#[test]
+fn a_continuation_carries_what_feeds_its_connector() {
+    // a → connector "from_a"; continuation "From_A" (names match in any
+    // case) → AND IN1; b → IN2; the AND → q. And b → connector "nb" →
+    // continuation → NOT → Y01.
+    let body = |connector_a: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <types><pous><pou name="main" pouType="program">
+    <interface><localVars>
+      <variable name="a" address="%IX0.0"><type><BOOL/></type></variable>
+      <variable name="b" address="%IX0.1"><type><BOOL/></type></variable>
+      <variable name="q" address="%QX0.0"><type><BOOL/></type></variable>
+    </localVars></interface>
+    <body><FBD>
+      <inVariable localId="1"><position x="10" y="10"/><connectionPointOut/><expression>a</expression></inVariable>
+      {connector_a}
+      <continuation name="From_A" localId="3"><position x="10" y="100"/><connectionPointOut/></continuation>
+      <inVariable localId="4"><position x="10" y="120"/><connectionPointOut/><expression>b</expression></inVariable>
+      <block localId="5" typeName="AND"><position x="50" y="100"/><inputVariables>
+        <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+        <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></variable>
+      </inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+      <outVariable localId="6"><position x="100" y="100"/><connectionPointIn><connection refLocalId="5" formalParameter="OUT"/></connectionPointIn><expression>q</expression></outVariable>
+      <connector name="nb" localId="7"><position x="50" y="200"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn></connector>
+      <continuation name="nb" localId="8"><position x="10" y="300"/><connectionPointOut/></continuation>
+      <block localId="9" typeName="NOT"><position x="50" y="300"/><inputVariables>
+        <variable formalParameter="IN"><connectionPointIn><connection refLocalId="8"/></connectionPointIn></variable>
+      </inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+      <outVariable localId="10"><position x="100" y="300"/><connectionPointIn><connection refLocalId="9" formalParameter="OUT"/></connectionPointIn><expression>Y01</expression></outVariable>
+    </FBD></body>
+  </pou></pous></types>
+</project>"#
+        )
+    };
+    let fed = r#"<connector name="from_a" localId="2"><position x="50" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn></connector>"#;
+    let seen = run_both(&body(fed), "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, true), (false, true), (false, false), (true, false)]
+    );
+    let refused = |xml: &str| {
+        let errors = import_mapped(xml, Some(MachineId::Io86a), None).expect_err("refused");
+        errors[0].error.to_string()
+    };
+    // No connector of that name; a connector fed by its own continuation.
+    let missing = body(&fed.replace("from_a", "other"));
+    assert!(
+        refused(&missing).contains(r#"continuation "from_a", whose connector is not drawn"#),
+        "{}",
+        refused(&missing)
+    );
+    let looped = body(&fed.replace(r#"refLocalId="1""#, r#"refLocalId="3""#));
+    assert!(
+        refused(&looped).contains(r#"connector "from_a", which feeds itself"#),
+        "{}",
+        refused(&looped)
+    );
+    // The same name drawn twice.
+    let twice = body(&format!(
+        "{fed}\n{}",
+        fed.replace(r#"localId="2""#, r#"localId="20""#)
+    ));
+    assert!(
+        refused(&twice).contains(r#"connector "from_a" is drawn again (first on line 11)"#),
+        "{}",
+        refused(&twice)
+    );
+}
+
+#[test]
+fn a_comparison_of_more_inputs_compares_each_pair_in_turn() {
+    // IEC: GT(9, n, 1) is 9 > n AND n > 1 (q); LE(1, n, 3) is
+    // 1 <= n AND n <= 3 (Y01). n is C00, counting a's rises; b resets it.
+    let compare = |id: u32, ty: &str, ks: [&str; 2], y: u32, to: &str| {
+        let [first, last] = ks;
+        format!(
+            r#"
+      <inVariable localId="{}"><position x="20" y="{y}"/><connectionPointOut/><expression>{first}</expression></inVariable>
+      <inVariable localId="{}"><position x="20" y="{y}"/><connectionPointOut/><expression>n</expression></inVariable>
+      <inVariable localId="{}"><position x="20" y="{y}"/><connectionPointOut/><expression>{last}</expression></inVariable>"#,
+            id + 1,
+            id + 2,
+            id + 3
+        ) + &block(
+            id,
+            ty,
+            "",
+            y,
+            &[("IN1", id + 1), ("IN2", id + 2), ("IN3", id + 3)],
+            "OUT",
+        ) + &coil(id + 4, y, id, "OUT", to)
+    };
+    let body = block(4, "CTU", "CTU0", 10, &[("CU", 2), ("R", 3), ("PV", 7)], "Q")
+        + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>20</expression></inVariable>"#
+        + &compare(10, "GT", ["9", "1"], 60, "q")
+        + &compare(20, "LE", ["1", "3"], 80, "Y01");
+    let xml = project(&body).replace(
+        "</localVars>",
+        r#"<variable name="n"><type><INT/></type></variable></localVars>"#,
+    );
+    // Count to 5, a rise at a time; then reset.
+    let mut steps = Vec::new();
+    for _ in 0..5 {
+        steps.extend([(true, false), (false, false)]);
+    }
+    steps.push((false, true));
+    let seen: Vec<(bool, bool)> = run_both(&xml, "CTU0,C00\nn,C00\n", &steps)
+        .into_iter()
+        .step_by(2)
+        .collect();
+    // n = 1, 2, 3, 4, 5, then 0.
+    assert_eq!(
+        seen,
+        [
+            (false, true),
+            (true, true),
+            (true, true),
+            (true, false),
+            (true, false),
+            (false, false)
+        ]
+    );
+    // OpenPLC lists EN among the inputs when it is drawn: from the rail,
+    // the block always runs and compares the same.
+    let in1 = r#"<variable formalParameter="IN1"><connectionPointIn><connection refLocalId="11"/>"#;
+    assert!(xml.contains(in1));
+    let enabled = xml.replace(
+        in1,
+        &(r#"<variable formalParameter="EN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>"#.to_string() + in1),
+    );
+    let again: Vec<(bool, bool)> = run_both(&enabled, "CTU0,C00\nn,C00\n", &steps)
+        .into_iter()
+        .step_by(2)
+        .collect();
+    assert_eq!(again, seen);
+    // OpenPLC marks CU rising (CTU counts rises): the same count. A
+    // falling mark would count falls, which Hashigo's counters do not.
+    let cu = r#"<variable formalParameter="CU">"#;
+    assert!(xml.contains(cu));
+    let rising = xml.replace(cu, r#"<variable formalParameter="CU" edge="rising">"#);
+    let again: Vec<(bool, bool)> = run_both(&rising, "CTU0,C00\nn,C00\n", &steps)
+        .into_iter()
+        .step_by(2)
+        .collect();
+    assert_eq!(again, seen);
+    let falling = xml.replace(cu, r#"<variable formalParameter="CU" edge="falling">"#);
+    let map = VarMap::parse("CTU0,C00\nn,C00\n").expect("map");
+    let errors =
+        import_mapped(&falling, Some(MachineId::Io86a), Some(&map)).expect_err("falling CU");
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .contains("CTU block: its pin CU is marked falling"),
+        "{errors:?}"
+    );
+    // NE takes two inputs only, and a BOOL is no number to compare.
+    let refused = |xml: &str| {
+        let map = VarMap::parse("CTU0,C00\nn,C00\n").expect("map");
+        let errors = import_mapped(xml, Some(MachineId::Io86a), Some(&map)).expect_err("refused");
+        errors[0].error.to_string()
+    };
+    let ne = xml.replace(r#"typeName="GT""#, r#"typeName="NE""#);
+    assert!(
+        refused(&ne).contains("NE block: it has 3 inputs: NE compares two"),
+        "{}",
+        refused(&ne)
+    );
+    let bool_operand = xml.replacen(
+        "<expression>9</expression>",
+        "<expression>a</expression>",
+        1,
+    );
+    assert!(
+        refused(&bool_operand).contains(r#"IN1 "a": is declared BOOL: a comparison takes numbers"#),
+        "{}",
+        refused(&bool_operand)
+    );
+}
+
+#[test]
+fn a_relay_holding_an_input_is_written_before_the_rung_reading_it() {
+    // q = NOT a, through an NC contact of X07 drawn above the block: the
+    // rung reading the relay sorts first, and is moved after its writer,
+    // so q follows a in the same scan (as the origin tool runs it).
+    let body = block(4, "NOT", "", 40, &[("IN", 2)], "OUT")
+        + r#"
+      <contact localId="6" negated="true"><position x="50" y="0"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><variable>X07</variable></contact>"#
+        + &coil(5, 40, 6, "", "q");
+    let (mut m, text) =
+        io86a_loaded(&project(&body), &VarMap::default()).unwrap_or_else(|e| panic!("{e}"));
+    let (x0, y0) = (m.device("X00").expect("X00"), m.device("Y00").expect("Y00"));
+    let mut seen = Vec::new();
+    for a in [false, true, false] {
+        m.apply(Command::SetInput(x0, InputValue::Int(i64::from(a))))
+            .expect("input");
+        // Two scans: the input is latched at a scan's start.
+        m.step_scan();
+        let first = m.read(y0) != 0;
+        m.step_scan();
+        seen.push((first, m.read(y0) != 0));
+    }
+    assert_eq!(seen, [(true, true), (false, false), (true, true)], "{text}");
+}
+
+#[test]
+fn a_proposal_skips_the_relay_a_given_timer_and_relay_entry_holds() {
+    use engine::ladder::plcopen::{declare, dom};
+    let xml = timer_block("TOF");
+    let root = dom::parse(&xml).expect("parses");
+    let given = VarMap::parse("other,T05+M00\n").expect("a map");
+    let proposed = declare::propose(&root, MachineId::Io86a, Some(&given));
+    assert_eq!(
+        proposed,
+        [("TOF0".to_string(), "T00+M01".to_string())],
+        "M00 is other's relay"
+    );
 }

@@ -8,6 +8,7 @@ mod decompile;
 mod differential;
 mod gates;
 mod model;
+mod networks;
 mod plcopen;
 mod robustness;
 mod seed;

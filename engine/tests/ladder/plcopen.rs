@@ -127,6 +127,15 @@ proptest! {
     }
 }
 
+/// An import's warnings, each as `LINE: text`.
+pub(crate) fn said_warnings(imported: &engine::ladder::plcopen::Imported) -> Vec<String> {
+    imported
+        .warnings
+        .iter()
+        .map(|w| format!("{}: {}", w.line, w.error))
+        .collect()
+}
+
 #[test]
 fn bad_files_are_errors_at_their_lines() {
     let err = |xml: &str| import(xml).expect_err("must fail");
@@ -137,18 +146,20 @@ fn bad_files_are_errors_at_their_lines() {
     assert!(e[0].error.to_string().contains("not well-formed"), "{e:?}");
     let e = err("<project><types/></project>");
     assert!(
-        e[0].error.to_string().contains("no POU with an LD body"),
+        e[0].error
+            .to_string()
+            .contains("no POU with an LD or FBD body"),
         "{e:?}"
     );
     // An unknown block, at its line.
     let bad = BLINK.replacen(
         "typeName=\"TON\" instanceName=\"TON0\"",
-        "typeName=\"CTUD\" instanceName=\"TON0\"",
+        "typeName=\"MOD\" instanceName=\"TON0\"",
         1,
     );
     let line = bad
         .lines()
-        .position(|l| l.contains("typeName=\"CTUD\""))
+        .position(|l| l.contains("typeName=\"MOD\""))
         .expect("line")
         + 1;
     let e = err(&bad);
@@ -157,23 +168,33 @@ fn bad_files_are_errors_at_their_lines() {
             e[0].line,
             e[0].error
                 .to_string()
-                .contains("block CTUD is not supported")
+                .contains("block MOD is not supported")
         ),
         (line, true),
         "{e:?}"
     );
-    // A contact that leads nowhere is not dropped.
+    // A contact that leads nowhere (the origin tool runs it to no
+    // effect) is dropped, and said at its line.
     let dangling = BLINK.replacen(
         "</LD>",
         "<contact localId=\"99\" negated=\"false\"><position x=\"1\" y=\"900\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn><variable>R3.3</variable></contact>\n</LD>",
         1,
     );
-    let e = err(&dangling);
-    assert!(
-        e[0].error
-            .to_string()
-            .contains("contact R3.3 leads to no coil"),
-        "{e:?}"
+    let line = dangling
+        .lines()
+        .position(|l| l.contains("localId=\"99\""))
+        .expect("line")
+        + 1;
+    let imported = engine::ladder::plcopen::import_mapped(&dangling, None, None).expect("imports");
+    let said = said_warnings(&imported);
+    assert_eq!(
+        said,
+        [format!("{line}: contact R3.3 leads to no coil: dropped")]
+    );
+    assert_eq!(
+        imported.ladder,
+        import(BLINK).expect("the file without it"),
+        "nothing else changes"
     );
     // A PLCopen variable that is not the machine's device: at its line.
     let foreign = BLINK.replacen(
@@ -226,4 +247,51 @@ fn time_literals() {
     for bad in ["500ms", "T#", "T#5", "T#5x", "D#1s", "T#1s5"] {
         assert_eq!(parse_time_literal(bad), None, "{bad}");
     }
+}
+
+#[test]
+fn what_is_not_ladder_is_named_with_its_language() {
+    let pou = |name: &str, kind: &str, body: &str| {
+        format!(r#"<pou name="{name}" pouType="{kind}"><body>{body}</body></pou>"#)
+    };
+    let ld = "<LD><leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/></leftPowerRail></LD>";
+    let project = |pous: &str, task: &str| {
+        format!(
+            r#"<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>{pous}</pous></types>
+<instances><configurations><configuration name="c"><resource name="r"><task name="t"><pouInstance name="i" typeName="{task}"/></task></resource></configuration></configurations></instances></project>"#
+        )
+    };
+    // The task runs an ST program; the LD is in a function block.
+    let xml = project(
+        &(pou("plc_prg", "program", "<ST/>") + &pou("CounterLD", "functionBlock", ld)),
+        "plc_prg",
+    );
+    let e = import(&xml).expect_err("ST program");
+    assert!(
+        e[0].error
+            .to_string()
+            .contains("(plc_prg in ST) have no LD or FBD body: Hashigo imports ladder (LD) and function block diagram (FBD) bodies; these POUs have one: CounterLD in LD"),
+        "{e:?}"
+    );
+    // No LD anywhere: each POU's language said.
+    let xml = project(&pou("seq", "program", "<SFC/>"), "seq");
+    let e = import(&xml).expect_err("SFC only");
+    assert!(e[0].error.to_string().contains("(seq in SFC)"), "{e:?}");
+    // A block calling the project's own ST function block, at its line.
+    let call = ld.replace(
+        "</LD>",
+        "\n<block localId=\"2\" typeName=\"detect\" instanceName=\"d0\"><position x=\"1\" y=\"1\"/></block></LD>",
+    );
+    let xml = project(
+        &(pou("main", "program", &call) + &pou("detect", "functionBlock", "<ST/>")),
+        "main",
+    );
+    let e = import(&xml).expect_err("a project block");
+    assert_eq!(e[0].line, 2, "{e:?}");
+    assert!(
+        e[0].error
+            .to_string()
+            .contains("block detect calls the project's own ST function block"),
+        "{e:?}"
+    );
 }

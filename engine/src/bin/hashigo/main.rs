@@ -25,7 +25,7 @@ usage: hashigo <command> [options]
   share    --program FILE [--machine ID]      (prints the share link's fragment)
   unshare  FRAGMENT|URL                       (prints the project as JSON)
   test     --program P.json [--machine ID] [--junit FILE]
-  map      --machine ID --program FILE.xml [--map MAP.csv]  (proposes a --map file)
+  map      --machine ID --program FILE.xml [--map MAP.csv] [--pou NAME]  (proposes a --map file)
   why      --machine ID --program FILE [--input EVENTS.csv] [--set NAME=VALUE]...
            --at TIME --device DEV       (why DEV is on or off at the end of that scan)
 machines: minasec-u, io86a, avr-plc, arduino-plc";

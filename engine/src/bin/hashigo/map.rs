@@ -4,16 +4,16 @@
 //! entries of a `--map` given are kept first. The user edits it and passes
 //! it back as `--map` to compile, run, asm, share or why.
 
-use engine::ladder::plcopen::{declare, dom};
+use engine::ladder::plcopen::{self, declare, dom};
 use engine::MachineId;
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};
 use crate::source::{one, Problems, XmlOptions};
 
-/// `hashigo map --machine ID --program FILE.xml [--map MAP.csv]`.
+/// `hashigo map --machine ID --program FILE.xml [--map MAP.csv] [--pou NAME]`.
 pub fn map(rest: &[String]) -> Result<(), Problems> {
-    let args = Args::parse(rest, &["machine", "program", "format", "map"]).map_err(one)?;
+    let args = Args::parse(rest, &["machine", "program", "format", "map", "pou"]).map_err(one)?;
     let machine =
         MachineId::parse(args.required("machine").map_err(one)?).map_err(|e| one(e.to_string()))?;
     let path = args.required("program").map_err(one)?;
@@ -36,7 +36,14 @@ pub fn map(rest: &[String]) -> Result<(), Problems> {
     for (name, device, _) in given.map(|m| m.entries.as_slice()).unwrap_or(&[]) {
         out.push_str(&format!("{name},{device}\n"));
     }
-    for (name, device) in declare::propose(&root, machine, given) {
+    // `--pou NAME`: what that POU uses only.
+    let scope = match args.optional("pou").map_err(one)? {
+        None => &root,
+        Some(wanted) => {
+            plcopen::pou_named(&root, wanted).map_err(|e| one(format!("{}: {e}", source.name)))?
+        }
+    };
+    for (name, device) in declare::propose_in(&root, scope, machine, given) {
         out.push_str(&format!("{name},{device}\n"));
     }
     print!("{out}");

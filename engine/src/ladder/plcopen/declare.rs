@@ -100,6 +100,8 @@ pub struct Names {
     /// Declared initial values (`T#2s`, `10`) and their lines, by
     /// lower-case name.
     initial: HashMap<String, (String, String, usize)>,
+    /// Declared elementary types (`BOOL`, `INT`), by lower-case name.
+    types: HashMap<String, String>,
     used_map_lines: std::cell::RefCell<HashSet<usize>>,
     map_lines: Vec<(String, usize)>,
 }
@@ -132,6 +134,14 @@ impl Names {
                 }
             },
         }
+    }
+
+    /// The elementary type `name` is declared with (`BOOL`, `INT`), if
+    /// the file declares it with one.
+    pub fn declared_type(&self, name: &str) -> Option<&str> {
+        self.types
+            .get(&name.trim().to_ascii_lowercase())
+            .map(String::as_str)
     }
 
     /// The initial value `name` is declared with (a PT or PV given by a
@@ -194,6 +204,34 @@ impl Names {
         out
     }
 
+    /// The machine's relays no name stands for (a mapped instance's
+    /// `T01+M20` counts its relay) and not in `also`: what the importer
+    /// may take to hold a network's power (highest first, as
+    /// [`Vec::pop`] gives them).
+    pub fn spare_relays(&self, machine: MachineId, also: &HashSet<String>) -> Vec<String> {
+        let mut taken = self.taken();
+        taken.extend(also.iter().map(|d| d.to_ascii_uppercase()));
+        Pools::of(machine)
+            .relays
+            .into_iter()
+            .filter(|r| !taken.contains(r))
+            .collect()
+    }
+
+    /// Every device a name stands for, upper case (a mapped instance's
+    /// `T01+M20` gives both).
+    fn taken(&self) -> HashSet<String> {
+        self.by_name
+            .values()
+            .filter_map(|(_, m)| match m {
+                Meaning::Device(d, _) => Some(d),
+                _ => None,
+            })
+            .flat_map(|d| d.split('+'))
+            .map(|d| d.trim().to_ascii_uppercase())
+            .collect()
+    }
+
     /// The map's lines that no element used.
     pub fn unused_map_lines(&self) -> Vec<(String, usize)> {
         let used = self.used_map_lines.borrow();
@@ -238,6 +276,15 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
                 name.to_ascii_lowercase(),
                 (name.to_string(), value.to_string(), v.line),
             );
+        }
+        if let Some(ty) = v
+            .child("type")
+            .and_then(|t| t.children.first())
+            .filter(|t| t.name != "derived")
+        {
+            names
+                .types
+                .insert(name.to_ascii_lowercase(), ty.name.to_ascii_uppercase());
         }
         // A file written for Hashigo names the devices themselves.
         if check_element(machine, &Element::no(name)).is_ok() {
@@ -284,11 +331,19 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
     let mut chars = rest.chars();
     let area = chars.next().ok_or_else(bad)?;
     let rest = chars.as_str();
+    // IO86A reads X04 / X05 as analog words into D06 / D07.
+    if machine == MachineId::Io86a && area == 'I' {
+        match rest {
+            "W0" => return Ok("D06".to_string()),
+            "W1" => return Ok("D07".to_string()),
+            _ => {}
+        }
+    }
     let rest = match rest.chars().next() {
         Some('X') => &rest[1..],
         Some('B' | 'W' | 'D' | 'L') => {
             return Err(format!(
-                "{address} is a word: Hashigo's ladders import bit variables only"
+                "{address} is a word: Hashigo's ladders import bit variables only (and IO86A's analog inputs %IW0, %IW1)"
             ))
         }
         _ => rest,
@@ -334,15 +389,19 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
 /// no such device (the AVR PLC names its bits in its source), the name is
 /// left out: the user maps it by hand. In file order, each once.
 pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(String, String)> {
+    propose_in(root, root, machine, map)
+}
+
+/// [`propose`] for what one POU (`scope`, `--pou NAME`) uses: its own
+/// declarations, and the globals its body names.
+pub fn propose_in(
+    root: &Node,
+    scope: &Node,
+    machine: MachineId,
+    map: Option<&VarMap>,
+) -> Vec<(String, String)> {
     let names = names(root, machine, map);
-    let mut taken: HashSet<String> = names
-        .by_name
-        .values()
-        .filter_map(|(_, m)| match m {
-            Meaning::Device(d, _) => Some(d.to_ascii_uppercase()),
-            _ => None,
-        })
-        .collect();
+    let mut taken = names.taken();
     // Every name the bodies use for power, and whether something writes it.
     let mut used: Vec<(String, bool)> = Vec::new();
     let mut note = |name: &str, writes: bool| {
@@ -359,7 +418,7 @@ pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(St
         ("outVariable", "expression", true),
     ] {
         let mut found = Vec::new();
-        root.descendants(tag, &mut found);
+        scope.descendants(tag, &mut found);
         for n in found {
             if let Some(v) = n.child(child) {
                 note(&v.text, writes);
@@ -371,8 +430,15 @@ pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(St
         .filter(|(_, w)| *w)
         .map(|(n, _)| n.to_ascii_lowercase())
         .collect();
+    // The machine's own devices the bodies name (`X00`) are taken too.
+    taken.extend(
+        used.iter()
+            .filter(|(n, _)| !names.by_name.contains_key(&n.to_ascii_lowercase()))
+            .filter(|(n, _)| check_element(machine, &Element::no(n)).is_ok())
+            .map(|(n, _)| n.to_ascii_uppercase()),
+    );
     let mut blocks = Vec::new();
-    root.descendants("block", &mut blocks);
+    scope.descendants("block", &mut blocks);
     let mut instances: Vec<(String, String)> = Vec::new();
     for b in blocks {
         let (Some(ty), Some(name)) = (b.attr("typeName"), b.attr("instanceName")) else {
@@ -391,23 +457,31 @@ pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(St
     let mut out: Vec<(String, String)> = Vec::new();
     // Declared BOOLs with no device (or an address the machine lacks),
     // then names the bodies use without declaring them.
+    let open = |name: &str| {
+        matches!(
+            names.by_name.get(&name.to_ascii_lowercase()),
+            Some((_, Meaning::Unmapped(_) | Meaning::Refused(..)))
+        )
+    };
     let mut variables = Vec::new();
-    root.descendants("variable", &mut variables);
+    scope.descendants("variable", &mut variables);
     let declared = variables.iter().filter_map(|v| {
         let name = v.attr("name")?;
         let bool_typed = v.child("type").is_some_and(|t| t.child("BOOL").is_some());
-        let open = matches!(
-            names.by_name.get(&name.to_ascii_lowercase()),
-            Some((_, Meaning::Unmapped(_) | Meaning::Refused(..)))
-        );
-        (bool_typed && open).then(|| name.to_string())
+        (bool_typed && open(name)).then(|| name.to_string())
     });
+    // One POU: the globals (declared outside it) its body names too.
+    let scoped = !std::ptr::eq(root, scope);
+    let globals = used
+        .iter()
+        .filter(move |(name, _)| scoped && open(name))
+        .map(|(name, _)| name.clone());
     let undeclared = used.iter().filter_map(|(name, _)| {
         let known = names.by_name.contains_key(&name.to_ascii_lowercase())
             || check_element(machine, &Element::no(name)).is_ok();
         (!known).then(|| name.clone())
     });
-    let candidates: Vec<String> = declared.chain(undeclared).collect();
+    let candidates: Vec<String> = declared.chain(globals).chain(undeclared).collect();
     for name in candidates {
         let key = name.to_ascii_lowercase();
         if out.iter().any(|(n, _)| n.eq_ignore_ascii_case(&name)) {
@@ -509,7 +583,13 @@ mod tests {
         assert_eq!(located(io, "%MX1.2").as_deref(), Ok("M10"));
         assert_eq!(located(io, "%m0.1").as_deref(), Ok("M01"));
         assert!(located(io, "%QX0.6").is_err(), "IO86A has Y00-Y05");
-        assert!(located(io, "%IW0").is_err(), "a word");
+        assert_eq!(
+            located(io, "%IW1").as_deref(),
+            Ok("D07"),
+            "X05's analog value"
+        );
+        assert!(located(io, "%IW2").is_err(), "a word IO86A lacks");
+        assert!(located(MachineId::MinasecU, "%IW0").is_err(), "a word");
         assert!(located(io, "IX0.0").is_err());
         assert!(located(io, "%IX0.9").is_err());
         let m = MachineId::MinasecU;

@@ -64,6 +64,13 @@ pub enum Connection {
     FromVariable(String),
     /// Nothing is connected.
     Unconnected,
+    /// A continuation names a connector that is not drawn (its name).
+    NoConnector(String),
+    /// Connectors that feed themselves through continuations (a name).
+    ConnectorLoop(String),
+    /// More connectors in a row than [`crate::limits::MAX_CONNECTOR_CHAIN`]
+    /// (the one past it).
+    ConnectorChain(String),
 }
 
 /// Why a PLCopen file could not be imported.
@@ -75,8 +82,8 @@ pub enum ImportError {
     NotAProject(String),
     /// A namespace that is not PLCopen TC6's.
     Namespace(String),
-    /// No POU has an LD body.
-    NoLdBody,
+    /// No POU has an LD or FBD body (each POU in its language).
+    NoDrawnBody(String),
     /// More rungs than [`MAX_RUNGS`].
     TooManyRungs,
     /// A rung too large to draw.
@@ -88,6 +95,13 @@ pub enum ImportError {
         /// The id.
         id: String,
         /// The line of its first use.
+        first: usize,
+    },
+    /// A connector name drawn twice in one body.
+    DuplicateConnector {
+        /// The name.
+        name: String,
+        /// The line of its first connector.
         first: usize,
     },
     /// A bad input connection of `what`.
@@ -105,8 +119,9 @@ pub enum ImportError {
     Gate(String, String),
     /// `--pou` names no POU of the file (the name, the file's POUs).
     NoSuchPou(String, String),
-    /// The programs that run have no LD body (theirs, the POUs with one).
-    NoLdInPrograms(String, String),
+    /// The programs that run have no LD or FBD body (theirs, the POUs
+    /// with one).
+    NoDrawnInPrograms(String, String),
     /// A negated edge contact (its device).
     NegatedEdge(String),
     /// A coil mixing negated / storage / edge (its device).
@@ -123,6 +138,9 @@ pub enum ImportError {
     Unsupported(String),
     /// A block type Hashigo does not import.
     UnsupportedBlock(String),
+    /// A block that calls one of the project's own POUs (its name and
+    /// the language of its body).
+    ProjectBlock(String, String),
     /// A block pin with nothing connected (block, pin).
     PinNotConnected(String, &'static str),
     /// A block pin not fed by a literal (block, pin).
@@ -154,8 +172,6 @@ pub enum ImportError {
     NoPath(String),
     /// The network is not series-parallel, or too deep.
     Net(NetError),
-    /// An element that leads to no coil.
-    LeadsNowhere(String),
 }
 
 impl fmt::Display for ImportError {
@@ -171,7 +187,10 @@ impl fmt::Display for ImportError {
                 "namespace {} is not PLCopen TC6 ({NS_V201} or {NS_V10})",
                 shown(ns)
             ),
-            E::NoLdBody => f.write_str("the project has no POU with an LD body"),
+            E::NoDrawnBody(pous) => write!(
+                f,
+                "the project has no POU with an LD or FBD body ({pous}): Hashigo imports ladder (LD) and function block diagram (FBD) bodies"
+            ),
             E::TooManyRungs => {
                 write!(f, "the project has more than {MAX_RUNGS} rungs (docs/limits.md)")
             }
@@ -181,6 +200,11 @@ impl fmt::Display for ImportError {
                 f,
                 "localId {} is used again (first on line {first}): every element needs its own",
                 shown(id)
+            ),
+            E::DuplicateConnector { name, first } => write!(
+                f,
+                "connector {} is drawn again (first on line {first}): a continuation must name one",
+                shown(name)
             ),
             E::Connection { what, problem } => match problem {
                 Connection::NoRef => write!(f, "a connection of the {what} has no refLocalId"),
@@ -195,14 +219,30 @@ impl fmt::Display for ImportError {
                     shown(r)
                 ),
                 Connection::Unconnected => write!(f, "the {what} is not connected on its left"),
+                Connection::NoConnector(name) => write!(
+                    f,
+                    "the {what} takes power from continuation {}, whose connector is not drawn",
+                    shown(name)
+                ),
+                Connection::ConnectorChain(name) => write!(
+                    f,
+                    "the {what} passes through more than {} connectors in a row (at {}; docs/limits.md)",
+                    crate::limits::MAX_CONNECTOR_CHAIN,
+                    shown(name)
+                ),
+                Connection::ConnectorLoop(name) => write!(
+                    f,
+                    "the {what} takes power from connector {}, which feeds itself through its continuations",
+                    shown(name)
+                ),
             },
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
             E::Variable(why) => f.write_str(why),
             E::Gate(what, why) => write!(f, "{what}: {why}"),
             E::NoSuchPou(name, all) => write!(f, "no POU is named {name}: the file has {all}"),
-            E::NoLdInPrograms(run, ld) => write!(
+            E::NoDrawnInPrograms(run, ld) => write!(
                 f,
-                "the programs the tasks run ({run}) have no LD body; LD is in {ld} (--pou NAME imports one)"
+                "the programs the tasks run ({run}) have no LD or FBD body: Hashigo imports ladder (LD) and function block diagram (FBD) bodies; these POUs have one: {ld} (--pou NAME imports one)"
             ),
             E::NegatedEdge(d) => write!(
                 f,
@@ -223,11 +263,17 @@ impl fmt::Display for ImportError {
                 f,
                 "<{el}> is not imported: Hashigo's ladders have no word outputs from blocks"
             ),
-            E::Unsupported(el) => write!(f, "<{el}> is not supported in LD bodies here"),
+            E::Unsupported(el) => write!(f, "<{el}> is not supported in LD or FBD bodies here"),
             E::UnsupportedBlock(ty) => write!(
                 f,
-                "block {} is not supported: Hashigo imports TON, TOF, TP, CTU, R_TRIG, F_TRIG, NOT, AND, OR, XOR, SR and RS",
-                shown(ty).trim_matches('"')
+                "block {} is not supported: Hashigo imports {} and the comparisons {}",
+                shown(ty).trim_matches('"'),
+                super::blocks::KNOWN_BLOCKS.join(", "),
+                super::blocks::COMPARISONS.join(", ")
+            ),
+            E::ProjectBlock(name, language) => write!(
+                f,
+                "block {name} calls the project's own {language} function block: Hashigo's ladders do not call function blocks (import it alone with --pou {name} if it is LD or FBD)"
             ),
             E::PinNotConnected(what, pin) => {
                 write!(f, "{what}: its {pin} input is not connected")
@@ -243,7 +289,7 @@ impl fmt::Display for ImportError {
             ),
             E::BadCounterPreset(what, expr) => write!(
                 f,
-                "{what}: PV {} is not a whole number 0..32767",
+                "{what}: PV {} is not a whole number 1..32767 (a counter done from the start, PV 0, has no ladder form here)",
                 shown(expr)
             ),
             E::CounterQWired(d) => write!(
@@ -269,7 +315,6 @@ impl fmt::Display for ImportError {
                 "this network is not series-parallel: Hashigo's ladders are series and parallel blocks",
             ),
             E::Net(e) => e.fmt(f),
-            E::LeadsNowhere(el) => write!(f, "{el} leads to no coil"),
         }
     }
 }

@@ -1,21 +1,25 @@
-//! Boolean blocks lowered to ladder (issue #18): AND, OR and XOR of
-//! powers, and the SR / RS flip-flops, rewired into the body's graph of
+//! Blocks lowered to ladder (issue #18), rewired into the body's graph of
 //! points before its rungs are read off, so they come out as the series,
 //! parallel and self-holding rungs a ladder draws.
 //!
-//! - OR: its inputs' points are joined (parallel branches meeting), when
-//!   nothing else takes power from them (else the join would feed power
-//!   back into that other element);
+//! - OR: its inputs' points are joined (parallel branches meeting); an
+//!   input something else also takes power from comes through a spare
+//!   relay instead (joining it would feed the others' power back);
 //! - AND: each input's network after the first is moved to start where the
-//!   one before it ends (series), when it is its own (only the AND takes
-//!   power from it);
-//! - XOR of two single contacts: two branches, A and not B, not A and B;
-//! - SR / RS on a relay the map gives the instance (`SR0,M10`), with R a
-//!   single contact: one self-holding rung, `S or (Q and not R)` (set
-//!   wins) or `(S or Q) and not R` (reset wins).
+//!   one before it ends (series) when only the AND takes power from it,
+//!   else it comes through a spare relay's contact;
+//! - XOR: two branches, A and not B, not A and B, of the inputs' contacts;
+//! - SR / RS on a relay the map gives the instance (`SR0,M10`): one
+//!   self-holding rung, `S or (Q and not R)` (set wins) or
+//!   `(S or Q) and not R` (reset wins);
+//! - TOF / TP on IO86A from its on-delay timer and a relay;
+//! - CTD / CTUD on the machine's up-counter; comparisons as `CMP` and a
+//!   relay.
 //!
-//! What does not fit these shapes is refused at the block's line with the
-//! reason, never approximated.
+//! An input needed twice or negated is one contact from the rail when it
+//! is one, else a spare relay that holds its power ([`Body::relay_for`]).
+//! What does not fit is refused at the block's line with the reason,
+//! never approximated.
 
 use std::collections::HashMap;
 
@@ -25,6 +29,7 @@ use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
 use crate::limits::MAX_GATE_WORK;
+use crate::MachineId;
 
 /// A boolean block waiting to be lowered.
 #[derive(Clone, Debug)]
@@ -51,6 +56,31 @@ pub(super) enum GateKind {
     Flip {
         relay: String,
         set_wins: bool,
+    },
+    /// A counter's reset coil on its R's power (through a spare relay
+    /// when R's point feeds more: the reset then has a rung of its own,
+    /// which runs after the counting one).
+    Reset(Element),
+    /// A comparison of two words (one pair of a longer comparison's
+    /// inputs): `CMP a b` (fed by M57, always on) and
+    /// a relay that holds its result while later comparisons run: the
+    /// flag (M60-M62) on, or (`on` false) off.
+    Compare {
+        a: String,
+        b: String,
+        flag: &'static str,
+        on: bool,
+    },
+    /// A CTD (`load`: its LD; Q while CV <= 0) or a CTUD (`reset`: its R;
+    /// `empty`: its QD's point, the count compared with 0; QU is `out`)
+    /// on the machine's up-counter `counter` (`OUT C K`, counting CD's or
+    /// CU's rises): the counter counts what CTD takes off PV, and LD
+    /// clears it.
+    Count {
+        counter: Element,
+        load: Option<usize>,
+        reset: Option<usize>,
+        empty: Option<usize>,
     },
     /// A TOF (or, `pulse`, a TP) from an on-delay timer coil and a relay
     /// that holds its output.
@@ -100,26 +130,22 @@ impl Body {
     fn lower(&mut self, g: &Gate) -> Result<(), String> {
         match &g.kind {
             GateKind::Or => {
-                let takers = self.takers();
-                for &p in &g.inputs {
-                    let p = self.find(p);
-                    if takers.get(&p).copied().unwrap_or(0) > 1 {
-                        return Err(
-                            "an input also feeds another element: draw the branches in parallel"
-                                .into(),
-                        );
-                    }
-                }
-                for &p in &g.inputs {
+                for (k, &p) in g.inputs.iter().enumerate() {
+                    let p = self.own_point(p, g, k)?;
                     self.union(p, g.out);
                 }
                 Ok(())
             }
             GateKind::And => {
                 let mut end = g.inputs.first().copied().ok_or("no inputs")?;
-                for &p in &g.inputs[1..] {
-                    self.reroot(p, end)?;
-                    end = p;
+                for (k, &p) in g.inputs.iter().enumerate().skip(1) {
+                    if self.reroot(p, end) {
+                        end = p;
+                        continue;
+                    }
+                    // Its network feeds something else too (or holds a
+                    // box): a relay carries its power into the series.
+                    end = self.relay_branch(p, end, g, k)?;
                 }
                 self.union(end, g.out);
                 Ok(())
@@ -128,8 +154,8 @@ impl Body {
                 let [a, b] = g.inputs[..] else {
                     return Err("XOR of more than two inputs: draw the branches".into());
                 };
-                let (ca, _, la) = self.single_contact(a)?;
-                let (cb, _, lb) = self.single_contact(b)?;
+                let (ca, _, la, _) = self.input_contact(a, g, 1)?;
+                let (cb, _, lb, _) = self.input_contact(b, g, 2)?;
                 let out = g.out;
                 let mid = [self.fresh(), self.fresh()];
                 let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
@@ -148,11 +174,25 @@ impl Body {
                 relay,
                 pulse,
             } => self.lower_delay(g, coil, timer, relay, *pulse),
+            GateKind::Compare { a, b, flag, on } => self.lower_compare(g, a, b, flag, *on),
+            GateKind::Reset(coil) => {
+                let p = g.inputs.first().copied().ok_or("no R")?;
+                let p = self.own_point(p, g, 0)?;
+                self.outputs.push((p, coil.clone(), g.pos, g.line));
+                Ok(())
+            }
+            GateKind::Count {
+                counter,
+                load,
+                reset,
+                empty,
+            } => self.lower_count(g, counter, *load, *reset, *empty),
             GateKind::Flip { relay, set_wins } => {
                 let [s, r] = g.inputs[..] else {
                     return Err("a flip-flop has S and R".into());
                 };
-                let (cr, _, lr) = self.single_contact(r)?;
+                let s = self.own_point(s, g, 0)?;
+                let (cr, _, lr, _) = self.input_contact(r, g, 1)?;
                 let not_r = invert(&cr)?;
                 let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
                 let held = Element::no(relay);
@@ -180,9 +220,144 @@ impl Body {
         }
     }
 
+    /// `M57 → CMP a b`, then `flag → relay` (its rung kept right after
+    /// the CMP's: [`Body::compares`]); the block's output is the relay.
+    fn lower_compare(
+        &mut self,
+        g: &Gate,
+        a: &str,
+        b: &str,
+        flag: &str,
+        on: bool,
+    ) -> Result<(), String> {
+        if self.machine != Some(MachineId::Io86a) {
+            return Err("comparisons need IO86A's CMP and its flags M60-M62".into());
+        }
+        let rail = super::import::RAIL;
+        let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_sub(k));
+        let cmp = self.fresh();
+        self.edges
+            .push((rail, cmp, Net::Leaf(Element::no("M57"), at(3)), g.line));
+        let cmp_op = Element::Cmp {
+            a: a.to_string(),
+            b: b.to_string(),
+        };
+        self.outputs.push((cmp, cmp_op, at(3), g.line));
+        let result = self.fresh();
+        let flag = if on {
+            Element::no(flag)
+        } else {
+            Element::nc(flag)
+        };
+        self.edges
+            .push((rail, result, Net::Leaf(flag, at(2)), g.line));
+        self.consumed.extend([rail, cmp, rail, rail]);
+        let what = format!("{}'s result", g.what);
+        let held = self.hold_in_relay(result, &what, g.line, at(1))?;
+        self.edges
+            .push((rail, g.out, Net::Leaf(Element::no(&held), g.pos), g.line));
+        self.compares
+            .push((at(3), held, [a.to_string(), b.to_string()]));
+        Ok(())
+    }
+
+    /// CTD: the counter counts CD's rises up to PV (what CTD counts down
+    /// from PV to 0); LD clears it and sets a relay "loaded", so Q is the
+    /// counter's contact or not loaded (IEC's CV starts at 0: Q is on
+    /// until the first LD). CTUD with only CU (and R): QU is the counter's
+    /// contact, QD `CMP C K0`'s equal flag (IO86A).
+    fn lower_count(
+        &mut self,
+        g: &Gate,
+        counter: &Element,
+        load: Option<usize>,
+        reset: Option<usize>,
+        empty: Option<usize>,
+    ) -> Result<(), String> {
+        let Element::CounterCoil { device, .. } = counter else {
+            return Err("not a counter".into());
+        };
+        let rail = super::import::RAIL;
+        let input = g.inputs.first().copied().ok_or("no count input")?;
+        let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
+        let reset_coil = |device: &str| Element::Coil {
+            kind: CoilKind::Reset,
+            device: device.to_string(),
+        };
+        let set_coil = |device: &str| Element::Coil {
+            kind: CoilKind::Set,
+            device: device.to_string(),
+        };
+        self.outputs.push((input, counter.clone(), g.pos, g.line));
+        self.ordered.push(device.clone());
+        let takers = self.takers();
+        let read = |body: &mut Body, p: usize| takers.contains_key(&body.find(p));
+        let q_read = read(self, g.out);
+        if let Some(ld) = load {
+            // CTD: LD clears the count; Q = done or never loaded.
+            let ld = self.own_point(ld, g, 1)?;
+            self.outputs.push((ld, reset_coil(device), at(1), g.line));
+            if q_read {
+                let what = format!("whether {} has been loaded", g.what);
+                let relay = self.spare_relay(&what, g.line)?;
+                self.outputs.push((ld, set_coil(&relay), at(2), g.line));
+                self.edges
+                    .push((rail, g.out, Net::Leaf(Element::no(device), at(3)), g.line));
+                self.edges
+                    .push((rail, g.out, Net::Leaf(Element::nc(&relay), at(4)), g.line));
+                self.consumed.extend([rail, rail]);
+            }
+            return Ok(());
+        }
+        if empty.is_none() {
+            // CTD never loaded: CV stays at or below 0, Q always on.
+            self.union(g.out, rail);
+            return Ok(());
+        }
+        if let Some(r) = reset {
+            let r = self.own_point(r, g, 1)?;
+            self.outputs.push((r, reset_coil(device), at(1), g.line));
+        }
+        if q_read {
+            self.edges
+                .push((rail, g.out, Net::Leaf(Element::no(device), at(3)), g.line));
+            self.consumed.push(rail);
+        }
+        if let Some(e) = empty.filter(|&e| read(self, e)) {
+            // QD (CV = 0): the count compared with 0 after this scan's
+            // count and reset ([`Body::compares`] orders them).
+            let qd = Gate {
+                kind: GateKind::Compare {
+                    a: device.clone(),
+                    b: "K0".into(),
+                    flag: "M61",
+                    on: true,
+                },
+                inputs: Vec::new(),
+                out: e,
+                pos: at(5),
+                line: g.line,
+                what: format!("{}'s QD", g.what),
+            };
+            self.lower(&qd)?;
+        }
+        Ok(())
+    }
+
+    /// A spare relay for `what`, noted among the helpers.
+    fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, String> {
+        let relay = self
+            .spares
+            .pop()
+            .ok_or("a relay must hold part of it and none is free: map fewer names to relays")?;
+        self.helpers.push((relay.clone(), what.to_string(), line));
+        Ok(relay)
+    }
+
     /// TOF: `R := IN or (R and not T)`, T's coil on `R and not IN`, Q is
     /// R. TP: `R := IN rising or (R and not T)`, T's coil on R, Q is R.
-    /// IN must be one contact from the rail (it is used twice).
+    /// IN is used twice: its one contact from the rail, or a spare relay's
+    /// ([`Body::input_contact`]).
     fn lower_delay(
         &mut self,
         g: &Gate,
@@ -193,7 +368,7 @@ impl Body {
     ) -> Result<(), String> {
         let rail = super::import::RAIL;
         let input = g.inputs.first().copied().ok_or("no IN")?;
-        let (c_in, at_in, line) = self.single_contact(input)?;
+        let (c_in, at_in, line, input) = self.input_contact(input, g, 1)?;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
         let set = if pulse { rising(&c_in)? } else { c_in.clone() };
         let (hold, running) = (self.fresh(), self.fresh());
@@ -230,8 +405,76 @@ impl Body {
         Ok(())
     }
 
+    /// A spare relay that holds the power at point `p` (a coil on it, its
+    /// rung run before its readers: [`Body::helpers`]), and its contact.
+    fn relay_for(&mut self, p: usize, g: &Gate, at: Pos) -> Result<Element, String> {
+        let relay = self.hold_in_relay(p, &format!("{}'s input", g.what), g.line, at)?;
+        Ok(Element::no(&relay))
+    }
+
+    /// A spare relay that holds the power at `p` (`what` it is, for the
+    /// device comment): its name.
+    pub(super) fn hold_in_relay(
+        &mut self,
+        p: usize,
+        what: &str,
+        line: usize,
+        at: Pos,
+    ) -> Result<String, String> {
+        let relay = self.spare_relay(what, line)?;
+        self.consumed.push(p);
+        let coil = Element::Coil {
+            kind: CoilKind::Normal,
+            device: relay.clone(),
+        };
+        self.outputs.push((p, coil, at, line));
+        Ok(relay)
+    }
+
+    /// The contact that gives input `p`'s power and a point free for it:
+    /// the one contact from the rail that feeds `p` (taken out of the
+    /// graph, `p` itself), or else a relay holding `p`'s power
+    /// ([`Body::relay_for`]) and a new point. Its place and line too.
+    fn input_contact(
+        &mut self,
+        p: usize,
+        g: &Gate,
+        k: usize,
+    ) -> Result<(Element, Pos, usize, usize), String> {
+        if let Some((c, at, line)) = self.single_contact(p) {
+            return Ok((c, at, line, p));
+        }
+        let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
+        let c = self.relay_for(p, g, at)?;
+        Ok((c, at, g.line, self.fresh()))
+    }
+
+    /// Input `p` (pin `k` of `g`) as a point only the block takes power
+    /// from, which it may join other branches into: `p` itself, or, when
+    /// something else takes power from `p` too (joining would feed the
+    /// other branches' power to it), a new point fed by the contact of a
+    /// spare relay holding `p`'s power.
+    fn own_point(&mut self, p: usize, g: &Gate, k: usize) -> Result<usize, String> {
+        let takers = self.takers();
+        if takers.get(&self.find(p)).copied().unwrap_or(0) <= 1 {
+            return Ok(p);
+        }
+        self.relay_branch(p, super::import::RAIL, g, k)
+    }
+
+    /// A spare relay holding `p`'s power (input `k` of `g`), and its
+    /// contact from point `from` to a new point, which is returned.
+    fn relay_branch(&mut self, p: usize, from: usize, g: &Gate, k: usize) -> Result<usize, String> {
+        let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
+        let c = self.relay_for(p, g, at)?;
+        let q = self.fresh();
+        self.consumed.push(from);
+        self.edges.push((from, q, Net::Leaf(c, at), g.line));
+        Ok(q)
+    }
+
     /// A new point.
-    fn fresh(&mut self) -> usize {
+    pub(super) fn fresh(&mut self) -> usize {
         let p = self.parent.len();
         self.parent.push(p);
         p
@@ -239,7 +482,7 @@ impl Body {
 
     /// The one contact from the rail that feeds `p` and nothing else,
     /// taken out of the graph (its element, place and line).
-    fn single_contact(&mut self, p: usize) -> Result<(Element, Pos, usize), String> {
+    fn single_contact(&mut self, p: usize) -> Option<(Element, Pos, usize)> {
         let p = self.find(p);
         let rail = self.find(super::import::RAIL);
         let takers = self.takers();
@@ -252,21 +495,22 @@ impl Body {
             .collect();
         let only = match feeding[..] {
             [i] if takers.get(&p).copied().unwrap_or(0) == 1 => i,
-            _ => return Err("this input must be one contact from the rail".into()),
+            _ => return None,
         };
         let (a, _, net, line) = self.edges[only].clone();
         match net {
             Net::Leaf(e @ Element::Contact { .. }, at) if self.find(a) == rail => {
                 self.edges.remove(only);
-                Ok((e, at, line))
+                Some((e, at, line))
             }
-            _ => Err("this input must be one contact from the rail".into()),
+            _ => None,
         }
     }
 
-    /// Moves the network feeding `p` (which only `p`'s taker uses) to
-    /// start at `from` instead of the rail: in series after it.
-    fn reroot(&mut self, p: usize, from: usize) -> Result<(), String> {
+    /// Moves the network feeding `p` to start at `from` instead of the
+    /// rail (in series after it), if it can: when it is contacts only and
+    /// only `p`'s taker uses it. Whether it moved.
+    fn reroot(&mut self, p: usize, from: usize) -> bool {
         let rail = self.find(super::import::RAIL);
         let target = self.find(p);
         // The edges on the way back from `p` to the rail.
@@ -288,6 +532,15 @@ impl Body {
                 }
             }
         }
+        // Contacts only: a box in it (NOT, an edge, a timer) would then
+        // take the earlier inputs' power too (NOT(a and b) is not a and
+        // NOT b).
+        let boxed = part
+            .iter()
+            .any(|&i| !matches!(self.edges[i].2, Net::Leaf(Element::Contact { .. }, _)));
+        if boxed {
+            return false;
+        }
         // Its own: nothing outside it takes power from its points.
         let takers = self.takers();
         for &q in &seen {
@@ -300,9 +553,7 @@ impl Body {
                 .count();
             let expected = if q == target { 1 } else { inside };
             if takers.get(&q).copied().unwrap_or(0) != expected {
-                return Err(
-                    "an input's network also feeds another element: draw it in series".into(),
-                );
+                return false;
             }
         }
         for i in part {
@@ -313,7 +564,7 @@ impl Body {
                 self.consumed.push(from);
             }
         }
-        Ok(())
+        true
     }
 }
 

@@ -5,11 +5,12 @@
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 
+use super::blocks;
 use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::{Connection, ImportError};
-use super::gates::{Gate, GateKind};
-use super::{parse_time_literal, NS_V10, NS_V200, NS_V201};
+use super::gates::Gate;
+use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::io86a::{isa::parse_bit, Bit};
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
@@ -58,7 +59,7 @@ pub fn import_mapped(
 }
 
 /// [`import_mapped`] of one POU (`--pou NAME`), or, with `None`, of the
-/// programs the configuration's tasks run ([`choose_pous`]).
+/// programs the configuration's tasks run (`choose_pous`).
 pub fn import_pou(
     text: &str,
     machine: Option<MachineId>,
@@ -85,21 +86,19 @@ pub fn import_pou(
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
     let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
-    let bodies: Vec<&Node> = chosen
-        .iter()
-        .filter_map(|p| p.child("body")?.child("LD"))
-        .collect();
+    let bodies: Vec<&Node> = chosen.iter().filter_map(|p| drawn_body(p)).collect();
     if bodies.is_empty() {
-        let with_ld: Vec<&str> = pous
+        let drawn: Vec<String> = pous
             .iter()
-            .filter(|p| p.child("body").and_then(|b| b.child("LD")).is_some())
-            .filter_map(|p| p.attr("name"))
+            .filter(|p| drawn_body(p).is_some())
+            .map(|p| pou_and_language(p))
             .collect();
-        let error = if with_ld.is_empty() {
-            ImportError::NoLdBody
+        let error = if drawn.is_empty() {
+            let all: Vec<String> = pous.iter().map(|p| pou_and_language(p)).collect();
+            ImportError::NoDrawnBody(all.join(", "))
         } else {
-            let run: Vec<&str> = chosen.iter().filter_map(|p| p.attr("name")).collect();
-            ImportError::NoLdInPrograms(run.join(", "), with_ld.join(", "))
+            let run: Vec<String> = chosen.iter().map(|p| pou_and_language(p)).collect();
+            ImportError::NoDrawnInPrograms(run.join(", "), drawn.join(", "))
         };
         return Err(vec![Located::new(root.line, error)]);
     }
@@ -107,10 +106,35 @@ pub fn import_pou(
         Some(m) => declare::names(&root, m, map),
         None => Names::none(),
     };
+    // Relays no variable uses: where a block's input is needed twice or
+    // negated, a relay holds its power (gates.rs).
+    let mut spares = match machine {
+        Some(m) => names.spare_relays(m, &devices_named(&bodies, &names)),
+        None => Vec::new(),
+    };
+    let mut helpers = Vec::new();
+    // The project's own POUs a block may call: (name, language).
+    let own_blocks: HashMap<String, (String, String)> = pous
+        .iter()
+        .filter_map(|p| {
+            let name = p.attr("name")?;
+            Some((
+                name.to_ascii_uppercase(),
+                (name.to_string(), language(p).to_string()),
+            ))
+        })
+        .collect();
     let mut ladder = Ladder::default();
     let mut errors = Vec::new();
     for ld in bodies {
-        match Body::read(ld, &names).and_then(|b| b.rungs(machine, &mut warnings)) {
+        let read = Body::read(ld, &names, &own_blocks).and_then(|mut b| {
+            b.spares = std::mem::take(&mut spares);
+            let rungs = b.rungs(machine, &mut warnings);
+            spares = std::mem::take(&mut b.spares);
+            helpers.append(&mut b.helpers);
+            rungs
+        });
+        match read {
             Ok(rungs) => {
                 for (logic, line) in rungs {
                     match try_layout(&logic) {
@@ -138,6 +162,13 @@ pub fn import_pou(
             ladder.device_comments.entry(device).or_insert(name);
         }
     }
+    for (relay, what, line) in helpers {
+        warnings.push(Located::new(
+            line,
+            format!("{relay} holds {what} (a relay the file does not use)"),
+        ));
+        ladder.device_comments.entry(relay).or_insert(what);
+    }
     // No machine here keeps a power-up value for a bit device.
     for (name, device, value, line) in names.starting_on() {
         if used.contains(&device) {
@@ -158,6 +189,71 @@ pub fn import_pou(
     })
 }
 
+/// A POU's LD or FBD body, if it has one: both draw the same graph of
+/// variables, blocks and connections (FBD without rails, contacts and
+/// coils), so one reader serves both.
+pub fn drawn_body(pou: &Node) -> Option<&Node> {
+    let body = pou.child("body")?;
+    body.child("LD").or_else(|| body.child("FBD"))
+}
+
+/// `name in LANGUAGE` for messages (`plc_prg in FBD`).
+fn pou_and_language(p: &Node) -> String {
+    format!("{} in {}", p.attr("name").unwrap_or_default(), language(p))
+}
+
+/// The language of a POU's body (`LD`, `ST`, `FBD`, `SFC`, `IL`).
+fn language(p: &Node) -> &str {
+    p.child("body")
+        .and_then(|b| {
+            b.children
+                .iter()
+                .find(|c| matches!(c.name.as_str(), "LD" | "ST" | "FBD" | "SFC" | "IL"))
+        })
+        .map_or("no body", |c| c.name.as_str())
+}
+
+/// Every device the elements of `bodies` name (as variables or as the
+/// machine's own devices): not spare.
+fn devices_named(bodies: &[&Node], names: &Names) -> HashSet<String> {
+    let mut out = HashSet::new();
+    for ld in bodies {
+        for n in &ld.children {
+            let text = match n.name.as_str() {
+                "contact" | "coil" => n.child("variable"),
+                "inVariable" | "outVariable" => n.child("expression"),
+                _ => None,
+            };
+            if let Some(Ok(device)) = text.map(|t| names.device(&t.text)) {
+                out.insert(device);
+            }
+        }
+    }
+    out
+}
+
+/// The POU of `root` named `wanted` (`--pou NAME`, any case), or an
+/// error listing the POUs there are.
+pub fn pou_named<'a>(root: &'a Node, wanted: &str) -> Result<&'a Node, ImportError> {
+    let mut pous = Vec::new();
+    root.descendants("pou", &mut pous);
+    named_pou(&pous, wanted)
+}
+
+fn named_pou<'a>(pous: &[&'a Node], wanted: &str) -> Result<&'a Node, ImportError> {
+    let wanted = wanted.trim();
+    pous.iter()
+        .copied()
+        .find(|p| {
+            p.attr("name")
+                .is_some_and(|n| n.eq_ignore_ascii_case(wanted))
+        })
+        .ok_or_else(|| {
+            let names: Vec<&str> = pous.iter().filter_map(|p| p.attr("name")).collect();
+            ImportError::NoSuchPou(wanted.to_string(), names.join(", "))
+        })
+}
+
 /// The POUs that run: `only` if given; else the programs the
 /// configurations instance (tasks' and resources' `pouInstance`), in that
 /// order; else every program; else every POU. Other POUs with an LD body
@@ -171,17 +267,9 @@ fn choose_pous<'a>(
 ) -> Result<Vec<&'a Node>, Errors> {
     let name = |p: &Node| p.attr("name").unwrap_or_default().to_ascii_lowercase();
     if let Some(only) = only {
-        let wanted = only.trim().to_ascii_lowercase();
-        return match pous.iter().find(|p| name(p) == wanted) {
-            Some(p) => Ok(vec![*p]),
-            None => {
-                let names: Vec<&str> = pous.iter().filter_map(|p| p.attr("name")).collect();
-                Err(vec![Located::new(
-                    root.line,
-                    ImportError::NoSuchPou(only.to_string(), names.join(", ")),
-                )])
-            }
-        };
+        return named_pou(pous, only)
+            .map(|p| vec![p])
+            .map_err(|e| vec![Located::new(root.line, e)]);
     }
     let mut instances = Vec::new();
     root.descendants("pouInstance", &mut instances);
@@ -205,8 +293,7 @@ fn choose_pous<'a>(
         return Ok(pous.to_vec());
     }
     for p in pous {
-        let has_ld = p.child("body").and_then(|b| b.child("LD")).is_some();
-        if has_ld && !chosen.iter().any(|c| std::ptr::eq(*c, *p)) {
+        if drawn_body(p).is_some() && !chosen.iter().any(|c| std::ptr::eq(*c, *p)) {
             let kind = p.attr("pouType").unwrap_or("POU");
             warnings.push(Located::new(
                 p.line,
@@ -221,43 +308,9 @@ fn choose_pous<'a>(
     Ok(chosen)
 }
 
-/// The boolean block `ty` as a gate, if it is one; a flip-flop needs a
-/// relay from the map for its instance.
-fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, ImportError> {
-    Ok(Some(match ty {
-        "AND" => GateKind::And,
-        "OR" => GateKind::Or,
-        "XOR" => GateKind::Xor,
-        "SR" | "RS" => {
-            if relay == written {
-                return Err(ImportError::Gate(
-                    format!("{ty} block {written}"),
-                    format!("its state needs a relay: map it (--map {written},M10)"),
-                ));
-            }
-            GateKind::Flip {
-                relay: relay.to_string(),
-                set_wins: ty == "SR",
-            }
-        }
-        _ => return Ok(None),
-    }))
-}
-
-/// A pin's name for messages ('static, as the errors keep it).
-fn pin_name(name: &str) -> &'static str {
-    match name {
-        "S1" => "S1",
-        "S" => "S",
-        "R" => "R",
-        "R1" => "R1",
-        _ => "IN",
-    }
-}
-
 /// Whether a variable box's expression is a variable's name (not a
 /// literal: `T#1s`, `10`, `TRUE`).
-fn is_variable_name(expr: &str) -> bool {
+pub(super) fn is_variable_name(expr: &str) -> bool {
     let e = expr.trim();
     let first = e.chars().next();
     first.is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
@@ -284,14 +337,22 @@ fn bit_device(e: &Element) -> Option<String> {
 pub(super) struct Body {
     pub(super) parent: Vec<usize>,
     points: HashMap<(String, String), usize>,
-    rails: HashSet<String>,
+    pub(super) rails: HashSet<String>,
     kinds: HashMap<String, (String, usize)>,
-    literals: HashMap<String, (String, usize)>,
+    /// Named connectors' inputs (by lower-case name) and lines; a
+    /// continuation of the same name carries what feeds them.
+    connectors: HashMap<String, (Node, usize)>,
+    /// Each continuation's connector name (lower case), by localId.
+    continuations: HashMap<String, String>,
+    /// The connectors being followed (a loop of them is refused).
+    following: HashSet<String>,
+    pub(super) literals: HashMap<String, (String, usize)>,
     /// Each block's EN connections: (refLocalId, formalParameter).
-    enables: HashMap<String, Vec<(String, String)>>,
+    pub(super) enables: HashMap<String, Vec<(String, String)>>,
     /// Variable boxes that feed power: a contact of their device from
-    /// the rail (the device, or why it has none; its place).
-    variables: HashMap<String, (Result<String, String>, Pos)>,
+    /// the rail, NC when the box is negated (or why the variable has no
+    /// device; its place).
+    variables: HashMap<String, (Result<Element, String>, Pos)>,
     /// Contacts and in-line blocks: (in point, out point, leaf, line).
     pub(super) edges: Vec<(usize, usize, Net, usize)>,
     /// Outputs: (in point, element, place, line).
@@ -303,15 +364,33 @@ pub(super) struct Body {
     pub(super) gates: Vec<Gate>,
     pub(super) gate_work: usize,
     comments: Vec<(usize, String)>,
+    /// Relays free to hold a network's power (the next is popped), and
+    /// those taken: (relay, what it holds, line).
+    pub(super) spares: Vec<String>,
+    pub(super) helpers: Vec<(String, String, usize)>,
+    /// Devices a block writes whose rungs run before any rung reading
+    /// them (counters, split timers; helpers too), as the origin tool
+    /// runs a block before what its outputs feed.
+    pub(super) ordered: Vec<String>,
+    /// Each comparison's `CMP` (its place), the relay its result is
+    /// copied to (the copy runs right after the CMP) and its operands
+    /// (what writes them runs before it).
+    pub(super) compares: Vec<(Pos, String, [String; 2])>,
+    /// The machine the body is read for.
+    pub(super) machine: Option<MachineId>,
     /// What is worth saying but does not stop the import.
-    warnings: Vec<Located<String>>,
+    pub(super) warnings: Vec<Located<String>>,
     errors: Errors,
 }
 
 pub(super) const RAIL: usize = 0;
 
 impl Body {
-    fn read(ld: &Node, names: &Names) -> Result<Body, Errors> {
+    fn read(
+        ld: &Node,
+        names: &Names,
+        own_blocks: &HashMap<String, (String, String)>,
+    ) -> Result<Body, Errors> {
         let mut b = Body {
             parent: vec![RAIL],
             ..Body::default()
@@ -342,13 +421,27 @@ impl Body {
                 "leftPowerRail" => {
                     b.rails.insert(id.to_string());
                 }
+                "connector" => {
+                    let name = connector_name(n);
+                    let input = n.child("connectionPointIn").cloned().unwrap_or_default();
+                    if let Some((_, first)) = b.connectors.get(&name) {
+                        b.errors.push(Located::new(
+                            n.line,
+                            ImportError::DuplicateConnector {
+                                name: n.attr("name").unwrap_or_default().to_string(),
+                                first: *first,
+                            },
+                        ));
+                    } else {
+                        b.connectors.insert(name, (input, n.line));
+                    }
+                }
+                "continuation" => {
+                    let name = connector_name(n);
+                    b.continuations.insert(id.to_string(), name);
+                }
                 "block" => {
-                    let en = n
-                        .child("inputVariables")
-                        .and_then(|v| {
-                            v.all("variable")
-                                .find(|p| p.attr("formalParameter") == Some("EN"))
-                        })
+                    let en = blocks::pin_of(n, "EN")
                         .and_then(|p| p.child("connectionPointIn"))
                         .map(|c| {
                             c.all("connection")
@@ -372,8 +465,14 @@ impl Body {
                     if is_variable_name(&expr) {
                         let (y, x) = position(n);
                         let at = Pos::new(y, x * 65_536 + b.kinds.len());
-                        b.variables
-                            .insert(id.to_string(), (names.device(expr.trim()), at));
+                        // A bad `negated` is refused at its line by `element`.
+                        let contact = if negated(n).unwrap_or(false) {
+                            Element::nc
+                        } else {
+                            Element::no
+                        };
+                        let device = names.device(expr.trim()).map(|d| contact(&d));
+                        b.variables.insert(id.to_string(), (device, at));
                     }
                     b.literals.insert(id.to_string(), (expr, n.line));
                 }
@@ -381,7 +480,7 @@ impl Body {
             }
         }
         for (seq, n) in ld.children.iter().enumerate() {
-            if let Err(m) = b.element(n, seq, names) {
+            if let Err(m) = b.element(n, seq, names, own_blocks) {
                 b.errors.push(Located::new(n.line, m));
             }
         }
@@ -392,7 +491,7 @@ impl Body {
         }
     }
 
-    fn point(&mut self, id: &str, pin: &str) -> usize {
+    pub(super) fn point(&mut self, id: &str, pin: &str) -> usize {
         if self.rails.contains(id) {
             return RAIL;
         }
@@ -406,9 +505,9 @@ impl Body {
         p
     }
 
-    /// The point after variable box `id`'s contact of `device` (made
-    /// once, from the rail).
-    fn variable_point(&mut self, id: &str, device: String, at: Pos) -> usize {
+    /// The point after variable box `id`'s `contact` (made once, from
+    /// the rail).
+    fn variable_point(&mut self, id: &str, contact: Element, at: Pos) -> usize {
         let key = (id.to_string(), "var".to_string());
         if let Some(&p) = self.points.get(&key) {
             return p;
@@ -416,8 +515,7 @@ impl Body {
         let p = self.point(id, "var");
         let line = self.kinds.get(id).map_or(1, |(_, l)| *l);
         self.consumed.push(RAIL);
-        self.edges
-            .push((RAIL, p, Net::Leaf(Element::no(&device), at), line));
+        self.edges.push((RAIL, p, Net::Leaf(contact, at), line));
         p
     }
 
@@ -439,7 +537,7 @@ impl Body {
     }
 
     /// The point a `connectionPointIn` joins, or an error when it joins none.
-    fn join(&mut self, cpi: Option<&Node>, what: &str) -> Result<usize, ImportError> {
+    pub(super) fn join(&mut self, cpi: Option<&Node>, what: &str) -> Result<usize, ImportError> {
         let fail = |problem| ImportError::Connection {
             what: what.to_string(),
             problem,
@@ -453,25 +551,21 @@ impl Body {
                 return Err(fail(Connection::NoRef));
             };
             let kind = self.kinds.get(r).map(|(k, _)| k.clone());
-            let pin = match kind.as_deref() {
+            let p = match kind.as_deref() {
                 None => return Err(fail(Connection::Missing(r.to_string()))),
-                Some("block") => c.attr("formalParameter").unwrap_or("Q").to_string(),
+                Some("continuation") => self.follow_connector(r, what)?,
+                Some("block") => {
+                    let pin = c.attr("formalParameter").unwrap_or("Q");
+                    self.point(r, pin)
+                }
                 Some("inVariable") => match self.variables.get(r).cloned() {
                     // A BOOL variable feeding power: its contact.
-                    Some((Ok(device), at)) => {
-                        let p = self.variable_point(r, device, at);
-                        match joined {
-                            None => joined = Some(p),
-                            Some(j) => self.union(j, p),
-                        }
-                        continue;
-                    }
+                    Some((Ok(contact), at)) => self.variable_point(r, contact, at),
                     Some((Err(why), _)) => return Err(ImportError::Variable(why)),
                     None => return Err(fail(Connection::FromVariable(r.to_string()))),
                 },
-                Some(_) => String::new(),
+                Some(_) => self.point(r, ""),
             };
-            let p = self.point(r, &pin);
             match joined {
                 None => joined = Some(p),
                 Some(j) => self.union(j, p),
@@ -480,7 +574,35 @@ impl Body {
         joined.ok_or_else(|| fail(Connection::Unconnected))
     }
 
-    fn element(&mut self, n: &Node, seq: usize, names: &Names) -> Result<(), ImportError> {
+    /// The point continuation `id` carries: what feeds the connector of
+    /// its name (a continuation is the connector's wire, drawn apart).
+    fn follow_connector(&mut self, id: &str, what: &str) -> Result<usize, ImportError> {
+        let fail = |problem| ImportError::Connection {
+            what: what.to_string(),
+            problem,
+        };
+        let name = self.continuations.get(id).cloned().unwrap_or_default();
+        let Some((input, _)) = self.connectors.get(&name).cloned() else {
+            return Err(fail(Connection::NoConnector(name)));
+        };
+        if self.following.len() >= crate::limits::MAX_CONNECTOR_CHAIN {
+            return Err(fail(Connection::ConnectorChain(name)));
+        }
+        if !self.following.insert(name.clone()) {
+            return Err(fail(Connection::ConnectorLoop(name)));
+        }
+        let joined = self.join(Some(&input), &format!("connector {name}"));
+        self.following.remove(&name);
+        joined
+    }
+
+    fn element(
+        &mut self,
+        n: &Node,
+        seq: usize,
+        names: &Names,
+        own_blocks: &HashMap<String, (String, String)>,
+    ) -> Result<(), ImportError> {
         let id = n.attr("localId").unwrap_or_default().to_string();
         let (y, x) = position(n);
         let pos = Pos::new(y, x * 65_536 + seq);
@@ -538,8 +660,23 @@ impl Body {
                 self.union(input, out);
                 self.outputs.push((input, element, pos, n.line));
             }
-            "block" => self.block(n, &id, pos, names)?,
-            "leftPowerRail" | "rightPowerRail" | "inVariable" | "comment" => {}
+            "block" => {
+                let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
+                if let Some((name, language)) = own_blocks.get(&ty) {
+                    return Err(ImportError::ProjectBlock(name.clone(), language.clone()));
+                }
+                if !blocks::is_known(&ty) {
+                    return Err(ImportError::UnsupportedBlock(ty));
+                }
+                blocks::plain_pins(n, &ty)?;
+                self.block(n, &id, pos, names)?
+            }
+            "inVariable" => {
+                negated(n)?;
+            }
+            // Read where a continuation names them (`Body::join`).
+            "connector" | "continuation" => {}
+            "leftPowerRail" | "rightPowerRail" | "comment" => {}
             "outVariable" => self.out_variable(n, pos, names)?,
             "vendorElement" => {
                 let what = n
@@ -555,96 +692,6 @@ impl Body {
             "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
             other => return Err(ImportError::Unsupported(other.to_string())),
         }
-        Ok(())
-    }
-
-    /// A block's EN (its connections read with the body, `enables`):
-    /// open, or from the rail, a literal TRUE or an always-running
-    /// block's ENO, it always runs, as Hashigo's blocks do; wired to
-    /// anything else it is refused (never ignored).
-    fn check_enable(&self, id: &str, ty: &str, instance: &str) -> Result<(), ImportError> {
-        let refs = self.enables.get(id).map_or(&[][..], Vec::as_slice);
-        if self.always_enabled(refs, 0) {
-            return Ok(());
-        }
-        Err(ImportError::Gate(
-            format!("{ty} block {instance}").trim().to_string(),
-            "its EN is wired: Hashigo's blocks always run; connect EN to the left rail or leave it open".into(),
-        ))
-    }
-
-    /// Whether EN connections `refs` always carry power: from the rail, a
-    /// literal TRUE, or another block's ENO whose own EN always does
-    /// (OpenPLC Editor chains EN to ENO); `depth` bounds the chain.
-    fn always_enabled(&self, refs: &[(String, String)], depth: usize) -> bool {
-        depth < 64
-            && refs.iter().all(|(r, pin)| {
-                self.rails.contains(r)
-                    || self
-                        .literals
-                        .get(r)
-                        .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("TRUE"))
-                    || (pin.eq_ignore_ascii_case("ENO")
-                        && self
-                            .enables
-                            .get(r)
-                            .is_some_and(|en| self.always_enabled(en, depth + 1)))
-            })
-    }
-
-    /// A boolean block: its inputs joined, its output a point, lowered
-    /// once the whole body is read ([`super::gates`]).
-    fn gate(
-        &mut self,
-        n: &Node,
-        id: &str,
-        pos: Pos,
-        kind: GateKind,
-        ty: &str,
-        instance: &str,
-    ) -> Result<(), ImportError> {
-        let what = format!("{ty} block {instance}").trim().to_string();
-        let pins: Vec<&Node> = n
-            .child("inputVariables")
-            .map(|v| v.all("variable").collect())
-            .unwrap_or_default();
-        let order: Vec<&str> = match kind {
-            GateKind::Flip { .. } => vec![
-                if ty == "SR" { "S1" } else { "S" },
-                if ty == "SR" { "R" } else { "R1" },
-            ],
-            _ => pins
-                .iter()
-                .filter_map(|v| v.attr("formalParameter"))
-                .collect(),
-        };
-        let mut inputs = Vec::new();
-        for name in order {
-            let v = pins
-                .iter()
-                .find(|v| v.attr("formalParameter") == Some(name))
-                .ok_or_else(|| ImportError::PinNotConnected(what.clone(), pin_name(name)))?;
-            let p = self.join(v.child("connectionPointIn"), &what)?;
-            self.consumed.push(p);
-            inputs.push(p);
-        }
-        if inputs.len() < 2 {
-            return Err(ImportError::Gate(what, "it needs two inputs".into()));
-        }
-        let out_pin = if matches!(kind, GateKind::Flip { .. }) {
-            "Q1"
-        } else {
-            "OUT"
-        };
-        let out = self.point(id, out_pin);
-        self.gates.push(Gate {
-            kind,
-            inputs,
-            out,
-            pos,
-            line: n.line,
-            what,
-        });
         Ok(())
     }
 
@@ -692,143 +739,14 @@ impl Body {
         Ok(())
     }
 
-    fn block(&mut self, n: &Node, id: &str, pos: Pos, names: &Names) -> Result<(), ImportError> {
-        let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
-        let written = n.attr("instanceName").unwrap_or_default();
-        // A map may give the instance a device (`TON0,T00`).
-        let instance = names
-            .instance(written)
-            .unwrap_or_else(|| written.to_string());
-        let inputs: Vec<&Node> = n
-            .child("inputVariables")
-            .map(|v| v.all("variable").collect())
-            .unwrap_or_default();
-        let pin = |name: &str| {
-            inputs
-                .iter()
-                .copied()
-                .find(|v| v.attr("formalParameter") == Some(name))
-        };
-        self.check_enable(id, &ty, written)?;
-        if let Some(kind) = gate_kind(&ty, &instance, written)? {
-            return self.gate(n, id, pos, kind, &ty, written);
-        }
-        let (power_in, power_out) = match ty.as_str() {
-            "TON" | "TOF" | "TP" | "NOT" => ("IN", if ty == "NOT" { "OUT" } else { "Q" }),
-            "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
-            "CTU" => ("CU", "Q"),
-            _ => return Err(ImportError::UnsupportedBlock(ty)),
-        };
-        let what = format!("{ty} block {instance}");
-        let input = self.join(
-            pin(power_in).and_then(|v| v.child("connectionPointIn")),
-            &what,
-        )?;
-        self.consumed.push(input);
-        // A counter's R: a reset coil on the counter, fed as R is (a
-        // literal FALSE resets nothing).
-        let reset = pin("R")
-            .and_then(|v| v.child("connectionPointIn"))
-            .filter(|c| c.child("connection").is_some());
-        if ty == "CTU" {
-            if let Some(cpi) = reset {
-                let constant = cpi
-                    .child("connection")
-                    .and_then(|c| c.attr("refLocalId"))
-                    .and_then(|r| self.literals.get(r))
-                    .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("FALSE"));
-                if !constant {
-                    let p = self.join(Some(cpi), &what)?;
-                    self.consumed.push(p);
-                    let at = Pos::new(pos.row, pos.col.wrapping_add(1));
-                    self.outputs
-                        .push((p, coil(CoilKind::Reset, instance.clone()), at, n.line));
-                }
-            }
-        }
-        let literal = |name: &'static str| -> Result<(String, usize), ImportError> {
-            let unconnected = || ImportError::PinNotConnected(what.clone(), name);
-            let v = pin(name).ok_or_else(unconnected)?;
-            let r = v
-                .child("connectionPointIn")
-                .and_then(|c| c.child("connection"))
-                .and_then(|c| c.attr("refLocalId"))
-                .ok_or_else(unconnected)?;
-            self.literals
-                .get(r)
-                .cloned()
-                .ok_or_else(|| ImportError::PinNotLiteral(what.clone(), name))
-        };
-        let element = match ty.as_str() {
-            "TON" | "TOF" | "TP" => {
-                let (expr, _) = literal("PT")?;
-                // A literal, or a variable declared with one.
-                let preset_ms = parse_time_literal(&expr)
-                    .or_else(|| names.initial(&expr).and_then(parse_time_literal))
-                    .ok_or_else(|| ImportError::BadTimeLiteral(what.clone(), expr.to_string()))?;
-                let kind = match ty.as_str() {
-                    "TON" => TimerKind::Ton,
-                    "TOF" => TimerKind::Tof,
-                    _ => TimerKind::Tp,
-                };
-                // A TOF or TP mapped to a timer and a relay (`T01+M20`):
-                // built from the machine's on-delay timer coil.
-                if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == "TON") {
-                    let coil = timer_coil(timer.trim(), preset_ms)?;
-                    let kind = GateKind::Delay {
-                        coil,
-                        timer: timer.trim().to_string(),
-                        relay: relay.trim().to_string(),
-                        pulse: ty == "TP",
-                    };
-                    let out = self.point(id, "Q");
-                    self.gates.push(Gate {
-                        kind,
-                        inputs: vec![input],
-                        out,
-                        pos,
-                        line: n.line,
-                        what,
-                    });
-                    return Ok(());
-                }
-                Element::Timer {
-                    kind,
-                    name: instance.clone(),
-                    preset_ms,
-                }
-            }
-            "CTU" => {
-                let (expr, _) = literal("PV")?;
-                let value = names.initial(&expr).unwrap_or(&expr).trim().to_string();
-                let preset: u16 = value
-                    .parse()
-                    .ok()
-                    .filter(|&k| k <= 32767)
-                    .ok_or_else(|| ImportError::BadCounterPreset(what.clone(), expr.clone()))?;
-                Element::CounterCoil {
-                    device: instance.clone(),
-                    preset,
-                }
-            }
-            "R_TRIG" | "F_TRIG" => Element::Edge {
-                falling: ty == "F_TRIG",
-            },
-            _ => Element::Not,
-        };
-        let out = self.point(id, power_out);
-        self.edges
-            .push((input, out, Net::Leaf(element, pos), n.line));
-        Ok(())
-    }
-
     /// The rungs, each with the XML line of its first output.
     fn rungs(
-        mut self,
+        &mut self,
         machine: Option<MachineId>,
         warnings: &mut Vec<Located<String>>,
     ) -> Result<Vec<(RungLogic, usize)>, Errors> {
         warnings.append(&mut self.warnings);
+        self.machine = machine;
         self.lower_gates()?;
         let (mut edges, mut lines) = self.graph(machine)?;
         if let Some(m) = machine {
@@ -847,8 +765,7 @@ impl Body {
             outs.sort_by_key(|(_, p, _)| *p);
             if *bus == rail && machine == Some(MachineId::Io86a) {
                 // Always on: IO86A's M57 (ON) carries the rail to it.
-                let q = self.parent.len();
-                self.parent.push(q);
+                let q = self.fresh();
                 let (_, p, line) = &outs[0];
                 let at = Pos::new(p.row, p.col.wrapping_sub(1));
                 lines.insert(at, *line);
@@ -897,14 +814,15 @@ impl Body {
                 }
             }
         }
-        if errors.is_empty() {
-            errors.extend(unused(&edges, &rungs, &lines));
-        }
         if !errors.is_empty() {
             return Err(errors);
         }
+        // Logic that reaches no coil has no effect in the tool that drew
+        // it either (the right rail is no output): said, not kept.
+        warnings.extend(unused(&edges, &rungs, &lines));
         rungs.sort_by_key(|(top, _, _)| *top);
         self.attach_comments(&mut rungs);
+        self.helpers_first(&mut rungs);
         Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
     }
 
@@ -981,6 +899,37 @@ impl Body {
                         let wired = ImportError::CounterQWired(device.clone());
                         return Err(vec![Located::new(line, wired)]);
                     }
+                    (Element::Not | Element::Edge { .. }, _)
+                        if machine.is_some_and(|m| check_element(m, e).is_err()) =>
+                    {
+                        // No in-line box on this machine: a relay holds
+                        // the box's input, and its NC (NOT) or edge
+                        // contact gives the box's output.
+                        let what = match e {
+                            Element::Not => "NOT block".to_string(),
+                            Element::Edge { falling: true } => "F_TRIG block".to_string(),
+                            _ => "R_TRIG block".to_string(),
+                        };
+                        let at = Pos::new(pos.row, pos.col.wrapping_sub(1));
+                        let device = self
+                            .hold_in_relay(a, &format!("{what}'s input"), line, at)
+                            .map_err(|why| {
+                                vec![Located::new(line, ImportError::Gate(what, why))]
+                            })?;
+                        let kind = match e {
+                            Element::Not => ContactKind::Nc,
+                            Element::Edge { falling: true } => ContactKind::Falling,
+                            _ => ContactKind::Rising,
+                        };
+                        lines.insert(*pos, line);
+                        let rail = self.find(RAIL);
+                        edges.push(Edge {
+                            from: rail,
+                            to: b,
+                            net: Net::Leaf(Element::Contact { kind, device }, *pos),
+                        });
+                        continue;
+                    }
                     _ => {}
                 }
             }
@@ -1006,6 +955,9 @@ impl Body {
         line: usize,
         (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
     ) {
+        if let Some(d) = coil.written_device() {
+            self.ordered.push(d.to_string());
+        }
         self.outputs.push((a, coil, pos, line));
         let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
         lines.insert(at, line);
@@ -1044,6 +996,82 @@ impl Body {
         }
     }
 
+    /// A block runs before what its outputs feed ([`super::order`]): the
+    /// rungs writing a relay that holds a block's input or result
+    /// ([`Body::helpers`]), or a device in [`Body::ordered`], run before
+    /// the rungs reading it; then each comparison's `CMP` goes right
+    /// before the copy of its flag.
+    fn helpers_first(&self, rungs: &mut Vec<(Pos, RungLogic, usize)>) {
+        let mut touches: BTreeMap<&str, (Vec<usize>, Vec<usize>)> = self
+            .helpers
+            .iter()
+            .map(|(d, _, _)| d.as_str())
+            .chain(self.ordered.iter().map(String::as_str))
+            .map(|d| (d, (Vec::new(), Vec::new())))
+            .collect();
+        if touches.is_empty() {
+            return;
+        }
+        for (i, (_, r, _)) in rungs.iter().enumerate() {
+            for (e, _) in &r.outputs {
+                if let Some(t) = e.written_device().and_then(|d| touches.get_mut(d)) {
+                    t.0.push(i);
+                }
+            }
+            for (e, _) in r.condition.leaves() {
+                if let Some(t) = e.read_device().and_then(|d| touches.get_mut(d)) {
+                    t.1.push(i);
+                }
+            }
+        }
+        // A reset wins over a count or a set in the same scan (CTU's R,
+        // CTD's LD, R of a CTUD's QD relay): the rung resetting runs after
+        // the rungs counting or setting.
+        let mut wins: BTreeMap<&str, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
+        for (i, (_, r, _)) in rungs.iter().enumerate() {
+            for (e, _) in &r.outputs {
+                let Some(d) = e.written_device().filter(|d| touches.contains_key(d)) else {
+                    continue;
+                };
+                let entry = wins.entry(d).or_default();
+                match e {
+                    Element::Coil {
+                        kind: CoilKind::Reset,
+                        ..
+                    } => entry.1.push(i),
+                    _ => entry.0.push(i),
+                }
+            }
+        }
+        // A comparison reads its operands after this scan's writes, and
+        // its flag is copied after it.
+        let mut compared = Vec::new();
+        for (at, relay, [a, b]) in &self.compares {
+            let Some(cmp) = rung_at(rungs, at) else {
+                continue;
+            };
+            compared.push((vec![cmp], writing(rungs, &[relay])));
+            compared.push((writing(rungs, &[a, b]), vec![cmp]));
+        }
+        let constraints: Vec<(Vec<usize>, Vec<usize>)> = touches
+            .into_values()
+            .chain(wins.into_values())
+            .chain(compared)
+            .collect();
+        let order = super::order::writers_first(rungs.len(), &constraints);
+        let mut taken: Vec<Option<(Pos, RungLogic, usize)>> =
+            std::mem::take(rungs).into_iter().map(Some).collect();
+        rungs.extend(order.into_iter().filter_map(|i| taken.get_mut(i)?.take()));
+        for (at, relay, _) in &self.compares {
+            let copy = writing(rungs, &[relay]).first().copied();
+            if let (Some(c), Some(k)) = (rung_at(rungs, at), copy) {
+                let rung = rungs.remove(c);
+                let k = if c < k { k - 1 } else { k };
+                rungs.insert(k, rung);
+            }
+        }
+    }
+
     /// A comment belongs to the first rung at or below it.
     fn attach_comments(&mut self, rungs: &mut [(Pos, RungLogic, usize)]) {
         for (y, text) in std::mem::take(&mut self.comments) {
@@ -1060,23 +1088,45 @@ impl Body {
     }
 }
 
-/// The first element that no rung uses: it leads to no coil.
+/// The rungs that write one of `devices`, in order.
+fn writing(rungs: &[(Pos, RungLogic, usize)], devices: &[&String]) -> Vec<usize> {
+    (0..rungs.len())
+        .filter(|&i| {
+            rungs[i].1.outputs.iter().any(|(e, _)| {
+                e.written_device()
+                    .is_some_and(|d| devices.iter().any(|w| w.as_str() == d))
+            })
+        })
+        .collect()
+}
+
+/// The rung with an output placed at `at`.
+fn rung_at(rungs: &[(Pos, RungLogic, usize)], at: &Pos) -> Option<usize> {
+    rungs
+        .iter()
+        .position(|(_, x, _)| x.outputs.iter().any(|(_, p)| p == at))
+}
+
+/// The elements no rung uses: they lead to no coil (a warning each).
 fn unused(
     edges: &[Edge],
     rungs: &[(Pos, RungLogic, usize)],
     lines: &HashMap<Pos, usize>,
-) -> Option<Located<ImportError>> {
+) -> Vec<Located<String>> {
     let used: HashSet<Pos> = rungs
         .iter()
         .flat_map(|(_, r, _)| r.condition.leaves().into_iter().map(|(_, p)| p))
         .collect();
-    edges.iter().find_map(|e| match &e.net {
-        Net::Leaf(leaf, p) if !used.contains(p) => Some(Located::new(
-            lines.get(p).copied().unwrap_or(1),
-            ImportError::LeadsNowhere(leaf.to_string()),
-        )),
-        _ => None,
-    })
+    edges
+        .iter()
+        .filter_map(|e| match &e.net {
+            Net::Leaf(leaf, p) if !used.contains(p) => Some(Located::new(
+                lines.get(p).copied().unwrap_or(1),
+                format!("{leaf} leads to no coil: dropped"),
+            )),
+            _ => None,
+        })
+        .collect()
 }
 
 fn top(r: &RungLogic) -> Pos {
@@ -1088,12 +1138,12 @@ fn top(r: &RungLogic) -> Pos {
         .unwrap_or(Pos::new(0, 0))
 }
 
-fn coil(kind: CoilKind, device: String) -> Element {
+pub(super) fn coil(kind: CoilKind, device: String) -> Element {
     Element::Coil { kind, device }
 }
 
 /// `OUT Tnn K…` from a TON named like an IO86A timer.
-fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, ImportError> {
+pub(super) fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, ImportError> {
     let Ok(Bit::T(n)) = parse_bit(name) else {
         return Err(ImportError::TimerName(name.to_string()));
     };
@@ -1115,9 +1165,17 @@ fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, ImportError> {
     })
 }
 
+/// A connector's or continuation's name as they are matched: any case.
+fn connector_name(n: &Node) -> String {
+    n.attr("name")
+        .unwrap_or_default()
+        .trim()
+        .to_ascii_lowercase()
+}
+
 /// An XML Schema boolean attribute (`true`, `false`, `1`, `0`); absent
 /// is false.
-fn negated(n: &Node) -> Result<bool, ImportError> {
+pub(super) fn negated(n: &Node) -> Result<bool, ImportError> {
     match n.attr("negated").map(str::trim) {
         None | Some("false" | "0") => Ok(false),
         Some("true" | "1") => Ok(true),
@@ -1126,7 +1184,7 @@ fn negated(n: &Node) -> Result<bool, ImportError> {
 }
 
 /// The `edge` attribute: `None` for none, else `rising` or `falling`.
-fn edge(n: &Node) -> Result<Option<&'static str>, ImportError> {
+pub(super) fn edge(n: &Node) -> Result<Option<&'static str>, ImportError> {
     match n.attr("edge").map(str::trim) {
         None | Some("none") => Ok(None),
         Some("rising") => Ok(Some("rising")),

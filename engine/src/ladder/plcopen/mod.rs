@@ -5,17 +5,19 @@
 //! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
 //! - [`export`](mod@export): rungs to a project file both tools open.
 
+mod blocks;
 pub mod declare;
 pub mod dom;
 pub mod error;
 pub mod export;
 mod gates;
 pub mod import;
+mod order;
 
 pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
-pub use import::{import, import_for, import_mapped, import_pou, Imported};
+pub use import::{drawn_body, import, import_for, import_mapped, import_pou, pou_named, Imported};
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";

@@ -1,0 +1,596 @@
+//! Blocks from other tools read into the body's graph (issue #18): the
+//! timers, counters and edge boxes as elements, the boolean blocks and
+//! flip-flops as gates to lower (gates.rs), CTD / CTUD on the machines'
+//! up-counters and the comparisons as IO86A's `CMP`; a block's EN
+//! honoured or refused; an unknown block named as such.
+
+use super::declare::Names;
+use super::dom::Node;
+use super::error::ImportError;
+use super::gates::{Gate, GateKind};
+use super::import::{coil, edge, is_variable_name, negated, timer_coil, Body};
+use super::parse_time_literal;
+use crate::error::Located;
+use crate::ladder::element::{CoilKind, Element, TimerKind};
+use crate::ladder::grid::Pos;
+use crate::ladder::net::Net;
+
+/// The boolean block `ty` as a gate, if it is one; a flip-flop needs a
+/// relay from the map for its instance.
+fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, ImportError> {
+    Ok(Some(match ty {
+        "AND" => GateKind::And,
+        "OR" => GateKind::Or,
+        "XOR" => GateKind::Xor,
+        "SR" | "RS" => {
+            if relay == written {
+                return Err(ImportError::Gate(
+                    format!("{ty} block {written}"),
+                    format!("its state needs a relay: map it (--map {written},M10)"),
+                ));
+            }
+            GateKind::Flip {
+                relay: relay.to_string(),
+                set_wins: ty == "SR",
+            }
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// The blocks Hashigo has a ladder form for, and the comparisons
+/// ([`compare_flag`]): checked before anything else about a block, so
+/// that an unknown one is named as such, and listed in that message.
+pub(super) const KNOWN_BLOCKS: &[&str] = &[
+    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "NOT", "AND", "OR", "XOR", "SR",
+    "RS",
+];
+pub(super) const COMPARISONS: &[&str] = &["GT", "GE", "EQ", "NE", "LE", "LT"];
+
+/// Whether Hashigo has a ladder form for block type `ty` (upper case).
+pub(super) fn is_known(ty: &str) -> bool {
+    KNOWN_BLOCKS.contains(&ty) || COMPARISONS.contains(&ty)
+}
+
+/// The flag IO86A's `CMP a b` leaves for a comparison block, and
+/// whether the block is true when it is on (M60 a > b, M61 a = b, M62
+/// a < b; GE is "not a < b").
+fn compare_flag(ty: &str) -> Option<(&'static str, bool)> {
+    Some(match ty {
+        "GT" => ("M60", true),
+        "GE" => ("M62", false),
+        "EQ" => ("M61", true),
+        "NE" => ("M61", false),
+        "LE" => ("M60", false),
+        "LT" => ("M62", true),
+        _ => return None,
+    })
+}
+
+/// `TOF block TOF0`, with the device the map gives it when another
+/// (`TOF block TOF0 (T01+M20)`).
+fn block_label(ty: &str, written: &str, instance: &str) -> String {
+    match (written.trim(), instance) {
+        ("", d) => format!("{ty} block {d}"),
+        (w, d) if w == d => format!("{ty} block {w}"),
+        (w, d) => format!("{ty} block {w} ({d})"),
+    }
+}
+
+/// A literal that never carries power: `FALSE`, `0`, `BOOL#FALSE`.
+fn is_false(expr: &str) -> bool {
+    let v = expr.trim();
+    let v = v
+        .get(..5)
+        .filter(|p| p.eq_ignore_ascii_case("BOOL#"))
+        .map_or(v, |_| &v[5..]);
+    v.eq_ignore_ascii_case("FALSE") || v == "0"
+}
+
+/// A counter's PV: a whole number 1..32767, or a variable declared with one.
+fn counter_preset(expr: &str, names: &Names, what: &str) -> Result<u16, ImportError> {
+    let value = names.initial(expr).unwrap_or(expr).trim();
+    value
+        .parse()
+        .ok()
+        // PV 0 is done from the start in IEC, while the machines' reset
+        // turns a counter's contact off: not the same program.
+        .filter(|&k| (1..=32767).contains(&k))
+        .ok_or_else(|| ImportError::BadCounterPreset(what.to_string(), expr.to_string()))
+}
+
+/// A block's input pin `name`.
+pub(super) fn pin_of<'a>(n: &'a Node, name: &str) -> Option<&'a Node> {
+    n.child("inputVariables")?
+        .all("variable")
+        .find(|v| v.attr("formalParameter") == Some(name))
+}
+
+/// Refuses a block whose pins carry a negation circle or an edge mark
+/// (FBD draws them on the pin; the block would read the pin as drawn
+/// without it): a NOT, R_TRIG or F_TRIG block in front says the same.
+/// A rising mark on a counter's CU or CD is what the counter does.
+/// A mark that is no XML boolean or edge is refused, as on a contact.
+pub(super) fn plain_pins(n: &Node, ty: &str) -> Result<(), ImportError> {
+    let pins = ["inputVariables", "outputVariables"]
+        .into_iter()
+        .filter_map(|side| n.child(side))
+        .flat_map(|side| side.all("variable"));
+    for pin in pins {
+        let name = pin.attr("formalParameter").unwrap_or("?");
+        // A counter counts CU's / CD's rises already: OpenPLC marks them
+        // rising (their R_EDGE declaration), and a rise of that is the same.
+        let counts_rises = matches!(name, "CU" | "CD");
+        let edge = edge(pin)?.filter(|e| !(counts_rises && *e == "rising"));
+        let negated = negated(pin)?;
+        let mark = match (negated, edge) {
+            (true, _) => "negated: put a NOT block on it instead".to_string(),
+            (false, Some(e)) => format!("marked {e}: put an R_TRIG or F_TRIG block on it instead"),
+            (false, None) => continue,
+        };
+        return Err(ImportError::Gate(
+            format!("{ty} block"),
+            format!("its pin {name} is {mark}"),
+        ));
+    }
+    Ok(())
+}
+
+/// A pin's name for messages ('static, as the errors keep it).
+fn pin_name(name: &str) -> &'static str {
+    match name {
+        "S1" => "S1",
+        "S" => "S",
+        "R" => "R",
+        "R1" => "R1",
+        "CU" => "CU",
+        "CD" => "CD",
+        _ => "IN",
+    }
+}
+
+/// The input pins of a comparison Hashigo reads, in order (IEC extends
+/// GT, GE, EQ, LE and LT to more inputs).
+const COMPARED: [&str; 8] = ["IN1", "IN2", "IN3", "IN4", "IN5", "IN6", "IN7", "IN8"];
+
+impl Body {
+    /// A block's EN (its connections read with the body, `enables`):
+    /// open, or from the rail, a literal TRUE or an always-running
+    /// block's ENO, it always runs, as Hashigo's blocks do; wired to
+    /// anything else it is refused (never ignored).
+    fn check_enable(&self, id: &str, ty: &str, instance: &str) -> Result<(), ImportError> {
+        let refs = self.enables.get(id).map_or(&[][..], Vec::as_slice);
+        if self.always_enabled(refs, 0) {
+            return Ok(());
+        }
+        Err(ImportError::Gate(
+            format!("{ty} block {instance}").trim().to_string(),
+            "its EN is wired: Hashigo's blocks always run; connect EN to the left rail or leave it open".into(),
+        ))
+    }
+
+    /// Whether EN connections `refs` always carry power: from the rail, a
+    /// literal TRUE, or another block's ENO whose own EN always does
+    /// (OpenPLC Editor chains EN to ENO); `depth` bounds the chain.
+    fn always_enabled(&self, refs: &[(String, String)], depth: usize) -> bool {
+        depth < 64
+            && refs.iter().all(|(r, pin)| {
+                self.rails.contains(r)
+                    || self
+                        .literals
+                        .get(r)
+                        .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("TRUE"))
+                    || (pin.eq_ignore_ascii_case("ENO")
+                        && self
+                            .enables
+                            .get(r)
+                            .is_some_and(|en| self.always_enabled(en, depth + 1)))
+            })
+    }
+
+    /// A boolean block: its inputs joined, its output a point, lowered
+    /// once the whole body is read ([`super::gates`]).
+    fn gate(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        kind: GateKind,
+        ty: &str,
+        instance: &str,
+    ) -> Result<(), ImportError> {
+        let what = format!("{ty} block {instance}").trim().to_string();
+        let pins: Vec<&Node> = n
+            .child("inputVariables")
+            .map(|v| v.all("variable").collect())
+            .unwrap_or_default();
+        let order: Vec<&str> = match kind {
+            GateKind::Flip { .. } => vec![
+                if ty == "SR" { "S1" } else { "S" },
+                if ty == "SR" { "R" } else { "R1" },
+            ],
+            _ => pins
+                .iter()
+                .filter_map(|v| v.attr("formalParameter"))
+                .collect(),
+        };
+        let mut inputs = Vec::new();
+        for name in order {
+            let v = pins
+                .iter()
+                .find(|v| v.attr("formalParameter") == Some(name))
+                .ok_or_else(|| ImportError::PinNotConnected(what.clone(), pin_name(name)))?;
+            let p = self.join(v.child("connectionPointIn"), &what)?;
+            self.consumed.push(p);
+            inputs.push(p);
+        }
+        if inputs.len() < 2 {
+            return Err(ImportError::Gate(what, "it needs two inputs".into()));
+        }
+        let out_pin = if matches!(kind, GateKind::Flip { .. }) {
+            "Q1"
+        } else {
+            "OUT"
+        };
+        let out = self.point(id, out_pin);
+        self.gates.push(Gate {
+            kind,
+            inputs,
+            out,
+            pos,
+            line: n.line,
+            what,
+        });
+        Ok(())
+    }
+
+    pub(super) fn block(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        names: &Names,
+    ) -> Result<(), ImportError> {
+        let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
+        let written = n.attr("instanceName").unwrap_or_default();
+        // A map may give the instance a device (`TON0,T00`).
+        let instance = names
+            .instance(written)
+            .unwrap_or_else(|| written.to_string());
+        self.check_enable(id, &ty, written)?;
+        if let Some(kind) = gate_kind(&ty, &instance, written)? {
+            return self.gate(n, id, pos, kind, &ty, written);
+        }
+        if let Some(flag) = compare_flag(&ty) {
+            return self.compare(n, id, pos, flag, &ty, names);
+        }
+        if ty == "CTD" || ty == "CTUD" {
+            let what = block_label(&ty, written, &instance);
+            return self.count(n, id, pos, (&ty, &instance, what), names);
+        }
+        let (power_in, power_out) = match ty.as_str() {
+            "TON" | "TOF" | "TP" | "NOT" => ("IN", if ty == "NOT" { "OUT" } else { "Q" }),
+            "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
+            "CTU" => ("CU", "Q"),
+            _ => return Err(ImportError::UnsupportedBlock(ty)),
+        };
+        let what = block_label(&ty, written, &instance);
+        let input = self.join(
+            pin_of(n, power_in).and_then(|v| v.child("connectionPointIn")),
+            &what,
+        )?;
+        self.consumed.push(input);
+        // A counter's R: a reset coil on the counter, fed as R is (a
+        // literal FALSE resets nothing).
+        if ty == "CTU" {
+            if let Some(p) = self.power_pin(n, "R", &what)? {
+                let at = Pos::new(pos.row, pos.col.wrapping_add(1));
+                self.gates.push(Gate {
+                    kind: GateKind::Reset(coil(CoilKind::Reset, instance.clone())),
+                    inputs: vec![p],
+                    out: p,
+                    pos: at,
+                    line: n.line,
+                    what: what.clone(),
+                });
+            }
+        }
+        let element = match ty.as_str() {
+            "TON" | "TOF" | "TP" => {
+                let expr = self.pin_literal(n, "PT", &what)?;
+                // A literal, or a variable declared with one.
+                let preset_ms = parse_time_literal(&expr)
+                    .or_else(|| names.initial(&expr).and_then(parse_time_literal))
+                    .ok_or_else(|| ImportError::BadTimeLiteral(what.clone(), expr.to_string()))?;
+                let kind = match ty.as_str() {
+                    "TON" => TimerKind::Ton,
+                    "TOF" => TimerKind::Tof,
+                    _ => TimerKind::Tp,
+                };
+                // A TOF or TP mapped to a timer and a relay (`T01+M20`):
+                // built from the machine's on-delay timer coil.
+                if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == "TON") {
+                    let coil = timer_coil(timer.trim(), preset_ms)?;
+                    let kind = GateKind::Delay {
+                        coil,
+                        timer: timer.trim().to_string(),
+                        relay: relay.trim().to_string(),
+                        pulse: ty == "TP",
+                    };
+                    let out = self.point(id, "Q");
+                    self.gates.push(Gate {
+                        kind,
+                        inputs: vec![input],
+                        out,
+                        pos,
+                        line: n.line,
+                        what,
+                    });
+                    return Ok(());
+                }
+                Element::Timer {
+                    kind,
+                    name: instance.clone(),
+                    preset_ms,
+                }
+            }
+            "CTU" => {
+                let expr = self.pin_literal(n, "PV", &what)?;
+                Element::CounterCoil {
+                    device: instance.clone(),
+                    preset: counter_preset(&expr, names, &what)?,
+                }
+            }
+            "R_TRIG" | "F_TRIG" => Element::Edge {
+                falling: ty == "F_TRIG",
+            },
+            _ => Element::Not,
+        };
+        let out = self.point(id, power_out);
+        self.edges
+            .push((input, out, Net::Leaf(element, pos), n.line));
+        Ok(())
+    }
+
+    /// The point a block's input pin `name` takes power from, or `None`
+    /// when it is open or a literal FALSE (it never carries power).
+    fn power_pin(
+        &mut self,
+        n: &Node,
+        name: &str,
+        what: &str,
+    ) -> Result<Option<usize>, ImportError> {
+        let Some(cpi) = pin_of(n, name)
+            .and_then(|v| v.child("connectionPointIn"))
+            .filter(|c| c.child("connection").is_some())
+        else {
+            return Ok(None);
+        };
+        let never = cpi
+            .child("connection")
+            .and_then(|c| c.attr("refLocalId"))
+            .and_then(|r| self.literals.get(r))
+            .is_some_and(|(e, _)| is_false(e));
+        if never {
+            return Ok(None);
+        }
+        let p = self.join(Some(cpi), what)?;
+        self.consumed.push(p);
+        Ok(Some(p))
+    }
+
+    /// The literal (or variable) box feeding pin `name`: its text.
+    fn pin_literal(&self, n: &Node, name: &'static str, what: &str) -> Result<String, ImportError> {
+        let unconnected = || ImportError::PinNotConnected(what.to_string(), name);
+        let r = pin_of(n, name)
+            .and_then(|v| v.child("connectionPointIn"))
+            .and_then(|c| c.child("connection"))
+            .and_then(|c| c.attr("refLocalId"))
+            .ok_or_else(unconnected)?;
+        self.literals
+            .get(r)
+            .map(|(e, _)| e.trim().to_string())
+            .ok_or_else(|| ImportError::PinNotLiteral(what.to_string(), name))
+    }
+
+    /// A comparison block (GT, GE, EQ, NE, LE, LT of words): its operands
+    /// as IO86A's (`K465`, `D06`, `T00`), each neighbouring pair lowered to
+    /// a `CMP` and a relay holding the flag (gates.rs). IEC extends all
+    /// but NE to more inputs, each pair in turn (`GT(a, b, c)` is
+    /// `a > b AND b > c`): the pairs' results meet in an AND.
+    fn compare(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        flag: (&'static str, bool),
+        ty: &str,
+        names: &Names,
+    ) -> Result<(), ImportError> {
+        let what = format!("{ty} block");
+        let pins: Vec<&str> = n
+            .child("inputVariables")
+            .map(|v| {
+                v.all("variable")
+                    .filter_map(|p| p.attr("formalParameter"))
+                    // EN is read with the body (`check_enable`).
+                    .filter(|p| *p != "EN")
+                    .collect()
+            })
+            .unwrap_or_default();
+        let takes = if ty == "NE" { "two" } else { "two or more" };
+        if pins.len() < 2 || (ty == "NE" && pins.len() != 2) {
+            return Err(ImportError::Gate(
+                what,
+                format!("it has {} inputs: {ty} compares {takes}", pins.len()),
+            ));
+        }
+        if pins.len() > COMPARED.len() || pins.iter().zip(COMPARED).any(|(p, c)| *p != c) {
+            return Err(ImportError::Gate(
+                what,
+                format!(
+                    "its inputs are {}: Hashigo reads IN1, IN2, … up to IN{}, in order",
+                    pins.join(", "),
+                    COMPARED.len()
+                ),
+            ));
+        }
+        let mut operands = Vec::new();
+        for pin in COMPARED.into_iter().take(pins.len()) {
+            let expr = self.pin_literal(n, pin, &what)?;
+            let operand = self.word_operand(&expr, names).map_err(|why| {
+                ImportError::Gate(
+                    what.clone(),
+                    format!("{pin} {}: {why}", crate::shown(&expr)),
+                )
+            })?;
+            if matches!(operand.0.as_str(), "D06" | "D07") && expr != operand.0 {
+                let input = if operand.0 == "D06" { "X04" } else { "X05" };
+                self.warnings.push(Located::new(
+                    n.line,
+                    format!(
+                        "{expr} is {}, {input}'s analog value: set {input}'s analog range ({input}A:n1:n2) so that it counts in the file's units",
+                        operand.0
+                    ),
+                ));
+            }
+            if operand.1 {
+                self.warnings.push(Located::new(
+                    n.line,
+                    format!(
+                        "{what}'s {pin} is {}, the value {expr} is declared with (nothing in the program writes it)",
+                        operand.0
+                    ),
+                ));
+            }
+            operands.push(operand.0);
+        }
+        let out = self.point(id, "OUT");
+        let pairs = operands.len() - 1;
+        let results: Vec<usize> = if pairs == 1 {
+            vec![out]
+        } else {
+            (0..pairs).map(|_| self.fresh()).collect()
+        };
+        for (j, (pair, &result)) in operands.windows(2).zip(&results).enumerate() {
+            self.gates.push(Gate {
+                kind: GateKind::Compare {
+                    a: pair[0].clone(),
+                    b: pair[1].clone(),
+                    flag: flag.0,
+                    on: flag.1,
+                },
+                inputs: Vec::new(),
+                out: result,
+                // Each pair's CMP a place of its own (the order finds it by it).
+                pos: Pos::new(pos.row + j, pos.col),
+                line: n.line,
+                what: what.clone(),
+            });
+        }
+        if pairs > 1 {
+            self.gates.push(Gate {
+                kind: GateKind::And,
+                inputs: results,
+                out,
+                pos,
+                line: n.line,
+                what,
+            });
+        }
+        Ok(())
+    }
+
+    /// A comparison's operand as IO86A names it, and whether it is a
+    /// variable's declared value: a whole number `K…`; a variable mapped
+    /// or located to a word (`D06`); else a variable's initial value.
+    fn word_operand(&self, expr: &str, names: &Names) -> Result<(String, bool), String> {
+        let constant = |text: &str| -> Option<String> {
+            // `INT#5`, `5`
+            let digits = text.rsplit('#').next().unwrap_or(text).trim();
+            digits
+                .parse::<u16>()
+                .ok()
+                .filter(|&k| k <= 32767)
+                .map(|k| format!("K{k}"))
+        };
+        if let Some(k) = constant(expr) {
+            return Ok((k, false));
+        }
+        if !is_variable_name(expr) {
+            return Err("is not a whole number 0..32767 or a variable".into());
+        }
+        if let Some(ty) = names.declared_type(expr).filter(|t| *t == "BOOL") {
+            // IEC compares values of one type; CMP compares words.
+            return Err(format!(
+                "is declared {ty}: a comparison takes numbers (IEC compares values of one type)"
+            ));
+        }
+        if let Ok(device) = names.device(expr) {
+            if device.starts_with(['D', 'T', 'C']) && !device.contains('+') {
+                return Ok((device, false));
+            }
+        }
+        if let Some(k) = names.initial(expr).and_then(constant) {
+            return Ok((k, true));
+        }
+        Err(format!(
+            "is no word: map it to a data register (--map {},D00)",
+            expr.trim()
+        ))
+    }
+
+    /// CTD (count down from PV, loaded by LD) and CTUD (with CD and LD
+    /// unused: counts up, QD while nothing is counted) on the machine's
+    /// up-counter, lowered in gates.rs.
+    fn count(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        (ty, instance, what): (&str, &str, String),
+        names: &Names,
+    ) -> Result<(), ImportError> {
+        let down = ty == "CTD";
+        let preset = counter_preset(&self.pin_literal(n, "PV", &what)?, names, &what)?;
+        let count_pin = if down { "CD" } else { "CU" };
+        let input = self
+            .power_pin(n, count_pin, &what)?
+            .ok_or_else(|| ImportError::PinNotConnected(what.clone(), pin_name(count_pin)))?;
+        let (load, reset, empty) = if down {
+            (self.power_pin(n, "LD", &what)?, None, None)
+        } else {
+            for pin in ["CD", "LD"] {
+                if self.power_pin(n, pin, &what)?.is_some() {
+                    return Err(ImportError::Gate(
+                        what,
+                        format!("its {pin} is wired: the machine's counters count up only and cannot be loaded; Hashigo takes a CTUD whose CD and LD are unused"),
+                    ));
+                }
+            }
+            (
+                None,
+                self.power_pin(n, "R", &what)?,
+                Some(self.point(id, "QD")),
+            )
+        };
+        let out = self.point(id, if down { "Q" } else { "QU" });
+        self.gates.push(Gate {
+            kind: GateKind::Count {
+                counter: Element::CounterCoil {
+                    device: instance.to_string(),
+                    preset,
+                },
+                load,
+                reset,
+                empty,
+            },
+            inputs: vec![input],
+            out,
+            pos,
+            line: n.line,
+            what,
+        });
+        Ok(())
+    }
+}
