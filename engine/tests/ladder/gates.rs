@@ -203,11 +203,54 @@ fn an_input_that_also_feeds_more_is_carried_by_a_spare_relay() {
     );
 }
 
+/// `body` with the block's IN fed by contacts a and b both (a fan-in:
+/// a OR b).
+fn fed_by_a_or_b(body: &str) -> String {
+    let one = r#"<variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/>"#;
+    assert!(body.contains(one), "{body}");
+    body.replace(
+        one,
+        r#"<variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/><connection refLocalId="3"/>"#,
+    )
+}
+
 #[test]
-fn a_not_box_io86a_lacks_in_line_is_a_relay_and_its_nc_contact() {
-    let body = block(4, "NOT", "", 10, &[("IN", 2)], "OUT") + &coil(5, 10, 4, "OUT", "q");
-    let seen = run(&project(&body), "", &TABLE);
-    assert_eq!(seen, [true, false, true, false]);
+fn a_box_io86a_lacks_in_line_is_its_input_contact_turned_or_a_relay() {
+    let relays_said = |xml: &str| {
+        let map = VarMap::default();
+        let imported = import_mapped(xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+        let said = imported.warnings.iter().map(|w| w.error.clone());
+        said.filter(|w| w.contains(" holds ")).collect::<Vec<_>>()
+    };
+    // NOT a, R_TRIG a: a's NC and rising contacts, no relay.
+    let not = block(4, "NOT", "", 10, &[("IN", 2)], "OUT") + &coil(5, 10, 4, "OUT", "q");
+    let not = project(&not);
+    assert_eq!(relays_said(&not), Vec::<String>::new());
+    assert_eq!(run(&not, "", &TABLE), [true, false, true, false]);
+    let trig = block(4, "R_TRIG", "", 10, &[("CLK", 2)], "Q") + &coil(5, 10, 4, "Q", "q");
+    let trig = project(&trig);
+    assert_eq!(relays_said(&trig), Vec::<String>::new());
+    // One scan per value of a: the pulse lasts the scan a rises in.
+    let (mut m, text) = io86a_loaded(&trig, &VarMap::default()).unwrap_or_else(|e| panic!("{e}"));
+    let (x0, y0) = (m.device("X00").expect("X00"), m.device("Y00").expect("Y00"));
+    let mut seen = Vec::new();
+    for a in [false, true, true, false, true] {
+        m.apply(Command::SetInput(x0, InputValue::Int(i64::from(a))))
+            .expect("input");
+        m.step_scan();
+        seen.push(m.read(y0) != 0);
+    }
+    assert_eq!(seen, [false, true, false, false, true], "{text}");
+    // NOT (a OR b): a relay holds the network, its NC contact is q.
+    let network = block(4, "NOT", "", 10, &[("IN", 2)], "OUT") + &coil(5, 10, 4, "OUT", "q");
+    let network = project(&fed_by_a_or_b(&network));
+    let said = relays_said(&network);
+    assert!(
+        said.iter()
+            .any(|w| w.starts_with("M55 holds NOT block's input")),
+        "{said:?}"
+    );
+    assert_eq!(run(&network, "", &TABLE), [true, false, false, false]);
 }
 
 #[test]
@@ -422,7 +465,7 @@ fn comparisons_run_as_cmp_and_a_relay_each() {
 fn an_fbd_program_runs_as_its_blocks_say() {
     // FBD draws the same graph as LD without rails, contacts or coils:
     // variables feed blocks, blocks feed variables. Y00 = a AND b,
-    // Y01 = NOT b (b feeds both: a spare relay holds it).
+    // Y01 = NOT b (b feeds both: each reads its own contact of X01).
     let boxes = |ty: &str, id: u32, y: u32, pins: &[(&str, u32)], to: &str| {
         let pins: String = pins
             .iter()
@@ -458,6 +501,12 @@ fn an_fbd_program_runs_as_its_blocks_say() {
         boxes("AND", 3, 10, &[("IN1", 1), ("IN2", 2)], "q"),
         boxes("NOT", 5, 60, &[("IN", 2)], "Y01")
     );
+    let map = VarMap::parse("").expect("a map");
+    let imported = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
+    let (_, text) = io86a_loaded(&xml, &map).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(text.matches("X01").count(), 2, "{text}");
+    assert!(!text.contains('M'), "no spare relay: {text}");
     let seen = run_both(&xml, "", &TABLE);
     assert_eq!(
         seen,
@@ -704,15 +753,17 @@ fn a_comparison_of_more_inputs_compares_each_pair_in_turn() {
 
 #[test]
 fn a_relay_holding_an_input_is_written_before_the_rung_reading_it() {
-    // q = NOT a, through an NC contact of X07 drawn above the block: the
-    // rung reading the relay sorts first, and is moved after its writer,
-    // so q follows a in the same scan (as the origin tool runs it).
+    // q = NOT (a OR b), through an NC contact of X07 drawn above the
+    // block: the rung reading the relay sorts first, and is moved after
+    // its writer, so q follows a in the same scan (as the origin tool
+    // runs it). b stays off.
     let body = block(4, "NOT", "", 40, &[("IN", 2)], "OUT")
         + r#"
       <contact localId="6" negated="true"><position x="50" y="0"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><variable>X07</variable></contact>"#
         + &coil(5, 40, 6, "", "q");
-    let (mut m, text) =
-        io86a_loaded(&project(&body), &VarMap::default()).unwrap_or_else(|e| panic!("{e}"));
+    let (mut m, text) = io86a_loaded(&project(&fed_by_a_or_b(&body)), &VarMap::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(text.contains("M55"), "a relay holds a OR b: {text}");
     let (x0, y0) = (m.device("X00").expect("X00"), m.device("Y00").expect("Y00"));
     let mut seen = Vec::new();
     for a in [false, true, false] {

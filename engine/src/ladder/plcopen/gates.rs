@@ -28,6 +28,7 @@ use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
+use crate::ladder::target::check_element;
 use crate::limits::MAX_GATE_WORK;
 use crate::MachineId;
 
@@ -483,6 +484,17 @@ impl Body {
     /// The one contact from the rail that feeds `p` and nothing else,
     /// taken out of the graph (its element, place and line).
     fn single_contact(&mut self, p: usize) -> Option<(Element, Pos, usize)> {
+        let only = self.single_contact_at(p)?;
+        let (_, _, net, line) = self.edges.remove(only);
+        match net {
+            Net::Leaf(e, at) => Some((e, at, line)),
+            Net::Series(_) | Net::Parallel(_) => None,
+        }
+    }
+
+    /// Where in the edges the one contact from the rail that feeds `p`
+    /// and nothing else is, if there is one.
+    fn single_contact_at(&mut self, p: usize) -> Option<usize> {
         let p = self.find(p);
         let rail = self.find(super::import::RAIL);
         let takers = self.takers();
@@ -497,13 +509,52 @@ impl Body {
             [i] if takers.get(&p).copied().unwrap_or(0) == 1 => i,
             _ => return None,
         };
-        let (a, _, net, line) = self.edges[only].clone();
-        match net {
-            Net::Leaf(e @ Element::Contact { .. }, at) if self.find(a) == rail => {
-                self.edges.remove(only);
-                Some((e, at, line))
+        let (a, _, net, _) = &self.edges[only];
+        let contact = matches!(net, Net::Leaf(Element::Contact { .. }, _));
+        (contact && self.find(*a) == rail).then_some(only)
+    }
+
+    /// Folds each NOT, R_TRIG or F_TRIG box `machine` has no in-line form
+    /// for into the one contact from the rail feeding it, when that is
+    /// all that feeds it (NOT a: the NC contact of a; R_TRIG a: a's rising
+    /// contact): the same power, without the spare relay
+    /// [`super::import`]'s graph would otherwise hold the box's input in.
+    pub(super) fn fold_boxes_into_contacts(&mut self, machine: MachineId) {
+        let mut i = 0;
+        while i < self.edges.len() {
+            let (a, b, Net::Leaf(e, _), _) = &self.edges[i] else {
+                i += 1;
+                continue;
+            };
+            let (a, b, e) = (*a, *b, e.clone());
+            let boxed = matches!(e, Element::Not | Element::Edge { .. });
+            if !boxed || check_element(machine, &e).is_ok() {
+                i += 1;
+                continue;
             }
-            _ => None,
+            let Some(j) = self.single_contact_at(a) else {
+                i += 1;
+                continue;
+            };
+            let (_, _, Net::Leaf(Element::Contact { kind, device }, at), line) = &self.edges[j]
+            else {
+                i += 1;
+                continue;
+            };
+            let Some(kind) = turned(&e, *kind) else {
+                i += 1;
+                continue;
+            };
+            let contact = Element::Contact {
+                kind,
+                device: device.clone(),
+            };
+            self.edges[i] = (super::import::RAIL, b, Net::Leaf(contact, *at), *line);
+            self.edges.remove(j);
+            if j < i {
+                i -= 1;
+            }
+            i += 1;
         }
     }
 
@@ -600,5 +651,21 @@ fn rekind(
             device: device.clone(),
         }),
         _ => Err("not a contact".into()),
+    }
+}
+
+/// The contact that gives box `e` (NOT, R_TRIG, F_TRIG) fed by a contact
+/// of `kind`, when there is one: NOT turns NO and NC into each other; an
+/// edge box on a NO contact is that edge's contact. An edge of an NC
+/// contact or of an edge (and NOT of an edge) keeps its relay: R_TRIG of
+/// NOT a fires in the first scan when a is off, a's falling contact
+/// does not.
+fn turned(e: &Element, kind: ContactKind) -> Option<ContactKind> {
+    match (e, kind) {
+        (Element::Not, ContactKind::No) => Some(ContactKind::Nc),
+        (Element::Not, ContactKind::Nc) => Some(ContactKind::No),
+        (Element::Edge { falling: false }, ContactKind::No) => Some(ContactKind::Rising),
+        (Element::Edge { falling: true }, ContactKind::No) => Some(ContactKind::Falling),
+        _ => None,
     }
 }

@@ -505,14 +505,12 @@ impl Body {
         p
     }
 
-    /// The point after variable box `id`'s `contact` (made once, from
-    /// the rail).
+    /// A point fed from the rail by variable box `id`'s `contact`, one
+    /// for each wire leaving the box: reading a variable has no side
+    /// effect, so a box feeding two blocks reads as two contacts rather
+    /// than one shared point that would need a spare relay.
     fn variable_point(&mut self, id: &str, contact: Element, at: Pos) -> usize {
-        let key = (id.to_string(), "var".to_string());
-        if let Some(&p) = self.points.get(&key) {
-            return p;
-        }
-        let p = self.point(id, "var");
+        let p = self.fresh();
         let line = self.kinds.get(id).map_or(1, |(_, l)| *l);
         self.consumed.push(RAIL);
         self.edges.push((RAIL, p, Net::Leaf(contact, at), line));
@@ -748,6 +746,9 @@ impl Body {
         warnings.append(&mut self.warnings);
         self.machine = machine;
         self.lower_gates()?;
+        if let Some(m) = machine {
+            self.fold_boxes_into_contacts(m);
+        }
         let (mut edges, mut lines) = self.graph(machine)?;
         if let Some(m) = machine {
             self.check_machine(m, &edges, &lines)?;
