@@ -35,6 +35,29 @@ fn five_thousand_rungs_on_one_rail_import() {
 }
 
 #[test]
+fn fifty_thousand_comments_over_five_thousand_rungs_import() {
+    // Every title above the first rung: each weighs the few rungs that
+    // start first below it, not all 5 000, and the nearest takes it.
+    let comments: String = (0..50_000)
+        .map(|i| {
+            format!(
+                r#"<comment localId="{}"><position x="10" y="0"/><content><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml">c{i}</xhtml:p></content></comment>"#,
+                100_000 + i
+            )
+        })
+        .collect();
+    let xml = plcopen_rungs(5_000, "X00", "Y00").replacen(
+        "<leftPowerRail",
+        &format!("{comments}\n<leftPowerRail"),
+        1,
+    );
+    let ladder = import(&xml).expect("imports");
+    assert_eq!(ladder.rungs.len(), 5_000);
+    assert_eq!(ladder.rungs[0].comment.lines().count(), 50_000);
+    assert!(ladder.rungs[1..].iter().all(|r| r.comment.is_empty()));
+}
+
+#[test]
 fn fifty_thousand_rails_import() {
     let ladder = import(&plcopen_rails(50_000)).expect("imports");
     assert_eq!(ladder.rungs.len(), 1);

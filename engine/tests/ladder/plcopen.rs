@@ -295,3 +295,62 @@ fn what_is_not_ladder_is_named_with_its_language() {
         "{e:?}"
     );
 }
+
+#[test]
+fn a_comment_goes_to_the_network_drawn_under_it_side_by_side_too() {
+    // Two networks side by side, each under its title; the right one
+    // starts higher, and a third title sits under the left one.
+    let network = |id: u32, x: u32, y: u32, input: &str, output: &str| {
+        format!(
+            r#"
+    <leftPowerRail localId="{id}"><position x="{x}" y="{y}"/><connectionPointOut/></leftPowerRail>
+    <contact localId="{}"><position x="{}" y="{y}"/><connectionPointIn><connection refLocalId="{id}"/></connectionPointIn><variable>{input}</variable></contact>
+    <coil localId="{}"><position x="{}" y="{y}"/><connectionPointIn><connection refLocalId="{}"/></connectionPointIn><variable>{output}</variable></coil>"#,
+            id + 1,
+            x + 20,
+            id + 2,
+            x + 100,
+            id + 1
+        )
+    };
+    let comment = |x: u32, y: u32, text: &str| {
+        format!(
+            r#"
+    <comment localId="{}"><position x="{x}" y="{y}"/><content><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml">{text}</xhtml:p></content></comment>"#,
+            x + y
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous><pou name="main" pouType="program"><body><LD>{}{}{}{}{}{}
+</LD></body></pou></pous></types></project>"#,
+        comment(20, 20, "left"),
+        comment(500, 10, "right"),
+        comment(20, 200, "below"),
+        network(100, 20, 100, "X00", "Y00"),
+        network(200, 500, 60, "X01", "Y01"),
+        network(300, 20, 260, "X02", "Y02"),
+    );
+    let ladder = import(&xml).expect("imports");
+    // Each rung named by its coil's device.
+    let said: Vec<(String, &str)> = ladder
+        .rungs
+        .iter()
+        .map(|r| {
+            let coil = r.elements().find_map(|(_, e)| match e {
+                engine::ladder::Element::Coil { device, .. } => Some(device.clone()),
+                _ => None,
+            });
+            (coil.unwrap_or_default(), r.comment.as_str())
+        })
+        .collect();
+    assert_eq!(
+        said,
+        [
+            ("Y01".to_string(), "right"),
+            ("Y00".to_string(), "left"),
+            ("Y02".to_string(), "below")
+        ],
+        "{xml}"
+    );
+}

@@ -363,7 +363,8 @@ pub(super) struct Body {
     /// lowering them has taken ([`crate::limits::MAX_GATE_WORK`]).
     pub(super) gates: Vec<Gate>,
     pub(super) gate_work: usize,
-    comments: Vec<(usize, String)>,
+    /// Comment boxes: where they are drawn (row, column) and their text.
+    comments: Vec<(usize, usize, String)>,
     /// Relays free to hold a network's power (the next is popped), and
     /// those taken: (relay, what it holds, line).
     pub(super) spares: Vec<String>,
@@ -397,8 +398,8 @@ impl Body {
         };
         for n in &ld.children {
             if n.name == "comment" {
-                let y = position(n).0;
-                b.comments.push((y, n.deep_text()));
+                let (y, x) = position(n);
+                b.comments.push((y, x, n.deep_text()));
                 continue;
             }
             let Some(id) = n.attr("localId") else {
@@ -464,7 +465,7 @@ impl Body {
                         .unwrap_or_default();
                     if is_variable_name(&expr) {
                         let (y, x) = position(n);
-                        let at = Pos::new(y, x * 65_536 + b.kinds.len());
+                        let at = place(y, x, b.kinds.len());
                         // A bad `negated` is refused at its line by `element`.
                         let contact = if negated(n).unwrap_or(false) {
                             Element::nc
@@ -603,7 +604,7 @@ impl Body {
     ) -> Result<(), ImportError> {
         let id = n.attr("localId").unwrap_or_default().to_string();
         let (y, x) = position(n);
-        let pos = Pos::new(y, x * 65_536 + seq);
+        let pos = place(y, x, seq);
         // A declared name stands for its device (located or mapped).
         let variable = || -> Result<Option<String>, ImportError> {
             match n.child("variable").map(|v| v.text.trim().to_string()) {
@@ -960,7 +961,7 @@ impl Body {
             self.ordered.push(d.to_string());
         }
         self.outputs.push((a, coil, pos, line));
-        let at = Pos::new(pos.row, pos.col.wrapping_add(usize::MAX / 2));
+        let at = Pos::new(pos.row, pos.col.wrapping_add(SPLIT_PLACES));
         lines.insert(at, line);
         let rail = self.find(RAIL);
         edges.push(Edge {
@@ -1073,12 +1074,32 @@ impl Body {
         }
     }
 
-    /// A comment belongs to the first rung at or below it.
+    /// A comment belongs to the nearest rung that starts at or below it,
+    /// distance being rows down (to the rung's top) plus columns across
+    /// (to its leftmost element): a page of networks drawn side by side
+    /// (OpenPLC's dancing-lights) puts each title above its own network,
+    /// which may start lower than the next column's. Only the
+    /// [`COMMENT_REACH`] rungs starting first below it are weighed (rungs
+    /// are sorted by their top); below the last rung, the last rung
+    /// takes it.
     fn attach_comments(&mut self, rungs: &mut [(Pos, RungLogic, usize)]) {
-        for (y, text) in std::mem::take(&mut self.comments) {
-            let i = rungs
-                .partition_point(|(top, _, _)| top.row < y)
-                .min(rungs.len().saturating_sub(1));
+        if self.comments.is_empty() {
+            return;
+        }
+        let lefts: Vec<usize> = rungs
+            .iter()
+            .map(|(_, r, _)| {
+                let leaves = r.condition.leaves().into_iter().map(|(_, p)| p);
+                let places = leaves.chain(r.outputs.iter().map(|(_, p)| *p));
+                places.map(|p| drawn_x(p.col)).min().unwrap_or(0)
+            })
+            .collect();
+        for (y, x, text) in std::mem::take(&mut self.comments) {
+            let first = rungs.partition_point(|(top, _, _)| top.row < y);
+            let distance = |i: usize| (rungs[i].0.row - y) + lefts[i].abs_diff(x);
+            let i = (first..rungs.len().min(first + COMMENT_REACH))
+                .min_by_key(|&i| distance(i))
+                .unwrap_or(rungs.len().saturating_sub(1));
             if let Some((_, r, _)) = rungs.get_mut(i) {
                 if !r.comment.is_empty() {
                     r.comment.push('\n');
@@ -1088,6 +1109,10 @@ impl Body {
         }
     }
 }
+
+/// How many rungs below a comment box may take it (side by side
+/// networks; bounded so a hostile file's comments cost linear time).
+const COMMENT_REACH: usize = 16;
 
 /// The rungs that write one of `devices`, in order.
 fn writing(rungs: &[(Pos, RungLogic, usize)], devices: &[&String]) -> Vec<usize> {
@@ -1205,6 +1230,25 @@ fn storage(n: &Node) -> Result<Option<&'static str>, ImportError> {
 }
 
 /// An element's `<position x y>` (0, 0 when absent or odd), as (y, x).
+/// Where element number `seq` of the file, drawn at (`y`, `x`), sorts:
+/// by row, then column, then file order. Saturating: on wasm32 a column
+/// past what `usize` holds sorts last rather than wrap around.
+fn place(y: usize, x: usize, seq: usize) -> Pos {
+    Pos::new(y, x.saturating_mul(PLACES_PER_X).saturating_add(seq))
+}
+
+/// Places in one drawn column ([`place`]).
+const PLACES_PER_X: usize = 65_536;
+
+/// How far a split box's contact is placed from its coil
+/// ([`Body::split_box`]): a place of its own, past every drawn one.
+const SPLIT_PLACES: usize = usize::MAX / 2;
+
+/// The drawn column a place sorts in ([`place`], [`SPLIT_PLACES`]).
+fn drawn_x(col: usize) -> usize {
+    col.checked_sub(SPLIT_PLACES).unwrap_or(col) / PLACES_PER_X
+}
+
 fn position(n: &Node) -> (usize, usize) {
     let p = n.child("position");
     let num = |k: &str| {
