@@ -143,6 +143,31 @@ pub fn plcopen_ors(n: usize) -> String {
     s + TAIL
 }
 
+/// `n` rungs, each X00 through two NOT blocks into Y00 (`n` = 0: none).
+pub fn plcopen_double_nots(n: usize) -> String {
+    let mut s = String::from(HEAD);
+    for i in 0..n {
+        let (c, g, h, k) = (10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i);
+        let y = i * 10;
+        let _ = writeln!(
+            s,
+            r#"<contact localId="{c}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>"#,
+            conn(&[1])
+        );
+        for (id, from, pin) in [(g, c, ""), (h, g, r#" formalParameter="OUT""#)] {
+            let _ = writeln!(
+                s,
+                r#"<block localId="{id}" typeName="NOT"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="{from}"{pin}/></connectionPointIn></variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#
+            );
+        }
+        let _ = writeln!(
+            s,
+            r#"<coil localId="{k}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{h}" formalParameter="OUT"/></connectionPointIn><variable>Y00</variable></coil>"#
+        );
+    }
+    s + TAIL
+}
+
 /// `n` rungs, each X00 into an in-line TON named T00 (PT 1 s) whose Q
 /// lights Y00: on IO86A every one is split into `OUT T00` and a contact
 /// of T00, all of them ordered writers before readers.

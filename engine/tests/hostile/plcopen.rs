@@ -178,6 +178,28 @@ fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
 }
 
 #[test]
+fn thousands_of_not_blocks_fold_into_their_contacts_in_one_pass() {
+    // IO86A has no in-line NOT: each NOT NOT X00 folds into X00's NO
+    // contact (no spare relay, of which there are far fewer than 10 000).
+    let xml = crate::gen::plcopen_double_nots(5_000);
+    let started = std::time::Instant::now();
+    let ladder = engine::ladder::plcopen::import_for(&xml, Some(engine::MachineId::Io86a))
+        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
+    assert_eq!(ladder.rungs.len(), 5_000);
+    let contact = Element::Contact {
+        kind: ContactKind::No,
+        device: "X00".into(),
+    };
+    assert!(ladder
+        .rungs
+        .iter()
+        .all(|r| r.elements().any(|(_, e)| *e == contact)));
+    // Not a speed test: a fold searching every edge per block would
+    // take minutes here.
+    assert!(started.elapsed().as_secs() < 60);
+}
+
+#[test]
 fn thousands_of_split_timers_are_ordered_without_quadratic_work() {
     // 3 000 in-line TONs on one timer: 3 000 writers and 3 000 readers of
     // T00 to order (each reader after every writer).

@@ -484,17 +484,6 @@ impl Body {
     /// The one contact from the rail that feeds `p` and nothing else,
     /// taken out of the graph (its element, place and line).
     fn single_contact(&mut self, p: usize) -> Option<(Element, Pos, usize)> {
-        let only = self.single_contact_at(p)?;
-        let (_, _, net, line) = self.edges.remove(only);
-        match net {
-            Net::Leaf(e, at) => Some((e, at, line)),
-            Net::Series(_) | Net::Parallel(_) => None,
-        }
-    }
-
-    /// Where in the edges the one contact from the rail that feeds `p`
-    /// and nothing else is, if there is one.
-    fn single_contact_at(&mut self, p: usize) -> Option<usize> {
         let p = self.find(p);
         let rail = self.find(super::import::RAIL);
         let takers = self.takers();
@@ -509,53 +498,64 @@ impl Body {
             [i] if takers.get(&p).copied().unwrap_or(0) == 1 => i,
             _ => return None,
         };
-        let (a, _, net, _) = &self.edges[only];
-        let contact = matches!(net, Net::Leaf(Element::Contact { .. }, _));
-        (contact && self.find(*a) == rail).then_some(only)
+        let (a, _, net, line) = self.edges[only].clone();
+        match net {
+            Net::Leaf(e @ Element::Contact { .. }, at) if self.find(a) == rail => {
+                self.edges.remove(only);
+                Some((e, at, line))
+            }
+            _ => None,
+        }
     }
 
     /// Folds each NOT, R_TRIG or F_TRIG box `machine` has no in-line form
     /// for into the one contact from the rail feeding it, when that is
-    /// all that feeds it (NOT a: the NC contact of a; R_TRIG a: a's rising
-    /// contact): the same power, without the spare relay
-    /// [`super::import`]'s graph would otherwise hold the box's input in.
+    /// all that feeds it and nothing else takes its power (NOT a: the NC
+    /// contact of a; R_TRIG a: a's rising contact): the same power,
+    /// without the spare relay [`super::import`]'s graph would otherwise
+    /// hold the box's input in. One pass over the edges, in file order (a
+    /// box after a folded one folds too: NOT NOT a is a's NO contact).
     pub(super) fn fold_boxes_into_contacts(&mut self, machine: MachineId) {
-        let mut i = 0;
-        while i < self.edges.len() {
-            let (a, b, Net::Leaf(e, _), _) = &self.edges[i] else {
-                i += 1;
-                continue;
-            };
-            let (a, b, e) = (*a, *b, e.clone());
-            let boxed = matches!(e, Element::Not | Element::Edge { .. });
-            if !boxed || check_element(machine, &e).is_ok() {
-                i += 1;
-                continue;
-            }
-            let Some(j) = self.single_contact_at(a) else {
-                i += 1;
-                continue;
-            };
-            let (_, _, Net::Leaf(Element::Contact { kind, device }, at), line) = &self.edges[j]
-            else {
-                i += 1;
-                continue;
-            };
-            let Some(kind) = turned(&e, *kind) else {
-                i += 1;
-                continue;
-            };
-            let contact = Element::Contact {
-                kind,
-                device: device.clone(),
-            };
-            self.edges[i] = (super::import::RAIL, b, Net::Leaf(contact, *at), *line);
-            self.edges.remove(j);
-            if j < i {
-                i -= 1;
-            }
-            i += 1;
+        let rail = self.find(super::import::RAIL);
+        let takers = self.takers();
+        let mut from = Vec::with_capacity(self.edges.len());
+        let mut feeders: HashMap<usize, Vec<usize>> = HashMap::new();
+        for i in 0..self.edges.len() {
+            let (a, b) = (self.edges[i].0, self.edges[i].1);
+            from.push(self.find(a));
+            feeders.entry(self.find(b)).or_default().push(i);
         }
+        let mut gone = vec![false; self.edges.len()];
+        for i in 0..self.edges.len() {
+            let e = match &self.edges[i].2 {
+                Net::Leaf(e @ (Element::Not | Element::Edge { .. }), _) => e.clone(),
+                _ => continue,
+            };
+            let a = from[i];
+            let only = match feeders.get(&a).map(Vec::as_slice) {
+                Some(&[j]) if takers.get(&a) == Some(&1) && from[j] == rail && !gone[j] => j,
+                _ => continue,
+            };
+            let (Net::Leaf(Element::Contact { kind, device }, at), line) =
+                (&self.edges[only].2, self.edges[only].3)
+            else {
+                continue;
+            };
+            let Some(kind) = turned(&e, *kind).filter(|_| check_element(machine, &e).is_err())
+            else {
+                continue;
+            };
+            let device = device.clone();
+            let folded = Net::Leaf(Element::Contact { kind, device }, *at);
+            self.edges[i] = (super::import::RAIL, self.edges[i].1, folded, line);
+            from[i] = rail;
+            gone[only] = true;
+        }
+        let mut k = 0;
+        self.edges.retain(|_| {
+            k += 1;
+            !gone[k - 1]
+        });
     }
 
     /// Moves the network feeding `p` to start at `from` instead of the

@@ -1229,7 +1229,6 @@ fn storage(n: &Node) -> Result<Option<&'static str>, ImportError> {
     }
 }
 
-/// An element's `<position x y>` (0, 0 when absent or odd), as (y, x).
 /// Where element number `seq` of the file, drawn at (`y`, `x`), sorts:
 /// by row, then column, then file order. Saturating: on wasm32 a column
 /// past what `usize` holds sorts last rather than wrap around.
@@ -1249,6 +1248,7 @@ fn drawn_x(col: usize) -> usize {
     col.checked_sub(SPLIT_PLACES).unwrap_or(col) / PLACES_PER_X
 }
 
+/// An element's `<position x y>` (0, 0 when absent or odd), as (y, x).
 fn position(n: &Node) -> (usize, usize) {
     let p = n.child("position");
     let num = |k: &str| {
