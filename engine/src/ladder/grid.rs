@@ -13,7 +13,9 @@ use serde::{Deserialize, Serialize};
 use super::element::Element;
 
 /// A cell's place in a rung, 0-based (errors print it 1-based).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize,
+)]
 pub struct Pos {
     /// The row, from the top.
     pub row: usize,

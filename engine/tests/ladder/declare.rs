@@ -377,7 +377,19 @@ fn the_real_projects_that_compile_with_a_proposed_map() {
         "{compiled:?}"
     );
     assert_eq!(compiled["arduino-plc"], ["lab1-seal-in"], "{compiled:?}");
-    assert!(compiled["avr-plc"].is_empty(), "{compiled:?}");
+    assert_eq!(
+        compiled["avr-plc"],
+        [
+            "dancing-lights",
+            "lab1-seal-in",
+            "lab4-ton-tof",
+            "mixer-lld",
+            "openplc-ex-blink",
+            "pr009g",
+            "water-pump"
+        ],
+        "{compiled:?}"
+    );
 }
 
 #[test]

@@ -1,10 +1,11 @@
 //! Boolean blocks from other tools lowered to ladder (issue #18): each
-//! imported program runs on IO86A as the block's truth table says.
+//! imported program runs on IO86A (and the AVR PLC) as the block's truth
+//! table says.
 
 use engine::events::InputValue;
 use engine::ladder::compile::compile;
 use engine::ladder::plcopen::{import_mapped, VarMap};
-use engine::plc::{Command, Io86aPlc, Plc};
+use engine::plc::{AvrPlc, Command, Io86aPlc, Plc};
 use engine::{MachineId, SimTime};
 
 /// A project whose one program's LD body is `body` (OpenPLC's dialect).
@@ -96,6 +97,18 @@ pub(crate) fn io86a_loaded(xml: &str, map: &VarMap) -> Result<(Io86aPlc, String)
         value: "0".into(),
     })
     .map_err(|e| format!("{e:?}"))?;
+    Ok((m, text))
+}
+
+/// `xml` imported for the AVR PLC with `map`, compiled and loaded; and
+/// the program text.
+pub(crate) fn avr_loaded(xml: &str, map: &VarMap) -> Result<(AvrPlc, String), String> {
+    let imported =
+        import_mapped(xml, Some(MachineId::AvrPlc), Some(map)).map_err(|e| format!("{e:?}"))?;
+    let text = compile(&imported.ladder, MachineId::AvrPlc, Default::default())
+        .map_err(|e| format!("{e:?}"))?;
+    let mut m = AvrPlc::new();
+    m.load_text(&text).map_err(|e| format!("{e:?}"))?;
     Ok((m, text))
 }
 
@@ -789,5 +802,78 @@ fn a_proposal_skips_the_relay_a_given_timer_and_relay_entry_holds() {
         proposed,
         [("TOF0".to_string(), "T00+M01".to_string())],
         "M00 is other's relay"
+    );
+}
+
+#[test]
+fn on_the_avr_plc_a_box_off_the_main_line_goes_through_a_relay() {
+    // q = TON(a, 100 ms) OR b: the AVR PLC's timers act on the running
+    // result, so the timer gets a rung of its own into a spare relay.
+    let body = block(4, "TON", "TON0", 10, &[("IN", 2), ("PT", 7)], "Q")
+        + r#"
+      <inVariable localId="7"><position x="20" y="40"/><connectionPointOut/><expression>T#100ms</expression></inVariable>
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="Q"/><connection refLocalId="3"/></connectionPointIn><variable>q</variable></coil>"#;
+    let (mut m, text) =
+        avr_loaded(&project(&body), &VarMap::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(text.contains("Coil_A,15,Bit7"), "R15.7 holds Q: {text}");
+    let (a, b, q) = (m.device("R4.0"), m.device("R4.1"), m.device("R5.0"));
+    let (a, b, q) = (a.expect("R4.0"), b.expect("R4.1"), q.expect("R5.0"));
+    let mut seen = Vec::new();
+    for (at, a_on, b_on) in [
+        (50, 1, 0),
+        (150, 1, 0),
+        (250, 0, 0),
+        (300, 0, 1),
+        (350, 0, 0),
+    ] {
+        m.apply(Command::SetInput(a, InputValue::Int(a_on)))
+            .expect("input");
+        m.apply(Command::SetInput(b, InputValue::Int(b_on)))
+            .expect("input");
+        m.run_until(SimTime::from_millis(at));
+        seen.push(m.read(q) != 0);
+    }
+    assert_eq!(seen, [false, true, false, true, false], "{text}");
+    // NOT(a) OR a: always on, the NOT through a relay's NC contact.
+    let body = block(4, "NOT", "", 10, &[("IN", 2)], "OUT")
+        + r#"
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/><connection refLocalId="2"/></connectionPointIn><variable>q</variable></coil>"#;
+    let (mut m, text) =
+        avr_loaded(&project(&body), &VarMap::default()).unwrap_or_else(|e| panic!("{e}"));
+    let (a, q) = (
+        m.device("R4.0").expect("R4.0"),
+        m.device("R5.0").expect("R5.0"),
+    );
+    for (at, on) in [(20, 0), (40, 1), (60, 0)] {
+        m.apply(Command::SetInput(a, InputValue::Int(on)))
+            .expect("input");
+        m.run_until(SimTime::from_millis(at));
+        assert!(m.read(q) != 0, "a = {on}: {text}");
+    }
+}
+
+#[test]
+fn wires_joined_at_a_coil_do_not_feed_back_into_a_wire_that_goes_elsewhere() {
+    // q = a; Y01 = a OR b. Read as one electrical node, b would light q
+    // too; the origin tools compute each input from its wires.
+    let body = coil(5, 10, 2, "", "q")
+        + r#"
+      <coil localId="6"><position x="60" y="30"/><connectionPointIn><connection refLocalId="2"/><connection refLocalId="3"/></connectionPointIn><variable>Y01</variable></coil>"#;
+    let seen = run_both(&project(&body), "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, false), (true, true), (false, true), (true, true)]
+    );
+    // Joins of the very same wires are one node: no relay for them.
+    let body = r#"
+      <coil localId="5"><position x="60" y="10"/><connectionPointIn><connection refLocalId="2"/><connection refLocalId="3"/></connectionPointIn><variable>q</variable></coil>
+      <coil localId="6"><position x="60" y="30"/><connectionPointIn><connection refLocalId="3"/><connection refLocalId="2"/></connectionPointIn><variable>Y01</variable></coil>"#;
+    let (_, text) =
+        io86a_loaded(&project(body), &VarMap::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(!text.contains('M'), "{text}");
+    let seen = run_both(&project(body), "", &TABLE);
+    assert_eq!(
+        seen,
+        [(false, false), (true, true), (true, true), (true, true)]
     );
 }

@@ -1,13 +1,16 @@
 //! Random LD networks of contacts and boolean blocks, written as another
 //! tool would (issue #18): inputs shared between blocks, contacts after
 //! block outputs, blocks after blocks, drawn anywhere on the page. Each,
-//! imported for IO86A, must light its coils as the network says in the
-//! very scan its inputs change: a lowering that joins what it must not,
-//! or a rung that reads a spare relay before it is written, shows here.
+//! imported for IO86A (and, without counters, for the AVR PLC), must
+//! light its coils as the network says in the very scan its inputs
+//! change: a lowering that joins what it must not, or a rung that reads a
+//! spare relay before it is written, shows here. A coil may join several
+//! wires (their OR).
 
 use engine::events::InputValue;
 use engine::ladder::plcopen::VarMap;
-use engine::plc::{Command, Io86aPlc, Plc};
+use engine::plc::{Command, Plc};
+use engine::MachineId;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -76,61 +79,78 @@ fn flip_type(set_wins: bool) -> &'static str {
 }
 
 /// The network: its elements after the four rail contacts, each with a
-/// row to be drawn at, and the element each coil Y00-Y03 hangs on.
+/// row to be drawn at, and the elements whose wires each coil Y00-Y03
+/// joins.
 #[derive(Clone, Debug)]
 struct Network {
     nodes: Vec<(Node, u32)>,
-    coils: Vec<usize>,
+    coils: Vec<Vec<usize>>,
 }
 
-fn network() -> impl Strategy<Value = Network> {
-    (1usize..8).prop_flat_map(|n| {
+/// Random networks; `counters`: with CTU / CTD / CTUD blocks (the AVR
+/// PLC has no counters).
+fn network(counters: bool) -> impl Strategy<Value = Network> {
+    (1usize..8).prop_flat_map(move |n| {
         let nodes: Vec<BoxedStrategy<(Node, u32)>> = (0..n)
             .map(|i| {
                 let before = 4 + i;
                 let pick = 0..before;
-                let node = prop_oneof![
-                    (0u8..4, pick.clone(), any::<bool>()).prop_map(|(input, from, negated)| {
-                        Node::Contact {
+                let mut kinds: Vec<BoxedStrategy<Node>> = vec![
+                    (0u8..4, pick.clone(), any::<bool>())
+                        .prop_map(|(input, from, negated)| Node::Contact {
                             input,
                             from,
                             negated,
-                        }
-                    }),
-                    prop::collection::vec(pick.clone(), 2..4).prop_map(Node::And),
-                    prop::collection::vec(pick.clone(), 2..4).prop_map(Node::Or),
-                    (pick.clone(), pick.clone()).prop_map(|(a, b)| Node::Xor(a, b)),
-                    pick.clone().prop_map(Node::Not),
+                        })
+                        .boxed(),
+                    prop::collection::vec(pick.clone(), 2..4)
+                        .prop_map(Node::And)
+                        .boxed(),
+                    prop::collection::vec(pick.clone(), 2..4)
+                        .prop_map(Node::Or)
+                        .boxed(),
+                    (pick.clone(), pick.clone())
+                        .prop_map(|(a, b)| Node::Xor(a, b))
+                        .boxed(),
+                    pick.clone().prop_map(Node::Not).boxed(),
                     (pick.clone(), any::<bool>())
-                        .prop_map(|(from, falling)| Node::Trig { from, falling }),
-                    (pick.clone(), pick.clone(), any::<bool>()).prop_map(
-                        |(set, reset, set_wins)| Node::Flip {
+                        .prop_map(|(from, falling)| Node::Trig { from, falling })
+                        .boxed(),
+                    (pick.clone(), pick.clone(), any::<bool>())
+                        .prop_map(|(set, reset, set_wins)| Node::Flip {
                             set,
                             reset,
                             set_wins,
-                        }
-                    ),
-                    (
-                        prop_oneof![Just(Counter::Ctu), Just(Counter::Ctd), Just(Counter::Ctud)],
-                        pick.clone(),
-                        prop::option::of(pick),
-                        1u8..4,
-                        any::<bool>(),
-                    )
-                        .prop_map(|(kind, count, other, pv, empty)| {
-                            Node::Count {
+                        })
+                        .boxed(),
+                ];
+                if counters {
+                    kinds.push(
+                        (
+                            prop_oneof![
+                                Just(Counter::Ctu),
+                                Just(Counter::Ctd),
+                                Just(Counter::Ctud)
+                            ],
+                            pick.clone(),
+                            prop::option::of(pick),
+                            1u8..4,
+                            any::<bool>(),
+                        )
+                            .prop_map(|(kind, count, other, pv, empty)| Node::Count {
                                 kind,
                                 count,
                                 other,
                                 pv,
                                 empty,
-                            }
-                        }),
-                ];
-                (node, 0u32..40).boxed()
+                            })
+                            .boxed(),
+                    );
+                }
+                (proptest::strategy::Union::new(kinds), 0u32..40).boxed()
             })
             .collect();
-        let coils = prop::collection::vec(0..4 + n, 1..5);
+        let coils = prop::collection::vec(prop::collection::vec(0..4 + n, 1..3), 1..5);
         (nodes, coils).prop_map(|(nodes, coils)| Network { nodes, coils })
     })
 }
@@ -332,13 +352,17 @@ impl Network {
                 }
             };
         }
-        for (c, &on) in self.coils.iter().enumerate() {
+        for (c, on) in self.coils.iter().enumerate() {
+            // One connection list joining every wire.
+            let wires: Vec<String> = on.iter().map(|&i| self.from(i)).collect();
+            let joined = wires
+                .join("")
+                .replace("</connectionPointIn><connectionPointIn>", "");
             body += &format!(
                 r#"
-<coil localId="{}"><position x="200" y="{}"/>{}<variable>Y0{c}</variable></coil>"#,
+<coil localId="{}"><position x="200" y="{}"/>{joined}<variable>Y0{c}</variable></coil>"#,
                 100 + c,
                 c * 10,
-                self.from(on)
             );
         }
         format!(
@@ -350,31 +374,67 @@ impl Network {
     }
 }
 
-/// Imports, compiles and runs `net` on IO86A: after each input change,
-/// one scan, and every coil must already show the network's value.
-fn check(net: &Network, inputs: &[u8]) -> Result<(), TestCaseError> {
-    let xml = net.xml();
-    // Each flip-flop's relay: M10 on; each counter's: C0k.
+/// The devices a network's inputs X0n, coils Y0c and flip-flop relays
+/// stand for on a machine.
+struct Devices {
+    input: fn(usize) -> String,
+    coil: fn(usize) -> String,
+    relay: fn(usize) -> String,
+}
+
+const IO86A: Devices = Devices {
+    input: |n| format!("X0{n}"),
+    coil: |c| format!("Y0{c}"),
+    relay: |k| format!("M{}", 10 + k),
+};
+
+/// The AVR PLC's bits: inputs R4.n, coils R5.c, relays R6.k.
+const AVR: Devices = Devices {
+    input: |n| format!("R4.{n}"),
+    coil: |c| format!("R5.{c}"),
+    relay: |k| format!("R6.{k}"),
+};
+
+/// Imports, compiles and runs `net` on `machine` (IO86A or the AVR
+/// PLC): after each input change, one scan, and every coil must already
+/// show the network's value.
+fn check(net: &Network, inputs: &[u8], machine: MachineId) -> Result<(), TestCaseError> {
+    let names = if machine == MachineId::AvrPlc {
+        &AVR
+    } else {
+        &IO86A
+    };
+    let mut xml = net.xml();
+    if machine == MachineId::AvrPlc {
+        for n in 0..4 {
+            let (x, y) = (format!(">X0{n}<"), format!(">Y0{n}<"));
+            xml = xml.replace(&x, &format!(">{}<", (names.input)(n)));
+            xml = xml.replace(&y, &format!(">{}<", (names.coil)(n)));
+        }
+    }
+    // Each flip-flop's relay (M10 on, or R6.k); each counter's: C0k.
     let map = VarMap::from_pairs(net.nodes.iter().enumerate().filter_map(|(k, (node, _))| {
         // Instances are named type and index, as `xml` writes them.
         Some(match node {
-            Node::Flip { set_wins, .. } => (
-                format!("{}{k}", flip_type(*set_wins)),
-                format!("M{}", 10 + k),
-            ),
+            Node::Flip { set_wins, .. } => {
+                (format!("{}{k}", flip_type(*set_wins)), (names.relay)(k))
+            }
             Node::Count { kind, .. } => (format!("{}{k}", kind.pins().0), format!("C0{k}")),
             _ => return None,
         })
     }));
-    let (mut m, text) = crate::gates::io86a_loaded(&xml, &map)
-        .map_err(|e| TestCaseError::fail(format!("{e}\n{xml}")))?;
-    let device =
-        |m: &Io86aPlc, d: &str| m.device(d).map_err(|e| TestCaseError::fail(e.to_string()));
+    let loaded = if machine == MachineId::AvrPlc {
+        crate::gates::avr_loaded(&xml, &map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
+    } else {
+        crate::gates::io86a_loaded(&xml, &map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
+    };
+    let (mut m, text) = loaded.map_err(|e| TestCaseError::fail(format!("{e}\n{xml}")))?;
+    let device = |m: &dyn Plc, d: &str| m.device(d).map_err(|e| TestCaseError::fail(e.to_string()));
     let xs = (0..4)
-        .map(|n| device(&m, &format!("X0{n}")))
+        .map(|n| device(m.as_ref(), &(names.input)(n)))
         .collect::<Result<Vec<_>, _>>()?;
     let ys = (0..net.coils.len())
-        .map(|c| device(&m, &format!("Y0{c}")))
+        .map(|c| device(m.as_ref(), &(names.coil)(c)))
         .collect::<Result<Vec<_>, _>>()?;
     let mut state = vec![false; net.nodes.len()];
     let mut counts = vec![0; net.nodes.len()];
@@ -386,11 +446,11 @@ fn check(net: &Network, inputs: &[u8]) -> Result<(), TestCaseError> {
         }
         m.step_scan();
         let values = net.values(x, &mut state, &mut counts);
-        for (c, &on) in net.coils.iter().enumerate() {
+        for (c, on) in net.coils.iter().enumerate() {
             let seen = m.read(ys[c]) != 0;
             prop_assert_eq!(
                 seen,
-                values[on],
+                on.iter().any(|&i| values[i]),
                 "Y0{} with inputs {:04b}\n{}\n{}",
                 c,
                 x,
@@ -407,10 +467,18 @@ proptest! {
 
     #[test]
     fn random_block_networks_light_their_coils_in_the_same_scan(
-        net in network(),
+        net in network(true),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs)?;
+        check(&net, &inputs, MachineId::Io86a)?;
+    }
+
+    #[test]
+    fn random_block_networks_light_the_avr_plcs_bits_in_the_same_scan(
+        net in network(false),
+        inputs in prop::collection::vec(0u8..16, 1..8),
+    ) {
+        check(&net, &inputs, MachineId::AvrPlc)?;
     }
 }
 
@@ -420,9 +488,18 @@ proptest! {
     #[test]
     #[ignore = "20 000 networks: run with --ignored"]
     fn random_block_networks_20000(
-        net in network(),
+        net in network(true),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs)?;
+        check(&net, &inputs, MachineId::Io86a)?;
+    }
+
+    #[test]
+    #[ignore = "20 000 networks: run with --ignored"]
+    fn random_block_networks_on_the_avr_plc_20000(
+        net in network(false),
+        inputs in prop::collection::vec(0u8..16, 1..8),
+    ) {
+        check(&net, &inputs, MachineId::AvrPlc)?;
     }
 }

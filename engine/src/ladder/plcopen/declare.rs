@@ -357,27 +357,42 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
         return Err(bad());
     }
     let n = byte.saturating_mul(8).saturating_add(bit);
-    let device =
-        match (machine, area) {
-            (MachineId::Io86a | MachineId::MinasecU, 'I') => format!("X{n:02}"),
-            (MachineId::Io86a | MachineId::MinasecU, 'Q') => format!("Y{n:02}"),
-            (MachineId::Io86a, 'M') => format!("M{n:02}"),
-            // MINASEC-U's relays are M00-M07 and M10-M13.
-            (MachineId::MinasecU, 'M') => format!("M{}{}", n / 8, n % 8),
-            (MachineId::ArduinoPlc, 'I') => format!("X{n:03}"),
-            (MachineId::ArduinoPlc, 'Q') => format!("Y{n:03}"),
-            (MachineId::ArduinoPlc, 'M') => {
-                return Err("the Arduino PLC has no internal relays".to_string())
-            }
-            (MachineId::AvrPlc, _) => return Err(
-                "the AVR PLC names its bits in its own source: map the variable (--map NAME,R4.0)"
-                    .to_string(),
-            ),
-            _ => return Err(bad()),
-        };
+    let device = match (machine, area) {
+        (MachineId::Io86a | MachineId::MinasecU, 'I') => format!("X{n:02}"),
+        (MachineId::Io86a | MachineId::MinasecU, 'Q') => format!("Y{n:02}"),
+        (MachineId::Io86a, 'M') => format!("M{n:02}"),
+        // MINASEC-U's relays are M00-M07 and M10-M13.
+        (MachineId::MinasecU, 'M') => format!("M{}{}", n / 8, n % 8),
+        (MachineId::ArduinoPlc, 'I') => format!("X{n:03}"),
+        (MachineId::ArduinoPlc, 'Q') => format!("Y{n:03}"),
+        (MachineId::ArduinoPlc, 'M') => {
+            return Err("the Arduino PLC has no internal relays".to_string())
+        }
+        (MachineId::AvrPlc, 'I' | 'Q' | 'M') => return avr_located(area, n, address),
+        _ => return Err(bad()),
+    };
     check_element(machine, &Element::no(&device))
         .map(|_| device)
         .map_err(|e| format!("{address} is {e}"))
+}
+
+/// The AVR PLC has no fixed inputs or outputs (any register bit may be
+/// either); Hashigo follows the seed's own program, inputs in R4 and
+/// coils in R5, relays after them, and leaves R16-R25 to the compiler's
+/// temporaries: `%IX0.n` → R4.n, `%QX0.n` → R5.n, `%MXb.n` → R(6+b).n
+/// up to R15.7.
+fn avr_located(area: char, n: u32, address: &str) -> Result<String, String> {
+    let (register, bits, what, last) = match area {
+        'I' => (4, 8, "inputs", "R4.7"),
+        'Q' => (5, 8, "outputs", "R5.7"),
+        _ => (6, 80, "relays", "R15.7"),
+    };
+    if n >= bits {
+        return Err(format!(
+            "{address} is past the AVR PLC's {what} (R{register}.0-{last} in Hashigo)"
+        ));
+    }
+    Ok(format!("R{}.{}", register + n / 8, n % 8))
 }
 
 /// A device proposed for every declared variable and block instance of
@@ -560,13 +575,22 @@ impl Pools {
                 timers: Vec::new(),
                 counters: Vec::new(),
             },
-            MachineId::AvrPlc => Pools {
-                inputs: Vec::new(),
-                outputs: Vec::new(),
-                relays: Vec::new(),
-                timers: Vec::new(),
-                counters: Vec::new(),
-            },
+            // [`avr_located`]'s registers; timers are named in-line boxes
+            // (an instance keeps its name), and there are no counters.
+            MachineId::AvrPlc => {
+                let bits = |registers: std::ops::Range<u32>| -> Vec<String> {
+                    registers
+                        .flat_map(|r| (0..8).map(move |b| format!("R{r}.{b}")))
+                        .collect()
+                };
+                Pools {
+                    inputs: bits(4..5),
+                    outputs: bits(5..6),
+                    relays: bits(6..16),
+                    timers: Vec::new(),
+                    counters: Vec::new(),
+                }
+            }
         }
     }
 }
@@ -599,7 +623,18 @@ mod tests {
             located(MachineId::ArduinoPlc, "%QX0.0").as_deref(),
             Ok("Y000")
         );
-        assert!(located(MachineId::AvrPlc, "%IX0.0").is_err());
+        let avr = MachineId::AvrPlc;
+        assert_eq!(located(avr, "%IX0.3").as_deref(), Ok("R4.3"));
+        assert_eq!(located(avr, "%QX0.7").as_deref(), Ok("R5.7"));
+        assert_eq!(located(avr, "%MX1.2").as_deref(), Ok("R7.2"));
+        assert_eq!(located(avr, "%MX9.7").as_deref(), Ok("R15.7"));
+        let past = located(avr, "%MX10.0").expect_err("R16 is the compiler's");
+        assert_eq!(
+            past,
+            "%MX10.0 is past the AVR PLC's relays (R6.0-R15.7 in Hashigo)"
+        );
+        assert!(located(avr, "%IX1.0").is_err(), "R4 holds the inputs");
+        assert!(located(avr, "%QX0.8").is_err());
     }
 
     #[test]

@@ -21,7 +21,7 @@
 //! What does not fit is refused at the block's line with the reason,
 //! never approximated.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::import::Body;
 use crate::error::Located;
@@ -94,10 +94,11 @@ pub(super) enum GateKind {
 }
 
 impl Body {
-    /// Lowers every gate, or says why one cannot be.
+    /// Lowers every gate, or says why one cannot be: the joins of wires
+    /// first, so each block sees the whole network feeding its inputs.
     pub(super) fn lower_gates(&mut self) -> Result<(), Vec<Located<super::ImportError>>> {
+        let mut errors = self.lower_joins();
         let gates = std::mem::take(&mut self.gates);
-        let mut errors = Vec::new();
         for g in gates {
             if self.gate_work > MAX_GATE_WORK {
                 let why = format!(
@@ -116,6 +117,88 @@ impl Body {
         } else {
             Err(errors)
         }
+    }
+
+    /// Joins of wires at an input. A wire whose power only joins of the
+    /// same wires take is one node with them (a branch drawn once and
+    /// read by several elements, as Hashigo's own export writes it): its
+    /// point is joined to theirs. A wire that also feeds something else,
+    /// or joins of other wires, would be fed their power back: a spare
+    /// relay's contact carries it instead (one relay per wire). Linear:
+    /// the takers are counted once, and each join's wires are compared
+    /// by a number given to each distinct set.
+    fn lower_joins(&mut self) -> Vec<Located<super::ImportError>> {
+        let joins = std::mem::take(&mut self.joins);
+        let takers = self.takers();
+        let mut ids: HashMap<Vec<usize>, usize> = HashMap::new();
+        let mut wires = Vec::with_capacity(joins.len());
+        for g in &joins {
+            let mut set: Vec<usize> = g.inputs.iter().map(|&p| self.find(p)).collect();
+            set.sort_unstable();
+            set.dedup();
+            let next = ids.len();
+            let id = *ids.entry(set.clone()).or_insert(next);
+            wires.push((set, id));
+        }
+        // Each wire: how many joins take it, and whether they differ.
+        let mut in_joins: HashMap<usize, (usize, usize, bool)> = HashMap::new();
+        for (set, id) in &wires {
+            for &p in set {
+                let e = in_joins.entry(p).or_insert((0, *id, false));
+                e.0 += 1;
+                e.2 |= e.1 != *id;
+            }
+        }
+        // A flip-flop's output point is where its relay's coil goes: joined,
+        // the other wires' power would set it. Its wire is relayed. (The
+        // other blocks give their output from a contact, or are networks
+        // that end there.)
+        let mut driven = HashSet::new();
+        for i in 0..self.gates.len() {
+            if matches!(self.gates[i].kind, GateKind::Flip { .. }) {
+                let out = self.gates[i].out;
+                driven.insert(self.find(out));
+            }
+        }
+        let node = |p: usize| {
+            !driven.contains(&p)
+                && in_joins
+                    .get(&p)
+                    .is_some_and(|&(n, _, mixed)| !mixed && takers.get(&p) == Some(&n))
+        };
+        let mut relayed: HashMap<usize, Element> = HashMap::new();
+        let mut errors = Vec::new();
+        for (g, (set, _)) in joins.iter().zip(&wires) {
+            for (k, &p) in set.iter().enumerate() {
+                if node(p) {
+                    self.union(p, g.out);
+                    continue;
+                }
+                let contact = match relayed.get(&p) {
+                    Some(c) => c.clone(),
+                    None => {
+                        let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
+                        match self.relay_for(p, g, at) {
+                            Ok(c) => relayed.entry(p).or_insert(c).clone(),
+                            Err(why) => {
+                                let what = g.what.clone();
+                                errors.push(Located::new(
+                                    g.line,
+                                    super::ImportError::Gate(what, why),
+                                ));
+                                continue;
+                            }
+                        }
+                    }
+                };
+                let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
+                let rail = super::import::RAIL;
+                self.consumed.push(rail);
+                self.edges
+                    .push((rail, g.out, Net::Leaf(contact, at), g.line));
+            }
+        }
+        errors
     }
 
     /// How many elements take power from each point (joined points).
@@ -346,7 +429,7 @@ impl Body {
     }
 
     /// A spare relay for `what`, noted among the helpers.
-    fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, String> {
+    pub(super) fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, String> {
         let relay = self
             .spares
             .pop()

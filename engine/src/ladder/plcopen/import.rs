@@ -9,14 +9,15 @@ use super::blocks;
 use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::{Connection, ImportError};
-use super::gates::Gate;
+use super::gates::{Gate, GateKind};
+use super::main_line::{off_main_line, Link};
 use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::io86a::{isa::parse_bit, Bit};
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{Ladder, Pos};
 use crate::ladder::net::{reduce_all, try_layout, Edge, Net, NetError, RungLogic};
-use crate::ladder::target::check_element;
+use crate::ladder::target::{capabilities, check_element};
 use crate::limits::MAX_RUNGS;
 use crate::MachineId;
 
@@ -363,6 +364,12 @@ pub(super) struct Body {
     /// lowering them has taken ([`crate::limits::MAX_GATE_WORK`]).
     pub(super) gates: Vec<Gate>,
     pub(super) gate_work: usize,
+    /// Wires joined at an input, as OR gates lowered before the blocks
+    /// ([`Body::lower_gates`]).
+    pub(super) joins: Vec<Gate>,
+    /// The element being read (its place and line), for the OR a join of
+    /// wires at one of its inputs makes ([`Body::join`]).
+    reading: (Pos, usize),
     /// Comment boxes: where they are drawn (row, column) and their text.
     comments: Vec<(usize, usize, String)>,
     /// Relays free to hold a network's power (the next is popped), and
@@ -544,7 +551,7 @@ impl Body {
         let conns: Vec<&Node> = cpi
             .map(|c| c.all("connection").collect())
             .unwrap_or_default();
-        let mut joined = None;
+        let mut joined: Vec<usize> = Vec::new();
         for c in conns {
             let Some(r) = c.attr("refLocalId") else {
                 return Err(fail(Connection::NoRef));
@@ -565,12 +572,34 @@ impl Body {
                 },
                 Some(_) => self.point(r, ""),
             };
-            match joined {
-                None => joined = Some(p),
-                Some(j) => self.union(j, p),
+            let p = self.find(p);
+            if !joined.contains(&p) {
+                joined.push(p);
             }
         }
-        joined.ok_or_else(|| fail(Connection::Unconnected))
+        match joined[..] {
+            [] => Err(fail(Connection::Unconnected)),
+            [p] => Ok(p),
+            _ if joined.contains(&self.find(RAIL)) => Ok(RAIL),
+            // Wires joined at an input: an OR of what each carries, as
+            // the origin tools compute it. Not one point: a source that
+            // also feeds elsewhere would be fed the other wires' power
+            // back (lowered as an OR block: through a relay then).
+            _ => {
+                let out = self.fresh();
+                self.consumed.extend(&joined);
+                let (pos, line) = self.reading;
+                self.joins.push(Gate {
+                    kind: GateKind::Or,
+                    inputs: joined,
+                    out,
+                    pos,
+                    line,
+                    what: format!("a wire joined at {what}"),
+                });
+                Ok(out)
+            }
+        }
     }
 
     /// The point continuation `id` carries: what feeds the connector of
@@ -605,6 +634,7 @@ impl Body {
         let id = n.attr("localId").unwrap_or_default().to_string();
         let (y, x) = position(n);
         let pos = place(y, x, seq);
+        self.reading = (pos, n.line);
         // A declared name stands for its device (located or mapped).
         let variable = || -> Result<Option<String>, ImportError> {
             match n.child("variable").map(|v| v.text.trim().to_string()) {
@@ -652,7 +682,7 @@ impl Body {
                     },
                     _ => return Err(ImportError::CoilMix(device)),
                 };
-                let input = self.join(n.child("connectionPointIn"), &format!("coil {element}"))?;
+                let input = self.join(n.child("connectionPointIn"), &element.to_string())?;
                 self.consumed.push(input);
                 // A coil passes power on: a coil wired after it sees the same.
                 let out = self.point(&id, "");
@@ -751,10 +781,18 @@ impl Body {
             self.fold_boxes_into_contacts(m);
         }
         let (mut edges, mut lines) = self.graph(machine)?;
+        // An element whose output was joined to the rail (a wire joined
+        // with an always-on output: OR TRUE), or a contact between one
+        // point, changes no power: dropped (said as leading to no coil),
+        // as the loop it makes would not reduce.
+        let rail = self.find(RAIL);
+        edges.retain(|e| {
+            let shorted = e.from == e.to && matches!(e.net, Net::Leaf(Element::Contact { .. }, _));
+            e.to != rail && !shorted
+        });
         if let Some(m) = machine {
             self.check_machine(m, &edges, &lines)?;
         }
-        let rail = self.find(RAIL);
         let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
         for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
             let bus = self.find(input);
@@ -845,9 +883,10 @@ impl Body {
             .into_iter()
             .map(|p| self.find(p))
             .collect();
+        let off_main = self.boxes_off_main_line(machine);
         let mut edges = Vec::new();
         let mut lines: HashMap<Pos, usize> = HashMap::new();
-        for (a, b, net, line) in std::mem::take(&mut self.edges) {
+        for (index, (a, b, net, line)) in std::mem::take(&mut self.edges).into_iter().enumerate() {
             let (a, b) = (self.find(a), self.find(b));
             if let Net::Leaf(e, pos) = &net {
                 lines.insert(*pos, line);
@@ -901,12 +940,47 @@ impl Body {
                         let wired = ImportError::CounterQWired(device.clone());
                         return Err(vec![Located::new(line, wired)]);
                     }
+                    (Element::Timer { .. }, _) if off_main.contains(&index) => {
+                        // Off the rung's main line, where the machine
+                        // takes timers in-line only: the timer gets a rung
+                        // of its own into a spare relay, whose contact
+                        // gives Q where Q went.
+                        let what = format!("{e} box's output");
+                        let relay = self.spare_relay(&what, line).map_err(|why| {
+                            vec![Located::new(line, ImportError::Gate(e.to_string(), why))]
+                        })?;
+                        let q = self.fresh();
+                        let at_coil = Pos::new(pos.row, pos.col.wrapping_add(1));
+                        self.outputs.push((
+                            q,
+                            coil(CoilKind::Normal, relay.clone()),
+                            at_coil,
+                            line,
+                        ));
+                        let at = Pos::new(pos.row, pos.col.wrapping_add(SPLIT_PLACES));
+                        lines.insert(at, line);
+                        let rail = self.find(RAIL);
+                        let contact = Net::Leaf(Element::no(&relay), at);
+                        edges.push(Edge {
+                            from: a,
+                            to: q,
+                            net,
+                        });
+                        edges.push(Edge {
+                            from: rail,
+                            to: b,
+                            net: contact,
+                        });
+                        continue;
+                    }
                     (Element::Not | Element::Edge { .. }, _)
-                        if machine.is_some_and(|m| check_element(m, e).is_err()) =>
+                        if machine.is_some_and(|m| check_element(m, e).is_err())
+                            || off_main.contains(&index) =>
                     {
-                        // No in-line box on this machine: a relay holds
-                        // the box's input, and its NC (NOT) or edge
-                        // contact gives the box's output.
+                        // No in-line box on this machine, or not here (off
+                        // the rung's main line): a relay holds the box's
+                        // input, and its NC (NOT) or edge contact gives the
+                        // box's output.
                         let what = match e {
                             Element::Not => "NOT block".to_string(),
                             Element::Edge { falling: true } => "F_TRIG block".to_string(),
@@ -942,6 +1016,35 @@ impl Body {
             });
         }
         Ok((edges, lines))
+    }
+
+    /// The edges (by index) holding a NOT, edge or timer box that
+    /// `machine` takes in-line but that would not stand on its rung's main
+    /// line ([`super::main_line`]).
+    fn boxes_off_main_line(&mut self, machine: Option<MachineId>) -> HashSet<usize> {
+        if !machine.is_some_and(|m| capabilities(m).inline_boxes) {
+            return HashSet::new();
+        }
+        let rail = self.find(RAIL);
+        let mut links: Vec<Link> = Vec::with_capacity(self.edges.len());
+        for i in 0..self.edges.len() {
+            let (a, b) = (self.edges[i].0, self.edges[i].1);
+            let relayable = matches!(
+                self.edges[i].2,
+                Net::Leaf(
+                    Element::Not | Element::Edge { .. } | Element::Timer { .. },
+                    _
+                )
+            );
+            let (from, to) = (self.find(a), self.find(b));
+            links.push(Link {
+                from,
+                to,
+                relayable,
+            });
+        }
+        let points = self.parent.len();
+        off_main_line(&mut links, rail, points, self.spares.len())
     }
 
     /// An in-line timer or counter box from point `a` to `b` as IO86A

@@ -12,6 +12,7 @@ pub mod error;
 pub mod export;
 mod gates;
 pub mod import;
+mod main_line;
 mod order;
 
 pub use declare::VarMap;
