@@ -116,76 +116,81 @@ pub fn plcopen_rails(rails: usize) -> String {
     s + TAIL
 }
 
-/// A PLCopen LD body of `n` OR blocks, each of two contacts, each to a coil.
-pub fn plcopen_ors(n: usize) -> String {
+/// A PLCopen LD body of `n` rungs, rung `i` written by `rung` from four
+/// local ids of its own and its row.
+fn plcopen_block_rungs(n: usize, rung: impl Fn([usize; 4], usize) -> String) -> String {
     let mut s = String::from(HEAD);
     for i in 0..n {
-        let (a, b, g, k) = (10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i);
-        let y = i * 10;
-        for c in [a, b] {
-            let _ = writeln!(
-                s,
-                r#"<contact localId="{c}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>"#,
-                conn(&[1])
-            );
-        }
-        let _ = writeln!(
-            s,
-            r#"<block localId="{g}" typeName="OR"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN1">{}</variable><variable formalParameter="IN2">{}</variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#,
-            conn(&[a]),
-            conn(&[b])
-        );
-        let _ = writeln!(
-            s,
-            r#"<coil localId="{k}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{g}" formalParameter="OUT"/></connectionPointIn><variable>Y00</variable></coil>"#
-        );
+        let ids = [10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i];
+        let _ = writeln!(s, "{}", rung(ids, i * 10));
     }
     s + TAIL
 }
 
-/// `n` rungs, each X00 through two NOT blocks into Y00 (`n` = 0: none).
+/// Contact `id` of X00 on the left rail, at row `y`.
+fn rail_contact(id: usize, y: usize) -> String {
+    format!(
+        r#"<contact localId="{id}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>"#,
+        conn(&[1])
+    )
+}
+
+/// Coil `id` of Y00 at row `y`, fed by pin `pin` of block `from`.
+fn coil_after(id: usize, y: usize, from: usize, pin: &str) -> String {
+    format!(
+        r#"<coil localId="{id}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{from}" formalParameter="{pin}"/></connectionPointIn><variable>Y00</variable></coil>"#
+    )
+}
+
+/// A PLCopen LD body of `n` OR blocks, each of two contacts, each to a coil.
+pub fn plcopen_ors(n: usize) -> String {
+    plcopen_block_rungs(n, |[a, b, g, k], y| {
+        format!(
+            r#"{}
+{}
+<block localId="{g}" typeName="OR"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN1">{}</variable><variable formalParameter="IN2">{}</variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+{}"#,
+            rail_contact(a, y),
+            rail_contact(b, y),
+            conn(&[a]),
+            conn(&[b]),
+            coil_after(k, y, g, "OUT")
+        )
+    })
+}
+
+/// `n` rungs, each X00 through two NOT blocks into Y00.
 pub fn plcopen_double_nots(n: usize) -> String {
-    let mut s = String::from(HEAD);
-    for i in 0..n {
-        let (c, g, h, k) = (10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i);
-        let y = i * 10;
-        let _ = writeln!(
-            s,
-            r#"<contact localId="{c}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>"#,
-            conn(&[1])
-        );
-        for (id, from, pin) in [(g, c, ""), (h, g, r#" formalParameter="OUT""#)] {
-            let _ = writeln!(
-                s,
+    plcopen_block_rungs(n, |[c, g, h, k], y| {
+        let not = |id: usize, from: usize, pin: &str| {
+            format!(
                 r#"<block localId="{id}" typeName="NOT"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="{from}"{pin}/></connectionPointIn></variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#
-            );
-        }
-        let _ = writeln!(
-            s,
-            r#"<coil localId="{k}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{h}" formalParameter="OUT"/></connectionPointIn><variable>Y00</variable></coil>"#
-        );
-    }
-    s + TAIL
+            )
+        };
+        format!(
+            "{}\n{}\n{}\n{}",
+            rail_contact(c, y),
+            not(g, c, ""),
+            not(h, g, r#" formalParameter="OUT""#),
+            coil_after(k, y, h, "OUT")
+        )
+    })
 }
 
 /// `n` rungs, each X00 into an in-line TON named T00 (PT 1 s) whose Q
 /// lights Y00: on IO86A every one is split into `OUT T00` and a contact
 /// of T00, all of them ordered writers before readers.
 pub fn plcopen_timers(n: usize) -> String {
-    let mut s = String::from(HEAD);
-    for i in 0..n {
-        let (c, t, p, k) = (10 + 4 * i, 11 + 4 * i, 12 + 4 * i, 13 + 4 * i);
-        let y = i * 10;
-        let _ = writeln!(
-            s,
-            r#"<contact localId="{c}"><position x="10" y="{y}"/>{}<variable>X00</variable></contact>
+    plcopen_block_rungs(n, |[c, t, p, k], y| {
+        format!(
+            r#"{}
 <inVariable localId="{p}"><position x="20" y="{y}"/><connectionPointOut/><expression>T#1s</expression></inVariable>
 <block localId="{t}" typeName="TON" instanceName="T00"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN">{}</variable><variable formalParameter="PT">{}</variable></inputVariables><outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables></block>
-<coil localId="{k}"><position x="50" y="{y}"/><connectionPointIn><connection refLocalId="{t}" formalParameter="Q"/></connectionPointIn><variable>Y00</variable></coil>"#,
-            conn(&[1]),
+{}"#,
+            rail_contact(c, y),
             conn(&[c]),
-            conn(&[p])
-        );
-    }
-    s + TAIL
+            conn(&[p]),
+            coil_after(k, y, t, "Q")
+        )
+    })
 }

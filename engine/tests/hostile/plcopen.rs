@@ -177,14 +177,18 @@ fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
     assert!(started.elapsed().as_secs() < 120);
 }
 
+/// `xml` imported for IO86A, or a panic with its first errors.
+fn imported_for_io86a(xml: &str) -> engine::ladder::Ladder {
+    engine::ladder::plcopen::import_for(xml, Some(engine::MachineId::Io86a))
+        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]))
+}
+
 #[test]
 fn thousands_of_not_blocks_fold_into_their_contacts_in_one_pass() {
     // IO86A has no in-line NOT: each NOT NOT X00 folds into X00's NO
     // contact (no spare relay, of which there are far fewer than 10 000).
-    let xml = crate::gen::plcopen_double_nots(5_000);
     let started = std::time::Instant::now();
-    let ladder = engine::ladder::plcopen::import_for(&xml, Some(engine::MachineId::Io86a))
-        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
+    let ladder = imported_for_io86a(&crate::gen::plcopen_double_nots(5_000));
     assert_eq!(ladder.rungs.len(), 5_000);
     let contact = Element::Contact {
         kind: ContactKind::No,
@@ -203,10 +207,8 @@ fn thousands_of_not_blocks_fold_into_their_contacts_in_one_pass() {
 fn thousands_of_split_timers_are_ordered_without_quadratic_work() {
     // 3 000 in-line TONs on one timer: 3 000 writers and 3 000 readers of
     // T00 to order (each reader after every writer).
-    let xml = crate::gen::plcopen_timers(3_000);
     let started = std::time::Instant::now();
-    let ladder = engine::ladder::plcopen::import_for(&xml, Some(engine::MachineId::Io86a))
-        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
+    let ladder = imported_for_io86a(&crate::gen::plcopen_timers(3_000));
     assert_eq!(
         ladder.rungs.len(),
         6_000,
