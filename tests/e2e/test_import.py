@@ -15,11 +15,11 @@ def devices(driver):
     return {c.get_attribute("data-device") for c in cells}
 
 
-def import_dialog(driver, base_url, path, why):
-    """A fresh IO86A page with `path` opened: its import dialog (`why`
-    it is shown)."""
+def import_dialog(driver, base_url, path, why, machine="io86a"):
+    """A fresh page on `machine` with `path` opened: its import dialog
+    (`why` it is shown)."""
     open_fresh(driver, base_url)
-    Select(el(driver, "machine")).select_by_value("io86a")
+    Select(el(driver, "machine")).select_by_value(machine)
     wait(driver, lambda: el(driver, "palette"))
     el(driver, "open-file").send_keys(str(path))
     return wait(driver, lambda: el(driver, "import-dialog"), message=why)
@@ -64,3 +64,15 @@ def test_an_fbd_program_imports_as_the_ladder_its_blocks_say(driver, base_url):
     assert len(nc) == 1, "X01 read negated once, plainly once"
     listing = el(driver, "il-listing").text
     assert "ANI X01" in listing and "OUT Y01" in listing, listing
+
+
+def test_the_avr_plc_imports_with_its_bits_laid_out_as_its_seed_does(driver, base_url):
+    """Located inputs are R4, outputs R5; the dialog proposes the next
+    free output for what a coil writes."""
+    import_dialog(driver, base_url, FBD, "the dialog, since lamp has no device", "avr-plc")
+    assert el(driver, "import-map-lamp").get_attribute("value") == "R5.0"
+    el(driver, "import-apply").click()
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]'))
+    assert {"R4.0", "R4.1", "R5.0", "R5.1"} <= devices(driver)
+    listing = el(driver, "il-listing").text
+    assert "And_B,4,Bit1,0" in listing and "Coil_A,5,Bit0,0" in listing, listing
