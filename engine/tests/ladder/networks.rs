@@ -18,10 +18,11 @@ use proptest::test_runner::TestCaseError;
 /// the contacts X00-X03 from the rail).
 #[derive(Clone, Debug)]
 enum Node {
-    /// A contact of X0n after element `from`, negated or not.
+    /// A contact of X0n after the wires of elements `from` joined,
+    /// negated or not.
     Contact {
         input: u8,
-        from: usize,
+        from: Vec<usize>,
         negated: bool,
     },
     And(Vec<usize>),
@@ -96,7 +97,11 @@ fn network(counters: bool) -> impl Strategy<Value = Network> {
                 let before = 4 + i;
                 let pick = 0..before;
                 let mut kinds: Vec<BoxedStrategy<Node>> = vec![
-                    (0u8..4, pick.clone(), any::<bool>())
+                    (
+                        0u8..4,
+                        prop::collection::vec(pick.clone(), 1..3),
+                        any::<bool>(),
+                    )
                         .prop_map(|(input, from, negated)| Node::Contact {
                             input,
                             from,
@@ -168,7 +173,7 @@ impl Network {
                     input,
                     from,
                     negated,
-                } => v[*from] && ((x & (1 << input) != 0) != *negated),
+                } => from.iter().any(|&i| v[i]) && ((x & (1 << input) != 0) != *negated),
                 Node::And(ins) => ins.iter().all(|&i| v[i]),
                 Node::Or(ins) => ins.iter().any(|&i| v[i]),
                 Node::Xor(a, b) => v[*a] != v[*b],
@@ -225,6 +230,14 @@ impl Network {
             v.push(value);
         }
         v
+    }
+
+    /// One connection list joining the outputs of elements `from`.
+    fn joined(&self, from: &[usize]) -> String {
+        let wires: Vec<String> = from.iter().map(|&i| self.from(i)).collect();
+        wires
+            .join("")
+            .replace("</connectionPointIn><connectionPointIn>", "")
     }
 
     /// The connection to element `i`'s output.
@@ -303,7 +316,7 @@ impl Network {
                 } => format!(
                     r#"
 <contact localId="{id}" negated="{negated}"><position x="{x}" y="{y}"/>{}<variable>X0{input}</variable></contact>"#,
-                    self.from(*from)
+                    self.joined(from)
                 ),
                 Node::And(ins) => block("AND", pins(ins)),
                 Node::Or(ins) => block("OR", pins(ins)),
@@ -353,11 +366,7 @@ impl Network {
             };
         }
         for (c, on) in self.coils.iter().enumerate() {
-            // One connection list joining every wire.
-            let wires: Vec<String> = on.iter().map(|&i| self.from(i)).collect();
-            let joined = wires
-                .join("")
-                .replace("</connectionPointIn><connectionPointIn>", "");
+            let joined = self.joined(on);
             body += &format!(
                 r#"
 <coil localId="{}"><position x="200" y="{}"/>{joined}<variable>Y0{c}</variable></coil>"#,
@@ -428,6 +437,18 @@ fn check(net: &Network, inputs: &[u8], machine: MachineId) -> Result<(), TestCas
     } else {
         crate::gates::io86a_loaded(&xml, &map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
     };
+    // A contact after joined wires can make a network no series-parallel
+    // ladder draws without copying part of it (a bridge: the wire of a
+    // contact that also feeds a later join); the import refuses that at
+    // its line, which is fine. Everything else must import.
+    let joins_into_a_contact = net
+        .nodes
+        .iter()
+        .any(|(n, _)| matches!(n, Node::Contact { from, .. } if from.len() > 1));
+    let loaded = match loaded {
+        Err(e) if joins_into_a_contact && is_only_bridges(&e) => return Ok(()),
+        other => other,
+    };
     let (mut m, text) = loaded.map_err(|e| TestCaseError::fail(format!("{e}\n{xml}")))?;
     let device = |m: &dyn Plc, d: &str| m.device(d).map_err(|e| TestCaseError::fail(e.to_string()));
     let xs = (0..4)
@@ -460,6 +481,13 @@ fn check(net: &Network, inputs: &[u8], machine: MachineId) -> Result<(), TestCas
         }
     }
     Ok(())
+}
+
+/// Whether an import's errors (as `{:?}` prints them) are all networks
+/// that are not series-parallel.
+fn is_only_bridges(errors: &str) -> bool {
+    let located = errors.matches("Located {").count();
+    located > 0 && errors.matches("NotSeriesParallel").count() == located
 }
 
 proptest! {
