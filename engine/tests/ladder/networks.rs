@@ -10,7 +10,6 @@
 use engine::events::InputValue;
 use engine::ladder::plcopen::VarMap;
 use engine::plc::{Command, Plc};
-use engine::MachineId;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -383,60 +382,60 @@ impl Network {
     }
 }
 
-/// The devices a network's inputs X0n, coils Y0c and flip-flop relays
-/// stand for on a machine.
-struct Devices {
+/// A machine loaded with a program, and the program's text.
+type Loaded = Result<(Box<dyn Plc>, String), String>;
+
+/// A machine the networks run on: the devices their inputs X0n, coils
+/// Y0c and flip-flop relays stand for there, and how a network's XML is
+/// imported, compiled and loaded on it.
+struct Target {
     input: fn(usize) -> String,
     coil: fn(usize) -> String,
     relay: fn(usize) -> String,
+    load: fn(&str, &VarMap) -> Loaded,
 }
 
-const IO86A: Devices = Devices {
+const IO86A: Target = Target {
     input: |n| format!("X0{n}"),
     coil: |c| format!("Y0{c}"),
     relay: |k| format!("M{}", 10 + k),
+    load: |xml, map| {
+        crate::gates::io86a_loaded(xml, map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
+    },
 };
 
 /// The AVR PLC's bits: inputs R4.n, coils R5.c, relays R6.k.
-const AVR: Devices = Devices {
+const AVR: Target = Target {
     input: |n| format!("R4.{n}"),
     coil: |c| format!("R5.{c}"),
     relay: |k| format!("R6.{k}"),
+    load: |xml, map| {
+        crate::gates::avr_loaded(xml, map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
+    },
 };
 
-/// Imports, compiles and runs `net` on `machine` (IO86A or the AVR
-/// PLC): after each input change, one scan, and every coil must already
-/// show the network's value.
-fn check(net: &Network, inputs: &[u8], machine: MachineId) -> Result<(), TestCaseError> {
-    let names = if machine == MachineId::AvrPlc {
-        &AVR
-    } else {
-        &IO86A
-    };
+/// Imports, compiles and runs `net` on `target`: after each input
+/// change, one scan, and every coil must already show the network's
+/// value.
+fn check(net: &Network, inputs: &[u8], target: &Target) -> Result<(), TestCaseError> {
     let mut xml = net.xml();
-    if machine == MachineId::AvrPlc {
-        for n in 0..4 {
-            let (x, y) = (format!(">X0{n}<"), format!(">Y0{n}<"));
-            xml = xml.replace(&x, &format!(">{}<", (names.input)(n)));
-            xml = xml.replace(&y, &format!(">{}<", (names.coil)(n)));
-        }
+    for n in 0..4 {
+        let (x, y) = (format!(">X0{n}<"), format!(">Y0{n}<"));
+        xml = xml.replace(&x, &format!(">{}<", (target.input)(n)));
+        xml = xml.replace(&y, &format!(">{}<", (target.coil)(n)));
     }
     // Each flip-flop's relay (M10 on, or R6.k); each counter's: C0k.
     let map = VarMap::from_pairs(net.nodes.iter().enumerate().filter_map(|(k, (node, _))| {
         // Instances are named type and index, as `xml` writes them.
         Some(match node {
             Node::Flip { set_wins, .. } => {
-                (format!("{}{k}", flip_type(*set_wins)), (names.relay)(k))
+                (format!("{}{k}", flip_type(*set_wins)), (target.relay)(k))
             }
             Node::Count { kind, .. } => (format!("{}{k}", kind.pins().0), format!("C0{k}")),
             _ => return None,
         })
     }));
-    let loaded = if machine == MachineId::AvrPlc {
-        crate::gates::avr_loaded(&xml, &map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
-    } else {
-        crate::gates::io86a_loaded(&xml, &map).map(|(m, text)| (Box::new(m) as Box<dyn Plc>, text))
-    };
+    let loaded = (target.load)(&xml, &map);
     // A contact after joined wires can make a network no series-parallel
     // ladder draws without copying part of it (a bridge: the wire of a
     // contact that also feeds a later join); the import refuses that at
@@ -452,10 +451,10 @@ fn check(net: &Network, inputs: &[u8], machine: MachineId) -> Result<(), TestCas
     let (mut m, text) = loaded.map_err(|e| TestCaseError::fail(format!("{e}\n{xml}")))?;
     let device = |m: &dyn Plc, d: &str| m.device(d).map_err(|e| TestCaseError::fail(e.to_string()));
     let xs = (0..4)
-        .map(|n| device(m.as_ref(), &(names.input)(n)))
+        .map(|n| device(m.as_ref(), &(target.input)(n)))
         .collect::<Result<Vec<_>, _>>()?;
     let ys = (0..net.coils.len())
-        .map(|c| device(m.as_ref(), &(names.coil)(c)))
+        .map(|c| device(m.as_ref(), &(target.coil)(c)))
         .collect::<Result<Vec<_>, _>>()?;
     let mut state = vec![false; net.nodes.len()];
     let mut counts = vec![0; net.nodes.len()];
@@ -498,7 +497,7 @@ proptest! {
         net in network(true),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, MachineId::Io86a)?;
+        check(&net, &inputs, &IO86A)?;
     }
 
     #[test]
@@ -506,7 +505,7 @@ proptest! {
         net in network(false),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, MachineId::AvrPlc)?;
+        check(&net, &inputs, &AVR)?;
     }
 }
 
@@ -519,7 +518,7 @@ proptest! {
         net in network(true),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, MachineId::Io86a)?;
+        check(&net, &inputs, &IO86A)?;
     }
 
     #[test]
@@ -528,6 +527,6 @@ proptest! {
         net in network(false),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, MachineId::AvrPlc)?;
+        check(&net, &inputs, &AVR)?;
     }
 }

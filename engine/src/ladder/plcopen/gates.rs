@@ -28,7 +28,7 @@ use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
-use crate::ladder::target::check_element;
+use crate::ladder::target::capabilities;
 use crate::limits::MAX_GATE_WORK;
 use crate::MachineId;
 
@@ -174,24 +174,18 @@ impl Body {
                     self.union(p, g.out);
                     continue;
                 }
+                let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
                 let contact = match relayed.get(&p) {
                     Some(c) => c.clone(),
-                    None => {
-                        let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
-                        match self.relay_for(p, g, at) {
-                            Ok(c) => relayed.entry(p).or_insert(c).clone(),
-                            Err(why) => {
-                                let what = g.what.clone();
-                                errors.push(Located::new(
-                                    g.line,
-                                    super::ImportError::Gate(what, why),
-                                ));
-                                continue;
-                            }
+                    None => match self.relay_for(p, g, at) {
+                        Ok(c) => relayed.entry(p).or_insert(c).clone(),
+                        Err(why) => {
+                            let what = g.what.clone();
+                            errors.push(Located::new(g.line, super::ImportError::Gate(what, why)));
+                            continue;
                         }
-                    }
+                    },
                 };
-                let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
                 let rail = super::import::RAIL;
                 self.consumed.push(rail);
                 self.edges
@@ -599,6 +593,9 @@ impl Body {
     /// hold the box's input in. One pass over the edges, in file order (a
     /// box after a folded one folds too: NOT NOT a is a's NO contact).
     pub(super) fn fold_boxes_into_contacts(&mut self, machine: MachineId) {
+        if capabilities(machine).inline_boxes {
+            return;
+        }
         let rail = self.find(super::import::RAIL);
         let takers = self.takers();
         let mut from = Vec::with_capacity(self.edges.len());
@@ -624,8 +621,7 @@ impl Body {
             else {
                 continue;
             };
-            let Some(kind) = turned(&e, *kind).filter(|_| check_element(machine, &e).is_err())
-            else {
+            let Some(kind) = turned(&e, *kind) else {
                 continue;
             };
             let device = device.clone();

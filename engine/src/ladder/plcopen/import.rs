@@ -951,26 +951,14 @@ impl Body {
                         })?;
                         let q = self.fresh();
                         let at_coil = Pos::new(pos.row, pos.col.wrapping_add(1));
-                        self.outputs.push((
-                            q,
-                            coil(CoilKind::Normal, relay.clone()),
-                            at_coil,
-                            line,
-                        ));
-                        let at = Pos::new(pos.row, pos.col.wrapping_add(SPLIT_PLACES));
-                        lines.insert(at, line);
-                        let rail = self.find(RAIL);
-                        let contact = Net::Leaf(Element::no(&relay), at);
                         edges.push(Edge {
                             from: a,
                             to: q,
                             net,
                         });
-                        edges.push(Edge {
-                            from: rail,
-                            to: b,
-                            net: contact,
-                        });
+                        let held = coil(CoilKind::Normal, relay.clone());
+                        let split = (&mut edges, &mut lines);
+                        self.split_box((q, b), held, Element::no(&relay), at_coil, line, split);
                         continue;
                     }
                     (Element::Not | Element::Edge { .. }, _)
@@ -1050,7 +1038,9 @@ impl Body {
     /// An in-line timer or counter box from point `a` to `b` as IO86A
     /// has it: its `coil` where the box was fed, and its `contact`, from
     /// the rail, where its Q went (Q is on only while the coil's
-    /// condition has held long enough), at a place of its own.
+    /// condition has held long enough), at a place of its own. Also an
+    /// AVR timer off its rung's main line: `a` is then the timer's own
+    /// output, the coil and contact a spare relay's.
     fn split_box(
         &mut self,
         (a, b): (usize, usize),

@@ -37,7 +37,7 @@ pub(super) fn off_main_line(
     while off.len() <= relays {
         let on_main = main_line_links(links, rail, points);
         let newly: Vec<usize> = (0..links.len())
-            .filter(|&i| links[i].relayable && !off.contains(&i) && !on_main[i])
+            .filter(|&i| links[i].relayable && !on_main[i])
             .collect();
         if newly.is_empty() {
             return off;
