@@ -142,13 +142,14 @@ fn coil_after(id: usize, y: usize, from: usize, pin: &str) -> String {
     )
 }
 
-/// A PLCopen LD body of `n` OR blocks, each of two contacts, each to a coil.
-pub fn plcopen_ors(n: usize) -> String {
+/// A PLCopen LD body of `n` blocks of `ty` (`OR`, `AND`), each of two
+/// contacts, each to a coil.
+pub fn plcopen_gates(n: usize, ty: &str) -> String {
     plcopen_block_rungs(n, |[a, b, g, k], y| {
         format!(
             r#"{}
 {}
-<block localId="{g}" typeName="OR"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN1">{}</variable><variable formalParameter="IN2">{}</variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+<block localId="{g}" typeName="{ty}"><position x="30" y="{y}"/><inputVariables><variable formalParameter="IN1">{}</variable><variable formalParameter="IN2">{}</variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
 {}"#,
             rail_contact(a, y),
             rail_contact(b, y),

@@ -162,10 +162,11 @@ fn an_unknown_edge_is_called_what_it_is() {
 
 #[test]
 fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
-    let ladder = import(&crate::gen::plcopen_ors(300)).expect("imports");
+    // ANDs: each moves its inputs' networks, a search of the body.
+    let ladder = import(&crate::gen::plcopen_gates(300, "AND")).expect("imports");
     assert_eq!(ladder.rungs.len(), 300);
     let started = std::time::Instant::now();
-    let errors = import(&crate::gen::plcopen_ors(2_000)).expect_err("refused");
+    let errors = import(&crate::gen::plcopen_gates(2_000, "AND")).expect_err("refused");
     assert!(
         errors[0]
             .error
@@ -175,6 +176,16 @@ fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
     );
     // Not a speed test: the refusal comes long before minutes of work.
     assert!(started.elapsed().as_secs() < 120);
+}
+
+#[test]
+fn thousands_of_or_blocks_lower_in_one_pass() {
+    // ORs are lowered with the joins of wires, all at once: linear.
+    let started = std::time::Instant::now();
+    let ladder = import(&crate::gen::plcopen_gates(5_000, "OR")).expect("imports");
+    assert_eq!(ladder.rungs.len(), 5_000);
+    // Not a speed test: one search of the body per OR would take minutes.
+    assert!(started.elapsed().as_secs() < 60);
 }
 
 /// `xml` imported for IO86A, or a panic with its first errors.

@@ -877,3 +877,30 @@ fn wires_joined_at_a_coil_do_not_feed_back_into_a_wire_that_goes_elsewhere() {
         [(false, false), (true, true), (true, true), (true, true)]
     );
 }
+
+#[test]
+fn an_or_of_a_flip_flop_never_sets_it_whatever_the_file_order() {
+    // q = OR(SR0.Q1, X02), the OR block written before the SR: X02
+    // lights q while it is on, and leaves SR0 (M10) as it was.
+    let body = r#"
+      <contact localId="8"><position x="10" y="50"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X02</variable></contact>"#
+        .to_string()
+        + &block(6, "OR", "", 20, &[("IN1", 4), ("IN2", 8)], "OUT").replace(
+            r#"<connection refLocalId="4"/>"#,
+            r#"<connection refLocalId="4" formalParameter="Q1"/>"#,
+        )
+        + &block(4, "SR", "SR0", 10, &[("S1", 2), ("R", 3)], "Q1")
+        + &coil(5, 20, 6, "OUT", "q");
+    let (mut m, text) = io86a_loaded(&project(&body), &VarMap::parse("SR0,M10\n").expect("a map"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (x2, q, m10) = (m.device("X02"), m.device("Y00"), m.device("M10"));
+    let (x2, q, m10) = (x2.expect("X02"), q.expect("Y00"), m10.expect("M10"));
+    let mut seen = Vec::new();
+    for on in [1, 0] {
+        m.apply(Command::SetInput(x2, InputValue::Int(on)))
+            .expect("input");
+        m.step_scan();
+        seen.push((m.read(q) != 0, m.read(m10) != 0));
+    }
+    assert_eq!(seen, [(true, false), (false, false)], "{text}");
+}

@@ -382,18 +382,26 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
 /// temporaries: `%IX0.n` → R4.n, `%QX0.n` → R5.n, `%MXb.n` → R(6+b).n
 /// up to R15.7.
 fn avr_located(area: char, n: u32, address: &str) -> Result<String, String> {
-    let (register, bits, what, last) = match area {
-        'I' => (4, 8, "inputs", "R4.7"),
-        'Q' => (5, 8, "outputs", "R5.7"),
-        _ => (6, 80, "relays", "R15.7"),
+    let (registers, what) = match area {
+        'I' => (AVR_INPUTS, "inputs"),
+        'Q' => (AVR_OUTPUTS, "outputs"),
+        _ => (AVR_RELAYS, "relays"),
     };
+    let bits = registers.len() as u32 * 8;
     if n >= bits {
+        let (first, last) = (registers.start, registers.end - 1);
         return Err(format!(
-            "{address} is past the AVR PLC's {what} (R{register}.0-{last} in Hashigo)"
+            "{address} is past the AVR PLC's {what} (R{first}.0-R{last}.7 in Hashigo)"
         ));
     }
-    Ok(format!("R{}.{}", register + n / 8, n % 8))
+    Ok(format!("R{}.{}", registers.start as u32 + n / 8, n % 8))
 }
+
+/// The AVR PLC's registers for inputs, outputs and relays
+/// ([`avr_located`], and what `propose` hands out).
+const AVR_INPUTS: std::ops::Range<u8> = 4..5;
+const AVR_OUTPUTS: std::ops::Range<u8> = 5..6;
+const AVR_RELAYS: std::ops::Range<u8> = 6..16;
 
 /// A device proposed for every declared variable and block instance of
 /// the file that has none yet (`map` and addresses first), for the page's
@@ -401,8 +409,8 @@ fn avr_located(area: char, n: u32, address: &str) -> Result<String, String> {
 /// next free output (then relay), one only read the next free input
 /// (then relay); a timer instance the next free timer, a counter the next
 /// counter, a flip-flop the next relay. Where the machine runs out, or has
-/// no such device (the AVR PLC names its bits in its source), the name is
-/// left out: the user maps it by hand. In file order, each once.
+/// no such device (the Arduino PLC's relays, the AVR PLC's counters), the
+/// name is left out: the user maps it by hand. In file order, each once.
 pub fn propose(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Vec<(String, String)> {
     propose_in(root, root, machine, map)
 }
@@ -578,15 +586,15 @@ impl Pools {
             // [`avr_located`]'s registers; timers are named in-line boxes
             // (an instance keeps its name), and there are no counters.
             MachineId::AvrPlc => {
-                let bits = |registers: std::ops::Range<u32>| -> Vec<String> {
+                let bits = |registers: std::ops::Range<u8>| -> Vec<String> {
                     registers
                         .flat_map(|r| (0..8).map(move |b| format!("R{r}.{b}")))
                         .collect()
                 };
                 Pools {
-                    inputs: bits(4..5),
-                    outputs: bits(5..6),
-                    relays: bits(6..16),
+                    inputs: bits(AVR_INPUTS),
+                    outputs: bits(AVR_OUTPUTS),
+                    relays: bits(AVR_RELAYS),
                     timers: Vec::new(),
                     counters: Vec::new(),
                 }

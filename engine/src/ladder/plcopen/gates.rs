@@ -2,9 +2,11 @@
 //! points before its rungs are read off, so they come out as the series,
 //! parallel and self-holding rungs a ladder draws.
 //!
-//! - OR: its inputs' points are joined (parallel branches meeting); an
-//!   input something else also takes power from comes through a spare
-//!   relay instead (joining it would feed the others' power back);
+//! - OR: lowered first, with the wires joined at an input (the same
+//!   thing drawn as a block): its inputs' points are joined (parallel
+//!   branches meeting); an input something else also takes power from,
+//!   or a flip-flop's output, comes through a spare relay instead
+//!   (joining it would feed the others' power back);
 //! - AND: each input's network after the first is moved to start where the
 //!   one before it ends (series) when only the AND takes power from it,
 //!   else it comes through a spare relay's contact;
@@ -94,10 +96,15 @@ pub(super) enum GateKind {
 }
 
 impl Body {
-    /// Lowers every gate, or says why one cannot be: the joins of wires
-    /// first, so each block sees the whole network feeding its inputs.
+    /// Lowers every gate, or says why one cannot be: the ORs first (OR
+    /// blocks and wires joined at an input, [`Body::lower_joins`]), so
+    /// each other block sees the whole network feeding its inputs.
     pub(super) fn lower_gates(&mut self) -> Result<(), Vec<Located<super::ImportError>>> {
-        let mut errors = self.lower_joins();
+        let (joins, gates): (Vec<Gate>, Vec<Gate>) = std::mem::take(&mut self.gates)
+            .into_iter()
+            .partition(|g| g.kind == GateKind::Or);
+        self.gates = gates;
+        let mut errors = self.lower_joins(joins);
         let gates = std::mem::take(&mut self.gates);
         for g in gates {
             if self.gate_work > MAX_GATE_WORK {
@@ -119,25 +126,32 @@ impl Body {
         }
     }
 
-    /// Joins of wires at an input. A wire whose power only joins of the
-    /// same wires take is one node with them (a branch drawn once and
-    /// read by several elements, as Hashigo's own export writes it): its
-    /// point is joined to theirs. A wire that also feeds something else,
-    /// or joins of other wires, would be fed their power back: a spare
-    /// relay's contact carries it instead (one relay per wire). Linear:
-    /// the takers are counted once, and each join's wires are compared
-    /// by a number given to each distinct set.
-    fn lower_joins(&mut self) -> Vec<Located<super::ImportError>> {
-        let joins = std::mem::take(&mut self.joins);
+    /// ORs: OR blocks and wires joined at an input, each its inputs'
+    /// wires joined. A wire whose power only joins of the same wires
+    /// take is one node with them (a branch drawn once and read by
+    /// several elements, as Hashigo's own export writes it): its point is
+    /// joined to theirs. A wire that also feeds something else, or joins
+    /// of other wires, would be fed their power back: a spare relay's
+    /// contact carries it instead (one relay per wire). Linear: the
+    /// takers are counted once, and each join's wires are compared by a
+    /// number given to each distinct set.
+    fn lower_joins(&mut self, joins: Vec<Gate>) -> Vec<Located<super::ImportError>> {
         let takers = self.takers();
         let mut ids: HashMap<Vec<usize>, usize> = HashMap::new();
         let mut wires = Vec::with_capacity(joins.len());
         for g in &joins {
-            let mut set: Vec<usize> = g.inputs.iter().map(|&p| self.find(p)).collect();
-            set.sort_unstable();
-            set.dedup();
+            // In pin order (where a relay's contact goes), each once.
+            let mut set: Vec<usize> = Vec::with_capacity(g.inputs.len());
+            for &p in &g.inputs {
+                let p = self.find(p);
+                if !set.contains(&p) {
+                    set.push(p);
+                }
+            }
+            let mut key = set.clone();
+            key.sort_unstable();
             let next = ids.len();
-            let id = *ids.entry(set.clone()).or_insert(next);
+            let id = *ids.entry(key).or_insert(next);
             wires.push((set, id));
         }
         // Each wire: how many joins take it, and whether they differ.
@@ -160,11 +174,30 @@ impl Body {
                 driven.insert(self.find(out));
             }
         }
+        // Joins of the same wires become one point: a wire that is the
+        // output of such a group is read by everything reading any of its
+        // outputs (an OR block's output may be one wire of a later join,
+        // while a coil beside it reads the same wires).
+        let mut outs: HashMap<usize, HashSet<usize>> = HashMap::new();
+        for (g, (_, id)) in joins.iter().zip(&wires) {
+            let out = self.find(g.out);
+            outs.entry(*id).or_default().insert(out);
+        }
+        let mut readers: HashMap<usize, usize> = takers.clone();
+        for group in outs.values() {
+            let all: usize = group
+                .iter()
+                .map(|o| takers.get(o).copied().unwrap_or(0))
+                .sum();
+            for o in group {
+                readers.insert(*o, all);
+            }
+        }
         let node = |p: usize| {
             !driven.contains(&p)
                 && in_joins
                     .get(&p)
-                    .is_some_and(|&(n, _, mixed)| !mixed && takers.get(&p) == Some(&n))
+                    .is_some_and(|&(n, _, mixed)| !mixed && readers.get(&p) == Some(&n))
         };
         let mut relayed: HashMap<usize, Element> = HashMap::new();
         let mut errors = Vec::new();
@@ -207,13 +240,8 @@ impl Body {
 
     fn lower(&mut self, g: &Gate) -> Result<(), String> {
         match &g.kind {
-            GateKind::Or => {
-                for (k, &p) in g.inputs.iter().enumerate() {
-                    let p = self.own_point(p, g, k)?;
-                    self.union(p, g.out);
-                }
-                Ok(())
-            }
+            // Taken out and lowered first, with the joins of wires.
+            GateKind::Or => Err("an OR is lowered with the joins of wires".into()),
             GateKind::And => {
                 let mut end = g.inputs.first().copied().ok_or("no inputs")?;
                 for (k, &p) in g.inputs.iter().enumerate().skip(1) {

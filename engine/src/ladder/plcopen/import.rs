@@ -364,9 +364,6 @@ pub(super) struct Body {
     /// lowering them has taken ([`crate::limits::MAX_GATE_WORK`]).
     pub(super) gates: Vec<Gate>,
     pub(super) gate_work: usize,
-    /// Wires joined at an input, as OR gates lowered before the blocks
-    /// ([`Body::lower_gates`]).
-    pub(super) joins: Vec<Gate>,
     /// The element being read (its place and line), for the OR a join of
     /// wires at one of its inputs makes ([`Body::join`]).
     reading: (Pos, usize),
@@ -589,7 +586,7 @@ impl Body {
                 let out = self.fresh();
                 self.consumed.extend(&joined);
                 let (pos, line) = self.reading;
-                self.joins.push(Gate {
+                self.gates.push(Gate {
                     kind: GateKind::Or,
                     inputs: joined,
                     out,
