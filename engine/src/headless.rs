@@ -80,7 +80,10 @@ pub fn run<P: Plc + ?Sized, W: Write>(
     if schedule.every == SimTime::ZERO && schedule.until > SimTime::ZERO {
         errors.push(RunError::ZeroInterval);
     } else if schedule.every > SimTime::ZERO {
-        let rows = schedule.until.as_nanos() / schedule.every.as_nanos() + 2;
+        // A row at 0, one every `every`, and one at `until` when it is
+        // not on that grid.
+        let (until, every) = (schedule.until.as_nanos(), schedule.every.as_nanos());
+        let rows = until / every + 1 + u64::from(until % every != 0);
         let values = rows.saturating_mul(watch.len().max(1) as u64);
         if values > MAX_CSV_VALUES {
             errors.push(RunError::TooManyValues(MAX_CSV_VALUES));

@@ -27,6 +27,22 @@ pub const MAX_XML_DEPTH: usize = 256;
 /// Rungs in one ladder.
 pub const MAX_RUNGS: usize = 10_000;
 
+/// Test cases in one project.
+pub const MAX_TEST_CASES: usize = 1_000;
+
+/// Samples a project's test cases may take in all, counted before any
+/// runs: every instant the machine runs to plus every look at an
+/// expectation (a window looks every millisecond). One hour of a window
+/// is 7 200 000; the work runs at tens of millions a second.
+pub const MAX_TEST_WORK: u64 = 100_000_000;
+
+/// Expectation lines in one test case.
+pub const MAX_EXPECTATIONS: usize = 10_000;
+
+/// Entries in one of a project's tables of names (its settings, its device
+/// comments): a machine has at most a few thousand devices.
+pub const MAX_MAP_ENTRIES: usize = 100_000;
+
 /// Cells a rung's grid may span: rows × columns of its bounding box. A
 /// single row of 20 000 contacts fits; a 6 000 × 6 000 layout does not.
 pub const MAX_RUNG_CELLS: usize = 1 << 20;

@@ -4,7 +4,7 @@
 //! changes while the machine runs; the exercise flag that makes a share
 //! link open with the tests shown.
 
-use engine::cases::{run_case, Outcome, TestCase};
+use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
 use engine::ladder::Ladder;
 use engine::plc::{new_plc, Command, Device, Plc};
 use engine::{MachineId, SimTime};
@@ -21,9 +21,18 @@ pub fn run_cases(
     program: &str,
     cases: &[TestCase],
 ) -> Vec<CaseResult> {
-    cases
+    // The work of all the cases is counted before any runs (docs/limits.md).
+    let prepared = match prepare_all(cases) {
+        Ok(prepared) => prepared,
+        Err(e) => return vec![CaseResult::Error(e.to_string()); cases.len()],
+    };
+    prepared
         .iter()
         .map(|case| {
+            let case = match case {
+                Ok(case) => case,
+                Err(e) => return CaseResult::Error(e.to_string()),
+            };
             let mut plc = new_plc(machine);
             for (name, value) in settings {
                 let setting = Command::Setting {
@@ -37,7 +46,7 @@ pub fn run_cases(
             if let Err(e) = plc.load_text(program) {
                 return CaseResult::Error(e.to_string());
             }
-            match run_case(plc.as_mut(), case) {
+            match run_prepared(plc.as_mut(), case) {
                 Ok(Outcome::Pass) => CaseResult::Pass,
                 Ok(Outcome::Fail {
                     expectation,

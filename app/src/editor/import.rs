@@ -45,6 +45,17 @@ impl Pending {
 /// `None` returned), else the pending import with what was said.
 pub fn attempt(ctx: LadderCtx, mut pending: Pending, quiet_if_clean: bool) -> Option<Pending> {
     let map = pending.map();
+    if let Err(errors) = map.check(ctx.machine) {
+        // Said at the table's row (the map's lines number its filled rows).
+        pending.errors = errors
+            .iter()
+            .filter_map(|e| {
+                let (name, device, _) = map.entries.iter().find(|(_, _, l)| *l == e.line)?;
+                Some(format!("{name} → {device}: {}", e.error))
+            })
+            .collect();
+        return Some(pending);
+    }
     match import_pou(
         &pending.text,
         Some(ctx.machine),

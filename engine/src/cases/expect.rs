@@ -11,7 +11,7 @@ use crate::error::shown;
 use crate::time::{SimTime, TimeError};
 
 /// A comparison.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Compare {
     /// `=`
     Eq,
@@ -58,7 +58,7 @@ impl Compare {
 }
 
 /// What one expectation asks.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Expectation {
     /// `DEV OP VALUE at TIME`: after the last scan at or before TIME.
     At {
@@ -103,6 +103,8 @@ pub enum ExpectError {
     Form(String),
     /// A value that is not an integer.
     Value(String),
+    /// An integer past what a device holds (-2^63..2^63-1).
+    OutOfRange(String),
     /// A time that does not parse.
     Time(TimeError),
     /// A window that ends before it starts.
@@ -117,6 +119,12 @@ impl fmt::Display for ExpectError {
                 "{line} is no expectation: write \"Y00 = 1 at 2s\", \"Y00 stays 0 from 1s to 2s\" or \"Y00 rises within 0s..3s\""
             ),
             ExpectError::Value(v) => write!(f, "{v} is not a whole number"),
+            ExpectError::OutOfRange(v) => write!(
+                f,
+                "{v} is out of range: a value is a whole number from {} to {}",
+                i64::MIN,
+                i64::MAX
+            ),
             ExpectError::Time(e) => e.fmt(f),
             ExpectError::Window => f.write_str("the window ends before it starts"),
         }
@@ -131,7 +139,14 @@ impl Expectation {
         let words: Vec<&str> = line.split_whitespace().collect();
         let form = || ExpectError::Form(shown(line.trim()));
         let time = |t: &str| SimTime::parse(t).map_err(ExpectError::Time);
-        let value = |v: &str| v.parse::<i64>().map_err(|_| ExpectError::Value(shown(v)));
+        let value = |v: &str| {
+            v.parse::<i64>().map_err(|e| match e.kind() {
+                std::num::IntErrorKind::PosOverflow | std::num::IntErrorKind::NegOverflow => {
+                    ExpectError::OutOfRange(shown(v))
+                }
+                _ => ExpectError::Value(shown(v)),
+            })
+        };
         let window = |from: SimTime, to: SimTime| {
             if to < from {
                 Err(ExpectError::Window)

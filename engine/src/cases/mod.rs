@@ -4,6 +4,7 @@
 //! same cases.
 
 mod expect;
+mod schedule;
 
 use std::fmt;
 
@@ -15,13 +16,13 @@ use crate::error::Located;
 use crate::events::{parse_events, EventError};
 use crate::plc::{Command, Device, Plc, PlcError};
 use crate::time::SimTime;
+use schedule::Schedule;
 
 /// How finely windows (`stays`, `rises`) are sampled, besides every
 /// event time and the windows' ends: every millisecond of simulated time.
 pub const SAMPLE: SimTime = SimTime::from_millis(1);
 
-/// The most instants one case may sample.
-pub const MAX_SAMPLES: usize = 10_000_000;
+pub use crate::limits::MAX_TEST_WORK;
 
 /// One test case.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -63,7 +64,8 @@ pub enum CaseError {
     Expect(usize, ExpectError),
     /// An expectation's device the machine lacks (its index).
     Device(usize, PlcError),
-    /// More than [`MAX_SAMPLES`] instants to look at.
+    /// More than [`MAX_TEST_WORK`] samples to take (with the cases
+    /// before it, when a project's cases run together).
     TooLong,
 }
 
@@ -81,7 +83,7 @@ impl fmt::Display for CaseError {
             CaseError::Device(i, e) => write!(f, "expectation {}: {e}", i + 1),
             CaseError::TooLong => write!(
                 f,
-                "the case looks at more than {MAX_SAMPLES} instants: shorten its windows"
+                "the tests would take more than {MAX_TEST_WORK} samples (instants and expectations looked at; docs/limits.md): shorten their windows"
             ),
         }
     }
@@ -95,53 +97,62 @@ struct Watch {
     device: Device,
     /// The first instant it failed at, and what was seen.
     failed: Option<String>,
-    /// Edges: the value at the window's previous sample, and whether the
+    /// Edges: the value at the span's first and latest samples, whether
+    /// it ever changed, when it first moved the other way, and whether the
     /// edge was seen.
+    first: Option<i64>,
     last: Option<i64>,
+    changed: bool,
+    opposite: Option<SimTime>,
     seen: bool,
 }
 
 impl Watch {
+    fn new(expectation: Expectation, device: Device) -> Watch {
+        Watch {
+            expectation,
+            device,
+            failed: None,
+            first: None,
+            last: None,
+            changed: false,
+            opposite: None,
+            seen: false,
+        }
+    }
+
+    /// Looks at the device's `value` at `t`, an instant of its span. No
+    /// allocation unless it fails: a long window takes millions of looks.
     fn sample(&mut self, t: SimTime, value: i64) {
         if self.failed.is_some() {
             return;
         }
-        let name = self.expectation.device().to_string();
-        match &self.expectation {
+        let holds = match &self.expectation {
             Expectation::At {
-                op,
-                value: want,
-                time,
-                ..
-            } => {
-                if t == *time && !op.holds(value, *want) {
-                    self.failed = Some(format!("{name} was {value} at {t}ms"));
-                }
-            }
-            Expectation::Stays {
-                value: want,
-                from,
-                to,
-                ..
-            } => {
-                if (*from..=*to).contains(&t) && value != *want {
-                    self.failed = Some(format!("{name} was {value} at {t}ms"));
-                }
-            }
-            Expectation::Edge {
-                falling, from, to, ..
-            } => {
-                if (*from..=*to).contains(&t) {
-                    let on = value != 0;
-                    if let Some(before) = self.last {
-                        let was = before != 0;
-                        if (!*falling && !was && on) || (*falling && was && !on) {
-                            self.seen = true;
-                        }
+                op, value: want, ..
+            } => op.holds(value, *want),
+            Expectation::Stays { value: want, .. } => value == *want,
+            Expectation::Edge { falling, .. } => {
+                if let Some(before) = self.last {
+                    let (was, on) = (before != 0, value != 0);
+                    let wanted = if *falling { was && !on } else { !was && on };
+                    let other = if *falling { !was && on } else { was && !on };
+                    self.seen |= wanted;
+                    if other && self.opposite.is_none() {
+                        self.opposite = Some(t);
                     }
-                    self.last = Some(value);
+                    self.changed |= before != value;
                 }
+                self.first.get_or_insert(value);
+                self.last = Some(value);
+                true
             }
+        };
+        if !holds {
+            self.failed = Some(format!(
+                "{} was {value} at {t}ms",
+                self.expectation.device()
+            ));
         }
     }
 
@@ -149,191 +160,142 @@ impl Watch {
         if let Some(f) = &self.failed {
             return Some(f.clone());
         }
-        match &self.expectation {
-            Expectation::Edge { falling, .. } if !self.seen => Some(format!(
-                "{} did not {} (it stayed {})",
-                self.expectation.device(),
-                if *falling { "fall" } else { "rise" },
-                self.last.unwrap_or(0)
-            )),
-            _ => None,
+        let Expectation::Edge { falling, .. } = &self.expectation else {
+            return None;
+        };
+        if self.seen {
+            return None;
         }
+        let (first, last) = (self.first.unwrap_or(0), self.last.unwrap_or(0));
+        let verb = if *falling { "fall" } else { "rise" };
+        let device = self.expectation.device();
+        // Say what was seen: a device that did the opposite is not one
+        // that stayed put.
+        let seen = match self.opposite {
+            _ if !self.changed => format!("it stayed {first}"),
+            Some(t) => format!(
+                "it went from {first} to {last}, {} at {t}ms",
+                if *falling { "rising" } else { "falling" }
+            ),
+            None => format!("it went from {first} to {last}"),
+        };
+        Some(format!("{device} did not {verb} ({seen})"))
     }
+}
+
+/// A case read and checked, ready to run on any machine.
+pub struct Prepared {
+    events: Vec<crate::events::InputEvent>,
+    /// Each distinct expectation once, with the index of its first line.
+    expectations: Vec<(usize, Expectation)>,
+    work: u64,
+}
+
+impl Prepared {
+    /// Reads `case`'s timeline and expectations (no machine needed).
+    pub fn new(case: &TestCase) -> Result<Prepared, CaseError> {
+        let events = parse_events(&case.events).map_err(CaseError::Events)?;
+        let mut expectations: Vec<(usize, Expectation)> = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        for (i, line) in case.expect.iter().enumerate() {
+            let expectation = Expectation::parse(line).map_err(|e| CaseError::Expect(i, e))?;
+            // The same line twice holds or fails together: looked at once.
+            if seen.insert(expectation.clone()) {
+                expectations.push((i, expectation));
+            }
+        }
+        let work = schedule(&events, &expectations).work();
+        Ok(Prepared {
+            events,
+            expectations,
+            work,
+        })
+    }
+
+    /// How many samples the case takes at most ([`MAX_TEST_WORK`]).
+    pub fn work(&self) -> u64 {
+        self.work
+    }
+}
+
+fn schedule(
+    events: &[crate::events::InputEvent],
+    expectations: &[(usize, Expectation)],
+) -> Schedule {
+    Schedule::new(
+        events.iter().map(|e| e.time),
+        expectations.iter().map(|(_, e)| e.span()).collect(),
+    )
+}
+
+/// Reads every case (each may be bad on its own) and counts the work of
+/// all of them together before any runs: past [`MAX_TEST_WORK`] the whole
+/// set is refused with [`CaseError::TooLong`].
+pub fn prepare_all(cases: &[TestCase]) -> Result<Vec<Result<Prepared, CaseError>>, CaseError> {
+    let prepared: Vec<_> = cases.iter().map(Prepared::new).collect();
+    let total = prepared
+        .iter()
+        .flatten()
+        .fold(0u64, |sum, p| sum.saturating_add(p.work));
+    if total > MAX_TEST_WORK {
+        return Err(CaseError::TooLong);
+    }
+    Ok(prepared)
 }
 
 /// Runs `case` on `plc` (a fresh machine with the program loaded and its
 /// settings applied) from time zero.
 pub fn run_case(plc: &mut dyn Plc, case: &TestCase) -> Result<Outcome, CaseError> {
-    let events = parse_events(&case.events).map_err(CaseError::Events)?;
-    let mut inputs = Vec::with_capacity(events.len());
-    for e in &events {
+    let prepared = Prepared::new(case)?;
+    if prepared.work > MAX_TEST_WORK {
+        return Err(CaseError::TooLong);
+    }
+    run_prepared(plc, &prepared)
+}
+
+/// Runs a case read by [`Prepared::new`] on `plc` (a fresh machine with
+/// the program loaded and its settings applied) from time zero.
+pub fn run_prepared(plc: &mut dyn Plc, case: &Prepared) -> Result<Outcome, CaseError> {
+    let mut inputs = Vec::with_capacity(case.events.len());
+    for e in &case.events {
         let device = plc
             .device(&e.device)
             .and_then(|d| plc.check_input(d, e.value).map(|()| d))
             .map_err(|err| CaseError::Event(Located::new(e.line, err)))?;
         inputs.push(device);
     }
-    let mut watches = Vec::new();
-    for (i, line) in case.expect.iter().enumerate() {
-        let expectation = Expectation::parse(line).map_err(|e| CaseError::Expect(i, e))?;
+    let mut watches = Vec::with_capacity(case.expectations.len());
+    for (i, expectation) in &case.expectations {
         let device = plc
             .device(expectation.device())
-            .map_err(|e| CaseError::Device(i, e))?;
-        watches.push(Watch {
-            expectation,
-            device,
-            failed: None,
-            last: None,
-            seen: false,
-        });
+            .map_err(|e| CaseError::Device(*i, e))?;
+        watches.push(Watch::new(expectation.clone(), device));
     }
-    let instants = Instants::new(&events, &watches);
-    // Counted before anything runs: a case past the limit runs nothing.
-    if instants.clone().nth(MAX_SAMPLES).is_some() {
-        return Err(CaseError::TooLong);
-    }
-    let mut pending = events.iter().zip(inputs).peekable();
-    for t in instants {
+    let mut schedule = schedule(&case.events, &case.expectations);
+    let mut pending = case.events.iter().zip(inputs).peekable();
+    let mut due = Vec::new();
+    while let Some(t) = schedule.next(&mut due) {
         while let Some((event, device)) = pending.next_if(|(e, _)| e.time <= t) {
             plc.run_before(event.time);
             // Checked above: the machine takes it.
             let _ = plc.apply(Command::SetInput(device, event.value));
         }
         plc.run_until(t);
-        for w in &mut watches {
+        for &i in &due {
+            let w = &mut watches[i];
             let value = plc.read(w.device);
             w.sample(t, value);
         }
     }
     Ok(watches
         .iter()
-        .enumerate()
-        .find_map(|(index, w)| {
+        .zip(&case.expectations)
+        .find_map(|(w, (index, _))| {
             w.verdict().map(|observed| Outcome::Fail {
-                index,
+                index: *index,
                 expectation: w.expectation.to_string(),
                 observed,
             })
         })
         .unwrap_or(Outcome::Pass))
-}
-
-/// Every instant to look at, in order, each once: the events' times, the
-/// expectations' times and windows' ends, and each window sampled every
-/// [`SAMPLE`] from its start. Yielded one at a time, so a long window
-/// costs no memory.
-#[derive(Clone)]
-struct Instants {
-    /// The single instants, sorted, each once.
-    points: Vec<SimTime>,
-    /// The next point not yet passed.
-    next_point: usize,
-    /// Windows `(from, to)` with `from < to`.
-    windows: Vec<(SimTime, SimTime)>,
-    /// The last instant yielded.
-    last: Option<SimTime>,
-}
-
-impl Instants {
-    fn new(events: &[crate::events::InputEvent], watches: &[Watch]) -> Instants {
-        let mut points: Vec<SimTime> = events.iter().map(|e| e.time).collect();
-        let mut windows = Vec::new();
-        for w in watches {
-            let (from, to) = w.expectation.span();
-            points.extend([from, to]);
-            if from < to {
-                windows.push((from, to));
-            }
-        }
-        points.sort_unstable();
-        points.dedup();
-        Instants {
-            points,
-            next_point: 0,
-            windows,
-            last: None,
-        }
-    }
-}
-
-impl Iterator for Instants {
-    type Item = SimTime;
-
-    fn next(&mut self) -> Option<SimTime> {
-        let after = |t: SimTime| self.last.is_none_or(|last| t > last);
-        while self.points.get(self.next_point).is_some_and(|&p| !after(p)) {
-            self.next_point += 1;
-        }
-        let mut next = self.points.get(self.next_point).copied();
-        if let Some(last) = self.last {
-            // The next sample of each window the last instant lies in (a
-            // window's start is a point, so none starts between samples).
-            for &(from, to) in &self.windows {
-                if (from..to).contains(&last) {
-                    let steps = (last - from).as_nanos() / SAMPLE.as_nanos() + 1;
-                    let sample =
-                        from.saturating_add(SimTime::from_nanos(steps * SAMPLE.as_nanos()));
-                    if sample < to && next.is_none_or(|n| sample < n) {
-                        next = Some(sample);
-                    }
-                }
-            }
-        }
-        self.last = next;
-        next
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::collections::BTreeSet;
-
-    fn watch(line: &str) -> Watch {
-        Watch {
-            expectation: Expectation::parse(line).expect("expectation"),
-            device: Device(0),
-            failed: None,
-            last: None,
-            seen: false,
-        }
-    }
-
-    /// The instants as a set, built the obvious way.
-    fn naive(events: &[crate::events::InputEvent], watches: &[Watch]) -> Vec<SimTime> {
-        let mut out: BTreeSet<SimTime> = events.iter().map(|e| e.time).collect();
-        for w in watches {
-            let (from, to) = w.expectation.span();
-            out.extend([from, to]);
-            let mut t = from;
-            while t < to {
-                out.insert(t);
-                t = t.saturating_add(SAMPLE);
-            }
-        }
-        out.into_iter().collect()
-    }
-
-    #[test]
-    fn instants_are_every_point_and_every_sample_once_in_order() {
-        let events = parse_events("0.5ms,X00,1\n3ms,X00,0\n7.25ms,X01,1\n").expect("events");
-        let watches = [
-            watch("Y00 = 1 at 2.5ms"),
-            watch("Y00 stays 1 from 0.3ms to 4.1ms"),
-            watch("Y01 rises within 2ms..9ms"),
-            watch("Y02 falls within 8.7ms..8.7ms"),
-        ];
-        let walked: Vec<SimTime> = Instants::new(&events, &watches).collect();
-        assert_eq!(walked, naive(&events, &watches));
-        assert!(walked.windows(2).all(|w| w[0] < w[1]));
-    }
-
-    #[test]
-    fn a_case_past_the_sample_limit_is_refused_before_it_runs() {
-        let watches = [watch("Y00 stays 0 from 0s to 10001s")];
-        let walked = Instants::new(&[], &watches);
-        assert!(walked.clone().nth(MAX_SAMPLES).is_some());
-        let watches = [watch("Y00 stays 0 from 0s to 9999s")];
-        assert!(Instants::new(&[], &watches).nth(MAX_SAMPLES).is_none());
-    }
 }

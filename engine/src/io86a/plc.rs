@@ -312,27 +312,13 @@ impl Plc for Io86aPlc {
     }
 
     fn device(&self, name: &str) -> Result<Device, PlcError> {
-        if let Some(rest) = name.strip_prefix("B.").or_else(|| name.strip_prefix("b.")) {
-            return Ok(Device(self.device(rest)?.0 | DEVICE_B));
+        // One `B.` names device B; a second is part of an unknown name
+        // (never stripped again: `B.B.Y00` is not `B.Y00`).
+        match strip_b(name) {
+            Some(rest) if strip_b(rest).is_none() => Ok(Device(unit_device(rest)?.0 | DEVICE_B)),
+            // Refused by its whole name.
+            _ => unit_device(name),
         }
-        let upper = name.to_ascii_uppercase();
-        match upper.as_str() {
-            "Y03.V" => return Ok(Device(SIGNAL)),
-            "Y04.V" => return Ok(Device(SIGNAL | 1)),
-            _ => {}
-        }
-        if let Some(base) = upper.strip_suffix(".V") {
-            return match parse_word(base).map_err(DeviceError::Io86a)? {
-                Word::K(_) => Err(DeviceError::Constant(name.to_string()).into()),
-                word => Ok(Device(word_handle(word))),
-            };
-        }
-        if upper.starts_with('D') {
-            let word = parse_word(&upper).map_err(DeviceError::Io86a)?;
-            return Ok(Device(word_handle(word)));
-        }
-        let bit = parse_bit(name).map_err(DeviceError::Io86a)?;
-        Ok(Device(bit_handle(bit)))
     }
 
     fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError> {
@@ -510,4 +496,31 @@ impl Plc for Io86aPlc {
     fn serial(&mut self, line: &str) -> Result<String, PlcError> {
         Ok(self.terminal.type_line(&mut self.pair.a, line))
     }
+}
+
+/// `name` without its `B.` (or `b.`) prefix, if it has one.
+fn strip_b(name: &str) -> Option<&str> {
+    name.strip_prefix("B.").or_else(|| name.strip_prefix("b."))
+}
+
+/// A device of one unit (no `B.` prefix): `X00`, `D05`, `T01.v`, `Y03.v`.
+fn unit_device(name: &str) -> Result<Device, PlcError> {
+    let upper = name.to_ascii_uppercase();
+    match upper.as_str() {
+        "Y03.V" => return Ok(Device(SIGNAL)),
+        "Y04.V" => return Ok(Device(SIGNAL | 1)),
+        _ => {}
+    }
+    if let Some(base) = upper.strip_suffix(".V") {
+        return match parse_word(base).map_err(DeviceError::Io86a)? {
+            Word::K(_) => Err(DeviceError::Constant(name.to_string()).into()),
+            word => Ok(Device(word_handle(word))),
+        };
+    }
+    if upper.starts_with('D') {
+        let word = parse_word(&upper).map_err(DeviceError::Io86a)?;
+        return Ok(Device(word_handle(word)));
+    }
+    let bit = parse_bit(name).map_err(DeviceError::Io86a)?;
+    Ok(Device(bit_handle(bit)))
 }

@@ -109,7 +109,11 @@ pub struct Ladder {
     /// The rungs, run top to bottom.
     pub rungs: Vec<Rung>,
     /// Comments on devices, by device name.
-    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    #[serde(
+        default,
+        skip_serializing_if = "BTreeMap::is_empty",
+        deserialize_with = "super::project::each_name_once"
+    )]
     pub device_comments: BTreeMap<String, String>,
 }
 

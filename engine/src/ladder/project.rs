@@ -7,7 +7,9 @@ use serde::{Deserialize, Serialize};
 
 use super::grid::Ladder;
 use crate::error::{shown, Located};
-use crate::limits::{MAX_INPUT_BYTES, MAX_RUNGS};
+use crate::limits::{
+    MAX_EXPECTATIONS, MAX_INPUT_BYTES, MAX_MAP_ENTRIES, MAX_RUNGS, MAX_TEST_CASES,
+};
 use crate::MachineId;
 
 /// The `format` field every project file carries.
@@ -25,7 +27,11 @@ pub struct Project {
     /// The machine the ladder is for.
     pub machine: MachineId,
     /// Machine settings as `--set` takes them (`T0` = `1.1s`, `scan` = `10ms`).
-    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    #[serde(
+        default,
+        skip_serializing_if = "BTreeMap::is_empty",
+        deserialize_with = "each_name_once"
+    )]
     pub settings: BTreeMap<String, String>,
     /// The ladder.
     pub ladder: Ladder,
@@ -81,6 +87,19 @@ impl Project {
                 ProjectError::TooManyRungs(project.ladder.rungs.len()),
             );
         }
+        if project.tests.len() > MAX_TEST_CASES {
+            return at("tests", ProjectError::TooManyCases(project.tests.len()));
+        }
+        if let Some(case) = project
+            .tests
+            .iter()
+            .find(|c| c.expect.len() > MAX_EXPECTATIONS)
+        {
+            return at(
+                "expect",
+                ProjectError::TooManyExpectations(shown(&case.name), case.expect.len()),
+            );
+        }
         Ok(project)
     }
 
@@ -118,6 +137,10 @@ pub enum ProjectError {
     Newer(u32),
     /// More rungs than [`MAX_RUNGS`] (how many).
     TooManyRungs(usize),
+    /// More test cases than [`MAX_TEST_CASES`] (how many).
+    TooManyCases(usize),
+    /// A case (its name, shown) with more than [`MAX_EXPECTATIONS`].
+    TooManyExpectations(String, usize),
 }
 
 impl std::fmt::Display for ProjectError {
@@ -143,11 +166,58 @@ impl std::fmt::Display for ProjectError {
                 f,
                 "the ladder has {n} rungs, more than the {MAX_RUNGS} a ladder may have (docs/limits.md)"
             ),
+            ProjectError::TooManyCases(n) => write!(
+                f,
+                "the project has {n} test cases, more than the {MAX_TEST_CASES} a project may have (docs/limits.md)"
+            ),
+            ProjectError::TooManyExpectations(name, n) => write!(
+                f,
+                "test {name} has {n} expectations, more than the {MAX_EXPECTATIONS} a case may have (docs/limits.md)"
+            ),
         }
     }
 }
 
 impl std::error::Error for ProjectError {}
+
+/// Reads a table of names (settings, device comments) refusing a name
+/// given twice: JSON readers disagree on which copy wins, so a project
+/// that says two things must not silently mean one of them. The error
+/// lands at the second copy's line.
+pub(crate) fn each_name_once<'de, D>(d: D) -> Result<BTreeMap<String, String>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+{
+    struct Names;
+    impl<'de> serde::de::Visitor<'de> for Names {
+        type Value = BTreeMap<String, String>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("an object of names and texts")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(
+            self,
+            mut map: A,
+        ) -> Result<Self::Value, A::Error> {
+            let mut names = BTreeMap::new();
+            while let Some((name, text)) = map.next_entry::<String, String>()? {
+                if names.len() == MAX_MAP_ENTRIES {
+                    return Err(serde::de::Error::custom(format!(
+                        "more than {MAX_MAP_ENTRIES} names in one table (docs/limits.md)"
+                    )));
+                }
+                if names.contains_key(&name) {
+                    return Err(serde::de::Error::custom(format!(
+                        "{} is given twice",
+                        shown(&name)
+                    )));
+                }
+                names.insert(name, text);
+            }
+            Ok(names)
+        }
+    }
+    d.deserialize_map(Names)
+}
 
 /// The 1-based line where `"key"` first appears in `text` (1 if nowhere):
 /// the place to point at for an error about that field.

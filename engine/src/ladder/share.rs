@@ -16,6 +16,7 @@ use miniz_oxide::inflate::decompress_to_vec_with_limit;
 use super::element::{CoilKind, ContactKind, Element, TimerKind};
 use super::grid::{Ladder, Link, Rung};
 use super::project::Project;
+use crate::limits::{MAX_EXPECTATIONS, MAX_MAP_ENTRIES, MAX_RUNGS, MAX_TEST_CASES};
 use crate::MachineId;
 
 /// The prefix of version-1 share texts.
@@ -48,6 +49,16 @@ pub enum ShareError {
         /// Its columns (or a link's column past them).
         columns: usize,
     },
+    /// The link holds more of something than a project may have
+    /// (docs/limits.md), refused before any of them is built.
+    TooMany {
+        /// What: "rungs", "test cases", …
+        what: &'static str,
+        /// How many the link says it holds.
+        count: u64,
+        /// The most a project may have.
+        limit: usize,
+    },
     /// The binary is cut short or holds a bad value at this byte.
     Data {
         /// The byte offset in the inflated data.
@@ -74,6 +85,10 @@ impl fmt::Display for ShareError {
                 f,
                 "this share link is {n} characters long, more than the {} a link may have (docs/limits.md)",
                 crate::limits::MAX_SHARE_FRAGMENT
+            ),
+            ShareError::TooMany { what, count, limit } => write!(
+                f,
+                "this share link holds {count} {what}, more than the {limit} a project may have (docs/limits.md)"
             ),
             ShareError::Data { at, what } => {
                 write!(f, "this share link is damaged at byte {at}: {what}")
@@ -178,10 +193,10 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
         3 => MachineId::ArduinoPlc,
         _ => return Err(r.bad("unknown machine")),
     };
-    let settings = r.map()?;
-    let device_comments = r.map()?;
-    let count = r.len(usize::MAX)?;
-    let mut rungs = Vec::new();
+    let settings = r.map("settings")?;
+    let device_comments = r.map("device comments")?;
+    let count = r.count("rungs", MAX_RUNGS)?;
+    let mut rungs = Vec::with_capacity(count);
     for _ in 0..count {
         let comment = r.string()?;
         let rows = r.len(MAX_ROWS)?;
@@ -194,7 +209,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
             }
             cells.push(row);
         }
-        let links = r.len(usize::MAX)?;
+        let links = r.count("links in one rung", MAX_ROWS * MAX_COLS)?;
         let mut rung = Rung {
             comment,
             cells,
@@ -219,11 +234,11 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
             1 => true,
             _ => return Err(r.bad("the exercise flag is neither 0 nor 1")),
         };
-        let count = r.len(usize::MAX)?;
+        let count = r.count("test cases", MAX_TEST_CASES)?;
         for _ in 0..count {
             let name = r.string()?;
             let events = r.string()?;
-            let lines = r.len(usize::MAX)?;
+            let lines = r.count("expectations in one test case", MAX_EXPECTATIONS)?;
             let mut expect = Vec::new();
             for _ in 0..lines {
                 expect.push(r.string()?);
@@ -357,17 +372,21 @@ impl Reader<'_> {
 
     /// A length or number up to `max`.
     fn len(&mut self, max: usize) -> Result<usize, ShareError> {
+        let n = self.varint()?;
+        usize::try_from(n)
+            .ok()
+            .filter(|&v| v <= max)
+            .ok_or(self.bad("a number out of range"))
+    }
+
+    /// An unsigned LEB128 number.
+    fn varint(&mut self) -> Result<u64, ShareError> {
         let mut n: u64 = 0;
         for shift in (0..64).step_by(7) {
             let b = self.byte()?;
             n |= u64::from(b & 0x7F) << shift;
             if b & 0x80 == 0 {
-                // Counts cannot exceed the bytes left (each item takes one).
-                let left = (self.data.len() - self.at) as u64;
-                return usize::try_from(n)
-                    .ok()
-                    .filter(|&v| v <= max && (max != usize::MAX || n <= left))
-                    .ok_or(self.bad("a number out of range"));
+                return Ok(n);
             }
         }
         Err(self.bad("a number too long"))
@@ -384,13 +403,36 @@ impl Reader<'_> {
         Ok(s.to_string())
     }
 
-    fn map(&mut self) -> Result<BTreeMap<String, String>, ShareError> {
-        let n = self.len(usize::MAX)?;
+    /// A count of items that may not exceed `limit` (a documented limit:
+    /// refused with [`ShareError::TooMany`] before any item is read).
+    fn count(&mut self, what: &'static str, limit: usize) -> Result<usize, ShareError> {
+        let n = self.varint()?;
+        match usize::try_from(n) {
+            Ok(n) if n <= limit => {
+                // Each item takes at least one byte.
+                if n > self.data.len() - self.at {
+                    return Err(self.bad("cut short"));
+                }
+                Ok(n)
+            }
+            _ => Err(ShareError::TooMany {
+                what,
+                count: n,
+                limit,
+            }),
+        }
+    }
+
+    /// Names and texts (settings, device comments): each name once.
+    fn map(&mut self, what: &'static str) -> Result<BTreeMap<String, String>, ShareError> {
+        let n = self.count(what, MAX_MAP_ENTRIES)?;
         let mut m = BTreeMap::new();
         for _ in 0..n {
             let k = self.string()?;
             let v = self.string()?;
-            m.insert(k, v);
+            if m.insert(k, v).is_some() {
+                return Err(self.bad("a name given twice"));
+            }
         }
         Ok(m)
     }

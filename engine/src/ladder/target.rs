@@ -219,6 +219,19 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
     }
 }
 
+/// Checks that `machine` has a device named `device` in any role (a bit,
+/// a timer, a counter or a data word); returns its canonical spelling.
+/// The error is the one for a bit, the commonest use.
+pub fn check_device(machine: MachineId, device: &str) -> Result<String, ElementError> {
+    canonical(machine, device, Role::Read).or_else(|first| {
+        if capabilities(machine).data_boxes {
+            canonical(machine, device, Role::WordSource).map_err(|_| first)
+        } else {
+            Err(first)
+        }
+    })
+}
+
 fn lacks(machine: MachineId, element: &Element, why: &'static str) -> ElementError {
     let what = match element {
         Element::Not | Element::Edge { .. } | Element::Timer { .. } => {

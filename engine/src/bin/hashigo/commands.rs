@@ -241,7 +241,8 @@ pub fn compile(rest: &[String]) -> Result<(), Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let (machine, text, _) = source::compile_source(&args, &source, format, flag)?;
+    let (project, text, _) = source::compile_source(&args, &source, format, flag)?;
+    let machine = project.machine;
     // compile takes `--set` for the AVR PLC's scan period; a setting the
     // machine lacks is still an error.
     let problems = apply_settings(new_plc(machine).as_mut(), &args, ("", &[]));

@@ -32,6 +32,9 @@ pub struct Source {
     /// The file as read, and its format.
     pub file: SourceFile,
     pub format: Format,
+    /// The project a ladder file (`.json`, `.xml`) was read as, so that
+    /// nothing reads it (and says its warnings) twice.
+    pub project: Option<Project>,
 }
 
 /// `--machine`, when given.
@@ -51,7 +54,7 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
     let source = SourceFile::read(path).map_err(one)?;
-    let (machine, compiled, settings) = match format {
+    let (machine, compiled, settings, project) = match format {
         Format::Il | Format::Asm => {
             let machine = match flag {
                 Some(m) => m,
@@ -65,11 +68,11 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
                     machine.name()
                 )));
             }
-            (machine, None, Vec::new())
+            (machine, None, Vec::new(), None)
         }
         Format::Json | Format::Xml => {
-            let (machine, text, settings) = compile_source(args, &source, format, flag)?;
-            (machine, Some(text), settings)
+            let (project, text, settings) = compile_source(args, &source, format, flag)?;
+            (project.machine, Some(text), settings, Some(project))
         }
     };
     let mut plc = new_plc(machine);
@@ -97,6 +100,7 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
         name: source.name.clone(),
         file: source,
         format,
+        project,
     })
 }
 
@@ -111,18 +115,18 @@ pub fn located(file: &str, error: PlcError) -> Problems {
     }
 }
 
-/// A ladder file compiled for its machine: the machine, the program text
+/// A ladder file compiled for its machine: the project, the program text
 /// and the project's settings. Errors name the file, rung and cell.
 pub fn compile_source(
     args: &Args,
     source: &SourceFile,
     format: Format,
     flag: Option<MachineId>,
-) -> Result<(MachineId, String, Settings), Problems> {
+) -> Result<(Project, String, Settings), Problems> {
     let xml = XmlOptions::read(args)?;
     let (project, settings) = read_project(source, format, flag, &xml)?;
     let text = compile_project(args, source, &project, &settings)?;
-    Ok((project.machine, text, settings))
+    Ok((project, text, settings))
 }
 
 /// `project` (read from `source`) compiled for its machine.
@@ -176,6 +180,10 @@ pub fn read_project(
         ))
     })?;
     let map = xml.map.as_ref();
+    if let Some((file, map)) = map {
+        // A bad device is the map's fault: said at the map's line.
+        map.check(machine).map_err(|errors| file.located(&errors))?;
+    }
     let imported = plcopen::import_pou(
         &source.text,
         Some(machine),

@@ -4,7 +4,7 @@
 
 use std::process::ExitCode;
 
-use engine::cases::{run_case, Outcome};
+use engine::cases::{prepare_all, run_prepared, Outcome};
 use engine::plc::new_plc;
 
 use crate::args::Args;
@@ -45,10 +45,13 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
         )));
     }
     let text = compile_project(&args, &source, &project, &settings)?;
+    // Every case is read and the work of all of them counted before any
+    // runs (docs/limits.md).
+    let prepared = prepare_all(&project.tests).map_err(|e| one(format!("{}: {e}", source.name)))?;
     let machine = project.machine;
     let mut results = Vec::new();
     let mut problems = Vec::new();
-    for case in &project.tests {
+    for (case, ready) in project.tests.iter().zip(&prepared) {
         let mut plc = new_plc(machine);
         let mut setup = apply_settings(plc.as_mut(), &Args::empty(), (&source.name, &settings));
         if let Err(e) = plc.load_text(&text) {
@@ -57,7 +60,11 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
         if !setup.is_empty() {
             return Err(setup);
         }
-        match run_case(plc.as_mut(), case) {
+        match ready
+            .as_ref()
+            .map_err(Clone::clone)
+            .and_then(|ready| run_prepared(plc.as_mut(), ready))
+        {
             Ok(outcome) => results.push((case.name.clone(), outcome)),
             Err(e) => problems.push(format!(
                 "{}: test {}: {e}",
@@ -76,14 +83,17 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
     let mut failed = 0;
     for (name, outcome) in &results {
         match outcome {
-            Outcome::Pass => println!("pass {name}"),
+            Outcome::Pass => println!("pass {}", one_line(name)),
             Outcome::Fail {
                 expectation,
                 observed,
                 ..
             } => {
                 failed += 1;
-                println!("fail {name}: {expectation}: {observed}");
+                println!(
+                    "fail {}",
+                    one_line(&format!("{name}: {expectation}: {observed}"))
+                );
             }
         }
     }
@@ -99,21 +109,21 @@ fn junit(suite: &str, results: &[(String, Outcome)]) -> String {
         .count();
     let mut xml = format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"{}\" tests=\"{}\" failures=\"{failures}\">\n",
-        escape(suite),
+        escape(suite, true),
         results.len()
     );
     for (name, outcome) in results {
         match outcome {
-            Outcome::Pass => xml.push_str(&format!("  <testcase name=\"{}\"/>\n", escape(name))),
+            Outcome::Pass => xml.push_str(&format!("  <testcase name=\"{}\"/>\n", escape(name, true))),
             Outcome::Fail {
                 expectation,
                 observed,
                 ..
             } => xml.push_str(&format!(
                 "  <testcase name=\"{}\">\n    <failure message=\"{}\">{}</failure>\n  </testcase>\n",
-                escape(name),
-                escape(expectation),
-                escape(observed)
+                escape(name, true),
+                escape(expectation, true),
+                escape(observed, false)
             )),
         }
     }
@@ -121,17 +131,41 @@ fn junit(suite: &str, results: &[(String, Outcome)]) -> String {
     xml
 }
 
-/// Text safe inside XML attributes and elements.
-fn escape(text: &str) -> String {
-    text.chars()
-        .map(|c| match c {
-            '&' => "&amp;".to_string(),
-            '<' => "&lt;".to_string(),
-            '>' => "&gt;".to_string(),
-            '"' => "&quot;".to_string(),
-            // XML 1.0 has no way to write most control characters.
-            c if c.is_control() && c != '\n' && c != '\t' => "\u{fffd}".to_string(),
-            c => c.to_string(),
-        })
-        .collect()
+/// Text safe inside XML 1.0: markup escaped; characters XML 1.0 cannot
+/// carry even as references (most control characters, U+FFFE, U+FFFF,
+/// lone surrogates cannot occur in a `str`) written as U+FFFD; in an
+/// attribute, line breaks and tabs as references so that they survive
+/// attribute-value normalisation.
+fn escape(text: &str, attribute: bool) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\n' | '\t' if !attribute => out.push(c),
+            '\n' | '\t' | '\r' => out.push_str(&format!("&#{};", u32::from(c))),
+            '\u{20}'..='\u{D7FF}' | '\u{E000}'..='\u{FFFD}' | '\u{10000}'..='\u{10FFFF}' => {
+                out.push(c)
+            }
+            _ => out.push('\u{fffd}'),
+        }
+    }
+    out
+}
+
+/// A case's line as the terminal shows it: one line, control characters
+/// (newlines, escape sequences) and backslashes escaped, so that a name
+/// can neither forge another line nor drive the terminal.
+fn one_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() || c == '\\' {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }

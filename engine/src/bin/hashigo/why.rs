@@ -3,16 +3,16 @@
 //! (`engine::ladder::why`): the elements that block or carry its power,
 //! each device's state, the rungs that drive it and when it last changed.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write;
 
 use engine::clock::PeriodicClock;
 use engine::ladder::compile::Options;
 use engine::ladder::live::LiveLadder;
+use engine::ladder::target::check_element;
 use engine::ladder::why::{causes, deciding_output, Explanation};
 use engine::ladder::Ladder;
-use engine::plc::{Command, Device, Plc};
-use engine::record::run_scans;
+use engine::plc::{new_plc, Command, Device, Plc, PlcError};
 use engine::{MachineId, SimTime};
 
 use crate::args::Args;
@@ -35,17 +35,20 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         ],
     )
     .map_err(one)?;
-    let source = load(&args)?;
-    let mut plc = source.plc;
-    let machine = plc.id();
+    let mut source = load(&args)?;
+    let machine = source.plc.id();
     let scan_ms = if machine == MachineId::AvrPlc {
         source::avr_scan_ms(&args, &source.name, &source.settings)?
     } else {
         10
     };
-    let flag = Some(machine);
-    let project = ladder_project(&args, &source.file, source.format, flag, scan_ms)?;
-    let ladder = project.ladder;
+    let project = match source.project.take() {
+        Some(project) => project,
+        None => ladder_project(&args, &source.file, source.format, Some(machine), scan_ms)?,
+    };
+    // Device names in the machine's own spelling, so that `Y0`, `y00` and
+    // `Y00` are one device wherever they are compared.
+    let ladder = canonical(project.ladder, machine);
     // The ladder's own compiled program runs, so that its source map
     // names each contact's step (a text program is its decompiled ladder).
     let live = LiveLadder::new(
@@ -65,8 +68,13 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         Format::Il | Format::Asm => format!("{} (as its ladder)", source.name),
         Format::Json | Format::Xml => format!("{} (compiled)", source.name),
     };
+    // The program as written still names its devices (an AVR source's
+    // `.equ` names): names are looked up there, then run on the ladder's.
+    let written = source.plc;
+    let mut plc = new_plc(machine);
     plc.load_text(&live.listing.text)
         .map_err(|e| located(&origin, e))?;
+    let names = Names::new(&ladder, written.as_ref(), plc.as_ref());
 
     let mut problems = apply_settings(plc.as_mut(), &args, (&source.name, &source.settings));
     let events = read_events(&args, &mut problems);
@@ -75,24 +83,25 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         .and_then(|t| SimTime::parse(t).map_err(|e| format!("--at: {e}")))
         .map_err(|p| problems.push(p))
         .ok();
-    let name = args.required("device").map_err(|p| problems.push(p)).ok();
-    let device = name.map(|n| {
-        plc.device(n)
+    let asked = args.required("device").map_err(|p| problems.push(p)).ok();
+    let device = asked.map(|n| {
+        names
+            .resolve(plc.as_ref(), n)
             .map_err(|e| problems.push(format!("--device: {e}")))
     });
     let mut inputs = Vec::new();
     if let Some((file, list)) = &events {
         for e in list {
-            let checked = plc
-                .device(&e.device)
-                .and_then(|d| plc.check_input(d, e.value).map(|()| d));
+            let checked = names
+                .resolve(plc.as_ref(), &e.device)
+                .and_then(|(_, d)| plc.check_input(d, e.value).map(|()| d));
             match checked {
                 Ok(d) => inputs.push((e.time, d, e.value)),
                 Err(err) => problems.push(format!("{}:{}: {err}", file.name, e.line)),
             }
         }
     }
-    let (Some(at), Some(name), Some(Ok(device))) = (at, name, device) else {
+    let (Some(at), Some(Ok((name, device)))) = (at, device) else {
         return Err(problems);
     };
     if !problems.is_empty() {
@@ -110,8 +119,11 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
             }
         }
     }
-    changes.insert(name.to_string(), (device, plc.read(device), None));
-    let mut observe = |m: &(dyn Plc + 'static)| {
+    changes.insert(name.clone(), (device, plc.read(device), None));
+    // Looked at only where a scan ends: the state explained is the one
+    // at the end of the scan the trace is of, and "last changed" comes
+    // from the same samples (the Arduino sketch's pins change mid-pass).
+    let mut observe = |m: &dyn Plc| {
         for (d, last, changed) in changes.values_mut() {
             let now = m.read(*d);
             if now != *last {
@@ -119,23 +131,89 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
                 *changed = Some((m.now(), m.scans()));
             }
         }
-        true
     };
     plc.set_tracing(true);
     for (t, d, value) in inputs.into_iter().filter(|(t, _, _)| *t <= at) {
         // Everything due strictly before the event runs first.
-        run_scans(plc.as_mut(), PeriodicClock::just_before(t), &mut observe);
+        whole_scans(plc.as_mut(), PeriodicClock::just_before(t), &mut observe);
         plc.run_before(t);
         // Checked above: the machine takes it.
         let _ = plc.apply(Command::SetInput(d, value));
     }
-    run_scans(plc.as_mut(), at, &mut observe);
+    whole_scans(plc.as_mut(), at, &mut observe);
+    plc.run_until(at);
 
-    print!(
-        "{}",
-        report(&ladder, &live, plc.as_ref(), name, device, &changes)
-    );
+    print!("{}", report(&ladder, &live, plc.as_ref(), &name, &changes));
     Ok(())
+}
+
+/// Runs `plc` scan by scan up to the end of the last scan that ends at or
+/// before `t`, calling `at_end` at each end.
+fn whole_scans(plc: &mut dyn Plc, t: SimTime, at_end: &mut impl FnMut(&dyn Plc)) {
+    while let Some(end) = plc.next_scan_end().filter(|&end| end <= t) {
+        let (before, started) = (plc.scans(), plc.now());
+        plc.run_until(end);
+        if plc.scans() == before {
+            if plc.now() <= started {
+                // A machine that cannot say when its scan ends: nothing
+                // moved, so stop rather than spin.
+                return;
+            }
+            continue;
+        }
+        at_end(plc);
+    }
+}
+
+/// A ladder with each element's devices in the machine's own spelling
+/// (elements the machine refuses are left as written: `LiveLadder::new`
+/// reports them).
+fn canonical(mut ladder: Ladder, machine: MachineId) -> Ladder {
+    for rung in &mut ladder.rungs {
+        for cell in rung.cells.iter_mut().flatten().flatten() {
+            if let Ok(e) = check_element(machine, cell) {
+                *cell = e;
+            }
+        }
+    }
+    ladder
+}
+
+/// Device names as the user gives them, resolved once: trimmed, looked up
+/// in the program as written (which knows an AVR source's `.equ` names)
+/// and given the ladder's own spelling of the same device.
+struct Names<'a> {
+    written: &'a dyn Plc,
+    /// The ladder's spelling of each device it names.
+    spelled: HashMap<Device, String>,
+}
+
+impl<'a> Names<'a> {
+    fn new(ladder: &Ladder, written: &'a dyn Plc, running: &dyn Plc) -> Names<'a> {
+        let mut spelled = HashMap::new();
+        for rung in &ladder.rungs {
+            for (_, e) in rung.elements() {
+                if let Some(name) = e.read_device().or(e.written_device()) {
+                    if let Ok(d) = running.device(name) {
+                        spelled.entry(d).or_insert_with(|| name.to_string());
+                    }
+                }
+            }
+        }
+        Names { written, spelled }
+    }
+
+    /// The ladder's name for `name` and its handle on the `running`
+    /// machine.
+    fn resolve(&self, running: &dyn Plc, name: &str) -> Result<(String, Device), PlcError> {
+        let name = name.trim();
+        let device = match running.device(name) {
+            Ok(d) => d,
+            Err(e) => self.written.device(name).map_err(|_| e)?,
+        };
+        let spelled = self.spelled.get(&device).cloned();
+        Ok((spelled.unwrap_or_else(|| name.to_string()), device))
+    }
 }
 
 /// The explanation as text.
@@ -144,11 +222,10 @@ fn report(
     live: &LiveLadder,
     plc: &dyn Plc,
     name: &str,
-    device: Device,
     changes: &Changes,
 ) -> String {
     let mut out = String::new();
-    let value = plc.read(device);
+    let value = changes.get(name).map_or(0, |(_, v, _)| *v);
     let scans = plc.scans();
     let _ = writeln!(
         out,

@@ -13,7 +13,7 @@ use std::collections::{HashMap, HashSet};
 use super::dom::Node;
 use crate::error::Located;
 use crate::ladder::element::Element;
-use crate::ladder::target::check_element;
+use crate::ladder::target::{check_device, check_element, ElementError};
 use crate::MachineId;
 
 /// A map file: `name,device` a line (`#` comments, blank lines and a
@@ -36,30 +36,39 @@ impl VarMap {
         VarMap { entries }
     }
 
-    /// Reads a map file; every malformed line is an error at its line.
+    /// Reads a map file as a CSV reader would: a byte-order mark skipped,
+    /// fields optionally in double quotes (`"I1","X00"`, `""` for a quote
+    /// inside), `#` comments outside quotes, blank lines and a
+    /// `name,device` header skipped; every malformed line is an error at
+    /// its line.
     pub fn parse(text: &str) -> Result<VarMap, Vec<Located<String>>> {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut entries = Vec::new();
         let mut errors = Vec::new();
         let mut seen: HashMap<String, usize> = HashMap::new();
         for (i, raw) in text.lines().enumerate() {
             let line = i + 1;
-            let content = raw.split('#').next().unwrap_or("").trim();
-            if content.is_empty() || (line == 1 && content.eq_ignore_ascii_case("name,device")) {
-                continue;
-            }
-            let Some((name, device)) = content.split_once(',') else {
-                errors.push(Located::new(
-                    line,
-                    format!("expected NAME,DEVICE, found {}", crate::shown(content)),
-                ));
+            let malformed = || format!("expected NAME,DEVICE, found {}", crate::shown(raw.trim()));
+            let Some(fields) = csv_fields(raw) else {
+                errors.push(Located::new(line, malformed()));
                 continue;
             };
-            let (name, device) = (name.trim(), device.trim());
-            if name.is_empty() || device.is_empty() || device.contains(',') {
-                errors.push(Located::new(
-                    line,
-                    format!("expected NAME,DEVICE, found {}", crate::shown(content)),
-                ));
+            let (name, device) = match fields.as_slice() {
+                [] => continue,
+                [name, device] => (name.as_str(), device.as_str()),
+                _ => {
+                    errors.push(Located::new(line, malformed()));
+                    continue;
+                }
+            };
+            if line == 1
+                && name.eq_ignore_ascii_case("name")
+                && device.eq_ignore_ascii_case("device")
+            {
+                continue;
+            }
+            if name.is_empty() || device.is_empty() {
+                errors.push(Located::new(line, malformed()));
                 continue;
             }
             if let Some(first) = seen.insert(name.to_ascii_lowercase(), line) {
@@ -78,6 +87,64 @@ impl VarMap {
             Ok(VarMap { entries })
         } else {
             Err(errors)
+        }
+    }
+
+    /// Checks every device the map names (each part of a `T01+M20`) on
+    /// `machine`, each error at the entry's line, before any import uses
+    /// them.
+    pub fn check(&self, machine: MachineId) -> Result<(), Vec<Located<ElementError>>> {
+        let errors: Vec<_> = self
+            .entries
+            .iter()
+            .flat_map(|(_, device, line)| {
+                device
+                    .split('+')
+                    .filter_map(move |part| check_device(machine, part).err())
+                    .map(move |e| Located::new(*line, e))
+            })
+            .collect();
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(errors)
+        }
+    }
+}
+
+/// One CSV line's fields, trimmed, with `#` starting a comment outside
+/// quotes; `None` when a quote is not closed or text follows one.
+fn csv_fields(line: &str) -> Option<Vec<String>> {
+    let mut fields = Vec::new();
+    let mut chars = line.chars().peekable();
+    loop {
+        while chars.next_if(|c| *c == ' ' || *c == '\t').is_some() {}
+        let mut field = String::new();
+        if chars.next_if_eq(&'"').is_some() {
+            loop {
+                match chars.next()? {
+                    '"' if chars.next_if_eq(&'"').is_some() => field.push('"'),
+                    '"' => break,
+                    c => field.push(c),
+                }
+            }
+            while chars.next_if(|c| *c == ' ' || *c == '\t').is_some() {}
+            if !matches!(chars.peek(), None | Some(',' | '#')) {
+                return None;
+            }
+        } else {
+            while let Some(c) = chars.next_if(|c| *c != ',' && *c != '#') {
+                field.push(c);
+            }
+            field.truncate(field.trim_end().len());
+        }
+        let blank_line = fields.is_empty() && field.is_empty() && chars.peek() != Some(&',');
+        if !blank_line {
+            fields.push(field);
+        }
+        match chars.next() {
+            Some(',') => continue,
+            _ => return Some(fields),
         }
     }
 }
