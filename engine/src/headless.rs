@@ -19,6 +19,18 @@ pub struct Schedule {
     pub every: SimTime,
 }
 
+impl Schedule {
+    /// The rows a run prints: one at 0, one every `every`, and one at
+    /// `until` when it is not on that grid (one row when `every` is 0).
+    pub fn rows(&self) -> u64 {
+        let (until, every) = (self.until.as_nanos(), self.every.as_nanos());
+        match until.checked_div(every) {
+            Some(whole) => whole + 1 + u64::from(until % every != 0),
+            None => 1,
+        }
+    }
+}
+
 /// Why a headless run could not start. Nothing is printed in that case.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RunError {
@@ -80,10 +92,7 @@ pub fn run<P: Plc + ?Sized, W: Write>(
     if schedule.every == SimTime::ZERO && schedule.until > SimTime::ZERO {
         errors.push(RunError::ZeroInterval);
     } else if schedule.every > SimTime::ZERO {
-        // A row at 0, one every `every`, and one at `until` when it is
-        // not on that grid.
-        let (until, every) = (schedule.until.as_nanos(), schedule.every.as_nanos());
-        let rows = until / every + 1 + u64::from(until % every != 0);
+        let rows = schedule.rows();
         let values = rows.saturating_mul(watch.len().max(1) as u64);
         if values > MAX_CSV_VALUES {
             errors.push(RunError::TooManyValues(MAX_CSV_VALUES));

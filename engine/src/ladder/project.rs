@@ -199,7 +199,9 @@ where
             mut map: A,
         ) -> Result<Self::Value, A::Error> {
             let mut names = BTreeMap::new();
-            while let Some((name, text)) = map.next_entry::<String, String>()? {
+            // Checked as each name is read, so that the error lands at
+            // the second copy's line.
+            while let Some(name) = map.next_key::<String>()? {
                 if names.len() == MAX_MAP_ENTRIES {
                     return Err(serde::de::Error::custom(format!(
                         "more than {MAX_MAP_ENTRIES} names in one table (docs/limits.md)"
@@ -211,6 +213,7 @@ where
                         shown(&name)
                     )));
                 }
+                let text = map.next_value::<String>()?;
                 names.insert(name, text);
             }
             Ok(names)

@@ -12,3 +12,4 @@ mod ladders;
 mod messages;
 mod plcopen;
 mod properties;
+mod round2;

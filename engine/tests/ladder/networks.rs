@@ -232,19 +232,21 @@ impl Network {
     }
 
     /// One connection list joining the outputs of elements `from`.
-    fn joined(&self, from: &[usize]) -> String {
-        let wires: Vec<String> = from.iter().map(|&i| self.from(i)).collect();
+    fn joined(&self, from: &[usize], fbd: bool) -> String {
+        let wires: Vec<String> = from.iter().map(|&i| self.from(i, fbd)).collect();
         wires
             .join("")
             .replace("</connectionPointIn><connectionPointIn>", "")
     }
 
-    /// The connection to element `i`'s output.
-    fn from(&self, i: usize) -> String {
+    /// The connection to element `i`'s output (in FBD a contact is an
+    /// AND block).
+    fn from(&self, i: usize, fbd: bool) -> String {
         let pin = match i.checked_sub(4).map(|k| &self.nodes[k].0) {
             Some(Node::And(_) | Node::Or(_) | Node::Xor(..) | Node::Not(_)) => {
                 r#" formalParameter="OUT""#
             }
+            Some(Node::Contact { .. }) if fbd => r#" formalParameter="OUT""#,
             Some(Node::Trig { .. }) => r#" formalParameter="Q""#,
             Some(Node::Flip { .. }) => r#" formalParameter="Q1""#,
             Some(Node::Count {
@@ -267,17 +269,32 @@ impl Network {
         )
     }
 
-    fn xml(&self) -> String {
-        let mut body = String::from(
-            r#"<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut/></leftPowerRail>"#,
-        );
-        for n in 0..4 {
-            body += &format!(
-                r#"
-<contact localId="{}"><position x="10" y="{}"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X0{n}</variable></contact>"#,
-                10 + n,
-                n * 10
+    /// The network as PLCopen XML drawn as `layout` says: an LD body
+    /// (rail, contacts, coils) or an FBD one (variable boxes, a contact
+    /// after joined wires as an AND of them with its variable), its
+    /// elements written in the order given.
+    fn xml(&self, layout: &Layout) -> String {
+        let fbd = layout.fbd;
+        let mut elements: Vec<String> = Vec::new();
+        if !fbd {
+            elements.push(
+                r#"<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut/></leftPowerRail>"#.to_string(),
             );
+        }
+        for n in 0..4 {
+            elements.push(if fbd {
+                format!(
+                    r#"<inVariable localId="{}"><position x="10" y="{}"/><connectionPointOut/><expression>X0{n}</expression></inVariable>"#,
+                    10 + n,
+                    n * 10
+                )
+            } else {
+                format!(
+                    r#"<contact localId="{}"><position x="10" y="{}"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X0{n}</variable></contact>"#,
+                    10 + n,
+                    n * 10
+                )
+            });
         }
         let pins = |ins: &[usize]| -> String {
             ins.iter()
@@ -286,7 +303,7 @@ impl Network {
                     format!(
                         r#"<variable formalParameter="IN{}">{}</variable>"#,
                         k + 1,
-                        self.from(i)
+                        self.from(i, fbd)
                     )
                 })
                 .collect()
@@ -296,34 +313,48 @@ impl Network {
             let (x, y) = (20 + 10 * k, row * 10);
             let named = |ty: &str, ins: String, out: &str| {
                 format!(
-                    r#"
-<block localId="{id}" typeName="{ty}" instanceName="{ty}{k}"><position x="{x}" y="{y}"/><inputVariables>{ins}</inputVariables><outputVariables><variable formalParameter="{out}"><connectionPointOut/></variable></outputVariables></block>"#
+                    r#"<block localId="{id}" typeName="{ty}" instanceName="{ty}{k}"><position x="{x}" y="{y}"/><inputVariables>{ins}</inputVariables><outputVariables><variable formalParameter="{out}"><connectionPointOut/></variable></outputVariables></block>"#
                 )
             };
             let block = |ty: &str, ins: String| named(ty, ins, "OUT");
             let pin = |name: &str, i: usize| {
                 format!(
                     r#"<variable formalParameter="{name}">{}</variable>"#,
-                    self.from(i)
+                    self.from(i, fbd)
                 )
             };
-            body += &match node {
+            match node {
                 Node::Contact {
                     input,
                     from,
                     negated,
-                } => format!(
-                    r#"
-<contact localId="{id}" negated="{negated}"><position x="{x}" y="{y}"/>{}<variable>X0{input}</variable></contact>"#,
-                    self.joined(from)
-                ),
-                Node::And(ins) => block("AND", pins(ins)),
-                Node::Or(ins) => block("OR", pins(ins)),
-                Node::Xor(a, b) => block("XOR", pins(&[*a, *b])),
-                Node::Not(a) => block("NOT", pin("IN", *a)),
+                } if fbd => {
+                    let var = 700 + k;
+                    elements.push(format!(
+                        r#"<inVariable localId="{var}" negated="{negated}"><position x="{x}" y="{}"/><connectionPointOut/><expression>X0{input}</expression></inVariable>"#,
+                        y + 5
+                    ));
+                    let ins = format!(
+                        r#"<variable formalParameter="IN1">{}</variable><variable formalParameter="IN2"><connectionPointIn><connection refLocalId="{var}"/></connectionPointIn></variable>"#,
+                        self.joined(from, fbd)
+                    );
+                    elements.push(block("AND", ins));
+                }
+                Node::Contact {
+                    input,
+                    from,
+                    negated,
+                } => elements.push(format!(
+                    r#"<contact localId="{id}" negated="{negated}"><position x="{x}" y="{y}"/>{}<variable>X0{input}</variable></contact>"#,
+                    self.joined(from, fbd)
+                )),
+                Node::And(ins) => elements.push(block("AND", pins(ins))),
+                Node::Or(ins) => elements.push(block("OR", pins(ins))),
+                Node::Xor(a, b) => elements.push(block("XOR", pins(&[*a, *b]))),
+                Node::Not(a) => elements.push(block("NOT", pin("IN", *a))),
                 Node::Trig { from, falling } => {
                     let ty = if *falling { "F_TRIG" } else { "R_TRIG" };
-                    named(ty, pin("CLK", *from), "Q")
+                    elements.push(named(ty, pin("CLK", *from), "Q"));
                 }
                 Node::Flip {
                     set,
@@ -331,7 +362,11 @@ impl Network {
                     set_wins,
                 } => {
                     let (s, r) = if *set_wins { ("S1", "R") } else { ("S", "R1") };
-                    named(flip_type(*set_wins), pin(s, *set) + &pin(r, *reset), "Q1")
+                    elements.push(named(
+                        flip_type(*set_wins),
+                        pin(s, *set) + &pin(r, *reset),
+                        "Q1",
+                    ));
                 }
                 Node::Count {
                     kind,
@@ -354,32 +389,92 @@ impl Network {
                     } else {
                         "Q"
                     };
-                    format!(
-                        r#"
-<inVariable localId="{pv_id}"><position x="{x}" y="{y}"/><connectionPointOut/><expression>{pv}</expression></inVariable>"#
-                    ) + &named(ty, ins, outs).replace(
+                    elements.push(format!(
+                        r#"<inVariable localId="{pv_id}"><position x="{x}" y="{y}"/><connectionPointOut/><expression>{pv}</expression></inVariable>"#
+                    ));
+                    elements.push(named(ty, ins, outs).replace(
                         "</outputVariables>",
                         r#"<variable formalParameter="QD"><connectionPointOut/></variable></outputVariables>"#,
-                    )
+                    ));
                 }
-            };
+            }
         }
         for (c, on) in self.coils.iter().enumerate() {
-            let joined = self.joined(on);
-            body += &format!(
-                r#"
-<coil localId="{}"><position x="200" y="{}"/>{joined}<variable>Y0{c}</variable></coil>"#,
-                100 + c,
-                c * 10,
-            );
+            let joined = self.joined(on, fbd);
+            elements.push(if fbd {
+                format!(
+                    r#"<outVariable localId="{}"><position x="200" y="{}"/>{joined}<expression>Y0{c}</expression></outVariable>"#,
+                    100 + c,
+                    c * 10,
+                )
+            } else {
+                format!(
+                    r#"<coil localId="{}"><position x="200" y="{}"/>{joined}<variable>Y0{c}</variable></coil>"#,
+                    100 + c,
+                    c * 10,
+                )
+            });
         }
+        layout.order.apply(&mut elements);
+        let language = if fbd { "FBD" } else { "LD" };
         format!(
             r#"<?xml version="1.0" encoding="utf-8"?>
-<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous><pou name="main" pouType="program"><body><LD>
-{body}
-</LD></body></pou></pous></types></project>"#
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous><pou name="main" pouType="program"><body><{language}>
+{}
+</{language}></body></pou></pous></types></project>"#,
+            elements.join("\n")
         )
     }
+}
+
+/// How a network is written: its body's language and the order of its
+/// elements (the import must not depend on either).
+#[derive(Clone, Debug)]
+struct Layout {
+    fbd: bool,
+    order: Order,
+}
+
+/// The order a body's elements are written in.
+#[derive(Clone, Debug)]
+enum Order {
+    /// Each element after those it reads, the rail first.
+    Written,
+    /// Each element before those it reads.
+    Reversed,
+    /// Shuffled by these keys (an element's key is `keys[i % len]` mixed
+    /// with its index).
+    Shuffled(Vec<u32>),
+}
+
+impl Order {
+    fn apply(&self, elements: &mut Vec<String>) {
+        match self {
+            Order::Written => {}
+            Order::Reversed => elements.reverse(),
+            Order::Shuffled(keys) => {
+                let mut keyed: Vec<(u64, String)> = std::mem::take(elements)
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, e)| {
+                        let k = u64::from(keys[i % keys.len()]);
+                        ((k << 20 | i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15), e)
+                    })
+                    .collect();
+                keyed.sort_by_key(|(k, _)| *k);
+                elements.extend(keyed.into_iter().map(|(_, e)| e));
+            }
+        }
+    }
+}
+
+fn layout() -> impl Strategy<Value = Layout> {
+    let order = prop_oneof![
+        Just(Order::Written),
+        Just(Order::Reversed),
+        prop::collection::vec(any::<u32>(), 1..16).prop_map(Order::Shuffled),
+    ];
+    (any::<bool>(), order).prop_map(|(fbd, order)| Layout { fbd, order })
 }
 
 /// A machine loaded with a program, and the program's text.
@@ -417,8 +512,13 @@ const AVR: Target = Target {
 /// Imports, compiles and runs `net` on `target`: after each input
 /// change, one scan, and every coil must already show the network's
 /// value.
-fn check(net: &Network, inputs: &[u8], target: &Target) -> Result<(), TestCaseError> {
-    let mut xml = net.xml();
+fn check(
+    net: &Network,
+    layout: &Layout,
+    inputs: &[u8],
+    target: &Target,
+) -> Result<(), TestCaseError> {
+    let mut xml = net.xml(layout);
     for n in 0..4 {
         let (x, y) = (format!(">X0{n}<"), format!(">Y0{n}<"));
         xml = xml.replace(&x, &format!(">{}<", (target.input)(n)));
@@ -495,17 +595,19 @@ proptest! {
     #[test]
     fn random_block_networks_light_their_coils_in_the_same_scan(
         net in network(true),
+        layout in layout(),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, &IO86A)?;
+        check(&net, &layout, &inputs, &IO86A)?;
     }
 
     #[test]
     fn random_block_networks_light_the_avr_plcs_bits_in_the_same_scan(
         net in network(false),
+        layout in layout(),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, &AVR)?;
+        check(&net, &layout, &inputs, &AVR)?;
     }
 }
 
@@ -516,17 +618,19 @@ proptest! {
     #[ignore = "20 000 networks: run with --ignored"]
     fn random_block_networks_20000(
         net in network(true),
+        layout in layout(),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, &IO86A)?;
+        check(&net, &layout, &inputs, &IO86A)?;
     }
 
     #[test]
     #[ignore = "20 000 networks: run with --ignored"]
     fn random_block_networks_on_the_avr_plc_20000(
         net in network(false),
+        layout in layout(),
         inputs in prop::collection::vec(0u8..16, 1..8),
     ) {
-        check(&net, &inputs, &AVR)?;
+        check(&net, &layout, &inputs, &AVR)?;
     }
 }

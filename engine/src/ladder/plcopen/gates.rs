@@ -95,6 +95,23 @@ pub(super) enum GateKind {
     },
 }
 
+impl Gate {
+    /// The points it takes power from and those it gives power to (a
+    /// counter's LD or R and a CTUD's QD besides its pins and output).
+    fn points(&self) -> (Vec<usize>, Vec<usize>) {
+        let mut inputs = self.inputs.clone();
+        let mut outputs = vec![self.out];
+        if let GateKind::Count {
+            load, reset, empty, ..
+        } = &self.kind
+        {
+            inputs.extend(load.iter().chain(reset));
+            outputs.extend(empty);
+        }
+        (inputs, outputs)
+    }
+}
+
 impl Body {
     /// Lowers every gate, or says why one cannot be: the ORs first (OR
     /// blocks and wires joined at an input, [`Body::lower_joins`]), so
@@ -106,7 +123,7 @@ impl Body {
         self.gates = gates;
         let mut errors = self.lower_joins(joins);
         let gates = std::mem::take(&mut self.gates);
-        for g in gates {
+        for g in self.in_flow_order(gates) {
             if self.gate_work > MAX_GATE_WORK {
                 let why = format!(
                     "the file's blocks take more than {MAX_GATE_WORK} steps to lower (docs/limits.md)"
@@ -124,6 +141,77 @@ impl Body {
         } else {
             Err(errors)
         }
+    }
+
+    /// `gates` ordered so that each comes after every gate its inputs take
+    /// power from, through any wires and contacts (as the origin tools run
+    /// a block after what feeds it): lowering one rewires the network
+    /// feeding its inputs, which must be built by then, whatever order the
+    /// file writes them in. Gates in a loop of feedback keep file order
+    /// after the rest. Linear in the body's size (Kahn's algorithm over
+    /// the points).
+    fn in_flow_order(&mut self, gates: Vec<Gate>) -> Vec<Gate> {
+        let mut arrows = Vec::new();
+        for g in &gates {
+            let (inputs, outputs) = g.points();
+            for &o in &outputs {
+                arrows.extend(inputs.iter().map(|&p| (p, o)));
+            }
+        }
+        let rank = self.flow_ranks(arrows);
+        let mut keyed: Vec<(usize, Gate)> = gates
+            .into_iter()
+            .map(|g| {
+                // Before whatever reads any of its outputs.
+                let outputs = g.points().1;
+                let first = outputs
+                    .iter()
+                    .filter_map(|&o| rank.get(&self.find(o)).copied())
+                    .min();
+                (first.unwrap_or(usize::MAX), g)
+            })
+            .collect();
+        // Stable: equal ranks (loops) keep file order.
+        keyed.sort_by_key(|(r, _)| *r);
+        keyed.into_iter().map(|(_, g)| g).collect()
+    }
+
+    /// Each point's place in the flow of power from the rail (a point
+    /// comes after every point with an edge, or one of `more` arrows, into
+    /// it); points on a loop have none. Kahn's algorithm: linear.
+    fn flow_ranks(&mut self, more: Vec<(usize, usize)>) -> HashMap<usize, usize> {
+        self.gate_work += self.edges.len() + more.len();
+        let mut next: HashMap<usize, Vec<usize>> = HashMap::new();
+        let mut pending: HashMap<usize, usize> = HashMap::new();
+        let ends: Vec<(usize, usize)> = self.edges.iter().map(|e| (e.0, e.1)).collect();
+        for (a, b) in ends.into_iter().chain(more) {
+            let (a, b) = (self.find(a), self.find(b));
+            if a == b {
+                continue;
+            }
+            next.entry(a).or_default().push(b);
+            *pending.entry(b).or_insert(0) += 1;
+            pending.entry(a).or_insert(0);
+        }
+        let mut ready: Vec<usize> = pending
+            .iter()
+            .filter(|(_, &n)| n == 0)
+            .map(|(&p, _)| p)
+            .collect();
+        ready.sort_unstable();
+        let mut rank: HashMap<usize, usize> = HashMap::with_capacity(pending.len());
+        while let Some(p) = ready.pop() {
+            rank.insert(p, rank.len());
+            for &q in next.get(&p).map(Vec::as_slice).unwrap_or(&[]) {
+                if let Some(n) = pending.get_mut(&q) {
+                    *n -= 1;
+                    if *n == 0 {
+                        ready.push(q);
+                    }
+                }
+            }
+        }
+        rank
     }
 
     /// ORs: OR blocks and wires joined at an input, each its inputs'
@@ -618,8 +706,9 @@ impl Body {
     /// all that feeds it and nothing else takes its power (NOT a: the NC
     /// contact of a; R_TRIG a: a's rising contact): the same power,
     /// without the spare relay [`super::import`]'s graph would otherwise
-    /// hold the box's input in. One pass over the edges, in file order (a
-    /// box after a folded one folds too: NOT NOT a is a's NO contact).
+    /// hold the box's input in. One pass over the edges in the flow of
+    /// power (a box after a folded one folds too: NOT NOT a is a's NO
+    /// contact).
     pub(super) fn fold_boxes_into_contacts(&mut self, machine: MachineId) {
         if capabilities(machine).inline_boxes {
             return;
@@ -634,7 +723,12 @@ impl Body {
             feeders.entry(self.find(b)).or_default().push(i);
         }
         let mut gone = vec![false; self.edges.len()];
-        for i in 0..self.edges.len() {
+        // In the flow of power, whatever order the file wrote them in: a
+        // box after a folded one folds too (NOT NOT a is a's contact).
+        let rank = self.flow_ranks(Vec::new());
+        let mut order: Vec<usize> = (0..self.edges.len()).collect();
+        order.sort_by_key(|&i| rank.get(&from[i]).copied().unwrap_or(usize::MAX));
+        for i in order {
             let e = match &self.edges[i].2 {
                 Net::Leaf(e @ (Element::Not | Element::Edge { .. }), _) => e.clone(),
                 _ => continue,
