@@ -330,4 +330,24 @@ mod tests {
             CaseResult::Fail("Y00 = 1 at 1200ms: Y00 was 0 at 1200ms".into())
         );
     }
+
+    #[test]
+    fn tests_past_the_work_limit_run_none_and_say_so() {
+        let program = "LD X00\nOUT Y00\nEND\n";
+        let long = |from: u32| TestCase {
+            name: format!("from {from}"),
+            events: String::new(),
+            expect: vec![format!("Y00 stays 0 from {from}ms to 9000s")],
+        };
+        // Each alone is within the limit; all of them together are not.
+        let one = run_cases(MachineId::Io86a, &[], program, &[long(0)]);
+        assert_eq!(one, vec![CaseResult::Pass]);
+        let many: Vec<TestCase> = (0..20).map(long).collect();
+        let results = run_cases(MachineId::Io86a, &[], program, &many);
+        assert_eq!(results.len(), 20);
+        assert!(results.iter().all(|r| matches!(
+            r,
+            CaseResult::Error(e) if e.contains("more than 100000000 samples")
+        )));
+    }
 }
