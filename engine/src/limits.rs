@@ -5,8 +5,6 @@
 //! allocation failure kills the tab. Each limit is checked before the work
 //! it guards starts and is reported as an ordinary located error.
 
-use crate::time::SimTime;
-
 /// The largest text file any reader takes (program, project, PLCopen
 /// file, events): 16 MiB.
 pub const MAX_INPUT_BYTES: usize = 16 << 20;
@@ -66,10 +64,11 @@ pub const MAX_EVENTS: usize = 1_000_000;
 /// Values one `hashigo run` prints: rows × watched devices.
 pub const MAX_CSV_VALUES: u64 = 50_000_000;
 
-/// The longest simulated time a run, a step or a setting may reach:
-/// 10 000 000 s (about 116 days), far below the clock's 584-year range, so
-/// sums of simulated times never overflow.
-pub const MAX_SIM_TIME: SimTime = SimTime::from_nanos(10_000_000 * 1_000_000_000);
+/// The longest simulated time a run, a step or a setting may reach, in
+/// seconds: 10 000 000 s (about 116 days), far below the clock's 584-year
+/// range, so sums of simulated times never overflow
+/// ([`crate::time::MAX_SIM_TIME`] is the same as a time).
+pub const MAX_SIM_SECONDS: u64 = 10_000_000;
 
 /// The longest share link fragment the decoder takes: 64 KiB.
 pub const MAX_SHARE_FRAGMENT: usize = 64 << 10;

@@ -4,6 +4,12 @@
 use std::fmt;
 use std::ops::{Add, AddAssign, Sub};
 
+use crate::limits::MAX_SIM_SECONDS;
+
+/// The longest simulated time a run, a step or a setting may reach
+/// ([`MAX_SIM_SECONDS`], docs/limits.md).
+pub const MAX_SIM_TIME: SimTime = SimTime::from_secs(MAX_SIM_SECONDS);
+
 /// An instant or a duration on the simulated clock, in whole nanoseconds.
 ///
 /// Nanoseconds keep every machine's clock exact: MINASEC-U's FAST clock is
@@ -52,7 +58,7 @@ impl SimTime {
 
     /// Parses `10us`, `250ms`, `1.5s`, `20s`, `100ns`, or a bare number of
     /// milliseconds (`500`, `2.5`). Fractions are exact to the nanosecond.
-    /// Times past [`crate::limits::MAX_SIM_TIME`] are refused, so sums of
+    /// Times past [`MAX_SIM_TIME`] are refused, so sums of
     /// parsed times cannot overflow the clock.
     pub fn parse(text: &str) -> Result<SimTime, TimeError> {
         let text = text.trim();
@@ -76,18 +82,18 @@ impl SimTime {
         };
         let time =
             parse_scaled(number, scale).ok_or_else(|| TimeError::BadNumber(shown.clone()))?;
-        if time > crate::limits::MAX_SIM_TIME {
+        if time > MAX_SIM_TIME {
             return Err(TimeError::TooLong(shown));
         }
         Ok(time)
     }
 
-    /// `self + other`, or `None` past [`crate::limits::MAX_SIM_TIME`].
+    /// `self + other`, or `None` past [`MAX_SIM_TIME`].
     pub fn checked_add(self, other: SimTime) -> Option<SimTime> {
         self.0
             .checked_add(other.0)
             .map(SimTime)
-            .filter(|&t| t <= crate::limits::MAX_SIM_TIME)
+            .filter(|&t| t <= MAX_SIM_TIME)
     }
 }
 
@@ -140,7 +146,7 @@ pub enum TimeError {
     Negative(String),
     /// An exponent (`1e30`): times are plain decimals.
     Exponent(String),
-    /// Past [`crate::limits::MAX_SIM_TIME`].
+    /// Past [`MAX_SIM_TIME`].
     TooLong(String),
 }
 
@@ -250,7 +256,7 @@ mod tests {
             SimTime::parse("10000000000s"),
             Err(TimeError::TooLong(_))
         ));
-        assert_eq!(SimTime::parse("10000000s"), Ok(crate::limits::MAX_SIM_TIME));
+        assert_eq!(SimTime::parse("10000000s"), Ok(MAX_SIM_TIME));
         let msg = SimTime::parse("-1").unwrap_err().to_string();
         assert!(msg.contains("negative"), "{msg}");
     }

@@ -22,7 +22,7 @@ pub use front::{Front, Io86aFront};
 pub use trace::{ScanTrace, TraceHistory, Tracer};
 
 use crate::events::InputValue;
-use crate::limits::MAX_SIM_TIME;
+use crate::time::MAX_SIM_TIME;
 use crate::time::SimTime;
 use crate::{arduino, avr, io86a, minasec, MachineId};
 

@@ -28,7 +28,7 @@ pub use travel::TimeTravel;
 
 use std::collections::VecDeque;
 
-use crate::limits::MAX_SIM_TIME;
+use crate::time::MAX_SIM_TIME;
 use crate::plc::{tick_end, Command, Device, Plc, PlcError};
 use crate::time::SimTime;
 use store::Chunk;

@@ -7,7 +7,8 @@ use engine::avr::asm::assemble;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::plcopen::import;
 use engine::ladder::{Element, Ladder, Link, Project, Rung};
-use engine::limits::{MAX_NESTING, MAX_SIM_TIME};
+use engine::limits::MAX_NESTING;
+use engine::time::MAX_SIM_TIME;
 use engine::{MachineId, SimTime};
 use proptest::prelude::*;
 

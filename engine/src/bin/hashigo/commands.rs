@@ -216,7 +216,7 @@ fn advance(now: SimTime, step: SimTime) -> Result<SimTime, Problems> {
     now.checked_add(step).ok_or_else(|| {
         one(format!(
             "--step: the simulated clock would pass its limit of {}s (docs/limits.md)",
-            engine::limits::MAX_SIM_TIME.as_nanos() / 1_000_000_000
+            engine::limits::MAX_SIM_SECONDS
         ))
     })
 }
