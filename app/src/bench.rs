@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use engine::plc::new_plc;
+use engine::machines::new_plc;
 use engine::MachineId;
 use leptos::prelude::*;
 

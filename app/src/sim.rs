@@ -121,7 +121,7 @@ impl<M: Plc + Clone> Simulator<M> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use engine::plc::AvrPlc;
+    use engine::machines::AvrPlc;
 
     fn sim() -> Simulator<AvrPlc> {
         Simulator::new(AvrPlc::new())

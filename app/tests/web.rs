@@ -48,7 +48,7 @@ fn mount_workspaces() -> (Ctx, Workspaces, Element) {
         ctx,
         MinasecCtx::new(
             ctx,
-            Simulator::new(engine::plc::MinasecPlc::with(
+            Simulator::new(engine::machines::MinasecPlc::with(
                 engine::minasec::Machine::new(),
             )),
         ),

@@ -10,7 +10,8 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use engine::events::InputValue;
-use engine::plc::{ArduinoPlc, AvrPlc, Command, Device, Io86aPlc, MinasecPlc, Plc};
+use engine::machines::{ArduinoPlc, AvrPlc, Io86aPlc, MinasecPlc};
+use engine::plc::{Command, Device, Plc};
 use engine::record::{run_scans, Recording, DEFAULT_BUDGET};
 use engine::SimTime;
 

@@ -15,6 +15,7 @@ pub mod io86a;
 pub mod ladder;
 pub mod limits;
 pub mod machine_id;
+pub mod machines;
 pub mod minasec;
 pub mod plc;
 pub mod record;

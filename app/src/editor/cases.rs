@@ -6,7 +6,8 @@
 
 use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
 use engine::ladder::Ladder;
-use engine::plc::{new_plc, Command, Device, Plc};
+use engine::machines::new_plc;
+use engine::plc::{Command, Device, Plc};
 use engine::{MachineId, SimTime};
 use leptos::prelude::*;
 

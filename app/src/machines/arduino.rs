@@ -4,8 +4,9 @@
 
 use engine::arduino::{Chip, Program};
 use engine::events::InputValue;
+use engine::machines::ArduinoPlc;
 use engine::plc::Warning;
-use engine::plc::{ArduinoPlc, Command, Device, Plc};
+use engine::plc::{Command, Device, Plc};
 use leptos::prelude::*;
 
 use crate::chrome::console::ConsolePane;

@@ -4,7 +4,8 @@
 use engine::avr::machine::DEFAULT_SCAN;
 use engine::avr::{scan_ms, BitRef, Program};
 use engine::events::InputValue;
-use engine::plc::{AvrPlc, Command, Device, Plc, Warning};
+use engine::machines::AvrPlc;
+use engine::plc::{Command, Device, Plc, Warning};
 use leptos::prelude::*;
 
 use crate::chrome::controls::Led;

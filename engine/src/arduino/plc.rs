@@ -5,7 +5,7 @@ use super::isa::{io_name, parse_io, Op, ERASED};
 use super::machine::{Chip, Machine, PopOrder};
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -123,7 +123,7 @@ impl Plc for ArduinoPlc {
 
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
         let program = Program::parse(text, self.machine.chip().capacity())
-            .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Arduino)))?;
+            .map_err(|errors| PlcError::Program(plc::problems(errors)))?;
         self.machine.load(&program);
         Ok(())
     }
@@ -156,13 +156,9 @@ impl Plc for ArduinoPlc {
                 self.machine.set_enabled(on);
                 Ok(())
             }
-            plc::Command::LoadLinked(_) => Err(PlcError::NotThisMachine {
-                machine: self.id(),
-                lacks: "linked second device",
-            }),
-            plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
+            plc::Command::Own(command) => Err(PlcError::NotItsOwn {
                 machine: MachineId::ArduinoPlc,
-                lacks: "MINASEC-U front panel",
+                command,
             }),
         }
     }

@@ -5,7 +5,7 @@ use super::machine::Machine;
 use super::program::{BitRef, Instruction, TimerKind};
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -94,7 +94,7 @@ impl Plc for AvrPlc {
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
         let scan = super::scan_ms(self.machine.scan_period())?;
         let program = Program::parse(text, i64::from(scan))
-            .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Avr)))?;
+            .map_err(|errors| PlcError::Program(plc::problems(errors)))?;
         self.machine.load(program);
         Ok(())
     }
@@ -127,13 +127,9 @@ impl Plc for AvrPlc {
                 machine: MachineId::AvrPlc,
                 lacks: "RUN/STOP switch: it runs whenever it is powered",
             }),
-            plc::Command::LoadLinked(_) => Err(PlcError::NotThisMachine {
-                machine: self.id(),
-                lacks: "linked second device",
-            }),
-            plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
+            plc::Command::Own(command) => Err(PlcError::NotItsOwn {
                 machine: MachineId::AvrPlc,
-                lacks: "MINASEC-U front panel",
+                command,
             }),
         }
     }

@@ -5,6 +5,19 @@
 use super::machine::Machine;
 use crate::time::SimTime;
 
+/// The IO86A's own command ([`crate::plc::Command::Own`]): loads a second
+/// device, linked to the first by SETS / RSTS (the manual's two-device
+/// example); its devices are named `B.X00`. Text in the IO86A listing
+/// format; an empty text unlinks it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LoadLinked(pub String);
+
+impl std::fmt::Display for LoadLinked {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("linked second device")
+    }
+}
+
 /// Two linked devices, stepped scan by scan in time order. A device's
 /// SETS/RSTS writes reach the other at the end of the scan that made them
 /// (the serial transfer time is not modelled).

@@ -11,6 +11,7 @@
 //! - [`terminal`]: the serial terminal's commands.
 
 pub mod asm;
+pub mod front;
 pub mod isa;
 pub mod link;
 pub mod machine;
@@ -20,8 +21,9 @@ mod scan;
 pub mod terminal;
 
 pub use asm::{AsmError, Program};
+pub use front::{Fronts, Io86aFront};
 pub use isa::{Bit, Instruction, Word};
-pub use link::LinkedPair;
+pub use link::{LinkedPair, LoadLinked};
 pub use machine::{Devices, Machine};
 pub use plc::Io86aPlc;
 pub use scan::ScanState;

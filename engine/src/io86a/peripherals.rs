@@ -66,7 +66,7 @@ pub enum OutputMode {
     Pwm(u32),
 }
 
-/// What an output pin does, for panels and watches.
+/// What an output pin does, for panels and watches (off until told).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OutputSignal {
     /// A level.
@@ -75,6 +75,12 @@ pub enum OutputSignal {
     Servo(Option<SimTime>),
     /// PWM at `hz` with `duty` percent; 0 % while the Y bit is off.
     Pwm { hz: u32, duty: u8 },
+}
+
+impl Default for OutputSignal {
+    fn default() -> Self {
+        OutputSignal::Level(false)
+    }
 }
 
 impl OutputMode {

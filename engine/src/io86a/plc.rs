@@ -6,7 +6,7 @@ use super::machine::Machine;
 use super::peripherals::{InputMode, IrMode};
 use super::{LinkedPair, Program, Terminal};
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -110,11 +110,11 @@ impl Machine {
             "FILTER" => self
                 .settings_mut()
                 .apply(&format!("!{value}"))
-                .map_err(SettingError::Io86a),
+                .map_err(SettingError::own),
             "X04" | "X05" | "X07" | "Y03" | "Y04" => self
                 .settings_mut()
                 .apply(&format!("{name}{value}"))
-                .map_err(SettingError::Io86a),
+                .map_err(SettingError::own),
             _ => Err(SettingError::Unknown {
                 machine: MachineId::Io86a,
                 name: name.to_string(),
@@ -126,8 +126,7 @@ impl Machine {
 
 /// A listing parsed, its problems as a [`PlcError`].
 fn parse(text: &str) -> Result<Program, PlcError> {
-    Program::parse(text)
-        .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Io86a)))
+    Program::parse(text).map_err(|errors| PlcError::Program(plc::problems(errors)))
 }
 
 /// PLC-IO86A as a [`Plc`]: the device in RUN and its serial terminal,
@@ -292,8 +291,14 @@ impl Plc for Io86aPlc {
                 self.pair.a.set_running(on);
                 Ok(())
             }
-            plc::Command::LoadLinked(text) => {
-                let program = parse(&text)?;
+            plc::Command::Own(own) => {
+                let Some(super::LoadLinked(text)) = own.get::<super::LoadLinked>() else {
+                    return Err(PlcError::NotItsOwn {
+                        machine: MachineId::Io86a,
+                        command: own,
+                    });
+                };
+                let program = parse(text)?;
                 let now = self.pair.a.now();
                 let b = &mut self.pair.b;
                 b.set_running(false);
@@ -304,10 +309,6 @@ impl Plc for Io86aPlc {
                 self.linked = !text.trim().is_empty();
                 Ok(())
             }
-            plc::Command::Minasec(_) => Err(PlcError::NotThisMachine {
-                machine: MachineId::Io86a,
-                lacks: "MINASEC-U front panel",
-            }),
         }
     }
 
@@ -431,10 +432,12 @@ impl Plc for Io86aPlc {
 
     /// Both devices' pins (device B's stays at rest until one is linked).
     fn front_into(&self, front: &mut plc::Front) {
-        *front = plc::Front::Io86a([
-            plc::Io86aFront::of(&self.pair.a),
-            plc::Io86aFront::of(&self.pair.b),
-        ]);
+        front.fill(|fronts: &mut super::Fronts| {
+            *fronts = [
+                super::Io86aFront::of(&self.pair.a),
+                super::Io86aFront::of(&self.pair.b),
+            ];
+        });
     }
 
     /// X, Y, M (8 bytes, bit n = device n), S, then T and C contacts (4
@@ -512,15 +515,15 @@ fn unit_device(name: &str) -> Result<Device, PlcError> {
         _ => {}
     }
     if let Some(base) = upper.strip_suffix(".V") {
-        return match parse_word(base).map_err(DeviceError::Io86a)? {
+        return match parse_word(base).map_err(DeviceError::own)? {
             Word::K(_) => Err(DeviceError::Constant(name.to_string()).into()),
             word => Ok(Device(word_handle(word))),
         };
     }
     if upper.starts_with('D') {
-        let word = parse_word(&upper).map_err(DeviceError::Io86a)?;
+        let word = parse_word(&upper).map_err(DeviceError::own)?;
         return Ok(Device(word_handle(word)));
     }
-    let bit = parse_bit(name).map_err(DeviceError::Io86a)?;
+    let bit = parse_bit(name).map_err(DeviceError::own)?;
     Ok(Device(bit_handle(bit)))
 }

@@ -120,6 +120,13 @@ pub enum Command {
     SetCounterPreset(u8, u8),
 }
 
+impl std::fmt::Display for Command {
+    /// Whose command it is, for a machine that has no such panel.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "MINASEC-U front panel ({self:?})")
+    }
+}
+
 /// A setting or command value the board cannot take.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SettingError {

@@ -6,7 +6,7 @@ use super::isa::Address;
 use super::machine::Machine;
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, ProgramProblem, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -68,13 +68,13 @@ impl Machine {
                     .parse()
                     .map_err(|_| SettingError::CounterPreset(value.to_string()))?;
                 if preset > 99 {
-                    return Err(SettingError::Minasec(
-                        super::SettingError::PresetOutOfRange(preset),
-                    ));
+                    return Err(SettingError::own(super::SettingError::PresetOutOfRange(
+                        preset,
+                    )));
                 }
                 Command::SetCounterPreset((preset / 10) as u8, (preset % 10) as u8)
             }
-            "CLOCK" => Command::SetClock(ClockSpeed::parse(value).map_err(SettingError::Minasec)?),
+            "CLOCK" => Command::SetClock(ClockSpeed::parse(value).map_err(SettingError::own)?),
             _ => {
                 return Err(SettingError::Unknown {
                     machine: MachineId::MinasecU,
@@ -83,7 +83,7 @@ impl Machine {
                 })
             }
         };
-        self.apply(command).map_err(SettingError::Minasec)
+        self.apply(command).map_err(SettingError::own)
     }
 }
 
@@ -156,8 +156,8 @@ impl Plc for MinasecPlc {
     }
 
     fn load_text(&mut self, text: &str) -> Result<(), PlcError> {
-        let program = Program::parse(text)
-            .map_err(|errors| PlcError::Program(plc::problems(errors, ProgramProblem::Minasec)))?;
+        let program =
+            Program::parse(text).map_err(|errors| PlcError::Program(plc::problems(errors)))?;
         self.machine.load(&program);
         self.program = program;
         Ok(())
@@ -176,7 +176,7 @@ impl Plc for MinasecPlc {
                     COUNT_CLEAR_BUTTON => Command::CountClearButton(on),
                     n => Command::SetInput(n as u8, on),
                 };
-                self.machine.apply(command).map_err(PlcError::Panel)
+                self.machine.apply(command).map_err(PlcError::own)
             }
             plc::Command::ReleaseInput(device) => {
                 self.apply(plc::Command::SetInput(device, InputValue::Int(0)))
@@ -188,25 +188,27 @@ impl Plc for MinasecPlc {
                 let mode = self.machine.mode();
                 self.machine
                     .apply(Command::Power(false))
-                    .map_err(PlcError::Panel)?;
+                    .map_err(PlcError::own)?;
                 self.machine
                     .apply(Command::Power(true))
-                    .map_err(PlcError::Panel)?;
+                    .map_err(PlcError::own)?;
                 self.machine
                     .apply(Command::SetMode(mode))
-                    .map_err(PlcError::Panel)
+                    .map_err(PlcError::own)
             }
             plc::Command::Run(on) => {
                 let mode = if on { Mode::Run } else { Mode::Halt };
                 self.machine
                     .apply(Command::SetMode(mode))
-                    .map_err(PlcError::Panel)
+                    .map_err(PlcError::own)
             }
-            plc::Command::Minasec(c) => self.machine.apply(c).map_err(PlcError::Panel),
-            plc::Command::LoadLinked(_) => Err(PlcError::NotThisMachine {
-                machine: MachineId::MinasecU,
-                lacks: "linked second device",
-            }),
+            plc::Command::Own(own) => match own.get::<Command>() {
+                Some(&c) => self.machine.apply(c).map_err(PlcError::own),
+                None => Err(PlcError::NotItsOwn {
+                    machine: MachineId::MinasecU,
+                    command: own,
+                }),
+            },
         }
     }
 
@@ -217,7 +219,7 @@ impl Plc for MinasecPlc {
             "T0.V" | "T00.V" => TIMER_VALUE,
             "T1.V" | "T01.V" => TIMER_VALUE | 1,
             "CNTCLR" => COUNT_CLEAR_BUTTON,
-            _ => u32::from(Address::parse(name).map_err(DeviceError::Minasec)?.index()),
+            _ => u32::from(Address::parse(name).map_err(DeviceError::own)?.index()),
         };
         Ok(Device(handle))
     }
@@ -304,14 +306,7 @@ impl Plc for MinasecPlc {
 
     /// The front panel, copied in place.
     fn front_into(&self, front: &mut plc::Front) {
-        match front {
-            plc::Front::Minasec(panel) => self.machine.panel_into(panel),
-            other => {
-                let mut panel = super::Panel::default();
-                self.machine.panel_into(&mut panel);
-                *other = plc::Front::Minasec(panel);
-            }
-        }
+        front.fill(|panel: &mut super::Panel| self.machine.panel_into(panel));
     }
 
     fn warnings(&self) -> Vec<Warning> {

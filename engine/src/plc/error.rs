@@ -4,9 +4,10 @@
 
 use std::fmt;
 
+use super::own::{Own, OwnValue};
 use crate::error::{shown, Located};
 use crate::time::{SimTime, TimeError};
-use crate::{arduino, avr, io86a, minasec, MachineId};
+use crate::MachineId;
 
 /// Why a machine refused a program, a device, a setting or a command.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -17,8 +18,16 @@ pub enum PlcError {
     Device(DeviceError),
     /// A setting the machine does not take.
     Setting(SettingError),
-    /// A front-panel command the board refused (MINASEC-U).
-    Panel(minasec::SettingError),
+    /// A machine's own command (MINASEC-U's front panel, IO86A's second
+    /// device) refused, in the machine's own terms.
+    Own(Own),
+    /// Another machine's own command (its panel, its second device).
+    NotItsOwn {
+        /// The machine asked.
+        machine: MachineId,
+        /// The command, which says whose it is.
+        command: Own,
+    },
     /// A command for another machine's panel or terminal.
     NotThisMachine {
         /// The machine asked.
@@ -34,24 +43,43 @@ impl fmt::Display for PlcError {
             PlcError::Program(problems) => crate::error::write_joined(f, problems),
             PlcError::Device(e) => e.fmt(f),
             PlcError::Setting(e) => e.fmt(f),
-            PlcError::Panel(e) => e.fmt(f),
+            PlcError::Own(e) => e.fmt(f),
             PlcError::NotThisMachine { machine, lacks } => write!(f, "{machine} has no {lacks}"),
+            PlcError::NotItsOwn { machine, command } => write!(f, "{machine} has no {command}"),
         }
     }
 }
 
 impl std::error::Error for PlcError {}
 
-/// A parser's located errors as [`ProgramProblem`]s, `f` naming the
-/// machine (`ProgramProblem::Io86a`).
-pub fn problems<E>(
-    errors: Vec<Located<E>>,
-    f: impl Fn(E) -> ProgramProblem,
-) -> Vec<Located<ProgramProblem>> {
+/// A parser's located errors, in the machine's own terms, as
+/// [`ProgramProblem`]s.
+pub fn problems<E: OwnValue>(errors: Vec<Located<E>>) -> Vec<Located<ProgramProblem>> {
     errors
         .into_iter()
-        .map(|e| Located::new(e.line, f(e.error)))
+        .map(|e| Located::new(e.line, Own::new(e.error)))
         .collect()
+}
+
+impl PlcError {
+    /// A machine's own refusal of its own command.
+    pub fn own<E: OwnValue>(e: E) -> PlcError {
+        PlcError::Own(Own::new(e))
+    }
+}
+
+impl DeviceError {
+    /// A device refused in the machine's own terms.
+    pub fn own<E: OwnValue>(e: E) -> DeviceError {
+        DeviceError::Own(Own::new(e))
+    }
+}
+
+impl SettingError {
+    /// A setting refused in the machine's own terms.
+    pub fn own<E: OwnValue>(e: E) -> SettingError {
+        SettingError::Own(Own::new(e))
+    }
 }
 
 impl From<DeviceError> for PlcError {
@@ -66,37 +94,16 @@ impl From<SettingError> for PlcError {
     }
 }
 
-/// One problem with a line of a program, in the machine's own terms.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum ProgramProblem {
-    /// A MINASEC-U listing line.
-    Minasec(minasec::AsmError),
-    /// A PLC-IO86A listing line.
-    Io86a(io86a::AsmError),
-    /// An Arduino PLC listing line.
-    Arduino(arduino::isa::AsmError),
-    /// An AVR PLC source line.
-    Avr(avr::ProgramError),
-}
-
-impl fmt::Display for ProgramProblem {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ProgramProblem::Minasec(e) => e.fmt(f),
-            ProgramProblem::Io86a(e) => e.fmt(f),
-            ProgramProblem::Arduino(e) => e.fmt(f),
-            ProgramProblem::Avr(e) => e.fmt(f),
-        }
-    }
-}
+/// One problem with a line of a program, in the machine's own terms (its
+/// assembler's error type).
+pub type ProgramProblem = Own;
 
 /// A device name, or a value for a device, that the machine does not take.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum DeviceError {
-    /// A MINASEC-U address that does not parse.
-    Minasec(minasec::isa::OperandError),
-    /// A PLC-IO86A device that does not parse.
-    Io86a(io86a::isa::OperandError),
+    /// A device that does not parse, in the machine's own terms
+    /// (MINASEC-U's and IO86A's operand errors).
+    Own(Own),
     /// An Arduino pin that is not X000-X005 / Y000-Y005.
     ArduinoPin(String),
     /// An AVR bit that is neither a defined name nor `R4.2`.
@@ -132,8 +139,7 @@ pub enum DeviceError {
 impl fmt::Display for DeviceError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            DeviceError::Minasec(e) => e.fmt(f),
-            DeviceError::Io86a(e) => e.fmt(f),
+            DeviceError::Own(e) => e.fmt(f),
             DeviceError::ArduinoPin(d) => write!(
                 f,
                 "unknown device {}: the Arduino PLC has X000-X005, Y000-Y005",
@@ -188,12 +194,12 @@ pub enum SettingError {
     },
     /// A time that does not parse.
     Time(TimeError),
-    /// A MINASEC-U knob, switch or clock out of range.
-    Minasec(minasec::SettingError),
+    /// A value the machine refuses in its own terms (a MINASEC-U knob,
+    /// switch or clock out of range; a PLC-IO86A pin or filter setting in
+    /// the terminal's words).
+    Own(Own),
     /// MINASEC-U `C0=`: not a number.
     CounterPreset(String),
-    /// A PLC-IO86A pin or filter setting in the terminal's words.
-    Io86a(io86a::peripherals::SettingError),
     /// A period outside `0 < period <= max`.
     PeriodOutOfRange {
         /// What it is the period of.
@@ -232,11 +238,10 @@ impl fmt::Display for SettingError {
                 takes,
             } => write!(f, "unknown setting {}: {machine} takes {takes}", shown(name)),
             SettingError::Time(e) => e.fmt(f),
-            SettingError::Minasec(e) => e.fmt(f),
+            SettingError::Own(e) => e.fmt(f),
             SettingError::CounterPreset(v) => {
                 write!(f, "C0={v}: the counter set value is a number 0..99")
             }
-            SettingError::Io86a(e) => e.fmt(f),
             SettingError::PeriodOutOfRange { what, period, max } => write!(
                 f,
                 "{what} {period}ms is out of range: above 0 and at most {}s",

@@ -4,27 +4,26 @@
 //! [`Plc`]: load a program, apply [`Command`]s, advance simulated time (by
 //! a span, a scan, an instruction or a clock edge), resolve device names
 //! once to [`Device`] handles and read them cheaply. Each machine's folder
-//! holds its implementation (`minasec/plc.rs`, …); [`new_plc`] makes one
-//! for a [`MachineId`], so adding a machine touches that one place.
+//! holds its implementation (`minasec/plc.rs`, …);
+//! `crate::machines::new_plc` makes one for a [`MachineId`]. This module
+//! names no machine: what only one machine has travels as [`Own`] values.
 //! Errors are typed ([`PlcError`]); wall-clock time never enters: the
 //! caller says how far to go.
 
 pub mod error;
 pub mod front;
+pub mod own;
 pub mod trace;
 
-pub use crate::arduino::ArduinoPlc;
-pub use crate::avr::AvrPlc;
-pub use crate::io86a::Io86aPlc;
-pub use crate::minasec::MinasecPlc;
 pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
-pub use front::{Front, Io86aFront};
+pub use front::Front;
+pub use own::Own;
 pub use trace::{ScanTrace, TraceHistory, Tracer};
 
 use crate::events::InputValue;
-use crate::time::MAX_SIM_TIME;
 use crate::time::SimTime;
-use crate::{arduino, avr, io86a, minasec, MachineId};
+use crate::time::MAX_SIM_TIME;
+use crate::MachineId;
 
 /// A device resolved once by [`Plc::device`]; reading it is a match and a
 /// shift, no name look-up. Only meaningful to the machine that made it.
@@ -54,12 +53,11 @@ pub enum Command {
     /// IO86A's `R` / `S`, the Arduino sketch's `e` / `d`. The AVR PLC has
     /// no such switch.
     Run(bool),
-    /// MINASEC-U's front panel: switches, buttons, knobs.
-    Minasec(minasec::Command),
-    /// IO86A: loads a second device, linked to the first by SETS / RSTS
-    /// (the manual's two-device example); its devices are named `B.X00`.
-    /// Text in the IO86A listing format; an empty text unlinks it.
-    LoadLinked(String),
+    /// A command only one machine takes, as that machine's own type:
+    /// MINASEC-U's front panel (`minasec::Command`: switches, buttons,
+    /// knobs), IO86A's second device (`io86a::LoadLinked`). Another
+    /// machine refuses it with [`PlcError::NotThisMachine`].
+    Own(Own),
 }
 
 /// A warning about the loaded program: what it does is legal but
@@ -202,7 +200,7 @@ pub trait Plc {
     /// Copies what the machine's front shows beyond its devices into
     /// `front` (replacing it; the caller keeps it between frames).
     fn front_into(&self, front: &mut Front) {
-        *front = Front::None;
+        front.clear();
     }
 
     /// Warnings about the loaded program.
@@ -289,17 +287,6 @@ pub fn tick_end(now: SimTime, dt: SimTime) -> SimTime {
 /// Reads `N` little-endian bytes of `image` at `at`.
 pub(crate) fn image_bytes<const N: usize>(image: &[u8], at: usize) -> Option<[u8; N]> {
     image.get(at..at + N)?.try_into().ok()
-}
-
-/// A new machine of kind `id`, powered on, with no program, ready to run
-/// (MINASEC-U's switch at RUN, the Arduino PLC enabled).
-pub fn new_plc(id: MachineId) -> Box<dyn Plc> {
-    match id {
-        MachineId::MinasecU => Box::new(minasec::MinasecPlc::new()),
-        MachineId::Io86a => Box::new(io86a::Io86aPlc::new()),
-        MachineId::AvrPlc => Box::new(avr::AvrPlc::new()),
-        MachineId::ArduinoPlc => Box::new(arduino::ArduinoPlc::new()),
-    }
 }
 
 /// Steps in whole scans: the time `scans` periods from power-on for at

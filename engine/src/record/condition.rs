@@ -147,7 +147,7 @@ fn split(text: &str) -> Vec<&str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plc::{AvrPlc, Io86aPlc};
+    use crate::machines::{AvrPlc, Io86aPlc};
 
     #[test]
     fn conditions_read_with_or_without_spaces_and_refuse_what_they_cannot() {

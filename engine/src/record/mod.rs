@@ -28,9 +28,9 @@ pub use travel::TimeTravel;
 
 use std::collections::VecDeque;
 
-use crate::time::MAX_SIM_TIME;
 use crate::plc::{tick_end, Command, Device, Plc, PlcError};
 use crate::time::SimTime;
+use crate::time::MAX_SIM_TIME;
 use store::Chunk;
 
 /// A recorded scan's place: 0 is the state when recording started, then

@@ -7,7 +7,8 @@ mod common;
 
 use engine::cases::{run_case, CaseError, Expectation, Outcome, TestCase};
 use engine::ladder::{share, Project};
-use engine::plc::{new_plc, Plc};
+use engine::machines::new_plc;
+use engine::plc::Plc;
 use engine::MachineId;
 
 use common::{hashigo, text, Temp};

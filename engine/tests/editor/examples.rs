@@ -5,7 +5,8 @@ use engine::events::InputValue;
 use engine::examples::EXAMPLES;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::decompile::decompile_text;
-use engine::plc::{new_plc, Command};
+use engine::machines::new_plc;
+use engine::plc::Command;
 use engine::SimTime;
 
 #[test]

@@ -9,7 +9,8 @@ use engine::ladder::compile::{compile_logic, Options};
 use engine::ladder::decompile::{decompile, Source};
 use engine::ladder::eval::Reference;
 use engine::ladder::{Ladder, RungLogic};
-use engine::plc::{new_plc, Command, Plc};
+use engine::machines::new_plc;
+use engine::plc::{Command, Plc};
 
 use crate::strategies::{case, pool, Pool};
 use engine::{arduino, avr, io86a, minasec, MachineId, SimTime};

@@ -5,7 +5,8 @@
 use engine::events::InputValue;
 use engine::ladder::compile::compile;
 use engine::ladder::plcopen::{import_mapped, VarMap};
-use engine::plc::{AvrPlc, Command, Io86aPlc, Plc};
+use engine::machines::{AvrPlc, Io86aPlc};
+use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};
 
 /// A project whose one program's LD body is `body` (OpenPLC's dialect).

@@ -543,7 +543,7 @@ const MINASEC: Target = Target {
             Default::default(),
         )
         .map_err(|e| format!("{e:?}"))?;
-        let mut m: Box<dyn Plc> = Box::new(engine::plc::MinasecPlc::new());
+        let mut m: Box<dyn Plc> = Box::new(engine::machines::MinasecPlc::new());
         m.load_text(&text).map_err(|e| format!("{e:?}"))?;
         Ok((m, text))
     },

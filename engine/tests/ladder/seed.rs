@@ -4,8 +4,9 @@
 use engine::headless::{run_csv as run, Schedule};
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::Project;
+use engine::machines::MinasecPlc;
 use engine::minasec::Program;
-use engine::plc::{Command, MinasecPlc, Plc};
+use engine::plc::{Command, Plc};
 use engine::{events, MachineId, SimTime};
 
 const SEED_JSON: &str = include_str!("../../programs/minasec-u/seed-test.json");

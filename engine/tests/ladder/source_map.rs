@@ -86,7 +86,8 @@ fn every_leaf_has_its_line_on_every_machine() {
 #[test]
 fn step_instruction_walks_the_scan_in_listing_order() {
     use engine::ladder::{Element, Rung};
-    use engine::plc::{new_plc, Command};
+    use engine::machines::new_plc;
+    use engine::plc::Command;
     let devices = |m: MachineId| match m {
         MachineId::MinasecU => ("X00", "X01", "Y00"),
         MachineId::Io86a => ("X00", "X01", "Y00"),

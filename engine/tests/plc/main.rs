@@ -2,7 +2,9 @@
 //! all four machines (docs/architecture.md).
 
 use engine::events::InputValue;
-use engine::plc::{new_plc, Command, Plc, PlcError, SettingError, Warning, MAX_TICK};
+use engine::io86a::LoadLinked;
+use engine::machines::new_plc;
+use engine::plc::{Command, Own, Plc, PlcError, SettingError, Warning, MAX_TICK};
 use engine::{MachineId, SimTime};
 
 mod record;
@@ -258,8 +260,10 @@ fn the_io86a_takes_a_linked_second_device() {
     let mut plc = new_plc(MachineId::Io86a);
     plc.load_text("LD X00\nSETS Y01\nLD X01\nRSTS Y01\nEND\n")
         .expect("A");
-    plc.apply(Command::LoadLinked("LD Y01\nOUT Y02\nEND\n".into()))
-        .expect("B");
+    plc.apply(Command::Own(Own::new(LoadLinked(
+        "LD Y01\nOUT Y02\nEND\n".into(),
+    ))))
+    .expect("B");
     set(plc.as_mut(), "X00", true);
     settle(plc.as_mut());
     assert_eq!(read(plc.as_ref(), "B.Y01"), 1, "A's SETS reached B");
@@ -272,19 +276,25 @@ fn the_io86a_takes_a_linked_second_device() {
     // B's inputs are its own.
     set(plc.as_mut(), "B.X03", true);
     settle(plc.as_mut());
-    let mut front = engine::plc::Front::None;
+    let mut front = engine::plc::Front::none();
     plc.front_into(&mut front);
-    match front {
-        engine::plc::Front::Io86a([a, b]) => {
+    match front.get::<engine::io86a::Fronts>() {
+        Some([a, b]) => {
             assert_eq!(b.inputs, 1 << 3);
             assert_eq!(a.inputs, 1 << 1);
         }
-        other => panic!("{other:?}"),
+        None => panic!("{front:?}"),
     }
     assert!(matches!(
-        plc.apply(Command::LoadLinked("BOGUS\n".into())),
+        plc.apply(Command::Own(Own::new(LoadLinked("BOGUS\n".into())))),
         Err(PlcError::Program(_))
     ));
+    // Another machine's own command is refused by name.
+    let panel = Command::Own(Own::new(engine::minasec::Command::SetDip(5)));
+    assert_eq!(
+        plc.apply(panel).map_err(|e| e.to_string()),
+        Err("io86a has no MINASEC-U front panel (SetDip(5))".to_string())
+    );
 }
 
 #[test]
@@ -295,12 +305,12 @@ fn running_and_fronts() {
             plc.running(),
             "{id} runs after power-up (as the CLI starts it)"
         );
-        let mut front = engine::plc::Front::None;
+        let mut front = engine::plc::Front::none();
         plc.front_into(&mut front);
         let expected = match id {
-            MachineId::MinasecU => matches!(front, engine::plc::Front::Minasec(_)),
-            MachineId::Io86a => matches!(front, engine::plc::Front::Io86a(_)),
-            _ => front == engine::plc::Front::None,
+            MachineId::MinasecU => front.get::<engine::minasec::Panel>().is_some(),
+            MachineId::Io86a => front.get::<engine::io86a::Fronts>().is_some(),
+            _ => front.is_none(),
         };
         assert!(expected, "{id}: {front:?}");
         if id != MachineId::AvrPlc {

@@ -3,7 +3,8 @@
 //! on exactly as the original did.
 
 use engine::events::InputValue;
-use engine::plc::{ArduinoPlc, AvrPlc, Command, Io86aPlc, MinasecPlc, Plc};
+use engine::machines::{ArduinoPlc, AvrPlc, Io86aPlc, MinasecPlc};
+use engine::plc::{Command, Plc};
 use engine::record::{run_scans, Mark, Recording, DEFAULT_BUDGET, KEYFRAME_EVERY};
 use engine::SimTime;
 use proptest::prelude::*;

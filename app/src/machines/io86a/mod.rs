@@ -5,8 +5,9 @@ pub mod view;
 
 use engine::events::InputValue;
 use engine::io86a::peripherals::OutputSignal;
-use engine::io86a::Program;
-use engine::plc::{Command, Front, Io86aFront, Io86aPlc, Plc};
+use engine::io86a::{Fronts, Io86aFront, LoadLinked, Program};
+use engine::machines::Io86aPlc;
+use engine::plc::{Command, Front, Own, Plc};
 use leptos::prelude::*;
 
 use crate::sim::Simulator;
@@ -146,9 +147,9 @@ impl Io86aCtx {
     /// Copies both devices into the signals that changed.
     pub fn refresh(&self) {
         self.sim.with_value(|s| {
-            let mut front = Front::None;
+            let mut front = Front::none();
             s.machine().front_into(&mut front);
-            if let Front::Io86a([a, b]) = &front {
+            if let Some([a, b]) = front.get::<Fronts>() {
                 self.devices[0].sync(a);
                 self.devices[1].sync(b);
             }
@@ -176,7 +177,7 @@ impl Io86aCtx {
                 m.load_text(&text)?;
                 m.apply(Command::Run(true))
             } else {
-                m.apply(Command::LoadLinked(text))
+                m.apply(Command::Own(Own::new(LoadLinked(text))))
             }
         });
         self.refresh();

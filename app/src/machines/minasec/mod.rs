@@ -4,8 +4,9 @@
 pub mod board;
 pub mod program;
 
+use engine::machines::MinasecPlc;
 use engine::minasec::{Command, Panel, TimerId};
-use engine::plc::{self, Front, MinasecPlc, Plc};
+use engine::plc::{self, Front, Plc};
 use engine::SimTime;
 use leptos::prelude::*;
 
@@ -87,7 +88,7 @@ impl MinasecCtx {
             .sim
             .try_update_value(|s| {
                 s.machine_mut()
-                    .apply(plc::Command::Minasec(command))
+                    .apply(plc::Command::Own(plc::Own::new(command)))
                     .is_ok()
             })
             .unwrap_or(false);
@@ -99,9 +100,9 @@ impl MinasecCtx {
     pub fn refresh(&self) {
         self.sim.with_value(|s| {
             let machine = s.machine();
-            let mut front = Front::Minasec(Panel::default());
+            let mut front = Front::none();
             machine.front_into(&mut front);
-            if let Front::Minasec(panel) = &front {
+            if let Some(panel) = front.get::<Panel>() {
                 self.panel
                     .sync(panel, machine.now().as_nanos() / 1_000_000, machine.scans());
             }

@@ -7,7 +7,8 @@ use std::time::Instant;
 
 use engine::events::parse_events;
 use engine::headless::{self, RunError, Schedule};
-use engine::plc::{new_plc, Command, Plc};
+use engine::machines::new_plc;
+use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};
 
 use crate::args::Args;

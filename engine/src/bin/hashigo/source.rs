@@ -5,7 +5,8 @@ use engine::ladder::compile::{compile as compile_ladder, Options};
 use engine::ladder::decompile::decompile_text;
 use engine::ladder::plcopen::VarMap;
 use engine::ladder::{plcopen, Project};
-use engine::plc::{new_plc, Command, Plc, PlcError};
+use engine::machines::new_plc;
+use engine::plc::{Command, Plc, PlcError};
 use engine::{MachineId, SimTime};
 
 use crate::args::Args;

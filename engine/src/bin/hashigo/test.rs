@@ -5,7 +5,7 @@
 use std::process::ExitCode;
 
 use engine::cases::{prepare_all, run_prepared, Outcome};
-use engine::plc::new_plc;
+use engine::machines::new_plc;
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};

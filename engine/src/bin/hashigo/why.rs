@@ -12,7 +12,8 @@ use engine::ladder::live::LiveLadder;
 use engine::ladder::target::check_element;
 use engine::ladder::why::{causes, deciding_output, Explanation};
 use engine::ladder::Ladder;
-use engine::plc::{new_plc, Command, Device, Plc, PlcError};
+use engine::machines::new_plc;
+use engine::plc::{Command, Device, Plc, PlcError};
 use engine::{MachineId, SimTime};
 
 use crate::args::Args;

@@ -134,26 +134,24 @@ impl std::error::Error for TextError {}
 /// A program in `machine`'s own text (the AVR's with `Scan` = `scan_ms`)
 /// as a ladder.
 pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<Ladder, TextError> {
-    use crate::plc::{problems, ProgramProblem as P};
+    use crate::plc::problems;
     let ladder = match machine {
         MachineId::MinasecU => {
-            let p = minasec::Program::parse(text)
-                .map_err(|e| TextError::Program(problems(e, P::Minasec)))?;
+            let p = minasec::Program::parse(text).map_err(|e| TextError::Program(problems(e)))?;
             decompile(Source::Minasec(&p))
         }
         MachineId::Io86a => {
-            let p = io86a::Program::parse(text)
-                .map_err(|e| TextError::Program(problems(e, P::Io86a)))?;
+            let p = io86a::Program::parse(text).map_err(|e| TextError::Program(problems(e)))?;
             decompile(Source::Io86a(&p))
         }
         MachineId::AvrPlc => {
             let p = avr::Program::parse(text, i64::from(scan_ms))
-                .map_err(|e| TextError::Program(problems(e, P::Avr)))?;
+                .map_err(|e| TextError::Program(problems(e)))?;
             decompile(Source::Avr(&p, scan_ms))
         }
         MachineId::ArduinoPlc => {
             let p = arduino::Program::parse(text, arduino::Chip::Atmega328.capacity())
-                .map_err(|e| TextError::Program(problems(e, P::Arduino)))?;
+                .map_err(|e| TextError::Program(problems(e)))?;
             decompile(Source::Arduino(&p))
         }
     };
