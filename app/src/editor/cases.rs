@@ -111,7 +111,7 @@ impl Recorder {
     pub fn observe(&mut self, plc: &dyn Plc) {
         let t = SimTime::from_nanos(plc.now().as_nanos().saturating_sub(self.start.as_nanos()));
         for (name, device, last) in &mut self.inputs {
-            let value = plc.read(*device);
+            let value = plc.read(*device).as_i64();
             if value != *last {
                 *last = value;
                 self.events.push((t, name.clone(), value));

@@ -174,7 +174,12 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
             let rows = names
                 .iter()
                 .map(|n| {
-                    let values = tr.series(n, from, end).unwrap_or_default();
+                    let values = tr
+                        .series(n, from, end)
+                        .unwrap_or_default()
+                        .into_iter()
+                        .map(|v| v.map(|v| v.as_i64()))
+                        .collect();
                     (n.clone(), values)
                 })
                 .collect();

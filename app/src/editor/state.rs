@@ -982,7 +982,7 @@ impl LadderCtx {
                                 return None;
                             }
                             self.handle(plc, &format!("{}.v", c.device))
-                                .map(|h| plc.read(h))
+                                .map(|h| plc.read(h).as_i64())
                         })
                         .collect()
                 })

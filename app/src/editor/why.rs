@@ -83,7 +83,7 @@ pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
             .map(|c| {
                 let device = c.device.as_ref().and_then(|d| {
                     let handle = plc.device(d).ok()?;
-                    Some((d.clone(), plc.read(handle)))
+                    Some((d.clone(), plc.read(handle).as_i64()))
                 });
                 let drivers = c
                     .device

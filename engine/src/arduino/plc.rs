@@ -5,7 +5,7 @@ use super::isa::{io_name, parse_io, Op, ERASED};
 use super::machine::{Chip, Machine, PopOrder};
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -183,24 +183,24 @@ impl Plc for ArduinoPlc {
     }
 
     /// The pins now: the sketch has no scan, every step drives its pin.
-    fn read(&self, device: Device) -> i64 {
+    fn read(&self, device: Device) -> Value {
         let n = device.0 as u8;
         let pins = if n >= 8 {
             self.machine.outputs() >> (n - 8)
         } else {
             self.machine.inputs() >> n
         };
-        i64::from(pins & 1)
+        Value::Bit(pins & 1 != 0)
     }
 
-    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+    fn read_image(&self, image: &[u8], device: Device) -> Option<Value> {
         let n = device.0 as u8;
         let pins = if n >= 8 {
             image.get(1)? >> (n - 8)
         } else {
             image.first()? >> n
         };
-        Some(i64::from(pins & 1))
+        Some(Value::Bit(pins & 1 != 0))
     }
 
     /// A pass ends where the program returns to step 0.

@@ -5,7 +5,7 @@ use super::machine::Machine;
 use super::program::{BitRef, Instruction, TimerKind};
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -165,27 +165,28 @@ impl Plc for AvrPlc {
         }
     }
 
-    fn read(&self, device: Device) -> i64 {
+    fn read(&self, device: Device) -> Value {
         match device.0 {
-            h if h >= TIMER => self
-                .machine
-                .timer((h - TIMER) as usize)
-                .map_or(0, |t| i64::from(t.count)),
-            h => i64::from(self.machine.bit(AvrPlc::bit(h))),
+            h if h >= TIMER => Value::Int(
+                self.machine
+                    .timer((h - TIMER) as usize)
+                    .map_or(0, |t| i64::from(t.count)),
+            ),
+            h => Value::Bit(self.machine.bit(AvrPlc::bit(h))),
         }
     }
 
-    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+    fn read_image(&self, image: &[u8], device: Device) -> Option<Value> {
         let registers = self.machine.last_scan_registers().len();
         match device.0 {
             h if h >= TIMER => {
                 let at = registers + 2 * (h - TIMER) as usize;
-                plc::image_bytes(image, at).map(|b| i64::from(u16::from_le_bytes(b)))
+                plc::image_bytes(image, at).map(|b| Value::Int(i64::from(u16::from_le_bytes(b))))
             }
             h => {
                 let bit = AvrPlc::bit(h);
                 let r = image.get(usize::from(bit.register))?;
-                Some(i64::from(r >> bit.bit & 1))
+                Some(Value::Bit(r >> bit.bit & 1 != 0))
             }
         }
     }

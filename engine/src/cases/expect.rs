@@ -49,6 +49,23 @@ impl Compare {
         }
     }
 
+    /// Whether a device's `value` OP `b`, compared as numbers whatever
+    /// the value's kind (a bit is 0 or 1).
+    pub fn holds_value(self, value: crate::plc::Value, b: i64) -> bool {
+        match value.partial_cmp(&b) {
+            Some(order) => match self {
+                Compare::Eq => order.is_eq(),
+                Compare::Ne => order.is_ne(),
+                Compare::Ge => order.is_ge(),
+                Compare::Le => order.is_le(),
+                Compare::Gt => order.is_gt(),
+                Compare::Lt => order.is_lt(),
+            },
+            // Only NaN compares with nothing: it equals nothing.
+            None => self == Compare::Ne,
+        }
+    }
+
     fn symbol(self) -> &'static str {
         Compare::ALL
             .iter()

@@ -14,7 +14,7 @@ pub use expect::{Compare, ExpectError, Expectation};
 
 use crate::error::Located;
 use crate::events::{parse_events, EventError};
-use crate::plc::{Command, Device, Plc, PlcError};
+use crate::plc::{Command, Device, Plc, PlcError, Value};
 use crate::time::SimTime;
 use schedule::Schedule;
 
@@ -100,8 +100,8 @@ struct Watch {
     /// Edges: the value at the span's first and latest samples, whether
     /// it ever changed, when it first moved the other way, and whether the
     /// edge was seen.
-    first: Option<i64>,
-    last: Option<i64>,
+    first: Option<Value>,
+    last: Option<Value>,
     changed: bool,
     opposite: Option<SimTime>,
     seen: bool,
@@ -123,18 +123,18 @@ impl Watch {
 
     /// Looks at the device's `value` at `t`, an instant of its span. No
     /// allocation unless it fails: a long window takes millions of looks.
-    fn sample(&mut self, t: SimTime, value: i64) {
+    fn sample(&mut self, t: SimTime, value: Value) {
         if self.failed.is_some() {
             return;
         }
         let holds = match &self.expectation {
             Expectation::At {
                 op, value: want, ..
-            } => op.holds(value, *want),
+            } => op.holds_value(value, *want),
             Expectation::Stays { value: want, .. } => value == *want,
             Expectation::Edge { falling, .. } => {
                 if let Some(before) = self.last {
-                    let (was, on) = (before != 0, value != 0);
+                    let (was, on) = (before.is_on(), value.is_on());
                     let wanted = if *falling { was && !on } else { !was && on };
                     let other = if *falling { !was && on } else { was && !on };
                     self.seen |= wanted;
@@ -166,7 +166,10 @@ impl Watch {
         if self.seen {
             return None;
         }
-        let (first, last) = (self.first.unwrap_or(0), self.last.unwrap_or(0));
+        let (first, last) = (
+            self.first.unwrap_or(Value::Int(0)),
+            self.last.unwrap_or(Value::Int(0)),
+        );
         let verb = if *falling { "fall" } else { "rise" };
         let device = self.expectation.device();
         // Say what was seen: a device that did the opposite is not one

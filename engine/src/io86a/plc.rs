@@ -6,7 +6,7 @@ use super::machine::Machine;
 use super::peripherals::{InputMode, IrMode};
 use super::{LinkedPair, Program, Terminal};
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -343,15 +343,15 @@ impl Plc for Io86aPlc {
         Err(error.into())
     }
 
-    fn read(&self, device: Device) -> i64 {
+    fn read(&self, device: Device) -> Value {
         let m = self.unit(device);
         let scan = m.last_scan();
         match device.0 & !DEVICE_B {
-            h if h >= SIGNAL => m.output_signal((h & 1) as usize).value(),
-            h if h >= VALUE => i64::from(scan.word(handle_word(h))),
+            h if h >= SIGNAL => Value::Int(m.output_signal((h & 1) as usize).value()),
+            h if h >= VALUE => Value::Int(i64::from(scan.word(handle_word(h)))),
             h => match handle_bit(h) {
-                Bit::Y(n) => i64::from(m.output_terminals() >> n & 1),
-                bit => i64::from(scan.bit(bit)),
+                Bit::Y(n) => Value::Bit(m.output_terminals() >> n & 1 != 0),
+                bit => Value::Bit(scan.bit(bit)),
             },
         }
     }
@@ -391,13 +391,14 @@ impl Plc for Io86aPlc {
         }
     }
 
-    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+    fn read_image(&self, image: &[u8], device: Device) -> Option<Value> {
         if device.0 & DEVICE_B != 0 || device.0 >= SIGNAL {
             return None;
         }
         if device.0 >= VALUE {
             let at = 16 + 2 * image_word_index(handle_word(device.0))?;
-            return plc::image_bytes(image, at).map(|b| i64::from(i16::from_le_bytes(b)));
+            return plc::image_bytes(image, at)
+                .map(|b| Value::Int(i64::from(i16::from_le_bytes(b))));
         }
         let (at, n) = match handle_bit(device.0) {
             Bit::X(n) => (0, n),
@@ -407,7 +408,7 @@ impl Plc for Io86aPlc {
             Bit::T(n) => (11 + usize::from(n / 8), n % 8),
             Bit::C(n) => (15, n),
         };
-        image.get(at).map(|b| i64::from(b >> n & 1))
+        image.get(at).map(|b| Value::Bit(b >> n & 1 != 0))
     }
 
     fn step_scan(&mut self) {

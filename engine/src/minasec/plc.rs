@@ -6,7 +6,7 @@ use super::isa::Address;
 use super::machine::Machine;
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError};
+use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -232,28 +232,30 @@ impl Plc for MinasecPlc {
         }
     }
 
-    fn read(&self, device: Device) -> i64 {
+    fn read(&self, device: Device) -> Value {
         let scan = self.machine.last_scan();
         match device.0 {
-            COUNT => i64::from(scan.count),
-            COUNT_CLEAR_BUTTON => i64::from(self.machine.counter().clear_button()),
+            COUNT => Value::Int(i64::from(scan.count)),
+            COUNT_CLEAR_BUTTON => Value::Bit(self.machine.counter().clear_button()),
             h if h & !1 == TIMER_VALUE => {
-                (scan.timer_elapsed[(h & 1) as usize].as_nanos() / 1_000_000) as i64
+                Value::Int((scan.timer_elapsed[(h & 1) as usize].as_nanos() / 1_000_000) as i64)
             }
-            a => i64::from(scan.bus >> a & 1),
+            a => Value::Bit(scan.bus >> a & 1 != 0),
         }
     }
 
-    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+    fn read_image(&self, image: &[u8], device: Device) -> Option<Value> {
         let byte = |at: usize| image.get(at).copied();
         match device.0 {
-            COUNT => byte(4).map(i64::from),
+            COUNT => byte(4).map(|c| Value::Int(i64::from(c))),
             COUNT_CLEAR_BUTTON => None,
             h if h & !1 == TIMER_VALUE => {
                 let at = 5 + 4 * (h & 1) as usize;
-                plc::image_bytes(image, at).map(|b| i64::from(u32::from_le_bytes(b)))
+                plc::image_bytes(image, at).map(|b| Value::Int(i64::from(u32::from_le_bytes(b))))
             }
-            a => plc::image_bytes(image, 0).map(|b| i64::from(u32::from_le_bytes(b) >> a & 1)),
+            a => {
+                plc::image_bytes(image, 0).map(|b| Value::Bit(u32::from_le_bytes(b) >> a & 1 != 0))
+            }
         }
     }
 

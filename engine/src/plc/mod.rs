@@ -14,11 +14,13 @@ pub mod error;
 pub mod front;
 pub mod own;
 pub mod trace;
+pub mod value;
 
 pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
 pub use front::Front;
 pub use own::Own;
 pub use trace::{ScanTrace, TraceHistory, Tracer};
+pub use value::Value;
 
 use crate::events::InputValue;
 use crate::time::SimTime;
@@ -112,8 +114,8 @@ pub trait Plc {
     fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError>;
 
     /// A device's value after the last completed scan (for the Arduino
-    /// sketch, which has no scan, now): bits are 0 or 1, words signed.
-    fn read(&self, device: Device) -> i64;
+    /// sketch, which has no scan, now), typed as the machine holds it.
+    fn read(&self, device: Device) -> Value;
 
     /// The simulated time.
     fn now(&self) -> SimTime;
@@ -192,7 +194,7 @@ pub trait Plc {
     /// A device's value in an image [`Plc::image_into`] made (on this
     /// machine or a copy of it); `None` for a device the image does not
     /// hold (IO86A's device B, a MINASEC-U button).
-    fn read_image(&self, image: &[u8], device: Device) -> Option<i64>;
+    fn read_image(&self, image: &[u8], device: Device) -> Option<Value>;
 
     /// Whether the program runs: RUN, enabled (the AVR PLC always runs).
     fn running(&self) -> bool;

@@ -5,10 +5,10 @@
 
 use std::fmt;
 
-use crate::plc::{Device, Plc};
+use crate::plc::{Device, Plc, Value};
 
 /// A condition on one device, resolved for one machine.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Condition {
     /// The device's name as written.
     pub name: String,
@@ -17,7 +17,7 @@ pub struct Condition {
     device: Device,
     test: Test,
     /// The device's value at the last check (for rises, falls, changes).
-    last: i64,
+    last: Value,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -117,8 +117,8 @@ impl Condition {
         let now = machine.read(self.device);
         let before = std::mem::replace(&mut self.last, now);
         match self.test {
-            Test::Rises => before == 0 && now != 0,
-            Test::Falls => before != 0 && now == 0,
+            Test::Rises => !before.is_on() && now.is_on(),
+            Test::Falls => before.is_on() && !now.is_on(),
             Test::Changes => before != now,
             Test::Compare(cmp, n) => match cmp {
                 Cmp::Eq => now == n,

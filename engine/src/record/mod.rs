@@ -171,7 +171,7 @@ impl<M: Plc + Clone> Recording<M> {
         device: Device,
         from: Mark,
         to: Mark,
-    ) -> Vec<Option<i64>> {
+    ) -> Vec<Option<crate::plc::Value>> {
         let (from, to, chunks) = self.filled_between(from, to);
         let mut out = Vec::new();
         let mut image = Vec::new();

@@ -7,7 +7,7 @@ use super::{Break, Condition, Mark, Recording, DEFAULT_BUDGET};
 use crate::clock::PeriodicClock;
 use crate::events::InputValue;
 use crate::plc::{
-    Command, Device, Front, Plc, PlcError, ScanTrace, SettingInfo, TraceHistory, Warning,
+    Command, Device, Front, Plc, PlcError, ScanTrace, SettingInfo, TraceHistory, Value, Warning,
 };
 use crate::time::SimTime;
 use crate::MachineId;
@@ -191,7 +191,7 @@ impl<M: Plc + Clone> Plc for Recorded<M> {
         self.live.check_input(device, value)
     }
 
-    fn read(&self, device: Device) -> i64 {
+    fn read(&self, device: Device) -> Value {
         self.shown_machine().read(device)
     }
 
@@ -255,7 +255,7 @@ impl<M: Plc + Clone> Plc for Recorded<M> {
         self.shown_machine().image_into(image);
     }
 
-    fn read_image(&self, image: &[u8], device: Device) -> Option<i64> {
+    fn read_image(&self, image: &[u8], device: Device) -> Option<Value> {
         self.live.read_image(image, device)
     }
 

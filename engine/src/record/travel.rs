@@ -3,7 +3,7 @@
 //! "why" reach any workspace's recording without knowing its machine.
 
 use super::{Break, Condition, ConditionError, Mark, Recorded};
-use crate::plc::{Plc, PlcError};
+use crate::plc::{Plc, PlcError, Value};
 use crate::time::SimTime;
 
 /// A recorded machine, seen through its recording.
@@ -29,7 +29,12 @@ pub trait TimeTravel {
     /// The end time of each scan in `from..=to` (kept ones).
     fn times(&mut self, from: Mark, to: Mark) -> Vec<SimTime>;
     /// `device`'s value at each scan in `from..=to` (kept ones).
-    fn series(&mut self, device: &str, from: Mark, to: Mark) -> Result<Vec<Option<i64>>, PlcError>;
+    fn series(
+        &mut self,
+        device: &str,
+        from: Mark,
+        to: Mark,
+    ) -> Result<Vec<Option<Value>>, PlcError>;
     /// The scan at or before `at` where `device` last changed.
     fn last_change(&mut self, device: &str, at: Mark) -> Option<Mark>;
 }
@@ -81,7 +86,12 @@ impl<M: Plc + Clone> TimeTravel for Recorded<M> {
         self.recording_mut().times(from, to)
     }
 
-    fn series(&mut self, device: &str, from: Mark, to: Mark) -> Result<Vec<Option<i64>>, PlcError> {
+    fn series(
+        &mut self,
+        device: &str,
+        from: Mark,
+        to: Mark,
+    ) -> Result<Vec<Option<Value>>, PlcError> {
         let d = self.device(device)?;
         let (rec, machine) = self.recording_and_machine();
         Ok(rec.values(machine, d, from, to))

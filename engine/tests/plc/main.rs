@@ -47,7 +47,7 @@ fn set(plc: &mut dyn Plc, name: &str, on: bool) {
 }
 
 fn read(plc: &dyn Plc, name: &str) -> i64 {
-    plc.read(plc.device(name).expect("device"))
+    plc.read(plc.device(name).expect("device")).as_i64()
 }
 
 /// Enough time and scans for an input to reach an output on every

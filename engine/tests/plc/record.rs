@@ -292,12 +292,12 @@ fn the_seed_breaks_when_its_count_lamp_rises_and_shows_the_scans_before() {
     }
     let hit = hit.expect("the count lamp rose within a minute");
     assert_eq!(r.recording().last(), hit.mark, "stopped at that scan's end");
-    assert_eq!((r.read(y01), r.read(count)), (1, 10));
+    assert_eq!((r.read(y01).as_i64(), r.read(count).as_i64()), (1, 10));
     assert_eq!(r.breaks(), &[hit.mark]);
     // Five scans back the lamp was off and the count one lower.
     assert!(r.show(hit.mark - 5));
     assert_eq!(r.shown(), Some(hit.mark - 5));
-    assert_eq!((r.read(y01), r.read(count)), (0, 9));
+    assert_eq!((r.read(y01).as_i64(), r.read(count).as_i64()), (0, 9));
     let then = r.now();
     assert!(then < r.recording_mut().time_at(hit.mark).expect("kept"));
     // Back to live, then resume from a past scan: the later scans go.
@@ -415,7 +415,7 @@ fn series_and_last_change_read_what_the_machine_showed() {
     let (m, inputs) = loaded(Io86aPlc::new(), text, &["X00"]);
     let mut r = Recorded::new(m);
     let y00 = r.device("Y00").expect("output");
-    let mut live = vec![r.read(y00)];
+    let mut live = vec![r.read(y00).as_i64()];
     // 600 scans at 1 ms, X00 pressed at 100 ms (past the keyframes at
     // 256 and 512, so images come from three replays).
     for ms in 1..=600u64 {
@@ -424,7 +424,7 @@ fn series_and_last_change_read_what_the_machine_showed() {
                 .expect("input");
         }
         r.tick(SimTime::from_millis(1));
-        live.push(r.read(y00));
+        live.push(r.read(y00).as_i64());
     }
     let travel: &mut dyn TimeTravel = &mut r;
     let (first, last) = travel.marks();
@@ -432,7 +432,7 @@ fn series_and_last_change_read_what_the_machine_showed() {
     let series = travel.series("Y00", first, last).expect("a device");
     let series: Vec<i64> = series
         .into_iter()
-        .map(|v| v.expect("in the image"))
+        .map(|v| v.expect("in the image").as_i64())
         .collect();
     assert_eq!(series, live);
     let times = travel.times(first, last);

@@ -13,7 +13,7 @@ use engine::ladder::target::check_element;
 use engine::ladder::why::{causes, deciding_output, Explanation};
 use engine::ladder::Ladder;
 use engine::machines::new_plc;
-use engine::plc::{Command, Device, Plc, PlcError};
+use engine::plc::{Command, Device, Plc, PlcError, Value};
 use engine::{MachineId, SimTime};
 
 use crate::args::Args;
@@ -23,7 +23,7 @@ use crate::source::{self, apply_settings, ladder_project, load, located, one, Pr
 
 /// A watched device: its handle, its value, and when it last changed
 /// (time, scan), if it did.
-type Watched = (Device, i64, Option<(SimTime, u64)>);
+type Watched = (Device, Value, Option<(SimTime, u64)>);
 /// Every watched device by name.
 type Changes = BTreeMap<String, Watched>;
 
@@ -226,7 +226,7 @@ fn report(
     changes: &Changes,
 ) -> String {
     let mut out = String::new();
-    let value = changes.get(name).map_or(0, |(_, v, _)| *v);
+    let value = changes.get(name).map_or(Value::Int(0), |(_, v, _)| *v);
     let scans = plc.scans();
     let _ = writeln!(
         out,
