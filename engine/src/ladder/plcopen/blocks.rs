@@ -4,12 +4,12 @@
 //! up-counters and the comparisons as IO86A's `CMP`; a block's EN
 //! honoured or refused; an unknown block named as such.
 
+use super::body::{Body, Gate, GateKind};
 use super::declare::Names;
 use super::dom::Node;
 use super::error::ImportError;
-use super::gates::{Gate, GateKind};
-use super::import::{coil, edge, is_variable_name, negated, timer_coil, Body};
 use super::parse_time_literal;
+use super::parts::{coil, edge, is_variable_name, negated, timer_coil};
 use crate::error::Located;
 use crate::ladder::element::{CoilKind, Element, TimerKind};
 use crate::ladder::grid::Pos;
@@ -41,17 +41,6 @@ fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, I
 /// The blocks Hashigo has a ladder form for, and the comparisons
 /// ([`compare_flag`]): checked before anything else about a block, so
 /// that an unknown one is named as such, and listed in that message.
-pub(super) const KNOWN_BLOCKS: &[&str] = &[
-    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "NOT", "AND", "OR", "XOR", "SR",
-    "RS",
-];
-pub(super) const COMPARISONS: &[&str] = &["GT", "GE", "EQ", "NE", "LE", "LT"];
-
-/// Whether Hashigo has a ladder form for block type `ty` (upper case).
-pub(super) fn is_known(ty: &str) -> bool {
-    KNOWN_BLOCKS.contains(&ty) || COMPARISONS.contains(&ty)
-}
-
 /// The flag IO86A's `CMP a b` leaves for a comparison block, and
 /// whether the block is true when it is on (M60 a > b, M61 a = b, M62
 /// a < b; GE is "not a < b").

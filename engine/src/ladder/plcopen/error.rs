@@ -7,51 +7,12 @@ use super::{NS_V10, NS_V201};
 use crate::error::shown;
 use crate::ladder::net::{NetError, TooLarge};
 use crate::ladder::target::ElementError;
-use crate::limits::{MAX_INPUT_BYTES, MAX_RUNGS, MAX_XML_DEPTH};
+use crate::limits::MAX_RUNGS;
 
-/// Why the text is not XML the reader takes.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum XmlError {
-    /// Larger than [`MAX_INPUT_BYTES`] (its size).
-    TooLarge(usize),
-    /// The XML parser's words.
-    NotWellFormed(String),
-    /// An attribute that does not parse (element, parser's words).
-    BadAttribute(String, String),
-    /// Text that does not unescape (parser's words).
-    BadText(String),
-    /// An end tag with no start.
-    EndWithoutStart,
-    /// An element never closed (its name).
-    NeverClosed(String),
-    /// No element at all.
-    Empty,
-    /// Elements nested past [`MAX_XML_DEPTH`].
-    TooDeep,
-}
+pub use super::dom::XmlError;
 
-impl fmt::Display for XmlError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            XmlError::TooLarge(n) => write!(
-                f,
-                "the file is {n} bytes, more than the {MAX_INPUT_BYTES} a PLCopen file may have (docs/limits.md)"
-            ),
-            XmlError::NotWellFormed(e) => write!(f, "not well-formed XML: {e}"),
-            XmlError::BadAttribute(el, e) => write!(f, "bad attribute in <{el}>: {e}"),
-            XmlError::BadText(e) => write!(f, "bad text: {e}"),
-            XmlError::EndWithoutStart => f.write_str("an end tag with no start"),
-            XmlError::NeverClosed(el) => write!(f, "<{el}> is never closed"),
-            XmlError::Empty => f.write_str("no XML element found"),
-            XmlError::TooDeep => write!(
-                f,
-                "elements nest more than {MAX_XML_DEPTH} deep here (docs/limits.md)"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for XmlError {}
+/// Every problem of an import, each at its line.
+pub(super) type Errors = Vec<crate::error::Located<ImportError>>;
 
 /// What is wrong with an element's input connection.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -268,8 +229,8 @@ impl fmt::Display for ImportError {
                 f,
                 "block {} is not supported: Hashigo imports {} and the comparisons {}",
                 shown(ty).trim_matches('"'),
-                super::blocks::KNOWN_BLOCKS.join(", "),
-                super::blocks::COMPARISONS.join(", ")
+                super::kinds::KNOWN_BLOCKS.join(", "),
+                super::kinds::COMPARISONS.join(", ")
             ),
             E::ProjectBlock(name, language) => write!(
                 f,

@@ -25,7 +25,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::import::Body;
+use super::body::{Body, Gate, GateKind};
 use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
@@ -33,67 +33,6 @@ use crate::ladder::net::Net;
 use crate::ladder::target::capabilities;
 use crate::limits::MAX_GATE_WORK;
 use crate::MachineId;
-
-/// A boolean block waiting to be lowered.
-#[derive(Clone, Debug)]
-pub(super) struct Gate {
-    pub kind: GateKind,
-    /// The points its inputs take power from, in pin order.
-    pub inputs: Vec<usize>,
-    /// Its output's point.
-    pub out: usize,
-    /// Its place and line.
-    pub pos: Pos,
-    pub line: usize,
-    /// `AND block`, `SR block SR0`: for messages.
-    pub what: String,
-}
-
-/// Which block.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub(super) enum GateKind {
-    And,
-    Or,
-    Xor,
-    /// A flip-flop on a relay; set wins (SR) or reset wins (RS).
-    Flip {
-        relay: String,
-        set_wins: bool,
-    },
-    /// A counter's reset coil on its R's power (through a spare relay
-    /// when R's point feeds more: the reset then has a rung of its own,
-    /// which runs after the counting one).
-    Reset(Element),
-    /// A comparison of two words (one pair of a longer comparison's
-    /// inputs): `CMP a b` (fed by M57, always on) and
-    /// a relay that holds its result while later comparisons run: the
-    /// flag (M60-M62) on, or (`on` false) off.
-    Compare {
-        a: String,
-        b: String,
-        flag: &'static str,
-        on: bool,
-    },
-    /// A CTD (`load`: its LD; Q while CV <= 0) or a CTUD (`reset`: its R;
-    /// `empty`: its QD's point, the count compared with 0; QU is `out`)
-    /// on the machine's up-counter `counter` (`OUT C K`, counting CD's or
-    /// CU's rises): the counter counts what CTD takes off PV, and LD
-    /// clears it.
-    Count {
-        counter: Element,
-        load: Option<usize>,
-        reset: Option<usize>,
-        empty: Option<usize>,
-    },
-    /// A TOF (or, `pulse`, a TP) from an on-delay timer coil and a relay
-    /// that holds its output.
-    Delay {
-        coil: Element,
-        timer: String,
-        relay: String,
-        pulse: bool,
-    },
-}
 
 impl Gate {
     /// The points it takes power from and those it gives power to (a
@@ -307,7 +246,7 @@ impl Body {
                         }
                     },
                 };
-                let rail = super::import::RAIL;
+                let rail = super::body::RAIL;
                 self.consumed.push(rail);
                 self.edges
                     .push((rail, g.out, Net::Leaf(contact, at), g.line));
@@ -355,10 +294,10 @@ impl Body {
                 let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
                 let (ka, kb) = (invert(&ca)?, invert(&cb)?);
                 self.edges
-                    .push((super::import::RAIL, mid[0], Net::Leaf(ca, at(1)), la));
+                    .push((super::body::RAIL, mid[0], Net::Leaf(ca, at(1)), la));
                 self.edges.push((mid[0], out, Net::Leaf(kb, at(2)), lb));
                 self.edges
-                    .push((super::import::RAIL, mid[1], Net::Leaf(ka, at(3)), la));
+                    .push((super::body::RAIL, mid[1], Net::Leaf(ka, at(3)), la));
                 self.edges.push((mid[1], out, Net::Leaf(cb, at(4)), lb));
                 Ok(())
             }
@@ -394,13 +333,13 @@ impl Body {
                     // Q := S or (Q and not R): a branch beside S.
                     let mid = self.fresh();
                     self.edges
-                        .push((super::import::RAIL, mid, Net::Leaf(held, at(1)), g.line));
+                        .push((super::body::RAIL, mid, Net::Leaf(held, at(1)), g.line));
                     self.edges.push((mid, s, Net::Leaf(not_r, at(2)), lr));
                     self.union(s, g.out);
                 } else {
                     // Q := (S or Q) and not R: the hold beside S, then not R.
                     self.edges
-                        .push((super::import::RAIL, s, Net::Leaf(held, at(1)), g.line));
+                        .push((super::body::RAIL, s, Net::Leaf(held, at(1)), g.line));
                     self.edges.push((s, g.out, Net::Leaf(not_r, at(2)), lr));
                 }
                 self.consumed.push(g.out);
@@ -427,7 +366,7 @@ impl Body {
         if self.machine != Some(MachineId::Io86a) {
             return Err("comparisons need IO86A's CMP and its flags M60-M62".into());
         }
-        let rail = super::import::RAIL;
+        let rail = super::body::RAIL;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_sub(k));
         let cmp = self.fresh();
         self.edges
@@ -471,7 +410,7 @@ impl Body {
         let Element::CounterCoil { device, .. } = counter else {
             return Err("not a counter".into());
         };
-        let rail = super::import::RAIL;
+        let rail = super::body::RAIL;
         let input = g.inputs.first().copied().ok_or("no count input")?;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
         let reset_coil = |device: &str| Element::Coil {
@@ -560,7 +499,7 @@ impl Body {
         relay: &str,
         pulse: bool,
     ) -> Result<(), String> {
-        let rail = super::import::RAIL;
+        let rail = super::body::RAIL;
         let input = g.inputs.first().copied().ok_or("no IN")?;
         let (c_in, at_in, line, input) = self.input_contact(input, g, 1)?;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
@@ -653,7 +592,7 @@ impl Body {
         if takers.get(&self.find(p)).copied().unwrap_or(0) <= 1 {
             return Ok(p);
         }
-        self.relay_branch(p, super::import::RAIL, g, k)
+        self.relay_branch(p, super::body::RAIL, g, k)
     }
 
     /// A spare relay holding `p`'s power (input `k` of `g`), and its
@@ -678,7 +617,7 @@ impl Body {
     /// taken out of the graph (its element, place and line).
     fn single_contact(&mut self, p: usize) -> Option<(Element, Pos, usize)> {
         let p = self.find(p);
-        let rail = self.find(super::import::RAIL);
+        let rail = self.find(super::body::RAIL);
         let takers = self.takers();
         self.gate_work += self.edges.len();
         let feeding: Vec<usize> = (0..self.edges.len())
@@ -713,7 +652,7 @@ impl Body {
         if capabilities(machine).inline_boxes {
             return;
         }
-        let rail = self.find(super::import::RAIL);
+        let rail = self.find(super::body::RAIL);
         let takers = self.takers();
         let mut from = Vec::with_capacity(self.edges.len());
         let mut feeders: HashMap<usize, Vec<usize>> = HashMap::new();
@@ -748,7 +687,7 @@ impl Body {
             };
             let device = device.clone();
             let folded = Net::Leaf(Element::Contact { kind, device }, *at);
-            self.edges[i] = (super::import::RAIL, self.edges[i].1, folded, line);
+            self.edges[i] = (super::body::RAIL, self.edges[i].1, folded, line);
             from[i] = rail;
             gone[only] = true;
         }
@@ -763,7 +702,7 @@ impl Body {
     /// rail (in series after it), if it can: when it is contacts only and
     /// only `p`'s taker uses it. Whether it moved.
     fn reroot(&mut self, p: usize, from: usize) -> bool {
-        let rail = self.find(super::import::RAIL);
+        let rail = self.find(super::body::RAIL);
         let target = self.find(p);
         // The edges on the way back from `p` to the rail.
         let mut part = Vec::new();

@@ -6,14 +6,19 @@
 //! - [`export`](mod@export): rungs to a project file both tools open.
 
 mod blocks;
+mod body;
 pub mod declare;
 pub mod dom;
 pub mod error;
 pub mod export;
 mod gates;
 pub mod import;
+mod kinds;
 mod main_line;
 mod order;
+mod parts;
+mod read;
+mod rungs;
 
 pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};

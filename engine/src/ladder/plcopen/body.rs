@@ -1,0 +1,179 @@
+//! One body as a graph: electrical points joined by edges (contacts,
+//! in-line boxes), the outputs fed from points, and the boolean blocks
+//! waiting to be lowered. Reading ([`super::read`]), lowering
+//! ([`super::gates`], [`super::blocks`]) and laying out
+//! ([`super::rungs`]) each add their methods; this file holds the data
+//! and the union-find over points.
+
+use std::collections::{HashMap, HashSet};
+
+use super::dom::Node;
+use super::error::Errors;
+use crate::error::Located;
+use crate::ladder::element::Element;
+use crate::ladder::grid::Pos;
+use crate::ladder::net::Net;
+use crate::MachineId;
+
+/// One LD body as a graph of points.
+#[derive(Default)]
+pub(super) struct Body {
+    pub(super) parent: Vec<usize>,
+    pub(super) points: HashMap<(String, String), usize>,
+    pub(super) rails: HashSet<String>,
+    pub(super) kinds: HashMap<String, (String, usize)>,
+    /// Named connectors' inputs (by lower-case name) and lines; a
+    /// continuation of the same name carries what feeds them.
+    pub(super) connectors: HashMap<String, (Node, usize)>,
+    /// Each continuation's connector name (lower case), by localId.
+    pub(super) continuations: HashMap<String, String>,
+    /// The connectors being followed (a loop of them is refused).
+    pub(super) following: HashSet<String>,
+    pub(super) literals: HashMap<String, (String, usize)>,
+    /// Each block's EN connections: (refLocalId, formalParameter).
+    pub(super) enables: HashMap<String, Vec<(String, String)>>,
+    /// Variable boxes that feed power: a contact of their device from
+    /// the rail, NC when the box is negated (or why the variable has no
+    /// device; its place).
+    pub(super) variables: HashMap<String, (Result<Element, String>, Pos)>,
+    /// Contacts and in-line blocks: (in point, out point, leaf, line).
+    pub(super) edges: Vec<(usize, usize, Net, usize)>,
+    /// Outputs: (in point, element, place, line).
+    pub(super) outputs: Vec<(usize, Element, Pos, usize)>,
+    /// Points some element takes power from (not the right rail).
+    pub(super) consumed: Vec<usize>,
+    /// Boolean blocks to lower once every element is read, and the steps
+    /// lowering them has taken ([`crate::limits::MAX_GATE_WORK`]).
+    pub(super) gates: Vec<Gate>,
+    pub(super) gate_work: usize,
+    /// The element being read (its place and line), for the OR a join of
+    /// wires at one of its inputs makes ([`Body::join`]).
+    pub(super) reading: (Pos, usize),
+    /// Comment boxes: where they are drawn (row, column) and their text.
+    pub(super) comments: Vec<(usize, usize, String)>,
+    /// Relays free to hold a network's power (the next is popped), and
+    /// those taken: (relay, what it holds, line).
+    pub(super) spares: Vec<String>,
+    pub(super) helpers: Vec<(String, String, usize)>,
+    /// Devices a block writes whose rungs run before any rung reading
+    /// them (counters, split timers; helpers too), as the origin tool
+    /// runs a block before what its outputs feed.
+    pub(super) ordered: Vec<String>,
+    /// Each comparison's `CMP` (its place), the relay its result is
+    /// copied to (the copy runs right after the CMP) and its operands
+    /// (what writes them runs before it).
+    pub(super) compares: Vec<(Pos, String, [String; 2])>,
+    /// The machine the body is read for.
+    pub(super) machine: Option<MachineId>,
+    /// What is worth saying but does not stop the import.
+    pub(super) warnings: Vec<Located<String>>,
+    pub(super) errors: Errors,
+}
+
+pub(super) const RAIL: usize = 0;
+
+/// A boolean block waiting to be lowered.
+#[derive(Clone, Debug)]
+pub(super) struct Gate {
+    pub kind: GateKind,
+    /// The points its inputs take power from, in pin order.
+    pub inputs: Vec<usize>,
+    /// Its output's point.
+    pub out: usize,
+    /// Its place and line.
+    pub pos: Pos,
+    pub line: usize,
+    /// `AND block`, `SR block SR0`: for messages.
+    pub what: String,
+}
+
+/// Which block.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) enum GateKind {
+    And,
+    Or,
+    Xor,
+    /// A flip-flop on a relay; set wins (SR) or reset wins (RS).
+    Flip {
+        relay: String,
+        set_wins: bool,
+    },
+    /// A counter's reset coil on its R's power (through a spare relay
+    /// when R's point feeds more: the reset then has a rung of its own,
+    /// which runs after the counting one).
+    Reset(Element),
+    /// A comparison of two words (one pair of a longer comparison's
+    /// inputs): `CMP a b` (fed by M57, always on) and
+    /// a relay that holds its result while later comparisons run: the
+    /// flag (M60-M62) on, or (`on` false) off.
+    Compare {
+        a: String,
+        b: String,
+        flag: &'static str,
+        on: bool,
+    },
+    /// A CTD (`load`: its LD; Q while CV <= 0) or a CTUD (`reset`: its R;
+    /// `empty`: its QD's point, the count compared with 0; QU is `out`)
+    /// on the machine's up-counter `counter` (`OUT C K`, counting CD's or
+    /// CU's rises): the counter counts what CTD takes off PV, and LD
+    /// clears it.
+    Count {
+        counter: Element,
+        load: Option<usize>,
+        reset: Option<usize>,
+        empty: Option<usize>,
+    },
+    /// A TOF (or, `pulse`, a TP) from an on-delay timer coil and a relay
+    /// that holds its output.
+    Delay {
+        coil: Element,
+        timer: String,
+        relay: String,
+        pulse: bool,
+    },
+}
+
+impl Body {
+    pub(super) fn point(&mut self, id: &str, pin: &str) -> usize {
+        if self.rails.contains(id) {
+            return RAIL;
+        }
+        let key = (id.to_string(), pin.to_string());
+        if let Some(&p) = self.points.get(&key) {
+            return p;
+        }
+        let p = self.parent.len();
+        self.parent.push(p);
+        self.points.insert(key, p);
+        p
+    }
+
+    /// A point fed from the rail by variable box `id`'s `contact`, one
+    /// for each wire leaving the box: reading a variable has no side
+    /// effect, so a box feeding two blocks reads as two contacts rather
+    /// than one shared point that would need a spare relay.
+    pub(super) fn variable_point(&mut self, id: &str, contact: Element, at: Pos) -> usize {
+        let p = self.fresh();
+        let line = self.kinds.get(id).map_or(1, |(_, l)| *l);
+        self.consumed.push(RAIL);
+        self.edges.push((RAIL, p, Net::Leaf(contact, at), line));
+        p
+    }
+
+    pub(super) fn find(&mut self, mut x: usize) -> usize {
+        while self.parent[x] != x {
+            self.parent[x] = self.parent[self.parent[x]];
+            x = self.parent[x];
+        }
+        x
+    }
+
+    pub(super) fn union(&mut self, a: usize, b: usize) {
+        let (a, b) = (self.find(a), self.find(b));
+        if a < b {
+            self.parent[b] = a;
+        } else {
+            self.parent[a] = b;
+        }
+    }
+}

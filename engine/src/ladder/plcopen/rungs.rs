@@ -1,0 +1,509 @@
+//! From the lowered graph to rungs: each group of coils fed from one point
+//! becomes a rung whose condition is the series-parallel network between
+//! the left rail and that point; helpers' rungs run before their readers,
+//! comments go to the rung below them.
+
+use std::collections::{BTreeMap, HashMap, HashSet};
+
+use super::body::{Body, RAIL};
+use super::error::ImportError;
+use super::main_line::{off_main_line, Link};
+use super::parts::*;
+use crate::error::Located;
+use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
+use crate::ladder::grid::Pos;
+use crate::ladder::net::{reduce_all, Edge, Net, NetError, RungLogic};
+use crate::ladder::target::{capabilities, check_element};
+use crate::MachineId;
+
+pub(super) type Errors = Vec<Located<ImportError>>;
+
+impl Body {
+    /// The rungs, each with the XML line of its first output.
+    pub(super) fn rungs(
+        &mut self,
+        machine: Option<MachineId>,
+        warnings: &mut Vec<Located<String>>,
+    ) -> Result<Vec<(RungLogic, usize)>, Errors> {
+        warnings.append(&mut self.warnings);
+        self.machine = machine;
+        self.lower_gates()?;
+        if let Some(m) = machine {
+            self.fold_boxes_into_contacts(m);
+        }
+        let (mut edges, mut lines) = self.graph(machine)?;
+        // An element whose output was joined to the rail (a wire joined
+        // with an always-on output: OR TRUE), or a contact between one
+        // point, changes no power: dropped (said as leading to no coil),
+        // as the loop it makes would not reduce.
+        let rail = self.find(RAIL);
+        edges.retain(|e| {
+            let shorted = e.from == e.to && matches!(e.net, Net::Leaf(Element::Contact { .. }, _));
+            e.to != rail && !shorted
+        });
+        if let Some(m) = machine {
+            self.check_machine(m, &edges, &lines)?;
+        }
+        let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
+        for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
+            let bus = self.find(input);
+            groups.entry(bus).or_default().push((e, pos, line));
+        }
+        let mut buses = Vec::new();
+        let mut errors = Vec::new();
+        let mut moved = Vec::new();
+        for (bus, outs) in &mut groups {
+            outs.sort_by_key(|(_, p, _)| *p);
+            if *bus == rail && machine == Some(MachineId::Io86a) {
+                // Always on: IO86A's M57 (ON) carries the rail to it.
+                let q = self.fresh();
+                let (_, p, line) = &outs[0];
+                let at = Pos::new(p.row, p.col.wrapping_sub(1));
+                lines.insert(at, *line);
+                edges.push(Edge {
+                    from: rail,
+                    to: q,
+                    net: Net::Leaf(Element::no("M57"), at),
+                });
+                moved.push((*bus, q));
+                buses.push(q);
+            } else if *bus == rail {
+                let on_rail = ImportError::OnRail(outs[0].0.to_string());
+                errors.push(Located::new(outs[0].2, on_rail));
+            } else {
+                buses.push(*bus);
+            }
+        }
+        for (from, to) in moved {
+            if let Some(outs) = groups.remove(&from) {
+                groups.insert(to, outs);
+            }
+        }
+        // Every group's network at once, each from the part of the graph
+        // that leads to it (linear in the sum of their sizes).
+        let conditions = reduce_all(&edges, self.parent.len(), rail, &buses);
+        let mut rungs = Vec::new();
+        for (bus, condition) in buses.iter().zip(conditions) {
+            let outs = groups.remove(bus).unwrap_or_default();
+            let first_line = outs.first().map_or(1, |o| o.2);
+            match condition {
+                Ok(condition) => {
+                    let logic = RungLogic {
+                        condition,
+                        outputs: outs.into_iter().map(|(e, p, _)| (e, p)).collect(),
+                        comment: String::new(),
+                    };
+                    rungs.push((top(&logic), logic, first_line));
+                }
+                Err(NetError::NoPath) => {
+                    let what = outs.first().map(|o| o.0.to_string()).unwrap_or_default();
+                    errors.push(Located::new(first_line, ImportError::NoPath(what)))
+                }
+                Err(e @ (NetError::NotSeriesParallel(p) | NetError::TooDeep(p))) => {
+                    let line = lines.get(&p).copied().unwrap_or(first_line);
+                    errors.push(Located::new(line, ImportError::Net(e)))
+                }
+            }
+        }
+        if !errors.is_empty() {
+            return Err(errors);
+        }
+        // Logic that reaches no coil has no effect in the tool that drew
+        // it either (the right rail is no output): said, not kept.
+        warnings.extend(unused(&edges, &rungs, &lines));
+        rungs.sort_by_key(|(top, _, _)| *top);
+        self.attach_comments(&mut rungs);
+        self.helpers_first(&mut rungs);
+        Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
+    }
+
+    /// The elements as edges between their (joined) points, and each
+    /// leaf's line. A TON or CTU whose output drives nothing becomes the
+    /// machine's timer or counter coil (`OUT T00 K19`).
+    #[allow(clippy::type_complexity)] // a pair of plain collections, named at the call
+    fn graph(
+        &mut self,
+        machine: Option<MachineId>,
+    ) -> Result<(Vec<Edge>, HashMap<Pos, usize>), Errors> {
+        // IO86A's timers and counters are coils (`OUT T00 K19`) with
+        // contacts: an in-line TON or CTU is split ([`Body::split_box`]).
+        let timer_coils = machine == Some(MachineId::Io86a);
+        let consumed: HashSet<usize> = self
+            .consumed
+            .clone()
+            .into_iter()
+            .map(|p| self.find(p))
+            .collect();
+        let off_main = self.boxes_off_main_line(machine);
+        let mut edges = Vec::new();
+        let mut lines: HashMap<Pos, usize> = HashMap::new();
+        for (index, (a, b, net, line)) in std::mem::take(&mut self.edges).into_iter().enumerate() {
+            let (a, b) = (self.find(a), self.find(b));
+            if let Net::Leaf(e, pos) = &net {
+                lines.insert(*pos, line);
+                let terminal = !consumed.contains(&b);
+                match (e, terminal) {
+                    (
+                        Element::Timer {
+                            kind: TimerKind::Ton,
+                            name,
+                            preset_ms,
+                        },
+                        true,
+                    ) => {
+                        let coil = timer_coil(name, *preset_ms)
+                            .map_err(|m| vec![Located::new(line, m)])?;
+                        self.outputs.push((a, coil, *pos, line));
+                        continue;
+                    }
+                    (
+                        Element::Timer {
+                            kind: TimerKind::Ton,
+                            name,
+                            preset_ms,
+                        },
+                        false,
+                    ) if timer_coils => {
+                        let coil = timer_coil(name, *preset_ms)
+                            .map_err(|m| vec![Located::new(line, m)])?;
+                        let contact = Element::no(name);
+                        self.split_box((a, b), coil, contact, *pos, line, (&mut edges, &mut lines));
+                        continue;
+                    }
+                    (Element::CounterCoil { .. }, true) => {
+                        self.outputs.push((a, e.clone(), *pos, line));
+                        continue;
+                    }
+                    (Element::CounterCoil { device, .. }, false) if timer_coils => {
+                        // Q is the counter's count-reached bit.
+                        let contact = Element::no(device);
+                        self.split_box(
+                            (a, b),
+                            e.clone(),
+                            contact,
+                            *pos,
+                            line,
+                            (&mut edges, &mut lines),
+                        );
+                        continue;
+                    }
+                    (Element::CounterCoil { device, .. }, false) => {
+                        let wired = ImportError::CounterQWired(device.clone());
+                        return Err(vec![Located::new(line, wired)]);
+                    }
+                    (Element::Timer { .. }, _) if off_main.contains(&index) => {
+                        // Off the rung's main line, where the machine
+                        // takes timers in-line only: the timer gets a rung
+                        // of its own into a spare relay, whose contact
+                        // gives Q where Q went.
+                        let what = format!("{e} box's output");
+                        let relay = self.spare_relay(&what, line).map_err(|why| {
+                            vec![Located::new(line, ImportError::Gate(e.to_string(), why))]
+                        })?;
+                        let q = self.fresh();
+                        let at_coil = Pos::new(pos.row, pos.col.wrapping_add(1));
+                        edges.push(Edge {
+                            from: a,
+                            to: q,
+                            net,
+                        });
+                        let held = coil(CoilKind::Normal, relay.clone());
+                        let split = (&mut edges, &mut lines);
+                        self.split_box((q, b), held, Element::no(&relay), at_coil, line, split);
+                        continue;
+                    }
+                    (Element::Not | Element::Edge { .. }, _)
+                        if machine.is_some_and(|m| check_element(m, e).is_err())
+                            || off_main.contains(&index) =>
+                    {
+                        // No in-line box on this machine, or not here (off
+                        // the rung's main line): a relay holds the box's
+                        // input, and its NC (NOT) or edge contact gives the
+                        // box's output.
+                        let what = match e {
+                            Element::Not => "NOT block".to_string(),
+                            Element::Edge { falling: true } => "F_TRIG block".to_string(),
+                            _ => "R_TRIG block".to_string(),
+                        };
+                        let at = Pos::new(pos.row, pos.col.wrapping_sub(1));
+                        let device = self
+                            .hold_in_relay(a, &format!("{what}'s input"), line, at)
+                            .map_err(|why| {
+                                vec![Located::new(line, ImportError::Gate(what, why))]
+                            })?;
+                        let kind = match e {
+                            Element::Not => ContactKind::Nc,
+                            Element::Edge { falling: true } => ContactKind::Falling,
+                            _ => ContactKind::Rising,
+                        };
+                        lines.insert(*pos, line);
+                        let rail = self.find(RAIL);
+                        edges.push(Edge {
+                            from: rail,
+                            to: b,
+                            net: Net::Leaf(Element::Contact { kind, device }, *pos),
+                        });
+                        continue;
+                    }
+                    _ => {}
+                }
+            }
+            edges.push(Edge {
+                from: a,
+                to: b,
+                net,
+            });
+        }
+        Ok((edges, lines))
+    }
+
+    /// The edges (by index) holding a NOT, edge or timer box that
+    /// `machine` takes in-line but that would not stand on its rung's main
+    /// line ([`super::main_line`]).
+    fn boxes_off_main_line(&mut self, machine: Option<MachineId>) -> HashSet<usize> {
+        if !machine.is_some_and(|m| capabilities(m).inline_boxes) {
+            return HashSet::new();
+        }
+        let rail = self.find(RAIL);
+        let mut links: Vec<Link> = Vec::with_capacity(self.edges.len());
+        for i in 0..self.edges.len() {
+            let (a, b) = (self.edges[i].0, self.edges[i].1);
+            let relayable = matches!(
+                self.edges[i].2,
+                Net::Leaf(
+                    Element::Not | Element::Edge { .. } | Element::Timer { .. },
+                    _
+                )
+            );
+            let (from, to) = (self.find(a), self.find(b));
+            links.push(Link {
+                from,
+                to,
+                relayable,
+            });
+        }
+        let points = self.parent.len();
+        off_main_line(&mut links, rail, points, self.spares.len())
+    }
+
+    /// An in-line timer or counter box from point `a` to `b` as IO86A
+    /// has it: its `coil` where the box was fed, and its `contact`, from
+    /// the rail, where its Q went (Q is on only while the coil's
+    /// condition has held long enough), at a place of its own. Also an
+    /// AVR timer off its rung's main line: `a` is then the timer's own
+    /// output, the coil and contact a spare relay's.
+    fn split_box(
+        &mut self,
+        (a, b): (usize, usize),
+        coil: Element,
+        contact: Element,
+        pos: Pos,
+        line: usize,
+        (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
+    ) {
+        if let Some(d) = coil.written_device() {
+            self.ordered.push(d.to_string());
+        }
+        self.outputs.push((a, coil, pos, line));
+        let at = Pos::new(pos.row, pos.col.wrapping_add(SPLIT_PLACES));
+        lines.insert(at, line);
+        let rail = self.find(RAIL);
+        edges.push(Edge {
+            from: rail,
+            to: b,
+            net: Net::Leaf(contact, at),
+        });
+    }
+
+    /// Every element and device checked against `machine`, at its line.
+    fn check_machine(
+        &self,
+        machine: MachineId,
+        edges: &[Edge],
+        lines: &HashMap<Pos, usize>,
+    ) -> Result<(), Errors> {
+        let leaves = edges.iter().filter_map(|e| match &e.net {
+            Net::Leaf(e, p) => Some((e, lines.get(p).copied().unwrap_or(1))),
+            _ => None,
+        });
+        let outs = self.outputs.iter().map(|(_, e, _, line)| (e, *line));
+        let errors: Errors = leaves
+            .chain(outs)
+            .filter_map(|(e, line)| {
+                check_element(machine, e)
+                    .err()
+                    .map(|e| Located::new(line, ImportError::Element(e)))
+            })
+            .collect();
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// A block runs before what its outputs feed ([`super::order`]): the
+    /// rungs writing a relay that holds a block's input or result
+    /// ([`Body::helpers`]), or a device in [`Body::ordered`], run before
+    /// the rungs reading it; then each comparison's `CMP` goes right
+    /// before the copy of its flag.
+    fn helpers_first(&self, rungs: &mut Vec<(Pos, RungLogic, usize)>) {
+        let mut touches: BTreeMap<&str, (Vec<usize>, Vec<usize>)> = self
+            .helpers
+            .iter()
+            .map(|(d, _, _)| d.as_str())
+            .chain(self.ordered.iter().map(String::as_str))
+            .map(|d| (d, (Vec::new(), Vec::new())))
+            .collect();
+        if touches.is_empty() {
+            return;
+        }
+        for (i, (_, r, _)) in rungs.iter().enumerate() {
+            for (e, _) in &r.outputs {
+                if let Some(t) = e.written_device().and_then(|d| touches.get_mut(d)) {
+                    t.0.push(i);
+                }
+            }
+            for (e, _) in r.condition.leaves() {
+                if let Some(t) = e.read_device().and_then(|d| touches.get_mut(d)) {
+                    t.1.push(i);
+                }
+            }
+        }
+        // A reset wins over a count or a set in the same scan (CTU's R,
+        // CTD's LD, R of a CTUD's QD relay): the rung resetting runs after
+        // the rungs counting or setting.
+        let mut wins: BTreeMap<&str, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
+        for (i, (_, r, _)) in rungs.iter().enumerate() {
+            for (e, _) in &r.outputs {
+                let Some(d) = e.written_device().filter(|d| touches.contains_key(d)) else {
+                    continue;
+                };
+                let entry = wins.entry(d).or_default();
+                match e {
+                    Element::Coil {
+                        kind: CoilKind::Reset,
+                        ..
+                    } => entry.1.push(i),
+                    _ => entry.0.push(i),
+                }
+            }
+        }
+        // A comparison reads its operands after this scan's writes, and
+        // its flag is copied after it.
+        let mut compared = Vec::new();
+        for (at, relay, [a, b]) in &self.compares {
+            let Some(cmp) = rung_at(rungs, at) else {
+                continue;
+            };
+            compared.push((vec![cmp], writing(rungs, &[relay])));
+            compared.push((writing(rungs, &[a, b]), vec![cmp]));
+        }
+        let constraints: Vec<(Vec<usize>, Vec<usize>)> = touches
+            .into_values()
+            .chain(wins.into_values())
+            .chain(compared)
+            .collect();
+        let order = super::order::writers_first(rungs.len(), &constraints);
+        let mut taken: Vec<Option<(Pos, RungLogic, usize)>> =
+            std::mem::take(rungs).into_iter().map(Some).collect();
+        rungs.extend(order.into_iter().filter_map(|i| taken.get_mut(i)?.take()));
+        for (at, relay, _) in &self.compares {
+            let copy = writing(rungs, &[relay]).first().copied();
+            if let (Some(c), Some(k)) = (rung_at(rungs, at), copy) {
+                let rung = rungs.remove(c);
+                let k = if c < k { k - 1 } else { k };
+                rungs.insert(k, rung);
+            }
+        }
+    }
+
+    /// A comment belongs to the nearest rung that starts at or below it,
+    /// distance being rows down (to the rung's top) plus columns across
+    /// (to its leftmost element): a page of networks drawn side by side
+    /// (OpenPLC's dancing-lights) puts each title above its own network,
+    /// which may start lower than the next column's. Only the
+    /// [`COMMENT_REACH`] rungs starting first below it are weighed (rungs
+    /// are sorted by their top); below the last rung, the last rung
+    /// takes it.
+    fn attach_comments(&mut self, rungs: &mut [(Pos, RungLogic, usize)]) {
+        if self.comments.is_empty() {
+            return;
+        }
+        let lefts: Vec<usize> = rungs
+            .iter()
+            .map(|(_, r, _)| {
+                let leaves = r.condition.leaves().into_iter().map(|(_, p)| p);
+                let places = leaves.chain(r.outputs.iter().map(|(_, p)| *p));
+                places.map(|p| drawn_x(p.col)).min().unwrap_or(0)
+            })
+            .collect();
+        for (y, x, text) in std::mem::take(&mut self.comments) {
+            let first = rungs.partition_point(|(top, _, _)| top.row < y);
+            let distance = |i: usize| (rungs[i].0.row - y) + lefts[i].abs_diff(x);
+            let i = (first..rungs.len().min(first + COMMENT_REACH))
+                .min_by_key(|&i| distance(i))
+                .unwrap_or(rungs.len().saturating_sub(1));
+            if let Some((_, r, _)) = rungs.get_mut(i) {
+                if !r.comment.is_empty() {
+                    r.comment.push('\n');
+                }
+                r.comment.push_str(&text);
+            }
+        }
+    }
+}
+
+/// How many rungs below a comment box may take it (side by side
+/// networks; bounded so a hostile file's comments cost linear time).
+const COMMENT_REACH: usize = 16;
+
+/// The rungs that write one of `devices`, in order.
+fn writing(rungs: &[(Pos, RungLogic, usize)], devices: &[&String]) -> Vec<usize> {
+    (0..rungs.len())
+        .filter(|&i| {
+            rungs[i].1.outputs.iter().any(|(e, _)| {
+                e.written_device()
+                    .is_some_and(|d| devices.iter().any(|w| w.as_str() == d))
+            })
+        })
+        .collect()
+}
+
+/// The rung with an output placed at `at`.
+fn rung_at(rungs: &[(Pos, RungLogic, usize)], at: &Pos) -> Option<usize> {
+    rungs
+        .iter()
+        .position(|(_, x, _)| x.outputs.iter().any(|(_, p)| p == at))
+}
+
+/// The elements no rung uses: they lead to no coil (a warning each).
+fn unused(
+    edges: &[Edge],
+    rungs: &[(Pos, RungLogic, usize)],
+    lines: &HashMap<Pos, usize>,
+) -> Vec<Located<String>> {
+    let used: HashSet<Pos> = rungs
+        .iter()
+        .flat_map(|(_, r, _)| r.condition.leaves().into_iter().map(|(_, p)| p))
+        .collect();
+    edges
+        .iter()
+        .filter_map(|e| match &e.net {
+            Net::Leaf(leaf, p) if !used.contains(p) => Some(Located::new(
+                lines.get(p).copied().unwrap_or(1),
+                format!("{leaf} leads to no coil: dropped"),
+            )),
+            _ => None,
+        })
+        .collect()
+}
+
+fn top(r: &RungLogic) -> Pos {
+    r.outputs
+        .iter()
+        .map(|(_, p)| *p)
+        .chain([r.condition.top_left()])
+        .min()
+        .unwrap_or(Pos::new(0, 0))
+}
