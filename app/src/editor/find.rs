@@ -136,7 +136,7 @@ pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                     Ok(list) => list.into_iter().map(|(rung, pos, was, will)| view! {
                         <li>{format!("{} {}, row {}, column {}: {was} → {will}", t().rung, rung + 1, pos.row + 1, pos.col + 1)}</li>
                     }).collect_view().into_any(),
-                    Err(why) => view! { <li class="error">{why}</li> }.into_any(),
+                    Err(why) => view! { <li class="error">{why.to_string()}</li> }.into_any(),
                 }}
             </ul>
         </section>

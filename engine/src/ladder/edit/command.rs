@@ -144,7 +144,7 @@ pub enum EditError {
     /// A clip that does not paste.
     Clip(ClipError),
     /// A replace that does not apply (the reason).
-    Replace(String),
+    Replace(super::devices::ReplaceError),
 }
 
 impl fmt::Display for EditError {
@@ -166,7 +166,7 @@ impl fmt::Display for EditError {
                 f.write_str("a block of cells lies within one rung: select whole rungs instead")
             }
             EditError::Clip(e) => e.fmt(f),
-            EditError::Replace(why) => f.write_str(why),
+            EditError::Replace(why) => why.fmt(f),
         }
     }
 }

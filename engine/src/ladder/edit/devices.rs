@@ -182,34 +182,71 @@ pub fn find(ladder: &Ladder, text: &str) -> Vec<Found> {
     out
 }
 
+/// Why a batch replace's names do not make a plan.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ReplaceError {
+    /// A side names nothing.
+    Empty,
+    /// A range that is not two names of one kind, low to high (as written).
+    Range(String),
+    /// The two sides name different numbers of devices.
+    Counts {
+        /// What the replace takes, as written.
+        from: String,
+        /// How many devices that names.
+        old: usize,
+        /// What it puts instead, as written.
+        to: String,
+        /// How many devices that names.
+        new: usize,
+    },
+}
+
+impl std::fmt::Display for ReplaceError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ReplaceError::Empty => f.write_str("name a device or a range such as M00-M07"),
+            ReplaceError::Range(spec) => write!(
+                f,
+                "{spec}: a range is two names of one kind, low to high, such as M00-M07"
+            ),
+            ReplaceError::Counts { from, old, to, new } => write!(
+                f,
+                "{from} names {old} devices but {to} names {new}: they must be as many"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ReplaceError {}
+
 /// A cell a replace changes: rung, cell, the element before and after.
 pub type Replaced = (usize, Pos, Element, Element);
 
 /// The preview of a batch replace: every cell whose devices change when
 /// `from` becomes `to`. Both are one device (`X00` → `X03`) or ranges of
 /// the same length (`M00-M07` → `M20-M27`); the error says why not.
-pub fn replace_plan(ladder: &Ladder, from: &str, to: &str) -> Result<Vec<Replaced>, String> {
-    let names = |spec: &str| -> Result<Vec<String>, String> {
+pub fn replace_plan(ladder: &Ladder, from: &str, to: &str) -> Result<Vec<Replaced>, ReplaceError> {
+    let names = |spec: &str| -> Result<Vec<String>, ReplaceError> {
         let spec = spec.trim();
         if spec.is_empty() {
-            return Err("name a device or a range such as M00-M07".to_string());
+            return Err(ReplaceError::Empty);
         }
         match spec.split_once('-') {
-            Some((a, b)) => range(a.trim(), b.trim()).ok_or_else(|| {
-                format!("{spec}: a range is two names of one kind, low to high, such as M00-M07")
-            }),
+            Some((a, b)) => {
+                range(a.trim(), b.trim()).ok_or_else(|| ReplaceError::Range(spec.to_string()))
+            }
             None => Ok(vec![spec.to_string()]),
         }
     };
     let (old, new) = (names(from)?, names(to)?);
     if old.len() != new.len() {
-        return Err(format!(
-            "{} names {} devices but {} names {}: they must be as many",
-            from.trim(),
-            old.len(),
-            to.trim(),
-            new.len()
-        ));
+        return Err(ReplaceError::Counts {
+            from: from.trim().to_string(),
+            old: old.len(),
+            to: to.trim().to_string(),
+            new: new.len(),
+        });
     }
     let map: BTreeMap<String, &String> = old
         .iter()

@@ -20,7 +20,9 @@ pub use align::align_outputs;
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
-pub use devices::{complete, device_names, find, replace_plan, xref, Found, Use, UseRole};
+pub use devices::{
+    complete, device_names, find, replace_plan, xref, Found, ReplaceError, Use, UseRole,
+};
 pub use entry::{parse_entry, EntryError, EntryKind};
 
 use super::grid::{Ladder, Pos};

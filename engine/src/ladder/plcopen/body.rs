@@ -35,7 +35,7 @@ pub(super) struct Body {
     /// Variable boxes that feed power: a contact of their device from
     /// the rail, NC when the box is negated (or why the variable has no
     /// device; its place).
-    pub(super) variables: HashMap<String, (Result<Element, String>, Pos)>,
+    pub(super) variables: HashMap<String, (Result<Element, super::declare::NameError>, Pos)>,
     /// Contacts and in-line blocks: (in point, out point, leaf, line).
     pub(super) edges: Vec<(usize, usize, Net, usize)>,
     /// Outputs: (in point, element, place, line).

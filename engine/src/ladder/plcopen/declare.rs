@@ -10,144 +10,53 @@
 
 use std::collections::{HashMap, HashSet};
 
+pub use super::address::{located, AddressError};
+use super::address::{AVR_INPUTS, AVR_OUTPUTS, AVR_RELAYS};
 use super::dom::Node;
-use crate::error::Located;
+pub use super::map_file::{MapError, VarMap};
 use crate::ladder::element::Element;
-use crate::ladder::target::{check_device, check_element, ElementError};
+use crate::ladder::target::check_element;
 use crate::MachineId;
 
-/// A map file: `name,device` a line (`#` comments, blank lines and a
-/// `name,device` header skipped).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct VarMap {
-    /// (name, device, line), in file order.
-    pub entries: Vec<(String, String, usize)>,
+/// Why a name the body uses has no device.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NameError {
+    /// A declared variable neither located nor mapped.
+    Unmapped {
+        /// The name as declared.
+        declared: String,
+        /// The declaration's line.
+        line: usize,
+    },
+    /// A located variable whose address the machine has no device for.
+    Refused {
+        /// The name as declared.
+        declared: String,
+        /// The declaration's line.
+        line: usize,
+        /// Why (the address's own error, in words).
+        why: String,
+    },
 }
 
-impl VarMap {
-    /// A map of `pairs` (name, device), numbered as lines 1, 2, … (what
-    /// a file of them would be: the page's mapping table, a proposal).
-    pub fn from_pairs(pairs: impl IntoIterator<Item = (String, String)>) -> VarMap {
-        let entries = pairs
-            .into_iter()
-            .enumerate()
-            .map(|(i, (name, device))| (name, device, i + 1))
-            .collect();
-        VarMap { entries }
-    }
-
-    /// Reads a map file as a CSV reader would: a byte-order mark skipped,
-    /// fields optionally in double quotes (`"I1","X00"`, `""` for a quote
-    /// inside), `#` comments outside quotes, blank lines and a
-    /// `name,device` header skipped; every malformed line is an error at
-    /// its line.
-    pub fn parse(text: &str) -> Result<VarMap, Vec<Located<String>>> {
-        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-        let mut entries = Vec::new();
-        let mut errors = Vec::new();
-        let mut seen: HashMap<String, usize> = HashMap::new();
-        for (i, raw) in text.lines().enumerate() {
-            let line = i + 1;
-            let malformed = || format!("expected NAME,DEVICE, found {}", crate::shown(raw.trim()));
-            let Some(fields) = csv_fields(raw) else {
-                errors.push(Located::new(line, malformed()));
-                continue;
-            };
-            let (name, device) = match fields.as_slice() {
-                [] => continue,
-                [name, device] => (name.as_str(), device.as_str()),
-                _ => {
-                    errors.push(Located::new(line, malformed()));
-                    continue;
-                }
-            };
-            if line == 1
-                && name.eq_ignore_ascii_case("name")
-                && device.eq_ignore_ascii_case("device")
-            {
-                continue;
-            }
-            if name.is_empty() || device.is_empty() {
-                errors.push(Located::new(line, malformed()));
-                continue;
-            }
-            if let Some(first) = seen.insert(name.to_ascii_lowercase(), line) {
-                errors.push(Located::new(
-                    line,
-                    format!(
-                        "{} is mapped twice (first at line {first})",
-                        crate::shown(name)
-                    ),
-                ));
-                continue;
-            }
-            entries.push((name.to_string(), device.to_string(), line));
-        }
-        if errors.is_empty() {
-            Ok(VarMap { entries })
-        } else {
-            Err(errors)
-        }
-    }
-
-    /// Checks every device the map names (each part of a `T01+M20`) on
-    /// `machine`, each error at the entry's line, before any import uses
-    /// them.
-    pub fn check(&self, machine: MachineId) -> Result<(), Vec<Located<ElementError>>> {
-        let errors: Vec<_> = self
-            .entries
-            .iter()
-            .flat_map(|(_, device, line)| {
-                device
-                    .split('+')
-                    .filter_map(move |part| check_device(machine, part).err())
-                    .map(move |e| Located::new(*line, e))
-            })
-            .collect();
-        if errors.is_empty() {
-            Ok(())
-        } else {
-            Err(errors)
+impl std::fmt::Display for NameError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            NameError::Unmapped { declared, line } => write!(
+                f,
+                "variable {declared} (declared at line {line}) has no device: give it an \
+                 address (%IX0.0, %QX0.0, %MX0.0) or map it (--map: {declared},DEVICE)"
+            ),
+            NameError::Refused {
+                declared,
+                line,
+                why,
+            } => write!(f, "variable {declared} (line {line}): {why}"),
         }
     }
 }
 
-/// One CSV line's fields, trimmed, with `#` starting a comment outside
-/// quotes; `None` when a quote is not closed or text follows one.
-fn csv_fields(line: &str) -> Option<Vec<String>> {
-    let mut fields = Vec::new();
-    let mut chars = line.chars().peekable();
-    loop {
-        while chars.next_if(|c| *c == ' ' || *c == '\t').is_some() {}
-        let mut field = String::new();
-        if chars.next_if_eq(&'"').is_some() {
-            loop {
-                match chars.next()? {
-                    '"' if chars.next_if_eq(&'"').is_some() => field.push('"'),
-                    '"' => break,
-                    c => field.push(c),
-                }
-            }
-            while chars.next_if(|c| *c == ' ' || *c == '\t').is_some() {}
-            if !matches!(chars.peek(), None | Some(',' | '#')) {
-                return None;
-            }
-        } else {
-            while let Some(c) = chars.next_if(|c| *c != ',' && *c != '#') {
-                field.push(c);
-            }
-            field.truncate(field.trim_end().len());
-        }
-        let blank_line = fields.is_empty() && field.is_empty() && chars.peek() != Some(&',');
-        if !blank_line {
-            fields.push(field);
-        }
-        match chars.next() {
-            Some(',') => continue,
-            _ => return Some(fields),
-        }
-    }
-}
+impl std::error::Error for NameError {}
 
 /// What a name stands for.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -182,7 +91,7 @@ impl Names {
     /// The device `name` (a variable or block instance, as written in the
     /// body) stands for: mapped, located, or `name` itself when the file
     /// does not declare it.
-    pub fn device(&self, name: &str) -> Result<String, String> {
+    pub fn device(&self, name: &str) -> Result<String, NameError> {
         match self.by_name.get(&name.trim().to_ascii_lowercase()) {
             None => Ok(name.trim().to_string()),
             Some((declared, meaning)) => match meaning {
@@ -192,13 +101,15 @@ impl Names {
                     }
                     Ok(d.clone())
                 }
-                Meaning::Unmapped(line) => Err(format!(
-                    "variable {declared} (declared at line {line}) has no device: give it an \
-                     address (%IX0.0, %QX0.0, %MX0.0) or map it (--map: {declared},DEVICE)"
-                )),
-                Meaning::Refused(why, line) => {
-                    Err(format!("variable {declared} (line {line}): {why}"))
-                }
+                Meaning::Unmapped(line) => Err(NameError::Unmapped {
+                    declared: declared.clone(),
+                    line: *line,
+                }),
+                Meaning::Refused(why, line) => Err(NameError::Refused {
+                    declared: declared.clone(),
+                    line: *line,
+                    why: why.clone(),
+                }),
             },
         }
     }
@@ -363,7 +274,7 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
         let meaning = match v.attr("address") {
             Some(address) => match located(machine, address) {
                 Ok(device) => Meaning::Device(device, None),
-                Err(why) => Meaning::Refused(why, v.line),
+                Err(why) => Meaning::Refused(why.to_string(), v.line),
             },
             // A function-block instance is the block itself unless mapped.
             None if !elementary => continue,
@@ -382,93 +293,6 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
     }
     names
 }
-
-/// The device a located variable's address stands for on `machine`:
-/// `%IX0.n` input n, `%QX0.n` output n, `%MX0.n` (or `%M0.n`) internal
-/// relay n (byte b, bit n: b × 8 + n), within the machine's sizes.
-pub fn located(machine: MachineId, address: &str) -> Result<String, String> {
-    let a = address.trim().to_ascii_uppercase();
-    let bad = || {
-        format!(
-            "address {} is not %IX0.0, %QX0.0 or %MX0.0",
-            crate::shown(address)
-        )
-    };
-    let rest = a.strip_prefix('%').ok_or_else(bad)?;
-    let mut chars = rest.chars();
-    let area = chars.next().ok_or_else(bad)?;
-    let rest = chars.as_str();
-    // IO86A reads X04 / X05 as analog words into D06 / D07.
-    if machine == MachineId::Io86a && area == 'I' {
-        match rest {
-            "W0" => return Ok("D06".to_string()),
-            "W1" => return Ok("D07".to_string()),
-            _ => {}
-        }
-    }
-    let rest = match rest.chars().next() {
-        Some('X') => &rest[1..],
-        Some('B' | 'W' | 'D' | 'L') => {
-            return Err(format!(
-                "{address} is a word: Hashigo's ladders import bit variables only (and IO86A's analog inputs %IW0, %IW1)"
-            ))
-        }
-        _ => rest,
-    };
-    let (byte, bit) = rest.split_once('.').ok_or_else(bad)?;
-    let (byte, bit): (u32, u32) = (
-        byte.parse().map_err(|_| bad())?,
-        bit.parse().map_err(|_| bad())?,
-    );
-    if bit > 7 {
-        return Err(bad());
-    }
-    let n = byte.saturating_mul(8).saturating_add(bit);
-    let device = match (machine, area) {
-        (MachineId::Io86a | MachineId::MinasecU, 'I') => format!("X{n:02}"),
-        (MachineId::Io86a | MachineId::MinasecU, 'Q') => format!("Y{n:02}"),
-        (MachineId::Io86a, 'M') => format!("M{n:02}"),
-        // MINASEC-U's relays are M00-M07 and M10-M13.
-        (MachineId::MinasecU, 'M') => format!("M{}{}", n / 8, n % 8),
-        (MachineId::ArduinoPlc, 'I') => format!("X{n:03}"),
-        (MachineId::ArduinoPlc, 'Q') => format!("Y{n:03}"),
-        (MachineId::ArduinoPlc, 'M') => {
-            return Err("the Arduino PLC has no internal relays".to_string())
-        }
-        (MachineId::AvrPlc, 'I' | 'Q' | 'M') => return avr_located(area, n, address),
-        _ => return Err(bad()),
-    };
-    check_element(machine, &Element::no(&device))
-        .map(|_| device)
-        .map_err(|e| format!("{address} is {e}"))
-}
-
-/// The AVR PLC has no fixed inputs or outputs (any register bit may be
-/// either); Hashigo follows the seed's own program, inputs in R4 and
-/// coils in R5, relays after them, and leaves R16-R25 to the compiler's
-/// temporaries: `%IX0.n` → R4.n, `%QX0.n` → R5.n, `%MXb.n` → R(6+b).n
-/// up to R15.7.
-fn avr_located(area: char, n: u32, address: &str) -> Result<String, String> {
-    let (registers, what) = match area {
-        'I' => (AVR_INPUTS, "inputs"),
-        'Q' => (AVR_OUTPUTS, "outputs"),
-        _ => (AVR_RELAYS, "relays"),
-    };
-    let bits = registers.len() as u32 * 8;
-    if n >= bits {
-        let (first, last) = (registers.start, registers.end - 1);
-        return Err(format!(
-            "{address} is past the AVR PLC's {what} (R{first}.0-R{last}.7 in Hashigo)"
-        ));
-    }
-    Ok(format!("R{}.{}", registers.start as u32 + n / 8, n % 8))
-}
-
-/// The AVR PLC's registers for inputs, outputs and relays
-/// ([`avr_located`], and what `propose` hands out).
-const AVR_INPUTS: std::ops::Range<u8> = 4..5;
-const AVR_OUTPUTS: std::ops::Range<u8> = 5..6;
-const AVR_RELAYS: std::ops::Range<u8> = 6..16;
 
 /// A device proposed for every declared variable and block instance of
 /// the file that has none yet (`map` and addresses first), for the page's
@@ -705,7 +529,7 @@ mod tests {
         assert_eq!(located(avr, "%MX9.7").as_deref(), Ok("R15.7"));
         let past = located(avr, "%MX10.0").expect_err("R16 is the compiler's");
         assert_eq!(
-            past,
+            past.to_string(),
             "%MX10.0 is past the AVR PLC's relays (R6.0-R15.7 in Hashigo)"
         );
         assert!(located(avr, "%IX1.0").is_err(), "R4 holds the inputs");

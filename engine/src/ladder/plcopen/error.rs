@@ -75,7 +75,7 @@ pub enum ImportError {
     /// A contact or coil (`kind`) without a variable.
     NoVariable(&'static str),
     /// A declared variable with no device (the declarations' words).
-    Variable(String),
+    Variable(super::declare::NameError),
     /// A boolean block that cannot be lowered (the block, why).
     Gate(String, String),
     /// `--pou` names no POU of the file (the name, the file's POUs).
@@ -198,7 +198,7 @@ impl fmt::Display for ImportError {
                 ),
             },
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
-            E::Variable(why) => f.write_str(why),
+            E::Variable(why) => why.fmt(f),
             E::Gate(what, why) => write!(f, "{what}: {why}"),
             E::NoSuchPou(name, all) => write!(f, "no POU is named {name}: the file has {all}"),
             E::NoDrawnInPrograms(run, ld) => write!(

@@ -5,6 +5,7 @@
 //! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
 //! - [`export`](mod@export): rungs to a project file both tools open.
 
+mod address;
 mod blocks;
 mod body;
 pub mod declare;
@@ -13,8 +14,10 @@ pub mod error;
 pub mod export;
 mod gates;
 pub mod import;
+mod joins;
 mod kinds;
 mod main_line;
+mod map_file;
 mod order;
 mod parts;
 mod read;

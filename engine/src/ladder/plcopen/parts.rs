@@ -4,7 +4,7 @@
 use super::dom::Node;
 use super::error::ImportError;
 use crate::io86a::{isa::parse_bit, Bit};
-use crate::ladder::element::{CoilKind, Element};
+use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 
 /// Whether a variable box's expression is a variable's name (not a
@@ -113,4 +113,55 @@ pub(super) fn position(n: &Node) -> (usize, usize) {
             .map_or(0, |v| v as usize)
     };
     (num("y"), num("x"))
+}
+
+/// The contact that conducts in the scan `c` starts conducting.
+pub(super) fn rising(c: &Element) -> Result<Element, String> {
+    rekind(c, "IN is already an edge contact", |kind| match kind {
+        ContactKind::No => Some(ContactKind::Rising),
+        // NC conducts from when the device falls.
+        ContactKind::Nc => Some(ContactKind::Falling),
+        _ => None,
+    })
+}
+
+/// The contact that conducts when `c` does not.
+pub(super) fn invert(c: &Element) -> Result<Element, String> {
+    rekind(c, "an edge contact cannot be inverted", |kind| match kind {
+        ContactKind::No => Some(ContactKind::Nc),
+        ContactKind::Nc => Some(ContactKind::No),
+        _ => None,
+    })
+}
+
+/// Contact `c` on the same device with the kind `to` gives (`None`: the
+/// reason `edge` says).
+pub(super) fn rekind(
+    c: &Element,
+    edge: &str,
+    to: impl Fn(ContactKind) -> Option<ContactKind>,
+) -> Result<Element, String> {
+    match c {
+        Element::Contact { kind, device } => Ok(Element::Contact {
+            kind: to(*kind).ok_or(edge)?,
+            device: device.clone(),
+        }),
+        _ => Err("not a contact".into()),
+    }
+}
+
+/// The contact that gives box `e` (NOT, R_TRIG, F_TRIG) fed by a contact
+/// of `kind`, when there is one: NOT turns NO and NC into each other; an
+/// edge box on a NO contact is that edge's contact. An edge of an NC
+/// contact or of an edge (and NOT of an edge) keeps its relay: R_TRIG of
+/// NOT a fires in the first scan when a is off, a's falling contact
+/// does not.
+pub(super) fn turned(e: &Element, kind: ContactKind) -> Option<ContactKind> {
+    match (e, kind) {
+        (Element::Not, ContactKind::No) => Some(ContactKind::Nc),
+        (Element::Not, ContactKind::Nc) => Some(ContactKind::No),
+        (Element::Edge { falling: false }, ContactKind::No) => Some(ContactKind::Rising),
+        (Element::Edge { falling: true }, ContactKind::No) => Some(ContactKind::Falling),
+        _ => None,
+    }
 }
