@@ -29,14 +29,15 @@ def test_a_project_with_named_variables_imports_through_the_mapping_table(driver
     import_dialog(driver, base_url, NAMED, "the dialog, since memo has no device")
     memo = el(driver, "import-map-memo")
     assert memo.get_attribute("value") == "Y01", "a free output proposed for what a coil writes"
-    # A device the machine lacks: refused at the file's line, nothing changed.
+    # A device the machine lacks: refused at its row of the table (the map's
+    # place, issue #24), nothing changed.
     before = devices(driver)
     memo.clear()
     memo.send_keys("Q9")
     el(driver, "import-apply").click()
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-error"]'))
     error = el(driver, "import-error").text
-    assert "openplc-named.xml:" in error and "Q9" in error, error
+    assert error.startswith("memo → Q9: unknown device"), error
     assert devices(driver) == before
     memo.clear()
     memo.send_keys("M05")
