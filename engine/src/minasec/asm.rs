@@ -38,19 +38,6 @@ impl Program {
         Program { bytes, len: STEPS }
     }
 
-    /// A program from the given steps, starting at step 0.
-    pub fn from_instructions(steps: &[Instruction]) -> Result<Program, AsmError> {
-        if steps.len() > STEPS {
-            return Err(AsmError::TooManySteps(steps.len()));
-        }
-        let mut program = Program::erased();
-        for (slot, step) in program.bytes.iter_mut().zip(steps) {
-            *slot = step.encode();
-        }
-        program.len = steps.len();
-        Ok(program)
-    }
-
     /// The whole of program memory.
     pub const fn bytes(&self) -> &[u8; STEPS] {
         &self.bytes

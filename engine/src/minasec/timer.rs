@@ -68,12 +68,6 @@ impl RcTimer {
         self.coil && now.saturating_sub(self.since) >= self.delay
     }
 
-    /// When the output will rise if the coil stays on; `None` when the coil
-    /// is off.
-    pub fn expires_at(&self) -> Option<SimTime> {
-        self.coil.then(|| self.since.saturating_add(self.delay))
-    }
-
     /// How long the coil has been on at `now`, capped at the delay (the
     /// timer's current value); zero when off.
     pub fn elapsed(&self, now: SimTime) -> SimTime {

@@ -247,19 +247,6 @@ impl<M: Plc + Clone> Recording<M> {
         out
     }
 
-    /// The mark whose scan ended last at or before `t`.
-    pub fn mark_at_time(&mut self, t: SimTime) -> Option<Mark> {
-        // A keyframe's copy is at its first scan's end.
-        let c = self
-            .chunks
-            .partition_point(|c| c.machine.now() <= t)
-            .checked_sub(1)?;
-        self.fill(c);
-        let chunk = &self.chunks[c];
-        let i = chunk.times().partition_point(|&x| x <= t);
-        Some(chunk.first + i.checked_sub(1)? as u64)
-    }
-
     fn chunk_index(&self, mark: Mark) -> Option<usize> {
         if mark < self.first() || mark > self.last() {
             return None;

@@ -113,11 +113,6 @@ impl<M: Plc + Clone> Recorded<M> {
         self.stop = stop;
     }
 
-    /// The break condition.
-    pub fn break_condition(&self) -> Option<&Condition> {
-        self.stop.as_ref()
-    }
-
     /// Whether the condition held since the last [`Recorded::take_break`].
     pub fn has_break(&self) -> bool {
         self.hit.is_some()

@@ -158,16 +158,6 @@ pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<La
     ladder.map_err(TextError::Decompile)
 }
 
-/// The machine a [`Source`] is for.
-pub fn machine_of(source: &Source<'_>) -> MachineId {
-    match source {
-        Source::Minasec(_) => MachineId::MinasecU,
-        Source::Avr(..) => MachineId::AvrPlc,
-        Source::Io86a(_) => MachineId::Io86a,
-        Source::Arduino(_) => MachineId::ArduinoPlc,
-    }
-}
-
 fn contact(device: String, inverted: bool) -> Net {
     let kind = if inverted {
         ContactKind::Nc
