@@ -195,32 +195,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     };
     let settings = r.map("settings")?;
     let device_comments = r.map("device comments")?;
-    let count = r.count("rungs", MAX_RUNGS)?;
-    let mut rungs = Vec::with_capacity(count);
-    for _ in 0..count {
-        let comment = r.string()?;
-        let rows = r.len(MAX_ROWS)?;
-        let mut cells = Vec::with_capacity(rows);
-        for _ in 0..rows {
-            let width = r.len(MAX_COLS)?;
-            let mut row = Vec::with_capacity(width);
-            for _ in 0..width {
-                row.push(r.cell()?);
-            }
-            cells.push(row);
-        }
-        let links = r.count("links in one rung", MAX_ROWS * MAX_COLS)?;
-        let mut rung = Rung {
-            comment,
-            cells,
-            links: Vec::new(),
-        };
-        for _ in 0..links {
-            let (row, col) = (r.len(MAX_ROWS)?, r.len(MAX_COLS)?);
-            rung.links.push(Link { row, col });
-        }
-        rungs.push(rung);
-    }
+    let rungs = r.rungs()?;
     let mut project = Project::new(
         machine,
         Ladder {
@@ -234,21 +209,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
             1 => true,
             _ => return Err(r.bad("the exercise flag is neither 0 nor 1")),
         };
-        let count = r.count("test cases", MAX_TEST_CASES)?;
-        for _ in 0..count {
-            let name = r.string()?;
-            let events = r.string()?;
-            let lines = r.count("expectations in one test case", MAX_EXPECTATIONS)?;
-            let mut expect = Vec::new();
-            for _ in 0..lines {
-                expect.push(r.string()?);
-            }
-            project.tests.push(crate::cases::TestCase {
-                name,
-                events,
-                expect,
-            });
-        }
+        project.tests = r.cases()?;
     }
     if r.at != data.len() {
         return Err(r.bad("data after the last rung"));
@@ -401,6 +362,60 @@ impl Reader<'_> {
         let s = std::str::from_utf8(bytes).map_err(|_| self.bad("text that is not UTF-8"))?;
         self.at += n;
         Ok(s.to_string())
+    }
+
+    /// The rungs: a count, then each rung's comment, rows of cells and
+    /// links.
+    fn rungs(&mut self) -> Result<Vec<Rung>, ShareError> {
+        let count = self.count("rungs", MAX_RUNGS)?;
+        let mut rungs = Vec::with_capacity(count);
+        for _ in 0..count {
+            let comment = self.string()?;
+            let rows = self.len(MAX_ROWS)?;
+            let mut cells = Vec::with_capacity(rows);
+            for _ in 0..rows {
+                let width = self.len(MAX_COLS)?;
+                let mut row = Vec::with_capacity(width);
+                for _ in 0..width {
+                    row.push(self.cell()?);
+                }
+                cells.push(row);
+            }
+            let links = self.count("links in one rung", MAX_ROWS * MAX_COLS)?;
+            let mut rung = Rung {
+                comment,
+                cells,
+                links: Vec::new(),
+            };
+            for _ in 0..links {
+                let (row, col) = (self.len(MAX_ROWS)?, self.len(MAX_COLS)?);
+                rung.links.push(Link { row, col });
+            }
+            rungs.push(rung);
+        }
+        Ok(rungs)
+    }
+
+    /// The test cases: a count, then each case's name, events and
+    /// expectation lines.
+    fn cases(&mut self) -> Result<Vec<crate::cases::TestCase>, ShareError> {
+        let count = self.count("test cases", MAX_TEST_CASES)?;
+        let mut cases = Vec::with_capacity(count);
+        for _ in 0..count {
+            let name = self.string()?;
+            let events = self.string()?;
+            let lines = self.count("expectations in one test case", MAX_EXPECTATIONS)?;
+            let mut expect = Vec::with_capacity(lines);
+            for _ in 0..lines {
+                expect.push(self.string()?);
+            }
+            cases.push(crate::cases::TestCase {
+                name,
+                events,
+                expect,
+            });
+        }
+        Ok(cases)
     }
 
     /// A count of items that may not exceed `limit` (a documented limit:

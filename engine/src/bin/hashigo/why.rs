@@ -36,48 +36,12 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         ],
     )
     .map_err(one)?;
-    let mut source = load(&args)?;
-    let machine = source.plc.id();
-    let scan_ms = if machine == MachineId::AvrPlc {
-        source::avr_scan_ms(&args, &source.name, &source.settings)?
-    } else {
-        10
-    };
-    let project = match source.project.take() {
-        Some(project) => project,
-        None => ladder_project(&args, &source.file, source.format, Some(machine), scan_ms)?,
-    };
-    // Device names in the machine's own spelling, so that `Y0`, `y00` and
-    // `Y00` are one device wherever they are compared.
-    let ladder = canonical(project.ladder, machine);
-    // The ladder's own compiled program runs, so that its source map
-    // names each contact's step (a text program is its decompiled ladder).
-    let live = LiveLadder::new(
-        &ladder,
-        machine,
-        Options {
-            avr_scan_ms: scan_ms,
-        },
-    )
-    .map_err(|errors| {
-        errors
-            .iter()
-            .map(|e| format!("{}: {e}", source.name))
-            .collect::<Vec<_>>()
-    })?;
-    let origin = match source.format {
-        Format::Il | Format::Asm => format!("{} (as its ladder)", source.name),
-        Format::Json | Format::Xml => format!("{} (compiled)", source.name),
-    };
-    // The program as written still names its devices (an AVR source's
-    // `.equ` names): names are looked up there, then run on the ladder's.
-    let written = source.plc;
-    let mut plc = new_plc(machine);
-    plc.load_text(&live.listing.text)
-        .map_err(|e| located(&origin, e))?;
-    let names = Names::new(&ladder, written.as_ref(), plc.as_ref());
+    let explained = Explained::load(&args)?;
+    let mut plc = explained.plc;
+    let (ladder, live) = (&explained.ladder, &explained.live);
+    let names = Names::new(ladder, explained.written.as_ref(), plc.as_ref());
 
-    let mut problems = apply_settings(plc.as_mut(), &args, (&source.name, &source.settings));
+    let mut problems = apply_settings(plc.as_mut(), &args, (&explained.name, &explained.settings));
     let events = read_events(&args, &mut problems);
     let at = args
         .required("at")
@@ -108,22 +72,91 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     if !problems.is_empty() {
         return Err(problems);
     }
+    let changes = run_to(plc.as_mut(), ladder, (&name, device), &inputs, at);
+    print!("{}", report(ladder, live, plc.as_ref(), &name, &changes));
+    Ok(())
+}
 
-    // Every device a contact reads, to say when it last changed.
+/// The ladder `why` explains, compiled and loaded, and the program as
+/// written (which still names its devices: an AVR source's `.equ` names).
+struct Explained {
+    ladder: Ladder,
+    live: LiveLadder,
+    plc: Box<dyn Plc>,
+    written: Box<dyn Plc>,
+    name: String,
+    settings: source::Settings,
+}
+
+impl Explained {
+    fn load(args: &Args) -> Result<Explained, Problems> {
+        let mut source = load(args)?;
+        let machine = source.plc.id();
+        let scan_ms = if machine == MachineId::AvrPlc {
+            source::avr_scan_ms(args, &source.name, &source.settings)?
+        } else {
+            10
+        };
+        let project = match source.project.take() {
+            Some(project) => project,
+            None => ladder_project(args, &source.file, source.format, Some(machine), scan_ms)?,
+        };
+        // Device names in the machine's own spelling, so that `Y0`, `y00`
+        // and `Y00` are one device wherever they are compared.
+        let ladder = canonical(project.ladder, machine);
+        // The ladder's own compiled program runs, so that its source map
+        // names each contact's step (a text program is its decompiled
+        // ladder).
+        let options = Options {
+            avr_scan_ms: scan_ms,
+        };
+        let live = LiveLadder::new(&ladder, machine, options).map_err(|errors| {
+            errors
+                .iter()
+                .map(|e| format!("{}: {e}", source.name))
+                .collect::<Vec<_>>()
+        })?;
+        let origin = match source.format {
+            Format::Il | Format::Asm => format!("{} (as its ladder)", source.name),
+            Format::Json | Format::Xml => format!("{} (compiled)", source.name),
+        };
+        let mut plc = new_plc(machine);
+        plc.load_text(&live.listing.text)
+            .map_err(|e| located(&origin, e))?;
+        Ok(Explained {
+            ladder,
+            live,
+            plc,
+            written: source.plc,
+            name: source.name,
+            settings: source.settings,
+        })
+    }
+}
+
+/// Runs `plc` with its `inputs` to `at`, tracing, and says when each
+/// device a contact reads (and the `asked` one) last changed. Devices are
+/// looked at only where a scan ends: the state explained is the one at the
+/// end of the scan the trace is of, and "last changed" comes from the same
+/// samples (the Arduino sketch's pins change mid-pass).
+fn run_to(
+    plc: &mut dyn Plc,
+    ladder: &Ladder,
+    asked: (&str, Device),
+    inputs: &[(SimTime, Device, engine::events::InputValue)],
+    at: SimTime,
+) -> Changes {
     let mut changes: Changes = BTreeMap::new();
     for rung in &ladder.rungs {
         for (_, e) in rung.elements() {
-            if let engine::ladder::element::Element::Contact { device, .. } = e {
+            if let Some(device) = e.read_device() {
                 if let Ok(d) = plc.device(device) {
-                    changes.insert(device.clone(), (d, plc.read(d), None));
+                    changes.insert(device.to_string(), (d, plc.read(d), None));
                 }
             }
         }
     }
-    changes.insert(name.clone(), (device, plc.read(device), None));
-    // Looked at only where a scan ends: the state explained is the one
-    // at the end of the scan the trace is of, and "last changed" comes
-    // from the same samples (the Arduino sketch's pins change mid-pass).
+    changes.insert(asked.0.to_string(), (asked.1, plc.read(asked.1), None));
     let mut observe = |m: &dyn Plc| {
         for (d, last, changed) in changes.values_mut() {
             let now = m.read(*d);
@@ -134,18 +167,16 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         }
     };
     plc.set_tracing(true);
-    for (t, d, value) in inputs.into_iter().filter(|(t, _, _)| *t <= at) {
+    for &(t, d, value) in inputs.iter().filter(|(t, _, _)| *t <= at) {
         // Everything due strictly before the event runs first.
-        whole_scans(plc.as_mut(), PeriodicClock::just_before(t), &mut observe);
+        whole_scans(plc, PeriodicClock::just_before(t), &mut observe);
         plc.run_before(t);
         // Checked above: the machine takes it.
         let _ = plc.apply(Command::SetInput(d, value));
     }
-    whole_scans(plc.as_mut(), at, &mut observe);
+    whole_scans(plc, at, &mut observe);
     plc.run_until(at);
-
-    print!("{}", report(&ladder, &live, plc.as_ref(), &name, &changes));
-    Ok(())
+    changes
 }
 
 /// Runs `plc` scan by scan up to the end of the last scan that ends at or
