@@ -64,41 +64,12 @@ pub fn import_pou(
     pou: Option<&str>,
 ) -> Result<Imported, Errors> {
     let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
-    if root.name != "project" {
-        return Err(vec![Located::new(
-            root.line,
-            ImportError::NotAProject(root.name.clone()),
-        )]);
-    }
-    match root.attr("xmlns") {
-        None | Some(NS_V201) | Some(NS_V200) | Some(NS_V10) => {}
-        Some(other) => {
-            return Err(vec![Located::new(
-                root.line,
-                ImportError::Namespace(other.to_string()),
-            )])
-        }
-    }
+    check_project(&root)?;
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
     let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
-    let bodies: Vec<&Node> = chosen.iter().filter_map(|p| drawn_body(p)).collect();
-    if bodies.is_empty() {
-        let drawn: Vec<String> = pous
-            .iter()
-            .filter(|p| drawn_body(p).is_some())
-            .map(|p| pou_and_language(p))
-            .collect();
-        let error = if drawn.is_empty() {
-            let all: Vec<String> = pous.iter().map(|p| pou_and_language(p)).collect();
-            ImportError::NoDrawnBody(all.join(", "))
-        } else {
-            let run: Vec<String> = chosen.iter().map(|p| pou_and_language(p)).collect();
-            ImportError::NoDrawnInPrograms(run.join(", "), drawn.join(", "))
-        };
-        return Err(vec![Located::new(root.line, error)]);
-    }
+    let bodies = drawn_bodies(&root, &pous, &chosen)?;
     let names = match machine {
         Some(m) => declare::names(&root, m, map),
         None => Names::none(),
@@ -149,6 +120,69 @@ pub fn import_pou(
     if !errors.is_empty() {
         return Err(errors);
     }
+    name_devices(&mut ladder, &names, helpers, machine, &mut warnings);
+    warnings.sort_by_key(|w| w.line);
+    Ok(Imported {
+        ladder,
+        unused_map_entries: names.unused_map_lines(),
+        warnings,
+    })
+}
+
+/// The root is a PLCopen project in a namespace this reader knows.
+fn check_project(root: &Node) -> Result<(), Errors> {
+    if root.name != "project" {
+        return Err(vec![Located::new(
+            root.line,
+            ImportError::NotAProject(root.name.clone()),
+        )]);
+    }
+    match root.attr("xmlns") {
+        None | Some(NS_V201) | Some(NS_V200) | Some(NS_V10) => Ok(()),
+        Some(other) => Err(vec![Located::new(
+            root.line,
+            ImportError::Namespace(other.to_string()),
+        )]),
+    }
+}
+
+/// The drawn (LD or FBD) bodies of the `chosen` POUs; when there are
+/// none, an error naming what the file has instead.
+fn drawn_bodies<'a>(
+    root: &Node,
+    pous: &[&Node],
+    chosen: &[&'a Node],
+) -> Result<Vec<&'a Node>, Errors> {
+    let bodies: Vec<&Node> = chosen.iter().filter_map(|p| drawn_body(p)).collect();
+    if !bodies.is_empty() {
+        return Ok(bodies);
+    }
+    let drawn: Vec<String> = pous
+        .iter()
+        .filter(|p| drawn_body(p).is_some())
+        .map(|p| pou_and_language(p))
+        .collect();
+    let error = if drawn.is_empty() {
+        let all: Vec<String> = pous.iter().map(|p| pou_and_language(p)).collect();
+        ImportError::NoDrawnBody(all.join(", "))
+    } else {
+        let run: Vec<String> = chosen.iter().map(|p| pou_and_language(p)).collect();
+        ImportError::NoDrawnInPrograms(run.join(", "), drawn.join(", "))
+    };
+    Err(vec![Located::new(root.line, error)])
+}
+
+/// Names the ladder's devices: variable names and the spare relays'
+/// purposes become device comments (each relay also a warning), and a
+/// variable declared to start on is a warning (no machine here keeps a
+/// power-up value for a bit device).
+fn name_devices(
+    ladder: &mut Ladder,
+    names: &Names,
+    helpers: Vec<(String, String, usize)>,
+    machine: Option<MachineId>,
+    warnings: &mut Vec<Located<String>>,
+) {
     let used: std::collections::BTreeSet<String> = ladder
         .rungs
         .iter()
@@ -178,12 +212,6 @@ pub fn import_pou(
             ));
         }
     }
-    warnings.sort_by_key(|w| w.line);
-    Ok(Imported {
-        ladder,
-        unused_map_entries: names.unused_map_lines(),
-        warnings,
-    })
 }
 
 /// A POU's LD or FBD body, if it has one: both draw the same graph of

@@ -18,6 +18,17 @@ use crate::MachineId;
 
 pub(super) type Errors = Vec<Located<ImportError>>;
 
+/// What [`Body::lower_leaf`] needs to know of the whole body.
+struct LeafEnv {
+    machine: Option<MachineId>,
+    /// IO86A: timers and counters are coils with contacts.
+    timer_coils: bool,
+    /// The points something takes power from.
+    consumed: HashSet<usize>,
+    /// The box edges off their rung's main line.
+    off_main: HashSet<usize>,
+}
+
 impl Body {
     /// The rungs, each with the XML line of its first output.
     pub(super) fn rungs(
@@ -44,41 +55,9 @@ impl Body {
         if let Some(m) = machine {
             self.check_machine(m, &edges, &lines)?;
         }
-        let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
-        for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
-            let bus = self.find(input);
-            groups.entry(bus).or_default().push((e, pos, line));
-        }
-        let mut buses = Vec::new();
         let mut errors = Vec::new();
-        let mut moved = Vec::new();
-        for (bus, outs) in &mut groups {
-            outs.sort_by_key(|(_, p, _)| *p);
-            if *bus == rail && machine == Some(MachineId::Io86a) {
-                // Always on: IO86A's M57 (ON) carries the rail to it.
-                let q = self.fresh();
-                let (_, p, line) = &outs[0];
-                let at = Pos::new(p.row, p.col.wrapping_sub(1));
-                lines.insert(at, *line);
-                edges.push(Edge {
-                    from: rail,
-                    to: q,
-                    net: Net::Leaf(Element::no("M57"), at),
-                });
-                moved.push((*bus, q));
-                buses.push(q);
-            } else if *bus == rail {
-                let on_rail = ImportError::OnRail(outs[0].0.to_string());
-                errors.push(Located::new(outs[0].2, on_rail));
-            } else {
-                buses.push(*bus);
-            }
-        }
-        for (from, to) in moved {
-            if let Some(outs) = groups.remove(&from) {
-                groups.insert(to, outs);
-            }
-        }
+        let (mut groups, buses) =
+            self.output_groups(machine, (&mut edges, &mut lines), &mut errors);
         // Every group's network at once, each from the part of the graph
         // that leads to it (linear in the sum of their sizes).
         let conditions = reduce_all(&edges, self.parent.len(), rail, &buses);
@@ -117,6 +96,54 @@ impl Body {
         Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
     }
 
+    /// The outputs grouped by the point feeding them (each group is one
+    /// rung), and those points in order. A group on the rail is fed
+    /// through IO86A's always-on M57; on another machine it is an error.
+    #[allow(clippy::type_complexity)] // the groups and their points, named at the call
+    fn output_groups(
+        &mut self,
+        machine: Option<MachineId>,
+        (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
+        errors: &mut Errors,
+    ) -> (BTreeMap<usize, Vec<(Element, Pos, usize)>>, Vec<usize>) {
+        let rail = self.find(RAIL);
+        let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
+        for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
+            let bus = self.find(input);
+            groups.entry(bus).or_default().push((e, pos, line));
+        }
+        let mut buses = Vec::new();
+        let mut moved = Vec::new();
+        for (bus, outs) in &mut groups {
+            outs.sort_by_key(|(_, p, _)| *p);
+            if *bus == rail && machine == Some(MachineId::Io86a) {
+                // Always on: IO86A's M57 (ON) carries the rail to it.
+                let q = self.fresh();
+                let (_, p, line) = &outs[0];
+                let at = Pos::new(p.row, p.col.wrapping_sub(1));
+                lines.insert(at, *line);
+                edges.push(Edge {
+                    from: rail,
+                    to: q,
+                    net: Net::Leaf(Element::no("M57"), at),
+                });
+                moved.push((*bus, q));
+                buses.push(q);
+            } else if *bus == rail {
+                let on_rail = ImportError::OnRail(outs[0].0.to_string());
+                errors.push(Located::new(outs[0].2, on_rail));
+            } else {
+                buses.push(*bus);
+            }
+        }
+        for (from, to) in moved {
+            if let Some(outs) = groups.remove(&from) {
+                groups.insert(to, outs);
+            }
+        }
+        (groups, buses)
+    }
+
     /// The elements as edges between their (joined) points, and each
     /// leaf's line. A TON or CTU whose output drives nothing becomes the
     /// machine's timer or counter coil (`OUT T00 K19`).
@@ -137,115 +164,19 @@ impl Body {
         let off_main = self.boxes_off_main_line(machine);
         let mut edges = Vec::new();
         let mut lines: HashMap<Pos, usize> = HashMap::new();
+        let env = LeafEnv {
+            machine,
+            timer_coils,
+            consumed,
+            off_main,
+        };
         for (index, (a, b, net, line)) in std::mem::take(&mut self.edges).into_iter().enumerate() {
             let (a, b) = (self.find(a), self.find(b));
             if let Net::Leaf(e, pos) = &net {
                 lines.insert(*pos, line);
-                let terminal = !consumed.contains(&b);
-                match (e, terminal) {
-                    (
-                        Element::Timer {
-                            kind: TimerKind::Ton,
-                            name,
-                            preset_ms,
-                        },
-                        true,
-                    ) => {
-                        let coil = timer_coil(name, *preset_ms)
-                            .map_err(|m| vec![Located::new(line, m)])?;
-                        self.outputs.push((a, coil, *pos, line));
-                        continue;
-                    }
-                    (
-                        Element::Timer {
-                            kind: TimerKind::Ton,
-                            name,
-                            preset_ms,
-                        },
-                        false,
-                    ) if timer_coils => {
-                        let coil = timer_coil(name, *preset_ms)
-                            .map_err(|m| vec![Located::new(line, m)])?;
-                        let contact = Element::no(name);
-                        self.split_box((a, b), coil, contact, *pos, line, (&mut edges, &mut lines));
-                        continue;
-                    }
-                    (Element::CounterCoil { .. }, true) => {
-                        self.outputs.push((a, e.clone(), *pos, line));
-                        continue;
-                    }
-                    (Element::CounterCoil { device, .. }, false) if timer_coils => {
-                        // Q is the counter's count-reached bit.
-                        let contact = Element::no(device);
-                        self.split_box(
-                            (a, b),
-                            e.clone(),
-                            contact,
-                            *pos,
-                            line,
-                            (&mut edges, &mut lines),
-                        );
-                        continue;
-                    }
-                    (Element::CounterCoil { device, .. }, false) => {
-                        let wired = ImportError::CounterQWired(device.clone());
-                        return Err(vec![Located::new(line, wired)]);
-                    }
-                    (Element::Timer { .. }, _) if off_main.contains(&index) => {
-                        // Off the rung's main line, where the machine
-                        // takes timers in-line only: the timer gets a rung
-                        // of its own into a spare relay, whose contact
-                        // gives Q where Q went.
-                        let what = format!("{e} box's output");
-                        let relay = self.spare_relay(&what, line).map_err(|why| {
-                            vec![Located::new(line, ImportError::Gate(e.to_string(), why))]
-                        })?;
-                        let q = self.fresh();
-                        let at_coil = Pos::new(pos.row, pos.col.wrapping_add(1));
-                        edges.push(Edge {
-                            from: a,
-                            to: q,
-                            net,
-                        });
-                        let held = coil(CoilKind::Normal, relay.clone());
-                        let split = (&mut edges, &mut lines);
-                        self.split_box((q, b), held, Element::no(&relay), at_coil, line, split);
-                        continue;
-                    }
-                    (Element::Not | Element::Edge { .. }, _)
-                        if machine.is_some_and(|m| check_element(m, e).is_err())
-                            || off_main.contains(&index) =>
-                    {
-                        // No in-line box on this machine, or not here (off
-                        // the rung's main line): a relay holds the box's
-                        // input, and its NC (NOT) or edge contact gives the
-                        // box's output.
-                        let what = match e {
-                            Element::Not => "NOT block".to_string(),
-                            Element::Edge { falling: true } => "F_TRIG block".to_string(),
-                            _ => "R_TRIG block".to_string(),
-                        };
-                        let at = Pos::new(pos.row, pos.col.wrapping_sub(1));
-                        let device = self
-                            .hold_in_relay(a, &format!("{what}'s input"), line, at)
-                            .map_err(|why| {
-                                vec![Located::new(line, ImportError::Gate(what, why))]
-                            })?;
-                        let kind = match e {
-                            Element::Not => ContactKind::Nc,
-                            Element::Edge { falling: true } => ContactKind::Falling,
-                            _ => ContactKind::Rising,
-                        };
-                        lines.insert(*pos, line);
-                        let rail = self.find(RAIL);
-                        edges.push(Edge {
-                            from: rail,
-                            to: b,
-                            net: Net::Leaf(Element::Contact { kind, device }, *pos),
-                        });
-                        continue;
-                    }
-                    _ => {}
+                let leaf = (e.clone(), *pos, line, index);
+                if self.lower_leaf((a, b), leaf, &net, &env, (&mut edges, &mut lines))? {
+                    continue;
                 }
             }
             edges.push(Edge {
@@ -255,6 +186,157 @@ impl Body {
             });
         }
         Ok((edges, lines))
+    }
+
+    /// Lowers one leaf edge `a → b` the machine cannot take as it is (a
+    /// TON or CTU as its coil and contact, a box through a spare relay):
+    /// whether it did (else the edge goes in as it is).
+    fn lower_leaf(
+        &mut self,
+        (a, b): (usize, usize),
+        (e, pos, line, index): (Element, Pos, usize, usize),
+        net: &Net,
+        env: &LeafEnv,
+        (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
+    ) -> Result<bool, Errors> {
+        let (e, pos) = (&e, &pos);
+        let terminal = !env.consumed.contains(&b);
+        match (e, terminal) {
+            (
+                Element::Timer {
+                    kind: TimerKind::Ton,
+                    name,
+                    preset_ms,
+                },
+                true,
+            ) => {
+                let coil = timer_coil(name, *preset_ms).map_err(|m| vec![Located::new(line, m)])?;
+                self.outputs.push((a, coil, *pos, line));
+                return Ok(true);
+            }
+            (
+                Element::Timer {
+                    kind: TimerKind::Ton,
+                    name,
+                    preset_ms,
+                },
+                false,
+            ) if env.timer_coils => {
+                let coil = timer_coil(name, *preset_ms).map_err(|m| vec![Located::new(line, m)])?;
+                let contact = Element::no(name);
+                self.split_box(
+                    (a, b),
+                    coil,
+                    contact,
+                    *pos,
+                    line,
+                    (&mut *edges, &mut *lines),
+                );
+                return Ok(true);
+            }
+            (Element::CounterCoil { .. }, true) => {
+                self.outputs.push((a, e.clone(), *pos, line));
+                return Ok(true);
+            }
+            (Element::CounterCoil { device, .. }, false) if env.timer_coils => {
+                // Q is the counter's count-reached bit.
+                let contact = Element::no(device);
+                self.split_box(
+                    (a, b),
+                    e.clone(),
+                    contact,
+                    *pos,
+                    line,
+                    (&mut *edges, &mut *lines),
+                );
+                return Ok(true);
+            }
+            (Element::CounterCoil { device, .. }, false) => {
+                let wired = ImportError::CounterQWired(device.clone());
+                return Err(vec![Located::new(line, wired)]);
+            }
+            (Element::Timer { .. }, _) if env.off_main.contains(&index) => {
+                self.timer_through_relay((a, b), (e, *pos, line), net, (edges, lines))?;
+                return Ok(true);
+            }
+            (Element::Not | Element::Edge { .. }, _)
+                if env.machine.is_some_and(|m| check_element(m, e).is_err())
+                    || env.off_main.contains(&index) =>
+            {
+                self.box_through_relay((a, b), (e, *pos, line), (edges, lines))?;
+                return Ok(true);
+            }
+            _ => {}
+        }
+        Ok(false)
+    }
+
+    /// A timer off its rung's main line, where the machine takes timers
+    /// in-line only: it gets a rung of its own into a spare relay, whose
+    /// contact gives Q where Q went.
+    fn timer_through_relay(
+        &mut self,
+        (a, b): (usize, usize),
+        (e, pos, line): (&Element, Pos, usize),
+        net: &Net,
+        (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
+    ) -> Result<(), Errors> {
+        // Off the rung's main line, where the machine
+        // takes timers in-line only: the timer gets a rung
+        // of its own into a spare relay, whose contact
+        // gives Q where Q went.
+        let what = format!("{e} box's output");
+        let relay = self
+            .spare_relay(&what, line)
+            .map_err(|why| vec![Located::new(line, ImportError::Gate(e.to_string(), why))])?;
+        let q = self.fresh();
+        let at_coil = Pos::new(pos.row, pos.col.wrapping_add(1));
+        edges.push(Edge {
+            from: a,
+            to: q,
+            net: net.clone(),
+        });
+        let held = coil(CoilKind::Normal, relay.clone());
+        let split = (&mut *edges, &mut *lines);
+        self.split_box((q, b), held, Element::no(&relay), at_coil, line, split);
+        Ok(())
+    }
+
+    /// A NOT or edge box the machine has no in-line form for here (none
+    /// at all, or not off the rung's main line): a relay holds the box's
+    /// input, and its NC (NOT) or edge contact gives the box's output.
+    fn box_through_relay(
+        &mut self,
+        (a, b): (usize, usize),
+        (e, pos, line): (&Element, Pos, usize),
+        (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
+    ) -> Result<(), Errors> {
+        // No in-line box on this machine, or not here (off
+        // the rung's main line): a relay holds the box's
+        // input, and its NC (NOT) or edge contact gives the
+        // box's output.
+        let what = match e {
+            Element::Not => "NOT block".to_string(),
+            Element::Edge { falling: true } => "F_TRIG block".to_string(),
+            _ => "R_TRIG block".to_string(),
+        };
+        let at = Pos::new(pos.row, pos.col.wrapping_sub(1));
+        let device = self
+            .hold_in_relay(a, &format!("{what}'s input"), line, at)
+            .map_err(|why| vec![Located::new(line, ImportError::Gate(what, why))])?;
+        let kind = match e {
+            Element::Not => ContactKind::Nc,
+            Element::Edge { falling: true } => ContactKind::Falling,
+            _ => ContactKind::Rising,
+        };
+        lines.insert(pos, line);
+        let rail = self.find(RAIL);
+        edges.push(Edge {
+            from: rail,
+            to: b,
+            net: Net::Leaf(Element::Contact { kind, device }, pos),
+        });
+        Ok(())
     }
 
     /// The edges (by index) holding a NOT, edge or timer box that
