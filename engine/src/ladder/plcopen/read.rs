@@ -49,67 +49,7 @@ impl Body {
                 continue;
             }
             b.kinds.insert(id.to_string(), (n.name.clone(), n.line));
-            match n.name.as_str() {
-                "leftPowerRail" => {
-                    b.rails.insert(id.to_string());
-                }
-                "connector" => {
-                    let name = connector_name(n);
-                    let input = n.child("connectionPointIn").cloned().unwrap_or_default();
-                    if let Some((_, first)) = b.connectors.get(&name) {
-                        b.errors.push(Located::new(
-                            n.line,
-                            ImportError::DuplicateConnector {
-                                name: n.attr("name").unwrap_or_default().to_string(),
-                                first: *first,
-                            },
-                        ));
-                    } else {
-                        b.connectors.insert(name, (input, n.line));
-                    }
-                }
-                "continuation" => {
-                    let name = connector_name(n);
-                    b.continuations.insert(id.to_string(), name);
-                }
-                "block" => {
-                    let en = blocks::pin_of(n, "EN")
-                        .and_then(|p| p.child("connectionPointIn"))
-                        .map(|c| {
-                            c.all("connection")
-                                .filter_map(|c| {
-                                    let r = c.attr("refLocalId")?.to_string();
-                                    Some((
-                                        r,
-                                        c.attr("formalParameter").unwrap_or_default().to_string(),
-                                    ))
-                                })
-                                .collect()
-                        })
-                        .unwrap_or_default();
-                    b.enables.insert(id.to_string(), en);
-                }
-                "inVariable" => {
-                    let expr = n
-                        .child("expression")
-                        .map(|e| e.text.clone())
-                        .unwrap_or_default();
-                    if is_variable_name(&expr) {
-                        let (y, x) = position(n);
-                        let at = place(y, x, b.kinds.len());
-                        // A bad `negated` is refused at its line by `element`.
-                        let contact = if negated(n).unwrap_or(false) {
-                            Element::nc
-                        } else {
-                            Element::no
-                        };
-                        let device = names.device(expr.trim()).map(|d| contact(&d));
-                        b.variables.insert(id.to_string(), (device, at));
-                    }
-                    b.literals.insert(id.to_string(), (expr, n.line));
-                }
-                _ => {}
-            }
+            b.index(id, n, names);
         }
         for (seq, n) in ld.children.iter().enumerate() {
             if let Err(m) = b.element(n, seq, names, own_blocks) {
@@ -120,6 +60,70 @@ impl Body {
             Ok(b)
         } else {
             Err(b.errors)
+        }
+    }
+
+    /// Notes what a first pass over the body must know before any element
+    /// is joined: rails, connectors and continuations, blocks' EN wires,
+    /// variable boxes (their contacts) and literals.
+    fn index(&mut self, id: &str, n: &Node, names: &Names) {
+        match n.name.as_str() {
+            "leftPowerRail" => {
+                self.rails.insert(id.to_string());
+            }
+            "connector" => {
+                let name = connector_name(n);
+                let input = n.child("connectionPointIn").cloned().unwrap_or_default();
+                if let Some((_, first)) = self.connectors.get(&name) {
+                    self.errors.push(Located::new(
+                        n.line,
+                        ImportError::DuplicateConnector {
+                            name: n.attr("name").unwrap_or_default().to_string(),
+                            first: *first,
+                        },
+                    ));
+                } else {
+                    self.connectors.insert(name, (input, n.line));
+                }
+            }
+            "continuation" => {
+                let name = connector_name(n);
+                self.continuations.insert(id.to_string(), name);
+            }
+            "block" => {
+                let en = blocks::pin_of(n, "EN")
+                    .and_then(|p| p.child("connectionPointIn"))
+                    .map(|c| {
+                        c.all("connection")
+                            .filter_map(|c| {
+                                let r = c.attr("refLocalId")?.to_string();
+                                Some((r, c.attr("formalParameter").unwrap_or_default().to_string()))
+                            })
+                            .collect()
+                    })
+                    .unwrap_or_default();
+                self.enables.insert(id.to_string(), en);
+            }
+            "inVariable" => {
+                let expr = n
+                    .child("expression")
+                    .map(|e| e.text.clone())
+                    .unwrap_or_default();
+                if is_variable_name(&expr) {
+                    let (y, x) = position(n);
+                    let at = place(y, x, self.kinds.len());
+                    // A bad `negated` is refused at its line by `element`.
+                    let contact = if negated(n).unwrap_or(false) {
+                        Element::nc
+                    } else {
+                        Element::no
+                    };
+                    let device = names.device(expr.trim()).map(|d| contact(&d));
+                    self.variables.insert(id.to_string(), (device, at));
+                }
+                self.literals.insert(id.to_string(), (expr, n.line));
+            }
+            _ => {}
         }
     }
 
@@ -230,45 +234,13 @@ impl Body {
                 let device = variable()?
                     .filter(|v| !v.is_empty())
                     .ok_or(ImportError::NoVariable("contact"))?;
-                let kind = match (negated(n)?, edge(n)?) {
-                    (false, None) => ContactKind::No,
-                    (true, None) => ContactKind::Nc,
-                    (false, Some("rising")) => ContactKind::Rising,
-                    (false, Some(_)) => ContactKind::Falling,
-                    (true, Some(_)) => return Err(ImportError::NegatedEdge(device)),
-                };
-                let input =
-                    self.join(n.child("connectionPointIn"), &format!("contact {device}"))?;
-                self.consumed.push(input);
-                let out = self.point(&id, "");
-                self.edges.push((
-                    input,
-                    out,
-                    Net::Leaf(Element::Contact { kind, device }, pos),
-                    n.line,
-                ));
+                self.read_contact(n, &id, pos, device)?;
             }
             "coil" => {
                 let device = variable()?
                     .filter(|v| !v.is_empty())
                     .ok_or(ImportError::NoVariable("coil"))?;
-                let element = match (negated(n)?, storage(n)?, edge(n)?) {
-                    (false, None, None) => coil(CoilKind::Normal, device),
-                    (true, None, None) => coil(CoilKind::Inverted, device),
-                    (false, Some("set"), None) => coil(CoilKind::Set, device),
-                    (false, Some(_), None) => coil(CoilKind::Reset, device),
-                    (false, None, Some(e)) => Element::Pulse {
-                        falling: e == "falling",
-                        device,
-                    },
-                    _ => return Err(ImportError::CoilMix(device)),
-                };
-                let input = self.join(n.child("connectionPointIn"), &element.to_string())?;
-                self.consumed.push(input);
-                // A coil passes power on: a coil wired after it sees the same.
-                let out = self.point(&id, "");
-                self.union(input, out);
-                self.outputs.push((input, element, pos, n.line));
+                self.read_coil(n, &id, pos, device)?;
             }
             "block" => {
                 let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
@@ -302,6 +274,63 @@ impl Body {
             "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
             other => return Err(ImportError::Unsupported(other.to_string())),
         }
+        Ok(())
+    }
+
+    /// A contact of `device`: an edge from the point its input joins to
+    /// its own.
+    fn read_contact(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        device: String,
+    ) -> Result<(), ImportError> {
+        let kind = match (negated(n)?, edge(n)?) {
+            (false, None) => ContactKind::No,
+            (true, None) => ContactKind::Nc,
+            (false, Some("rising")) => ContactKind::Rising,
+            (false, Some(_)) => ContactKind::Falling,
+            (true, Some(_)) => return Err(ImportError::NegatedEdge(device)),
+        };
+        let input = self.join(n.child("connectionPointIn"), &format!("contact {device}"))?;
+        self.consumed.push(input);
+        let out = self.point(id, "");
+        self.edges.push((
+            input,
+            out,
+            Net::Leaf(Element::Contact { kind, device }, pos),
+            n.line,
+        ));
+        Ok(())
+    }
+
+    /// A coil of `device`: an output on the point its input joins, which
+    /// passes that power on to whatever is wired after it.
+    fn read_coil(
+        &mut self,
+        n: &Node,
+        id: &str,
+        pos: Pos,
+        device: String,
+    ) -> Result<(), ImportError> {
+        let element = match (negated(n)?, storage(n)?, edge(n)?) {
+            (false, None, None) => coil(CoilKind::Normal, device),
+            (true, None, None) => coil(CoilKind::Inverted, device),
+            (false, Some("set"), None) => coil(CoilKind::Set, device),
+            (false, Some(_), None) => coil(CoilKind::Reset, device),
+            (false, None, Some(e)) => Element::Pulse {
+                falling: e == "falling",
+                device,
+            },
+            _ => return Err(ImportError::CoilMix(device)),
+        };
+        let input = self.join(n.child("connectionPointIn"), &element.to_string())?;
+        self.consumed.push(input);
+        // A coil passes power on: a coil wired after it sees the same.
+        let out = self.point(id, "");
+        self.union(input, out);
+        self.outputs.push((input, element, pos, n.line));
         Ok(())
     }
 
