@@ -110,23 +110,7 @@ impl Body {
     /// number given to each distinct set.
     pub(super) fn lower_joins(&mut self, joins: Vec<Gate>) -> Vec<Located<super::ImportError>> {
         let takers = self.takers();
-        let mut ids: HashMap<Vec<usize>, usize> = HashMap::new();
-        let mut wires = Vec::with_capacity(joins.len());
-        for g in &joins {
-            // In pin order (where a relay's contact goes), each once.
-            let mut set: Vec<usize> = Vec::with_capacity(g.inputs.len());
-            for &p in &g.inputs {
-                let p = self.find(p);
-                if !set.contains(&p) {
-                    set.push(p);
-                }
-            }
-            let mut key = set.clone();
-            key.sort_unstable();
-            let next = ids.len();
-            let id = *ids.entry(key).or_insert(next);
-            wires.push((set, id));
-        }
+        let wires = self.join_wires(&joins);
         // Each wire: how many joins take it, and whether they differ.
         let mut in_joins: HashMap<usize, (usize, usize, bool)> = HashMap::new();
         for (set, id) in &wires {
@@ -147,25 +131,7 @@ impl Body {
                 driven.insert(self.find(out));
             }
         }
-        // Joins of the same wires become one point: a wire that is the
-        // output of such a group is read by everything reading any of its
-        // outputs (an OR block's output may be one wire of a later join,
-        // while a coil beside it reads the same wires).
-        let mut outs: HashMap<usize, HashSet<usize>> = HashMap::new();
-        for (g, (_, id)) in joins.iter().zip(&wires) {
-            let out = self.find(g.out);
-            outs.entry(*id).or_default().insert(out);
-        }
-        let mut readers: HashMap<usize, usize> = takers.clone();
-        for group in outs.values() {
-            let all: usize = group
-                .iter()
-                .map(|o| takers.get(o).copied().unwrap_or(0))
-                .sum();
-            for o in group {
-                readers.insert(*o, all);
-            }
-        }
+        let readers = self.join_readers(&joins, &wires, &takers);
         let node = |p: usize| {
             !driven.contains(&p)
                 && in_joins
@@ -199,6 +165,60 @@ impl Body {
             }
         }
         errors
+    }
+
+    /// Each join's wires (their points, in pin order, each once) and a
+    /// number shared by the joins of the same set of wires.
+    fn join_wires(&mut self, joins: &[Gate]) -> Vec<(Vec<usize>, usize)> {
+        let mut ids: HashMap<Vec<usize>, usize> = HashMap::new();
+        let mut wires = Vec::with_capacity(joins.len());
+        for g in joins {
+            // In pin order (where a relay's contact goes), each once.
+            let mut set: Vec<usize> = Vec::with_capacity(g.inputs.len());
+            for &p in &g.inputs {
+                let p = self.find(p);
+                if !set.contains(&p) {
+                    set.push(p);
+                }
+            }
+            let mut key = set.clone();
+            key.sort_unstable();
+            let next = ids.len();
+            let id = *ids.entry(key).or_insert(next);
+            wires.push((set, id));
+        }
+        wires
+    }
+
+    /// How many elements read each point, a wire that is the output of
+    /// joins of the same wires counting everything that reads any of
+    /// their outputs.
+    fn join_readers(
+        &mut self,
+        joins: &[Gate],
+        wires: &[(Vec<usize>, usize)],
+        takers: &HashMap<usize, usize>,
+    ) -> HashMap<usize, usize> {
+        // Joins of the same wires become one point: a wire that is the
+        // output of such a group is read by everything reading any of its
+        // outputs (an OR block's output may be one wire of a later join,
+        // while a coil beside it reads the same wires).
+        let mut outs: HashMap<usize, HashSet<usize>> = HashMap::new();
+        for (g, (_, id)) in joins.iter().zip(wires) {
+            let out = self.find(g.out);
+            outs.entry(*id).or_default().insert(out);
+        }
+        let mut readers: HashMap<usize, usize> = takers.clone();
+        for group in outs.values() {
+            let all: usize = group
+                .iter()
+                .map(|o| takers.get(o).copied().unwrap_or(0))
+                .sum();
+            for o in group {
+                readers.insert(*o, all);
+            }
+        }
+        readers
     }
 
     /// How many elements take power from each point (joined points).
