@@ -286,41 +286,10 @@ impl Body {
         }
         let element = match ty.as_str() {
             "TON" | "TOF" | "TP" => {
-                let expr = self.pin_literal(n, "PT", &what)?;
-                // A literal, or a variable declared with one.
-                let preset_ms = parse_time_literal(&expr)
-                    .or_else(|| names.initial(&expr).and_then(parse_time_literal))
-                    .ok_or_else(|| ImportError::BadTimeLiteral(what.clone(), expr.to_string()))?;
-                let kind = match ty.as_str() {
-                    "TON" => TimerKind::Ton,
-                    "TOF" => TimerKind::Tof,
-                    _ => TimerKind::Tp,
-                };
-                // A TOF or TP mapped to a timer and a relay (`T01+M20`):
-                // built from the machine's on-delay timer coil.
-                if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == "TON") {
-                    let coil = timer_coil(timer.trim(), preset_ms)?;
-                    let kind = GateKind::Delay {
-                        coil,
-                        timer: timer.trim().to_string(),
-                        relay: relay.trim().to_string(),
-                        pulse: ty == "TP",
-                    };
-                    let out = self.point(id, "Q");
-                    self.gates.push(Gate {
-                        kind,
-                        inputs: vec![input],
-                        out,
-                        pos,
-                        line: n.line,
-                        what,
-                    });
-                    return Ok(());
-                }
-                Element::Timer {
-                    kind,
-                    name: instance.clone(),
-                    preset_ms,
+                match self.timer_block(n, (id, pos), (&ty, &instance), &what, input, names)? {
+                    Some(timer) => timer,
+                    // A TOF or TP built as a gate (lowered later).
+                    None => return Ok(()),
                 }
             }
             "CTU" => {
@@ -339,6 +308,57 @@ impl Body {
         self.edges
             .push((input, out, Net::Leaf(element, pos), n.line));
         Ok(())
+    }
+
+    /// A TON, TOF or TP's element: an in-line timer, or (`None`) a TOF or
+    /// TP mapped to a timer and a relay (`T01+M20`), built from the
+    /// machine's on-delay timer coil as a gate lowered later.
+    #[allow(clippy::too_many_arguments)] // the block as read, each part named at the call
+    fn timer_block(
+        &mut self,
+        n: &Node,
+        (id, pos): (&str, Pos),
+        (ty, instance): (&str, &str),
+        what: &str,
+        input: usize,
+        names: &Names,
+    ) -> Result<Option<Element>, ImportError> {
+        let expr = self.pin_literal(n, "PT", &what)?;
+        // A literal, or a variable declared with one.
+        let preset_ms = parse_time_literal(&expr)
+            .or_else(|| names.initial(&expr).and_then(parse_time_literal))
+            .ok_or_else(|| ImportError::BadTimeLiteral(what.to_string(), expr.to_string()))?;
+        let kind = match ty {
+            "TON" => TimerKind::Ton,
+            "TOF" => TimerKind::Tof,
+            _ => TimerKind::Tp,
+        };
+        // A TOF or TP mapped to a timer and a relay (`T01+M20`):
+        // built from the machine's on-delay timer coil.
+        if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == "TON") {
+            let coil = timer_coil(timer.trim(), preset_ms)?;
+            let kind = GateKind::Delay {
+                coil,
+                timer: timer.trim().to_string(),
+                relay: relay.trim().to_string(),
+                pulse: ty == "TP",
+            };
+            let out = self.point(id, "Q");
+            self.gates.push(Gate {
+                kind,
+                inputs: vec![input],
+                out,
+                pos,
+                line: n.line,
+                what: what.to_string(),
+            });
+            return Ok(None);
+        }
+        Ok(Some(Element::Timer {
+            kind,
+            name: instance.to_string(),
+            preset_ms,
+        }))
     }
 
     /// The point a block's input pin `name` takes power from, or `None`
