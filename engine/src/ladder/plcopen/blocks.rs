@@ -417,63 +417,8 @@ impl Body {
         names: &Names,
     ) -> Result<(), ImportError> {
         let what = format!("{ty} block");
-        let pins: Vec<&str> = n
-            .child("inputVariables")
-            .map(|v| {
-                v.all("variable")
-                    .filter_map(|p| p.attr("formalParameter"))
-                    // EN is read with the body (`check_enable`).
-                    .filter(|p| *p != "EN")
-                    .collect()
-            })
-            .unwrap_or_default();
-        let takes = if ty == "NE" { "two" } else { "two or more" };
-        if pins.len() < 2 || (ty == "NE" && pins.len() != 2) {
-            return Err(ImportError::Gate(
-                what,
-                format!("it has {} inputs: {ty} compares {takes}", pins.len()),
-            ));
-        }
-        if pins.len() > COMPARED.len() || pins.iter().zip(COMPARED).any(|(p, c)| *p != c) {
-            return Err(ImportError::Gate(
-                what,
-                format!(
-                    "its inputs are {}: Hashigo reads IN1, IN2, … up to IN{}, in order",
-                    pins.join(", "),
-                    COMPARED.len()
-                ),
-            ));
-        }
-        let mut operands = Vec::new();
-        for pin in COMPARED.into_iter().take(pins.len()) {
-            let expr = self.pin_literal(n, pin, &what)?;
-            let operand = self.word_operand(&expr, names).map_err(|why| {
-                ImportError::Gate(
-                    what.clone(),
-                    format!("{pin} {}: {why}", crate::shown(&expr)),
-                )
-            })?;
-            if matches!(operand.0.as_str(), "D06" | "D07") && expr != operand.0 {
-                let input = if operand.0 == "D06" { "X04" } else { "X05" };
-                self.warnings.push(Located::new(
-                    n.line,
-                    format!(
-                        "{expr} is {}, {input}'s analog value: set {input}'s analog range ({input}A:n1:n2) so that it counts in the file's units",
-                        operand.0
-                    ),
-                ));
-            }
-            if operand.1 {
-                self.warnings.push(Located::new(
-                    n.line,
-                    format!(
-                        "{what}'s {pin} is {}, the value {expr} is declared with (nothing in the program writes it)",
-                        operand.0
-                    ),
-                ));
-            }
-            operands.push(operand.0);
-        }
+        let count = compare_pins(n, ty, &what)?;
+        let operands = self.compare_operands(n, count, &what, names)?;
         let out = self.point(id, "OUT");
         let pairs = operands.len() - 1;
         let results: Vec<usize> = if pairs == 1 {
@@ -508,6 +453,48 @@ impl Body {
             });
         }
         Ok(())
+    }
+
+    /// Each operand of a comparison as IO86A names it, saying where one is
+    /// an analog input or a variable's declared value.
+    fn compare_operands(
+        &mut self,
+        n: &Node,
+        count: usize,
+        what: &str,
+        names: &Names,
+    ) -> Result<Vec<String>, ImportError> {
+        let mut operands = Vec::new();
+        for pin in COMPARED.into_iter().take(count) {
+            let expr = self.pin_literal(n, pin, what)?;
+            let operand = self.word_operand(&expr, names).map_err(|why| {
+                ImportError::Gate(
+                    what.to_string(),
+                    format!("{pin} {}: {why}", crate::shown(&expr)),
+                )
+            })?;
+            if matches!(operand.0.as_str(), "D06" | "D07") && expr != operand.0 {
+                let input = if operand.0 == "D06" { "X04" } else { "X05" };
+                self.warnings.push(Located::new(
+                    n.line,
+                    format!(
+                        "{expr} is {}, {input}'s analog value: set {input}'s analog range ({input}A:n1:n2) so that it counts in the file's units",
+                        operand.0
+                    ),
+                ));
+            }
+            if operand.1 {
+                self.warnings.push(Located::new(
+                    n.line,
+                    format!(
+                        "{what}'s {pin} is {}, the value {expr} is declared with (nothing in the program writes it)",
+                        operand.0
+                    ),
+                ));
+            }
+            operands.push(operand.0);
+        }
+        Ok(operands)
     }
 
     /// A comparison's operand as IO86A names it, and whether it is a
@@ -602,4 +589,37 @@ impl Body {
         });
         Ok(())
     }
+}
+
+/// How many operands a comparison block has: IN1, IN2, … in order (EN
+/// aside); NE takes two, the others two or more.
+fn compare_pins(n: &Node, ty: &str, what: &str) -> Result<usize, ImportError> {
+    let pins: Vec<&str> = n
+        .child("inputVariables")
+        .map(|v| {
+            v.all("variable")
+                .filter_map(|p| p.attr("formalParameter"))
+                // EN is read with the body (`check_enable`).
+                .filter(|p| *p != "EN")
+                .collect()
+        })
+        .unwrap_or_default();
+    let takes = if ty == "NE" { "two" } else { "two or more" };
+    if pins.len() < 2 || (ty == "NE" && pins.len() != 2) {
+        return Err(ImportError::Gate(
+            what.to_string(),
+            format!("it has {} inputs: {ty} compares {takes}", pins.len()),
+        ));
+    }
+    if pins.len() > COMPARED.len() || pins.iter().zip(COMPARED).any(|(p, c)| *p != c) {
+        return Err(ImportError::Gate(
+            what.to_string(),
+            format!(
+                "its inputs are {}: Hashigo reads IN1, IN2, … up to IN{}, in order",
+                pins.join(", "),
+                COMPARED.len()
+            ),
+        ));
+    }
+    Ok(pins.len())
 }
