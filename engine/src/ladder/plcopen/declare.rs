@@ -317,28 +317,7 @@ pub fn propose_in(
     let names = names(root, machine, map);
     let mut taken = names.taken();
     // Every name the bodies use for power, and whether something writes it.
-    let mut used: Vec<(String, bool)> = Vec::new();
-    let mut note = |name: &str, writes: bool| {
-        let name = name.trim();
-        match used.iter_mut().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
-            Some((_, w)) => *w |= writes,
-            None if !name.is_empty() => used.push((name.to_string(), writes)),
-            None => {}
-        }
-    };
-    for (tag, child, writes) in [
-        ("contact", "variable", false),
-        ("coil", "variable", true),
-        ("outVariable", "expression", true),
-    ] {
-        let mut found = Vec::new();
-        scope.descendants(tag, &mut found);
-        for n in found {
-            if let Some(v) = n.child(child) {
-                note(&v.text, writes);
-            }
-        }
-    }
+    let used = used_names(scope);
     let written: HashSet<String> = used
         .iter()
         .filter(|(_, w)| *w)
@@ -351,23 +330,8 @@ pub fn propose_in(
             .filter(|(n, _)| check_element(machine, &Element::no(n)).is_ok())
             .map(|(n, _)| n.to_ascii_uppercase()),
     );
-    let mut blocks = Vec::new();
-    scope.descendants("block", &mut blocks);
-    let mut instances: Vec<(String, String)> = Vec::new();
-    for b in blocks {
-        let (Some(ty), Some(name)) = (b.attr("typeName"), b.attr("instanceName")) else {
-            continue;
-        };
-        if !name.is_empty() && !instances.iter().any(|(n, _)| n.eq_ignore_ascii_case(name)) {
-            instances.push((name.to_string(), ty.to_ascii_uppercase()));
-        }
-    }
+    let instances = block_instances(scope);
     let pools = Pools::of(machine);
-    let next = |pool: &[String], taken: &mut HashSet<String>| {
-        let free = pool.iter().find(|d| !taken.contains(*d))?.clone();
-        taken.insert(free.clone());
-        Some(free)
-    };
     let mut out: Vec<(String, String)> = Vec::new();
     // Declared BOOLs with no device (or an address the machine lacks),
     // then names the bodies use without declaring them.
@@ -410,6 +374,30 @@ pub fn propose_in(
             out.push((name, d));
         }
     }
+    out.extend(propose_instances(
+        &names, machine, instances, &pools, &mut taken,
+    ));
+    out
+}
+
+/// The first device of `pool` not `taken`, then taken.
+fn next(pool: &[String], taken: &mut HashSet<String>) -> Option<String> {
+    let free = pool.iter().find(|d| !taken.contains(*d))?.clone();
+    taken.insert(free.clone());
+    Some(free)
+}
+
+/// A device for each block instance neither mapped nor named as a device:
+/// the next free timer, counter or relay (IO86A's TOF and TP a timer and a
+/// relay, `T01+M20`).
+fn propose_instances(
+    names: &Names,
+    machine: MachineId,
+    instances: Vec<(String, String)>,
+    pools: &Pools,
+    taken: &mut HashSet<String>,
+) -> Vec<(String, String)> {
+    let mut out = Vec::new();
     for (name, ty) in instances {
         if names.instance(&name).is_some() || check_element(machine, &Element::no(&name)).is_ok() {
             continue;
@@ -417,8 +405,8 @@ pub fn propose_in(
         // IO86A's timers are on-delay: a TOF or TP also holds its output
         // in a relay (`T01+M20`).
         if machine == MachineId::Io86a && matches!(ty.as_str(), "TOF" | "TP") {
-            let timer = next(&pools.timers, &mut taken);
-            let relay = next(&pools.relays, &mut taken);
+            let timer = next(&pools.timers, taken);
+            let relay = next(&pools.relays, taken);
             if let (Some(t), Some(m)) = (timer, relay) {
                 out.push((name, format!("{t}+{m}")));
             }
@@ -430,11 +418,55 @@ pub fn propose_in(
             "SR" | "RS" => &pools.relays,
             _ => continue,
         };
-        if let Some(d) = next(pool, &mut taken) {
+        if let Some(d) = next(pool, taken) {
             out.push((name, d));
         }
     }
     out
+}
+
+/// Every name `scope`'s bodies use for power (contacts, coils, output
+/// boxes), once each, and whether something writes it.
+fn used_names(scope: &Node) -> Vec<(String, bool)> {
+    let mut used: Vec<(String, bool)> = Vec::new();
+    let mut note = |name: &str, writes: bool| {
+        let name = name.trim();
+        match used.iter_mut().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
+            Some((_, w)) => *w |= writes,
+            None if !name.is_empty() => used.push((name.to_string(), writes)),
+            None => {}
+        }
+    };
+    for (tag, child, writes) in [
+        ("contact", "variable", false),
+        ("coil", "variable", true),
+        ("outVariable", "expression", true),
+    ] {
+        let mut found = Vec::new();
+        scope.descendants(tag, &mut found);
+        for n in found {
+            if let Some(v) = n.child(child) {
+                note(&v.text, writes);
+            }
+        }
+    }
+    used
+}
+
+/// Every block instance `scope` names, once each, with its type.
+fn block_instances(scope: &Node) -> Vec<(String, String)> {
+    let mut blocks = Vec::new();
+    scope.descendants("block", &mut blocks);
+    let mut instances: Vec<(String, String)> = Vec::new();
+    for b in blocks {
+        let (Some(ty), Some(name)) = (b.attr("typeName"), b.attr("instanceName")) else {
+            continue;
+        };
+        if !name.is_empty() && !instances.iter().any(|(n, _)| n.eq_ignore_ascii_case(name)) {
+            instances.push((name.to_string(), ty.to_ascii_uppercase()));
+        }
+    }
+    instances
 }
 
 /// A machine's devices by kind, in the order proposals take them.
