@@ -145,49 +145,10 @@ impl Compiler {
             self.ops.push(Op::Comment(logic.comment.clone()));
         }
         let items = series_items(&logic.condition);
-        // In-line boxes act on the running result: only on the main line.
-        for item in &items {
-            if matches!(item, Net::Series(_) | Net::Parallel(_)) && !is_pure(item) {
-                let pos = item
-                    .leaves()
-                    .into_iter()
-                    .find(|(e, _)| !matches!(e, Element::Contact { .. }))
-                    .map(|(_, p)| p);
-                return Err((
-                    pos,
-                    "an in-line box (NOT, edge, timer) must stand on the rung's main line, not in a parallel branch".into(),
-                ));
-            }
-        }
-        if let Some(Net::Leaf(e, p)) = items.first() {
-            if !matches!(e, Element::Contact { .. }) {
-                return Err((Some(*p), "an in-line box needs a contact before it".into()));
-            }
-        }
+        check_main_line(&items)?;
         // Edge contacts: computed before the rung into temporaries.
         let mut held = Vec::new();
-        let mut edge_error = None;
-        let items: Vec<Net> = {
-            let mut edge = |kind: ContactKind, device: &str| -> Result<String, String> {
-                let t = self.edge_prelude(kind, device)?;
-                held.push(t.clone());
-                Ok(t)
-            };
-            let mut out = Vec::new();
-            for item in &items {
-                match replace_edges(item, &mut edge) {
-                    Ok(n) => out.push(n),
-                    Err(m) => {
-                        edge_error = Some((Some(item.first_pos()), m));
-                        break;
-                    }
-                }
-            }
-            out
-        };
-        if let Some(e) = edge_error {
-            return Err(e);
-        }
+        let items = self.edges_first(&items, &mut held)?;
         // Groups after the first in-line box: computed beforehand too.
         let first_box = items
             .iter()
@@ -237,6 +198,38 @@ impl Compiler {
             self.temps.give(t);
         }
         Ok(())
+    }
+
+    /// The rung's series items with each edge contact replaced by a
+    /// temporary computed before the rung (its name added to `held`).
+    fn edges_first(
+        &mut self,
+        items: &[Net],
+        held: &mut Vec<String>,
+    ) -> Result<Vec<Net>, (Option<Pos>, String)> {
+        let mut edge_error = None;
+        let out: Vec<Net> = {
+            let mut edge = |kind: ContactKind, device: &str| -> Result<String, String> {
+                let t = self.edge_prelude(kind, device)?;
+                held.push(t.clone());
+                Ok(t)
+            };
+            let mut out = Vec::new();
+            for item in items {
+                match replace_edges(item, &mut edge) {
+                    Ok(n) => out.push(n),
+                    Err(m) => {
+                        edge_error = Some((Some(item.first_pos()), m));
+                        break;
+                    }
+                }
+            }
+            out
+        };
+        match edge_error {
+            Some(e) => Err(e),
+            None => Ok(out),
+        }
     }
 
     /// Code computing a rising / falling contact into a temporary.
@@ -523,4 +516,28 @@ fn timer_scans(kind: TimerKind, preset_ms: u32, scan_ms: u32) -> Result<u16, Str
 /// A comment on one line (newlines would end the `;` comment).
 pub(crate) fn one_line(text: &str) -> String {
     text.replace(['\n', '\r'], " ")
+}
+
+/// In-line boxes act on the running result: they stand on the rung's
+/// main line only, after a contact.
+fn check_main_line(items: &[Net]) -> Result<(), (Option<Pos>, String)> {
+    for item in items {
+        if matches!(item, Net::Series(_) | Net::Parallel(_)) && !is_pure(item) {
+            let pos = item
+                .leaves()
+                .into_iter()
+                .find(|(e, _)| !matches!(e, Element::Contact { .. }))
+                .map(|(_, p)| p);
+            return Err((
+                pos,
+                "an in-line box (NOT, edge, timer) must stand on the rung's main line, not in a parallel branch".into(),
+            ));
+        }
+    }
+    if let Some(Net::Leaf(e, p)) = items.first() {
+        if !matches!(e, Element::Contact { .. }) {
+            return Err((Some(*p), "an in-line box needs a contact before it".into()));
+        }
+    }
+    Ok(())
 }
