@@ -239,55 +239,8 @@ fn build(mut arena: Vec<Node>, root: usize) -> Result<Net, NetError> {
                 let depth = net.depth();
                 (net, depth)
             }
-            Part::Series(a, b) => {
-                let mut items = Vec::new();
-                let mut depth = 0;
-                // Left to right through the nested series parts.
-                let mut walk = vec![b, a];
-                while let Some(c) = walk.pop() {
-                    if let Part::Series(l, r) = arena[c].part {
-                        walk.extend([r, l]);
-                        continue;
-                    }
-                    let Some((net, d)) = done[c].take() else {
-                        continue;
-                    };
-                    match net {
-                        Net::Series(v) => {
-                            depth = depth.max(d);
-                            items.extend(v);
-                        }
-                        other => {
-                            depth = depth.max(d + 1);
-                            items.push(other);
-                        }
-                    }
-                }
-                (Net::Series(items), depth)
-            }
-            Part::Parallel(_) => {
-                let mut items = Vec::new();
-                let mut depth = 0;
-                for c in children {
-                    let Some((net, d)) = done[c].take() else {
-                        continue;
-                    };
-                    match net {
-                        // Branches of a parallel branch sort with the rest.
-                        Net::Parallel(v) => {
-                            depth = depth.max(d);
-                            items.extend(v.into_iter().map(|n| (n.top_left(), n)));
-                        }
-                        other => {
-                            depth = depth.max(d + 1);
-                            items.push((arena[c].key, other));
-                        }
-                    }
-                }
-                items.sort_by_key(|(k, _)| *k);
-                let items = items.into_iter().map(|(_, n)| n).collect();
-                (Net::Parallel(items), depth)
-            }
+            Part::Series(a, b) => joined_series(&arena, &mut done, (a, b)),
+            Part::Parallel(_) => joined_parallel(&arena, &mut done, children),
         };
         if finished.1 > MAX_NESTING {
             return Err(NetError::TooDeep(key));
@@ -298,6 +251,64 @@ fn build(mut arena: Vec<Node>, root: usize) -> Result<Net, NetError> {
         .take()
         .map(|(net, _)| net)
         .ok_or(NetError::NotSeriesParallel(Pos::new(0, 0)))
+}
+
+/// A finished part with its depth, as [`build`] keeps them.
+type Finished = Option<(Net, usize)>;
+
+/// A series part's finished net: its nested series parts flattened, left
+/// to right.
+fn joined_series(arena: &[Node], done: &mut [Finished], (a, b): (usize, usize)) -> (Net, usize) {
+    let mut items = Vec::new();
+    let mut depth = 0;
+    // Left to right through the nested series parts.
+    let mut walk = vec![b, a];
+    while let Some(c) = walk.pop() {
+        if let Part::Series(l, r) = arena[c].part {
+            walk.extend([r, l]);
+            continue;
+        }
+        let Some((net, d)) = done[c].take() else {
+            continue;
+        };
+        match net {
+            Net::Series(v) => {
+                depth = depth.max(d);
+                items.extend(v);
+            }
+            other => {
+                depth = depth.max(d + 1);
+                items.push(other);
+            }
+        }
+    }
+    (Net::Series(items), depth)
+}
+
+/// A parallel part's finished net: branches of parallel branches sorted
+/// with the rest, top to bottom.
+fn joined_parallel(arena: &[Node], done: &mut [Finished], children: Vec<usize>) -> (Net, usize) {
+    let mut items = Vec::new();
+    let mut depth = 0;
+    for c in children {
+        let Some((net, d)) = done[c].take() else {
+            continue;
+        };
+        match net {
+            // Branches of a parallel branch sort with the rest.
+            Net::Parallel(v) => {
+                depth = depth.max(d);
+                items.extend(v.into_iter().map(|n| (n.top_left(), n)));
+            }
+            other => {
+                depth = depth.max(d + 1);
+                items.push((arena[c].key, other));
+            }
+        }
+    }
+    items.sort_by_key(|(k, _)| *k);
+    let items = items.into_iter().map(|(_, n)| n).collect();
+    (Net::Parallel(items), depth)
 }
 
 /// The points reachable from `start` along the edges, in `forward`
