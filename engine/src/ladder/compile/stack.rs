@@ -326,31 +326,12 @@ impl Compiler {
                 return Err((*p, format!("{e} is not an output of arduino-plc")));
             }
         }
-        // The first normal (or inverted) coil whose pin no other output of
-        // the rung drives then stands for the result: later outputs reload it.
-        let sole = |i: usize| {
-            let d = outputs[i].0.written_device();
-            outputs
-                .iter()
-                .enumerate()
-                .all(|(j, (e, _))| j == i || e.written_device() != d)
-        };
-        let coil_of = |kind: CoilKind| {
-            (0..outputs.len()).find(|&i| {
-                sole(i) && matches!(&outputs[i].0, Element::Coil { kind: k, .. } if *k == kind)
-            })
-        };
-        let anchor = coil_of(CoilKind::Normal).or_else(|| coil_of(CoilKind::Inverted));
         let reads: Vec<String> = cond
             .leaves()
             .iter()
             .filter_map(|(e, _)| e.read_device().map(String::from))
             .collect();
-        let mut order: Vec<usize> = (0..outputs.len()).collect();
-        if let Some(a) = anchor {
-            order.retain(|&i| i != a);
-            order.insert(0, a);
-        }
+        let (order, anchor) = arduino_order(outputs);
         let mut source: Option<(String, bool)> = None; // (pin, holds !result)
         for (n, &i) in order.iter().enumerate() {
             let (e, p) = &outputs[i];
@@ -402,4 +383,29 @@ impl Compiler {
         }
         Ok(())
     }
+}
+
+/// The order an Arduino rung's outputs are written in, and the one that
+/// stands for the result (first): the first normal (or inverted) coil
+/// whose pin no other output of the rung drives; later outputs reload it.
+fn arduino_order(outputs: &[(Element, Pos)]) -> (Vec<usize>, Option<usize>) {
+    let sole = |i: usize| {
+        let d = outputs[i].0.written_device();
+        outputs
+            .iter()
+            .enumerate()
+            .all(|(j, (e, _))| j == i || e.written_device() != d)
+    };
+    let coil_of = |kind: CoilKind| {
+        (0..outputs.len()).find(|&i| {
+            sole(i) && matches!(&outputs[i].0, Element::Coil { kind: k, .. } if *k == kind)
+        })
+    };
+    let anchor = coil_of(CoilKind::Normal).or_else(|| coil_of(CoilKind::Inverted));
+    let mut order: Vec<usize> = (0..outputs.len()).collect();
+    if let Some(a) = anchor {
+        order.retain(|&i| i != a);
+        order.insert(0, a);
+    }
+    (order, anchor)
 }
