@@ -8,6 +8,7 @@
 mod address;
 mod blocks;
 mod body;
+mod compare;
 pub mod declare;
 pub mod dom;
 pub mod error;
