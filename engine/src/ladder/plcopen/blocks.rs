@@ -9,6 +9,7 @@ use super::compare::compare_flag;
 use super::declare::Names;
 use super::dom::Node;
 use super::error::ImportError;
+use super::kinds::BlockKind;
 use super::parse_time_literal;
 use super::parts::{coil, edge, negated, timer_coil};
 use crate::ladder::element::{CoilKind, Element, TimerKind};
@@ -17,12 +18,12 @@ use crate::ladder::net::Net;
 
 /// The boolean block `ty` as a gate, if it is one; a flip-flop needs a
 /// relay from the map for its instance.
-fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, ImportError> {
+fn gate_kind(ty: BlockKind, relay: &str, written: &str) -> Result<Option<GateKind>, ImportError> {
     Ok(Some(match ty {
-        "AND" => GateKind::And,
-        "OR" => GateKind::Or,
-        "XOR" => GateKind::Xor,
-        "SR" | "RS" => {
+        BlockKind::And => GateKind::And,
+        BlockKind::Or => GateKind::Or,
+        BlockKind::Xor => GateKind::Xor,
+        BlockKind::Sr | BlockKind::Rs => {
             if relay == written {
                 return Err(ImportError::Gate(
                     format!("{ty} block {written}"),
@@ -31,7 +32,7 @@ fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, I
             }
             GateKind::Flip {
                 relay: relay.to_string(),
-                set_wins: ty == "SR",
+                set_wins: ty == BlockKind::Sr,
             }
         }
         _ => return Ok(None),
@@ -40,7 +41,7 @@ fn gate_kind(ty: &str, relay: &str, written: &str) -> Result<Option<GateKind>, I
 
 /// `TOF block TOF0`, with the device the map gives it when another
 /// (`TOF block TOF0 (T01+M20)`).
-fn block_label(ty: &str, written: &str, instance: &str) -> String {
+fn block_label(ty: BlockKind, written: &str, instance: &str) -> String {
     match (written.trim(), instance) {
         ("", d) => format!("{ty} block {d}"),
         (w, d) if w == d => format!("{ty} block {w}"),
@@ -82,7 +83,7 @@ pub(super) fn pin_of<'a>(n: &'a Node, name: &str) -> Option<&'a Node> {
 /// without it): a NOT, R_TRIG or F_TRIG block in front says the same.
 /// A rising mark on a counter's CU or CD is what the counter does.
 /// A mark that is no XML boolean or edge is refused, as on a contact.
-pub(super) fn plain_pins(n: &Node, ty: &str) -> Result<(), ImportError> {
+pub(super) fn plain_pins(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
     let pins = ["inputVariables", "outputVariables"]
         .into_iter()
         .filter_map(|side| n.child(side))
@@ -125,7 +126,7 @@ impl Body {
     /// open, or from the rail, a literal TRUE or an always-running
     /// block's ENO, it always runs, as Hashigo's blocks do; wired to
     /// anything else it is refused (never ignored).
-    fn check_enable(&self, id: &str, ty: &str, instance: &str) -> Result<(), ImportError> {
+    fn check_enable(&self, id: &str, ty: BlockKind, instance: &str) -> Result<(), ImportError> {
         let refs = self.enables.get(id).map_or(&[][..], Vec::as_slice);
         if self.always_enabled(refs, 0) {
             return Ok(());
@@ -163,7 +164,7 @@ impl Body {
         id: &str,
         pos: Pos,
         kind: GateKind,
-        ty: &str,
+        ty: BlockKind,
         instance: &str,
     ) -> Result<(), ImportError> {
         let what = format!("{ty} block {instance}").trim().to_string();
@@ -173,8 +174,8 @@ impl Body {
             .unwrap_or_default();
         let order: Vec<&str> = match kind {
             GateKind::Flip { .. } => vec![
-                if ty == "SR" { "S1" } else { "S" },
-                if ty == "SR" { "R" } else { "R1" },
+                if ty == BlockKind::Sr { "S1" } else { "S" },
+                if ty == BlockKind::Sr { "R" } else { "R1" },
             ],
             _ => pins
                 .iter()
@@ -217,31 +218,32 @@ impl Body {
         id: &str,
         pos: Pos,
         names: &Names,
+        ty: BlockKind,
     ) -> Result<(), ImportError> {
-        let ty = n.attr("typeName").unwrap_or_default().to_ascii_uppercase();
         let written = n.attr("instanceName").unwrap_or_default();
         // A map may give the instance a device (`TON0,T00`).
         let instance = names
             .instance(written)
             .unwrap_or_else(|| written.to_string());
-        self.check_enable(id, &ty, written)?;
-        if let Some(kind) = gate_kind(&ty, &instance, written)? {
-            return self.gate(n, id, pos, kind, &ty, written);
+        self.check_enable(id, ty, written)?;
+        if let Some(kind) = gate_kind(ty, &instance, written)? {
+            return self.gate(n, id, pos, kind, ty, written);
         }
-        if let Some(flag) = compare_flag(&ty) {
-            return self.compare(n, id, pos, flag, &ty, names);
+        if let BlockKind::Compare(c) = ty {
+            return self.compare(n, id, pos, compare_flag(c), ty, names);
         }
-        if ty == "CTD" || ty == "CTUD" {
-            let what = block_label(&ty, written, &instance);
-            return self.count(n, id, pos, (&ty, &instance, what), names);
+        if matches!(ty, BlockKind::Ctd | BlockKind::Ctud) {
+            let what = block_label(ty, written, &instance);
+            return self.count(n, id, pos, (ty, &instance, what), names);
         }
-        let (power_in, power_out) = match ty.as_str() {
-            "TON" | "TOF" | "TP" | "NOT" => ("IN", if ty == "NOT" { "OUT" } else { "Q" }),
-            "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
-            "CTU" => ("CU", "Q"),
-            _ => return Err(ImportError::UnsupportedBlock(ty)),
+        let (power_in, power_out) = match ty {
+            BlockKind::Ton | BlockKind::Tof | BlockKind::Tp => ("IN", "Q"),
+            BlockKind::Not => ("IN", "OUT"),
+            BlockKind::RTrig | BlockKind::FTrig => ("CLK", "Q"),
+            BlockKind::Ctu => ("CU", "Q"),
+            _ => return Err(ImportError::UnsupportedBlock(ty.name().to_string())),
         };
-        let what = block_label(&ty, written, &instance);
+        let what = block_label(ty, written, &instance);
         let input = self.join(
             pin_of(n, power_in).and_then(|v| v.child("connectionPointIn")),
             &what,
@@ -249,7 +251,7 @@ impl Body {
         self.consumed.push(input);
         // A counter's R: a reset coil on the counter, fed as R is (a
         // literal FALSE resets nothing).
-        if ty == "CTU" {
+        if ty == BlockKind::Ctu {
             if let Some(p) = self.power_pin(n, "R", &what)? {
                 let at = Pos::new(pos.row, pos.col.wrapping_add(1));
                 self.gates.push(Gate {
@@ -262,23 +264,23 @@ impl Body {
                 });
             }
         }
-        let element = match ty.as_str() {
-            "TON" | "TOF" | "TP" => {
-                match self.timer_block(n, (id, pos), (&ty, &instance), &what, input, names)? {
+        let element = match ty {
+            BlockKind::Ton | BlockKind::Tof | BlockKind::Tp => {
+                match self.timer_block(n, (id, pos), (ty, &instance), &what, input, names)? {
                     Some(timer) => timer,
                     // A TOF or TP built as a gate (lowered later).
                     None => return Ok(()),
                 }
             }
-            "CTU" => {
+            BlockKind::Ctu => {
                 let expr = self.pin_literal(n, "PV", &what)?;
                 Element::CounterCoil {
                     device: instance.clone(),
                     preset: counter_preset(&expr, names, &what)?,
                 }
             }
-            "R_TRIG" | "F_TRIG" => Element::Edge {
-                falling: ty == "F_TRIG",
+            BlockKind::RTrig | BlockKind::FTrig => Element::Edge {
+                falling: ty == BlockKind::FTrig,
             },
             _ => Element::Not,
         };
@@ -296,7 +298,7 @@ impl Body {
         &mut self,
         n: &Node,
         (id, pos): (&str, Pos),
-        (ty, instance): (&str, &str),
+        (ty, instance): (BlockKind, &str),
         what: &str,
         input: usize,
         names: &Names,
@@ -307,19 +309,19 @@ impl Body {
             .or_else(|| names.initial(&expr).and_then(parse_time_literal))
             .ok_or_else(|| ImportError::BadTimeLiteral(what.to_string(), expr.to_string()))?;
         let kind = match ty {
-            "TON" => TimerKind::Ton,
-            "TOF" => TimerKind::Tof,
+            BlockKind::Ton => TimerKind::Ton,
+            BlockKind::Tof => TimerKind::Tof,
             _ => TimerKind::Tp,
         };
         // A TOF or TP mapped to a timer and a relay (`T01+M20`):
         // built from the machine's on-delay timer coil.
-        if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == "TON") {
+        if let (Some((timer, relay)), false) = (instance.split_once('+'), ty == BlockKind::Ton) {
             let coil = timer_coil(timer.trim(), preset_ms)?;
             let kind = GateKind::Delay {
                 coil,
                 timer: timer.trim().to_string(),
                 relay: relay.trim().to_string(),
-                pulse: ty == "TP",
+                pulse: ty == BlockKind::Tp,
             };
             let out = self.point(id, "Q");
             self.gates.push(Gate {
@@ -393,10 +395,10 @@ impl Body {
         n: &Node,
         id: &str,
         pos: Pos,
-        (ty, instance, what): (&str, &str, String),
+        (ty, instance, what): (BlockKind, &str, String),
         names: &Names,
     ) -> Result<(), ImportError> {
-        let down = ty == "CTD";
+        let down = ty == BlockKind::Ctd;
         let preset = counter_preset(&self.pin_literal(n, "PV", &what)?, names, &what)?;
         let count_pin = if down { "CD" } else { "CU" };
         let input = self

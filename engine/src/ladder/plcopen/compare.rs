@@ -6,6 +6,7 @@ use super::body::{Body, Gate, GateKind};
 use super::declare::Names;
 use super::dom::Node;
 use super::error::ImportError;
+use super::kinds::{BlockKind, Comparison};
 use super::parts::is_variable_name;
 use crate::error::Located;
 use crate::ladder::grid::Pos;
@@ -20,16 +21,15 @@ const COMPARED: [&str; 8] = ["IN1", "IN2", "IN3", "IN4", "IN5", "IN6", "IN7", "I
 /// The flag IO86A's `CMP a b` leaves for a comparison block, and
 /// whether the block is true when it is on (M60 a > b, M61 a = b, M62
 /// a < b; GE is "not a < b").
-pub(super) fn compare_flag(ty: &str) -> Option<(&'static str, bool)> {
-    Some(match ty {
-        "GT" => ("M60", true),
-        "GE" => ("M62", false),
-        "EQ" => ("M61", true),
-        "NE" => ("M61", false),
-        "LE" => ("M60", false),
-        "LT" => ("M62", true),
-        _ => return None,
-    })
+pub(super) fn compare_flag(c: Comparison) -> (&'static str, bool) {
+    match c {
+        Comparison::Gt => ("M60", true),
+        Comparison::Ge => ("M62", false),
+        Comparison::Eq => ("M61", true),
+        Comparison::Ne => ("M61", false),
+        Comparison::Le => ("M60", false),
+        Comparison::Lt => ("M62", true),
+    }
 }
 
 impl Body {
@@ -44,7 +44,7 @@ impl Body {
         id: &str,
         pos: Pos,
         flag: (&'static str, bool),
-        ty: &str,
+        ty: BlockKind,
         names: &Names,
     ) -> Result<(), ImportError> {
         let what = format!("{ty} block");
@@ -170,7 +170,7 @@ impl Body {
 
 /// How many operands a comparison block has: IN1, IN2, … in order (EN
 /// aside); NE takes two, the others two or more.
-fn compare_pins(n: &Node, ty: &str, what: &str) -> Result<usize, ImportError> {
+fn compare_pins(n: &Node, ty: BlockKind, what: &str) -> Result<usize, ImportError> {
     let pins: Vec<&str> = n
         .child("inputVariables")
         .map(|v| {
@@ -181,8 +181,9 @@ fn compare_pins(n: &Node, ty: &str, what: &str) -> Result<usize, ImportError> {
                 .collect()
         })
         .unwrap_or_default();
-    let takes = if ty == "NE" { "two" } else { "two or more" };
-    if pins.len() < 2 || (ty == "NE" && pins.len() != 2) {
+    let ne = ty == BlockKind::Compare(Comparison::Ne);
+    let takes = if ne { "two" } else { "two or more" };
+    if pins.len() < 2 || (ne && pins.len() != 2) {
         return Err(ImportError::Gate(
             what.to_string(),
             format!("it has {} inputs: {ty} compares {takes}", pins.len()),

@@ -13,6 +13,7 @@ use std::collections::{HashMap, HashSet};
 pub use super::address::{located, AddressError};
 use super::address::{AVR_INPUTS, AVR_OUTPUTS, AVR_RELAYS};
 use super::dom::Node;
+use super::kinds::BlockKind;
 pub use super::map_file::{MapError, VarMap};
 use crate::ladder::element::Element;
 use crate::ladder::target::check_element;
@@ -393,7 +394,7 @@ fn next(pool: &[String], taken: &mut HashSet<String>) -> Option<String> {
 fn propose_instances(
     names: &Names,
     machine: MachineId,
-    instances: Vec<(String, String)>,
+    instances: Vec<(String, BlockKind)>,
     pools: &Pools,
     taken: &mut HashSet<String>,
 ) -> Vec<(String, String)> {
@@ -404,7 +405,7 @@ fn propose_instances(
         }
         // IO86A's timers are on-delay: a TOF or TP also holds its output
         // in a relay (`T01+M20`).
-        if machine == MachineId::Io86a && matches!(ty.as_str(), "TOF" | "TP") {
+        if machine == MachineId::Io86a && matches!(ty, BlockKind::Tof | BlockKind::Tp) {
             let timer = next(&pools.timers, taken);
             let relay = next(&pools.relays, taken);
             if let (Some(t), Some(m)) = (timer, relay) {
@@ -412,10 +413,10 @@ fn propose_instances(
             }
             continue;
         }
-        let pool = match ty.as_str() {
-            "TON" | "TOF" | "TP" => &pools.timers,
-            "CTU" | "CTD" | "CTUD" => &pools.counters,
-            "SR" | "RS" => &pools.relays,
+        let pool = match ty {
+            BlockKind::Ton | BlockKind::Tof | BlockKind::Tp => &pools.timers,
+            BlockKind::Ctu | BlockKind::Ctd | BlockKind::Ctud => &pools.counters,
+            BlockKind::Sr | BlockKind::Rs => &pools.relays,
             _ => continue,
         };
         if let Some(d) = next(pool, taken) {
@@ -454,16 +455,20 @@ fn used_names(scope: &Node) -> Vec<(String, bool)> {
 }
 
 /// Every block instance `scope` names, once each, with its type.
-fn block_instances(scope: &Node) -> Vec<(String, String)> {
+fn block_instances(scope: &Node) -> Vec<(String, BlockKind)> {
     let mut blocks = Vec::new();
     scope.descendants("block", &mut blocks);
-    let mut instances: Vec<(String, String)> = Vec::new();
+    let mut instances: Vec<(String, BlockKind)> = Vec::new();
     for b in blocks {
         let (Some(ty), Some(name)) = (b.attr("typeName"), b.attr("instanceName")) else {
             continue;
         };
+        // Blocks Hashigo has no form for take no device (the import says so).
+        let Some(kind) = BlockKind::parse(ty) else {
+            continue;
+        };
         if !name.is_empty() && !instances.iter().any(|(n, _)| n.eq_ignore_ascii_case(name)) {
-            instances.push((name.to_string(), ty.to_ascii_uppercase()));
+            instances.push((name.to_string(), kind));
         }
     }
     instances

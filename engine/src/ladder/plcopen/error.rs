@@ -229,8 +229,8 @@ impl fmt::Display for ImportError {
                 f,
                 "block {} is not supported: Hashigo imports {} and the comparisons {}",
                 shown(ty).trim_matches('"'),
-                super::kinds::KNOWN_BLOCKS.join(", "),
-                super::kinds::COMPARISONS.join(", ")
+                super::kinds::names(false),
+                super::kinds::names(true)
             ),
             E::ProjectBlock(name, language) => write!(
                 f,

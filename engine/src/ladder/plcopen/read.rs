@@ -9,6 +9,7 @@ use super::body::{Body, Gate, GateKind, RAIL};
 use super::declare::Names;
 use super::dom::Node;
 use super::error::{Connection, ImportError};
+use super::kinds::BlockKind;
 use super::parts::*;
 use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
@@ -247,11 +248,9 @@ impl Body {
                 if let Some((name, language)) = own_blocks.get(&ty) {
                     return Err(ImportError::ProjectBlock(name.clone(), language.clone()));
                 }
-                if !super::kinds::is_known(&ty) {
-                    return Err(ImportError::UnsupportedBlock(ty));
-                }
-                blocks::plain_pins(n, &ty)?;
-                self.block(n, &id, pos, names)?
+                let kind = BlockKind::parse(&ty).ok_or(ImportError::UnsupportedBlock(ty))?;
+                blocks::plain_pins(n, kind)?;
+                self.block(n, &id, pos, names, kind)?
             }
             "inVariable" => {
                 negated(n)?;
