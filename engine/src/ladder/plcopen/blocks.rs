@@ -67,7 +67,7 @@ fn counter_preset(expr: &str, names: &Names, what: &str) -> Result<u16, ImportEr
         .ok()
         // PV 0 is done from the start in IEC, while the machines' reset
         // turns a counter's contact off: not the same program.
-        .filter(|&k| (1..=32767).contains(&k))
+        .filter(|&k: &u16| (1..=crate::io86a::isa::K_MAX).contains(&i32::from(k)))
         .ok_or_else(|| ImportError::BadCounterPreset(what.to_string(), expr.to_string()))
 }
 

@@ -3,7 +3,9 @@
 
 use super::dom::Node;
 use super::error::ImportError;
-use crate::io86a::{isa::parse_bit, Bit};
+use crate::io86a::isa::{parse_bit, K_MAX};
+use crate::io86a::machine::Timer;
+use crate::io86a::Bit;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 
@@ -28,7 +30,8 @@ pub(super) fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, ImportEr
     let Ok(Bit::T(n)) = parse_bit(name) else {
         return Err(ImportError::TimerName(name.to_string()));
     };
-    let base = if n < 24 { 100 } else { 10 };
+    // The machine's own rule (T00-T23 count 100 ms, T24-T31 10 ms).
+    let base = (Timer::base(n).as_nanos() / 1_000_000) as u32;
     if !preset_ms.is_multiple_of(base) {
         return Err(ImportError::TimerUnits {
             name: name.to_string(),
@@ -38,7 +41,7 @@ pub(super) fn timer_coil(name: &str, preset_ms: u32) -> Result<Element, ImportEr
     }
     let preset = u16::try_from(preset_ms / base)
         .ok()
-        .filter(|&k| k <= 32767)
+        .filter(|&k| i32::from(k) <= K_MAX)
         .ok_or_else(|| ImportError::TimerTooLong(name.to_string(), preset_ms))?;
     Ok(Element::TimerCoil {
         device: name.to_string(),
