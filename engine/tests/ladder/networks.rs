@@ -527,7 +527,7 @@ const MINASEC: Target = Target {
     // Twelve relays in all: a network may need more than it has.
     may_refuse: &[
         "temporary relays than are free",
-        "none is free",
+        "NoRelay",
         "has no edge contacts",
     ],
     input: |n| format!("X0{n}"),

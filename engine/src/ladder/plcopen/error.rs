@@ -7,9 +7,58 @@ use super::{NS_V10, NS_V201};
 use crate::error::shown;
 use crate::ladder::net::{NetError, TooLarge};
 use crate::ladder::target::ElementError;
-use crate::limits::MAX_RUNGS;
+use crate::limits::{MAX_GATE_WORK, MAX_RUNGS};
 
 pub use super::dom::XmlError;
+
+/// Why a block could not be lowered to ladder (the lowering phase's
+/// error; [`ImportError::Gate`] names the block).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LowerError {
+    /// A pin the block needs is missing.
+    NoPin(&'static str),
+    /// An XOR of more than two inputs.
+    XorInputs,
+    /// A flip-flop without both S and R.
+    FlipPins,
+    /// A comparison on a machine without IO86A's CMP.
+    NoCompare,
+    /// A count gate on something that is not a counter.
+    NotCounter,
+    /// A spare relay is needed and none is free.
+    NoRelay,
+    /// A contact that cannot become the kind needed (why).
+    Contact(&'static str),
+    /// An OR left for the one-by-one lowering (ORs are joined first).
+    OrNotJoined,
+    /// Lowering would pass [`MAX_GATE_WORK`].
+    TooMuchWork,
+}
+
+impl fmt::Display for LowerError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LowerError::NoPin(pin) => write!(f, "no {pin}"),
+            LowerError::XorInputs => f.write_str("XOR of more than two inputs: draw the branches"),
+            LowerError::FlipPins => f.write_str("a flip-flop has S and R"),
+            LowerError::NoCompare => {
+                f.write_str("comparisons need IO86A's CMP and its flags M60-M62")
+            }
+            LowerError::NotCounter => f.write_str("not a counter"),
+            LowerError::NoRelay => f.write_str(
+                "a relay must hold part of it and none is free: map fewer names to relays",
+            ),
+            LowerError::Contact(why) => f.write_str(why),
+            LowerError::OrNotJoined => f.write_str("an OR is lowered with the joins of wires"),
+            LowerError::TooMuchWork => write!(
+                f,
+                "the file's blocks take more than {MAX_GATE_WORK} steps to lower (docs/limits.md)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for LowerError {}
 
 /// Every problem of an import, each at its line.
 pub(super) type Errors = Vec<crate::error::Located<ImportError>>;
@@ -78,6 +127,8 @@ pub enum ImportError {
     Variable(super::declare::NameError),
     /// A boolean block that cannot be lowered (the block, why).
     Gate(String, String),
+    /// A block that could not be lowered (`AND block`, why).
+    Lower(String, LowerError),
     /// `--pou` names no POU of the file (the name, the file's POUs).
     NoSuchPou(String, String),
     /// The programs that run have no LD or FBD body (theirs, the POUs
@@ -200,6 +251,7 @@ impl fmt::Display for ImportError {
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
             E::Variable(why) => why.fmt(f),
             E::Gate(what, why) => write!(f, "{what}: {why}"),
+            E::Lower(what, why) => write!(f, "{what}: {why}"),
             E::NoSuchPou(name, all) => write!(f, "no POU is named {name}: the file has {all}"),
             E::NoDrawnInPrograms(run, ld) => write!(
                 f,

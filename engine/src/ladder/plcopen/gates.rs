@@ -26,6 +26,7 @@
 use std::collections::HashMap;
 
 use super::body::{Body, Gate, GateKind};
+use super::error::LowerError;
 use super::parts::{invert, rising, turned};
 use crate::error::Located;
 use crate::ladder::element::{CoilKind, Element};
@@ -48,15 +49,13 @@ impl Body {
         let gates = std::mem::take(&mut self.gates);
         for g in self.in_flow_order(gates) {
             if self.gate_work > MAX_GATE_WORK {
-                let why = format!(
-                    "the file's blocks take more than {MAX_GATE_WORK} steps to lower (docs/limits.md)"
-                );
-                errors.push(Located::new(g.line, super::ImportError::Gate(g.what, why)));
+                let why = LowerError::TooMuchWork;
+                errors.push(Located::new(g.line, super::ImportError::Lower(g.what, why)));
                 break;
             }
             if let Err(why) = self.lower(&g) {
                 let what = g.what.clone();
-                errors.push(Located::new(g.line, super::ImportError::Gate(what, why)));
+                errors.push(Located::new(g.line, super::ImportError::Lower(what, why)));
             }
         }
         if errors.is_empty() {
@@ -66,12 +65,16 @@ impl Body {
         }
     }
 
-    fn lower(&mut self, g: &Gate) -> Result<(), String> {
+    fn lower(&mut self, g: &Gate) -> Result<(), LowerError> {
         match &g.kind {
             // Taken out and lowered first, with the joins of wires.
-            GateKind::Or => Err("an OR is lowered with the joins of wires".into()),
+            GateKind::Or => Err(LowerError::OrNotJoined),
             GateKind::And => {
-                let mut end = g.inputs.first().copied().ok_or("no inputs")?;
+                let mut end = g
+                    .inputs
+                    .first()
+                    .copied()
+                    .ok_or(LowerError::NoPin("inputs"))?;
                 for (k, &p) in g.inputs.iter().enumerate().skip(1) {
                     if self.reroot(p, end) {
                         end = p;
@@ -86,7 +89,7 @@ impl Body {
             }
             GateKind::Xor => {
                 let [a, b] = g.inputs[..] else {
-                    return Err("XOR of more than two inputs: draw the branches".into());
+                    return Err(LowerError::XorInputs);
                 };
                 let (ca, _, la, _) = self.input_contact(a, g, 1)?;
                 let (cb, _, lb, _) = self.input_contact(b, g, 2)?;
@@ -110,7 +113,7 @@ impl Body {
             } => self.lower_delay(g, coil, timer, relay, *pulse),
             GateKind::Compare { a, b, flag, on } => self.lower_compare(g, a, b, flag, *on),
             GateKind::Reset(coil) => {
-                let p = g.inputs.first().copied().ok_or("no R")?;
+                let p = g.inputs.first().copied().ok_or(LowerError::NoPin("R"))?;
                 let p = self.own_point(p, g, 0)?;
                 self.outputs.push((p, coil.clone(), g.pos, g.line));
                 Ok(())
@@ -123,7 +126,7 @@ impl Body {
             } => self.lower_count(g, counter, *load, *reset, *empty),
             GateKind::Flip { relay, set_wins } => {
                 let [s, r] = g.inputs[..] else {
-                    return Err("a flip-flop has S and R".into());
+                    return Err(LowerError::FlipPins);
                 };
                 let s = self.own_point(s, g, 0)?;
                 let (cr, _, lr, _) = self.input_contact(r, g, 1)?;
@@ -163,9 +166,9 @@ impl Body {
         b: &str,
         flag: &str,
         on: bool,
-    ) -> Result<(), String> {
+    ) -> Result<(), LowerError> {
         if self.machine != Some(MachineId::Io86a) {
-            return Err("comparisons need IO86A's CMP and its flags M60-M62".into());
+            return Err(LowerError::NoCompare);
         }
         let rail = super::body::RAIL;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_sub(k));
@@ -207,12 +210,16 @@ impl Body {
         load: Option<usize>,
         reset: Option<usize>,
         empty: Option<usize>,
-    ) -> Result<(), String> {
+    ) -> Result<(), LowerError> {
         let Element::CounterCoil { device, .. } = counter else {
-            return Err("not a counter".into());
+            return Err(LowerError::NotCounter);
         };
         let rail = super::body::RAIL;
-        let input = g.inputs.first().copied().ok_or("no count input")?;
+        let input = g
+            .inputs
+            .first()
+            .copied()
+            .ok_or(LowerError::NoPin("count input"))?;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
         let reset_coil = |device: &str| Element::Coil {
             kind: CoilKind::Reset,
@@ -279,11 +286,8 @@ impl Body {
     }
 
     /// A spare relay for `what`, noted among the helpers.
-    pub(super) fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, String> {
-        let relay = self
-            .spares
-            .pop()
-            .ok_or("a relay must hold part of it and none is free: map fewer names to relays")?;
+    pub(super) fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, LowerError> {
+        let relay = self.spares.pop().ok_or(LowerError::NoRelay)?;
         self.helpers.push((relay.clone(), what.to_string(), line));
         Ok(relay)
     }
@@ -299,9 +303,9 @@ impl Body {
         timer: &str,
         relay: &str,
         pulse: bool,
-    ) -> Result<(), String> {
+    ) -> Result<(), LowerError> {
         let rail = super::body::RAIL;
-        let input = g.inputs.first().copied().ok_or("no IN")?;
+        let input = g.inputs.first().copied().ok_or(LowerError::NoPin("IN"))?;
         let (c_in, at_in, line, input) = self.input_contact(input, g, 1)?;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
         let set = if pulse { rising(&c_in)? } else { c_in.clone() };
@@ -341,7 +345,7 @@ impl Body {
 
     /// A spare relay that holds the power at point `p` (a coil on it, its
     /// rung run before its readers: [`Body::helpers`]), and its contact.
-    pub(super) fn relay_for(&mut self, p: usize, g: &Gate, at: Pos) -> Result<Element, String> {
+    pub(super) fn relay_for(&mut self, p: usize, g: &Gate, at: Pos) -> Result<Element, LowerError> {
         let relay = self.hold_in_relay(p, &format!("{}'s input", g.what), g.line, at)?;
         Ok(Element::no(&relay))
     }
@@ -354,7 +358,7 @@ impl Body {
         what: &str,
         line: usize,
         at: Pos,
-    ) -> Result<String, String> {
+    ) -> Result<String, LowerError> {
         let relay = self.spare_relay(what, line)?;
         self.consumed.push(p);
         let coil = Element::Coil {
@@ -374,7 +378,7 @@ impl Body {
         p: usize,
         g: &Gate,
         k: usize,
-    ) -> Result<(Element, Pos, usize, usize), String> {
+    ) -> Result<(Element, Pos, usize, usize), LowerError> {
         if let Some((c, at, line)) = self.single_contact(p) {
             return Ok((c, at, line, p));
         }
@@ -388,7 +392,7 @@ impl Body {
     /// something else takes power from `p` too (joining would feed the
     /// other branches' power to it), a new point fed by the contact of a
     /// spare relay holding `p`'s power.
-    fn own_point(&mut self, p: usize, g: &Gate, k: usize) -> Result<usize, String> {
+    fn own_point(&mut self, p: usize, g: &Gate, k: usize) -> Result<usize, LowerError> {
         let takers = self.takers();
         if takers.get(&self.find(p)).copied().unwrap_or(0) <= 1 {
             return Ok(p);
@@ -398,7 +402,13 @@ impl Body {
 
     /// A spare relay holding `p`'s power (input `k` of `g`), and its
     /// contact from point `from` to a new point, which is returned.
-    fn relay_branch(&mut self, p: usize, from: usize, g: &Gate, k: usize) -> Result<usize, String> {
+    fn relay_branch(
+        &mut self,
+        p: usize,
+        from: usize,
+        g: &Gate,
+        k: usize,
+    ) -> Result<usize, LowerError> {
         let at = Pos::new(g.pos.row, g.pos.col.wrapping_sub(k + 1));
         let c = self.relay_for(p, g, at)?;
         let q = self.fresh();

@@ -153,7 +153,7 @@ impl Body {
                         Ok(c) => relayed.entry(p).or_insert(c).clone(),
                         Err(why) => {
                             let what = g.what.clone();
-                            errors.push(Located::new(g.line, super::ImportError::Gate(what, why)));
+                            errors.push(Located::new(g.line, super::ImportError::Lower(what, why)));
                             continue;
                         }
                     },

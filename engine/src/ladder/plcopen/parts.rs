@@ -2,7 +2,7 @@
 //! its negation and edge marks, coils and timer coils it stands for.
 
 use super::dom::Node;
-use super::error::ImportError;
+use super::error::{ImportError, LowerError};
 use crate::io86a::isa::{parse_bit, K_MAX};
 use crate::io86a::machine::Timer;
 use crate::io86a::Bit;
@@ -119,7 +119,7 @@ pub(super) fn position(n: &Node) -> (usize, usize) {
 }
 
 /// The contact that conducts in the scan `c` starts conducting.
-pub(super) fn rising(c: &Element) -> Result<Element, String> {
+pub(super) fn rising(c: &Element) -> Result<Element, LowerError> {
     rekind(c, "IN is already an edge contact", |kind| match kind {
         ContactKind::No => Some(ContactKind::Rising),
         // NC conducts from when the device falls.
@@ -129,7 +129,7 @@ pub(super) fn rising(c: &Element) -> Result<Element, String> {
 }
 
 /// The contact that conducts when `c` does not.
-pub(super) fn invert(c: &Element) -> Result<Element, String> {
+pub(super) fn invert(c: &Element) -> Result<Element, LowerError> {
     rekind(c, "an edge contact cannot be inverted", |kind| match kind {
         ContactKind::No => Some(ContactKind::Nc),
         ContactKind::Nc => Some(ContactKind::No),
@@ -141,15 +141,15 @@ pub(super) fn invert(c: &Element) -> Result<Element, String> {
 /// reason `edge` says).
 pub(super) fn rekind(
     c: &Element,
-    edge: &str,
+    edge: &'static str,
     to: impl Fn(ContactKind) -> Option<ContactKind>,
-) -> Result<Element, String> {
+) -> Result<Element, LowerError> {
     match c {
         Element::Contact { kind, device } => Ok(Element::Contact {
-            kind: to(*kind).ok_or(edge)?,
+            kind: to(*kind).ok_or(LowerError::Contact(edge))?,
             device: device.clone(),
         }),
-        _ => Err("not a contact".into()),
+        _ => Err(LowerError::Contact("not a contact")),
     }
 }
 

@@ -288,7 +288,7 @@ impl Body {
         let what = format!("{e} box's output");
         let relay = self
             .spare_relay(&what, line)
-            .map_err(|why| vec![Located::new(line, ImportError::Gate(e.to_string(), why))])?;
+            .map_err(|why| vec![Located::new(line, ImportError::Lower(e.to_string(), why))])?;
         let q = self.fresh();
         let at_coil = Pos::new(pos.row, pos.col.wrapping_add(1));
         edges.push(Edge {
@@ -323,7 +323,7 @@ impl Body {
         let at = Pos::new(pos.row, pos.col.wrapping_sub(1));
         let device = self
             .hold_in_relay(a, &format!("{what}'s input"), line, at)
-            .map_err(|why| vec![Located::new(line, ImportError::Gate(what, why))])?;
+            .map_err(|why| vec![Located::new(line, ImportError::Lower(what, why))])?;
         let kind = match e {
             Element::Not => ContactKind::Nc,
             Element::Edge { falling: true } => ContactKind::Falling,
