@@ -303,7 +303,7 @@ impl Body {
         input: usize,
         names: &Names,
     ) -> Result<Option<Element>, ImportError> {
-        let expr = self.pin_literal(n, "PT", &what)?;
+        let expr = self.pin_literal(n, "PT", what)?;
         // A literal, or a variable declared with one.
         let preset_ms = parse_time_literal(&expr)
             .or_else(|| names.initial(&expr).and_then(parse_time_literal))
