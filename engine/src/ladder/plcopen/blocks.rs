@@ -285,8 +285,7 @@ impl Body {
             _ => Element::Not,
         };
         let out = self.point(id, power_out);
-        self.edges
-            .push((input, out, Net::Leaf(element, pos), n.line));
+        self.wire(input, out, Net::Leaf(element, pos), n.line);
         Ok(())
     }
 

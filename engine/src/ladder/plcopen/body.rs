@@ -36,10 +36,10 @@ pub(super) struct Body {
     /// the rail, NC when the box is negated (or why the variable has no
     /// device; its place).
     pub(super) variables: HashMap<String, (Result<Element, super::declare::NameError>, Pos)>,
-    /// Contacts and in-line blocks: (in point, out point, leaf, line).
-    pub(super) edges: Vec<(usize, usize, Net, usize)>,
-    /// Outputs: (in point, element, place, line).
-    pub(super) outputs: Vec<(usize, Element, Pos, usize)>,
+    /// Contacts and in-line blocks between points.
+    pub(super) edges: Vec<ElementEdge>,
+    /// Outputs, each on the point feeding it.
+    pub(super) outputs: Vec<Output>,
     /// Points some element takes power from (not the right rail).
     pub(super) consumed: Vec<usize>,
     /// Boolean blocks to lower once every element is read, and the steps
@@ -71,6 +71,32 @@ pub(super) struct Body {
 }
 
 pub(super) const RAIL: usize = 0;
+
+/// A contact or an in-line box between two points of the body.
+#[derive(Clone, Debug)]
+pub(super) struct ElementEdge {
+    /// The point it takes power from.
+    pub(super) from: usize,
+    /// The point it gives power to.
+    pub(super) to: usize,
+    /// The element (a leaf) and its place.
+    pub(super) net: Net,
+    /// Its line in the file.
+    pub(super) line: usize,
+}
+
+/// An output (coil, timer or counter coil) on a point of the body.
+#[derive(Clone, Debug)]
+pub(super) struct Output {
+    /// The point feeding it.
+    pub(super) from: usize,
+    /// The output.
+    pub(super) element: Element,
+    /// Its place.
+    pub(super) pos: Pos,
+    /// Its line in the file.
+    pub(super) line: usize,
+}
 
 /// A boolean block waiting to be lowered.
 #[derive(Clone, Debug)]
@@ -134,6 +160,26 @@ pub(super) enum GateKind {
 }
 
 impl Body {
+    /// Adds a contact or in-line box from point `from` to `to`.
+    pub(super) fn wire(&mut self, from: usize, to: usize, net: Net, line: usize) {
+        self.edges.push(ElementEdge {
+            from,
+            to,
+            net,
+            line,
+        });
+    }
+
+    /// Adds an output fed from point `from`.
+    pub(super) fn output(&mut self, from: usize, element: Element, pos: Pos, line: usize) {
+        self.outputs.push(Output {
+            from,
+            element,
+            pos,
+            line,
+        });
+    }
+
     pub(super) fn point(&mut self, id: &str, pin: &str) -> usize {
         if self.rails.contains(id) {
             return RAIL;
@@ -156,7 +202,7 @@ impl Body {
         let p = self.fresh();
         let line = self.kinds.get(id).map_or(1, |(_, l)| *l);
         self.consumed.push(RAIL);
-        self.edges.push((RAIL, p, Net::Leaf(contact, at), line));
+        self.wire(RAIL, p, Net::Leaf(contact, at), line);
         p
     }
 

@@ -25,7 +25,7 @@
 
 use std::collections::HashMap;
 
-use super::body::{Body, Gate, GateKind};
+use super::body::{Body, ElementEdge, Gate, GateKind};
 use super::error::LowerError;
 use super::parts::{invert, rising, turned};
 use crate::error::Located;
@@ -97,12 +97,10 @@ impl Body {
                 let mid = [self.fresh(), self.fresh()];
                 let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_add(k));
                 let (ka, kb) = (invert(&ca)?, invert(&cb)?);
-                self.edges
-                    .push((super::body::RAIL, mid[0], Net::Leaf(ca, at(1)), la));
-                self.edges.push((mid[0], out, Net::Leaf(kb, at(2)), lb));
-                self.edges
-                    .push((super::body::RAIL, mid[1], Net::Leaf(ka, at(3)), la));
-                self.edges.push((mid[1], out, Net::Leaf(cb, at(4)), lb));
+                self.wire(super::body::RAIL, mid[0], Net::Leaf(ca, at(1)), la);
+                self.wire(mid[0], out, Net::Leaf(kb, at(2)), lb);
+                self.wire(super::body::RAIL, mid[1], Net::Leaf(ka, at(3)), la);
+                self.wire(mid[1], out, Net::Leaf(cb, at(4)), lb);
                 Ok(())
             }
             GateKind::Delay {
@@ -115,7 +113,7 @@ impl Body {
             GateKind::Reset(coil) => {
                 let p = g.inputs.first().copied().ok_or(LowerError::NoPin("R"))?;
                 let p = self.own_point(p, g, 0)?;
-                self.outputs.push((p, coil.clone(), g.pos, g.line));
+                self.output(p, coil.clone(), g.pos, g.line);
                 Ok(())
             }
             GateKind::Count {
@@ -136,22 +134,20 @@ impl Body {
                 if *set_wins {
                     // Q := S or (Q and not R): a branch beside S.
                     let mid = self.fresh();
-                    self.edges
-                        .push((super::body::RAIL, mid, Net::Leaf(held, at(1)), g.line));
-                    self.edges.push((mid, s, Net::Leaf(not_r, at(2)), lr));
+                    self.wire(super::body::RAIL, mid, Net::Leaf(held, at(1)), g.line);
+                    self.wire(mid, s, Net::Leaf(not_r, at(2)), lr);
                     self.union(s, g.out);
                 } else {
                     // Q := (S or Q) and not R: the hold beside S, then not R.
-                    self.edges
-                        .push((super::body::RAIL, s, Net::Leaf(held, at(1)), g.line));
-                    self.edges.push((s, g.out, Net::Leaf(not_r, at(2)), lr));
+                    self.wire(super::body::RAIL, s, Net::Leaf(held, at(1)), g.line);
+                    self.wire(s, g.out, Net::Leaf(not_r, at(2)), lr);
                 }
                 self.consumed.push(g.out);
                 let coil = Element::Coil {
                     kind: CoilKind::Normal,
                     device: relay.clone(),
                 };
-                self.outputs.push((g.out, coil, at(3), g.line));
+                self.output(g.out, coil, at(3), g.line);
                 Ok(())
             }
         }
@@ -173,26 +169,23 @@ impl Body {
         let rail = super::body::RAIL;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_sub(k));
         let cmp = self.fresh();
-        self.edges
-            .push((rail, cmp, Net::Leaf(Element::no("M57"), at(3)), g.line));
+        self.wire(rail, cmp, Net::Leaf(Element::no("M57"), at(3)), g.line);
         let cmp_op = Element::Cmp {
             a: a.to_string(),
             b: b.to_string(),
         };
-        self.outputs.push((cmp, cmp_op, at(3), g.line));
+        self.output(cmp, cmp_op, at(3), g.line);
         let result = self.fresh();
         let flag = if on {
             Element::no(flag)
         } else {
             Element::nc(flag)
         };
-        self.edges
-            .push((rail, result, Net::Leaf(flag, at(2)), g.line));
+        self.wire(rail, result, Net::Leaf(flag, at(2)), g.line);
         self.consumed.extend([rail, cmp, rail, rail]);
         let what = format!("{}'s result", g.what);
         let held = self.hold_in_relay(result, &what, g.line, at(1))?;
-        self.edges
-            .push((rail, g.out, Net::Leaf(Element::no(&held), g.pos), g.line));
+        self.wire(rail, g.out, Net::Leaf(Element::no(&held), g.pos), g.line);
         self.compares
             .push((at(3), held, [a.to_string(), b.to_string()]));
         Ok(())
@@ -229,7 +222,7 @@ impl Body {
             kind: CoilKind::Set,
             device: device.to_string(),
         };
-        self.outputs.push((input, counter.clone(), g.pos, g.line));
+        self.output(input, counter.clone(), g.pos, g.line);
         self.ordered.push(device.clone());
         let takers = self.takers();
         let read = |body: &mut Body, p: usize| takers.contains_key(&body.find(p));
@@ -237,15 +230,13 @@ impl Body {
         if let Some(ld) = load {
             // CTD: LD clears the count; Q = done or never loaded.
             let ld = self.own_point(ld, g, 1)?;
-            self.outputs.push((ld, reset_coil(device), at(1), g.line));
+            self.output(ld, reset_coil(device), at(1), g.line);
             if q_read {
                 let what = format!("whether {} has been loaded", g.what);
                 let relay = self.spare_relay(&what, g.line)?;
-                self.outputs.push((ld, set_coil(&relay), at(2), g.line));
-                self.edges
-                    .push((rail, g.out, Net::Leaf(Element::no(device), at(3)), g.line));
-                self.edges
-                    .push((rail, g.out, Net::Leaf(Element::nc(&relay), at(4)), g.line));
+                self.output(ld, set_coil(&relay), at(2), g.line);
+                self.wire(rail, g.out, Net::Leaf(Element::no(device), at(3)), g.line);
+                self.wire(rail, g.out, Net::Leaf(Element::nc(&relay), at(4)), g.line);
                 self.consumed.extend([rail, rail]);
             }
             return Ok(());
@@ -257,11 +248,10 @@ impl Body {
         }
         if let Some(r) = reset {
             let r = self.own_point(r, g, 1)?;
-            self.outputs.push((r, reset_coil(device), at(1), g.line));
+            self.output(r, reset_coil(device), at(1), g.line);
         }
         if q_read {
-            self.edges
-                .push((rail, g.out, Net::Leaf(Element::no(device), at(3)), g.line));
+            self.wire(rail, g.out, Net::Leaf(Element::no(device), at(3)), g.line);
             self.consumed.push(rail);
         }
         if let Some(e) = empty.filter(|&e| read(self, e)) {
@@ -311,34 +301,29 @@ impl Body {
         let set = if pulse { rising(&c_in)? } else { c_in.clone() };
         let (hold, running) = (self.fresh(), self.fresh());
         // The relay: set by IN (its rise), held until the timer is done.
-        self.edges.push((rail, input, Net::Leaf(set, at_in), line));
-        self.edges
-            .push((rail, hold, Net::Leaf(Element::no(relay), at(1)), g.line));
-        self.edges
-            .push((hold, input, Net::Leaf(Element::nc(timer), at(2)), g.line));
+        self.wire(rail, input, Net::Leaf(set, at_in), line);
+        self.wire(rail, hold, Net::Leaf(Element::no(relay), at(1)), g.line);
+        self.wire(hold, input, Net::Leaf(Element::nc(timer), at(2)), g.line);
         self.consumed.extend([rail, rail, hold, input]);
         let held = Element::Coil {
             kind: CoilKind::Normal,
             device: relay.to_string(),
         };
-        self.outputs.push((input, held, at(3), g.line));
+        self.output(input, held, at(3), g.line);
         // The timer: runs while the relay holds (and, TOF, IN is off).
-        self.edges
-            .push((rail, running, Net::Leaf(Element::no(relay), at(4)), g.line));
+        self.wire(rail, running, Net::Leaf(Element::no(relay), at(4)), g.line);
         let timing = if pulse {
             running
         } else {
             let off = self.fresh();
-            self.edges
-                .push((running, off, Net::Leaf(invert(&c_in)?, at(5)), line));
+            self.wire(running, off, Net::Leaf(invert(&c_in)?, at(5)), line);
             self.consumed.push(running);
             off
         };
         self.consumed.extend([rail, timing]);
-        self.outputs.push((timing, coil.clone(), at(6), g.line));
+        self.output(timing, coil.clone(), at(6), g.line);
         // Q: the relay.
-        self.edges
-            .push((rail, g.out, Net::Leaf(Element::no(relay), at(7)), g.line));
+        self.wire(rail, g.out, Net::Leaf(Element::no(relay), at(7)), g.line);
         self.consumed.push(rail);
         Ok(())
     }
@@ -365,7 +350,7 @@ impl Body {
             kind: CoilKind::Normal,
             device: relay.clone(),
         };
-        self.outputs.push((p, coil, at, line));
+        self.output(p, coil, at, line);
         Ok(relay)
     }
 
@@ -413,7 +398,7 @@ impl Body {
         let c = self.relay_for(p, g, at)?;
         let q = self.fresh();
         self.consumed.push(from);
-        self.edges.push((from, q, Net::Leaf(c, at), g.line));
+        self.wire(from, q, Net::Leaf(c, at), g.line);
         Ok(q)
     }
 
@@ -433,7 +418,7 @@ impl Body {
         self.gate_work += self.edges.len();
         let feeding: Vec<usize> = (0..self.edges.len())
             .filter(|&i| {
-                let b = self.edges[i].1;
+                let b = self.edges[i].to;
                 self.find(b) == p
             })
             .collect();
@@ -441,7 +426,9 @@ impl Body {
             [i] if takers.get(&p).copied().unwrap_or(0) == 1 => i,
             _ => return None,
         };
-        let (a, _, net, line) = self.edges[only].clone();
+        let ElementEdge {
+            from: a, net, line, ..
+        } = self.edges[only].clone();
         match net {
             Net::Leaf(e @ Element::Contact { .. }, at) if self.find(a) == rail => {
                 self.edges.remove(only);
@@ -468,7 +455,7 @@ impl Body {
         let mut from = Vec::with_capacity(self.edges.len());
         let mut feeders: HashMap<usize, Vec<usize>> = HashMap::new();
         for i in 0..self.edges.len() {
-            let (a, b) = (self.edges[i].0, self.edges[i].1);
+            let (a, b) = (self.edges[i].from, self.edges[i].to);
             from.push(self.find(a));
             feeders.entry(self.find(b)).or_default().push(i);
         }
@@ -479,7 +466,7 @@ impl Body {
         let mut order: Vec<usize> = (0..self.edges.len()).collect();
         order.sort_by_key(|&i| rank.get(&from[i]).copied().unwrap_or(usize::MAX));
         for i in order {
-            let e = match &self.edges[i].2 {
+            let e = match &self.edges[i].net {
                 Net::Leaf(e @ (Element::Not | Element::Edge { .. }), _) => e.clone(),
                 _ => continue,
             };
@@ -489,7 +476,7 @@ impl Body {
                 _ => continue,
             };
             let (Net::Leaf(Element::Contact { kind, device }, at), line) =
-                (&self.edges[only].2, self.edges[only].3)
+                (&self.edges[only].net, self.edges[only].line)
             else {
                 continue;
             };
@@ -498,7 +485,12 @@ impl Body {
             };
             let device = device.clone();
             let folded = Net::Leaf(Element::Contact { kind, device }, *at);
-            self.edges[i] = (super::body::RAIL, self.edges[i].1, folded, line);
+            self.edges[i] = ElementEdge {
+                from: super::body::RAIL,
+                to: self.edges[i].to,
+                net: folded,
+                line,
+            };
             from[i] = rail;
             gone[only] = true;
         }
@@ -522,7 +514,7 @@ impl Body {
         while let Some(q) = todo.pop() {
             self.gate_work += self.edges.len();
             for i in 0..self.edges.len() {
-                let (a, b) = (self.edges[i].0, self.edges[i].1);
+                let (a, b) = (self.edges[i].from, self.edges[i].to);
                 if self.find(b) != q {
                     continue;
                 }
@@ -539,7 +531,7 @@ impl Body {
         // NOT b).
         let boxed = part
             .iter()
-            .any(|&i| !matches!(self.edges[i].2, Net::Leaf(Element::Contact { .. }, _)));
+            .any(|&i| !matches!(self.edges[i].net, Net::Leaf(Element::Contact { .. }, _)));
         if boxed {
             return false;
         }
@@ -549,7 +541,7 @@ impl Body {
             let inside = part
                 .iter()
                 .filter(|&&i| {
-                    let a = self.edges[i].0;
+                    let a = self.edges[i].from;
                     self.find(a) == q
                 })
                 .count();
@@ -559,9 +551,9 @@ impl Body {
             }
         }
         for i in part {
-            let a = self.edges[i].0;
+            let a = self.edges[i].from;
             if self.find(a) == rail {
-                self.edges[i].0 = from;
+                self.edges[i].from = from;
                 // `from` now feeds it too: a later OR must see that.
                 self.consumed.push(from);
             }

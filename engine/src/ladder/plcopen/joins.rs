@@ -68,7 +68,7 @@ impl Body {
         self.gate_work += self.edges.len() + more.len();
         let mut next: HashMap<usize, Vec<usize>> = HashMap::new();
         let mut pending: HashMap<usize, usize> = HashMap::new();
-        let ends: Vec<(usize, usize)> = self.edges.iter().map(|e| (e.0, e.1)).collect();
+        let ends: Vec<(usize, usize)> = self.edges.iter().map(|e| (e.from, e.to)).collect();
         for (a, b) in ends.into_iter().chain(more) {
             let (a, b) = (self.find(a), self.find(b));
             if a == b {
@@ -160,8 +160,7 @@ impl Body {
                 };
                 let rail = super::body::RAIL;
                 self.consumed.push(rail);
-                self.edges
-                    .push((rail, g.out, Net::Leaf(contact, at), g.line));
+                self.wire(rail, g.out, Net::Leaf(contact, at), g.line);
             }
         }
         errors

@@ -295,12 +295,12 @@ impl Body {
         let input = self.join(n.child("connectionPointIn"), &format!("contact {device}"))?;
         self.consumed.push(input);
         let out = self.point(id, "");
-        self.edges.push((
+        self.wire(
             input,
             out,
             Net::Leaf(Element::Contact { kind, device }, pos),
             n.line,
-        ));
+        );
         Ok(())
     }
 
@@ -329,7 +329,7 @@ impl Body {
         // A coil passes power on: a coil wired after it sees the same.
         let out = self.point(id, "");
         self.union(input, out);
-        self.outputs.push((input, element, pos, n.line));
+        self.output(input, element, pos, n.line);
         Ok(())
     }
 
@@ -373,7 +373,7 @@ impl Body {
         let element = coil(kind, device);
         let input = self.join(cpi, &format!("output variable {expr}"))?;
         self.consumed.push(input);
-        self.outputs.push((input, element, pos, n.line));
+        self.output(input, element, pos, n.line);
         Ok(())
     }
 }

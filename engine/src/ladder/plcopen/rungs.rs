@@ -5,7 +5,7 @@
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 
-use super::body::{Body, RAIL};
+use super::body::{Body, ElementEdge, RAIL};
 use super::error::ImportError;
 use super::main_line::{off_main_line, Link};
 use super::parts::*;
@@ -108,9 +108,12 @@ impl Body {
     ) -> (BTreeMap<usize, Vec<(Element, Pos, usize)>>, Vec<usize>) {
         let rail = self.find(RAIL);
         let mut groups: BTreeMap<usize, Vec<(Element, Pos, usize)>> = BTreeMap::new();
-        for (input, e, pos, line) in std::mem::take(&mut self.outputs) {
-            let bus = self.find(input);
-            groups.entry(bus).or_default().push((e, pos, line));
+        for out in std::mem::take(&mut self.outputs) {
+            let bus = self.find(out.from);
+            groups
+                .entry(bus)
+                .or_default()
+                .push((out.element, out.pos, out.line));
         }
         let mut buses = Vec::new();
         let mut moved = Vec::new();
@@ -170,7 +173,17 @@ impl Body {
             consumed,
             off_main,
         };
-        for (index, (a, b, net, line)) in std::mem::take(&mut self.edges).into_iter().enumerate() {
+        let body_edges = std::mem::take(&mut self.edges);
+        for (
+            index,
+            ElementEdge {
+                from: a,
+                to: b,
+                net,
+                line,
+            },
+        ) in body_edges.into_iter().enumerate()
+        {
             let (a, b) = (self.find(a), self.find(b));
             if let Net::Leaf(e, pos) = &net {
                 lines.insert(*pos, line);
@@ -211,7 +224,7 @@ impl Body {
                 true,
             ) => {
                 let coil = timer_coil(name, *preset_ms).map_err(|m| vec![Located::new(line, m)])?;
-                self.outputs.push((a, coil, *pos, line));
+                self.output(a, coil, *pos, line);
                 return Ok(true);
             }
             (
@@ -235,7 +248,7 @@ impl Body {
                 return Ok(true);
             }
             (Element::CounterCoil { .. }, true) => {
-                self.outputs.push((a, e.clone(), *pos, line));
+                self.output(a, e.clone(), *pos, line);
                 return Ok(true);
             }
             (Element::CounterCoil { device, .. }, false) if env.timer_coils => {
@@ -349,9 +362,9 @@ impl Body {
         let rail = self.find(RAIL);
         let mut links: Vec<Link> = Vec::with_capacity(self.edges.len());
         for i in 0..self.edges.len() {
-            let (a, b) = (self.edges[i].0, self.edges[i].1);
+            let (a, b) = (self.edges[i].from, self.edges[i].to);
             let relayable = matches!(
-                self.edges[i].2,
+                self.edges[i].net,
                 Net::Leaf(
                     Element::Not | Element::Edge { .. } | Element::Timer { .. },
                     _
@@ -386,7 +399,7 @@ impl Body {
         if let Some(d) = coil.written_device() {
             self.ordered.push(d.to_string());
         }
-        self.outputs.push((a, coil, pos, line));
+        self.output(a, coil, pos, line);
         let at = Pos::new(pos.row, pos.col.wrapping_add(SPLIT_PLACES));
         lines.insert(at, line);
         let rail = self.find(RAIL);
@@ -408,7 +421,7 @@ impl Body {
             Net::Leaf(e, p) => Some((e, lines.get(p).copied().unwrap_or(1))),
             _ => None,
         });
-        let outs = self.outputs.iter().map(|(_, e, _, line)| (e, *line));
+        let outs = self.outputs.iter().map(|o| (&o.element, o.line));
         let errors: Errors = leaves
             .chain(outs)
             .filter_map(|(e, line)| {
