@@ -4,7 +4,7 @@
 //! up-counters and the comparisons as IO86A's `CMP`; a block's EN
 //! honoured or refused; an unknown block named as such.
 
-use super::body::{Body, Gate, GateKind};
+use super::body::{Body, Gate, GateKind, PinRef};
 use super::compare::compare_flag;
 use super::declare::Names;
 use super::dom::Node;
@@ -140,14 +140,14 @@ impl Body {
     /// Whether EN connections `refs` always carry power: from the rail, a
     /// literal TRUE, or another block's ENO whose own EN always does
     /// (OpenPLC Editor chains EN to ENO); `depth` bounds the chain.
-    fn always_enabled(&self, refs: &[(String, String)], depth: usize) -> bool {
+    fn always_enabled(&self, refs: &[PinRef], depth: usize) -> bool {
         depth < 64
-            && refs.iter().all(|(r, pin)| {
+            && refs.iter().all(|PinRef { id: r, pin }| {
                 self.rails.contains(r)
                     || self
                         .literals
                         .get(r)
-                        .is_some_and(|(e, _)| e.trim().eq_ignore_ascii_case("TRUE"))
+                        .is_some_and(|e| e.value.trim().eq_ignore_ascii_case("TRUE"))
                     || (pin.eq_ignore_ascii_case("ENO")
                         && self
                             .enables
@@ -358,7 +358,7 @@ impl Body {
             .child("connection")
             .and_then(|c| c.attr("refLocalId"))
             .and_then(|r| self.literals.get(r))
-            .is_some_and(|(e, _)| is_false(e));
+            .is_some_and(|e| is_false(&e.value));
         if never {
             return Ok(None);
         }
@@ -382,7 +382,7 @@ impl Body {
             .ok_or_else(unconnected)?;
         self.literals
             .get(r)
-            .map(|(e, _)| e.trim().to_string())
+            .map(|e| e.value.trim().to_string())
             .ok_or_else(|| ImportError::PinNotLiteral(what.to_string(), name))
     }
 

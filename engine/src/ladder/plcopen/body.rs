@@ -21,21 +21,23 @@ pub(super) struct Body {
     pub(super) parent: Vec<usize>,
     pub(super) points: HashMap<(String, String), usize>,
     pub(super) rails: HashSet<String>,
-    pub(super) kinds: HashMap<String, (String, usize)>,
+    /// Each element's kind (its XML name) and line, by localId.
+    pub(super) kinds: HashMap<String, Lined<String>>,
     /// Named connectors' inputs (by lower-case name) and lines; a
     /// continuation of the same name carries what feeds them.
-    pub(super) connectors: HashMap<String, (Node, usize)>,
+    pub(super) connectors: HashMap<String, Lined<Node>>,
     /// Each continuation's connector name (lower case), by localId.
     pub(super) continuations: HashMap<String, String>,
     /// The connectors being followed (a loop of them is refused).
     pub(super) following: HashSet<String>,
-    pub(super) literals: HashMap<String, (String, usize)>,
-    /// Each block's EN connections: (refLocalId, formalParameter).
-    pub(super) enables: HashMap<String, Vec<(String, String)>>,
+    /// Each variable box's expression and line, by localId.
+    pub(super) literals: HashMap<String, Lined<String>>,
+    /// Each block's EN connections, by localId.
+    pub(super) enables: HashMap<String, Vec<PinRef>>,
     /// Variable boxes that feed power: a contact of their device from
     /// the rail, NC when the box is negated (or why the variable has no
     /// device; its place).
-    pub(super) variables: HashMap<String, (Result<Element, super::declare::NameError>, Pos)>,
+    pub(super) variables: HashMap<String, VariableBox>,
     /// Contacts and in-line blocks between points.
     pub(super) edges: Vec<ElementEdge>,
     /// Outputs, each on the point feeding it.
@@ -48,13 +50,13 @@ pub(super) struct Body {
     pub(super) gate_work: usize,
     /// The element being read (its place and line), for the OR a join of
     /// wires at one of its inputs makes ([`Body::join`]).
-    pub(super) reading: (Pos, usize),
-    /// Comment boxes: where they are drawn (row, column) and their text.
-    pub(super) comments: Vec<(usize, usize, String)>,
+    pub(super) reading: Lined<Pos>,
+    /// Comment boxes.
+    pub(super) comments: Vec<CommentBox>,
     /// Relays free to hold a network's power (the next is popped), and
     /// those taken: (relay, what it holds, line).
     pub(super) spares: Vec<String>,
-    pub(super) helpers: Vec<(String, String, usize)>,
+    pub(super) helpers: Vec<Helper>,
     /// Devices a block writes whose rungs run before any rung reading
     /// them (counters, split timers; helpers too), as the origin tool
     /// runs a block before what its outputs feed.
@@ -62,7 +64,7 @@ pub(super) struct Body {
     /// Each comparison's `CMP` (its place), the relay its result is
     /// copied to (the copy runs right after the CMP) and its operands
     /// (what writes them runs before it).
-    pub(super) compares: Vec<(Pos, String, [String; 2])>,
+    pub(super) compares: Vec<CompareCopy>,
     /// The machine the body is read for.
     pub(super) machine: Option<MachineId>,
     /// What is worth saying but does not stop the import.
@@ -71,6 +73,59 @@ pub(super) struct Body {
 }
 
 pub(super) const RAIL: usize = 0;
+
+/// A value read from the file and the line it was read at.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Lined<T> {
+    /// The value.
+    pub(super) value: T,
+    /// Its line.
+    pub(super) line: usize,
+}
+
+/// A connection to another element's pin (`refLocalId`,
+/// `formalParameter`).
+#[derive(Clone, Debug)]
+pub(super) struct PinRef {
+    /// The element's localId.
+    pub(super) id: String,
+    /// Its pin (empty for an element with one output).
+    pub(super) pin: String,
+}
+
+/// A variable box that feeds power: a contact of its device from the
+/// rail, NC when the box is negated (or why the variable has no device),
+/// and its place.
+#[derive(Clone, Debug)]
+pub(super) struct VariableBox {
+    pub(super) contact: Result<Element, super::declare::NameError>,
+    pub(super) pos: Pos,
+}
+
+/// A comment box: where it is drawn and its text.
+#[derive(Clone, Debug)]
+pub(super) struct CommentBox {
+    pub(super) row: usize,
+    pub(super) col: usize,
+    pub(super) text: String,
+}
+
+/// A spare relay taken: the relay, what it holds, the line needing it.
+#[derive(Clone, Debug)]
+pub(super) struct Helper {
+    pub(super) relay: String,
+    pub(super) what: String,
+    pub(super) line: usize,
+}
+
+/// A comparison's `CMP` (its place), the relay its result is copied to,
+/// and its two operands.
+#[derive(Clone, Debug)]
+pub(super) struct CompareCopy {
+    pub(super) at: Pos,
+    pub(super) relay: String,
+    pub(super) operands: [String; 2],
+}
 
 /// A contact or an in-line box between two points of the body.
 #[derive(Clone, Debug)]
@@ -200,7 +255,7 @@ impl Body {
     /// than one shared point that would need a spare relay.
     pub(super) fn variable_point(&mut self, id: &str, contact: Element, at: Pos) -> usize {
         let p = self.fresh();
-        let line = self.kinds.get(id).map_or(1, |(_, l)| *l);
+        let line = self.kinds.get(id).map_or(1, |k| k.line);
         self.consumed.push(RAIL);
         self.wire(RAIL, p, Net::Leaf(contact, at), line);
         p

@@ -25,7 +25,7 @@
 
 use std::collections::HashMap;
 
-use super::body::{Body, ElementEdge, Gate, GateKind};
+use super::body::{Body, CompareCopy, ElementEdge, Gate, GateKind, Helper};
 use super::error::LowerError;
 use super::parts::{invert, rising, turned};
 use crate::error::Located;
@@ -186,8 +186,11 @@ impl Body {
         let what = format!("{}'s result", g.what);
         let held = self.hold_in_relay(result, &what, g.line, at(1))?;
         self.wire(rail, g.out, Net::Leaf(Element::no(&held), g.pos), g.line);
-        self.compares
-            .push((at(3), held, [a.to_string(), b.to_string()]));
+        self.compares.push(CompareCopy {
+            at: at(3),
+            relay: held,
+            operands: [a.to_string(), b.to_string()],
+        });
         Ok(())
     }
 
@@ -278,7 +281,11 @@ impl Body {
     /// A spare relay for `what`, noted among the helpers.
     pub(super) fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, LowerError> {
         let relay = self.spares.pop().ok_or(LowerError::NoRelay)?;
-        self.helpers.push((relay.clone(), what.to_string(), line));
+        self.helpers.push(Helper {
+            relay: relay.clone(),
+            what: what.to_string(),
+            line,
+        });
         Ok(relay)
     }
 

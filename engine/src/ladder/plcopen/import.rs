@@ -179,7 +179,7 @@ fn drawn_bodies<'a>(
 fn name_devices(
     ladder: &mut Ladder,
     names: &Names,
-    helpers: Vec<(String, String, usize)>,
+    helpers: Vec<super::body::Helper>,
     machine: Option<MachineId>,
     warnings: &mut Vec<Located<String>>,
 ) {
@@ -193,7 +193,7 @@ fn name_devices(
             ladder.device_comments.entry(device).or_insert(name);
         }
     }
-    for (relay, what, line) in helpers {
+    for super::body::Helper { relay, what, line } in helpers {
         warnings.push(Located::new(
             line,
             format!("{relay} holds {what} (a relay the file does not use)"),

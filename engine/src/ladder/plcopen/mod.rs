@@ -21,6 +21,7 @@ mod main_line;
 mod map_file;
 mod order;
 mod parts;
+mod placing;
 mod read;
 mod rungs;
 

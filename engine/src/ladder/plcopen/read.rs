@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use super::blocks;
-use super::body::{Body, Gate, GateKind, RAIL};
+use super::body::{Body, CommentBox, Gate, GateKind, Lined, PinRef, VariableBox, RAIL};
 use super::declare::Names;
 use super::dom::Node;
 use super::error::{Connection, ImportError};
@@ -31,7 +31,11 @@ impl Body {
         for n in &ld.children {
             if n.name == "comment" {
                 let (y, x) = position(n);
-                b.comments.push((y, x, n.deep_text()));
+                b.comments.push(CommentBox {
+                    row: y,
+                    col: x,
+                    text: n.deep_text(),
+                });
                 continue;
             }
             let Some(id) = n.attr("localId") else {
@@ -39,7 +43,7 @@ impl Body {
                     .push(Located::new(n.line, ImportError::NoLocalId(n.name.clone())));
                 continue;
             };
-            if let Some((_, first)) = b.kinds.get(id) {
+            if let Some(Lined { line: first, .. }) = b.kinds.get(id) {
                 b.errors.push(Located::new(
                     n.line,
                     ImportError::DuplicateLocalId {
@@ -49,7 +53,13 @@ impl Body {
                 ));
                 continue;
             }
-            b.kinds.insert(id.to_string(), (n.name.clone(), n.line));
+            b.kinds.insert(
+                id.to_string(),
+                Lined {
+                    value: n.name.clone(),
+                    line: n.line,
+                },
+            );
             b.index(id, n, names);
         }
         for (seq, n) in ld.children.iter().enumerate() {
@@ -75,7 +85,7 @@ impl Body {
             "connector" => {
                 let name = connector_name(n);
                 let input = n.child("connectionPointIn").cloned().unwrap_or_default();
-                if let Some((_, first)) = self.connectors.get(&name) {
+                if let Some(Lined { line: first, .. }) = self.connectors.get(&name) {
                     self.errors.push(Located::new(
                         n.line,
                         ImportError::DuplicateConnector {
@@ -84,7 +94,11 @@ impl Body {
                         },
                     ));
                 } else {
-                    self.connectors.insert(name, (input, n.line));
+                    let input = Lined {
+                        value: input,
+                        line: n.line,
+                    };
+                    self.connectors.insert(name, input);
                 }
             }
             "continuation" => {
@@ -97,8 +111,12 @@ impl Body {
                     .map(|c| {
                         c.all("connection")
                             .filter_map(|c| {
-                                let r = c.attr("refLocalId")?.to_string();
-                                Some((r, c.attr("formalParameter").unwrap_or_default().to_string()))
+                                let id = c.attr("refLocalId")?.to_string();
+                                let pin = c.attr("formalParameter").unwrap_or_default();
+                                Some(PinRef {
+                                    id,
+                                    pin: pin.to_string(),
+                                })
                             })
                             .collect()
                     })
@@ -120,9 +138,19 @@ impl Body {
                         Element::no
                     };
                     let device = names.device(expr.trim()).map(|d| contact(&d));
-                    self.variables.insert(id.to_string(), (device, at));
+                    self.variables.insert(
+                        id.to_string(),
+                        VariableBox {
+                            contact: device,
+                            pos: at,
+                        },
+                    );
                 }
-                self.literals.insert(id.to_string(), (expr, n.line));
+                let literal = Lined {
+                    value: expr,
+                    line: n.line,
+                };
+                self.literals.insert(id.to_string(), literal);
             }
             _ => {}
         }
@@ -142,7 +170,7 @@ impl Body {
             let Some(r) = c.attr("refLocalId") else {
                 return Err(fail(Connection::NoRef));
             };
-            let kind = self.kinds.get(r).map(|(k, _)| k.clone());
+            let kind = self.kinds.get(r).map(|k| k.value.clone());
             let p = match kind.as_deref() {
                 None => return Err(fail(Connection::Missing(r.to_string()))),
                 Some("continuation") => self.follow_connector(r, what)?,
@@ -152,8 +180,13 @@ impl Body {
                 }
                 Some("inVariable") => match self.variables.get(r).cloned() {
                     // A BOOL variable feeding power: its contact.
-                    Some((Ok(contact), at)) => self.variable_point(r, contact, at),
-                    Some((Err(why), _)) => return Err(ImportError::Variable(why)),
+                    Some(VariableBox {
+                        contact: Ok(contact),
+                        pos,
+                    }) => self.variable_point(r, contact, pos),
+                    Some(VariableBox {
+                        contact: Err(why), ..
+                    }) => return Err(ImportError::Variable(why)),
                     None => return Err(fail(Connection::FromVariable(r.to_string()))),
                 },
                 Some(_) => self.point(r, ""),
@@ -174,7 +207,7 @@ impl Body {
             _ => {
                 let out = self.fresh();
                 self.consumed.extend(&joined);
-                let (pos, line) = self.reading;
+                let Lined { value: pos, line } = self.reading;
                 self.gates.push(Gate {
                     kind: GateKind::Or,
                     inputs: joined,
@@ -196,7 +229,7 @@ impl Body {
             problem,
         };
         let name = self.continuations.get(id).cloned().unwrap_or_default();
-        let Some((input, _)) = self.connectors.get(&name).cloned() else {
+        let Some(Lined { value: input, .. }) = self.connectors.get(&name).cloned() else {
             return Err(fail(Connection::NoConnector(name)));
         };
         if self.following.len() >= crate::limits::MAX_CONNECTOR_CHAIN {
@@ -220,7 +253,10 @@ impl Body {
         let id = n.attr("localId").unwrap_or_default().to_string();
         let (y, x) = position(n);
         let pos = place(y, x, seq);
-        self.reading = (pos, n.line);
+        self.reading = Lined {
+            value: pos,
+            line: n.line,
+        };
         // A declared name stands for its device (located or mapped).
         let variable = || -> Result<Option<String>, ImportError> {
             match n.child("variable").map(|v| v.text.trim().to_string()) {
@@ -350,7 +386,7 @@ impl Body {
         let block = from
             .and_then(|c| c.attr("refLocalId"))
             .and_then(|r| self.kinds.get(r))
-            .is_some_and(|(k, _)| k == "block");
+            .is_some_and(|k| k.value == "block");
         if block && matches!(pin.as_str(), "ET" | "CV") {
             self.warnings.push(Located::new(
                 n.line,
