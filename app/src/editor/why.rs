@@ -15,7 +15,7 @@ use crate::workspaces::Workspaces;
 use engine::ladder::edit::Cursor;
 
 /// One explanation as the page shows it.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct WhyView {
     /// The rung (0-based) and cell asked about.
     pub rung: usize,
@@ -33,13 +33,13 @@ pub struct WhyView {
 }
 
 /// One deciding cell.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct CauseView {
     pub pos: Pos,
     /// The element (`NC contact X01`).
     pub what: String,
     /// Its device and the device's value, if it reads one.
-    pub device: Option<(String, i64)>,
+    pub device: Option<(String, engine::plc::Value)>,
     /// The scan the device last changed, if recorded.
     pub changed: Option<Mark>,
     /// Where its device is written: (rung, cell) of each driving output.
@@ -83,7 +83,7 @@ pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
             .map(|c| {
                 let device = c.device.as_ref().and_then(|d| {
                     let handle = plc.device(d).ok()?;
-                    Some((d.clone(), plc.read(handle).as_i64()))
+                    Some((d.clone(), plc.read(handle)))
                 });
                 let drivers = c
                     .device
