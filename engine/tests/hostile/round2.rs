@@ -647,20 +647,25 @@ const SEAL_IN: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <coil localId="3"><position x="50" y="0"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>lamp</variable></coil>
 </LD></body></pou></pous></types></project>"#;
 
+/// `hashigo compile` of `program` for IO86A with `--map map`.
+fn compile_mapped(program: &str, map: &str) -> (Option<i32>, String, String) {
+    run(&[
+        "compile",
+        "--machine",
+        "io86a",
+        "--program",
+        program,
+        "--map",
+        map,
+    ])
+}
+
 #[test]
 fn a_map_file_is_read_as_a_csv_reader_reads_it() {
     let tmp = Temp::new("round2-map");
     let p = tmp.file("seal.xml", SEAL_IN);
     let plain = tmp.file("plain.csv", "start,X03\nlamp,Y02\n");
-    let (code, want, err) = run(&[
-        "compile",
-        "--machine",
-        "io86a",
-        "--program",
-        &p,
-        "--map",
-        &plain,
-    ]);
+    let (code, want, err) = compile_mapped(&p, &plain);
     assert_eq!(code, Some(0), "{err}");
     assert!(
         want.contains("LD X03") && want.contains("OUT Y02"),
@@ -670,15 +675,7 @@ fn a_map_file_is_read_as_a_csv_reader_reads_it() {
         "sheet.csv",
         "\u{feff}\"name\",\"device\"\r\n\"start\",\"X03\"\r\n\"lamp\", \"Y02\" # the lamp\r\n",
     );
-    let (code, out, err) = run(&[
-        "compile",
-        "--machine",
-        "io86a",
-        "--program",
-        &p,
-        "--map",
-        &spreadsheet,
-    ]);
+    let (code, out, err) = compile_mapped(&p, &spreadsheet);
     assert_eq!(code, Some(0), "{err}");
     assert_eq!(out, want);
     // `map --map` keeps what the file maps: nothing left to propose.
@@ -695,15 +692,7 @@ fn a_map_file_is_read_as_a_csv_reader_reads_it() {
     let entries: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
     assert_eq!(entries, ["start,X03", "lamp,Y02"], "{out}");
     let unclosed = tmp.file("bad.csv", "\"start,X03\nlamp,Y02\n");
-    let (code, _, err) = run(&[
-        "compile",
-        "--machine",
-        "io86a",
-        "--program",
-        &p,
-        "--map",
-        &unclosed,
-    ]);
+    let (code, _, err) = compile_mapped(&p, &unclosed);
     assert_eq!(code, Some(2));
     assert!(
         err.starts_with(&format!("error: {unclosed}:1: expected NAME,DEVICE")),
@@ -716,15 +705,7 @@ fn a_bad_device_in_a_map_file_is_reported_at_the_maps_line() {
     let tmp = Temp::new("round2-map-bad");
     let p = tmp.file("seal.xml", SEAL_IN);
     let map = tmp.file("m.csv", "# devices\nstart,X03\nlamp,Y99\n");
-    let (code, out, err) = run(&[
-        "compile",
-        "--machine",
-        "io86a",
-        "--program",
-        &p,
-        "--map",
-        &map,
-    ]);
+    let (code, out, err) = compile_mapped(&p, &map);
     assert_eq!(code, Some(2), "{err}");
     assert!(out.is_empty());
     assert!(
