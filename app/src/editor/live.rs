@@ -155,7 +155,7 @@ pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
             let _ = plc.apply(Command::SetInput(d, off));
             held = Some(false);
         } else {
-            let now = plc.read(d) != 0;
+            let now = plc.read(d).is_on();
             let value = engine::events::InputValue::Int(i64::from(!now));
             let _ = plc.apply(Command::SetInput(d, value));
             held = Some(!now);

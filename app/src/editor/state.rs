@@ -966,7 +966,7 @@ impl LadderCtx {
                         if !shows {
                             return None;
                         }
-                        self.handle(plc, &c.device).map(|h| plc.read(h) != 0)
+                        self.handle(plc, &c.device).map(|h| plc.read(h).is_on())
                     })
                     .collect()
             });

@@ -71,8 +71,8 @@ impl ArduinoCtx {
         self.sim.with_value(|s| {
             let m = s.machine();
             for n in 0..6 {
-                put(self.inputs[n], m.read(self.pins[0][n]) != 0);
-                put(self.outputs[n], m.read(self.pins[1][n]) != 0);
+                put(self.inputs[n], m.read(self.pins[0][n]).is_on());
+                put(self.outputs[n], m.read(self.pins[1][n]).is_on());
             }
             put(self.enabled, m.running());
         });

@@ -62,7 +62,7 @@ impl AvrCtx {
         self.sim.with_value(|s| {
             self.bits.with_untracked(|bits| {
                 for b in bits {
-                    let v = s.machine().read(b.device) != 0;
+                    let v = s.machine().read(b.device).is_on();
                     if b.value.get_untracked() != v {
                         b.value.set(v);
                     }
