@@ -208,9 +208,13 @@ impl Workspaces {
             crate::editor::travel::sync(ladder, t, now_ms(), hit.is_some());
             hit
         });
-        if let Some(Some(_)) = hit {
+        if let Some(Some(b)) = hit {
             // Paused at the end of the scan where the condition held.
             ladder.page.paused.set(true);
+            ladder.travel.stopped_at.set(Some(b.mark));
+        } else if !pace.paused && ladder.travel.stopped_at.get_untracked().is_some() {
+            // Running again: the stop is over.
+            ladder.travel.stopped_at.set(None);
         }
         let history = self.take_history(kind);
         ladder.show_pulses(&history);

@@ -84,6 +84,24 @@ def test_break_on_the_count_lamp_then_step_back_and_see_the_earlier_count(driver
     assert severe_console_messages(driver) == []
 
 
+def test_a_break_field_emptied_by_script_is_disarmed(driver, base_url):
+    seed_running(driver, base_url)
+    field = el(driver, "break-input")
+    field.send_keys("Y01 rises", Keys.ENTER)
+    # Emptied without a key (a script, an autofill): an input event only.
+    driver.execute_script(
+        "arguments[0].value = ''; arguments[0].dispatchEvent(new Event('input', {bubbles: true}))",
+        field)
+    el(driver, "input-X00").click()
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="started")
+    el(driver, "input-X00").click()
+    # The lamp rises at the count of 10 and the run goes on.
+    wait(driver, lambda: el(driver, "cell-3-0-9").get_attribute("data-on") == "1", timeout=60,
+         message="the count lamp rose")
+    assert "stopped at scan" not in el(driver, "break-status").text
+    assert el(driver, "pause").get_attribute("aria-pressed") != "true", "not paused by a break"
+
+
 def test_a_refused_break_condition_is_said_and_changes_nothing(driver, base_url):
     seed_running(driver, base_url)
     el(driver, "break-input").send_keys("Q9 rises", Keys.ENTER)

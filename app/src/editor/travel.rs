@@ -20,6 +20,8 @@ pub struct TravelState {
     pub shown: RwSignal<Option<Mark>>,
     /// Every scan where the break condition held.
     pub breaks: RwSignal<Vec<Mark>>,
+    /// The scan a break stopped the run at, until it runs again.
+    pub stopped_at: RwSignal<Option<Mark>>,
     /// The break condition as typed, and why it was refused.
     pub break_text: RwSignal<String>,
     pub break_error: RwSignal<Option<String>>,
@@ -40,6 +42,7 @@ impl TravelState {
             marks: RwSignal::new((0, 0)),
             shown: RwSignal::new(None),
             breaks: RwSignal::new(Vec::new()),
+            stopped_at: RwSignal::new(None),
             break_text: RwSignal::new(String::new()),
             break_error: RwSignal::new(None),
             chart_tick: RwSignal::new(0),
@@ -192,13 +195,22 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
                 {move || t().break_on} " "
                 <input data-testid="break-input" spellcheck="false" placeholder="Y01 rises"
                     prop:value=move || s.break_text.get()
-                    on:input=move |e| s.break_text.set(event_target_value(&e))
+                    on:input=move |e| {
+                        let text = event_target_value(&e);
+                        let empty = text.trim().is_empty();
+                        s.break_text.set(text);
+                        // An empty field is no condition: disarmed at
+                        // once, however it was emptied.
+                        if empty {
+                            set_break();
+                        }
+                    }
                     on:change=move |_| set_break()
                     on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { set_break() } />
             </label>
             <span class="break-status" data-testid="break-status" role="status">
                 {move || s.break_error.get().or_else(|| {
-                    s.breaks.get().last().map(|m| format!("{} {m}", t().break_hit))
+                    s.stopped_at.get().map(|m| format!("{} {m}", t().break_hit))
                 })}
             </span>
         </div>
