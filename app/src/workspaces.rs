@@ -216,6 +216,7 @@ impl Workspaces {
             // Running again: the stop is over.
             ladder.travel.stopped_at.set(None);
         }
+        crate::editor::why::follow(ladder, *self);
         let history = self.take_history(kind);
         ladder.show_pulses(&history);
         self.with_plc(kind, |plc| {

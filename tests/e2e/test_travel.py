@@ -102,6 +102,37 @@ def test_a_break_field_emptied_by_script_is_disarmed(driver, base_url):
     assert el(driver, "pause").get_attribute("aria-pressed") != "true", "not paused by a break"
 
 
+def test_a_break_stop_is_said_until_the_run_goes_on(driver, base_url):
+    seed_running(driver, base_url)
+    el(driver, "break-input").send_keys("Y01 rises", Keys.ENTER)
+    el(driver, "input-X00").click()
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="started")
+    el(driver, "input-X00").click()
+    wait(driver, lambda: "stopped at scan" in el(driver, "break-status").text, timeout=60,
+         message="the break condition held")
+    el(driver, "pause").click()
+    wait(driver, lambda: "stopped at scan" not in el(driver, "break-status").text,
+         message="resumed: the stop is over")
+
+
+def test_why_follows_the_scan_it_explains(driver, base_url):
+    seed_running(driver, base_url)
+    el(driver, "cell-0-0-9").click()
+    driver.switch_to.active_element.send_keys("w")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == "0")
+    # Running: once the machine moves on, the explanation is marked stale.
+    el(driver, "input-X00").click()
+    wait(driver, lambda: el(driver, "why-panel").get_attribute("data-stale") == "1",
+         message="stale while the machine runs on")
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="started")
+    # Paused: explained again for the scan shown, the same coil.
+    el(driver, "pause").click()
+    wait(driver, lambda: el(driver, "why-panel").get_attribute("data-stale") == "0",
+         message="explained again when paused")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == "1")
+    assert el(driver, "why-head").text.startswith("coil Y00")
+
+
 def test_a_refused_break_condition_is_said_and_changes_nothing(driver, base_url):
     seed_running(driver, base_url)
     el(driver, "break-input").send_keys("Q9 rises", Keys.ENTER)

@@ -28,6 +28,8 @@ pub struct WhyView {
     pub together: bool,
     /// The scan explained (`None`: live).
     pub scan: Option<Mark>,
+    /// The recorded scan it explains (the shown one, else the newest).
+    pub at_mark: Mark,
     /// The deciding cells.
     pub causes: Vec<CauseView>,
 }
@@ -66,7 +68,36 @@ impl WhyView {
 /// Explains the cell under the cursor in the scan shown; `None` when the
 /// ladder is not running as drawn or the cell decides nothing.
 pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
-    let at = ctx.cursor.get_untracked();
+    explain_at(ctx, workspaces, ctx.cursor.get_untracked())
+}
+
+/// Keeps the explanation shown with the scan it explains: paused, it is
+/// explained again whenever the scan shown changes (the same cell);
+/// running, it is marked stale (`why_stale`) once the machine has moved
+/// on, until asked again.
+pub fn follow(ctx: LadderCtx, workspaces: Workspaces) {
+    let Some((at_mark, cell)) = ctx.travel.why.with_untracked(|w| {
+        w.as_ref()
+            .map(|w| (w.at_mark, Cursor::new(w.rung, w.target.row, w.target.col)))
+    }) else {
+        return;
+    };
+    let Some(now) = workspaces.travel(ctx.machine, |t| t.shown().unwrap_or(t.marks().1)) else {
+        return;
+    };
+    if now == at_mark {
+        return;
+    }
+    if ctx.page.paused.get_untracked() {
+        ctx.travel.why.set(explain_at(ctx, workspaces, cell));
+        ctx.travel.why_stale.set(false);
+    } else if !ctx.travel.why_stale.get_untracked() {
+        ctx.travel.why_stale.set(true);
+    }
+}
+
+/// Explains the cell `at` in the scan shown.
+fn explain_at(ctx: LadderCtx, workspaces: Workspaces, at: Cursor) -> Option<WhyView> {
     let target = Pos::new(at.row, at.col);
     let ladder = ctx.ladder();
     let scan = ctx.travel.shown.get_untracked();
@@ -108,6 +139,7 @@ pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
             powered: why.powered,
             together: why.together,
             scan,
+            at_mark: 0,
             causes: listed,
         });
     });
@@ -115,6 +147,7 @@ pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
     // When each device last changed, from the recording.
     workspaces.travel(ctx.machine, |t| {
         let at = t.shown().unwrap_or(t.marks().1);
+        view.at_mark = at;
         for cause in &mut view.causes {
             if let Some((device, _)) = &cause.device {
                 cause.changed = t.last_change(device, at);
@@ -154,6 +187,7 @@ pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
     let ask = move || {
         if let Some(w) = workspaces {
             ctx.travel.why.set(explain(ctx, w));
+            ctx.travel.why_stale.set(false);
         }
     };
     // The W key asks through the editor, which has no workspaces.
@@ -164,7 +198,8 @@ pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
         }
     });
     view! {
-        <section class="why-pane" data-testid="why-panel">
+        <section class="why-pane" data-testid="why-panel"
+            data-stale=move || if ctx.travel.why_stale.get() { "1" } else { "0" }>
             <h3>
                 <button type="button" data-testid="why" on:click=move |_| ask()>{move || t().why}</button>
             </h3>
