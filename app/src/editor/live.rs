@@ -29,6 +29,7 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
             ctx.message.set(Some(t().tests_need_compile.to_string()));
             return;
         }
+        ctx.unwritten.set(false);
         operate(&|plc| {
             plc.set_tracing(true);
             let _ = plc.apply(Command::Run(true));
@@ -68,6 +69,8 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
             {(kind == MachineId::MinasecU).then(|| view! {
                 <button type="button" data-testid="step-clock" on:click=move |_| step(2)>{move || t().step_clock}</button>
             })}
+            <span class="not-written" data-testid="not-written" role="status"
+                hidden=move || !ctx.unwritten.get()>{move || t().not_written}</span>
             <span data-testid="step-at">{move || ctx.stepped.get().map(|(s, rung)| match rung {
                 Some(r) => format!("{} {s} · {} {}", t().step, t().rung, r + 1),
                 None => format!("{} {s}", t().step),

@@ -205,9 +205,14 @@ pub struct LadderCtx {
     live: StoredValue<Option<engine::ladder::live::LiveLadder>>,
     /// The element the last single instruction came from.
     pub stepped_cell: RwSignal<Option<Cursor>>,
-    /// Run was pressed and nothing edited since: a click on a contact
-    /// drives its input (docs/editor.md, "Inputs from the ladder").
+    /// Run was pressed: the machine runs the drawing (each edit is
+    /// written to it at once) and a click on a contact drives its input
+    /// (docs/editor.md, "Inputs from the ladder").
     pub monitor: RwSignal<bool>,
+    /// The machine was running the drawing, and the drawing as it now
+    /// stands cannot be written (it has errors): the ladder shows no live
+    /// state until it can.
+    pub unwritten: RwSignal<bool>,
     /// Inputs held from the ladder at a value until released.
     pub forced: RwSignal<Vec<(String, bool)>>,
     /// The recording as shown: time travel, breaks, chart, "why".
@@ -282,6 +287,7 @@ impl LadderCtx {
             live: StoredValue::new(None),
             stepped_cell: RwSignal::new(None),
             monitor: RwSignal::new(false),
+            unwritten: RwSignal::new(false),
             forced: RwSignal::new(Vec::new()),
             travel: super::travel::TravelState::new(),
         };
@@ -828,10 +834,21 @@ impl LadderCtx {
             self.problems.set(problems);
         }
         if edited {
-            // The machine no longer runs the ladder as drawn.
             self.live.set_value(None);
-            if self.monitor.get_untracked() {
-                self.monitor.set(false);
+            // The machine runs the drawing: written at once, so what the
+            // ladder shows is what runs (docs/editor.md, "The run model").
+            let follows = self.monitor.get_untracked() || self.unwritten.get_untracked();
+            if follows {
+                if self.listing.with_untracked(|l| *l != listing) {
+                    self.listing.set(listing.clone());
+                }
+                let written = listing.is_some() && self.start_live() && self.write_to_machine();
+                if !written && self.monitor.get_untracked() {
+                    self.monitor.set(false);
+                }
+                if self.unwritten.get_untracked() != !written {
+                    self.unwritten.set(!written);
+                }
             }
         }
         // A shared project is not saved until it is kept.
@@ -938,7 +955,9 @@ impl LadderCtx {
     /// the ladder as drawn), and the watch table. Only the rungs whose
     /// states changed are touched.
     pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
-        let running = plc.scans() > 0;
+        // A drawing that cannot be written shows nothing live: the states
+        // would be another program's.
+        let running = plc.scans() > 0 && !self.unwritten.get_untracked();
         let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
             Some(trace) => self.live.with_value(|l| {
                 l.as_ref().map_or_else(Vec::new, |l| {

@@ -70,6 +70,8 @@ pub struct EditorTexts {
     pub test_pass: &'static str,
     pub test_fail: &'static str,
     pub tests_need_compile: &'static str,
+    /// The drawing has errors, so it is not what the machine runs.
+    pub not_written: &'static str,
     pub run: &'static str,
     pub step_scan: &'static str,
     pub step_instr: &'static str,
@@ -179,6 +181,7 @@ const EN: EditorTexts = EditorTexts {
     test_pass: "pass",
     test_fail: "fail",
     tests_need_compile: "The ladder must compile before its tests can run: see the problems.",
+    not_written: "This drawing has problems, so it is not what the machine runs (it keeps the last drawing written): fix them and it is written at once.",
     run: "▶ Run",
     step_scan: "Step scan",
     step_instr: "Step instruction",
@@ -290,6 +293,7 @@ const JA: EditorTexts = EditorTexts {
     test_fail: "不合格",
     tests_need_compile:
         "テストを実行するにはラダーが変換できる必要があります。問題一覧を見てください。",
+    not_written: "この図には問題があるため PLC に書き込めません (PLC は最後に書き込んだ図を実行中)。直すとすぐに書き込まれます。",
     run: "▶ 実行",
     step_scan: "1スキャン",
     step_instr: "1命令",
