@@ -846,7 +846,7 @@ impl LadderCtx {
                 if !written && self.monitor.get_untracked() {
                     self.monitor.set(false);
                 }
-                if self.unwritten.get_untracked() != !written {
+                if self.unwritten.get_untracked() == written {
                     self.unwritten.set(!written);
                 }
             }
