@@ -406,7 +406,9 @@ impl LadderCtx {
                 e.undo();
             });
         }
-        self.refresh(false);
+        // An edit as far as the machine is concerned (written at once
+        // while it runs the drawing); not saved, as the link was not.
+        self.refresh(with.replaced);
         self.shared.set(false);
     }
 
