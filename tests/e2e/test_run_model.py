@@ -101,3 +101,21 @@ def test_a_drawing_with_problems_shows_no_live_state_and_says_why(driver, base_u
     wait(driver, lambda: el(driver, "not-written").get_attribute("hidden") is not None)
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "1",
          message="live again")
+
+
+def test_run_becomes_stop_and_stop_stops_the_machine(driver, base_url):
+    io86a_running_x00_to_y00(driver, base_url)
+    run = el(driver, "run")
+    wait(driver, lambda: run.get_attribute("aria-pressed") == "true", message="running the drawing")
+    assert "Stop" in run.text
+    run.click()
+    wait(driver, lambda: run.get_attribute("aria-pressed") == "false")
+    assert "Run" in run.text
+    # IO86A stops as its STOP does: the scan count stands still.
+    at = el(driver, "travel-at").text
+    time.sleep(0.5)
+    assert el(driver, "travel-at").text == at, "no scan runs while stopped"
+    # Run again: written and started.
+    run.click()
+    wait(driver, lambda: run.get_attribute("aria-pressed") == "true", message="running again")
+    wait(driver, lambda: el(driver, "travel-at").text != at, message="scans again")

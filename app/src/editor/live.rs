@@ -24,7 +24,21 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
             w.operate(kind, f);
         }
     };
+    // The AVR PLC has no RUN/STOP switch: it runs whenever powered, so
+    // Run stays Run (it writes the drawing again).
+    let stoppable = kind != MachineId::AvrPlc;
+    let runs_drawing = move || stoppable && ctx.monitor.get() && ctx.running.get();
     let run = move |_| {
+        if runs_drawing() {
+            // Stop: the machine as it stops (MINASEC-U HALT, IO86A STOP,
+            // the Arduino sketch disabled); edits wait for the next Run.
+            operate(&|plc| {
+                let _ = plc.apply(Command::Run(false));
+            });
+            ctx.monitor.set(false);
+            ctx.running.set(false);
+            return;
+        }
         if !ctx.start_live() || !ctx.write_to_machine() {
             ctx.message.set(Some(t().tests_need_compile.to_string()));
             return;
@@ -63,7 +77,8 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
     };
     view! {
         <span class="run-bar">
-            <button type="button" data-testid="run" on:click=run>{move || t().run}</button>
+            <button type="button" data-testid="run" aria-pressed=move || runs_drawing().to_string()
+                on:click=run>{move || if runs_drawing() { t().stop } else { t().run }}</button>
             <button type="button" data-testid="step-scan" on:click=move |_| step(0)>{move || t().step_scan}</button>
             <button type="button" data-testid="step-instr" on:click=move |_| step(1)>{move || t().step_instr}</button>
             {(kind == MachineId::MinasecU).then(|| view! {

@@ -213,6 +213,8 @@ pub struct LadderCtx {
     /// stands cannot be written (it has errors): the ladder shows no live
     /// state until it can.
     pub unwritten: RwSignal<bool>,
+    /// The machine is in RUN (as its last frame showed).
+    pub running: RwSignal<bool>,
     /// Inputs held from the ladder at a value until released.
     pub forced: RwSignal<Vec<(String, bool)>>,
     /// The recording as shown: time travel, breaks, chart, "why".
@@ -288,6 +290,7 @@ impl LadderCtx {
             stepped_cell: RwSignal::new(None),
             monitor: RwSignal::new(false),
             unwritten: RwSignal::new(false),
+            running: RwSignal::new(false),
             forced: RwSignal::new(Vec::new()),
             travel: super::travel::TravelState::new(),
         };
@@ -959,6 +962,9 @@ impl LadderCtx {
     pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
         // A drawing that cannot be written shows nothing live: the states
         // would be another program's.
+        if self.running.get_untracked() != plc.running() {
+            self.running.set(plc.running());
+        }
         let running = plc.scans() > 0 && !self.unwritten.get_untracked();
         let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
             Some(trace) => self.live.with_value(|l| {

@@ -73,6 +73,8 @@ pub struct EditorTexts {
     /// The drawing has errors, so it is not what the machine runs.
     pub not_written: &'static str,
     pub run: &'static str,
+    /// Stops the machine running the drawing.
+    pub stop: &'static str,
     pub step_scan: &'static str,
     pub step_instr: &'static str,
     pub step_clock: &'static str,
@@ -183,6 +185,7 @@ const EN: EditorTexts = EditorTexts {
     tests_need_compile: "The ladder must compile before its tests can run: see the problems.",
     not_written: "This drawing has problems, so it is not what the machine runs (it keeps the last drawing written): fix them and it is written at once.",
     run: "▶ Run",
+    stop: "■ Stop",
     step_scan: "Step scan",
     step_instr: "Step instruction",
     step_clock: "Step clock",
@@ -295,6 +298,7 @@ const JA: EditorTexts = EditorTexts {
         "テストを実行するにはラダーが変換できる必要があります。問題一覧を見てください。",
     not_written: "この図には問題があるため PLC に書き込めません (PLC は最後に書き込んだ図を実行中)。直すとすぐに書き込まれます。",
     run: "▶ 実行",
+    stop: "■ 停止",
     step_scan: "1スキャン",
     step_instr: "1命令",
     step_clock: "1クロック",
