@@ -119,3 +119,36 @@ def test_run_becomes_stop_and_stop_stops_the_machine(driver, base_url):
     run.click()
     wait(driver, lambda: run.get_attribute("aria-pressed") == "true", message="running again")
     wait(driver, lambda: el(driver, "travel-at").text != at, message="scans again")
+
+
+def test_the_header_clock_says_running_paused_or_stopped(driver, base_url):
+    open_fresh(driver, base_url)
+    clock = el(driver, "sim-time")
+    wait(driver, lambda: clock.get_attribute("data-state") == "running")
+    el(driver, "pause").click()
+    wait(driver, lambda: clock.get_attribute("data-state") == "paused")
+    assert clock.text.startswith("Paused")
+    el(driver, "pause").click()
+    wait(driver, lambda: clock.get_attribute("data-state") == "running")
+    # Run writes the drawing; Stop puts MINASEC-U's switch at HALT.
+    el(driver, "run").click()
+    wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "true")
+    el(driver, "run").click()
+    wait(driver, lambda: clock.get_attribute("data-state") == "stopped")
+    assert clock.text.startswith("Stopped")
+
+
+def test_write_to_plc_is_run_and_says_so(driver, base_url):
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("io86a")
+    wait(driver, lambda: el(driver, "palette"))
+    el(driver, "new-ladder").click()
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "ladder-write").click()
+    wait(driver, lambda: "Written to the PLC" in el(driver, "edit-message").text)
+    wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "true",
+         message="running the drawing, as Run does")
+    el(driver, "io86a-input-X00").click()
+    wait(driver, lambda: on(driver, "io86a-lamp-Y00"), message="the written drawing runs")

@@ -4,6 +4,8 @@
 
 use leptos::prelude::*;
 
+use engine::minasec::Mode;
+
 use crate::examples;
 use crate::i18n::Lang;
 use crate::machines::minasec::MinasecCtx;
@@ -211,16 +213,32 @@ fn SimClock() -> impl IntoView {
     let ctx = Ctx::get();
     let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
+    // Running, paused (simulated time stopped, the machine in RUN) or
+    // stopped (HALT or power off: no scan runs).
+    let state = move || {
+        let runs = board.panel.power.get() && board.panel.mode.get() == Mode::Run;
+        match (runs, ctx.paused.get()) {
+            (false, _) => "stopped",
+            (true, true) => "paused",
+            (true, false) => "running",
+        }
+    };
     view! {
         <span
             class="clock"
             data-testid="sim-time"
+            data-state=state
             class:hidden=move || ctx.machine.get() != MachineKind::MinasecU
         >
             {move || {
                 let ms = board.panel.sim_ms.get();
+                let word = match state() {
+                    "running" => t().state_running,
+                    "paused" => t().state_paused,
+                    _ => t().state_stopped,
+                };
                 format!(
-                    "{} {}.{:03} {} · {} {}",
+                    "{word} · {} {}.{:03} {} · {} {}",
                     t().sim_time,
                     ms / 1000,
                     ms % 1000,

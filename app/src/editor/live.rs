@@ -13,6 +13,26 @@ use leptos::prelude::*;
 use super::LadderCtx;
 use crate::workspaces::Workspaces;
 
+/// Run: writes the drawing to the machine and starts it (RUN, simulated
+/// time going); whether it could (else the problems are said). Write to
+/// PLC is the same action.
+pub fn run_drawing(ctx: LadderCtx, workspaces: Option<Workspaces>) -> bool {
+    let t = super::texts::texts(ctx.page.lang.get_untracked());
+    if !ctx.start_live() || !ctx.write_to_machine() {
+        ctx.message.set(Some(t.tests_need_compile.to_string()));
+        return false;
+    }
+    ctx.unwritten.set(false);
+    if let Some(w) = workspaces {
+        w.operate(ctx.machine, |plc: &mut dyn engine::plc::Plc| {
+            plc.set_tracing(true);
+            let _ = plc.apply(Command::Run(true));
+        });
+    }
+    ctx.page.paused.set(false);
+    true
+}
+
 /// The run and step buttons.
 #[component]
 pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
@@ -39,16 +59,7 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
             ctx.running.set(false);
             return;
         }
-        if !ctx.start_live() || !ctx.write_to_machine() {
-            ctx.message.set(Some(t().tests_need_compile.to_string()));
-            return;
-        }
-        ctx.unwritten.set(false);
-        operate(&|plc| {
-            plc.set_tracing(true);
-            let _ = plc.apply(Command::Run(true));
-        });
-        ctx.page.paused.set(false);
+        run_drawing(ctx, workspaces);
     };
     let step = move |which: u8| {
         if which == 0 && ctx.travel.shown.get_untracked().is_some() {

@@ -121,6 +121,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
 fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
     let t = move || texts::texts(ctx.page.lang.get());
     let ladders = use_context::<Ladders>();
+    let workspaces = use_context::<crate::workspaces::Workspaces>();
     let others: Vec<MachineId> = MachineId::ALL
         .into_iter()
         .filter(|m| *m != ctx.machine)
@@ -136,7 +137,12 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
             <button type="button" data-testid="redo" disabled=move || !ctx.can_redo.get()
                 on:click=move |_| { ctx.redo(); refocus.run(()); }>{move || t().redo}</button>
             <button type="button" data-testid="ladder-write" disabled=move || ctx.listing.with(Option::is_none)
-                on:click=move |_| { ctx.write_to_machine(); }>{move || t().write}</button>
+                on:click=move |_| {
+                    // The same action as Run, said where the user looks.
+                    if live::run_drawing(ctx, workspaces) {
+                        ctx.message.set(Some(t().written.to_string()));
+                    }
+                }>{move || t().write}</button>
             <shared::ShareButton ctx />
             <files::FileButtons ctx />
             <button type="button" data-testid="tests-open" on:click=move |_| ctx.tests_open.update(|f| *f = !*f)>
