@@ -124,18 +124,22 @@ def test_run_becomes_stop_and_stop_stops_the_machine(driver, base_url):
 def test_the_header_clock_says_running_paused_or_stopped(driver, base_url):
     open_fresh(driver, base_url)
     clock = el(driver, "sim-time")
+    # A fresh MINASEC-U stands at HALT: stopped, no scan counted.
+    wait(driver, lambda: clock.get_attribute("data-state") == "stopped")
+    assert clock.text.startswith("Stopped") and clock.text.endswith("· 0 scans")
+    el(driver, "run").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "running")
     el(driver, "pause").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "paused")
     assert clock.text.startswith("Paused")
     el(driver, "pause").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "running")
-    # Run writes the drawing; Stop puts MINASEC-U's switch at HALT.
-    el(driver, "run").click()
+    # Stop puts MINASEC-U's switch at HALT.
     wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "true")
     el(driver, "run").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "stopped")
     assert clock.text.startswith("Stopped")
+    assert el(driver, "mode-halt").get_attribute("aria-pressed") == "true", "the panel's switch"
 
 
 def test_write_to_plc_is_run_and_says_so(driver, base_url):
