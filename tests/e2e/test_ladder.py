@@ -890,3 +890,26 @@ def test_an_io86a_timer_coil_shows_current_and_preset(driver, base_url):
     wait(driver, lambda: (timer.find_element(By.CSS_SELECTOR, ".val").get_attribute("data-value") or "0") != "0",
          message="T00 counts on its coil")
     wait(driver, lambda: "/K19)" in el(driver, "watch-T00").text, message="current / preset in the watch table")
+
+
+def test_taps_alone_place_a_contact_and_a_coil(driver, base_url):
+    """No Return key on a touch screen: a cell, a palette item, a chip, OK."""
+    open_fresh(driver, base_url)
+    el(driver, "new-ladder").click()
+
+    def tap_entry(palette, device):
+        el(driver, palette).click()
+        chips = wait(driver, lambda: [b for b in driver.find_elements(
+            By.CSS_SELECTOR, '[data-testid="device-options"] button') if b.text.split()[0] == device])
+        chips[0].click()
+        assert el(driver, "device-input").get_attribute("value") == device
+        el(driver, "device-ok").click()
+        wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="device-input"]'))
+
+    el(driver, "cell-0-0-0").click()
+    tap_entry("palette-no", "X00")
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X00")
+    tap_entry("palette-coil", "Y00")
+    wait(driver, lambda: "ST   Y00" in el(driver, "il-listing").text or "Y00" in el(driver, "il-listing").text)
+    assert any(c.get_attribute("data-device") == "Y00" and c.get_attribute("data-kind") == "coil"
+               for c in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-device]'))

@@ -1,7 +1,8 @@
 //! The device entry `[data-testid=device-input]`: opened by F5–F8 and the
 //! palette at the cursor's cell, with completion from the machine's
-//! devices and the project's comments. Enter commits (or shows the
-//! engine's refusal, changing nothing); Escape cancels.
+//! devices and the project's comments. Enter or OK (touch: a chip, then
+//! OK) commits (or shows the engine's refusal, changing nothing); Escape
+//! or Cancel cancels.
 
 use engine::ladder::edit::{complete, EntryKind};
 use leptos::prelude::*;
@@ -92,6 +93,11 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                         _ => {}
                     }
                 />
+                <button type="button" data-testid="device-ok" on:click=move |_| {
+                    if ctx.commit_entry() {
+                        on_close.run(());
+                    }
+                }>{move || t().ok}</button>
                 <button type="button" on:click=move |_| close()>{move || t().cancel}</button>
                 <div class="entry-error" role="alert" data-testid="device-error">
                     {move || ctx.entry.with(|e| e.as_ref().and_then(|e| e.error.clone()))}
