@@ -913,3 +913,14 @@ def test_taps_alone_place_a_contact_and_a_coil(driver, base_url):
     wait(driver, lambda: "ST   Y00" in el(driver, "il-listing").text or "Y00" in el(driver, "il-listing").text)
     assert any(c.get_attribute("data-device") == "Y00" and c.get_attribute("data-kind") == "coil"
                for c in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-device]'))
+
+
+def test_the_key_map_takes_the_focus_and_closes_on_escape(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    el(driver, "keys").click()
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "keymap",
+         message="the key map has the focus")
+    keys(driver, Keys.ESCAPE)
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="keymap"]'))
+    assert driver.switch_to.active_element.get_attribute("data-testid") == "ladder"

@@ -62,6 +62,16 @@ impl Ladders {
 /// The editor: toolbar, device entry, palette, grid, listing, problems.
 #[component]
 pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
+    // The key map takes the focus when it opens (Escape closes it and
+    // gives the focus back to the ladder).
+    let keymap = NodeRef::<leptos::html::Div>::new();
+    Effect::new(move |_| {
+        if ctx.help.get() {
+            if let Some(d) = keymap.get() {
+                let _ = d.focus();
+            }
+        }
+    });
     let grid = NodeRef::<leptos::html::Div>::new();
     let refocus = Callback::new(move |()| grid::focus(grid));
     let t = move || texts::texts(ctx.page.lang.get());
@@ -101,7 +111,13 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                 <find::FindPane ctx on_pick=refocus />
             </Show>
             <Show when=move || ctx.help.get()>
-                <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys>
+                <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys
+                    node_ref=keymap tabindex="-1"
+                    on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
+                        e.prevent_default();
+                        ctx.help.set(false);
+                        grid::focus(grid);
+                    }>
                     <table>
                         {keys::KEY_MAP.iter().map(|(k, what)| view! {
                             <tr><th>{*k}</th><td>{*what}</td></tr>
