@@ -8,15 +8,13 @@ use super::blocks;
 use super::body::{Body, CommentBox, Gate, GateKind, Lined, PinRef, VariableBox, RAIL};
 use super::declare::Names;
 use super::dom::Node;
-use super::error::{Connection, ImportError};
+use super::error::{Connection, Errors, ImportError};
 use super::kinds::BlockKind;
 use super::parts::*;
 use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
-
-pub(super) type Errors = Vec<Located<ImportError>>;
 
 impl Body {
     pub(super) fn read(

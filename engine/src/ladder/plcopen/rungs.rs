@@ -6,7 +6,7 @@
 use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::body::{Body, ElementEdge, RAIL};
-use super::error::ImportError;
+use super::error::{Errors, ImportError};
 use super::main_line::{off_main_line, Link};
 use super::parts::*;
 use crate::error::Located;
@@ -15,8 +15,6 @@ use crate::ladder::grid::Pos;
 use crate::ladder::net::{reduce_all, Edge, Net, NetError, RungLogic};
 use crate::ladder::target::{capabilities, check_element};
 use crate::MachineId;
-
-pub(super) type Errors = Vec<Located<ImportError>>;
 
 /// What [`Body::lower_leaf`] needs to know of the whole body.
 struct LeafEnv {
