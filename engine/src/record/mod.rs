@@ -23,7 +23,7 @@ mod travel;
 
 pub use condition::{Condition, ConditionError};
 pub use recorded::Recorded;
-pub use run::run_scans;
+pub use run::{run_scans, run_whole_scans};
 pub use travel::TimeTravel;
 
 use std::collections::VecDeque;

@@ -14,25 +14,39 @@ pub fn run_scans<M: Plc + ?Sized>(
     t: SimTime,
     mut at_scan: impl FnMut(&M) -> bool,
 ) -> bool {
+    if !run_whole_scans(machine, t, &mut at_scan) {
+        return false;
+    }
+    // The rest, up to `t`: part of a scan (or, for a machine that cannot
+    // say when its scan ends, everything).
+    let before = machine.scans();
+    machine.run_until(t);
+    machine.scans() == before || at_scan(machine)
+}
+
+/// Runs `machine` scan by scan to the end of the last scan that ends at or
+/// before `t`, calling `at_scan` at each end, which returns whether to go
+/// on; false when it stopped the run. It stops short, too, for a machine
+/// that cannot say when its scan ends (nothing moved) rather than spin:
+/// what remains is for a plain `run_until`.
+pub fn run_whole_scans<M: Plc + ?Sized>(
+    machine: &mut M,
+    t: SimTime,
+    mut at_scan: impl FnMut(&M) -> bool,
+) -> bool {
     loop {
         let before = machine.scans();
         let started = machine.now();
         match machine.next_scan_end() {
             Some(end) if end <= t => machine.run_until(end),
-            _ => {
-                machine.run_until(t);
-                return machine.scans() == before || at_scan(machine);
-            }
+            _ => return true,
         }
         if machine.scans() != before {
             if !at_scan(machine) {
                 return false;
             }
         } else if machine.now() <= started && machine.next_scan_end() <= Some(started) {
-            // Nothing moved (a machine that cannot say when its scan
-            // ends): run the rest plainly rather than spin.
-            machine.run_until(t);
-            return machine.scans() == before || at_scan(machine);
+            return true;
         }
     }
 }

@@ -14,6 +14,7 @@ use engine::ladder::why::{causes, deciding_output, Explanation};
 use engine::ladder::Ladder;
 use engine::machines::new_plc;
 use engine::plc::{Command, Device, Plc, PlcError, Value};
+use engine::record::run_whole_scans;
 use engine::{MachineId, SimTime};
 
 use crate::args::Args;
@@ -140,7 +141,7 @@ impl Explained {
 /// end of the scan the trace is of, and "last changed" comes from the same
 /// samples (the Arduino sketch's pins change mid-pass).
 fn run_to(
-    plc: &mut dyn Plc,
+    plc: &mut (dyn Plc + 'static),
     ladder: &Ladder,
     asked: (&str, Device),
     inputs: &[(SimTime, Device, engine::events::InputValue)],
@@ -157,7 +158,7 @@ fn run_to(
         }
     }
     changes.insert(asked.0.to_string(), (asked.1, plc.read(asked.1), None));
-    let mut observe = |m: &dyn Plc| {
+    let mut observe = |m: &(dyn Plc + 'static)| {
         for (d, last, changed) in changes.values_mut() {
             let now = m.read(*d);
             if now != *last {
@@ -165,36 +166,19 @@ fn run_to(
                 *changed = Some((m.now(), m.scans()));
             }
         }
+        true
     };
     plc.set_tracing(true);
     for &(t, d, value) in inputs.iter().filter(|(t, _, _)| *t <= at) {
         // Everything due strictly before the event runs first.
-        whole_scans(plc, PeriodicClock::just_before(t), &mut observe);
+        run_whole_scans(plc, PeriodicClock::just_before(t), &mut observe);
         plc.run_before(t);
         // Checked above: the machine takes it.
         let _ = plc.apply(Command::SetInput(d, value));
     }
-    whole_scans(plc, at, &mut observe);
+    run_whole_scans(plc, at, &mut observe);
     plc.run_until(at);
     changes
-}
-
-/// Runs `plc` scan by scan up to the end of the last scan that ends at or
-/// before `t`, calling `at_end` at each end.
-fn whole_scans(plc: &mut dyn Plc, t: SimTime, at_end: &mut impl FnMut(&dyn Plc)) {
-    while let Some(end) = plc.next_scan_end().filter(|&end| end <= t) {
-        let (before, started) = (plc.scans(), plc.now());
-        plc.run_until(end);
-        if plc.scans() == before {
-            if plc.now() <= started {
-                // A machine that cannot say when its scan ends: nothing
-                // moved, so stop rather than spin.
-                return;
-            }
-            continue;
-        }
-        at_end(plc);
-    }
 }
 
 /// A ladder with each element's devices in the machine's own spelling
