@@ -41,8 +41,8 @@ def y00_cells(driver):
     return driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-device="Y00"]')
 
 
-def io86a_running_x00_to_y00(driver, base_url):
-    """X00 → Y00 drawn by keys on PLC-IO86A, running, X00 on."""
+def io86a_x00_to_y00_drawn(driver, base_url):
+    """X00 → Y00 drawn by keys on PLC-IO86A, not yet written."""
     open_fresh(driver, base_url)
     Select(el(driver, "machine")).select_by_value("io86a")
     wait(driver, lambda: el(driver, "palette"))
@@ -51,6 +51,11 @@ def io86a_running_x00_to_y00(driver, base_url):
     focus_ladder(driver)
     place(driver, Keys.F5, "X00")
     place(driver, Keys.F7, "Y00")
+
+
+def io86a_running_x00_to_y00(driver, base_url):
+    """X00 → Y00 drawn by keys on PLC-IO86A, running, X00 on."""
+    io86a_x00_to_y00_drawn(driver, base_url)
     el(driver, "run").click()
     el(driver, "io86a-input-X00").click()
     wait(driver, lambda: on(driver, "io86a-lamp-Y00"), message="X00 lights Y00")
@@ -143,13 +148,7 @@ def test_the_header_clock_says_running_paused_or_stopped(driver, base_url):
 
 
 def test_write_to_plc_is_run_and_says_so(driver, base_url):
-    open_fresh(driver, base_url)
-    Select(el(driver, "machine")).select_by_value("io86a")
-    wait(driver, lambda: el(driver, "palette"))
-    el(driver, "new-ladder").click()
-    focus_ladder(driver)
-    place(driver, Keys.F5, "X00")
-    place(driver, Keys.F7, "Y00")
+    io86a_x00_to_y00_drawn(driver, base_url)
     el(driver, "ladder-write").click()
     wait(driver, lambda: "Written to the PLC" in el(driver, "edit-message").text)
     wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "true",

@@ -18,7 +18,7 @@ use crate::workspaces::Workspaces;
 /// PLC is the same action.
 pub fn run_drawing(ctx: LadderCtx, workspaces: Option<Workspaces>) -> bool {
     let t = super::texts::texts(ctx.page.lang.get_untracked());
-    if !ctx.start_live() || !ctx.write_to_machine() {
+    if !ctx.write_drawing() {
         ctx.message.set(Some(t.tests_need_compile.to_string()));
         return false;
     }

@@ -780,9 +780,17 @@ impl LadderCtx {
         }
     }
 
-    /// "Write to PLC": the listing goes into the text pane and is loaded
-    /// into the machine. False while the ladder does not compile.
-    pub fn write_to_machine(&self) -> bool {
+    /// The drawing written to the machine with its source map for the
+    /// live colours ([`LadderCtx::start_live`], then
+    /// [`LadderCtx::write_to_machine`]): what Run, Write to PLC and an edit
+    /// while running do. False while it does not compile.
+    pub fn write_drawing(&self) -> bool {
+        self.start_live() && self.write_to_machine()
+    }
+
+    /// The listing goes into the text pane and is loaded into the machine.
+    /// False while the ladder does not compile.
+    fn write_to_machine(&self) -> bool {
         let Some(listing) = self.listing.get_untracked() else {
             return false;
         };
@@ -838,16 +846,17 @@ impl LadderCtx {
         if self.problems.with_untracked(|p| *p != problems) {
             self.problems.set(problems);
         }
+        // Before the drawing is written: writing takes the listing.
+        if self.listing.with_untracked(|l| *l != listing) {
+            self.listing.set(listing.clone());
+        }
         if edited {
             self.live.set_value(None);
             // The machine runs the drawing: written at once, so what the
             // ladder shows is what runs (docs/editor.md, "The run model").
             let follows = self.monitor.get_untracked() || self.unwritten.get_untracked();
             if follows {
-                if self.listing.with_untracked(|l| *l != listing) {
-                    self.listing.set(listing.clone());
-                }
-                let written = listing.is_some() && self.start_live() && self.write_to_machine();
+                let written = listing.is_some() && self.write_drawing();
                 if !written && self.monitor.get_untracked() {
                     self.monitor.set(false);
                 }
@@ -860,9 +869,6 @@ impl LadderCtx {
         if edited && !self.shared.get_untracked() {
             self.follow(listing.as_ref());
             self.save();
-        }
-        if self.listing.with_untracked(|l| *l != listing) {
-            self.listing.set(listing);
         }
         self.revision.update(|n| *n += 1);
     }
@@ -931,7 +937,7 @@ impl LadderCtx {
     /// Run: the ladder compiled with its source map becomes what the
     /// colours are read against; false (with the problems shown) when it
     /// does not compile.
-    pub fn start_live(&self) -> bool {
+    fn start_live(&self) -> bool {
         let options = self.options.get_untracked();
         let live = self.editor.with_value(|e| {
             engine::ladder::live::LiveLadder::new(e.ladder(), self.machine, options)
@@ -962,8 +968,9 @@ impl LadderCtx {
     pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
         // A drawing that cannot be written shows nothing live: the states
         // would be another program's.
-        if self.running.get_untracked() != plc.running() {
-            self.running.set(plc.running());
+        let in_run = plc.running();
+        if self.running.get_untracked() != in_run {
+            self.running.set(in_run);
         }
         let running = plc.scans() > 0 && !self.unwritten.get_untracked();
         let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
