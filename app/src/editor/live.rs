@@ -33,6 +33,13 @@ pub fn run_drawing(ctx: LadderCtx, workspaces: Option<Workspaces>) -> bool {
     true
 }
 
+/// [`run_drawing`] for a button outside the run bar, its machine found
+/// now (while the component is built, where the context is).
+pub fn run_action(ctx: LadderCtx) -> impl Fn() -> bool + Copy {
+    let workspaces = use_context::<Workspaces>();
+    move || run_drawing(ctx, workspaces)
+}
+
 /// The run and step buttons.
 #[component]
 pub fn RunBar(ctx: LadderCtx) -> impl IntoView {

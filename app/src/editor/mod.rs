@@ -137,7 +137,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
 fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
     let t = move || texts::texts(ctx.page.lang.get());
     let ladders = use_context::<Ladders>();
-    let workspaces = use_context::<crate::workspaces::Workspaces>();
+    let run_drawing = live::run_action(ctx);
     let others: Vec<MachineId> = MachineId::ALL
         .into_iter()
         .filter(|m| *m != ctx.machine)
@@ -155,7 +155,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
             <button type="button" data-testid="ladder-write" disabled=move || ctx.listing.with(Option::is_none)
                 on:click=move |_| {
                     // The same action as Run, said where the user looks.
-                    if live::run_drawing(ctx, workspaces) {
+                    if run_drawing() {
                         ctx.message.set(Some(t().written.to_string()));
                     }
                 }>{move || t().write}</button>
