@@ -49,8 +49,28 @@ pub fn start() {
     });
     // It listens for the page's life.
     std::mem::forget(listener);
+    listen_to_other_tabs(workspaces);
     leptos::mount::mount_to_body(move || view! { <App ctx=ctx workspaces=workspaces /> });
     start_loop(ctx, workspaces);
+}
+
+/// Another tab of the page saved (the `storage` event, which only other
+/// tabs get): each editor follows it or shows a conflict, and the project
+/// list is read again.
+fn listen_to_other_tabs(workspaces: Workspaces) {
+    let listener = window_event_listener(leptos::ev::storage, move |e| {
+        // `None`: the other tab cleared storage; nothing to follow.
+        let Some(key) = e.key() else {
+            return;
+        };
+        for machine in engine::MachineId::ALL {
+            workspaces.ladders.of(machine).on_storage(&key);
+        }
+        if key == editor::projects::INDEX_KEY {
+            workspaces.projects.reload();
+        }
+    });
+    std::mem::forget(listener);
 }
 
 /// Registers the service worker that keeps the page working offline

@@ -139,6 +139,12 @@ fn open_text(
     }
 }
 
+/// Offers the project (ladder, settings, tests) as a JSON file.
+pub fn save_project_file(ctx: LadderCtx) {
+    let project = super::shared::project_of(ctx);
+    download(&name(ctx, "json"), "application/json", &project.to_json());
+}
+
 /// The file buttons.
 #[component]
 pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
@@ -174,10 +180,9 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
     };
     view! {
         <span class="files">
-            <button type="button" data-testid="save-json" on:click=move |_| {
-                let project = super::shared::project_of(ctx);
-                download(&name(ctx, "json"), "application/json", &project.to_json());
-            }>{move || t().save_json}</button>
+            <button type="button" data-testid="save-json" on:click=move |_| save_project_file(ctx)>
+                {move || t().save_json}
+            </button>
             <label class="file-open">
                 {move || t().open_file}
                 <input type="file" data-testid="open-file" accept=".json,.xml,application/json,text/xml" on:change=on_file />

@@ -10,6 +10,7 @@
 //! - [`shared`], [`files`], [`picture`]: share links, files, SVG / PNG;
 //! - [`cases`]: the Tests pane.
 
+pub mod autosave;
 pub mod cases;
 pub mod chart;
 pub mod entry;
@@ -79,6 +80,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
     view! {
         <section class="ladder-editor" data-machine=ctx.machine.name()>
             <shared::SharedBanner ctx />
+            <autosave::StorageBanner ctx />
             <Toolbar ctx refocus />
             <div class="ladder-toolbar run-toolbar">
                 <live::RunBar ctx />

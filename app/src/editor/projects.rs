@@ -71,9 +71,25 @@ impl Projects {
         }
     }
 
-    fn save(&self) {
-        self.index
-            .with_untracked(|i| storage::save_to(INDEX_KEY, i));
+    /// Changes the index as saved now (another tab may have changed it
+    /// since this one read it: its entries stay), then shows it.
+    fn change(&self, f: impl FnOnce(&mut Index)) {
+        let mut index = match storage::restore_from::<Index>(INDEX_KEY) {
+            Restored::Saved(i) => i,
+            _ => self.index.get_untracked(),
+        };
+        f(&mut index);
+        storage::save_to(INDEX_KEY, &index);
+        self.index.set(index);
+    }
+
+    /// Another tab changed the index: show it as saved.
+    pub fn reload(&self) {
+        if let Restored::Saved(index) = storage::restore_from::<Index>(INDEX_KEY) {
+            if self.index.with_untracked(|i| *i != index) {
+                self.index.set(index);
+            }
+        }
     }
 
     fn next_id(&self) -> u64 {
@@ -92,14 +108,13 @@ impl Projects {
         if !write(&key_of(id), &json) {
             return None;
         }
-        self.index.update(|i| {
+        self.change(|i| {
             i.projects.push(Entry {
                 id,
                 name: name.to_string(),
                 machine,
             })
         });
-        self.save();
         Some(id)
     }
 
@@ -111,12 +126,11 @@ impl Projects {
 
     /// Renames project `id`.
     pub fn rename(&self, id: u64, name: &str) {
-        self.index.update(|i| {
+        self.change(|i| {
             if let Some(e) = i.projects.iter_mut().find(|e| e.id == id) {
                 e.name = name.to_string();
             }
         });
-        self.save();
     }
 
     /// A copy of project `id` named "… (copy)".
@@ -144,8 +158,7 @@ impl Projects {
             return;
         };
         let json = read(&key_of(id)).unwrap_or_default();
-        self.index.update(|i| i.projects.retain(|e| e.id != id));
-        self.save();
+        self.change(|i| i.projects.retain(|e| e.id != id));
         remove(&key_of(id));
         self.deleted.set(Some((entry, json)));
     }
@@ -156,32 +169,25 @@ impl Projects {
             return;
         };
         if write(&key_of(entry.id), &json) {
-            self.index.update(|i| {
+            self.change(|i| {
                 i.projects.push(entry);
                 i.projects.sort_by_key(|e| e.id);
             });
-            self.save();
             self.deleted.set(None);
         }
     }
 }
 
-fn store() -> Option<web_sys::Storage> {
-    web_sys::window()?.local_storage().ok().flatten()
-}
-
 fn read(key: &str) -> Option<String> {
-    store()?.get_item(key).ok().flatten()
+    storage::saved_string(key)
 }
 
 fn write(key: &str, value: &str) -> bool {
-    store().is_some_and(|s| s.set_item(key, value).is_ok())
+    storage::write(key, value).is_ok()
 }
 
 fn remove(key: &str) {
-    if let Some(s) = store() {
-        let _ = s.remove_item(key);
-    }
+    storage::remove(key);
 }
 
 /// Opens project `id` in its machine's editor (the ladder there before is

@@ -219,6 +219,20 @@ pub struct LadderCtx {
     pub forced: RwSignal<Vec<(String, bool)>>,
     /// The recording as shown: time travel, breaks, chart, "why".
     pub travel: super::travel::TravelState,
+    /// Where the project is saved, and what another tab did there.
+    pub saving: super::autosave::Autosave,
+}
+
+/// What a refresh follows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Change {
+    /// Nothing was edited (a restore, a view change).
+    Shown,
+    /// An edit here: written to a machine that runs the drawing, saved.
+    Edited,
+    /// Another tab's save shown here: written to the machine, not saved
+    /// again (it is what storage holds).
+    Followed,
 }
 
 /// What showing a shared project set aside: its settings (applied when
@@ -293,6 +307,7 @@ impl LadderCtx {
             running: RwSignal::new(false),
             forced: RwSignal::new(Vec::new()),
             travel: super::travel::TravelState::new(),
+            saving: super::autosave::Autosave::new(&store::slot(machine, project)),
         };
         ctx.refresh(false);
         ctx
@@ -352,8 +367,7 @@ impl LadderCtx {
         });
         let kept_as = match made {
             Some((id, name)) => {
-                self.project.set(Some(id));
-                store::remember_open(self.machine, Some(id));
+                self.set_project(Some(id));
                 Some(name)
             }
             None => store::set_aside(self.machine),
@@ -381,8 +395,7 @@ impl LadderCtx {
     /// Opens `ladder` as project `project` here (the ladder before is one
     /// undo away; it stays saved where it was).
     pub fn open_project(&self, id: Option<u64>, project: engine::ladder::Project) {
-        self.project.set(id);
-        store::remember_open(self.machine, id);
+        self.set_project(id);
         self.tests.set(project.tests);
         self.exercise.set(project.exercise);
         self.results.set(Vec::new());
@@ -413,6 +426,79 @@ impl LadderCtx {
         // while it runs the drawing); not saved, as the link was not.
         self.refresh(with.replaced);
         self.shared.set(false);
+        // Another tab may have saved while the link was shown.
+        self.on_storage(&store::slot(self.machine, self.project.get_untracked()));
+    }
+
+    /// Project `id` (or the machine's own ladder) is edited here from now
+    /// on: remembered for the next visit, saved in its slot.
+    fn set_project(&self, id: Option<u64>) {
+        self.project.set(id);
+        store::remember_open(self.machine, id);
+        self.saving.switch_to(&store::slot(self.machine, id));
+    }
+
+    /// A `storage` event for `key`: another tab saved. This tab shows its
+    /// work when it had nothing unsaved (undo brings back what it showed);
+    /// a conflict is shown otherwise. Nothing while a shared ladder is
+    /// shown (its own is compared when it is left).
+    pub fn on_storage(&self, key: &str) {
+        if self.shared.get_untracked() {
+            return;
+        }
+        if let Some(json) = self.saving.elsewhere(key) {
+            self.show_saved(&json);
+        }
+    }
+
+    /// Shows a project saved by another tab, as an edit not saved again.
+    fn show_saved(&self, json: &str) {
+        let Ok(project) = engine::ladder::Project::from_json(json) else {
+            return;
+        };
+        if project.machine != self.machine {
+            return;
+        }
+        self.tests.set(project.tests);
+        self.exercise.set(project.exercise);
+        self.results.set(Vec::new());
+        let replaced = self
+            .editor
+            .try_update_value(|e| e.apply(Edit::Replace { ladder: project.ladder }))
+            .is_some_and(|r| r.is_ok());
+        if replaced {
+            self.refresh_as(Change::Followed);
+        }
+    }
+
+    /// "Load theirs": the other tab's work replaces this tab's (one undo
+    /// brings it back).
+    pub fn load_theirs(&self) {
+        if let Some(json) = self.saving.theirs() {
+            self.show_saved(&json);
+        }
+    }
+
+    /// "Keep mine as a copy": this tab's work becomes a project of its own,
+    /// opened here; the other tab's work stays where it was saved.
+    pub fn keep_mine(&self, projects: super::projects::Projects) {
+        let texts = super::texts::texts(self.page.lang.get_untracked());
+        let from = self.project.get_untracked().and_then(|id| {
+            projects
+                .index
+                .with_untracked(|i| i.projects.iter().find(|e| e.id == id).map(|e| e.name.clone()))
+        });
+        let base = from.unwrap_or_else(|| texts.project_default.to_string());
+        let name = format!("{base} {}", texts.conflict_copy);
+        let Some(id) = projects.create(&name, &self.project_now()) else {
+            return;
+        };
+        self.set_project(Some(id));
+        self.saving.conflict.set(false);
+        self.save();
+        self.page
+            .notice
+            .set(Some(format!("{} {name}", texts.conflict_kept)));
     }
 
     /// Connects the machine's text pane. The pane follows the ladder while
@@ -808,6 +894,11 @@ impl LadderCtx {
     /// rungs whose drawing changed, cursor, undo state; then the text pane
     /// (when `edited` and it follows the ladder) and the autosave.
     pub fn refresh(&self, edited: bool) {
+        self.refresh_as(if edited { Change::Edited } else { Change::Shown });
+    }
+
+    fn refresh_as(&self, change: Change) {
+        let edited = change != Change::Shown;
         let options = self.options.get_untracked();
         let (listing, errors, out_col, comments, cursor, undo, redo) =
             self.editor.with_value(|e| {
@@ -868,7 +959,9 @@ impl LadderCtx {
         // A shared project is not saved until it is kept.
         if edited && !self.shared.get_untracked() {
             self.follow(listing.as_ref());
-            self.save();
+            if change == Change::Edited {
+                self.save();
+            }
         }
         self.revision.update(|n| *n += 1);
     }
@@ -884,7 +977,7 @@ impl LadderCtx {
     /// Autosaves the project (not while a shared one is shown).
     pub fn save(&self) {
         if !self.shared.get_untracked() {
-            store::save(self.page, self.project.get_untracked(), &self.project_now());
+            self.saving.save(&self.project_now().to_json());
         }
     }
 

@@ -81,28 +81,13 @@ fn restore_from(page: Ctx, machine: MachineId, key: &str) -> Option<Project> {
     }
 }
 
-/// Saves `saved` (the ladder and its test cases) in `project` (or the
-/// machine's own slot); a storage that refuses is reported.
-pub fn save(page: Ctx, project: Option<u64>, saved: &Project) {
-    let machine = saved.machine;
-    let json = saved.to_json();
-    let ok = web_sys::window()
-        .and_then(|w| w.local_storage().ok().flatten())
-        .is_some_and(|s| s.set_item(&slot(machine, project), &json).is_ok());
-    if !ok {
-        let texts = page.lang.get_untracked().texts();
-        page.notice.set(Some(texts.storage_unavailable.to_string()));
-    }
-}
-
 /// Moves the ladder saved for `machine` aside under
 /// `<key>.before-shared.<ms>` (before a shared ladder replaces it);
 /// returns that key, or `None` when nothing was saved.
 pub fn set_aside(machine: MachineId) -> Option<String> {
-    let store = web_sys::window()?.local_storage().ok()??;
     let key = key(machine);
-    let raw = store.get_item(&key).ok()??;
+    let raw = storage::saved_string(&key)?;
     let aside = format!("{key}.before-shared.{}", js_sys::Date::now() as u64);
-    store.set_item(&aside, &raw).ok()?;
+    storage::write(&aside, &raw).ok()?;
     Some(aside)
 }

@@ -1,6 +1,14 @@
 //! Autosave: the program text and the panel's settings go to localStorage
 //! on every change and come back on reload. A saved value that cannot be
 //! read is moved aside under a key of its own and reported, never dropped.
+//!
+//! - [`backend`]: where values live (localStorage, or memory in tests);
+//! - [`slot`]: a slot shared by open tabs, saved with revisions.
+
+pub mod backend;
+pub mod slot;
+
+pub use backend::{backend, StorageBackend, StorageFault};
 
 use engine::minasec::TimerId;
 use leptos::prelude::*;
@@ -103,10 +111,6 @@ pub enum Restored<T = Saved> {
     Unavailable,
 }
 
-fn storage() -> Option<web_sys::Storage> {
-    web_sys::window()?.local_storage().ok().flatten()
-}
-
 /// Reads the saved MINASEC-U workspace.
 pub fn restore() -> Restored {
     restore_from(KEY)
@@ -114,10 +118,8 @@ pub fn restore() -> Restored {
 
 /// Reads the value saved under `key`.
 pub fn restore_from<T: DeserializeOwned + Checked>(key: &str) -> Restored<T> {
-    let Some(store) = storage() else {
-        return Restored::Unavailable;
-    };
-    let raw = match store.get_item(key) {
+    let store = backend();
+    let raw = match store.get(key) {
         Ok(Some(raw)) => raw,
         Ok(None) => return Restored::Nothing,
         Err(_) => return Restored::Unavailable,
@@ -128,10 +130,10 @@ pub fn restore_from<T: DeserializeOwned + Checked>(key: &str) -> Restored<T> {
             // Keep the unreadable value under a key of its own, so the next
             // autosave cannot overwrite it.
             let kept_as = format!("{key}.corrupt.{}", js_sys::Date::now() as u64);
-            if store.set_item(&kept_as, &raw).is_err() {
+            if store.set(&kept_as, &raw).is_err() {
                 return Restored::Unavailable;
             }
-            let _ = store.remove_item(key);
+            store.remove(key);
             Restored::Corrupt { kept_as }
         }
     }
@@ -178,34 +180,32 @@ pub fn save(saved: &Saved) -> bool {
     save_to(KEY, saved)
 }
 
+/// A plain string saved under `key`; `Err` when storage refused it.
+pub fn write(key: &str, value: &str) -> Result<(), StorageFault> {
+    backend().set(key, value)
+}
+
 /// Saves `value` under `key`; false when storage is unavailable or full.
 pub fn save_to<T: Serialize>(key: &str, value: &T) -> bool {
-    let Some(store) = storage() else {
-        return false;
-    };
     match serde_json::to_string(value) {
-        Ok(json) => store.set_item(key, &json).is_ok(),
+        Ok(json) => backend().set(key, &json).is_ok(),
         Err(_) => false,
     }
 }
 
 /// Forgets a remembered string.
 pub fn remove(key: &str) {
-    if let Some(store) = storage() {
-        let _ = store.remove_item(key);
-    }
+    backend().remove(key);
 }
 
 /// A plain remembered string (language, machine).
 pub fn saved_string(key: &str) -> Option<String> {
-    storage()?.get_item(key).ok().flatten()
+    backend().get(key).ok().flatten()
 }
 
 /// Remembers a plain string.
 pub fn save_string(key: &str, value: &str) {
-    if let Some(store) = storage() {
-        let _ = store.set_item(key, value);
-    }
+    let _ = backend().set(key, value);
 }
 
 /// The remembered language code, if any.
