@@ -830,8 +830,10 @@ def test_inputs_driven_from_the_ladder_and_the_stepped_element(driver, base_url)
 
 def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, artifacts, tmp_path):
     """Measures frame times (not a pass/fail speed test): 200 rungs of 10
-    columns on the AVR PLC, every coil toggling every scan, run flat out;
-    requestAnimationFrame deltas running and paused go to figures.json."""
+    columns on the AVR PLC, every coil toggling every scan, run flat out in
+    a 1600x1100 window; the p95 of requestAnimationFrame deltas, running
+    and paused, three runs of 3 s each, go to figures.json with their
+    medians (docs/performance.md)."""
     rungs = []
     for i in range(200):
         bit = f"R{i // 8}.{i % 8}"
@@ -841,14 +843,13 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, ar
     project = tmp_path / "r200.json"
     project.write_text(json.dumps({"format": "hashigo-project", "version": 1, "machine": "avr-plc",
                                    "ladder": {"rungs": rungs}}))
+    driver.set_window_size(1600, 1100)
     open_fresh(driver, base_url)
     Select(el(driver, "machine")).select_by_value("avr-plc")
     wait(driver, lambda: el(driver, "palette"))
     el(driver, "open-file").send_keys(str(project))
     wait(driver, lambda: el(driver, "cell-199-0-9").get_attribute("data-device") == "R24.7")
     Select(el(driver, "speed")).select_by_value("max")
-    el(driver, "run").click()
-    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-powered") in ("0", "1"))
     measure = """
         const done = arguments[arguments.length - 1];
         const deltas = []; let last = null; const end = performance.now() + 3000;
@@ -856,25 +857,33 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, ar
           if (t < end) requestAnimationFrame(frame); else done(deltas); }
         requestAnimationFrame(frame);"""
     driver.set_script_timeout(30)
-    running = driver.execute_async_script(measure)
-    # Toggling every scan, each coil changed between any two frames.
-    assert el(driver, "cell-100-0-9").get_attribute("data-pulsed") == "1"
-    assert el(driver, "cell-199-0-0").get_attribute("data-pulsed") == "1"
-    el(driver, "pause").click()
-    paused = driver.execute_async_script(measure)
 
     def stats(d):
         d = sorted(d)
         pick = lambda q: round(d[min(len(d) - 1, int(q * len(d)))], 2)
         return {"p50": pick(0.5), "p95": pick(0.95), "max": round(d[-1], 2), "frames": len(d)}
 
+    runs = {"running": [], "paused": []}
+    for _ in range(3):
+        el(driver, "run").click()
+        wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-powered") in ("0", "1"))
+        running = driver.execute_async_script(measure)
+        # Toggling every scan, each coil changed between any two frames.
+        assert el(driver, "cell-100-0-9").get_attribute("data-pulsed") == "1"
+        assert el(driver, "cell-199-0-0").get_attribute("data-pulsed") == "1"
+        el(driver, "pause").click()
+        paused = driver.execute_async_script(measure)
+        assert len(running) > 30 and len(paused) > 30
+        runs["running"].append(stats(running))
+        runs["paused"].append(stats(paused))
+
     figures_file = artifacts / "figures.json"
     figures = json.loads(figures_file.read_text()) if figures_file.exists() else {}
-    figures["ladder_200_rungs_running_frame_ms"] = stats(running)
-    figures["ladder_200_rungs_paused_frame_ms"] = stats(paused)
+    for state in ("running", "paused"):
+        p95s = sorted(r["p95"] for r in runs[state])
+        figures[f"ladder_200_rungs_{state}_frame_ms"] = {"median_p95": p95s[1], "runs": runs[state]}
     figures_file.write_text(json.dumps(figures, indent=2) + "\n")
     print(figures["ladder_200_rungs_running_frame_ms"], figures["ladder_200_rungs_paused_frame_ms"])
-    assert len(running) > 30 and len(paused) > 30
 
 
 def test_an_io86a_timer_coil_shows_current_and_preset(driver, base_url):

@@ -275,14 +275,14 @@ fn Cell(
         if c.kind.is_empty() {
             String::new()
         } else {
-            format!(" filled k-{}", c.kind)
+            format!(" filled k-{}", c.kind.hook())
         },
         if c.link_up { " link-up" } else { "" },
         if c.link_down { " link-down" } else { "" },
         if c.error.is_some() { " has-error" } else { "" },
     );
     let device = (!c.device.is_empty()).then(|| c.device.clone());
-    let is_contact = matches!(c.kind, "no" | "nc" | "rise" | "fall");
+    let is_contact = c.kind.look().contact;
     let driven = device.clone();
     let forced_device = c.device.clone();
     let forced_here = move || {
@@ -327,7 +327,7 @@ fn Cell(
             class:sel=in_block
             role="gridcell"
             data-testid=testid
-            data-kind=c.kind
+            data-kind=c.kind.hook()
             data-device=device
             data-on=live.clone()
             class:on=move || live() == Some("1")

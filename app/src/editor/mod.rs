@@ -12,6 +12,7 @@
 
 pub mod autosave;
 pub mod cases;
+pub mod cell_kind;
 pub mod chart;
 pub mod entry;
 pub mod files;

@@ -9,6 +9,8 @@ use std::collections::{BTreeMap, HashMap};
 use engine::ladder::edit::{EntryKind, MAX_ROWS};
 use engine::ladder::{CoilKind, ContactKind, Element, Pos, Rung};
 
+pub use super::cell_kind::CellKind;
+
 /// One cell as drawn.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct CellData {
@@ -19,9 +21,8 @@ pub struct CellData {
     /// Columns in its rung (the cell is `row * cols + col` in its rung's
     /// cells).
     pub cols: usize,
-    /// The `data-kind` hook: `no`, `nc`, `rise`, `fall`, `coil`,
-    /// `coil-not`, `set`, `reset`, `box`, `hwire`; empty for an empty cell.
-    pub kind: &'static str,
+    /// What it holds (its hook, symbol and words: [`CellKind::look`]).
+    pub kind: CellKind,
     /// The device, when the element has one.
     pub device: String,
     /// The symbol (`┤ ├`, `( )`, `[MOV K50 D00]`).
@@ -114,37 +115,47 @@ pub fn rung_data(
     }
 }
 
-/// Kind, device, symbol and words of an element.
+/// Kind, device, symbol and words of an element (the fixed ones from
+/// [`CellKind::look`]).
 fn drawn(e: &Element) -> CellData {
-    let (kind, device, symbol, words): (&'static str, &str, String, String) = match e {
-        Element::Wire => ("hwire", "", String::new(), "wire".into()),
-        Element::Contact { kind, device } => {
-            let (k, sym, w) = match kind {
-                ContactKind::No => ("no", "┤ ├", "normally open contact"),
-                ContactKind::Nc => ("nc", "┤/├", "normally closed contact"),
-                ContactKind::Rising => ("rise", "┤↑├", "rising edge contact"),
-                ContactKind::Falling => ("fall", "┤↓├", "falling edge contact"),
-            };
-            (k, device, sym.into(), format!("{w} {device}"))
-        }
-        Element::Coil { kind, device } => {
-            let (k, sym, w) = match kind {
-                CoilKind::Normal => ("coil", "( )", "coil"),
-                CoilKind::Inverted => ("coil-not", "(/)", "inverted coil"),
-                CoilKind::Set => ("set", "(S)", "set coil"),
-                CoilKind::Reset => ("reset", "(R)", "reset coil"),
-            };
-            (k, device, sym.into(), format!("{w} {device}"))
-        }
-        Element::TimerCoil { device, preset } => (
-            "coil",
+    let fixed = |kind: CellKind, device: &str| {
+        let look = kind.look();
+        (
+            kind,
+            device.to_string(),
+            look.symbol.to_string(),
+            format!("{} {device}", look.words),
+        )
+    };
+    let (kind, device, symbol, words) = match e {
+        Element::Wire => (CellKind::Wire, String::new(), String::new(), "wire".into()),
+        Element::Contact { kind, device } => fixed(
+            match kind {
+                ContactKind::No => CellKind::No,
+                ContactKind::Nc => CellKind::Nc,
+                ContactKind::Rising => CellKind::Rise,
+                ContactKind::Falling => CellKind::Fall,
+            },
             device,
+        ),
+        Element::Coil { kind, device } => fixed(
+            match kind {
+                CoilKind::Normal => CellKind::Coil,
+                CoilKind::Inverted => CellKind::CoilNot,
+                CoilKind::Set => CellKind::Set,
+                CoilKind::Reset => CellKind::Reset,
+            },
+            device,
+        ),
+        Element::TimerCoil { device, preset } => (
+            CellKind::CountCoil,
+            device.clone(),
             format!("(K{preset})"),
             format!("timer coil {device} K{preset}"),
         ),
         Element::CounterCoil { device, preset } => (
-            "coil",
-            device,
+            CellKind::CountCoil,
+            device.clone(),
             format!("(K{preset})"),
             format!("counter coil {device} K{preset}"),
         ),
@@ -157,12 +168,17 @@ fn drawn(e: &Element) -> CellData {
                 }
                 _ => "",
             };
-            ("box", device, format!("[{words}]"), format!("box {words}"))
+            (
+                CellKind::Box,
+                device.to_string(),
+                format!("[{words}]"),
+                format!("box {words}"),
+            )
         }
     };
     CellData {
         kind,
-        device: device.to_string(),
+        device,
         symbol,
         words,
         ..CellData::default()
@@ -288,15 +304,15 @@ mod tests {
         assert_eq!((d.rows, d.cols), (3, 10));
         assert_eq!(d.cells.len(), 30);
         let at = |row: usize, col: usize| -> &CellData { &d.cells[row * 10 + col] };
-        assert_eq!(at(0, 0).kind, "no");
+        assert_eq!(at(0, 0).kind, CellKind::No);
         assert_eq!(at(0, 0).device, "X00");
         assert_eq!(at(0, 0).comment, "start");
         assert_eq!(at(0, 0).words, "normally open contact X00");
-        assert_eq!(at(0, 2).kind, "coil");
+        assert_eq!(at(0, 2).kind, CellKind::Coil);
         assert!(at(0, 1).link_down && at(1, 1).link_up && !at(1, 1).link_down);
         assert_eq!(at(0, 1).error.as_deref(), Some("a gap"));
         assert_eq!(d.errors, vec!["no output".to_string()]);
-        assert_eq!(at(2, 5).kind, "");
+        assert_eq!(at(2, 5).kind, CellKind::Empty);
     }
 
     #[test]
@@ -306,7 +322,10 @@ mod tests {
             dst: "D00".into(),
         };
         let d = drawn(&mov);
-        assert_eq!((d.kind, d.symbol.as_str()), ("box", "[MOV K50 D00]"));
+        assert_eq!(
+            (d.kind, d.symbol.as_str()),
+            (CellKind::Box, "[MOV K50 D00]")
+        );
         assert_eq!(
             entry_for(&mov),
             (EntryKind::Instruction, "MOV K50 D00".into())
@@ -353,6 +372,13 @@ mod tests {
 /// `engine::ladder::live`), a wire's from what feeds it on its left (the
 /// rail at column 0), an empty cell none.
 pub fn cell_power(d: &RungData, powers: &[(Pos, bool)]) -> Vec<Option<bool>> {
+    (0..d.cells.len()).map(|i| power_of(d, powers, i)).collect()
+}
+
+/// The power of cell `index` of `d` (see [`cell_power`]), without
+/// allocating: what the live frame calls for each cell.
+pub fn power_of(d: &RungData, powers: &[(Pos, bool)], index: usize) -> Option<bool> {
+    let c = d.cells.get(index)?;
     let at = |row: usize, col: usize| d.cells.get(row * d.cols + col);
     let element = |row: usize, col: usize| {
         powers
@@ -360,27 +386,24 @@ pub fn cell_power(d: &RungData, powers: &[(Pos, bool)]) -> Vec<Option<bool>> {
             .find(|(p, _)| p.row == row && p.col == col)
             .map(|(_, on)| *on)
     };
-    d.cells
-        .iter()
-        .map(|c| match c.kind {
-            "" => None,
-            "hwire" => {
-                let mut col = c.col;
-                loop {
-                    if col == 0 {
-                        return Some(true);
-                    }
-                    col -= 1;
-                    match at(c.row, col).map(|x| x.kind) {
-                        Some("hwire") => continue,
-                        Some("") | None => return Some(false),
-                        Some(_) => return Some(element(c.row, col).unwrap_or(false)),
-                    }
+    match c.kind {
+        CellKind::Empty => None,
+        CellKind::Wire => {
+            let mut col = c.col;
+            loop {
+                if col == 0 {
+                    return Some(true);
+                }
+                col -= 1;
+                match at(c.row, col).map(|x| x.kind) {
+                    Some(CellKind::Wire) => continue,
+                    Some(CellKind::Empty) | None => return Some(false),
+                    Some(_) => return Some(element(c.row, col).unwrap_or(false)),
                 }
             }
-            _ => element(c.row, c.col),
-        })
-        .collect()
+        }
+        _ => element(c.row, c.col),
+    }
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ use engine::ladder::{CoilKind, ContactKind, Element};
 use engine::MachineId;
 use leptos::prelude::*;
 
+use super::cell_kind::CellKind;
 use super::keys::Action;
 use super::state::LadderCtx;
 use super::texts;
@@ -52,15 +53,15 @@ pub fn items(machine: MachineId) -> Vec<Item> {
     let edges = contact(ContactKind::Rising);
     vec![
         item(
-            "no",
-            "┤ ├",
+            CellKind::No.hook(),
+            CellKind::No.look().symbol,
             "normally open contact (F5)",
             entry(EntryKind::Open, false, ""),
             None,
         ),
         item(
-            "nc",
-            "┤/├",
+            CellKind::Nc.hook(),
+            CellKind::Nc.look().symbol,
             "normally closed contact (F6)",
             entry(EntryKind::Closed, false, ""),
             None,
@@ -80,15 +81,15 @@ pub fn items(machine: MachineId) -> Vec<Item> {
             None,
         ),
         item(
-            "rise",
-            "┤↑├",
+            CellKind::Rise.hook(),
+            CellKind::Rise.look().symbol,
             "rising edge contact (LDP)",
             entry(EntryKind::Instruction, false, "LDP "),
             why(edges, "edge contacts"),
         ),
         item(
-            "fall",
-            "┤↓├",
+            CellKind::Fall.hook(),
+            CellKind::Fall.look().symbol,
             "falling edge contact (LDF)",
             entry(EntryKind::Instruction, false, "LDF "),
             why(edges, "edge contacts"),
@@ -108,29 +109,29 @@ pub fn items(machine: MachineId) -> Vec<Item> {
             None,
         ),
         item(
-            "coil",
-            "( )",
+            CellKind::Coil.hook(),
+            CellKind::Coil.look().symbol,
             "coil (F7)",
             entry(EntryKind::Coil, false, ""),
             why(coil(CoilKind::Normal), "coils"),
         ),
         item(
-            "coil-not",
-            "(/)",
+            CellKind::CoilNot.hook(),
+            CellKind::CoilNot.look().symbol,
             "inverted coil",
             entry(EntryKind::Instruction, false, "STI "),
             why(coil(CoilKind::Inverted), "inverted coils"),
         ),
         item(
-            "set",
-            "(S)",
+            CellKind::Set.hook(),
+            CellKind::Set.look().symbol,
             "set coil",
             entry(EntryKind::Instruction, false, "SET "),
             why(coil(CoilKind::Set), "set coils"),
         ),
         item(
-            "reset",
-            "(R)",
+            CellKind::Reset.hook(),
+            CellKind::Reset.look().symbol,
             "reset coil",
             entry(EntryKind::Instruction, false, "RST "),
             why(coil(CoilKind::Reset), "reset coils"),

@@ -36,6 +36,26 @@ pub struct RungView {
     /// frame sets only the signals whose value changed, so only those
     /// cells repaint.
     pub slots: std::sync::Arc<std::sync::Mutex<Vec<CellSlot>>>,
+    /// Each cell's devices on the machine, resolved once for this drawing
+    /// and program (tagged with [`LadderCtx`]'s probe generation), so a
+    /// frame reads the machine without a name lookup.
+    probes: std::sync::Arc<std::sync::Mutex<Probes>>,
+}
+
+/// The machine's handles for a rung's cells.
+#[derive(Default)]
+struct Probes {
+    /// The generation they were resolved in (`None`: not yet).
+    generation: Option<u64>,
+    cells: Vec<Probe>,
+}
+
+/// A cell's handles: its device's state, and a timer's or counter's
+/// current value.
+#[derive(Clone, Copy, Default)]
+struct Probe {
+    state: Option<engine::plc::Device>,
+    value: Option<engine::plc::Device>,
 }
 
 /// A cell's live signals.
@@ -65,23 +85,44 @@ impl RungView {
         slots[index].clone()
     }
 
-    /// Sets each cell's value from `values` (by place; missing: `None`),
-    /// touching only the signals whose value changes.
-    fn update<T: Clone + PartialEq + Send + Sync + 'static>(
+    /// Sets each cell's value to `value_of(its place)`, touching only the
+    /// signals whose value changes; nothing is allocated.
+    fn update_each<T: PartialEq + Send + Sync + 'static>(
         &self,
-        values: &[Option<T>],
+        value_of: impl Fn(usize) -> Option<T>,
         field: impl Fn(&CellSlot) -> &ArcRwSignal<Option<T>>,
     ) {
         let Ok(slots) = self.slots.lock() else {
             return;
         };
         for (i, slot) in slots.iter().enumerate() {
-            let new = values.get(i).cloned().flatten();
+            let new = value_of(i);
             let signal = field(slot);
             if signal.with_untracked(|old| *old != new) {
                 signal.set(new);
             }
         }
+    }
+
+    /// This rung's probes, resolved on `plc` when they are not of
+    /// `generation` (the drawing or the program changed since).
+    fn probe<R>(
+        &self,
+        generation: u64,
+        resolve: impl Fn(&super::model::CellData) -> Probe,
+        f: impl FnOnce(&[Probe]) -> R,
+    ) -> Option<R> {
+        let mut probes = self.probes.lock().ok()?;
+        if probes.generation != Some(generation) {
+            let cells = self
+                .data
+                .with_untracked(|d| d.cells.iter().map(&resolve).collect());
+            *probes = Probes {
+                generation: Some(generation),
+                cells,
+            };
+        }
+        Some(f(&probes.cells))
     }
 }
 
@@ -195,6 +236,9 @@ pub struct LadderCtx {
     /// Device handles on the machine, by name (cleared when the ladder or
     /// the program changes).
     handles: StoredValue<std::collections::HashMap<String, Option<engine::plc::Device>>>,
+    /// Bumped when device handles are forgotten or a rung's drawing
+    /// changes: rungs resolve their probes again.
+    probe_generation: StoredValue<u64>,
     /// The watch table's devices and what they show.
     pub watch: RwSignal<Vec<String>>,
     pub watch_values: RwSignal<Vec<String>>,
@@ -297,6 +341,7 @@ impl LadderCtx {
             results: RwSignal::new(Vec::new()),
             recorder: StoredValue::new(None),
             handles: StoredValue::new(std::collections::HashMap::new()),
+            probe_generation: StoredValue::new(0),
             watch: RwSignal::new(Vec::new()),
             watch_values: RwSignal::new(Vec::new()),
             stepped: RwSignal::new(None),
@@ -464,7 +509,11 @@ impl LadderCtx {
         self.results.set(Vec::new());
         let replaced = self
             .editor
-            .try_update_value(|e| e.apply(Edit::Replace { ladder: project.ladder }))
+            .try_update_value(|e| {
+                e.apply(Edit::Replace {
+                    ladder: project.ladder,
+                })
+            })
             .is_some_and(|r| r.is_ok());
         if replaced {
             self.refresh_as(Change::Followed);
@@ -484,9 +533,12 @@ impl LadderCtx {
     pub fn keep_mine(&self, projects: super::projects::Projects) {
         let texts = super::texts::texts(self.page.lang.get_untracked());
         let from = self.project.get_untracked().and_then(|id| {
-            projects
-                .index
-                .with_untracked(|i| i.projects.iter().find(|e| e.id == id).map(|e| e.name.clone()))
+            projects.index.with_untracked(|i| {
+                i.projects
+                    .iter()
+                    .find(|e| e.id == id)
+                    .map(|e| e.name.clone())
+            })
         });
         let base = from.unwrap_or_else(|| texts.project_default.to_string());
         let name = format!("{base} {}", texts.conflict_copy);
@@ -894,7 +946,11 @@ impl LadderCtx {
     /// rungs whose drawing changed, cursor, undo state; then the text pane
     /// (when `edited` and it follows the ladder) and the autosave.
     pub fn refresh(&self, edited: bool) {
-        self.refresh_as(if edited { Change::Edited } else { Change::Shown });
+        self.refresh_as(if edited {
+            Change::Edited
+        } else {
+            Change::Shown
+        });
     }
 
     fn refresh_as(&self, change: Change) {
@@ -1077,46 +1133,51 @@ impl LadderCtx {
             }),
             None => Vec::new(),
         };
+        let generation = self.probe_generation.get_value();
+        let resolve = |c: &super::model::CellData| {
+            let look = c.kind.look();
+            if c.device.is_empty() {
+                return Probe::default();
+            }
+            let counts =
+                look.shows_value && (c.device.starts_with('T') || c.device.starts_with('C'));
+            Probe {
+                state: look
+                    .shows_state
+                    .then(|| self.handle(plc, &c.device))
+                    .flatten(),
+                value: counts
+                    .then(|| self.handle(plc, &format!("{}.v", c.device)))
+                    .flatten(),
+            }
+        };
         for view in self.rungs.get_untracked() {
             let number = view.number.get_untracked();
-            let powered: Vec<Option<bool>> = match powers.iter().find(|(i, _)| *i == number) {
-                Some((_, p)) => view.data.with_untracked(|d| super::model::cell_power(d, p)),
-                None => Vec::new(),
-            };
-            view.update(&powered, |s| &s.powered);
-            let states: Vec<Option<bool>> = view.data.with_untracked(|d| {
-                d.cells
-                    .iter()
-                    .map(|c| {
-                        let shows =
-                            running && !c.device.is_empty() && c.kind != "box" && c.kind != "hwire";
-                        if !shows {
-                            return None;
-                        }
-                        self.handle(plc, &c.device).map(|h| plc.read(h).is_on())
-                    })
-                    .collect()
+            match powers.iter().find(|(i, _)| *i == number) {
+                Some((_, p)) => view.data.with_untracked(|d| {
+                    view.update_each(|i| super::model::power_of(d, p, i), |s| &s.powered)
+                }),
+                None => view.update_each(|_| None, |s| &s.powered),
+            }
+            view.probe(generation, resolve, |probes| {
+                let probe = |i: usize| probes.get(i).copied().unwrap_or_default();
+                view.update_each(
+                    |i| {
+                        running
+                            .then(|| probe(i).state.map(|h| plc.read(h).is_on()))
+                            .flatten()
+                    },
+                    |s| &s.on,
+                );
+                view.update_each(
+                    |i| {
+                        running
+                            .then(|| probe(i).value.map(|h| plc.read(h).as_i64()))
+                            .flatten()
+                    },
+                    |s| &s.value,
+                );
             });
-            view.update(&states, |s| &s.on);
-            let values: Vec<Option<i64>> = if running {
-                view.data.with_untracked(|d| {
-                    d.cells
-                        .iter()
-                        .map(|c| {
-                            let counts = c.kind == "coil"
-                                && (c.device.starts_with('T') || c.device.starts_with('C'));
-                            if !counts {
-                                return None;
-                            }
-                            self.handle(plc, &format!("{}.v", c.device))
-                                .map(|h| plc.read(h).as_i64())
-                        })
-                        .collect()
-                })
-            } else {
-                Vec::new()
-            };
-            view.update(&values, |s| &s.value);
         }
         let values: Vec<String> = self.watch.with_untracked(|w| {
             w.iter()
@@ -1150,21 +1211,19 @@ impl LadderCtx {
         let pulses = pulses.unwrap_or_default();
         for view in self.rungs.get_untracked() {
             let number = view.number.get_untracked();
-            let marked: Vec<Option<u32>> = match pulses.iter().find(|(i, _)| *i == number) {
+            match pulses.iter().find(|(i, _)| *i == number) {
                 Some((_, found)) if !found.is_empty() => view.data.with_untracked(|d| {
-                    d.cells
-                        .iter()
-                        .map(|c| {
-                            found
-                                .iter()
-                                .find(|p| p.pos.row == c.row && p.pos.col == c.col)
-                                .map(|p| p.rises)
-                        })
-                        .collect()
+                    let rises = |i: usize| {
+                        let c = d.cells.get(i)?;
+                        found
+                            .iter()
+                            .find(|p| p.pos.row == c.row && p.pos.col == c.col)
+                            .map(|p| p.rises)
+                    };
+                    view.update_each(rises, |s| &s.pulsed);
                 }),
-                _ => Vec::new(),
-            };
-            view.update(&marked, |s| &s.pulsed);
+                _ => view.update_each(|_| None, |s| &s.pulsed),
+            }
         }
     }
 
@@ -1202,6 +1261,7 @@ impl LadderCtx {
     /// Forgets resolved device handles (a new program was loaded).
     pub fn forget_handles(&self) {
         self.handles.update_value(std::collections::HashMap::clear);
+        self.probe_generation.update_value(|g| *g += 1);
     }
 
     /// The text pane takes the new listing while it still holds the last.
@@ -1258,6 +1318,9 @@ impl LadderCtx {
                     let v = old[i].clone();
                     if v.data.with_untracked(|old| *old != d) {
                         v.data.set(d);
+                        if let Ok(mut p) = v.probes.lock() {
+                            p.generation = None;
+                        }
                     }
                     v
                 }
@@ -1270,6 +1333,7 @@ impl LadderCtx {
                         first_step: ArcRwSignal::new(first),
                         data: ArcRwSignal::new(d),
                         slots: Default::default(),
+                        probes: Default::default(),
                     }
                 }
             };
