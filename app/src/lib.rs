@@ -5,6 +5,7 @@ pub mod bench;
 pub mod chrome;
 pub mod editor;
 pub mod examples;
+pub mod header;
 pub mod i18n;
 pub mod machines;
 pub mod sim;
@@ -19,7 +20,7 @@ use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::JsCast;
 
-use chrome::header::{set_document_lang, Header};
+use header::{set_document_lang, Header};
 use i18n::Lang;
 use state::Ctx;
 use workspaces::Workspaces;

@@ -141,6 +141,16 @@ impl Parsed {
 /// `machine` select, storage and the CLI share their names).
 pub type MachineKind = engine::MachineId;
 
+/// A machine's product name, as its maker writes it.
+pub fn product_name(kind: MachineKind) -> &'static str {
+    match kind {
+        MachineKind::MinasecU => "MINASEC-U",
+        MachineKind::Io86a => "PLC-IO86A",
+        MachineKind::ArduinoPlc => "Arduino PLC",
+        MachineKind::AvrPlc => "AVR PLC",
+    }
+}
+
 /// The page's own state, shared by every workspace; `Copy`, provided as
 /// context. Each machine's workspace has a context of its own
 /// (`crate::workspaces`).

@@ -5,6 +5,9 @@ use leptos::prelude::*;
 
 use engine::MachineId;
 
+use std::rc::Rc;
+
+use crate::editor::machine::{Linked, MachineLink};
 use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
 use crate::machines::minasec::board::Board;
 use crate::machines::minasec::program::ProgramPane;
@@ -45,14 +48,37 @@ impl Workspaces {
         arduino: arduino::ArduinoCtx,
         avr: avr::AvrCtx,
     ) -> Workspaces {
-        let editor = |machine| LadderCtx::restore(page, machine);
-        let ladders = Ladders {
-            minasec: editor(MachineId::MinasecU),
-            io86a: editor(MachineId::Io86a),
-            avr: editor(MachineId::AvrPlc),
-            arduino: editor(MachineId::ArduinoPlc),
-        };
-        ladders.minasec.connect(Program {
+        let ladders = Ladders::new(|machine| LadderCtx::restore(page, machine));
+        let link = |machine, link: Rc<dyn MachineLink>| ladders.of(machine).attach(link);
+        link(
+            MachineId::MinasecU,
+            Rc::new(Linked {
+                sim: minasec.sim,
+                refresh: Callback::new(move |()| minasec.refresh()),
+            }),
+        );
+        link(
+            MachineId::Io86a,
+            Rc::new(Linked {
+                sim: io86a.sim,
+                refresh: Callback::new(move |()| io86a.refresh()),
+            }),
+        );
+        link(
+            MachineId::ArduinoPlc,
+            Rc::new(Linked {
+                sim: arduino.sim,
+                refresh: Callback::new(move |()| arduino.refresh()),
+            }),
+        );
+        link(
+            MachineId::AvrPlc,
+            Rc::new(Linked {
+                sim: avr.sim,
+                refresh: Callback::new(move |()| avr.refresh()),
+            }),
+        );
+        ladders.of(MachineId::MinasecU).connect(Program {
             text: minasec.text,
             load: Callback::new(move |()| {
                 minasec.load_text();
@@ -62,7 +88,7 @@ impl Workspaces {
             settings: Callback::new(move |()| minasec.project_settings()),
             apply_settings: Callback::new(move |settings| minasec.apply_project_settings(settings)),
         });
-        ladders.io86a.connect(Program {
+        ladders.of(MachineId::Io86a).connect(Program {
             text: io86a.texts[0],
             load: Callback::new(move |()| {
                 io86a.load(0);
@@ -72,7 +98,7 @@ impl Workspaces {
             settings: Callback::new(|()| Vec::new()),
             apply_settings: Callback::new(not_applied),
         });
-        ladders.arduino.connect(Program {
+        ladders.of(MachineId::ArduinoPlc).connect(Program {
             text: arduino.text,
             load: Callback::new(move |()| {
                 arduino.load();
@@ -83,10 +109,10 @@ impl Workspaces {
             apply_settings: Callback::new(not_applied),
         });
         ladders
-            .avr
+            .of(MachineId::AvrPlc)
             .options
             .update(|o| o.avr_scan_ms = avr::scan_ms_default());
-        ladders.avr.connect(Program {
+        ladders.of(MachineId::AvrPlc).connect(Program {
             text: avr.text,
             load: Callback::new(move |()| {
                 avr.load();
@@ -120,136 +146,13 @@ impl Workspaces {
     /// Operates the machine of `kind`'s workspace, then shows the result
     /// in its panel and on its ladder at once (even paused).
     pub fn operate(&self, kind: MachineKind, f: impl FnOnce(&mut dyn engine::plc::Plc)) {
-        match kind {
-            MachineKind::MinasecU => {
-                self.minasec.sim.update_value(|s| f(s.machine_mut()));
-                self.minasec.refresh();
-            }
-            MachineKind::Io86a => {
-                self.io86a.sim.update_value(|s| f(s.machine_mut()));
-                self.io86a.refresh();
-            }
-            MachineKind::ArduinoPlc => {
-                self.arduino.sim.update_value(|s| f(s.machine_mut()));
-                self.arduino.refresh();
-            }
-            MachineKind::AvrPlc => {
-                self.avr.sim.update_value(|s| f(s.machine_mut()));
-                self.avr.refresh();
-            }
-        }
-        let ladder = self.ladders.of(kind);
-        self.with_plc(kind, |plc| ladder.show_live(plc));
-    }
-
-    /// Runs `f` on the recording of `kind`'s machine (time travel, the
-    /// timing chart, breaks).
-    pub fn travel<R>(
-        &self,
-        kind: MachineKind,
-        f: impl FnOnce(&mut dyn engine::record::TimeTravel) -> R,
-    ) -> Option<R> {
-        match kind {
-            MachineKind::MinasecU => self.minasec.sim.try_update_value(|s| f(s.machine_mut())),
-            MachineKind::Io86a => self.io86a.sim.try_update_value(|s| f(s.machine_mut())),
-            MachineKind::ArduinoPlc => self.arduino.sim.try_update_value(|s| f(s.machine_mut())),
-            MachineKind::AvrPlc => self.avr.sim.try_update_value(|s| f(s.machine_mut())),
-        }
-    }
-
-    /// Shows the machine of `kind` as it now is (after a seek): its panel
-    /// and its ladder.
-    pub fn show(&self, kind: MachineKind) {
-        match kind {
-            MachineKind::MinasecU => self.minasec.refresh(),
-            MachineKind::Io86a => self.io86a.refresh(),
-            MachineKind::ArduinoPlc => self.arduino.refresh(),
-            MachineKind::AvrPlc => self.avr.refresh(),
-        }
-        let ladder = self.ladders.of(kind);
-        self.with_plc(kind, |plc| ladder.show_live(plc));
-    }
-
-    /// What the machine of `kind` traced since the last frame.
-    fn take_history(&self, kind: MachineKind) -> engine::plc::TraceHistory {
-        use engine::plc::Plc;
-        let take = |f: &mut dyn Plc| f.take_trace_history();
-        match kind {
-            MachineKind::MinasecU => self.minasec.sim.try_update_value(|s| take(s.machine_mut())),
-            MachineKind::Io86a => self.io86a.sim.try_update_value(|s| take(s.machine_mut())),
-            MachineKind::ArduinoPlc => self.arduino.sim.try_update_value(|s| take(s.machine_mut())),
-            MachineKind::AvrPlc => self.avr.sim.try_update_value(|s| take(s.machine_mut())),
-        }
-        .unwrap_or_default()
-    }
-
-    /// Runs `f` on the machine of `kind`'s workspace.
-    pub fn with_plc(&self, kind: MachineKind, f: impl FnOnce(&dyn engine::plc::Plc)) {
-        match kind {
-            MachineKind::MinasecU => self.minasec.sim.with_value(|s| f(s.machine())),
-            MachineKind::Io86a => self.io86a.sim.with_value(|s| f(s.machine())),
-            MachineKind::ArduinoPlc => self.arduino.sim.with_value(|s| f(s.machine())),
-            MachineKind::AvrPlc => self.avr.sim.with_value(|s| f(s.machine())),
-        }
+        self.ladders.of(kind).operate(f);
     }
 
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall
     /// time at `pace`, then its signals refreshed. The others rest.
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
-        let ladder = self.ladders.of(kind);
-        if !pace.paused && ladder.travel.shown.get_untracked().is_some() {
-            // Running again from a past scan on show: live first (Resume
-            // from here is the way to run on from the past).
-            crate::editor::travel::travel_with(*self, ladder, |t| t.go_live());
-        }
-        self.advance(kind, pace, wall_ms, now_ms);
-        let hit = self.travel(kind, |t| {
-            let hit = t.take_break();
-            crate::editor::travel::sync(ladder, t, now_ms(), hit.is_some());
-            hit
-        });
-        if let Some(Some(b)) = hit {
-            // Paused at the end of the scan where the condition held.
-            ladder.page.paused.set(true);
-            ladder.travel.stopped_at.set(Some(b.mark));
-        } else if !pace.paused && ladder.travel.stopped_at.get_untracked().is_some() {
-            // Running again: the stop is over.
-            ladder.travel.stopped_at.set(None);
-        }
-        crate::editor::why::follow(ladder, *self);
-        let history = self.take_history(kind);
-        ladder.show_pulses(&history);
-        self.with_plc(kind, |plc| {
-            if ladder.recording() {
-                ladder.observe(plc);
-            }
-            ladder.show_live(plc);
-        });
-    }
-
-    fn advance(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
-        match kind {
-            MachineKind::MinasecU => {
-                let w = self.minasec;
-                w.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                w.refresh();
-            }
-            MachineKind::Io86a => {
-                let w = self.io86a;
-                w.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                w.refresh();
-            }
-            MachineKind::ArduinoPlc => {
-                let w = self.arduino;
-                w.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                w.refresh();
-            }
-            MachineKind::AvrPlc => {
-                let w = self.avr;
-                w.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
-                w.refresh();
-            }
-        }
+        self.ladders.of(kind).frame(pace, wall_ms, now_ms);
     }
 
     /// The workspace of `kind`: its ladder editor above its panel and

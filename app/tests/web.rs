@@ -358,7 +358,7 @@ async fn an_edit_redraws_only_the_cells_it_changed() {
     use engine::ladder::edit::{Cursor, Edit};
     use engine::ladder::Element as Part;
     let (_ctx, workspaces, c) = mount_workspaces();
-    let ladder = workspaces.ladders.minasec;
+    let ladder = workspaces.ladders.of(engine::MachineId::MinasecU);
     for (rung, input, output) in [(0, "X00", "Y00"), (1, "X01", "Y01")] {
         assert!(ladder.apply(Edit::Place {
             at: Cursor::new(rung, 0, 0),
@@ -435,7 +435,7 @@ async fn the_timing_chart_follows_an_edit_without_waiting_for_a_frame() {
     use engine::ladder::Element as Part;
     // No frame loop here: only the edit itself can redraw the chart.
     let (_ctx, workspaces, c) = mount_workspaces();
-    let ladder = workspaces.ladders.minasec;
+    let ladder = workspaces.ladders.of(engine::MachineId::MinasecU);
     settle().await;
     assert!(chart_rows(&c).is_empty(), "an empty ladder has no devices");
     assert!(ladder.apply(Edit::Place {

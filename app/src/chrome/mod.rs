@@ -1,7 +1,7 @@
-//! The page's shared chrome: header, controls, the serial console and the
-//! text program pane; thin views over [`crate::state::Ctx`].
+//! Widgets the machines' panels share: controls (switches, lamps, knobs),
+//! the serial console and the text program pane; thin views over
+//! [`crate::state::Ctx`]. The page's header is [`crate::header`].
 
 pub mod console;
 pub mod controls;
-pub mod header;
 pub mod text_program;

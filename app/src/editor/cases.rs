@@ -12,7 +12,6 @@ use engine::{MachineId, SimTime};
 use leptos::prelude::*;
 
 use super::state::{CaseResult, LadderCtx};
-use crate::workspaces::Workspaces;
 
 /// Runs `cases` on `machine`, each on a fresh machine with `settings`
 /// applied and `program` loaded.
@@ -159,7 +158,6 @@ pub fn run_all(ctx: LadderCtx) {
 #[component]
 pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
-    let workspaces = use_context::<Workspaces>();
     let recording = RwSignal::new(ctx.recording());
     let edit = move |i: usize, f: Box<dyn Fn(&mut TestCase)>| {
         ctx.tests.update(|tests| {
@@ -175,11 +173,10 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
         ctx.save();
     };
     let record = move |_| {
-        let Some(w) = workspaces else { return };
         if ctx.recording() {
-            w.with_plc(ctx.machine, |plc| ctx.stop_recording(plc));
+            ctx.with_plc(|plc| ctx.stop_recording(plc));
         } else {
-            w.with_plc(ctx.machine, |plc| ctx.start_recording(plc));
+            ctx.with_plc(|plc| ctx.start_recording(plc));
         }
         recording.set(ctx.recording());
     };

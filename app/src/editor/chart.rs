@@ -11,7 +11,6 @@ use engine::SimTime;
 use leptos::prelude::*;
 
 use super::LadderCtx;
-use crate::workspaces::Workspaces;
 
 /// The chart's width in pixels (one column per pixel).
 const WIDTH: usize = 600;
@@ -139,7 +138,6 @@ fn t_scan(ctx: LadderCtx) -> &'static str {
 #[component]
 pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
-    let workspaces = use_context::<Workspaces>();
     // `None` until the user picks: the ladder's own devices, as it is now.
     let devices = RwSignal::new(None::<Vec<String>>);
     let chosen = move || {
@@ -164,10 +162,7 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         ctx.revision.track();
         let w = window.get();
         let names = devices.get().unwrap_or_else(|| default_devices(ctx));
-        let Some(ws) = workspaces else {
-            return;
-        };
-        let fresh = ws.travel(ctx.machine, |tr| {
+        let fresh = ctx.recorded(|tr| {
             let (first, last) = tr.marks();
             let end = w.end.unwrap_or(last).clamp(first, last);
             let from = end.saturating_sub(w.span.saturating_sub(1)).max(first);
@@ -200,12 +195,8 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         if name.is_empty() {
             return;
         }
-        let known = workspaces
-            .and_then(|w| {
-                let mut ok = None;
-                w.with_plc(ctx.machine, |plc| ok = Some(plc.device(&name).map(|_| ())));
-                ok
-            })
+        let known = ctx
+            .with_plc(|plc| plc.device(&name).map(|_| ()))
             .unwrap_or(Ok(()));
         match known {
             Ok(()) => {

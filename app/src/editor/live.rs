@@ -11,46 +11,36 @@ use engine::MachineId;
 use leptos::prelude::*;
 
 use super::LadderCtx;
-use crate::workspaces::Workspaces;
 
 /// Run: writes the drawing to the machine and starts it (RUN, simulated
 /// time going); whether it could (else the problems are said). Write to
 /// PLC is the same action.
-pub fn run_drawing(ctx: LadderCtx, workspaces: Option<Workspaces>) -> bool {
+pub fn run_drawing(ctx: LadderCtx) -> bool {
     let t = super::texts::texts(ctx.page.lang.get_untracked());
     if !ctx.write_drawing() {
         ctx.message.set(Some(t.tests_need_compile.to_string()));
         return false;
     }
     ctx.unwritten.set(false);
-    if let Some(w) = workspaces {
-        w.operate(ctx.machine, |plc: &mut dyn engine::plc::Plc| {
-            plc.set_tracing(true);
-            let _ = plc.apply(Command::Run(true));
-        });
-    }
+    ctx.operate(|plc: &mut dyn engine::plc::Plc| {
+        plc.set_tracing(true);
+        let _ = plc.apply(Command::Run(true));
+    });
     ctx.page.paused.set(false);
     true
 }
 
-/// [`run_drawing`] for a button outside the run bar, its machine found
-/// now (while the component is built, where the context is).
+/// [`run_drawing`] for a button outside the run bar.
 pub fn run_action(ctx: LadderCtx) -> impl Fn() -> bool + Copy {
-    let workspaces = use_context::<Workspaces>();
-    move || run_drawing(ctx, workspaces)
+    move || run_drawing(ctx)
 }
 
 /// The run and step buttons.
 #[component]
 pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
-    let workspaces = use_context::<Workspaces>();
     let kind = ctx.machine;
-    let operate = move |f: &dyn Fn(&mut dyn engine::plc::Plc)| {
-        if let Some(w) = workspaces {
-            w.operate(kind, f);
-        }
-    };
+    let operate = move |f: &dyn Fn(&mut dyn engine::plc::Plc)| ctx.operate(f);
     // The AVR PLC has no RUN/STOP switch: it runs whenever powered, so
     // Run stays Run (it writes the drawing again).
     let stoppable = kind != MachineId::AvrPlc;
@@ -66,7 +56,7 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
             ctx.running.set(false);
             return;
         }
-        run_drawing(ctx, workspaces);
+        run_drawing(ctx);
     };
     let step = move |which: u8| {
         if which == 0 && ctx.travel.shown.get_untracked().is_some() {
@@ -169,13 +159,10 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
 /// device, when the machine takes it as an input, toggles (held until
 /// released from the force list); with Shift it is on for one scan.
 pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
-    let Some(workspaces) = use_context::<Workspaces>() else {
-        return;
-    };
     let t = super::texts::texts(ctx.page.lang.get_untracked());
     let mut refused = None;
     let mut held = None;
-    workspaces.operate(ctx.machine, |plc| {
+    ctx.operate(|plc| {
         let Ok(d) = plc.device(device) else {
             return;
         };
@@ -215,15 +202,12 @@ pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
 #[component]
 pub fn ForceList(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
-    let workspaces = use_context::<Workspaces>();
     let release = move |device: String| {
-        if let Some(w) = workspaces {
-            w.operate(ctx.machine, |plc| {
-                if let Ok(d) = plc.device(&device) {
-                    let _ = plc.apply(Command::ReleaseInput(d));
-                }
-            });
-        }
+        ctx.operate(|plc| {
+            if let Ok(d) = plc.device(&device) {
+                let _ = plc.apply(Command::ReleaseInput(d));
+            }
+        });
         ctx.forced.update(|f| f.retain(|(d, _)| *d != device));
     };
     view! {

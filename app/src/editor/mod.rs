@@ -21,6 +21,7 @@ pub mod grid;
 pub mod import;
 pub mod keys;
 pub mod live;
+pub mod machine;
 pub mod model;
 pub mod palette;
 pub mod picture;
@@ -39,25 +40,29 @@ use leptos::prelude::*;
 
 pub use state::{LadderCtx, Program};
 
-/// The four machines' editors; `Copy`, provided as context so that a
-/// ladder can be copied to another machine.
+/// Every machine's editor, indexed by the machine's place in
+/// [`MachineId::ALL`]; `Copy`, provided as context so that a ladder can be
+/// copied to another machine.
 #[derive(Clone, Copy)]
 pub struct Ladders {
-    pub minasec: LadderCtx,
-    pub io86a: LadderCtx,
-    pub avr: LadderCtx,
-    pub arduino: LadderCtx,
+    all: [LadderCtx; MachineId::ALL.len()],
 }
 
 impl Ladders {
+    /// An editor for each machine, made by `make`.
+    pub fn new(make: impl Fn(MachineId) -> LadderCtx) -> Ladders {
+        Ladders {
+            all: MachineId::ALL.map(make),
+        }
+    }
+
     /// The editor of `machine`.
     pub fn of(&self, machine: MachineId) -> LadderCtx {
-        match machine {
-            MachineId::MinasecU => self.minasec,
-            MachineId::Io86a => self.io86a,
-            MachineId::AvrPlc => self.avr,
-            MachineId::ArduinoPlc => self.arduino,
-        }
+        let index = MachineId::ALL
+            .iter()
+            .position(|m| *m == machine)
+            .unwrap_or(0);
+        self.all[index]
     }
 }
 
@@ -188,7 +193,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 }>
                     <option value="">"—"</option>
                     {others.into_iter().map(|m| view! {
-                        <option value=m.name()>{crate::chrome::header::product_name(m)}</option>
+                        <option value=m.name()>{crate::state::product_name(m)}</option>
                     }).collect_view()}
                 </select>
             </label>

@@ -259,7 +259,7 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
                         let is_open = move || ctx.project.get() == Some(id) && ctx.page.machine.get() == e.machine;
                         view! {
                             <li data-testid=format!("project-{}", e.name) class:open=is_open>
-                                <b>{e.name.clone()}</b> " · " {crate::chrome::header::product_name(e.machine)} " "
+                                <b>{e.name.clone()}</b> " · " {crate::state::product_name(e.machine)} " "
                                 <button type="button" data-testid="project-open" on:click=move |_| fail(open(projects, ladders, id))>
                                     {move || t().project_open}
                                 </button>

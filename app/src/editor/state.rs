@@ -265,6 +265,9 @@ pub struct LadderCtx {
     pub travel: super::travel::TravelState,
     /// Where the project is saved, and what another tab did there.
     pub saving: super::autosave::Autosave,
+    /// The machine the ladder runs on (attached with its workspace).
+    pub(super) link:
+        StoredValue<Option<std::rc::Rc<dyn super::machine::MachineLink>>, LocalStorage>,
 }
 
 /// What a refresh follows.
@@ -353,6 +356,7 @@ impl LadderCtx {
             forced: RwSignal::new(Vec::new()),
             travel: super::travel::TravelState::new(),
             saving: super::autosave::Autosave::new(&store::slot(machine, project)),
+            link: StoredValue::new_local(None),
         };
         ctx.refresh(false);
         ctx

@@ -9,7 +9,6 @@ use engine::record::{Mark, TimeTravel};
 use leptos::prelude::*;
 
 use super::LadderCtx;
-use crate::workspaces::Workspaces;
 
 /// What the page shows of a machine's recording; `Copy`.
 #[derive(Clone, Copy)]
@@ -91,23 +90,17 @@ pub fn sync(ctx: LadderCtx, t: &mut dyn TimeTravel, now_ms: f64, redraw: bool) {
 /// Runs `f` on `ctx`'s machine's recording, then shows the result: the
 /// signals, the panel and the ladder (a seek changes what they show).
 pub fn travel<R>(ctx: LadderCtx, f: impl FnOnce(&mut dyn TimeTravel) -> R) -> Option<R> {
-    let workspaces = use_context::<Workspaces>()?;
-    travel_with(workspaces, ctx, f)
+    travel_here(ctx, f)
 }
 
-/// [`travel`] with the workspaces at hand.
-pub fn travel_with<R>(
-    workspaces: Workspaces,
-    ctx: LadderCtx,
-    f: impl FnOnce(&mut dyn TimeTravel) -> R,
-) -> Option<R> {
-    let kind = ctx.machine;
-    let result = workspaces.travel(kind, |t| {
+/// [`travel`], outside a component too (the frame loop).
+pub fn travel_here<R>(ctx: LadderCtx, f: impl FnOnce(&mut dyn TimeTravel) -> R) -> Option<R> {
+    let result = ctx.recorded(|t| {
         let r = f(t);
         sync(ctx, t, now_ms(), true);
         r
     });
-    workspaces.show(kind);
+    ctx.show_machine();
     result
 }
 

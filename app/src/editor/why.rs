@@ -11,7 +11,6 @@ use engine::record::Mark;
 use leptos::prelude::*;
 
 use super::LadderCtx;
-use crate::workspaces::Workspaces;
 use engine::ladder::edit::Cursor;
 
 /// One explanation as the page shows it.
@@ -67,29 +66,29 @@ impl WhyView {
 
 /// Explains the cell under the cursor in the scan shown; `None` when the
 /// ladder is not running as drawn or the cell decides nothing.
-pub fn explain(ctx: LadderCtx, workspaces: Workspaces) -> Option<WhyView> {
-    explain_at(ctx, workspaces, ctx.cursor.get_untracked())
+pub fn explain(ctx: LadderCtx) -> Option<WhyView> {
+    explain_at(ctx, ctx.cursor.get_untracked())
 }
 
 /// Keeps the explanation shown with the scan it explains: paused, it is
 /// explained again whenever the scan shown changes (the same cell);
 /// running, it is marked stale (`why_stale`) once the machine has moved
 /// on, until asked again.
-pub fn follow(ctx: LadderCtx, workspaces: Workspaces) {
+pub fn follow(ctx: LadderCtx) {
     let Some((at_mark, cell)) = ctx.travel.why.with_untracked(|w| {
         w.as_ref()
             .map(|w| (w.at_mark, Cursor::new(w.rung, w.target.row, w.target.col)))
     }) else {
         return;
     };
-    let Some(now) = workspaces.travel(ctx.machine, |t| t.shown().unwrap_or(t.marks().1)) else {
+    let Some(now) = ctx.recorded(|t| t.shown().unwrap_or(t.marks().1)) else {
         return;
     };
     if now == at_mark {
         return;
     }
     if ctx.page.paused.get_untracked() {
-        ctx.travel.why.set(explain_at(ctx, workspaces, cell));
+        ctx.travel.why.set(explain_at(ctx, cell));
         ctx.travel.why_stale.set(false);
     } else if !ctx.travel.why_stale.get_untracked() {
         ctx.travel.why_stale.set(true);
@@ -97,12 +96,12 @@ pub fn follow(ctx: LadderCtx, workspaces: Workspaces) {
 }
 
 /// Explains the cell `at` in the scan shown.
-fn explain_at(ctx: LadderCtx, workspaces: Workspaces, at: Cursor) -> Option<WhyView> {
+fn explain_at(ctx: LadderCtx, at: Cursor) -> Option<WhyView> {
     let target = Pos::new(at.row, at.col);
     let ladder = ctx.ladder();
     let scan = ctx.travel.shown.get_untracked();
     let mut found = None;
-    workspaces.with_plc(ctx.machine, |plc| {
+    ctx.with_plc(|plc| {
         let why = plc
             .trace()
             .and_then(|trace| ctx.with_live(|l| l?.explain(trace, at.rung, target)));
@@ -145,7 +144,7 @@ fn explain_at(ctx: LadderCtx, workspaces: Workspaces, at: Cursor) -> Option<WhyV
     });
     let mut view = found?;
     // When each device last changed, from the recording.
-    workspaces.travel(ctx.machine, |t| {
+    ctx.recorded(|t| {
         let at = t.shown().unwrap_or(t.marks().1);
         view.at_mark = at;
         for cause in &mut view.causes {
@@ -183,14 +182,11 @@ fn outputs(ladder: &engine::ladder::Ladder, device: &str) -> Vec<(usize, Pos)> {
 #[component]
 pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
-    let workspaces = use_context::<Workspaces>();
     let ask = move || {
-        if let Some(w) = workspaces {
-            ctx.travel.why.set(explain(ctx, w));
-            ctx.travel.why_stale.set(false);
-        }
+        ctx.travel.why.set(explain(ctx));
+        ctx.travel.why_stale.set(false);
     };
-    // The W key asks through the editor, which has no workspaces.
+    // The W key asks through the editor's action, seen here.
     Effect::new(move |first: Option<()>| {
         ctx.travel.why_request.track();
         if first.is_some() {

@@ -10,7 +10,7 @@ use crate::examples;
 use crate::i18n::Lang;
 use crate::machines::minasec::MinasecCtx;
 use crate::sim::Speed;
-use crate::state::{Ctx, MachineKind};
+use crate::state::{product_name, Ctx, MachineKind};
 use crate::storage;
 
 #[component]
@@ -73,16 +73,6 @@ fn MachineSelect() -> impl IntoView {
                     .collect_view()}
             </select>
         </label>
-    }
-}
-
-/// A machine's product name, as its maker writes it.
-pub fn product_name(kind: MachineKind) -> &'static str {
-    match kind {
-        MachineKind::MinasecU => "MINASEC-U",
-        MachineKind::Io86a => "PLC-IO86A",
-        MachineKind::ArduinoPlc => "Arduino PLC",
-        MachineKind::AvrPlc => "AVR PLC",
     }
 }
 

@@ -1,0 +1,170 @@
+//! The machine an editor's ladder runs on, in one object-safe shape for
+//! every machine: [`MachineLink`], implemented once generically over the
+//! simulator ([`Linked`]). Each editor holds its own link (attached by the
+//! page when it builds the workspaces), so editor views reach their
+//! machine through their own [`LadderCtx`], never through the list of
+//! workspaces; and no view is generic over the machine type.
+
+use engine::plc::Plc;
+use engine::record::{Recorded, TimeTravel};
+use leptos::prelude::*;
+
+use super::LadderCtx;
+use crate::sim::{Pace, Simulator};
+
+/// One machine as the editor and the frame loop drive it.
+pub trait MachineLink {
+    /// Operates the machine.
+    fn operate(&self, f: &mut dyn FnMut(&mut dyn Plc));
+    /// Runs `f` on its recording (time travel, breaks, the chart).
+    fn travel(&self, f: &mut dyn FnMut(&mut dyn TimeTravel));
+    /// Reads the machine (as shown: a past scan's while travelling).
+    fn read(&self, f: &mut dyn FnMut(&dyn Plc));
+    /// Advances it by one animation frame of `wall_ms` at `pace`.
+    fn advance(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64);
+    /// Copies its front panel into the panel's signals.
+    fn refresh_panel(&self);
+}
+
+/// A machine's simulator and its panel's refresh: the one implementation
+/// of [`MachineLink`].
+pub struct Linked<M: 'static> {
+    /// The simulator, outside the reactive graph.
+    pub sim: StoredValue<Simulator<M>, LocalStorage>,
+    /// Copies the machine's front into the panel's signals.
+    pub refresh: Callback<()>,
+}
+
+impl<M> MachineLink for Linked<M>
+where
+    M: Plc + Clone + 'static,
+    Recorded<M>: Plc + TimeTravel,
+{
+    fn operate(&self, f: &mut dyn FnMut(&mut dyn Plc)) {
+        self.sim.update_value(|s| f(s.machine_mut()));
+    }
+
+    fn travel(&self, f: &mut dyn FnMut(&mut dyn TimeTravel)) {
+        self.sim.update_value(|s| f(s.machine_mut()));
+    }
+
+    fn read(&self, f: &mut dyn FnMut(&dyn Plc)) {
+        self.sim.with_value(|s| f(s.machine()));
+    }
+
+    fn advance(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
+        self.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
+    }
+
+    fn refresh_panel(&self) {
+        self.refresh.run(());
+    }
+}
+
+impl LadderCtx {
+    /// Connects the editor to its machine.
+    pub fn attach(&self, link: std::rc::Rc<dyn MachineLink>) {
+        self.link.set_value(Some(link));
+    }
+
+    fn link(&self) -> Option<std::rc::Rc<dyn MachineLink>> {
+        self.link.with_value(Clone::clone)
+    }
+
+    /// Operates the machine, then shows the result in its panel and on
+    /// the ladder at once (even paused).
+    pub fn operate(&self, f: impl FnOnce(&mut dyn Plc)) {
+        let Some(link) = self.link() else {
+            return;
+        };
+        let mut f = Some(f);
+        link.operate(&mut |plc| {
+            if let Some(f) = f.take() {
+                f(plc);
+            }
+        });
+        self.show_machine();
+    }
+
+    /// Runs `f` on the machine's recording; `None` without a machine.
+    pub fn recorded<R>(&self, f: impl FnOnce(&mut dyn TimeTravel) -> R) -> Option<R> {
+        let link = self.link()?;
+        let mut f = Some(f);
+        let mut out = None;
+        link.travel(&mut |t| {
+            if let Some(f) = f.take() {
+                out = Some(f(t));
+            }
+        });
+        out
+    }
+
+    /// Reads the machine; `None` without a machine.
+    pub fn with_plc<R>(&self, f: impl FnOnce(&dyn Plc) -> R) -> Option<R> {
+        let link = self.link()?;
+        let mut f = Some(f);
+        let mut out = None;
+        link.read(&mut |plc| {
+            if let Some(f) = f.take() {
+                out = Some(f(plc));
+            }
+        });
+        out
+    }
+
+    /// Shows the machine as it now is (after a seek): its panel and the
+    /// ladder's live state.
+    pub fn show_machine(&self) {
+        let Some(link) = self.link() else {
+            return;
+        };
+        link.refresh_panel();
+        self.with_plc(|plc| self.show_live(plc));
+    }
+
+    /// One animation frame for this editor's machine: `wall_ms` of wall
+    /// time at `pace`, then the recording, breaks, "why", pulses and live
+    /// colours brought up to date.
+    pub fn frame(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
+        let Some(link) = self.link() else {
+            return;
+        };
+        if !pace.paused && self.travel.shown.get_untracked().is_some() {
+            // Running again from a past scan on show: live first (Resume
+            // from here is the way to run on from the past).
+            super::travel::travel_here(*self, |t| t.go_live());
+        }
+        link.advance(pace, wall_ms, now_ms);
+        link.refresh_panel();
+        let hit = self.recorded(|t| {
+            let hit = t.take_break();
+            super::travel::sync(*self, t, now_ms(), hit.is_some());
+            hit
+        });
+        if let Some(Some(b)) = hit {
+            // Paused at the end of the scan where the condition held.
+            self.page.paused.set(true);
+            self.travel.stopped_at.set(Some(b.mark));
+        } else if !pace.paused && self.travel.stopped_at.get_untracked().is_some() {
+            // Running again: the stop is over.
+            self.travel.stopped_at.set(None);
+        }
+        super::why::follow(*self);
+        let history = self.take_history().unwrap_or_default();
+        self.show_pulses(&history);
+        self.with_plc(|plc| {
+            if self.recording() {
+                self.observe(plc);
+            }
+            self.show_live(plc);
+        });
+    }
+
+    /// What the machine traced since the last frame.
+    fn take_history(&self) -> Option<engine::plc::TraceHistory> {
+        let link = self.link()?;
+        let mut out = None;
+        link.operate(&mut |plc| out = Some(plc.take_trace_history()));
+        out
+    }
+}
