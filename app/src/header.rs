@@ -4,19 +4,17 @@
 
 use leptos::prelude::*;
 
-use engine::minasec::Mode;
-
 use crate::examples;
 use crate::i18n::Lang;
-use crate::machines::minasec::MinasecCtx;
+use crate::machines::minasec;
 use crate::sim::Speed;
 use crate::state::{product_name, Ctx, MachineKind};
 use crate::storage;
+use crate::workspaces::Workspaces;
 
 #[component]
 pub fn Header() -> impl IntoView {
     let ctx = Ctx::get();
-    let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     view! {
         <header class="top">
@@ -34,18 +32,10 @@ pub fn Header() -> impl IntoView {
                 let machine = ctx.machine.get();
                 view! { <ExampleSelect machine /> }
             }}
-            <Show when=move || board.before_example.with(Option::is_some)>
-                <button
-                    type="button"
-                    data-testid="example-undo"
-                    on:click=move |_| examples::undo(board)
-                >
-                    {move || t().undo_open}
-                </button>
-            </Show>
+            <minasec::header::ExampleUndo />
             <SpeedSelect />
             <PauseButton />
-            <SimClock />
+            <minasec::header::SimClock />
         </header>
     }
 }
@@ -106,8 +96,7 @@ fn LangSelect() -> impl IntoView {
 #[component]
 fn ExampleSelect(machine: MachineKind) -> impl IntoView {
     let ctx = Ctx::get();
-    let board = MinasecCtx::get();
-    let ladders = expect_context::<crate::editor::Ladders>();
+    let workspaces = expect_context::<Workspaces>();
     let t = move || ctx.lang.get().texts();
     let options = engine::examples::examples_of(machine)
         .map(|e| {
@@ -126,7 +115,7 @@ fn ExampleSelect(machine: MachineKind) -> impl IntoView {
                 prop:value=""
                 on:change=move |e| {
                     let id = event_target_value(&e);
-                    examples::open(machine, &id, board, ladders.of(machine));
+                    examples::open(machine, &id, workspaces);
                     // Back to the prompt, so the same example can be opened again.
                     use leptos::wasm_bindgen::JsCast;
                     if let Some(select) = e
@@ -194,50 +183,6 @@ fn PauseButton() -> impl IntoView {
         >
             {move || if ctx.paused.get() { t().resume } else { t().pause }}
         </button>
-    }
-}
-
-/// MINASEC-U's simulated time and scans.
-#[component]
-fn SimClock() -> impl IntoView {
-    let ctx = Ctx::get();
-    let board = MinasecCtx::get();
-    let t = move || ctx.lang.get().texts();
-    // Running, paused (simulated time stopped, the machine in RUN) or
-    // stopped (HALT or power off: no scan runs).
-    let state = move || {
-        let runs = board.panel.power.get() && board.panel.mode.get() == Mode::Run;
-        match (runs, ctx.paused.get()) {
-            (false, _) => "stopped",
-            (true, true) => "paused",
-            (true, false) => "running",
-        }
-    };
-    view! {
-        <span
-            class="clock"
-            data-testid="sim-time"
-            data-state=state
-            class:hidden=move || ctx.machine.get() != MachineKind::MinasecU
-        >
-            {move || {
-                let ms = board.panel.sim_ms.get();
-                let word = match state() {
-                    "running" => t().state_running,
-                    "paused" => t().state_paused,
-                    _ => t().state_stopped,
-                };
-                format!(
-                    "{word} · {} {}.{:03} {} · {} {}",
-                    t().sim_time,
-                    ms / 1000,
-                    ms % 1000,
-                    t().seconds,
-                    board.panel.scans.get(),
-                    t().scans,
-                )
-            }}
-        </span>
     }
 }
 

@@ -10,40 +10,14 @@ pub mod slot;
 
 pub use backend::{backend, StorageBackend, StorageFault};
 
-use engine::minasec::TimerId;
 use leptos::prelude::*;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
-/// The key of the MINASEC-U workspace.
-pub const KEY: &str = "hashigo.minasec-u.v1";
-/// The key of the IO86A workspace.
-pub const IO86A_KEY: &str = "hashigo.io86a.v1";
 /// The key of the interface language.
 pub const LANG_KEY: &str = "hashigo.lang";
 /// The key of the chosen machine.
 pub const MACHINE_KEY: &str = "hashigo.machine";
-
-/// What is saved for the IO86A workspace: the two devices' program texts.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub struct SavedIo86a {
-    /// Device A's and device B's program pane text.
-    pub programs: [String; 2],
-}
-
-/// What is saved for the MINASEC-U board.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Saved {
-    /// The program pane's text, as typed (loaded or not).
-    pub program: String,
-    /// RV1's delay in ms (T0's range, 100..=1100).
-    pub rv1_ms: u64,
-    /// RV2's delay in ms (T1's range, 1000..=11000).
-    pub rv2_ms: u64,
-    /// The counter's rotary switches.
-    pub preset_tens: u8,
-    pub preset_ones: u8,
-}
 
 /// What is saved for a workspace whose state is one program text (the
 /// Arduino PLC, the AVR PLC).
@@ -71,36 +45,9 @@ pub trait Checked {
     fn problem(&self) -> Option<&'static str>;
 }
 
-impl Checked for SavedIo86a {
-    fn problem(&self) -> Option<&'static str> {
-        None
-    }
-}
-
-/// Whether `ms` is a delay timer `id`'s potentiometer gives (the
-/// engine's range, not a copy of it).
-fn pot_gives(id: TimerId, ms: u64) -> bool {
-    let (low, high) = id.range();
-    (low.as_nanos() / 1_000_000..=high.as_nanos() / 1_000_000).contains(&ms)
-}
-
-impl Checked for Saved {
-    fn problem(&self) -> Option<&'static str> {
-        if !pot_gives(TimerId::T0, self.rv1_ms) {
-            Some("rv1_ms out of range")
-        } else if !pot_gives(TimerId::T1, self.rv2_ms) {
-            Some("rv2_ms out of range")
-        } else if self.preset_tens > 9 || self.preset_ones > 9 {
-            Some("counter preset out of range")
-        } else {
-            None
-        }
-    }
-}
-
 /// What a reload found.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Restored<T = Saved> {
+pub enum Restored<T> {
     /// Nothing saved yet.
     Nothing,
     /// A good saved workspace.
@@ -109,11 +56,6 @@ pub enum Restored<T = Saved> {
     Corrupt { kept_as: String },
     /// No localStorage (private mode, disabled): nothing can be saved.
     Unavailable,
-}
-
-/// Reads the saved MINASEC-U workspace.
-pub fn restore() -> Restored {
-    restore_from(KEY)
 }
 
 /// Reads the value saved under `key`.
@@ -175,11 +117,6 @@ pub fn restored_text(page: crate::state::Ctx, key: &str, legacy: &str, default: 
     }
 }
 
-/// Saves the MINASEC-U workspace; false when storage is unavailable or full.
-pub fn save(saved: &Saved) -> bool {
-    save_to(KEY, saved)
-}
-
 /// A plain string saved under `key`; `Err` when storage refused it.
 pub fn write(key: &str, value: &str) -> Result<(), StorageFault> {
     backend().set(key, value)
@@ -222,31 +159,6 @@ pub fn save_lang(code: &str) {
 mod tests {
     use super::*;
 
-    fn saved(rv1_ms: u64, tens: u8) -> String {
-        format!(
-            r#"{{"program":"LD X00","rv1_ms":{rv1_ms},"rv2_ms":1000,"preset_tens":{tens},"preset_ones":0}}"#
-        )
-    }
-
-    #[test]
-    fn a_saved_board_reads_back_only_when_it_is_in_range() {
-        assert!(read_saved::<Saved>(&saved(1100, 1)).is_some());
-        assert!(
-            read_saved::<Saved>(&saved(99, 1)).is_none(),
-            "below RV1's range"
-        );
-        assert!(
-            read_saved::<Saved>(&saved(1101, 1)).is_none(),
-            "above RV1's range"
-        );
-        assert!(
-            read_saved::<Saved>(&saved(500, 10)).is_none(),
-            "a rotary past 9"
-        );
-        assert!(read_saved::<Saved>("{not json").is_none());
-        assert!(read_saved::<Saved>(r#"{"program":"LD X00"}"#).is_none());
-    }
-
     #[test]
     fn a_saved_text_reads_back_within_the_limits() {
         let ok = serde_json::to_string(&SavedText {
@@ -262,8 +174,5 @@ mod tests {
             Some("program longer than any program may be")
         );
         assert!(read_saved::<SavedText>(r#"{"text":"LD X000"}"#).is_none());
-        let io86a = r#"{"programs":["LD X00","END"]}"#;
-        assert!(read_saved::<SavedIo86a>(io86a).is_some());
-        assert!(read_saved::<SavedIo86a>(r#"{"programs":["only one"]}"#).is_none());
     }
 }

@@ -1,6 +1,7 @@
 //! The PLC-IO86A workspace: two linked devices (B is shown on request),
 //! the serial terminal of device A, and a program pane per device.
 
+pub mod saved;
 pub mod view;
 
 use engine::events::InputValue;
@@ -12,7 +13,8 @@ use leptos::prelude::*;
 
 use crate::sim::Simulator;
 use crate::state::put;
-use crate::storage::{self, Restored, SavedIo86a};
+use crate::storage::{self, Restored};
+use saved::{SavedIo86a, IO86A_KEY};
 
 /// The manual's LED blink, the text a fresh workspace opens with.
 pub const BLINK: &str = "; PLC-IO86A manual: LED blink (0.2 s on, 0.2 s off)\n\
@@ -103,7 +105,7 @@ impl Io86aCtx {
             two: RwSignal::new(false),
             notice: RwSignal::new(None),
         };
-        match storage::restore_from::<SavedIo86a>(storage::IO86A_KEY) {
+        match storage::restore_from::<SavedIo86a>(IO86A_KEY) {
             Restored::Saved(saved) => {
                 for (signal, text) in ctx.texts.iter().zip(saved.programs) {
                     signal.set(text);
@@ -199,7 +201,7 @@ impl Io86aCtx {
         let saved = SavedIo86a {
             programs: [self.texts[0].get_untracked(), self.texts[1].get_untracked()],
         };
-        storage::save_to(storage::IO86A_KEY, &saved);
+        storage::save_to(IO86A_KEY, &saved);
     }
 }
 

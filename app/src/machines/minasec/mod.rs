@@ -2,7 +2,11 @@
 //! graph), one signal per panel element, and the program pane.
 
 pub mod board;
+pub mod examples;
+pub mod header;
 pub mod program;
+pub mod saved;
+pub mod signals;
 
 use engine::machines::MinasecPlc;
 use engine::minasec::{Command, Panel, TimerId};
@@ -11,8 +15,10 @@ use engine::SimTime;
 use leptos::prelude::*;
 
 use crate::sim::Simulator;
-use crate::state::{Ctx, PanelSignals};
-use crate::storage::{self, Restored, Saved};
+use crate::state::Ctx;
+use crate::storage::Restored;
+use saved::Saved;
+pub use signals::{PanelSignals, Parsed};
 
 /// The MINASEC-U workspace: the board, one signal per panel element,
 /// the program pane; `Copy`, provided as context.
@@ -53,7 +59,7 @@ impl MinasecCtx {
         let _ = board.apply(plc::Command::Run(false));
         let ctx = MinasecCtx::new(page, Simulator::new(board));
         let texts = page.lang.get_untracked().texts();
-        match storage::restore() {
+        match saved::restore() {
             Restored::Saved(saved) => {
                 ctx.text.set(saved.program);
                 ctx.apply_settings(
@@ -132,7 +138,7 @@ impl MinasecCtx {
             preset_tens: self.panel.preset[0].get_untracked(),
             preset_ones: self.panel.preset[1].get_untracked(),
         };
-        if !storage::save(&saved) {
+        if !saved::save(&saved) {
             let texts = self.page.lang.get_untracked().texts();
             self.page
                 .notice

@@ -4,8 +4,9 @@
 
 use leptos::prelude::*;
 
+use super::Parsed;
 use crate::machines::minasec::MinasecCtx;
-use crate::state::{Ctx, Parsed};
+use crate::state::Ctx;
 
 #[component]
 pub fn ProgramPane() -> impl IntoView {
