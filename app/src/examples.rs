@@ -26,6 +26,6 @@ pub fn open(machine: MachineId, id: &str, workspaces: Workspaces) {
                 ladder.adopt_text();
             }
         }
-        Err(e) => ladder.message.set(Some(e)),
+        Err(e) => ladder.panes.message.set(Some(e)),
     }
 }

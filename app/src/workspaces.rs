@@ -110,6 +110,7 @@ impl Workspaces {
         });
         ladders
             .of(MachineId::AvrPlc)
+            .text
             .options
             .update(|o| o.avr_scan_ms = avr::scan_ms_default());
         ladders.of(MachineId::AvrPlc).connect(Program {

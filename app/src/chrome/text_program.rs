@@ -104,7 +104,7 @@ pub fn LoadAsLadder() -> impl IntoView {
                 data-testid="load-as-ladder"
                 on:click=move |_| {
                     let result = ladder.load_text_as_ladder();
-                    ladder.message.set(result.err());
+                    ladder.panes.message.set(result.err());
                 }
             >
                 {move || crate::editor::texts::texts(ctx.lang.get()).load_as_ladder}

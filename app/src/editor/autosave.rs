@@ -111,13 +111,13 @@ impl Autosave {
 pub fn StorageBanner(ctx: super::LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
     let projects = use_context::<super::projects::Projects>();
-    let trouble = move || match ctx.saving.trouble.get() {
+    let trouble = move || match ctx.work.saving.trouble.get() {
         Some(StorageFault::Full) => Some(t().storage_full),
         Some(StorageFault::Unavailable) => Some(t().storage_blocked),
         None => None,
     };
     view! {
-        <Show when=move || ctx.saving.conflict.get()>
+        <Show when=move || ctx.work.saving.conflict.get()>
             <div class="storage-conflict" role="alert" data-testid="storage-conflict">
                 <span>{move || t().conflict_note}</span>
                 <button type="button" data-testid="conflict-load-theirs" on:click=move |_| ctx.load_theirs()>

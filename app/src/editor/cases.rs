@@ -144,14 +144,18 @@ impl Recorder {
 
 /// Runs every case of `ctx`'s project and shows the results.
 pub fn run_all(ctx: LadderCtx) {
-    let Some(listing) = ctx.listing.get_untracked() else {
+    let Some(listing) = ctx.drawing.listing.get_untracked() else {
         let t = super::texts::texts(ctx.page.lang.get_untracked());
-        ctx.message.set(Some(t.tests_need_compile.to_string()));
+        ctx.panes
+            .message
+            .set(Some(t.tests_need_compile.to_string()));
         return;
     };
-    let cases = ctx.tests.get_untracked();
+    let cases = ctx.cases.tests.get_untracked();
     let results = run_cases(ctx.machine, &ctx.settings(), &listing.text, &cases);
-    ctx.results.set(results.into_iter().map(Some).collect());
+    ctx.cases
+        .results
+        .set(results.into_iter().map(Some).collect());
 }
 
 /// `[data-testid=tests]`.
@@ -160,12 +164,12 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
     let recording = RwSignal::new(ctx.recording());
     let edit = move |i: usize, f: Box<dyn Fn(&mut TestCase)>| {
-        ctx.tests.update(|tests| {
+        ctx.cases.tests.update(|tests| {
             if let Some(c) = tests.get_mut(i) {
                 f(c);
             }
         });
-        ctx.results.update(|r| {
+        ctx.cases.results.update(|r| {
             if let Some(slot) = r.get_mut(i) {
                 *slot = None;
             }
@@ -180,26 +184,26 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
         }
         recording.set(ctx.recording());
     };
-    let cases = move || (0..ctx.tests.with(Vec::len)).collect::<Vec<_>>();
+    let cases = move || (0..ctx.cases.tests.with(Vec::len)).collect::<Vec<_>>();
     view! {
         <section class="tests-pane" data-testid="tests">
             <div class="find-row">
                 <button type="button" data-testid="run-tests" on:click=move |_| run_all(ctx)>{move || t().run_tests}</button>
                 <button type="button" data-testid="add-test" on:click=move |_| {
-                    let n = ctx.tests.with_untracked(Vec::len) + 1;
-                    ctx.tests.update(|v| v.push(TestCase { name: format!("case {n}"), ..TestCase::default() }));
+                    let n = ctx.cases.tests.with_untracked(Vec::len) + 1;
+                    ctx.cases.tests.update(|v| v.push(TestCase { name: format!("case {n}"), ..TestCase::default() }));
                     ctx.save();
                 }>{move || t().add_test}</button>
                 <button type="button" data-testid="record-test" aria-pressed=move || recording.get().to_string() on:click=record>
                     {move || if recording.get() { t().record_stop } else { t().record_start }}
                 </button>
                 <label>
-                    <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.exercise.get()
-                        on:change=move |_| { ctx.exercise.update(|e| *e = !*e); ctx.save(); } />
+                    <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.cases.exercise.get()
+                        on:change=move |_| { ctx.cases.exercise.update(|e| *e = !*e); ctx.save(); } />
                     {move || t().exercise}
                 </label>
                 <span data-testid="tests-summary">{move || {
-                    ctx.results.with(|r| {
+                    ctx.cases.results.with(|r| {
                         let pass = r.iter().filter(|x| **x == Some(CaseResult::Pass)).count();
                         let run = r.iter().filter(|x| x.is_some()).count();
                         if run == 0 { String::new() } else { format!("{pass} / {run} {}", t().passed) }
@@ -210,8 +214,8 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
                 each=cases
                 key=|i| *i
                 children=move |i| {
-                    let case = move || ctx.tests.with(|v| v.get(i).cloned().unwrap_or_default());
-                    let result = move || ctx.results.with(|r| r.get(i).cloned().flatten());
+                    let case = move || ctx.cases.tests.with(|v| v.get(i).cloned().unwrap_or_default());
+                    let result = move || ctx.cases.results.with(|r| r.get(i).cloned().flatten());
                     view! {
                         <div
                             class="test-case"
@@ -226,8 +230,8 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
                             <input class="test-name" data-testid="test-name" prop:value=move || case().name
                                 on:change=move |e| { let v = event_target_value(&e); edit(i, Box::new(move |c| c.name = v.clone())); } />
                             <button type="button" data-testid="test-delete" on:click=move |_| {
-                                ctx.tests.update(|v| { if i < v.len() { v.remove(i); } });
-                                ctx.results.update(|r| { if i < r.len() { r.remove(i); } });
+                                ctx.cases.tests.update(|v| { if i < v.len() { v.remove(i); } });
+                                ctx.cases.results.update(|r| { if i < r.len() { r.remove(i); } });
                                 ctx.save();
                             }>{move || t().delete_test}</button>
                             <div class="test-fields">

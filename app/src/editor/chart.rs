@@ -159,7 +159,7 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
     // below does not jump up to 250 ms after the edit.
     Effect::new(move |_| {
         ctx.travel.chart_tick.track();
-        ctx.revision.track();
+        ctx.drawing.revision.track();
         let w = window.get();
         let names = devices.get().unwrap_or_else(|| default_devices(ctx));
         let fresh = ctx.recorded(|tr| {

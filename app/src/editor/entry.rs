@@ -18,7 +18,7 @@ const SHOWN: usize = 12;
 pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
     let input = NodeRef::<leptos::html::Input>::new();
     let t = move || texts::texts(ctx.page.lang.get());
-    let open = move || ctx.entry.with(Option::is_some);
+    let open = move || ctx.panes.entry.with(Option::is_some);
     // Focus the input each time the entry opens.
     Effect::new(move |_| {
         if open() {
@@ -30,7 +30,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
         }
     });
     let title = move || {
-        ctx.entry.with(|e| {
+        ctx.panes.entry.with(|e| {
             e.as_ref().map(|e| {
                 let t = t();
                 let what = match e.kind {
@@ -45,10 +45,10 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
         })
     };
     let options = move || {
-        ctx.entry.with(|e| {
+        ctx.panes.entry.with(|e| {
             let Some(e) = e else { return Vec::new() };
             let last = e.text.split_whitespace().last().unwrap_or("");
-            let comments = ctx.comments.get();
+            let comments = ctx.drawing.comments.get();
             complete(ctx.machine, last, &comments)
                 .into_iter()
                 .take(SHOWN)
@@ -56,7 +56,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
         })
     };
     let set_text = move |text: String| {
-        ctx.entry.update(|e| {
+        ctx.panes.entry.update(|e| {
             if let Some(e) = e {
                 e.text = text;
                 e.error = None;
@@ -64,7 +64,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
         });
     };
     let close = move || {
-        ctx.entry.set(None);
+        ctx.panes.entry.set(None);
         on_close.run(());
     };
     view! {
@@ -76,8 +76,8 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                     data-testid="device-input"
                     autocomplete="off"
                     spellcheck="false"
-                    aria-invalid=move || ctx.entry.with(|e| e.as_ref().is_some_and(|e| e.error.is_some())).to_string()
-                    prop:value=move || ctx.entry.with(|e| e.as_ref().map(|e| e.text.clone()).unwrap_or_default())
+                    aria-invalid=move || ctx.panes.entry.with(|e| e.as_ref().is_some_and(|e| e.error.is_some())).to_string()
+                    prop:value=move || ctx.panes.entry.with(|e| e.as_ref().map(|e| e.text.clone()).unwrap_or_default())
                     on:input=move |e| set_text(event_target_value(&e))
                     on:keydown=move |e: web_sys::KeyboardEvent| match e.key().as_str() {
                         "Enter" => {
@@ -100,7 +100,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                 }>{move || t().ok}</button>
                 <button type="button" on:click=move |_| close()>{move || t().cancel}</button>
                 <div class="entry-error" role="alert" data-testid="device-error">
-                    {move || ctx.entry.with(|e| e.as_ref().and_then(|e| e.error.clone()))}
+                    {move || ctx.panes.entry.with(|e| e.as_ref().and_then(|e| e.error.clone()))}
                 </div>
                 <ul class="entry-options" data-testid="device-options">
                     <For
@@ -115,7 +115,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                                         tabindex="-1"
                                         on:mousedown=move |e: web_sys::MouseEvent| {
                                             e.prevent_default();
-                                            let text = ctx.entry.with_untracked(|e| e.as_ref().map(|e| e.text.clone()).unwrap_or_default());
+                                            let text = ctx.panes.entry.with_untracked(|e| e.as_ref().map(|e| e.text.clone()).unwrap_or_default());
                                             let mut words: Vec<&str> = text.split_whitespace().collect();
                                             if !text.ends_with(' ') {
                                                 words.pop();

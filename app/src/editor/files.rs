@@ -40,7 +40,8 @@ fn click_link(name: &str, href: &str) {
 
 /// The rung drawings as the screen has them, with numbers and steps.
 fn drawings(ctx: LadderCtx) -> Vec<(usize, Option<usize>, RungData)> {
-    ctx.rungs
+    ctx.drawing
+        .rungs
         .get_untracked()
         .iter()
         .map(|r| {
@@ -127,7 +128,8 @@ fn open_text(
                 (target, p.ladder)
             }
             Err(e) => {
-                ctx.message
+                ctx.panes
+                    .message
                     .set(Some(format!("{file}:{}: {}", e.line, e.error)));
                 return;
             }
@@ -192,12 +194,12 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                     Ok(xml) => download(&name(ctx, "xml"), "application/xml", &xml),
                     Err(errors) => {
                         let all: Vec<String> = errors.iter().map(ToString::to_string).collect();
-                        ctx.message.set(Some(all.join("; ")));
+                        ctx.panes.message.set(Some(all.join("; ")));
                     }
                 }
             }>"PLCopen"</button>
-            <button type="button" data-testid="export-text" disabled=move || ctx.listing.with(Option::is_none) on:click=move |_| {
-                if let Some(listing) = ctx.listing.get_untracked() {
+            <button type="button" data-testid="export-text" disabled=move || ctx.drawing.listing.with(Option::is_none) on:click=move |_| {
+                if let Some(listing) = ctx.drawing.listing.get_untracked() {
                     download(&name(ctx, "txt"), "text/plain", &listing.text);
                 }
             }>{move || t().export_text}</button>

@@ -19,9 +19,9 @@ pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
     // Re-read on every change of the ladder (the listing and problems
     // both change with it; the rung list covers rung moves).
     let version = move || {
-        ctx.rungs.track();
-        ctx.problems.track();
-        ctx.listing.track();
+        ctx.drawing.rungs.track();
+        ctx.drawing.problems.track();
+        ctx.drawing.listing.track();
     };
     let found = move || {
         version();
@@ -31,7 +31,7 @@ pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
     let uses = move || {
         version();
         let q = query.get();
-        let steps = ctx.listing.get();
+        let steps = ctx.drawing.listing.get();
         ctx.with_editor(|e| {
             xref(e.ladder(), &q)
                 .into_iter()
@@ -68,12 +68,12 @@ pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                         prop:value=move || query.get()
                         on:input=move |e| query.set(event_target_value(&e))
                         on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
-                            ctx.find_open.set(false);
+                            ctx.panes.find_open.set(false);
                             on_pick.run(());
                         }
                     />
                 </label>
-                <button type="button" on:click=move |_| { ctx.find_open.set(false); on_pick.run(()); }>
+                <button type="button" on:click=move |_| { ctx.panes.find_open.set(false); on_pick.run(()); }>
                     {move || t().close}
                 </button>
             </div>

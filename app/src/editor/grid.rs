@@ -14,10 +14,10 @@ use super::texts;
 /// The focusable grid, `[data-testid=ladder]`.
 #[component]
 pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl IntoView {
-    let cursor = ctx.cursor;
+    let cursor = ctx.drawing.cursor;
     let selected = Selector::new(move || cursor.get());
     // The block being selected, unchanged (and so silent) while there is none.
-    let block = Memo::new(move |_| ctx.anchor.get().map(|a| (a, cursor.get())));
+    let block = Memo::new(move |_| ctx.drawing.anchor.get().map(|a| (a, cursor.get())));
     // Keep the cursor's cell in view.
     Effect::new(move |_| {
         let c = cursor.get();
@@ -31,7 +31,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
         }
     });
     let on_key = move |e: web_sys::KeyboardEvent| {
-        if ctx.entry.with_untracked(Option::is_some) {
+        if ctx.panes.entry.with_untracked(Option::is_some) {
             return;
         }
         let (ctrl, key) = (e.ctrl_key() || e.meta_key(), e.key());
@@ -46,7 +46,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
             e.prevent_default();
         }
     };
-    let end_cells = move || (0..=ctx.out_col.get()).collect::<Vec<_>>();
+    let end_cells = move || (0..=ctx.drawing.out_col.get()).collect::<Vec<_>>();
     let selected_end = selected.clone();
     view! {
         <div
@@ -60,7 +60,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
             on:keydown=on_key
         >
             <For
-                each=move || ctx.rungs.get()
+                each=move || ctx.drawing.rungs.get()
                 key=|r: &RungView| r.id
                 children=move |r: RungView| {
                     let selected = selected.clone();
@@ -74,19 +74,19 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
                 <div
                     class="rung-grid"
                     role="row"
-                    style=move || format!("grid-template-columns: repeat({}, var(--cell-w))", ctx.out_col.get() + 1)
+                    style=move || format!("grid-template-columns: repeat({}, var(--cell-w))", ctx.drawing.out_col.get() + 1)
                 >
                     <For
                         each=end_cells
                         key=|c| *c
                         children=move |col| {
                             let selected = selected_end.clone();
-                            let here = move || Cursor::new(ctx.rungs.with(Vec::len), 0, col);
+                            let here = move || Cursor::new(ctx.drawing.rungs.with(Vec::len), 0, col);
                             view! {
                                 <div
                                     class="cell"
                                     role="gridcell"
-                                    data-testid=move || format!("cell-{}-0-{col}", ctx.rungs.with(Vec::len))
+                                    data-testid=move || format!("cell-{}-0-{col}", ctx.drawing.rungs.with(Vec::len))
                                     data-kind=""
                                     aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
                                     aria-label=move || format!("end of ladder, column {}", col + 1)
@@ -106,20 +106,15 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
 /// Ctrl+V where the browser sends no paste event (nothing editable has
 /// focus): this page's own clipboard is pasted instead, once.
 fn schedule_fallback_paste(ctx: LadderCtx) {
-    PASTED.with(|p| p.set(false));
+    ctx.clip.pasted.set_value(false);
     set_timeout(
         move || {
-            if !PASTED.with(std::cell::Cell::get) {
+            if !ctx.clip.pasted.get_value() {
                 ctx.paste_text(None);
             }
         },
         std::time::Duration::ZERO,
     );
-}
-
-thread_local! {
-    /// Whether a paste event arrived since the last Ctrl+V.
-    pub(super) static PASTED: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
 }
 
 /// A palette item (or nothing) dropped on cell `at`.
@@ -288,6 +283,7 @@ fn Cell(
     let forced_here = move || {
         !forced_device.is_empty()
             && ctx
+                .live
                 .forced
                 .with(|f| f.iter().any(|(d, _)| *d == forced_device))
     };
@@ -353,13 +349,13 @@ fn Cell(
             on:click=move |e: web_sys::MouseEvent| {
                 // While the machine runs the drawn ladder, a contact drives
                 // its input.
-                if ctx.monitor.get_untracked() && is_contact {
+                if ctx.live.monitor.get_untracked() && is_contact {
                     if let Some(d) = &driven {
                         super::live::drive_from_ladder(ctx, d, e.shift_key());
                     }
                 }
             }
-            class:stepped=move || ctx.stepped_cell.with(|s| *s == Some(here6()))
+            class:stepped=move || ctx.live.stepped_cell.with(|s| *s == Some(here6()))
             class:forced=forced_here.clone()
             data-forced=move || forced_here().then_some("1")
             on:dblclick=move |_| {
@@ -375,7 +371,7 @@ fn Cell(
             <span class="val" data-value=value_attr>{value_text}</span>
             // "Why": the cell asked about and the cells that decide it
             // (a child: the cell already carries tachys's most attributes).
-            <span class="why" data-why=move || ctx.travel.why.with(|w| w.as_ref().and_then(|w| w.role_at(&here7())))></span>
+            <span class="why" data-why=move || ctx.why.shown.with(|w| w.as_ref().and_then(|w| w.role_at(&here7())))></span>
         </div>
     }
 }

@@ -18,10 +18,12 @@ use super::LadderCtx;
 pub fn run_drawing(ctx: LadderCtx) -> bool {
     let t = super::texts::texts(ctx.page.lang.get_untracked());
     if !ctx.write_drawing() {
-        ctx.message.set(Some(t.tests_need_compile.to_string()));
+        ctx.panes
+            .message
+            .set(Some(t.tests_need_compile.to_string()));
         return false;
     }
-    ctx.unwritten.set(false);
+    ctx.live.unwritten.set(false);
     ctx.operate(|plc: &mut dyn engine::plc::Plc| {
         plc.set_tracing(true);
         let _ = plc.apply(Command::Run(true));
@@ -44,7 +46,7 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
     // The AVR PLC has no RUN/STOP switch: it runs whenever powered, so
     // Run stays Run (it writes the drawing again).
     let stoppable = kind != MachineId::AvrPlc;
-    let runs_drawing = move || stoppable && ctx.monitor.get() && ctx.running.get();
+    let runs_drawing = move || stoppable && ctx.live.monitor.get() && ctx.live.running.get();
     let run = move |_| {
         if runs_drawing() {
             // Stop: the machine as it stops (MINASEC-U HALT, IO86A STOP,
@@ -52,8 +54,8 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
             operate(&|plc| {
                 let _ = plc.apply(Command::Run(false));
             });
-            ctx.monitor.set(false);
-            ctx.running.set(false);
+            ctx.live.monitor.set(false);
+            ctx.live.running.set(false);
             return;
         }
         run_drawing(ctx);
@@ -75,11 +77,13 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
         });
         if which == 1 {
             let rung = stepped.get().and_then(|s| {
-                ctx.listing
+                ctx.drawing
+                    .listing
                     .with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s)))
             });
-            ctx.stepped.set(stepped.get().map(|s| (s, rung)));
-            ctx.stepped_cell
+            ctx.live.stepped.set(stepped.get().map(|s| (s, rung)));
+            ctx.live
+                .stepped_cell
                 .set(stepped.get().and_then(|s| ctx.cell_of_step(s)));
         }
     };
@@ -93,8 +97,8 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
                 <button type="button" data-testid="step-clock" on:click=move |_| step(2)>{move || t().step_clock}</button>
             })}
             <span class="not-written" data-testid="not-written" role="status"
-                hidden=move || !ctx.unwritten.get()>{move || t().not_written}</span>
-            <span data-testid="step-at">{move || ctx.stepped.get().map(|(s, rung)| match rung {
+                hidden=move || !ctx.live.unwritten.get()>{move || t().not_written}</span>
+            <span data-testid="step-at">{move || ctx.live.stepped.get().map(|(s, rung)| match rung {
                 Some(r) => format!("{} {s} · {} {}", t().step, t().rung, r + 1),
                 None => format!("{} {s}", t().step),
             })}</span>
@@ -114,10 +118,10 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
         if n.is_empty() {
             return;
         }
-        if ctx.watch.with_untracked(|w| w.contains(&n)) {
+        if ctx.live.watch.with_untracked(|w| w.contains(&n)) {
             return;
         }
-        ctx.watch.update(|w| w.push(n));
+        ctx.live.watch.update(|w| w.push(n));
         name.set(String::new());
     };
     let list_id = format!("watch-names-{}", ctx.machine.name());
@@ -136,15 +140,15 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
             <table class="watch" data-testid="watch">
                 <tbody>
                     {move || {
-                        let values = ctx.watch_values.get();
-                        ctx.watch.get().into_iter().enumerate().map(|(i, n)| {
+                        let values = ctx.live.watch_values.get();
+                        ctx.live.watch.get().into_iter().enumerate().map(|(i, n)| {
                             let v = values.get(i).cloned().unwrap_or_default();
                             let gone = n.clone();
                             view! {
                                 <tr data-testid=format!("watch-{n}")>
                                     <th>{n.clone()}</th>
                                     <td class="watch-value">{v}</td>
-                                    <td><button type="button" on:click=move |_| ctx.watch.update(|w| { w.retain(|x| *x != gone); })>"×"</button></td>
+                                    <td><button type="button" on:click=move |_| ctx.live.watch.update(|w| { w.retain(|x| *x != gone); })>"×"</button></td>
                                 </tr>
                             }
                         }).collect_view()
@@ -185,12 +189,13 @@ pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
         }
     });
     if let Some(why) = refused {
-        ctx.message
+        ctx.panes
+            .message
             .set(Some(format!("{device}: {why} ({})", t.not_an_input)));
         return;
     }
     if let Some(value) = held {
-        ctx.forced.update(|f| {
+        ctx.live.forced.update(|f| {
             f.retain(|(d, _)| d != device);
             f.push((device.to_string(), value));
         });
@@ -208,13 +213,13 @@ pub fn ForceList(ctx: LadderCtx) -> impl IntoView {
                 let _ = plc.apply(Command::ReleaseInput(d));
             }
         });
-        ctx.forced.update(|f| f.retain(|(d, _)| *d != device));
+        ctx.live.forced.update(|f| f.retain(|(d, _)| *d != device));
     };
     view! {
         <section class="forces-pane" data-testid="forces">
             <h3>{move || t().forces}</h3>
             <ul>
-                {move || ctx.forced.get().into_iter().map(|(device, value)| {
+                {move || ctx.live.forced.get().into_iter().map(|(device, value)| {
                     let d = device.clone();
                     view! {
                         <li data-testid=format!("force-{device}")>

@@ -64,11 +64,11 @@ where
 impl LadderCtx {
     /// Connects the editor to its machine.
     pub fn attach(&self, link: std::rc::Rc<dyn MachineLink>) {
-        self.link.set_value(Some(link));
+        self.live.link.set_value(Some(link));
     }
 
     fn link(&self) -> Option<std::rc::Rc<dyn MachineLink>> {
-        self.link.with_value(Clone::clone)
+        self.live.link.with_value(Clone::clone)
     }
 
     /// Operates the machine, then shows the result in its panel and on

@@ -73,7 +73,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
     // gives the focus back to the ladder).
     let keymap = NodeRef::<leptos::html::Div>::new();
     Effect::new(move |_| {
-        if ctx.help.get() {
+        if ctx.panes.help.get() {
             if let Some(d) = keymap.get() {
                 let _ = d.focus();
             }
@@ -95,7 +95,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
             <CommentBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
             <div class="edit-message" role="alert" data-testid="edit-message">
-                {move || ctx.message.get()}
+                {move || ctx.panes.message.get()}
             </div>
             <div class="ladder-main">
                 <palette::Palette ctx on_done=refocus />
@@ -109,21 +109,21 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                 </div>
             </div>
             <chart::TimingChart ctx />
-            <Show when=move || ctx.tests_open.get()>
+            <Show when=move || ctx.panes.tests_open.get()>
                 <cases::TestsPane ctx />
             </Show>
-            <Show when=move || ctx.projects_open.get()>
+            <Show when=move || ctx.panes.projects_open.get()>
                 <projects::ProjectsPane ctx />
             </Show>
-            <Show when=move || ctx.find_open.get()>
+            <Show when=move || ctx.panes.find_open.get()>
                 <find::FindPane ctx on_pick=refocus />
             </Show>
-            <Show when=move || ctx.help.get()>
+            <Show when=move || ctx.panes.help.get()>
                 <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys
                     node_ref=keymap tabindex="-1"
                     on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
                         e.prevent_default();
-                        ctx.help.set(false);
+                        ctx.panes.help.set(false);
                         grid::focus(grid);
                     }>
                     <table>
@@ -131,7 +131,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                             <tr><th>{*k}</th><td>{*what}</td></tr>
                         }).collect_view()}
                     </table>
-                    <button type="button" on:click=move |_| { ctx.help.set(false); grid::focus(grid); }>
+                    <button type="button" on:click=move |_| { ctx.panes.help.set(false); grid::focus(grid); }>
                         {move || t().close}
                     </button>
                 </div>
@@ -156,29 +156,29 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 ctx.apply(Edit::NewLadder);
                 refocus.run(());
             }>{move || t().new_ladder}</button>
-            <button type="button" data-testid="undo" disabled=move || !ctx.can_undo.get()
+            <button type="button" data-testid="undo" disabled=move || !ctx.drawing.can_undo.get()
                 on:click=move |_| { ctx.undo(); refocus.run(()); }>{move || t().undo}</button>
-            <button type="button" data-testid="redo" disabled=move || !ctx.can_redo.get()
+            <button type="button" data-testid="redo" disabled=move || !ctx.drawing.can_redo.get()
                 on:click=move |_| { ctx.redo(); refocus.run(()); }>{move || t().redo}</button>
-            <button type="button" data-testid="ladder-write" disabled=move || ctx.listing.with(Option::is_none)
+            <button type="button" data-testid="ladder-write" disabled=move || ctx.drawing.listing.with(Option::is_none)
                 on:click=move |_| {
                     // The same action as Run, said where the user looks.
                     if run_drawing() {
-                        ctx.message.set(Some(t().written.to_string()));
+                        ctx.panes.message.set(Some(t().written.to_string()));
                     }
                 }>{move || t().write}</button>
             <shared::ShareButton ctx />
             <files::FileButtons ctx />
-            <button type="button" data-testid="tests-open" on:click=move |_| ctx.tests_open.update(|f| *f = !*f)>
+            <button type="button" data-testid="tests-open" on:click=move |_| ctx.panes.tests_open.update(|f| *f = !*f)>
                 {move || t().tests}
             </button>
-            <button type="button" data-testid="projects-open" on:click=move |_| ctx.projects_open.update(|f| *f = !*f)>
+            <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.projects_open.update(|f| *f = !*f)>
                 {move || t().projects}
             </button>
-            <button type="button" data-testid="find-open" on:click=move |_| ctx.find_open.update(|f| *f = !*f)>
+            <button type="button" data-testid="find-open" on:click=move |_| ctx.panes.find_open.update(|f| *f = !*f)>
                 {move || t().find}
             </button>
-            <button type="button" data-testid="keys" on:click=move |_| ctx.help.update(|h| *h = !*h)>
+            <button type="button" data-testid="keys" on:click=move |_| ctx.panes.help.update(|h| *h = !*h)>
                 {move || t().keys}
             </button>
             <label>
@@ -206,13 +206,13 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
 fn CommentBar(ctx: LadderCtx) -> impl IntoView {
     let t = move || texts::texts(ctx.page.lang.get());
     let rung_comment = move || {
-        ctx.rungs.track();
-        let rung = ctx.cursor.get().rung;
+        ctx.drawing.rungs.track();
+        let rung = ctx.drawing.cursor.get().rung;
         ctx.with_editor(|e| e.ladder().rungs.get(rung).map(|r| r.comment.clone()))
     };
     let device = move || {
-        ctx.rungs.track();
-        let c = ctx.cursor.get();
+        ctx.drawing.rungs.track();
+        let c = ctx.drawing.cursor.get();
         ctx.with_editor(|e| {
             let element = e.ladder().rungs.get(c.rung)?.get(c.pos())?;
             element
@@ -230,7 +230,7 @@ fn CommentBar(ctx: LadderCtx) -> impl IntoView {
                     disabled=move || rung_comment().is_none()
                     prop:value=move || rung_comment().unwrap_or_default()
                     on:change=move |e| {
-                        let index = ctx.cursor.get_untracked().rung;
+                        let index = ctx.drawing.cursor.get_untracked().rung;
                         ctx.apply(Edit::RungComment { index, text: event_target_value(&e) });
                     }
                 />
@@ -240,7 +240,7 @@ fn CommentBar(ctx: LadderCtx) -> impl IntoView {
                 <input
                     data-testid="device-comment-input"
                     disabled=move || device().is_none()
-                    prop:value=move || device().and_then(|d| ctx.comments.with(|c| c.get(&d).cloned())).unwrap_or_default()
+                    prop:value=move || device().and_then(|d| ctx.drawing.comments.with(|c| c.get(&d).cloned())).unwrap_or_default()
                     on:change=move |e| {
                         if let Some(device) = device() {
                             ctx.apply(Edit::DeviceComment { device, text: event_target_value(&e) });
@@ -286,7 +286,7 @@ fn clipboard_events(ctx: LadderCtx) {
         if !on_ladder() {
             return;
         }
-        grid::PASTED.with(|p| p.set(true));
+        ctx.clip.pasted.set_value(true);
         e.prevent_default();
         let text = e
             .clipboard_data()

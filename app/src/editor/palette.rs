@@ -265,7 +265,7 @@ pub fn activate(ctx: LadderCtx, id: &str) {
         return;
     };
     if let Some(why) = item.lacks {
-        ctx.message.set(Some(why));
+        ctx.panes.message.set(Some(why));
         return;
     }
     match item.does {

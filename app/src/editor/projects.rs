@@ -210,7 +210,7 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
     let name = RwSignal::new(String::new());
     let fail = move |r: Result<(), String>| {
         if let Err(e) = r {
-            ctx.message.set(Some(e));
+            ctx.panes.message.set(Some(e));
         }
     };
     view! {
@@ -218,7 +218,7 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
             <div class="find-row">
                 <span data-testid="project-open-name">
                     {move || {
-                        let open = ctx.project.get();
+                        let open = ctx.work.project.get();
                         projects.index.with(|i| {
                             open.and_then(|id| i.projects.iter().find(|e| e.id == id))
                                 .map_or_else(|| t().project_default.to_string(), |e| e.name.clone())
@@ -256,7 +256,7 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
                     key=|e| e.clone()
                     children=move |e: Entry| {
                         let id = e.id;
-                        let is_open = move || ctx.project.get() == Some(id) && ctx.page.machine.get() == e.machine;
+                        let is_open = move || ctx.work.project.get() == Some(id) && ctx.page.machine.get() == e.machine;
                         view! {
                             <li data-testid=format!("project-{}", e.name) class:open=is_open>
                                 <b>{e.name.clone()}</b> " · " {crate::state::product_name(e.machine)} " "
@@ -274,9 +274,9 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
                                     fail(projects.duplicate(id).map(|_| ()));
                                 }>{move || t().project_duplicate}</button>
                                 <button type="button" data-testid="project-delete" on:click=move |_| {
-                                    let open_somewhere = MachineId::ALL.iter().any(|m| ladders.of(*m).project.get_untracked() == Some(id));
+                                    let open_somewhere = MachineId::ALL.iter().any(|m| ladders.of(*m).work.project.get_untracked() == Some(id));
                                     if open_somewhere {
-                                        ctx.message.set(Some(t().project_delete_open.to_string()));
+                                        ctx.panes.message.set(Some(t().project_delete_open.to_string()));
                                     } else {
                                         projects.delete(id);
                                     }

@@ -97,9 +97,9 @@ pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
                 let _ = window.navigator().clipboard().write_text(&link);
             }
             url.set(Some(link));
-            ctx.message.set(None);
+            ctx.panes.message.set(None);
         }
-        Err(e) => ctx.message.set(Some(e.to_string())),
+        Err(e) => ctx.panes.message.set(Some(e.to_string())),
     };
     view! {
         <button type="button" data-testid="share" on:click=share>{move || t().share}</button>
@@ -126,7 +126,7 @@ pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
 pub fn SharedBanner(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
     view! {
-        <Show when=move || ctx.shared.get()>
+        <Show when=move || ctx.work.shared.get()>
             <div class="shared-banner" role="status" data-testid="shared-banner">
                 <span>{move || t().shared_note}</span>
                 <button type="button" data-testid="shared-keep" on:click=move |_| {

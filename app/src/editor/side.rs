@@ -14,12 +14,13 @@ pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
     let t = move || texts::texts(ctx.page.lang.get());
     // The steps of the cursor's rung.
     let chosen = Memo::new(move |_| {
-        let rung = ctx.cursor.get().rung;
-        ctx.listing
+        let rung = ctx.drawing.cursor.get().rung;
+        ctx.drawing
+            .listing
             .with(|l| l.as_ref().and_then(|l| l.steps_of(rung)))
     });
     let lines = Memo::new(move |_| {
-        ctx.listing.with(|l| {
+        ctx.drawing.listing.with(|l| {
             l.as_ref().map_or_else(Vec::new, |l| {
                 l.text
                     .lines()
@@ -33,7 +34,7 @@ pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
         <section class="listing-pane">
             <h3>{move || t().listing}</h3>
             <Show
-                when=move || ctx.listing.with(Option::is_some)
+                when=move || ctx.drawing.listing.with(Option::is_some)
                 fallback=move || view! { <p class="muted" data-testid="il-listing-none">{move || t().listing_none}</p> }
             >
                 <pre class="listing" data-testid="il-listing">
@@ -47,10 +48,10 @@ pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                                     class="line"
                                     class:step=step.is_some()
                                     class:lit=lit
-                                    class:current=move || step.is_some() && ctx.stepped.with(|s| s.map(|x| x.0) == step)
+                                    class:current=move || step.is_some() && ctx.live.stepped.with(|s| s.map(|x| x.0) == step)
                                     data-step=step.map(|s| s.to_string())
                                     on:click=move |_| {
-                                        let rung = step.and_then(|s| ctx.listing.with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s))));
+                                        let rung = step.and_then(|s| ctx.drawing.listing.with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s))));
                                         if let Some(rung) = rung {
                                             ctx.move_to(Cursor::new(rung, 0, 0));
                                             on_pick.run(());
@@ -77,11 +78,11 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
         <section class="problems-pane">
             <h3>{move || t().problems}</h3>
             <ul class="problems" data-testid="problems" role="status" aria-live="polite">
-                <Show when=move || ctx.problems.with(Vec::is_empty)>
+                <Show when=move || ctx.drawing.problems.with(Vec::is_empty)>
                     <li class="muted">{move || t().problems_none}</li>
                 </Show>
                 <For
-                    each=move || ctx.problems.get()
+                    each=move || ctx.drawing.problems.get()
                     key=|p| p.clone()
                     children=move |p| {
                         let at = Cursor::new(p.rung, p.pos.map_or(0, |p| p.row), p.pos.map_or(0, |p| p.col));

@@ -168,13 +168,40 @@ pub struct Program {
     pub apply_settings: Callback<Vec<(String, String)>, Vec<String>>,
 }
 
-/// One machine's ladder editor; `Copy`.
+/// One machine's ladder editor; `Copy`. Its state comes in focused
+/// parts, each `Copy`: the drawing, the panes, the program text, the
+/// clipboard, the work (project, sharing, saving), the test cases, the
+/// live view, the recording and "why".
 #[derive(Clone, Copy)]
 pub struct LadderCtx {
     /// The machine the ladder is for.
     pub machine: MachineId,
     /// The page (language, notices).
     pub page: Ctx,
+    /// The ladder as drawn.
+    pub drawing: Drawing,
+    /// The device entry, the message and the panes shown.
+    pub panes: Panes,
+    /// The machine's program text and the compiler's settings.
+    pub text: TextLink,
+    /// This page's clipboard.
+    pub clip: Clipboard,
+    /// The project open, a shared one shown, the autosave.
+    pub work: Work,
+    /// The project's test cases.
+    pub cases: Cases,
+    /// The machine running the drawing: colours, watch, forcing, stepping.
+    pub live: Live,
+    /// The recording as shown: time travel, breaks, chart.
+    pub travel: super::travel::TravelState,
+    /// "Why is this cell off?".
+    pub why: super::why::WhyState,
+}
+
+/// The ladder as drawn: the engine's [`Editor`] (outside the reactive
+/// graph) and the signals the grid reads.
+#[derive(Clone, Copy)]
+pub struct Drawing {
     editor: StoredValue<Editor, LocalStorage>,
     next_id: StoredValue<u64>,
     /// The rungs, in order.
@@ -195,6 +222,13 @@ pub struct LadderCtx {
     pub listing: RwSignal<Option<Listing>>,
     /// Every problem, rung by rung.
     pub problems: RwSignal<Vec<Problem>>,
+    /// The ladder's device comments.
+    pub comments: RwSignal<BTreeMap<String, String>>,
+}
+
+/// The device entry, the edit message and which panes are shown.
+#[derive(Clone, Copy)]
+pub struct Panes {
     /// The device entry, while open.
     pub entry: RwSignal<Option<EntryState>>,
     /// Why the last edit was refused.
@@ -205,17 +239,33 @@ pub struct LadderCtx {
     pub find_open: RwSignal<bool>,
     /// The projects pane is shown.
     pub projects_open: RwSignal<bool>,
-    /// The ladder's device comments.
-    pub comments: RwSignal<BTreeMap<String, String>>,
+    /// The Tests pane is shown.
+    pub tests_open: RwSignal<bool>,
+}
+
+/// The machine's program text as the editor keeps it in step.
+#[derive(Clone, Copy)]
+pub struct TextLink {
     /// The program pane and loading.
-    program: StoredValue<Option<Program>>,
+    pane: StoredValue<Option<Program>>,
     /// The text last put in the pane from the ladder (or loaded from it):
     /// while the pane still holds it, the pane follows the ladder.
     synced: StoredValue<Option<String>>,
     /// The compiler's settings (the AVR scan period).
     pub options: RwSignal<Options>,
-    /// The clipboard of this page, for when the system's is not offered.
-    clip: StoredValue<Option<String>>,
+}
+
+/// This page's clipboard, for when the system's is not offered.
+#[derive(Clone, Copy)]
+pub struct Clipboard {
+    text: StoredValue<Option<String>>,
+    /// Whether a paste event arrived since the last Ctrl+V.
+    pub pasted: StoredValue<bool>,
+}
+
+/// The work edited here: the project open, a shared one shown, saving.
+#[derive(Clone, Copy)]
+pub struct Work {
     /// A shared project is shown, unsaved (docs/editor.md, "Share links").
     pub shared: RwSignal<bool>,
     /// The shared project's settings, applied when it is kept; and
@@ -223,30 +273,41 @@ pub struct LadderCtx {
     shared_with: StoredValue<SharedWith>,
     /// The project open here (`None`: the machine's own ladder).
     pub project: RwSignal<Option<u64>>,
-    /// The project's test cases (docs/tests.md).
+    /// Where the project is saved, and what another tab did there.
+    pub saving: super::autosave::Autosave,
+}
+
+/// The project's test cases (docs/tests.md).
+#[derive(Clone, Copy)]
+pub struct Cases {
+    /// The cases.
     pub tests: RwSignal<Vec<TestCase>>,
     /// The tests are an exercise: a link opens with them shown.
     pub exercise: RwSignal<bool>,
-    /// The Tests pane is shown.
-    pub tests_open: RwSignal<bool>,
     /// The last run's result of each case (by index), when run.
     pub results: RwSignal<Vec<Option<CaseResult>>>,
     /// Inputs being recorded into a new case, while recording.
     recorder: StoredValue<Option<super::cases::Recorder>>,
+}
+
+/// The machine as the ladder shows it running: the drawing it runs, the
+/// device handles, the watch table, forcing and stepping.
+#[derive(Clone, Copy)]
+pub struct Live {
+    /// The ladder the machine runs, compiled with its source map, from
+    /// Run until the next edit: the colours come from it.
+    ladder: StoredValue<Option<engine::ladder::live::LiveLadder>>,
     /// Device handles on the machine, by name (cleared when the ladder or
     /// the program changes).
     handles: StoredValue<std::collections::HashMap<String, Option<engine::plc::Device>>>,
-    /// Bumped when device handles are forgotten or a rung's drawing
-    /// changes: rungs resolve their probes again.
+    /// Bumped when device handles are forgotten: rungs resolve their
+    /// probes again.
     probe_generation: StoredValue<u64>,
     /// The watch table's devices and what they show.
     pub watch: RwSignal<Vec<String>>,
     pub watch_values: RwSignal<Vec<String>>,
     /// The step the last single step ran, and its rung.
     pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
-    /// The ladder the machine runs, compiled with its source map, from
-    /// Run until the next edit: the colours come from it.
-    live: StoredValue<Option<engine::ladder::live::LiveLadder>>,
     /// The element the last single instruction came from.
     pub stepped_cell: RwSignal<Option<Cursor>>,
     /// Run was pressed: the machine runs the drawing (each edit is
@@ -261,10 +322,6 @@ pub struct LadderCtx {
     pub running: RwSignal<bool>,
     /// Inputs held from the ladder at a value until released.
     pub forced: RwSignal<Vec<(String, bool)>>,
-    /// The recording as shown: time travel, breaks, chart, "why".
-    pub travel: super::travel::TravelState,
-    /// Where the project is saved, and what another tab did there.
-    pub saving: super::autosave::Autosave,
     /// The machine the ladder runs on (attached with its workspace).
     pub(super) link:
         StoredValue<Option<std::rc::Rc<dyn super::machine::MachineLink>>, LocalStorage>,
@@ -314,49 +371,65 @@ impl LadderCtx {
         let ctx = LadderCtx {
             machine,
             page,
-            editor: StoredValue::new_local(Editor::new(ladder.clone().unwrap_or_default())),
-            next_id: StoredValue::new(0),
-            rungs: RwSignal::new(Vec::new()),
-            cursor: RwSignal::new(Cursor::default()),
-            anchor: RwSignal::new(None),
-            out_col: RwSignal::new(COLUMNS - 1),
-            can_undo: RwSignal::new(false),
-            can_redo: RwSignal::new(false),
-            revision: RwSignal::new(0),
-            listing: RwSignal::new(None),
-            problems: RwSignal::new(Vec::new()),
-            entry: RwSignal::new(None),
-            message: RwSignal::new(None),
-            help: RwSignal::new(false),
-            find_open: RwSignal::new(false),
-            projects_open: RwSignal::new(false),
-            comments: RwSignal::new(BTreeMap::new()),
-            program: StoredValue::new(None),
-            synced: StoredValue::new(None),
-            options: RwSignal::new(Options::default()),
-            clip: StoredValue::new(None),
-            shared: RwSignal::new(false),
-            shared_with: StoredValue::new(SharedWith::default()),
-            project: RwSignal::new(project),
-            tests: RwSignal::new(tests),
-            exercise: RwSignal::new(exercise),
-            tests_open: RwSignal::new(exercise),
-            results: RwSignal::new(Vec::new()),
-            recorder: StoredValue::new(None),
-            handles: StoredValue::new(std::collections::HashMap::new()),
-            probe_generation: StoredValue::new(0),
-            watch: RwSignal::new(Vec::new()),
-            watch_values: RwSignal::new(Vec::new()),
-            stepped: RwSignal::new(None),
-            live: StoredValue::new(None),
-            stepped_cell: RwSignal::new(None),
-            monitor: RwSignal::new(false),
-            unwritten: RwSignal::new(false),
-            running: RwSignal::new(false),
-            forced: RwSignal::new(Vec::new()),
+            drawing: Drawing {
+                editor: StoredValue::new_local(Editor::new(ladder.clone().unwrap_or_default())),
+                next_id: StoredValue::new(0),
+                rungs: RwSignal::new(Vec::new()),
+                cursor: RwSignal::new(Cursor::default()),
+                anchor: RwSignal::new(None),
+                out_col: RwSignal::new(COLUMNS - 1),
+                can_undo: RwSignal::new(false),
+                can_redo: RwSignal::new(false),
+                revision: RwSignal::new(0),
+                listing: RwSignal::new(None),
+                problems: RwSignal::new(Vec::new()),
+                comments: RwSignal::new(BTreeMap::new()),
+            },
+            panes: Panes {
+                entry: RwSignal::new(None),
+                message: RwSignal::new(None),
+                help: RwSignal::new(false),
+                find_open: RwSignal::new(false),
+                projects_open: RwSignal::new(false),
+                tests_open: RwSignal::new(exercise),
+            },
+            text: TextLink {
+                pane: StoredValue::new(None),
+                synced: StoredValue::new(None),
+                options: RwSignal::new(Options::default()),
+            },
+            clip: Clipboard {
+                text: StoredValue::new(None),
+                pasted: StoredValue::new(true),
+            },
+            work: Work {
+                shared: RwSignal::new(false),
+                shared_with: StoredValue::new(SharedWith::default()),
+                project: RwSignal::new(project),
+                saving: super::autosave::Autosave::new(&store::slot(machine, project)),
+            },
+            cases: Cases {
+                tests: RwSignal::new(tests),
+                exercise: RwSignal::new(exercise),
+                results: RwSignal::new(Vec::new()),
+                recorder: StoredValue::new(None),
+            },
+            live: Live {
+                ladder: StoredValue::new(None),
+                handles: StoredValue::new(std::collections::HashMap::new()),
+                probe_generation: StoredValue::new(0),
+                watch: RwSignal::new(Vec::new()),
+                watch_values: RwSignal::new(Vec::new()),
+                stepped: RwSignal::new(None),
+                stepped_cell: RwSignal::new(None),
+                monitor: RwSignal::new(false),
+                unwritten: RwSignal::new(false),
+                running: RwSignal::new(false),
+                forced: RwSignal::new(Vec::new()),
+                link: StoredValue::new_local(None),
+            },
             travel: super::travel::TravelState::new(),
-            saving: super::autosave::Autosave::new(&store::slot(machine, project)),
-            link: StoredValue::new_local(None),
+            why: super::why::WhyState::new(),
         };
         ctx.refresh(false);
         ctx
@@ -364,7 +437,8 @@ impl LadderCtx {
 
     /// The machine's settings as a project keeps them.
     pub fn settings(&self) -> Vec<(String, String)> {
-        self.program
+        self.text
+            .pane
             .get_value()
             .map(|p| p.settings.run(()))
             .unwrap_or_default()
@@ -372,23 +446,23 @@ impl LadderCtx {
 
     /// Shows a shared project's ladder, unsaved, until it is kept or left.
     pub fn show_shared(&self, project: engine::ladder::Project) {
-        if self.shared.get_untracked() {
+        if self.work.shared.get_untracked() {
             self.leave_shared();
         }
-        self.shared.set(true);
-        let own_tests = self.tests.get_untracked();
-        let own_exercise = self.exercise.get_untracked();
-        self.tests.set(project.tests);
-        self.exercise.set(project.exercise);
-        self.results.set(Vec::new());
+        self.work.shared.set(true);
+        let own_tests = self.cases.tests.get_untracked();
+        let own_exercise = self.cases.exercise.get_untracked();
+        self.cases.tests.set(project.tests);
+        self.cases.exercise.set(project.exercise);
+        self.cases.results.set(Vec::new());
         if project.exercise {
-            self.tests_open.set(true);
+            self.panes.tests_open.set(true);
         }
         let replaced = self.apply(Edit::Replace {
             ladder: project.ladder,
         });
-        self.message.set(None);
-        self.shared_with.set_value(SharedWith {
+        self.panes.message.set(None);
+        self.work.shared_with.set_value(SharedWith {
             settings: project.settings.into_iter().collect(),
             replaced,
             own_tests,
@@ -400,7 +474,7 @@ impl LadderCtx {
     /// saved; the ladder saved before is set aside under a key of its own
     /// (named in the notice) and is one undo away.
     pub fn keep_shared(&self, projects: Option<super::projects::Projects>) {
-        if !self.shared.get_untracked() {
+        if !self.work.shared.get_untracked() {
             return;
         }
         let texts = super::texts::texts(self.page.lang.get_untracked());
@@ -421,10 +495,11 @@ impl LadderCtx {
             }
             None => store::set_aside(self.machine),
         };
-        self.shared.set(false);
-        let settings = self.shared_with.with_value(|w| w.settings.clone());
+        self.work.shared.set(false);
+        let settings = self.work.shared_with.with_value(|w| w.settings.clone());
         let refused = self
-            .program
+            .text
+            .pane
             .get_value()
             .map(|p| p.apply_settings.run(settings))
             .unwrap_or_default();
@@ -445,9 +520,9 @@ impl LadderCtx {
     /// undo away; it stays saved where it was).
     pub fn open_project(&self, id: Option<u64>, project: engine::ladder::Project) {
         self.set_project(id);
-        self.tests.set(project.tests);
-        self.exercise.set(project.exercise);
-        self.results.set(Vec::new());
+        self.cases.tests.set(project.tests);
+        self.cases.exercise.set(project.exercise);
+        self.cases.results.set(Vec::new());
         if self.ladder() != project.ladder {
             self.apply(Edit::Replace {
                 ladder: project.ladder,
@@ -459,32 +534,35 @@ impl LadderCtx {
 
     /// "Back to my work": the ladder as it was before the link opened.
     pub fn leave_shared(&self) {
-        if !self.shared.get_untracked() {
+        if !self.work.shared.get_untracked() {
             return;
         }
-        let with = self.shared_with.get_value();
-        self.tests.set(with.own_tests);
-        self.exercise.set(with.own_exercise);
-        self.results.set(Vec::new());
+        let with = self.work.shared_with.get_value();
+        self.cases.tests.set(with.own_tests);
+        self.cases.exercise.set(with.own_exercise);
+        self.cases.results.set(Vec::new());
         if with.replaced {
-            self.editor.update_value(|e| {
+            self.drawing.editor.update_value(|e| {
                 e.undo();
             });
         }
         // An edit as far as the machine is concerned (written at once
         // while it runs the drawing); not saved, as the link was not.
         self.refresh(with.replaced);
-        self.shared.set(false);
+        self.work.shared.set(false);
         // Another tab may have saved while the link was shown.
-        self.on_storage(&store::slot(self.machine, self.project.get_untracked()));
+        self.on_storage(&store::slot(
+            self.machine,
+            self.work.project.get_untracked(),
+        ));
     }
 
     /// Project `id` (or the machine's own ladder) is edited here from now
     /// on: remembered for the next visit, saved in its slot.
     fn set_project(&self, id: Option<u64>) {
-        self.project.set(id);
+        self.work.project.set(id);
         store::remember_open(self.machine, id);
-        self.saving.switch_to(&store::slot(self.machine, id));
+        self.work.saving.switch_to(&store::slot(self.machine, id));
     }
 
     /// A `storage` event for `key`: another tab saved. This tab shows its
@@ -492,10 +570,10 @@ impl LadderCtx {
     /// a conflict is shown otherwise. Nothing while a shared ladder is
     /// shown (its own is compared when it is left).
     pub fn on_storage(&self, key: &str) {
-        if self.shared.get_untracked() {
+        if self.work.shared.get_untracked() {
             return;
         }
-        if let Some(json) = self.saving.elsewhere(key) {
+        if let Some(json) = self.work.saving.elsewhere(key) {
             self.show_saved(&json);
         }
     }
@@ -508,10 +586,11 @@ impl LadderCtx {
         if project.machine != self.machine {
             return;
         }
-        self.tests.set(project.tests);
-        self.exercise.set(project.exercise);
-        self.results.set(Vec::new());
+        self.cases.tests.set(project.tests);
+        self.cases.exercise.set(project.exercise);
+        self.cases.results.set(Vec::new());
         let replaced = self
+            .drawing
             .editor
             .try_update_value(|e| {
                 e.apply(Edit::Replace {
@@ -527,7 +606,7 @@ impl LadderCtx {
     /// "Load theirs": the other tab's work replaces this tab's (one undo
     /// brings it back).
     pub fn load_theirs(&self) {
-        if let Some(json) = self.saving.theirs() {
+        if let Some(json) = self.work.saving.theirs() {
             self.show_saved(&json);
         }
     }
@@ -536,7 +615,7 @@ impl LadderCtx {
     /// opened here; the other tab's work stays where it was saved.
     pub fn keep_mine(&self, projects: super::projects::Projects) {
         let texts = super::texts::texts(self.page.lang.get_untracked());
-        let from = self.project.get_untracked().and_then(|id| {
+        let from = self.work.project.get_untracked().and_then(|id| {
             projects.index.with_untracked(|i| {
                 i.projects
                     .iter()
@@ -550,7 +629,7 @@ impl LadderCtx {
             return;
         };
         self.set_project(Some(id));
-        self.saving.conflict.set(false);
+        self.work.saving.conflict.set(false);
         self.save();
         self.page
             .notice
@@ -561,22 +640,28 @@ impl LadderCtx {
     /// it holds the ladder's listing or nothing; a fresh editor with no
     /// saved ladder starts from the pane's program when it decompiles.
     pub fn connect(&self, program: Program) {
-        self.program.set_value(Some(program));
+        self.text.pane.set_value(Some(program));
         let text = program.text.get_untracked();
-        let empty = self.editor.with_value(|e| e.ladder().rungs.is_empty());
+        let empty = self
+            .drawing
+            .editor
+            .with_value(|e| e.ladder().rungs.is_empty());
         if empty && !text.trim().is_empty() {
-            let scan = self.options.get_untracked().avr_scan_ms;
+            let scan = self.text.options.get_untracked().avr_scan_ms;
             if let Ok(ladder) = engine::ladder::decompile::decompile_text(self.machine, &text, scan)
             {
-                self.editor.update_value(|e| *e = Editor::new(ladder));
+                self.drawing
+                    .editor
+                    .update_value(|e| *e = Editor::new(ladder));
                 self.refresh(false);
             }
         }
         let listing = self
+            .drawing
             .listing
             .with_untracked(|l| l.as_ref().map(|l| l.text.clone()));
         if text.trim().is_empty() || listing.as_deref() == Some(text.as_str()) || empty {
-            self.synced.set_value(Some(text));
+            self.text.synced.set_value(Some(text));
         }
     }
 
@@ -587,23 +672,24 @@ impl LadderCtx {
 
     /// The ladder as it stands (a copy).
     pub fn ladder(&self) -> Ladder {
-        self.editor.with_value(|e| e.ladder().clone())
+        self.drawing.editor.with_value(|e| e.ladder().clone())
     }
 
     /// Reads the editor without copying the ladder.
     pub fn with_editor<R>(&self, f: impl FnOnce(&Editor) -> R) -> R {
-        self.editor.with_value(f)
+        self.drawing.editor.with_value(f)
     }
 
     /// Applies an edit to the editor; on success the message clears and
     /// the view is refreshed. The one place edits go in.
     fn try_apply(&self, edit: Edit) -> Result<(), engine::ladder::edit::EditError> {
         let result = self
+            .drawing
             .editor
             .try_update_value(|e| e.apply(edit))
             .unwrap_or(Ok(()));
         if result.is_ok() {
-            self.message.set(None);
+            self.panes.message.set(None);
             self.refresh(true);
         }
         result
@@ -613,11 +699,11 @@ impl LadderCtx {
     pub fn apply(&self, edit: Edit) -> bool {
         match self.try_apply(edit) {
             Ok(()) => {
-                self.anchor.set(None);
+                self.drawing.anchor.set(None);
                 true
             }
             Err(e) => {
-                self.message.set(Some(e.to_string()));
+                self.panes.message.set(Some(e.to_string()));
                 false
             }
         }
@@ -625,40 +711,56 @@ impl LadderCtx {
 
     /// Undoes the last edit.
     pub fn undo(&self) {
-        if self.editor.try_update_value(Editor::undo).unwrap_or(false) {
-            self.anchor.set(None);
+        if self
+            .drawing
+            .editor
+            .try_update_value(Editor::undo)
+            .unwrap_or(false)
+        {
+            self.drawing.anchor.set(None);
             self.refresh(true);
         }
     }
 
     /// Redoes the last undone edit.
     pub fn redo(&self) {
-        if self.editor.try_update_value(Editor::redo).unwrap_or(false) {
-            self.anchor.set(None);
+        if self
+            .drawing
+            .editor
+            .try_update_value(Editor::redo)
+            .unwrap_or(false)
+        {
+            self.drawing.anchor.set(None);
             self.refresh(true);
         }
     }
 
     /// Puts the cursor on a cell (a click, a problem, a find result).
     pub fn move_to(&self, to: Cursor) {
-        self.editor.update_value(|e| e.move_to(to));
-        self.anchor.set(None);
-        self.cursor.set(self.editor.with_value(Editor::cursor));
+        self.drawing.editor.update_value(|e| e.move_to(to));
+        self.drawing.anchor.set(None);
+        self.drawing
+            .cursor
+            .set(self.drawing.editor.with_value(Editor::cursor));
     }
 
     /// Grows the selection to `to` (Shift+click).
     pub fn extend_to(&self, to: Cursor) {
-        if self.anchor.get_untracked().is_none() {
-            self.anchor.set(Some(self.cursor.get_untracked()));
+        if self.drawing.anchor.get_untracked().is_none() {
+            self.drawing
+                .anchor
+                .set(Some(self.drawing.cursor.get_untracked()));
         }
-        self.editor.update_value(|e| e.move_to(to));
-        self.cursor.set(self.editor.with_value(Editor::cursor));
+        self.drawing.editor.update_value(|e| e.move_to(to));
+        self.drawing
+            .cursor
+            .set(self.drawing.editor.with_value(Editor::cursor));
     }
 
     /// The selection's corners, when there is one.
     pub fn selection(&self) -> Option<(Cursor, Cursor)> {
-        let anchor = self.anchor.get_untracked()?;
-        Some((anchor, self.cursor.get_untracked()))
+        let anchor = self.drawing.anchor.get_untracked()?;
+        Some((anchor, self.drawing.cursor.get_untracked()))
     }
 
     /// A key on the ladder; false when the ladder leaves it alone.
@@ -674,10 +776,10 @@ impl LadderCtx {
 
     /// Does what an action asks.
     pub fn dispatch(&self, action: Action) {
-        let at = self.cursor.get_untracked();
+        let at = self.drawing.cursor.get_untracked();
         match action {
             Action::Move(mv, extend) => self.step(mv, extend),
-            Action::Why => self.travel.why_request.update(|n| *n += 1),
+            Action::Why => self.why.request.update(|n| *n += 1),
             Action::Entry {
                 kind,
                 branch,
@@ -685,6 +787,7 @@ impl LadderCtx {
             } => self.open_entry(kind, branch, prefill.to_string()),
             Action::EditCell => {
                 let (kind, text) = self
+                    .drawing
                     .editor
                     .with_value(|e| e.ladder().rungs.get(at.rung)?.get(at.pos()).map(entry_for))
                     .unwrap_or((EntryKind::Open, String::new()));
@@ -742,42 +845,43 @@ impl LadderCtx {
                 self.copy_text();
             }
             Action::Cut | Action::Paste => {}
-            Action::Find => self.find_open.set(true),
-            Action::Help => self.help.update(|h| *h = !*h),
+            Action::Find => self.panes.find_open.set(true),
+            Action::Help => self.panes.help.update(|h| *h = !*h),
             Action::Cancel => {
-                self.anchor.set(None);
-                self.help.set(false);
-                self.message.set(None);
+                self.drawing.anchor.set(None);
+                self.panes.help.set(false);
+                self.panes.message.set(None);
             }
         }
     }
 
     fn rung_count(&self) -> usize {
-        self.editor.with_value(|e| e.ladder().rungs.len())
+        self.drawing.editor.with_value(|e| e.ladder().rungs.len())
     }
 
     fn step(&self, mv: Move, extend: bool) {
-        let from = self.cursor.get_untracked();
+        let from = self.drawing.cursor.get_untracked();
         let to = self
+            .drawing
             .editor
             .with_value(|e| keys::moved(e.ladder(), e.output_column(), from, mv));
         if extend {
-            if self.anchor.get_untracked().is_none() {
-                self.anchor.set(Some(from));
+            if self.drawing.anchor.get_untracked().is_none() {
+                self.drawing.anchor.set(Some(from));
             }
         } else {
-            self.anchor.set(None);
+            self.drawing.anchor.set(None);
         }
-        self.editor.update_value(|e| e.move_to(to));
-        self.cursor.set(to);
+        self.drawing.editor.update_value(|e| e.move_to(to));
+        self.drawing.cursor.set(to);
     }
 
     /// Opens the device entry at the cursor.
     pub fn open_entry(&self, kind: EntryKind, branch: bool, text: String) {
-        self.entry.set(Some(EntryState {
+        self.panes.entry.set(Some(EntryState {
             kind,
             branch,
-            at: self.cursor.get_untracked(),
+            at: self.drawing.cursor.get_untracked(),
             text,
             error: None,
         }));
@@ -786,11 +890,11 @@ impl LadderCtx {
     /// Enter in the device entry: the element goes in when the machine
     /// has it; otherwise the entry stays open with the engine's message.
     pub fn commit_entry(&self) -> bool {
-        let Some(state) = self.entry.get_untracked() else {
+        let Some(state) = self.panes.entry.get_untracked() else {
             return false;
         };
         let refuse = |message: String| {
-            self.entry.update(|e| {
+            self.panes.entry.update(|e| {
                 if let Some(e) = e {
                     e.error = Some(message);
                 }
@@ -814,7 +918,7 @@ impl LadderCtx {
         };
         match self.try_apply(edit) {
             Ok(()) => {
-                self.entry.set(None);
+                self.panes.entry.set(None);
                 true
             }
             Err(e) => refuse(e.to_string()),
@@ -824,15 +928,15 @@ impl LadderCtx {
     /// Places `element` at the cursor without the entry (the palette's
     /// wire, NOT, R_TRIG).
     pub fn place(&self, element: Element) -> bool {
-        let at = self.cursor.get_untracked();
+        let at = self.drawing.cursor.get_untracked();
         self.apply(Edit::Place { at, element })
     }
 
     /// The selection (or the cursor's cell) as clipboard text, also kept
     /// as this page's clipboard.
     pub fn copy_text(&self) -> Option<String> {
-        let at = self.cursor.get_untracked();
-        let clip = self.editor.with_value(|e| match self.selection() {
+        let at = self.drawing.cursor.get_untracked();
+        let clip = self.drawing.editor.with_value(|e| match self.selection() {
             Some((a, b)) if a.rung == b.rung => Clip::cells(e.ladder(), a, b),
             Some((a, b)) => {
                 let last = a
@@ -846,11 +950,11 @@ impl LadderCtx {
         match clip {
             Ok(clip) => {
                 let text = clip.to_text();
-                self.clip.set_value(Some(text.clone()));
+                self.clip.text.set_value(Some(text.clone()));
                 Some(text)
             }
             Err(e) => {
-                self.message.set(Some(e.to_string()));
+                self.panes.message.set(Some(e.to_string()));
                 None
             }
         }
@@ -866,24 +970,24 @@ impl LadderCtx {
     /// Pastes clipboard text at the cursor (this page's clipboard when
     /// `text` is `None`); what the machine lacks is refused, all of it.
     pub fn paste_text(&self, text: Option<String>) {
-        let Some(text) = text.or_else(|| self.clip.get_value()) else {
+        let Some(text) = text.or_else(|| self.clip.text.get_value()) else {
             return;
         };
         let clip = match Clip::from_text(&text) {
             Ok(c) => c,
             Err(e) => {
-                self.message.set(Some(e.to_string()));
+                self.panes.message.set(Some(e.to_string()));
                 return;
             }
         };
         match clip.for_machine(self.machine) {
             Ok(clip) => {
-                let at = self.cursor.get_untracked();
+                let at = self.drawing.cursor.get_untracked();
                 self.apply(Edit::Paste { at, clip });
             }
             Err(errors) => {
                 let all: Vec<String> = errors.iter().map(ToString::to_string).collect();
-                self.message.set(Some(all.join("; ")));
+                self.panes.message.set(Some(all.join("; ")));
             }
         }
     }
@@ -891,7 +995,7 @@ impl LadderCtx {
     /// The ladder of a program in the machine's text, drawn with its
     /// outputs in the output column; the engine's located error if not.
     pub fn ladder_of_text(&self, text: &str) -> Result<Ladder, String> {
-        let scan = self.options.get_untracked().avr_scan_ms;
+        let scan = self.text.options.get_untracked().avr_scan_ms;
         let ladder = engine::ladder::decompile::decompile_text(self.machine, text, scan)
             .map_err(|e| e.to_string())?;
         Ok(align_outputs(&ladder, COLUMNS - 1))
@@ -901,13 +1005,13 @@ impl LadderCtx {
     /// (one undo brings the old one back); the engine's located error
     /// otherwise, with nothing changed.
     pub fn load_text_as_ladder(&self) -> Result<(), String> {
-        let Some(program) = self.program.get_value() else {
+        let Some(program) = self.text.pane.get_value() else {
             return Err("no program pane".into());
         };
         let text = program.text.get_untracked();
         let ladder = self.ladder_of_text(&text)?;
         // The pane holds the same program: it follows the ladder again.
-        self.synced.set_value(Some(text));
+        self.text.synced.set_value(Some(text));
         if self.ladder() != ladder {
             self.apply(Edit::Replace { ladder });
         }
@@ -917,8 +1021,10 @@ impl LadderCtx {
     /// The text pane's program is the ladder's (it was opened from the
     /// same example): the pane follows the ladder from now on.
     pub fn adopt_text(&self) {
-        if let Some(program) = self.program.get_value() {
-            self.synced.set_value(Some(program.text.get_untracked()));
+        if let Some(program) = self.text.pane.get_value() {
+            self.text
+                .synced
+                .set_value(Some(program.text.get_untracked()));
         }
     }
 
@@ -933,14 +1039,14 @@ impl LadderCtx {
     /// The listing goes into the text pane and is loaded into the machine.
     /// False while the ladder does not compile.
     fn write_to_machine(&self) -> bool {
-        let Some(listing) = self.listing.get_untracked() else {
+        let Some(listing) = self.drawing.listing.get_untracked() else {
             return false;
         };
-        let Some(program) = self.program.get_value() else {
+        let Some(program) = self.text.pane.get_value() else {
             return false;
         };
         program.text.set(listing.text.clone());
-        self.synced.set_value(Some(listing.text));
+        self.text.synced.set_value(Some(listing.text));
         program.load.run(());
         self.forget_handles();
         true
@@ -959,9 +1065,9 @@ impl LadderCtx {
 
     fn refresh_as(&self, change: Change) {
         let edited = change != Change::Shown;
-        let options = self.options.get_untracked();
+        let options = self.text.options.get_untracked();
         let (listing, errors, out_col, comments, cursor, undo, redo) =
-            self.editor.with_value(|e| {
+            self.drawing.editor.with_value(|e| {
                 let (listing, errors) = match compile_listing(e.ladder(), self.machine, options) {
                     Ok(l) => (Some(l), Vec::new()),
                     Err(errors) => (None, errors),
@@ -985,76 +1091,76 @@ impl LadderCtx {
             })
             .collect();
         self.repaint(&problems, out_col, &comments, listing.as_ref());
-        self.out_col.set(out_col);
-        if self.comments.with_untracked(|c| *c != comments) {
-            self.comments.set(comments);
+        self.drawing.out_col.set(out_col);
+        if self.drawing.comments.with_untracked(|c| *c != comments) {
+            self.drawing.comments.set(comments);
         }
-        if self.cursor.get_untracked() != cursor {
-            self.cursor.set(cursor);
+        if self.drawing.cursor.get_untracked() != cursor {
+            self.drawing.cursor.set(cursor);
         }
-        self.can_undo.set(undo);
-        self.can_redo.set(redo);
-        if self.problems.with_untracked(|p| *p != problems) {
-            self.problems.set(problems);
+        self.drawing.can_undo.set(undo);
+        self.drawing.can_redo.set(redo);
+        if self.drawing.problems.with_untracked(|p| *p != problems) {
+            self.drawing.problems.set(problems);
         }
         // Before the drawing is written: writing takes the listing.
-        if self.listing.with_untracked(|l| *l != listing) {
-            self.listing.set(listing.clone());
+        if self.drawing.listing.with_untracked(|l| *l != listing) {
+            self.drawing.listing.set(listing.clone());
         }
         if edited {
-            self.live.set_value(None);
+            self.live.ladder.set_value(None);
             // The machine runs the drawing: written at once, so what the
             // ladder shows is what runs (docs/editor.md, "The run model").
-            let follows = self.monitor.get_untracked() || self.unwritten.get_untracked();
+            let follows = self.live.monitor.get_untracked() || self.live.unwritten.get_untracked();
             if follows {
                 let written = listing.is_some() && self.write_drawing();
-                if !written && self.monitor.get_untracked() {
-                    self.monitor.set(false);
+                if !written && self.live.monitor.get_untracked() {
+                    self.live.monitor.set(false);
                 }
-                if self.unwritten.get_untracked() == written {
-                    self.unwritten.set(!written);
+                if self.live.unwritten.get_untracked() == written {
+                    self.live.unwritten.set(!written);
                 }
             }
         }
         // A shared project is not saved until it is kept.
-        if edited && !self.shared.get_untracked() {
+        if edited && !self.work.shared.get_untracked() {
             self.follow(listing.as_ref());
             if change == Change::Edited {
                 self.save();
             }
         }
-        self.revision.update(|n| *n += 1);
+        self.drawing.revision.update(|n| *n += 1);
     }
 
     /// The project as it stands: the ladder, its cases, the exercise flag.
     pub fn project_now(&self) -> engine::ladder::Project {
         let mut project = engine::ladder::Project::new(self.machine, self.ladder());
-        project.tests = self.tests.get_untracked();
-        project.exercise = self.exercise.get_untracked();
+        project.tests = self.cases.tests.get_untracked();
+        project.exercise = self.cases.exercise.get_untracked();
         project
     }
 
     /// Autosaves the project (not while a shared one is shown).
     pub fn save(&self) {
-        if !self.shared.get_untracked() {
-            self.saving.save(&self.project_now().to_json());
+        if !self.work.shared.get_untracked() {
+            self.work.saving.save(&self.project_now().to_json());
         }
     }
 
     /// Starts recording the inputs the user changes into a new case.
     pub fn start_recording(&self, plc: &dyn engine::plc::Plc) {
         let rec = super::cases::Recorder::new(&self.ladder(), plc);
-        self.recorder.set_value(Some(rec));
+        self.cases.recorder.set_value(Some(rec));
     }
 
     /// Whether inputs are being recorded.
     pub fn recording(&self) -> bool {
-        self.recorder.with_value(Option::is_some)
+        self.cases.recorder.with_value(Option::is_some)
     }
 
     /// Each frame while recording: notes the inputs that changed.
     pub fn observe(&self, plc: &dyn engine::plc::Plc) {
-        self.recorder.update_value(|r| {
+        self.cases.recorder.update_value(|r| {
             if let Some(r) = r {
                 r.observe(plc);
             }
@@ -1064,24 +1170,24 @@ impl LadderCtx {
     /// Stops recording; the timeline becomes a new case, with what the
     /// outputs show now as its expectations.
     pub fn stop_recording(&self, plc: &dyn engine::plc::Plc) {
-        let Some(rec) = self.recorder.get_value() else {
+        let Some(rec) = self.cases.recorder.get_value() else {
             return;
         };
-        self.recorder.set_value(None);
-        let n = self.tests.with_untracked(Vec::len) + 1;
+        self.cases.recorder.set_value(None);
+        let n = self.cases.tests.with_untracked(Vec::len) + 1;
         let case = rec.finish(plc, &format!("recorded {n}"));
-        self.tests.update(|t| t.push(case));
-        self.results.update(|r| r.push(None));
+        self.cases.tests.update(|t| t.push(case));
+        self.cases.results.update(|r| r.push(None));
         self.save();
     }
 
     /// The device `name` on `plc`, resolved once.
     fn handle(&self, plc: &dyn engine::plc::Plc, name: &str) -> Option<engine::plc::Device> {
-        if let Some(h) = self.handles.with_value(|m| m.get(name).copied()) {
+        if let Some(h) = self.live.handles.with_value(|m| m.get(name).copied()) {
             return h;
         }
         let h = plc.device(name).ok();
-        self.handles.update_value(|m| {
+        self.live.handles.update_value(|m| {
             m.insert(name.to_string(), h);
         });
         h
@@ -1091,14 +1197,14 @@ impl LadderCtx {
     /// colours are read against; false (with the problems shown) when it
     /// does not compile.
     fn start_live(&self) -> bool {
-        let options = self.options.get_untracked();
-        let live = self.editor.with_value(|e| {
+        let options = self.text.options.get_untracked();
+        let live = self.drawing.editor.with_value(|e| {
             engine::ladder::live::LiveLadder::new(e.ladder(), self.machine, options)
         });
         match live {
             Ok(l) => {
-                self.live.set_value(Some(l));
-                self.monitor.set(true);
+                self.live.ladder.set_value(Some(l));
+                self.live.monitor.set(true);
                 true
             }
             Err(_) => false,
@@ -1110,7 +1216,7 @@ impl LadderCtx {
         &self,
         f: impl FnOnce(Option<&engine::ladder::live::LiveLadder>) -> R,
     ) -> R {
-        self.live.with_value(|l| f(l.as_ref()))
+        self.live.ladder.with_value(|l| f(l.as_ref()))
     }
 
     /// Each frame: every contact's and coil's device state as the
@@ -1122,12 +1228,12 @@ impl LadderCtx {
         // A drawing that cannot be written shows nothing live: the states
         // would be another program's.
         let in_run = plc.running();
-        if self.running.get_untracked() != in_run {
-            self.running.set(in_run);
+        if self.live.running.get_untracked() != in_run {
+            self.live.running.set(in_run);
         }
-        let running = plc.scans() > 0 && !self.unwritten.get_untracked();
+        let running = plc.scans() > 0 && !self.live.unwritten.get_untracked();
         let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
-            Some(trace) => self.live.with_value(|l| {
+            Some(trace) => self.live.ladder.with_value(|l| {
                 l.as_ref().map_or_else(Vec::new, |l| {
                     l.power(trace)
                         .into_iter()
@@ -1137,7 +1243,7 @@ impl LadderCtx {
             }),
             None => Vec::new(),
         };
-        let generation = self.probe_generation.get_value();
+        let generation = self.live.probe_generation.get_value();
         let resolve = |c: &super::model::CellData| {
             let look = c.kind.look();
             if c.device.is_empty() {
@@ -1155,7 +1261,7 @@ impl LadderCtx {
                     .flatten(),
             }
         };
-        for view in self.rungs.get_untracked() {
+        for view in self.drawing.rungs.get_untracked() {
             let number = view.number.get_untracked();
             match powers.iter().find(|(i, _)| *i == number) {
                 Some((_, p)) => view.data.with_untracked(|d| {
@@ -1183,7 +1289,7 @@ impl LadderCtx {
                 );
             });
         }
-        let values: Vec<String> = self.watch.with_untracked(|w| {
+        let values: Vec<String> = self.live.watch.with_untracked(|w| {
             w.iter()
                 .map(|name| {
                     let value = self.handle(plc, name).map(|h| plc.read(h));
@@ -1201,8 +1307,8 @@ impl LadderCtx {
                 })
                 .collect()
         });
-        if self.watch_values.with_untracked(|old| *old != values) {
-            self.watch_values.set(values);
+        if self.live.watch_values.with_untracked(|old| *old != values) {
+            self.live.watch_values.set(values);
         }
     }
 
@@ -1211,9 +1317,10 @@ impl LadderCtx {
     pub fn show_pulses(&self, history: &engine::plc::TraceHistory) {
         let pulses = self
             .live
+            .ladder
             .with_value(|l| l.as_ref().map(|l| l.pulses(history)));
         let pulses = pulses.unwrap_or_default();
-        for view in self.rungs.get_untracked() {
+        for view in self.drawing.rungs.get_untracked() {
             let number = view.number.get_untracked();
             match pulses.iter().find(|(i, _)| *i == number) {
                 Some((_, found)) if !found.is_empty() => view.data.with_untracked(|d| {
@@ -1233,7 +1340,7 @@ impl LadderCtx {
 
     /// The element step `step` reads or computes, by the source map.
     pub fn cell_of_step(&self, step: usize) -> Option<Cursor> {
-        self.listing.with_untracked(|l| {
+        self.drawing.listing.with_untracked(|l| {
             let l = l.as_ref()?;
             let s = l
                 .sources
@@ -1245,7 +1352,7 @@ impl LadderCtx {
 
     /// The set value the ladder gives timer or counter `device`, if any.
     fn preset_of(&self, device: &str) -> Option<u16> {
-        self.editor.with_value(|e| {
+        self.drawing.editor.with_value(|e| {
             e.ladder()
                 .rungs
                 .iter()
@@ -1264,22 +1371,25 @@ impl LadderCtx {
 
     /// Forgets resolved device handles (a new program was loaded).
     pub fn forget_handles(&self) {
-        self.handles.update_value(std::collections::HashMap::clear);
-        self.probe_generation.update_value(|g| *g += 1);
+        self.live
+            .handles
+            .update_value(std::collections::HashMap::clear);
+        self.live.probe_generation.update_value(|g| *g += 1);
     }
 
     /// The text pane takes the new listing while it still holds the last.
     fn follow(&self, listing: Option<&Listing>) {
-        let (Some(program), Some(listing)) = (self.program.get_value(), listing) else {
+        let (Some(program), Some(listing)) = (self.text.pane.get_value(), listing) else {
             return;
         };
         let text = program.text.get_untracked();
         let follows = self
+            .text
             .synced
             .with_value(|s| s.as_deref() == Some(text.as_str()));
         if follows && text != listing.text {
             program.text.set(listing.text.clone());
-            self.synced.set_value(Some(listing.text.clone()));
+            self.text.synced.set_value(Some(listing.text.clone()));
             program.save.run(());
         }
     }
@@ -1293,7 +1403,7 @@ impl LadderCtx {
         comments: &BTreeMap<String, String>,
         listing: Option<&Listing>,
     ) {
-        let data: Vec<RungData> = self.editor.with_value(|e| {
+        let data: Vec<RungData> = self.drawing.editor.with_value(|e| {
             e.ladder()
                 .rungs
                 .iter()
@@ -1308,7 +1418,7 @@ impl LadderCtx {
                 })
                 .collect()
         });
-        let old = self.rungs.get_untracked();
+        let old = self.drawing.rungs.get_untracked();
         let plan = {
             let guards: Vec<_> = old.iter().map(|v| v.data.read_untracked()).collect();
             let refs: Vec<&RungData> = guards.iter().map(|g| &**g).collect();
@@ -1329,8 +1439,8 @@ impl LadderCtx {
                     v
                 }
                 None => {
-                    let id = self.next_id.get_value();
-                    self.next_id.set_value(id + 1);
+                    let id = self.drawing.next_id.get_value();
+                    self.drawing.next_id.set_value(id + 1);
                     RungView {
                         id,
                         number: ArcRwSignal::new(number),
@@ -1352,7 +1462,7 @@ impl LadderCtx {
         let same_order =
             views.len() == old.len() && views.iter().zip(&old).all(|(a, b)| a.id == b.id);
         if !same_order {
-            self.rungs.set(views);
+            self.drawing.rungs.set(views);
         }
     }
 }

@@ -28,12 +28,6 @@ pub struct TravelState {
     pub chart_tick: RwSignal<u64>,
     /// Wall time of the last chart redraw while running (ms).
     pub chart_drawn_ms: StoredValue<f64>,
-    /// The last "why" explanation shown, and whether the machine has
-    /// moved on from the scan it explains (running).
-    pub why: RwSignal<Option<super::why::WhyView>>,
-    pub why_stale: RwSignal<bool>,
-    /// Bumped by the W key: explain the cell under the cursor.
-    pub why_request: RwSignal<u64>,
 }
 
 impl TravelState {
@@ -48,9 +42,6 @@ impl TravelState {
             break_error: RwSignal::new(None),
             chart_tick: RwSignal::new(0),
             chart_drawn_ms: StoredValue::new(f64::NEG_INFINITY),
-            why: RwSignal::new(None),
-            why_stale: RwSignal::new(false),
-            why_request: RwSignal::new(0),
         }
     }
 }

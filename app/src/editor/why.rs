@@ -64,10 +64,38 @@ impl WhyView {
     }
 }
 
+/// What the editor shows of "why"; `Copy`.
+#[derive(Clone, Copy)]
+pub struct WhyState {
+    /// The last explanation shown.
+    pub shown: RwSignal<Option<WhyView>>,
+    /// The machine has moved on from the scan it explains (running).
+    pub stale: RwSignal<bool>,
+    /// Bumped by the W key: explain the cell under the cursor.
+    pub request: RwSignal<u64>,
+}
+
+impl WhyState {
+    /// Nothing explained yet.
+    pub fn new() -> WhyState {
+        WhyState {
+            shown: RwSignal::new(None),
+            stale: RwSignal::new(false),
+            request: RwSignal::new(0),
+        }
+    }
+}
+
+impl Default for WhyState {
+    fn default() -> Self {
+        WhyState::new()
+    }
+}
+
 /// Explains the cell under the cursor in the scan shown; `None` when the
 /// ladder is not running as drawn or the cell decides nothing.
 pub fn explain(ctx: LadderCtx) -> Option<WhyView> {
-    explain_at(ctx, ctx.cursor.get_untracked())
+    explain_at(ctx, ctx.drawing.cursor.get_untracked())
 }
 
 /// Keeps the explanation shown with the scan it explains: paused, it is
@@ -75,7 +103,7 @@ pub fn explain(ctx: LadderCtx) -> Option<WhyView> {
 /// running, it is marked stale (`why_stale`) once the machine has moved
 /// on, until asked again.
 pub fn follow(ctx: LadderCtx) {
-    let Some((at_mark, cell)) = ctx.travel.why.with_untracked(|w| {
+    let Some((at_mark, cell)) = ctx.why.shown.with_untracked(|w| {
         w.as_ref()
             .map(|w| (w.at_mark, Cursor::new(w.rung, w.target.row, w.target.col)))
     }) else {
@@ -88,10 +116,10 @@ pub fn follow(ctx: LadderCtx) {
         return;
     }
     if ctx.page.paused.get_untracked() {
-        ctx.travel.why.set(explain_at(ctx, cell));
-        ctx.travel.why_stale.set(false);
-    } else if !ctx.travel.why_stale.get_untracked() {
-        ctx.travel.why_stale.set(true);
+        ctx.why.shown.set(explain_at(ctx, cell));
+        ctx.why.stale.set(false);
+    } else if !ctx.why.stale.get_untracked() {
+        ctx.why.stale.set(true);
     }
 }
 
@@ -183,23 +211,23 @@ fn outputs(ladder: &engine::ladder::Ladder, device: &str) -> Vec<(usize, Pos)> {
 pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
     let ask = move || {
-        ctx.travel.why.set(explain(ctx));
-        ctx.travel.why_stale.set(false);
+        ctx.why.shown.set(explain(ctx));
+        ctx.why.stale.set(false);
     };
     // The W key asks through the editor's action, seen here.
     Effect::new(move |first: Option<()>| {
-        ctx.travel.why_request.track();
+        ctx.why.request.track();
         if first.is_some() {
             ask();
         }
     });
     view! {
         <section class="why-pane" data-testid="why-panel"
-            data-stale=move || if ctx.travel.why_stale.get() { "1" } else { "0" }>
+            data-stale=move || if ctx.why.stale.get() { "1" } else { "0" }>
             <h3>
                 <button type="button" data-testid="why" on:click=move |_| ask()>{move || t().why}</button>
             </h3>
-            {move || match ctx.travel.why.get() {
+            {move || match ctx.why.shown.get() {
                 None => view! { <p class="why-none">{t().why_none}</p> }.into_any(),
                 Some(w) => {
                     let head = format!(
@@ -233,7 +261,7 @@ fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
     view! {
         <li data-testid="why-cause" data-device=device>
             <button type="button" class="why-cell"
-                on:click=move |_| ctx.move_to(Cursor::new(ctx.travel.why.get_untracked().map_or(0, |w| w.rung), pos.row, pos.col))>
+                on:click=move |_| ctx.move_to(Cursor::new(ctx.why.shown.get_untracked().map_or(0, |w| w.rung), pos.row, pos.col))>
                 {c.what.clone()}
             </button>
             {state}
