@@ -1,0 +1,240 @@
+//! The running machine on the ladder: live colours through each cell's
+//! probes, pulses, the watch table, and recording inputs into a case.
+
+use super::*;
+
+impl LadderCtx {
+    /// Starts recording the inputs the user changes into a new case.
+    pub fn start_recording(&self, plc: &dyn engine::plc::Plc) {
+        let rec = crate::editor::cases::Recorder::new(&self.ladder(), plc);
+        self.cases.recorder.set_value(Some(rec));
+    }
+
+    /// Whether inputs are being recorded.
+    pub fn recording(&self) -> bool {
+        self.cases.recorder.with_value(Option::is_some)
+    }
+
+    /// Each frame while recording: notes the inputs that changed.
+    pub fn observe(&self, plc: &dyn engine::plc::Plc) {
+        self.cases.recorder.update_value(|r| {
+            if let Some(r) = r {
+                r.observe(plc);
+            }
+        });
+    }
+
+    /// Stops recording; the timeline becomes a new case, with what the
+    /// outputs show now as its expectations.
+    pub fn stop_recording(&self, plc: &dyn engine::plc::Plc) {
+        let Some(rec) = self.cases.recorder.get_value() else {
+            return;
+        };
+        self.cases.recorder.set_value(None);
+        let n = self.cases.tests.with_untracked(Vec::len) + 1;
+        let case = rec.finish(plc, &format!("recorded {n}"));
+        self.cases.tests.update(|t| t.push(case));
+        self.cases.results.update(|r| r.push(None));
+        self.save();
+    }
+
+    /// The device `name` on `plc`, resolved once.
+    pub(super) fn handle(
+        &self,
+        plc: &dyn engine::plc::Plc,
+        name: &str,
+    ) -> Option<engine::plc::Device> {
+        if let Some(h) = self.live.handles.with_value(|m| m.get(name).copied()) {
+            return h;
+        }
+        let h = plc.device(name).ok();
+        self.live.handles.update_value(|m| {
+            m.insert(name.to_string(), h);
+        });
+        h
+    }
+
+    /// Run: the ladder compiled with its source map becomes what the
+    /// colours are read against; false (with the problems shown) when it
+    /// does not compile.
+    pub(super) fn start_live(&self) -> bool {
+        let options = self.text.options.get_untracked();
+        let live = self.drawing.editor.with_value(|e| {
+            engine::ladder::live::LiveLadder::new(e.ladder(), self.machine, options)
+        });
+        match live {
+            Ok(l) => {
+                self.live.ladder.set_value(Some(l));
+                self.live.monitor.set(true);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
+    /// Runs `f` with the ladder the machine runs (compiled at Run), if any.
+    pub fn with_live<R>(
+        &self,
+        f: impl FnOnce(Option<&engine::ladder::live::LiveLadder>) -> R,
+    ) -> R {
+        self.live.ladder.with_value(|l| f(l.as_ref()))
+    }
+
+    /// Each frame: every contact's and coil's device state as the
+    /// machine's last scan left it (`data-on`), every cell's power in
+    /// that scan as the machine computed it (`data-powered`, while it runs
+    /// the ladder as drawn), and the watch table. Only the rungs whose
+    /// states changed are touched.
+    pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
+        // A drawing that cannot be written shows nothing live: the states
+        // would be another program's.
+        let in_run = plc.running();
+        if self.live.running.get_untracked() != in_run {
+            self.live.running.set(in_run);
+        }
+        let running = plc.scans() > 0 && !self.live.unwritten.get_untracked();
+        let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
+            Some(trace) => self.live.ladder.with_value(|l| {
+                l.as_ref().map_or_else(Vec::new, |l| {
+                    l.power(trace)
+                        .into_iter()
+                        .map(|(i, r)| (i, r.iter().map(|e| (e.pos, e.power_out)).collect()))
+                        .collect()
+                })
+            }),
+            None => Vec::new(),
+        };
+        let generation = self.live.probe_generation.get_value();
+        let resolve = |c: &crate::editor::model::CellData| {
+            let look = c.kind.look();
+            if c.device.is_empty() {
+                return Probe::default();
+            }
+            let counts =
+                look.shows_value && (c.device.starts_with('T') || c.device.starts_with('C'));
+            Probe {
+                state: look
+                    .shows_state
+                    .then(|| self.handle(plc, &c.device))
+                    .flatten(),
+                value: counts
+                    .then(|| self.handle(plc, &format!("{}.v", c.device)))
+                    .flatten(),
+            }
+        };
+        for view in self.drawing.rungs.get_untracked() {
+            let number = view.number.get_untracked();
+            match powers.iter().find(|(i, _)| *i == number) {
+                Some((_, p)) => view.data.with_untracked(|d| {
+                    view.update_each(|i| crate::editor::model::power_of(d, p, i), |s| &s.powered)
+                }),
+                None => view.update_each(|_| None, |s| &s.powered),
+            }
+            view.probe(generation, resolve, |probes| {
+                let probe = |i: usize| probes.get(i).copied().unwrap_or_default();
+                view.update_each(
+                    |i| {
+                        running
+                            .then(|| probe(i).state.map(|h| plc.read(h).is_on()))
+                            .flatten()
+                    },
+                    |s| &s.on,
+                );
+                view.update_each(
+                    |i| {
+                        running
+                            .then(|| probe(i).value.map(|h| plc.read(h).as_i64()))
+                            .flatten()
+                    },
+                    |s| &s.value,
+                );
+            });
+        }
+        let values: Vec<String> = self.live.watch.with_untracked(|w| {
+            w.iter()
+                .map(|name| {
+                    let value = self.handle(plc, name).map(|h| plc.read(h));
+                    let current = self.handle(plc, &format!("{name}.v")).map(|h| plc.read(h));
+                    let preset = self.preset_of(name);
+                    match (value, current) {
+                        (Some(v), Some(c)) => match preset {
+                            Some(k) => format!("{v} ({c}/K{k})"),
+                            None => format!("{v} ({c})"),
+                        },
+                        (Some(v), None) => v.to_string(),
+                        (None, Some(c)) => c.to_string(),
+                        (None, None) => "?".to_string(),
+                    }
+                })
+                .collect()
+        });
+        if self.live.watch_values.with_untracked(|old| *old != values) {
+            self.live.watch_values.set(values);
+        }
+    }
+
+    /// Each frame: marks every cell whose power changed in some scan since
+    /// the last frame, so a one-scan pulse shows at any speed.
+    pub fn show_pulses(&self, history: &engine::plc::TraceHistory) {
+        let pulses = self
+            .live
+            .ladder
+            .with_value(|l| l.as_ref().map(|l| l.pulses(history)));
+        let pulses = pulses.unwrap_or_default();
+        for view in self.drawing.rungs.get_untracked() {
+            let number = view.number.get_untracked();
+            match pulses.iter().find(|(i, _)| *i == number) {
+                Some((_, found)) if !found.is_empty() => view.data.with_untracked(|d| {
+                    let rises = |i: usize| {
+                        let c = d.cells.get(i)?;
+                        found
+                            .iter()
+                            .find(|p| p.pos.row == c.row && p.pos.col == c.col)
+                            .map(|p| p.rises)
+                    };
+                    view.update_each(rises, |s| &s.pulsed);
+                }),
+                _ => view.update_each(|_| None, |s| &s.pulsed),
+            }
+        }
+    }
+
+    /// The element step `step` reads or computes, by the source map.
+    pub fn cell_of_step(&self, step: usize) -> Option<Cursor> {
+        self.drawing.listing.with_untracked(|l| {
+            let l = l.as_ref()?;
+            let s = l
+                .sources
+                .iter()
+                .find(|s| l.step_at_line(s.line) == Some(step))?;
+            Some(Cursor::new(s.rung, s.pos.row, s.pos.col))
+        })
+    }
+
+    /// The set value the ladder gives timer or counter `device`, if any.
+    pub(super) fn preset_of(&self, device: &str) -> Option<u16> {
+        self.drawing.editor.with_value(|e| {
+            e.ladder()
+                .rungs
+                .iter()
+                .flat_map(|r| r.elements())
+                .find_map(|(_, el)| match el {
+                    Element::TimerCoil { device: d, preset }
+                    | Element::CounterCoil { device: d, preset }
+                        if d == device =>
+                    {
+                        Some(*preset)
+                    }
+                    _ => None,
+                })
+        })
+    }
+
+    /// Forgets resolved device handles (a new program was loaded).
+    pub fn forget_handles(&self) {
+        self.live
+            .handles
+            .update_value(std::collections::HashMap::clear);
+        self.live.probe_generation.update_value(|g| *g += 1);
+    }
+}

@@ -1,0 +1,233 @@
+//! The work edited here: a project opened, a shared link shown and kept
+//! or left, the autosave, and what another tab saved (docs/editor.md,
+//! "Two tabs").
+
+use super::*;
+
+/// What showing a shared project set aside: its settings (applied when
+/// kept), whether it replaced the ladder, and the cases it replaced.
+#[derive(Clone, Debug, Default)]
+pub(super) struct SharedWith {
+    settings: Vec<(String, String)>,
+    replaced: bool,
+    own_tests: Vec<TestCase>,
+    own_exercise: bool,
+}
+
+impl LadderCtx {
+    /// The machine's settings as a project keeps them.
+    pub fn settings(&self) -> Vec<(String, String)> {
+        self.text
+            .pane
+            .get_value()
+            .map(|p| p.settings.run(()))
+            .unwrap_or_default()
+    }
+
+    /// Shows a shared project's ladder, unsaved, until it is kept or left.
+    pub fn show_shared(&self, project: engine::ladder::Project) {
+        if self.work.shared.get_untracked() {
+            self.leave_shared();
+        }
+        self.work.shared.set(true);
+        let own_tests = self.cases.tests.get_untracked();
+        let own_exercise = self.cases.exercise.get_untracked();
+        self.cases.tests.set(project.tests);
+        self.cases.exercise.set(project.exercise);
+        self.cases.results.set(Vec::new());
+        if project.exercise {
+            self.panes.tests_open.set(true);
+        }
+        let replaced = self.apply(Edit::Replace {
+            ladder: project.ladder,
+        });
+        self.panes.message.set(None);
+        self.work.shared_with.set_value(SharedWith {
+            settings: project.settings.into_iter().collect(),
+            replaced,
+            own_tests,
+            own_exercise,
+        });
+    }
+
+    /// "Keep it": the shared ladder becomes this machine's ladder and is
+    /// saved; the ladder saved before is set aside under a key of its own
+    /// (named in the notice) and is one undo away.
+    pub fn keep_shared(&self, projects: Option<crate::editor::projects::Projects>) {
+        if !self.work.shared.get_untracked() {
+            return;
+        }
+        let texts = crate::editor::texts::texts(self.page.lang.get_untracked());
+        // It becomes a project of its own; the ladder before stays where
+        // it was saved, untouched.
+        let made = projects.and_then(|p| {
+            let name = format!(
+                "{} {}",
+                texts.shared_project,
+                js_sys::Date::new_0().to_iso_string()
+            );
+            p.create(&name, &self.project_now()).map(|id| (id, name))
+        });
+        let kept_as = match made {
+            Some((id, name)) => {
+                self.set_project(Some(id));
+                Some(name)
+            }
+            None => store::set_aside(self.machine),
+        };
+        self.work.shared.set(false);
+        let settings = self.work.shared_with.with_value(|w| w.settings.clone());
+        let refused = self
+            .text
+            .pane
+            .get_value()
+            .map(|p| p.apply_settings.run(settings))
+            .unwrap_or_default();
+        self.refresh(true);
+        let mut notice = match kept_as {
+            Some(key) => format!("{} {key}", texts.shared_kept),
+            None => String::new(),
+        };
+        for r in refused {
+            notice.push_str(&format!(" {r}"));
+        }
+        self.page
+            .notice
+            .set((!notice.trim().is_empty()).then_some(notice));
+    }
+
+    /// Opens `ladder` as project `project` here (the ladder before is one
+    /// undo away; it stays saved where it was).
+    pub fn open_project(&self, id: Option<u64>, project: engine::ladder::Project) {
+        self.set_project(id);
+        self.cases.tests.set(project.tests);
+        self.cases.exercise.set(project.exercise);
+        self.cases.results.set(Vec::new());
+        if self.ladder() != project.ladder {
+            self.apply(Edit::Replace {
+                ladder: project.ladder,
+            });
+        } else {
+            self.save();
+        }
+    }
+
+    /// "Back to my work": the ladder as it was before the link opened.
+    pub fn leave_shared(&self) {
+        if !self.work.shared.get_untracked() {
+            return;
+        }
+        let with = self.work.shared_with.get_value();
+        self.cases.tests.set(with.own_tests);
+        self.cases.exercise.set(with.own_exercise);
+        self.cases.results.set(Vec::new());
+        if with.replaced {
+            self.drawing.editor.update_value(|e| {
+                e.undo();
+            });
+        }
+        // An edit as far as the machine is concerned (written at once
+        // while it runs the drawing); not saved, as the link was not.
+        self.refresh(with.replaced);
+        self.work.shared.set(false);
+        // Another tab may have saved while the link was shown.
+        self.on_storage(&store::slot(
+            self.machine,
+            self.work.project.get_untracked(),
+        ));
+    }
+
+    /// Project `id` (or the machine's own ladder) is edited here from now
+    /// on: remembered for the next visit, saved in its slot.
+    pub(super) fn set_project(&self, id: Option<u64>) {
+        self.work.project.set(id);
+        store::remember_open(self.machine, id);
+        self.work.saving.switch_to(&store::slot(self.machine, id));
+    }
+
+    /// A `storage` event for `key`: another tab saved. This tab shows its
+    /// work when it had nothing unsaved (undo brings back what it showed);
+    /// a conflict is shown otherwise. Nothing while a shared ladder is
+    /// shown (its own is compared when it is left).
+    pub fn on_storage(&self, key: &str) {
+        if self.work.shared.get_untracked() {
+            return;
+        }
+        if let Some(json) = self.work.saving.elsewhere(key) {
+            self.show_saved(&json);
+        }
+    }
+
+    /// Shows a project saved by another tab, as an edit not saved again.
+    pub(super) fn show_saved(&self, json: &str) {
+        let Ok(project) = engine::ladder::Project::from_json(json) else {
+            return;
+        };
+        if project.machine != self.machine {
+            return;
+        }
+        self.cases.tests.set(project.tests);
+        self.cases.exercise.set(project.exercise);
+        self.cases.results.set(Vec::new());
+        let replaced = self
+            .drawing
+            .editor
+            .try_update_value(|e| {
+                e.apply(Edit::Replace {
+                    ladder: project.ladder,
+                })
+            })
+            .is_some_and(|r| r.is_ok());
+        if replaced {
+            self.refresh_as(Change::Followed);
+        }
+    }
+
+    /// "Load theirs": the other tab's work replaces this tab's (one undo
+    /// brings it back).
+    pub fn load_theirs(&self) {
+        if let Some(json) = self.work.saving.theirs() {
+            self.show_saved(&json);
+        }
+    }
+
+    /// "Keep mine as a copy": this tab's work becomes a project of its own,
+    /// opened here; the other tab's work stays where it was saved.
+    pub fn keep_mine(&self, projects: crate::editor::projects::Projects) {
+        let texts = crate::editor::texts::texts(self.page.lang.get_untracked());
+        let from = self.work.project.get_untracked().and_then(|id| {
+            projects.index.with_untracked(|i| {
+                i.projects
+                    .iter()
+                    .find(|e| e.id == id)
+                    .map(|e| e.name.clone())
+            })
+        });
+        let base = from.unwrap_or_else(|| texts.project_default.to_string());
+        let name = format!("{base} {}", texts.conflict_copy);
+        let Some(id) = projects.create(&name, &self.project_now()) else {
+            return;
+        };
+        self.set_project(Some(id));
+        self.work.saving.conflict.set(false);
+        self.save();
+        self.page
+            .notice
+            .set(Some(format!("{} {name}", texts.conflict_kept)));
+    }
+
+    /// The project as it stands: the ladder, its cases, the exercise flag.
+    pub fn project_now(&self) -> engine::ladder::Project {
+        let mut project = engine::ladder::Project::new(self.machine, self.ladder());
+        project.tests = self.cases.tests.get_untracked();
+        project.exercise = self.cases.exercise.get_untracked();
+        project
+    }
+
+    /// Autosaves the project (not while a shared one is shown).
+    pub fn save(&self) {
+        if !self.work.shared.get_untracked() {
+            self.work.saving.save(&self.project_now().to_json());
+        }
+    }
+}
