@@ -134,35 +134,53 @@ fn t_scan(ctx: LadderCtx) -> &'static str {
     super::texts::texts(ctx.page.lang.get_untracked()).scan
 }
 
-/// The chart.
-#[component]
-pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
-    // `None` until the user picks: the ladder's own devices, as it is now.
-    let devices = RwSignal::new(None::<Vec<String>>);
-    let chosen = move || {
-        devices
+/// The chart's state; `Copy`.
+#[derive(Clone, Copy)]
+struct Chart {
+    ctx: LadderCtx,
+    /// `None` until the user picks: the ladder's own devices, as it is now.
+    devices: RwSignal<Option<Vec<String>>>,
+    window: RwSignal<Window>,
+    /// The scan clicked (shown when not travelling).
+    cursor: RwSignal<Option<Mark>>,
+    /// The device name being typed, and why the last was refused.
+    adding: RwSignal<String>,
+    error: RwSignal<Option<String>>,
+    data: RwSignal<ChartData>,
+}
+
+impl Chart {
+    fn new(ctx: LadderCtx) -> Chart {
+        Chart {
+            ctx,
+            devices: RwSignal::new(None),
+            window: RwSignal::new(Window {
+                span: SPAN,
+                end: None,
+            }),
+            cursor: RwSignal::new(None),
+            adding: RwSignal::new(String::new()),
+            error: RwSignal::new(None),
+            data: RwSignal::new(ChartData::default()),
+        }
+    }
+
+    /// The devices shown.
+    fn chosen(self) -> Vec<String> {
+        self.devices
             .get_untracked()
-            .unwrap_or_else(|| default_devices(ctx))
-    };
-    let window = RwSignal::new(Window {
-        span: SPAN,
-        end: None,
-    });
-    let cursor = RwSignal::new(None::<Mark>);
-    let adding = RwSignal::new(String::new());
-    let error = RwSignal::new(None::<String>);
-    let data = RwSignal::new(ChartData::default());
-    // Redrawn when the recording moved on (at most every 250 ms while
-    // running), the view moved, or the devices changed. An edit redraws at
-    // once: the rows follow the ladder in the same frame, so the page
-    // below does not jump up to 250 ms after the edit.
-    Effect::new(move |_| {
-        ctx.travel.chart_tick.track();
-        ctx.drawing.revision.track();
-        let w = window.get();
-        let names = devices.get().unwrap_or_else(|| default_devices(ctx));
-        let fresh = ctx.recorded(|tr| {
+            .unwrap_or_else(|| default_devices(self.ctx))
+    }
+
+    /// Reads the scans in view from the recording (tracking what they
+    /// depend on).
+    fn redraw(self) {
+        let w = self.window.get();
+        let names = self
+            .devices
+            .get()
+            .unwrap_or_else(|| default_devices(self.ctx));
+        let fresh = self.ctx.recorded(|tr| {
             let (first, last) = tr.marks();
             let end = w.end.unwrap_or(last).clamp(first, last);
             let from = end.saturating_sub(w.span.saturating_sub(1)).max(first);
@@ -185,172 +203,251 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
             }
         });
         if let Some(fresh) = fresh {
-            if data.with_untracked(|d| *d != fresh) {
-                data.set(fresh);
+            if self.data.with_untracked(|d| *d != fresh) {
+                self.data.set(fresh);
             }
         }
-    });
-    let add = move || {
-        let name = adding.get_untracked().trim().to_string();
+    }
+
+    /// Adds the device typed, when the machine has it.
+    fn add(self) {
+        let name = self.adding.get_untracked().trim().to_string();
         if name.is_empty() {
             return;
         }
-        let known = ctx
+        let known = self
+            .ctx
             .with_plc(|plc| plc.device(&name).map(|_| ()))
             .unwrap_or(Ok(()));
         match known {
             Ok(()) => {
-                error.set(None);
-                let mut list = chosen();
+                self.error.set(None);
+                let mut list = self.chosen();
                 if !list.contains(&name) {
                     list.push(name);
                 }
-                devices.set(Some(list));
-                adding.set(String::new());
+                self.devices.set(Some(list));
+                self.adding.set(String::new());
             }
-            Err(e) => error.set(Some(e.to_string())),
+            Err(e) => self.error.set(Some(e.to_string())),
         }
-    };
-    let zoom = move |factor: f64| {
-        window.update(|w| {
+    }
+
+    fn remove(self, name: &str) {
+        let mut list = self.chosen();
+        list.retain(|x| x != name);
+        self.devices.set(Some(list));
+    }
+
+    fn zoom(self, factor: f64) {
+        self.window.update(|w| {
             let span = (w.span as f64 * factor).round() as u64;
             w.span = span.clamp(8, 1_000_000);
         });
-    };
-    let pan = move |dir: i64| {
-        let (first, last) = ctx.travel.marks.get_untracked();
-        window.update(|w| {
+    }
+
+    fn pan(self, dir: i64) {
+        let (first, last) = self.ctx.travel.marks.get_untracked();
+        self.window.update(|w| {
             let end = w.end.unwrap_or(last) as i64 + dir * (w.span as i64 / 2);
             let end = (end.max(first as i64) as u64).min(last);
             w.end = Some(end);
         });
-    };
-    let export = move || {
-        let csv = data.with_untracked(|d| {
-            let mut out = String::from("time_ms");
-            for (name, _) in &d.rows {
-                out.push(',');
-                out.push_str(name);
-            }
-            out.push('\n');
-            for (i, time) in d.times.iter().enumerate() {
-                out.push_str(&time.to_string());
-                for (_, values) in &d.rows {
-                    out.push(',');
-                    if let Some(Some(v)) = values.get(i) {
-                        out.push_str(&v.to_string());
-                    }
-                }
-                out.push('\n');
-            }
-            out
-        });
+    }
+
+    fn export(self) {
+        let csv = self.data.with_untracked(csv_of);
         super::files::download("timing.csv", "text/csv", &csv);
-    };
-    let pick = move |e: web_sys::MouseEvent| {
-        let n = data.with_untracked(|d| d.times.len());
+    }
+
+    /// A click at `x` pixels: the cursor there (and, paused, that scan).
+    fn pick(self, x: i32) {
+        let (n, from) = self.data.with_untracked(|d| (d.times.len(), d.from));
         if n == 0 {
             return;
         }
-        let x = e.offset_x().max(0) as usize;
-        let from = data.with_untracked(|d| d.from);
+        let x = x.max(0) as usize;
         let mark = from + (x.min(WIDTH - 1) * n / WIDTH) as u64;
-        cursor.set(Some(mark));
-        if ctx.page.paused.get_untracked() {
-            super::travel::seek(ctx, mark);
+        self.cursor.set(Some(mark));
+        if self.ctx.page.paused.get_untracked() {
+            super::travel::seek(self.ctx, mark);
         }
-    };
-    let height = move || data.with(|d| d.rows.len().max(1) * ROW);
+    }
+
+    /// The scan the values table shows: the one travelled to, or clicked.
+    fn at(self) -> Option<Mark> {
+        self.ctx.travel.shown.get().or(self.cursor.get())
+    }
+
+    fn height(self) -> usize {
+        self.data.with(|d| d.rows.len().max(1) * ROW)
+    }
+}
+
+/// The scans in view as `hashigo run`'s CSV.
+fn csv_of(d: &ChartData) -> String {
+    let mut out = String::from("time_ms");
+    for (name, _) in &d.rows {
+        out.push(',');
+        out.push_str(name);
+    }
+    out.push('\n');
+    for (i, time) in d.times.iter().enumerate() {
+        out.push_str(&time.to_string());
+        for (_, values) in &d.rows {
+            out.push(',');
+            if let Some(Some(v)) = values.get(i) {
+                out.push_str(&v.to_string());
+            }
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The chart.
+#[component]
+pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let chart = Chart::new(ctx);
+    // Redrawn when the recording moved on (at most every 250 ms while
+    // running), the view moved, or the devices changed. An edit redraws at
+    // once: the rows follow the ladder in the same frame, so the page
+    // below does not jump up to 250 ms after the edit.
+    Effect::new(move |_| {
+        ctx.travel.chart_tick.track();
+        ctx.drawing.revision.track();
+        chart.redraw();
+    });
     view! {
         <section class="chart-pane" data-testid="timing-chart">
             <h3>{move || t().chart}</h3>
-            <div class="find-row">
-                <input data-testid="chart-add" placeholder=move || t().chart_add spellcheck="false"
-                    prop:value=move || adding.get()
-                    on:input=move |e| adding.set(event_target_value(&e))
-                    on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { add() } />
-                <button type="button" on:click=move |_| add()>"+"</button>
-                <button type="button" data-testid="chart-zoom-in" title=move || t().zoom_in on:click=move |_| zoom(0.5)>"+🔍"</button>
-                <button type="button" data-testid="chart-zoom-out" title=move || t().zoom_out on:click=move |_| zoom(2.0)>"−🔍"</button>
-                <button type="button" data-testid="chart-pan-left" title=move || t().pan_left on:click=move |_| pan(-1)>"◀"</button>
-                <button type="button" data-testid="chart-pan-right" title=move || t().pan_right on:click=move |_| pan(1)>"▶"</button>
-                <button type="button" data-testid="chart-follow" on:click=move |_| window.update(|w| w.end = None)>{move || t().chart_follow}</button>
-                <button type="button" data-testid="chart-export" on:click=move |_| export()>{move || t().chart_export}</button>
-            </div>
-            <p class="chart-error" role="alert">{move || error.get()}</p>
+            <ChartTools chart />
+            <p class="chart-error" role="alert">{move || chart.error.get()}</p>
             <div class="chart-body">
-                <div class="chart-names">
-                    {move || data.with(|d| d.rows.iter().map(|(name, _)| {
-                        let gone = name.clone();
-                        view! {
-                            <div class="chart-name" style=format!("height: {ROW}px")>
-                                {name.clone()}
-                                <button type="button" on:click=move |_| {
-                                    let mut list = chosen();
-                                    list.retain(|x| *x != gone);
-                                    devices.set(Some(list));
-                                }>"×"</button>
-                            </div>
-                        }
-                    }).collect_view())}
-                </div>
-                <svg class="chart" width=WIDTH height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
-                    on:click=pick>
-                    {move || data.with(|d| d.rows.iter().enumerate().map(|(i, (name, values))| {
-                        let path = if is_bits(values) { bit_path(values) } else { value_path(values) };
-                        view! {
-                            <g class="chart-row" data-testid=format!("chart-row-{name}")
-                                data-rises=rises(values).to_string()
-                                data-scans=values.len().to_string()
-                                transform=format!("translate(0 {})", i * ROW)>
-                                <path d=path />
-                            </g>
-                        }
-                    }).collect_view())}
-                    {move || {
-                        let (from, n) = data.with(|d| (d.from, d.times.len() as u64));
-                        let x = move |m: Mark| (m.saturating_sub(from) * WIDTH as u64 / n.max(1)) as usize;
-                        let inside = move |m: &Mark| *m >= from && *m < from + n;
-                        let breaks = ctx.travel.breaks.get().into_iter().filter(inside).map(|m| view! {
-                            <line class="chart-break" data-testid="chart-break" x1=x(m) x2=x(m) y1="0" y2=height() />
-                        }).collect_view();
-                        let shown = ctx.travel.shown.get().or(cursor.get()).filter(inside).map(|m| view! {
-                            <line class="chart-cursor" x1=x(m) x2=x(m) y1="0" y2=height() />
-                        });
-                        (breaks, shown)
-                    }}
-                </svg>
+                <ChartNames chart />
+                <ChartPlot chart />
             </div>
-            // The axis: the scans and simulated times at both ends.
-            <div class="chart-axis" data-testid="chart-axis" style=format!("width: {WIDTH}px")>
-                {move || data.with(|d| {
-                    let end = |i: usize| d.times.get(i).map(|t| {
-                        format!("{} {} · {t} ms", t_scan(ctx), d.from + i as u64)
-                    });
-                    (
-                        view! { <span>{end(0)}</span> },
-                        view! { <span>{end(d.times.len().saturating_sub(1))}</span> },
-                    )
-                })}
-            </div>
-            <table class="chart-values" data-testid="chart-cursor">
-                <tbody>
-                    {move || {
-                        let at = ctx.travel.shown.get().or(cursor.get());
-                        data.with(|d| {
-                            let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
-                            let time = i.and_then(|i| d.times.get(i)).map(|t| format!("{t} ms"));
-                            let head = view! { <tr><th>{at.map(|m| format!("{} {m}", t().scan))}</th><td>{time}</td></tr> };
-                            let rows = d.rows.iter().map(|(name, values)| {
-                                let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
-                                view! { <tr data-testid=format!("chart-value-{name}")><th>{name.clone()}</th><td>{v}</td></tr> }
-                            }).collect_view();
-                            (head, rows)
-                        })
-                    }}
-                </tbody>
-            </table>
+            <ChartAxis chart />
+            <ChartValues chart />
         </section>
+    }
+}
+
+/// Adding a device, zoom, pan, follow, export.
+#[component]
+fn ChartTools(chart: Chart) -> impl IntoView {
+    let t = move || super::texts::texts(chart.ctx.page.lang.get());
+    view! {
+        <div class="find-row">
+            <input data-testid="chart-add" placeholder=move || t().chart_add spellcheck="false"
+                prop:value=move || chart.adding.get()
+                on:input=move |e| chart.adding.set(event_target_value(&e))
+                on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { chart.add() } />
+            <button type="button" on:click=move |_| chart.add()>"+"</button>
+            <button type="button" data-testid="chart-zoom-in" title=move || t().zoom_in on:click=move |_| chart.zoom(0.5)>"+🔍"</button>
+            <button type="button" data-testid="chart-zoom-out" title=move || t().zoom_out on:click=move |_| chart.zoom(2.0)>"−🔍"</button>
+            <button type="button" data-testid="chart-pan-left" title=move || t().pan_left on:click=move |_| chart.pan(-1)>"◀"</button>
+            <button type="button" data-testid="chart-pan-right" title=move || t().pan_right on:click=move |_| chart.pan(1)>"▶"</button>
+            <button type="button" data-testid="chart-follow" on:click=move |_| chart.window.update(|w| w.end = None)>{move || t().chart_follow}</button>
+            <button type="button" data-testid="chart-export" on:click=move |_| chart.export()>{move || t().chart_export}</button>
+        </div>
+    }
+}
+
+/// Each row's device, with a button that takes it off.
+#[component]
+fn ChartNames(chart: Chart) -> impl IntoView {
+    view! {
+        <div class="chart-names">
+            {move || chart.data.with(|d| d.rows.iter().map(|(name, _)| {
+                let gone = name.clone();
+                view! {
+                    <div class="chart-name" style=format!("height: {ROW}px")>
+                        {name.clone()}
+                        <button type="button" on:click=move |_| chart.remove(&gone)>"×"</button>
+                    </div>
+                }
+            }).collect_view())}
+        </div>
+    }
+}
+
+/// The rows drawn, the breaks and the cursor.
+#[component]
+fn ChartPlot(chart: Chart) -> impl IntoView {
+    let height = move || chart.height();
+    view! {
+        <svg class="chart" width=WIDTH height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
+            on:click=move |e: web_sys::MouseEvent| chart.pick(e.offset_x())>
+            {move || chart.data.with(|d| d.rows.iter().enumerate().map(|(i, (name, values))| {
+                let path = if is_bits(values) { bit_path(values) } else { value_path(values) };
+                view! {
+                    <g class="chart-row" data-testid=format!("chart-row-{name}")
+                        data-rises=rises(values).to_string()
+                        data-scans=values.len().to_string()
+                        transform=format!("translate(0 {})", i * ROW)>
+                        <path d=path />
+                    </g>
+                }
+            }).collect_view())}
+            {move || {
+                let (from, n) = chart.data.with(|d| (d.from, d.times.len() as u64));
+                let x = move |m: Mark| (m.saturating_sub(from) * WIDTH as u64 / n.max(1)) as usize;
+                let inside = move |m: &Mark| *m >= from && *m < from + n;
+                let breaks = chart.ctx.travel.breaks.get().into_iter().filter(inside).map(|m| view! {
+                    <line class="chart-break" data-testid="chart-break" x1=x(m) x2=x(m) y1="0" y2=height() />
+                }).collect_view();
+                let shown = chart.at().filter(inside).map(|m| view! {
+                    <line class="chart-cursor" x1=x(m) x2=x(m) y1="0" y2=height() />
+                });
+                (breaks, shown)
+            }}
+        </svg>
+    }
+}
+
+/// The axis: the scans and simulated times at both ends.
+#[component]
+fn ChartAxis(chart: Chart) -> impl IntoView {
+    let ctx = chart.ctx;
+    view! {
+        <div class="chart-axis" data-testid="chart-axis" style=format!("width: {WIDTH}px")>
+            {move || chart.data.with(|d| {
+                let end = |i: usize| d.times.get(i).map(|t| {
+                    format!("{} {} · {t} ms", t_scan(ctx), d.from + i as u64)
+                });
+                (
+                    view! { <span>{end(0)}</span> },
+                    view! { <span>{end(d.times.len().saturating_sub(1))}</span> },
+                )
+            })}
+        </div>
+    }
+}
+
+/// Each device's value at the scan shown or clicked.
+#[component]
+fn ChartValues(chart: Chart) -> impl IntoView {
+    let t = move || super::texts::texts(chart.ctx.page.lang.get());
+    view! {
+        <table class="chart-values" data-testid="chart-cursor">
+            <tbody>
+                {move || {
+                    let at = chart.at();
+                    chart.data.with(|d| {
+                        let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
+                        let time = i.and_then(|i| d.times.get(i)).map(|t| format!("{t} ms"));
+                        let head = view! { <tr><th>{at.map(|m| format!("{} {m}", t().scan))}</th><td>{time}</td></tr> };
+                        let rows = d.rows.iter().map(|(name, values)| {
+                            let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
+                            view! { <tr data-testid=format!("chart-value-{name}")><th>{name.clone()}</th><td>{v}</td></tr> }
+                        }).collect_view();
+                        (head, rows)
+                    })
+                }}
+            </tbody>
+        </table>
     }
 }
 
@@ -377,6 +474,24 @@ mod tests {
         assert_eq!(rises(&values), 1);
         assert!(is_bits(&values));
         assert!(!is_bits(&[Some(5)]));
+    }
+
+    #[test]
+    fn the_export_is_a_csv_of_the_scans_in_view() {
+        let d = ChartData {
+            from: 3,
+            times: vec![SimTime::from_millis(10), SimTime::from_millis(20)],
+            rows: vec![
+                ("Y00".into(), vec![Some(0), Some(1)]),
+                ("D00".into(), vec![None, Some(-7)]),
+            ],
+        };
+        let csv = csv_of(&d);
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines[0], "time_ms,Y00,D00");
+        assert_eq!(lines.len(), 3);
+        assert!(lines[1].ends_with(",0,"), "{csv}");
+        assert!(lines[2].ends_with(",1,-7"), "{csv}");
     }
 
     #[test]

@@ -6,7 +6,7 @@
 use engine::ladder::edit::Cursor;
 use leptos::prelude::*;
 
-use super::model::{CellData, RungData};
+use super::model::{cell_class, cell_words, live_words, within, CellData, RungData};
 use super::palette;
 use super::state::{LadderCtx, RungView};
 use super::texts;
@@ -46,7 +46,6 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
             e.prevent_default();
         }
     };
-    let end_cells = move || (0..=ctx.drawing.out_col.get()).collect::<Vec<_>>();
     let selected_end = selected.clone();
     view! {
         <div
@@ -67,38 +66,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
                     view! { <RungRows ctx r selected block grid /> }
                 }
             />
-            <div class="rung end" role="rowgroup" data-testid="end-line">
-                <div class="rung-head">
-                    <span class="rung-num">{move || texts::texts(ctx.page.lang.get()).end}</span>
-                </div>
-                <div
-                    class="rung-grid"
-                    role="row"
-                    style=move || format!("grid-template-columns: repeat({}, var(--cell-w))", ctx.drawing.out_col.get() + 1)
-                >
-                    <For
-                        each=end_cells
-                        key=|c| *c
-                        children=move |col| {
-                            let selected = selected_end.clone();
-                            let here = move || Cursor::new(ctx.drawing.rungs.with(Vec::len), 0, col);
-                            view! {
-                                <div
-                                    class="cell"
-                                    role="gridcell"
-                                    data-testid=move || format!("cell-{}-0-{col}", ctx.drawing.rungs.with(Vec::len))
-                                    data-kind=""
-                                    aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
-                                    aria-label=move || format!("end of ladder, column {}", col + 1)
-                                    on:mousedown=move |_| ctx.move_to(here())
-                                    on:dragover=|e: web_sys::DragEvent| e.prevent_default()
-                                    on:drop=move |e: web_sys::DragEvent| dropped(ctx, here(), e)
-                                ></div>
-                            }
-                        }
-                    />
-                </div>
-            </div>
+            <EndLine ctx selected=selected_end />
         </div>
     }
 }
@@ -206,7 +174,7 @@ fn RungRows(
 }
 
 /// One cell. Drawn once per content; only its place in the ladder (the
-/// rung may move) and its selection are reactive.
+/// rung may move), its selection and its live slot are reactive.
 #[component]
 fn Cell(
     ctx: LadderCtx,
@@ -218,161 +186,160 @@ fn Cell(
     grid: NodeRef<leptos::html::Div>,
 ) -> impl IntoView {
     let (row, col) = (c.row, c.col);
-    let n = number.clone();
-    let here = move || Cursor::new(n.get(), row, col);
-    let here2 = here.clone();
-    let here3 = here.clone();
-    let here4 = here.clone();
-    let here5 = here.clone();
+    let here = move || Cursor::new(number.get(), row, col);
     let testid = {
-        let n = number.clone();
-        move || format!("cell-{}-{row}-{col}", n.get())
-    };
-    let words = if c.kind.is_empty() {
-        "empty".to_string()
-    } else if c.comment.is_empty() {
-        c.words.clone()
-    } else {
-        format!("{}, {}", c.words, c.comment)
+        let here = here.clone();
+        move || format!("cell-{}-{row}-{col}", here().rung)
     };
     let label = {
-        let n = number.clone();
-        let err = c.error.clone();
+        let (here, words, slot) = (here.clone(), cell_words(&c), cell_slot.clone());
         move || {
-            let mut s = format!(
-                "rung {}, row {}, column {}: {words}",
-                n.get() + 1,
+            let at = here();
+            let state = live_words(slot.on.get(), slot.powered.get());
+            format!(
+                "rung {}, row {}, column {}: {words}{state}",
+                at.rung + 1,
                 row + 1,
                 col + 1
-            );
-            if let Some(e) = &err {
-                s.push_str(&format!(" (error: {e})"));
-            }
-            s
+            )
         }
     };
-    let in_block = move || {
-        block.with(|b| {
-            b.is_some_and(|(a, z)| {
-                let at = here4();
-                if a.rung == z.rung {
-                    at.rung == a.rung
-                        && (a.row.min(z.row)..=a.row.max(z.row)).contains(&at.row)
-                        && (a.col.min(z.col)..=a.col.max(z.col)).contains(&at.col)
-                } else {
-                    (a.rung.min(z.rung)..=a.rung.max(z.rung)).contains(&at.rung)
-                }
-            })
-        })
+    let in_block = {
+        let here = here.clone();
+        move || block.with(|b| b.is_some_and(|(a, z)| within(a, z, here())))
     };
-    let class = format!(
-        "cell{}{}{}{}",
-        if c.kind.is_empty() {
-            String::new()
-        } else {
-            format!(" filled k-{}", c.kind.hook())
-        },
-        if c.link_up { " link-up" } else { "" },
-        if c.link_down { " link-down" } else { "" },
-        if c.error.is_some() { " has-error" } else { "" },
-    );
     let device = (!c.device.is_empty()).then(|| c.device.clone());
-    let is_contact = c.kind.look().contact;
-    let driven = device.clone();
-    let forced_device = c.device.clone();
-    let forced_here = move || {
-        !forced_device.is_empty()
-            && ctx
-                .live
-                .forced
-                .with(|f| f.iter().any(|(d, _)| *d == forced_device))
-    };
-    let here6 = here.clone();
-    let here7 = here.clone();
-    let super::state::CellSlot {
-        on,
-        powered,
-        pulsed,
-        value,
-    } = cell_slot;
-    let value_attr = value.clone();
-    let value_text = move || value.get().map(|v| v.to_string());
-    let value_attr = move || value_attr.get().map(|v| v.to_string());
-    let live = move || on.get().map(|b| if b { "1" } else { "0" });
-    let pulses = pulsed.clone();
-    let pulse = move || pulses.get().map(|_| "1");
-    let rises = move || pulsed.get().filter(|n| *n > 0).map(|n| n.to_string());
-    let error = c.error.clone();
-    let rises_for_title = rises.clone();
-    // The error, else how often the contact's device rose since the last
-    // frame (a pulse too short to see).
-    let hover = move || {
-        error
-            .clone()
-            .or_else(|| rises_for_title().map(|n| format!("{n} ↑")))
-    };
-    let power = move || powered.get().map(|b| if b { "1" } else { "0" });
-    let focus = move || {
-        if let Some(g) = grid.get() {
-            let _ = g.focus();
+    let forced_here = {
+        let device = c.device.clone();
+        move || {
+            !device.is_empty()
+                && ctx
+                    .live
+                    .forced
+                    .with(|f| f.iter().any(|(d, _)| *d == device))
         }
     };
+    let hover = {
+        // The error, else how often the contact's device rose since the
+        // last frame (a pulse too short to see).
+        let (error, rises) = (c.error.clone(), cell_slot.rises());
+        move || error.clone().or_else(|| rises().map(|n| format!("{n} ↑")))
+    };
+    let (on, power, pulse) = (
+        cell_slot.on_attr(),
+        cell_slot.power_attr(),
+        cell_slot.pulse_attr(),
+    );
+    let (h1, h2, h3, h4, h5) = (
+        here.clone(),
+        here.clone(),
+        here.clone(),
+        here.clone(),
+        here.clone(),
+    );
+    let (kind, driven) = (c.kind, device.clone());
     view! {
         <div
-            class=class
+            class=cell_class(&c)
             class:sel=in_block
             role="gridcell"
             data-testid=testid
             data-kind=c.kind.hook()
             data-device=device
-            data-on=live.clone()
-            class:on=move || live() == Some("1")
+            data-on=on.clone()
+            class:on=move || on() == Some("1")
             data-powered=power.clone()
             class:powered=move || power() == Some("1")
             data-pulsed=pulse.clone()
             class:pulsed=move || pulse().is_some()
-            data-rises=rises
+            data-rises=cell_slot.rises()
             data-error=c.error.clone()
             title=hover
-            aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
+            aria-selected=move || if selected.selected(&h1()) { "true" } else { "false" }
             aria-label=label
             style=format!("grid-row: {}; grid-column: {}", row + 1, col + 1)
-            on:mousedown=move |e: web_sys::MouseEvent| {
-                e.prevent_default();
-                if e.shift_key() {
-                    ctx.extend_to(here2());
-                } else {
-                    ctx.move_to(here2());
-                }
-                focus();
-            }
-            on:click=move |e: web_sys::MouseEvent| {
-                // While the machine runs the drawn ladder, a contact drives
-                // its input.
-                if ctx.live.monitor.get_untracked() && is_contact {
-                    if let Some(d) = &driven {
-                        super::live::drive_from_ladder(ctx, d, e.shift_key());
-                    }
-                }
-            }
-            class:stepped=move || ctx.live.stepped_cell.with(|s| *s == Some(here6()))
+            on:mousedown=move |e: web_sys::MouseEvent| pressed(ctx, h2(), &e, grid)
+            on:click=move |e: web_sys::MouseEvent| clicked(ctx, kind, driven.as_deref(), e.shift_key())
+            class:stepped=move || ctx.live.stepped_cell.with(|s| *s == Some(h3()))
             class:forced=forced_here.clone()
             data-forced=move || forced_here().then_some("1")
             on:dblclick=move |_| {
-                ctx.move_to(here3());
+                ctx.move_to(h4());
                 ctx.dispatch(super::keys::Action::EditCell);
             }
             on:dragover=|e: web_sys::DragEvent| e.prevent_default()
-            on:drop=move |e: web_sys::DragEvent| dropped(ctx, here5(), e)
+            on:drop=move |e: web_sys::DragEvent| dropped(ctx, h5(), e)
         >
             <span class="dev">{c.device.clone()}</span>
             <span class="sym">{c.symbol.clone()}</span>
             <span class="cmt">{c.comment.clone()}</span>
-            <span class="val" data-value=value_attr>{value_text}</span>
+            <span class="val" data-value=cell_slot.value_attr()>{cell_slot.value_attr()}</span>
             // "Why": the cell asked about and the cells that decide it
             // (a child: the cell already carries tachys's most attributes).
-            <span class="why" data-why=move || ctx.why.shown.with(|w| w.as_ref().and_then(|w| w.role_at(&here7())))></span>
+            <span class="why" data-why=move || ctx.why.shown.with(|w| w.as_ref().and_then(|w| w.role_at(&here())))></span>
         </div>
+    }
+}
+
+/// A press on a cell: the cursor there (Shift: the selection grows to
+/// it), and the focus on the grid.
+fn pressed(ctx: LadderCtx, at: Cursor, e: &web_sys::MouseEvent, grid: NodeRef<leptos::html::Div>) {
+    e.prevent_default();
+    if e.shift_key() {
+        ctx.extend_to(at);
+    } else {
+        ctx.move_to(at);
+    }
+    focus(grid);
+}
+
+/// A click on a cell: while the machine runs the drawn ladder, a contact
+/// drives its input (Shift: for one scan).
+fn clicked(ctx: LadderCtx, kind: super::model::CellKind, device: Option<&str>, pulse: bool) {
+    if ctx.live.monitor.get_untracked() && kind.look().contact {
+        if let Some(d) = device {
+            super::live::drive_from_ladder(ctx, d, pulse);
+        }
+    }
+}
+
+/// The end line: the row after the last rung, where a new rung starts.
+#[component]
+fn EndLine(ctx: LadderCtx, selected: Selector<Cursor>) -> impl IntoView {
+    let end_cells = move || (0..=ctx.drawing.out_col.get()).collect::<Vec<_>>();
+    view! {
+    <div class="rung end" role="rowgroup" data-testid="end-line">
+        <div class="rung-head">
+            <span class="rung-num">{move || texts::texts(ctx.page.lang.get()).end}</span>
+        </div>
+        <div
+            class="rung-grid"
+            role="row"
+            style=move || format!("grid-template-columns: repeat({}, var(--cell-w))", ctx.drawing.out_col.get() + 1)
+        >
+            <For
+                each=end_cells
+                key=|c| *c
+                children=move |col| {
+                    let selected = selected.clone();
+                    let here = move || Cursor::new(ctx.drawing.rungs.with(Vec::len), 0, col);
+                    view! {
+                        <div
+                            class="cell"
+                            role="gridcell"
+                            data-testid=move || format!("cell-{}-0-{col}", ctx.drawing.rungs.with(Vec::len))
+                            data-kind=""
+                            aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
+                            aria-label=move || format!("end of ladder, column {}", col + 1)
+                            on:mousedown=move |_| ctx.move_to(here())
+                            on:dragover=|e: web_sys::DragEvent| e.prevent_default()
+                            on:drop=move |e: web_sys::DragEvent| dropped(ctx, here(), e)
+                        ></div>
+                    }
+                }
+            />
+        </div>
+    </div>
     }
 }
 

@@ -6,7 +6,7 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use engine::ladder::edit::{EntryKind, MAX_ROWS};
+use engine::ladder::edit::{Cursor, EntryKind, MAX_ROWS};
 use engine::ladder::{CoilKind, ContactKind, Element, Pos, Rung};
 
 pub use super::cell_kind::CellKind;
@@ -182,6 +182,63 @@ fn drawn(e: &Element) -> CellData {
         symbol,
         words,
         ..CellData::default()
+    }
+}
+
+/// A cell's words for screen readers: what it is, and its device's
+/// comment.
+pub fn cell_words(c: &CellData) -> String {
+    if c.kind.is_empty() {
+        "empty".to_string()
+    } else if c.comment.is_empty() {
+        c.words.clone()
+    } else {
+        format!("{}, {}", c.words, c.comment)
+    }
+}
+
+/// A cell's live state in words, after its name: its device on, and
+/// whether power reaches through it (so the state is not said by colour
+/// only).
+pub fn live_words(on: Option<bool>, powered: Option<bool>) -> &'static str {
+    match (on, powered) {
+        (Some(true), Some(true)) => ", on, powered",
+        (Some(true), _) => ", on",
+        (Some(false), Some(true)) => ", off, powered",
+        (Some(false), _) => ", off",
+        (None, Some(true)) => ", powered",
+        (None, _) => "",
+    }
+}
+
+/// A cell's classes: `filled k-<hook>`, its links and an error.
+pub fn cell_class(c: &CellData) -> String {
+    let mut class = String::from("cell");
+    if !c.kind.is_empty() {
+        class.push_str(" filled k-");
+        class.push_str(c.kind.hook());
+    }
+    for (has, name) in [
+        (c.link_up, " link-up"),
+        (c.link_down, " link-down"),
+        (c.error.is_some(), " has-error"),
+    ] {
+        if has {
+            class.push_str(name);
+        }
+    }
+    class
+}
+
+/// Whether `at` is inside the block from `a` to `z`: cells within one
+/// rung, whole rungs across several.
+pub fn within(a: Cursor, z: Cursor, at: Cursor) -> bool {
+    if a.rung == z.rung {
+        at.rung == a.rung
+            && (a.row.min(z.row)..=a.row.max(z.row)).contains(&at.row)
+            && (a.col.min(z.col)..=a.col.max(z.col)).contains(&at.col)
+    } else {
+        (a.rung.min(z.rung)..=a.rung.max(z.rung)).contains(&at.rung)
     }
 }
 

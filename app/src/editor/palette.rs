@@ -3,7 +3,7 @@
 //! A click acts at the cursor; an item dragged onto a cell acts there.
 
 use engine::ladder::edit::EntryKind;
-use engine::ladder::target::capabilities;
+use engine::ladder::target::{capabilities, Capabilities};
 use engine::ladder::{CoilKind, ContactKind, Element};
 use engine::MachineId;
 use leptos::prelude::*;
@@ -37,226 +37,136 @@ pub struct Item {
     pub lacks: Option<String>,
 }
 
-/// The palette of `machine`.
-pub fn items(machine: MachineId) -> Vec<Item> {
-    let caps = capabilities(machine);
-    let entry = |kind, branch, prefill| {
-        Does::Key(Action::Entry {
-            kind,
-            branch,
-            prefill,
-        })
-    };
-    let contact = |k| caps.contacts.contains(&k);
-    let coil = |k| caps.coils.contains(&k);
-    let why = |ok: bool, what: &str| (!ok).then(|| format!("{machine} has no {what}"));
-    let edges = contact(ContactKind::Rising);
-    vec![
-        item(
-            CellKind::No.hook(),
-            CellKind::No.look().symbol,
-            "normally open contact (F5)",
-            entry(EntryKind::Open, false, ""),
-            None,
-        ),
-        item(
-            CellKind::Nc.hook(),
-            CellKind::Nc.look().symbol,
-            "normally closed contact (F6)",
-            entry(EntryKind::Closed, false, ""),
-            None,
-        ),
-        item(
-            "or-no",
-            "└┤ ├┘",
-            "OR branch, normally open (Shift+F5)",
-            entry(EntryKind::Open, true, ""),
-            None,
-        ),
-        item(
-            "or-nc",
-            "└┤/├┘",
-            "OR branch, normally closed (Shift+F6)",
-            entry(EntryKind::Closed, true, ""),
-            None,
-        ),
-        item(
-            CellKind::Rise.hook(),
-            CellKind::Rise.look().symbol,
-            "rising edge contact (LDP)",
-            entry(EntryKind::Instruction, false, "LDP "),
-            why(edges, "edge contacts"),
-        ),
-        item(
-            CellKind::Fall.hook(),
-            CellKind::Fall.look().symbol,
-            "falling edge contact (LDF)",
-            entry(EntryKind::Instruction, false, "LDF "),
-            why(edges, "edge contacts"),
-        ),
-        item(
-            "wire",
-            "──",
-            "horizontal wire (F9)",
-            Does::Key(Action::Wire),
-            None,
-        ),
-        item(
-            "link",
-            "│",
-            "vertical link (Shift+F9)",
-            Does::Key(Action::ToggleLink),
-            None,
-        ),
-        item(
-            CellKind::Coil.hook(),
-            CellKind::Coil.look().symbol,
-            "coil (F7)",
-            entry(EntryKind::Coil, false, ""),
-            why(coil(CoilKind::Normal), "coils"),
-        ),
-        item(
-            CellKind::CoilNot.hook(),
-            CellKind::CoilNot.look().symbol,
-            "inverted coil",
-            entry(EntryKind::Instruction, false, "STI "),
-            why(coil(CoilKind::Inverted), "inverted coils"),
-        ),
-        item(
-            CellKind::Set.hook(),
-            CellKind::Set.look().symbol,
-            "set coil",
-            entry(EntryKind::Instruction, false, "SET "),
-            why(coil(CoilKind::Set), "set coils"),
-        ),
-        item(
-            CellKind::Reset.hook(),
-            CellKind::Reset.look().symbol,
-            "reset coil",
-            entry(EntryKind::Instruction, false, "RST "),
-            why(coil(CoilKind::Reset), "reset coils"),
-        ),
-        item(
-            "timer",
-            "(T K)",
-            "timer coil: OUT T00 K10",
-            entry(EntryKind::Instruction, false, "OUT T00 K"),
-            why(
-                caps.timer_counter_coils,
-                "timer coils with set values (MINASEC-U: coil T0/T1)",
-            ),
-        ),
-        item(
-            "counter",
-            "(C K)",
-            "counter coil: OUT C00 K10",
-            entry(EntryKind::Instruction, false, "OUT C00 K"),
-            why(
-                caps.timer_counter_coils,
-                "counter coils with set values (MINASEC-U: coil C0)",
-            ),
-        ),
-        item(
-            "pls",
-            "[PLS]",
-            "one-scan pulse output",
-            entry(EntryKind::Instruction, false, "PLS "),
-            why(caps.pulse_outputs, "PLS/PLF outputs"),
-        ),
-        item(
-            "plf",
-            "[PLF]",
-            "one-scan pulse on falling power",
-            entry(EntryKind::Instruction, false, "PLF "),
-            why(caps.pulse_outputs, "PLS/PLF outputs"),
-        ),
-        item(
-            "mov",
-            "[MOV]",
-            "MOV K50 D00",
-            entry(EntryKind::Instruction, false, "MOV "),
-            why(caps.data_boxes, "data boxes"),
-        ),
-        item(
-            "cmp",
-            "[CMP]",
-            "CMP D00 K10",
-            entry(EntryKind::Instruction, false, "CMP "),
-            why(caps.data_boxes, "data boxes"),
-        ),
-        item(
-            "inc",
-            "[INC]",
-            "INC D00",
-            entry(EntryKind::Instruction, false, "INC "),
-            why(caps.data_boxes, "data boxes"),
-        ),
-        item(
-            "dec",
-            "[DEC]",
-            "DEC D00",
-            entry(EntryKind::Instruction, false, "DEC "),
-            why(caps.data_boxes, "data boxes"),
-        ),
-        item(
-            "not",
-            "[NOT]",
-            "invert the power flow",
-            Does::Place(Element::Not),
-            why(caps.inline_boxes, "in-line boxes"),
-        ),
-        item(
-            "r-trig",
-            "[R_TRIG]",
-            "one scan on rising power",
-            Does::Place(Element::Edge { falling: false }),
-            why(caps.inline_boxes, "in-line boxes"),
-        ),
-        item(
-            "f-trig",
-            "[F_TRIG]",
-            "one scan on falling power",
-            Does::Place(Element::Edge { falling: true }),
-            why(caps.inline_boxes, "in-line boxes"),
-        ),
-        item(
-            "ton",
-            "[TON]",
-            "on-delay timer: TON t1 500ms",
-            entry(EntryKind::Instruction, false, "TON "),
-            why(caps.inline_boxes, "in-line timers"),
-        ),
-        item(
-            "tof",
-            "[TOF]",
-            "off-delay timer: TOF t1 500ms",
-            entry(EntryKind::Instruction, false, "TOF "),
-            why(caps.inline_boxes, "in-line timers"),
-        ),
-        item(
-            "tp",
-            "[TP]",
-            "pulse timer: TP t1 500ms",
-            entry(EntryKind::Instruction, false, "TP "),
-            why(caps.inline_boxes, "in-line timers"),
-        ),
-    ]
+/// What a palette item asks of the machine.
+#[derive(Clone, Copy)]
+enum Needs {
+    Nothing,
+    /// Rising and falling edge contacts.
+    Edges,
+    /// A coil of this kind.
+    Coil(CoilKind, &'static str),
+    /// Timer and counter coils with set values (what they are called).
+    CountCoils(&'static str),
+    /// PLS / PLF.
+    Pulses,
+    /// MOV, CMP, INC, DEC.
+    DataBoxes,
+    /// NOT, R_TRIG, F_TRIG, TON … on the rung (what they are called).
+    InlineBoxes(&'static str),
 }
 
-fn item(
+impl Needs {
+    /// Why `machine` cannot take it, when it cannot.
+    fn lacking(self, machine: MachineId, caps: &Capabilities) -> Option<String> {
+        let (has, what) = match self {
+            Needs::Nothing => return None,
+            Needs::Edges => (
+                caps.contacts.contains(&ContactKind::Rising),
+                "edge contacts",
+            ),
+            Needs::Coil(kind, what) => (caps.coils.contains(&kind), what),
+            Needs::CountCoils(what) => (caps.timer_counter_coils, what),
+            Needs::Pulses => (caps.pulse_outputs, "PLS/PLF outputs"),
+            Needs::DataBoxes => (caps.data_boxes, "data boxes"),
+            Needs::InlineBoxes(what) => (caps.inline_boxes, what),
+        };
+        (!has).then(|| format!("{machine} has no {what}"))
+    }
+}
+
+/// What an item does, as data: the device entry of a kind (as a branch,
+/// prefilled), a key's action, or an element placed as it is.
+enum Act {
+    Entry(EntryKind, bool, &'static str),
+    Key(Action),
+    Place(Element),
+}
+
+/// One row of the palette's table.
+struct Spec {
     id: &'static str,
     symbol: &'static str,
     name: &'static str,
-    does: Does,
-    lacks: Option<String>,
-) -> Item {
-    Item {
+    act: Act,
+    needs: Needs,
+}
+
+const fn spec(
+    id: &'static str,
+    symbol: &'static str,
+    name: &'static str,
+    act: Act,
+    needs: Needs,
+) -> Spec {
+    Spec {
         id,
         symbol,
         name,
-        does,
-        lacks,
+        act,
+        needs,
     }
+}
+
+/// A kind from the cells' table, by its hook and symbol.
+const fn kind(k: CellKind, name: &'static str, act: Act, needs: Needs) -> Spec {
+    spec(k.hook(), k.look().symbol, name, act, needs)
+}
+
+use Act::{Entry, Key, Place};
+use EntryKind::{Closed, Coil as CoilEntry, Instruction, Open};
+
+/// The palette, in the order shown.
+#[rustfmt::skip]
+const SPECS: &[Spec] = &[
+    kind(CellKind::No, "normally open contact (F5)", Entry(Open, false, ""), Needs::Nothing),
+    kind(CellKind::Nc, "normally closed contact (F6)", Entry(Closed, false, ""), Needs::Nothing),
+    spec("or-no", "└┤ ├┘", "OR branch, normally open (Shift+F5)", Entry(Open, true, ""), Needs::Nothing),
+    spec("or-nc", "└┤/├┘", "OR branch, normally closed (Shift+F6)", Entry(Closed, true, ""), Needs::Nothing),
+    kind(CellKind::Rise, "rising edge contact (LDP)", Entry(Instruction, false, "LDP "), Needs::Edges),
+    kind(CellKind::Fall, "falling edge contact (LDF)", Entry(Instruction, false, "LDF "), Needs::Edges),
+    spec("wire", "──", "horizontal wire (F9)", Key(Action::Wire), Needs::Nothing),
+    spec("link", "│", "vertical link (Shift+F9)", Key(Action::ToggleLink), Needs::Nothing),
+    kind(CellKind::Coil, "coil (F7)", Entry(CoilEntry, false, ""), Needs::Coil(CoilKind::Normal, "coils")),
+    kind(CellKind::CoilNot, "inverted coil", Entry(Instruction, false, "STI "), Needs::Coil(CoilKind::Inverted, "inverted coils")),
+    kind(CellKind::Set, "set coil", Entry(Instruction, false, "SET "), Needs::Coil(CoilKind::Set, "set coils")),
+    kind(CellKind::Reset, "reset coil", Entry(Instruction, false, "RST "), Needs::Coil(CoilKind::Reset, "reset coils")),
+    spec("timer", "(T K)", "timer coil: OUT T00 K10", Entry(Instruction, false, "OUT T00 K"), Needs::CountCoils("timer coils with set values (MINASEC-U: coil T0/T1)")),
+    spec("counter", "(C K)", "counter coil: OUT C00 K10", Entry(Instruction, false, "OUT C00 K"), Needs::CountCoils("counter coils with set values (MINASEC-U: coil C0)")),
+    spec("pls", "[PLS]", "one-scan pulse output", Entry(Instruction, false, "PLS "), Needs::Pulses),
+    spec("plf", "[PLF]", "one-scan pulse on falling power", Entry(Instruction, false, "PLF "), Needs::Pulses),
+    spec("mov", "[MOV]", "MOV K50 D00", Entry(Instruction, false, "MOV "), Needs::DataBoxes),
+    spec("cmp", "[CMP]", "CMP D00 K10", Entry(Instruction, false, "CMP "), Needs::DataBoxes),
+    spec("inc", "[INC]", "INC D00", Entry(Instruction, false, "INC "), Needs::DataBoxes),
+    spec("dec", "[DEC]", "DEC D00", Entry(Instruction, false, "DEC "), Needs::DataBoxes),
+    spec("not", "[NOT]", "invert the power flow", Place(Element::Not), Needs::InlineBoxes("in-line boxes")),
+    spec("r-trig", "[R_TRIG]", "one scan on rising power", Place(Element::Edge { falling: false }), Needs::InlineBoxes("in-line boxes")),
+    spec("f-trig", "[F_TRIG]", "one scan on falling power", Place(Element::Edge { falling: true }), Needs::InlineBoxes("in-line boxes")),
+    spec("ton", "[TON]", "on-delay timer: TON t1 500ms", Entry(Instruction, false, "TON "), Needs::InlineBoxes("in-line timers")),
+    spec("tof", "[TOF]", "off-delay timer: TOF t1 500ms", Entry(Instruction, false, "TOF "), Needs::InlineBoxes("in-line timers")),
+    spec("tp", "[TP]", "pulse timer: TP t1 500ms", Entry(Instruction, false, "TP "), Needs::InlineBoxes("in-line timers")),
+];
+
+/// The palette of `machine`: every item, with what the machine lacks.
+pub fn items(machine: MachineId) -> Vec<Item> {
+    let caps = capabilities(machine);
+    SPECS
+        .iter()
+        .map(|s| Item {
+            id: s.id,
+            symbol: s.symbol,
+            name: s.name,
+            does: match &s.act {
+                Entry(kind, branch, prefill) => Does::Key(Action::Entry {
+                    kind: *kind,
+                    branch: *branch,
+                    prefill,
+                }),
+                Key(action) => Does::Key(*action),
+                Place(element) => Does::Place(element.clone()),
+            },
+            lacks: s.needs.lacking(machine, &caps),
+        })
+        .collect()
 }
 
 /// Does what palette item `id` does, at the cursor.

@@ -55,6 +55,46 @@ pub struct CellSlot {
     pub value: ArcRwSignal<Option<i64>>,
 }
 
+fn bit(b: bool) -> &'static str {
+    if b {
+        "1"
+    } else {
+        "0"
+    }
+}
+
+impl CellSlot {
+    /// `data-on`: its device's state.
+    pub fn on_attr(&self) -> impl Fn() -> Option<&'static str> + Clone + Send + Sync + 'static {
+        let on = self.on.clone();
+        move || on.get().map(bit)
+    }
+
+    /// `data-powered`: its power in the last scan.
+    pub fn power_attr(&self) -> impl Fn() -> Option<&'static str> + Clone + Send + Sync + 'static {
+        let powered = self.powered.clone();
+        move || powered.get().map(bit)
+    }
+
+    /// `data-pulsed`: its power changed since the last frame.
+    pub fn pulse_attr(&self) -> impl Fn() -> Option<&'static str> + Clone + Send + Sync + 'static {
+        let pulsed = self.pulsed.clone();
+        move || pulsed.get().map(|_| "1")
+    }
+
+    /// `data-rises`: how often its device rose since the last frame.
+    pub fn rises(&self) -> impl Fn() -> Option<String> + Clone + Send + Sync + 'static {
+        let pulsed = self.pulsed.clone();
+        move || pulsed.get().filter(|n| *n > 0).map(|n| n.to_string())
+    }
+
+    /// A timer's or counter's current value, as text.
+    pub fn value_attr(&self) -> impl Fn() -> Option<String> + Clone + Send + Sync + 'static {
+        let value = self.value.clone();
+        move || value.get().map(|v| v.to_string())
+    }
+}
+
 impl RungView {
     /// The live slot of cell `index` (made when first asked for).
     pub fn slot(&self, index: usize) -> CellSlot {
