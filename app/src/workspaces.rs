@@ -7,12 +7,12 @@ use engine::MachineId;
 
 use std::rc::Rc;
 
-use crate::editor::machine::{Linked, MachineLink};
+use crate::editor::machine::MachineLink;
 use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
 use crate::machines::minasec::board::Board;
 use crate::machines::minasec::program::ProgramPane;
 use crate::machines::minasec::MinasecCtx;
-use crate::machines::{arduino, avr, io86a};
+use crate::machines::{self, arduino, avr, io86a};
 use crate::sim::Pace;
 use crate::state::{Ctx, MachineKind};
 
@@ -49,36 +49,12 @@ impl Workspaces {
         avr: avr::AvrCtx,
     ) -> Workspaces {
         let ladders = Ladders::new(|machine| LadderCtx::restore(page, machine));
-        let link = |machine, link: Rc<dyn MachineLink>| ladders.of(machine).attach(link);
-        link(
-            MachineId::MinasecU,
-            Rc::new(Linked {
-                sim: minasec.sim,
-                refresh: Callback::new(move |()| minasec.refresh()),
-            }),
-        );
-        link(
-            MachineId::Io86a,
-            Rc::new(Linked {
-                sim: io86a.sim,
-                refresh: Callback::new(move |()| io86a.refresh()),
-            }),
-        );
-        link(
-            MachineId::ArduinoPlc,
-            Rc::new(Linked {
-                sim: arduino.sim,
-                refresh: Callback::new(move |()| arduino.refresh()),
-            }),
-        );
-        link(
-            MachineId::AvrPlc,
-            Rc::new(Linked {
-                sim: avr.sim,
-                refresh: Callback::new(move |()| avr.refresh()),
-            }),
-        );
-        ladders.of(MachineId::MinasecU).connect(Program {
+        let wire = |machine, link: Rc<dyn MachineLink>, program: Program| {
+            let ladder = ladders.of(machine);
+            ladder.attach(link);
+            ladder.connect(program);
+        };
+        let minasec_program = Program {
             text: minasec.text,
             load: Callback::new(move |()| {
                 minasec.load_text();
@@ -87,42 +63,33 @@ impl Workspaces {
             save: Callback::new(move |()| minasec.save()),
             settings: Callback::new(move |()| minasec.project_settings()),
             apply_settings: Callback::new(move |settings| minasec.apply_project_settings(settings)),
-        });
-        ladders.of(MachineId::Io86a).connect(Program {
-            text: io86a.texts[0],
-            load: Callback::new(move |()| {
-                io86a.load(0);
-                io86a.save();
-            }),
-            save: Callback::new(move |()| io86a.save()),
-            settings: Callback::new(|()| Vec::new()),
-            apply_settings: Callback::new(not_applied),
-        });
-        ladders.of(MachineId::ArduinoPlc).connect(Program {
-            text: arduino.text,
-            load: Callback::new(move |()| {
-                arduino.load();
-                arduino.save();
-            }),
-            save: Callback::new(move |()| arduino.save()),
-            settings: Callback::new(|()| Vec::new()),
-            apply_settings: Callback::new(not_applied),
-        });
+        };
+        wire(
+            MachineId::MinasecU,
+            machines::link(minasec.sim, move || minasec.refresh()),
+            minasec_program,
+        );
+        wire(
+            MachineId::Io86a,
+            machines::link(io86a.sim, move || io86a.refresh()),
+            machines::text_program(io86a.texts[0], move || io86a.load(0), move || io86a.save()),
+        );
+        wire(
+            MachineId::ArduinoPlc,
+            machines::link(arduino.sim, move || arduino.refresh()),
+            machines::text_program(arduino.text, move || arduino.load(), move || arduino.save()),
+        );
+        // The AVR compiler's scan period before its program pane is read.
         ladders
             .of(MachineId::AvrPlc)
             .text
             .options
             .update(|o| o.avr_scan_ms = avr::scan_ms_default());
-        ladders.of(MachineId::AvrPlc).connect(Program {
-            text: avr.text,
-            load: Callback::new(move |()| {
-                avr.load();
-                avr.save();
-            }),
-            save: Callback::new(move |()| avr.save()),
-            settings: Callback::new(|()| Vec::new()),
-            apply_settings: Callback::new(not_applied),
-        });
+        wire(
+            MachineId::AvrPlc,
+            machines::link(avr.sim, move || avr.refresh()),
+            machines::text_program(avr.text, move || avr.load(), move || avr.save()),
+        );
         Workspaces {
             minasec,
             io86a,
@@ -189,15 +156,4 @@ impl Workspaces {
             MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=self.avr /> }.into_any(),
         }
     }
-}
-
-/// The settings a project brings to a workspace that keeps none of its
-/// own: each is reported, none is dropped silently.
-fn not_applied(settings: Vec<(String, String)>) -> Vec<String> {
-    settings
-        .into_iter()
-        .map(|(name, value)| {
-            format!("{name}={value}: this workspace keeps no settings; not applied.")
-        })
-        .collect()
 }

@@ -186,45 +186,19 @@ fn Cell(
     grid: NodeRef<leptos::html::Div>,
 ) -> impl IntoView {
     let (row, col) = (c.row, c.col);
+    let label = label_of(&c, number.clone(), cell_slot.clone());
     let here = move || Cursor::new(number.get(), row, col);
     let testid = {
         let here = here.clone();
         move || format!("cell-{}-{row}-{col}", here().rung)
-    };
-    let label = {
-        let (here, words, slot) = (here.clone(), cell_words(&c), cell_slot.clone());
-        move || {
-            let at = here();
-            let state = live_words(slot.on.get(), slot.powered.get());
-            format!(
-                "rung {}, row {}, column {}: {words}{state}",
-                at.rung + 1,
-                row + 1,
-                col + 1
-            )
-        }
     };
     let in_block = {
         let here = here.clone();
         move || block.with(|b| b.is_some_and(|(a, z)| within(a, z, here())))
     };
     let device = (!c.device.is_empty()).then(|| c.device.clone());
-    let forced_here = {
-        let device = c.device.clone();
-        move || {
-            !device.is_empty()
-                && ctx
-                    .live
-                    .forced
-                    .with(|f| f.iter().any(|(d, _)| *d == device))
-        }
-    };
-    let hover = {
-        // The error, else how often the contact's device rose since the
-        // last frame (a pulse too short to see).
-        let (error, rises) = (c.error.clone(), cell_slot.rises());
-        move || error.clone().or_else(|| rises().map(|n| format!("{n} ↑")))
-    };
+    let forced_here = forced(ctx, c.device.clone());
+    let hover = hover_of(&c, &cell_slot);
     let (on, power, pulse) = (
         cell_slot.on_attr(),
         cell_slot.power_attr(),
@@ -279,6 +253,45 @@ fn Cell(
             <span class="why" data-why=move || ctx.why.shown.with(|w| w.as_ref().and_then(|w| w.role_at(&here())))></span>
         </div>
     }
+}
+
+/// A cell's accessible name: its place, what it is, its live state.
+fn label_of(
+    c: &CellData,
+    number: ArcRwSignal<usize>,
+    slot: super::state::CellSlot,
+) -> impl Fn() -> String + Send + Sync + 'static {
+    let (row, col, words) = (c.row, c.col, cell_words(c));
+    move || {
+        let state = live_words(slot.on.get(), slot.powered.get());
+        let rung = number.get() + 1;
+        format!(
+            "rung {rung}, row {}, column {}: {words}{state}",
+            row + 1,
+            col + 1
+        )
+    }
+}
+
+/// Whether `device` is held from the ladder.
+fn forced(ctx: LadderCtx, device: String) -> impl Fn() -> bool + Clone + Send + Sync + 'static {
+    move || {
+        !device.is_empty()
+            && ctx
+                .live
+                .forced
+                .with(|f| f.iter().any(|(d, _)| *d == device))
+    }
+}
+
+/// A cell's tooltip: its error, else how often its device rose since the
+/// last frame (a pulse too short to see).
+fn hover_of(
+    c: &CellData,
+    slot: &super::state::CellSlot,
+) -> impl Fn() -> Option<String> + Send + Sync + 'static {
+    let (error, rises) = (c.error.clone(), slot.rises());
+    move || error.clone().or_else(|| rises().map(|n| format!("{n} ↑")))
 }
 
 /// A press on a cell: the cursor there (Shift: the selection grows to

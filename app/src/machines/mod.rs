@@ -4,3 +4,58 @@ pub mod arduino;
 pub mod avr;
 pub mod io86a;
 pub mod minasec;
+
+use std::rc::Rc;
+
+use leptos::prelude::*;
+
+use crate::editor::machine::{Linked, MachineLink};
+use crate::editor::Program;
+use crate::sim::Simulator;
+
+/// A machine's simulator and its panel's refresh, as its editor's link.
+pub fn link<M>(
+    sim: StoredValue<Simulator<M>, LocalStorage>,
+    refresh: impl Fn() + Send + Sync + 'static,
+) -> Rc<dyn MachineLink>
+where
+    M: engine::plc::Plc + Clone + 'static,
+    engine::record::Recorded<M>: engine::plc::Plc + engine::record::TimeTravel,
+{
+    Rc::new(Linked {
+        sim,
+        refresh: Callback::new(move |()| refresh()),
+    })
+}
+
+/// The program pane of a workspace whose only state is its text (it
+/// keeps no settings of a project's): loading loads it (`load` says
+/// whether it could) and saves it.
+pub fn text_program(
+    text: RwSignal<String>,
+    load: impl Fn() -> bool + Send + Sync + 'static,
+    save: impl Fn() + Send + Sync + Copy + 'static,
+) -> Program {
+    Program {
+        text,
+        load: Callback::new(move |()| {
+            // Whether it loaded is shown by the pane itself.
+            let _ = load();
+            save();
+        }),
+        save: Callback::new(move |()| save()),
+        settings: Callback::new(|()| Vec::new()),
+        apply_settings: Callback::new(not_applied),
+    }
+}
+
+/// The settings a project brings to a workspace that keeps none of its
+/// own: each is reported, none is dropped silently.
+fn not_applied(settings: Vec<(String, String)>) -> Vec<String> {
+    settings
+        .into_iter()
+        .map(|(name, value)| {
+            format!("{name}={value}: this workspace keeps no settings; not applied.")
+        })
+        .collect()
+}

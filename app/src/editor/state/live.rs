@@ -150,6 +150,12 @@ impl LadderCtx {
                 );
             });
         }
+        self.show_watch(plc);
+    }
+
+    /// Each frame: the watch table's values (a timer's or counter's
+    /// current value and preset in brackets).
+    fn show_watch(&self, plc: &dyn engine::plc::Plc) {
         let values: Vec<String> = self.live.watch.with_untracked(|w| {
             w.iter()
                 .map(|name| {
