@@ -105,6 +105,32 @@ pub fn Momentary(
     }
 }
 
+/// The value a key gives a knob at `v` (arrows a step, Page keys ten,
+/// Home/End the ends); `None` for other keys.
+fn knob_key(key: &str, v: i64, min: i64, max: i64) -> Option<i64> {
+    match key {
+        "ArrowUp" | "ArrowRight" => Some(v + 1),
+        "ArrowDown" | "ArrowLeft" => Some(v - 1),
+        "PageUp" => Some(v + 10),
+        "PageDown" => Some(v - 10),
+        "Home" => Some(min),
+        "End" => Some(max),
+        _ => None,
+    }
+}
+
+/// Keeps the pointer's moves coming to the element pressed while it is
+/// dragged outside it.
+fn capture(e: &ev::PointerEvent) {
+    use leptos::wasm_bindgen::JsCast;
+    if let Some(el) = e
+        .target()
+        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+    {
+        let _ = el.set_pointer_capture(e.pointer_id());
+    }
+}
+
 /// A knob as an ARIA slider: drag up/down, turn the wheel, or use the arrow
 /// keys (Page keys for ten steps, Home/End for the ends).
 #[component]
@@ -147,18 +173,10 @@ pub fn Knob(
             aria-valuenow=move || now(value.get())
             aria-valuetext=move || text.run(value.get())
             on:keydown=move |e: ev::KeyboardEvent| {
-                let v = value.get_untracked();
-                let next = match e.key().as_str() {
-                    "ArrowUp" | "ArrowRight" => v + 1,
-                    "ArrowDown" | "ArrowLeft" => v - 1,
-                    "PageUp" => v + 10,
-                    "PageDown" => v - 10,
-                    "Home" => min,
-                    "End" => max,
-                    _ => return,
-                };
-                e.prevent_default();
-                change(next);
+                if let Some(next) = knob_key(&e.key(), value.get_untracked(), min, max) {
+                    e.prevent_default();
+                    change(next);
+                }
             }
             on:wheel=move |e: ev::WheelEvent| {
                 e.prevent_default();
@@ -166,12 +184,7 @@ pub fn Knob(
             }
             on:pointerdown=move |e: ev::PointerEvent| {
                 drag_from.set_value(Some((e.client_y() as f64, value.get_untracked())));
-                if let Some(target) = e.target() {
-                    use leptos::wasm_bindgen::JsCast;
-                    if let Ok(el) = target.dyn_into::<web_sys::Element>() {
-                        let _ = el.set_pointer_capture(e.pointer_id());
-                    }
-                }
+                capture(&e);
             }
             on:pointermove=move |e: ev::PointerEvent| {
                 if let Some((y0, v0)) = drag_from.get_value() {

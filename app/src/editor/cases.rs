@@ -158,24 +158,53 @@ pub fn run_all(ctx: LadderCtx) {
         .set(results.into_iter().map(Some).collect());
 }
 
+/// Changes case `i` (its result is forgotten) and saves.
+fn edit_case(ctx: LadderCtx, i: usize, f: impl FnOnce(&mut TestCase)) {
+    ctx.cases.tests.update(|tests| {
+        if let Some(c) = tests.get_mut(i) {
+            f(c);
+        }
+    });
+    ctx.cases.results.update(|r| {
+        if let Some(slot) = r.get_mut(i) {
+            *slot = None;
+        }
+    });
+    ctx.save();
+}
+
+/// Deletes case `i` and its result, and saves.
+fn delete_case(ctx: LadderCtx, i: usize) {
+    ctx.cases.tests.update(|v| {
+        if i < v.len() {
+            v.remove(i);
+        }
+    });
+    ctx.cases.results.update(|r| {
+        if i < r.len() {
+            r.remove(i);
+        }
+    });
+    ctx.save();
+}
+
 /// `[data-testid=tests]`.
 #[component]
 pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
+    let cases = move || (0..ctx.cases.tests.with(Vec::len)).collect::<Vec<_>>();
+    view! {
+        <section class="tests-pane" data-testid="tests">
+            <TestsBar ctx />
+            <For each=cases key=|i| *i children=move |i| view! { <CaseView ctx i /> } />
+        </section>
+    }
+}
+
+/// Run, add, record, the exercise flag and the summary.
+#[component]
+fn TestsBar(ctx: LadderCtx) -> impl IntoView {
     let t = move || super::texts::texts(ctx.page.lang.get());
     let recording = RwSignal::new(ctx.recording());
-    let edit = move |i: usize, f: Box<dyn Fn(&mut TestCase)>| {
-        ctx.cases.tests.update(|tests| {
-            if let Some(c) = tests.get_mut(i) {
-                f(c);
-            }
-        });
-        ctx.cases.results.update(|r| {
-            if let Some(slot) = r.get_mut(i) {
-                *slot = None;
-            }
-        });
-        ctx.save();
-    };
     let record = move |_| {
         if ctx.recording() {
             ctx.with_plc(|plc| ctx.stop_recording(plc));
@@ -184,80 +213,91 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
         }
         recording.set(ctx.recording());
     };
-    let cases = move || (0..ctx.cases.tests.with(Vec::len)).collect::<Vec<_>>();
+    let add = move |_| {
+        let n = ctx.cases.tests.with_untracked(Vec::len) + 1;
+        let case = TestCase {
+            name: format!("case {n}"),
+            ..TestCase::default()
+        };
+        ctx.cases.tests.update(|v| v.push(case));
+        ctx.save();
+    };
+    let summary = move || {
+        ctx.cases.results.with(|r| {
+            let pass = r.iter().filter(|x| **x == Some(CaseResult::Pass)).count();
+            let run = r.iter().filter(|x| x.is_some()).count();
+            if run == 0 {
+                String::new()
+            } else {
+                format!("{pass} / {run} {}", t().passed)
+            }
+        })
+    };
     view! {
-        <section class="tests-pane" data-testid="tests">
-            <div class="find-row">
-                <button type="button" data-testid="run-tests" on:click=move |_| run_all(ctx)>{move || t().run_tests}</button>
-                <button type="button" data-testid="add-test" on:click=move |_| {
-                    let n = ctx.cases.tests.with_untracked(Vec::len) + 1;
-                    ctx.cases.tests.update(|v| v.push(TestCase { name: format!("case {n}"), ..TestCase::default() }));
-                    ctx.save();
-                }>{move || t().add_test}</button>
-                <button type="button" data-testid="record-test" aria-pressed=move || recording.get().to_string() on:click=record>
-                    {move || if recording.get() { t().record_stop } else { t().record_start }}
-                </button>
-                <label>
-                    <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.cases.exercise.get()
-                        on:change=move |_| { ctx.cases.exercise.update(|e| *e = !*e); ctx.save(); } />
-                    {move || t().exercise}
+        <div class="find-row">
+            <button type="button" data-testid="run-tests" on:click=move |_| run_all(ctx)>{move || t().run_tests}</button>
+            <button type="button" data-testid="add-test" on:click=add>{move || t().add_test}</button>
+            <button type="button" data-testid="record-test" aria-pressed=move || recording.get().to_string() on:click=record>
+                {move || if recording.get() { t().record_stop } else { t().record_start }}
+            </button>
+            <label>
+                <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.cases.exercise.get()
+                    on:change=move |_| { ctx.cases.exercise.update(|e| *e = !*e); ctx.save(); } />
+                {move || t().exercise}
+            </label>
+            <span data-testid="tests-summary">{summary}</span>
+        </div>
+    }
+}
+
+/// Case `i`: its name, timeline, expectations and last result.
+#[component]
+fn CaseView(ctx: LadderCtx, i: usize) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let case = move || {
+        ctx.cases
+            .tests
+            .with(|v| v.get(i).cloned().unwrap_or_default())
+    };
+    let result = move || ctx.cases.results.with(|r| r.get(i).cloned().flatten());
+    let hook = move || match result() {
+        Some(CaseResult::Pass) => "pass",
+        Some(CaseResult::Fail(_)) => "fail",
+        Some(CaseResult::Error(_)) => "error",
+        None => "",
+    };
+    let said = move || match result() {
+        Some(CaseResult::Pass) => t().test_pass.to_string(),
+        Some(CaseResult::Fail(why)) => format!("{}: {why}", t().test_fail),
+        Some(CaseResult::Error(why)) => why,
+        None => String::new(),
+    };
+    let expectations = |text: String| -> Vec<String> {
+        text.lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .map(String::from)
+            .collect()
+    };
+    view! {
+        <div class="test-case" data-testid=format!("test-case-{i}") data-result=hook>
+            <input class="test-name" data-testid="test-name" prop:value=move || case().name
+                on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.name = v); } />
+            <button type="button" data-testid="test-delete" on:click=move |_| delete_case(ctx, i)>
+                {move || t().delete_test}
+            </button>
+            <div class="test-fields">
+                <label>{move || t().timeline}
+                    <textarea data-testid="test-events" spellcheck="false" prop:value=move || case().events
+                        on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.events = v); } />
                 </label>
-                <span data-testid="tests-summary">{move || {
-                    ctx.cases.results.with(|r| {
-                        let pass = r.iter().filter(|x| **x == Some(CaseResult::Pass)).count();
-                        let run = r.iter().filter(|x| x.is_some()).count();
-                        if run == 0 { String::new() } else { format!("{pass} / {run} {}", t().passed) }
-                    })
-                }}</span>
+                <label>{move || t().expectations}
+                    <textarea data-testid="test-expect" spellcheck="false" prop:value=move || case().expect.join("\n")
+                        on:change=move |e| { let v = expectations(event_target_value(&e)); edit_case(ctx, i, |c| c.expect = v); } />
+                </label>
             </div>
-            <For
-                each=cases
-                key=|i| *i
-                children=move |i| {
-                    let case = move || ctx.cases.tests.with(|v| v.get(i).cloned().unwrap_or_default());
-                    let result = move || ctx.cases.results.with(|r| r.get(i).cloned().flatten());
-                    view! {
-                        <div
-                            class="test-case"
-                            data-testid=format!("test-case-{i}")
-                            data-result=move || match result() {
-                                Some(CaseResult::Pass) => "pass",
-                                Some(CaseResult::Fail(_)) => "fail",
-                                Some(CaseResult::Error(_)) => "error",
-                                None => "",
-                            }
-                        >
-                            <input class="test-name" data-testid="test-name" prop:value=move || case().name
-                                on:change=move |e| { let v = event_target_value(&e); edit(i, Box::new(move |c| c.name = v.clone())); } />
-                            <button type="button" data-testid="test-delete" on:click=move |_| {
-                                ctx.cases.tests.update(|v| { if i < v.len() { v.remove(i); } });
-                                ctx.cases.results.update(|r| { if i < r.len() { r.remove(i); } });
-                                ctx.save();
-                            }>{move || t().delete_test}</button>
-                            <div class="test-fields">
-                                <label>{move || t().timeline}
-                                    <textarea data-testid="test-events" spellcheck="false" prop:value=move || case().events
-                                        on:change=move |e| { let v = event_target_value(&e); edit(i, Box::new(move |c| c.events = v.clone())); } />
-                                </label>
-                                <label>{move || t().expectations}
-                                    <textarea data-testid="test-expect" spellcheck="false" prop:value=move || case().expect.join("\n")
-                                        on:change=move |e| {
-                                            let v = event_target_value(&e);
-                                            edit(i, Box::new(move |c| c.expect = v.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect()));
-                                        } />
-                                </label>
-                            </div>
-                            <div class="test-result" data-testid="test-result">{move || match result() {
-                                Some(CaseResult::Pass) => t().test_pass.to_string(),
-                                Some(CaseResult::Fail(why)) => format!("{}: {why}", t().test_fail),
-                                Some(CaseResult::Error(why)) => why,
-                                None => String::new(),
-                            }}</div>
-                        </div>
-                    }
-                }
-            />
-        </section>
+            <div class="test-result" data-testid="test-result">{said}</div>
+        </div>
     }
 }
 

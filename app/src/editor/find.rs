@@ -9,27 +9,81 @@ use leptos::prelude::*;
 use super::state::LadderCtx;
 use super::texts;
 
+/// Tracks every change of the ladder (the listing and problems both
+/// change with it; the rung list covers rung moves).
+fn track_ladder(ctx: LadderCtx) {
+    ctx.drawing.rungs.track();
+    ctx.drawing.problems.track();
+    ctx.drawing.listing.track();
+}
+
 /// The find pane.
 #[component]
 pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
     let t = move || texts::texts(ctx.page.lang.get());
     let query = RwSignal::new(String::new());
-    let from = RwSignal::new(String::new());
-    let to = RwSignal::new(String::new());
-    // Re-read on every change of the ladder (the listing and problems
-    // both change with it; the rung list covers rung moves).
-    let version = move || {
-        ctx.drawing.rungs.track();
-        ctx.drawing.problems.track();
-        ctx.drawing.listing.track();
+    let pick = Callback::new(move |c: Cursor| {
+        ctx.move_to(c);
+        on_pick.run(());
+    });
+    let close = move || {
+        ctx.panes.find_open.set(false);
+        on_pick.run(());
     };
+    view! {
+        <section class="find-pane" aria-label=move || t().find>
+            <div class="find-row">
+                <label>
+                    {move || t().find}
+                    <input
+                        data-testid="find"
+                        spellcheck="false"
+                        prop:value=move || query.get()
+                        on:input=move |e| query.set(event_target_value(&e))
+                        on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" { close() }
+                    />
+                </label>
+                <button type="button" on:click=move |_| close()>{move || t().close}</button>
+            </div>
+            <FoundList ctx query pick />
+            <h4>{move || t().xref}</h4>
+            <XrefTable ctx query pick />
+            <h4>{move || t().replace}</h4>
+            <ReplaceBox ctx />
+        </section>
+    }
+}
+
+/// Where the text searched for is found: each a button to its cell.
+#[component]
+fn FoundList(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
     let found = move || {
-        version();
+        track_ladder(ctx);
         let q = query.get();
         ctx.with_editor(|e| find(e.ladder(), &q))
     };
+    view! {
+        <ul class="found" data-testid="found">
+            {move || found().into_iter().map(|f| {
+                let at = Cursor::new(f.rung, f.pos.map_or(0, |p| p.row), f.pos.map_or(0, |p| p.col));
+                let what = match f.pos {
+                    Some(p) => format!("{} {}, row {}, column {}", t().rung, f.rung + 1, p.row + 1, p.col + 1),
+                    None => format!("{} {} ({})", t().rung, f.rung + 1, t().rung_comment),
+                };
+                view! { <li><button type="button" on:click=move |_| pick.run(at)>{what}</button></li> }
+            }).collect_view()}
+        </ul>
+    }
+}
+
+/// The cross reference of the device searched for: each use with its
+/// rung and first step.
+#[component]
+fn XrefTable(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
     let uses = move || {
-        version();
+        track_ladder(ctx);
         let q = query.get();
         let steps = ctx.drawing.listing.get();
         ctx.with_editor(|e| {
@@ -45,100 +99,75 @@ pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                 .collect::<Vec<_>>()
         })
     };
+    view! {
+        <table class="xref" data-testid="xref">
+            <tbody>
+                {move || uses().into_iter().map(|(u, step)| {
+                    let role = match u.role {
+                        UseRole::Contact => "contact",
+                        UseRole::Coil => "coil",
+                        UseRole::Box => "box",
+                    };
+                    let at = Cursor::new(u.rung, u.pos.row, u.pos.col);
+                    view! {
+                        <tr>
+                            <td>{role}</td>
+                            <td>{format!("{} {}", t().rung, u.rung + 1)}</td>
+                            <td>{step.map(|s| format!("{} {s}", t().step))}</td>
+                            <td><button type="button" on:click=move |_| pick.run(at)>
+                                {format!("row {}, column {}", u.pos.row + 1, u.pos.col + 1)}
+                            </button></td>
+                        </tr>
+                    }
+                }).collect_view()}
+            </tbody>
+        </table>
+    }
+}
+
+/// Batch replace of devices, with its preview.
+#[component]
+fn ReplaceBox(ctx: LadderCtx) -> impl IntoView {
+    let t = move || texts::texts(ctx.page.lang.get());
+    let from = RwSignal::new(String::new());
+    let to = RwSignal::new(String::new());
     let plan = move || {
-        version();
+        track_ladder(ctx);
         let (f, w) = (from.get(), to.get());
         if f.trim().is_empty() || w.trim().is_empty() {
             return Ok(Vec::new());
         }
         ctx.with_editor(|e| replace_plan(e.ladder(), &f, &w))
     };
-    let pick = move |c: Cursor| {
-        ctx.move_to(c);
-        on_pick.run(());
+    let apply = move || {
+        let edit = Edit::ReplaceDevices {
+            from: from.get_untracked(),
+            to: to.get_untracked(),
+        };
+        if ctx.apply(edit) {
+            from.set(String::new());
+            to.set(String::new());
+        }
     };
     view! {
-        <section class="find-pane" aria-label=move || t().find>
-            <div class="find-row">
-                <label>
-                    {move || t().find}
-                    <input
-                        data-testid="find"
-                        spellcheck="false"
-                        prop:value=move || query.get()
-                        on:input=move |e| query.set(event_target_value(&e))
-                        on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
-                            ctx.panes.find_open.set(false);
-                            on_pick.run(());
-                        }
-                    />
-                </label>
-                <button type="button" on:click=move |_| { ctx.panes.find_open.set(false); on_pick.run(()); }>
-                    {move || t().close}
-                </button>
-            </div>
-            <ul class="found" data-testid="found">
-                {move || found().into_iter().map(|f| {
-                    let at = Cursor::new(f.rung, f.pos.map_or(0, |p| p.row), f.pos.map_or(0, |p| p.col));
-                    let what = match f.pos {
-                        Some(p) => format!("{} {}, row {}, column {}", t().rung, f.rung + 1, p.row + 1, p.col + 1),
-                        None => format!("{} {} ({})", t().rung, f.rung + 1, t().rung_comment),
-                    };
-                    view! { <li><button type="button" on:click=move |_| pick(at)>{what}</button></li> }
-                }).collect_view()}
-            </ul>
-            <h4>{move || t().xref}</h4>
-            <table class="xref" data-testid="xref">
-                <tbody>
-                    {move || uses().into_iter().map(|(u, step)| {
-                        let role = match u.role {
-                            UseRole::Contact => "contact",
-                            UseRole::Coil => "coil",
-                            UseRole::Box => "box",
-                        };
-                        let at = Cursor::new(u.rung, u.pos.row, u.pos.col);
-                        view! {
-                            <tr>
-                                <td>{role}</td>
-                                <td>{format!("{} {}", t().rung, u.rung + 1)}</td>
-                                <td>{step.map(|s| format!("{} {s}", t().step))}</td>
-                                <td><button type="button" on:click=move |_| pick(at)>
-                                    {format!("row {}, column {}", u.pos.row + 1, u.pos.col + 1)}
-                                </button></td>
-                            </tr>
-                        }
-                    }).collect_view()}
-                </tbody>
-            </table>
-            <h4>{move || t().replace}</h4>
-            <div class="find-row">
-                <input data-testid="replace-from" placeholder="X00 / M00-M07" spellcheck="false"
-                    prop:value=move || from.get() on:input=move |e| from.set(event_target_value(&e)) />
-                <span>{move || t().replace_with}</span>
-                <input data-testid="replace-to" placeholder="X03 / M20-M27" spellcheck="false"
-                    prop:value=move || to.get() on:input=move |e| to.set(event_target_value(&e)) />
-                <button
-                    type="button"
-                    data-testid="replace-apply"
-                    disabled=move || !plan().is_ok_and(|p| !p.is_empty())
-                    on:click=move |_| {
-                        if ctx.apply(Edit::ReplaceDevices { from: from.get_untracked(), to: to.get_untracked() }) {
-                            from.set(String::new());
-                            to.set(String::new());
-                        }
-                    }
-                >
-                    {move || t().replace_apply}
-                </button>
-            </div>
-            <ul class="replace-preview" data-testid="replace-preview">
-                {move || match plan() {
-                    Ok(list) => list.into_iter().map(|(rung, pos, was, will)| view! {
-                        <li>{format!("{} {}, row {}, column {}: {was} → {will}", t().rung, rung + 1, pos.row + 1, pos.col + 1)}</li>
-                    }).collect_view().into_any(),
-                    Err(why) => view! { <li class="error">{why.to_string()}</li> }.into_any(),
-                }}
-            </ul>
-        </section>
+        <div class="find-row">
+            <input data-testid="replace-from" placeholder="X00 / M00-M07" spellcheck="false"
+                prop:value=move || from.get() on:input=move |e| from.set(event_target_value(&e)) />
+            <span>{move || t().replace_with}</span>
+            <input data-testid="replace-to" placeholder="X03 / M20-M27" spellcheck="false"
+                prop:value=move || to.get() on:input=move |e| to.set(event_target_value(&e)) />
+            <button type="button" data-testid="replace-apply"
+                disabled=move || !plan().is_ok_and(|p| !p.is_empty()) on:click=move |_| apply()>
+                {move || t().replace_apply}
+            </button>
+        </div>
+        <ul class="replace-preview" data-testid="replace-preview">
+            {move || match plan() {
+                Ok(list) => list.into_iter().map(|(rung, pos, was, will)| view! {
+                    <li>{format!("{} {}, row {}, column {}: {was} → {will}", t().rung, rung + 1, pos.row + 1, pos.col + 1)}</li>
+                }).collect_view().into_any(),
+                Err(why) => view! { <li class="error">{why.to_string()}</li> }.into_any(),
+            }}
+        </ul>
     }
 }

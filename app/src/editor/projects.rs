@@ -254,38 +254,57 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
                 <For
                     each=move || projects.index.get().projects
                     key=|e| e.clone()
-                    children=move |e: Entry| {
-                        let id = e.id;
-                        let is_open = move || ctx.work.project.get() == Some(id) && ctx.page.machine.get() == e.machine;
-                        view! {
-                            <li data-testid=format!("project-{}", e.name) class:open=is_open>
-                                <b>{e.name.clone()}</b> " · " {crate::state::product_name(e.machine)} " "
-                                <button type="button" data-testid="project-open" on:click=move |_| fail(open(projects, ladders, id))>
-                                    {move || t().project_open}
-                                </button>
-                                <button type="button" data-testid="project-rename" on:click=move |_| {
-                                    let n = name.get_untracked();
-                                    if !n.trim().is_empty() {
-                                        projects.rename(id, &n);
-                                        name.set(String::new());
-                                    }
-                                }>{move || t().project_rename}</button>
-                                <button type="button" data-testid="project-duplicate" on:click=move |_| {
-                                    fail(projects.duplicate(id).map(|_| ()));
-                                }>{move || t().project_duplicate}</button>
-                                <button type="button" data-testid="project-delete" on:click=move |_| {
-                                    let open_somewhere = MachineId::ALL.iter().any(|m| ladders.of(*m).work.project.get_untracked() == Some(id));
-                                    if open_somewhere {
-                                        ctx.panes.message.set(Some(t().project_delete_open.to_string()));
-                                    } else {
-                                        projects.delete(id);
-                                    }
-                                }>{move || t().project_delete}</button>
-                            </li>
-                        }
-                    }
+                    children=move |e: Entry| view! { <ProjectRow ctx e name /> }
                 />
             </ul>
         </section>
+    }
+}
+
+/// One project in the list: open, rename (to the name typed), duplicate,
+/// delete (not while it is open in an editor).
+#[component]
+fn ProjectRow(ctx: LadderCtx, e: Entry, name: RwSignal<String>) -> impl IntoView {
+    let t = move || super::texts::texts(ctx.page.lang.get());
+    let projects = expect_context::<Projects>();
+    let ladders = expect_context::<Ladders>();
+    let fail = move |r: Result<(), String>| {
+        if let Err(e) = r {
+            ctx.panes.message.set(Some(e));
+        }
+    };
+    let id = e.id;
+    let is_open = move || ctx.work.project.get() == Some(id) && ctx.page.machine.get() == e.machine;
+    let rename = move |_| {
+        let n = name.get_untracked();
+        if !n.trim().is_empty() {
+            projects.rename(id, &n);
+            name.set(String::new());
+        }
+    };
+    let delete = move |_| {
+        let open_somewhere = MachineId::ALL
+            .iter()
+            .any(|m| ladders.of(*m).work.project.get_untracked() == Some(id));
+        if open_somewhere {
+            ctx.panes
+                .message
+                .set(Some(t().project_delete_open.to_string()));
+        } else {
+            projects.delete(id);
+        }
+    };
+    view! {
+        <li data-testid=format!("project-{}", e.name) class:open=is_open>
+            <b>{e.name.clone()}</b> " · " {crate::state::product_name(e.machine)} " "
+            <button type="button" data-testid="project-open" on:click=move |_| fail(open(projects, ladders, id))>
+                {move || t().project_open}
+            </button>
+            <button type="button" data-testid="project-rename" on:click=rename>{move || t().project_rename}</button>
+            <button type="button" data-testid="project-duplicate" on:click=move |_| {
+                fail(projects.duplicate(id).map(|_| ()));
+            }>{move || t().project_duplicate}</button>
+            <button type="button" data-testid="project-delete" on:click=delete>{move || t().project_delete}</button>
+        </li>
     }
 }

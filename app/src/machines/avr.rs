@@ -182,40 +182,7 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
                         <For
                             each=move || avr.bits.get()
                             key=|b| (b.name.clone(), b.bit.register, b.bit.bit)
-                            children=move |b: NamedBit| {
-                                let NamedBit { name, bit, device, value, driven } = b;
-                                let drive = move |on: Option<bool>| {
-                                    driven.set(on);
-                                    avr.drive(device, on);
-                                };
-                                view! {
-                                    <tr>
-                                        <td class="bit-name">{name.clone()}</td>
-                                        <td class="bit-ref">{bit.to_string()}</td>
-                                        <td>
-                                            <Led
-                                                on=value
-                                                testid=format!("avr-lamp-{name}")
-                                                colour="amber"
-                                                label=name.clone()
-                                            />
-                                        </td>
-                                        <td>
-                                            <button
-                                                type="button"
-                                                class="input-switch small"
-                                                class:on=move || driven.get() == Some(true)
-                                                data-testid=format!("avr-input-{name}")
-                                                aria-pressed=move || (driven.get() == Some(true)).to_string()
-                                                title=move || t().drive
-                                                on:click=move |_| drive(Some(driven.get_untracked() != Some(true)))
-                                            >
-                                                {move || t().drive}
-                                            </button>
-                                        </td>
-                                    </tr>
-                                }
-                            }
+                            children=move |b: NamedBit| view! { <BitRow avr b /> }
                         />
                     </tbody>
                 </table>
@@ -239,5 +206,45 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
                 />
             </div>
         </main>
+    }
+}
+
+/// One named bit: its lamp and the switch that drives it.
+#[component]
+fn BitRow(avr: AvrCtx, b: NamedBit) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let NamedBit {
+        name,
+        bit,
+        device,
+        value,
+        driven,
+    } = b;
+    let drive = move |on: Option<bool>| {
+        driven.set(on);
+        avr.drive(device, on);
+    };
+    view! {
+        <tr>
+            <td class="bit-name">{name.clone()}</td>
+            <td class="bit-ref">{bit.to_string()}</td>
+            <td>
+                <Led on=value testid=format!("avr-lamp-{name}") colour="amber" label=name.clone() />
+            </td>
+            <td>
+                <button
+                    type="button"
+                    class="input-switch small"
+                    class:on=move || driven.get() == Some(true)
+                    data-testid=format!("avr-input-{name}")
+                    aria-pressed=move || (driven.get() == Some(true)).to_string()
+                    title=move || t().drive
+                    on:click=move |_| drive(Some(driven.get_untracked() != Some(true)))
+                >
+                    {move || t().drive}
+                </button>
+            </td>
+        </tr>
     }
 }

@@ -8,6 +8,7 @@ use super::Parsed;
 use crate::machines::minasec::MinasecCtx;
 use crate::state::Ctx;
 
+/// MINASEC-U's program pane.
 #[component]
 pub fn ProgramPane() -> impl IntoView {
     let ctx = Ctx::get();
@@ -18,53 +19,15 @@ pub fn ProgramPane() -> impl IntoView {
         Parsed::Good(_) => Vec::new(),
         Parsed::Bad(errors) => errors,
     });
-    let gutter_scroll = RwSignal::new(0);
-    let line_count = Memo::new(move |_| board.text.with(|t| t.lines().count().max(1)));
     let up_to_date = move || {
         board
             .loaded
             .with(|l| l.as_deref() == Some(board.text.get().as_str()))
     };
-
     view! {
         <section class="program">
             <h2>{move || t().program}</h2>
-            <div class="editor">
-                <pre class="gutter" aria-hidden="true" prop:scrollTop=move || gutter_scroll.get()>
-                    {move || {
-                        let bad: Vec<usize> = errors.get().iter().map(|e| e.0).collect();
-                        (1..=line_count.get())
-                            .map(|n| {
-                                let err = bad.contains(&n);
-                                view! {
-                                    <span class="ln" class:err=err>
-                                        {format!("{n:>3}\n")}
-                                    </span>
-                                }
-                            })
-                            .collect_view()
-                    }}
-                </pre>
-                <textarea
-                    data-testid="program-text"
-                    spellcheck="false"
-                    aria-label=move || t().program
-                    prop:value=move || board.text.get()
-                    on:input=move |e| {
-                        board.text.set(event_target_value(&e));
-                        board.save();
-                    }
-                    on:scroll=move |e| {
-                        use leptos::wasm_bindgen::JsCast;
-                        if let Some(el) = e
-                            .target()
-                            .and_then(|t| t.dyn_into::<web_sys::HtmlElement>().ok())
-                        {
-                            gutter_scroll.set(el.scroll_top());
-                        }
-                    }
-                ></textarea>
-            </div>
+            <TextWithLines board errors />
             <div class="program-actions">
                 <button
                     type="button"
@@ -81,29 +44,80 @@ pub fn ProgramPane() -> impl IntoView {
                     {move || if up_to_date() { t().loaded } else { t().not_loaded }}
                 </span>
             </div>
-            <div
-                class="errors"
-                data-testid="program-error"
-                role="status"
-                aria-live="polite"
-                class:has-errors=move || !errors.get().is_empty()
-            >
-                <Show when=move || !errors.get().is_empty() fallback=move || t().errors_none>
-                    <ul>
-                        <For
-                            each=move || errors.get()
-                            key=|(line, message)| (*line, message.clone())
-                            children=move |(line, message)| {
-                                view! {
-                                    <li>{move || format!("{} {line}: {message}", t().line)}</li>
-                                }
-                            }
-                        />
-                    </ul>
-                </Show>
-            </div>
+            <ErrorList errors />
             <Sheet parsed=parsed />
         </section>
+    }
+}
+
+/// The text with its line numbers, the lines in error marked.
+#[component]
+fn TextWithLines(board: MinasecCtx, errors: Memo<Vec<(usize, String)>>) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let gutter_scroll = RwSignal::new(0);
+    let line_count = Memo::new(move |_| board.text.with(|t| t.lines().count().max(1)));
+    view! {
+        <div class="editor">
+            <pre class="gutter" aria-hidden="true" prop:scrollTop=move || gutter_scroll.get()>
+                {move || {
+                    let bad: Vec<usize> = errors.get().iter().map(|e| e.0).collect();
+                    (1..=line_count.get())
+                        .map(|n| {
+                            let err = bad.contains(&n);
+                            view! { <span class="ln" class:err=err>{format!("{n:>3}\n")}</span> }
+                        })
+                        .collect_view()
+                }}
+            </pre>
+            <textarea
+                data-testid="program-text"
+                spellcheck="false"
+                aria-label=move || t().program
+                prop:value=move || board.text.get()
+                on:input=move |e| {
+                    board.text.set(event_target_value(&e));
+                    board.save();
+                }
+                on:scroll=move |e| {
+                    use leptos::wasm_bindgen::JsCast;
+                    if let Some(el) = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<web_sys::HtmlElement>().ok())
+                    {
+                        gutter_scroll.set(el.scroll_top());
+                    }
+                }
+            ></textarea>
+        </div>
+    }
+}
+
+/// The errors by line, or "no errors".
+#[component]
+fn ErrorList(errors: Memo<Vec<(usize, String)>>) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <div
+            class="errors"
+            data-testid="program-error"
+            role="status"
+            aria-live="polite"
+            class:has-errors=move || !errors.get().is_empty()
+        >
+            <Show when=move || !errors.get().is_empty() fallback=move || t().errors_none>
+                <ul>
+                    <For
+                        each=move || errors.get()
+                        key=|(line, message)| (*line, message.clone())
+                        children=move |(line, message)| {
+                            view! { <li>{move || format!("{} {line}: {message}", t().line)}</li> }
+                        }
+                    />
+                </ul>
+            </Show>
+        </div>
     }
 }
 
