@@ -107,7 +107,7 @@ pub fn LoadAsLadder() -> impl IntoView {
                     ladder.panes.message.set(result.err());
                 }
             >
-                {move || crate::editor::texts::texts(ctx.lang.get()).load_as_ladder}
+                {move || ctx.lang.get().texts().load_as_ladder}
             </button>
         }
     })

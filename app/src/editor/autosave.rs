@@ -109,7 +109,7 @@ impl Autosave {
 /// choices), or a storage that refuses (the project file offered).
 #[component]
 pub fn StorageBanner(ctx: super::LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let projects = use_context::<super::projects::Projects>();
     let trouble = move || match ctx.work.saving.trouble.get() {
         Some(StorageFault::Full) => Some(t().storage_full),

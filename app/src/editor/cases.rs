@@ -145,7 +145,7 @@ impl Recorder {
 /// Runs every case of `ctx`'s project and shows the results.
 pub fn run_all(ctx: LadderCtx) {
     let Some(listing) = ctx.drawing.listing.get_untracked() else {
-        let t = super::texts::texts(ctx.page.lang.get_untracked());
+        let t = ctx.page.lang.get_untracked().texts();
         ctx.panes
             .message
             .set(Some(t.tests_need_compile.to_string()));
@@ -203,7 +203,7 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
 /// Run, add, record, the exercise flag and the summary.
 #[component]
 fn TestsBar(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let recording = RwSignal::new(ctx.recording());
     let record = move |_| {
         if ctx.recording() {
@@ -253,7 +253,7 @@ fn TestsBar(ctx: LadderCtx) -> impl IntoView {
 /// Case `i`: its name, timeline, expectations and last result.
 #[component]
 fn CaseView(ctx: LadderCtx, i: usize) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let case = move || {
         ctx.cases
             .tests

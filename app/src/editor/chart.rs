@@ -131,7 +131,7 @@ fn default_devices(ctx: LadderCtx) -> Vec<String> {
 
 /// The word "scan" in the page's language.
 fn t_scan(ctx: LadderCtx) -> &'static str {
-    super::texts::texts(ctx.page.lang.get_untracked()).scan
+    ctx.page.lang.get_untracked().texts().scan
 }
 
 /// The chart's state; `Copy`.
@@ -308,7 +308,7 @@ fn csv_of(d: &ChartData) -> String {
 /// The chart.
 #[component]
 pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let chart = Chart::new(ctx);
     // Redrawn when the recording moved on (at most every 250 ms while
     // running), the view moved, or the devices changed. An edit redraws at
@@ -337,7 +337,7 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
 /// Adding a device, zoom, pan, follow, export.
 #[component]
 fn ChartTools(chart: Chart) -> impl IntoView {
-    let t = move || super::texts::texts(chart.ctx.page.lang.get());
+    let t = move || chart.ctx.page.lang.get().texts();
     view! {
         <div class="find-row">
             <input data-testid="chart-add" placeholder=move || t().chart_add spellcheck="false"
@@ -429,7 +429,7 @@ fn ChartAxis(chart: Chart) -> impl IntoView {
 /// Each device's value at the scan shown or clicked.
 #[component]
 fn ChartValues(chart: Chart) -> impl IntoView {
-    let t = move || super::texts::texts(chart.ctx.page.lang.get());
+    let t = move || chart.ctx.page.lang.get().texts();
     view! {
         <table class="chart-values" data-testid="chart-cursor">
             <tbody>

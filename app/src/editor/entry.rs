@@ -8,7 +8,6 @@ use engine::ladder::edit::{complete, EntryKind};
 use leptos::prelude::*;
 
 use super::state::LadderCtx;
-use super::texts;
 
 /// The most completions listed.
 const SHOWN: usize = 12;
@@ -28,7 +27,7 @@ pub fn completed(text: &str, chosen: &str) -> String {
 #[component]
 pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
     let input = NodeRef::<leptos::html::Input>::new();
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let open = move || ctx.panes.entry.with(Option::is_some);
     // Focus the input each time the entry opens.
     Effect::new(move |_| {
@@ -108,7 +107,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
 }
 
 /// The entry's title: what it places, as a branch or not, on which rung.
-fn title_of(e: &super::state::EntryState, t: &texts::EditorTexts) -> String {
+fn title_of(e: &super::state::EntryState, t: &crate::i18n::Texts) -> String {
     let what = match e.kind {
         EntryKind::Open => t.entry_open,
         EntryKind::Closed => t.entry_closed,

@@ -150,7 +150,7 @@ pub fn save_project_file(ctx: LadderCtx) {
 /// The file buttons.
 #[component]
 pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
     let pending = RwSignal::new(None::<super::import::Pending>);
     let on_file = move |e: web_sys::Event| {

@@ -7,7 +7,6 @@ use engine::ladder::edit::{find, replace_plan, xref, Cursor, Edit, UseRole};
 use leptos::prelude::*;
 
 use super::state::LadderCtx;
-use super::texts;
 
 /// Tracks every change of the ladder (the listing and problems both
 /// change with it; the rung list covers rung moves).
@@ -20,7 +19,7 @@ fn track_ladder(ctx: LadderCtx) {
 /// The find pane.
 #[component]
 pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let query = RwSignal::new(String::new());
     let pick = Callback::new(move |c: Cursor| {
         ctx.move_to(c);
@@ -57,7 +56,7 @@ pub fn FindPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
 /// Where the text searched for is found: each a button to its cell.
 #[component]
 fn FoundList(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let found = move || {
         track_ladder(ctx);
         let q = query.get();
@@ -81,7 +80,7 @@ fn FoundList(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) ->
 /// rung and first step.
 #[component]
 fn XrefTable(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let uses = move || {
         track_ladder(ctx);
         let q = query.get();
@@ -128,7 +127,7 @@ fn XrefTable(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) ->
 /// Batch replace of devices, with its preview.
 #[component]
 fn ReplaceBox(ctx: LadderCtx) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let from = RwSignal::new(String::new());
     let to = RwSignal::new(String::new());
     let plan = move || {

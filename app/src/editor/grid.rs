@@ -9,7 +9,6 @@ use leptos::prelude::*;
 use super::model::{cell_class, cell_words, live_words, within, CellData, RungData};
 use super::palette;
 use super::state::{LadderCtx, RungView};
-use super::texts;
 
 /// The focusable grid, `[data-testid=ladder]`.
 #[component]
@@ -54,7 +53,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
             data-testid="ladder"
             role="grid"
             tabindex="0"
-            aria-label=move || texts::texts(ctx.page.lang.get()).ladder
+            aria-label=move || ctx.page.lang.get().texts().ladder
             aria-multiselectable="true"
             on:keydown=on_key
         >
@@ -122,7 +121,7 @@ fn RungRows(
             )
         }
     };
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let (n1, n2, n3) = (number.clone(), number.clone(), number.clone());
     let first = r.first_step.clone();
     let first2 = r.first_step.clone();
@@ -323,7 +322,7 @@ fn EndLine(ctx: LadderCtx, selected: Selector<Cursor>) -> impl IntoView {
     view! {
     <div class="rung end" role="rowgroup" data-testid="end-line">
         <div class="rung-head">
-            <span class="rung-num">{move || texts::texts(ctx.page.lang.get()).end}</span>
+            <span class="rung-num">{move || ctx.page.lang.get().texts().end}</span>
         </div>
         <div
             class="rung-grid"

@@ -121,7 +121,7 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
 /// The dialog.
 #[component]
 pub fn ImportDialog(ctx: LadderCtx, shown: RwSignal<Option<Pending>>) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let apply = move |_| {
         if let Some(p) = shown.get_untracked() {
             shown.set(attempt(ctx, p, false));

@@ -16,7 +16,7 @@ use super::LadderCtx;
 /// time going); whether it could (else the problems are said). Write to
 /// PLC is the same action.
 pub fn run_drawing(ctx: LadderCtx) -> bool {
-    let t = super::texts::texts(ctx.page.lang.get_untracked());
+    let t = ctx.page.lang.get_untracked().texts();
     if !ctx.write_drawing() {
         ctx.panes
             .message
@@ -40,7 +40,7 @@ pub fn run_action(ctx: LadderCtx) -> impl Fn() -> bool + Copy {
 /// The run and step buttons.
 #[component]
 pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let kind = ctx.machine;
     let operate = move |f: &dyn Fn(&mut dyn engine::plc::Plc)| ctx.operate(f);
     // The AVR PLC has no RUN/STOP switch: it runs whenever powered, so
@@ -90,7 +90,7 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
     view! {
         <span class="run-bar">
             <button type="button" data-testid="run" aria-pressed=move || runs_drawing().to_string()
-                on:click=run>{move || if runs_drawing() { t().stop } else { t().run }}</button>
+                on:click=run>{move || if runs_drawing() { t().stop } else { t().run_drawing }}</button>
             <button type="button" data-testid="step-scan" on:click=move |_| step(0)>{move || t().step_scan}</button>
             <button type="button" data-testid="step-instr" on:click=move |_| step(1)>{move || t().step_instr}</button>
             {(kind == MachineId::MinasecU).then(|| view! {
@@ -110,7 +110,7 @@ pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
 /// timer's or counter's current value in brackets).
 #[component]
 pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let name = RwSignal::new(String::new());
     let names = device_names(ctx.machine);
     let add = move || {
@@ -163,7 +163,7 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
 /// device, when the machine takes it as an input, toggles (held until
 /// released from the force list); with Shift it is on for one scan.
 pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
-    let t = super::texts::texts(ctx.page.lang.get_untracked());
+    let t = ctx.page.lang.get_untracked().texts();
     let mut refused = None;
     let mut held = None;
     ctx.operate(|plc| {
@@ -206,7 +206,7 @@ pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
 /// its value and a release.
 #[component]
 pub fn ForceList(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let release = move |device: String| {
         ctx.operate(|plc| {
             if let Ok(d) = plc.device(&device) {

@@ -30,7 +30,7 @@ pub mod shared;
 pub mod side;
 pub mod state;
 pub mod store;
-pub mod texts;
+
 pub mod travel;
 pub mod why;
 
@@ -81,7 +81,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
     });
     let grid = NodeRef::<leptos::html::Div>::new();
     let refocus = Callback::new(move |()| grid::focus(grid));
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     clipboard_events(ctx);
     view! {
         <section class="ladder-editor" data-machine=ctx.machine.name()>
@@ -143,7 +143,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
 /// New, undo, redo, write to the machine, find, keys, copy elsewhere.
 #[component]
 fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
     let run_drawing = live::run_action(ctx);
     let others: Vec<MachineId> = MachineId::ALL
@@ -166,7 +166,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                     if run_drawing() {
                         ctx.panes.message.set(Some(t().written.to_string()));
                     }
-                }>{move || t().write}</button>
+                }>{move || t().write_plc}</button>
             <shared::ShareButton ctx />
             <files::FileButtons ctx />
             <button type="button" data-testid="tests-open" on:click=move |_| ctx.panes.tests_open.update(|f| *f = !*f)>
@@ -204,7 +204,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
 /// The cursor's rung comment and its device's comment, edited in place.
 #[component]
 fn CommentBar(ctx: LadderCtx) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let rung_comment = move || {
         ctx.drawing.rungs.track();
         let rung = ctx.drawing.cursor.get().rung;

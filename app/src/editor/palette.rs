@@ -11,7 +11,6 @@ use leptos::prelude::*;
 use super::cell_kind::CellKind;
 use super::keys::Action;
 use super::state::LadderCtx;
-use super::texts;
 
 /// What a palette item does.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -189,7 +188,7 @@ pub fn activate(ctx: LadderCtx, id: &str) {
 /// The palette beside the ladder.
 #[component]
 pub fn Palette(ctx: LadderCtx, on_done: Callback<()>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let buttons = items(ctx.machine)
         .into_iter()
         .map(|i| {

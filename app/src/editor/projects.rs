@@ -204,7 +204,7 @@ pub fn open(projects: Projects, ladders: Ladders, id: u64) -> Result<(), String>
 /// `[data-testid=projects]`: the list and what can be done to each.
 #[component]
 pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let projects = expect_context::<Projects>();
     let ladders = expect_context::<Ladders>();
     let name = RwSignal::new(String::new());
@@ -265,7 +265,7 @@ pub fn ProjectsPane(ctx: LadderCtx) -> impl IntoView {
 /// delete (not while it is open in an editor).
 #[component]
 fn ProjectRow(ctx: LadderCtx, e: Entry, name: RwSignal<String>) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let projects = expect_context::<Projects>();
     let ladders = expect_context::<Ladders>();
     let fail = move |r: Result<(), String>| {

@@ -55,7 +55,7 @@ pub fn open_fragment(page: Ctx, ladders: Ladders, fragment: &str) {
             ladders.of(project.machine).show_shared(project);
         }
         Err(e) => {
-            let texts = super::texts::texts(page.lang.get_untracked());
+            let texts = page.lang.get_untracked().texts();
             page.notice
                 .set(Some(format!("{} {e}", texts.shared_broken)));
         }
@@ -86,7 +86,7 @@ pub fn project_of(ctx: LadderCtx) -> Project {
 /// The Share button and the link it made.
 #[component]
 pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let url = RwSignal::new(None::<String>);
     let share = move |_| match share::encode(&project_of(ctx)) {
         Ok(fragment) => {
@@ -124,7 +124,7 @@ pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
 /// The banner over a shared project: keep it, or go back to your own.
 #[component]
 pub fn SharedBanner(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     view! {
         <Show when=move || ctx.work.shared.get()>
             <div class="shared-banner" role="status" data-testid="shared-banner">

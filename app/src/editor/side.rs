@@ -6,12 +6,11 @@ use engine::ladder::edit::Cursor;
 use leptos::prelude::*;
 
 use super::state::LadderCtx;
-use super::texts;
 
 /// `[data-testid=il-listing]`.
 #[component]
 pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     // The steps of the cursor's rung.
     let chosen = Memo::new(move |_| {
         let rung = ctx.drawing.cursor.get().rung;
@@ -73,7 +72,7 @@ pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
 /// `[data-testid=problems]`.
 #[component]
 pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
-    let t = move || texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     view! {
         <section class="problems-pane">
             <h3>{move || t().problems}</h3>

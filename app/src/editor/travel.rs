@@ -135,7 +135,7 @@ fn now_ms() -> f64 {
 /// Resume from here, and the break condition.
 #[component]
 pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let s = ctx.travel;
     let at = move || s.shown.get().unwrap_or(s.marks.get().1);
     let label = move || {

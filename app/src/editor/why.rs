@@ -209,7 +209,7 @@ fn outputs(ladder: &engine::ladder::Ladder, device: &str) -> Vec<(usize, Pos)> {
 /// The Why? button and the explanation: `[data-testid=why-panel]`.
 #[component]
 pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let ask = move || {
         ctx.why.shown.set(explain(ctx));
         ctx.why.stale.set(false);
@@ -253,7 +253,7 @@ pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
 }
 
 fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
-    let t = move || super::texts::texts(ctx.page.lang.get());
+    let t = move || ctx.page.lang.get().texts();
     let device = c.device.clone().map(|(d, _)| d).unwrap_or_default();
     let state = c.device.as_ref().map(|(d, v)| format!(" · {d} = {v}"));
     let changed = c.changed;

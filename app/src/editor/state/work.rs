@@ -57,7 +57,7 @@ impl LadderCtx {
         if !self.work.shared.get_untracked() {
             return;
         }
-        let texts = crate::editor::texts::texts(self.page.lang.get_untracked());
+        let texts = self.page.lang.get_untracked().texts();
         // It becomes a project of its own; the ladder before stays where
         // it was saved, untouched.
         let made = projects.and_then(|p| {
@@ -194,7 +194,7 @@ impl LadderCtx {
     /// "Keep mine as a copy": this tab's work becomes a project of its own,
     /// opened here; the other tab's work stays where it was saved.
     pub fn keep_mine(&self, projects: crate::editor::projects::Projects) {
-        let texts = crate::editor::texts::texts(self.page.lang.get_untracked());
+        let texts = self.page.lang.get_untracked().texts();
         let from = self.work.project.get_untracked().and_then(|id| {
             projects.index.with_untracked(|i| {
                 i.projects

@@ -1,0 +1,260 @@
+//! The interface's two languages. Every visible string comes from here:
+//! one table, [`Texts`], in English ([`en`]) and Japanese ([`ja`]).
+
+mod en;
+mod ja;
+
+use en::EN;
+use ja::JA;
+
+/// A language of the interface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lang {
+    /// 日本語.
+    Ja,
+    /// English.
+    En,
+}
+
+impl Lang {
+    /// The code used in the `lang` select and in storage.
+    pub const fn code(self) -> &'static str {
+        match self {
+            Lang::Ja => "ja",
+            Lang::En => "en",
+        }
+    }
+
+    /// The language for a code; `None` for any other.
+    pub fn from_code(code: &str) -> Option<Lang> {
+        match code {
+            "ja" => Some(Lang::Ja),
+            "en" => Some(Lang::En),
+            _ => None,
+        }
+    }
+
+    /// The default for a browser language tag (`ja-JP` → Japanese).
+    pub fn from_browser(tag: &str) -> Lang {
+        if tag.to_ascii_lowercase().starts_with("ja") {
+            Lang::Ja
+        } else {
+            Lang::En
+        }
+    }
+
+    /// This language's strings.
+    pub const fn texts(self) -> &'static Texts {
+        match self {
+            Lang::Ja => &JA,
+            Lang::En => &EN,
+        }
+    }
+}
+
+/// Every string the interface shows: the page and its machines first,
+/// then the ladder editor's.
+pub struct Texts {
+    pub title: &'static str,
+    pub language: &'static str,
+    pub example: &'static str,
+    pub example_none: &'static str,
+    pub example_seed: &'static str,
+    pub undo_open: &'static str,
+    pub speed: &'static str,
+    pub speed_max: &'static str,
+    pub pause: &'static str,
+    pub resume: &'static str,
+    pub power: &'static str,
+    pub run: &'static str,
+    pub halt: &'static str,
+    pub reset: &'static str,
+    pub slow: &'static str,
+    pub fast: &'static str,
+    pub clock: &'static str,
+    pub write: &'static str,
+    pub count_clear: &'static str,
+    pub pc: &'static str,
+    pub instruction: &'static str,
+    pub accumulator: &'static str,
+    pub inputs: &'static str,
+    pub outputs: &'static str,
+    pub counter: &'static str,
+    pub counter_set: &'static str,
+    pub tens: &'static str,
+    pub ones: &'static str,
+    pub dip: &'static str,
+    pub timer: &'static str,
+    pub seconds: &'static str,
+    pub program: &'static str,
+    pub load: &'static str,
+    pub loaded: &'static str,
+    pub not_loaded: &'static str,
+    pub errors_none: &'static str,
+    pub line: &'static str,
+    pub sheet: &'static str,
+    pub sheet_address: &'static str,
+    pub sheet_opcode: &'static str,
+    pub sheet_operand: &'static str,
+    pub sheet_binary: &'static str,
+    pub corrupt_saved: &'static str,
+    pub storage_unavailable: &'static str,
+    pub crashed: &'static str,
+    pub sim_time: &'static str,
+    pub scans: &'static str,
+    /// The machine's state in the header's clock.
+    pub state_running: &'static str,
+    pub state_paused: &'static str,
+    pub state_stopped: &'static str,
+    pub machine: &'static str,
+    pub title_io86a: &'static str,
+    pub title_arduino: &'static str,
+    pub title_avr: &'static str,
+    pub terminal: &'static str,
+    pub terminal_hint: &'static str,
+    pub ctrl_c: &'static str,
+    pub two_devices: &'static str,
+    pub device_a: &'static str,
+    pub device_b: &'static str,
+    pub ir_remote: &'static str,
+    pub analog_in: &'static str,
+    pub servo: &'static str,
+    pub pwm: &'static str,
+    pub running: &'static str,
+    pub stopped: &'static str,
+    pub monitor: &'static str,
+    pub monitor_hint: &'static str,
+    pub enabled: &'static str,
+    pub disabled: &'static str,
+    pub quirk_sketch: &'static str,
+    pub warn_spin: &'static str,
+    pub warn_tof: &'static str,
+    pub bits: &'static str,
+    pub drive: &'static str,
+    // The ladder editor.
+    pub ladder: &'static str,
+    pub new_ladder: &'static str,
+    pub undo: &'static str,
+    pub redo: &'static str,
+    pub write_plc: &'static str,
+    /// Said when Write to PLC has written the drawing and started it.
+    pub written: &'static str,
+    pub keys: &'static str,
+    pub find: &'static str,
+    pub listing: &'static str,
+    pub listing_none: &'static str,
+    pub problems: &'static str,
+    pub problems_none: &'static str,
+    pub palette: &'static str,
+    pub rung: &'static str,
+    pub step: &'static str,
+    pub end: &'static str,
+    pub load_as_ladder: &'static str,
+    pub entry_open: &'static str,
+    pub entry_closed: &'static str,
+    pub entry_coil: &'static str,
+    pub entry_instruction: &'static str,
+    pub entry_branch: &'static str,
+    pub cancel: &'static str,
+    /// Commits the device entry (for touch, where no Return key shows).
+    pub ok: &'static str,
+    pub replace: &'static str,
+    pub replace_with: &'static str,
+    pub replace_apply: &'static str,
+    pub xref: &'static str,
+    pub copy_to: &'static str,
+    pub device_comment: &'static str,
+    pub rung_comment: &'static str,
+    pub close: &'static str,
+    pub share: &'static str,
+    pub shared_note: &'static str,
+    pub shared_keep: &'static str,
+    pub shared_back: &'static str,
+    pub shared_broken: &'static str,
+    pub shared_kept: &'static str,
+    /// Another tab saved newer work over this tab's own.
+    pub conflict_note: &'static str,
+    pub conflict_theirs: &'static str,
+    pub conflict_mine: &'static str,
+    /// Said when this tab's work was kept as a project of its own.
+    pub conflict_kept: &'static str,
+    /// The name of that project, after the one it came from.
+    pub conflict_copy: &'static str,
+    /// The storage is full or blocked: the work is only in the page.
+    pub storage_full: &'static str,
+    pub storage_blocked: &'static str,
+    pub save_json: &'static str,
+    pub open_file: &'static str,
+    pub export_text: &'static str,
+    pub print: &'static str,
+    pub projects: &'static str,
+    pub project_default: &'static str,
+    pub project_name: &'static str,
+    pub project_untitled: &'static str,
+    pub project_new: &'static str,
+    pub project_save_as: &'static str,
+    pub project_open: &'static str,
+    pub project_rename: &'static str,
+    pub project_duplicate: &'static str,
+    pub project_delete: &'static str,
+    pub project_undo_delete: &'static str,
+    pub project_delete_open: &'static str,
+    pub shared_project: &'static str,
+    pub tests: &'static str,
+    pub run_tests: &'static str,
+    pub add_test: &'static str,
+    pub record_start: &'static str,
+    pub record_stop: &'static str,
+    pub exercise: &'static str,
+    pub passed: &'static str,
+    pub delete_test: &'static str,
+    pub timeline: &'static str,
+    pub expectations: &'static str,
+    pub test_pass: &'static str,
+    pub test_fail: &'static str,
+    pub tests_need_compile: &'static str,
+    /// The drawing has errors, so it is not what the machine runs.
+    pub not_written: &'static str,
+    pub run_drawing: &'static str,
+    /// Stops the machine running the drawing.
+    pub stop: &'static str,
+    pub step_scan: &'static str,
+    pub step_instr: &'static str,
+    pub step_clock: &'static str,
+    pub import_title: &'static str,
+    pub import_pou: &'static str,
+    pub import_pou_tasks: &'static str,
+    pub import_variable: &'static str,
+    pub import_device: &'static str,
+    pub import_apply: &'static str,
+    pub scan: &'static str,
+    pub kept_from: &'static str,
+    pub live: &'static str,
+    pub step_back: &'static str,
+    pub step_forward: &'static str,
+    pub resume_here: &'static str,
+    pub break_on: &'static str,
+    pub break_hit: &'static str,
+    pub why: &'static str,
+    pub why_off: &'static str,
+    pub why_on: &'static str,
+    pub why_any: &'static str,
+    pub why_all: &'static str,
+    pub why_changed: &'static str,
+    pub why_unchanged: &'static str,
+    pub why_driven_by: &'static str,
+    pub why_input: &'static str,
+    pub why_none: &'static str,
+    pub chart: &'static str,
+    pub chart_add: &'static str,
+    pub chart_follow: &'static str,
+    pub chart_export: &'static str,
+    pub zoom_in: &'static str,
+    pub zoom_out: &'static str,
+    pub pan_left: &'static str,
+    pub pan_right: &'static str,
+    pub watch: &'static str,
+    pub forces: &'static str,
+    pub release: &'static str,
+    pub not_an_input: &'static str,
+}
