@@ -8,6 +8,7 @@ TRUNK_VERSION=0.21.14
 WASM_BINDGEN_VERSION=0.2.130 # must equal the wasm-bindgen pin in app/Cargo.toml
 WASM_PACK_VERSION=0.15.1
 BINARYEN_VERSION=132.0.0
+AXE_VERSION=4.11.0
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 export PATH="$HOME/.cargo/bin:$root/.tools/node_modules/.bin:$PATH"
@@ -43,6 +44,13 @@ if ! has_version wasm-opt "version $BINARYEN_VERSION" && ! has_version wasm-opt 
   say "installing binaryen $BINARYEN_VERSION from npm into .tools/"
   mkdir -p "$root/.tools"
   npm install --prefix "$root/.tools" --no-audit --no-fund "binaryen@$BINARYEN_VERSION" >&2
+fi
+
+# axe-core: the accessibility checks of the end-to-end tests (issue #27).
+if [ ! -f "$root/.tools/node_modules/axe-core/axe.min.js" ]; then
+  say "installing axe-core $AXE_VERSION from npm into .tools/"
+  mkdir -p "$root/.tools"
+  npm install --prefix "$root/.tools" --no-audit --no-fund "axe-core@$AXE_VERSION" >&2
 fi
 
 if [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; then

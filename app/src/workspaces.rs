@@ -14,7 +14,7 @@ use crate::machines::minasec::program::ProgramPane;
 use crate::machines::minasec::MinasecCtx;
 use crate::machines::{self, arduino, avr, io86a};
 use crate::sim::Pace;
-use crate::state::{Ctx, MachineKind};
+use crate::state::{Ctx, MachineKind, Tab};
 
 /// Every workspace's context; `Copy`.
 #[derive(Clone, Copy)]
@@ -129,10 +129,12 @@ impl Workspaces {
         let ladder = self.ladders.of(kind);
         provide_context(ladder);
         let machine = self.machine_view(kind);
+        let page = ladder.page;
         view! {
-            <div class="machine-view">
+            <ViewTabs page />
+            <div class="machine-view" data-tab=move || page.tab.get().hook()>
                 <LadderEditor ctx=ladder />
-                <div class="machine-side">{machine}</div>
+                <div class="machine-side" id="panel" tabindex="-1">{machine}</div>
             </div>
         }
         .into_any()
@@ -155,5 +157,28 @@ impl Workspaces {
             }
             MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=self.avr /> }.into_any(),
         }
+    }
+}
+
+/// Tablets and phones: one tap between the ladder, the panel and the
+/// tools (hidden on desktops, which show all three).
+#[component]
+fn ViewTabs(page: Ctx) -> impl IntoView {
+    let t = move || page.lang.get().texts();
+    let name = move |tab: Tab| match tab {
+        Tab::Ladder => t().tab_ladder,
+        Tab::Panel => t().tab_panel,
+        Tab::Tools => t().tab_tools,
+    };
+    view! {
+        <nav class="view-tabs" role="tablist" aria-label=move || t().tabs>
+            {Tab::ALL.map(|tab| view! {
+                <button type="button" role="tab" data-testid=format!("tab-{}", tab.hook())
+                    aria-selected=move || (page.tab.get() == tab).to_string()
+                    on:click=move |_| page.tab.set(tab)>
+                    {move || name(tab)}
+                </button>
+            }).collect_view()}
+        </nav>
     }
 }

@@ -129,6 +129,28 @@ fn default_devices(ctx: LadderCtx) -> Vec<String> {
     out
 }
 
+/// A simulated time as people read it: seconds with two decimals, the
+/// thousands set apart by a thin space (`20 320.24 s`); below a second,
+/// milliseconds (`16.5 ms`).
+pub fn clock(t: SimTime) -> String {
+    let ns = t.as_nanos();
+    if ns < 1_000_000_000 {
+        let ms = ns as f64 / 1e6;
+        return format!("{} ms", (ms * 10.0).round() / 10.0);
+    }
+    let centis = (ns + 5_000_000) / 10_000_000;
+    let (whole, frac) = (centis / 100, centis % 100);
+    let digits = whole.to_string();
+    let mut grouped = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            grouped.push('\u{2009}');
+        }
+        grouped.push(c);
+    }
+    format!("{grouped}.{frac:02} s")
+}
+
 /// The word "scan" in the page's language.
 fn t_scan(ctx: LadderCtx) -> &'static str {
     ctx.page.lang.get_untracked().texts().scan
@@ -274,6 +296,18 @@ impl Chart {
         }
     }
 
+    /// A click on the plot, which is drawn `WIDTH` columns wide and shown
+    /// as wide as its box.
+    fn pick_at(self, e: &web_sys::MouseEvent) {
+        use leptos::wasm_bindgen::JsCast;
+        let shown = e
+            .current_target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+            .map_or(WIDTH as f64, |el| el.get_bounding_client_rect().width());
+        let x = f64::from(e.offset_x()) * WIDTH as f64 / shown.max(1.0);
+        self.pick(x as i32);
+    }
+
     /// The scan the values table shows: the one travelled to, or clicked.
     fn at(self) -> Option<Mark> {
         self.ctx.travel.shown.get().or(self.cursor.get())
@@ -378,8 +412,9 @@ fn ChartNames(chart: Chart) -> impl IntoView {
 fn ChartPlot(chart: Chart) -> impl IntoView {
     let height = move || chart.height();
     view! {
-        <svg class="chart" width=WIDTH height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
-            on:click=move |e: web_sys::MouseEvent| chart.pick(e.offset_x())>
+        <svg class="chart" height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
+            preserveAspectRatio="none"
+            on:click=move |e: web_sys::MouseEvent| chart.pick_at(&e)>
             {move || chart.data.with(|d| d.rows.iter().enumerate().map(|(i, (name, values))| {
                 let path = if is_bits(values) { bit_path(values) } else { value_path(values) };
                 view! {
@@ -412,10 +447,10 @@ fn ChartPlot(chart: Chart) -> impl IntoView {
 fn ChartAxis(chart: Chart) -> impl IntoView {
     let ctx = chart.ctx;
     view! {
-        <div class="chart-axis" data-testid="chart-axis" style=format!("width: {WIDTH}px")>
+        <div class="chart-axis" data-testid="chart-axis">
             {move || chart.data.with(|d| {
                 let end = |i: usize| d.times.get(i).map(|t| {
-                    format!("{} {} · {t} ms", t_scan(ctx), d.from + i as u64)
+                    format!("{} {} · {}", t_scan(ctx), d.from + i as u64, clock(*t))
                 });
                 (
                     view! { <span>{end(0)}</span> },
@@ -437,7 +472,7 @@ fn ChartValues(chart: Chart) -> impl IntoView {
                     let at = chart.at();
                     chart.data.with(|d| {
                         let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
-                        let time = i.and_then(|i| d.times.get(i)).map(|t| format!("{t} ms"));
+                        let time = i.and_then(|i| d.times.get(i)).map(|t| clock(*t));
                         let head = view! { <tr><th>{at.map(|m| format!("{} {m}", t().scan))}</th><td>{time}</td></tr> };
                         let rows = d.rows.iter().map(|(name, values)| {
                             let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
@@ -492,6 +527,17 @@ mod tests {
         assert_eq!(lines.len(), 3);
         assert!(lines[1].ends_with(",0,"), "{csv}");
         assert!(lines[2].ends_with(",1,-7"), "{csv}");
+    }
+
+    #[test]
+    fn times_read_as_seconds_with_their_thousands_apart() {
+        assert_eq!(
+            clock(SimTime::from_nanos(20_320_240_471_743)),
+            "20\u{2009}320.24 s"
+        );
+        assert_eq!(clock(SimTime::from_millis(1_500)), "1.50 s");
+        assert_eq!(clock(SimTime::from_micros(16_500)), "16.5 ms");
+        assert_eq!(clock(SimTime::ZERO), "0 ms");
     }
 
     #[test]

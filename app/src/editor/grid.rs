@@ -7,8 +7,8 @@ use engine::ladder::edit::Cursor;
 use leptos::prelude::*;
 
 use super::model::{cell_class, cell_words, live_words, within, CellData, RungData};
-use super::palette;
 use super::state::{LadderCtx, RungView};
+use super::{palette, zoom};
 
 /// The focusable grid, `[data-testid=ladder]`.
 #[component]
@@ -45,6 +45,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
             e.prevent_default();
         }
     };
+    let touches = zoom::Touches::new();
     let selected_end = selected.clone();
     view! {
         <div
@@ -56,7 +57,13 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
             aria-label=move || ctx.page.lang.get().texts().ladder
             aria-multiselectable="true"
             on:keydown=on_key
+            on:wheel=move |e: web_sys::WheelEvent| zoom::on_wheel(ctx, &e)
+            on:pointerdown=move |e: web_sys::PointerEvent| touches.pointer(ctx, &e, false)
+            on:pointermove=move |e: web_sys::PointerEvent| touches.pointer(ctx, &e, true)
+            on:pointerup=move |e: web_sys::PointerEvent| touches.up(&e)
+            on:pointercancel=move |e: web_sys::PointerEvent| touches.up(&e)
         >
+            <div class="ladder-content" style=move || format!("zoom: {}", ctx.panes.zoom.get())>
             <For
                 each=move || ctx.drawing.rungs.get()
                 key=|r: &RungView| r.id
@@ -66,6 +73,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
                 }
             />
             <EndLine ctx selected=selected_end />
+            </div>
         </div>
     }
 }
@@ -302,7 +310,7 @@ fn pressed(ctx: LadderCtx, at: Cursor, e: &web_sys::MouseEvent, grid: NodeRef<le
     } else {
         ctx.move_to(at);
     }
-    focus(grid);
+    focus_in_place(grid);
 }
 
 /// A click on a cell: while the machine runs the drawn ladder, a contact
@@ -359,5 +367,15 @@ fn EndLine(ctx: LadderCtx, selected: Selector<Cursor>) -> impl IntoView {
 pub fn focus(grid: NodeRef<leptos::html::Div>) {
     if let Some(g) = grid.get_untracked() {
         let _ = g.focus();
+    }
+}
+
+/// Gives the grid the focus without scrolling the page: a press on a cell
+/// must not move the cell away from under the pointer before its click.
+fn focus_in_place(grid: NodeRef<leptos::html::Div>) {
+    if let Some(g) = grid.get_untracked() {
+        let options = web_sys::FocusOptions::new();
+        options.set_prevent_scroll(true);
+        let _ = g.focus_with_options(&options);
     }
 }

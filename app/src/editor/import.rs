@@ -127,11 +127,27 @@ pub fn ImportDialog(ctx: LadderCtx, shown: RwSignal<Option<Pending>>) -> impl In
             shown.set(attempt(ctx, p, false));
         }
     };
+    // It takes the focus when it opens (not when its table is edited).
+    let node = NodeRef::<leptos::html::Div>::new();
+    Effect::new(move |was: Option<bool>| {
+        let now = shown.with(Option::is_some);
+        if now && was != Some(true) {
+            if let Some(n) = node.get() {
+                let _ = n.focus();
+            }
+        }
+        now
+    });
     view! {
         {move || shown.get().map(|p| {
             let rows = p.rows.clone();
             view! {
-                <div class="import-dialog" data-testid="import-dialog" role="dialog" aria-label=t().import_title>
+                <div class="import-dialog" data-testid="import-dialog" role="dialog" aria-label=t().import_title
+                    tabindex="-1" node_ref=node
+                    on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
+                        e.prevent_default();
+                        shown.set(None);
+                    }>
                     <h3>{t().import_title} " · " {p.file.clone()}</h3>
                     {(p.pous.len() > 1).then(|| view! {
                         <label>{t().import_pou} " "

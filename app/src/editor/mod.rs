@@ -33,6 +33,7 @@ pub mod store;
 
 pub mod travel;
 pub mod why;
+pub mod zoom;
 
 use engine::ladder::edit::Edit;
 use engine::MachineId;
@@ -88,8 +89,24 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
             <shared::SharedBanner ctx />
             <autosave::StorageBanner ctx />
             <Toolbar ctx refocus />
+            <Show when=move || ctx.panes.tests_open.get()>
+                <Drawer open=ctx.panes.tests_open refocus label=Signal::derive(move || t().tests.to_string())>
+                    <cases::TestsPane ctx />
+                </Drawer>
+            </Show>
+            <Show when=move || ctx.panes.projects_open.get()>
+                <Drawer open=ctx.panes.projects_open refocus label=Signal::derive(move || t().projects.to_string())>
+                    <projects::ProjectsPane ctx />
+                </Drawer>
+            </Show>
+            <Show when=move || ctx.panes.find_open.get()>
+                <Drawer open=ctx.panes.find_open refocus label=Signal::derive(move || t().find.to_string())>
+                    <find::FindPane ctx on_pick=refocus />
+                </Drawer>
+            </Show>
             <div class="ladder-toolbar run-toolbar">
                 <live::RunBar ctx />
+                <zoom::ZoomBar ctx grid />
             </div>
             <travel::TravelBar ctx />
             <CommentBar ctx />
@@ -109,15 +126,6 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                 </div>
             </div>
             <chart::TimingChart ctx />
-            <Show when=move || ctx.panes.tests_open.get()>
-                <cases::TestsPane ctx />
-            </Show>
-            <Show when=move || ctx.panes.projects_open.get()>
-                <projects::ProjectsPane ctx />
-            </Show>
-            <Show when=move || ctx.panes.find_open.get()>
-                <find::FindPane ctx on_pick=refocus />
-            </Show>
             <Show when=move || ctx.panes.help.get()>
                 <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys
                     node_ref=keymap tabindex="-1"
@@ -140,6 +148,43 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
     }
 }
 
+/// A pane opened under the toolbar (Tests, Projects, Find), where the
+/// user looks: it is scrolled into view and takes the focus when it opens;
+/// Escape or Close shuts it and gives the focus back to the ladder.
+#[component]
+fn Drawer(
+    open: RwSignal<bool>,
+    refocus: Callback<()>,
+    label: Signal<String>,
+    children: Children,
+) -> impl IntoView {
+    let node = NodeRef::<leptos::html::Div>::new();
+    Effect::new(move |_| {
+        if let Some(n) = node.get() {
+            let options = web_sys::ScrollIntoViewOptions::new();
+            options.set_block(web_sys::ScrollLogicalPosition::Nearest);
+            n.scroll_into_view_with_scroll_into_view_options(&options);
+            let _ = n.focus();
+        }
+    });
+    let close = move || {
+        open.set(false);
+        refocus.run(());
+    };
+    view! {
+        <div class="drawer" role="dialog" aria-label=label tabindex="-1" node_ref=node
+            on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
+                e.prevent_default();
+                close();
+            }>
+            <button type="button" class="pane-close" data-testid="pane-close" on:click=move |_| close()>
+                "×"
+            </button>
+            {children()}
+        </div>
+    }
+}
+
 /// New, undo, redo, write to the machine, find, keys, copy elsewhere.
 #[component]
 fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
@@ -152,6 +197,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
         .collect();
     view! {
         <div class="ladder-toolbar" role="toolbar">
+            <span class="tb-main">
             <button type="button" data-testid="new-ladder" on:click=move |_| {
                 ctx.apply(Edit::NewLadder);
                 refocus.run(());
@@ -167,15 +213,17 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                         ctx.panes.message.set(Some(t().written.to_string()));
                     }
                 }>{move || t().write_plc}</button>
+            </span>
+            <span class="tb-more">
             <shared::ShareButton ctx />
             <files::FileButtons ctx />
-            <button type="button" data-testid="tests-open" on:click=move |_| ctx.panes.tests_open.update(|f| *f = !*f)>
+            <button type="button" data-testid="tests-open" on:click=move |_| ctx.panes.toggle(ctx.panes.tests_open)>
                 {move || t().tests}
             </button>
-            <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.projects_open.update(|f| *f = !*f)>
+            <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.toggle(ctx.panes.projects_open)>
                 {move || t().projects}
             </button>
-            <button type="button" data-testid="find-open" on:click=move |_| ctx.panes.find_open.update(|f| *f = !*f)>
+            <button type="button" data-testid="find-open" on:click=move |_| ctx.panes.toggle(ctx.panes.find_open)>
                 {move || t().find}
             </button>
             <button type="button" data-testid="keys" on:click=move |_| ctx.panes.help.update(|h| *h = !*h)>
@@ -197,6 +245,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                     }).collect_view()}
                 </select>
             </label>
+            </span>
         </div>
     }
 }

@@ -203,9 +203,11 @@ pub fn Palette(ctx: LadderCtx, on_done: Callback<()>) -> impl IntoView {
                     type="button"
                     class="palette-item"
                     data-testid=format!("palette-{id}")
-                    title=title.clone()
-                    aria-label=title
+                    aria-label=format!("{} {title}", i.symbol)
+                    title=title
                     aria-disabled=if disabled { "true" } else { "false" }
+                    // What the machine lacks is said, not reached by Tab.
+                    tabindex=if disabled { "-1" } else { "0" }
                     data-reason=i.lacks.clone()
                     draggable=if disabled { "false" } else { "true" }
                     on:dragstart=move |e: web_sys::DragEvent| {

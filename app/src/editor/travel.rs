@@ -180,7 +180,7 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
                 }>{move || t().resume_here}</button>
             <label class="break">
                 {move || t().break_on} " "
-                <input data-testid="break-input" spellcheck="false" placeholder="Y01 rises"
+                <input data-testid="break-input" spellcheck="false" placeholder=move || ctx.page.lang.get().texts().break_example
                     prop:value=move || s.break_text.get()
                     on:input=move |e| {
                         let text = event_target_value(&e);

@@ -250,6 +250,16 @@ pub struct Texts {
     pub chart_follow: &'static str,
     pub chart_export: &'static str,
     pub zoom_in: &'static str,
+    /// The break field's example condition.
+    pub break_example: &'static str,
+    /// The tab bar of tablets and phones, and its tabs.
+    pub tabs: &'static str,
+    pub tab_ladder: &'static str,
+    pub tab_panel: &'static str,
+    pub tab_tools: &'static str,
+    /// The ladder's zoom buttons: their group, and fitting a rung's width.
+    pub zoom: &'static str,
+    pub zoom_fit: &'static str,
     pub zoom_out: &'static str,
     pub pan_left: &'static str,
     pub pan_right: &'static str,

@@ -114,7 +114,7 @@ impl LadderCtx {
                 self.copy_text();
             }
             Action::Cut | Action::Paste => {}
-            Action::Find => self.panes.find_open.set(true),
+            Action::Find => self.panes.show(self.panes.find_open),
             Action::Help => self.panes.help.update(|h| *h = !*h),
             Action::Cancel => {
                 self.drawing.anchor.set(None);

@@ -127,6 +127,30 @@ pub struct Panes {
     pub projects_open: RwSignal<bool>,
     /// The Tests pane is shown.
     pub tests_open: RwSignal<bool>,
+    /// The ladder's zoom (1.0: 100 %), see [`zoom`](crate::editor::zoom).
+    pub zoom: RwSignal<f64>,
+}
+
+impl Panes {
+    /// Shows one of the sheets (Tests, Projects, Find), closing the others:
+    /// they open in the same place.
+    pub fn show(&self, which: RwSignal<bool>) {
+        for pane in [self.tests_open, self.projects_open, self.find_open] {
+            if pane != which && pane.get_untracked() {
+                pane.set(false);
+            }
+        }
+        which.set(true);
+    }
+
+    /// Shows `which` (see [`Panes::show`]), or closes it when it is shown.
+    pub fn toggle(&self, which: RwSignal<bool>) {
+        if which.get_untracked() {
+            which.set(false);
+        } else {
+            self.show(which);
+        }
+    }
 }
 
 /// The machine's program text as the editor keeps it in step.
@@ -268,6 +292,7 @@ impl LadderCtx {
                 find_open: RwSignal::new(false),
                 projects_open: RwSignal::new(false),
                 tests_open: RwSignal::new(exercise),
+                zoom: RwSignal::new(1.0),
             },
             text: TextLink {
                 pane: StoredValue::new(None),

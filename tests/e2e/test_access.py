@@ -1,0 +1,51 @@
+"""End-to-end: accessibility (issue #27). axe-core (from the npm registry,
+installed into .tools/ by scripts/setup.sh) checks each machine's
+workspace against WCAG 2.1 A/AA, with a test case and each pane open: no
+critical or serious finding."""
+
+import pathlib
+
+import pytest
+from selenium.webdriver.support.ui import Select
+
+from test_app import ROOT, el, open_fresh, wait
+
+AXE = ROOT / ".tools" / "node_modules" / "axe-core" / "axe.min.js"
+MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc"]
+PANES = [None, "tests-open", "projects-open", "find-open", "keys"]
+
+
+def violations(driver):
+    """axe-core's critical and serious findings on the page as it is."""
+    driver.execute_script(pathlib.Path(AXE).read_text())
+    driver.set_script_timeout(60)
+    found = driver.execute_async_script(
+        "const done = arguments[arguments.length - 1];"
+        "axe.run(document, {runOnly: {type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa']}})"
+        ".then(r => done(r.violations.map(v => ({id: v.id, impact: v.impact,"
+        "  nodes: v.nodes.slice(0, 4).map(n => n.target.join(' '))}))))"
+        ".catch(e => done([{id: 'axe-error', impact: 'critical', nodes: [String(e)]}]));")
+    return [v for v in found if v["impact"] in ("critical", "serious")]
+
+
+@pytest.mark.parametrize("machine", MACHINES)
+def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machine):
+    assert AXE.exists(), "run scripts/setup.sh (it installs axe-core)"
+    driver.set_window_size(1366, 768)
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value(machine)
+    wait(driver, lambda: el(driver, "palette"))
+    # A case in the Tests pane, so its fields are checked too.
+    el(driver, "tests-open").click()
+    el(driver, "add-test").click()
+    wait(driver, lambda: el(driver, "test-case-0"))
+    el(driver, "tests-open").click()
+    found = {}
+    for pane in PANES:
+        if pane:
+            el(driver, pane).click()
+        for v in violations(driver):
+            found.setdefault(v["id"], (v["impact"], pane, v["nodes"]))
+        if pane:
+            el(driver, pane).click()  # closed again before the next opens
+    assert not found, found

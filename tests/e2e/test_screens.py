@@ -1,0 +1,162 @@
+"""End-to-end: the page on every screen (issue #27). A laptop (1366x768), a
+big screen (1920x1080), a touch tablet (820x1180) and a touch phone
+(390x844, Chromium's mobile emulation): draw X00 -> Y00 (keys on desktops,
+taps on touch), find the coil on screen, run it and drive it from the
+panel (on desktops without scrolling the page), open every pane in view,
+and never overflow sideways."""
+
+import pytest
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+
+from test_app import el, on, open_fresh, wait
+from test_ladder import focus_ladder, place
+
+SCREENS = {
+    "laptop": (1366, 768, False),
+    "desktop": (1920, 1080, False),
+    "tablet": (820, 1180, True),
+    "phone": (390, 844, True),
+}
+
+
+def screen_driver(tmp_path, name):
+    width, height, touch = SCREENS[name]
+    options = webdriver.ChromeOptions()
+    options.binary_location = "/usr/bin/chromium"
+    for flag in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                 "--no-first-run", "--lang=en-US", f"--window-size={width},{height}",
+                 f"--user-data-dir={tmp_path / 'profile'}"]:
+        options.add_argument(flag)
+    if touch:
+        options.add_experimental_option("mobileEmulation", {
+            "deviceMetrics": {"width": width, "height": height, "pixelRatio": 2, "touch": True}})
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    drv = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    drv.set_page_load_timeout(30)
+    return drv
+
+
+@pytest.fixture(params=list(SCREENS))
+def screen(request, tmp_path):
+    drv = screen_driver(tmp_path, request.param)
+    # The failure hook in conftest.py finds the driver under this name.
+    request.node.funcargs["driver"] = drv
+    yield request.param, drv
+    drv.quit()
+
+
+def rect(driver, testid):
+    return driver.execute_script(
+        "const b = document.querySelector(arguments[0]).getBoundingClientRect();"
+        "return {x: b.x, y: b.y, w: b.width, h: b.height, vw: innerWidth, vh: innerHeight};",
+        f'[data-testid="{testid}"]')
+
+
+def on_screen(driver, testid):
+    """Its centre is inside the window and it is what is drawn there (not
+    clipped by a scrolling box, not under something else)."""
+    return driver.execute_script(
+        "const e = document.querySelector(arguments[0]); const b = e.getBoundingClientRect();"
+        "const x = b.x + b.width / 2, y = b.y + b.height / 2;"
+        "if (x < 0 || y < 0 || x >= innerWidth || y >= innerHeight) return false;"
+        "const top = document.elementFromPoint(x, y); if (!top || !(top === e || e.contains(top))) return false;"
+        # The rung labels stay on the left above the cells scrolled under them.
+        "return ![...document.querySelectorAll('.rung-head')].some(h => { const r = h.getBoundingClientRect();"
+        "  return x >= r.left && x < r.right && y >= r.top && y < r.bottom; });",
+        f'[data-testid="{testid}"]')
+
+
+def no_sideways_overflow(driver):
+    return driver.execute_script("return document.documentElement.scrollWidth <= innerWidth")
+
+
+def tap_entry(driver, palette, device):
+    el(driver, palette).click()
+    chips = wait(driver, lambda: [b for b in driver.find_elements(
+        By.CSS_SELECTOR, '[data-testid="device-options"] button') if b.text.split()[0] == device])
+    chips[0].click()
+    el(driver, "device-ok").click()
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="device-input"]'))
+
+
+def coil_testid(driver):
+    coils = [c for c in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="coil"]')
+             if c.get_attribute("data-device") == "Y00"]
+    assert len(coils) == 1
+    return coils[0].get_attribute("data-testid")
+
+
+def show(driver, touch, tab):
+    if touch:
+        el(driver, f"tab-{tab}").click()
+
+
+def test_draw_run_and_drive_on_every_screen(screen, base_url, artifacts):
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    assert no_sideways_overflow(driver), "the page fits the width"
+    el(driver, "new-ladder").click()
+    if touch:
+        el(driver, "cell-0-0-0").click()
+        tap_entry(driver, "palette-no", "X00")
+        tap_entry(driver, "palette-coil", "Y00")
+    else:
+        focus_ladder(driver)
+        place(driver, Keys.F5, "X00")
+        place(driver, Keys.F7, "Y00")
+    coil = coil_testid(driver)
+    assert coil.startswith("cell-0-0-")
+    # The cursor went on past the coil; back on it, it is in view.
+    if not touch:
+        driver.switch_to.active_element.send_keys(Keys.ARROW_UP, Keys.END)
+        wait(driver, lambda: on_screen(driver, coil), message="End shows the output column")
+        driver.switch_to.active_element.send_keys(Keys.HOME)
+        wait(driver, lambda: on_screen(driver, "cell-0-0-0"), message="Home shows the first column")
+    el(driver, "zoom-fit").click()
+    wait(driver, lambda: on_screen(driver, coil) and on_screen(driver, "cell-0-0-0"),
+         message="fit width shows the whole rung")
+    assert no_sideways_overflow(driver)
+
+    el(driver, "run").click()
+    scrolled = driver.execute_script("return scrollY")
+    show(driver, touch, "panel")
+    if touch:
+        # One tap showed the panel; on a phone it may be a flick away.
+        driver.execute_script("document.querySelector('[data-testid=input-X00]').scrollIntoView({block: 'center'})")
+    wait(driver, lambda: on_screen(driver, "input-X00"), message="the input is on screen")
+    el(driver, "input-X00").click()
+    wait(driver, lambda: on(driver, "lamp-Y00"), message="Y00 follows X00")
+    if touch:
+        driver.execute_script("document.querySelector('[data-testid=lamp-Y00]').scrollIntoView({block: 'center'})")
+    assert on_screen(driver, "lamp-Y00")
+    if not touch:
+        assert on_screen(driver, coil), "the rung and the panel on screen together"
+        assert driver.execute_script("return scrollY") == scrolled, "no page scroll needed"
+    assert no_sideways_overflow(driver)
+    driver.save_screenshot(str(artifacts / f"screen-{name}.png"))
+
+
+@pytest.mark.parametrize("opener,pane", [
+    ("tests-open", "tests"), ("projects-open", "projects"), ("find-open", "find"), ("keys", "keymap"),
+])
+def test_every_pane_opens_in_view_takes_the_focus_and_closes_on_escape(screen, base_url, opener, pane):
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    show(driver, touch, "tools")
+    el(driver, opener).click()
+    wait(driver, lambda: on_screen(driver, pane), message=f"{pane} opens in view")
+    focused_inside = driver.execute_script(
+        "const p = document.querySelector(arguments[0]);"
+        "const d = p.closest('[role=dialog]') || p; return d.contains(document.activeElement);",
+        f'[data-testid="{pane}"]')
+    assert focused_inside, f"{pane} takes the focus"
+    driver.switch_to.active_element.send_keys(Keys.ESCAPE)
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, f'[data-testid="{pane}"]'),
+         message=f"Escape closes {pane}")
+    assert no_sideways_overflow(driver)
