@@ -147,6 +147,12 @@ pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
         <ErrorBoundary fallback=move |_| {
             view! { <div class="fatal" role="alert">{move || ctx.lang.get().texts().crashed}</div> }
         }>
+            <a class="skip" href="#ladder" on:click=move |e| skip_to(&e, "ladder")>
+                {move || ctx.lang.get().texts().skip_ladder}
+            </a>
+            <a class="skip" href="#panel" on:click=move |e| skip_to(&e, "panel")>
+                {move || ctx.lang.get().texts().skip_panel}
+            </a>
             <Header />
             <Show when=move || ctx.notice.with(Option::is_some)>
                 <div class="notice" role="alert" data-testid="notice">
@@ -155,6 +161,19 @@ pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
             </Show>
             {move || workspaces.view(ctx.machine.get())}
         </ErrorBoundary>
+    }
+}
+
+/// A skip link: the focus goes to element `id`, and the address keeps its
+/// fragment (which is where share links live).
+fn skip_to(e: &web_sys::MouseEvent, id: &str) {
+    e.prevent_default();
+    let target = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.get_element_by_id(id))
+        .and_then(|el| el.dyn_into::<web_sys::HtmlElement>().ok());
+    if let Some(el) = target {
+        let _ = el.focus();
     }
 }
 

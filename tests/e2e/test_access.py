@@ -49,3 +49,19 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
         if pane:
             el(driver, pane).click()  # closed again before the next opens
     assert not found, found
+
+
+def test_skip_links_reach_the_ladder_and_the_panel_without_touching_the_address(driver, base_url):
+    from selenium.webdriver.common.keys import Keys
+    open_fresh(driver, base_url)
+    body = driver.find_element("css selector", "body")
+    body.send_keys(Keys.TAB)
+    first = driver.switch_to.active_element
+    assert first.get_attribute("href").endswith("#ladder"), "the first Tab stop"
+    first.send_keys(Keys.ENTER)
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
+    driver.execute_script("document.querySelectorAll('a.skip')[1].focus()")
+    driver.switch_to.active_element.send_keys(Keys.ENTER)
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("id") == "panel")
+    assert driver.execute_script("return location.hash") == "", "a share link's place is left alone"
+    assert not driver.find_elements("css selector", '[data-testid="notice"]')

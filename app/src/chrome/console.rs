@@ -39,7 +39,7 @@ pub fn ConsolePane(
     view! {
         <section class="terminal">
             <h2>{move || title.get()}</h2>
-            <pre data-testid=testid aria-live="polite">
+            <pre data-testid=testid aria-live="polite" tabindex="0">
                 {move || console.get()}
             </pre>
             <div class="terminal-input">

@@ -281,7 +281,7 @@ fn CaseView(ctx: LadderCtx, i: usize) -> impl IntoView {
     };
     view! {
         <div class="test-case" data-testid=format!("test-case-{i}") data-result=hook>
-            <input class="test-name" data-testid="test-name" prop:value=move || case().name
+            <input class="test-name" data-testid="test-name" aria-label=move || t().case_name prop:value=move || case().name
                 on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.name = v); } />
             <button type="button" data-testid="test-delete" on:click=move |_| delete_case(ctx, i)>
                 {move || t().delete_test}

@@ -50,6 +50,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
     view! {
         <div
             class="ladder"
+            id="ladder"
             node_ref=grid
             data-testid="ladder"
             role="grid"

@@ -129,7 +129,7 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
         <section class="watch-pane">
             <h3>{move || t().watch}</h3>
             <div class="find-row">
-                <input data-testid="watch-input" list=list_id.clone() spellcheck="false"
+                <input data-testid="watch-input" list=list_id.clone() spellcheck="false" aria-label=move || t().watch
                     prop:value=move || name.get() on:input=move |e| name.set(event_target_value(&e))
                     on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { add() } />
                 <datalist id=list_id>

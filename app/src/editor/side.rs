@@ -36,7 +36,7 @@ pub fn ListingPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                 when=move || ctx.drawing.listing.with(Option::is_some)
                 fallback=move || view! { <p class="muted" data-testid="il-listing-none">{move || t().listing_none}</p> }
             >
-                <pre class="listing" data-testid="il-listing">
+                <pre class="listing" data-testid="il-listing" tabindex="0" aria-label=move || t().listing>
                     <For
                         each=move || lines.get()
                         key=|(i, line, _)| (*i, line.clone())
@@ -76,7 +76,8 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
     view! {
         <section class="problems-pane">
             <h3>{move || t().problems}</h3>
-            <ul class="problems" data-testid="problems" role="status" aria-live="polite">
+            <div role="status" aria-live="polite">
+            <ul class="problems" data-testid="problems">
                 <Show when=move || ctx.drawing.problems.with(Vec::is_empty)>
                     <li class="muted">{move || t().problems_none}</li>
                 </Show>
@@ -96,6 +97,7 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                     }
                 />
             </ul>
+            </div>
         </section>
     }
 }

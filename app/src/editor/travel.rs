@@ -158,7 +158,7 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
         <div class="travel-bar" data-testid="travel-bar">
             <button type="button" data-testid="step-back" title=move || t().step_back
                 on:click=move |_| step_back(ctx)>"◀"</button>
-            <input type="range" data-testid="timeline" class="timeline"
+            <input type="range" data-testid="timeline" class="timeline" aria-label=move || t().scan_slider
                 min=move || s.marks.get().0.to_string()
                 max=move || s.marks.get().1.to_string()
                 prop:value=move || at().to_string()

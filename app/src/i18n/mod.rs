@@ -250,6 +250,13 @@ pub struct Texts {
     pub chart_follow: &'static str,
     pub chart_export: &'static str,
     pub zoom_in: &'static str,
+    /// The skip links at the top of the page.
+    pub skip_ladder: &'static str,
+    pub skip_panel: &'static str,
+    /// A test case's name field.
+    pub case_name: &'static str,
+    /// The time travel slider's name.
+    pub scan_slider: &'static str,
     /// The break field's example condition.
     pub break_example: &'static str,
     /// The tab bar of tablets and phones, and its tabs.
