@@ -389,20 +389,31 @@ fn ChartTools(chart: Chart) -> impl IntoView {
     }
 }
 
-/// Each row's device, with a button that takes it off.
+/// Each row's device, once: its name, its value at the scan shown or
+/// clicked, and a button that takes it off.
 #[component]
 fn ChartNames(chart: Chart) -> impl IntoView {
+    let t = move || chart.ctx.page.lang.get().texts();
     view! {
         <div class="chart-names">
-            {move || chart.data.with(|d| d.rows.iter().map(|(name, _)| {
-                let gone = name.clone();
-                view! {
-                    <div class="chart-name" style=format!("height: {ROW}px")>
-                        {name.clone()}
-                        <button type="button" on:click=move |_| chart.remove(&gone)>"×"</button>
-                    </div>
-                }
-            }).collect_view())}
+            {move || {
+                let at = chart.at();
+                chart.data.with(|d| {
+                    let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
+                    d.rows.iter().map(|(name, values)| {
+                        let gone = name.clone();
+                        let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
+                        view! {
+                            <div class="chart-name" style=format!("height: {ROW}px")>
+                                <span>{name.clone()}</span>
+                                <span class="chart-value" data-testid=format!("chart-value-{name}")>{v}</span>
+                                <button type="button" aria-label=format!("{} {name}", t().delete_test)
+                                    on:click=move |_| chart.remove(&gone)>"×"</button>
+                            </div>
+                        }
+                    }).collect_view()
+                })
+            }}
         </div>
     }
 }
@@ -461,28 +472,22 @@ fn ChartAxis(chart: Chart) -> impl IntoView {
     }
 }
 
-/// Each device's value at the scan shown or clicked.
+/// The scan shown or clicked, and its time (each device's value there
+/// is beside its name).
 #[component]
 fn ChartValues(chart: Chart) -> impl IntoView {
     let t = move || chart.ctx.page.lang.get().texts();
     view! {
-        <table class="chart-values" data-testid="chart-cursor">
-            <tbody>
-                {move || {
-                    let at = chart.at();
-                    chart.data.with(|d| {
-                        let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
-                        let time = i.and_then(|i| d.times.get(i)).map(|t| clock(*t));
-                        let head = view! { <tr><th>{at.map(|m| format!("{} {m}", t().scan))}</th><td>{time}</td></tr> };
-                        let rows = d.rows.iter().map(|(name, values)| {
-                            let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
-                            view! { <tr data-testid=format!("chart-value-{name}")><th>{name.clone()}</th><td>{v}</td></tr> }
-                        }).collect_view();
-                        (head, rows)
-                    })
-                }}
-            </tbody>
-        </table>
+        <p class="chart-values" data-testid="chart-cursor">
+            {move || {
+                let at = chart.at();
+                chart.data.with(|d| {
+                    let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
+                    let time = i.and_then(|i| d.times.get(i)).map(|t| clock(*t));
+                    at.map(|m| format!("{} {m} · {}", t().scan, time.unwrap_or_default()))
+                })
+            }}
+        </p>
     }
 }
 

@@ -11,6 +11,7 @@ use leptos::prelude::*;
 use super::cell_kind::CellKind;
 use super::keys::Action;
 use super::state::LadderCtx;
+use crate::i18n::Lang;
 
 /// What a palette item does.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -42,34 +43,52 @@ enum Needs {
     Nothing,
     /// Rising and falling edge contacts.
     Edges,
-    /// A coil of this kind.
-    Coil(CoilKind, &'static str),
+    /// A coil of this kind (what it is called, in English and Japanese).
+    Coil(CoilKind, Words),
     /// Timer and counter coils with set values (what they are called).
-    CountCoils(&'static str),
+    CountCoils(Words),
     /// PLS / PLF.
     Pulses,
     /// MOV, CMP, INC, DEC.
     DataBoxes,
     /// NOT, R_TRIG, F_TRIG, TON … on the rung (what they are called).
-    InlineBoxes(&'static str),
+    InlineBoxes(Words),
+}
+
+/// Words in English and Japanese.
+type Words = (&'static str, &'static str);
+
+/// The words of `w` in `lang`.
+fn said(w: Words, lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => w.0,
+        Lang::Ja => w.1,
+    }
 }
 
 impl Needs {
-    /// Why `machine` cannot take it, when it cannot.
-    fn lacking(self, machine: MachineId, caps: &Capabilities) -> Option<String> {
+    /// Why `machine` cannot take it, when it cannot, in `lang`.
+    fn lacking(self, machine: MachineId, caps: &Capabilities, lang: Lang) -> Option<String> {
         let (has, what) = match self {
             Needs::Nothing => return None,
             Needs::Edges => (
                 caps.contacts.contains(&ContactKind::Rising),
-                "edge contacts",
+                ("edge contacts", "エッジ接点"),
             ),
             Needs::Coil(kind, what) => (caps.coils.contains(&kind), what),
             Needs::CountCoils(what) => (caps.timer_counter_coils, what),
-            Needs::Pulses => (caps.pulse_outputs, "PLS/PLF outputs"),
-            Needs::DataBoxes => (caps.data_boxes, "data boxes"),
+            Needs::Pulses => (caps.pulse_outputs, ("PLS/PLF outputs", "PLS/PLF 出力")),
+            Needs::DataBoxes => (caps.data_boxes, ("data boxes", "データ命令")),
             Needs::InlineBoxes(what) => (caps.inline_boxes, what),
         };
-        (!has).then(|| format!("{machine} has no {what}"))
+        let what = said(what, lang);
+        (!has).then(|| match lang {
+            Lang::En => format!("{machine} has no {what}"),
+            Lang::Ja => format!(
+                "{}には{what}がありません",
+                crate::state::product_name(machine)
+            ),
+        })
     }
 }
 
@@ -85,18 +104,12 @@ enum Act {
 struct Spec {
     id: &'static str,
     symbol: &'static str,
-    name: &'static str,
+    name: Words,
     act: Act,
     needs: Needs,
 }
 
-const fn spec(
-    id: &'static str,
-    symbol: &'static str,
-    name: &'static str,
-    act: Act,
-    needs: Needs,
-) -> Spec {
+const fn spec(id: &'static str, symbol: &'static str, name: Words, act: Act, needs: Needs) -> Spec {
     Spec {
         id,
         symbol,
@@ -107,7 +120,7 @@ const fn spec(
 }
 
 /// A kind from the cells' table, by its hook and symbol.
-const fn kind(k: CellKind, name: &'static str, act: Act, needs: Needs) -> Spec {
+const fn kind(k: CellKind, name: Words, act: Act, needs: Needs) -> Spec {
     spec(k.hook(), k.look().symbol, name, act, needs)
 }
 
@@ -117,43 +130,44 @@ use EntryKind::{Closed, Coil as CoilEntry, Instruction, Open};
 /// The palette, in the order shown.
 #[rustfmt::skip]
 const SPECS: &[Spec] = &[
-    kind(CellKind::No, "normally open contact (F5)", Entry(Open, false, ""), Needs::Nothing),
-    kind(CellKind::Nc, "normally closed contact (F6)", Entry(Closed, false, ""), Needs::Nothing),
-    spec("or-no", "└┤ ├┘", "OR branch, normally open (Shift+F5)", Entry(Open, true, ""), Needs::Nothing),
-    spec("or-nc", "└┤/├┘", "OR branch, normally closed (Shift+F6)", Entry(Closed, true, ""), Needs::Nothing),
-    kind(CellKind::Rise, "rising edge contact (LDP)", Entry(Instruction, false, "LDP "), Needs::Edges),
-    kind(CellKind::Fall, "falling edge contact (LDF)", Entry(Instruction, false, "LDF "), Needs::Edges),
-    spec("wire", "──", "horizontal wire (F9)", Key(Action::Wire), Needs::Nothing),
-    spec("link", "│", "vertical link (Shift+F9)", Key(Action::ToggleLink), Needs::Nothing),
-    kind(CellKind::Coil, "coil (F7)", Entry(CoilEntry, false, ""), Needs::Coil(CoilKind::Normal, "coils")),
-    kind(CellKind::CoilNot, "inverted coil", Entry(Instruction, false, "STI "), Needs::Coil(CoilKind::Inverted, "inverted coils")),
-    kind(CellKind::Set, "set coil", Entry(Instruction, false, "SET "), Needs::Coil(CoilKind::Set, "set coils")),
-    kind(CellKind::Reset, "reset coil", Entry(Instruction, false, "RST "), Needs::Coil(CoilKind::Reset, "reset coils")),
-    spec("timer", "(T K)", "timer coil: OUT T00 K10", Entry(Instruction, false, "OUT T00 K"), Needs::CountCoils("timer coils with set values (MINASEC-U: coil T0/T1)")),
-    spec("counter", "(C K)", "counter coil: OUT C00 K10", Entry(Instruction, false, "OUT C00 K"), Needs::CountCoils("counter coils with set values (MINASEC-U: coil C0)")),
-    spec("pls", "[PLS]", "one-scan pulse output", Entry(Instruction, false, "PLS "), Needs::Pulses),
-    spec("plf", "[PLF]", "one-scan pulse on falling power", Entry(Instruction, false, "PLF "), Needs::Pulses),
-    spec("mov", "[MOV]", "MOV K50 D00", Entry(Instruction, false, "MOV "), Needs::DataBoxes),
-    spec("cmp", "[CMP]", "CMP D00 K10", Entry(Instruction, false, "CMP "), Needs::DataBoxes),
-    spec("inc", "[INC]", "INC D00", Entry(Instruction, false, "INC "), Needs::DataBoxes),
-    spec("dec", "[DEC]", "DEC D00", Entry(Instruction, false, "DEC "), Needs::DataBoxes),
-    spec("not", "[NOT]", "invert the power flow", Place(Element::Not), Needs::InlineBoxes("in-line boxes")),
-    spec("r-trig", "[R_TRIG]", "one scan on rising power", Place(Element::Edge { falling: false }), Needs::InlineBoxes("in-line boxes")),
-    spec("f-trig", "[F_TRIG]", "one scan on falling power", Place(Element::Edge { falling: true }), Needs::InlineBoxes("in-line boxes")),
-    spec("ton", "[TON]", "on-delay timer: TON t1 500ms", Entry(Instruction, false, "TON "), Needs::InlineBoxes("in-line timers")),
-    spec("tof", "[TOF]", "off-delay timer: TOF t1 500ms", Entry(Instruction, false, "TOF "), Needs::InlineBoxes("in-line timers")),
-    spec("tp", "[TP]", "pulse timer: TP t1 500ms", Entry(Instruction, false, "TP "), Needs::InlineBoxes("in-line timers")),
+    kind(CellKind::No, ("normally open contact (F5)", "a接点 (F5)"), Entry(Open, false, ""), Needs::Nothing),
+    kind(CellKind::Nc, ("normally closed contact (F6)", "b接点 (F6)"), Entry(Closed, false, ""), Needs::Nothing),
+    spec("or-no", "└┤ ├┘", ("OR branch, normally open (Shift+F5)", "並列 a接点 (Shift+F5)"), Entry(Open, true, ""), Needs::Nothing),
+    spec("or-nc", "└┤/├┘", ("OR branch, normally closed (Shift+F6)", "並列 b接点 (Shift+F6)"), Entry(Closed, true, ""), Needs::Nothing),
+    kind(CellKind::Rise, ("rising edge contact (LDP)", "立上りエッジ接点 (LDP)"), Entry(Instruction, false, "LDP "), Needs::Edges),
+    kind(CellKind::Fall, ("falling edge contact (LDF)", "立下りエッジ接点 (LDF)"), Entry(Instruction, false, "LDF "), Needs::Edges),
+    spec("wire", "──", ("horizontal wire (F9)", "横線 (F9)"), Key(Action::Wire), Needs::Nothing),
+    spec("link", "│", ("vertical link (Shift+F9)", "縦線 (Shift+F9)"), Key(Action::ToggleLink), Needs::Nothing),
+    kind(CellKind::Coil, ("coil (F7)", "コイル (F7)"), Entry(CoilEntry, false, ""), Needs::Coil(CoilKind::Normal, ("coils", "コイル"))),
+    kind(CellKind::CoilNot, ("inverted coil", "反転コイル"), Entry(Instruction, false, "STI "), Needs::Coil(CoilKind::Inverted, ("inverted coils", "反転コイル"))),
+    kind(CellKind::Set, ("set coil", "セットコイル"), Entry(Instruction, false, "SET "), Needs::Coil(CoilKind::Set, ("set coils", "セットコイル"))),
+    kind(CellKind::Reset, ("reset coil", "リセットコイル"), Entry(Instruction, false, "RST "), Needs::Coil(CoilKind::Reset, ("reset coils", "リセットコイル"))),
+    spec("timer", "(T K)", ("timer coil: OUT T00 K10", "タイマコイル: OUT T00 K10"), Entry(Instruction, false, "OUT T00 K"), Needs::CountCoils(("timer coils with set values (MINASEC-U: coil T0/T1)", "設定値付きタイマコイル (MINASEC-U: コイル T0/T1)"))),
+    spec("counter", "(C K)", ("counter coil: OUT C00 K10", "カウンタコイル: OUT C00 K10"), Entry(Instruction, false, "OUT C00 K"), Needs::CountCoils(("counter coils with set values (MINASEC-U: coil C0)", "設定値付きカウンタコイル (MINASEC-U: コイル C0)"))),
+    spec("pls", "[PLS]", ("one-scan pulse output", "1スキャンパルス出力"), Entry(Instruction, false, "PLS "), Needs::Pulses),
+    spec("plf", "[PLF]", ("one-scan pulse on falling power", "立下りで1スキャンパルス"), Entry(Instruction, false, "PLF "), Needs::Pulses),
+    spec("mov", "[MOV]", ("MOV K50 D00", "転送: MOV K50 D00"), Entry(Instruction, false, "MOV "), Needs::DataBoxes),
+    spec("cmp", "[CMP]", ("CMP D00 K10", "比較: CMP D00 K10"), Entry(Instruction, false, "CMP "), Needs::DataBoxes),
+    spec("inc", "[INC]", ("INC D00", "インクリメント: INC D00"), Entry(Instruction, false, "INC "), Needs::DataBoxes),
+    spec("dec", "[DEC]", ("DEC D00", "デクリメント: DEC D00"), Entry(Instruction, false, "DEC "), Needs::DataBoxes),
+    spec("not", "[NOT]", ("invert the power flow", "導通の反転"), Place(Element::Not), Needs::InlineBoxes(("in-line boxes", "インライン命令"))),
+    spec("r-trig", "[R_TRIG]", ("one scan on rising power", "導通の立上りで1スキャン"), Place(Element::Edge { falling: false }), Needs::InlineBoxes(("in-line boxes", "インライン命令"))),
+    spec("f-trig", "[F_TRIG]", ("one scan on falling power", "導通の立下りで1スキャン"), Place(Element::Edge { falling: true }), Needs::InlineBoxes(("in-line boxes", "インライン命令"))),
+    spec("ton", "[TON]", ("on-delay timer: TON t1 500ms", "オンディレイタイマ: TON t1 500ms"), Entry(Instruction, false, "TON "), Needs::InlineBoxes(("in-line timers", "インラインタイマ"))),
+    spec("tof", "[TOF]", ("off-delay timer: TOF t1 500ms", "オフディレイタイマ: TOF t1 500ms"), Entry(Instruction, false, "TOF "), Needs::InlineBoxes(("in-line timers", "インラインタイマ"))),
+    spec("tp", "[TP]", ("pulse timer: TP t1 500ms", "パルスタイマ: TP t1 500ms"), Entry(Instruction, false, "TP "), Needs::InlineBoxes(("in-line timers", "インラインタイマ"))),
 ];
 
-/// The palette of `machine`: every item, with what the machine lacks.
-pub fn items(machine: MachineId) -> Vec<Item> {
+/// The palette of `machine` in `lang`: every item, with what the machine
+/// lacks.
+pub fn items(machine: MachineId, lang: Lang) -> Vec<Item> {
     let caps = capabilities(machine);
     SPECS
         .iter()
         .map(|s| Item {
             id: s.id,
             symbol: s.symbol,
-            name: s.name,
+            name: said(s.name, lang),
             does: match &s.act {
                 Entry(kind, branch, prefill) => Does::Key(Action::Entry {
                     kind: *kind,
@@ -163,14 +177,17 @@ pub fn items(machine: MachineId) -> Vec<Item> {
                 Key(action) => Does::Key(*action),
                 Place(element) => Does::Place(element.clone()),
             },
-            lacks: s.needs.lacking(machine, &caps),
+            lacks: s.needs.lacking(machine, &caps, lang),
         })
         .collect()
 }
 
 /// Does what palette item `id` does, at the cursor.
 pub fn activate(ctx: LadderCtx, id: &str) {
-    let Some(item) = items(ctx.machine).into_iter().find(|i| i.id == id) else {
+    let Some(item) = items(ctx.machine, ctx.page.lang.get_untracked())
+        .into_iter()
+        .find(|i| i.id == id)
+    else {
         return;
     };
     if let Some(why) = item.lacks {
@@ -189,42 +206,45 @@ pub fn activate(ctx: LadderCtx, id: &str) {
 #[component]
 pub fn Palette(ctx: LadderCtx, on_done: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
-    let buttons = items(ctx.machine)
-        .into_iter()
-        .map(|i| {
-            let id = i.id;
-            let disabled = i.lacks.is_some();
-            let title = match &i.lacks {
-                Some(why) => format!("{}: {why}", i.name),
-                None => i.name.to_string(),
-            };
-            view! {
-                <button
-                    type="button"
-                    class="palette-item"
-                    data-testid=format!("palette-{id}")
-                    aria-label=format!("{} {title}", i.symbol)
-                    title=title
-                    aria-disabled=if disabled { "true" } else { "false" }
-                    // What the machine lacks is said, not reached by Tab.
-                    tabindex=if disabled { "-1" } else { "0" }
-                    data-reason=i.lacks.clone()
-                    draggable=if disabled { "false" } else { "true" }
-                    on:dragstart=move |e: web_sys::DragEvent| {
-                        if let Some(dt) = e.data_transfer() {
-                            let _ = dt.set_data("text/plain", &format!("palette:{id}"));
+    // Made again when the language changes (names and reasons).
+    let buttons = move || {
+        items(ctx.machine, ctx.page.lang.get())
+            .into_iter()
+            .map(|i| {
+                let id = i.id;
+                let disabled = i.lacks.is_some();
+                let title = match &i.lacks {
+                    Some(why) => format!("{}: {why}", i.name),
+                    None => i.name.to_string(),
+                };
+                view! {
+                    <button
+                        type="button"
+                        class="palette-item"
+                        data-testid=format!("palette-{id}")
+                        aria-label=format!("{} {title}", i.symbol)
+                        title=title
+                        aria-disabled=if disabled { "true" } else { "false" }
+                        // What the machine lacks is said, not reached by Tab.
+                        tabindex=if disabled { "-1" } else { "0" }
+                        data-reason=i.lacks.clone()
+                        draggable=if disabled { "false" } else { "true" }
+                        on:dragstart=move |e: web_sys::DragEvent| {
+                            if let Some(dt) = e.data_transfer() {
+                                let _ = dt.set_data("text/plain", &format!("palette:{id}"));
+                            }
                         }
-                    }
-                    on:click=move |_| {
-                        activate(ctx, id);
-                        on_done.run(());
-                    }
-                >
-                    {i.symbol}
-                </button>
-            }
-        })
-        .collect_view();
+                        on:click=move |_| {
+                            activate(ctx, id);
+                            on_done.run(());
+                        }
+                    >
+                        {i.symbol}
+                    </button>
+                }
+            })
+            .collect_view()
+    };
     view! {
         <div class="palette" data-testid="palette" role="toolbar" aria-label=move || t().palette>
             {buttons}
@@ -237,7 +257,7 @@ mod tests {
     use super::*;
 
     fn lacks(machine: MachineId, id: &str) -> Option<String> {
-        items(machine)
+        items(machine, Lang::En)
             .into_iter()
             .find(|i| i.id == id)
             .and_then(|i| i.lacks)
@@ -254,5 +274,21 @@ mod tests {
         assert_eq!(lacks(MachineId::AvrPlc, "ton"), None);
         assert!(lacks(MachineId::Io86a, "ton").is_some());
         assert_eq!(lacks(MachineId::Io86a, "or-no"), None);
+    }
+
+    #[test]
+    fn the_palette_speaks_japanese_too() {
+        let ja = items(MachineId::MinasecU, Lang::Ja);
+        let en = items(MachineId::MinasecU, Lang::En);
+        assert_eq!(ja.len(), en.len());
+        for (j, e) in ja.iter().zip(&en) {
+            assert_eq!((j.id, j.symbol), (e.id, e.symbol));
+            assert_ne!(j.name, e.name, "{} has a Japanese name", j.id);
+        }
+        let mov = ja
+            .iter()
+            .find(|i| i.id == "mov")
+            .and_then(|i| i.lacks.clone());
+        assert_eq!(mov.as_deref(), Some("MINASEC-Uにはデータ命令がありません"));
     }
 }
