@@ -65,3 +65,16 @@ def test_skip_links_reach_the_ladder_and_the_panel_without_touching_the_address(
     wait(driver, lambda: driver.switch_to.active_element.get_attribute("id") == "panel")
     assert driver.execute_script("return location.hash") == "", "a share link's place is left alone"
     assert not driver.find_elements("css selector", '[data-testid="notice"]')
+
+
+def test_japanese_mode_names_cells_palette_and_lamps_in_japanese(driver, base_url):
+    open_fresh(driver, base_url, lang="ja")
+    assert el(driver, "cell-0-0-0").get_attribute("aria-label") == "ラダーの終わり、列 1"
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X00")
+    label = el(driver, "cell-0-0-0").get_attribute("aria-label")
+    assert label.startswith("ラング1 1行 1列: a接点 X00"), label
+    assert el(driver, "palette-no").get_attribute("title").startswith("a接点")
+    assert "データ命令がありません" in el(driver, "palette-mov").get_attribute("title")
+    assert el(driver, "lamp-Y00").get_attribute("aria-label").endswith("消灯")
+    assert el(driver, "break-input").get_attribute("placeholder").startswith("例")

@@ -17,6 +17,14 @@ pub fn Led(
     /// What a screen reader says.
     label: String,
 ) -> impl IntoView {
+    // The page's language, where there is a page (not in component tests).
+    let lang = use_context::<crate::state::Ctx>().map(|c| c.lang);
+    let state = move |lit: bool| match (lang.map(|l| l.get()), lit) {
+        (Some(crate::i18n::Lang::Ja), true) => "点灯",
+        (Some(crate::i18n::Lang::Ja), false) => "消灯",
+        (_, true) => "ON",
+        (_, false) => "OFF",
+    };
     view! {
         <span
             class=format!("led {colour}")
@@ -24,7 +32,7 @@ pub fn Led(
             data-testid=testid
             data-on=move || if on.get() { "1" } else { "0" }
             role="img"
-            aria-label=move || format!("{label}: {}", if on.get() { "ON" } else { "OFF" })
+            aria-label=move || format!("{label}: {}", state(on.get()))
         ></span>
     }
 }

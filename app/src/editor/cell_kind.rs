@@ -45,6 +45,8 @@ pub struct Look {
     pub symbol: &'static str,
     /// What it is, in words ("normally open contact").
     pub words: &'static str,
+    /// The same in Japanese ("a接点").
+    pub words_ja: &'static str,
     /// A contact: a click on it drives its input.
     pub contact: bool,
     /// Its device's state is shown live (`data-on`).
@@ -54,18 +56,22 @@ pub struct Look {
     pub shows_value: bool,
 }
 
-const fn look(hook: &'static str, symbol: &'static str, words: &'static str) -> Look {
+const fn look(hook: &'static str, symbol: &'static str, words: Words) -> Look {
     Look {
         hook,
         symbol,
-        words,
+        words: words.0,
+        words_ja: words.1,
         contact: false,
         shows_state: true,
         shows_value: false,
     }
 }
 
-const fn contact(hook: &'static str, symbol: &'static str, words: &'static str) -> Look {
+/// Words in English and Japanese.
+type Words = (&'static str, &'static str);
+
+const fn contact(hook: &'static str, symbol: &'static str, words: Words) -> Look {
     Look {
         contact: true,
         ..look(hook, symbol, words)
@@ -74,31 +80,31 @@ const fn contact(hook: &'static str, symbol: &'static str, words: &'static str) 
 
 const EMPTY: Look = Look {
     shows_state: false,
-    ..look("", "", "empty")
+    ..look("", "", ("empty", "空き"))
 };
 const WIRE: Look = Look {
     shows_state: false,
-    ..look("hwire", "", "wire")
+    ..look("hwire", "", ("wire", "横線"))
 };
-const NO: Look = contact("no", "┤ ├", "normally open contact");
-const NC: Look = contact("nc", "┤/├", "normally closed contact");
-const RISE: Look = contact("rise", "┤↑├", "rising edge contact");
-const FALL: Look = contact("fall", "┤↓├", "falling edge contact");
+const NO: Look = contact("no", "┤ ├", ("normally open contact", "a接点"));
+const NC: Look = contact("nc", "┤/├", ("normally closed contact", "b接点"));
+const RISE: Look = contact("rise", "┤↑├", ("rising edge contact", "立上りエッジ接点"));
+const FALL: Look = contact("fall", "┤↓├", ("falling edge contact", "立下りエッジ接点"));
 const COIL: Look = Look {
     shows_value: true,
-    ..look("coil", "( )", "coil")
+    ..look("coil", "( )", ("coil", "コイル"))
 };
-const COIL_NOT: Look = look("coil-not", "(/)", "inverted coil");
-const SET: Look = look("set", "(S)", "set coil");
-const RESET: Look = look("reset", "(R)", "reset coil");
+const COIL_NOT: Look = look("coil-not", "(/)", ("inverted coil", "反転コイル"));
+const SET: Look = look("set", "(S)", ("set coil", "セットコイル"));
+const RESET: Look = look("reset", "(R)", ("reset coil", "リセットコイル"));
 // Drawn with the `coil` hook: to the eye and to the tests it is a coil.
 const COUNT_COIL: Look = Look {
     shows_value: true,
-    ..look("coil", "", "coil")
+    ..look("coil", "", ("coil", "コイル"))
 };
 const BOX: Look = Look {
     shows_state: false,
-    ..look("box", "", "box")
+    ..look("box", "", ("box", "命令"))
 };
 
 impl CellKind {
@@ -123,6 +129,14 @@ impl CellKind {
     /// Its hook (`data-kind`).
     pub const fn hook(self) -> &'static str {
         self.look().hook
+    }
+
+    /// What it is, in words, in `lang`.
+    pub const fn look_words(self, lang: crate::i18n::Lang) -> &'static str {
+        match lang {
+            crate::i18n::Lang::En => self.look().words,
+            crate::i18n::Lang::Ja => self.look().words_ja,
+        }
     }
 
     /// Nothing drawn.

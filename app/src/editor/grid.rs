@@ -9,6 +9,7 @@ use leptos::prelude::*;
 use super::model::{cell_class, cell_words, live_words, within, CellData, RungData};
 use super::state::{LadderCtx, RungView};
 use super::{palette, zoom};
+use crate::i18n::Lang;
 
 /// The focusable grid, `[data-testid=ladder]`.
 #[component]
@@ -194,7 +195,7 @@ fn Cell(
     grid: NodeRef<leptos::html::Div>,
 ) -> impl IntoView {
     let (row, col) = (c.row, c.col);
-    let label = label_of(&c, number.clone(), cell_slot.clone());
+    let label = label_of(ctx, &c, number.clone(), cell_slot.clone());
     let here = move || Cursor::new(number.get(), row, col);
     let testid = {
         let here = here.clone();
@@ -263,21 +264,24 @@ fn Cell(
     }
 }
 
-/// A cell's accessible name: its place, what it is, its live state.
+/// A cell's accessible name: its place, what it is, its live state, in
+/// the page's language.
 fn label_of(
+    ctx: LadderCtx,
     c: &CellData,
     number: ArcRwSignal<usize>,
     slot: super::state::CellSlot,
 ) -> impl Fn() -> String + Send + Sync + 'static {
-    let (row, col, words) = (c.row, c.col, cell_words(c));
+    let (row, col, cell) = (c.row + 1, c.col + 1, c.clone());
     move || {
-        let state = live_words(slot.on.get(), slot.powered.get());
+        let lang = ctx.page.lang.get();
+        let words = cell_words(&cell, lang);
+        let state = live_words(slot.on.get(), slot.powered.get(), lang);
         let rung = number.get() + 1;
-        format!(
-            "rung {rung}, row {}, column {}: {words}{state}",
-            row + 1,
-            col + 1
-        )
+        match lang {
+            Lang::En => format!("rung {rung}, row {row}, column {col}: {words}{state}"),
+            Lang::Ja => format!("ラング{rung} {row}行 {col}列: {words}{state}"),
+        }
     }
 }
 
@@ -351,7 +355,7 @@ fn EndLine(ctx: LadderCtx, selected: Selector<Cursor>) -> impl IntoView {
                             data-testid=move || format!("cell-{}-0-{col}", ctx.drawing.rungs.with(Vec::len))
                             data-kind=""
                             aria-selected=move || if selected.selected(&here()) { "true" } else { "false" }
-                            aria-label=move || format!("end of ladder, column {}", col + 1)
+                            aria-label=move || format!("{} {}", ctx.page.lang.get().texts().end_of_ladder, col + 1)
                             on:mousedown=move |_| ctx.move_to(here())
                             on:dragover=|e: web_sys::DragEvent| e.prevent_default()
                             on:drop=move |e: web_sys::DragEvent| dropped(ctx, here(), e)

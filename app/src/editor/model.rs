@@ -10,6 +10,7 @@ use engine::ladder::edit::{Cursor, EntryKind, MAX_ROWS};
 use engine::ladder::{CoilKind, ContactKind, Element, Pos, Rung};
 
 pub use super::cell_kind::CellKind;
+use crate::i18n::Lang;
 
 /// One cell as drawn.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
@@ -185,30 +186,48 @@ fn drawn(e: &Element) -> CellData {
     }
 }
 
-/// A cell's words for screen readers: what it is, and its device's
-/// comment.
-pub fn cell_words(c: &CellData) -> String {
-    if c.kind.is_empty() {
-        "empty".to_string()
-    } else if c.comment.is_empty() {
-        c.words.clone()
+/// A cell's words for screen readers in `lang`: what it is, and its
+/// device's comment.
+pub fn cell_words(c: &CellData, lang: Lang) -> String {
+    let what = match (lang, c.kind) {
+        (_, CellKind::Empty) => return c.kind.look_words(lang).to_string(),
+        (Lang::En, _) => c.words.clone(),
+        (Lang::Ja, CellKind::CountCoil) => {
+            let kind = if c.device.starts_with('C') {
+                "カウンタコイル"
+            } else {
+                "タイマコイル"
+            };
+            format!("{kind} {} {}", c.device, c.symbol.trim_matches(['(', ')']))
+        }
+        (Lang::Ja, CellKind::Box) => format!("命令 {}", c.symbol.trim_matches(['[', ']'])),
+        (Lang::Ja, kind) => format!("{} {}", kind.look().words_ja, c.device),
+    };
+    if c.comment.is_empty() {
+        what
     } else {
-        format!("{}, {}", c.words, c.comment)
+        format!("{what}, {}", c.comment)
     }
 }
 
 /// A cell's live state in words, after its name: its device on, and
 /// whether power reaches through it (so the state is not said by colour
 /// only).
-pub fn live_words(on: Option<bool>, powered: Option<bool>) -> &'static str {
-    match (on, powered) {
-        (Some(true), Some(true)) => ", on, powered",
-        (Some(true), _) => ", on",
-        (Some(false), Some(true)) => ", off, powered",
-        (Some(false), _) => ", off",
-        (None, Some(true)) => ", powered",
-        (None, _) => "",
+pub fn live_words(on: Option<bool>, powered: Option<bool>, lang: Lang) -> String {
+    let (on_w, off_w, powered_w) = match lang {
+        Lang::En => ("on", "off", "powered"),
+        Lang::Ja => ("オン", "オフ", "導通"),
+    };
+    let mut out = String::new();
+    if let Some(on) = on {
+        out.push_str(", ");
+        out.push_str(if on { on_w } else { off_w });
     }
+    if powered == Some(true) {
+        out.push_str(", ");
+        out.push_str(powered_w);
+    }
+    out
 }
 
 /// A cell's classes: `filled k-<hook>`, its links and an error.
@@ -494,5 +513,39 @@ mod power_tests {
         };
         let d = rung_data(&from_rail, 1, &[], &BTreeMap::new());
         assert_eq!(cell_power(&d, &[(Pos::new(0, 1), true)])[0], Some(true));
+    }
+}
+
+#[cfg(test)]
+mod words_tests {
+    use super::*;
+    use engine::ladder::Rung;
+
+    #[test]
+    fn cells_are_named_in_both_languages_with_their_state() {
+        let rung = Rung {
+            cells: vec![vec![
+                Some(Element::no("X00")),
+                Some(Element::TimerCoil {
+                    device: "T00".into(),
+                    preset: 10,
+                }),
+            ]],
+            ..Rung::default()
+        };
+        let d = rung_data(&rung, 1, &[], &BTreeMap::new());
+        assert_eq!(
+            cell_words(&d.cells[0], Lang::En),
+            "normally open contact X00"
+        );
+        assert_eq!(cell_words(&d.cells[0], Lang::Ja), "a接点 X00");
+        assert_eq!(cell_words(&d.cells[1], Lang::Ja), "タイマコイル T00 K10");
+        assert_eq!(cell_words(&d.cells[2], Lang::Ja), "空き");
+        assert_eq!(
+            live_words(Some(true), Some(true), Lang::En),
+            ", on, powered"
+        );
+        assert_eq!(live_words(Some(false), None, Lang::Ja), ", オフ");
+        assert_eq!(live_words(None, Some(false), Lang::En), "");
     }
 }

@@ -191,6 +191,7 @@ pub static EN: Texts = Texts {
     chart_follow: "Follow",
     chart_export: "Export CSV",
     zoom_in: "Zoom in",
+    end_of_ladder: "end of ladder, column",
     skip_ladder: "Skip to the ladder",
     skip_panel: "Skip to the panel",
     case_name: "Case name",

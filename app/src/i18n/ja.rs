@@ -192,6 +192,7 @@ pub static JA: Texts = Texts {
     chart_follow: "追従",
     chart_export: "CSV出力",
     zoom_in: "拡大",
+    end_of_ladder: "ラダーの終わり、列",
     skip_ladder: "ラダーへ移動",
     skip_panel: "パネルへ移動",
     case_name: "テストケース名",

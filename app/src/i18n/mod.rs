@@ -250,6 +250,8 @@ pub struct Texts {
     pub chart_follow: &'static str,
     pub chart_export: &'static str,
     pub zoom_in: &'static str,
+    /// The end line's cells: "end of ladder, column" and the column.
+    pub end_of_ladder: &'static str,
     /// The skip links at the top of the page.
     pub skip_ladder: &'static str,
     pub skip_panel: &'static str,
