@@ -160,3 +160,82 @@ def test_every_pane_opens_in_view_takes_the_focus_and_closes_on_escape(screen, b
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, f'[data-testid="{pane}"]'),
          message=f"Escape closes {pane}")
     assert no_sideways_overflow(driver)
+
+
+def smallest_targets(driver):
+    """The smallest height and width of the visible buttons and selects."""
+    return driver.execute_script(
+        "const hs = [], ws = [];"
+        "for (const e of document.querySelectorAll('button, select')) {"
+        "  const b = e.getBoundingClientRect(); if (!b.width || !b.height) continue;"
+        "  if (getComputedStyle(e).visibility === 'hidden') continue; hs.push(b.height); ws.push(b.width); }"
+        "return [Math.min(...hs), Math.min(...ws)];")
+
+
+def test_targets_are_big_enough_for_the_pointer(screen, base_url):
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    for tab in (["ladder", "panel", "tools"] if touch else [None]):
+        if tab:
+            el(driver, f"tab-{tab}").click()
+        height, width = smallest_targets(driver)
+        assert width >= 24 and height >= (44 if touch else 24), (tab, height, width)
+
+
+def zoom_at(driver):
+    return el(driver, "zoom-at").text
+
+
+def test_ctrl_wheel_and_a_pinch_zoom_the_ladder(driver, base_url):
+    open_fresh(driver, base_url)
+    assert zoom_at(driver) == "100 %"
+    wheel = ("document.querySelector('[data-testid=ladder]').dispatchEvent(new WheelEvent('wheel',"
+             " {deltaY: arguments[0], ctrlKey: true, bubbles: true, cancelable: true}))")
+    driver.execute_script(wheel, -100)
+    wait(driver, lambda: zoom_at(driver) == "115 %", message="Ctrl+wheel up zooms in")
+    driver.execute_script(wheel, 100)
+    wait(driver, lambda: zoom_at(driver) == "100 %", message="and down zooms out")
+    # Two fingers spread from 100 px apart to 150 px: 150 %.
+    pinch = ("const l = document.querySelector('[data-testid=ladder]');"
+             "const at = (type, id, x) => l.dispatchEvent(new PointerEvent(type, {pointerId: id,"
+             " pointerType: 'touch', clientX: x, clientY: 400, bubbles: true}));"
+             "at('pointerdown', 11, 300); at('pointerdown', 12, 400);"
+             "at('pointermove', 12, 450); at('pointerup', 11, 300); at('pointerup', 12, 450);")
+    driver.execute_script(pinch)
+    wait(driver, lambda: zoom_at(driver) == "150 %", message="a pinch zooms")
+    el(driver, "zoom-100").click()
+    assert zoom_at(driver) == "100 %"
+
+
+def contrast(a, b):
+    """WCAG contrast of two CSS rgb() colours."""
+    def lum(c):
+        r, g, b = [int(x) / 255 for x in c[c.index("(") + 1:c.index(")")].split(",")[:3]]
+        f = lambda v: v / 12.92 if v <= 0.03928 else ((v + 0.055) / 1.055) ** 2.4
+        return 0.2126 * f(r) + 0.7152 * f(g) + 0.0722 * f(b)
+    hi, lo = sorted([lum(a), lum(b)], reverse=True)
+    return (hi + 0.05) / (lo + 0.05)
+
+
+def test_focus_rings_stand_out_from_what_they_sit_on(driver, base_url):
+    open_fresh(driver, base_url)
+    for testid, backdrop in [("undo", "section.ladder-editor"), ("speed", "header.top")]:
+        el(driver, testid)  # present
+        driver.execute_script("document.querySelector(arguments[0]).focus()", f'[data-testid="{testid}"]')
+        driver.switch_to.active_element.send_keys(Keys.SHIFT)  # keyboard focus: :focus-visible
+        ring, behind = driver.execute_script(
+            "const e = document.querySelector(arguments[0]);"
+            "return [getComputedStyle(e).outlineColor, getComputedStyle(document.querySelector(arguments[1])).backgroundColor];",
+            f'[data-testid="{testid}"]', backdrop)
+        assert contrast(ring, behind) >= 3, (testid, ring, behind)
+
+
+def test_the_import_dialog_takes_the_focus_and_gives_it_back(driver, base_url):
+    from test_import import FBD, import_dialog
+    import_dialog(driver, base_url, FBD, "the dialog, since lamp has no device")
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "import-dialog",
+         message="the dialog has the focus")
+    driver.switch_to.active_element.send_keys(Keys.ESCAPE)
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]'))
+    assert driver.switch_to.active_element.get_attribute("data-testid") == "ladder"

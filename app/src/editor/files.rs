@@ -149,7 +149,7 @@ pub fn save_project_file(ctx: LadderCtx) {
 
 /// The file buttons.
 #[component]
-pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
+pub fn FileButtons(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
     let pending = RwSignal::new(None::<super::import::Pending>);
@@ -212,7 +212,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                     let _ = w.print();
                 }
             }>{move || t().print}</button>
-            <super::import::ImportDialog ctx shown=pending />
+            <super::import::ImportDialog ctx shown=pending on_close=refocus />
         </span>
     }
 }

@@ -120,11 +120,19 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
 
 /// The dialog.
 #[component]
-pub fn ImportDialog(ctx: LadderCtx, shown: RwSignal<Option<Pending>>) -> impl IntoView {
+pub fn ImportDialog(
+    ctx: LadderCtx,
+    shown: RwSignal<Option<Pending>>,
+    /// Gives the focus back to the ladder when the dialog closes.
+    on_close: Callback<()>,
+) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let apply = move |_| {
         if let Some(p) = shown.get_untracked() {
             shown.set(attempt(ctx, p, false));
+            if shown.with_untracked(Option::is_none) {
+                on_close.run(());
+            }
         }
     };
     // It takes the focus when it opens (not when its table is edited).
@@ -147,6 +155,7 @@ pub fn ImportDialog(ctx: LadderCtx, shown: RwSignal<Option<Pending>>) -> impl In
                     on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" {
                         e.prevent_default();
                         shown.set(None);
+                        on_close.run(());
                     }>
                     <h3>{t().import_title} " · " {p.file.clone()}</h3>
                     {(p.pous.len() > 1).then(|| view! {
@@ -181,7 +190,7 @@ pub fn ImportDialog(ctx: LadderCtx, shown: RwSignal<Option<Pending>>) -> impl In
                         {p.warnings.iter().map(|w| view! { <li class="warning" data-testid="import-warning">{w.clone()}</li> }).collect_view()}
                     </ul>
                     <button type="button" data-testid="import-apply" on:click=apply>{t().import_apply}</button>
-                    <button type="button" data-testid="import-cancel" on:click=move |_| shown.set(None)>{t().cancel}</button>
+                    <button type="button" data-testid="import-cancel" on:click=move |_| { shown.set(None); on_close.run(()); }>{t().cancel}</button>
                 </div>
             }
         })}

@@ -216,7 +216,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
             </span>
             <span class="tb-more">
             <shared::ShareButton ctx />
-            <files::FileButtons ctx />
+            <files::FileButtons ctx refocus />
             <button type="button" data-testid="tests-open" on:click=move |_| ctx.panes.toggle(ctx.panes.tests_open)>
                 {move || t().tests}
             </button>
