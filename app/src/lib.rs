@@ -37,6 +37,7 @@ pub fn start() {
         .unwrap_or_default();
     if search.contains("bench") {
         leptos::mount::mount_to_body(bench::BenchPage);
+        remove_loading_screen();
         return;
     }
     register_service_worker();
@@ -52,6 +53,7 @@ pub fn start() {
     std::mem::forget(listener);
     listen_to_other_tabs(workspaces);
     leptos::mount::mount_to_body(move || view! { <App ctx=ctx workspaces=workspaces /> });
+    remove_loading_screen();
     start_loop(ctx, workspaces);
 }
 
@@ -72,6 +74,16 @@ fn listen_to_other_tabs(workspaces: Workspaces) {
         }
     });
     std::mem::forget(listener);
+}
+
+/// The loading screen of index.html gives way to the app.
+fn remove_loading_screen() {
+    if let Some(el) = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.get_element_by_id("loading"))
+    {
+        el.remove();
+    }
 }
 
 /// Registers the service worker that keeps the page working offline
