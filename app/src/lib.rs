@@ -78,12 +78,14 @@ fn listen_to_other_tabs(workspaces: Workspaces) {
 
 /// The loading screen of index.html gives way to the app.
 fn remove_loading_screen() {
-    if let Some(el) = web_sys::window()
-        .and_then(|w| w.document())
-        .and_then(|d| d.get_element_by_id("loading"))
-    {
+    if let Some(el) = element_by_id("loading") {
         el.remove();
     }
+}
+
+/// The page's element with `id`.
+fn element_by_id(id: &str) -> Option<web_sys::Element> {
+    web_sys::window()?.document()?.get_element_by_id(id)
 }
 
 /// Registers the service worker that keeps the page working offline
@@ -180,10 +182,7 @@ pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
 /// fragment (which is where share links live).
 fn skip_to(e: &web_sys::MouseEvent, id: &str) {
     e.prevent_default();
-    let target = web_sys::window()
-        .and_then(|w| w.document())
-        .and_then(|d| d.get_element_by_id(id))
-        .and_then(|el| el.dyn_into::<web_sys::HtmlElement>().ok());
+    let target = element_by_id(id).and_then(|el| el.dyn_into::<web_sys::HtmlElement>().ok());
     if let Some(el) = target {
         let _ = el.focus();
     }

@@ -111,12 +111,6 @@ impl Workspaces {
         provide_context(*self);
     }
 
-    /// Operates the machine of `kind`'s workspace, then shows the result
-    /// in its panel and on its ladder at once (even paused).
-    pub fn operate(&self, kind: MachineKind, f: impl FnOnce(&mut dyn engine::plc::Plc)) {
-        self.ladders.of(kind).operate(f);
-    }
-
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall
     /// time at `pace`, then its signals refreshed. The others rest.
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {

@@ -46,15 +46,6 @@ impl Autosave {
         self.show(saving);
     }
 
-    /// Writes `json` over whatever the slot holds (the user's choice).
-    pub fn overwrite(&self, json: &str) {
-        let saving = self
-            .slot
-            .try_update_value(|s| s.overwrite(&*backend(), json))
-            .unwrap_or(Saving::Conflict);
-        self.show(saving);
-    }
-
     fn show(&self, saving: Saving) {
         match saving {
             Saving::Saved(_) => {

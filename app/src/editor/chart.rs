@@ -36,6 +36,14 @@ struct ChartData {
     rows: Vec<(String, Vec<Option<i64>>)>,
 }
 
+impl ChartData {
+    /// Where scan `at` is in the scans drawn, when it is among them.
+    fn index_of(&self, at: Option<Mark>) -> Option<usize> {
+        at.and_then(|m| m.checked_sub(self.from))
+            .map(|i| i as usize)
+    }
+}
+
 /// Each pixel column's scans: `[start, end)` indices into `n` scans.
 fn columns(n: usize) -> impl Iterator<Item = (usize, usize)> {
     (0..WIDTH).map(move |c| {
@@ -399,7 +407,7 @@ fn ChartNames(chart: Chart) -> impl IntoView {
             {move || {
                 let at = chart.at();
                 chart.data.with(|d| {
-                    let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
+                    let i = d.index_of(at);
                     d.rows.iter().map(|(name, values)| {
                         let gone = name.clone();
                         let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
@@ -482,7 +490,7 @@ fn ChartValues(chart: Chart) -> impl IntoView {
             {move || {
                 let at = chart.at();
                 chart.data.with(|d| {
-                    let i = at.and_then(|m| m.checked_sub(d.from)).map(|i| i as usize);
+                    let i = d.index_of(at);
                     let time = i.and_then(|i| d.times.get(i)).map(|t| clock(*t));
                     at.map(|m| format!("{} {m} · {}", t().scan, time.unwrap_or_default()))
                 })

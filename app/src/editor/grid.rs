@@ -272,10 +272,13 @@ fn label_of(
     number: ArcRwSignal<usize>,
     slot: super::state::CellSlot,
 ) -> impl Fn() -> String + Send + Sync + 'static {
-    let (row, col, cell) = (c.row + 1, c.col + 1, c.clone());
+    let (row, col) = (c.row + 1, c.col + 1);
+    // Both languages' words once: the name is said again at each change of
+    // the cell's live state.
+    let (en, ja) = (cell_words(c, Lang::En), cell_words(c, Lang::Ja));
     move || {
         let lang = ctx.page.lang.get();
-        let words = cell_words(&cell, lang);
+        let words = if lang == Lang::Ja { &ja } else { &en };
         let state = live_words(slot.on.get(), slot.powered.get(), lang);
         let rung = number.get() + 1;
         match lang {

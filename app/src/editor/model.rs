@@ -443,16 +443,11 @@ mod tests {
     }
 }
 
-/// Each cell's power in the last scan (`data-powered`), by its place in
-/// `d.cells`: an element's from `powers` (the machine's, see
-/// `engine::ladder::live`), a wire's from what feeds it on its left (the
-/// rail at column 0), an empty cell none.
-pub fn cell_power(d: &RungData, powers: &[(Pos, bool)]) -> Vec<Option<bool>> {
-    (0..d.cells.len()).map(|i| power_of(d, powers, i)).collect()
-}
-
-/// The power of cell `index` of `d` (see [`cell_power`]), without
-/// allocating: what the live frame calls for each cell.
+/// The power in the last scan (`data-powered`) of cell `index` of `d`:
+/// an element's from `powers` (the machine's, see `engine::ladder::live`),
+/// a wire's from what feeds it on its left (the rail at column 0), an
+/// empty cell none. Allocates nothing: the live frame calls it for each
+/// cell.
 pub fn power_of(d: &RungData, powers: &[(Pos, bool)], index: usize) -> Option<bool> {
     let c = d.cells.get(index)?;
     let at = |row: usize, col: usize| d.cells.get(row * d.cols + col);
@@ -486,6 +481,11 @@ pub fn power_of(d: &RungData, powers: &[(Pos, bool)], index: usize) -> Option<bo
 mod power_tests {
     use super::*;
     use engine::ladder::{Element, Rung};
+
+    /// Every cell's power, by place.
+    fn cell_power(d: &RungData, powers: &[(Pos, bool)]) -> Vec<Option<bool>> {
+        (0..d.cells.len()).map(|i| power_of(d, powers, i)).collect()
+    }
 
     #[test]
     fn wires_take_the_power_of_what_feeds_them() {

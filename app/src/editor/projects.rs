@@ -105,7 +105,7 @@ impl Projects {
         let id = self.next_id();
         let machine = project.machine;
         let json = project.to_json();
-        if !write(&key_of(id), &json) {
+        if storage::write(&key_of(id), &json).is_err() {
             return None;
         }
         self.change(|i| {
@@ -120,7 +120,8 @@ impl Projects {
 
     /// The saved project `id`.
     pub fn load(&self, id: u64) -> Result<Project, String> {
-        let raw = read(&key_of(id)).ok_or_else(|| format!("project {id} is not in storage"))?;
+        let raw = storage::saved_string(&key_of(id))
+            .ok_or_else(|| format!("project {id} is not in storage"))?;
         Project::from_json(&raw).map_err(|e| format!("{}: {e}", key_of(id)))
     }
 
@@ -157,9 +158,9 @@ impl Projects {
         else {
             return;
         };
-        let json = read(&key_of(id)).unwrap_or_default();
+        let json = storage::saved_string(&key_of(id)).unwrap_or_default();
         self.change(|i| i.projects.retain(|e| e.id != id));
-        remove(&key_of(id));
+        storage::remove(&key_of(id));
         self.deleted.set(Some((entry, json)));
     }
 
@@ -168,7 +169,7 @@ impl Projects {
         let Some((entry, json)) = self.deleted.get_untracked() else {
             return;
         };
-        if write(&key_of(entry.id), &json) {
+        if storage::write(&key_of(entry.id), &json).is_ok() {
             self.change(|i| {
                 i.projects.push(entry);
                 i.projects.sort_by_key(|e| e.id);
@@ -176,18 +177,6 @@ impl Projects {
             self.deleted.set(None);
         }
     }
-}
-
-fn read(key: &str) -> Option<String> {
-    storage::saved_string(key)
-}
-
-fn write(key: &str, value: &str) -> bool {
-    storage::write(key, value).is_ok()
-}
-
-fn remove(key: &str) {
-    storage::remove(key);
 }
 
 /// Opens project `id` in its machine's editor (the ladder there before is

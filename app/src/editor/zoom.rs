@@ -73,18 +73,13 @@ pub fn on_wheel(ctx: LadderCtx, e: &web_sys::WheelEvent) {
     }
 }
 
-/// Two fingers on the ladder: the distance between them when the second
-/// came down, and the zoom then.
-#[derive(Clone, Copy, Default)]
-pub struct Pinch {
-    start: Option<(f64, f64)>,
-}
-
 /// The pointers down on the ladder (touch only), by id, and the pinch.
 #[derive(Clone, Copy)]
 pub struct Touches {
     down: StoredValue<Vec<(i32, f64, f64)>>,
-    pinch: StoredValue<Pinch>,
+    /// With two fingers down: their distance when the second came down,
+    /// and the zoom then.
+    pinch: StoredValue<Option<(f64, f64)>>,
 }
 
 impl Touches {
@@ -92,7 +87,7 @@ impl Touches {
     pub fn new() -> Touches {
         Touches {
             down: StoredValue::new(Vec::new()),
-            pinch: StoredValue::new(Pinch::default()),
+            pinch: StoredValue::new(None),
         }
     }
 
@@ -123,10 +118,10 @@ impl Touches {
         let Some(spread) = self.spread() else {
             return;
         };
-        match self.pinch.get_value().start {
-            None => self.pinch.set_value(Pinch {
-                start: Some((spread, ctx.panes.zoom.get_untracked())),
-            }),
+        match self.pinch.get_value() {
+            None => self
+                .pinch
+                .set_value(Some((spread, ctx.panes.zoom.get_untracked()))),
             Some((from, z)) if from > 0.0 => ctx.panes.zoom.set(clamp(z * spread / from)),
             Some(_) => {}
         }
@@ -136,7 +131,7 @@ impl Touches {
     pub fn up(&self, e: &web_sys::PointerEvent) {
         let id = e.pointer_id();
         self.down.update_value(|d| d.retain(|p| p.0 != id));
-        self.pinch.set_value(Pinch::default());
+        self.pinch.set_value(None);
     }
 }
 

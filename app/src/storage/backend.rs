@@ -25,8 +25,6 @@ pub trait StorageBackend {
     fn set(&self, key: &str, value: &str) -> Result<(), StorageFault>;
     /// Forgets `key` (nothing when it is not there or storage is missing).
     fn remove(&self, key: &str);
-    /// Every key saved.
-    fn keys(&self) -> Vec<String>;
 }
 
 /// The browser's localStorage.
@@ -59,14 +57,6 @@ impl StorageBackend for BrowserStorage {
         if let Ok(store) = Self::store() {
             let _ = store.remove_item(key);
         }
-    }
-
-    fn keys(&self) -> Vec<String> {
-        let Ok(store) = Self::store() else {
-            return Vec::new();
-        };
-        let n = store.length().unwrap_or(0);
-        (0..n).filter_map(|i| store.key(i).ok().flatten()).collect()
     }
 }
 
@@ -131,10 +121,6 @@ impl StorageBackend for MemoryStorage {
 
     fn remove(&self, key: &str) {
         self.values.borrow_mut().remove(key);
-    }
-
-    fn keys(&self) -> Vec<String> {
-        self.values.borrow().keys().cloned().collect()
     }
 }
 

@@ -88,12 +88,6 @@ impl Slot {
         self.write(store, value, now)
     }
 
-    /// Saves `value` over whatever the slot holds (the user chose to).
-    pub fn overwrite(&mut self, store: &dyn StorageBackend, value: &str) -> Saving {
-        let now = revision(store, &self.key);
-        self.write(store, value, now)
-    }
-
     fn write(&mut self, store: &dyn StorageBackend, value: &str, now: u64) -> Saving {
         let next = now.wrapping_add(1);
         // The value first: a tab that hears of the new revision reads it.
@@ -231,8 +225,9 @@ mod tests {
         let mut b = Slot::open(&store, "k");
         assert_eq!(b.save(&store, "b"), Saving::Saved(2));
         assert_eq!(a.elsewhere(&store), Elsewhere::Conflict);
-        // Room again: overwriting (the user's choice) goes through.
-        assert_eq!(a.overwrite(&store, "mine"), Saving::Saved(3));
+        // Room again: after the user's choice (theirs), a save goes through.
+        assert_eq!(a.theirs(&store), Some("b".into()));
+        assert_eq!(a.save(&store, "mine"), Saving::Saved(3));
     }
 
     #[test]

@@ -32,9 +32,7 @@ impl LadderCtx {
         self.work.shared.set(true);
         let own_tests = self.cases.tests.get_untracked();
         let own_exercise = self.cases.exercise.get_untracked();
-        self.cases.tests.set(project.tests);
-        self.cases.exercise.set(project.exercise);
-        self.cases.results.set(Vec::new());
+        self.show_cases(project.tests, project.exercise);
         if project.exercise {
             self.panes.tests_open.set(true);
         }
@@ -100,9 +98,7 @@ impl LadderCtx {
     /// undo away; it stays saved where it was).
     pub fn open_project(&self, id: Option<u64>, project: engine::ladder::Project) {
         self.set_project(id);
-        self.cases.tests.set(project.tests);
-        self.cases.exercise.set(project.exercise);
-        self.cases.results.set(Vec::new());
+        self.show_cases(project.tests, project.exercise);
         if self.ladder() != project.ladder {
             self.apply(Edit::Replace {
                 ladder: project.ladder,
@@ -118,9 +114,7 @@ impl LadderCtx {
             return;
         }
         let with = self.work.shared_with.get_value();
-        self.cases.tests.set(with.own_tests);
-        self.cases.exercise.set(with.own_exercise);
-        self.cases.results.set(Vec::new());
+        self.show_cases(with.own_tests, with.own_exercise);
         if with.replaced {
             self.drawing.editor.update_value(|e| {
                 e.undo();
@@ -166,9 +160,7 @@ impl LadderCtx {
         if project.machine != self.machine {
             return;
         }
-        self.cases.tests.set(project.tests);
-        self.cases.exercise.set(project.exercise);
-        self.cases.results.set(Vec::new());
+        self.show_cases(project.tests, project.exercise);
         let replaced = self
             .drawing
             .editor
@@ -229,5 +221,12 @@ impl LadderCtx {
         if !self.work.shared.get_untracked() {
             self.work.saving.save(&self.project_now().to_json());
         }
+    }
+
+    /// The cases shown: `tests`, as an exercise or not, none run yet.
+    fn show_cases(&self, tests: Vec<TestCase>, exercise: bool) {
+        self.cases.tests.set(tests);
+        self.cases.exercise.set(exercise);
+        self.cases.results.set(Vec::new());
     }
 }
