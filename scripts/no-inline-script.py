@@ -31,7 +31,13 @@ if pattern.search(html) or "<script>" in html:
 worker = staging / "sw.js"
 if worker.exists():
     files = sorted(p.name for p in staging.iterdir() if p.is_file() and p.name != "sw.js")
-    version = hashlib.sha384("".join(files).encode() + html.encode()).hexdigest()[:16]
+    # Over every file's bytes: the files worker's names carry no hash
+    # (Trunk names a worker by its binary), so a name list would miss a
+    # change to it.
+    digest = hashlib.sha384(html.encode())
+    for f in files:
+        digest.update(f.encode() + b"\0" + (staging / f).read_bytes())
+    version = digest.hexdigest()[:16]
     listed = '", "'.join(["/"] + [f"/{f}" for f in files])
     text = worker.read_text(encoding="utf-8")
     text = text.replace("__VERSION__", version).replace('"__FILES__"', f'"{listed}"')

@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
 # Installs whatever this project's build and tests need and is missing.
+# `setup.sh serve` installs only what building and serving the page needs
+# (scripts/serve.sh): no browser, no wasm-pack, no test tools.
 # Idempotent: every step checks first, so a second run takes seconds.
 # Sources: crates.io, Debian's packages and the npm registry only.
 set -euo pipefail
+
+for_tests=yes
+[ "${1:-}" = serve ] && for_tests=no
 
 TRUNK_VERSION=0.21.14
 WASM_BINDGEN_VERSION=0.2.130 # must equal the wasm-bindgen pin in app/Cargo.toml
 WASM_PACK_VERSION=0.15.1
 BINARYEN_VERSION=132.0.0
 AXE_VERSION=4.11.0
+HTTP_SERVER_VERSION=14.1.1
+ZOPFLI_VERSION=1.0.15
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 export PATH="$HOME/.cargo/bin:$root/.tools/node_modules/.bin:$PATH"
@@ -35,23 +42,37 @@ if ! has_version wasm-bindgen "$WASM_BINDGEN_VERSION"; then
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
 fi
 
-if ! has_version wasm-pack "$WASM_PACK_VERSION"; then
-  say "installing wasm-pack $WASM_PACK_VERSION"
-  cargo install --locked wasm-pack --version "$WASM_PACK_VERSION"
-fi
-
 if ! has_version wasm-opt "version $BINARYEN_VERSION" && ! has_version wasm-opt "version ${BINARYEN_VERSION%%.*}"; then
   say "installing binaryen $BINARYEN_VERSION from npm into .tools/"
   mkdir -p "$root/.tools"
   npm install --prefix "$root/.tools" --no-audit --no-fund "binaryen@$BINARYEN_VERSION" >&2
 fi
 
-# axe-core: the accessibility checks of the end-to-end tests (issue #27).
-if [ ! -f "$root/.tools/node_modules/axe-core/axe.min.js" ]; then
-  say "installing axe-core $AXE_VERSION from npm into .tools/"
-  mkdir -p "$root/.tools"
-  npm install --prefix "$root/.tools" --no-audit --no-fund "axe-core@$AXE_VERSION" >&2
+# http-server serves dist/ with the build's .br / .gz (scripts/serve.sh,
+# the end-to-end tests); Zopfli writes the .gz (scripts/precompress.mjs).
+npm_tool() { # npm_tool PACKAGE VERSION: into .tools/ unless there
+  if [ ! -f "$root/.tools/node_modules/$1/package.json" ] \
+    || ! grep -q "\"version\": \"$2\"" "$root/.tools/node_modules/$1/package.json"; then
+    say "installing $1 $2 from npm into .tools/"
+    mkdir -p "$root/.tools"
+    npm install --prefix "$root/.tools" --no-audit --no-fund "$1@$2" >&2
+  fi
+}
+npm_tool http-server "$HTTP_SERVER_VERSION"
+npm_tool @gfx/zopfli "$ZOPFLI_VERSION"
+
+if [ "$for_tests" = no ]; then
+  say "tools for serving ready"
+  exit 0
 fi
+
+if ! has_version wasm-pack "$WASM_PACK_VERSION"; then
+  say "installing wasm-pack $WASM_PACK_VERSION"
+  cargo install --locked wasm-pack --version "$WASM_PACK_VERSION"
+fi
+
+# axe-core: the accessibility checks of the end-to-end tests (issue #27).
+npm_tool axe-core "$AXE_VERSION"
 
 if [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; then
   say "installing Debian's chromium and chromium-driver"

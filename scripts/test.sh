@@ -28,11 +28,12 @@ step "engine builds for wasm32"
 cargo build -p engine --lib --no-default-features --target wasm32-unknown-unknown --release --locked
 
 if [ -d app ]; then
-  step "app logic tests (native: pacing, storage validation)"
+  step "app logic tests (native: pacing, storage validation) and the files worker's"
   cargo test -p app --lib --locked
+  cargo test -p files_worker --locked
 
-  step "clippy, wasm32 (the app)"
-  cargo clippy -p app --all-targets --target wasm32-unknown-unknown --locked -- -D warnings
+  step "clippy, wasm32 (the app and its files worker)"
+  cargo clippy -p app -p files_worker --all-targets --target wasm32-unknown-unknown --locked -- -D warnings
 
   step "app tests in headless Chromium (wasm-pack)"
   wasm-pack test --headless --chrome --mode no-install app

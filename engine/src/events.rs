@@ -98,7 +98,7 @@ pub fn parse_events(text: &str) -> Result<Vec<InputEvent>, Vec<Located<EventErro
     if !errors.is_empty() {
         return Err(errors);
     }
-    events.sort_by_key(|e| e.time); // stable: file order at equal times
+    crate::sort::by_key(&mut events, |e| e.time); // stable: file order at equal times
     Ok(events)
 }
 

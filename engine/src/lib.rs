@@ -20,6 +20,7 @@ pub mod minasec;
 pub mod plc;
 pub mod record;
 pub mod scan_timer;
+pub mod sort;
 pub mod time;
 
 pub use error::{shown, Located};

@@ -1,9 +1,12 @@
-"""Fixtures: dist/ served on 127.0.0.1, and a headless Chromium driver."""
+"""Fixtures: dist/ served on 127.0.0.1 as scripts/serve.sh serves it
+(http-server with the build's precompressed files), and a headless
+Chromium driver."""
 
-import functools
-import http.server
 import pathlib
-import threading
+import socket
+import subprocess
+import time
+import urllib.request
 
 import pytest
 from selenium import webdriver
@@ -14,26 +17,39 @@ DIST = ROOT / "dist"
 ARTIFACTS = pathlib.Path(__file__).resolve().parent / "artifacts"
 
 
-class QuietHandler(http.server.SimpleHTTPRequestHandler):
-    extensions_map = {
-        **http.server.SimpleHTTPRequestHandler.extensions_map,
-        ".wasm": "application/wasm",
-        ".js": "text/javascript",
-    }
+SERVER = ROOT / ".tools" / "node_modules" / ".bin" / "http-server"
 
-    def log_message(self, *args):
-        pass
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
 
 
 @pytest.fixture(scope="session")
 def base_url():
     assert (DIST / "index.html").exists(), "run trunk build --release first"
-    handler = functools.partial(QuietHandler, directory=str(DIST))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    thread = threading.Thread(target=server.serve_forever, daemon=True)
-    thread.start()
-    yield f"http://127.0.0.1:{server.server_address[1]}"
-    server.shutdown()
+    assert SERVER.exists(), "run scripts/setup.sh (it installs http-server)"
+    port = free_port()
+    # The flags scripts/serve.sh gives: .br / .gz when the browser accepts
+    # them; no caching between tests' fresh profiles matters either way.
+    server = subprocess.Popen(
+        [str(SERVER), str(DIST), "-a", "127.0.0.1", "-p", str(port), "--brotli", "--gzip", "-s", "-c-1"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    url = f"http://127.0.0.1:{port}"
+    deadline = time.monotonic() + 20
+    while True:
+        try:
+            urllib.request.urlopen(url, timeout=1).close()
+            break
+        except OSError:
+            if time.monotonic() > deadline or server.poll() is not None:
+                server.kill()
+                raise
+            time.sleep(0.1)
+    yield url
+    server.terminate()
+    server.wait(timeout=10)
 
 
 @pytest.fixture

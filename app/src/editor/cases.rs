@@ -85,9 +85,9 @@ impl Recorder {
                 written.push(d.to_string());
             }
         }
-        read.sort();
+        engine::sort::all(&mut read);
         read.dedup();
-        written.sort();
+        engine::sort::all(&mut written);
         written.dedup();
         let resolve = |name: &String| plc.device(name).ok().map(|d| (name.clone(), d));
         let inputs: Vec<(String, Device, i64)> = read

@@ -5,7 +5,8 @@
 //! and becomes the ladder (one undo away) only when it reads.
 
 use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
-use engine::ladder::{plcopen, Project};
+use engine::ladder::Project;
+use files_worker::{Reply, Request};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::{JsCast, JsValue};
@@ -60,6 +61,28 @@ pub fn svg_of(ctx: LadderCtx) -> String {
     let refs: Vec<(usize, Option<usize>, &RungData)> =
         rungs.iter().map(|(n, s, d)| (*n, *s, d)).collect();
     picture::svg(&refs)
+}
+
+/// Downloads the ladder as PLCopen XML, written by the files worker
+/// (fetched on first use, issue #29).
+fn export_plcopen(ctx: LadderCtx) {
+    let t = ctx.page.lang.get_untracked().texts();
+    ctx.panes.message.set(Some(t.files_loading.to_string()));
+    let request = Request::Export {
+        ladder: ctx.ladder(),
+        name: "Main".to_string(),
+    };
+    crate::worker::ask(request, move |reply| {
+        ctx.panes.message.set(match reply {
+            Ok(Reply::Export(Ok(xml))) => {
+                download(&name(ctx, "xml"), "application/xml", &xml);
+                None
+            }
+            Ok(Reply::Export(Err(errors))) => Some(errors.join("; ")),
+            Ok(other) => Some(format!("{other:?}")),
+            Err(why) => Some(format!("{} ({why})", t.files_failed)),
+        });
+    });
 }
 
 /// A file name for this machine's ladder.
@@ -189,15 +212,7 @@ pub fn FileButtons(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 {move || t().open_file}
                 <input type="file" data-testid="open-file" accept=".json,.xml,application/json,text/xml" on:change=on_file />
             </label>
-            <button type="button" data-testid="export-plcopen" on:click=move |_| {
-                match plcopen::export(&ctx.ladder(), "Main") {
-                    Ok(xml) => download(&name(ctx, "xml"), "application/xml", &xml),
-                    Err(errors) => {
-                        let all: Vec<String> = errors.iter().map(ToString::to_string).collect();
-                        ctx.panes.message.set(Some(all.join("; ")));
-                    }
-                }
-            }>"PLCopen"</button>
+            <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>
             <button type="button" data-testid="export-text" disabled=move || ctx.drawing.listing.with(Option::is_none) on:click=move |_| {
                 if let Some(listing) = ctx.drawing.listing.get_untracked() {
                     download(&name(ctx, "txt"), "text/plain", &listing.text);

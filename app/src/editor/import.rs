@@ -2,12 +2,13 @@
 //! names variables the machine has no device for, runs more than one
 //! program, or gives warnings, the import dialog
 //! (`[data-testid=import-dialog]`) shows a mapping table with the devices
-//! `engine::ladder::plcopen::declare::propose` suggests (each editable),
-//! a POU picker, the warnings and the errors at their lines; Import
-//! replaces the ladder (one undo away) only when the file imports whole.
+//! the files worker proposes (each editable), a POU picker, the warnings
+//! and the errors at their lines; Import replaces the ladder (one undo
+//! away) only when the file imports whole. The reading itself runs in the
+//! files worker (`crate::worker`, fetched on first use: issue #29).
 
-use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
-use engine::ladder::plcopen::{declare, dom, drawn_body, import_pou, VarMap};
+use engine::ladder::edit::Edit;
+use files_worker::{Reply, Request};
 use leptos::prelude::*;
 
 use super::LadderCtx;
@@ -29,93 +30,72 @@ pub struct Pending {
     pub errors: Vec<String>,
 }
 
-impl Pending {
-    /// The map the rows make.
-    fn map(&self) -> VarMap {
-        VarMap::from_pairs(
-            self.rows
-                .iter()
-                .filter(|(_, d)| !d.trim().is_empty())
-                .map(|(n, d)| (n.clone(), d.trim().to_string())),
-        )
-    }
-}
-
-/// Tries `pending` as it stands: the ladder replaced on success (and
-/// `None` returned), else the pending import with what was said.
-pub fn attempt(ctx: LadderCtx, mut pending: Pending, quiet_if_clean: bool) -> Option<Pending> {
-    let map = pending.map();
-    if let Err(errors) = map.check(ctx.machine) {
-        // Said at the table's row (the map's lines number its filled rows).
-        pending.errors = errors
-            .iter()
-            .filter_map(|e| {
-                let (name, device, _) = map.entries.iter().find(|(_, _, l)| *l == e.line)?;
-                Some(format!("{name} → {device}: {}", e.error))
-            })
-            .collect();
-        return Some(pending);
-    }
-    match import_pou(
-        &pending.text,
-        Some(ctx.machine),
-        Some(&map),
-        pending.pou.as_deref(),
-    ) {
-        Ok(imported) => {
-            pending.warnings = imported
-                .warnings
-                .iter()
-                .map(|w| format!("{}:{}: {}", pending.file, w.line, w.error))
-                .collect();
-            pending.errors.clear();
-            let clean = pending.warnings.is_empty() && pending.rows.is_empty();
-            if quiet_if_clean && !clean {
-                // Shown first, so the user sees what was proposed.
-                return Some(pending);
+/// Tries `pending` as it stands (`first`: the file just opened, its
+/// devices to be proposed). On success the ladder is replaced, the dialog
+/// closes and `closed` runs; otherwise the dialog shows what was said. A
+/// file that imports whole with nothing proposed and nothing to say is
+/// imported without the dialog.
+pub fn attempt(
+    ctx: LadderCtx,
+    shown: RwSignal<Option<Pending>>,
+    mut pending: Pending,
+    first: bool,
+    closed: impl FnOnce() + 'static,
+) {
+    let t = ctx.page.lang.get_untracked().texts();
+    ctx.panes.message.set(Some(t.files_loading.to_string()));
+    let request = Request::Import {
+        file: pending.file.clone(),
+        text: pending.text.clone(),
+        machine: ctx.machine,
+        rows: (!first).then(|| pending.rows.clone()),
+        pou: pending.pou.clone(),
+    };
+    crate::worker::ask(request, move |reply| {
+        ctx.panes.message.set(None);
+        let reply = match reply {
+            Ok(Reply::Import(reply)) => reply,
+            Ok(other) => return leptos::logging::warn!("an import got {other:?}"),
+            Err(why) => {
+                ctx.panes
+                    .message
+                    .set(Some(format!("{} ({why})", t.files_failed)));
+                return;
             }
-            let ladder = align_outputs(&imported.ladder, COLUMNS - 1);
-            if ctx.ladder() != ladder {
-                ctx.apply(Edit::Replace { ladder });
+        };
+        pending.pous = reply.pous;
+        pending.rows = reply.rows;
+        pending.warnings = reply.warnings;
+        pending.errors = reply.errors;
+        let clean = pending.warnings.is_empty() && pending.rows.is_empty();
+        match reply.ladder {
+            // Shown first, so the user sees what was proposed.
+            Some(_) if first && !clean => shown.set(Some(pending)),
+            Some(ladder) => {
+                if ctx.ladder() != ladder {
+                    ctx.apply(Edit::Replace { ladder });
+                }
+                shown.set(None);
+                closed();
             }
-            None
+            None => shown.set(Some(pending)),
         }
-        Err(errors) => {
-            pending.errors = errors
-                .iter()
-                .map(|e| format!("{}:{}: {}", pending.file, e.line, e.error))
-                .collect();
-            Some(pending)
-        }
-    }
+    });
 }
 
 /// A PLCopen file opened: imported at once when nothing needs saying,
 /// else offered in the dialog with proposed devices.
 pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: &str) {
-    let (pous, rows) = match dom::parse(text) {
-        Ok(root) => {
-            let mut found = Vec::new();
-            root.descendants("pou", &mut found);
-            let pous = found
-                .iter()
-                .filter(|p| drawn_body(p).is_some())
-                .filter_map(|p| p.attr("name").map(str::to_string))
-                .collect();
-            (pous, declare::propose(&root, ctx.machine, None))
-        }
-        Err(_) => (Vec::new(), Vec::new()),
-    };
     let pending = Pending {
         file: file.to_string(),
         text: text.to_string(),
-        pous,
+        pous: Vec::new(),
         pou: None,
-        rows,
+        rows: Vec::new(),
         warnings: Vec::new(),
         errors: Vec::new(),
     };
-    shown.set(attempt(ctx, pending, true));
+    attempt(ctx, shown, pending, true, || {});
 }
 
 /// The dialog.
@@ -129,10 +109,7 @@ pub fn ImportDialog(
     let t = move || ctx.page.lang.get().texts();
     let apply = move |_| {
         if let Some(p) = shown.get_untracked() {
-            shown.set(attempt(ctx, p, false));
-            if shown.with_untracked(Option::is_none) {
-                on_close.run(());
-            }
+            attempt(ctx, shown, p, false, move || on_close.run(()));
         }
     };
     // It takes the focus when it opens (not when its table is edited).

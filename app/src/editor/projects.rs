@@ -172,7 +172,7 @@ impl Projects {
         if storage::write(&key_of(entry.id), &json).is_ok() {
             self.change(|i| {
                 i.projects.push(entry);
-                i.projects.sort_by_key(|e| e.id);
+                engine::sort::by_key(&mut i.projects, |e| e.id);
             });
             self.deleted.set(None);
         }

@@ -163,6 +163,8 @@ pub static EN: Texts = Texts {
     step_instr: "Step instruction",
     step_clock: "Step clock",
     import_title: "Import PLCopen",
+    files_loading: "Reading the PLCopen file…",
+    files_failed: "The PLCopen tools could not be loaded: check the connection and try again",
     import_pou: "Program",
     import_pou_tasks: "what the tasks run",
     import_variable: "Variable",

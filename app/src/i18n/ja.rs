@@ -164,6 +164,8 @@ pub static JA: Texts = Texts {
     step_instr: "1命令",
     step_clock: "1クロック",
     import_title: "PLCopenの読み込み",
+    files_loading: "PLCopen ファイルを処理しています…",
+    files_failed: "PLCopen の処理部を読み込めませんでした。接続を確かめて、もう一度試してください",
     import_pou: "プログラム",
     import_pou_tasks: "タスクが実行するもの",
     import_variable: "変数",

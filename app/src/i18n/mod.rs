@@ -222,6 +222,10 @@ pub struct Texts {
     pub step_instr: &'static str,
     pub step_clock: &'static str,
     pub import_title: &'static str,
+    /// While the files worker reads or writes a PLCopen file.
+    pub files_loading: &'static str,
+    /// The files worker could not be started.
+    pub files_failed: &'static str,
     pub import_pou: &'static str,
     pub import_pou_tasks: &'static str,
     pub import_variable: &'static str,

@@ -208,7 +208,7 @@ impl Assembler {
         if self.errors.is_empty() {
             Ok(self.out)
         } else {
-            self.errors.sort_by_key(|e| e.line);
+            crate::sort::by_key(&mut self.errors, |e| e.line);
             Err(self.errors)
         }
     }

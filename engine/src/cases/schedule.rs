@@ -41,10 +41,10 @@ impl Schedule {
     ) -> Self {
         let mut points: Vec<SimTime> = events.collect();
         points.extend(spans.iter().flat_map(|&(from, to)| [from, to]));
-        points.sort_unstable();
+        crate::sort::all(&mut points);
         points.dedup();
         let mut by_start: Vec<usize> = (0..spans.len()).collect();
-        by_start.sort_by_key(|&i| spans[i].0);
+        crate::sort::by_key(&mut by_start, |&i| spans[i].0);
         Schedule {
             points,
             next_point: 0,

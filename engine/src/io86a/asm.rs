@@ -365,7 +365,7 @@ impl Parser {
                 first_steps: self.first_steps,
             })
         } else {
-            self.errors.sort_by_key(|e| e.line);
+            crate::sort::by_key(&mut self.errors, |e| e.line);
             Err(self.errors)
         }
     }

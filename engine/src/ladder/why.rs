@@ -67,7 +67,7 @@ pub fn explain(logic: &RungLogic, target: Pos, conducts: &[bool]) -> Option<Expl
         .filter(|&p| path.iter().all(|n| eval(n, &state, Some(p))) != powered)
         .collect();
     if !single.is_empty() {
-        single.sort();
+        crate::sort::all(&mut single);
         return Some(Explanation {
             target,
             powered,
@@ -93,7 +93,7 @@ pub fn explain(logic: &RungLogic, target: Pos, conducts: &[bool]) -> Option<Expl
             causes.extend(set);
         }
     }
-    causes.sort();
+    crate::sort::all(&mut causes);
     Some(Explanation {
         target,
         powered,

@@ -87,7 +87,7 @@ impl Change {
                 _ => None,
             })
             .collect();
-        out.sort_unstable();
+        crate::sort::all(&mut out);
         out.dedup();
         out
     }

@@ -226,7 +226,7 @@ impl Clip {
                         rung.links.push(link);
                     }
                 }
-                rung.links.sort();
+                crate::sort::all(&mut rung.links);
                 plan.set(at.rung, rung)?;
                 Ok(Cursor::new(at.rung, at.row, at.col + width))
             }

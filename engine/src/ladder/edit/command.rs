@@ -276,7 +276,7 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
                 add(at.col);
             }
             add(at.col + 1);
-            rung.links.sort();
+            crate::sort::all(&mut rung.links);
             plan.set(at.rung, rung)?;
             Cursor {
                 col: at.col + 1,
@@ -310,7 +310,7 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
                 return Err(EditError::NothingToDo);
             } else {
                 rung.links.push(link);
-                rung.links.sort();
+                crate::sort::all(&mut rung.links);
             }
             plan.set(at.rung, rung)?;
             at

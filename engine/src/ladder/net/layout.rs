@@ -57,7 +57,7 @@ pub fn layout(logic: &RungLogic) -> Rung {
             });
         }
     }
-    rung.links.sort();
+    crate::sort::all(&mut rung.links);
     rung.links.dedup();
     rung
 }

@@ -306,7 +306,7 @@ fn joined_parallel(arena: &[Node], done: &mut [Finished], children: Vec<usize>) 
             }
         }
     }
-    items.sort_by_key(|(k, _)| *k);
+    crate::sort::by_key(&mut items, |(k, _)| *k);
     let items = items.into_iter().map(|(_, n)| n).collect();
     (Net::Parallel(items), depth)
 }

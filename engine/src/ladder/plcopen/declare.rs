@@ -152,7 +152,7 @@ impl Names {
                 Some((name.clone(), device, value.clone(), *line))
             })
             .collect();
-        out.sort_by_key(|o| o.3);
+        crate::sort::by_key(&mut out, |o| o.3);
         out
     }
 
@@ -179,7 +179,7 @@ impl Names {
                 _ => None,
             })
             .collect();
-        out.sort();
+        crate::sort::all(&mut out);
         out
     }
 

@@ -471,7 +471,9 @@ impl Body {
         // box after a folded one folds too (NOT NOT a is a's contact).
         let rank = self.flow_ranks(Vec::new());
         let mut order: Vec<usize> = (0..self.edges.len()).collect();
-        order.sort_by_key(|&i| rank.get(&from[i]).copied().unwrap_or(usize::MAX));
+        crate::sort::by_key(&mut order, |&i| {
+            rank.get(&from[i]).copied().unwrap_or(usize::MAX)
+        });
         for i in order {
             let e = match &self.edges[i].net {
                 Net::Leaf(e @ (Element::Not | Element::Edge { .. }), _) => e.clone(),

@@ -121,7 +121,7 @@ pub fn import_pou(
         return Err(errors);
     }
     name_devices(&mut ladder, &names, helpers, machine, &mut warnings);
-    warnings.sort_by_key(|w| w.line);
+    crate::sort::by_key(&mut warnings, |w| w.line);
     Ok(Imported {
         ladder,
         unused_map_entries: names.unused_map_lines(),

@@ -57,7 +57,7 @@ impl Body {
             })
             .collect();
         // Stable: equal ranks (loops) keep file order.
-        keyed.sort_by_key(|(r, _)| *r);
+        crate::sort::by_key(&mut keyed, |(r, _)| *r);
         keyed.into_iter().map(|(_, g)| g).collect()
     }
 
@@ -83,7 +83,7 @@ impl Body {
             .filter(|(_, &n)| n == 0)
             .map(|(&p, _)| p)
             .collect();
-        ready.sort_unstable();
+        crate::sort::all(&mut ready);
         let mut rank: HashMap<usize, usize> = HashMap::with_capacity(pending.len());
         while let Some(p) = ready.pop() {
             rank.insert(p, rank.len());
@@ -181,7 +181,7 @@ impl Body {
                 }
             }
             let mut key = set.clone();
-            key.sort_unstable();
+            crate::sort::all(&mut key);
             let next = ids.len();
             let id = *ids.entry(key).or_insert(next);
             wires.push((set, id));

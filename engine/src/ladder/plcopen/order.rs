@@ -23,7 +23,7 @@ pub(super) fn writers_first(n: usize, constraints: &[(Vec<usize>, Vec<usize>)]) 
     for (k, (writers, readers)) in constraints.iter().enumerate() {
         let node = n + k;
         let mut sorted = writers.clone();
-        sorted.sort_unstable();
+        crate::sort::all(&mut sorted);
         let readers: Vec<usize> = readers
             .iter()
             .copied()

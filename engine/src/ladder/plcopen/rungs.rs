@@ -88,7 +88,7 @@ impl Body {
         // Logic that reaches no coil has no effect in the tool that drew
         // it either (the right rail is no output): said, not kept.
         warnings.extend(unused(&edges, &rungs, &lines));
-        rungs.sort_by_key(|(top, _, _)| *top);
+        crate::sort::by_key(&mut rungs, |(top, _, _)| *top);
         self.attach_comments(&mut rungs);
         self.helpers_first(&mut rungs);
         Ok(rungs.into_iter().map(|(_, r, line)| (r, line)).collect())
@@ -116,7 +116,7 @@ impl Body {
         let mut buses = Vec::new();
         let mut moved = Vec::new();
         for (bus, outs) in &mut groups {
-            outs.sort_by_key(|(_, p, _)| *p);
+            crate::sort::by_key(outs, |(_, p, _)| *p);
             if *bus == rail && machine == Some(MachineId::Io86a) {
                 // Always on: IO86A's M57 (ON) carries the rail to it.
                 let q = self.fresh();

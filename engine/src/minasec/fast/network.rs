@@ -430,7 +430,7 @@ impl Network {
                 value: c.reads[usize::from(a)],
             })
             .collect();
-        c.checks.sort_unstable();
+        crate::sort::all(&mut c.checks);
         c.checks.dedup();
         Network {
             gates: c.gates.into_boxed_slice(),

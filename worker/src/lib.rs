@@ -1,0 +1,161 @@
+//! The page's file formats, run in a Web Worker that the page fetches the
+//! first time a PLCopen file is opened or exported (issue #29): they are
+//! a sixth of the page's code and most visits never use them, so the
+//! first screen does not wait for them (docs/performance.md, "First
+//! visit"). The service worker keeps this worker for offline use like
+//! every other file of the release.
+//!
+//! The page and the worker exchange [`Envelope`]s as JSON text; what each
+//! request does is plain Rust ([`handle`]), tested natively.
+
+use engine::ladder::edit::{align_outputs, COLUMNS};
+use engine::ladder::plcopen::{self, declare, dom, drawn_body, import_pou, VarMap};
+use engine::ladder::Ladder;
+use engine::MachineId;
+use serde::{Deserialize, Serialize};
+
+/// What the worker posts once it listens: messages sent before then would
+/// be lost (its module is still loading), so the page holds them till it.
+pub const READY: &str = "ready";
+
+/// A request or its reply with the number that pairs them.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Envelope<T> {
+    /// Chosen by the page; the reply carries it back.
+    pub id: u32,
+    pub body: T,
+}
+
+/// What the page asks of the worker.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Request {
+    /// Import a PLCopen file's ladder for `machine`. With `rows: None`
+    /// (the file just opened) the worker proposes a device for each
+    /// variable; otherwise `rows` are the user's (name, device) pairs
+    /// and `pou` the POU chosen (`None`: what the tasks run).
+    Import {
+        file: String,
+        text: String,
+        machine: MachineId,
+        rows: Option<Vec<(String, String)>>,
+        pou: Option<String>,
+    },
+    /// Export `ladder` as PLCopen XML with one program named `name`.
+    Export { ladder: Ladder, name: String },
+}
+
+/// The worker's answer to a [`Request`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Reply {
+    Import(ImportReply),
+    /// The XML, or each reason the ladder cannot be exported.
+    Export(Result<String, Vec<String>>),
+}
+
+/// What an import attempt found.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ImportReply {
+    /// The POUs with an LD or FBD body.
+    pub pous: Vec<String>,
+    /// Each variable with the device it is to take (proposed, or the
+    /// user's as sent).
+    pub rows: Vec<(String, String)>,
+    /// What was dropped or skipped, each with `file:line`.
+    pub warnings: Vec<String>,
+    /// Why the file does not import, each at its line or at its row.
+    pub errors: Vec<String>,
+    /// The imported ladder, its outputs aligned, when there are no errors.
+    pub ladder: Option<Ladder>,
+}
+
+/// Does what `request` asks.
+pub fn handle(request: Request) -> Reply {
+    match request {
+        Request::Import {
+            file,
+            text,
+            machine,
+            rows,
+            pou,
+        } => Reply::Import(import(&file, &text, machine, rows, pou.as_deref())),
+        Request::Export { ladder, name } => Reply::Export(
+            plcopen::export(&ladder, &name)
+                .map_err(|errors| errors.iter().map(ToString::to_string).collect()),
+        ),
+    }
+}
+
+/// One import attempt (see [`Request::Import`]).
+fn import(
+    file: &str,
+    text: &str,
+    machine: MachineId,
+    rows: Option<Vec<(String, String)>>,
+    pou: Option<&str>,
+) -> ImportReply {
+    let mut reply = ImportReply::default();
+    let root = dom::parse(text);
+    if let Ok(root) = &root {
+        let mut found = Vec::new();
+        root.descendants("pou", &mut found);
+        reply.pous = found
+            .iter()
+            .filter(|p| drawn_body(p).is_some())
+            .filter_map(|p| p.attr("name").map(str::to_string))
+            .collect();
+    }
+    reply.rows = match (rows, &root) {
+        (Some(rows), _) => rows,
+        (None, Ok(root)) => declare::propose(root, machine, None),
+        (None, Err(_)) => Vec::new(),
+    };
+    let map = VarMap::from_pairs(
+        reply
+            .rows
+            .iter()
+            .filter(|(_, d)| !d.trim().is_empty())
+            .map(|(n, d)| (n.clone(), d.trim().to_string())),
+    );
+    if let Err(errors) = map.check(machine) {
+        // Said at the table's row (the map's lines number its filled rows).
+        reply.errors = errors
+            .iter()
+            .filter_map(|e| {
+                let (name, device, _) = map.entries.iter().find(|(_, _, l)| *l == e.line)?;
+                Some(format!("{name} → {device}: {}", e.error))
+            })
+            .collect();
+        return reply;
+    }
+    match import_pou(text, Some(machine), Some(&map), pou) {
+        Ok(imported) => {
+            reply.warnings = imported
+                .warnings
+                .iter()
+                .map(|w| format!("{file}:{}: {}", w.line, w.error))
+                .collect();
+            reply.ladder = Some(align_outputs(&imported.ladder, COLUMNS - 1));
+        }
+        Err(errors) => {
+            reply.errors = errors
+                .iter()
+                .map(|e| format!("{file}:{}: {}", e.line, e.error))
+                .collect();
+        }
+    }
+    reply
+}
+
+/// Reads a request envelope and returns the reply's, as JSON. A message
+/// that is not a request gets no reply (`None`): only the page sends any.
+pub fn answer(message: &str) -> Option<String> {
+    let Envelope { id, body } = serde_json::from_str::<Envelope<Request>>(message).ok()?;
+    serde_json::to_string(&Envelope {
+        id,
+        body: handle(body),
+    })
+    .ok()
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,97 @@
+use super::*;
+use engine::ladder::plcopen::import_for;
+
+const NAMED: &str = include_str!("../../engine/tests/ladder/fixtures/openplc-named.xml");
+
+fn import_request(text: &str, rows: Option<Vec<(String, String)>>) -> ImportReply {
+    match handle(Request::Import {
+        file: "named.xml".into(),
+        text: text.into(),
+        machine: MachineId::Io86a,
+        rows,
+        pou: None,
+    }) {
+        Reply::Import(reply) => reply,
+        other => panic!("an import gets an import reply: {other:?}"),
+    }
+}
+
+#[test]
+fn a_file_just_opened_gets_devices_proposed_for_its_names() {
+    let reply = import_request(NAMED, None);
+    assert_eq!(reply.pous, ["main"]);
+    let memo = reply.rows.iter().find(|(n, _)| n == "memo");
+    assert!(memo.is_some_and(|(_, d)| !d.is_empty()), "{:?}", reply.rows);
+    assert!(reply.errors.is_empty(), "{:?}", reply.errors);
+    let ladder = reply.ladder.expect("imported with the proposed devices");
+    assert_eq!(ladder.rungs.len(), 2);
+}
+
+#[test]
+fn a_bad_device_is_refused_at_its_row_and_nothing_is_imported() {
+    let first = import_request(NAMED, None);
+    let rows: Vec<_> = first
+        .rows
+        .into_iter()
+        .map(|(n, d)| {
+            if n == "memo" {
+                (n, "Q99".to_string())
+            } else {
+                (n, d)
+            }
+        })
+        .collect();
+    let reply = import_request(NAMED, Some(rows));
+    assert!(reply.ladder.is_none());
+    assert!(
+        reply.errors.iter().any(|e| e.starts_with("memo → Q99:")),
+        "{:?}",
+        reply.errors
+    );
+}
+
+#[test]
+fn a_broken_file_is_refused_with_its_name_and_line() {
+    let reply = import_request("<project>\n<types>\n</project>", None);
+    assert!(reply.ladder.is_none());
+    assert!(
+        reply.errors.iter().any(|e| e.starts_with("named.xml:")),
+        "{:?}",
+        reply.errors
+    );
+}
+
+#[test]
+fn an_exported_ladder_imports_back_as_drawn() {
+    let ladder = import_request(NAMED, None).ladder.expect("imports");
+    let Reply::Export(Ok(xml)) = handle(Request::Export {
+        ladder: ladder.clone(),
+        name: "Main".into(),
+    }) else {
+        panic!("the imported ladder exports");
+    };
+    let again = import_for(&xml, Some(MachineId::Io86a)).expect("its own export imports");
+    // The drawing comes back; the variables' names stay with the file.
+    assert_eq!(align_outputs(&again, COLUMNS - 1).rungs, ladder.rungs);
+}
+
+#[test]
+fn envelopes_carry_their_number_and_garbage_gets_no_reply() {
+    let request = Envelope {
+        id: 7,
+        body: Request::Import {
+            file: "named.xml".into(),
+            text: NAMED.into(),
+            machine: MachineId::Io86a,
+            rows: None,
+            pou: None,
+        },
+    };
+    let text = serde_json::to_string(&request).expect("a request serialises");
+    let reply: Envelope<Reply> =
+        serde_json::from_str(&answer(&text).expect("a reply")).expect("a reply envelope");
+    assert_eq!(reply.id, 7);
+    assert!(matches!(reply.body, Reply::Import(r) if r.ladder.is_some()));
+    assert_eq!(answer("not json"), None);
+    assert_eq!(answer(r#"{"id": 1, "body": "Nothing"}"#), None);
+}
