@@ -106,10 +106,18 @@ impl<M: Plc + Clone> Simulator<M> {
                 self.machine.tick(SimTime::from_nanos(nanos as u64));
             }
             Speed::Max => {
+                // A slice is started only when one as long as the last
+                // would end within the budget: the frame's simulation then
+                // ends by its budget, whatever a slice costs on this
+                // machine and build (the first slice always runs).
                 let start = now_ms();
+                let mut last_end = start;
                 loop {
                     self.machine.tick(MAX_SPEED_SLICE);
-                    if now_ms() - start >= MAX_SPEED_BUDGET_MS || self.machine.has_break() {
+                    let end = now_ms();
+                    let next_end = end + (end - last_end);
+                    last_end = end;
+                    if next_end - start > MAX_SPEED_BUDGET_MS || self.machine.has_break() {
                         break;
                     }
                 }
@@ -159,14 +167,13 @@ mod tests {
         );
     }
 
-    #[test]
-    fn max_speed_runs_slices_until_the_budget_is_spent() {
+    /// Simulated time one `Speed::Max` frame runs when each slice takes
+    /// `slice_ms` of wall time.
+    fn max_speed_frame(slice_ms: f64) -> SimTime {
         let mut s = sim();
-        // A wall clock that moves 4 ms per reading: the budget of 10 ms is
-        // spent after three slices.
         let mut clock = 0.0;
         let now = move || {
-            clock += 4.0;
+            clock += slice_ms;
             clock
         };
         s.frame(
@@ -177,7 +184,17 @@ mod tests {
             16.0,
             now,
         );
-        assert_eq!(s.machine().now(), SimTime::from_millis(3 * 20));
+        s.machine().now()
+    }
+
+    #[test]
+    fn max_speed_starts_no_slice_that_would_end_past_the_budget() {
+        // Slices of 4 ms: two end by 8 ms; a third would end at 12 ms.
+        assert_eq!(max_speed_frame(4.0), SimTime::from_millis(2 * 20));
+        // Slices of 1 ms: ten fit the 10 ms budget exactly.
+        assert_eq!(max_speed_frame(1.0), SimTime::from_millis(10 * 20));
+        // A slice longer than the budget still runs once: time moves on.
+        assert_eq!(max_speed_frame(25.0), SimTime::from_millis(20));
     }
 
     #[test]

@@ -26,30 +26,41 @@ def free_port():
         return s.getsockname()[1]
 
 
+class DistServer:
+    """dist/ served as scripts/serve.sh serves it: http-server with the
+    build's .br / .gz when the browser accepts them (`encodings`: the
+    flags, e.g. only ["--gzip"] as a host without brotli)."""
+
+    def __init__(self, encodings=("--brotli", "--gzip"), port=None):
+        assert (DIST / "index.html").exists(), "run trunk build --release first"
+        assert SERVER.exists(), "run scripts/setup.sh (it installs http-server)"
+        port = port or free_port()
+        self.port = port
+        self.process = subprocess.Popen(
+            [str(SERVER), str(DIST), "-a", "127.0.0.1", "-p", str(port), *encodings, "-s", "-c-1"],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        self.url = f"http://127.0.0.1:{port}"
+        deadline = time.monotonic() + 20
+        while True:
+            try:
+                urllib.request.urlopen(self.url, timeout=1).close()
+                return
+            except OSError:
+                if time.monotonic() > deadline or self.process.poll() is not None:
+                    self.process.kill()
+                    raise
+                time.sleep(0.1)
+
+    def stop(self):
+        self.process.terminate()
+        self.process.wait(timeout=10)
+
+
 @pytest.fixture(scope="session")
 def base_url():
-    assert (DIST / "index.html").exists(), "run trunk build --release first"
-    assert SERVER.exists(), "run scripts/setup.sh (it installs http-server)"
-    port = free_port()
-    # The flags scripts/serve.sh gives: .br / .gz when the browser accepts
-    # them; no caching between tests' fresh profiles matters either way.
-    server = subprocess.Popen(
-        [str(SERVER), str(DIST), "-a", "127.0.0.1", "-p", str(port), "--brotli", "--gzip", "-s", "-c-1"],
-        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    url = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 20
-    while True:
-        try:
-            urllib.request.urlopen(url, timeout=1).close()
-            break
-        except OSError:
-            if time.monotonic() > deadline or server.poll() is not None:
-                server.kill()
-                raise
-            time.sleep(0.1)
-    yield url
-    server.terminate()
-    server.wait(timeout=10)
+    server = DistServer()
+    yield server.url
+    server.stop()
 
 
 @pytest.fixture

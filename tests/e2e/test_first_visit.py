@@ -4,9 +4,11 @@ it, and when the app cannot start the screen says what to do."""
 
 import json
 
+import pytest
 from selenium.webdriver.common.by import By
 
-from test_app import el, open_fresh, wait
+from conftest import DistServer
+from test_app import ROOT, el, open_fresh, wait
 
 
 def test_the_app_replaces_the_loading_screen(driver, base_url):
@@ -34,18 +36,25 @@ SLOW_LINK = {"offline": False, "latency": 150, "downloadThroughput": 1_600_000 /
              "uploadThroughput": 750_000 / 8}
 
 
-def test_a_first_visit_over_a_slow_link(driver, base_url, artifacts):
+@pytest.mark.parametrize("served", ["brotli", "gzip"])
+def test_a_first_visit_over_a_slow_link(driver, artifacts, served):
     """A fresh profile over the slow link, served as scripts/serve.sh
-    serves it: the figures (first words, app ready, bytes sent) go to
+    serves it (brotli or gzip, as the browser accepts) and as a host that
+    has only gzip: the figures (first words, app ready, bytes sent) go to
     figures.json for docs/performance.md. Timing is recorded, not
     asserted (a shared machine moves it); what is asserted is that the
-    files came compressed and that the words came before the app."""
+    files came compressed, that the first screen needed one wasm (the
+    files worker waits for its first use) and that the words came first."""
+    server = DistServer(["--brotli", "--gzip"] if served == "brotli" else ["--gzip"])
     driver.execute_cdp_cmd("Network.enable", {})
     driver.execute_cdp_cmd("Network.emulateNetworkConditions", SLOW_LINK)
-    driver.get(base_url)
-    wait(driver, lambda: driver.execute_script(
-        "return performance.getEntriesByName('hashigo-ready').length > 0"), timeout=60,
-        message="the app marks itself ready")
+    try:
+        driver.get(server.url)
+        wait(driver, lambda: driver.execute_script(
+            "return performance.getEntriesByName('hashigo-ready').length > 0"), timeout=60,
+            message="the app marks itself ready")
+    finally:
+        server.stop()
     timeline = driver.execute_script("""
         const at = (name) => performance.getEntriesByName(name)[0].startTime;
         const files = performance.getEntriesByType('resource').map((r) => ({
@@ -60,7 +69,7 @@ def test_a_first_visit_over_a_slow_link(driver, base_url, artifacts):
     assert 0 < wasm[0]["sent"] < wasm[0]["size"] / 2, wasm[0]
     figures_file = artifacts / "figures.json"
     figures = json.loads(figures_file.read_text()) if figures_file.exists() else {}
-    figures["first_visit_slow_link"] = {
+    figures[f"first_visit_slow_link_{served}"] = {
         "link": "1.6 Mbit/s down, 150 ms latency (CDP Network.emulateNetworkConditions)",
         "words_ms": round(timeline["words"]),
         "ready_ms": round(timeline["ready"]),
@@ -68,4 +77,25 @@ def test_a_first_visit_over_a_slow_link(driver, base_url, artifacts):
         "wasm_bytes_sent": wasm[0]["sent"],
     }
     figures_file.write_text(json.dumps(figures, indent=2) + "\n")
-    print(figures["first_visit_slow_link"], timeline["files"])
+    print(figures[f"first_visit_slow_link_{served}"], timeline["files"])
+
+
+def test_when_the_files_worker_cannot_load_the_page_says_so(driver):
+    # The page loaded, then the server gone before the worker's first use
+    # (the service worker bypassed, as before it has kept the files).
+    server = DistServer()
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.setBypassServiceWorker", {"bypass": True})
+    open_fresh(driver, server.url)
+    server.stop()
+    el(driver, "open-file").send_keys(str(ROOT / "engine/tests/ladder/fixtures/openplc-named.xml"))
+    try:
+        wait(driver, lambda: "could not be loaded" in el(driver, "edit-message").text,
+             message="the message line says the PLCopen tools did not load")
+        assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]')
+        # With the server back, the next try starts the worker again.
+        server = DistServer(port=server.port)
+        el(driver, "open-file").send_keys(str(ROOT / "engine/tests/ladder/fixtures/openplc-named.xml"))
+        wait(driver, lambda: el(driver, "import-dialog"), message="the import goes on once it loads")
+    finally:
+        server.stop()

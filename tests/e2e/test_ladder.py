@@ -515,29 +515,26 @@ def test_the_page_runs_under_a_csp_with_no_inline_script(driver, base_url):
 
 
 def test_after_the_first_visit_the_page_works_offline(driver, artifacts):
-    import functools
-    import http.server
-    import threading
+    from conftest import DistServer
 
-    from conftest import DIST, QuietHandler
-
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(QuietHandler, directory=str(DIST)))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    url = f"http://127.0.0.1:{server.server_address[1]}"
+    server = DistServer()
+    url = server.url
     driver.get(url)
     wait(driver, lambda: el(driver, "ladder"))
     wait(driver, lambda: driver.execute_script("return navigator.serviceWorker.controller !== null"),
          timeout=30, message="the worker controls the page")
     manifest = driver.execute_script("return document.querySelector('link[rel=manifest]').href")
     assert manifest.endswith("manifest.webmanifest")
-    server.shutdown()
-    server.server_close()
+    server.stop()
     driver.get(url)
     wait(driver, lambda: el(driver, "ladder"), message="the page loads with the server gone")
     focus_ladder(driver)
     place(driver, Keys.F5, "X00")
     place(driver, Keys.F7, "Y00")
     assert "ST   Y00" in el(driver, "il-listing").text
+    # The files worker, never used online, was kept too (issue #29).
+    el(driver, "open-file").send_keys(str(ROOT / "engine/tests/ladder/fixtures/openplc-named.xml"))
+    wait(driver, lambda: el(driver, "import-dialog"), message="PLCopen import works offline")
 
 
 def test_projects_new_open_rename_duplicate_delete(driver, base_url):
