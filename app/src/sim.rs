@@ -48,8 +48,10 @@ impl Speed {
 /// A frame never catches up more than this much wall time: after the tab
 /// was hidden, the simulation resumes instead of racing through the gap.
 pub const CATCH_UP_CAP_MS: f64 = 100.0;
-/// How much of a frame `Speed::Max` may spend simulating.
+/// How much of a frame `Speed::Max` may spend simulating, at most.
 pub const MAX_SPEED_BUDGET_MS: f64 = 10.0;
+/// ... and at least, however late frames come.
+const MIN_SPEED_BUDGET_MS: f64 = 2.0;
 /// `Speed::Max` advances in slices of this much simulated time, checking
 /// the budget between slices.
 const MAX_SPEED_SLICE: SimTime = SimTime::from_millis(20);
@@ -70,6 +72,40 @@ pub struct Pace {
 /// through the same interface.
 pub struct Simulator<M> {
     machine: Recorded<M>,
+    budget: FrameBudget,
+}
+
+/// `Speed::Max`'s share of a frame. The rest of the frame (the live
+/// ladder's changes, layout, paint) costs what the drawing and the device
+/// make it cost, so a fixed share can leave too little and every frame
+/// misses the display: a late frame takes a fifth off the share, and each
+/// frame on time gives back 0.05 ms (a miss every fifty frames or fewer
+/// at the edge, so the frame rate holds).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct FrameBudget {
+    ms: f64,
+    /// The shortest time seen between frames: the display's interval.
+    interval_ms: f64,
+}
+
+impl FrameBudget {
+    fn new() -> FrameBudget {
+        FrameBudget {
+            ms: MAX_SPEED_BUDGET_MS,
+            interval_ms: f64::INFINITY,
+        }
+    }
+
+    /// Learns from a frame that came `wall_ms` after the last.
+    fn learn(&mut self, wall_ms: f64) {
+        // No display runs faster than 165 Hz: a shorter gap is jitter.
+        self.interval_ms = self.interval_ms.min(wall_ms.max(6.0));
+        self.ms = if wall_ms > self.interval_ms * 1.5 {
+            (self.ms * 0.8).max(MIN_SPEED_BUDGET_MS)
+        } else {
+            (self.ms + 0.05).min(MAX_SPEED_BUDGET_MS)
+        };
+    }
 }
 
 impl<M: Plc + Clone> Simulator<M> {
@@ -77,6 +113,7 @@ impl<M: Plc + Clone> Simulator<M> {
     pub fn new(machine: M) -> Simulator<M> {
         Simulator {
             machine: Recorded::new(machine),
+            budget: FrameBudget::new(),
         }
     }
 
@@ -106,6 +143,8 @@ impl<M: Plc + Clone> Simulator<M> {
                 self.machine.tick(SimTime::from_nanos(nanos as u64));
             }
             Speed::Max => {
+                self.budget.learn(wall_ms);
+                let budget = self.budget.ms;
                 // A slice is started only when one as long as the last
                 // would end within the budget: the frame's simulation then
                 // ends by its budget, whatever a slice costs on this
@@ -117,7 +156,7 @@ impl<M: Plc + Clone> Simulator<M> {
                     let end = now_ms();
                     let next_end = end + (end - last_end);
                     last_end = end;
-                    if next_end - start > MAX_SPEED_BUDGET_MS || self.machine.has_break() {
+                    if next_end - start > budget || self.machine.has_break() {
                         break;
                     }
                 }
@@ -195,6 +234,52 @@ mod tests {
         assert_eq!(max_speed_frame(1.0), SimTime::from_millis(10 * 20));
         // A slice longer than the budget still runs once: time moves on.
         assert_eq!(max_speed_frame(25.0), SimTime::from_millis(20));
+    }
+
+    #[test]
+    fn late_frames_shrink_max_speeds_share_and_frames_on_time_give_it_back() {
+        let mut b = FrameBudget::new();
+        for _ in 0..100 {
+            b.learn(16.7);
+        }
+        assert_eq!(b.ms, MAX_SPEED_BUDGET_MS, "on time: the whole share");
+        b.learn(33.4);
+        assert!((b.ms - 8.0).abs() < 1e-9, "{}", b.ms);
+        for _ in 0..20 {
+            b.learn(16.7);
+        }
+        assert!((b.ms - 9.0).abs() < 1e-9, "slowly back: {}", b.ms);
+        for _ in 0..100 {
+            b.learn(100.0);
+        }
+        assert_eq!(b.ms, MIN_SPEED_BUDGET_MS, "never below the least");
+        // A 120 Hz display: its own interval is on time.
+        let mut fast = FrameBudget::new();
+        for _ in 0..10 {
+            fast.learn(8.3);
+        }
+        assert_eq!(fast.ms, MAX_SPEED_BUDGET_MS);
+    }
+
+    #[test]
+    fn after_a_late_frame_max_speed_runs_fewer_slices() {
+        let mut s = sim();
+        let pace = Pace {
+            speed: Speed::Max,
+            paused: false,
+        };
+        let slices = |s: &mut Simulator<AvrPlc>, wall_ms: f64| {
+            let before = s.machine().now();
+            let mut clock = 0.0;
+            s.frame(pace, wall_ms, move || {
+                clock += 1.0;
+                clock
+            });
+            (s.machine().now() - before).as_nanos() / SimTime::from_millis(20).as_nanos()
+        };
+        assert_eq!(slices(&mut s, 16.7), 10);
+        // Late: an 8 ms share, eight slices of 1 ms.
+        assert_eq!(slices(&mut s, 40.0), 8);
     }
 
     #[test]

@@ -35,6 +35,9 @@ pub enum Op {
 impl Op {
     /// The opcode in bits 15-12 of `word`; `None` for 10-14 (undefined,
     /// the sketch does nothing for them).
+    // Inlined by force: the interpreter calls it per step, and the page is
+    // built for size (opt-level z; docs/performance.md, "First visit").
+    #[inline(always)]
     pub const fn decode(word: u16) -> Option<Op> {
         Some(match word >> 12 {
             0 => Op::End,

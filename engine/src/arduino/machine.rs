@@ -297,10 +297,16 @@ impl Machine {
         self.clock.settle(t);
     }
 
+    // Inlined by force: the interpreter calls it per step, and the page is
+    // built for size (opt-level z; docs/performance.md, "First visit").
+    #[inline(always)]
     fn push(&mut self, bit: bool) {
         self.stack = self.stack << 1 | u16::from(bit);
     }
 
+    // Inlined by force: the interpreter calls it per step, and the page is
+    // built for size (opt-level z; docs/performance.md, "First visit").
+    #[inline(always)]
     fn pop(&mut self) -> bool {
         match self.pop_order {
             PopOrder::Intended => {

@@ -152,10 +152,15 @@ impl Machine {
         self.clock.settle(t);
     }
 
+    // The interpreter's inner loop: inlined by force, since the page's
+    // size-first build (opt-level z) would otherwise call each of these
+    // per record and run the AVR PLC at half speed (docs/performance.md).
+    #[inline(always)]
     fn read(&self, b: BitRef) -> bool {
         self.registers[usize::from(b.register)] >> b.bit & 1 != 0
     }
 
+    #[inline(always)]
     fn write(&mut self, b: BitRef, on: bool) {
         let r = &mut self.registers[usize::from(b.register)];
         *r = (*r & !(1 << b.bit)) | (u8::from(on) << b.bit);
@@ -248,6 +253,7 @@ impl Machine {
 
     /// Runs the record at `pc` with the running result `acc`; false once
     /// the scan is over.
+    #[inline(always)]
     fn execute(&mut self, (pc, acc): &mut (usize, bool)) -> bool {
         let Some(&instruction) = self.program.instructions().get(*pc) else {
             return false;

@@ -57,7 +57,8 @@ pub struct Counter {
 }
 
 /// Every device's state: what contacts read and what a scan leaves.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+/// `Copy`: the scan keeps a copy at every end, one block copy.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Devices {
     /// The input image (bit n = X0n).
     pub x: u8,
@@ -75,6 +76,9 @@ pub struct Devices {
 
 impl Devices {
     /// What a contact on `bit` reads.
+    // Inlined by force: the interpreter calls it per step, and the page is
+    // built for size (opt-level z; docs/performance.md, "First visit").
+    #[inline(always)]
     pub fn bit(&self, bit: Bit) -> bool {
         match bit {
             Bit::X(n) => self.x >> n & 1 != 0,
@@ -96,6 +100,9 @@ impl Devices {
         }
     }
 
+    // Inlined by force: the interpreter calls it per step, and the page is
+    // built for size (opt-level z; docs/performance.md, "First visit").
+    #[inline(always)]
     pub(super) fn set_bit(&mut self, bit: Bit, on: bool) {
         fn put8(v: &mut u8, n: u8, on: bool) {
             *v = (*v & !(1 << n)) | (u8::from(on) << n);

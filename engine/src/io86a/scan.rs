@@ -140,7 +140,7 @@ impl Machine {
     fn end_scan(&mut self) {
         self.output_terminals = self.devices.y;
         self.scans += 1;
-        self.last_scan.clone_from(&self.devices);
+        self.last_scan = self.devices;
         self.tracer.end_scan();
     }
 
@@ -232,6 +232,9 @@ impl Machine {
     }
 
     /// Records instruction `index`'s step while tracing.
+    // Inlined by force: the interpreter calls it per step, and the page is
+    // built for size (opt-level z; docs/performance.md, "First visit").
+    #[inline(always)]
     fn trace_result(&mut self, index: usize, read: bool, result: bool) {
         if self.tracer.on() {
             self.tracer

@@ -81,8 +81,10 @@ impl Tracer {
         self.on
     }
 
-    /// Step `step` read `read` and left `result`.
-    #[inline]
+    /// Step `step` read `read` and left `result`. Inlined by force: every
+    /// machine's interpreter calls it per step, and the page is built for
+    /// size (docs/performance.md).
+    #[inline(always)]
     pub fn step(&mut self, step: usize, read: bool, result: bool) {
         if self.on {
             self.current.set(step, read, result);
