@@ -20,6 +20,7 @@ pub mod minasec;
 pub mod plc;
 pub mod record;
 pub mod scan_timer;
+pub mod softplc;
 pub mod sort;
 pub mod time;
 

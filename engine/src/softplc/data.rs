@@ -1,0 +1,286 @@
+//! IEC 61131-3 elementary types and typed values, and what the soft PLC's
+//! blocks compute with them. Integers wrap in their type's width (as the
+//! C that OpenPLC's runtime compiles to does); an integer divided by zero
+//! gives 0 (as its MOD does), a REAL follows IEEE 754; nothing panics.
+
+use std::cmp::Ordering;
+
+use crate::plc::Value;
+
+/// An elementary type the soft PLC holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DataType {
+    Bool,
+    Int,
+    Dint,
+    Lint,
+    Uint,
+    Udint,
+    Ulint,
+    Word,
+    Dword,
+    Real,
+    /// A duration, held in nanoseconds, printed in milliseconds.
+    Time,
+}
+
+impl DataType {
+    /// Every type, in the order docs/soft-plc.md lists them.
+    pub const ALL: [DataType; 11] = [
+        DataType::Bool,
+        DataType::Int,
+        DataType::Dint,
+        DataType::Lint,
+        DataType::Uint,
+        DataType::Udint,
+        DataType::Ulint,
+        DataType::Word,
+        DataType::Dword,
+        DataType::Real,
+        DataType::Time,
+    ];
+
+    /// The IEC name (`INT`, `UDINT` …).
+    pub const fn name(self) -> &'static str {
+        match self {
+            DataType::Bool => "BOOL",
+            DataType::Int => "INT",
+            DataType::Dint => "DINT",
+            DataType::Lint => "LINT",
+            DataType::Uint => "UINT",
+            DataType::Udint => "UDINT",
+            DataType::Ulint => "ULINT",
+            DataType::Word => "WORD",
+            DataType::Dword => "DWORD",
+            DataType::Real => "REAL",
+            DataType::Time => "TIME",
+        }
+    }
+
+    /// The type an IEC name names, in any case.
+    pub fn from_name(name: &str) -> Option<DataType> {
+        DataType::ALL
+            .into_iter()
+            .find(|t| t.name().eq_ignore_ascii_case(name))
+    }
+
+    /// Bits of an integer or bit-string type (`None` for BOOL, REAL, TIME).
+    pub const fn bits(self) -> Option<u32> {
+        match self {
+            DataType::Int | DataType::Uint | DataType::Word => Some(16),
+            DataType::Dint | DataType::Udint | DataType::Dword => Some(32),
+            DataType::Lint | DataType::Ulint => Some(64),
+            DataType::Bool | DataType::Real | DataType::Time => None,
+        }
+    }
+
+    /// The least and greatest integer of this type (`None` for BOOL, REAL,
+    /// TIME).
+    pub const fn range(self) -> Option<(i128, i128)> {
+        match self.bits() {
+            Some(bits) if self.is_signed() => {
+                Some((-(1i128 << (bits - 1)), (1i128 << (bits - 1)) - 1))
+            }
+            Some(bits) => Some((0, (1i128 << bits) - 1)),
+            None => None,
+        }
+    }
+
+    /// Whether an integer of this type is signed.
+    pub const fn is_signed(self) -> bool {
+        matches!(self, DataType::Int | DataType::Dint | DataType::Lint)
+    }
+
+    /// The value a variable of this type starts at without an initial value.
+    pub const fn zero(self) -> Data {
+        match self {
+            DataType::Bool => Data::Bool(false),
+            DataType::Real => Data::Real(0.0),
+            DataType::Time => Data::Time(0),
+            _ => Data::Int(self, 0),
+        }
+    }
+}
+
+/// A typed value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Data {
+    Bool(bool),
+    /// An integer or bit string of the type: its bits in the low end of an
+    /// `i64`, sign-extended for a signed type (always in range).
+    Int(DataType, i64),
+    Real(f32),
+    /// Nanoseconds.
+    Time(i64),
+}
+
+/// Keeps the low `bits` of `v`, sign-extended when `signed`: two's
+/// complement wrapping in that width.
+const fn wrap(v: i128, bits: u32, signed: bool) -> i64 {
+    let shift = 128 - bits;
+    if signed {
+        ((v << shift) >> shift) as i64
+    } else {
+        ((v << shift) as u128 >> shift) as i64
+    }
+}
+
+impl Data {
+    /// `v` as an integer of type `t`, wrapped into its width (`t` must be
+    /// an integer or bit-string type; any other gives its zero).
+    pub fn integer(t: DataType, v: i128) -> Data {
+        match t.bits() {
+            Some(bits) => Data::Int(t, wrap(v, bits, t.is_signed())),
+            None => t.zero(),
+        }
+    }
+
+    /// Its type.
+    pub const fn data_type(self) -> DataType {
+        match self {
+            Data::Bool(_) => DataType::Bool,
+            Data::Int(t, _) => t,
+            Data::Real(_) => DataType::Real,
+            Data::Time(_) => DataType::Time,
+        }
+    }
+
+    /// As a device value for `--watch` and the page: unsigned types
+    /// unsigned, TIME in milliseconds.
+    pub fn to_value(self) -> Value {
+        match self {
+            Data::Bool(b) => Value::Bit(b),
+            Data::Int(t, v) if !t.is_signed() => Value::Uint(v as u64 & mask(t)),
+            Data::Int(_, v) => Value::Int(v),
+            Data::Real(r) => Value::Real(f64::from(r)),
+            Data::Time(ns) => Value::Int(ns / 1_000_000),
+        }
+    }
+
+    /// The integer, widened (`None` for BOOL, REAL, TIME).
+    fn int(self) -> Option<i128> {
+        match self {
+            Data::Int(t, v) if !t.is_signed() => Some(i128::from(v as u64 & mask(t))),
+            Data::Int(_, v) => Some(i128::from(v)),
+            _ => None,
+        }
+    }
+
+    /// ADD, SUB, MUL, DIV, MOD of two values of one type; `None` when the
+    /// types differ or the operation does not apply to them (the compiler
+    /// refuses those before a program runs).
+    pub fn arith(self, op: Arith, other: Data) -> Option<Data> {
+        match (self, other) {
+            (Data::Int(t, _), Data::Int(u, _)) if t == u => {
+                let (a, b) = (self.int()?, other.int()?);
+                let v = match op {
+                    Arith::Add => a + b,
+                    Arith::Sub => a - b,
+                    Arith::Mul => a.wrapping_mul(b),
+                    Arith::Div if b == 0 => 0,
+                    Arith::Div => a / b,
+                    Arith::Mod if b == 0 => 0,
+                    Arith::Mod => a % b,
+                };
+                Some(Data::integer(t, v))
+            }
+            (Data::Real(a), Data::Real(b)) => Some(Data::Real(match op {
+                Arith::Add => a + b,
+                Arith::Sub => a - b,
+                Arith::Mul => a * b,
+                Arith::Div => a / b,
+                Arith::Mod => return None,
+            })),
+            (Data::Time(a), Data::Time(b)) => match op {
+                Arith::Add => Some(Data::Time(a.wrapping_add(b))),
+                Arith::Sub => Some(Data::Time(a.wrapping_sub(b))),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// NEG: the negation, wrapped (`-32768` stays `-32768` as an INT).
+    pub fn negate(self) -> Option<Data> {
+        match self {
+            Data::Int(t, _) => Some(Data::integer(t, -self.int()?)),
+            Data::Real(r) => Some(Data::Real(-r)),
+            Data::Time(ns) => Some(Data::Time(ns.wrapping_neg())),
+            Data::Bool(_) => None,
+        }
+    }
+
+    /// EQ, GT … : how two values of one type compare (`None` for types
+    /// that differ, or a REAL NaN, which no comparison holds for).
+    pub fn compare(self, other: Data) -> Option<Ordering> {
+        match (self, other) {
+            (Data::Bool(a), Data::Bool(b)) => Some(a.cmp(&b)),
+            (Data::Int(t, _), Data::Int(u, _)) if t == u => Some(self.int()?.cmp(&other.int()?)),
+            (Data::Real(a), Data::Real(b)) => a.partial_cmp(&b),
+            (Data::Time(a), Data::Time(b)) => Some(a.cmp(&b)),
+            _ => None,
+        }
+    }
+
+    /// The value converted to `to` (`*_TO_*`): an integer wraps into the
+    /// narrower width, a REAL rounds to the nearest integer (halves away
+    /// from zero) and saturates at the type's limits (NaN gives 0), BOOL
+    /// is 0 or 1, TIME converts from and to milliseconds.
+    pub fn convert(self, to: DataType) -> Data {
+        let whole: i128 = match self {
+            Data::Bool(b) => i128::from(b),
+            Data::Int(..) => self.int().unwrap_or(0),
+            Data::Real(r) => {
+                return match to {
+                    DataType::Real => self,
+                    DataType::Bool => Data::Bool(r != 0.0),
+                    DataType::Time => Data::Time((f64::from(r) * 1e6).round() as i64),
+                    _ => Data::integer(to, saturate(to, r)),
+                };
+            }
+            Data::Time(ns) => i128::from(ns / 1_000_000),
+        };
+        match to {
+            DataType::Bool => Data::Bool(whole != 0),
+            DataType::Real => Data::Real(whole as f32),
+            DataType::Time => Data::Time(match self {
+                Data::Time(ns) => ns,
+                _ => (whole as i64).wrapping_mul(1_000_000),
+            }),
+            _ => Data::integer(to, whole),
+        }
+    }
+}
+
+/// The bits of an unsigned type, as a mask.
+const fn mask(t: DataType) -> u64 {
+    match t.bits() {
+        Some(64) | None => u64::MAX,
+        Some(bits) => (1 << bits) - 1,
+    }
+}
+
+/// A REAL rounded and held within integer type `t`'s range.
+fn saturate(t: DataType, r: f32) -> i128 {
+    let Some((lo, hi)) = t.range() else {
+        return 0;
+    };
+    if r.is_nan() {
+        return 0;
+    }
+    // `as` saturates at i128's range, far beyond every type's.
+    (f64::from(r).round() as i128).clamp(lo, hi)
+}
+
+/// The arithmetic blocks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Arith {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,238 @@
+//! IEC 61131-3 literals: `TRUE`, `42`, `-5`, `16#FF`, `2#1010_0101`,
+//! `INT#-5`, `UINT#16#FFFF`, `1.5`, `1.0E3`, `REAL#2`, `T#500ms`,
+//! `TIME#1h2m3.5s`. A literal never wraps: one outside its type's range
+//! is refused.
+
+use std::fmt;
+
+use super::data::{Data, DataType};
+
+/// Why a literal is not one.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LiteralError {
+    /// Nothing was written.
+    Empty,
+    /// `XYZ#…` names no type the soft PLC has.
+    UnknownType(String),
+    /// Not a number in the base it gives.
+    BadNumber(String),
+    /// A number outside its type's range.
+    OutOfRange { text: String, data_type: DataType },
+    /// Not a duration (`T#` then numbers with d, h, m, s, ms, us, ns).
+    BadTime(String),
+    /// A literal of one type where another is needed.
+    WrongType { text: String, expected: DataType },
+}
+
+impl fmt::Display for LiteralError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LiteralError::Empty => write!(f, "a value is missing"),
+            LiteralError::UnknownType(t) => write!(f, "unknown type `{t}`"),
+            LiteralError::BadNumber(t) => write!(f, "`{t}` is not a number"),
+            LiteralError::OutOfRange { text, data_type } => {
+                write!(f, "`{text}` is out of range for {}", data_type.name())
+            }
+            LiteralError::BadTime(t) => {
+                write!(f, "`{t}` is not a duration (e.g. T#500ms, T#1h2m3.5s)")
+            }
+            LiteralError::WrongType { text, expected } => {
+                write!(f, "`{text}` is not a {} value", expected.name())
+            }
+        }
+    }
+}
+
+impl std::error::Error for LiteralError {}
+
+/// Reads `text` as a literal. `expected` is the type the place needs: an
+/// untyped number takes it (without one, an integer is a DINT and a
+/// decimal a REAL); a typed literal of another type is refused.
+pub fn parse_literal(text: &str, expected: Option<DataType>) -> Result<Data, LiteralError> {
+    let text = text.trim();
+    if text.is_empty() {
+        return Err(LiteralError::Empty);
+    }
+    let (typed, body) = match text.split_once('#') {
+        Some((prefix, rest)) if prefix.chars().all(|c| c.is_ascii_alphabetic()) => {
+            let t = match prefix.to_ascii_uppercase().as_str() {
+                "T" => DataType::Time,
+                _ => DataType::from_name(prefix)
+                    .ok_or_else(|| LiteralError::UnknownType(prefix.to_string()))?,
+            };
+            (Some(t), rest)
+        }
+        _ => (None, text),
+    };
+    if let (Some(t), Some(e)) = (typed, expected) {
+        if t != e {
+            return Err(LiteralError::WrongType {
+                text: text.to_string(),
+                expected: e,
+            });
+        }
+    }
+    let t = typed.or(expected);
+    let value = match t {
+        Some(DataType::Time) => {
+            Data::Time(time(body).ok_or_else(|| LiteralError::BadTime(text.into()))?)
+        }
+        Some(DataType::Bool) => match body.to_ascii_uppercase().as_str() {
+            "TRUE" | "1" => Data::Bool(true),
+            "FALSE" | "0" => Data::Bool(false),
+            _ => {
+                return Err(LiteralError::WrongType {
+                    text: text.to_string(),
+                    expected: DataType::Bool,
+                })
+            }
+        },
+        Some(DataType::Real) => {
+            Data::Real(real(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?)
+        }
+        Some(int_type) => {
+            let v = integer(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?;
+            in_range(int_type, v).ok_or_else(|| LiteralError::OutOfRange {
+                text: text.to_string(),
+                data_type: int_type,
+            })?
+        }
+        None => {
+            let upper = body.to_ascii_uppercase();
+            if upper == "TRUE" || upper == "FALSE" {
+                Data::Bool(upper == "TRUE")
+            } else if body.contains(['.', 'e', 'E']) && !body.contains('#') {
+                Data::Real(real(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?)
+            } else {
+                let too_big = || LiteralError::OutOfRange {
+                    text: text.to_string(),
+                    data_type: DataType::Lint,
+                };
+                let digits = body.trim_start_matches(['-', '+']);
+                let v = match integer(body) {
+                    Some(v) => v,
+                    // All digits, yet no integer: more than 64 bits hold.
+                    None if !digits.is_empty()
+                        && underscores_between_digits(digits)
+                        && digits.bytes().all(|c| c.is_ascii_digit() || c == b'_') =>
+                    {
+                        return Err(too_big())
+                    }
+                    None => return Err(LiteralError::BadNumber(text.into())),
+                };
+                in_range(DataType::Dint, v)
+                    .or_else(|| in_range(DataType::Lint, v))
+                    .ok_or_else(too_big)?
+            }
+        }
+    };
+    Ok(value)
+}
+
+/// `v` as type `t` if it is within its range.
+fn in_range(t: DataType, v: i128) -> Option<Data> {
+    let (lo, hi) = t.range()?;
+    (lo..=hi).contains(&v).then(|| Data::integer(t, v))
+}
+
+/// An integer: an optional sign, then decimal digits or `base#digits`
+/// (base 2, 8 or 16), `_` between digits.
+fn integer(s: &str) -> Option<i128> {
+    let (negative, s) = match s.as_bytes().first()? {
+        b'-' => (true, &s[1..]),
+        b'+' => (false, &s[1..]),
+        _ => (false, s),
+    };
+    let (base, digits) = match s.split_once('#') {
+        Some(("2", d)) => (2, d),
+        Some(("8", d)) => (8, d),
+        Some(("16", d)) => (16, d),
+        Some(_) => return None,
+        None => (10, s),
+    };
+    if digits.is_empty() || !underscores_between_digits(digits) {
+        return None;
+    }
+    let mut v: i128 = 0;
+    for c in digits.chars().filter(|&c| c != '_') {
+        v = v
+            .checked_mul(base)?
+            .checked_add(i128::from(c.to_digit(base as u32)?))?;
+        if v > i128::from(u64::MAX) {
+            return None;
+        }
+    }
+    Some(if negative { -v } else { v })
+}
+
+/// A decimal number: digits with an optional fraction and exponent
+/// (`1.5`, `-0.25`, `1.0E3`, `2`), `_` between digits.
+fn real(s: &str) -> Option<f32> {
+    if !underscores_between_digits(s) {
+        return None;
+    }
+    let clean: String = s.chars().filter(|&c| c != '_').collect();
+    let valid = !clean.is_empty()
+        && clean
+            .chars()
+            .all(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-'))
+        && clean.chars().any(|c| c.is_ascii_digit());
+    valid
+        .then(|| clean.parse::<f32>().ok())
+        .flatten()
+        .filter(|r| r.is_finite())
+}
+
+/// Whether every `_` in `s` stands between two digits (of any base).
+fn underscores_between_digits(s: &str) -> bool {
+    let b = s.as_bytes();
+    b.iter().enumerate().all(|(i, &c)| {
+        c != b'_'
+            || (i > 0
+                && i + 1 < b.len()
+                && b[i - 1].is_ascii_alphanumeric()
+                && b[i + 1].is_ascii_alphanumeric())
+    })
+}
+
+/// A duration in nanoseconds: an optional sign, then one or more
+/// number-unit pairs, largest unit first (`1h2m3.5s`, `500ms`, `1_000us`).
+fn time(s: &str) -> Option<i64> {
+    let (negative, mut rest) = match s.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, s.strip_prefix('+').unwrap_or(s)),
+    };
+    const UNITS: [(&str, f64); 7] = [
+        ("d", 86_400e9),
+        ("h", 3_600e9),
+        ("ms", 1e6),
+        ("m", 60e9),
+        ("s", 1e9),
+        ("us", 1e3),
+        ("ns", 1.0),
+    ];
+    let mut total = 0f64;
+    let mut last_scale = f64::INFINITY;
+    while !rest.is_empty() {
+        let end = rest
+            .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_'))
+            .filter(|&e| e > 0)?;
+        let number: f64 = rest[..end].replace('_', "").parse().ok()?;
+        rest = &rest[end..];
+        let &(unit, scale) = UNITS
+            .iter()
+            .find(|(u, _)| rest.to_ascii_lowercase().starts_with(u))?;
+        // Largest first, each unit once.
+        if scale >= last_scale {
+            return None;
+        }
+        last_scale = scale;
+        rest = &rest[unit.len()..];
+        total += number * scale;
+    }
+    if last_scale.is_infinite() || total > i64::MAX as f64 {
+        return None;
+    }
+    let ns = total.round() as i64;
+    Some(if negative { -ns } else { ns })
+}
