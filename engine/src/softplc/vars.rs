@@ -1,0 +1,242 @@
+//! The variables a soft PLC program declares: its text's `VAR … END_VAR`
+//! header (IEC 61131-3), one declaration a line:
+//!
+//! ```text
+//! VAR
+//!   start AT %IX0.0 : BOOL;      (* start button *)
+//!   count : INT := 5;
+//!   delay : TON;
+//! END_VAR
+//! VAR_RETAIN
+//!   total : UDINT;
+//! END_VAR
+//! ```
+//!
+//! Names are compared without regard to case, as IEC does; each error
+//! names its line.
+
+use std::fmt;
+
+use super::address::{Address, AddressError};
+use super::data::{Data, DataType};
+use super::literal::{parse_literal, LiteralError};
+use crate::error::Located;
+
+/// The standard function blocks a variable can be an instance of.
+pub const BLOCK_TYPES: [&str; 11] = [
+    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS", "TONR",
+];
+
+/// What a variable holds.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Kind {
+    /// A value of an elementary type, starting at `init`.
+    Value { data_type: DataType, init: Data },
+    /// An instance of a standard function block (its name upper-case).
+    Block(String),
+}
+
+/// One declared variable.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Variable {
+    /// As written.
+    pub name: String,
+    pub kind: Kind,
+    /// Where it is located, for `AT %…`.
+    pub address: Option<Address>,
+    /// Declared in `VAR_RETAIN` (or `VAR RETAIN`): kept over a power cycle.
+    pub retain: bool,
+    /// The `(* … *)` after it on its line, trimmed.
+    pub comment: String,
+}
+
+/// Why a declaration is not one.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum VarError {
+    /// Not `name [AT address] : TYPE [:= value];`.
+    Syntax(String),
+    /// A name that is not an IEC identifier.
+    BadName(String),
+    /// The name was declared before (on the line given).
+    Duplicate {
+        name: String,
+        first: usize,
+    },
+    /// No elementary type or standard block of that name.
+    UnknownType(String),
+    Address(AddressError),
+    Literal(LiteralError),
+    /// A block instance cannot be located or given a value.
+    BlockWithValue(String),
+    /// `VAR` with no `END_VAR`, or `END_VAR` with no `VAR`.
+    Unbalanced(String),
+}
+
+impl fmt::Display for VarError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            VarError::Syntax(l) => write!(
+                f,
+                "`{l}` is not a declaration (name [AT %address] : TYPE [:= value];)"
+            ),
+            VarError::BadName(n) => write!(
+                f,
+                "`{n}` is not a name (a letter or _, then letters, digits, _)"
+            ),
+            VarError::Duplicate { name, first } => {
+                write!(f, "`{name}` is declared twice (first on line {first})")
+            }
+            VarError::UnknownType(t) => write!(f, "unknown type `{t}`"),
+            VarError::Address(e) => e.fmt(f),
+            VarError::Literal(e) => e.fmt(f),
+            VarError::BlockWithValue(n) => {
+                write!(f, "`{n}` is a function block: it has no address or value")
+            }
+            VarError::Unbalanced(w) => write!(f, "`{w}` without its pair"),
+        }
+    }
+}
+
+impl std::error::Error for VarError {}
+
+/// Whether `name` is an IEC identifier.
+pub fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !name.contains("__")
+}
+
+/// Reads the `VAR … END_VAR` blocks of `text` (lines outside them are not
+/// looked at: the program's body). Every error is given, at its line
+/// (1-based); the variables only when there is none.
+pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
+    let mut vars: Vec<(Variable, usize)> = Vec::new();
+    let mut errors = Vec::new();
+    let mut open: Option<(bool, usize)> = None; // (retain, line)
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let (code, comment) = split_comment(raw);
+        let code = code.trim();
+        let word = code.trim_end_matches(';').to_ascii_uppercase();
+        match (word.as_str(), open) {
+            ("VAR" | "VAR_RETAIN" | "VAR RETAIN", None) => {
+                open = Some((word != "VAR", line));
+                continue;
+            }
+            ("VAR" | "VAR_RETAIN" | "VAR RETAIN", Some(_)) | ("END_VAR", None) => {
+                errors.push(Located::new(line, VarError::Unbalanced(code.to_string())));
+                continue;
+            }
+            ("END_VAR", Some(_)) => {
+                open = None;
+                continue;
+            }
+            _ => {}
+        }
+        let Some((retain, _)) = open else {
+            continue;
+        };
+        if code.is_empty() {
+            continue;
+        }
+        match declaration(code, retain, comment) {
+            Ok(v) => {
+                if let Some((_, first)) = vars
+                    .iter()
+                    .find(|(w, _)| w.name.eq_ignore_ascii_case(&v.name))
+                {
+                    errors.push(Located::new(
+                        line,
+                        VarError::Duplicate {
+                            name: v.name,
+                            first: *first,
+                        },
+                    ));
+                } else {
+                    vars.push((v, line));
+                }
+            }
+            Err(e) => errors.push(Located::new(line, e)),
+        }
+    }
+    if let Some((retain, line)) = open {
+        let word = if retain { "VAR_RETAIN" } else { "VAR" };
+        errors.push(Located::new(line, VarError::Unbalanced(word.to_string())));
+    }
+    if errors.is_empty() {
+        Ok(vars.into_iter().map(|(v, _)| v).collect())
+    } else {
+        Err(errors)
+    }
+}
+
+/// `code` without a trailing `(* … *)`, and that comment's text.
+fn split_comment(line: &str) -> (&str, String) {
+    match line.find("(*") {
+        Some(at) => {
+            let inner = &line[at + 2..];
+            let inner = inner.split("*)").next().unwrap_or(inner);
+            (&line[..at], inner.trim().to_string())
+        }
+        None => (line, String::new()),
+    }
+}
+
+/// One `name [AT address] : TYPE [:= value];`.
+fn declaration(code: &str, retain: bool, comment: String) -> Result<Variable, VarError> {
+    let syntax = || VarError::Syntax(code.to_string());
+    let body = code.strip_suffix(';').ok_or_else(syntax)?.trim();
+    let (head, value) = match body.split_once(":=") {
+        Some((h, v)) => (h.trim(), Some(v.trim())),
+        None => (body, None),
+    };
+    let (left, type_name) = head.rsplit_once(':').ok_or_else(syntax)?;
+    let type_name = type_name.trim();
+    let mut words = left.split_whitespace();
+    let name = words.next().ok_or_else(syntax)?.to_string();
+    if !is_identifier(&name) {
+        return Err(VarError::BadName(name));
+    }
+    let address = match (words.next(), words.next(), words.next()) {
+        (None, _, _) => None,
+        (Some(at), Some(addr), None) if at.eq_ignore_ascii_case("AT") => {
+            Some(Address::parse(addr).map_err(VarError::Address)?)
+        }
+        _ => return Err(syntax()),
+    };
+    let kind = match DataType::from_name(type_name) {
+        Some(data_type) => {
+            let init = match value {
+                Some(v) => parse_literal(v, Some(data_type)).map_err(VarError::Literal)?,
+                None => data_type.zero(),
+            };
+            if let Some(a) = address {
+                a.for_type(data_type).map_err(VarError::Address)?;
+            }
+            Kind::Value { data_type, init }
+        }
+        None => {
+            let upper = type_name.to_ascii_uppercase();
+            if !BLOCK_TYPES.contains(&upper.as_str()) {
+                return Err(VarError::UnknownType(type_name.to_string()));
+            }
+            if address.is_some() || value.is_some() {
+                return Err(VarError::BlockWithValue(name));
+            }
+            Kind::Block(upper)
+        }
+    };
+    Ok(Variable {
+        name,
+        kind,
+        address,
+        retain,
+        comment,
+    })
+}
+
+#[cfg(test)]
+mod tests;
