@@ -7,6 +7,7 @@
 //! and its place behind `Plc` come next.
 
 pub mod address;
+pub mod blocks;
 pub mod data;
 pub mod literal;
 pub mod vars;

@@ -23,8 +23,8 @@ use super::literal::{parse_literal, LiteralError};
 use crate::error::Located;
 
 /// The standard function blocks a variable can be an instance of.
-pub const BLOCK_TYPES: [&str; 11] = [
-    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS", "TONR",
+pub const BLOCK_TYPES: [&str; 10] = [
+    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS",
 ];
 
 /// What a variable holds.
