@@ -210,6 +210,67 @@ impl Data {
         }
     }
 
+    /// AND, OR, XOR of two values of one type: BOOL, or an integer's bits
+    /// in its width (`None` for other types, or types that differ).
+    pub fn bitwise(self, op: Bitwise, other: Data) -> Option<Data> {
+        match (self, other) {
+            (Data::Bool(a), Data::Bool(b)) => Some(Data::Bool(match op {
+                Bitwise::And => a & b,
+                Bitwise::Or => a | b,
+                Bitwise::Xor => a ^ b,
+            })),
+            (Data::Int(t, a), Data::Int(u, b)) if t == u => Some(Data::integer(
+                t,
+                i128::from(match op {
+                    Bitwise::And => a & b,
+                    Bitwise::Or => a | b,
+                    Bitwise::Xor => a ^ b,
+                }),
+            )),
+            _ => None,
+        }
+    }
+
+    /// NOT: every bit of an integer in its width, or a BOOL.
+    pub fn invert(self) -> Option<Data> {
+        match self {
+            Data::Bool(b) => Some(Data::Bool(!b)),
+            Data::Int(t, v) => Some(Data::integer(t, i128::from(!v))),
+            _ => None,
+        }
+    }
+
+    /// SHL, SHR, ROL, ROR of an integer's bits in its width by `n`: shifts
+    /// fill with zeros (SHR too, on a signed type: it moves bits, it does
+    /// not divide) and give 0 from `n` ≥ the width; rotations take `n`
+    /// modulo the width. `None` for other types.
+    pub fn shift(self, op: Shift, n: u32) -> Option<Data> {
+        let Data::Int(t, v) = self else {
+            return None;
+        };
+        let bits = t.bits()?;
+        let pattern = v as u64 & mask_bits(bits);
+        let moved = match op {
+            Shift::Shl if n >= bits => 0,
+            Shift::Shr if n >= bits => 0,
+            Shift::Shl => pattern << n,
+            Shift::Shr => pattern >> n,
+            Shift::Rol | Shift::Ror => {
+                let n = if op == Shift::Rol {
+                    n % bits
+                } else {
+                    (bits - n % bits) % bits
+                };
+                if n == 0 {
+                    pattern
+                } else {
+                    pattern << n | pattern >> (bits - n)
+                }
+            }
+        };
+        Some(Data::integer(t, i128::from(moved & mask_bits(bits))))
+    }
+
     /// EQ, GT … : how two values of one type compare (`None` for types
     /// that differ, or a REAL NaN, which no comparison holds for).
     pub fn compare(self, other: Data) -> Option<Ordering> {
@@ -255,8 +316,50 @@ impl Data {
 /// The bits of an unsigned type, as a mask.
 const fn mask(t: DataType) -> u64 {
     match t.bits() {
-        Some(64) | None => u64::MAX,
-        Some(bits) => (1 << bits) - 1,
+        Some(bits) => mask_bits(bits),
+        None => u64::MAX,
+    }
+}
+
+/// The low `bits` bits, as a mask.
+const fn mask_bits(bits: u32) -> u64 {
+    if bits >= 64 {
+        u64::MAX
+    } else {
+        (1 << bits) - 1
+    }
+}
+
+/// MIN, MAX and LIMIT of values of one type (`None` for types that
+/// differ or a NaN); LIMIT(MN, IN, MX) is IN held within MN … MX.
+pub fn min(a: Data, b: Data) -> Option<Data> {
+    Some(if a.compare(b)? == Ordering::Greater {
+        b
+    } else {
+        a
+    })
+}
+
+/// See [`min`].
+pub fn max(a: Data, b: Data) -> Option<Data> {
+    Some(if a.compare(b)? == Ordering::Less {
+        b
+    } else {
+        a
+    })
+}
+
+/// See [`min`].
+pub fn limit(mn: Data, input: Data, mx: Data) -> Option<Data> {
+    min(max(input, mn)?, mx)
+}
+
+/// SEL: `in0` when `g` is FALSE, else `in1`.
+pub fn select(g: bool, in0: Data, in1: Data) -> Data {
+    if g {
+        in1
+    } else {
+        in0
     }
 }
 
@@ -270,6 +373,23 @@ fn saturate(t: DataType, r: f32) -> i128 {
     }
     // `as` saturates at i128's range, far beyond every type's.
     (f64::from(r).round() as i128).clamp(lo, hi)
+}
+
+/// The bitwise blocks on two operands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Bitwise {
+    And,
+    Or,
+    Xor,
+}
+
+/// The shift and rotate blocks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shift {
+    Shl,
+    Shr,
+    Rol,
+    Ror,
 }
 
 /// The arithmetic blocks.

@@ -111,6 +111,50 @@ fn conversions_wrap_round_and_saturate() {
 }
 
 #[test]
+fn words_bitwise_shifted_and_rotated_in_their_width() {
+    let w = |v| int(DataType::Word, v);
+    assert_eq!(w(0xF0F0).bitwise(Bitwise::And, w(0xFF00)), Some(w(0xF000)));
+    assert_eq!(w(0xF0F0).bitwise(Bitwise::Xor, w(0xFFFF)), Some(w(0x0F0F)));
+    assert_eq!(w(0x00FF).invert(), Some(w(0xFF00)));
+    assert_eq!(int(DataType::Int, 0).invert(), Some(int(DataType::Int, -1)));
+    assert_eq!(
+        Data::Bool(true).bitwise(Bitwise::Or, Data::Bool(false)),
+        Some(Data::Bool(true))
+    );
+    assert_eq!(w(0x8001).shift(Shift::Shl, 1), Some(w(0x0002)));
+    assert_eq!(w(0x8001).shift(Shift::Shr, 1), Some(w(0x4000)));
+    assert_eq!(w(0x8001).shift(Shift::Rol, 1), Some(w(0x0003)));
+    assert_eq!(w(0x8001).shift(Shift::Ror, 1), Some(w(0xC000)));
+    assert_eq!(
+        w(0x8001).shift(Shift::Rol, 17),
+        Some(w(0x0003)),
+        "modulo the width"
+    );
+    assert_eq!(w(0x8001).shift(Shift::Shl, 16), Some(w(0)));
+    assert_eq!(
+        int(DataType::Int, -2).shift(Shift::Shr, 1),
+        Some(int(DataType::Int, 0x7FFF))
+    );
+    let l = |v| int(DataType::Ulint, v);
+    assert_eq!(l(1).shift(Shift::Ror, 1), Some(l(1 << 63)));
+    assert_eq!(l(1).shift(Shift::Shl, 64), Some(l(0)));
+    assert_eq!(Data::Real(1.0).shift(Shift::Shl, 1), None);
+}
+
+#[test]
+fn min_max_limit_and_sel() {
+    let i = |v| int(DataType::Int, v);
+    assert_eq!(min(i(3), i(-2)), Some(i(-2)));
+    assert_eq!(max(i(3), i(-2)), Some(i(3)));
+    assert_eq!(limit(i(0), i(150), i(100)), Some(i(100)));
+    assert_eq!(limit(i(0), i(-5), i(100)), Some(i(0)));
+    assert_eq!(limit(i(0), i(42), i(100)), Some(i(42)));
+    assert_eq!(min(i(1), int(DataType::Dint, 1)), None);
+    assert_eq!(select(false, i(1), i(2)), i(1));
+    assert_eq!(select(true, i(1), i(2)), i(2));
+}
+
+#[test]
 fn literals_of_every_kind() {
     let p = |s| parse_literal(s, None);
     assert_eq!(p("TRUE"), Ok(Data::Bool(true)));
