@@ -9,6 +9,7 @@
 pub mod address;
 pub mod blocks;
 pub mod data;
+pub mod il;
 pub mod literal;
 pub mod vars;
 

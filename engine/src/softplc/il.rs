@@ -1,0 +1,406 @@
+//! The soft PLC's Instruction List (IEC 61131-3 IL), read line by line
+//! after its `VAR … END_VAR` header into [`Line`]s: a label, an operator
+//! with its modifiers and an operand. This is its syntax only: names are
+//! resolved and types checked when a program is loaded.
+//!
+//! ```text
+//! start:  LD    %IX0.0        (* a comment *)
+//!         ANDN  stop
+//!         ST    lamp
+//!         LD    count
+//!         ADD   INT#1
+//!         ST    count
+//!         GT    100
+//!         JMPC  done
+//!         CAL   delay(IN := lamp, PT := T#500ms, Q => late)
+//!         AND(  a
+//!         OR    b
+//!         )
+//! done:   RET
+//! ```
+
+use std::fmt;
+
+use super::address::{Address, AddressError};
+use super::data::Data;
+use super::literal::{parse_literal, LiteralError};
+use super::vars::is_identifier;
+use crate::error::Located;
+
+/// An IL operator.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Operator {
+    Ld,
+    St,
+    S,
+    R,
+    And,
+    Or,
+    Xor,
+    Not,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    Le,
+    Lt,
+    Jmp,
+    Cal,
+    Ret,
+    /// `)`: ends a deferred operation.
+    Close,
+}
+
+impl Operator {
+    /// Each operator's mnemonic (without modifiers).
+    pub const ALL: [(&'static str, Operator); 22] = [
+        ("LD", Operator::Ld),
+        ("ST", Operator::St),
+        ("S", Operator::S),
+        ("R", Operator::R),
+        ("AND", Operator::And),
+        ("OR", Operator::Or),
+        ("XOR", Operator::Xor),
+        ("NOT", Operator::Not),
+        ("ADD", Operator::Add),
+        ("SUB", Operator::Sub),
+        ("MUL", Operator::Mul),
+        ("DIV", Operator::Div),
+        ("MOD", Operator::Mod),
+        ("GT", Operator::Gt),
+        ("GE", Operator::Ge),
+        ("EQ", Operator::Eq),
+        ("NE", Operator::Ne),
+        ("LE", Operator::Le),
+        ("LT", Operator::Lt),
+        ("JMP", Operator::Jmp),
+        ("CAL", Operator::Cal),
+        ("RET", Operator::Ret),
+    ];
+
+    /// Whether `N` (negate the operand) may follow it.
+    const fn negates(self) -> bool {
+        matches!(
+            self,
+            Operator::Ld | Operator::St | Operator::And | Operator::Or | Operator::Xor
+        )
+    }
+
+    /// Whether `C` / `CN` (only if the current result is TRUE / FALSE) may
+    /// follow it.
+    const fn conditional(self) -> bool {
+        matches!(self, Operator::Jmp | Operator::Cal | Operator::Ret)
+    }
+
+    /// Whether `(` may follow it (the operation waits for `)`).
+    const fn defers(self) -> bool {
+        matches!(
+            self,
+            Operator::And
+                | Operator::Or
+                | Operator::Xor
+                | Operator::Add
+                | Operator::Sub
+                | Operator::Mul
+                | Operator::Div
+                | Operator::Mod
+                | Operator::Gt
+                | Operator::Ge
+                | Operator::Eq
+                | Operator::Ne
+                | Operator::Le
+                | Operator::Lt
+        )
+    }
+}
+
+/// What an operator works on.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Operand {
+    /// A declared name (or, for JMP, a label).
+    Name(String),
+    Address(Address),
+    Literal(Data),
+}
+
+/// One line of IL.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Line {
+    /// `name:` before it.
+    pub label: Option<String>,
+    pub operator: Operator,
+    /// `N`: the operand (or the current result, for ST) negated.
+    pub negated: bool,
+    /// `C` (`Some(true)`) or `CN` (`Some(false)`).
+    pub condition: Option<bool>,
+    /// `(`: the operation waits for its `)`.
+    pub deferred: bool,
+    pub operand: Option<Operand>,
+    /// A CAL's `input := operand` and `output => name` parameters.
+    pub inputs: Vec<(String, Operand)>,
+    pub outputs: Vec<(String, String)>,
+    /// The 1-based line of the text.
+    pub line: usize,
+}
+
+/// Why a line is not IL.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum IlError {
+    UnknownOperator(String),
+    /// A modifier the operator does not take (`STC`, `LD(` …).
+    BadModifier(String),
+    /// An operand where none goes, or none where one must.
+    Operand(String),
+    BadName(String),
+    Address(AddressError),
+    Literal(LiteralError),
+    /// A CAL's parameters are not `(name := value, name => variable)`.
+    BadCall(String),
+    /// A label used twice (first on the line given).
+    DuplicateLabel {
+        label: String,
+        first: usize,
+    },
+}
+
+impl fmt::Display for IlError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            IlError::UnknownOperator(o) => write!(f, "unknown operator `{o}`"),
+            IlError::BadModifier(o) => write!(f, "`{o}`: this operator takes no such modifier"),
+            IlError::Operand(why) => f.write_str(why),
+            IlError::BadName(n) => write!(f, "`{n}` is not a name"),
+            IlError::Address(e) => e.fmt(f),
+            IlError::Literal(e) => e.fmt(f),
+            IlError::BadCall(c) => write!(
+                f,
+                "`{c}`: a call is CAL name(input := value, output => variable)"
+            ),
+            IlError::DuplicateLabel { label, first } => {
+                write!(f, "label `{label}` is used twice (first on line {first})")
+            }
+        }
+    }
+}
+
+impl std::error::Error for IlError {}
+
+/// Reads the IL lines of `text`: every line outside `VAR … END_VAR`
+/// blocks that has code. Every error is given at its line; the lines
+/// only when there is none.
+pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
+    let mut lines: Vec<Line> = Vec::new();
+    let mut errors = Vec::new();
+    let mut in_vars = false;
+    for (i, raw) in text.lines().enumerate() {
+        let number = i + 1;
+        let code = strip_comments(raw);
+        let code = code.trim();
+        let upper = code.trim_end_matches(';').to_ascii_uppercase();
+        if matches!(upper.as_str(), "VAR" | "VAR_RETAIN" | "VAR RETAIN") {
+            in_vars = true;
+            continue;
+        }
+        if upper == "END_VAR" {
+            in_vars = false;
+            continue;
+        }
+        if in_vars || code.is_empty() {
+            continue;
+        }
+        match line(code, number) {
+            Ok(l) => {
+                if let Some(label) = &l.label {
+                    if let Some(first) = lines.iter().find(|m| {
+                        m.label
+                            .as_deref()
+                            .is_some_and(|m| m.eq_ignore_ascii_case(label))
+                    }) {
+                        errors.push(Located::new(
+                            number,
+                            IlError::DuplicateLabel {
+                                label: label.clone(),
+                                first: first.line,
+                            },
+                        ));
+                        continue;
+                    }
+                }
+                lines.push(l);
+            }
+            Err(e) => errors.push(Located::new(number, e)),
+        }
+    }
+    if errors.is_empty() {
+        Ok(lines)
+    } else {
+        Err(errors)
+    }
+}
+
+/// The line without its `(* … *)` comments.
+fn strip_comments(raw: &str) -> String {
+    let mut out = String::new();
+    let mut rest = raw;
+    while let Some(at) = rest.find("(*") {
+        out.push_str(&rest[..at]);
+        rest = rest[at + 2..]
+            .split_once("*)")
+            .map_or("", |(_, after)| after);
+    }
+    out.push_str(rest);
+    out
+}
+
+/// One line of code (no comment), numbered `number`.
+fn line(code: &str, number: usize) -> Result<Line, IlError> {
+    let (label, code) = match code.split_once(':') {
+        // `name:` (not `:=` of a call's parameters).
+        Some((l, rest)) if !rest.starts_with('=') && is_identifier(l.trim()) => {
+            (Some(l.trim().to_string()), rest.trim())
+        }
+        _ => (None, code),
+    };
+    if code.is_empty() {
+        return Err(IlError::Operand(
+            "a label needs an instruction on its line".into(),
+        ));
+    }
+    let (word, rest) = match code.find(|c: char| c.is_whitespace() || c == '(') {
+        Some(at) => (&code[..at], code[at..].trim()),
+        None => (code, ""),
+    };
+    let mut out = Line {
+        label,
+        operator: Operator::Ret,
+        negated: false,
+        condition: None,
+        deferred: false,
+        operand: None,
+        inputs: Vec::new(),
+        outputs: Vec::new(),
+        line: number,
+    };
+    if word == ")" {
+        out.operator = Operator::Close;
+        return if rest.is_empty() {
+            Ok(out)
+        } else {
+            Err(IlError::Operand("`)` takes no operand".into()))
+        };
+    }
+    let upper = word.to_ascii_uppercase();
+    let (operator, modifiers) = Operator::ALL
+        .iter()
+        .filter(|(m, _)| upper.starts_with(m))
+        .max_by_key(|(m, _)| m.len())
+        .map(|&(m, op)| (op, &upper[m.len()..]))
+        .ok_or_else(|| IlError::UnknownOperator(word.to_string()))?;
+    out.operator = operator;
+    match modifiers {
+        "" | "N" | "C" | "CN" => {}
+        _ => return Err(IlError::UnknownOperator(word.to_string())),
+    }
+    match modifiers {
+        "" => {}
+        "N" if operator.negates() => out.negated = true,
+        "C" if operator.conditional() => out.condition = Some(true),
+        "CN" if operator.conditional() => out.condition = Some(false),
+        _ => return Err(IlError::BadModifier(word.to_string())),
+    }
+    let rest = match rest.strip_prefix('(') {
+        Some(after) if operator.defers() => {
+            out.deferred = true;
+            after.trim()
+        }
+        Some(_) if operator == Operator::Cal => rest,
+        Some(_) => return Err(IlError::BadModifier(format!("{word}("))),
+        None => rest,
+    };
+    match operator {
+        Operator::Not | Operator::Ret => {
+            if !rest.is_empty() {
+                return Err(IlError::Operand(format!("`{word}` takes no operand")));
+            }
+        }
+        Operator::Cal => call(rest, &mut out)?,
+        Operator::Jmp => {
+            if !is_identifier(rest) {
+                return Err(IlError::Operand(format!("`{word}` needs a label")));
+            }
+            out.operand = Some(Operand::Name(rest.to_string()));
+        }
+        _ if rest.is_empty() && out.deferred => {}
+        _ if rest.is_empty() => {
+            return Err(IlError::Operand(format!("`{word}` needs an operand")));
+        }
+        _ => out.operand = Some(operand(rest)?),
+    }
+    Ok(out)
+}
+
+/// A name, an address or a literal.
+fn operand(text: &str) -> Result<Operand, IlError> {
+    if text.starts_with('%') {
+        return Address::parse(text)
+            .map(Operand::Address)
+            .map_err(IlError::Address);
+    }
+    let literal_like = text.contains('#')
+        || text.starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+')
+        || text.eq_ignore_ascii_case("TRUE")
+        || text.eq_ignore_ascii_case("FALSE");
+    if literal_like {
+        return parse_literal(text, None)
+            .map(Operand::Literal)
+            .map_err(IlError::Literal);
+    }
+    if is_identifier(text) {
+        Ok(Operand::Name(text.to_string()))
+    } else {
+        Err(IlError::BadName(text.to_string()))
+    }
+}
+
+/// `instance` or `instance(IN := a, PT := T#1s, Q => b)`.
+fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
+    let bad = || IlError::BadCall(text.to_string());
+    let (name, params) = match text.split_once('(') {
+        Some((n, p)) => (n.trim(), Some(p.trim().strip_suffix(')').ok_or_else(bad)?)),
+        None => (text.trim(), None),
+    };
+    if !is_identifier(name) {
+        return Err(bad());
+    }
+    out.operand = Some(Operand::Name(name.to_string()));
+    for param in params.into_iter().flat_map(|p| p.split(',')).map(str::trim) {
+        if param.is_empty() {
+            continue;
+        }
+        if let Some((formal, value)) = param.split_once(":=") {
+            let formal = formal.trim();
+            if !is_identifier(formal) {
+                return Err(bad());
+            }
+            out.inputs
+                .push((formal.to_string(), operand(value.trim())?));
+        } else if let Some((formal, target)) = param.split_once("=>") {
+            let (formal, target) = (formal.trim(), target.trim());
+            if !is_identifier(formal) || !is_identifier(target) {
+                return Err(bad());
+            }
+            out.outputs.push((formal.to_string(), target.to_string()));
+        } else {
+            return Err(bad());
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;
