@@ -322,13 +322,20 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
         Some(_) => return Err(IlError::BadModifier(format!("{word}("))),
         None => rest,
     };
-    match operator {
+    operands(word, rest, &mut out)?;
+    Ok(out)
+}
+
+/// The operand (or a CAL's parameters) of `out`'s operator, from `rest`
+/// (what follows `word` on the line).
+fn operands(word: &str, rest: &str, out: &mut Line) -> Result<(), IlError> {
+    match out.operator {
         Operator::Not | Operator::Ret => {
             if !rest.is_empty() {
                 return Err(IlError::Operand(format!("`{word}` takes no operand")));
             }
         }
-        Operator::Cal => call(rest, &mut out)?,
+        Operator::Cal => call(rest, out)?,
         Operator::Jmp => {
             if !is_identifier(rest) {
                 return Err(IlError::Operand(format!("`{word}` needs a label")));
@@ -341,7 +348,7 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
         }
         _ => out.operand = Some(operand(rest)?),
     }
-    Ok(out)
+    Ok(())
 }
 
 /// A name, an address or a literal.

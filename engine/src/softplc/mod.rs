@@ -11,9 +11,13 @@ pub mod blocks;
 pub mod data;
 pub mod il;
 pub mod literal;
+mod pins;
+pub mod program;
+mod scan;
 pub mod vars;
 
 pub use address::{Address, AddressError, Area, Size};
 pub use data::{Data, DataType};
 pub use literal::{parse_literal, LiteralError};
+pub use program::{LoadError, Program};
 pub use vars::{parse_vars, Kind, VarError, Variable};

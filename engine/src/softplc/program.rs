@@ -1,0 +1,496 @@
+//! A soft PLC program loaded and running: its IL resolved against its
+//! declarations into steps over one table of values, type-checked once
+//! at load (nothing is checked while it runs), and its scan.
+
+use std::fmt;
+
+use super::address::{Address, Area, Size};
+use super::data::{Arith, Bitwise, Data, DataType};
+use super::il::{parse_il, IlError, Line, Operand, Operator};
+use super::pins::{inputs, outputs, Instance};
+use super::vars::{parse_vars, Kind, VarError};
+use crate::error::Located;
+
+/// Instructions one scan may run before it is cut short (a backward JMP
+/// that never ends): the scan ends there and [`Program::overran`] says so.
+pub const STEPS_PER_SCAN: usize = 1_000_000;
+
+/// Where an operand's value comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Src {
+    Slot(usize),
+    Const(Data),
+}
+
+/// A comparison.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Cmp {
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    Le,
+    Lt,
+}
+
+/// An operation that works on the current result and an operand.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Binary {
+    Logic(Bitwise, bool),
+    Arith(Arith),
+    Cmp(Cmp),
+}
+
+/// One resolved instruction.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum Step {
+    Ld(Src, bool),
+    St(usize, bool),
+    Set(usize),
+    Reset(usize),
+    Not,
+    Binary(Binary, Src),
+    /// `OP(`: the operation waits, with the current result, for `)`; the
+    /// new current result is the operand's, if it has one.
+    Open(Binary, Option<Src>),
+    Close,
+    Jmp(Option<bool>, usize),
+    Ret(Option<bool>),
+    Cal {
+        when: Option<bool>,
+        block: usize,
+        inputs: Vec<(usize, Src)>,
+        outputs: Vec<(usize, usize)>,
+    },
+}
+
+/// Why a program does not load.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LoadError {
+    Var(VarError),
+    Il(IlError),
+    /// A name no declaration gives.
+    Undeclared(String),
+    /// A word address used without a declaration giving its type.
+    UntypedAddress(String),
+    /// A JMP to a label no line has.
+    NoLabel(String),
+    /// The instruction needs a current result of a type it does not have
+    /// (or one not known here: after a label or a jump, start with LD).
+    Type(String),
+    /// CAL of something that is not a block instance, or a parameter it
+    /// does not have.
+    Call(String),
+    /// A `)` with no `(`, or a `(` never closed.
+    Unbalanced,
+}
+
+impl fmt::Display for LoadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LoadError::Var(e) => e.fmt(f),
+            LoadError::Il(e) => e.fmt(f),
+            LoadError::Undeclared(n) => write!(f, "`{n}` is not declared"),
+            LoadError::UntypedAddress(a) => {
+                write!(
+                    f,
+                    "declare {a} with its type (a word may be INT, UINT or WORD)"
+                )
+            }
+            LoadError::NoLabel(l) => write!(f, "no line has the label `{l}`"),
+            LoadError::Type(why) | LoadError::Call(why) => f.write_str(why),
+            LoadError::Unbalanced => f.write_str("`(` and `)` do not pair"),
+        }
+    }
+}
+
+impl std::error::Error for LoadError {}
+
+/// A loaded program with its values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Program {
+    /// Every value: declared variables, then undeclared bit addresses.
+    pub(super) values: Vec<Data>,
+    pub(super) initial: Vec<Data>,
+    pub(super) names: Vec<(String, usize)>,
+    pub(super) addresses: Vec<(Address, usize)>,
+    /// What the inputs' terminals give, read at each scan's start.
+    pub(super) input_terminals: Vec<(usize, Data)>,
+    pub(super) blocks: Vec<Instance>,
+    pub(super) block_names: Vec<(String, String)>,
+    pub(super) steps: Vec<Step>,
+    pub(super) overran: bool,
+    /// The slots declared in VAR_RETAIN.
+    pub(super) retained: Vec<usize>,
+}
+
+type Errors = Vec<Located<LoadError>>;
+
+impl Program {
+    /// Loads `text` (VAR blocks, then IL). Every error at its line.
+    pub fn load(text: &str) -> Result<Program, Errors> {
+        let vars = parse_vars(text).map_err(|es| {
+            es.into_iter()
+                .map(|e| Located::new(e.line, LoadError::Var(e.error)))
+                .collect::<Errors>()
+        })?;
+        let lines = parse_il(text).map_err(|es| {
+            es.into_iter()
+                .map(|e| Located::new(e.line, LoadError::Il(e.error)))
+                .collect::<Errors>()
+        })?;
+        let mut p = Program {
+            values: Vec::new(),
+            initial: Vec::new(),
+            names: Vec::new(),
+            addresses: Vec::new(),
+            input_terminals: Vec::new(),
+            blocks: Vec::new(),
+            block_names: Vec::new(),
+            steps: Vec::new(),
+            overran: false,
+            retained: Vec::new(),
+        };
+        for v in vars {
+            match v.kind {
+                Kind::Value { init, .. } => {
+                    let slot = p.values.len();
+                    p.values.push(init);
+                    p.names.push((v.name, slot));
+                    if v.retain {
+                        p.retained.push(slot);
+                    }
+                    if let Some(a) = v.address {
+                        p.addresses.push((a, slot));
+                    }
+                }
+                Kind::Block(block) => {
+                    p.block_names.push((v.name, block.clone()));
+                    p.blocks.push(Instance::new(&block));
+                }
+            }
+        }
+        let mut errors = Vec::new();
+        let mut cr: Option<DataType> = None;
+        let mut open: Vec<(Binary, Option<DataType>)> = Vec::new();
+        for line in &lines {
+            if line.label.is_some() {
+                cr = None;
+            }
+            match p.resolve(line, &lines, &mut cr, &mut open) {
+                Ok(step) => p.steps.push(step),
+                Err(e) => {
+                    errors.push(Located::new(line.line, e));
+                    p.steps.push(Step::Ret(None));
+                }
+            }
+        }
+        if !open.is_empty() {
+            let last = lines.last().map_or(1, |l| l.line);
+            errors.push(Located::new(last, LoadError::Unbalanced));
+        }
+        if !errors.is_empty() {
+            return Err(errors);
+        }
+        p.initial = p.values.clone();
+        p.input_terminals = p
+            .addresses
+            .iter()
+            .filter(|(a, _)| a.area == Area::Input)
+            .map(|&(_, s)| (s, p.values[s]))
+            .collect();
+        Ok(p)
+    }
+
+    /// The slot of a name (any case) or an address.
+    fn slot(&mut self, operand: &Operand) -> Result<Src, LoadError> {
+        match operand {
+            Operand::Literal(d) => Ok(Src::Const(*d)),
+            Operand::Name(n) => self
+                .names
+                .iter()
+                .find(|(m, _)| m.eq_ignore_ascii_case(n))
+                .map(|&(_, s)| Src::Slot(s))
+                .ok_or_else(|| LoadError::Undeclared(n.clone())),
+            Operand::Address(a) => {
+                if let Some(&(_, s)) = self.addresses.iter().find(|(b, _)| b == a) {
+                    return Ok(Src::Slot(s));
+                }
+                if a.size != Size::Bit {
+                    return Err(LoadError::UntypedAddress(a.to_string()));
+                }
+                let slot = self.values.len();
+                self.values.push(Data::Bool(false));
+                self.addresses.push((*a, slot));
+                Ok(Src::Slot(slot))
+            }
+        }
+    }
+
+    fn type_of(&self, src: Src) -> DataType {
+        match src {
+            Src::Slot(s) => self.values[s].data_type(),
+            Src::Const(d) => d.data_type(),
+        }
+    }
+
+    /// An integer literal taken at `want` when it fits (an untyped `1`
+    /// reads as a DINT), or an integer as a REAL.
+    fn fit(src: Src, want: DataType) -> Src {
+        match src {
+            Src::Const(d @ Data::Int(..)) if want.bits().is_some() => {
+                let v = d.convert(DataType::Lint);
+                match (v, want.range()) {
+                    (Data::Int(_, v), Some((lo, hi))) if (lo..=hi).contains(&i128::from(v)) => {
+                        Src::Const(Data::integer(want, i128::from(v)))
+                    }
+                    _ => src,
+                }
+            }
+            Src::Const(d @ Data::Int(..)) if want == DataType::Real => {
+                Src::Const(d.convert(DataType::Real))
+            }
+            _ => src,
+        }
+    }
+
+    /// One line resolved and checked; `cr` is the current result's type.
+    fn resolve(
+        &mut self,
+        line: &Line,
+        lines: &[Line],
+        cr: &mut Option<DataType>,
+        open: &mut Vec<(Binary, Option<DataType>)>,
+    ) -> Result<Step, LoadError> {
+        let operand = |p: &mut Program| -> Result<Option<Src>, LoadError> {
+            line.operand.as_ref().map(|o| p.slot(o)).transpose()
+        };
+        let step = match line.operator {
+            Operator::Ld => {
+                let src = operand(self)?.ok_or(LoadError::Unbalanced)?;
+                let t = self.type_of(src);
+                if line.negated && t.bits().is_none() && t != DataType::Bool {
+                    return Err(LoadError::Type(format!(
+                        "LDN needs a BOOL or a bit string, not {}",
+                        t.name()
+                    )));
+                }
+                *cr = Some(t);
+                Step::Ld(src, line.negated)
+            }
+            Operator::St | Operator::S | Operator::R => self.store(line, need_cr(*cr)?)?,
+            Operator::Not => {
+                need_cr(*cr)?;
+                Step::Not
+            }
+            Operator::Close => {
+                let (op, saved) = open.pop().ok_or(LoadError::Unbalanced)?;
+                let (a, b) = (need_cr(saved)?, need_cr(*cr)?);
+                *cr = Some(binary_type(op, a, b)?);
+                Step::Close
+            }
+            Operator::Jmp => jump(line, lines, cr)?,
+            Operator::Ret => {
+                if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
+                    return Err(LoadError::Type("RETC needs a BOOL current result".into()));
+                }
+                Step::Ret(line.condition)
+            }
+            Operator::Cal => self.call(line, cr)?,
+            op => self.binary(op, line, cr, open)?,
+        };
+        Ok(step)
+    }
+
+    /// ST, S, R: the current result (of type `t`) into a variable.
+    fn store(&mut self, line: &Line, t: DataType) -> Result<Step, LoadError> {
+        let operand = line.operand.as_ref().map(|o| self.slot(o)).transpose()?;
+        let Some(Src::Slot(slot)) = operand else {
+            return Err(LoadError::Type(
+                "a value is stored in a variable, not a literal".into(),
+            ));
+        };
+        let target = self.values[slot].data_type();
+        let bool_only = line.operator != Operator::St;
+        if target != t || (bool_only && t != DataType::Bool) {
+            return Err(LoadError::Type(format!(
+                "the current result is {}, {} needs {}",
+                t.name(),
+                line.operand.as_ref().map_or(String::new(), describe),
+                if bool_only { "BOOL" } else { target.name() }
+            )));
+        }
+        Ok(match line.operator {
+            Operator::St => Step::St(slot, line.negated),
+            Operator::S => Step::Set(slot),
+            _ => Step::Reset(slot),
+        })
+    }
+
+    /// AND … LT, now or deferred by `(`.
+    fn binary(
+        &mut self,
+        op: Operator,
+        line: &Line,
+        cr: &mut Option<DataType>,
+        open: &mut Vec<(Binary, Option<DataType>)>,
+    ) -> Result<Step, LoadError> {
+        let binary = match op {
+            Operator::And => Binary::Logic(Bitwise::And, line.negated),
+            Operator::Or => Binary::Logic(Bitwise::Or, line.negated),
+            Operator::Xor => Binary::Logic(Bitwise::Xor, line.negated),
+            Operator::Add => Binary::Arith(Arith::Add),
+            Operator::Sub => Binary::Arith(Arith::Sub),
+            Operator::Mul => Binary::Arith(Arith::Mul),
+            Operator::Div => Binary::Arith(Arith::Div),
+            Operator::Mod => Binary::Arith(Arith::Mod),
+            Operator::Gt => Binary::Cmp(Cmp::Gt),
+            Operator::Ge => Binary::Cmp(Cmp::Ge),
+            Operator::Eq => Binary::Cmp(Cmp::Eq),
+            Operator::Ne => Binary::Cmp(Cmp::Ne),
+            Operator::Le => Binary::Cmp(Cmp::Le),
+            _ => Binary::Cmp(Cmp::Lt),
+        };
+        let t = need_cr(*cr)?;
+        let src = line
+            .operand
+            .as_ref()
+            .map(|o| self.slot(o))
+            .transpose()?
+            .map(|s| Program::fit(s, t));
+        if line.deferred {
+            open.push((binary, Some(t)));
+            *cr = src.map(|s| self.type_of(s));
+            Ok(Step::Open(binary, src))
+        } else {
+            let src = src.ok_or(LoadError::Unbalanced)?;
+            *cr = Some(binary_type(binary, t, self.type_of(src))?);
+            Ok(Step::Binary(binary, src))
+        }
+    }
+
+    /// `CAL instance(…)` resolved.
+    fn call(&mut self, line: &Line, cr: &mut Option<DataType>) -> Result<Step, LoadError> {
+        if line.condition.is_some() && *cr != Some(DataType::Bool) {
+            return Err(LoadError::Type("CALC needs a BOOL current result".into()));
+        }
+        let Some(Operand::Name(name)) = &line.operand else {
+            return Err(LoadError::Call("CAL needs a block instance".into()));
+        };
+        let block = self
+            .block_names
+            .iter()
+            .position(|(n, _)| n.eq_ignore_ascii_case(name))
+            .ok_or_else(|| LoadError::Call(format!("`{name}` is not a block instance")))?;
+        let kind = self.block_names[block].1.clone();
+        let mut ins = Vec::new();
+        for (pin, value) in &line.inputs {
+            let (i, &(_, want)) = inputs(&kind)
+                .iter()
+                .enumerate()
+                .find(|(_, (p, _))| p.eq_ignore_ascii_case(pin))
+                .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
+            let src = Program::fit(self.slot(value)?, want);
+            if self.type_of(src) != want {
+                return Err(LoadError::Type(format!(
+                    "{kind}'s {pin} is a {}",
+                    want.name()
+                )));
+            }
+            ins.push((i, src));
+        }
+        let mut outs = Vec::new();
+        for (pin, target) in &line.outputs {
+            let (i, &(_, t)) = outputs(&kind)
+                .iter()
+                .enumerate()
+                .find(|(_, (p, _))| p.eq_ignore_ascii_case(pin))
+                .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
+            let Src::Slot(slot) = self.slot(&Operand::Name(target.clone()))? else {
+                return Err(LoadError::Call(format!("`{target}` is not a variable")));
+            };
+            if self.values[slot].data_type() != t {
+                return Err(LoadError::Type(format!("{kind}'s {pin} is a {}", t.name())));
+            }
+            outs.push((i, slot));
+        }
+        Ok(Step::Cal {
+            when: line.condition,
+            block,
+            inputs: ins,
+            outputs: outs,
+        })
+    }
+}
+
+/// The current result's type, where an instruction needs one.
+fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {
+    cr.ok_or_else(|| {
+        LoadError::Type(
+            "the current result is not known here (after a label or a jump): start with LD".into(),
+        )
+    })
+}
+
+/// JMP, JMPC, JMPCN to a label of `lines`.
+fn jump(line: &Line, lines: &[Line], cr: &mut Option<DataType>) -> Result<Step, LoadError> {
+    if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
+        return Err(LoadError::Type("JMPC needs a BOOL current result".into()));
+    }
+    let Some(Operand::Name(label)) = &line.operand else {
+        return Err(LoadError::NoLabel(String::new()));
+    };
+    let target = lines
+        .iter()
+        .position(|l| {
+            l.label
+                .as_deref()
+                .is_some_and(|m| m.eq_ignore_ascii_case(label))
+        })
+        .ok_or_else(|| LoadError::NoLabel(label.clone()))?;
+    if line.condition.is_none() {
+        *cr = None;
+    }
+    Ok(Step::Jmp(line.condition, target))
+}
+
+fn describe(o: &Operand) -> String {
+    match o {
+        Operand::Name(n) => n.clone(),
+        Operand::Address(a) => a.to_string(),
+        Operand::Literal(_) => "a literal".into(),
+    }
+}
+
+/// The type an operation gives for operands of types `a` and `b`, or why
+/// it does not apply.
+fn binary_type(op: Binary, a: DataType, b: DataType) -> Result<DataType, LoadError> {
+    if a != b {
+        return Err(LoadError::Type(format!(
+            "{} and {} do not mix: convert one (*_TO_*)",
+            a.name(),
+            b.name()
+        )));
+    }
+    let fits = match op {
+        Binary::Logic(..) => a == DataType::Bool || a.bits().is_some(),
+        Binary::Arith(Arith::Add | Arith::Sub) => a != DataType::Bool,
+        Binary::Arith(Arith::Mod) => a.bits().is_some(),
+        Binary::Arith(_) => a.bits().is_some() || a == DataType::Real,
+        Binary::Cmp(_) => true,
+    };
+    if !fits {
+        return Err(LoadError::Type(format!(
+            "this operation does not apply to {}",
+            a.name()
+        )));
+    }
+    Ok(if matches!(op, Binary::Cmp(_)) {
+        DataType::Bool
+    } else {
+        a
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,149 @@
+use super::*;
+
+const MS: i64 = 1_000_000;
+
+fn load(text: &str) -> Program {
+    Program::load(text).unwrap_or_else(|e| panic!("{e:?}"))
+}
+
+fn addr(a: &str) -> Address {
+    Address::parse(a).expect("an address")
+}
+
+fn on(p: &Program, name: &str) -> bool {
+    p.value(name) == Some(Data::Bool(true))
+}
+
+#[test]
+fn a_seal_in_holds_until_stop() {
+    let mut p = load(
+        "VAR\n  lamp AT %QX0.0 : BOOL;\nEND_VAR\n\
+         LD %IX0.0\nOR lamp\nANDN %IX0.1\nST lamp",
+    );
+    assert!(p.set_input(addr("%IX0.0"), Data::Bool(true)));
+    p.scan(0);
+    assert!(on(&p, "%QX0.0"));
+    p.set_input(addr("%IX0.0"), Data::Bool(false));
+    p.scan(10 * MS);
+    assert!(on(&p, "lamp"), "held");
+    p.set_input(addr("%IX0.1"), Data::Bool(true));
+    p.scan(20 * MS);
+    assert!(!on(&p, "lamp"));
+    assert!(
+        !p.set_input(addr("%QX0.0"), Data::Bool(true)),
+        "an output has no terminal to set"
+    );
+    assert_eq!(p.io().count(), 3);
+}
+
+#[test]
+fn arithmetic_counts_and_wraps_as_iec_says() {
+    let mut p = load(
+        "VAR\n  count : INT := 32766;\n  big : BOOL;\nEND_VAR\n\
+         LD count\nADD 1\nST count\nGT 0\nST big",
+    );
+    p.scan(0);
+    assert_eq!(p.value("count"), Some(Data::integer(DataType::Int, 32767)));
+    assert!(on(&p, "big"));
+    p.scan(10 * MS);
+    assert_eq!(
+        p.value("COUNT"),
+        Some(Data::integer(DataType::Int, -32768)),
+        "wraps"
+    );
+    assert!(!on(&p, "big"));
+}
+
+#[test]
+fn two_timers_blink_500_500() {
+    let mut p = load(
+        "VAR\n  lamp AT %QX0.0 : BOOL;\n  x : BOOL;\n  a : BOOL;\n  b : BOOL;\n  \
+         t1 : TON;\n  t2 : TON;\nEND_VAR\n\
+         LDN b\nST x\n\
+         CAL t1(IN := x, PT := T#500ms, Q => a)\n\
+         CAL t2(IN := a, PT := T#500ms, Q => b)\n\
+         LD a\nST lamp",
+    );
+    let mut seen = Vec::new();
+    for k in 0..=300 {
+        p.scan(k * 10 * MS);
+        seen.push(on(&p, "lamp"));
+    }
+    // Each half of the cycle lasts 500 ms plus the scan the timers reset in.
+    let changes: Vec<usize> = (1..seen.len())
+        .filter(|&i| seen[i] != seen[i - 1])
+        .collect();
+    assert_eq!(&changes[..4], [50, 101, 152, 203], "{changes:?}");
+}
+
+#[test]
+fn deferred_operations_and_conditional_jumps() {
+    let mut p = load(
+        "VAR\n  a : BOOL := TRUE;\n  b : BOOL;\n  c : BOOL := TRUE;\n  y : BOOL;\n  n : DINT;\nEND_VAR\n\
+         LD a\nAND( b\nOR c\n)\nST y\n\
+         JMPC skip\nLD n\nADD 100\nST n\n\
+         skip: LD n\nADD 1\nST n",
+    );
+    p.scan(0);
+    assert!(on(&p, "y"), "a AND (b OR c)");
+    assert_eq!(
+        p.value("n"),
+        Some(Data::integer(DataType::Dint, 1)),
+        "the ADD 100 was jumped over"
+    );
+}
+
+#[test]
+fn a_loop_that_never_ends_is_cut_short() {
+    let mut p = load("VAR\n  x : BOOL;\nEND_VAR\nloop: LD x\nJMPCN loop");
+    p.scan(0);
+    assert!(p.overran());
+}
+
+#[test]
+fn retained_values_survive_a_power_cycle() {
+    let mut p = load(
+        "VAR\n  n : INT;\nEND_VAR\nVAR_RETAIN\n  total : INT;\nEND_VAR\n\
+         LD n\nADD 1\nST n\nLD total\nADD 1\nST total",
+    );
+    p.scan(0);
+    p.scan(10 * MS);
+    p.power_cycle();
+    assert_eq!(p.value("n"), Some(Data::integer(DataType::Int, 0)));
+    assert_eq!(p.value("total"), Some(Data::integer(DataType::Int, 2)));
+}
+
+fn errors(text: &str) -> Vec<(usize, String)> {
+    Program::load(text)
+        .expect_err("refused")
+        .into_iter()
+        .map(|e| (e.line, e.error.to_string()))
+        .collect()
+}
+
+#[test]
+fn what_does_not_load_says_why_at_its_line() {
+    let got = errors(
+        "VAR\n  i : INT;\n  d : DINT;\n  t : TON;\nEND_VAR\n\
+         LD ghost\n\
+         LD i\nADD d\n\
+         LD i\nST 5\n\
+         JMP nowhere\n\
+         LD %IW0\n\
+         CAL t(XX := i)\n\
+         CAL t(PT := i)\n\
+         l: ST i\n\
+         LD i\nAND( i\n",
+    );
+    let lines: Vec<usize> = got.iter().map(|(l, _)| *l).collect();
+    assert_eq!(lines, [6, 8, 10, 11, 12, 13, 14, 15, 17], "{got:?}");
+    assert_eq!(got[0].1, "`ghost` is not declared");
+    assert_eq!(got[1].1, "INT and DINT do not mix: convert one (*_TO_*)");
+    assert!(got[2].1.contains("stored in a variable"), "{}", got[2].1);
+    assert_eq!(got[3].1, "no line has the label `nowhere`");
+    assert!(got[4].1.contains("declare %IW0 with its type"));
+    assert_eq!(got[5].1, "TON has no input `XX`");
+    assert_eq!(got[6].1, "TON's PT is a TIME");
+    assert!(got[7].1.contains("start with LD"));
+    assert_eq!(got[8].1, "`(` and `)` do not pair");
+}

@@ -1,0 +1,197 @@
+//! A loaded program's scan and its I/O: the input terminals are read at
+//! the scan's start, the steps run top to bottom (jumps as written), the
+//! outputs are what the `%Q` variables hold at its end.
+
+use std::cmp::Ordering;
+
+use super::address::{Address, Area};
+use super::data::Data;
+use super::program::{Binary, Cmp, Program, Src, Step, STEPS_PER_SCAN};
+
+impl Program {
+    /// Runs one scan at simulated time `now` (ns).
+    pub fn scan(&mut self, now: i64) {
+        for &(slot, v) in &self.input_terminals {
+            self.values[slot] = v;
+        }
+        let mut cr = Data::Bool(false);
+        let mut open: Vec<(Binary, Data)> = Vec::new();
+        let mut pc = 0;
+        let mut ran = 0;
+        self.overran = false;
+        while let Some(step) = self.steps.get(pc) {
+            ran += 1;
+            if ran > STEPS_PER_SCAN {
+                self.overran = true;
+                break;
+            }
+            pc += 1;
+            let on = |when: Option<bool>, cr: Data| when.is_none_or(|w| cr == Data::Bool(w));
+            match step {
+                Step::Ld(src, neg) => cr = negate(self.read(*src), *neg),
+                Step::St(slot, neg) => self.values[*slot] = negate(cr, *neg),
+                Step::Set(slot) if cr == Data::Bool(true) => self.values[*slot] = Data::Bool(true),
+                Step::Reset(slot) if cr == Data::Bool(true) => {
+                    self.values[*slot] = Data::Bool(false)
+                }
+                Step::Set(_) | Step::Reset(_) => {}
+                Step::Not => cr = negate(cr, true),
+                Step::Binary(op, src) => cr = apply(*op, cr, self.read(*src)),
+                Step::Open(op, src) => {
+                    open.push((*op, cr));
+                    if let Some(src) = src {
+                        cr = self.read(*src);
+                    }
+                }
+                Step::Close => {
+                    if let Some((op, saved)) = open.pop() {
+                        cr = apply(op, saved, cr);
+                    }
+                }
+                Step::Jmp(when, target) => {
+                    if on(*when, cr) {
+                        pc = *target;
+                    }
+                }
+                Step::Ret(when) => {
+                    if on(*when, cr) {
+                        break;
+                    }
+                }
+                Step::Cal {
+                    when,
+                    block,
+                    inputs,
+                    outputs,
+                } => {
+                    if !on(*when, cr) {
+                        continue;
+                    }
+                    let values: Vec<(usize, Data)> =
+                        inputs.iter().map(|&(i, src)| (i, self.read(src))).collect();
+                    let Some(instance) = self.blocks.get_mut(*block) else {
+                        continue;
+                    };
+                    for (i, v) in values {
+                        if let Some(slot) = instance.inputs.get_mut(i) {
+                            *slot = v;
+                        }
+                    }
+                    instance.call(now);
+                    let outs: Vec<(usize, Data)> = outputs
+                        .iter()
+                        .map(|&(i, slot)| (slot, instance.output(i)))
+                        .collect();
+                    for (slot, v) in outs {
+                        self.values[slot] = v;
+                    }
+                }
+            }
+        }
+    }
+
+    fn read(&self, src: Src) -> Data {
+        match src {
+            Src::Slot(s) => self.values[s],
+            Src::Const(d) => d,
+        }
+    }
+
+    /// Sets what an input's terminal gives (read at the next scan's
+    /// start); `false` when the program has no such input or the value's
+    /// type is not the input's.
+    pub fn set_input(&mut self, address: Address, value: Data) -> bool {
+        let Some(&(_, slot)) = self.addresses.iter().find(|(a, _)| *a == address) else {
+            return false;
+        };
+        match self.input_terminals.iter_mut().find(|(s, _)| *s == slot) {
+            Some(t) if address.area == Area::Input && t.1.data_type() == value.data_type() => {
+                t.1 = value;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// The value of a declared name (any case) or an address the program
+    /// uses.
+    pub fn value(&self, name_or_address: &str) -> Option<Data> {
+        let slot = match Address::parse(name_or_address) {
+            Ok(a) => self.addresses.iter().find(|(b, _)| *b == a)?.1,
+            Err(_) => {
+                self.names
+                    .iter()
+                    .find(|(n, _)| n.eq_ignore_ascii_case(name_or_address))?
+                    .1
+            }
+        };
+        self.values.get(slot).copied()
+    }
+
+    /// The addresses the program uses, in their order of first use.
+    pub fn io(&self) -> impl Iterator<Item = Address> + '_ {
+        self.addresses.iter().map(|&(a, _)| a)
+    }
+
+    /// Whether the last scan was cut short at [`STEPS_PER_SCAN`].
+    pub fn overran(&self) -> bool {
+        self.overran
+    }
+
+    /// A power cycle: every value back to its declared start but the
+    /// `VAR_RETAIN` ones; every block starts over.
+    pub fn power_cycle(&mut self) {
+        for (slot, v) in self.values.iter_mut().enumerate() {
+            if !self.retained.contains(&slot) {
+                *v = self.initial[slot];
+            }
+        }
+        for b in &mut self.blocks {
+            *b = super::pins::Instance::new(block_kind(b));
+        }
+    }
+}
+
+/// The kind name of an instance, from its state.
+fn block_kind(b: &super::pins::Instance) -> &'static str {
+    use super::pins::State::*;
+    match b.state {
+        Ton(_) => "TON",
+        Tof(_) => "TOF",
+        Tp(_) => "TP",
+        Ctu(_) => "CTU",
+        Ctd(_) => "CTD",
+        Ctud(_) => "CTUD",
+        RTrig(_) => "R_TRIG",
+        FTrig(_) => "F_TRIG",
+        Sr(_) => "SR",
+        Rs(_) => "RS",
+    }
+}
+
+/// `d` negated when `neg`: a BOOL inverted, an integer's bits inverted.
+fn negate(d: Data, neg: bool) -> Data {
+    if neg {
+        d.invert().unwrap_or(d)
+    } else {
+        d
+    }
+}
+
+/// `a OP b` (types checked at load: a mismatch cannot reach here, and
+/// gives FALSE if it did).
+fn apply(op: Binary, a: Data, b: Data) -> Data {
+    let result = match op {
+        Binary::Logic(bitwise, neg) => a.bitwise(bitwise, negate(b, neg)),
+        Binary::Arith(arith) => a.arith(arith, b),
+        Binary::Cmp(cmp) => Some(Data::Bool(a.compare(b).is_some_and(|o| match cmp {
+            Cmp::Gt => o == Ordering::Greater,
+            Cmp::Ge => o != Ordering::Less,
+            Cmp::Eq => o == Ordering::Equal,
+            Cmp::Ne => o != Ordering::Equal,
+            Cmp::Le => o != Ordering::Greater,
+            Cmp::Lt => o == Ordering::Less,
+        }))),
+    };
+    result.unwrap_or(Data::Bool(false))
+}
