@@ -22,7 +22,7 @@
 use std::fmt;
 
 use super::address::{Address, AddressError};
-use super::data::Data;
+use super::data::{Data, DataType};
 use super::literal::{parse_literal, LiteralError};
 use super::vars::is_identifier;
 use crate::error::Located;
@@ -54,6 +54,67 @@ pub enum Operator {
     Ret,
     /// `)`: ends a deferred operation.
     Close,
+    /// A standard function, the current result its first input.
+    Function(Function),
+}
+
+/// The standard functions IL calls by name, the current result their
+/// first input and the line's operands (comma-separated) the others:
+/// `LD x` / `SHL 2`, `LD mn` / `LIMIT in, mx`, `LD g` / `SEL a, b`,
+/// `LD i` / `INT_TO_DINT`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Function {
+    Neg,
+    Move,
+    Shl,
+    Shr,
+    Rol,
+    Ror,
+    Min,
+    Max,
+    Limit,
+    Sel,
+    /// `FROM_TO_TO`.
+    Convert {
+        from: DataType,
+        to: DataType,
+    },
+}
+
+impl Function {
+    /// The function a name calls (any case).
+    pub fn named(name: &str) -> Option<Function> {
+        let upper = name.to_ascii_uppercase();
+        Some(match upper.as_str() {
+            "NEG" => Function::Neg,
+            "MOVE" => Function::Move,
+            "SHL" => Function::Shl,
+            "SHR" => Function::Shr,
+            "ROL" => Function::Rol,
+            "ROR" => Function::Ror,
+            "MIN" => Function::Min,
+            "MAX" => Function::Max,
+            "LIMIT" => Function::Limit,
+            "SEL" => Function::Sel,
+            _ => {
+                let (from, to) = upper.split_once("_TO_")?;
+                Function::Convert {
+                    from: DataType::from_name(from)?,
+                    to: DataType::from_name(to)?,
+                }
+            }
+        })
+    }
+
+    /// How many operands the line gives it.
+    pub const fn operands(self) -> usize {
+        match self {
+            Function::Neg | Function::Move | Function::Convert { .. } => 0,
+            Function::Shl | Function::Shr | Function::Rol | Function::Ror => 1,
+            Function::Min | Function::Max => 1,
+            Function::Limit | Function::Sel => 2,
+        }
+    }
 }
 
 impl Operator {
@@ -141,6 +202,8 @@ pub struct Line {
     /// `(`: the operation waits for its `)`.
     pub deferred: bool,
     pub operand: Option<Operand>,
+    /// A function's operands after the current result.
+    pub args: Vec<Operand>,
     /// A CAL's `input := operand` and `output => name` parameters.
     pub inputs: Vec<(String, Operand)>,
     pub outputs: Vec<(String, String)>,
@@ -282,6 +345,7 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
         condition: None,
         deferred: false,
         operand: None,
+        args: Vec::new(),
         inputs: Vec::new(),
         outputs: Vec::new(),
         line: number,
@@ -293,6 +357,9 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
         } else {
             Err(IlError::Operand("`)` takes no operand".into()))
         };
+    }
+    if let Some(function) = Function::named(word) {
+        return function_line(function, word, rest, out);
     }
     let upper = word.to_ascii_uppercase();
     let (operator, modifiers) = Operator::ALL
@@ -324,6 +391,31 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
     };
     operands(word, rest, &mut out)?;
     Ok(out)
+}
+
+/// A function's line: its comma-separated operands, as many as it takes.
+fn function_line(
+    function: Function,
+    word: &str,
+    rest: &str,
+    mut out: Line,
+) -> Result<Line, IlError> {
+    out.operator = Operator::Function(function);
+    out.args = if rest.is_empty() {
+        Vec::new()
+    } else {
+        rest.split(',')
+            .map(|a| operand(a.trim()))
+            .collect::<Result<_, _>>()?
+    };
+    if out.args.len() == function.operands() {
+        Ok(out)
+    } else {
+        Err(IlError::Operand(format!(
+            "`{word}` takes {} operand(s) after the current result",
+            function.operands()
+        )))
+    }
 }
 
 /// The operand (or a CAL's parameters) of `out`'s operator, from `rest`

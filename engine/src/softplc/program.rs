@@ -6,7 +6,7 @@ use std::fmt;
 
 use super::address::{Address, Area, Size};
 use super::data::{Arith, Bitwise, Data, DataType};
-use super::il::{parse_il, IlError, Line, Operand, Operator};
+use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use super::pins::{inputs, outputs, Instance};
 use super::vars::{parse_vars, Kind, VarError};
 use crate::error::Located;
@@ -54,6 +54,8 @@ pub(super) enum Step {
     /// new current result is the operand's, if it has one.
     Open(Binary, Option<Src>),
     Close,
+    /// A standard function of the current result and its operands.
+    Func(Function, Vec<Src>),
     Jmp(Option<bool>, usize),
     Ret(Option<bool>),
     Cal {
@@ -297,6 +299,7 @@ impl Program {
                 Step::Ret(line.condition)
             }
             Operator::Cal => self.call(line, cr)?,
+            Operator::Function(f) => self.function(f, line, cr)?,
             op => self.binary(op, line, cr, open)?,
         };
         Ok(step)
@@ -367,6 +370,68 @@ impl Program {
             *cr = Some(binary_type(binary, t, self.type_of(src))?);
             Ok(Step::Binary(binary, src))
         }
+    }
+
+    /// A function call: its operands resolved and fitted, the type it
+    /// leaves checked.
+    fn function(
+        &mut self,
+        f: Function,
+        line: &Line,
+        cr: &mut Option<DataType>,
+    ) -> Result<Step, LoadError> {
+        let t = need_cr(*cr)?;
+        let mut args = Vec::new();
+        for a in &line.args {
+            args.push(self.slot(a)?);
+        }
+        let wrong = |why: String| Err(LoadError::Type(why));
+        let result = match f {
+            Function::Neg if t == DataType::Bool => return wrong("NEG needs a number".into()),
+            Function::Neg | Function::Move => t,
+            Function::Shl | Function::Shr | Function::Rol | Function::Ror => {
+                if t.bits().is_none() || self.type_of(args[0]).bits().is_none() {
+                    return wrong("SHL, SHR, ROL and ROR shift an integer by an integer".into());
+                }
+                t
+            }
+            Function::Min | Function::Max | Function::Limit => {
+                for a in &mut args {
+                    *a = Program::fit(*a, t);
+                    if self.type_of(*a) != t {
+                        return wrong(format!(
+                            "{} and {} do not mix: convert one (*_TO_*)",
+                            t.name(),
+                            self.type_of(*a).name()
+                        ));
+                    }
+                }
+                t
+            }
+            Function::Sel => {
+                if t != DataType::Bool {
+                    return wrong("SEL's first input (the current result) is a BOOL".into());
+                }
+                let first = self.type_of(args[0]);
+                args[1] = Program::fit(args[1], first);
+                if self.type_of(args[1]) != first {
+                    return wrong("SEL's two values have one type".into());
+                }
+                first
+            }
+            Function::Convert { from, to } => {
+                if from != t {
+                    return wrong(format!(
+                        "the current result is {}, not {}",
+                        t.name(),
+                        from.name()
+                    ));
+                }
+                to
+            }
+        };
+        *cr = Some(result);
+        Ok(Step::Func(f, args))
     }
 
     /// `CAL instance(…)` resolved.

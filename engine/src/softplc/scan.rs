@@ -5,7 +5,9 @@
 use std::cmp::Ordering;
 
 use super::address::{Address, Area};
-use super::data::Data;
+use super::data::DataType;
+use super::data::{self, Data, Shift};
+use super::il::Function;
 use super::program::{Binary, Cmp, Program, Src, Step, STEPS_PER_SCAN};
 
 impl Program {
@@ -19,7 +21,10 @@ impl Program {
         let mut pc = 0;
         let mut ran = 0;
         self.overran = false;
-        while let Some(step) = self.steps.get(pc) {
+        // Taken out while they run, so that a call can change the blocks
+        // and values without copying its step; put back below.
+        let steps = std::mem::take(&mut self.steps);
+        while let Some(step) = steps.get(pc) {
             ran += 1;
             if ran > STEPS_PER_SCAN {
                 self.overran = true;
@@ -48,6 +53,10 @@ impl Program {
                         cr = apply(op, saved, cr);
                     }
                 }
+                Step::Func(f, args) => {
+                    let args: Vec<Data> = args.iter().map(|&a| self.read(a)).collect();
+                    cr = function(*f, cr, &args);
+                }
                 Step::Jmp(when, target) => {
                     if on(*when, cr) {
                         pc = *target;
@@ -64,29 +73,40 @@ impl Program {
                     inputs,
                     outputs,
                 } => {
-                    if !on(*when, cr) {
-                        continue;
-                    }
-                    let values: Vec<(usize, Data)> =
-                        inputs.iter().map(|&(i, src)| (i, self.read(src))).collect();
-                    let Some(instance) = self.blocks.get_mut(*block) else {
-                        continue;
-                    };
-                    for (i, v) in values {
-                        if let Some(slot) = instance.inputs.get_mut(i) {
-                            *slot = v;
-                        }
-                    }
-                    instance.call(now);
-                    let outs: Vec<(usize, Data)> = outputs
-                        .iter()
-                        .map(|&(i, slot)| (slot, instance.output(i)))
-                        .collect();
-                    for (slot, v) in outs {
-                        self.values[slot] = v;
+                    if on(*when, cr) {
+                        self.call_block(*block, inputs, outputs, now);
                     }
                 }
             }
+        }
+        self.steps = steps;
+    }
+
+    /// Calls block instance `block` with `inputs` and copies its `outputs`.
+    fn call_block(
+        &mut self,
+        block: usize,
+        inputs: &[(usize, Src)],
+        outputs: &[(usize, usize)],
+        now: i64,
+    ) {
+        let values: Vec<(usize, Data)> =
+            inputs.iter().map(|&(i, src)| (i, self.read(src))).collect();
+        let Some(instance) = self.blocks.get_mut(block) else {
+            return;
+        };
+        for (i, v) in values {
+            if let Some(slot) = instance.inputs.get_mut(i) {
+                *slot = v;
+            }
+        }
+        instance.call(now);
+        let outs: Vec<(usize, Data)> = outputs
+            .iter()
+            .map(|&(i, slot)| (slot, instance.output(i)))
+            .collect();
+        for (slot, v) in outs {
+            self.values[slot] = v;
         }
     }
 
@@ -194,4 +214,34 @@ fn apply(op: Binary, a: Data, b: Data) -> Data {
         }))),
     };
     result.unwrap_or(Data::Bool(false))
+}
+
+/// A function of the current result `cr` and `args` (types checked at
+/// load; a mismatch cannot reach here and leaves `cr` as it was).
+fn function(f: Function, cr: Data, args: &[Data]) -> Data {
+    let count = |d: &Data| match d.convert(DataType::Udint) {
+        Data::Int(_, n) => u32::try_from(n).unwrap_or(u32::MAX),
+        _ => 0,
+    };
+    let shift = |op| args.first().and_then(|n| cr.shift(op, count(n)));
+    let result = match f {
+        Function::Neg => cr.negate(),
+        Function::Move => Some(cr),
+        Function::Shl => shift(Shift::Shl),
+        Function::Shr => shift(Shift::Shr),
+        Function::Rol => shift(Shift::Rol),
+        Function::Ror => shift(Shift::Ror),
+        Function::Min => args.first().and_then(|&b| data::min(cr, b)),
+        Function::Max => args.first().and_then(|&b| data::max(cr, b)),
+        Function::Limit => match args {
+            [input, mx] => data::limit(cr, *input, *mx),
+            _ => None,
+        },
+        Function::Sel => match args {
+            [in0, in1] => Some(data::select(cr == Data::Bool(true), *in0, *in1)),
+            _ => None,
+        },
+        Function::Convert { to, .. } => Some(cr.convert(to)),
+    };
+    result.unwrap_or(cr)
 }

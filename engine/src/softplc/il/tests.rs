@@ -110,6 +110,39 @@ fn each_bad_line_says_why_at_its_line() {
 }
 
 #[test]
+fn functions_by_name_with_their_operands() {
+    let lines = parse_il("SHL 2\nLIMIT a, 100\nint_to_dint\nNEG\nSEL x, y").expect("it reads");
+    assert_eq!(lines[0].operator, Operator::Function(Function::Shl));
+    assert_eq!(lines[1].args.len(), 2);
+    assert_eq!(
+        lines[2].operator,
+        Operator::Function(Function::Convert {
+            from: DataType::Int,
+            to: DataType::Dint
+        })
+    );
+    assert_eq!(lines[3].operator, Operator::Function(Function::Neg));
+    assert_eq!(
+        parse_il("LD x\nSHL\nLIMIT 1\nREAL_TO_FLOAT")
+            .expect_err("refused")
+            .iter()
+            .map(|e| (e.line, e.error.to_string()))
+            .collect::<Vec<_>>(),
+        [
+            (
+                2,
+                "`SHL` takes 1 operand(s) after the current result".to_string()
+            ),
+            (
+                3,
+                "`LIMIT` takes 2 operand(s) after the current result".to_string()
+            ),
+            (4, "unknown operator `REAL_TO_FLOAT`".to_string()),
+        ]
+    );
+}
+
+#[test]
 fn comments_anywhere_and_var_blocks_are_skipped() {
     let lines = parse_il("(* head *)\nVAR\n  x : BOOL;\nEND_VAR\nLD (* mid *) x (* end\nST y")
         .expect("it reads");

@@ -113,6 +113,34 @@ fn retained_values_survive_a_power_cycle() {
     assert_eq!(p.value("total"), Some(Data::integer(DataType::Int, 2)));
 }
 
+#[test]
+fn functions_take_the_current_result_first() {
+    let mut p = load(
+        "VAR\n  level AT %IW0 : INT;\n  pct : INT;\n  big : DINT;\n  w : WORD := 16#8001;\n  \
+         alarm : BOOL;\n  pick : INT;\nEND_VAR\n\
+         LD INT#0\nLIMIT level, 100\nST pct\n\
+         LD level\nINT_TO_DINT\nMUL 1000\nST big\n\
+         LD w\nROL 1\nST w\n\
+         LD pct\nGE 90\nST alarm\n\
+         LD alarm\nSEL INT#1, 2\nST pick",
+    );
+    assert!(p.set_input(addr("%IW0"), Data::integer(DataType::Int, 250)));
+    p.scan(0);
+    assert_eq!(
+        p.value("pct"),
+        Some(Data::integer(DataType::Int, 100)),
+        "LIMIT(0, 250, 100)"
+    );
+    assert_eq!(
+        p.value("big"),
+        Some(Data::integer(DataType::Dint, 250_000)),
+        "no INT overflow after the conversion"
+    );
+    assert_eq!(p.value("w"), Some(Data::integer(DataType::Word, 0x0003)));
+    assert!(on(&p, "alarm"));
+    assert_eq!(p.value("pick"), Some(Data::integer(DataType::Int, 2)));
+}
+
 fn errors(text: &str) -> Vec<(usize, String)> {
     Program::load(text)
         .expect_err("refused")
@@ -146,4 +174,22 @@ fn what_does_not_load_says_why_at_its_line() {
     assert_eq!(got[6].1, "TON's PT is a TIME");
     assert!(got[7].1.contains("start with LD"));
     assert_eq!(got[8].1, "`(` and `)` do not pair");
+    let got = errors(
+        "VAR\n  i : INT;\n  r : REAL;\n  b : BOOL;\nEND_VAR\n\
+         LD i\nDINT_TO_INT\n\
+         LD r\nSHL 1\n\
+         LD i\nSEL 1, 2\n\
+         LD b\nNEG\n\
+         LD i\nMIN r",
+    );
+    assert_eq!(
+        got.iter().map(|(l, _)| *l).collect::<Vec<_>>(),
+        [7, 9, 11, 13, 15],
+        "{got:?}"
+    );
+    assert_eq!(got[0].1, "the current result is INT, not DINT");
+    assert!(got[1].1.contains("shift an integer"));
+    assert!(got[2].1.contains("SEL's first input"));
+    assert_eq!(got[3].1, "NEG needs a number");
+    assert_eq!(got[4].1, "INT and REAL do not mix: convert one (*_TO_*)");
 }
