@@ -130,7 +130,7 @@ pub fn parse_literal(text: &str, expected: Option<DataType>) -> Result<Data, Lit
 }
 
 /// `v` as type `t` if it is within its range.
-fn in_range(t: DataType, v: i128) -> Option<Data> {
+pub(super) fn in_range(t: DataType, v: i128) -> Option<Data> {
     let (lo, hi) = t.range()?;
     (lo..=hi).contains(&v).then(|| Data::integer(t, v))
 }

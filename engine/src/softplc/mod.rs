@@ -21,3 +21,15 @@ pub use data::{Data, DataType};
 pub use literal::{parse_literal, LiteralError};
 pub use program::{LoadError, Program};
 pub use vars::{parse_vars, Kind, VarError, Variable};
+
+/// The tests' view of a refusal: each error's line and message.
+#[cfg(test)]
+fn said<T: std::fmt::Debug, E: std::fmt::Display>(
+    result: Result<T, Vec<crate::error::Located<E>>>,
+) -> Vec<(usize, String)> {
+    result
+        .expect_err("refused")
+        .into_iter()
+        .map(|e| (e.line, e.error.to_string()))
+        .collect()
+}

@@ -7,6 +7,7 @@ use std::fmt;
 use super::address::{Address, Area, Size};
 use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
+use super::literal::in_range;
 use super::pins::{inputs, outputs, Instance};
 use super::vars::{parse_vars, Kind, VarError};
 use crate::error::Located;
@@ -240,20 +241,20 @@ impl Program {
     /// reads as a DINT), or an integer as a REAL.
     fn fit(src: Src, want: DataType) -> Src {
         match src {
-            Src::Const(d @ Data::Int(..)) if want.bits().is_some() => {
-                let v = d.convert(DataType::Lint);
-                match (v, want.range()) {
-                    (Data::Int(_, v), Some((lo, hi))) if (lo..=hi).contains(&i128::from(v)) => {
-                        Src::Const(Data::integer(want, i128::from(v)))
-                    }
-                    _ => src,
-                }
-            }
+            Src::Const(d @ Data::Int(..)) if want.bits().is_some() => d
+                .int()
+                .and_then(|v| in_range(want, v))
+                .map_or(src, Src::Const),
             Src::Const(d @ Data::Int(..)) if want == DataType::Real => {
                 Src::Const(d.convert(DataType::Real))
             }
             _ => src,
         }
+    }
+
+    /// The slot or constant of the line's operand, if it has one.
+    fn operand(&mut self, line: &Line) -> Result<Option<Src>, LoadError> {
+        line.operand.as_ref().map(|o| self.slot(o)).transpose()
     }
 
     /// One line resolved and checked; `cr` is the current result's type.
@@ -264,12 +265,9 @@ impl Program {
         cr: &mut Option<DataType>,
         open: &mut Vec<(Binary, Option<DataType>)>,
     ) -> Result<Step, LoadError> {
-        let operand = |p: &mut Program| -> Result<Option<Src>, LoadError> {
-            line.operand.as_ref().map(|o| p.slot(o)).transpose()
-        };
         let step = match line.operator {
             Operator::Ld => {
-                let src = operand(self)?.ok_or(LoadError::Unbalanced)?;
+                let src = self.operand(line)?.ok_or(LoadError::Unbalanced)?;
                 let t = self.type_of(src);
                 if line.negated && t.bits().is_none() && t != DataType::Bool {
                     return Err(LoadError::Type(format!(
@@ -307,8 +305,7 @@ impl Program {
 
     /// ST, S, R: the current result (of type `t`) into a variable.
     fn store(&mut self, line: &Line, t: DataType) -> Result<Step, LoadError> {
-        let operand = line.operand.as_ref().map(|o| self.slot(o)).transpose()?;
-        let Some(Src::Slot(slot)) = operand else {
+        let Some(Src::Slot(slot)) = self.operand(line)? else {
             return Err(LoadError::Type(
                 "a value is stored in a variable, not a literal".into(),
             ));
@@ -355,12 +352,7 @@ impl Program {
             _ => Binary::Cmp(Cmp::Lt),
         };
         let t = need_cr(*cr)?;
-        let src = line
-            .operand
-            .as_ref()
-            .map(|o| self.slot(o))
-            .transpose()?
-            .map(|s| Program::fit(s, t));
+        let src = self.operand(line)?.map(|s| Program::fit(s, t));
         if line.deferred {
             open.push((binary, Some(t)));
             *cr = src.map(|s| self.type_of(s));
@@ -450,10 +442,7 @@ impl Program {
         let kind = self.block_names[block].1.clone();
         let mut ins = Vec::new();
         for (pin, value) in &line.inputs {
-            let (i, &(_, want)) = inputs(&kind)
-                .iter()
-                .enumerate()
-                .find(|(_, (p, _))| p.eq_ignore_ascii_case(pin))
+            let (i, want) = find_pin(inputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
             let src = Program::fit(self.slot(value)?, want);
             if self.type_of(src) != want {
@@ -466,10 +455,7 @@ impl Program {
         }
         let mut outs = Vec::new();
         for (pin, target) in &line.outputs {
-            let (i, &(_, t)) = outputs(&kind)
-                .iter()
-                .enumerate()
-                .find(|(_, (p, _))| p.eq_ignore_ascii_case(pin))
+            let (i, t) = find_pin(outputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
             let Src::Slot(slot) = self.slot(&Operand::Name(target.clone()))? else {
                 return Err(LoadError::Call(format!("`{target}` is not a variable")));
@@ -517,6 +503,13 @@ fn jump(line: &Line, lines: &[Line], cr: &mut Option<DataType>) -> Result<Step, 
         *cr = None;
     }
     Ok(Step::Jmp(line.condition, target))
+}
+
+/// A block parameter's place in `pins` and its type, by name (any case).
+fn find_pin(pins: &[(&str, DataType)], name: &str) -> Option<(usize, DataType)> {
+    pins.iter()
+        .position(|(p, _)| p.eq_ignore_ascii_case(name))
+        .map(|i| (i, pins[i].1))
 }
 
 fn describe(o: &Operand) -> String {

@@ -8,6 +8,7 @@ use super::address::{Address, Area};
 use super::data::DataType;
 use super::data::{self, Data, Shift};
 use super::il::Function;
+use super::pins::Instance;
 use super::program::{Binary, Cmp, Program, Src, Step, STEPS_PER_SCAN};
 
 impl Program {
@@ -33,7 +34,7 @@ impl Program {
             pc += 1;
             let on = |when: Option<bool>, cr: Data| when.is_none_or(|w| cr == Data::Bool(w));
             match step {
-                Step::Ld(src, neg) => cr = negate(self.read(*src), *neg),
+                Step::Ld(src, neg) => cr = negate(read(&self.values, *src), *neg),
                 Step::St(slot, neg) => self.values[*slot] = negate(cr, *neg),
                 Step::Set(slot) if cr == Data::Bool(true) => self.values[*slot] = Data::Bool(true),
                 Step::Reset(slot) if cr == Data::Bool(true) => {
@@ -41,11 +42,11 @@ impl Program {
                 }
                 Step::Set(_) | Step::Reset(_) => {}
                 Step::Not => cr = negate(cr, true),
-                Step::Binary(op, src) => cr = apply(*op, cr, self.read(*src)),
+                Step::Binary(op, src) => cr = apply(*op, cr, read(&self.values, *src)),
                 Step::Open(op, src) => {
                     open.push((*op, cr));
                     if let Some(src) = src {
-                        cr = self.read(*src);
+                        cr = read(&self.values, *src);
                     }
                 }
                 Step::Close => {
@@ -54,8 +55,12 @@ impl Program {
                     }
                 }
                 Step::Func(f, args) => {
-                    let args: Vec<Data> = args.iter().map(|&a| self.read(a)).collect();
-                    cr = function(*f, cr, &args);
+                    // At most two operands: read without allocating.
+                    let mut values = [cr; 2];
+                    for (v, &a) in values.iter_mut().zip(args) {
+                        *v = read(&self.values, a);
+                    }
+                    cr = function(*f, cr, &values[..args.len().min(2)]);
                 }
                 Step::Jmp(when, target) => {
                     if on(*when, cr) {
@@ -90,30 +95,18 @@ impl Program {
         outputs: &[(usize, usize)],
         now: i64,
     ) {
-        let values: Vec<(usize, Data)> =
-            inputs.iter().map(|&(i, src)| (i, self.read(src))).collect();
+        // The values and the blocks are apart: read one, write the other.
         let Some(instance) = self.blocks.get_mut(block) else {
             return;
         };
-        for (i, v) in values {
+        for &(i, src) in inputs {
             if let Some(slot) = instance.inputs.get_mut(i) {
-                *slot = v;
+                *slot = read(&self.values, src);
             }
         }
         instance.call(now);
-        let outs: Vec<(usize, Data)> = outputs
-            .iter()
-            .map(|&(i, slot)| (slot, instance.output(i)))
-            .collect();
-        for (slot, v) in outs {
-            self.values[slot] = v;
-        }
-    }
-
-    fn read(&self, src: Src) -> Data {
-        match src {
-            Src::Slot(s) => self.values[s],
-            Src::Const(d) => d,
+        for &(i, slot) in outputs {
+            self.values[slot] = instance.output(i);
         }
     }
 
@@ -166,26 +159,17 @@ impl Program {
                 *v = self.initial[slot];
             }
         }
-        for b in &mut self.blocks {
-            *b = super::pins::Instance::new(block_kind(b));
+        for (b, (_, kind)) in self.blocks.iter_mut().zip(&self.block_names) {
+            *b = Instance::new(kind);
         }
     }
 }
 
-/// The kind name of an instance, from its state.
-fn block_kind(b: &super::pins::Instance) -> &'static str {
-    use super::pins::State::*;
-    match b.state {
-        Ton(_) => "TON",
-        Tof(_) => "TOF",
-        Tp(_) => "TP",
-        Ctu(_) => "CTU",
-        Ctd(_) => "CTD",
-        Ctud(_) => "CTUD",
-        RTrig(_) => "R_TRIG",
-        FTrig(_) => "F_TRIG",
-        Sr(_) => "SR",
-        Rs(_) => "RS",
+/// What `src` holds: a value of the table, or a constant.
+fn read(values: &[Data], src: Src) -> Data {
+    match src {
+        Src::Slot(s) => values[s],
+        Src::Const(d) => d,
     }
 }
 

@@ -68,11 +68,7 @@ fn modifiers_go_where_iec_allows_them() {
 }
 
 fn errors(text: &str) -> Vec<(usize, String)> {
-    parse_il(text)
-        .expect_err("refused")
-        .into_iter()
-        .map(|e| (e.line, e.error.to_string()))
-        .collect()
+    crate::softplc::said(parse_il(text))
 }
 
 #[test]
@@ -123,11 +119,7 @@ fn functions_by_name_with_their_operands() {
     );
     assert_eq!(lines[3].operator, Operator::Function(Function::Neg));
     assert_eq!(
-        parse_il("LD x\nSHL\nLIMIT 1\nREAL_TO_FLOAT")
-            .expect_err("refused")
-            .iter()
-            .map(|e| (e.line, e.error.to_string()))
-            .collect::<Vec<_>>(),
+        errors("LD x\nSHL\nLIMIT 1\nREAL_TO_FLOAT"),
         [
             (
                 2,

@@ -142,11 +142,7 @@ fn functions_take_the_current_result_first() {
 }
 
 fn errors(text: &str) -> Vec<(usize, String)> {
-    Program::load(text)
-        .expect_err("refused")
-        .into_iter()
-        .map(|e| (e.line, e.error.to_string()))
-        .collect()
+    crate::softplc::said(Program::load(text))
 }
 
 #[test]

@@ -45,11 +45,7 @@ fn a_header_with_located_named_retained_and_block_variables() {
 }
 
 fn errors(text: &str) -> Vec<(usize, String)> {
-    parse_vars(text)
-        .expect_err("refused")
-        .into_iter()
-        .map(|e| (e.line, e.error.to_string()))
-        .collect()
+    crate::softplc::said(parse_vars(text))
 }
 
 #[test]
