@@ -9,9 +9,12 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 use files_worker::{Envelope, Reply, Request};
+use leptos::prelude::{RwSignal, Set};
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::JsCast;
 use web_sys::{MessageEvent, Worker, WorkerOptions, WorkerType};
+
+use crate::i18n::Texts;
 
 /// The loader Trunk writes for the worker (`index.html`'s worker asset).
 const LOADER: &str = "./files_worker_loader.js";
@@ -63,6 +66,25 @@ pub fn ask(request: Request, done: impl FnOnce(Result<Reply, String>) + 'static)
     if let (Err(why), Some(done)) = (sent, done) {
         done(Err(why));
     }
+}
+
+/// [`ask`], saying so on the page: `message` reads "Reading the PLCopen
+/// file…" while the worker works and says why when it cannot start;
+/// `then` gets the reply (the message cleared).
+pub fn ask_saying(
+    message: RwSignal<Option<String>>,
+    texts: &'static Texts,
+    request: Request,
+    then: impl FnOnce(Reply) + 'static,
+) {
+    message.set(Some(texts.files_loading.to_string()));
+    ask(request, move |reply| match reply {
+        Ok(reply) => {
+            message.set(None);
+            then(reply);
+        }
+        Err(why) => message.set(Some(format!("{} ({why})", texts.files_failed))),
+    });
 }
 
 /// Starts the worker and listens to it for the page's life.

@@ -2,6 +2,7 @@
 (http-server with the build's precompressed files), and a headless
 Chromium driver."""
 
+import json
 import pathlib
 import socket
 import subprocess
@@ -86,6 +87,17 @@ def driver(tmp_path):
     drv.set_page_load_timeout(30)
     yield drv
     drv.quit()
+
+
+def record_figures(new):
+    """Adds `new` to artifacts/figures.json (the measured figures that
+    docs/performance.md and the README quote), keeping the others."""
+    ARTIFACTS.mkdir(exist_ok=True)
+    path = ARTIFACTS / "figures.json"
+    figures = json.loads(path.read_text()) if path.exists() else {}
+    figures |= new
+    path.write_text(json.dumps(figures, indent=2) + "\n")
+    return figures
 
 
 @pytest.fixture(scope="session")

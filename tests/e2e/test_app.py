@@ -1,6 +1,5 @@
 """End-to-end: the release page in headless Chromium, driven as a user would."""
 
-import json
 import pathlib
 import re
 import subprocess
@@ -9,6 +8,8 @@ import time
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
+
+from conftest import record_figures
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 STORAGE_KEY = "hashigo.minasec-u.v1"
@@ -206,14 +207,11 @@ def test_first_paint_and_wasm_speed(driver, base_url, artifacts):
     ).stdout
     native_rate = float(dict(f.split("=") for f in native.split())["steps_per_second"])
     wasm = sorted(ROOT.glob("dist/*.wasm"))[0]
-    figures_file = artifacts / "figures.json"
-    figures = json.loads(figures_file.read_text()) if figures_file.exists() else {}
-    figures |= {
+    figures = record_figures({
         "first_contentful_paint_ms": round(paint, 1),
         "wasm_steps_per_second": round(wasm_rate),
         "native_steps_per_second": round(native_rate),
         "wasm_to_native": round(wasm_rate / native_rate, 3),
         "wasm_bytes": wasm.stat().st_size,
-    }
-    figures_file.write_text(json.dumps(figures, indent=2) + "\n")
+    })
     print(figures)

@@ -1,13 +1,12 @@
-"""End-to-end: the first visit is never blank (issue #29, first part):
+"""End-to-end: the first visit is never blank (issue #29):
 index.html paints a loading screen without any script, the app replaces
-it, and when the app cannot start the screen says what to do."""
-
-import json
+it, and when the app cannot start the screen says what to do; a first
+visit over a slow link; the files worker when it cannot load."""
 
 import pytest
 from selenium.webdriver.common.by import By
 
-from conftest import DistServer
+from conftest import DistServer, record_figures
 from test_app import ROOT, el, open_fresh, wait
 
 
@@ -37,7 +36,7 @@ SLOW_LINK = {"offline": False, "latency": 150, "downloadThroughput": 1_600_000 /
 
 
 @pytest.mark.parametrize("served", ["brotli", "gzip"])
-def test_a_first_visit_over_a_slow_link(driver, artifacts, served):
+def test_a_first_visit_over_a_slow_link(driver, served):
     """A fresh profile over the slow link, served as scripts/serve.sh
     serves it (brotli or gzip, as the browser accepts) and as a host that
     has only gzip: the figures (first words, app ready, bytes sent) go to
@@ -67,17 +66,15 @@ def test_a_first_visit_over_a_slow_link(driver, artifacts, served):
     assert len(wasm) == 1, f"the first screen loads one wasm: {timeline['files']}"
     # Sent compressed: at most half of its size.
     assert 0 < wasm[0]["sent"] < wasm[0]["size"] / 2, wasm[0]
-    figures_file = artifacts / "figures.json"
-    figures = json.loads(figures_file.read_text()) if figures_file.exists() else {}
-    figures[f"first_visit_slow_link_{served}"] = {
+    figure = {
         "link": "1.6 Mbit/s down, 150 ms latency (CDP Network.emulateNetworkConditions)",
         "words_ms": round(timeline["words"]),
         "ready_ms": round(timeline["ready"]),
         "bytes_sent": sum(f["sent"] for f in timeline["files"]),
         "wasm_bytes_sent": wasm[0]["sent"],
     }
-    figures_file.write_text(json.dumps(figures, indent=2) + "\n")
-    print(figures[f"first_visit_slow_link_{served}"], timeline["files"])
+    record_figures({f"first_visit_slow_link_{served}": figure})
+    print(figure, timeline["files"])
 
 
 def test_when_the_files_worker_cannot_load_the_page_says_so(driver):

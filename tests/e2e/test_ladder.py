@@ -12,6 +12,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
+from conftest import record_figures
 from test_app import ROOT, el, on, open_fresh, severe_console_messages, wait
 
 HASHIGO = ROOT / "target" / "release" / "hashigo"
@@ -830,7 +831,7 @@ def live_scan(driver):
     return int(re.search(r"(\d+)", el(driver, "travel-at").text).group(1))
 
 
-def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, artifacts, tmp_path):
+def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, tmp_path):
     """Measures frame times (not a pass/fail speed test): 200 rungs of 10
     columns on the AVR PLC, every coil toggling every scan, run flat out in
     a 1600x1100 window; the p95 of requestAnimationFrame deltas, running
@@ -882,13 +883,12 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, ar
         runs["running"].append(stats(running) | {"scans_per_s": round(scans / 3)})
         runs["paused"].append(stats(paused))
 
-    figures_file = artifacts / "figures.json"
-    figures = json.loads(figures_file.read_text()) if figures_file.exists() else {}
+    frames = {}
     for state in ("running", "paused"):
         p95s = sorted(r["p95"] for r in runs[state])
-        figures[f"ladder_200_rungs_{state}_frame_ms"] = {"median_p95": p95s[1], "runs": runs[state]}
-    figures_file.write_text(json.dumps(figures, indent=2) + "\n")
-    print(figures["ladder_200_rungs_running_frame_ms"], figures["ladder_200_rungs_paused_frame_ms"])
+        frames[f"ladder_200_rungs_{state}_frame_ms"] = {"median_p95": p95s[1], "runs": runs[state]}
+    record_figures(frames)
+    print(frames)
 
 
 def test_an_io86a_timer_coil_shows_current_and_preset(driver, base_url):

@@ -1,16 +1,15 @@
 """End-to-end: time travel, breaks, the timing chart and "why" (issue #16)."""
 
-import json
 import statistics
 
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
-from test_app import ROOT, el, severe_console_messages, wait
+from conftest import record_figures
+from test_app import el, severe_console_messages, wait
 from test_ladder import CAPTURE, downloads
 from test_ladder import seed_running as running_at
 
-FIGURES = ROOT / "tests" / "e2e" / "artifacts" / "figures.json"
 
 
 def seed_running(driver, base_url):
@@ -171,7 +170,7 @@ def test_why_is_the_lamp_off_names_the_stop_button(driver, base_url):
     wait(driver, lambda: el(driver, "why-head").text.startswith("contact Y00"))
 
 
-def test_seeking_any_recorded_scan_is_quick(driver, base_url, artifacts):
+def test_seeking_any_recorded_scan_is_quick(driver, base_url):
     """Measures seek time (not a pass/fail speed test beyond the issue's
     16 ms): the timeline set to 60 recorded scans across the recording,
     each from the input event until the page shows that scan, laid out
@@ -209,9 +208,6 @@ def test_seeking_any_recorded_scan_is_quick(driver, base_url, artifacts):
     assert isinstance(times, list), times
     times.sort()
     p95 = times[int(len(times) * 0.95) - 1]
-    figures = json.loads(FIGURES.read_text()) if FIGURES.exists() else {}
-    figures["seek_ms"] = {"p50": round(statistics.median(times), 2), "p95": round(p95, 2),
-                          "scans_recorded": last, "samples": len(times)}
-    FIGURES.parent.mkdir(exist_ok=True)
-    FIGURES.write_text(json.dumps(figures, indent=2))
+    record_figures({"seek_ms": {"p50": round(statistics.median(times), 2), "p95": round(p95, 2),
+                                "scans_recorded": last, "samples": len(times)}})
     assert p95 <= 16.0, times

@@ -66,21 +66,19 @@ pub fn svg_of(ctx: LadderCtx) -> String {
 /// Downloads the ladder as PLCopen XML, written by the files worker
 /// (fetched on first use, issue #29).
 fn export_plcopen(ctx: LadderCtx) {
-    let t = ctx.page.lang.get_untracked().texts();
-    ctx.panes.message.set(Some(t.files_loading.to_string()));
+    let texts = ctx.page.lang.get_untracked().texts();
     let request = Request::Export {
         ladder: ctx.ladder(),
         name: "Main".to_string(),
     };
-    crate::worker::ask(request, move |reply| {
+    crate::worker::ask_saying(ctx.panes.message, texts, request, move |reply| {
         ctx.panes.message.set(match reply {
-            Ok(Reply::Export(Ok(xml))) => {
+            Reply::Export(Ok(xml)) => {
                 download(&name(ctx, "xml"), "application/xml", &xml);
                 None
             }
-            Ok(Reply::Export(Err(errors))) => Some(errors.join("; ")),
-            Ok(other) => Some(format!("{other:?}")),
-            Err(why) => Some(format!("{} ({why})", t.files_failed)),
+            Reply::Export(Err(errors)) => Some(errors.join("; ")),
+            other => Some(format!("{other:?}")),
         });
     });
 }

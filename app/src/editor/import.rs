@@ -42,8 +42,7 @@ pub fn attempt(
     first: bool,
     closed: impl FnOnce() + 'static,
 ) {
-    let t = ctx.page.lang.get_untracked().texts();
-    ctx.panes.message.set(Some(t.files_loading.to_string()));
+    let texts = ctx.page.lang.get_untracked().texts();
     let request = Request::Import {
         file: pending.file.clone(),
         text: pending.text.clone(),
@@ -51,17 +50,10 @@ pub fn attempt(
         rows: (!first).then(|| pending.rows.clone()),
         pou: pending.pou.clone(),
     };
-    crate::worker::ask(request, move |reply| {
-        ctx.panes.message.set(None);
+    crate::worker::ask_saying(ctx.panes.message, texts, request, move |reply| {
         let reply = match reply {
-            Ok(Reply::Import(reply)) => reply,
-            Ok(other) => return leptos::logging::warn!("an import got {other:?}"),
-            Err(why) => {
-                ctx.panes
-                    .message
-                    .set(Some(format!("{} ({why})", t.files_failed)));
-                return;
-            }
+            Reply::Import(reply) => reply,
+            other => return leptos::logging::warn!("an import got {other:?}"),
         };
         pending.pous = reply.pous;
         pending.rows = reply.rows;
