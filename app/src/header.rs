@@ -24,6 +24,7 @@ pub fn Header() -> impl IntoView {
                     MachineKind::Io86a => t().title_io86a,
                     MachineKind::ArduinoPlc => t().title_arduino,
                     MachineKind::AvrPlc => t().title_avr,
+                    MachineKind::SoftPlc => "Soft PLC (IEC 61131-3)",
                 }}
             </h1>
             <MachineSelect />

@@ -150,6 +150,8 @@ impl Workspaces {
                 view! { <arduino::ArduinoWorkspace ard=self.arduino /> }.into_any()
             }
             MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=self.avr /> }.into_any(),
+            // Never shown: the page opens no soft PLC project (#31).
+            MachineKind::SoftPlc => ().into_any(),
         }
     }
 }

@@ -12,6 +12,36 @@ pub enum InputValue {
     Int(i64),
     /// An analog voltage in millivolts (`2.5V` = 2500).
     Millivolts(i64),
+    /// A real number (`2.5`): the soft PLC's REAL variables.
+    Real(Real),
+}
+
+/// A finite real number as an input takes it, compared bit for bit so
+/// that events and commands stay `Eq`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Real(u64);
+
+impl Real {
+    /// `x`, if it is finite (an input is never infinite or NaN).
+    pub fn new(x: f64) -> Option<Real> {
+        x.is_finite().then_some(Real(x.to_bits()))
+    }
+
+    /// The number.
+    pub fn get(self) -> f64 {
+        f64::from_bits(self.0)
+    }
+}
+
+impl fmt::Display for InputValue {
+    /// As an events file writes it: `1`, `2.5V`, `2.5`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            InputValue::Int(n) => write!(f, "{n}"),
+            InputValue::Millivolts(mv) => write!(f, "{}V", *mv as f64 / 1000.0),
+            InputValue::Real(x) => write!(f, "{:?}", x.get()),
+        }
+    }
 }
 
 /// At `time`, the input `device` takes `value`.
@@ -57,7 +87,7 @@ impl fmt::Display for EventError {
             ),
             EventError::BadValue(v) => write!(
                 f,
-                "bad value {}: write 0 or 1 for a bit, an integer for a word, or a voltage such as 2.5V", crate::error::shown(v)
+                "bad value {}: write 0 or 1 for a bit, an integer for a word, a voltage such as 2.5V, or a decimal such as 2.5 for a REAL", crate::error::shown(v)
             ),
         }
     }
@@ -131,6 +161,15 @@ fn parse_value(text: &str) -> Result<InputValue, EventError> {
         }
         let mv = i64::try_from(nanos / 1_000_000).map_err(|_| bad())?;
         return Ok(InputValue::Millivolts(if negative { -mv } else { mv }));
+    }
+    if text.contains(['.', 'e', 'E']) {
+        // A decimal: only a REAL takes it (the machine checks).
+        return text
+            .parse::<f64>()
+            .ok()
+            .and_then(Real::new)
+            .map(InputValue::Real)
+            .ok_or_else(bad);
     }
     text.parse::<i64>().map(InputValue::Int).map_err(|_| bad())
 }

@@ -1,10 +1,10 @@
-//! The four machines by their command-line and project-file names.
+//! The five machines by their command-line and project-file names.
 
 use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-/// One of the four simulated PLCs (../shared/spec/machines.md).
+/// One of the five simulated PLCs (../shared/spec/machines.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub enum MachineId {
     /// MINASEC-U, the logic-IC PLC.
@@ -19,11 +19,25 @@ pub enum MachineId {
     /// The Arduino PLC sketch.
     #[serde(rename = "arduino-plc")]
     ArduinoPlc,
+    /// The soft PLC: a general IEC 61131-3 machine with word data.
+    #[serde(rename = "soft-plc")]
+    SoftPlc,
 }
 
 impl MachineId {
     /// Every machine, in the order the docs list them.
-    pub const ALL: [MachineId; 4] = [
+    pub const ALL: [MachineId; 5] = [
+        MachineId::MinasecU,
+        MachineId::Io86a,
+        MachineId::AvrPlc,
+        MachineId::ArduinoPlc,
+        MachineId::SoftPlc,
+    ];
+
+    /// The four small PLCs of the seed documents: every machine but the
+    /// soft PLC (the page offers these until it has the soft PLC's
+    /// workspace, issue #31).
+    pub const KITS: [MachineId; 4] = [
         MachineId::MinasecU,
         MachineId::Io86a,
         MachineId::AvrPlc,
@@ -37,6 +51,7 @@ impl MachineId {
             MachineId::Io86a => "io86a",
             MachineId::AvrPlc => "avr-plc",
             MachineId::ArduinoPlc => "arduino-plc",
+            MachineId::SoftPlc => "soft-plc",
         }
     }
 
@@ -49,7 +64,7 @@ impl MachineId {
     }
 }
 
-/// A machine name that is none of the four (as written).
+/// A machine name that is none of the five (as written).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct UnknownMachine(pub String);
 
@@ -57,7 +72,7 @@ impl fmt::Display for UnknownMachine {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "unknown machine {}: minasec-u, io86a, avr-plc or arduino-plc",
+            "unknown machine {}: minasec-u, io86a, avr-plc, arduino-plc or soft-plc",
             crate::error::shown(&self.0)
         )
     }

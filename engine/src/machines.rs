@@ -7,6 +7,7 @@ pub use crate::arduino::ArduinoPlc;
 pub use crate::avr::AvrPlc;
 pub use crate::io86a::Io86aPlc;
 pub use crate::minasec::MinasecPlc;
+pub use crate::softplc::SoftPlc;
 
 use crate::plc::Plc;
 use crate::MachineId;
@@ -19,5 +20,6 @@ pub fn new_plc(id: MachineId) -> Box<dyn Plc> {
         MachineId::Io86a => Box::new(Io86aPlc::new()),
         MachineId::AvrPlc => Box::new(AvrPlc::new()),
         MachineId::ArduinoPlc => Box::new(ArduinoPlc::new()),
+        MachineId::SoftPlc => Box::new(SoftPlc::new()),
     }
 }

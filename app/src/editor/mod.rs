@@ -42,28 +42,31 @@ use leptos::prelude::*;
 pub use state::{LadderCtx, Program};
 
 /// Every machine's editor, indexed by the machine's place in
-/// [`MachineId::ALL`]; `Copy`, provided as context so that a ladder can be
+/// [`MachineId::KITS`]; `Copy`, provided as context so that a ladder can be
 /// copied to another machine.
 #[derive(Clone, Copy)]
 pub struct Ladders {
-    all: [LadderCtx; MachineId::ALL.len()],
+    all: [LadderCtx; MachineId::KITS.len()],
 }
 
 impl Ladders {
     /// An editor for each machine, made by `make`.
     pub fn new(make: impl Fn(MachineId) -> LadderCtx) -> Ladders {
         Ladders {
-            all: MachineId::ALL.map(make),
+            all: MachineId::KITS.map(make),
         }
     }
 
-    /// The editor of `machine`.
+    /// The editor of `machine`; the first machine's for one the page
+    /// has no workspace for (callers opening a project ask [`Ladders::get`]).
     pub fn of(&self, machine: MachineId) -> LadderCtx {
-        let index = MachineId::ALL
-            .iter()
-            .position(|m| *m == machine)
-            .unwrap_or(0);
-        self.all[index]
+        self.get(machine).unwrap_or(self.all[0])
+    }
+
+    /// The editor of `machine`, if the page has one.
+    pub fn get(&self, machine: MachineId) -> Option<LadderCtx> {
+        let index = MachineId::KITS.iter().position(|m| *m == machine)?;
+        Some(self.all[index])
     }
 }
 
@@ -191,7 +194,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
     let run_drawing = live::run_action(ctx);
-    let others: Vec<MachineId> = MachineId::ALL
+    let others: Vec<MachineId> = MachineId::KITS
         .into_iter()
         .filter(|m| *m != ctx.machine)
         .collect();

@@ -118,6 +118,7 @@ pub static EN: Texts = Texts {
     shared_keep: "Keep it",
     shared_back: "Back to my work",
     shared_broken: "This link does not hold a ladder; nothing was changed:",
+    not_in_page: "This ladder is for the soft PLC, which the page cannot show yet; nothing was changed. Run it with `hashigo run --machine soft-plc`.",
     shared_kept: "Kept as the project",
     conflict_note: "This ladder was changed in another tab of this page while you were editing it here. Nothing has been overwritten.",
     conflict_theirs: "Load theirs",

@@ -117,6 +117,7 @@ pub static JA: Texts = Texts {
     shared_keep: "保存する",
     shared_back: "自分の作業に戻る",
     shared_broken: "このリンクはラダーを含んでいません。何も変更していません:",
+    not_in_page: "このラダーはソフトPLC用で、ページではまだ表示できません。何も変更していません。`hashigo run --machine soft-plc` で実行できます。",
     shared_kept: "プロジェクトとして保存しました:",
     conflict_note: "このラダーは、編集中に同じページの別のタブで変更されました。どちらも上書きしていません。",
     conflict_theirs: "別タブの内容を読み込む",

@@ -171,6 +171,9 @@ pub struct Texts {
     pub shared_keep: &'static str,
     pub shared_back: &'static str,
     pub shared_broken: &'static str,
+    /// A project for a machine the page has no workspace for (the soft
+    /// PLC until issue #31).
+    pub not_in_page: &'static str,
     pub shared_kept: &'static str,
     /// Another tab saved newer work over this tab's own.
     pub conflict_note: &'static str,

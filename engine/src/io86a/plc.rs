@@ -269,6 +269,8 @@ impl Plc for Io86aPlc {
                         m.set_ir(u32::try_from(frame).ok().filter(|&f| f != 0));
                     }
                     InputValue::Int(v) => m.set_input(n, v == 1),
+                    // Refused by check_input above.
+                    InputValue::Real(_) => {}
                 }
                 Ok(())
             }
@@ -338,7 +340,7 @@ impl Plc for Io86aPlc {
             },
             InputValue::Int(_) if analog => DeviceError::NeedsVoltage(name),
             InputValue::Int(0 | 1) => return Ok(()),
-            InputValue::Int(_) => DeviceError::BitValue(name),
+            InputValue::Int(_) | InputValue::Real(_) => DeviceError::BitValue(name),
         };
         Err(error.into())
     }

@@ -235,6 +235,24 @@ impl Reference {
         Ok(r)
     }
 
+    /// The same run with IEC's TOF, which is off at power-up until its
+    /// input has been on (the soft PLC's); the AVR PLC's TOF is on for
+    /// its set time after power-up.
+    pub fn with_iec_timers(mut self) -> Reference {
+        for (r, logic) in self.rungs.iter().enumerate() {
+            for (leaf, (e, _)) in logic.condition.leaves().iter().enumerate() {
+                if let Element::Timer {
+                    kind: super::element::TimerKind::Tof,
+                    ..
+                } = e
+                {
+                    self.state.timers[r][leaf].count = u16::MAX;
+                }
+            }
+        }
+        self
+    }
+
     /// The index of device `name`, added (off) if new.
     fn device(&mut self, name: &str) -> usize {
         if let Some(&i) = self.names.get(name) {

@@ -191,6 +191,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
         1 => MachineId::Io86a,
         2 => MachineId::AvrPlc,
         3 => MachineId::ArduinoPlc,
+        4 => MachineId::SoftPlc,
         _ => return Err(r.bad("unknown machine")),
     };
     let settings = r.map("settings")?;
@@ -224,6 +225,7 @@ fn machine_code(m: MachineId) -> u8 {
         MachineId::Io86a => 1,
         MachineId::AvrPlc => 2,
         MachineId::ArduinoPlc => 3,
+        MachineId::SoftPlc => 4,
     }
 }
 

@@ -81,6 +81,15 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             data_boxes: false,
             devices: "X000-X005, Y000-Y005",
         },
+        MachineId::SoftPlc => Capabilities {
+            contacts: ALL_CONTACTS,
+            coils: ALL_COILS,
+            inline_boxes: true,
+            pulse_outputs: false,
+            timer_counter_coils: false,
+            data_boxes: false,
+            devices: "%IX0.0, %QX0.0, %MX0.0 or a name",
+        },
     }
 }
 
@@ -158,6 +167,9 @@ impl fmt::Display for ElementError {
                 let has = match machine {
                     MachineId::AvrPlc => "avr-plc ladders name bits R0.0-R31.7",
                     MachineId::ArduinoPlc => "arduino-plc has X000-X005 and Y000-Y005",
+                    MachineId::SoftPlc => {
+                        "soft-plc ladders name bits as %IX0.0, %QX0.0, %MX0.0 or a variable name"
+                    }
                     _ => capabilities(*machine).devices,
                 };
                 write!(f, "unknown device {}: {has}", shown(device))
@@ -352,7 +364,25 @@ fn canonical(machine: MachineId, device: &str, role: Role) -> Result<String, Ele
             }
             Ok(arduino::isa::io_name(n))
         }
+        MachineId::SoftPlc => {
+            let name = soft_canonical(device).ok_or_else(unknown)?;
+            if role == Role::Write && name.starts_with("%I") {
+                return Err(ElementError::InputAsCoil(name));
+            }
+            Ok(name)
+        }
     }
+}
+
+/// A soft PLC bit: an address (`%IX0.0`; `%I0.0` is written `%IX0.0`)
+/// or a variable's name.
+fn soft_canonical(device: &str) -> Option<String> {
+    use crate::softplc::{Address, Size};
+    if device.starts_with('%') {
+        let a = Address::parse(device).ok()?;
+        return (a.size == Size::Bit).then(|| a.to_string());
+    }
+    crate::softplc::vars::is_identifier(device).then(|| device.to_string())
 }
 
 fn io86a_canonical(device: &str, role: Role) -> Result<String, ElementError> {

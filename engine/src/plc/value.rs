@@ -98,6 +98,8 @@ impl fmt::Display for Value {
             Value::Bit(b) => write!(f, "{}", u8::from(*b)),
             Value::Int(n) => write!(f, "{n}"),
             Value::Uint(n) => write!(f, "{n}"),
+            // Always with a decimal point (`2.0`): a REAL reads as one.
+            Value::Real(x) if x.is_finite() && x.fract() == 0.0 => write!(f, "{x:.1}"),
             Value::Real(x) => write!(f, "{x}"),
         }
     }

@@ -157,6 +157,19 @@ impl Address {
         }
     }
 
+    /// The type of an address a program uses without declaring it: a
+    /// bit is a BOOL, a word an INT, a double word a DINT, a long word a
+    /// LINT (as OpenPLC's located variables default); a byte has none.
+    pub fn default_type(self) -> Option<DataType> {
+        match self.size {
+            Size::Bit => Some(DataType::Bool),
+            Size::Byte => None,
+            Size::Word => Some(DataType::Int),
+            Size::Double => Some(DataType::Dint),
+            Size::Long => Some(DataType::Lint),
+        }
+    }
+
     /// The address checked for a variable of type `t`.
     pub fn for_type(self, t: DataType) -> Result<Address, AddressError> {
         if self.holds(t) {

@@ -152,8 +152,21 @@ impl Data {
             Data::Bool(b) => Value::Bit(b),
             Data::Int(t, v) if !t.is_signed() => Value::Uint(v as u64 & mask(t)),
             Data::Int(_, v) => Value::Int(v),
-            Data::Real(r) => Value::Real(f64::from(r)),
+            // Through its shortest decimal: 0.1 stays 0.1, not the
+            // f32's 0.10000000149011612.
+            Data::Real(r) => Value::Real(r.to_string().parse().unwrap_or(f64::from(r))),
             Data::Time(ns) => Value::Int(ns / 1_000_000),
+        }
+    }
+
+    /// Whether it is on: TRUE, or a number other than zero (what a
+    /// contact on it would pass; what the tracer records).
+    #[inline(always)]
+    pub fn is_on(self) -> bool {
+        match self {
+            Data::Bool(b) => b,
+            Data::Int(_, v) | Data::Time(v) => v != 0,
+            Data::Real(r) => r != 0.0,
         }
     }
 

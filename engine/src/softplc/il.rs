@@ -260,6 +260,7 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     let mut lines: Vec<Line> = Vec::new();
     let mut errors = Vec::new();
     let mut in_vars = false;
+    let text = blank_long_comments(text);
     for (i, raw) in text.lines().enumerate() {
         let number = i + 1;
         let code = strip_comments(raw);
@@ -273,7 +274,12 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
             in_vars = false;
             continue;
         }
-        if in_vars || code.is_empty() {
+        // The optional `PROGRAM name … END_PROGRAM` wrapper.
+        let wrapper = upper == "END_PROGRAM"
+            || upper
+                .strip_prefix("PROGRAM")
+                .is_some_and(|rest| rest.starts_with(char::is_whitespace));
+        if in_vars || code.is_empty() || wrapper {
             continue;
         }
         match line(code, number) {
@@ -304,6 +310,29 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     } else {
         Err(errors)
     }
+}
+
+/// `text` with every comment that spans lines blanked out (its line
+/// breaks kept, so every line keeps its number); a comment on one line
+/// stays for the line's own reader (a declaration keeps it). A comment
+/// never closed runs to the end.
+pub(super) fn blank_long_comments(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find("(*") {
+        out.push_str(&rest[..at]);
+        let body = &rest[at..];
+        let end = body.find("*)").map_or(body.len(), |e| e + 2);
+        let comment = &body[..end];
+        if comment.contains('\n') {
+            out.extend(comment.chars().map(|c| if c == '\n' { '\n' } else { ' ' }));
+        } else {
+            out.push_str(comment);
+        }
+        rest = &body[end..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// The line without its `(* … *)` comments.

@@ -10,15 +10,19 @@ pub mod address;
 pub mod blocks;
 pub mod data;
 pub mod il;
+pub mod listing;
 pub mod literal;
+pub mod machine;
 mod pins;
+pub mod plc;
 pub mod program;
-mod scan;
+pub mod scan;
 pub mod vars;
 
 pub use address::{Address, AddressError, Area, Size};
 pub use data::{Data, DataType};
 pub use literal::{parse_literal, LiteralError};
+pub use plc::SoftPlc;
 pub use program::{LoadError, Program};
 pub use vars::{parse_vars, Kind, VarError, Variable};
 

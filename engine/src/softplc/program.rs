@@ -4,12 +4,12 @@
 
 use std::fmt;
 
-use super::address::{Address, Area, Size};
+use super::address::{Address, Area};
 use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use super::literal::in_range;
 use super::pins::{inputs, outputs, Instance};
-use super::vars::{parse_vars, Kind, VarError};
+use super::vars::{parse_vars, Kind, VarError, Variable};
 use crate::error::Located;
 
 /// Instructions one scan may run before it is cut short (a backward JMP
@@ -74,7 +74,7 @@ pub enum LoadError {
     Il(IlError),
     /// A name no declaration gives.
     Undeclared(String),
-    /// A word address used without a declaration giving its type.
+    /// A byte address used without a declaration (no type is a byte).
     UntypedAddress(String),
     /// A JMP to a label no line has.
     NoLabel(String),
@@ -95,10 +95,7 @@ impl fmt::Display for LoadError {
             LoadError::Il(e) => e.fmt(f),
             LoadError::Undeclared(n) => write!(f, "`{n}` is not declared"),
             LoadError::UntypedAddress(a) => {
-                write!(
-                    f,
-                    "declare {a} with its type (a word may be INT, UINT or WORD)"
-                )
+                write!(f, "{a}: the soft PLC has no byte type")
             }
             LoadError::NoLabel(l) => write!(f, "no line has the label `{l}`"),
             LoadError::Type(why) | LoadError::Call(why) => f.write_str(why),
@@ -125,6 +122,9 @@ pub struct Program {
     pub(super) overran: bool,
     /// The slots declared in VAR_RETAIN.
     pub(super) retained: Vec<usize>,
+    /// The text as read, for the listing.
+    pub(super) vars: Vec<Variable>,
+    pub(super) lines: Vec<Line>,
 }
 
 type Errors = Vec<Located<LoadError>>;
@@ -153,8 +153,10 @@ impl Program {
             steps: Vec::new(),
             overran: false,
             retained: Vec::new(),
+            vars: Vec::new(),
+            lines: Vec::new(),
         };
-        for v in vars {
+        for v in vars.iter().cloned() {
             match v.kind {
                 Kind::Value { init, .. } => {
                     let slot = p.values.len();
@@ -196,6 +198,8 @@ impl Program {
             return Err(errors);
         }
         p.initial = p.values.clone();
+        p.vars = vars;
+        p.lines = lines;
         p.input_terminals = p
             .addresses
             .iter()
@@ -203,6 +207,27 @@ impl Program {
             .map(|&(_, s)| (s, p.values[s]))
             .collect();
         Ok(p)
+    }
+
+    /// The program in its canonical text, which loads back to the same
+    /// program (`hashigo asm`).
+    pub fn listing(&self) -> String {
+        super::listing::listing(&self.vars, &self.lines)
+    }
+
+    /// Its declarations and IL lines as read.
+    pub fn source(&self) -> (&[Variable], &[Line]) {
+        (&self.vars, &self.lines)
+    }
+
+    /// How many steps (IL instructions) it has.
+    pub fn len(&self) -> usize {
+        self.steps.len()
+    }
+
+    /// Whether it has no step.
+    pub fn is_empty(&self) -> bool {
+        self.steps.is_empty()
     }
 
     /// The slot of a name (any case) or an address.
@@ -219,11 +244,11 @@ impl Program {
                 if let Some(&(_, s)) = self.addresses.iter().find(|(b, _)| b == a) {
                     return Ok(Src::Slot(s));
                 }
-                if a.size != Size::Bit {
-                    return Err(LoadError::UntypedAddress(a.to_string()));
-                }
+                let t = a
+                    .default_type()
+                    .ok_or_else(|| LoadError::UntypedAddress(a.to_string()))?;
                 let slot = self.values.len();
-                self.values.push(Data::Bool(false));
+                self.values.push(t.zero());
                 self.addresses.push((*a, slot));
                 Ok(Src::Slot(slot))
             }

@@ -1,6 +1,8 @@
 //! A loaded program's scan and its I/O: the input terminals are read at
 //! the scan's start, the steps run top to bottom (jumps as written), the
-//! outputs are what the `%Q` variables hold at its end.
+//! outputs are what the `%Q` variables hold at its end. A scan can also be
+//! run one instruction at a time ([`Cursor`]), as the page's step button
+//! and the tracer need.
 
 use std::cmp::Ordering;
 
@@ -10,115 +12,202 @@ use super::data::{self, Data, Shift};
 use super::il::Function;
 use super::pins::Instance;
 use super::program::{Binary, Cmp, Program, Src, Step, STEPS_PER_SCAN};
+use crate::plc::Tracer;
+
+/// Where a scan under way stands: the next step, the current result, the
+/// deferred `(` operations and how many steps it has run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Cursor {
+    pc: usize,
+    cr: Data,
+    open: Vec<(Binary, Data)>,
+    ran: usize,
+}
+
+impl Default for Cursor {
+    fn default() -> Self {
+        Cursor {
+            pc: 0,
+            cr: Data::Bool(false),
+            open: Vec::new(),
+            ran: 0,
+        }
+    }
+}
+
+impl Cursor {
+    /// The next step's number.
+    pub fn position(&self) -> usize {
+        self.pc
+    }
+}
 
 impl Program {
-    /// Runs one scan at simulated time `now` (ns).
+    /// Runs one whole scan at simulated time `now` (ns).
     pub fn scan(&mut self, now: i64) {
+        let mut cursor = Cursor::default();
+        let mut tracer = Tracer::default();
+        self.begin_scan(&mut cursor);
+        while self.execute(&mut cursor, now, &mut tracer) {}
+    }
+
+    /// Starts a scan: the input terminals copied in, the cursor at the
+    /// first step (its buffer kept).
+    pub fn begin_scan(&mut self, cursor: &mut Cursor) {
         for &(slot, v) in &self.input_terminals {
             self.values[slot] = v;
         }
-        let mut cr = Data::Bool(false);
-        let mut open: Vec<(Binary, Data)> = Vec::new();
-        let mut pc = 0;
-        let mut ran = 0;
+        cursor.pc = 0;
+        cursor.cr = Data::Bool(false);
+        cursor.open.clear();
+        cursor.ran = 0;
         self.overran = false;
-        // Taken out while they run, so that a call can change the blocks
-        // and values without copying its step; put back below.
-        let steps = std::mem::take(&mut self.steps);
-        while let Some(step) = steps.get(pc) {
-            ran += 1;
-            if ran > STEPS_PER_SCAN {
-                self.overran = true;
-                break;
-            }
-            pc += 1;
-            let on = |when: Option<bool>, cr: Data| when.is_none_or(|w| cr == Data::Bool(w));
-            match step {
-                Step::Ld(src, neg) => cr = negate(read(&self.values, *src), *neg),
-                Step::St(slot, neg) => self.values[*slot] = negate(cr, *neg),
-                Step::Set(slot) if cr == Data::Bool(true) => self.values[*slot] = Data::Bool(true),
-                Step::Reset(slot) if cr == Data::Bool(true) => {
-                    self.values[*slot] = Data::Bool(false)
-                }
-                Step::Set(_) | Step::Reset(_) => {}
-                Step::Not => cr = negate(cr, true),
-                Step::Binary(op, src) => cr = apply(*op, cr, read(&self.values, *src)),
-                Step::Open(op, src) => {
-                    open.push((*op, cr));
-                    if let Some(src) = src {
-                        cr = read(&self.values, *src);
-                    }
-                }
-                Step::Close => {
-                    if let Some((op, saved)) = open.pop() {
-                        cr = apply(op, saved, cr);
-                    }
-                }
-                Step::Func(f, args) => {
-                    // At most two operands: read without allocating.
-                    let mut values = [cr; 2];
-                    for (v, &a) in values.iter_mut().zip(args) {
-                        *v = read(&self.values, a);
-                    }
-                    cr = function(*f, cr, &values[..args.len().min(2)]);
-                }
-                Step::Jmp(when, target) => {
-                    if on(*when, cr) {
-                        pc = *target;
-                    }
-                }
-                Step::Ret(when) => {
-                    if on(*when, cr) {
-                        break;
-                    }
-                }
-                Step::Cal {
-                    when,
-                    block,
-                    inputs,
-                    outputs,
-                } => {
-                    if on(*when, cr) {
-                        self.call_block(*block, inputs, outputs, now);
-                    }
-                }
-            }
-        }
-        self.steps = steps;
     }
 
-    /// Calls block instance `block` with `inputs` and copies its `outputs`.
-    fn call_block(
-        &mut self,
-        block: usize,
-        inputs: &[(usize, Src)],
-        outputs: &[(usize, usize)],
-        now: i64,
-    ) {
-        // The values and the blocks are apart: read one, write the other.
-        let Some(instance) = self.blocks.get_mut(block) else {
-            return;
+    /// Runs the step at the cursor (told to `tracer`: the bit it read and
+    /// the current result it left); false once the scan is over (past the
+    /// last step, a RET, or cut at [`STEPS_PER_SCAN`]).
+    #[inline(always)]
+    pub fn execute(&mut self, cursor: &mut Cursor, now: i64, tracer: &mut Tracer) -> bool {
+        let Program {
+            steps,
+            values,
+            blocks,
+            overran,
+            ..
+        } = self;
+        let Some(step) = steps.get(cursor.pc) else {
+            return false;
         };
-        for &(i, src) in inputs {
-            if let Some(slot) = instance.inputs.get_mut(i) {
-                *slot = read(&self.values, src);
+        cursor.ran += 1;
+        if cursor.ran > STEPS_PER_SCAN {
+            *overran = true;
+            cursor.pc = steps.len();
+            return false;
+        }
+        let number = cursor.pc;
+        cursor.pc += 1;
+        let on = |when: Option<bool>, cr: Data| when.is_none_or(|w| cr == Data::Bool(w));
+        let mut read_bit = false;
+        let cr = &mut cursor.cr;
+        match step {
+            Step::Ld(src, neg) => {
+                let v = read(values, *src);
+                read_bit = v.is_on();
+                *cr = negate(v, *neg);
+            }
+            Step::St(slot, neg) => values[*slot] = negate(*cr, *neg),
+            Step::Set(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(true),
+            Step::Reset(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(false),
+            Step::Set(_) | Step::Reset(_) => {}
+            Step::Not => *cr = negate(*cr, true),
+            Step::Binary(op, src) => {
+                let v = read(values, *src);
+                read_bit = v.is_on();
+                *cr = apply(*op, *cr, v);
+            }
+            Step::Open(op, src) => {
+                cursor.open.push((*op, *cr));
+                if let Some(src) = src {
+                    let v = read(values, *src);
+                    read_bit = v.is_on();
+                    *cr = v;
+                }
+            }
+            Step::Close => {
+                if let Some((op, saved)) = cursor.open.pop() {
+                    *cr = apply(op, saved, *cr);
+                }
+            }
+            Step::Func(f, args) => {
+                // At most two operands: read without allocating.
+                let mut operands = [*cr; 2];
+                for (v, &a) in operands.iter_mut().zip(args) {
+                    *v = read(values, a);
+                }
+                *cr = function(*f, *cr, &operands[..args.len().min(2)]);
+            }
+            Step::Jmp(when, target) => {
+                if on(*when, *cr) {
+                    cursor.pc = *target;
+                }
+            }
+            Step::Ret(when) => {
+                if on(*when, *cr) {
+                    cursor.pc = steps.len();
+                }
+            }
+            Step::Cal {
+                when,
+                block,
+                inputs,
+                outputs,
+            } => {
+                if on(*when, *cr) {
+                    call_block(values, blocks, *block, inputs, outputs, now);
+                }
             }
         }
-        instance.call(now);
-        for &(i, slot) in outputs {
-            self.values[slot] = instance.output(i);
-        }
+        tracer.step(number, read_bit, cr.is_on());
+        cursor.pc < steps.len()
     }
 
     /// Sets what an input's terminal gives (read at the next scan's
     /// start); `false` when the program has no such input or the value's
     /// type is not the input's.
     pub fn set_input(&mut self, address: Address, value: Data) -> bool {
-        let Some(&(_, slot)) = self.addresses.iter().find(|(a, _)| *a == address) else {
+        if address.area != Area::Input {
             return false;
-        };
+        }
+        match self.addresses.iter().find(|(a, _)| *a == address) {
+            Some(&(_, slot)) => self.set_terminal(slot, value),
+            None => false,
+        }
+    }
+
+    /// The value of a declared name (any case) or an address the program
+    /// uses.
+    pub fn value(&self, name_or_address: &str) -> Option<Data> {
+        self.values.get(self.slot_of(name_or_address)?).copied()
+    }
+
+    /// The slot of a declared name (any case) or an address the program
+    /// uses.
+    pub fn slot_of(&self, name_or_address: &str) -> Option<usize> {
+        match Address::parse(name_or_address) {
+            Ok(a) => Some(self.addresses.iter().find(|(b, _)| *b == a)?.1),
+            Err(_) => Some(
+                self.names
+                    .iter()
+                    .find(|(n, _)| n.eq_ignore_ascii_case(name_or_address))?
+                    .1,
+            ),
+        }
+    }
+
+    /// How many value slots the program has.
+    pub fn slots(&self) -> usize {
+        self.values.len()
+    }
+
+    /// The type slot `slot` holds.
+    pub fn slot_type(&self, slot: usize) -> Option<DataType> {
+        self.values.get(slot).map(|v| v.data_type())
+    }
+
+    /// The address at slot `slot`, if it is located.
+    pub fn slot_address(&self, slot: usize) -> Option<Address> {
+        self.addresses
+            .iter()
+            .find(|(_, s)| *s == slot)
+            .map(|&(a, _)| a)
+    }
+
+    /// Sets the terminal of the input at slot `slot`; false when it is
+    /// not an input or `value` is not of its type.
+    pub fn set_terminal(&mut self, slot: usize, value: Data) -> bool {
         match self.input_terminals.iter_mut().find(|(s, _)| *s == slot) {
-            Some(t) if address.area == Area::Input && t.1.data_type() == value.data_type() => {
+            Some(t) if t.1.data_type() == value.data_type() => {
                 t.1 = value;
                 true
             }
@@ -126,19 +215,48 @@ impl Program {
         }
     }
 
-    /// The value of a declared name (any case) or an address the program
-    /// uses.
-    pub fn value(&self, name_or_address: &str) -> Option<Data> {
-        let slot = match Address::parse(name_or_address) {
-            Ok(a) => self.addresses.iter().find(|(b, _)| *b == a)?.1,
-            Err(_) => {
-                self.names
-                    .iter()
-                    .find(|(n, _)| n.eq_ignore_ascii_case(name_or_address))?
-                    .1
+    /// Whether slot `slot` is an input read from its terminal.
+    pub fn is_terminal(&self, slot: usize) -> bool {
+        self.input_terminals.iter().any(|(s, _)| *s == slot)
+    }
+
+    /// Each input's address and what its terminal gives.
+    pub fn input_values(&self) -> Vec<(Address, Data)> {
+        self.input_terminals
+            .iter()
+            .filter_map(|&(slot, v)| Some((self.slot_address(slot)?, v)))
+            .collect()
+    }
+
+    /// A block instance by name (any case): its number and kind.
+    pub fn block_of(&self, name: &str) -> Option<(usize, &str)> {
+        self.block_names
+            .iter()
+            .position(|(n, _)| n.eq_ignore_ascii_case(name))
+            .map(|i| (i, self.block_names[i].1.as_str()))
+    }
+
+    /// How many block instances it has.
+    pub fn block_count(&self) -> usize {
+        self.blocks.len()
+    }
+
+    /// Output `pin` (its place in the kind's outputs) of block `block`.
+    pub fn block_output(&self, block: usize, pin: usize) -> Option<Data> {
+        let b = self.blocks.get(block)?;
+        (pin < super::pins::outputs(&self.block_names[block].1).len()).then(|| b.output(pin))
+    }
+
+    /// Every declared variable's and used address's name with its slot:
+    /// names first (as declared), then undeclared addresses.
+    pub fn devices(&self) -> Vec<(String, usize)> {
+        let mut out: Vec<(String, usize)> = self.names.clone();
+        for &(a, slot) in &self.addresses {
+            if !self.names.iter().any(|(_, s)| *s == slot) {
+                out.push((a.to_string(), slot));
             }
-        };
-        self.values.get(slot).copied()
+        }
+        out
     }
 
     /// The addresses the program uses, in their order of first use.
@@ -165,7 +283,31 @@ impl Program {
     }
 }
 
+/// Calls block instance `block` with `inputs` and copies its `outputs`.
+fn call_block(
+    values: &mut [Data],
+    blocks: &mut [Instance],
+    block: usize,
+    inputs: &[(usize, Src)],
+    outputs: &[(usize, usize)],
+    now: i64,
+) {
+    let Some(instance) = blocks.get_mut(block) else {
+        return;
+    };
+    for &(i, src) in inputs {
+        if let Some(slot) = instance.inputs.get_mut(i) {
+            *slot = read(values, src);
+        }
+    }
+    instance.call(now);
+    for &(i, slot) in outputs {
+        values[slot] = instance.output(i);
+    }
+}
+
 /// What `src` holds: a value of the table, or a constant.
+#[inline(always)]
 fn read(values: &[Data], src: Src) -> Data {
     match src {
         Src::Slot(s) => values[s],

@@ -116,6 +116,7 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
     let mut vars: Vec<(Variable, usize)> = Vec::new();
     let mut errors = Vec::new();
     let mut open: Option<(bool, usize)> = None; // (retain, line)
+    let text = super::il::blank_long_comments(text);
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
         let (code, comment) = split_comment(raw);

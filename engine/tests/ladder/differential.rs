@@ -55,7 +55,9 @@ fn load(machine: MachineId, text: &str) -> Result<(Box<dyn Plc>, Timing), String
             .map_err(|e| e.to_string())?;
             (SimTime::from_millis(1), SimTime::from_micros(500))
         }
-        MachineId::AvrPlc => (SimTime::from_millis(10), SimTime::from_millis(5)),
+        MachineId::AvrPlc | MachineId::SoftPlc => {
+            (SimTime::from_millis(10), SimTime::from_millis(5))
+        }
         MachineId::ArduinoPlc => {
             let program = arduino::Program::parse(text, 512).map_err(|e| fail(format!("{e:?}")))?;
             let steps = program.words().len() as u64;
@@ -161,6 +163,9 @@ fn reference_run(
 ) -> Result<(), String> {
     let p = pool(machine);
     let mut reference = Reference::new(logic, 10).map_err(|e| format!("{e:?}"))?;
+    if machine == MachineId::SoftPlc {
+        reference = reference.with_iec_timers();
+    }
     // A machine whose inputs wait for a scan boundary has run scans with
     // every input off before the first vector arrives.
     for _ in 1..latency(machine) {
@@ -240,6 +245,9 @@ fn check_decompile(
         )),
         MachineId::ArduinoPlc => decompile(Source::Arduino(
             &arduino::Program::parse(&text, 512).map_err(|e| format!("{e:?}"))?,
+        )),
+        MachineId::SoftPlc => decompile(Source::Soft(
+            &engine::softplc::Program::load(&text).map_err(|e| format!("{e:?}"))?,
         )),
     }
     .map_err(|e| format!("decompile failed: {e}\n{text}"))?;
@@ -325,6 +333,11 @@ fn avr_plc_matches_the_reference() {
 #[test]
 fn arduino_plc_matches_the_reference() {
     differential(MachineId::ArduinoPlc, 500);
+}
+
+#[test]
+fn soft_plc_matches_the_reference() {
+    differential(MachineId::SoftPlc, 500);
 }
 
 #[test]

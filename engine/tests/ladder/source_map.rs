@@ -93,6 +93,7 @@ fn step_instruction_walks_the_scan_in_listing_order() {
         MachineId::Io86a => ("X00", "X01", "Y00"),
         MachineId::AvrPlc => ("R4.0", "R4.1", "R5.0"),
         MachineId::ArduinoPlc => ("X000", "X001", "Y000"),
+        MachineId::SoftPlc => ("%IX0.0", "%IX0.1", "%QX0.0"),
     };
     for machine in MachineId::ALL {
         let (a, b, y) = devices(machine);

@@ -48,6 +48,12 @@ pub fn pool(machine: MachineId) -> Pool {
             contacts: &[ContactKind::No, ContactKind::Nc],
             inline_boxes: false,
         },
+        MachineId::SoftPlc => Pool {
+            inputs: &["%IX0.0", "%IX0.1", "%IX0.2", "%IX0.3"],
+            outputs: &["%QX0.0", "%QX0.1", "%QX0.2", "relay", "m1"],
+            contacts: EDGES,
+            inline_boxes: true,
+        },
     }
 }
 

@@ -4,7 +4,7 @@
 
 use std::ops::Range;
 
-use super::{accumulator, stack, Options};
+use super::{accumulator, il, stack, Options};
 use crate::ladder::grid::{Ladder, LadderError};
 use crate::MachineId;
 
@@ -96,6 +96,7 @@ pub fn compile_listing(
             accumulator::compile_mapped(&logic, machine, options)?
         }
         MachineId::Io86a | MachineId::ArduinoPlc => stack::compile_mapped(&logic, machine)?,
+        MachineId::SoftPlc => il::compile_mapped(&logic)?,
     };
     let mut sources: Vec<LeafSource> = Vec::new();
     for &(i, pos, line) in &mapped.sources {
@@ -107,14 +108,24 @@ pub fn compile_listing(
         }
     }
     let (text, starts) = (mapped.text, mapped.starts);
+    // The soft PLC's steps follow its declarations.
+    let code = match machine {
+        MachineId::SoftPlc => text
+            .lines()
+            .position(|l| l.trim().eq_ignore_ascii_case("END_VAR"))
+            .map_or(0, |i| i + 1),
+        _ => 0,
+    };
     let step_lines: Vec<usize> = text
         .lines()
         .enumerate()
+        .skip(code)
         .filter(|(_, l)| is_step(machine, l))
         .map(|(i, _)| i)
         .collect();
-    // Every machine but MINASEC-U ends its program with one end marker.
-    let trailer = usize::from(machine != MachineId::MinasecU);
+    // Every machine but MINASEC-U and the soft PLC ends its program with
+    // one end marker.
+    let trailer = usize::from(!matches!(machine, MachineId::MinasecU | MachineId::SoftPlc));
     Ok(Listing {
         rung_steps: step_lines.len().saturating_sub(trailer),
         sources,
@@ -133,6 +144,7 @@ fn is_step(machine: MachineId, line: &str) -> bool {
     let line = line.trim();
     match machine {
         MachineId::AvrPlc => line.starts_with(".db"),
+        MachineId::SoftPlc => !line.is_empty() && !line.starts_with("(*"),
         _ => !line.is_empty() && !line.starts_with(';'),
     }
 }

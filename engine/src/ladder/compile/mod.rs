@@ -4,9 +4,11 @@
 //! - [`accumulator`]: MINASEC-U and the AVR PLC (one accumulator; partial
 //!   results go to temporary relays);
 //! - [`compile_listing`]: the same, with each rung's steps (for the editor);
-//! - [`stack`]: PLC-IO86A and the Arduino sketch (block stacks, ORB / ANB).
+//! - [`stack`]: PLC-IO86A and the Arduino sketch (block stacks, ORB / ANB);
+//! - `il`: the soft PLC (IEC Instruction List, deferred `AND(` … `)`).
 
 pub mod accumulator;
+mod il;
 mod listing;
 pub mod stack;
 
@@ -65,6 +67,7 @@ pub fn compile_logic(
     match machine {
         MachineId::MinasecU | MachineId::AvrPlc => accumulator::compile(rungs, machine, options),
         MachineId::Io86a | MachineId::ArduinoPlc => stack::compile(rungs, machine),
+        MachineId::SoftPlc => il::compile_mapped(rungs).map(|m| m.text),
     }
 }
 

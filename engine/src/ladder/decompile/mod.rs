@@ -14,6 +14,7 @@
 use std::fmt;
 
 mod accumulator;
+mod il;
 mod stack;
 
 use super::element::{ContactKind, Element};
@@ -93,6 +94,8 @@ pub enum Source<'a> {
     Io86a(&'a io86a::Program),
     /// An Arduino sketch program.
     Arduino(&'a arduino::Program),
+    /// A soft PLC program.
+    Soft(&'a crate::softplc::Program),
 }
 
 /// The program as a ladder.
@@ -102,6 +105,10 @@ pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
         Source::Avr(p, scan) => avr_ladder(p, scan)?,
         Source::Io86a(p) => io86a_ladder(p)?,
         Source::Arduino(p) => arduino_ladder(p)?,
+        Source::Soft(p) => {
+            let (vars, lines) = p.source();
+            il::il_ladder(vars, lines)?
+        }
     };
     if let Source::Avr(p, _) = source {
         for (name, bit) in p.names() {
@@ -154,11 +161,16 @@ pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<La
                 .map_err(|e| TextError::Program(problems(e)))?;
             decompile(Source::Arduino(&p))
         }
+        MachineId::SoftPlc => {
+            let p =
+                crate::softplc::Program::load(text).map_err(|e| TextError::Program(problems(e)))?;
+            decompile(Source::Soft(&p))
+        }
     };
     ladder.map_err(TextError::Decompile)
 }
 
-fn contact(device: String, inverted: bool) -> Net {
+pub(super) fn contact(device: String, inverted: bool) -> Net {
     let kind = if inverted {
         ContactKind::Nc
     } else {
@@ -170,13 +182,13 @@ fn contact(device: String, inverted: bool) -> Net {
 /// A condition being built, with how deeply it nests, so that a program
 /// that nests blocks past [`MAX_NESTING`] is refused at the step that
 /// would (and no deeper network is ever built).
-struct Part {
+pub(super) struct Part {
     net: Net,
     depth: usize,
 }
 
 impl Part {
-    fn of(net: Net) -> Part {
+    pub(super) fn of(net: Net) -> Part {
         let depth = net.depth();
         Part { net, depth }
     }

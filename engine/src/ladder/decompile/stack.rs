@@ -9,22 +9,22 @@ use crate::{arduino, io86a};
 
 /// The block-stack walk shared by IO86A and the Arduino sketch.
 #[derive(Default)]
-struct Stack {
-    rungs: Vec<RungLogic>,
-    blocks: Vec<Part>,
-    cur: Option<Part>,
+pub(super) struct Stack {
+    pub(super) rungs: Vec<RungLogic>,
+    pub(super) blocks: Vec<Part>,
+    pub(super) cur: Option<Part>,
     outputs: Vec<Element>,
     anchor: Option<String>,
 }
 
 impl Stack {
-    fn flush(&mut self) {
+    pub(super) fn flush(&mut self) {
         close_rung(&mut self.rungs, self.cur.take(), &mut self.outputs);
         self.blocks.clear();
         self.anchor = None;
     }
 
-    fn load(&mut self, n: Net) {
+    pub(super) fn load(&mut self, n: Net) {
         if !self.outputs.is_empty() {
             self.flush();
         } else if let Some(c) = self.cur.take() {
@@ -33,7 +33,7 @@ impl Stack {
         self.cur = Some(Part::of(n));
     }
 
-    fn grow(&mut self, n: Net, and: bool, step: usize) -> Result<(), StepError> {
+    pub(super) fn grow(&mut self, n: Net, and: bool, step: usize) -> Result<(), StepError> {
         if !self.outputs.is_empty() {
             let Some(d) = self.anchor.clone() else {
                 return Err(StepError {
@@ -52,7 +52,7 @@ impl Stack {
         Ok(())
     }
 
-    fn join(&mut self, and: bool, step: usize) -> Result<(), StepError> {
+    pub(super) fn join(&mut self, and: bool, step: usize) -> Result<(), StepError> {
         let (Some(a), Some(b)) = (self.blocks.pop(), self.cur.take()) else {
             return Err(StepError {
                 step,
@@ -63,7 +63,12 @@ impl Stack {
         Ok(())
     }
 
-    fn output(&mut self, e: Element, holds: Option<String>, step: usize) -> Result<(), StepError> {
+    pub(super) fn output(
+        &mut self,
+        e: Element,
+        holds: Option<String>,
+        step: usize,
+    ) -> Result<(), StepError> {
         let open = self.cur.is_some();
         add_output(open, &mut self.outputs, &mut self.anchor, e, holds, step)
     }

@@ -511,6 +511,22 @@ impl Pools {
                 timers: Vec::new(),
                 counters: Vec::new(),
             },
+            // Until names stay names on the soft PLC (issue #30), its
+            // bits by address.
+            MachineId::SoftPlc => {
+                let bits = |area: char| -> Vec<String> {
+                    (0..8)
+                        .flat_map(|byte| (0..8).map(move |bit| format!("%{area}X{byte}.{bit}")))
+                        .collect()
+                };
+                Pools {
+                    inputs: bits('I'),
+                    outputs: bits('Q'),
+                    relays: bits('M'),
+                    timers: Vec::new(),
+                    counters: Vec::new(),
+                }
+            }
             // [`avr_located`]'s registers; timers are named in-line boxes
             // (an instance keeps its name), and there are no counters.
             MachineId::AvrPlc => {

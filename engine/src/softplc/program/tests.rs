@@ -153,7 +153,7 @@ fn what_does_not_load_says_why_at_its_line() {
          LD i\nADD d\n\
          LD i\nST 5\n\
          JMP nowhere\n\
-         LD %IW0\n\
+         LD %IB0\n\
          CAL t(XX := i)\n\
          CAL t(PT := i)\n\
          l: ST i\n\
@@ -165,7 +165,7 @@ fn what_does_not_load_says_why_at_its_line() {
     assert_eq!(got[1].1, "INT and DINT do not mix: convert one (*_TO_*)");
     assert!(got[2].1.contains("stored in a variable"), "{}", got[2].1);
     assert_eq!(got[3].1, "no line has the label `nowhere`");
-    assert!(got[4].1.contains("declare %IW0 with its type"));
+    assert_eq!(got[4].1, "%IB0: the soft PLC has no byte type");
     assert_eq!(got[5].1, "TON has no input `XX`");
     assert_eq!(got[6].1, "TON's PT is a TIME");
     assert!(got[7].1.contains("start with LD"));

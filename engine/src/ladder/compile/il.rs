@@ -1,0 +1,310 @@
+//! Compiling to the soft PLC's Instruction List. IL has what ladders
+//! need: a series is `LD` then `AND`s, a parallel `LD` then `OR`s, and a
+//! group inside either is deferred with `AND(` … `)` / `OR(` … `)`, so no
+//! temporary relay is needed for logic. In-line boxes take the power
+//! that reaches them: it is stored in a generated BOOL, the block called
+//! with it (`CAL t(IN := p, PT := T#500ms, Q => q)`) and its output
+//! loaded. Edge contacts are R_TRIG / F_TRIG instances called at the
+//! rung's start. Every name the ladder uses is declared BOOL in the
+//! header; addresses (`%IX0.0`) need no declaration.
+
+use std::collections::BTreeSet;
+
+use super::accumulator::one_line;
+use super::{used_devices, Mapped};
+use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
+use crate::ladder::grid::{LadderError, Pos};
+use crate::ladder::net::{Net, RungLogic};
+
+/// Where the power into a network comes from.
+#[derive(Clone, Debug, PartialEq)]
+enum Pin {
+    /// The left rail: always on.
+    Rail,
+    /// The current result holds it.
+    Current,
+    /// A generated BOOL holds it.
+    Held(String),
+}
+
+struct Compiler {
+    /// Declarations of the header (`name : TYPE;`).
+    vars: Vec<String>,
+    /// The IL lines.
+    lines: Vec<String>,
+    /// Names the ladder uses, and those generated (never given twice).
+    taken: BTreeSet<String>,
+    /// Timer instances declared (upper-case).
+    instances: BTreeSet<String>,
+    rung_index: usize,
+    /// (rung, leaf's cell, index in `lines` of the op reading it).
+    sources: Vec<(usize, Pos, usize)>,
+}
+
+/// Compiles checked rung logic for the soft PLC.
+pub(crate) fn compile_mapped(rungs: &[RungLogic]) -> Result<Mapped, Vec<LadderError>> {
+    let used = used_devices(rungs);
+    let mut c = Compiler {
+        vars: Vec::new(),
+        lines: Vec::new(),
+        taken: used.iter().map(|d| d.to_ascii_uppercase()).collect(),
+        instances: BTreeSet::new(),
+        rung_index: 0,
+        sources: Vec::new(),
+    };
+    for name in used.iter().filter(|d| !d.starts_with('%')) {
+        c.vars.push(format!("{name} : BOOL;"));
+    }
+    for r in rungs {
+        for (e, _) in r.condition.leaves() {
+            if let Element::Timer { name, .. } = e {
+                c.taken.insert(name.to_ascii_uppercase());
+            }
+        }
+    }
+    let mut starts = Vec::with_capacity(rungs.len());
+    let mut errors = Vec::new();
+    for (i, logic) in rungs.iter().enumerate() {
+        c.rung_index = i;
+        starts.push(c.steps());
+        if !logic.comment.is_empty() {
+            c.lines.push(format!(
+                "(* {} *)",
+                one_line(&logic.comment).replace("*)", "* )")
+            ));
+        }
+        if let Err((pos, m)) = c.rung(logic) {
+            errors.push(LadderError::at(i, pos, m));
+        }
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let mut text = String::from("(* compiled by hashigo from a ladder *)\n");
+    if !c.vars.is_empty() {
+        text.push_str("VAR\n");
+        for v in &c.vars {
+            text.push_str(&format!("  {v}\n"));
+        }
+        text.push_str("END_VAR\n");
+    }
+    let header = text.lines().count();
+    for l in &c.lines {
+        text.push_str(l);
+        text.push('\n');
+    }
+    Ok(Mapped {
+        text,
+        starts,
+        sources: c
+            .sources
+            .into_iter()
+            .map(|(r, p, line)| (r, p, line + header))
+            .collect(),
+    })
+}
+
+type RungResult = Result<(), (Pos, String)>;
+
+impl Compiler {
+    /// Steps emitted so far (comments are not steps).
+    fn steps(&self) -> usize {
+        self.lines.iter().filter(|l| !l.starts_with("(*")).count()
+    }
+
+    fn emit(&mut self, line: String) {
+        self.lines.push(line);
+    }
+
+    /// A fresh name `<stem><n>` declared as `t` (a BOOL or a block);
+    /// generated stems start with `_`.
+    fn fresh(&mut self, stem: &str, t: &str) -> String {
+        let mut n = 0;
+        loop {
+            let name = format!("{stem}{n}");
+            if self.taken.insert(name.to_ascii_uppercase()) {
+                self.vars.push(format!("{name} : {t};"));
+                return name;
+            }
+            n += 1;
+        }
+    }
+
+    fn rung(&mut self, logic: &RungLogic) -> RungResult {
+        let cond = self.edges(&logic.condition);
+        self.net(&cond, Pin::Rail)
+            .map_err(|m| (logic.condition.first_pos(), m))?;
+        for (e, pos) in &logic.outputs {
+            let Element::Coil { kind, device } = e else {
+                return Err((*pos, format!("soft-plc ladders have no {e} output yet")));
+            };
+            let op = match kind {
+                CoilKind::Normal => "ST",
+                CoilKind::Inverted => "STN",
+                CoilKind::Set => "S",
+                CoilKind::Reset => "R",
+            };
+            self.emit(format!("{op} {device}"));
+        }
+        Ok(())
+    }
+
+    /// Every rising / falling contact becomes a NO contact on the Q of an
+    /// R_TRIG / F_TRIG called on its device at the rung's start (the
+    /// reference evaluator's edge memory sees the device every scan too).
+    fn edges(&mut self, net: &Net) -> Net {
+        match net {
+            Net::Leaf(Element::Contact { kind, device }, p)
+                if matches!(kind, ContactKind::Rising | ContactKind::Falling) =>
+            {
+                let block = if *kind == ContactKind::Rising {
+                    "R_TRIG"
+                } else {
+                    "F_TRIG"
+                };
+                let trig = self.fresh("_edge", block);
+                let q = self.fresh("_q", "BOOL");
+                // The contact on `q` that replaces it is the leaf's step.
+                self.emit(format!("CAL {trig}(CLK := {device}, Q => {q})"));
+                Net::Leaf(Element::no(&q), *p)
+            }
+            Net::Leaf(..) => net.clone(),
+            Net::Series(v) => Net::Series(v.iter().map(|n| self.edges(n)).collect()),
+            Net::Parallel(v) => Net::Parallel(v.iter().map(|n| self.edges(n)).collect()),
+        }
+    }
+
+    /// Emits `net` with the power `pin` at its left; its power out is
+    /// then the current result.
+    fn net(&mut self, net: &Net, pin: Pin) -> Result<(), String> {
+        match net {
+            Net::Leaf(e, pos) => self.leaf(e, *pos, pin),
+            Net::Series(items) => {
+                let mut pin = pin;
+                for item in items {
+                    self.net(item, pin)?;
+                    pin = Pin::Current;
+                }
+                Ok(())
+            }
+            Net::Parallel(branches) => self.parallel(branches, pin),
+        }
+    }
+
+    fn parallel(&mut self, branches: &[Net], pin: Pin) -> Result<(), String> {
+        let pure = branches.iter().all(super::is_pure);
+        match pin {
+            // Contacts only, after a power held in the current result:
+            // AND( the branches ).
+            Pin::Current if pure => {
+                self.emit("AND(".into());
+                self.parallel(branches, Pin::Rail)?;
+                self.emit(")".into());
+                Ok(())
+            }
+            // A box in a branch needs the power at the branch's left.
+            Pin::Current => {
+                let held = self.fresh("_p", "BOOL");
+                self.emit(format!("ST {held}"));
+                self.parallel(branches, Pin::Held(held))
+            }
+            pin => {
+                for (i, branch) in branches.iter().enumerate() {
+                    if i == 0 {
+                        self.net(branch, pin.clone())?;
+                    } else if let (Some((device, inv)), Pin::Rail) = (super::contact(branch), &pin)
+                    {
+                        let pos = branch.first_pos();
+                        self.sources.push((self.rung_index, pos, self.lines.len()));
+                        self.emit(format!("OR{} {device}", if inv { "N" } else { "" }));
+                    } else {
+                        self.emit("OR(".into());
+                        self.net(branch, pin.clone())?;
+                        self.emit(")".into());
+                    }
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn leaf(&mut self, e: &Element, pos: Pos, pin: Pin) -> Result<(), String> {
+        if let Pin::Held(v) = &pin {
+            self.emit(format!("LD {v}"));
+        }
+        let chained = pin != Pin::Rail;
+        match e {
+            Element::Contact { kind, device } => {
+                let inv = if *kind == ContactKind::Nc { "N" } else { "" };
+                let op = if chained { "AND" } else { "LD" };
+                self.sources.push((self.rung_index, pos, self.lines.len()));
+                self.emit(format!("{op}{inv} {device}"));
+            }
+            Element::Wire => {
+                if !chained {
+                    self.emit("LD TRUE".into());
+                }
+            }
+            Element::Not => {
+                if !chained {
+                    self.emit("LD TRUE".into());
+                }
+                self.sources.push((self.rung_index, pos, self.lines.len()));
+                self.emit("NOT".into());
+            }
+            Element::Edge { falling } => {
+                let block = if *falling { "F_TRIG" } else { "R_TRIG" };
+                let trig = self.fresh("_edge", block);
+                self.call_on_power(&trig, "CLK", "", chained, pos)?;
+            }
+            Element::Timer {
+                kind,
+                name,
+                preset_ms,
+            } => {
+                let block = match kind {
+                    TimerKind::Ton => "TON",
+                    TimerKind::Tof => "TOF",
+                    TimerKind::Tp => "TP",
+                };
+                // Each box is a timer of its own (as on the AVR PLC): a
+                // name drawn twice gets a second instance.
+                let instance = if self.instances.insert(name.to_ascii_uppercase()) {
+                    self.vars.push(format!("{name} : {block};"));
+                    name.clone()
+                } else {
+                    self.fresh(&format!("{name}_"), block)
+                };
+                let pt = format!(", PT := T#{preset_ms}ms");
+                self.call_on_power(&instance, "IN", &pt, chained, pos)?;
+            }
+            other => return Err(format!("{other} cannot stand in a soft-plc rung")),
+        }
+        Ok(())
+    }
+
+    /// Calls block `block` with the power in (`chained`: the current
+    /// result; else the rail) at input `input`, then loads its Q.
+    fn call_on_power(
+        &mut self,
+        block: &str,
+        input: &str,
+        more: &str,
+        chained: bool,
+        pos: Pos,
+    ) -> Result<(), String> {
+        let power = if chained {
+            let p = self.fresh("_p", "BOOL");
+            self.emit(format!("ST {p}"));
+            p
+        } else {
+            "TRUE".to_string()
+        };
+        let q = self.fresh("_q", "BOOL");
+        self.emit(format!("CAL {block}({input} := {power}{more}, Q => {q})"));
+        // The box's step is the one that leaves its output.
+        self.sources.push((self.rung_index, pos, self.lines.len()));
+        self.emit(format!("LD {q}"));
+        Ok(())
+    }
+}
