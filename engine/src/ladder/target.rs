@@ -292,7 +292,7 @@ fn check_timer_counter_coil(
             MachineId::MinasecU => {
                 ": drive T0/T1 or C0 with a coil; their delay and set value are panel settings"
             }
-            MachineId::AvrPlc => ": use an in-line TON/TOF/TP box",
+            MachineId::AvrPlc | MachineId::SoftPlc => ": use an in-line TON/TOF/TP box",
             _ => " (the Arduino sketch has no timers or counters)",
         };
         return Err(lacks(machine, element, hint));

@@ -2,11 +2,44 @@
 //! edge detectors and bistables, each a small state machine the soft PLC
 //! calls once a scan with its inputs. Times are nanoseconds of simulated
 //! time (the scan's start, as OpenPLC samples its clock once a scan);
-//! counts are INT, as the standard's CTU, CTD and CTUD.
+//! counts are INT, as the standard's CTU, CTD and CTUD, or the type a
+//! typed counter names (CTU_DINT, CTUD_ULINT …).
 
-/// The least and greatest count (INT).
-const COUNT_MIN: i64 = i16::MIN as i64;
-const COUNT_MAX: i64 = i16::MAX as i64;
+use super::data::DataType;
+
+/// The least and greatest count of an INT counter.
+pub(super) const COUNT_MIN: i64 = i16::MIN as i64;
+pub(super) const COUNT_MAX: i64 = i16::MAX as i64;
+
+/// A counter's limits: the least and greatest value of its count type
+/// (a ULINT counter stops at 2^63 - 1, which no simulation reaches).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    pub min: i64,
+    pub max: i64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            min: COUNT_MIN,
+            max: COUNT_MAX,
+        }
+    }
+}
+
+impl Limits {
+    /// The limits of a count of type `t` (an integer type).
+    pub fn of(t: DataType) -> Limits {
+        let (lo, hi) = t
+            .range()
+            .unwrap_or((i128::from(COUNT_MIN), i128::from(COUNT_MAX)));
+        Limits {
+            min: i64::try_from(lo).unwrap_or(i64::MIN),
+            max: i64::try_from(hi).unwrap_or(i64::MAX),
+        }
+    }
+}
 
 /// An on-delay timer: Q comes on once IN has been on for PT, and goes off
 /// with IN. ET counts from 0 to PT while IN is on.
@@ -103,15 +136,24 @@ pub struct Ctu {
     pub q: bool,
     pub cv: i64,
     last_cu: bool,
+    pub limits: Limits,
 }
 
 impl Ctu {
+    /// A counter that counts within `limits`.
+    pub fn counting(limits: Limits) -> Ctu {
+        Ctu {
+            limits,
+            ..Ctu::default()
+        }
+    }
+
     pub fn call(&mut self, cu: bool, reset: bool, pv: i64) {
         let rising = cu && !self.last_cu;
         self.last_cu = cu;
         if reset {
             self.cv = 0;
-        } else if rising && self.cv < COUNT_MAX {
+        } else if rising && self.cv < self.limits.max {
             self.cv += 1;
         }
         self.q = self.cv >= pv;
@@ -125,15 +167,24 @@ pub struct Ctd {
     pub q: bool,
     pub cv: i64,
     last_cd: bool,
+    pub limits: Limits,
 }
 
 impl Ctd {
+    /// A counter that counts within `limits`.
+    pub fn counting(limits: Limits) -> Ctd {
+        Ctd {
+            limits,
+            ..Ctd::default()
+        }
+    }
+
     pub fn call(&mut self, cd: bool, load: bool, pv: i64) {
         let rising = cd && !self.last_cd;
         self.last_cd = cd;
         if load {
-            self.cv = pv.clamp(COUNT_MIN, COUNT_MAX);
-        } else if rising && self.cv > COUNT_MIN {
+            self.cv = pv.clamp(self.limits.min, self.limits.max);
+        } else if rising && self.cv > self.limits.min {
             self.cv -= 1;
         }
         self.q = self.cv <= 0;
@@ -150,9 +201,18 @@ pub struct Ctud {
     pub cv: i64,
     last_cu: bool,
     last_cd: bool,
+    pub limits: Limits,
 }
 
 impl Ctud {
+    /// A counter that counts within `limits`.
+    pub fn counting(limits: Limits) -> Ctud {
+        Ctud {
+            limits,
+            ..Ctud::default()
+        }
+    }
+
     pub fn call(&mut self, cu: bool, cd: bool, reset: bool, load: bool, pv: i64) {
         let up = cu && !self.last_cu;
         let down = cd && !self.last_cd;
@@ -161,10 +221,10 @@ impl Ctud {
         if reset {
             self.cv = 0;
         } else if load {
-            self.cv = pv.clamp(COUNT_MIN, COUNT_MAX);
-        } else if up && !down && self.cv < COUNT_MAX {
+            self.cv = pv.clamp(self.limits.min, self.limits.max);
+        } else if up && !down && self.cv < self.limits.max {
             self.cv += 1;
-        } else if down && !up && self.cv > COUNT_MIN {
+        } else if down && !up && self.cv > self.limits.min {
             self.cv -= 1;
         }
         self.qu = self.cv >= pv;

@@ -224,6 +224,8 @@ pub enum IlError {
     Literal(LiteralError),
     /// A CAL's parameters are not `(name := value, name => variable)`.
     BadCall(String),
+    /// `(*` with no `*)` after it.
+    OpenComment,
     /// A label used twice (first on the line given).
     DuplicateLabel {
         label: String,
@@ -244,6 +246,7 @@ impl fmt::Display for IlError {
                 f,
                 "`{c}`: a call is CAL name(input := value, output => variable)"
             ),
+            IlError::OpenComment => f.write_str("a comment `(*` is never closed with `*)`"),
             IlError::DuplicateLabel { label, first } => {
                 write!(f, "label `{label}` is used twice (first on line {first})")
             }
@@ -260,9 +263,15 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     let mut lines: Vec<Line> = Vec::new();
     let mut errors = Vec::new();
     let mut in_vars = false;
+    // Each label (upper-case) and the line it is first on.
+    let mut labels: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     let text = blank_long_comments(text);
     for (i, raw) in text.lines().enumerate() {
         let number = i + 1;
+        if raw.contains("(*") && !raw[raw.rfind("(*").unwrap_or(0)..].contains("*)") {
+            errors.push(Located::new(number, IlError::OpenComment));
+            continue;
+        }
         let code = strip_comments(raw);
         let code = code.trim();
         let upper = code.trim_end_matches(';').to_ascii_uppercase();
@@ -285,20 +294,17 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
         match line(code, number) {
             Ok(l) => {
                 if let Some(label) = &l.label {
-                    if let Some(first) = lines.iter().find(|m| {
-                        m.label
-                            .as_deref()
-                            .is_some_and(|m| m.eq_ignore_ascii_case(label))
-                    }) {
+                    if let Some(&first) = labels.get(&label.to_ascii_uppercase()) {
                         errors.push(Located::new(
                             number,
                             IlError::DuplicateLabel {
                                 label: label.clone(),
-                                first: first.line,
+                                first,
                             },
                         ));
                         continue;
                     }
+                    labels.insert(label.to_ascii_uppercase(), number);
                 }
                 lines.push(l);
             }
@@ -315,14 +321,17 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
 /// `text` with every comment that spans lines blanked out (its line
 /// breaks kept, so every line keeps its number); a comment on one line
 /// stays for the line's own reader (a declaration keeps it). A comment
-/// never closed runs to the end.
+/// never closed is left as it is: the line that opens it says so.
 pub(super) fn blank_long_comments(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     let mut rest = text;
     while let Some(at) = rest.find("(*") {
         out.push_str(&rest[..at]);
         let body = &rest[at..];
-        let end = body.find("*)").map_or(body.len(), |e| e + 2);
+        let Some(end) = body.find("*)").map(|e| e + 2) else {
+            out.push_str(body);
+            return out;
+        };
         let comment = &body[..end];
         if comment.contains('\n') {
             out.extend(comment.chars().map(|c| if c == '\n' { '\n' } else { ' ' }));

@@ -13,7 +13,7 @@ pub mod il;
 pub mod listing;
 pub mod literal;
 pub mod machine;
-mod pins;
+pub(crate) mod pins;
 pub mod plc;
 pub mod program;
 pub mod scan;

@@ -2,13 +2,15 @@
 //! with the inputs it keeps between calls (IEC: an input not given in a
 //! call keeps its last value).
 
-use super::blocks::{Ctd, Ctu, Ctud, FTrig, RTrig, Rs, Sr, Tof, Ton, Tp};
+use super::blocks::{Ctd, Ctu, Ctud, FTrig, Limits, RTrig, Rs, Sr, Tof, Ton, Tp};
 use super::data::{Data, DataType};
 
 /// One instance of a standard block.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Instance {
     pub state: State,
+    /// A counter's count type (INT for other blocks).
+    count: DataType,
     /// Its inputs' values, in the order of [`inputs`].
     pub inputs: Vec<Data>,
 }
@@ -28,50 +30,70 @@ pub enum State {
     Rs(Rs),
 }
 
+/// A counter's kind and count type: `CTU` and `CTU_INT` count INT,
+/// `CTU_DINT` DINT … (CTD, CTUD alike); `None` for any other block.
+pub fn counter(block: &str) -> Option<(&'static str, DataType)> {
+    let (base, ty) = block.split_once('_').unwrap_or((block, "INT"));
+    let base = ["CTU", "CTD", "CTUD"].into_iter().find(|b| *b == base)?;
+    let ty = DataType::from_name(ty).filter(|t| {
+        matches!(
+            t,
+            DataType::Int | DataType::Dint | DataType::Lint | DataType::Udint | DataType::Ulint
+        )
+    })?;
+    Some((base, ty))
+}
+
 /// A block's inputs (name, type), in order.
-pub fn inputs(block: &str) -> &'static [(&'static str, DataType)] {
-    use DataType::{Bool, Int, Time};
-    match block {
-        "TON" | "TOF" | "TP" => &[("IN", Bool), ("PT", Time)],
-        "CTU" => &[("CU", Bool), ("R", Bool), ("PV", Int)],
-        "CTD" => &[("CD", Bool), ("LD", Bool), ("PV", Int)],
-        "CTUD" => &[
+pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
+    use DataType::{Bool, Time};
+    match counter(block) {
+        Some(("CTU", n)) => vec![("CU", Bool), ("R", Bool), ("PV", n)],
+        Some(("CTD", n)) => vec![("CD", Bool), ("LD", Bool), ("PV", n)],
+        Some((_, n)) => vec![
             ("CU", Bool),
             ("CD", Bool),
             ("R", Bool),
             ("LD", Bool),
-            ("PV", Int),
+            ("PV", n),
         ],
-        "R_TRIG" | "F_TRIG" => &[("CLK", Bool)],
-        "SR" => &[("S1", Bool), ("R", Bool)],
-        "RS" => &[("S", Bool), ("R1", Bool)],
-        _ => &[],
+        None => match block {
+            "TON" | "TOF" | "TP" => vec![("IN", Bool), ("PT", Time)],
+            "R_TRIG" | "F_TRIG" => vec![("CLK", Bool)],
+            "SR" => vec![("S1", Bool), ("R", Bool)],
+            "RS" => vec![("S", Bool), ("R1", Bool)],
+            _ => Vec::new(),
+        },
     }
 }
 
 /// A block's outputs (name, type), in order.
-pub fn outputs(block: &str) -> &'static [(&'static str, DataType)] {
-    use DataType::{Bool, Int, Time};
-    match block {
-        "TON" | "TOF" | "TP" => &[("Q", Bool), ("ET", Time)],
-        "CTU" | "CTD" => &[("Q", Bool), ("CV", Int)],
-        "CTUD" => &[("QU", Bool), ("QD", Bool), ("CV", Int)],
-        "R_TRIG" | "F_TRIG" => &[("Q", Bool)],
-        "SR" | "RS" => &[("Q1", Bool)],
-        _ => &[],
+pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
+    use DataType::{Bool, Time};
+    match counter(block) {
+        Some(("CTUD", n)) => vec![("QU", Bool), ("QD", Bool), ("CV", n)],
+        Some((_, n)) => vec![("Q", Bool), ("CV", n)],
+        None => match block {
+            "TON" | "TOF" | "TP" => vec![("Q", Bool), ("ET", Time)],
+            "R_TRIG" | "F_TRIG" => vec![("Q", Bool)],
+            "SR" | "RS" => vec![("Q1", Bool)],
+            _ => Vec::new(),
+        },
     }
 }
 
 impl Instance {
     /// A new instance of `block` (one of `vars::BLOCK_TYPES`).
     pub fn new(block: &str) -> Instance {
-        let state = match block {
+        let (base, count) = counter(block).unwrap_or((block, DataType::Int));
+        let limits = Limits::of(count);
+        let state = match base {
             "TON" => State::Ton(Ton::default()),
             "TOF" => State::Tof(Tof::default()),
             "TP" => State::Tp(Tp::default()),
-            "CTU" => State::Ctu(Ctu::default()),
-            "CTD" => State::Ctd(Ctd::default()),
-            "CTUD" => State::Ctud(Ctud::default()),
+            "CTU" => State::Ctu(Ctu::counting(limits)),
+            "CTD" => State::Ctd(Ctd::counting(limits)),
+            "CTUD" => State::Ctud(Ctud::counting(limits)),
             "R_TRIG" => State::RTrig(RTrig::default()),
             "F_TRIG" => State::FTrig(FTrig::default()),
             "SR" => State::Sr(Sr::default()),
@@ -79,6 +101,7 @@ impl Instance {
         };
         Instance {
             state,
+            count,
             inputs: inputs(block).iter().map(|(_, t)| t.zero()).collect(),
         }
     }
@@ -119,7 +142,7 @@ impl Instance {
 
     /// Output `i` (in the order of [`outputs`]).
     pub fn output(&self, i: usize) -> Data {
-        let int = |v: i64| Data::integer(DataType::Int, i128::from(v));
+        let int = |v: i64| Data::integer(self.count, i128::from(v));
         match (&self.state, i) {
             (
                 State::Ton(Ton { q, .. }) | State::Tof(Tof { q, .. }) | State::Tp(Tp { q, .. }),

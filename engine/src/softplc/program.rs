@@ -2,6 +2,7 @@
 //! declarations into steps over one table of values, type-checked once
 //! at load (nothing is checked while it runs), and its scan.
 
+use std::collections::HashMap;
 use std::fmt;
 
 use super::address::{Address, Area};
@@ -125,6 +126,17 @@ pub struct Program {
     /// The text as read, for the listing.
     pub(super) vars: Vec<Variable>,
     pub(super) lines: Vec<Line>,
+    /// Names (upper-case) to their slot or block, addresses to their
+    /// slot: every look-up at load and from the front ends is one hash.
+    pub(super) by_name: HashMap<String, Named>,
+    pub(super) by_address: HashMap<Address, usize>,
+}
+
+/// What a declared name is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Named {
+    Slot(usize),
+    Block(usize),
 }
 
 type Errors = Vec<Located<LoadError>>;
@@ -155,21 +167,29 @@ impl Program {
             retained: Vec::new(),
             vars: Vec::new(),
             lines: Vec::new(),
+            by_name: HashMap::new(),
+            by_address: HashMap::new(),
         };
         for v in vars.iter().cloned() {
             match v.kind {
                 Kind::Value { init, .. } => {
                     let slot = p.values.len();
                     p.values.push(init);
+                    p.by_name
+                        .insert(v.name.to_ascii_uppercase(), Named::Slot(slot));
                     p.names.push((v.name, slot));
                     if v.retain {
                         p.retained.push(slot);
                     }
                     if let Some(a) = v.address {
                         p.addresses.push((a, slot));
+                        p.by_address.insert(a, slot);
                     }
                 }
                 Kind::Block(block) => {
+                    let b = p.blocks.len();
+                    p.by_name
+                        .insert(v.name.to_ascii_uppercase(), Named::Block(b));
                     p.block_names.push((v.name, block.clone()));
                     p.blocks.push(Instance::new(&block));
                 }
@@ -178,11 +198,16 @@ impl Program {
         let mut errors = Vec::new();
         let mut cr: Option<DataType> = None;
         let mut open: Vec<(Binary, Option<DataType>)> = Vec::new();
+        let labels: HashMap<String, usize> = lines
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), i)))
+            .collect();
         for line in &lines {
             if line.label.is_some() {
                 cr = None;
             }
-            match p.resolve(line, &lines, &mut cr, &mut open) {
+            match p.resolve(line, &labels, &mut cr, &mut open) {
                 Ok(step) => p.steps.push(step),
                 Err(e) => {
                     errors.push(Located::new(line.line, e));
@@ -234,14 +259,12 @@ impl Program {
     fn slot(&mut self, operand: &Operand) -> Result<Src, LoadError> {
         match operand {
             Operand::Literal(d) => Ok(Src::Const(*d)),
-            Operand::Name(n) => self
-                .names
-                .iter()
-                .find(|(m, _)| m.eq_ignore_ascii_case(n))
-                .map(|&(_, s)| Src::Slot(s))
-                .ok_or_else(|| LoadError::Undeclared(n.clone())),
+            Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
+                Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
+                _ => Err(LoadError::Undeclared(n.clone())),
+            },
             Operand::Address(a) => {
-                if let Some(&(_, s)) = self.addresses.iter().find(|(b, _)| b == a) {
+                if let Some(&s) = self.by_address.get(a) {
                     return Ok(Src::Slot(s));
                 }
                 let t = a
@@ -250,6 +273,7 @@ impl Program {
                 let slot = self.values.len();
                 self.values.push(t.zero());
                 self.addresses.push((*a, slot));
+                self.by_address.insert(*a, slot);
                 Ok(Src::Slot(slot))
             }
         }
@@ -286,7 +310,7 @@ impl Program {
     fn resolve(
         &mut self,
         line: &Line,
-        lines: &[Line],
+        labels: &HashMap<String, usize>,
         cr: &mut Option<DataType>,
         open: &mut Vec<(Binary, Option<DataType>)>,
     ) -> Result<Step, LoadError> {
@@ -314,7 +338,7 @@ impl Program {
                 *cr = Some(binary_type(op, a, b)?);
                 Step::Close
             }
-            Operator::Jmp => jump(line, lines, cr)?,
+            Operator::Jmp => jump(line, labels, cr)?,
             Operator::Ret => {
                 if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
                     return Err(LoadError::Type("RETC needs a BOOL current result".into()));
@@ -459,15 +483,13 @@ impl Program {
         let Some(Operand::Name(name)) = &line.operand else {
             return Err(LoadError::Call("CAL needs a block instance".into()));
         };
-        let block = self
-            .block_names
-            .iter()
-            .position(|(n, _)| n.eq_ignore_ascii_case(name))
-            .ok_or_else(|| LoadError::Call(format!("`{name}` is not a block instance")))?;
+        let Some(&Named::Block(block)) = self.by_name.get(&name.to_ascii_uppercase()) else {
+            return Err(LoadError::Call(format!("`{name}` is not a block instance")));
+        };
         let kind = self.block_names[block].1.clone();
         let mut ins = Vec::new();
         for (pin, value) in &line.inputs {
-            let (i, want) = find_pin(inputs(&kind), pin)
+            let (i, want) = find_pin(&inputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
             let src = Program::fit(self.slot(value)?, want);
             if self.type_of(src) != want {
@@ -480,7 +502,7 @@ impl Program {
         }
         let mut outs = Vec::new();
         for (pin, target) in &line.outputs {
-            let (i, t) = find_pin(outputs(&kind), pin)
+            let (i, t) = find_pin(&outputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
             let Src::Slot(slot) = self.slot(&Operand::Name(target.clone()))? else {
                 return Err(LoadError::Call(format!("`{target}` is not a variable")));
@@ -509,20 +531,19 @@ fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {
 }
 
 /// JMP, JMPC, JMPCN to a label of `lines`.
-fn jump(line: &Line, lines: &[Line], cr: &mut Option<DataType>) -> Result<Step, LoadError> {
+fn jump(
+    line: &Line,
+    labels: &HashMap<String, usize>,
+    cr: &mut Option<DataType>,
+) -> Result<Step, LoadError> {
     if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
         return Err(LoadError::Type("JMPC needs a BOOL current result".into()));
     }
     let Some(Operand::Name(label)) = &line.operand else {
         return Err(LoadError::NoLabel(String::new()));
     };
-    let target = lines
-        .iter()
-        .position(|l| {
-            l.label
-                .as_deref()
-                .is_some_and(|m| m.eq_ignore_ascii_case(label))
-        })
+    let &target = labels
+        .get(&label.to_ascii_uppercase())
         .ok_or_else(|| LoadError::NoLabel(label.clone()))?;
     if line.condition.is_none() {
         *cr = None;

@@ -11,7 +11,7 @@ use super::data::DataType;
 use super::data::{self, Data, Shift};
 use super::il::Function;
 use super::pins::Instance;
-use super::program::{Binary, Cmp, Program, Src, Step, STEPS_PER_SCAN};
+use super::program::{Binary, Cmp, Named, Program, Src, Step, STEPS_PER_SCAN};
 use crate::plc::Tracer;
 
 /// Where a scan under way stands: the next step, the current result, the
@@ -159,8 +159,8 @@ impl Program {
         if address.area != Area::Input {
             return false;
         }
-        match self.addresses.iter().find(|(a, _)| *a == address) {
-            Some(&(_, slot)) => self.set_terminal(slot, value),
+        match self.by_address.get(&address) {
+            Some(&slot) => self.set_terminal(slot, value),
             None => false,
         }
     }
@@ -175,13 +175,11 @@ impl Program {
     /// uses.
     pub fn slot_of(&self, name_or_address: &str) -> Option<usize> {
         match Address::parse(name_or_address) {
-            Ok(a) => Some(self.addresses.iter().find(|(b, _)| *b == a)?.1),
-            Err(_) => Some(
-                self.names
-                    .iter()
-                    .find(|(n, _)| n.eq_ignore_ascii_case(name_or_address))?
-                    .1,
-            ),
+            Ok(a) => self.by_address.get(&a).copied(),
+            Err(_) => match self.by_name.get(&name_or_address.to_ascii_uppercase()) {
+                Some(Named::Slot(s)) => Some(*s),
+                _ => None,
+            },
         }
     }
 
@@ -230,10 +228,10 @@ impl Program {
 
     /// A block instance by name (any case): its number and kind.
     pub fn block_of(&self, name: &str) -> Option<(usize, &str)> {
-        self.block_names
-            .iter()
-            .position(|(n, _)| n.eq_ignore_ascii_case(name))
-            .map(|i| (i, self.block_names[i].1.as_str()))
+        match self.by_name.get(&name.to_ascii_uppercase()) {
+            Some(&Named::Block(i)) => Some((i, self.block_names[i].1.as_str())),
+            _ => None,
+        }
     }
 
     /// How many block instances it has.
@@ -251,8 +249,9 @@ impl Program {
     /// names first (as declared), then undeclared addresses.
     pub fn devices(&self) -> Vec<(String, usize)> {
         let mut out: Vec<(String, usize)> = self.names.clone();
+        let named: std::collections::HashSet<usize> = self.names.iter().map(|&(_, s)| s).collect();
         for &(a, slot) in &self.addresses {
-            if !self.names.iter().any(|(_, s)| *s == slot) {
+            if !named.contains(&slot) {
                 out.push((a.to_string(), slot));
             }
         }

@@ -23,8 +23,32 @@ use super::literal::{parse_literal, LiteralError};
 use crate::error::Located;
 
 /// The standard function blocks a variable can be an instance of.
-pub const BLOCK_TYPES: [&str; 10] = [
-    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS",
+pub const BLOCK_TYPES: [&str; 25] = [
+    "TON",
+    "TOF",
+    "TP",
+    "CTU",
+    "CTD",
+    "CTUD",
+    "R_TRIG",
+    "F_TRIG",
+    "SR",
+    "RS",
+    "CTU_INT",
+    "CTU_DINT",
+    "CTU_LINT",
+    "CTU_UDINT",
+    "CTU_ULINT",
+    "CTD_INT",
+    "CTD_DINT",
+    "CTD_LINT",
+    "CTD_UDINT",
+    "CTD_ULINT",
+    "CTUD_INT",
+    "CTUD_DINT",
+    "CTUD_LINT",
+    "CTUD_UDINT",
+    "CTUD_ULINT",
 ];
 
 /// What a variable holds.
@@ -117,6 +141,8 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
     let mut errors = Vec::new();
     let mut open: Option<(bool, usize)> = None; // (retain, line)
     let text = super::il::blank_long_comments(text);
+    // Each name (upper-case) and the line that declares it.
+    let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
         let (code, comment) = split_comment(raw);
@@ -145,18 +171,16 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
         }
         match declaration(code, retain, comment) {
             Ok(v) => {
-                if let Some((_, first)) = vars
-                    .iter()
-                    .find(|(w, _)| w.name.eq_ignore_ascii_case(&v.name))
-                {
+                if let Some(&first) = seen.get(&v.name.to_ascii_uppercase()) {
                     errors.push(Located::new(
                         line,
                         VarError::Duplicate {
                             name: v.name,
-                            first: *first,
+                            first,
                         },
                     ));
                 } else {
+                    seen.insert(v.name.to_ascii_uppercase(), line);
                     vars.push((v, line));
                 }
             }

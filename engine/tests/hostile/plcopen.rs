@@ -275,3 +275,30 @@ fn a_long_chain_of_connectors_is_refused_not_followed_to_the_end() {
             .expect("compiles");
     assert!(text.contains("LD X00\nOUT Y00\n"), "{text}");
 }
+
+#[test]
+fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
+    use engine::ladder::plcopen::soft::to_il;
+    let started = std::time::Instant::now();
+    let rungs = to_il(&plcopen_rungs(5_000, "X00", "Y00"), None).expect("5 000 rungs");
+    assert!(rungs.text.lines().count() > 5_000);
+    let ors = to_il(&crate::gen::plcopen_gates(5_000, "OR"), None).expect("5 000 ORs");
+    let mut plc = engine::machines::new_plc(engine::MachineId::SoftPlc);
+    engine::plc::Plc::load_text(plc.as_mut(), &ors.text).expect("loads");
+    for levels in [1, 50, 400] {
+        // Nesting is only wiring here: nothing recurses on it.
+        to_il(&plcopen_alternating(levels), None).expect("any depth");
+    }
+    // Not a speed test: a search per element would take minutes.
+    assert!(started.elapsed().as_secs() < 60);
+    let looped = plcopen_rungs(1, "X00", "Y00").replacen(
+        "<leftPowerRail",
+        r#"<connector localId="900" name="a"><position x="0" y="0"/><connectionPointIn><connection refLocalId="901"/></connectionPointIn></connector><continuation localId="901" name="a"><position x="0" y="0"/><connectionPointOut/></continuation><outVariable localId="902"><position x="0" y="0"/><connectionPointIn><connection refLocalId="901"/></connectionPointIn><expression>Y01</expression></outVariable><leftPowerRail"#,
+        1,
+    );
+    let errors = to_il(&looped, None).expect_err("a connector feeding itself");
+    assert!(
+        errors.iter().all(|e| e.line > 0) && !errors.is_empty(),
+        "{errors:?}"
+    );
+}

@@ -13,6 +13,7 @@ mod plcopen;
 mod robustness;
 mod seed;
 mod share;
+mod soft_plcopen;
 mod source_map;
 mod strategies;
 mod why;

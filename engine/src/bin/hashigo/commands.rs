@@ -242,8 +242,12 @@ pub fn compile(rest: &[String]) -> Result<(), Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let (project, text, _) = source::compile_source(&args, &source, format, flag)?;
-    let machine = project.machine;
+    let (machine, text) = if format == Format::Xml && flag == Some(MachineId::SoftPlc) {
+        (MachineId::SoftPlc, source::soft_program(&args, &source)?)
+    } else {
+        let (project, text, _) = source::compile_source(&args, &source, format, flag)?;
+        (project.machine, text)
+    };
     // compile takes `--set` for the AVR PLC's scan period; a setting the
     // machine lacks is still an error.
     let problems = apply_settings(new_plc(machine).as_mut(), &args, ("", &[]));

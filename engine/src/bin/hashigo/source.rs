@@ -71,6 +71,10 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
             }
             (machine, None, Vec::new(), None)
         }
+        Format::Xml if flag == Some(MachineId::SoftPlc) => {
+            let text = soft_program(args, &source)?;
+            (MachineId::SoftPlc, Some(text), Vec::new(), None)
+        }
         Format::Json | Format::Xml => {
             let (project, text, settings) = compile_source(args, &source, format, flag)?;
             (project.machine, Some(text), settings, Some(project))
@@ -103,6 +107,25 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
         format,
         project,
     })
+}
+
+/// A PLCopen project as the soft PLC runs it: no map (names stay names,
+/// addresses stay addresses), its drawn bodies as Instruction List;
+/// errors at the file's lines.
+pub fn soft_program(args: &Args, source: &SourceFile) -> Result<String, Problems> {
+    if args.optional("map").map_err(one)?.is_some() {
+        return Err(one(format!(
+            "{}: the soft PLC needs no --map: its variables keep their names and addresses",
+            source.name
+        )));
+    }
+    let pou = args.optional("pou").map_err(one)?;
+    let program =
+        plcopen::soft::to_il(&source.text, pou).map_err(|errors| source.located(&errors))?;
+    for w in &program.warnings {
+        eprintln!("warning: {}:{}: {}", source.name, w.line, w.error);
+    }
+    Ok(program.text)
 }
 
 /// A machine error as problem lines: one per program line at fault.

@@ -148,6 +148,8 @@ pub enum ImportError {
     WordOutput(String),
     /// An element Hashigo does not import (its name).
     Unsupported(String),
+    /// Part of the project the soft PLC does not run.
+    Soft(super::soft::SoftError),
     /// A block type Hashigo does not import.
     UnsupportedBlock(String),
     /// A block that calls one of the project's own POUs (its name and
@@ -277,6 +279,7 @@ impl fmt::Display for ImportError {
                 "<{el}> is not imported: Hashigo's ladders have no word outputs from blocks"
             ),
             E::Unsupported(el) => write!(f, "<{el}> is not supported in LD or FBD bodies here"),
+            E::Soft(e) => e.fmt(f),
             E::UnsupportedBlock(ty) => write!(
                 f,
                 "block {} is not supported: Hashigo imports {} and the comparisons {}",

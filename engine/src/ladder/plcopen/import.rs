@@ -130,7 +130,7 @@ pub fn import_pou(
 }
 
 /// The root is a PLCopen project in a namespace this reader knows.
-fn check_project(root: &Node) -> Result<(), Errors> {
+pub(super) fn check_project(root: &Node) -> Result<(), Errors> {
     if root.name != "project" {
         return Err(vec![Located::new(
             root.line,
@@ -228,7 +228,7 @@ fn pou_and_language(p: &Node) -> String {
 }
 
 /// The language of a POU's body (`LD`, `ST`, `FBD`, `SFC`, `IL`).
-fn language(p: &Node) -> &str {
+pub(super) fn language(p: &Node) -> &str {
     p.child("body")
         .and_then(|b| {
             b.children
@@ -284,7 +284,7 @@ fn named_pou<'a>(pous: &[&'a Node], wanted: &str) -> Result<&'a Node, ImportErro
 /// order; else every program; else every POU. Other POUs with an LD body
 /// (function blocks no task runs, unused programs) are skipped with a
 /// warning.
-fn choose_pous<'a>(
+pub(super) fn choose_pous<'a>(
     root: &Node,
     pous: &[&'a Node],
     only: Option<&str>,

@@ -24,6 +24,7 @@ mod parts;
 mod placing;
 mod read;
 mod rungs;
+pub mod soft;
 
 pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};

@@ -136,10 +136,20 @@ fn functions_by_name_with_their_operands() {
 
 #[test]
 fn comments_anywhere_and_var_blocks_are_skipped() {
-    let lines = parse_il("(* head *)\nVAR\n  x : BOOL;\nEND_VAR\nLD (* mid *) x (* end\nST y")
-        .expect("it reads");
+    let lines =
+        parse_il("(* head *)\nVAR\n  x : BOOL;\nEND_VAR\nLD (* mid *) x (* two\nlines *) ST y")
+            .expect("it reads");
     assert_eq!(lines.len(), 2);
     assert_eq!(lines[0].operand, Some(Operand::Name("x".into())));
+    assert_eq!(
+        lines[1].line, 6,
+        "a line keeps its number after a long comment"
+    );
+    let open = crate::softplc::said(parse_il("LD x\nST y (* never closed\nST z"));
+    assert_eq!(
+        open,
+        [(2, "a comment `(*` is never closed with `*)`".to_string())]
+    );
 }
 
 proptest::proptest! {

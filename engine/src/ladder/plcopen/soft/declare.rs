@@ -1,0 +1,254 @@
+//! The variables a PLCopen project declares, as the soft PLC's `VAR`
+//! lines: names stay names, located variables keep their addresses,
+//! initial values and retain are kept, a comment is the variable's
+//! documentation. The chosen programs' own variables and the
+//! configuration's globals share one name space; a program's variable
+//! whose name another program already declared is renamed
+//! `<program>_<name>` within that program.
+
+use std::collections::HashMap;
+
+use super::SoftError;
+use crate::error::Located;
+use crate::ladder::plcopen::dom::Node;
+use crate::softplc::data::DataType;
+use crate::softplc::vars::BLOCK_TYPES;
+use crate::softplc::{parse_literal, Address};
+
+/// What a declared name holds.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum Held {
+    Value(DataType),
+    /// A standard function block instance (its type, upper-case).
+    Block(String),
+}
+
+/// One declaration, ready to write.
+#[derive(Clone, Debug)]
+pub(super) struct Declared {
+    pub name: String,
+    pub held: Held,
+    /// `name [AT %address] : TYPE [:= value]; [(* doc *)]`.
+    pub line: String,
+    pub retain: bool,
+    pub address: Option<Address>,
+    /// Where the file declares it.
+    pub xml_line: usize,
+}
+
+/// Every declaration, and each POU's renamings.
+#[derive(Debug, Default)]
+pub(super) struct Declarations {
+    pub list: Vec<Declared>,
+    /// Per POU (lower-case name): the file's name (lower-case) → the
+    /// soft PLC's.
+    renamed: HashMap<String, HashMap<String, String>>,
+    /// Each name (upper-case) → its place in `list`.
+    index: HashMap<String, usize>,
+    /// Each located variable's address → its type.
+    addresses: HashMap<Address, DataType>,
+}
+
+impl Declarations {
+    /// The soft PLC's name for `name` as written in POU `pou`.
+    pub fn name_in(&self, pou: &str, name: &str) -> String {
+        self.renamed
+            .get(&pou.to_ascii_lowercase())
+            .and_then(|m| m.get(&name.to_ascii_lowercase()))
+            .cloned()
+            .unwrap_or_else(|| name.to_string())
+    }
+
+    /// What a (soft PLC) name holds, if declared.
+    pub fn held(&self, name: &str) -> Option<&Held> {
+        let &i = self.index.get(&name.to_ascii_uppercase())?;
+        Some(&self.list[i].held)
+    }
+
+    /// The type of the variable at `address`, if one is declared there.
+    pub fn at_address(&self, address: Address) -> Option<DataType> {
+        self.addresses.get(&address).copied()
+    }
+
+    fn push(&mut self, d: Declared) {
+        if let (Some(a), Held::Value(t)) = (d.address, &d.held) {
+            self.addresses.insert(a, *t);
+        }
+        self.index
+            .insert(d.name.to_ascii_uppercase(), self.list.len());
+        self.list.push(d);
+    }
+
+    /// Declares a name the file uses without declaring it (its
+    /// declaration line is written by the caller).
+    pub fn declare(&mut self, name: &str, held: Held) {
+        self.push(Declared {
+            name: name.to_string(),
+            held,
+            line: String::new(),
+            retain: false,
+            address: None,
+            xml_line: 0,
+        });
+    }
+
+    fn taken(&self, name: &str) -> bool {
+        self.held(name).is_some()
+    }
+}
+
+type Errors = Vec<Located<SoftError>>;
+
+/// The declarations of the configuration's globals and of `pous`.
+pub(super) fn declarations(
+    root: &Node,
+    pous: &[&Node],
+    own: &[String],
+) -> Result<Declarations, Errors> {
+    let mut out = Declarations::default();
+    let mut errors = Vec::new();
+    let mut globals = Vec::new();
+    root.descendants("configuration", &mut globals);
+    for scope in globals.iter().flat_map(|c| scopes(c, true)) {
+        for v in scope.all("variable") {
+            if let Err(e) = declare(&mut out, scope, v, None, own) {
+                errors.push(e);
+            }
+        }
+    }
+    for pou in pous {
+        let Some(interface) = pou.child("interface") else {
+            continue;
+        };
+        let pou_name = pou.attr("name").unwrap_or_default();
+        for scope in scopes(interface, false) {
+            for v in scope.all("variable") {
+                if let Err(e) = declare(&mut out, scope, v, Some(pou_name), own) {
+                    errors.push(e);
+                }
+            }
+        }
+    }
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        Err(errors)
+    }
+}
+
+/// The variable blocks under `node` (globals: every `globalVars` of the
+/// configuration and its resources).
+fn scopes(node: &Node, globals: bool) -> Vec<&Node> {
+    let names: &[&str] = if globals {
+        &["globalVars"]
+    } else {
+        &[
+            "localVars",
+            "inputVars",
+            "outputVars",
+            "inOutVars",
+            "tempVars",
+            "externalVars",
+            "globalVars",
+        ]
+    };
+    let mut out = Vec::new();
+    for name in names {
+        node.descendants(name, &mut out);
+    }
+    out
+}
+
+/// Declares variable `v` of `scope` (for POU `pou`, or a global).
+fn declare(
+    out: &mut Declarations,
+    scope: &Node,
+    v: &Node,
+    pou: Option<&str>,
+    own: &[String],
+) -> Result<(), Located<SoftError>> {
+    let at = |e: SoftError| Located::new(v.line, e);
+    let name = v.attr("name").unwrap_or_default().to_string();
+    if !crate::softplc::vars::is_identifier(&name) {
+        return Err(at(SoftError::Declaration(name, "not an IEC name".into())));
+    }
+    let ty = v
+        .child("type")
+        .and_then(|t| t.children.first())
+        .ok_or_else(|| at(SoftError::Declaration(name.clone(), "no type".into())))?;
+    let written = match ty.name.as_str() {
+        "derived" => ty.attr("name").unwrap_or_default(),
+        other => other,
+    };
+    let type_name = written.to_ascii_uppercase();
+    let held = if let Some(t) = DataType::from_name(&type_name) {
+        Held::Value(t)
+    } else if BLOCK_TYPES.contains(&type_name.as_str()) {
+        Held::Block(type_name.clone())
+    } else if own.iter().any(|p| p.eq_ignore_ascii_case(&type_name)) {
+        return Err(at(SoftError::ProjectBlock(written.to_string())));
+    } else if ty.name == "derived" {
+        return Err(at(SoftError::Block(written.to_string())));
+    } else {
+        return Err(at(SoftError::Declaration(
+            name,
+            format!("type {type_name} is not one the soft PLC has (docs/soft-plc.md)"),
+        )));
+    };
+    // A name declared again: the same global seen twice (an external) is
+    // one variable; a program's own variable takes its program's name.
+    let mut soft_name = name.clone();
+    if out.taken(&name) {
+        if matches!(scope.name.as_str(), "externalVars") || pou.is_none() {
+            return Ok(());
+        }
+        let pou = pou.unwrap_or_default();
+        soft_name = format!("{pou}_{name}");
+        let mut n = 2;
+        while out.taken(&soft_name) {
+            soft_name = format!("{pou}_{name}{n}");
+            n += 1;
+        }
+        out.renamed
+            .entry(pou.to_ascii_lowercase())
+            .or_default()
+            .insert(name.to_ascii_lowercase(), soft_name.clone());
+    }
+    let mut line = soft_name.clone();
+    let address = match v.attr("address") {
+        Some(text) => {
+            let a = Address::parse(text)
+                .map_err(|e| at(SoftError::Declaration(name.clone(), e.to_string())))?;
+            line.push_str(&format!(" AT {a}"));
+            Some(a)
+        }
+        None => None,
+    };
+    line.push_str(&format!(" : {type_name}"));
+    let initial = v
+        .child("initialValue")
+        .and_then(|i| i.child("simpleValue"))
+        .and_then(|s| s.attr("value"));
+    if let (Some(value), Held::Value(t)) = (initial, &held) {
+        let d = parse_literal(value, Some(*t))
+            .map_err(|e| at(SoftError::Declaration(name.clone(), e.to_string())))?;
+        line.push_str(&format!(" := {d}"));
+    }
+    line.push(';');
+    if let Some(doc) = v.child("documentation").map(Node::deep_text) {
+        let doc = doc.split_whitespace().collect::<Vec<_>>().join(" ");
+        if !doc.is_empty() {
+            line.push_str(&format!(" (* {} *)", doc.replace("*)", "* )")));
+        }
+    }
+    let retain = scope.attr("retain") == Some("true") || scope.attr("persistent") == Some("true");
+    out.push(Declared {
+        name: soft_name,
+        held,
+        line,
+        retain,
+        address,
+        xml_line: v.line,
+    });
+    Ok(())
+}
