@@ -85,7 +85,7 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             contacts: ALL_CONTACTS,
             coils: ALL_COILS,
             inline_boxes: true,
-            pulse_outputs: false,
+            pulse_outputs: true,
             timer_counter_coils: false,
             data_boxes: false,
             devices: "%IX0.0, %QX0.0, %MX0.0 or a name",

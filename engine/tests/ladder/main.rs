@@ -14,6 +14,7 @@ mod robustness;
 mod seed;
 mod share;
 mod soft_plcopen;
+mod soft_seeds;
 mod source_map;
 mod strategies;
 mod why;

@@ -134,7 +134,24 @@ impl Compiler {
         let cond = self.edges(&logic.condition);
         self.net(&cond, Pin::Rail)
             .map_err(|m| (logic.condition.first_pos(), m))?;
+        // The power, held for pulse outputs (R_TRIG / F_TRIG on it).
+        let mut held: Option<String> = None;
         for (e, pos) in &logic.outputs {
+            if let Element::Pulse { falling, device } = e {
+                let power = match &held {
+                    Some(p) => p.clone(),
+                    None => {
+                        let p = self.fresh("_p", "BOOL");
+                        self.emit(format!("ST {p}"));
+                        held = Some(p.clone());
+                        p
+                    }
+                };
+                let block = if *falling { "F_TRIG" } else { "R_TRIG" };
+                let trig = self.fresh("_edge", block);
+                self.emit(format!("CAL {trig}(CLK := {power}, Q => {device})"));
+                continue;
+            }
             let Element::Coil { kind, device } = e else {
                 return Err((*pos, format!("soft-plc ladders have no {e} output yet")));
             };

@@ -81,7 +81,12 @@ pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, Dec
                         s.load(Net::Leaf(e, Pos::new(0, 0)));
                     }
                 }
-                _ => s.load(leaf(n, line.negated)),
+                _ => {
+                    // A new rung: the power held for the last one's
+                    // boxes and pulses is no longer this one's.
+                    power = None;
+                    s.load(leaf(n, line.negated));
+                }
             },
             (Operator::Ld, None, false)
                 if line.operand == Some(Operand::Literal(crate::softplc::Data::Bool(true))) =>
@@ -157,6 +162,15 @@ pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, Dec
                             ContactKind::Falling
                         };
                         stands.insert(q, Stands::Edge(edge, device));
+                    }
+                    // On the power into a name of the ladder's own: a
+                    // PLS / PLF output.
+                    "R_TRIG" | "F_TRIG" if !q.starts_with("_q") => {
+                        let e = Element::Pulse {
+                            falling: kind == "F_TRIG",
+                            device: q,
+                        };
+                        s.output(e, None, step)?;
                     }
                     "R_TRIG" | "F_TRIG" => {
                         let e = Element::Edge {
