@@ -119,7 +119,7 @@ fn the_seed_ladders_run_alike_on_the_soft_plc() {
                 state ^= state << 13;
                 state ^= state >> 17;
                 state ^= state << 5;
-                let on = i64::from(state % 3 == 0);
+                let on = i64::from(state.is_multiple_of(3));
                 for (plc, name) in [
                     (&mut own, input.to_string()),
                     (&mut soft, format!("%IX0.{n}")),
