@@ -294,6 +294,9 @@ pub fn entry_for(e: &Element) -> (EntryKind, String) {
         Element::Cmp { a, b } => words("CMP", &format!("{a} {b}")),
         Element::Inc { dst } => words("INC", dst),
         Element::Dec { dst } => words("DEC", dst),
+        // The soft PLC's boxes are drawn and entered in the page with
+        // issue #31; until then their text is shown as it is.
+        Element::Block(b) | Element::OutputBlock(b) => (EntryKind::Instruction, b.to_string()),
     }
 }
 

@@ -120,7 +120,16 @@ pub enum Element {
         /// A data register.
         dst: String,
     },
+    /// A soft PLC function or function block in the rung's condition:
+    /// power in, power on ([`BlockCall`]).
+    Block(BlockCall),
+    /// A soft PLC function or function block at the rung's right end: it
+    /// runs on the rung's power, its power out goes nowhere.
+    #[serde(rename = "output_block")]
+    OutputBlock(BlockCall),
 }
+
+pub use super::block::BlockCall;
 
 impl Element {
     /// A normally open contact.
@@ -156,7 +165,16 @@ impl Element {
                 | Element::Not
                 | Element::Edge { .. }
                 | Element::Timer { .. }
+                | Element::Block(_)
         )
+    }
+
+    /// The box a soft PLC block element calls.
+    pub fn block(&self) -> Option<&BlockCall> {
+        match self {
+            Element::Block(b) | Element::OutputBlock(b) => Some(b),
+            _ => None,
+        }
     }
 
     /// The bit devices the element reads as a contact.
@@ -214,6 +232,7 @@ impl fmt::Display for Element {
             Element::Cmp { a, b } => write!(f, "CMP {a} {b}"),
             Element::Inc { dst } => write!(f, "INC {dst}"),
             Element::Dec { dst } => write!(f, "DEC {dst}"),
+            Element::Block(b) | Element::OutputBlock(b) => write!(f, "{b}"),
         }
     }
 }

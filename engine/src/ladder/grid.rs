@@ -115,6 +115,10 @@ pub struct Ladder {
         deserialize_with = "super::project::each_name_once"
     )]
     pub device_comments: BTreeMap<String, String>,
+    /// The soft PLC's declared variables (issue #30); none for the
+    /// other machines.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub variables: Vec<super::variables::Variable>,
 }
 
 /// What sort of problem a [`LadderError`] is, so that an editor can mark

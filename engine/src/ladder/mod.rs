@@ -3,6 +3,7 @@
 //! (docs/ladder.md).
 //!
 //! - [`element`], [`grid`]: cells, rungs, links, device comments;
+//! - [`block`]: the soft PLC's functions and blocks as boxes in a rung;
 //! - [`net`]: a rung's series-parallel logic read off the grid, and back;
 //! - [`target`]: what each machine offers (palette and validation);
 //! - [`eval`]: power flow by the book, per element;
@@ -10,6 +11,7 @@
 //! - [`project`], [`share`], [`plcopen`]: JSON projects, share URLs, PLCopen XML;
 //! - [`live`]: each element's power in the last scan, from the machine's trace.
 
+pub mod block;
 pub mod compile;
 pub mod decompile;
 pub mod edit;
@@ -22,12 +24,15 @@ pub mod plcopen;
 pub mod project;
 pub mod share;
 pub mod target;
+pub mod variables;
 pub mod why;
 
+pub use block::BlockCall;
 pub use element::{CoilKind, ContactKind, Element, TimerKind};
 pub use grid::{Ladder, LadderError, LadderErrorKind, Link, Pos, Rung};
 pub use net::{analyse, layout, try_layout, Net, NetError, RungLogic};
 pub use project::{Project, ProjectError};
+pub use variables::Variable;
 
 use crate::MachineId;
 

@@ -14,8 +14,10 @@ use crate::MachineId;
 
 /// The `format` field every project file carries.
 pub const FORMAT: &str = "hashigo-project";
-/// The newest project version this build reads and the one it writes.
-pub const VERSION: u32 = 1;
+/// The newest project version this build reads. A project is written as
+/// version 1 unless it has the soft PLC's boxes or variables (version 2,
+/// issue #30), so that older Hashigos open every project they can.
+pub const VERSION: u32 = 2;
 
 /// A saved project.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -49,7 +51,7 @@ impl Project {
     pub fn new(machine: MachineId, ladder: Ladder) -> Project {
         Project {
             format: FORMAT.to_string(),
-            version: VERSION,
+            version: 1,
             machine,
             settings: BTreeMap::new(),
             ladder,
@@ -115,10 +117,28 @@ impl Project {
             .map_or(start, |(i, _)| i + 1)
     }
 
-    /// The project as pretty JSON.
+    /// The project as pretty JSON, at the oldest version that holds it.
     pub fn to_json(&self) -> String {
+        let mut out = self.clone();
+        out.version = self.needed_version();
         // Serialising plain data to a string cannot fail.
-        serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
+        serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
+    }
+
+    /// The oldest version that holds the project: 2 with the soft PLC's
+    /// boxes or variables, else 1.
+    pub fn needed_version(&self) -> u32 {
+        let words = !self.ladder.variables.is_empty()
+            || self
+                .ladder
+                .rungs
+                .iter()
+                .any(|r| r.elements().any(|(_, e)| e.block().is_some()));
+        if words {
+            2
+        } else {
+            1
+        }
     }
 }
 

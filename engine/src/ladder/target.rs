@@ -153,6 +153,8 @@ pub enum ElementError {
     },
     /// A plain or inverted coil on an IO86A counter (it needs its set value).
     Io86aCounterCoil(String),
+    /// A soft PLC box that is not one (why, in words).
+    Block(String),
 }
 
 impl fmt::Display for ElementError {
@@ -185,6 +187,7 @@ impl fmt::Display for ElementError {
                 f,
                 "a {kind} coil on {device} has no meaning on MINASEC-U: drive it with a normal coil (a reset coil on C0 clears the count)"
             ),
+            ElementError::Block(why) => f.write_str(why),
             ElementError::Io86aCounterCoil(d) => write!(
                 f,
                 "a plain coil cannot drive counter {d}: use a counter coil with its set value (OUT {d} K10), or a set/reset coil"
@@ -227,6 +230,17 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
         }
         Element::Mov { .. } | Element::Cmp { .. } | Element::Inc { .. } | Element::Dec { .. } => {
             check_data_box(machine, element)
+        }
+        Element::Block(b) | Element::OutputBlock(b) => {
+            if machine != MachineId::SoftPlc {
+                return Err(ElementError::Lacks {
+                    machine,
+                    what: format!("{} box", b.kind()),
+                    why: ": functions and blocks on words are the soft PLC's",
+                });
+            }
+            b.check().map_err(ElementError::Block)?;
+            Ok(element.clone())
         }
     }
 }

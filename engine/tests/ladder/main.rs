@@ -18,3 +18,4 @@ mod soft_seeds;
 mod source_map;
 mod strategies;
 mod why;
+mod words;

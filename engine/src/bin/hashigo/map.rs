@@ -24,6 +24,14 @@ pub fn map(rest: &[String]) -> Result<(), Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
+    if machine == MachineId::SoftPlc {
+        // Its variables keep their names and addresses: nothing to map.
+        println!(
+            "# {} runs on soft-plc with no map: every variable keeps its name and address",
+            source.name
+        );
+        return Ok(());
+    }
     let root = dom::parse(&source.text)
         .map_err(|e| one(format!("{}:{}: {}", source.name, e.line, e.error)))?;
     let xml = XmlOptions::read(&args)?;

@@ -96,7 +96,7 @@ pub fn compile_listing(
             accumulator::compile_mapped(&logic, machine, options)?
         }
         MachineId::Io86a | MachineId::ArduinoPlc => stack::compile_mapped(&logic, machine)?,
-        MachineId::SoftPlc => il::compile_mapped(&logic)?,
+        MachineId::SoftPlc => il::compile_mapped(&logic, &ladder.variables)?,
     };
     let mut sources: Vec<LeafSource> = Vec::new();
     for &(i, pos, line) in &mapped.sources {

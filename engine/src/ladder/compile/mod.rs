@@ -55,6 +55,9 @@ pub fn compile(
     options: Options,
 ) -> Result<String, Vec<LadderError>> {
     let logic = ladder.logic(machine)?;
+    if machine == MachineId::SoftPlc {
+        return il::compile_mapped(&logic, &ladder.variables).map(|m| m.text);
+    }
     compile_logic(&logic, machine, options)
 }
 
@@ -67,7 +70,7 @@ pub fn compile_logic(
     match machine {
         MachineId::MinasecU | MachineId::AvrPlc => accumulator::compile(rungs, machine, options),
         MachineId::Io86a | MachineId::ArduinoPlc => stack::compile(rungs, machine),
-        MachineId::SoftPlc => il::compile_mapped(rungs).map(|m| m.text),
+        MachineId::SoftPlc => il::compile_mapped(rungs, &[]).map(|m| m.text),
     }
 }
 

@@ -19,6 +19,7 @@ pub fn align_outputs(ladder: &Ladder, column: usize) -> Ladder {
             .map(|r| align_rung(r, column).unwrap_or_else(|| r.clone()))
             .collect(),
         device_comments: ladder.device_comments.clone(),
+        variables: ladder.variables.clone(),
     }
 }
 

@@ -122,6 +122,13 @@ fn devices(e: &Element) -> Vec<(&str, UseRole)> {
         Element::Mov { src, dst } => vec![(src, UseRole::Box), (dst, UseRole::Box)],
         Element::Cmp { a, b } => vec![(a, UseRole::Box), (b, UseRole::Box)],
         Element::Inc { dst } | Element::Dec { dst } => vec![(dst, UseRole::Box)],
+        Element::Block(b) | Element::OutputBlock(b) => b
+            .inputs
+            .iter()
+            .chain(&b.outputs)
+            .map(|(_, o)| (o.as_str(), UseRole::Box))
+            .filter(|(o, _)| crate::ladder::block::is_variable(o))
+            .collect(),
         Element::Wire | Element::Not | Element::Edge { .. } | Element::Timer { .. } => Vec::new(),
     }
 }
@@ -273,6 +280,11 @@ pub fn replace_plan(ladder: &Ladder, from: &str, to: &str) -> Result<Vec<Replace
                     swap(b);
                 }
                 Element::Inc { dst } | Element::Dec { dst } => swap(dst),
+                Element::Block(b) | Element::OutputBlock(b) => {
+                    for (_, o) in b.inputs.iter_mut().chain(b.outputs.iter_mut()) {
+                        swap(o);
+                    }
+                }
                 Element::Wire | Element::Not | Element::Edge { .. } | Element::Timer { .. } => {}
             }
             if &changed != e {

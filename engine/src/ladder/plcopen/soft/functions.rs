@@ -8,7 +8,7 @@ use crate::softplc::data::DataType;
 
 /// An operand and its type (`None`: an untyped literal).
 #[derive(Clone, Debug, PartialEq)]
-pub(super) struct Operand {
+pub(crate) struct Operand {
     pub text: String,
     pub ty: Option<DataType>,
     pub literal: bool,
@@ -47,7 +47,7 @@ impl Operand {
 
 /// A standard function the soft PLC's IL has.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Function {
+pub(crate) enum Function {
     /// ADD, SUB, MUL, DIV, MOD, AND, OR, XOR, MAX, MIN: the IL operator
     /// applied to each input after the first (`n` ≥ 2; SUB, DIV, MOD 2).
     Fold(&'static str, bool),

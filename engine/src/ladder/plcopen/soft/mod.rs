@@ -9,7 +9,7 @@
 
 mod declare;
 mod emit;
-mod functions;
+pub(crate) mod functions;
 mod graph;
 
 use std::fmt;

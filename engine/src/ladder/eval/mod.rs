@@ -9,12 +9,17 @@
 //! [`FlowState`] maps that place to a device handle of its own, so no
 //! name is looked up while a scan runs.
 
+mod words;
+
 use std::collections::HashMap;
 
+use super::block::BlockCall;
 use super::element::{CoilKind, ContactKind, Element};
 use super::grid::{LadderError, Pos};
 use super::net::{Net, RungLogic};
+use super::variables::Variable;
 use crate::scan_timer::ScanTimer;
+use crate::softplc::data::Data;
 
 /// Power into and out of one element in the last evaluation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,6 +41,12 @@ pub trait FlowState {
     fn edge_memory(&mut self, rung: usize, leaf: usize) -> &mut bool;
     /// The in-line timer at `leaf`, when timers are simulated.
     fn timer(&mut self, rung: usize, leaf: usize) -> Option<&mut ScanTimer>;
+    /// The soft PLC box at `leaf` run with `power`: its power out (where
+    /// word data is not simulated, the power passes).
+    fn block(&mut self, rung: usize, leaf: usize, call: &BlockCall, power: bool) -> bool {
+        let _ = (rung, leaf, call);
+        power
+    }
 }
 
 /// Evaluates rung `rung`'s condition and returns the power reaching its
@@ -132,6 +143,7 @@ impl Walk<'_> {
                     None => false,
                 }
             }
+            Element::Block(b) => self.state.block(rung, leaf, b, pin),
             _ => pin,
         }
     }
@@ -149,8 +161,6 @@ pub fn preset_scans(preset_ms: u32, scan_ms: u32) -> u16 {
 pub struct Reference {
     rungs: Vec<RungLogic>,
     scan_ms: u32,
-    /// Device names to their index in `state.bits`.
-    names: HashMap<String, usize>,
     /// Each output's device index, per rung (`None` for outputs that
     /// drive no bit).
     outputs: Vec<Vec<Option<usize>>>,
@@ -168,6 +178,37 @@ struct RefState {
     /// Per rung, per leaf: edge memories and timers.
     memory: Vec<Vec<bool>>,
     timers: Vec<Vec<ScanTimer>>,
+    /// Device names to their index in `bits`.
+    names: HashMap<String, usize>,
+    /// The soft PLC's word data and block instances.
+    words: words::Words,
+    /// The scan's time (ns): the scans run times the scan period.
+    now: i64,
+}
+
+impl RefState {
+    /// The index of device `name`, added (off) if new.
+    fn device(&mut self, name: &str) -> usize {
+        if let Some(&i) = self.names.get(name) {
+            return i;
+        }
+        self.bits.push(false);
+        let i = self.bits.len() - 1;
+        self.names.insert(name.to_string(), i);
+        i
+    }
+}
+
+impl words::Bits for RefState {
+    fn get_bit(&mut self, name: &str) -> bool {
+        let i = self.device(name);
+        self.bits[i]
+    }
+
+    fn set_bit(&mut self, name: &str, on: bool) {
+        let i = self.device(name);
+        self.bits[i] = on;
+    }
 }
 
 impl FlowState for RefState {
@@ -181,6 +222,12 @@ impl FlowState for RefState {
     fn timer(&mut self, rung: usize, leaf: usize) -> Option<&mut ScanTimer> {
         Some(&mut self.timers[rung][leaf])
     }
+    fn block(&mut self, _rung: usize, _leaf: usize, call: &BlockCall, power: bool) -> bool {
+        let mut words = std::mem::take(&mut self.words);
+        let out = words.run(call, power, self.now, self);
+        self.words = words;
+        out
+    }
 }
 
 impl Reference {
@@ -192,7 +239,10 @@ impl Reference {
         let mut errors = Vec::new();
         for (i, r) in rungs.iter().enumerate() {
             for (e, p) in &r.outputs {
-                if !matches!(e, Element::Coil { .. } | Element::Pulse { .. }) {
+                if !matches!(
+                    e,
+                    Element::Coil { .. } | Element::Pulse { .. } | Element::OutputBlock(_)
+                ) {
                     errors.push(LadderError::at(
                         i,
                         *p,
@@ -207,7 +257,6 @@ impl Reference {
         let mut r = Reference {
             rungs: Vec::new(),
             scan_ms,
-            names: HashMap::new(),
             outputs: Vec::new(),
             pulse_memory: Vec::new(),
             state: RefState::default(),
@@ -255,13 +304,24 @@ impl Reference {
 
     /// The index of device `name`, added (off) if new.
     fn device(&mut self, name: &str) -> usize {
-        if let Some(&i) = self.names.get(name) {
-            return i;
-        }
-        self.state.bits.push(false);
-        let i = self.state.bits.len() - 1;
-        self.names.insert(name.to_string(), i);
-        i
+        self.state.device(name)
+    }
+
+    /// The same run with the soft PLC's declared variables (word data
+    /// and block instances, issue #30).
+    pub fn with_variables(mut self, variables: &[Variable]) -> Reference {
+        self.state.words = words::Words::new(variables);
+        self
+    }
+
+    /// Sets a word variable or address (an input, between scans).
+    pub fn set_value(&mut self, name: &str, value: Data) {
+        self.state.words.set(name, value);
+    }
+
+    /// A word variable's value, if `name` is one.
+    pub fn value(&self, name: &str) -> Option<Data> {
+        self.state.words.get(name)
     }
 
     /// Sets a bit device (an input, between scans).
@@ -272,16 +332,24 @@ impl Reference {
 
     /// A bit device's state.
     pub fn get(&self, device: &str) -> bool {
-        self.names.get(device).is_some_and(|&i| self.state.bits[i])
+        self.state
+            .names
+            .get(device)
+            .is_some_and(|&i| self.state.bits[i])
     }
 
     /// Runs one scan; returns every element's power, rung by rung.
     pub fn scan(&mut self) -> Vec<Vec<ElementPower>> {
         let mut all = Vec::with_capacity(self.rungs.len());
+        self.state.now += i64::from(self.scan_ms) * 1_000_000;
         for (i, logic) in self.rungs.iter().enumerate() {
             let mut report = Vec::new();
             let power = power_flow(logic, i, &mut self.state, self.scan_ms, &mut report);
             for (k, (e, _)) in logic.outputs.iter().enumerate() {
+                if let Element::OutputBlock(b) = e {
+                    self.state.block(i, usize::MAX, b, power);
+                    continue;
+                }
                 let Some(device) = self.outputs[i][k] else {
                     continue;
                 };

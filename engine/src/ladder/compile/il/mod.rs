@@ -8,13 +8,17 @@
 //! rung's start. Every name the ladder uses is declared BOOL in the
 //! header; addresses (`%IX0.0`) need no declaration.
 
-use std::collections::BTreeSet;
+mod blocks;
+
+use std::collections::{BTreeSet, HashMap};
 
 use super::accumulator::one_line;
-use super::{used_devices, Mapped};
+use super::{is_pure, used_devices, Mapped};
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{LadderError, Pos};
 use crate::ladder::net::{Net, RungLogic};
+use crate::ladder::variables::Variable;
+use crate::softplc::data::DataType;
 
 /// Where the power into a network comes from.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,6 +34,13 @@ enum Pin {
 struct Compiler {
     /// Declarations of the header (`name : TYPE;`).
     vars: Vec<String>,
+    /// The `VAR_RETAIN` ones.
+    retained: Vec<String>,
+    /// Each declared name's (upper-case) type, and each located
+    /// variable's address (as IEC writes it).
+    types: HashMap<String, DataType>,
+    /// Block instances (upper-case) and their kinds.
+    blocks: HashMap<String, String>,
     /// The IL lines.
     lines: Vec<String>,
     /// Names the ladder uses, and those generated (never given twice).
@@ -41,19 +52,30 @@ struct Compiler {
     sources: Vec<(usize, Pos, usize)>,
 }
 
-/// Compiles checked rung logic for the soft PLC.
-pub(crate) fn compile_mapped(rungs: &[RungLogic]) -> Result<Mapped, Vec<LadderError>> {
+/// Compiles checked rung logic for the soft PLC with the ladder's
+/// declared `variables`.
+pub(crate) fn compile_mapped(
+    rungs: &[RungLogic],
+    variables: &[Variable],
+) -> Result<Mapped, Vec<LadderError>> {
     let used = used_devices(rungs);
     let mut c = Compiler {
         vars: Vec::new(),
+        retained: Vec::new(),
+        types: HashMap::new(),
+        blocks: HashMap::new(),
         lines: Vec::new(),
         taken: used.iter().map(|d| d.to_ascii_uppercase()).collect(),
         instances: BTreeSet::new(),
         rung_index: 0,
         sources: Vec::new(),
     };
+    let mut errors = c.declare(variables);
     for name in used.iter().filter(|d| !d.starts_with('%')) {
-        c.vars.push(format!("{name} : BOOL;"));
+        if !c.types.contains_key(&name.to_ascii_uppercase()) {
+            c.vars.push(format!("{name} : BOOL;"));
+            c.types.insert(name.to_ascii_uppercase(), DataType::Bool);
+        }
     }
     for r in rungs {
         for (e, _) in r.condition.leaves() {
@@ -63,7 +85,6 @@ pub(crate) fn compile_mapped(rungs: &[RungLogic]) -> Result<Mapped, Vec<LadderEr
         }
     }
     let mut starts = Vec::with_capacity(rungs.len());
-    let mut errors = Vec::new();
     for (i, logic) in rungs.iter().enumerate() {
         c.rung_index = i;
         starts.push(c.steps());
@@ -81,9 +102,13 @@ pub(crate) fn compile_mapped(rungs: &[RungLogic]) -> Result<Mapped, Vec<LadderEr
         return Err(errors);
     }
     let mut text = String::from("(* compiled by hashigo from a ladder *)\n");
-    if !c.vars.is_empty() {
-        text.push_str("VAR\n");
-        for v in &c.vars {
+    for (header, vars) in [("VAR", &c.vars), ("VAR_RETAIN", &c.retained)] {
+        if vars.is_empty() {
+            continue;
+        }
+        text.push_str(header);
+        text.push('\n');
+        for v in vars {
             text.push_str(&format!("  {v}\n"));
         }
         text.push_str("END_VAR\n");
@@ -116,14 +141,17 @@ impl Compiler {
         self.lines.push(line);
     }
 
-    /// A fresh name `<stem><n>` declared as `t` (a BOOL or a block);
-    /// generated stems start with `_`.
+    /// A fresh name `<stem><n>` declared as `t` (a BOOL or a block; a
+    /// label when empty); generated stems start with `_`.
     fn fresh(&mut self, stem: &str, t: &str) -> String {
         let mut n = 0;
         loop {
             let name = format!("{stem}{n}");
             if self.taken.insert(name.to_ascii_uppercase()) {
-                self.vars.push(format!("{name} : {t};"));
+                // A label (no type) is not declared.
+                if !t.is_empty() {
+                    self.vars.push(format!("{name} : {t};"));
+                }
                 return name;
             }
             n += 1;
@@ -134,9 +162,25 @@ impl Compiler {
         let cond = self.edges(&logic.condition);
         self.net(&cond, Pin::Rail)
             .map_err(|m| (logic.condition.first_pos(), m))?;
-        // The power, held for pulse outputs (R_TRIG / F_TRIG on it).
+        // The power, held for pulse outputs (R_TRIG / F_TRIG on it) and
+        // output boxes (which leave their own result).
         let mut held: Option<String> = None;
         for (e, pos) in &logic.outputs {
+            if let Element::OutputBlock(b) = e {
+                let power = match &held {
+                    Some(p) => p.clone(),
+                    None => {
+                        let p = self.fresh("_p", "BOOL");
+                        self.emit(format!("ST {p}"));
+                        held = Some(p.clone());
+                        p
+                    }
+                };
+                self.block(b, *pos, Pin::Held(power.clone()))
+                    .map_err(|m| (*pos, m))?;
+                self.emit(format!("LD {power}"));
+                continue;
+            }
             if let Element::Pulse { falling, device } = e {
                 let power = match &held {
                     Some(p) => p.clone(),
@@ -209,7 +253,7 @@ impl Compiler {
     }
 
     fn parallel(&mut self, branches: &[Net], pin: Pin) -> Result<(), String> {
-        let pure = branches.iter().all(super::is_pure);
+        let pure = branches.iter().all(is_pure);
         match pin {
             // Contacts only, after a power held in the current result:
             // AND( the branches ).
@@ -294,6 +338,10 @@ impl Compiler {
                 };
                 let pt = format!(", PT := T#{preset_ms}ms");
                 self.call_on_power(&instance, "IN", &pt, chained, pos)?;
+            }
+            Element::Block(b) => {
+                let power = if chained { Pin::Current } else { Pin::Rail };
+                self.block(b, pos, power)?
             }
             other => return Err(format!("{other} cannot stand in a soft-plc rung")),
         }

@@ -5,6 +5,8 @@
 //! against what is left, inflation is capped, and the result is a
 //! [`Project`] or an error naming the byte where the data went wrong.
 
+mod words;
+
 use std::collections::BTreeMap;
 use std::fmt;
 
@@ -23,6 +25,9 @@ use crate::MachineId;
 pub const PREFIX: &str = "1.";
 /// The prefix of a link that also carries test cases (and the exercise flag).
 pub const PREFIX_TESTS: &str = "2.";
+/// The prefix of a link with the soft PLC's boxes or variables: a
+/// version 2 link followed by the variables.
+pub const PREFIX_WORDS: &str = "3.";
 /// The most bytes a share text may inflate to.
 const MAX_INFLATED: usize = 1 << 20;
 /// Grid limits a decoded rung must respect (the editor's own).
@@ -139,7 +144,8 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
             put_len(&mut w, l.col);
         }
     }
-    let prefix = if project.tests.is_empty() && !project.exercise {
+    let words = words::needed(&project.ladder);
+    let prefix = if project.tests.is_empty() && !project.exercise && !words {
         PREFIX
     } else {
         w.push(u8::from(project.exercise));
@@ -152,7 +158,12 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
                 put_str(&mut w, line);
             }
         }
-        PREFIX_TESTS
+        if words {
+            words::put_variables(&mut w, &project.ladder.variables);
+            PREFIX_WORDS
+        } else {
+            PREFIX_TESTS
+        }
     };
     Ok(format!(
         "{prefix}{}",
@@ -166,10 +177,12 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if text.len() > crate::limits::MAX_SHARE_FRAGMENT {
         return Err(ShareError::TooLong(text.len()));
     }
-    let with_tests = text.starts_with(PREFIX_TESTS);
+    let with_words = text.starts_with(PREFIX_WORDS);
+    let with_tests = with_words || text.starts_with(PREFIX_TESTS);
     let Some(body) = text
         .strip_prefix(PREFIX)
         .or_else(|| text.strip_prefix(PREFIX_TESTS))
+        .or_else(|| text.strip_prefix(PREFIX_WORDS))
     else {
         let version = text
             .split('.')
@@ -202,6 +215,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
         Ladder {
             rungs,
             device_comments,
+            variables: Vec::new(),
         },
     );
     if with_tests {
@@ -211,6 +225,9 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
             _ => return Err(r.bad("the exercise flag is neither 0 nor 1")),
         };
         project.tests = r.cases()?;
+    }
+    if with_words {
+        project.ladder.variables = r.variables()?;
     }
     if r.at != data.len() {
         return Err(r.bad("data after the last rung"));
@@ -257,7 +274,8 @@ fn put_map(w: &mut Vec<u8>, m: &BTreeMap<String, String>) {
 
 // Cell tags: 0 empty, 1 wire, 2-5 contacts, 6-9 coils, 10 NOT, 11-12
 // R_TRIG/F_TRIG, 13-15 TON/TOF/TP, 16-17 PLS/PLF, 18 timer coil,
-// 19 counter coil, 20 MOV, 21 CMP, 22 INC, 23 DEC.
+// 19 counter coil, 20 MOV, 21 CMP, 22 INC, 23 DEC, 24-25 the soft PLC's
+// in-line and output boxes (version 3: words.rs).
 fn put_cell(w: &mut Vec<u8>, cell: Option<&Element>) {
     let Some(e) = cell else {
         w.push(0);
@@ -305,6 +323,10 @@ fn put_cell(w: &mut Vec<u8>, cell: Option<&Element>) {
             });
             put_str(w, a);
             put_str(w, b);
+        }
+        Element::Block(b) | Element::OutputBlock(b) => {
+            w.push(words::BLOCK + u8::from(matches!(e, Element::OutputBlock(_))));
+            words::put_block(w, b);
         }
         Element::Inc { dst } | Element::Dec { dst } => {
             w.push(if matches!(e, Element::Inc { .. }) {
@@ -518,6 +540,7 @@ impl Reader<'_> {
             23 => Element::Dec {
                 dst: self.string()?,
             },
+            24 | 25 => self.block(tag)?,
             _ => return Err(self.bad("an unknown element")),
         }))
     }

@@ -1,0 +1,240 @@
+//! The soft PLC's functions and function blocks in a rung (issue #30):
+//! a box with one power input and one power output, its other pins wired
+//! to operands (a variable, an address, a literal).
+//!
+//! - A function (ADD, MOVE, SEL, INT_TO_DINT …) runs while power reaches
+//!   its EN and passes the power on (ENO); while off it does not run and
+//!   the variables its outputs write keep their values.
+//! - A comparison (GT … LT) passes the power on while it holds (and may
+//!   also write its result to a variable).
+//! - A function block (TON, CTU, R_TRIG, SR …) takes the power at its
+//!   first BOOL input (IN, CU, CD, CLK, S1, S) and gives out its first
+//!   BOOL output (Q, QU, Q1); it runs every scan, its instance keeping
+//!   its state.
+//!
+//! A box stands in a rung's condition ([`super::Element::Block`]) or at
+//! its right end ([`super::Element::OutputBlock`], power out to nothing).
+
+use std::fmt;
+
+use serde::{Deserialize, Serialize};
+
+use crate::softplc::data::DataType;
+use crate::softplc::pins;
+use crate::softplc::vars::{is_identifier, BLOCK_TYPES};
+use crate::softplc::{parse_literal, Address};
+
+/// One box: what it calls and what its pins are wired to.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub struct BlockCall {
+    /// The function or block type (`ADD`, `GT`, `TON`, `INT_TO_DINT`).
+    pub kind: String,
+    /// A function block's instance (`TON0`); empty for a function.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub instance: String,
+    /// Input pins other than the power's, with their operands.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub inputs: Vec<(String, String)>,
+    /// Output pins with the variables they write.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub outputs: Vec<(String, String)>,
+}
+
+/// What sort of box a kind is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// A function run while EN has power; its data inputs in order and
+    /// whether it takes two or more of them (ADD IN1, IN2, IN3 …).
+    Function(&'static [&'static str], bool),
+    /// A comparison of IN1 and IN2.
+    Compare,
+    /// A standard function block.
+    FunctionBlock,
+}
+
+/// The functions a box can call and their data inputs.
+const FUNCTIONS: &[(&str, &[&str], bool)] = &[
+    ("ADD", &["IN1", "IN2"], true),
+    ("MUL", &["IN1", "IN2"], true),
+    ("SUB", &["IN1", "IN2"], false),
+    ("DIV", &["IN1", "IN2"], false),
+    ("MOD", &["IN1", "IN2"], false),
+    ("AND", &["IN1", "IN2"], true),
+    ("OR", &["IN1", "IN2"], true),
+    ("XOR", &["IN1", "IN2"], true),
+    ("MAX", &["IN1", "IN2"], true),
+    ("MIN", &["IN1", "IN2"], true),
+    ("NOT", &["IN"], false),
+    ("NEG", &["IN"], false),
+    ("MOVE", &["IN"], false),
+    ("SEL", &["G", "IN0", "IN1"], false),
+    ("LIMIT", &["MN", "IN", "MX"], false),
+    ("SHL", &["IN", "N"], false),
+    ("SHR", &["IN", "N"], false),
+    ("ROL", &["IN", "N"], false),
+    ("ROR", &["IN", "N"], false),
+];
+
+/// The comparisons.
+pub const COMPARISONS: [&str; 6] = ["GT", "GE", "EQ", "NE", "LE", "LT"];
+
+impl BlockCall {
+    /// The kind, upper-case.
+    pub fn kind(&self) -> String {
+        self.kind.trim().to_ascii_uppercase()
+    }
+
+    /// What sort of box it is; `None` for a kind the soft PLC lacks.
+    pub fn shape(&self) -> Option<Shape> {
+        let kind = self.kind();
+        if COMPARISONS.contains(&kind.as_str()) {
+            return Some(Shape::Compare);
+        }
+        if BLOCK_TYPES.contains(&kind.as_str()) {
+            return Some(Shape::FunctionBlock);
+        }
+        if let Some(&(_, pins, many)) = FUNCTIONS.iter().find(|(k, ..)| *k == kind) {
+            return Some(Shape::Function(pins, many));
+        }
+        let (from, to) = kind.split_once("_TO_")?;
+        (DataType::from_name(from).is_some() && DataType::from_name(to).is_some())
+            .then_some(Shape::Function(&["IN"], false))
+    }
+
+    /// The pin the power enters: EN, or a block's first BOOL input.
+    pub fn power_in(&self) -> &'static str {
+        match self.shape() {
+            Some(Shape::FunctionBlock) => {
+                pins::inputs(&self.kind()).first().map_or("EN", |(p, _)| *p)
+            }
+            _ => "EN",
+        }
+    }
+
+    /// The pin the power leaves by: ENO, a comparison's OUT, a block's
+    /// first BOOL output.
+    pub fn power_out(&self) -> &'static str {
+        match self.shape() {
+            Some(Shape::FunctionBlock) => pins::outputs(&self.kind())
+                .first()
+                .map_or("ENO", |(p, _)| *p),
+            Some(Shape::Compare) => "OUT",
+            _ => "ENO",
+        }
+    }
+
+    /// The operand of input `pin` (any case).
+    pub fn input(&self, pin: &str) -> Option<&str> {
+        self.inputs
+            .iter()
+            .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+            .map(|(_, o)| o.trim())
+    }
+
+    /// The data inputs in order: a function's IN1, IN2, … (as many as
+    /// given, for one that takes more), a block's other inputs.
+    pub fn data_pins(&self) -> Vec<String> {
+        match self.shape() {
+            Some(Shape::Function(pins, true)) => {
+                let n = self.inputs.len().max(pins.len());
+                (1..=n).map(|i| format!("IN{i}")).collect()
+            }
+            Some(Shape::Function(pins, false)) => pins.iter().map(|p| p.to_string()).collect(),
+            Some(Shape::Compare) => vec!["IN1".into(), "IN2".into()],
+            Some(Shape::FunctionBlock) => pins::inputs(&self.kind())
+                .iter()
+                .skip(1)
+                .map(|(p, _)| p.to_string())
+                .collect(),
+            None => Vec::new(),
+        }
+    }
+
+    /// Why the box is not one the soft PLC runs: an unknown kind, a
+    /// missing or unknown pin, an operand that is no name, address or
+    /// literal, a function block without an instance.
+    pub fn check(&self) -> Result<(), String> {
+        let kind = self.kind();
+        let shape = self
+            .shape()
+            .ok_or_else(|| format!("{kind} is not a function or block the soft PLC has"))?;
+        if shape == Shape::FunctionBlock {
+            if !is_identifier(&self.instance) {
+                return Err(format!("a {kind} box needs an instance name (TON0)"));
+            }
+        } else if !self.instance.is_empty() {
+            return Err(format!("{kind} is a function: it has no instance"));
+        }
+        let pins = self.data_pins();
+        for (pin, operand) in &self.inputs {
+            if !pins.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
+                return Err(format!(
+                    "{kind} has no input {pin} (it takes {})",
+                    pins.join(", ")
+                ));
+            }
+            operand_ok(operand)?;
+        }
+        // A block's inputs may be left to keep their values; a
+        // function's may not.
+        if shape != Shape::FunctionBlock {
+            if let Some(missing) = pins.iter().find(|p| self.input(p).is_none()) {
+                return Err(format!("{kind}'s {missing} is not wired"));
+            }
+        }
+        for (pin, variable) in &self.outputs {
+            let known = match shape {
+                Shape::FunctionBlock => pins::outputs(&kind)
+                    .iter()
+                    .any(|(p, _)| p.eq_ignore_ascii_case(pin)),
+                _ => pin.eq_ignore_ascii_case("OUT"),
+            };
+            if !known {
+                return Err(format!("{kind} has no output {pin}"));
+            }
+            if !is_variable(variable) {
+                return Err(format!(
+                    "{kind}'s {pin} writes {variable:?}: a variable or an address"
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Whether `text` names a variable or a located address.
+pub fn is_variable(text: &str) -> bool {
+    let text = text.trim();
+    if text.starts_with('%') {
+        return Address::parse(text).is_ok();
+    }
+    is_identifier(text) && !text.eq_ignore_ascii_case("TRUE") && !text.eq_ignore_ascii_case("FALSE")
+}
+
+/// A pin's operand: a variable, an address or an IEC literal.
+fn operand_ok(text: &str) -> Result<(), String> {
+    if is_variable(text) || parse_literal(text, None).is_ok() {
+        Ok(())
+    } else {
+        Err(format!(
+            "`{text}` is not a variable, an address or a literal"
+        ))
+    }
+}
+
+impl fmt::Display for BlockCall {
+    /// `ADD(IN1 := a, IN2 := 1, OUT => b)`, a block's instance first
+    /// (`TON0: TON(PT := T#1s)`).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if !self.instance.is_empty() {
+            write!(f, "{}: ", self.instance)?;
+        }
+        let params: Vec<String> = self
+            .inputs
+            .iter()
+            .map(|(p, o)| format!("{p} := {o}"))
+            .chain(self.outputs.iter().map(|(p, v)| format!("{p} => {v}")))
+            .collect();
+        write!(f, "{}({})", self.kind(), params.join(", "))
+    }
+}

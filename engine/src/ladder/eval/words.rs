@@ -1,0 +1,293 @@
+//! The reference evaluator's word data (issue #30): the soft PLC's boxes
+//! run by the book on typed values, with the meaning `ladder::block`
+//! states. It shares the soft PLC's arithmetic (`softplc::data`, tested
+//! on its own) and block state machines, not its compiler or its IL:
+//! what the differential tests compare is the compiled program against
+//! this.
+
+use std::cmp::Ordering;
+use std::collections::HashMap;
+
+use crate::ladder::block::{BlockCall, Shape};
+use crate::ladder::variables::Variable;
+use crate::softplc::data::{self, Arith, Bitwise, Data, DataType, Shift};
+use crate::softplc::pins::{self, Instance};
+use crate::softplc::{parse_literal, Address};
+
+/// Typed values by name (upper-case; a located variable also by its
+/// address) and block instances; BOOLs live in the evaluator's bits.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Words {
+    /// Every declared name and address: its type and, for a word, its
+    /// value (a BOOL's value is its bit).
+    values: HashMap<String, Data>,
+    /// Located names: the address (as IEC writes it) → the name.
+    located: HashMap<String, String>,
+    instances: HashMap<String, Instance>,
+    /// Block instance kinds declared.
+    kinds: HashMap<String, String>,
+}
+
+/// Where a box's BOOLs are: the evaluator's bits by name.
+pub(super) trait Bits {
+    fn get_bit(&mut self, name: &str) -> bool;
+    fn set_bit(&mut self, name: &str, on: bool);
+}
+
+impl Words {
+    /// The ladder's declared variables at their start values.
+    pub fn new(variables: &[Variable]) -> Words {
+        let mut w = Words::default();
+        for v in variables {
+            let upper = v.name.to_ascii_uppercase();
+            match v.elementary() {
+                Some(t) => {
+                    let init = parse_literal(&v.initial, Some(t)).unwrap_or(t.zero());
+                    w.values.insert(upper.clone(), init);
+                    if let Ok(a) = Address::parse(&v.address) {
+                        w.located.insert(a.to_string(), upper);
+                    }
+                }
+                None => {
+                    w.kinds
+                        .insert(upper, v.data_type.trim().to_ascii_uppercase());
+                }
+            }
+        }
+        w
+    }
+
+    /// The storage key and type of a name or address.
+    fn key(&self, text: &str) -> Option<(String, DataType)> {
+        let text = text.trim();
+        let key = if text.starts_with('%') {
+            let a = Address::parse(text).ok()?;
+            match self.located.get(&a.to_string()) {
+                Some(name) => name.clone(),
+                None => return Some((a.to_string(), a.default_type()?)),
+            }
+        } else {
+            text.to_ascii_uppercase()
+        };
+        let t = self.values.get(&key)?.data_type();
+        Some((key, t))
+    }
+
+    /// The spelling the bits use for a BOOL name (as written).
+    fn read(&mut self, text: &str, want: Option<DataType>, bits: &mut dyn Bits) -> Option<Data> {
+        match self.key(text) {
+            Some((_, DataType::Bool)) => Some(Data::Bool(bits.get_bit(text.trim()))),
+            Some((key, t)) => Some(*self.values.entry(key).or_insert(t.zero())),
+            None => {
+                let d = parse_literal(text, None).ok()?;
+                let typed =
+                    text.contains('#') || text.contains('.') || d.data_type().bits().is_none();
+                if typed {
+                    return Some(d);
+                }
+                match want {
+                    Some(DataType::Bool) => Some(Data::Bool(d.is_on())),
+                    Some(t) if t.bits().is_some() => Some(d.convert(t)),
+                    Some(DataType::Real) => Some(d.convert(DataType::Real)),
+                    _ => Some(d),
+                }
+            }
+        }
+    }
+
+    fn write(&mut self, text: &str, value: Data, bits: &mut dyn Bits) {
+        match self.key(text) {
+            Some((_, DataType::Bool)) => bits.set_bit(text.trim(), value.is_on()),
+            Some((key, _)) => {
+                self.values.insert(key, value);
+            }
+            None => bits.set_bit(text.trim(), value.is_on()),
+        }
+    }
+
+    /// Sets a variable or address from outside (a test's input).
+    pub fn set(&mut self, text: &str, value: Data) {
+        if let Some((key, _)) = self.key(text) {
+            self.values.insert(key, value);
+        }
+    }
+
+    /// A word's value, if `text` names one.
+    pub fn get(&self, text: &str) -> Option<Data> {
+        let (key, _) = self.key(text)?;
+        self.values.get(&key).copied()
+    }
+
+    /// Box `b` with power `power` at time `now` (ns): its power out.
+    pub fn run(&mut self, b: &BlockCall, power: bool, now: i64, bits: &mut dyn Bits) -> bool {
+        let kind = b.kind();
+        match b.shape() {
+            Some(Shape::FunctionBlock) => self.function_block(b, &kind, power, now, bits),
+            Some(Shape::Compare) => {
+                let args = self.args(b, bits);
+                let holds = match args.as_slice() {
+                    [x, y] => x.compare(*y).is_some_and(|o| compare(&kind, o)),
+                    _ => false,
+                };
+                power && holds
+            }
+            Some(Shape::Function(..)) => {
+                if power {
+                    let args = self.args(b, bits);
+                    if let Some(result) = function(&kind, &args) {
+                        for (_, v) in &b.outputs {
+                            self.write(v, result, bits);
+                        }
+                    }
+                }
+                power
+            }
+            None => false,
+        }
+    }
+
+    /// A function's or comparison's data inputs, typed as the soft PLC
+    /// types them: the first typed operand's type, literals taking it.
+    fn args(&mut self, b: &BlockCall, bits: &mut dyn Bits) -> Vec<Data> {
+        let pins = b.data_pins();
+        // SEL's G and a shift's N do not share the type.
+        let shared = |pin: &str| !matches!(pin, "G" | "N");
+        let mut ty = None;
+        for pin in pins.iter().filter(|p| shared(p)) {
+            if let Some(text) = b.input(pin) {
+                if let Some((_, t)) = self.key(text) {
+                    ty = Some(t);
+                    break;
+                }
+                if let Ok(d) = parse_literal(text, None) {
+                    if text.contains('#') || text.contains('.') || d.data_type().bits().is_none() {
+                        ty = Some(d.data_type());
+                        break;
+                    }
+                }
+            }
+        }
+        if ty.is_none() {
+            ty = b
+                .outputs
+                .first()
+                .and_then(|(_, v)| self.key(v))
+                .map(|(_, t)| t);
+        }
+        let ty = ty.or(Some(DataType::Dint));
+        pins.iter()
+            .map(|pin| {
+                let want = if shared(pin) {
+                    ty
+                } else if pin == "G" {
+                    Some(DataType::Bool)
+                } else {
+                    None
+                };
+                b.input(pin)
+                    .and_then(|t| self.read(t, want, bits))
+                    .unwrap_or(Data::Bool(false))
+            })
+            .collect()
+    }
+
+    fn function_block(
+        &mut self,
+        b: &BlockCall,
+        kind: &str,
+        power: bool,
+        now: i64,
+        bits: &mut dyn Bits,
+    ) -> bool {
+        let upper = b.instance.to_ascii_uppercase();
+        let ins = pins::inputs(kind);
+        let mut given = vec![Some(Data::Bool(power))];
+        for (pin, t) in ins.iter().skip(1) {
+            given.push(
+                b.input(pin)
+                    .and_then(|text| self.read(text, Some(*t), bits)),
+            );
+        }
+        let instance = self
+            .instances
+            .entry(upper)
+            .or_insert_with(|| Instance::new(kind));
+        for (slot, value) in instance.inputs.iter_mut().zip(given) {
+            if let Some(v) = value {
+                *slot = v;
+            }
+        }
+        instance.call(now);
+        let outs = pins::outputs(kind);
+        let values: Vec<(String, Data)> = b
+            .outputs
+            .iter()
+            .filter_map(|(pin, v)| {
+                let i = outs.iter().position(|(p, _)| p.eq_ignore_ascii_case(pin))?;
+                Some((v.clone(), instance.output(i)))
+            })
+            .collect();
+        let out = instance.output(0).is_on();
+        for (v, d) in values {
+            self.write(&v, d, bits);
+        }
+        out
+    }
+}
+
+fn compare(kind: &str, o: Ordering) -> bool {
+    match kind {
+        "GT" => o == Ordering::Greater,
+        "GE" => o != Ordering::Less,
+        "EQ" => o == Ordering::Equal,
+        "NE" => o != Ordering::Equal,
+        "LE" => o != Ordering::Greater,
+        _ => o == Ordering::Less,
+    }
+}
+
+/// A function of its data inputs (in order), as IEC defines it.
+fn function(kind: &str, args: &[Data]) -> Option<Data> {
+    let fold = |f: &dyn Fn(Data, Data) -> Option<Data>| {
+        let (first, rest) = args.split_first()?;
+        rest.iter().try_fold(*first, |acc, &x| f(acc, x))
+    };
+    let arith = |op| fold(&|a: Data, b| a.arith(op, b));
+    let logic = |op| fold(&|a: Data, b| a.bitwise(op, b));
+    let shift = |op| {
+        let n = args.get(1)?.convert(DataType::Udint).to_value().as_i64();
+        args.first()?
+            .shift(op, u32::try_from(n).unwrap_or(u32::MAX))
+    };
+    match kind {
+        "ADD" => arith(Arith::Add),
+        "SUB" => arith(Arith::Sub),
+        "MUL" => arith(Arith::Mul),
+        "DIV" => arith(Arith::Div),
+        "MOD" => arith(Arith::Mod),
+        "AND" => logic(Bitwise::And),
+        "OR" => logic(Bitwise::Or),
+        "XOR" => logic(Bitwise::Xor),
+        "MAX" => fold(&data::max),
+        "MIN" => fold(&data::min),
+        "NOT" => args.first()?.invert(),
+        "NEG" => args.first()?.negate(),
+        "MOVE" => args.first().copied(),
+        "SEL" => match args {
+            [g, a, b] => Some(data::select(g.is_on(), *a, *b)),
+            _ => None,
+        },
+        "LIMIT" => match args {
+            [mn, x, mx] => data::limit(*mn, *x, *mx),
+            _ => None,
+        },
+        "SHL" => shift(Shift::Shl),
+        "SHR" => shift(Shift::Shr),
+        "ROL" => shift(Shift::Rol),
+        "ROR" => shift(Shift::Ror),
+        _ => {
+            let (_, to) = kind.split_once("_TO_")?;
+            Some(args.first()?.convert(DataType::from_name(to)?))
+        }
+    }
+}
