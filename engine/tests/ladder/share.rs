@@ -126,7 +126,7 @@ fn damaged_links_say_what_is_wrong() {
     let mut seed = Project::from_json(SEED_JSON).expect("seed");
     seed.tests.clear();
     let good = encode(&seed).expect("encodes");
-    assert!(matches!(decode("3.abc"), Err(ShareError::Version(v)) if v == "3"));
+    assert!(matches!(decode("4.abc"), Err(ShareError::Version(v)) if v == "4"));
     assert_eq!(decode("1.***"), Err(ShareError::Base64));
     assert_eq!(decode("1.AAAA"), Err(ShareError::Inflate));
     // Cut short: the data ends inside a rung.
@@ -252,4 +252,50 @@ fn a_rung_too_large_for_a_link_is_refused_when_encoding() {
     let mut p = Project::from_json(SEED_JSON).expect("seed");
     p.ladder.rungs[1].set(Pos::new(63, 63), Some(Element::Wire));
     assert_eq!(decode(&encode(&p).expect("fits")), Ok(p));
+}
+
+#[test]
+fn a_soft_plc_ladder_with_words_travels_in_a_version_3_link_and_a_version_2_file() {
+    use engine::ladder::{BlockCall, Element, Rung, Variable};
+    let add = BlockCall {
+        kind: "ADD".into(),
+        instance: String::new(),
+        inputs: vec![("IN1".into(), "count".into()), ("IN2".into(), "1".into())],
+        outputs: vec![("OUT".into(), "count".into())],
+    };
+    let ton = BlockCall {
+        kind: "TON".into(),
+        instance: "t0".into(),
+        inputs: vec![("PT".into(), "T#1s".into())],
+        outputs: Vec::new(),
+    };
+    let mut ladder = Ladder::default();
+    ladder.rungs.push(Rung {
+        comment: String::new(),
+        cells: vec![vec![
+            Some(Element::no("%IX0.0")),
+            Some(Element::Block(ton)),
+            Some(Element::OutputBlock(add)),
+        ]],
+        links: Vec::new(),
+    });
+    let mut count = Variable::new("count", "INT");
+    count.initial = "5".into();
+    count.retain = true;
+    count.comment = "parts".into();
+    ladder.variables.push(count);
+    let project = Project::new(MachineId::SoftPlc, ladder);
+    project.ladder.logic(MachineId::SoftPlc).expect("a valid program");
+    let link = encode(&project).expect("encodes");
+    assert!(link.starts_with("3."), "{link}");
+    assert_eq!(decode(&link), Ok(project.clone()));
+    let json = project.to_json();
+    assert!(json.contains("\"version\": 2"), "{json}");
+    let mut back = Project::from_json(&json).expect("reads");
+    back.version = 1;
+    assert_eq!(back, project);
+    // Without words a project is what older Hashigos read.
+    let plain = Project::new(MachineId::SoftPlc, Ladder::default());
+    assert!(plain.to_json().contains("\"version\": 1"));
+    assert!(encode(&plain).expect("encodes").starts_with("1."));
 }
