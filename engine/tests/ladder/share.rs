@@ -285,7 +285,10 @@ fn a_soft_plc_ladder_with_words_travels_in_a_version_3_link_and_a_version_2_file
     count.comment = "parts".into();
     ladder.variables.push(count);
     let project = Project::new(MachineId::SoftPlc, ladder);
-    project.ladder.logic(MachineId::SoftPlc).expect("a valid program");
+    project
+        .ladder
+        .logic(MachineId::SoftPlc)
+        .expect("a valid program");
     let link = encode(&project).expect("encodes");
     assert!(link.starts_with("3."), "{link}");
     assert_eq!(decode(&link), Ok(project.clone()));

@@ -217,17 +217,31 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
     plc.load_text(&text)
         .map_err(|e| TestCaseError::fail(format!("{e}\n{text}")))?;
     plc.set_tracing(true);
+    // The same ladder exported as PLCopen (what OpenPLC Editor opens)
+    // and read back onto the soft PLC as written.
+    let xml = engine::ladder::plcopen::export(&ladder, "words")
+        .map_err(|e| TestCaseError::fail(format!("export: {e:?}")))?;
+    let again = engine::ladder::plcopen::soft::to_il(&xml, None)
+        .map_err(|e| TestCaseError::fail(format!("{e:?}\n{xml}")))?;
+    let mut other = new_plc(MachineId::SoftPlc);
+    other
+        .load_text(&again.text)
+        .map_err(|e| TestCaseError::fail(format!("{e}\n{}", again.text)))?;
     for (j, inputs) in timeline.iter().enumerate() {
         let t = SimTime::from_millis(10 * j as u64 + 5);
         plc.run_until(t);
+        other.run_until(t);
         for (d, &on) in INPUTS.iter().zip(inputs) {
             reference.set(d, on);
-            // An input the program does not use is not the soft PLC's.
-            let Ok(dev) = plc.device(d) else { continue };
-            plc.apply(Command::SetInput(dev, InputValue::Int(i64::from(on))))
-                .map_err(|e| TestCaseError::fail(e.to_string()))?;
+            for m in [&mut plc, &mut other] {
+                // An input the program does not use is not the soft PLC's.
+                let Ok(dev) = m.device(d) else { continue };
+                m.apply(Command::SetInput(dev, InputValue::Int(i64::from(on))))
+                    .map_err(|e| TestCaseError::fail(e.to_string()))?;
+            }
         }
         plc.run_until(t + SimTime::from_millis(10));
+        other.run_until(t + SimTime::from_millis(10));
         let want: Vec<Vec<(bool, bool)>> = reference
             .scan()
             .iter()
@@ -258,6 +272,29 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
             );
             let want = reference.value(w).map(|d| d.to_value());
             prop_assert_eq!(Some(got), want, "scan {}: {}\n{}", j, w, text);
+            if let Ok(dev) = other.device(w) {
+                prop_assert_eq!(
+                    other.read(dev),
+                    got,
+                    "scan {}: {} via PLCopen\n{}\n{}",
+                    j,
+                    w,
+                    xml,
+                    again.text
+                );
+            }
+        }
+        for d in BITS {
+            if let (Ok(a), Ok(b)) = (plc.device(d), other.device(d)) {
+                prop_assert_eq!(
+                    plc.read(a),
+                    other.read(b),
+                    "scan {}: {} via PLCopen\n{}",
+                    j,
+                    d,
+                    again.text
+                );
+            }
         }
     }
     Ok(())

@@ -26,6 +26,7 @@ pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
         }
     }
     let mut w = Writer::default();
+    w.declare(&ladder.variables);
     let mut y0 = 20;
     for (i, l) in &logic {
         if let Err((p, m)) = w.rung(l, y0) {
@@ -38,10 +39,19 @@ pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
         return Err(errors);
     }
     let mut vars = String::new();
+    for v in &ladder.variables {
+        let _ = writeln!(vars, "          {}", declared_variable(v));
+    }
     for (v, ty) in &w.variables {
+        let address = w
+            .located
+            .iter()
+            .find(|(n, _)| n == v)
+            .map(|(_, a)| format!(" address=\"{}\"", escape(a.as_str())))
+            .unwrap_or_default();
         let _ = writeln!(
             vars,
-            "          <variable name=\"{}\"><type>{ty}</type></variable>",
+            "          <variable name=\"{}\"{address}><type>{ty}</type></variable>",
             escape(v.as_str())
         );
     }
@@ -85,7 +95,14 @@ pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
 struct Writer {
     body: String,
     next_id: usize,
-    variables: Vec<(String, &'static str)>,
+    variables: Vec<(String, String)>,
+    /// The soft PLC's declared names (upper-case), written by
+    /// [`declared_variable`], and located ones by address.
+    declared: std::collections::HashSet<String>,
+    at_address: std::collections::HashMap<String, String>,
+    /// Addresses a rung names directly, and the variable that stands for
+    /// each (PLCopen's tools want every variable declared).
+    located: Vec<(String, String)>,
 }
 
 /// A connection source: an element's id and, for blocks, its output pin.
@@ -97,10 +114,45 @@ impl Writer {
         self.next_id
     }
 
-    fn variable(&mut self, name: &str, ty: &'static str) {
-        if !self.variables.iter().any(|(v, _)| v == name) {
-            self.variables.push((name.to_string(), ty));
+    fn variable(&mut self, name: &str, ty: &str) {
+        if self.declared.contains(&name.to_ascii_uppercase()) {
+            return;
         }
+        if !self.variables.iter().any(|(v, _)| v == name) {
+            self.variables.push((name.to_string(), ty.to_string()));
+        }
+    }
+
+    /// The ladder's declared variables (written as they are).
+    fn declare(&mut self, variables: &[crate::ladder::Variable]) {
+        for v in variables {
+            self.declared.insert(v.name.to_ascii_uppercase());
+            if let Ok(a) = crate::softplc::Address::parse(&v.address) {
+                self.at_address.insert(a.to_string(), v.name.clone());
+            }
+        }
+    }
+
+    /// The variable for a device or operand: an address (`%IX0.0`) is
+    /// the variable located there, or a new one named after it
+    /// (`IX0_0`); a name stays, declared `ty` unless the ladder declares
+    /// it.
+    fn name_for(&mut self, device: &str, ty: &str) -> String {
+        let device = device.trim();
+        let Ok(a) = crate::softplc::Address::parse(device) else {
+            self.variable(device, ty);
+            return device.to_string();
+        };
+        if let Some(name) = self.at_address.get(&a.to_string()) {
+            return name.clone();
+        }
+        let name = a.to_string().trim_start_matches('%').replace('.', "_");
+        let t = a.default_type().map_or("BOOL", |t| t.name());
+        self.variable(&name, &format!("<{t}/>"));
+        if !self.located.iter().any(|(n, _)| *n == name) {
+            self.located.push((name.clone(), a.to_string()));
+        }
+        name
     }
 
     fn connections(sources: &[Source]) -> String {
@@ -189,7 +241,7 @@ impl Writer {
         let conns = Self::connections(from);
         match e {
             Element::Contact { kind, device } => {
-                self.variable(device, "<BOOL/>");
+                let device = &self.name_for(device, "<BOOL/>");
                 let (negated, edge) = match kind {
                     ContactKind::No => ("false", ""),
                     ContactKind::Nc => ("true", ""),
@@ -230,6 +282,7 @@ impl Writer {
                 self.timer(id, ty, name, &conns, *preset_ms, x, y);
                 Ok((id, Some("Q")))
             }
+            Element::Block(b) => self.call(id, b, &conns, x, y),
             other => Err(format!("{other} cannot stand in a condition")),
         }
     }
@@ -313,7 +366,7 @@ impl Writer {
     ) -> Result<Source, String> {
         let conns = Self::connections(from);
         let coil = |w: &mut Writer, attrs: &str, device: &str| {
-            w.variable(device, "<BOOL/>");
+            let device = &w.name_for(device, "<BOOL/>");
             let id = w.id();
             let _ = writeln!(
                 w.body,
@@ -375,6 +428,10 @@ impl Writer {
                 );
                 (id, Some("Q"))
             }
+            Element::OutputBlock(b) => {
+                let id = self.id();
+                self.call(id, b, &conns, x, y)?
+            }
             other => {
                 return Err(format!(
                     "{other} has no PLCopen LD form here: keep it in a Hashigo project (.json)"
@@ -391,5 +448,120 @@ fn named(e: &Element) -> Result<(), String> {
     match device {
         Some(d) if d.trim().is_empty() => Err(format!("{e}names no device")),
         _ => Ok(()),
+    }
+}
+
+/// A declared soft PLC variable as PLCopen declares it.
+fn declared_variable(v: &crate::ladder::Variable) -> String {
+    let ty = v.data_type.trim().to_ascii_uppercase();
+    let ty = if v.elementary().is_some() {
+        format!("<{ty}/>")
+    } else {
+        format!("<derived name=\"{}\"/>", escape(ty.as_str()))
+    };
+    let address = if v.address.is_empty() {
+        String::new()
+    } else {
+        format!(" address=\"{}\"", escape(v.address.trim()))
+    };
+    let initial = if v.initial.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "<initialValue><simpleValue value=\"{}\"/></initialValue>",
+            escape(v.initial.trim())
+        )
+    };
+    let doc = if v.comment.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "<documentation><xhtml:p><![CDATA[{}]]></xhtml:p></documentation>",
+            v.comment.replace("]]>", "]] >")
+        )
+    };
+    format!(
+        "<variable name=\"{}\"{address}><type>{ty}</type>{initial}{doc}</variable>",
+        escape(v.name.as_str())
+    )
+}
+
+impl Writer {
+    /// A soft PLC box: its power pin fed from `conns`, its other inputs
+    /// from `inVariable`s, its outputs into `outVariable`s; returns its
+    /// power out.
+    fn call(
+        &mut self,
+        id: usize,
+        b: &crate::ladder::BlockCall,
+        conns: &str,
+        x: usize,
+        y: usize,
+    ) -> Result<Source, String> {
+        let kind = b.kind();
+        let shape = b
+            .shape()
+            .ok_or_else(|| format!("{kind} is no box the soft PLC has"))?;
+        let instance = if b.instance.is_empty() {
+            String::new()
+        } else {
+            self.variable(
+                &b.instance,
+                &format!("<derived name=\"{}\"/>", escape(kind.as_str())),
+            );
+            format!(" instanceName=\"{}\"", escape(b.instance.as_str()))
+        };
+        let (power_in, power_out) = (b.power_in(), b.power_out());
+        let mut inputs = format!(
+            "<variable formalParameter=\"{power_in}\"><connectionPointIn><relPosition x=\"0\" y=\"20\"/>{conns}</connectionPointIn></variable>"
+        );
+        for (k, pin) in b.data_pins().iter().enumerate() {
+            let Some(operand) = b.input(pin) else {
+                continue;
+            };
+            let expression = if crate::ladder::block::is_variable(operand) {
+                self.name_for(operand, "<BOOL/>")
+            } else {
+                operand.to_string()
+            };
+            let lit = self.literal(&expression, x, y + 20 * k);
+            let _ = write!(
+                inputs,
+                "<variable formalParameter=\"{pin}\"><connectionPointIn><relPosition x=\"0\" y=\"{}\"/><connection refLocalId=\"{lit}\"/></connectionPointIn></variable>",
+                40 + 20 * k
+            );
+        }
+        let mut pins: Vec<&str> = vec![power_out];
+        if shape != crate::ladder::block::Shape::FunctionBlock && power_out == "ENO" {
+            pins.push("OUT");
+        }
+        for (pin, _) in &b.outputs {
+            if !pins.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
+                pins.push(pin.as_str());
+            }
+        }
+        let outputs: String = pins
+            .iter()
+            .map(|p| format!("<variable formalParameter=\"{p}\"><connectionPointOut><relPosition x=\"60\" y=\"20\"/></connectionPointOut></variable>"))
+            .collect();
+        let _ = writeln!(
+            self.body,
+            "            <block localId=\"{id}\" typeName=\"{}\"{instance} height=\"80\" width=\"80\"><position x=\"{x}\" y=\"{y}\"/><inputVariables>{inputs}</inputVariables><inOutVariables/><outputVariables>{outputs}</outputVariables></block>",
+            escape(kind.as_str())
+        );
+        // Each output variable at the box's own height, just right of
+        // it: what runs the file top to bottom, left to right (the soft
+        // PLC, OpenPLC) writes it before the next cell, as the ladder does.
+        for (k, (pin, variable)) in b.outputs.iter().enumerate() {
+            let name = self.name_for(variable, "<BOOL/>");
+            let out = self.id();
+            let _ = writeln!(
+                self.body,
+                "            <outVariable localId=\"{out}\" height=\"20\" width=\"60\" negated=\"false\"><position x=\"{}\" y=\"{y}\"/><connectionPointIn><relPosition x=\"0\" y=\"10\"/><connection refLocalId=\"{id}\" formalParameter=\"{pin}\"/></connectionPointIn><expression>{}</expression></outVariable>",
+                x + 1 + k,
+                escape(name.as_str())
+            );
+        }
+        Ok((id, Some(power_out)))
     }
 }

@@ -462,10 +462,6 @@ impl Emitter<'_> {
         }
         let consumer = consumer_type(g, e, self);
         let (code, result) = f.code(&args, consumer).map_err(SoftError::Function)?;
-        let en = self.enable(g, e)?;
-        for line in code {
-            self.emit(line, e.line);
-        }
         let out = e
             .outputs
             .iter()
@@ -473,6 +469,21 @@ impl Emitter<'_> {
             .cloned()
             .unwrap_or_else(|| "OUT".into());
         let t = self.temp(&format!("n{}_{out}", e.id), result.name(), e.line);
+        let wired = e
+            .inputs
+            .iter()
+            .any(|(p, s)| p.eq_ignore_ascii_case("EN") && !s.is_empty());
+        if wired {
+            // Off, a function gives its type's zero to what its output
+            // feeds, as OpenPLC's runtime does (a comparison in a rung
+            // then passes no power); variables keep theirs (`guard`).
+            self.emit(format!("LD {}", result.zero()), e.line);
+            self.emit(format!("ST {t}"), e.line);
+        }
+        let en = self.enable(g, e)?;
+        for line in code {
+            self.emit(line, e.line);
+        }
         self.emit(format!("ST {t}"), e.line);
         self.enabled(e, en);
         Ok(())
