@@ -153,33 +153,33 @@ impl BlockCall {
     /// Why the box is not one the soft PLC runs: an unknown kind, a
     /// missing or unknown pin, an operand that is no name, address or
     /// literal, a function block without an instance.
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), BoxError> {
         let kind = self.kind();
         let shape = self
             .shape()
-            .ok_or_else(|| format!("{kind} is not a function or block the soft PLC has"))?;
+            .ok_or_else(|| BoxError::UnknownKind(kind.clone()))?;
         if shape == Shape::FunctionBlock {
             if !is_identifier(&self.instance) {
-                return Err(format!("a {kind} box needs an instance name (TON0)"));
+                return Err(BoxError::NoInstance(kind));
             }
         } else if !self.instance.is_empty() {
-            return Err(format!("{kind} is a function: it has no instance"));
+            return Err(BoxError::FunctionInstance(kind));
         }
         let pins = self.data_pins();
         for (pin, operand) in &self.inputs {
             if !pins.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
-                return Err(format!(
-                    "{kind} has no input {pin} (it takes {})",
-                    pins.join(", ")
-                ));
+                let takes = pins.join(", ");
+                return Err(BoxError::NoSuchInput(kind, pin.clone(), takes));
             }
-            operand_ok(operand)?;
+            if !is_variable(operand) && parse_literal(operand, None).is_err() {
+                return Err(BoxError::BadOperand(operand.clone()));
+            }
         }
         // A block's inputs may be left to keep their values; a
         // function's may not.
         if shape != Shape::FunctionBlock {
             if let Some(missing) = pins.iter().find(|p| self.input(p).is_none()) {
-                return Err(format!("{kind}'s {missing} is not wired"));
+                return Err(BoxError::NotWired(kind, missing.clone()));
             }
         }
         for (pin, variable) in &self.outputs {
@@ -190,12 +190,10 @@ impl BlockCall {
                 _ => pin.eq_ignore_ascii_case("OUT"),
             };
             if !known {
-                return Err(format!("{kind} has no output {pin}"));
+                return Err(BoxError::NoSuchOutput(kind, pin.clone()));
             }
             if !is_variable(variable) {
-                return Err(format!(
-                    "{kind}'s {pin} writes {variable:?}: a variable or an address"
-                ));
+                return Err(BoxError::NotAVariable(kind, pin.clone(), variable.clone()));
             }
         }
         Ok(())
@@ -211,16 +209,51 @@ pub fn is_variable(text: &str) -> bool {
     is_identifier(text) && !text.eq_ignore_ascii_case("TRUE") && !text.eq_ignore_ascii_case("FALSE")
 }
 
-/// A pin's operand: a variable, an address or an IEC literal.
-fn operand_ok(text: &str) -> Result<(), String> {
-    if is_variable(text) || parse_literal(text, None).is_ok() {
-        Ok(())
-    } else {
-        Err(format!(
-            "`{text}` is not a variable, an address or a literal"
-        ))
+/// Why a box is not one the soft PLC runs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BoxError {
+    /// No function or block of that kind.
+    UnknownKind(String),
+    /// A function block without an instance name.
+    NoInstance(String),
+    /// A function given an instance.
+    FunctionInstance(String),
+    /// An input the kind does not have (kind, pin, the pins it takes).
+    NoSuchInput(String, String, String),
+    /// An operand that is no variable, address or literal.
+    BadOperand(String),
+    /// A function's input left unwired (kind, pin).
+    NotWired(String, String),
+    /// An output the kind does not have (kind, pin).
+    NoSuchOutput(String, String),
+    /// An output wired to something that is no variable (kind, pin, text).
+    NotAVariable(String, String, String),
+}
+
+impl fmt::Display for BoxError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BoxError::UnknownKind(k) => {
+                write!(f, "{k} is not a function or block the soft PLC has")
+            }
+            BoxError::NoInstance(k) => write!(f, "a {k} box needs an instance name (TON0)"),
+            BoxError::FunctionInstance(k) => write!(f, "{k} is a function: it has no instance"),
+            BoxError::NoSuchInput(k, pin, takes) => {
+                write!(f, "{k} has no input {pin} (it takes {takes})")
+            }
+            BoxError::BadOperand(t) => {
+                write!(f, "`{t}` is not a variable, an address or a literal")
+            }
+            BoxError::NotWired(k, pin) => write!(f, "{k}'s {pin} is not wired"),
+            BoxError::NoSuchOutput(k, pin) => write!(f, "{k} has no output {pin}"),
+            BoxError::NotAVariable(k, pin, t) => {
+                write!(f, "{k}'s {pin} writes {t:?}: a variable or an address")
+            }
+        }
     }
 }
+
+impl std::error::Error for BoxError {}
 
 impl fmt::Display for BlockCall {
     /// `ADD(IN1 := a, IN2 := 1, OUT => b)`, a block's instance first

@@ -153,8 +153,8 @@ pub enum ElementError {
     },
     /// A plain or inverted coil on an IO86A counter (it needs its set value).
     Io86aCounterCoil(String),
-    /// A soft PLC box that is not one (why, in words).
-    Block(String),
+    /// A soft PLC box that is not one.
+    Block(crate::ladder::block::BoxError),
 }
 
 impl fmt::Display for ElementError {
@@ -187,7 +187,7 @@ impl fmt::Display for ElementError {
                 f,
                 "a {kind} coil on {device} has no meaning on MINASEC-U: drive it with a normal coil (a reset coil on C0 clears the count)"
             ),
-            ElementError::Block(why) => f.write_str(why),
+            ElementError::Block(why) => why.fmt(f),
             ElementError::Io86aCounterCoil(d) => write!(
                 f,
                 "a plain coil cannot drive counter {d}: use a counter coil with its set value (OUT {d} K10), or a set/reset coil"

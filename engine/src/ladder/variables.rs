@@ -4,11 +4,13 @@
 //! Names a contact or coil uses undeclared are BOOLs; words must be
 //! declared, since `count` could be any of the integer types.
 
+use std::fmt;
+
 use serde::{Deserialize, Serialize};
 
 use crate::softplc::data::DataType;
 use crate::softplc::vars::{is_identifier, BLOCK_TYPES};
-use crate::softplc::{parse_literal, Address};
+use crate::softplc::{parse_literal, Address, AddressError, LiteralError};
 
 /// One declared variable.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -51,30 +53,30 @@ impl Variable {
     }
 
     /// Why it is not a declaration the soft PLC takes.
-    pub fn check(&self) -> Result<(), String> {
-        let name = &self.name;
-        if !is_identifier(name) {
-            return Err(format!(
-                "`{name}` is not a name (a letter or _, then letters, digits, _)"
-            ));
+    pub fn check(&self) -> Result<(), VariableError> {
+        let name = self.name.clone();
+        if !is_identifier(&name) {
+            return Err(VariableError::BadName(name));
         }
         let ty = self.data_type.trim().to_ascii_uppercase();
         match self.elementary() {
             Some(t) => {
                 if !self.address.is_empty() {
-                    let a = Address::parse(&self.address).map_err(|e| format!("{name}: {e}"))?;
-                    a.for_type(t).map_err(|e| format!("{name}: {e}"))?;
+                    Address::parse(&self.address)
+                        .and_then(|a| a.for_type(t))
+                        .map_err(|e| VariableError::Address(name.clone(), e))?;
                 }
                 if !self.initial.is_empty() {
-                    parse_literal(&self.initial, Some(t)).map_err(|e| format!("{name}: {e}"))?;
+                    parse_literal(&self.initial, Some(t))
+                        .map_err(|e| VariableError::Initial(name.clone(), e))?;
                 }
             }
             None if BLOCK_TYPES.contains(&ty.as_str()) => {
                 if !self.address.is_empty() || !self.initial.is_empty() {
-                    return Err(format!("{name} is a {ty}: it has no address or value"));
+                    return Err(VariableError::BlockWithValue(name, ty));
                 }
             }
-            None => return Err(format!("{name}: unknown type `{}`", self.data_type)),
+            None => return Err(VariableError::UnknownType(name, self.data_type.clone())),
         }
         Ok(())
     }
@@ -101,3 +103,39 @@ impl Variable {
         line
     }
 }
+
+/// Why a declaration is not one the soft PLC takes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum VariableError {
+    /// Not an IEC name.
+    BadName(String),
+    /// An address that does not parse or does not hold the type.
+    Address(String, AddressError),
+    /// An initial value that is no literal of the type.
+    Initial(String, LiteralError),
+    /// A block instance given an address or a value (name, type).
+    BlockWithValue(String, String),
+    /// No type or block of that name (name, type).
+    UnknownType(String, String),
+}
+
+impl fmt::Display for VariableError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            VariableError::BadName(n) => {
+                write!(
+                    f,
+                    "`{n}` is not a name (a letter or _, then letters, digits, _)"
+                )
+            }
+            VariableError::Address(n, e) => write!(f, "{n}: {e}"),
+            VariableError::Initial(n, e) => write!(f, "{n}: {e}"),
+            VariableError::BlockWithValue(n, t) => {
+                write!(f, "{n} is a {t}: it has no address or value")
+            }
+            VariableError::UnknownType(n, t) => write!(f, "{n}: unknown type `{t}`"),
+        }
+    }
+}
+
+impl std::error::Error for VariableError {}

@@ -265,7 +265,7 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     let mut in_vars = false;
     // Each label (upper-case) and the line it is first on.
     let mut labels: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
-    let text = blank_long_comments(text);
+    let text = super::comments::blank_long_comments(text);
     for (i, raw) in text.lines().enumerate() {
         let number = i + 1;
         if raw.contains("(*") && !raw[raw.rfind("(*").unwrap_or(0)..].contains("*)") {
@@ -316,32 +316,6 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     } else {
         Err(errors)
     }
-}
-
-/// `text` with every comment that spans lines blanked out (its line
-/// breaks kept, so every line keeps its number); a comment on one line
-/// stays for the line's own reader (a declaration keeps it). A comment
-/// never closed is left as it is: the line that opens it says so.
-pub(super) fn blank_long_comments(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut rest = text;
-    while let Some(at) = rest.find("(*") {
-        out.push_str(&rest[..at]);
-        let body = &rest[at..];
-        let Some(end) = body.find("*)").map(|e| e + 2) else {
-            out.push_str(body);
-            return out;
-        };
-        let comment = &body[..end];
-        if comment.contains('\n') {
-            out.extend(comment.chars().map(|c| if c == '\n' { '\n' } else { ' ' }));
-        } else {
-            out.push_str(comment);
-        }
-        rest = &body[end..];
-    }
-    out.push_str(rest);
-    out
 }
 
 /// The line without its `(* … *)` comments.

@@ -8,6 +8,7 @@
 
 pub mod address;
 pub mod blocks;
+mod comments;
 pub mod data;
 pub mod il;
 pub mod listing;

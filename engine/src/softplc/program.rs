@@ -12,6 +12,7 @@ use super::literal::in_range;
 use super::pins::{inputs, outputs, Instance};
 use super::vars::{parse_vars, Kind, VarError, Variable};
 use crate::error::Located;
+use check::{binary_type, describe, find_pin, jump, need_cr};
 
 /// Instructions one scan may run before it is cut short (a backward JMP
 /// that never ends): the scan ends there and [`Program::overran`] says so.
@@ -170,31 +171,7 @@ impl Program {
             by_name: HashMap::new(),
             by_address: HashMap::new(),
         };
-        for v in vars.iter().cloned() {
-            match v.kind {
-                Kind::Value { init, .. } => {
-                    let slot = p.values.len();
-                    p.values.push(init);
-                    p.by_name
-                        .insert(v.name.to_ascii_uppercase(), Named::Slot(slot));
-                    p.names.push((v.name, slot));
-                    if v.retain {
-                        p.retained.push(slot);
-                    }
-                    if let Some(a) = v.address {
-                        p.addresses.push((a, slot));
-                        p.by_address.insert(a, slot);
-                    }
-                }
-                Kind::Block(block) => {
-                    let b = p.blocks.len();
-                    p.by_name
-                        .insert(v.name.to_ascii_uppercase(), Named::Block(b));
-                    p.block_names.push((v.name, block.clone()));
-                    p.blocks.push(Instance::new(&block));
-                }
-            }
-        }
+        p.declare(&vars);
         let mut errors = Vec::new();
         let mut cr: Option<DataType> = None;
         let mut open: Vec<(Binary, Option<DataType>)> = Vec::new();
@@ -232,6 +209,36 @@ impl Program {
             .map(|&(_, s)| (s, p.values[s]))
             .collect();
         Ok(p)
+    }
+
+    /// Gives every declared variable its slot (and index) and every
+    /// block instance its state.
+    fn declare(&mut self, vars: &[Variable]) {
+        for v in vars.iter().cloned() {
+            match v.kind {
+                Kind::Value { init, .. } => {
+                    let slot = self.values.len();
+                    self.values.push(init);
+                    self.by_name
+                        .insert(v.name.to_ascii_uppercase(), Named::Slot(slot));
+                    self.names.push((v.name, slot));
+                    if v.retain {
+                        self.retained.push(slot);
+                    }
+                    if let Some(a) = v.address {
+                        self.addresses.push((a, slot));
+                        self.by_address.insert(a, slot);
+                    }
+                }
+                Kind::Block(block) => {
+                    let b = self.blocks.len();
+                    self.by_name
+                        .insert(v.name.to_ascii_uppercase(), Named::Block(b));
+                    self.block_names.push((v.name, block.clone()));
+                    self.blocks.push(Instance::new(&block));
+                }
+            }
+        }
     }
 
     /// The program in its canonical text, which loads back to the same
@@ -521,80 +528,7 @@ impl Program {
     }
 }
 
-/// The current result's type, where an instruction needs one.
-fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {
-    cr.ok_or_else(|| {
-        LoadError::Type(
-            "the current result is not known here (after a label or a jump): start with LD".into(),
-        )
-    })
-}
-
-/// JMP, JMPC, JMPCN to a label of `lines`.
-fn jump(
-    line: &Line,
-    labels: &HashMap<String, usize>,
-    cr: &mut Option<DataType>,
-) -> Result<Step, LoadError> {
-    if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
-        return Err(LoadError::Type("JMPC needs a BOOL current result".into()));
-    }
-    let Some(Operand::Name(label)) = &line.operand else {
-        return Err(LoadError::NoLabel(String::new()));
-    };
-    let &target = labels
-        .get(&label.to_ascii_uppercase())
-        .ok_or_else(|| LoadError::NoLabel(label.clone()))?;
-    if line.condition.is_none() {
-        *cr = None;
-    }
-    Ok(Step::Jmp(line.condition, target))
-}
-
-/// A block parameter's place in `pins` and its type, by name (any case).
-fn find_pin(pins: &[(&str, DataType)], name: &str) -> Option<(usize, DataType)> {
-    pins.iter()
-        .position(|(p, _)| p.eq_ignore_ascii_case(name))
-        .map(|i| (i, pins[i].1))
-}
-
-fn describe(o: &Operand) -> String {
-    match o {
-        Operand::Name(n) => n.clone(),
-        Operand::Address(a) => a.to_string(),
-        Operand::Literal(_) => "a literal".into(),
-    }
-}
-
-/// The type an operation gives for operands of types `a` and `b`, or why
-/// it does not apply.
-fn binary_type(op: Binary, a: DataType, b: DataType) -> Result<DataType, LoadError> {
-    if a != b {
-        return Err(LoadError::Type(format!(
-            "{} and {} do not mix: convert one (*_TO_*)",
-            a.name(),
-            b.name()
-        )));
-    }
-    let fits = match op {
-        Binary::Logic(..) => a == DataType::Bool || a.bits().is_some(),
-        Binary::Arith(Arith::Add | Arith::Sub) => a != DataType::Bool,
-        Binary::Arith(Arith::Mod) => a.bits().is_some(),
-        Binary::Arith(_) => a.bits().is_some() || a == DataType::Real,
-        Binary::Cmp(_) => true,
-    };
-    if !fits {
-        return Err(LoadError::Type(format!(
-            "this operation does not apply to {}",
-            a.name()
-        )));
-    }
-    Ok(if matches!(op, Binary::Cmp(_)) {
-        DataType::Bool
-    } else {
-        a
-    })
-}
+mod check;
 
 #[cfg(test)]
 mod tests;

@@ -119,14 +119,7 @@ impl Program {
                     *cr = apply(op, saved, *cr);
                 }
             }
-            Step::Func(f, args) => {
-                // At most two operands: read without allocating.
-                let mut operands = [*cr; 2];
-                for (v, &a) in operands.iter_mut().zip(args) {
-                    *v = read(values, a);
-                }
-                *cr = function(*f, *cr, &operands[..args.len().min(2)]);
-            }
+            Step::Func(f, args) => *cr = call_function(values, *f, *cr, args),
             Step::Jmp(when, target) => {
                 if on(*when, *cr) {
                     cursor.pc = *target;
@@ -280,6 +273,17 @@ impl Program {
             *b = Instance::new(kind);
         }
     }
+}
+
+/// Function `f` of the current result `cr` and the operands `args` (at
+/// most two: read without allocating).
+#[inline(always)]
+fn call_function(values: &[Data], f: Function, cr: Data, args: &[Src]) -> Data {
+    let mut operands = [cr; 2];
+    for (v, &a) in operands.iter_mut().zip(args) {
+        *v = read(values, a);
+    }
+    function(f, cr, &operands[..args.len().min(2)])
 }
 
 /// Calls block instance `block` with `inputs` and copies its `outputs`.

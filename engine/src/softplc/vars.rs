@@ -140,7 +140,7 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
     let mut vars: Vec<(Variable, usize)> = Vec::new();
     let mut errors = Vec::new();
     let mut open: Option<(bool, usize)> = None; // (retain, line)
-    let text = super::il::blank_long_comments(text);
+    let text = super::comments::blank_long_comments(text);
     // Each name (upper-case) and the line that declares it.
     let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     for (i, raw) in text.lines().enumerate() {

@@ -26,96 +26,111 @@ enum Stands {
     Boxed(Element),
 }
 
+/// The walk over the lines: the block stack, the pending `(`, what
+/// each generated BOOL stands for, the power held for a box, and whether
+/// the last line loaded the rail (`LD TRUE`, for a NOT after it).
+struct Walk<'a> {
+    vars: &'a [Variable],
+    s: Stack,
+    pending: Vec<bool>,
+    stands: HashMap<String, Stands>,
+    power: Option<String>,
+    rail: bool,
+}
+
+type Step = Result<(), DecompileError>;
+
 /// The ladder of an IL program's declarations and lines.
 pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, DecompileError> {
-    let kind_of = |name: &str| {
-        vars.iter().find_map(|v| match &v.kind {
-            Kind::Block(b) if v.name.eq_ignore_ascii_case(name) => Some(b.as_str()),
-            _ => None,
-        })
+    let mut w = Walk {
+        vars,
+        s: Stack::default(),
+        pending: Vec::new(),
+        stands: HashMap::new(),
+        power: None,
+        rail: false,
     };
-    let mut s = Stack::default();
-    let mut pending: Vec<bool> = Vec::new();
-    let mut stands: HashMap<String, Stands> = HashMap::new();
-    // `ST p` of the power into a box: held until the box's CAL.
-    let mut power: Option<String> = None;
-    // `LD TRUE`: the rail's power, for a NOT straight after it.
-    let mut rail = false;
     for (step, line) in lines.iter().enumerate() {
-        let bad = |message: String| DecompileError::Step(StepError { step, message });
+        w.line(step, line)?;
+    }
+    w.s.flush();
+    drawn(&w.s.rungs)
+}
+
+fn bad(step: usize, message: &str) -> DecompileError {
+    DecompileError::Step(StepError {
+        step,
+        message: message.to_string(),
+    })
+}
+
+impl Walk<'_> {
+    /// A contact on `name`, or the edge contact its R_TRIG stands for.
+    fn leaf(&self, name: &str, inverted: bool) -> Net {
+        match self.stands.get(name) {
+            Some(Stands::Edge(kind, device)) => Net::Leaf(
+                Element::Contact {
+                    kind: *kind,
+                    device: device.clone(),
+                },
+                Pos::new(0, 0),
+            ),
+            _ => contact(name.to_string(), inverted),
+        }
+    }
+
+    fn line(&mut self, step: usize, line: &Line) -> Step {
         let name = match &line.operand {
             Some(Operand::Name(n)) => Some(n.clone()),
             Some(Operand::Address(a)) => Some(a.to_string()),
             _ => None,
         };
-        let leaf = |name: &str, inverted: bool| -> Net {
-            match stands.get(name) {
-                Some(Stands::Edge(kind, device)) => Net::Leaf(
-                    Element::Contact {
-                        kind: *kind,
-                        device: device.clone(),
-                    },
-                    Pos::new(0, 0),
-                ),
-                _ => contact(name.to_string(), inverted),
-            }
-        };
         if line.label.is_some() || line.condition.is_some() {
             return Err(bad(
-                "labels and conditional operators have no ladder form".into()
+                step,
+                "labels and conditional operators have no ladder form",
             ));
         }
-        let was_rail = std::mem::take(&mut rail);
+        let was_rail = std::mem::take(&mut self.rail);
         match (line.operator, &name, line.deferred) {
-            (Operator::Ld, Some(n), false) if power.as_deref() == Some(n.as_str()) => {
-                return Err(bad(
-                    "a box in a parallel branch has no ladder form here".into()
-                ));
-            }
-            (Operator::Ld, Some(n), false) => match stands.get(n) {
-                Some(Stands::Boxed(e)) => {
-                    let e = e.clone();
-                    if power.take().is_some() {
-                        s.grow(Net::Leaf(e, Pos::new(0, 0)), true, step)?;
-                    } else {
-                        s.load(Net::Leaf(e, Pos::new(0, 0)));
-                    }
-                }
-                _ => {
-                    // A new rung: the power held for the last one's
-                    // boxes and pulses is no longer this one's.
-                    power = None;
-                    s.load(leaf(n, line.negated));
-                }
-            },
+            (Operator::Ld, Some(n), false) => self.load(step, n, line.negated)?,
             (Operator::Ld, None, false)
                 if line.operand == Some(Operand::Literal(crate::softplc::Data::Bool(true))) =>
             {
-                rail = true;
+                self.rail = true;
             }
             (Operator::And | Operator::Or, Some(n), false) => {
-                s.grow(leaf(n, line.negated), line.operator == Operator::And, step)?
+                let leaf = self.leaf(n, line.negated);
+                self.s.grow(leaf, line.operator == Operator::And, step)?
             }
             (Operator::And | Operator::Or, _, true) => {
-                let and = line.operator == Operator::And;
-                let cur = s
+                let cur = self
+                    .s
                     .cur
                     .take()
-                    .ok_or_else(|| bad("no LD before this step".into()))?;
-                s.blocks.push(cur);
+                    .ok_or_else(|| bad(step, "no LD before this step"))?;
+                self.s.blocks.push(cur);
                 if let Some(n) = &name {
-                    s.cur = Some(Part::of(leaf(n, line.negated)));
+                    self.s.cur = Some(Part::of(self.leaf(n, line.negated)));
                 }
-                pending.push(and);
+                self.pending.push(line.operator == Operator::And);
             }
             (Operator::Close, _, _) => {
-                let and = pending.pop().ok_or_else(|| bad("`)` with no `(`".into()))?;
-                s.join(and, step)?;
+                let and = self
+                    .pending
+                    .pop()
+                    .ok_or_else(|| bad(step, "`)` with no `(`"))?;
+                self.s.join(and, step)?;
             }
-            (Operator::Not, _, _) if was_rail => s.load(Net::Leaf(Element::Not, Pos::new(0, 0))),
-            (Operator::Not, _, _) => s.grow(Net::Leaf(Element::Not, Pos::new(0, 0)), true, step)?,
+            (Operator::Not, _, _) if was_rail => {
+                self.s.load(Net::Leaf(Element::Not, Pos::new(0, 0)))
+            }
+            (Operator::Not, _, _) => {
+                self.s
+                    .grow(Net::Leaf(Element::Not, Pos::new(0, 0)), true, step)?
+            }
             (Operator::St, Some(n), false) if n.starts_with("_p") && !line.negated => {
-                power = Some(n.clone());
+                self.power = Some(n.clone());
             }
             (Operator::St | Operator::S | Operator::R, Some(n), false) => {
                 let kind = match (line.operator, line.negated) {
@@ -129,84 +144,115 @@ pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, Dec
                     kind,
                     device: n.clone(),
                 };
-                s.output(coil, holds, step)?;
+                self.s.output(coil, holds, step)?;
             }
-            (Operator::Cal, Some(block), _) => {
-                let kind = kind_of(block).unwrap_or_default();
-                let input = |pin: &str| {
-                    line.inputs
-                        .iter()
-                        .find(|(p, _)| p.eq_ignore_ascii_case(pin))
-                        .map(|(_, v)| v)
-                };
-                let q = line
-                    .outputs
-                    .iter()
-                    .find(|(p, _)| p.eq_ignore_ascii_case("Q"))
-                    .map(|(_, v)| v.clone())
-                    .ok_or_else(|| bad("a call with no Q => has no ladder form".into()))?;
-                let from_power = |v: Option<&Operand>| match v {
-                    Some(Operand::Literal(crate::softplc::Data::Bool(true))) => true,
-                    Some(Operand::Name(n)) => power.as_deref() == Some(n.as_str()),
-                    _ => false,
-                };
-                match kind {
-                    "R_TRIG" | "F_TRIG" if !from_power(input("CLK")) => {
-                        let Some(Operand::Name(_) | Operand::Address(_)) = input("CLK") else {
-                            return Err(bad("an edge on a literal has no ladder form".into()));
-                        };
-                        let device = input("CLK").map(|o| o.to_string()).unwrap_or_default();
-                        let edge = if kind == "R_TRIG" {
-                            ContactKind::Rising
-                        } else {
-                            ContactKind::Falling
-                        };
-                        stands.insert(q, Stands::Edge(edge, device));
-                    }
-                    // On the power into a name of the ladder's own: a
-                    // PLS / PLF output.
-                    "R_TRIG" | "F_TRIG" if !q.starts_with("_q") => {
-                        let e = Element::Pulse {
-                            falling: kind == "F_TRIG",
-                            device: q,
-                        };
-                        s.output(e, None, step)?;
-                    }
-                    "R_TRIG" | "F_TRIG" => {
-                        let e = Element::Edge {
-                            falling: kind == "F_TRIG",
-                        };
-                        stands.insert(q, Stands::Boxed(e));
-                    }
-                    "TON" | "TOF" | "TP" if from_power(input("IN")) => {
-                        let Some(Operand::Literal(crate::softplc::Data::Time(ns))) = input("PT")
-                        else {
-                            return Err(bad(
-                                "a timer's PT other than a T# literal has no ladder form here"
-                                    .into(),
-                            ));
-                        };
-                        let preset_ms = u32::try_from(ns / 1_000_000).unwrap_or(u32::MAX);
-                        let kind = match kind {
-                            "TON" => TimerKind::Ton,
-                            "TOF" => TimerKind::Tof,
-                            _ => TimerKind::Tp,
-                        };
-                        stands.insert(
-                            q,
-                            Stands::Boxed(Element::Timer {
-                                kind,
-                                name: block.clone(),
-                                preset_ms,
-                            }),
-                        );
-                    }
-                    _ => return Err(bad(format!("CAL {block} has no ladder form yet"))),
+            (Operator::Cal, Some(block), _) => self.call(step, line, block)?,
+            _ => return Err(bad(step, &format!("`{line}` has no ladder form yet"))),
+        }
+        Ok(())
+    }
+
+    /// `LD n`: a new rung from a contact, or the output of a box (on the
+    /// power held for it, or on the rail).
+    fn load(&mut self, step: usize, n: &str, negated: bool) -> Step {
+        if self.power.as_deref() == Some(n) {
+            return Err(bad(
+                step,
+                "a box in a parallel branch has no ladder form here",
+            ));
+        }
+        match self.stands.get(n) {
+            Some(Stands::Boxed(e)) => {
+                let e = Net::Leaf(e.clone(), Pos::new(0, 0));
+                if self.power.take().is_some() {
+                    self.s.grow(e, true, step)?;
+                } else {
+                    self.s.load(e);
                 }
             }
-            _ => return Err(bad(format!("`{line}` has no ladder form yet"))),
+            _ => {
+                // A new rung: the power held for the last one's boxes
+                // and pulses is no longer this one's.
+                self.power = None;
+                let leaf = self.leaf(n, negated);
+                self.s.load(leaf);
+            }
         }
+        Ok(())
     }
-    s.flush();
-    drawn(&s.rungs)
+
+    /// `CAL block(…)`: an edge contact's R_TRIG, a pulse output, an
+    /// in-line edge or timer box.
+    fn call(&mut self, step: usize, line: &Line, block: &str) -> Step {
+        let kind = self
+            .vars
+            .iter()
+            .find_map(|v| match &v.kind {
+                Kind::Block(b) if v.name.eq_ignore_ascii_case(block) => Some(b.as_str()),
+                _ => None,
+            })
+            .unwrap_or_default();
+        let input = |pin: &str| {
+            line.inputs
+                .iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                .map(|(_, v)| v)
+        };
+        let q = line
+            .outputs
+            .iter()
+            .find(|(p, _)| p.eq_ignore_ascii_case("Q"))
+            .map(|(_, v)| v.clone())
+            .ok_or_else(|| bad(step, "a call with no Q => has no ladder form"))?;
+        let from_power = |v: Option<&Operand>| match v {
+            Some(Operand::Literal(crate::softplc::Data::Bool(true))) => true,
+            Some(Operand::Name(n)) => self.power.as_deref() == Some(n.as_str()),
+            _ => false,
+        };
+        let stands = match kind {
+            "R_TRIG" | "F_TRIG" if !from_power(input("CLK")) => {
+                let Some(clk @ (Operand::Name(_) | Operand::Address(_))) = input("CLK") else {
+                    return Err(bad(step, "an edge on a literal has no ladder form"));
+                };
+                let edge = if kind == "R_TRIG" {
+                    ContactKind::Rising
+                } else {
+                    ContactKind::Falling
+                };
+                Stands::Edge(edge, clk.to_string())
+            }
+            // On the power into a name of the ladder's own: a PLS / PLF.
+            "R_TRIG" | "F_TRIG" if !q.starts_with("_q") => {
+                let e = Element::Pulse {
+                    falling: kind == "F_TRIG",
+                    device: q,
+                };
+                return Ok(self.s.output(e, None, step)?);
+            }
+            "R_TRIG" | "F_TRIG" => Stands::Boxed(Element::Edge {
+                falling: kind == "F_TRIG",
+            }),
+            "TON" | "TOF" | "TP" if from_power(input("IN")) => {
+                let Some(Operand::Literal(crate::softplc::Data::Time(ns))) = input("PT") else {
+                    return Err(bad(
+                        step,
+                        "a timer's PT other than a T# literal has no ladder form here",
+                    ));
+                };
+                let kind = match kind {
+                    "TON" => TimerKind::Ton,
+                    "TOF" => TimerKind::Tof,
+                    _ => TimerKind::Tp,
+                };
+                Stands::Boxed(Element::Timer {
+                    kind,
+                    name: block.to_string(),
+                    preset_ms: u32::try_from(ns / 1_000_000).unwrap_or(u32::MAX),
+                })
+            }
+            _ => return Err(bad(step, &format!("CAL {block} has no ladder form yet"))),
+        };
+        self.stands.insert(q, stands);
+        Ok(())
+    }
 }

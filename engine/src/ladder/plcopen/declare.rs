@@ -484,6 +484,16 @@ struct Pools {
 }
 
 impl Pools {
+    fn none() -> Pools {
+        Pools {
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            relays: Vec::new(),
+            timers: Vec::new(),
+            counters: Vec::new(),
+        }
+    }
+
     fn of(machine: MachineId) -> Pools {
         let range = |prefix: &str, width: usize, ns: std::ops::Range<u32>| -> Vec<String> {
             ns.map(|n| format!("{prefix}{n:0width$}")).collect()
@@ -507,26 +517,10 @@ impl Pools {
             MachineId::ArduinoPlc => Pools {
                 inputs: range("X", 3, 0..6),
                 outputs: range("Y", 3, 0..6),
-                relays: Vec::new(),
-                timers: Vec::new(),
-                counters: Vec::new(),
+                ..Pools::none()
             },
-            // Until names stay names on the soft PLC (issue #30), its
-            // bits by address.
-            MachineId::SoftPlc => {
-                let bits = |area: char| -> Vec<String> {
-                    (0..8)
-                        .flat_map(|byte| (0..8).map(move |bit| format!("%{area}X{byte}.{bit}")))
-                        .collect()
-                };
-                Pools {
-                    inputs: bits('I'),
-                    outputs: bits('Q'),
-                    relays: bits('M'),
-                    timers: Vec::new(),
-                    counters: Vec::new(),
-                }
-            }
+            // Its variables keep their names: nothing to propose.
+            MachineId::SoftPlc => Pools::none(),
             // [`avr_located`]'s registers; timers are named in-line boxes
             // (an instance keeps its name), and there are no counters.
             MachineId::AvrPlc => {
@@ -539,8 +533,7 @@ impl Pools {
                     inputs: bits(AVR_INPUTS),
                     outputs: bits(AVR_OUTPUTS),
                     relays: bits(AVR_RELAYS),
-                    timers: Vec::new(),
-                    counters: Vec::new(),
+                    ..Pools::none()
                 }
             }
         }

@@ -149,7 +149,7 @@ pub enum ImportError {
     /// An element Hashigo does not import (its name).
     Unsupported(String),
     /// Part of the project the soft PLC does not run.
-    Soft(super::soft::SoftError),
+    Soft(super::soft::error::SoftError),
     /// A block type Hashigo does not import.
     UnsupportedBlock(String),
     /// A block that calls one of the project's own POUs (its name and

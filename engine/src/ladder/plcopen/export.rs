@@ -345,6 +345,25 @@ impl Writer {
         );
     }
 
+    /// An IO86A counter coil as a CTU with its set value.
+    fn counter(&mut self, device: &str, preset: u16, conns: &str, x: usize, y: usize) -> Source {
+        let id = self.id();
+        let lit = self.literal(&preset.to_string(), x, y);
+        self.variable(device, "<derived name=\"CTU\"/>");
+        self.block(
+            id,
+            "CTU",
+            Some(device),
+            "CU",
+            conns,
+            Some(("PV", lit)),
+            "Q",
+            x,
+            y,
+        );
+        (id, Some("Q"))
+    }
+
     fn literal(&mut self, text: &str, x: usize, y: usize) -> usize {
         let id = self.id();
         let _ = writeln!(
@@ -411,23 +430,7 @@ impl Writer {
                 self.timer(id, "TON", device, &conns, u32::from(*preset) * base, x, y);
                 (id, Some("Q"))
             }
-            Element::CounterCoil { device, preset } => {
-                let id = self.id();
-                let lit = self.literal(&preset.to_string(), x, y);
-                self.variable(device, "<derived name=\"CTU\"/>");
-                self.block(
-                    id,
-                    "CTU",
-                    Some(device),
-                    "CU",
-                    &conns,
-                    Some(("PV", lit)),
-                    "Q",
-                    x,
-                    y,
-                );
-                (id, Some("Q"))
-            }
+            Element::CounterCoil { device, preset } => self.counter(device, *preset, &conns, x, y),
             Element::OutputBlock(b) => {
                 let id = self.id();
                 self.call(id, b, &conns, x, y)?

@@ -27,7 +27,7 @@ impl Compiler {
         let mut errors = Vec::new();
         for v in variables {
             let upper = v.name.to_ascii_uppercase();
-            let problem = v.check().err().or_else(|| {
+            let problem = v.check().err().map(|e| e.to_string()).or_else(|| {
                 (self.types.contains_key(&upper) || self.blocks.contains_key(&upper))
                     .then(|| format!("{} is declared twice", v.name))
             });
@@ -162,7 +162,7 @@ impl Compiler {
                 .ok_or_else(|| format!("{kind}'s {pin} is not wired"))?;
             args.push((pin, self.operand(text)?));
         }
-        f.code(&args, wanted)
+        f.code(&args, wanted).map_err(|e| format!("{kind}: {e}"))
     }
 
     fn function_block(

@@ -172,48 +172,10 @@ fn declare(
     if !crate::softplc::vars::is_identifier(&name) {
         return Err(at(SoftError::Declaration(name, "not an IEC name".into())));
     }
-    let ty = v
-        .child("type")
-        .and_then(|t| t.children.first())
-        .ok_or_else(|| at(SoftError::Declaration(name.clone(), "no type".into())))?;
-    let written = match ty.name.as_str() {
-        "derived" => ty.attr("name").unwrap_or_default(),
-        other => other,
+    let (held, type_name) = held(v, &name, own).map_err(at)?;
+    let Some(soft_name) = soft_name(out, &name, scope, pou) else {
+        return Ok(());
     };
-    let type_name = written.to_ascii_uppercase();
-    let held = if let Some(t) = DataType::from_name(&type_name) {
-        Held::Value(t)
-    } else if BLOCK_TYPES.contains(&type_name.as_str()) {
-        Held::Block(type_name.clone())
-    } else if own.iter().any(|p| p.eq_ignore_ascii_case(&type_name)) {
-        return Err(at(SoftError::ProjectBlock(written.to_string())));
-    } else if ty.name == "derived" {
-        return Err(at(SoftError::Block(written.to_string())));
-    } else {
-        return Err(at(SoftError::Declaration(
-            name,
-            format!("type {type_name} is not one the soft PLC has (docs/soft-plc.md)"),
-        )));
-    };
-    // A name declared again: the same global seen twice (an external) is
-    // one variable; a program's own variable takes its program's name.
-    let mut soft_name = name.clone();
-    if out.taken(&name) {
-        if matches!(scope.name.as_str(), "externalVars") || pou.is_none() {
-            return Ok(());
-        }
-        let pou = pou.unwrap_or_default();
-        soft_name = format!("{pou}_{name}");
-        let mut n = 2;
-        while out.taken(&soft_name) {
-            soft_name = format!("{pou}_{name}{n}");
-            n += 1;
-        }
-        out.renamed
-            .entry(pou.to_ascii_lowercase())
-            .or_default()
-            .insert(name.to_ascii_lowercase(), soft_name.clone());
-    }
     let mut line = soft_name.clone();
     let address = match v.attr("address") {
         Some(text) => {
@@ -251,4 +213,58 @@ fn declare(
         xml_line: v.line,
     });
     Ok(())
+}
+
+/// What variable `v` (named `name`) holds, and its type's name.
+fn held(v: &Node, name: &str, own: &[String]) -> Result<(Held, String), SoftError> {
+    let ty = v
+        .child("type")
+        .and_then(|t| t.children.first())
+        .ok_or_else(|| SoftError::Declaration(name.to_string(), "no type".into()))?;
+    let written = match ty.name.as_str() {
+        "derived" => ty.attr("name").unwrap_or_default(),
+        other => other,
+    };
+    let type_name = written.to_ascii_uppercase();
+    let held = if let Some(t) = DataType::from_name(&type_name) {
+        Held::Value(t)
+    } else if BLOCK_TYPES.contains(&type_name.as_str()) {
+        Held::Block(type_name.clone())
+    } else if own.iter().any(|p| p.eq_ignore_ascii_case(&type_name)) {
+        return Err(SoftError::ProjectBlock(written.to_string()));
+    } else if ty.name == "derived" {
+        return Err(SoftError::Block(written.to_string()));
+    } else {
+        return Err(SoftError::Declaration(
+            name.to_string(),
+            format!("type {type_name} is not one the soft PLC has (docs/soft-plc.md)"),
+        ));
+    };
+    Ok((held, type_name))
+}
+
+/// The soft PLC's name for `name` declared in `scope` of POU `pou`;
+/// `None` when it is a global seen again (an external). A program's own
+/// variable whose name is taken becomes `<program>_<name>`.
+fn soft_name(
+    out: &mut Declarations,
+    name: &str,
+    scope: &Node,
+    pou: Option<&str>,
+) -> Option<String> {
+    if !out.taken(name) {
+        return Some(name.to_string());
+    }
+    let pou = pou.filter(|_| scope.name != "externalVars")?;
+    let mut soft_name = format!("{pou}_{name}");
+    let mut n = 2;
+    while out.taken(&soft_name) {
+        soft_name = format!("{pou}_{name}{n}");
+        n += 1;
+    }
+    out.renamed
+        .entry(pou.to_ascii_lowercase())
+        .or_default()
+        .insert(name.to_ascii_lowercase(), soft_name.clone());
+    Some(soft_name)
 }

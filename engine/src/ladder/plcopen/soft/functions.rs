@@ -103,18 +103,12 @@ impl Function {
 
     /// The IL computing it from `args` (pin, value) in the order the file
     /// gives them, and the result's type; `wanted` is what the output
-    /// feeds. Why not, in words.
+    /// feeds.
     pub fn code(
         self,
         args: &[(String, Operand)],
         wanted: Option<DataType>,
-    ) -> Result<(Vec<String>, DataType), String> {
-        let pin = |name: &str| {
-            args.iter()
-                .find(|(p, _)| p.eq_ignore_ascii_case(name))
-                .map(|(_, o)| o.clone())
-                .ok_or_else(|| format!("no {name} connected"))
-        };
+    ) -> Result<(Vec<String>, DataType), FunctionError> {
         // The inputs that share the function's type.
         let data: Vec<&Operand> = match self {
             Function::Sel => args.iter().skip(1).map(|(_, o)| o).collect(),
@@ -129,32 +123,44 @@ impl Function {
                 _ => wanted,
             })
             .unwrap_or(DataType::Dint);
+        let mut code = Vec::new();
+        let result = self.lines(args, ty, &mut code)?;
+        Ok((code, result))
+    }
+
+    /// Appends the IL to `code` with its inputs at type `ty`; the result's
+    /// type.
+    fn lines(
+        self,
+        args: &[(String, Operand)],
+        ty: DataType,
+        code: &mut Vec<String>,
+    ) -> Result<DataType, FunctionError> {
         let at = |o: &Operand| o.clone().at(Some(ty)).text;
-        let count = |n: usize| {
-            if args.len() == n {
+        let pin = |name: &'static str| {
+            args.iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(name))
+                .map(|(_, o)| o.clone())
+                .ok_or(FunctionError::Missing(name))
+        };
+        let count = |least: usize, most: usize| {
+            if (least..=most).contains(&args.len()) {
                 Ok(())
             } else {
-                Err(format!("takes {n} inputs, {} are connected", args.len()))
+                Err(FunctionError::Inputs(args.len()))
             }
         };
-        let mut code = Vec::new();
-        let result = match self {
+        Ok(match self {
             Function::Fold(op, many) => {
-                if args.len() < 2 || (!many && args.len() != 2) {
-                    return Err(format!("{op} of {} inputs", args.len()));
-                }
+                count(2, if many { usize::MAX } else { 2 })?;
                 code.push(format!("LD {}", at(&args[0].1)));
-                for (_, o) in &args[1..] {
-                    code.push(format!("{op} {}", at(o)));
-                }
+                code.extend(args[1..].iter().map(|(_, o)| format!("{op} {}", at(o))));
                 ty
             }
             // IEC's comparisons of more than two inputs hold for each
             // neighbouring pair: (IN1 > IN2) AND (IN2 > IN3) ….
             Function::Compare(op) => {
-                if args.len() < 2 {
-                    return Err(format!("{op} of {} inputs", args.len()));
-                }
+                count(2, usize::MAX)?;
                 code.push(format!("LD {}", at(&args[0].1)));
                 code.push(format!("{op} {}", at(&args[1].1)));
                 for pair in args[1..].windows(2) {
@@ -165,38 +171,55 @@ impl Function {
                 DataType::Bool
             }
             Function::Unary(op) => {
-                count(1)?;
+                count(1, 1)?;
                 code.push(format!("LD {}", at(&args[0].1)));
-                if !op.is_empty() {
-                    code.push(op.to_string());
-                }
+                code.extend((!op.is_empty()).then(|| op.to_string()));
                 ty
             }
             Function::Convert(from, to) => {
-                count(1)?;
+                count(1, 1)?;
                 code.push(format!("LD {}", args[0].1.clone().at(Some(from)).text));
                 code.push(format!("{}_TO_{}", from.name(), to.name()));
                 to
             }
             Function::Sel => {
-                count(3)?;
+                count(3, 3)?;
                 code.push(format!("LD {}", pin("G")?.text));
                 code.push(format!("SEL {}, {}", at(&pin("IN0")?), at(&pin("IN1")?)));
                 ty
             }
             Function::Limit => {
-                count(3)?;
+                count(3, 3)?;
                 code.push(format!("LD {}", at(&pin("MN")?)));
                 code.push(format!("LIMIT {}, {}", at(&pin("IN")?), at(&pin("MX")?)));
                 ty
             }
             Function::Shift(op) => {
-                count(2)?;
+                count(2, 2)?;
                 code.push(format!("LD {}", at(&pin("IN")?)));
                 code.push(format!("{op} {}", pin("N")?.text));
                 ty
             }
-        };
-        Ok((code, result))
+        })
     }
 }
+
+/// Why a function call cannot be written.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum FunctionError {
+    /// It does not take that many inputs.
+    Inputs(usize),
+    /// An input it needs is not connected.
+    Missing(&'static str),
+}
+
+impl std::fmt::Display for FunctionError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            FunctionError::Inputs(n) => write!(f, "it does not take {n} inputs"),
+            FunctionError::Missing(pin) => write!(f, "no {pin} connected"),
+        }
+    }
+}
+
+impl std::error::Error for FunctionError {}

@@ -105,6 +105,15 @@ fn text_of(n: &Node, child: &str) -> String {
         .unwrap_or_default()
 }
 
+/// What an element is read as: its kind, inputs, outputs and input
+/// modifiers.
+type Parts = (
+    Kind,
+    Vec<(String, Vec<Source>)>,
+    Vec<String>,
+    Vec<(String, bool, Option<bool>)>,
+);
+
 /// Reads `body` (an `<LD>` or `<FBD>`); refuses, at its line, what the
 /// soft PLC does not run (SFC steps, jumps, actions in a drawn body).
 pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
@@ -115,97 +124,11 @@ pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
     };
     let mut errors = Vec::new();
     for n in &body.children {
-        let single = || vec![(String::new(), sources(n.child("connectionPointIn")))];
-        let mut modifiers = Vec::new();
-        let (kind, inputs, outputs) = match n.name.as_str() {
-            "comment" => continue,
-            "leftPowerRail" => (Kind::LeftRail, Vec::new(), Vec::new()),
-            "rightPowerRail" => (Kind::RightRail, Vec::new(), Vec::new()),
-            "contact" => (
-                Kind::Contact {
-                    variable: text_of(n, "variable"),
-                    negated: flag(n, "negated"),
-                    edge: edge(n),
-                },
-                single(),
-                Vec::new(),
-            ),
-            "coil" => (
-                Kind::Coil {
-                    variable: text_of(n, "variable"),
-                    negated: flag(n, "negated"),
-                    storage: match n.attr("storage") {
-                        Some("set") => Some(true),
-                        Some("reset") => Some(false),
-                        _ => None,
-                    },
-                    edge: edge(n),
-                },
-                single(),
-                Vec::new(),
-            ),
-            "block" => {
-                let pins = |group: &str, point: &str| -> Vec<(String, Vec<Source>)> {
-                    n.child(group)
-                        .map(|g| {
-                            g.all("variable")
-                                .map(|v| {
-                                    let pin = v.attr("formalParameter").unwrap_or_default();
-                                    (pin.to_string(), sources(v.child(point)))
-                                })
-                                .collect()
-                        })
-                        .unwrap_or_default()
-                };
-                if let Some(group) = n.child("inputVariables") {
-                    for v in group.all("variable") {
-                        let (negated, edge) = (flag(v, "negated"), edge(v));
-                        if negated || edge.is_some() {
-                            let pin = v.attr("formalParameter").unwrap_or_default();
-                            modifiers.push((pin.to_string(), negated, edge));
-                        }
-                    }
-                }
-                let outputs = pins("outputVariables", "connectionPointOut")
-                    .into_iter()
-                    .map(|(p, _)| p)
-                    .collect();
-                (
-                    Kind::Block {
-                        type_name: n.attr("typeName").unwrap_or_default().to_string(),
-                        instance: n.attr("instanceName").unwrap_or_default().to_string(),
-                    },
-                    pins("inputVariables", "connectionPointIn"),
-                    outputs,
-                )
-            }
-            "inVariable" => (
-                Kind::InVariable(text_of(n, "expression")),
-                Vec::new(),
-                Vec::new(),
-            ),
-            "outVariable" => (
-                Kind::OutVariable(text_of(n, "expression")),
-                single(),
-                Vec::new(),
-            ),
-            "inOutVariable" => (
-                Kind::InOutVariable(text_of(n, "expression")),
-                single(),
-                Vec::new(),
-            ),
-            "connector" => (
-                Kind::Connector(n.attr("name").unwrap_or_default().to_string()),
-                single(),
-                Vec::new(),
-            ),
-            "continuation" => (
-                Kind::Continuation(n.attr("name").unwrap_or_default().to_string()),
-                Vec::new(),
-                Vec::new(),
-            ),
-            other => {
-                errors.push(Located::new(n.line, SoftError::Element(other.to_string())));
+        let (kind, inputs, outputs, modifiers) = match parts(n) {
+            Ok(Some(parts)) => parts,
+            Ok(None) => continue,
+            Err(e) => {
+                errors.push(Located::new(n.line, e));
                 continue;
             }
         };
@@ -245,4 +168,86 @@ pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
     } else {
         Err(errors)
     }
+}
+
+/// Element `n` read (`None`: a comment, which does not run).
+fn parts(n: &Node) -> Result<Option<Parts>, SoftError> {
+    let single = || vec![(String::new(), sources(n.child("connectionPointIn")))];
+    let name = |attr: &str| n.attr(attr).unwrap_or_default().to_string();
+    let (kind, inputs) = match n.name.as_str() {
+        "comment" => return Ok(None),
+        "block" => return Ok(Some(block(n))),
+        "leftPowerRail" => (Kind::LeftRail, Vec::new()),
+        "rightPowerRail" => (Kind::RightRail, Vec::new()),
+        "contact" => (
+            Kind::Contact {
+                variable: text_of(n, "variable"),
+                negated: flag(n, "negated"),
+                edge: edge(n),
+            },
+            single(),
+        ),
+        "coil" => (
+            Kind::Coil {
+                variable: text_of(n, "variable"),
+                negated: flag(n, "negated"),
+                storage: match n.attr("storage") {
+                    Some("set") => Some(true),
+                    Some("reset") => Some(false),
+                    _ => None,
+                },
+                edge: edge(n),
+            },
+            single(),
+        ),
+        "inVariable" => (Kind::InVariable(text_of(n, "expression")), Vec::new()),
+        "outVariable" => (Kind::OutVariable(text_of(n, "expression")), single()),
+        "inOutVariable" => (Kind::InOutVariable(text_of(n, "expression")), single()),
+        "connector" => (Kind::Connector(name("name")), single()),
+        "continuation" => (Kind::Continuation(name("name")), Vec::new()),
+        other => return Err(SoftError::Element(other.to_string())),
+    };
+    Ok(Some((kind, inputs, Vec::new(), Vec::new())))
+}
+
+/// A `<block>`: its type and instance, its input pins with their
+/// sources (and any drawn negated or on an edge), its output pins.
+fn block(n: &Node) -> Parts {
+    let pins = |group: &str, point: &str| -> Vec<(String, Vec<Source>)> {
+        n.child(group)
+            .map(|g| {
+                g.all("variable")
+                    .map(|v| {
+                        let pin = v.attr("formalParameter").unwrap_or_default();
+                        (pin.to_string(), sources(v.child(point)))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default()
+    };
+    let mut modifiers = Vec::new();
+    for v in n
+        .child("inputVariables")
+        .iter()
+        .flat_map(|g| g.all("variable"))
+    {
+        let (negated, edge) = (flag(v, "negated"), edge(v));
+        if negated || edge.is_some() {
+            let pin = v.attr("formalParameter").unwrap_or_default();
+            modifiers.push((pin.to_string(), negated, edge));
+        }
+    }
+    let outputs = pins("outputVariables", "connectionPointOut")
+        .into_iter()
+        .map(|(p, _)| p)
+        .collect();
+    (
+        Kind::Block {
+            type_name: n.attr("typeName").unwrap_or_default().to_string(),
+            instance: n.attr("instanceName").unwrap_or_default().to_string(),
+        },
+        pins("inputVariables", "connectionPointIn"),
+        outputs,
+        modifiers,
+    )
 }
