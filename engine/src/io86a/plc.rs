@@ -6,8 +6,8 @@ use super::machine::Machine;
 use super::peripherals::{InputMode, IrMode};
 use super::{LinkedPair, Program, Terminal};
 use crate::events::InputValue;
+use crate::plc::SettingInfo;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
-use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
 
@@ -476,10 +476,6 @@ impl Plc for Io86aPlc {
         }
         image.clear();
         image.extend_from_slice(&buf);
-    }
-
-    fn warnings(&self) -> Vec<Warning> {
-        Vec::new()
     }
 
     fn settings(&self) -> &'static [SettingInfo] {

@@ -6,8 +6,8 @@ use super::isa::Address;
 use super::machine::Machine;
 use super::Program;
 use crate::events::InputValue;
+use crate::plc::SettingInfo;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
-use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
 
@@ -309,10 +309,6 @@ impl Plc for MinasecPlc {
     /// The front panel, copied in place.
     fn front_into(&self, front: &mut plc::Front) {
         front.fill(|panel: &mut super::Panel| self.machine.panel_into(panel));
-    }
-
-    fn warnings(&self) -> Vec<Warning> {
-        Vec::new()
     }
 
     fn settings(&self) -> &'static [SettingInfo] {

@@ -205,8 +205,11 @@ pub trait Plc {
         front.clear();
     }
 
-    /// Warnings about the loaded program.
-    fn warnings(&self) -> Vec<Warning>;
+    /// Warnings about the loaded program (none, unless the machine has
+    /// some to give).
+    fn warnings(&self) -> Vec<Warning> {
+        Vec::new()
+    }
 
     /// The settings this machine takes.
     fn settings(&self) -> &'static [SettingInfo];

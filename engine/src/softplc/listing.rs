@@ -149,9 +149,24 @@ impl fmt::Display for Variable {
 /// The declarations and lines as one text: the `VAR` block, the
 /// `VAR_RETAIN` block (each only when it has a variable), then the IL.
 pub fn listing(vars: &[Variable], lines: &[Line]) -> String {
+    let declared = |retain: bool| -> Vec<String> {
+        vars.iter()
+            .filter(|v| v.retain == retain)
+            .map(|v| v.to_string())
+            .collect()
+    };
+    let mut out = var_blocks(&declared(false), &declared(true));
+    for line in lines {
+        out.push_str(&format!("{line}\n"));
+    }
+    out
+}
+
+/// Declaration lines as a `VAR` block and a `VAR_RETAIN` block, each
+/// only when it has a line.
+pub fn var_blocks(plain: &[String], retained: &[String]) -> String {
     let mut out = String::new();
-    for (header, retain) in [("VAR", false), ("VAR_RETAIN", true)] {
-        let block: Vec<&Variable> = vars.iter().filter(|v| v.retain == retain).collect();
+    for (header, block) in [("VAR", plain), ("VAR_RETAIN", retained)] {
         if block.is_empty() {
             continue;
         }
@@ -161,9 +176,6 @@ pub fn listing(vars: &[Variable], lines: &[Line]) -> String {
             out.push_str(&format!("  {v}\n"));
         }
         out.push_str("END_VAR\n");
-    }
-    for line in lines {
-        out.push_str(&format!("{line}\n"));
     }
     out
 }

@@ -10,8 +10,8 @@ use super::machine::Machine;
 use super::pins::outputs;
 use super::program::Program;
 use crate::events::InputValue;
+use crate::plc::SettingInfo;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
-use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
 
@@ -149,6 +149,24 @@ impl SoftPlc {
             .map_or_else(|| format!("slot {slot}"), |(n, _)| n)
     }
 
+    /// What `value` gives the variable at `slot`, or why not (naming its
+    /// type).
+    fn data(&self, slot: usize, value: InputValue) -> Result<Data, PlcError> {
+        let t = self
+            .machine
+            .program()
+            .slot_type(slot)
+            .unwrap_or(DataType::Bool);
+        data_for(t, value).ok_or_else(|| {
+            DeviceError::own(SoftDeviceError::Value {
+                device: self.name(slot),
+                data_type: t,
+                value: value.to_string(),
+            })
+            .into()
+        })
+    }
+
     /// A block's output by instance and pin name (`TON0`, `ET`); `v` is
     /// its current value (ET, CV), no pin its first output.
     fn block_device(&self, block: &str, pin: Option<&str>) -> Option<Result<Device, PlcError>> {
@@ -214,18 +232,7 @@ impl Plc for SoftPlc {
         match command {
             plc::Command::SetInput(device, value) => {
                 let slot = self.slot(device)?;
-                let t = self
-                    .machine
-                    .program()
-                    .slot_type(slot)
-                    .unwrap_or(DataType::Bool);
-                let data = data_for(t, value).ok_or_else(|| {
-                    DeviceError::own(SoftDeviceError::Value {
-                        device: self.name(slot),
-                        data_type: t,
-                        value: value.to_string(),
-                    })
-                })?;
+                let data = self.data(slot, value)?;
                 if !self.machine.program_mut().set_terminal(slot, data) {
                     self.machine.write(slot, data);
                 }
@@ -290,21 +297,7 @@ impl Plc for SoftPlc {
     }
 
     fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError> {
-        let slot = self.slot(device)?;
-        let t = self
-            .machine
-            .program()
-            .slot_type(slot)
-            .unwrap_or(DataType::Bool);
-        match data_for(t, value) {
-            Some(_) => Ok(()),
-            None => Err(DeviceError::own(SoftDeviceError::Value {
-                device: self.name(slot),
-                data_type: t,
-                value: value.to_string(),
-            })
-            .into()),
-        }
+        self.data(self.slot(device)?, value).map(|_| ())
     }
 
     fn read(&self, device: Device) -> Value {
@@ -377,10 +370,6 @@ impl Plc for SoftPlc {
 
     fn running(&self) -> bool {
         self.machine.running()
-    }
-
-    fn warnings(&self) -> Vec<Warning> {
-        Vec::new()
     }
 
     fn settings(&self) -> &'static [SettingInfo] {

@@ -63,8 +63,7 @@ pub fn import_pou(
     map: Option<&VarMap>,
     pou: Option<&str>,
 ) -> Result<Imported, Errors> {
-    let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
-    check_project(&root)?;
+    let root = project(text)?;
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
@@ -130,7 +129,14 @@ pub fn import_pou(
 }
 
 /// The root is a PLCopen project in a namespace this reader knows.
-pub(super) fn check_project(root: &Node) -> Result<(), Errors> {
+/// The file read as a PLCopen project (its root), or why not.
+pub(super) fn project(text: &str) -> Result<Node, Errors> {
+    let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
+    check_project(&root)?;
+    Ok(root)
+}
+
+fn check_project(root: &Node) -> Result<(), Errors> {
     if root.name != "project" {
         return Err(vec![Located::new(
             root.line,

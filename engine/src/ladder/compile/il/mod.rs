@@ -102,17 +102,7 @@ pub(crate) fn compile_mapped(
         return Err(errors);
     }
     let mut text = String::from("(* compiled by hashigo from a ladder *)\n");
-    for (header, vars) in [("VAR", &c.vars), ("VAR_RETAIN", &c.retained)] {
-        if vars.is_empty() {
-            continue;
-        }
-        text.push_str(header);
-        text.push('\n');
-        for v in vars {
-            text.push_str(&format!("  {v}\n"));
-        }
-        text.push_str("END_VAR\n");
-    }
+    text.push_str(&crate::softplc::listing::var_blocks(&c.vars, &c.retained));
     let header = text.lines().count();
     for l in &c.lines {
         text.push_str(l);
@@ -158,6 +148,17 @@ impl Compiler {
         }
     }
 
+    /// The rung's power in a BOOL: stored the first time it is asked for.
+    fn hold(&mut self, held: &mut Option<String>) -> String {
+        if let Some(p) = held {
+            return p.clone();
+        }
+        let p = self.fresh("_p", "BOOL");
+        self.emit(format!("ST {p}"));
+        *held = Some(p.clone());
+        p
+    }
+
     fn rung(&mut self, logic: &RungLogic) -> RungResult {
         let cond = self.edges(&logic.condition);
         self.net(&cond, Pin::Rail)
@@ -167,30 +168,14 @@ impl Compiler {
         let mut held: Option<String> = None;
         for (e, pos) in &logic.outputs {
             if let Element::OutputBlock(b) = e {
-                let power = match &held {
-                    Some(p) => p.clone(),
-                    None => {
-                        let p = self.fresh("_p", "BOOL");
-                        self.emit(format!("ST {p}"));
-                        held = Some(p.clone());
-                        p
-                    }
-                };
+                let power = self.hold(&mut held);
                 self.block(b, *pos, Pin::Held(power.clone()))
                     .map_err(|m| (*pos, m))?;
                 self.emit(format!("LD {power}"));
                 continue;
             }
             if let Element::Pulse { falling, device } = e {
-                let power = match &held {
-                    Some(p) => p.clone(),
-                    None => {
-                        let p = self.fresh("_p", "BOOL");
-                        self.emit(format!("ST {p}"));
-                        held = Some(p.clone());
-                        p
-                    }
-                };
+                let power = self.hold(&mut held);
                 let block = if *falling { "F_TRIG" } else { "R_TRIG" };
                 let trig = self.fresh("_edge", block);
                 self.emit(format!("CAL {trig}(CLK := {power}, Q => {device})"));

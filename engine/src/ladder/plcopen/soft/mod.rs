@@ -14,8 +14,8 @@ pub(crate) mod functions;
 mod graph;
 mod order;
 
-use super::dom::{self, Node};
-use super::import::{check_project, choose_pous, drawn_body, language};
+use super::dom::Node;
+use super::import::{choose_pous, drawn_body, language, project};
 use super::ImportError;
 use crate::error::Located;
 use crate::softplc::Program;
@@ -42,8 +42,7 @@ fn soft(errors: Vec<Located<SoftError>>) -> Errors {
 /// The programs the tasks run (or `pou` alone) as one soft PLC program
 /// that loads; every problem at its line of the file.
 pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
-    let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
-    check_project(&root)?;
+    let root = project(text)?;
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
