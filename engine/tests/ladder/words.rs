@@ -102,6 +102,20 @@ fn inline_box(n: usize) -> impl Strategy<Value = Net> {
             inputs: Vec::new(),
             outputs: Vec::new(),
         }))),
+        prop::sample::select(INPUTS.to_vec()).prop_map(move |r| {
+            let mut c = call("SR", &[("R", r.to_string())], &[]);
+            c.instance = format!("s{n}");
+            leaf(Element::Block(c))
+        }),
+        (1i32..4, prop::sample::select(INPUTS.to_vec())).prop_map(move |(pv, cd)| {
+            let mut c = call(
+                "CTUD",
+                &[("CD", cd.to_string()), ("PV", pv.to_string())],
+                &[("CV", "w1")],
+            );
+            c.instance = format!("u{n}");
+            leaf(Element::Block(c))
+        }),
     ]
 }
 
@@ -223,6 +237,18 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
         .map_err(|e| TestCaseError::fail(format!("export: {e:?}")))?;
     let again = engine::ladder::plcopen::soft::to_il(&xml, None)
         .map_err(|e| TestCaseError::fail(format!("{e:?}\n{xml}")))?;
+    // And the IL read back as a ladder, compiled again.
+    let program =
+        engine::softplc::Program::load(&text).map_err(|e| TestCaseError::fail(format!("{e:?}")))?;
+    let back =
+        engine::ladder::decompile::decompile(engine::ladder::decompile::Source::Soft(&program))
+            .map_err(|e| TestCaseError::fail(format!("decompile: {e}\n{text}")))?;
+    let recompiled = compile(&back, MachineId::SoftPlc, Options::default())
+        .map_err(|e| TestCaseError::fail(format!("recompile: {e:?}\n{text}")))?;
+    let mut third = new_plc(MachineId::SoftPlc);
+    third
+        .load_text(&recompiled)
+        .map_err(|e| TestCaseError::fail(format!("{e}\n{recompiled}")))?;
     let mut other = new_plc(MachineId::SoftPlc);
     other
         .load_text(&again.text)
@@ -231,9 +257,10 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
         let t = SimTime::from_millis(10 * j as u64 + 5);
         plc.run_until(t);
         other.run_until(t);
+        third.run_until(t);
         for (d, &on) in INPUTS.iter().zip(inputs) {
             reference.set(d, on);
-            for m in [&mut plc, &mut other] {
+            for m in [&mut plc, &mut other, &mut third] {
                 // An input the program does not use is not the soft PLC's.
                 let Ok(dev) = m.device(d) else { continue };
                 m.apply(Command::SetInput(dev, InputValue::Int(i64::from(on))))
@@ -242,6 +269,7 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
         }
         plc.run_until(t + SimTime::from_millis(10));
         other.run_until(t + SimTime::from_millis(10));
+        third.run_until(t + SimTime::from_millis(10));
         let want: Vec<Vec<(bool, bool)>> = reference
             .scan()
             .iter()
@@ -272,6 +300,18 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
             );
             let want = reference.value(w).map(|d| d.to_value());
             prop_assert_eq!(Some(got), want, "scan {}: {}\n{}", j, w, text);
+            let dev = third
+                .device(w)
+                .map_err(|e| TestCaseError::fail(e.to_string()))?;
+            prop_assert_eq!(
+                third.read(dev),
+                got,
+                "scan {}: {} decompiled\n{}\n{}",
+                j,
+                w,
+                text,
+                recompiled
+            );
             if let Ok(dev) = other.device(w) {
                 prop_assert_eq!(
                     other.read(dev),
@@ -281,6 +321,18 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
                     w,
                     xml,
                     again.text
+                );
+            }
+        }
+        for d in BITS {
+            if let (Ok(a), Ok(b)) = (plc.device(d), third.device(d)) {
+                prop_assert_eq!(
+                    plc.read(a),
+                    third.read(b),
+                    "scan {}: {} decompiled\n{}",
+                    j,
+                    d,
+                    recompiled
                 );
             }
         }

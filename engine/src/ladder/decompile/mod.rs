@@ -107,7 +107,9 @@ pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
         Source::Arduino(p) => arduino_ladder(p)?,
         Source::Soft(p) => {
             let (vars, lines) = p.source();
-            il::il_ladder(vars, lines)?
+            let mut ladder = il::il_ladder(vars, lines)?;
+            ladder.variables = il::declared(vars);
+            ladder
         }
     };
     if let Source::Avr(p, _) = source {

@@ -315,8 +315,13 @@ impl Compiler {
                 };
                 // Each box is a timer of its own (as on the AVR PLC): a
                 // name drawn twice gets a second instance.
-                let instance = if self.instances.insert(name.to_ascii_uppercase()) {
-                    self.vars.push(format!("{name} : {block};"));
+                // A name the ladder declares as this timer is that one.
+                let upper = name.to_ascii_uppercase();
+                let declared = self.blocks.get(&upper).is_some_and(|k| k == block);
+                let instance = if self.instances.insert(upper) {
+                    if !declared {
+                        self.vars.push(format!("{name} : {block};"));
+                    }
                     name.clone()
                 } else {
                     self.fresh(&format!("{name}_"), block)

@@ -5,10 +5,14 @@
 //! are coils. An R_TRIG / F_TRIG called on a device (`CAL e(CLK := x,
 //! Q => q)`) makes each later contact on `q` a rising / falling contact
 //! on `x`; a timer called on the power (`ST p`, `CAL t(IN := p, PT :=
-//! T#500ms, Q => q)`, `LD q`) is an in-line box. Anything else (word
-//! data, jumps) has no ladder form yet and is refused at its step.
+//! T#500ms, Q => q)`, `LD q`) is an in-line box, as is any block called
+//! on the power (then a soft PLC box); functions and comparisons come
+//! back as boxes (`boxes.rs`). Anything else (jumps, hand-written
+//! shapes) has no ladder form and is refused at its step.
 
-use std::collections::HashMap;
+mod boxes;
+
+use std::collections::{HashMap, HashSet};
 
 use super::stack::Stack;
 use super::{contact, drawn, DecompileError, Part, StepError};
@@ -31,6 +35,9 @@ enum Stands {
 /// the last line loaded the rail (`LD TRUE`, for a NOT after it).
 struct Walk<'a> {
     vars: &'a [Variable],
+    lines: &'a [Line],
+    /// The declared names (upper-case) that hold words.
+    words: HashSet<String>,
     s: Stack,
     pending: Vec<bool>,
     stands: HashMap<String, Stands>,
@@ -42,16 +49,27 @@ type Step = Result<(), DecompileError>;
 
 /// The ladder of an IL program's declarations and lines.
 pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, DecompileError> {
+    let words = vars
+        .iter()
+        .filter(|v| matches!(v.kind, Kind::Value { data_type, .. } if data_type != crate::softplc::data::DataType::Bool))
+        .map(|v| v.name.to_ascii_uppercase())
+        .collect();
     let mut w = Walk {
         vars,
+        lines,
+        words,
         s: Stack::default(),
         pending: Vec::new(),
         stands: HashMap::new(),
         power: None,
         rail: false,
     };
-    for (step, line) in lines.iter().enumerate() {
-        w.line(step, line)?;
+    let mut step = 0;
+    while step < lines.len() {
+        step = match w.boxed(step)? {
+            Some(next) => next,
+            None => w.line(step, &lines[step])?,
+        };
     }
     w.s.flush();
     drawn(&w.s.rungs)
@@ -64,7 +82,7 @@ fn bad(step: usize, message: &str) -> DecompileError {
     })
 }
 
-impl Walk<'_> {
+impl<'a> Walk<'a> {
     /// A contact on `name`, or the edge contact its R_TRIG stands for.
     fn leaf(&self, name: &str, inverted: bool) -> Net {
         match self.stands.get(name) {
@@ -79,7 +97,8 @@ impl Walk<'_> {
         }
     }
 
-    fn line(&mut self, step: usize, line: &Line) -> Step {
+    /// One line; the index of the next.
+    fn line(&mut self, step: usize, line: &Line) -> Result<usize, DecompileError> {
         let name = match &line.operand {
             Some(Operand::Name(n)) => Some(n.clone()),
             Some(Operand::Address(a)) => Some(a.to_string()),
@@ -93,7 +112,7 @@ impl Walk<'_> {
         }
         let was_rail = std::mem::take(&mut self.rail);
         match (line.operator, &name, line.deferred) {
-            (Operator::Ld, Some(n), false) => self.load(step, n, line.negated)?,
+            (Operator::Ld, Some(n), false) => return self.load(step, n, line.negated),
             (Operator::Ld, None, false)
                 if line.operand == Some(Operand::Literal(crate::softplc::Data::Bool(true))) =>
             {
@@ -149,12 +168,24 @@ impl Walk<'_> {
             (Operator::Cal, Some(block), _) => self.call(step, line, block)?,
             _ => return Err(bad(step, &format!("`{line}` has no ladder form yet"))),
         }
-        Ok(())
+        Ok(step + 1)
+    }
+
+    /// The block kind instance `block` is declared as ("" if none).
+    fn kind_of(&self, block: &str) -> &'a str {
+        self.vars
+            .iter()
+            .find_map(|v| match &v.kind {
+                Kind::Block(b) if v.name.eq_ignore_ascii_case(block) => Some(b.as_str()),
+                _ => None,
+            })
+            .unwrap_or_default()
     }
 
     /// `LD n`: a new rung from a contact, or the output of a box (on the
-    /// power held for it, or on the rail).
-    fn load(&mut self, step: usize, n: &str, negated: bool) -> Step {
+    /// power held for it, or on the rail; an output box when the power
+    /// is loaded again after it). The index of the next line.
+    fn load(&mut self, step: usize, n: &str, negated: bool) -> Result<usize, DecompileError> {
         if self.power.as_deref() == Some(n) {
             return Err(bad(
                 step,
@@ -163,8 +194,18 @@ impl Walk<'_> {
         }
         match self.stands.get(n) {
             Some(Stands::Boxed(e)) => {
-                let e = Net::Leaf(e.clone(), Pos::new(0, 0));
-                if self.power.take().is_some() {
+                let e = e.clone();
+                let power = self.power.take();
+                if let (Some(p), Element::Block(call)) = (&power, &e) {
+                    if boxes::reloads(self.lines.get(step + 1), p) {
+                        self.s
+                            .output(Element::OutputBlock(call.clone()), None, step)?;
+                        self.power = power;
+                        return Ok(step + 2);
+                    }
+                }
+                let e = Net::Leaf(e, Pos::new(0, 0));
+                if power.is_some() {
                     self.s.grow(e, true, step)?;
                 } else {
                     self.s.load(e);
@@ -178,32 +219,29 @@ impl Walk<'_> {
                 self.s.load(leaf);
             }
         }
-        Ok(())
+        Ok(step + 1)
     }
 
     /// `CAL block(…)`: an edge contact's R_TRIG, a pulse output, an
     /// in-line edge or timer box.
     fn call(&mut self, step: usize, line: &Line, block: &str) -> Step {
-        let kind = self
-            .vars
-            .iter()
-            .find_map(|v| match &v.kind {
-                Kind::Block(b) if v.name.eq_ignore_ascii_case(block) => Some(b.as_str()),
-                _ => None,
-            })
-            .unwrap_or_default();
+        let kind = self.kind_of(block);
         let input = |pin: &str| {
             line.inputs
                 .iter()
                 .find(|(p, _)| p.eq_ignore_ascii_case(pin))
                 .map(|(_, v)| v)
         };
+        // The power out: the block's first output (Q, QU, Q1).
+        let out_pin = crate::softplc::pins::outputs(kind)
+            .first()
+            .map_or("Q", |(p, _)| *p);
         let q = line
             .outputs
             .iter()
-            .find(|(p, _)| p.eq_ignore_ascii_case("Q"))
+            .find(|(p, _)| p.eq_ignore_ascii_case(out_pin))
             .map(|(_, v)| v.clone())
-            .ok_or_else(|| bad(step, "a call with no Q => has no ladder form"))?;
+            .ok_or_else(|| bad(step, "a call with no power out (Q =>) has no ladder form"))?;
         let from_power = |v: Option<&Operand>| match v {
             Some(Operand::Literal(crate::softplc::Data::Bool(true))) => true,
             Some(Operand::Name(n)) => self.power.as_deref() == Some(n.as_str()),
@@ -232,7 +270,7 @@ impl Walk<'_> {
             "R_TRIG" | "F_TRIG" => Stands::Boxed(Element::Edge {
                 falling: kind == "F_TRIG",
             }),
-            "TON" | "TOF" | "TP" if from_power(input("IN")) => {
+            "TON" | "TOF" | "TP" if from_power(input("IN")) && timer_shaped(line) => {
                 let Some(Operand::Literal(crate::softplc::Data::Time(ns))) = input("PT") else {
                     return Err(bad(
                         step,
@@ -250,9 +288,62 @@ impl Walk<'_> {
                     preset_ms: u32::try_from(ns / 1_000_000).unwrap_or(u32::MAX),
                 })
             }
+            kind if crate::softplc::vars::BLOCK_TYPES.contains(&kind) => {
+                let pins = crate::softplc::pins::inputs(kind);
+                let power_pin = pins.first().map_or("", |(p, _)| *p);
+                if !from_power(input(power_pin)) {
+                    return Err(bad(step, &format!("CAL {block} has no ladder form yet")));
+                }
+                Stands::Boxed(Element::Block(boxes::called(
+                    kind, block, line, power_pin, &q,
+                )))
+            }
             _ => return Err(bad(step, &format!("CAL {block} has no ladder form yet"))),
         };
         self.stands.insert(q, stands);
         Ok(())
     }
+}
+
+/// Whether a timer call is an in-line timer's (IN, PT as a T# literal,
+/// Q alone) rather than a box's.
+fn timer_shaped(line: &Line) -> bool {
+    line.inputs.len() == 2 && line.outputs.len() == 1
+}
+
+/// The program's declarations as the ladder's variables: the words and
+/// the block instances it names (a BOOL needs no declaration, and the
+/// compiler's own `_` names are its to make again), with their
+/// addresses, start values, retain and comments.
+pub(super) fn declared(vars: &[Variable]) -> Vec<crate::ladder::Variable> {
+    vars.iter()
+        .filter(|v| !v.name.starts_with('_'))
+        .filter_map(|v| {
+            let (ty, initial) = match &v.kind {
+                Kind::Value { data_type, init } => {
+                    let initial = if *init == data_type.zero() {
+                        String::new()
+                    } else {
+                        init.to_string()
+                    };
+                    if *data_type == crate::softplc::data::DataType::Bool
+                        && v.address.is_none()
+                        && initial.is_empty()
+                        && !v.retain
+                        && v.comment.is_empty()
+                    {
+                        return None;
+                    }
+                    (data_type.name().to_string(), initial)
+                }
+                Kind::Block(b) => (b.clone(), String::new()),
+            };
+            let mut out = crate::ladder::Variable::new(&v.name, &ty);
+            out.address = v.address.map(|a| a.to_string()).unwrap_or_default();
+            out.initial = initial;
+            out.retain = v.retain;
+            out.comment = v.comment.clone();
+            Some(out)
+        })
+        .collect()
 }
