@@ -373,3 +373,82 @@ fn word_ladders_match_the_reference() {
 fn word_ladders_match_the_reference_5000() {
     run(5_000);
 }
+
+/// A soft PLC project of our own: a rising edge adds one to `count`
+/// (an output box), `count > 2` lights a lamp, a TON box times an input;
+/// with two ladder tests on the word.
+const COUNTER: &str = r#"{"format": "hashigo-project", "version": 2, "machine": "soft-plc", "ladder": {"rungs": [{"cells": [[{"type": "contact", "kind": "rising", "device": "%IX0.0"}, {"type": "output_block", "kind": "ADD", "inputs": [["IN1", "count"], ["IN2", "1"]], "outputs": [["OUT", "count"]]}]]}, {"cells": [[{"type": "block", "kind": "GT", "inputs": [["IN1", "count"], ["IN2", "2"]]}, {"type": "coil", "kind": "normal", "device": "%QX0.0"}]]}, {"cells": [[{"type": "contact", "kind": "no", "device": "%IX0.1"}, {"type": "block", "kind": "TON", "instance": "t0", "inputs": [["PT", "T#50ms"]], "outputs": [["ET", "waited"]]}, {"type": "coil", "kind": "normal", "device": "%QX0.1"}]]}], "variables": [{"name": "count", "type": "INT"}, {"name": "waited", "type": "TIME"}]}, "tests": [{"name": "three presses count to three", "events": "10ms,%IX0.0,1\n30ms,%IX0.0,0\n40ms,%IX0.0,1\n60ms,%IX0.0,0\n70ms,%IX0.0,1\n", "expect": ["count = 3 at 100ms", "%QX0.0 = 1 at 100ms", "count = 2 at 50ms"]}, {"name": "a wrong count fails", "events": "10ms,%IX0.0,1\n", "expect": ["count = 5 at 100ms"]}]}"#;
+
+#[test]
+fn ladder_tests_check_words_on_the_command_line() {
+    use crate::common::{hashigo, text, Temp};
+    let tmp = Temp::new("word-tests");
+    let project = tmp.file("counter.json", COUNTER);
+    let out = hashigo(&["test", "--program", &project], "");
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "pass three presses count to three\n\
+         fail a wrong count fails: count = 5 at 100ms: count was 1 at 100ms\n\
+         1 passed, 1 failed\n"
+    );
+    // The same project runs, compiles, shares and explains.
+    let run = hashigo(
+        &[
+            "run",
+            "--program",
+            &project,
+            "--until",
+            "100ms",
+            "--watch",
+            "count,waited",
+        ],
+        "",
+    );
+    assert_eq!(text(&run.stdout), "time_ms,count,waited\n0,0,0\n100,0,0\n");
+    let share = hashigo(&["share", "--program", &project], "");
+    assert!(
+        text(&share.stdout).starts_with("3."),
+        "{}",
+        text(&share.stdout)
+    );
+    let why = hashigo(
+        &[
+            "why",
+            "--program",
+            &project,
+            "--at",
+            "50ms",
+            "--device",
+            "%QX0.0",
+        ],
+        "",
+    );
+    assert_eq!(why.status.code(), Some(0), "{}", text(&why.stderr));
+    // A comparison that blocks the power says its operands' values; a
+    // word written by an output box is explained by that box's rung.
+    assert!(
+        text(&why.stdout).contains("GT(IN1 := count, IN2 := 2); IN1 count = 0"),
+        "{}",
+        text(&why.stdout)
+    );
+    let why = hashigo(
+        &[
+            "why",
+            "--program",
+            &project,
+            "--at",
+            "50ms",
+            "--device",
+            "count",
+        ],
+        "",
+    );
+    assert!(
+        text(&why.stdout).contains(
+            "Rung 1, row 1, column 2: ADD(IN1 := count, IN2 := 1, OUT => count) gets no power."
+        ),
+        "{}",
+        text(&why.stdout)
+    );
+}

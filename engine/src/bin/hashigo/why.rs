@@ -286,6 +286,17 @@ fn report(
             cause.pos.col + 1,
             cause.element
         );
+        // A box: its operands' values, which decide it.
+        if let Some(b) = ladder.rungs[rung]
+            .get(cause.pos)
+            .and_then(engine::ladder::Element::block)
+        {
+            for (pin, operand) in &b.inputs {
+                if let Ok(d) = plc.device(operand) {
+                    let _ = write!(out, "; {pin} {operand} = {}", plc.read(d));
+                }
+            }
+        }
         if let Some(d) = &cause.device {
             let state = changes
                 .get(d)

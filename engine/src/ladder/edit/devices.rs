@@ -122,13 +122,21 @@ fn devices(e: &Element) -> Vec<(&str, UseRole)> {
         Element::Mov { src, dst } => vec![(src, UseRole::Box), (dst, UseRole::Box)],
         Element::Cmp { a, b } => vec![(a, UseRole::Box), (b, UseRole::Box)],
         Element::Inc { dst } | Element::Dec { dst } => vec![(dst, UseRole::Box)],
-        Element::Block(b) | Element::OutputBlock(b) => b
-            .inputs
-            .iter()
-            .chain(&b.outputs)
-            .map(|(_, o)| (o.as_str(), UseRole::Box))
-            .filter(|(o, _)| crate::ladder::block::is_variable(o))
-            .collect(),
+        // An output box's outputs are written as a coil's device is (Why?
+        // explains them by its rung's power).
+        Element::Block(b) | Element::OutputBlock(b) => {
+            let writes = if matches!(e, Element::OutputBlock(_)) {
+                UseRole::Coil
+            } else {
+                UseRole::Box
+            };
+            b.inputs
+                .iter()
+                .map(|(_, o)| (o.as_str(), UseRole::Box))
+                .chain(b.outputs.iter().map(|(_, o)| (o.as_str(), writes)))
+                .filter(|(o, _)| crate::ladder::block::is_variable(o))
+                .collect()
+        }
         Element::Wire | Element::Not | Element::Edge { .. } | Element::Timer { .. } => Vec::new(),
     }
 }
