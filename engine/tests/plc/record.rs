@@ -449,3 +449,21 @@ fn series_and_last_change_read_what_the_machine_showed() {
     assert!(travel.set_break("Y00 wobbles").is_err());
     assert!(travel.set_break("Y01 rises").is_ok());
 }
+
+#[test]
+fn every_recorded_scan_replays_and_resumes_exactly_on_the_soft_plc() {
+    // Words, a timer, a counter and an edge: all of its state.
+    let text =
+        "VAR\n  count : INT;\n  t : TON;\n  c : CTU;\n  e : R_TRIG;\n  up : BOOL;\nEND_VAR\n\
+                CAL e(CLK := %IX0.0, Q => up)\n\
+                LD up\nJMPCN skip\nLD count\nADD 7\nST count\n\
+                skip: LD %IX0.1\nST %QX0.0\n\
+                CAL t(IN := %IX0.1, PT := T#30ms)\n\
+                CAL c(CU := %IX0.0, R := %IX0.1, PV := 3)\n";
+    let (m, inputs) = loaded(
+        engine::machines::SoftPlc::new(),
+        text,
+        &["%IX0.0", "%IX0.1"],
+    );
+    property(m, inputs, 32);
+}
