@@ -195,19 +195,9 @@ impl Plc for AvrPlc {
         Some(self.machine.next_scan_end())
     }
 
-    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
-        self.machine.nth_scan_end(n)
-    }
-
     plc::forward_time!(machine);
 
-    fn scans(&self) -> u64 {
-        self.machine.scans()
-    }
-
-    fn step_instruction(&mut self) -> Option<usize> {
-        self.machine.step_instruction()
-    }
+    plc::forward_scans!(machine);
 
     // Record `n` is step `n`: a load, and, or reads its bit.
     plc::forward_tracing!(machine.tracer);

@@ -263,6 +263,26 @@ macro_rules! forward_time {
 }
 pub(crate) use forward_time;
 
+/// The scan methods a [`Plc`] implementation forwards unchanged to the
+/// machine in its field `$field` (`nth_scan_end`, `scans`,
+/// `step_instruction`): the AVR PLC and the soft PLC.
+macro_rules! forward_scans {
+    ($field:ident) => {
+        fn nth_scan_end(&self, n: u64) -> Option<$crate::time::SimTime> {
+            self.$field.nth_scan_end(n)
+        }
+
+        fn scans(&self) -> u64 {
+            self.$field.scans()
+        }
+
+        fn step_instruction(&mut self) -> Option<usize> {
+            self.$field.step_instruction()
+        }
+    };
+}
+pub(crate) use forward_scans;
+
 /// The tracing methods every [`Plc`] implementation forwards to the
 /// [`Tracer`] at `$($path).+` (`machine.tracer`, `pair.a.tracer`); each
 /// machine says next to the call how its steps are numbered.

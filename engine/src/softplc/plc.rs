@@ -330,19 +330,9 @@ impl Plc for SoftPlc {
         self.machine.next_scan_end()
     }
 
-    fn nth_scan_end(&self, n: u64) -> Option<SimTime> {
-        self.machine.nth_scan_end(n)
-    }
-
     plc::forward_time!(machine);
 
-    fn scans(&self) -> u64 {
-        self.machine.scans()
-    }
-
-    fn step_instruction(&mut self) -> Option<usize> {
-        self.machine.step_instruction()
-    }
+    plc::forward_scans!(machine);
 
     // Step `n` is the program's `n`-th IL instruction (from 0): the bit
     // is its operand's (on when TRUE or not zero), the result the

@@ -412,18 +412,21 @@ fn ladder_tests_check_words_on_the_command_line() {
         "{}",
         text(&share.stdout)
     );
-    let why = hashigo(
-        &[
-            "why",
-            "--program",
-            &project,
-            "--at",
-            "50ms",
-            "--device",
-            "%QX0.0",
-        ],
-        "",
-    );
+    let why_of = |device: &str| {
+        hashigo(
+            &[
+                "why",
+                "--program",
+                &project,
+                "--at",
+                "50ms",
+                "--device",
+                device,
+            ],
+            "",
+        )
+    };
+    let why = why_of("%QX0.0");
     assert_eq!(why.status.code(), Some(0), "{}", text(&why.stderr));
     // A comparison that blocks the power says its operands' values; a
     // word written by an output box is explained by that box's rung.
@@ -432,18 +435,7 @@ fn ladder_tests_check_words_on_the_command_line() {
         "{}",
         text(&why.stdout)
     );
-    let why = hashigo(
-        &[
-            "why",
-            "--program",
-            &project,
-            "--at",
-            "50ms",
-            "--device",
-            "count",
-        ],
-        "",
-    );
+    let why = why_of("count");
     assert!(
         text(&why.stdout).contains(
             "Rung 1, row 1, column 2: ADD(IN1 := count, IN2 := 1, OUT => count) gets no power."
