@@ -275,7 +275,7 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
         let code = strip_comments(raw);
         let code = code.trim();
         let upper = code.trim_end_matches(';').to_ascii_uppercase();
-        if matches!(upper.as_str(), "VAR" | "VAR_RETAIN" | "VAR RETAIN") {
+        if super::vars::header(&upper).is_some() {
             in_vars = true;
             continue;
         }

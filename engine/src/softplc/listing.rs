@@ -6,7 +6,7 @@ use std::fmt;
 
 use super::data::{Data, DataType};
 use super::il::{Function, Line, Operand, Operator};
-use super::vars::{Kind, Variable};
+use super::vars::{Direction, Kind, Variable};
 
 impl fmt::Display for Data {
     /// As a typed IEC literal: `TRUE`, `INT#-5`, `UINT#65535`,
@@ -151,11 +151,29 @@ impl fmt::Display for Variable {
 pub fn listing(vars: &[Variable], lines: &[Line]) -> String {
     let declared = |retain: bool| -> Vec<String> {
         vars.iter()
-            .filter(|v| v.retain == retain)
+            .filter(|v| v.retain == retain && v.direction == Direction::Local)
             .map(|v| v.to_string())
             .collect()
     };
-    let mut out = var_blocks(&declared(false), &declared(true));
+    let mut out = String::new();
+    for (header, direction) in [
+        ("VAR_INPUT", Direction::Input),
+        ("VAR_OUTPUT", Direction::Output),
+    ] {
+        let block: Vec<String> = vars
+            .iter()
+            .filter(|v| v.direction == direction)
+            .map(|v| v.to_string())
+            .collect();
+        if !block.is_empty() {
+            out.push_str(&format!("{header}\n"));
+            for v in block {
+                out.push_str(&format!("  {v}\n"));
+            }
+            out.push_str("END_VAR\n");
+        }
+    }
+    out.push_str(&var_blocks(&declared(false), &declared(true)));
     for line in lines {
         out.push_str(&format!("{line}\n"));
     }

@@ -16,6 +16,7 @@ pub mod literal;
 pub mod machine;
 pub(crate) mod pins;
 pub mod plc;
+pub mod pou;
 pub mod program;
 pub mod scan;
 pub mod vars;

@@ -9,10 +9,10 @@ use super::address::{Address, Area};
 use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use super::literal::in_range;
-use super::pins::{inputs, outputs, Instance};
-use super::vars::{parse_vars, Kind, VarError, Variable};
+use super::pins::Instance;
+use super::vars::{parse_vars_with, Kind, VarError, Variable};
 use crate::error::Located;
-use check::{binary_type, describe, find_pin, jump, need_cr};
+use check::{binary_type, describe, jump, need_cr};
 
 /// Instructions one scan may run before it is cut short (a backward JMP
 /// that never ends): the scan ends there and [`Program::overran`] says so.
@@ -67,6 +67,16 @@ pub(super) enum Step {
         inputs: Vec<(usize, Src)>,
         outputs: Vec<(usize, usize)>,
     },
+    /// A call of an instance of the program's own function block: its
+    /// inputs copied in, its body run, its outputs copied out.
+    CallUser {
+        when: Option<bool>,
+        instance: usize,
+        inputs: Vec<(usize, Src)>,
+        outputs: Vec<(usize, usize)>,
+    },
+    /// The end of a function block's body: back to its caller.
+    Return,
 }
 
 /// Why a program does not load.
@@ -88,6 +98,8 @@ pub enum LoadError {
     Call(String),
     /// A `)` with no `(`, or a `(` never closed.
     Unbalanced,
+    /// The function blocks' sections do not pair.
+    Pou(super::pou::PouError),
 }
 
 impl fmt::Display for LoadError {
@@ -102,6 +114,7 @@ impl fmt::Display for LoadError {
             LoadError::NoLabel(l) => write!(f, "no line has the label `{l}`"),
             LoadError::Type(why) | LoadError::Call(why) => f.write_str(why),
             LoadError::Unbalanced => f.write_str("`(` and `)` do not pair"),
+            LoadError::Pou(e) => e.fmt(f),
         }
     }
 }
@@ -131,6 +144,11 @@ pub struct Program {
     /// slot: every look-up at load and from the front ends is one hash.
     pub(super) by_name: HashMap<String, Named>,
     pub(super) by_address: HashMap<Address, usize>,
+    /// The program's own function blocks, their instances, and where
+    /// each instance's body starts among the steps.
+    pub(super) user_types: Vec<user::UserType>,
+    pub(super) instances: Vec<user::UserInstance>,
+    pub(super) entries: Vec<usize>,
 }
 
 /// What a declared name is.
@@ -138,6 +156,8 @@ pub struct Program {
 pub(super) enum Named {
     Slot(usize),
     Block(usize),
+    /// An instance of the program's own function block.
+    User(usize),
 }
 
 type Errors = Vec<Located<LoadError>>;
@@ -145,16 +165,13 @@ type Errors = Vec<Located<LoadError>>;
 impl Program {
     /// Loads `text` (VAR blocks, then IL). Every error at its line.
     pub fn load(text: &str) -> Result<Program, Errors> {
-        let vars = parse_vars(text).map_err(|es| {
+        let sections = super::pou::split(text).map_err(|es| {
             es.into_iter()
-                .map(|e| Located::new(e.line, LoadError::Var(e.error)))
+                .map(|e| Located::new(e.line, LoadError::Pou(e.error)))
                 .collect::<Errors>()
         })?;
-        let lines = parse_il(text).map_err(|es| {
-            es.into_iter()
-                .map(|e| Located::new(e.line, LoadError::Il(e.error)))
-                .collect::<Errors>()
-        })?;
+        let types: Vec<String> = sections.blocks.iter().map(|b| b.name.clone()).collect();
+        let (vars, lines) = read(&sections.program, &types)?;
         let mut p = Program {
             values: Vec::new(),
             initial: Vec::new(),
@@ -170,32 +187,29 @@ impl Program {
             lines: Vec::new(),
             by_name: HashMap::new(),
             by_address: HashMap::new(),
+            user_types: Vec::new(),
+            instances: Vec::new(),
+            entries: Vec::new(),
         };
-        p.declare(&vars);
+        for b in &sections.blocks {
+            let (vars, lines) = read(&b.text, &types)?;
+            p.user_types.push(user::UserType {
+                name: b.name.clone(),
+                vars,
+                lines,
+                line: b.line,
+            });
+        }
         let mut errors = Vec::new();
-        let mut cr: Option<DataType> = None;
-        let mut open: Vec<(Binary, Option<DataType>)> = Vec::new();
-        let labels: HashMap<String, usize> = lines
-            .iter()
-            .enumerate()
-            .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), i)))
-            .collect();
-        for line in &lines {
-            if line.label.is_some() {
-                cr = None;
-            }
-            match p.resolve(line, &labels, &mut cr, &mut open) {
-                Ok(step) => p.steps.push(step),
-                Err(e) => {
-                    errors.push(Located::new(line.line, e));
-                    p.steps.push(Step::Ret(None));
-                }
-            }
+        if let Err(e) = p.declare(&vars, "", 0) {
+            errors.push(Located::new(1, e));
         }
-        if !open.is_empty() {
-            let last = lines.last().map_or(1, |l| l.line);
-            errors.push(Located::new(last, LoadError::Unbalanced));
+        p.compile_lines(&lines, &mut errors);
+        if !p.instances.is_empty() {
+            // The program ends here; the blocks' bodies follow.
+            p.steps.push(Step::Ret(None));
         }
+        p.compile_bodies(&mut errors);
         if !errors.is_empty() {
             return Err(errors);
         }
@@ -211,17 +225,48 @@ impl Program {
         Ok(p)
     }
 
-    /// Gives every declared variable its slot (and index) and every
-    /// block instance its state.
-    fn declare(&mut self, vars: &[Variable]) {
+    /// Resolves `lines` into steps (their labels numbered from the first
+    /// step they get); every error into `errors` at its line.
+    fn compile_lines(&mut self, lines: &[Line], errors: &mut Errors) {
+        let base = self.steps.len();
+        let mut cr: Option<DataType> = None;
+        let mut open: Vec<(Binary, Option<DataType>)> = Vec::new();
+        let labels: HashMap<String, usize> = lines
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), base + i)))
+            .collect();
+        for line in lines {
+            if line.label.is_some() {
+                cr = None;
+            }
+            match self.resolve(line, &labels, &mut cr, &mut open) {
+                Ok(step) => self.steps.push(step),
+                Err(e) => {
+                    errors.push(Located::new(line.line, e));
+                    self.steps.push(Step::Ret(None));
+                }
+            }
+        }
+        if !open.is_empty() {
+            let last = lines.last().map_or(1, |l| l.line);
+            errors.push(Located::new(last, LoadError::Unbalanced));
+        }
+    }
+
+    /// Gives every declared variable its slot (and index), every block
+    /// instance its state, every instance of the program's own blocks
+    /// its variables (named `prefix` + name for the front ends).
+    fn declare(&mut self, vars: &[Variable], prefix: &str, depth: usize) -> Result<(), LoadError> {
         for v in vars.iter().cloned() {
+            let upper = v.name.to_ascii_uppercase();
+            let shown = format!("{prefix}{}", v.name);
             match v.kind {
                 Kind::Value { init, .. } => {
                     let slot = self.values.len();
                     self.values.push(init);
-                    self.by_name
-                        .insert(v.name.to_ascii_uppercase(), Named::Slot(slot));
-                    self.names.push((v.name, slot));
+                    self.by_name.insert(upper, Named::Slot(slot));
+                    self.names.push((shown, slot));
                     if v.retain {
                         self.retained.push(slot);
                     }
@@ -230,21 +275,34 @@ impl Program {
                         self.by_address.insert(a, slot);
                     }
                 }
-                Kind::Block(block) => {
-                    let b = self.blocks.len();
-                    self.by_name
-                        .insert(v.name.to_ascii_uppercase(), Named::Block(b));
-                    self.block_names.push((v.name, block.clone()));
-                    self.blocks.push(Instance::new(&block));
-                }
+                Kind::Block(block) => match self.user_type(&block) {
+                    Some(ty) => {
+                        let u = self.instantiate(&shown, ty, depth)?;
+                        self.by_name.insert(upper, Named::User(u));
+                    }
+                    None => {
+                        let b = self.blocks.len();
+                        self.by_name.insert(upper, Named::Block(b));
+                        self.block_names.push((shown, block.clone()));
+                        self.blocks.push(Instance::new(&block));
+                    }
+                },
             }
         }
+        Ok(())
     }
 
     /// The program in its canonical text, which loads back to the same
     /// program (`hashigo asm`).
     pub fn listing(&self) -> String {
-        super::listing::listing(&self.vars, &self.lines)
+        let mut out = String::new();
+        for t in self.user_types() {
+            out.push_str(&format!("FUNCTION_BLOCK {}\n", t.name));
+            out.push_str(&super::listing::listing(&t.vars, &t.lines));
+            out.push_str("END_FUNCTION_BLOCK\n");
+        }
+        out.push_str(&super::listing::listing(&self.vars, &self.lines));
+        out
     }
 
     /// Its declarations and IL lines as read.
@@ -481,54 +539,27 @@ impl Program {
         *cr = Some(result);
         Ok(Step::Func(f, args))
     }
-
-    /// `CAL instance(…)` resolved.
-    fn call(&mut self, line: &Line, cr: &mut Option<DataType>) -> Result<Step, LoadError> {
-        if line.condition.is_some() && *cr != Some(DataType::Bool) {
-            return Err(LoadError::Type("CALC needs a BOOL current result".into()));
-        }
-        let Some(Operand::Name(name)) = &line.operand else {
-            return Err(LoadError::Call("CAL needs a block instance".into()));
-        };
-        let Some(&Named::Block(block)) = self.by_name.get(&name.to_ascii_uppercase()) else {
-            return Err(LoadError::Call(format!("`{name}` is not a block instance")));
-        };
-        let kind = self.block_names[block].1.clone();
-        let mut ins = Vec::new();
-        for (pin, value) in &line.inputs {
-            let (i, want) = find_pin(&inputs(&kind), pin)
-                .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
-            let src = Program::fit(self.slot(value)?, want);
-            if self.type_of(src) != want {
-                return Err(LoadError::Type(format!(
-                    "{kind}'s {pin} is a {}",
-                    want.name()
-                )));
-            }
-            ins.push((i, src));
-        }
-        let mut outs = Vec::new();
-        for (pin, target) in &line.outputs {
-            let (i, t) = find_pin(&outputs(&kind), pin)
-                .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
-            let Src::Slot(slot) = self.slot(&Operand::Name(target.clone()))? else {
-                return Err(LoadError::Call(format!("`{target}` is not a variable")));
-            };
-            if self.values[slot].data_type() != t {
-                return Err(LoadError::Type(format!("{kind}'s {pin} is a {}", t.name())));
-            }
-            outs.push((i, slot));
-        }
-        Ok(Step::Cal {
-            when: line.condition,
-            block,
-            inputs: ins,
-            outputs: outs,
-        })
-    }
 }
 
+mod calls;
 mod check;
+mod user;
+
+/// A section's declarations and IL lines (`blocks`: the types the
+/// text's own function blocks give).
+fn read(text: &str, blocks: &[String]) -> Result<(Vec<Variable>, Vec<Line>), Errors> {
+    let vars = parse_vars_with(text, blocks).map_err(|es| {
+        es.into_iter()
+            .map(|e| Located::new(e.line, LoadError::Var(e.error)))
+            .collect::<Errors>()
+    })?;
+    let lines = parse_il(text).map_err(|es| {
+        es.into_iter()
+            .map(|e| Located::new(e.line, LoadError::Il(e.error)))
+            .collect::<Errors>()
+    })?;
+    Ok((vars, lines))
+}
 
 #[cfg(test)]
 mod tests;

@@ -22,6 +22,19 @@ pub struct Cursor {
     cr: Data,
     open: Vec<(Binary, Data)>,
     ran: usize,
+    /// The calls of the program's own blocks under way.
+    frames: Vec<Frame>,
+}
+
+/// Where a call of one of the program's own blocks returns to: the
+/// step after it, the caller's current result and `(` depth, and the
+/// call's own step (for its outputs).
+#[derive(Clone, Debug, PartialEq)]
+struct Frame {
+    ret: usize,
+    cr: Data,
+    open: usize,
+    call: usize,
 }
 
 impl Default for Cursor {
@@ -31,6 +44,7 @@ impl Default for Cursor {
             cr: Data::Bool(false),
             open: Vec::new(),
             ran: 0,
+            frames: Vec::new(),
         }
     }
 }
@@ -60,6 +74,7 @@ impl Program {
         cursor.pc = 0;
         cursor.cr = Data::Bool(false);
         cursor.open.clear();
+        cursor.frames.clear();
         cursor.ran = 0;
         self.overran = false;
     }
@@ -74,6 +89,7 @@ impl Program {
             values,
             blocks,
             overran,
+            entries,
             ..
         } = self;
         let Some(step) = steps.get(cursor.pc) else {
@@ -87,7 +103,6 @@ impl Program {
         }
         let number = cursor.pc;
         cursor.pc += 1;
-        let on = |when: Option<bool>, cr: Data| when.is_none_or(|w| cr == Data::Bool(w));
         let mut read_bit = false;
         let cr = &mut cursor.cr;
         match step {
@@ -120,26 +135,30 @@ impl Program {
                 }
             }
             Step::Func(f, args) => *cr = call_function(values, *f, *cr, args),
-            Step::Jmp(when, target) => {
-                if on(*when, *cr) {
-                    cursor.pc = *target;
-                }
+            // A condition not met: the step does nothing.
+            Step::Jmp(when, _)
+            | Step::Ret(when)
+            | Step::CallUser { when, .. }
+            | Step::Cal { when, .. }
+                if !on(*when, *cr) => {}
+            Step::Jmp(_, target) => cursor.pc = *target,
+            Step::Ret(_) | Step::Return => {
+                let c = (&mut cursor.frames, &mut cursor.open, &mut cursor.pc);
+                give_back(c, cr, steps, values);
             }
-            Step::Ret(when) => {
-                if on(*when, *cr) {
-                    cursor.pc = steps.len();
-                }
+            Step::CallUser {
+                instance, inputs, ..
+            } => {
+                let entry = entries.get(*instance).copied().unwrap_or(steps.len());
+                let c = (&mut cursor.frames, &mut cursor.open, &mut cursor.pc);
+                enter(c, cr, values, inputs, number, entry);
             }
             Step::Cal {
-                when,
                 block,
                 inputs,
                 outputs,
-            } => {
-                if on(*when, *cr) {
-                    call_block(values, blocks, *block, inputs, outputs, now);
-                }
-            }
+                ..
+            } => call_block(values, blocks, *block, inputs, outputs, now),
         }
         tracer.step(number, read_bit, cr.is_on());
         cursor.pc < steps.len()
@@ -271,6 +290,59 @@ impl Program {
         }
         for (b, (_, kind)) in self.blocks.iter_mut().zip(&self.block_names) {
             *b = Instance::new(kind);
+        }
+    }
+}
+
+/// Whether a step conditional on `when` (C: TRUE, CN: FALSE, none:
+/// always) runs with current result `cr`.
+#[inline(always)]
+fn on(when: Option<bool>, cr: Data) -> bool {
+    when.is_none_or(|w| cr == Data::Bool(w))
+}
+
+/// A call of an instance of the program's own blocks: its inputs copied
+/// in, the caller's place kept, the body's first step next.
+#[inline(always)]
+fn enter(
+    (frames, open, pc): (&mut Vec<Frame>, &mut Vec<(Binary, Data)>, &mut usize),
+    cr: &mut Data,
+    values: &mut [Data],
+    inputs: &[(usize, Src)],
+    call: usize,
+    entry: usize,
+) {
+    for &(slot, src) in inputs {
+        values[slot] = read(values, src);
+    }
+    frames.push(Frame {
+        ret: *pc,
+        cr: *cr,
+        open: open.len(),
+        call,
+    });
+    *pc = entry;
+    *cr = Data::Bool(false);
+}
+
+/// The end of a body: back to the caller with its current result, the
+/// call's outputs copied out; in the program, the end of the scan.
+fn give_back(
+    (frames, open, pc): (&mut Vec<Frame>, &mut Vec<(Binary, Data)>, &mut usize),
+    cr: &mut Data,
+    steps: &[Step],
+    values: &mut [Data],
+) {
+    let Some(frame) = frames.pop() else {
+        *pc = steps.len();
+        return;
+    };
+    open.truncate(frame.open);
+    *cr = frame.cr;
+    *pc = frame.ret;
+    if let Some(Step::CallUser { outputs, .. }) = steps.get(frame.call) {
+        for &(to, from) in outputs {
+            values[to] = values[from];
         }
     }
 }

@@ -60,6 +60,18 @@ pub enum Kind {
     Block(String),
 }
 
+/// Which way a function block's variable faces (a program's are local).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Direction {
+    /// `VAR`, `VAR_RETAIN`, `VAR_TEMP`.
+    #[default]
+    Local,
+    /// `VAR_INPUT`: a call's `name := value`.
+    Input,
+    /// `VAR_OUTPUT`: a call's `name => variable`.
+    Output,
+}
+
 /// One declared variable.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Variable {
@@ -70,6 +82,9 @@ pub struct Variable {
     pub address: Option<Address>,
     /// Declared in `VAR_RETAIN` (or `VAR RETAIN`): kept over a power cycle.
     pub retain: bool,
+    /// A function block's input or output (its `VAR_INPUT` /
+    /// `VAR_OUTPUT`).
+    pub direction: Direction,
     /// The `(* … *)` after it on its line, trimmed.
     pub comment: String,
 }
@@ -137,9 +152,18 @@ pub fn is_identifier(name: &str) -> bool {
 /// looked at: the program's body). Every error is given, at its line
 /// (1-based); the variables only when there is none.
 pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
+    parse_vars_with(text, &[])
+}
+
+/// [`parse_vars`] where `blocks` are the text's own function blocks
+/// (types a variable may have besides the standard ones).
+pub fn parse_vars_with(
+    text: &str,
+    blocks: &[String],
+) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
     let mut vars: Vec<(Variable, usize)> = Vec::new();
     let mut errors = Vec::new();
-    let mut open: Option<(bool, usize)> = None; // (retain, line)
+    let mut open: Option<(bool, Direction, usize)> = None; // (retain, direction, line)
     let text = super::comments::blank_long_comments(text);
     // Each name (upper-case) and the line that declares it.
     let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
@@ -148,29 +172,29 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
         let (code, comment) = split_comment(raw);
         let code = code.trim();
         let word = code.trim_end_matches(';').to_ascii_uppercase();
-        match (word.as_str(), open) {
-            ("VAR" | "VAR_RETAIN" | "VAR RETAIN", None) => {
-                open = Some((word != "VAR", line));
-                continue;
-            }
-            ("VAR" | "VAR_RETAIN" | "VAR RETAIN", Some(_)) | ("END_VAR", None) => {
+        if let Some(header) = header(&word) {
+            if open.is_some() {
                 errors.push(Located::new(line, VarError::Unbalanced(code.to_string())));
-                continue;
+            } else {
+                open = Some((header.0, header.1, line));
             }
-            ("END_VAR", Some(_)) => {
-                open = None;
-                continue;
-            }
-            _ => {}
+            continue;
         }
-        let Some((retain, _)) = open else {
+        if word == "END_VAR" {
+            if open.take().is_none() {
+                errors.push(Located::new(line, VarError::Unbalanced(code.to_string())));
+            }
+            continue;
+        }
+        let Some((retain, direction, _)) = open else {
             continue;
         };
         if code.is_empty() {
             continue;
         }
-        match declaration(code, retain, comment) {
-            Ok(v) => {
+        match declaration(code, retain, comment, blocks) {
+            Ok(mut v) => {
+                v.direction = direction;
                 if let Some(&first) = seen.get(&v.name.to_ascii_uppercase()) {
                     errors.push(Located::new(
                         line,
@@ -187,7 +211,7 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
             Err(e) => errors.push(Located::new(line, e)),
         }
     }
-    if let Some((retain, line)) = open {
+    if let Some((retain, _, line)) = open {
         let word = if retain { "VAR_RETAIN" } else { "VAR" };
         errors.push(Located::new(line, VarError::Unbalanced(word.to_string())));
     }
@@ -196,6 +220,17 @@ pub fn parse_vars(text: &str) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
     } else {
         Err(errors)
     }
+}
+
+/// A declaration block's header: whether it retains, which way it faces.
+pub(super) fn header(word: &str) -> Option<(bool, Direction)> {
+    Some(match word {
+        "VAR" | "VAR_TEMP" => (false, Direction::Local),
+        "VAR_RETAIN" | "VAR RETAIN" => (true, Direction::Local),
+        "VAR_INPUT" => (false, Direction::Input),
+        "VAR_OUTPUT" => (false, Direction::Output),
+        _ => return None,
+    })
 }
 
 /// `code` without a trailing `(* … *)`, and that comment's text.
@@ -211,7 +246,12 @@ fn split_comment(line: &str) -> (&str, String) {
 }
 
 /// One `name [AT address] : TYPE [:= value];`.
-fn declaration(code: &str, retain: bool, comment: String) -> Result<Variable, VarError> {
+fn declaration(
+    code: &str,
+    retain: bool,
+    comment: String,
+    blocks: &[String],
+) -> Result<Variable, VarError> {
     let syntax = || VarError::Syntax(code.to_string());
     let body = code.strip_suffix(';').ok_or_else(syntax)?.trim();
     let (head, value) = match body.split_once(":=") {
@@ -245,7 +285,8 @@ fn declaration(code: &str, retain: bool, comment: String) -> Result<Variable, Va
         }
         None => {
             let upper = type_name.to_ascii_uppercase();
-            if !BLOCK_TYPES.contains(&upper.as_str()) {
+            let own = blocks.iter().any(|b| b.eq_ignore_ascii_case(type_name));
+            if !BLOCK_TYPES.contains(&upper.as_str()) && !own {
                 return Err(VarError::UnknownType(type_name.to_string()));
             }
             if address.is_some() || value.is_some() {
@@ -259,6 +300,7 @@ fn declaration(code: &str, retain: bool, comment: String) -> Result<Variable, Va
         kind,
         address,
         retain,
+        direction: Direction::Local,
         comment,
     })
 }

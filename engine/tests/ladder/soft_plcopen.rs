@@ -47,13 +47,16 @@ fn at(plc: &mut dyn Plc, ms: u64, device: &str) -> i64 {
 const REFUSED: [(&str, &str); 7] = [
     (
         "beremiz-first-steps.xml",
-        "CounterST is the project's own function block",
+        "CounterST is the project's own function block in ST",
     ),
     (
         "beremiz-traffic-light.xml",
-        "the project's own function block",
+        "the project's own function block in SFC",
     ),
-    ("bottle-refiller.xml", "the project's own function block"),
+    (
+        "bottle-refiller.xml",
+        "the project's own function block in ST",
+    ),
     (
         "codesys-execute.xml",
         "<vendorElement> does not run on the soft PLC",
@@ -237,4 +240,37 @@ fn the_command_line_runs_a_project_on_the_soft_plc_without_a_map() {
     let said = text(&out.stderr);
     assert!(said.starts_with(&format!("error: {bad}:")), "{said}");
     assert!(said.contains("`ghost` is not declared"), "{said}");
+}
+
+const OWN_BLOCK: &str = include_str!("fixtures/soft-own-block.xml");
+
+#[test]
+fn the_projects_own_function_blocks_run_as_blocks() {
+    let program = to_il(OWN_BLOCK, None).unwrap_or_else(|e| panic!("{e:?}"));
+    // The block is kept as a block: a section of its own, called twice.
+    assert!(
+        program.text.contains("FUNCTION_BLOCK Latch\nVAR_INPUT\n"),
+        "{}",
+        program.text
+    );
+    assert_eq!(
+        program.text.matches("CAL one(").count(),
+        1,
+        "{}",
+        program.text
+    );
+    assert_eq!(program.text.matches("CAL two(").count(), 1);
+    let mut plc = soft(OWN_BLOCK);
+    set(plc.as_mut(), "start1", 1);
+    assert_eq!(at(plc.as_mut(), 20, "lamp1"), 1, "one latches");
+    assert_eq!(get(plc.as_ref(), "lamp2"), 0, "two is its own instance");
+    set(plc.as_mut(), "start1", 0);
+    assert_eq!(at(plc.as_mut(), 40, "lamp1"), 1, "and holds");
+    assert_eq!(get(plc.as_ref(), "count1"), 1, "one rising edge counted");
+    assert_eq!(get(plc.as_ref(), "one.sets"), 1, "seen inside the instance");
+    set(plc.as_mut(), "start2", 1);
+    assert_eq!(at(plc.as_mut(), 60, "lamp2"), 1);
+    set(plc.as_mut(), "stop", 1);
+    assert_eq!(at(plc.as_mut(), 80, "lamp1"), 0, "stop drops both");
+    assert_eq!(get(plc.as_ref(), "lamp2"), 0);
 }

@@ -278,41 +278,54 @@ fn report(
     );
     let _ = writeln!(out, "{}", lead(&why));
     for cause in causes(ladder, rung, &why) {
-        let _ = write!(
-            out,
-            "  rung {}, row {}, column {}: {}",
-            rung + 1,
-            cause.pos.row + 1,
-            cause.pos.col + 1,
-            cause.element
-        );
-        // A box: its operands' values, which decide it.
-        if let Some(b) = ladder.rungs[rung]
-            .get(cause.pos)
-            .and_then(engine::ladder::Element::block)
-        {
-            for (pin, operand) in &b.inputs {
-                if let Ok(d) = plc.device(operand) {
-                    let _ = write!(out, "; {pin} {operand} = {}", plc.read(d));
-                }
-            }
-        }
-        if let Some(d) = &cause.device {
-            let state = changes
-                .get(d)
-                .map_or_else(|| "?".to_string(), |(_, v, _)| v.to_string());
-            let _ = write!(out, "; {d} = {state}{}", since(changes.get(d)));
-            let drivers = if cause.drivers.is_empty() {
-                "an input or driven from outside".to_string()
-            } else {
-                let list: Vec<String> = cause.drivers.iter().map(|r| (r + 1).to_string()).collect();
-                format!("driven by rung {}", list.join(", "))
-            };
-            let _ = write!(out, "; {drivers}");
-        }
-        let _ = writeln!(out);
+        cause_line(&mut out, ladder, rung, &cause, plc, changes);
     }
     out
+}
+
+/// One cause: its cell and element, a box's operands' values, a
+/// contact's device with its state, when it changed and what drives it.
+fn cause_line(
+    out: &mut String,
+    ladder: &Ladder,
+    rung: usize,
+    cause: &engine::ladder::why::Cause,
+    plc: &dyn Plc,
+    changes: &Changes,
+) {
+    let _ = write!(
+        out,
+        "  rung {}, row {}, column {}: {}",
+        rung + 1,
+        cause.pos.row + 1,
+        cause.pos.col + 1,
+        cause.element
+    );
+    // A box: its operands' values, which decide it.
+    if let Some(b) = ladder.rungs[rung]
+        .get(cause.pos)
+        .and_then(engine::ladder::Element::block)
+    {
+        for (pin, operand) in &b.inputs {
+            if let Ok(d) = plc.device(operand) {
+                let _ = write!(out, "; {pin} {operand} = {}", plc.read(d));
+            }
+        }
+    }
+    if let Some(d) = &cause.device {
+        let state = changes
+            .get(d)
+            .map_or_else(|| "?".to_string(), |(_, v, _)| v.to_string());
+        let _ = write!(out, "; {d} = {state}{}", since(changes.get(d)));
+        let drivers = if cause.drivers.is_empty() {
+            "an input or driven from outside".to_string()
+        } else {
+            let list: Vec<String> = cause.drivers.iter().map(|r| (r + 1).to_string()).collect();
+            format!("driven by rung {}", list.join(", "))
+        };
+        let _ = write!(out, "; {drivers}");
+    }
+    let _ = writeln!(out);
 }
 
 /// The line before the causes.

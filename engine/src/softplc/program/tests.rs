@@ -189,3 +189,105 @@ fn what_does_not_load_says_why_at_its_line() {
     assert_eq!(got[3].1, "NEG needs a number");
     assert_eq!(got[4].1, "INT and REAL do not mix: convert one (*_TO_*)");
 }
+
+const COUNTER: &str = "FUNCTION_BLOCK Counter\n\
+VAR_INPUT\n  up : BOOL;\nEND_VAR\n\
+VAR_OUTPUT\n  count : INT;\n  done : BOOL;\nEND_VAR\n\
+VAR\n  e : R_TRIG;\n  rise : BOOL;\nEND_VAR\n\
+CAL e(CLK := up, Q => rise)\n\
+LD rise\nJMPCN skip\nLD count\nADD 1\nST count\n\
+skip: LD count\nGE INT#3\nST done\n\
+END_FUNCTION_BLOCK\n\
+VAR\n  a : Counter;\n  b : Counter;\n  na : INT;\n  nb : INT;\n  da : BOOL;\nEND_VAR\n\
+CAL a(up := %IX0.0, count => na, done => da)\n\
+CAL b(up := %IX0.1, count => nb)\n\
+LD da\nST %QX0.0\n";
+
+#[test]
+fn the_programs_own_function_blocks_keep_a_state_per_instance() {
+    let mut p = load(COUNTER);
+    let mut now = 0;
+    let mut press = |p: &mut Program, input: &str| {
+        for on in [true, false] {
+            assert!(p.set_input(addr(input), Data::Bool(on)));
+            now += 10_000_000;
+            p.scan(now);
+        }
+    };
+    for _ in 0..3 {
+        press(&mut p, "%IX0.0");
+    }
+    press(&mut p, "%IX0.1");
+    assert_eq!(p.value("na"), Some(Data::integer(DataType::Int, 3)));
+    assert_eq!(p.value("nb"), Some(Data::integer(DataType::Int, 1)));
+    assert!(on(&p, "da") && on(&p, "%QX0.0"));
+    // The front ends see inside each instance.
+    assert_eq!(p.value("a.count"), Some(Data::integer(DataType::Int, 3)));
+    assert_eq!(p.value("B.COUNT"), Some(Data::integer(DataType::Int, 1)));
+    // The listing keeps the block and loads back to itself.
+    let listing = p.listing();
+    assert!(
+        listing.starts_with("FUNCTION_BLOCK Counter\nVAR_INPUT\n  up : BOOL;\nEND_VAR\n"),
+        "{listing}"
+    );
+    assert_eq!(load(&listing).listing(), listing);
+}
+
+#[test]
+fn a_function_block_that_holds_itself_or_is_called_wrongly_says_where() {
+    let itself = errors("FUNCTION_BLOCK Loop\nVAR\n  inner : Loop;\nEND_VAR\nEND_FUNCTION_BLOCK\nVAR\n  l : Loop;\nEND_VAR\n");
+    assert!(
+        itself[0]
+            .1
+            .contains("more than 8 deep (does Loop hold itself?)"),
+        "{itself:?}"
+    );
+    let text = COUNTER.replace("CAL b(up := %IX0.1, count => nb)", "CAL b(down := %IX0.1)");
+    let got = errors(&text);
+    assert_eq!(got, [(31, "Counter has no input `down`".to_string())]);
+    let unended = errors("FUNCTION_BLOCK F\nVAR\n  x : BOOL;\nEND_VAR\n");
+    assert_eq!(
+        unended,
+        [(1, "FUNCTION_BLOCK F has no END_FUNCTION_BLOCK".to_string())]
+    );
+    // An error in a body is said once, however many instances it has.
+    let body = COUNTER.replace("ADD 1", "ADD ghost");
+    assert_eq!(errors(&body), [(17, "`ghost` is not declared".to_string())]);
+}
+
+proptest::proptest! {
+    /// Any text of the pieces a program is made of loads, or is refused
+    /// with every error at one of its lines; never a panic.
+    #[test]
+    fn any_text_loads_or_says_why_at_a_line(
+        pieces in proptest::collection::vec(proptest::sample::select(vec![
+            "FUNCTION_BLOCK F", "END_FUNCTION_BLOCK", "VAR", "VAR_INPUT", "VAR_OUTPUT",
+            "END_VAR", "  x : BOOL;", "  n : INT;", "  f : F;", "  t : TON;",
+            "LD x", "ST x", "CAL f(x := TRUE, n => n)", "CAL f", "LD n", "ADD 1", "ST n",
+            "RET", "l: LD x", "JMPC l", "(* a", "b *)", "PROGRAM p", "END_PROGRAM",
+        ]), 0..24)
+    ) {
+        let text = pieces.join("\n");
+        let n = text.lines().count().max(1);
+        if let Err(errors) = Program::load(&text) {
+            proptest::prop_assert!(errors.iter().all(|e| (1..=n).contains(&e.line)), "{errors:?}\n{text}");
+        }
+    }
+}
+
+#[test]
+fn instances_that_would_multiply_past_the_limits_are_refused() {
+    // Ten instances of the next block, seven deep: 10^7 if built.
+    let mut text = String::new();
+    for level in 0..7 {
+        text.push_str(&format!("FUNCTION_BLOCK B{level}\nVAR\n"));
+        for k in 0..10 {
+            text.push_str(&format!("  i{k} : B{};\n", level + 1));
+        }
+        text.push_str("END_VAR\nEND_FUNCTION_BLOCK\n");
+    }
+    text.push_str("FUNCTION_BLOCK B7\nVAR\n  x : BOOL;\nEND_VAR\nLD x\nST x\nEND_FUNCTION_BLOCK\n");
+    text.push_str("VAR\n  top : B0;\nEND_VAR\n");
+    let said = errors(&text);
+    assert!(said[0].1.contains("more than 10000 instances"), "{said:?}");
+}

@@ -12,7 +12,7 @@ use super::SoftError;
 use crate::error::Located;
 use crate::ladder::plcopen::dom::Node;
 use crate::softplc::data::DataType;
-use crate::softplc::vars::BLOCK_TYPES;
+use crate::softplc::vars::{Direction, BLOCK_TYPES};
 use crate::softplc::{parse_literal, Address};
 
 /// What a declared name holds.
@@ -21,6 +21,36 @@ pub(super) enum Held {
     Value(DataType),
     /// A standard function block instance (its type, upper-case).
     Block(String),
+    /// An instance of one of the project's own function blocks (its type
+    /// as written).
+    User(String),
+}
+
+/// The project's own POUs: every name with what it is (`function block
+/// in ST`), and those that are function blocks drawn in LD or FBD (the
+/// ones the soft PLC runs as blocks).
+#[derive(Debug, Default)]
+pub(super) struct OwnTypes {
+    pub names: Vec<(String, String)>,
+    pub blocks: Vec<String>,
+}
+
+/// A function block's inputs and outputs with their types.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Interface {
+    pub inputs: Vec<(String, DataType)>,
+    pub outputs: Vec<(String, DataType)>,
+}
+
+impl Interface {
+    /// The type of input or output `pin` (any case).
+    pub fn pin(&self, pin: &str) -> Option<DataType> {
+        self.inputs
+            .iter()
+            .chain(&self.outputs)
+            .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+            .map(|&(_, t)| t)
+    }
 }
 
 /// One declaration, ready to write.
@@ -34,6 +64,8 @@ pub(super) struct Declared {
     pub address: Option<Address>,
     /// Where the file declares it.
     pub xml_line: usize,
+    /// In a function block: which way it faces.
+    pub direction: Direction,
 }
 
 /// Every declaration, and each POU's renamings.
@@ -70,6 +102,35 @@ impl Declarations {
         self.addresses.get(&address).copied()
     }
 
+    /// A function block's interface, from its declarations.
+    pub fn interface(&self) -> Interface {
+        let faced = |d: Direction| -> Vec<(String, DataType)> {
+            self.list
+                .iter()
+                .filter(|v| v.direction == d)
+                .filter_map(|v| match v.held {
+                    Held::Value(t) => Some((v.name.clone(), t)),
+                    _ => None,
+                })
+                .collect()
+        };
+        Interface {
+            inputs: faced(Direction::Input),
+            outputs: faced(Direction::Output),
+        }
+    }
+
+    /// The project's own function block types its instances have.
+    pub fn user_types(&self) -> Vec<String> {
+        self.list
+            .iter()
+            .filter_map(|d| match &d.held {
+                Held::User(t) => Some(t.clone()),
+                _ => None,
+            })
+            .collect()
+    }
+
     fn push(&mut self, d: Declared) {
         if let (Some(a), Held::Value(t)) = (d.address, &d.held) {
             self.addresses.insert(a, *t);
@@ -89,6 +150,7 @@ impl Declarations {
             retain: false,
             address: None,
             xml_line: 0,
+            direction: Direction::Local,
         });
     }
 
@@ -103,7 +165,7 @@ type Errors = Vec<Located<SoftError>>;
 pub(super) fn declarations(
     root: &Node,
     pous: &[&Node],
-    own: &[String],
+    own: &OwnTypes,
 ) -> Result<Declarations, Errors> {
     let mut out = Declarations::default();
     let mut errors = Vec::new();
@@ -111,7 +173,7 @@ pub(super) fn declarations(
     root.descendants("configuration", &mut globals);
     for scope in globals.iter().flat_map(|c| scopes(c, true)) {
         for v in scope.all("variable") {
-            if let Err(e) = declare(&mut out, scope, v, None, own) {
+            if let Err(e) = declare(&mut out, scope, v, None, own, Direction::Local) {
                 errors.push(e);
             }
         }
@@ -123,7 +185,7 @@ pub(super) fn declarations(
         let pou_name = pou.attr("name").unwrap_or_default();
         for scope in scopes(interface, false) {
             for v in scope.all("variable") {
-                if let Err(e) = declare(&mut out, scope, v, Some(pou_name), own) {
+                if let Err(e) = declare(&mut out, scope, v, Some(pou_name), own, Direction::Local) {
                     errors.push(e);
                 }
             }
@@ -165,7 +227,8 @@ fn declare(
     scope: &Node,
     v: &Node,
     pou: Option<&str>,
-    own: &[String],
+    own: &OwnTypes,
+    direction: Direction,
 ) -> Result<(), Located<SoftError>> {
     let at = |e: SoftError| Located::new(v.line, e);
     let name = v.attr("name").unwrap_or_default().to_string();
@@ -211,12 +274,13 @@ fn declare(
         retain,
         address,
         xml_line: v.line,
+        direction,
     });
     Ok(())
 }
 
 /// What variable `v` (named `name`) holds, and its type's name.
-fn held(v: &Node, name: &str, own: &[String]) -> Result<(Held, String), SoftError> {
+fn held(v: &Node, name: &str, own: &OwnTypes) -> Result<(Held, String), SoftError> {
     let ty = v
         .child("type")
         .and_then(|t| t.children.first())
@@ -230,8 +294,18 @@ fn held(v: &Node, name: &str, own: &[String]) -> Result<(Held, String), SoftErro
         Held::Value(t)
     } else if BLOCK_TYPES.contains(&type_name.as_str()) {
         Held::Block(type_name.clone())
-    } else if own.iter().any(|p| p.eq_ignore_ascii_case(&type_name)) {
-        return Err(SoftError::ProjectBlock(written.to_string()));
+    } else if let Some(b) = own
+        .blocks
+        .iter()
+        .find(|b| b.eq_ignore_ascii_case(&type_name))
+    {
+        Held::User(b.clone())
+    } else if let Some((_, how)) = own
+        .names
+        .iter()
+        .find(|(p, _)| p.eq_ignore_ascii_case(&type_name))
+    {
+        return Err(SoftError::ProjectBlock(written.to_string(), how.clone()));
     } else if ty.name == "derived" {
         return Err(SoftError::Block(written.to_string()));
     } else {
@@ -267,4 +341,40 @@ fn soft_name(
         .or_default()
         .insert(name.to_ascii_lowercase(), soft_name.clone());
     Some(soft_name)
+}
+
+/// The declarations of function block `pou`: its inputs, outputs and
+/// locals, in a name space of its own.
+pub(super) fn block_declarations(pou: &Node, own: &OwnTypes) -> Result<Declarations, Errors> {
+    let mut out = Declarations::default();
+    let mut errors = Vec::new();
+    let Some(interface) = pou.child("interface") else {
+        return Ok(out);
+    };
+    for scope in &interface.children {
+        let direction = match scope.name.as_str() {
+            "inputVars" => Direction::Input,
+            "outputVars" => Direction::Output,
+            "localVars" | "tempVars" => Direction::Local,
+            "inOutVars" | "externalVars" => {
+                let why = format!("{} in a function block is not supported yet", scope.name);
+                errors.push(Located::new(
+                    scope.line,
+                    SoftError::Declaration(String::new(), why),
+                ));
+                continue;
+            }
+            _ => continue,
+        };
+        for v in scope.all("variable") {
+            if let Err(e) = declare(&mut out, scope, v, None, own, direction) {
+                errors.push(e);
+            }
+        }
+    }
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        Err(errors)
+    }
 }

@@ -10,7 +10,7 @@
 
 use std::collections::HashMap;
 
-use super::declare::{Declarations, Held};
+use super::declare::{Declarations, Held, Interface};
 use super::functions::{Function, Operand};
 use super::graph::{Element, Graph, Kind, Source};
 use super::order::order;
@@ -41,7 +41,10 @@ pub(super) struct Emitter<'a> {
     /// The POU's name (its renamings) and its place (its temporaries).
     pub pou: String,
     pub index: usize,
-    pub own_blocks: &'a [String],
+    pub own_blocks: &'a super::declare::OwnTypes,
+    /// The project's own function blocks the soft PLC runs, by type
+    /// (upper-case).
+    pub user: &'a HashMap<String, Interface>,
     /// The body's elements each output feeds: (element, pin) by the
     /// feeding element's id.
     pub consumers: HashMap<String, Vec<(usize, String)>>,
@@ -234,7 +237,7 @@ impl Emitter<'_> {
             let name = self.decl.name_in(&self.pou, text);
             return match self.decl.held(&name) {
                 Some(Held::Value(t)) => Ok(Operand::temp(name, *t)),
-                Some(Held::Block(_)) => Err(SoftError::Expression(format!(
+                Some(Held::Block(_) | Held::User(_)) => Err(SoftError::Expression(format!(
                     "{text} is a function block instance, not a value"
                 ))),
                 None => Err(SoftError::Undeclared(text.to_string())),
@@ -352,7 +355,9 @@ impl Emitter<'_> {
                     .clone()
                     .or_else(|| from.outputs.iter().find(|p| *p != "ENO").cloned())
                     .unwrap_or_else(|| "OUT".into());
+                let user = self.user.get(&type_name.to_ascii_uppercase());
                 let ty = output_type(type_name, &pin)
+                    .or_else(|| user.and_then(|i| i.pin(&pin)))
                     .or_else(|| {
                         self.out
                             .types
@@ -376,12 +381,16 @@ impl Emitter<'_> {
         if let Some(f) = Function::named(&upper) {
             return self.function(g, e, f);
         }
-        if self
+        if let Some(iface) = self.user.get(&upper) {
+            return self.user_block(g, e, type_name, instance, &iface.clone());
+        }
+        if let Some((_, how)) = self
             .own_blocks
+            .names
             .iter()
-            .any(|b| b.eq_ignore_ascii_case(type_name))
+            .find(|(b, _)| b.eq_ignore_ascii_case(type_name))
         {
-            return Err(SoftError::ProjectBlock(type_name.to_string()));
+            return Err(SoftError::ProjectBlock(type_name.to_string(), how.clone()));
         }
         Err(SoftError::Block(type_name.to_string()))
     }
@@ -439,6 +448,44 @@ impl Emitter<'_> {
             }
         }
         for (pin, ty) in fb_outputs(kind) {
+            if e.outputs.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
+                let t = self.temp(&format!("n{}_{pin}", e.id), ty.name(), e.line);
+                params.push(format!("{pin} => {t}"));
+            }
+        }
+        self.emit(format!("CAL {name}({})", params.join(", ")), e.line);
+        self.enabled(e, en);
+        Ok(())
+    }
+
+    /// A call of an instance of the project's own function block: `CAL
+    /// inst(input := …, output => _n<id>_<PIN>)`, EN as for any block.
+    fn user_block(
+        &mut self,
+        g: &Graph,
+        e: &Element,
+        type_name: &str,
+        instance: &str,
+        iface: &Interface,
+    ) -> Result<()> {
+        let name = self.decl.name_in(&self.pou, instance);
+        match self.decl.held(&name) {
+            Some(Held::User(t)) if t.eq_ignore_ascii_case(type_name) => {}
+            _ => {
+                return Err(SoftError::Instance(
+                    instance.to_string(),
+                    type_name.to_string(),
+                ));
+            }
+        }
+        let en = self.enable(g, e)?;
+        let mut params = Vec::new();
+        for (pin, ty) in &iface.inputs {
+            if let Some(v) = self.input(g, e, pin)? {
+                params.push(format!("{pin} := {}", v.at(Some(*ty)).text));
+            }
+        }
+        for (pin, ty) in &iface.outputs {
             if e.outputs.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
                 let t = self.temp(&format!("n{}_{pin}", e.id), ty.name(), e.line);
                 params.push(format!("{pin} => {t}"));

@@ -34,7 +34,7 @@ pub enum SoftError {
     /// A function called with inputs it does not take (its type, why).
     Function(String, super::functions::FunctionError),
     /// A call of one of the project's own POUs.
-    ProjectBlock(String),
+    ProjectBlock(String, String),
     /// A block type the soft PLC does not have.
     Block(String),
     /// No program the tasks run has a drawn body: each POU and its
@@ -82,9 +82,9 @@ impl fmt::Display for SoftError {
                 write!(f, "{name} is not declared as a {ty} instance")
             }
             SoftError::Function(ty, why) => write!(f, "{ty}: {why}"),
-            SoftError::ProjectBlock(name) => write!(
+            SoftError::ProjectBlock(name, how) => write!(
                 f,
-                "{name} is the project's own function block: the soft PLC does not run those yet"
+                "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD"
             ),
             SoftError::Block(name) => write!(
                 f,

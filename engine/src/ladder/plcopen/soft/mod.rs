@@ -20,6 +20,7 @@ use super::ImportError;
 use crate::error::Located;
 use crate::softplc::Program;
 pub use error::SoftError;
+use std::collections::HashMap;
 
 /// A project as the soft PLC's program text.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -47,45 +48,44 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
     let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
-    let own: Vec<String> = pous
-        .iter()
-        .filter_map(|p| p.attr("name").map(str::to_string))
-        .collect();
+    let own = own_types(&pous);
     let mut declarations = declare::declarations(&root, &chosen, &own).map_err(soft)?;
-    let mut out = emit::Output::default();
+    let blocks = used_blocks(&pous, &declarations, &own).map_err(soft)?;
+    // A block the programs use is not skipped, whatever the tasks say.
+    warnings.retain(|w| !blocks.iter().any(|(p, _)| p.line == w.line));
+    let user: HashMap<String, declare::Interface> = blocks
+        .iter()
+        .map(|(p, d)| {
+            let name = p.attr("name").unwrap_or_default().to_ascii_uppercase();
+            (name, d.interface())
+        })
+        .collect();
     let mut errors = Vec::new();
+    let mut sections = Vec::new();
+    for (index, (p, mut d)) in blocks.into_iter().enumerate() {
+        let mut out = emit::Output::default();
+        let em = emitter(&mut d, &mut out, p, index, &own, &user);
+        errors.extend(emit_body(em, p));
+        sections.push((p, d, out));
+    }
+    let mut out = emit::Output::default();
     let mut drawn = 0;
     for (index, p) in chosen.iter().enumerate() {
-        let Some(body) = drawn_body(p) else {
-            errors.push(Located::new(
-                p.line,
-                SoftError::NotDrawn(format!(
-                    "{} in {}",
-                    p.attr("name").unwrap_or_default(),
-                    language(p)
-                )),
-            ));
+        if drawn_body(p).is_none() {
+            let what = format!("{} in {}", p.attr("name").unwrap_or_default(), language(p));
+            errors.push(Located::new(p.line, SoftError::NotDrawn(what)));
             continue;
-        };
-        drawn += 1;
-        let g = match graph::read(body) {
-            Ok(g) => g,
-            Err(e) => {
-                errors.extend(e);
-                continue;
-            }
-        };
-        let mut emitter = emit::Emitter {
-            decl: &mut declarations,
-            out: &mut out,
-            pou: p.attr("name").unwrap_or_default().to_string(),
-            index,
-            own_blocks: &own,
-            consumers: Default::default(),
-        };
-        if let Err(e) = emitter.body(&g) {
-            errors.extend(e);
         }
+        drawn += 1;
+        let em = emitter(
+            &mut declarations,
+            &mut out,
+            p,
+            sections.len() + index,
+            &own,
+            &user,
+        );
+        errors.extend(emit_body(em, p));
     }
     if drawn == 0 && errors.is_empty() {
         errors.push(Located::new(root.line, SoftError::NotDrawn(String::new())));
@@ -93,54 +93,188 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
     if !errors.is_empty() {
         return Err(soft(errors));
     }
-    warnings.append(&mut out.warnings);
-    let (text, origin) = write(&declarations, &out, &root);
-    if let Err(problems) = Program::load(&text) {
-        return Err(problems
-            .into_iter()
-            .map(|p| {
-                let line = origin
-                    .get(p.line.wrapping_sub(1))
-                    .copied()
-                    .unwrap_or(root.line);
-                Located::new(
-                    line,
-                    ImportError::Soft(SoftError::Load(p.error.to_string())),
-                )
-            })
-            .collect());
+    for (_, _, o) in &mut sections {
+        warnings.append(&mut o.warnings);
     }
-    Ok(SoftProgram { text, warnings })
+    warnings.append(&mut out.warnings);
+    let text = Text::of(&sections, &declarations, &out, &root);
+    text.loads(root.line)?;
+    Ok(SoftProgram {
+        text: text.text,
+        warnings,
+    })
 }
 
-/// The program text, and the file line of each of its lines.
-fn write(d: &declare::Declarations, out: &emit::Output, root: &Node) -> (String, Vec<usize>) {
-    let mut text = String::from("(* from a PLCopen project by hashigo *)\n");
-    let mut origin = vec![root.line];
-    let mut push = |line: String, at: usize| {
-        text.push_str(&line);
-        text.push('\n');
-        origin.push(at);
-    };
-    for retain in [false, true] {
-        let vars: Vec<(String, usize)> = d
-            .list
+/// The project's own POUs, and which of them run as blocks.
+fn own_types(pous: &[&Node]) -> declare::OwnTypes {
+    declare::OwnTypes {
+        names: pous
             .iter()
-            .filter(|v| v.retain == retain && !v.line.is_empty())
-            .map(|v| (v.line.clone(), v.xml_line))
-            .chain(if retain { Vec::new() } else { out.vars.clone() })
-            .collect();
-        if vars.is_empty() {
+            .filter_map(|p| {
+                let kind = match p.attr("pouType") {
+                    Some("functionBlock") => "function block",
+                    Some("function") => "function",
+                    _ => "program",
+                };
+                Some((
+                    p.attr("name")?.to_string(),
+                    format!("{kind} in {}", language(p)),
+                ))
+            })
+            .collect(),
+        blocks: pous
+            .iter()
+            .filter(|p| p.attr("pouType") == Some("functionBlock") && drawn_body(p).is_some())
+            .filter_map(|p| p.attr("name").map(str::to_string))
+            .collect(),
+    }
+}
+
+/// `pou`'s drawn body emitted by `em`; its problems.
+fn emit_body(mut em: emit::Emitter, pou: &Node) -> Vec<Located<SoftError>> {
+    match drawn_body(pou).map(graph::read) {
+        Some(Ok(g)) => em.body(&g).err().unwrap_or_default(),
+        Some(Err(e)) => e,
+        None => Vec::new(),
+    }
+}
+
+fn emitter<'a>(
+    decl: &'a mut declare::Declarations,
+    out: &'a mut emit::Output,
+    pou: &Node,
+    index: usize,
+    own: &'a declare::OwnTypes,
+    user: &'a HashMap<String, declare::Interface>,
+) -> emit::Emitter<'a> {
+    emit::Emitter {
+        decl,
+        out,
+        pou: pou.attr("name").unwrap_or_default().to_string(),
+        index,
+        own_blocks: own,
+        user,
+        consumers: Default::default(),
+    }
+}
+
+/// The project's own function blocks the programs use (their instances'
+/// types, and the types of the instances those hold), each with its
+/// declarations, in the order first met.
+fn used_blocks<'a>(
+    pous: &[&'a Node],
+    program: &declare::Declarations,
+    own: &declare::OwnTypes,
+) -> Result<Vec<(&'a Node, declare::Declarations)>, Vec<Located<SoftError>>> {
+    let mut todo: Vec<String> = program.user_types();
+    let mut out: Vec<(&Node, declare::Declarations)> = Vec::new();
+    while let Some(t) = todo.pop() {
+        let seen = out
+            .iter()
+            .any(|(p, _)| p.attr("name").is_some_and(|n| n.eq_ignore_ascii_case(&t)));
+        if seen || out.len() > 1_000 {
             continue;
         }
-        push(if retain { "VAR_RETAIN" } else { "VAR" }.into(), root.line);
-        for (line, at) in vars {
-            push(format!("  {line}"), at);
+        let Some(p) = pous
+            .iter()
+            .find(|p| p.attr("name").is_some_and(|n| n.eq_ignore_ascii_case(&t)))
+        else {
+            continue;
+        };
+        let d = declare::block_declarations(p, own)?;
+        todo.extend(d.user_types());
+        out.push((p, d));
+    }
+    Ok(out)
+}
+
+/// The program text being written, and the file line of each line.
+#[derive(Default)]
+struct Text {
+    text: String,
+    origin: Vec<usize>,
+}
+
+impl Text {
+    /// The program's own function blocks' sections, then the program.
+    fn of(
+        sections: &[(&Node, declare::Declarations, emit::Output)],
+        program: &declare::Declarations,
+        out: &emit::Output,
+        root: &Node,
+    ) -> Text {
+        let mut text = Text::default();
+        text.push("(* from a PLCopen project by hashigo *)".into(), root.line);
+        for (p, d, o) in sections {
+            text.push(
+                format!("FUNCTION_BLOCK {}", p.attr("name").unwrap_or_default()),
+                p.line,
+            );
+            text.section(d, o, p.line);
+            text.push("END_FUNCTION_BLOCK".into(), p.line);
         }
-        push("END_VAR".into(), root.line);
+        text.section(program, out, root.line);
+        text
     }
-    for (line, at) in &out.lines {
-        push(line.clone(), *at);
+
+    /// Loads the text as a check: a problem is said at the file's line
+    /// that made it (`root`: the project's, where none did).
+    fn loads(&self, root: usize) -> Result<(), Errors> {
+        Program::load(&self.text).map(|_| ()).map_err(|problems| {
+            problems
+                .into_iter()
+                .map(|p| {
+                    let line = self
+                        .origin
+                        .get(p.line.wrapping_sub(1))
+                        .copied()
+                        .unwrap_or(root);
+                    Located::new(
+                        line,
+                        ImportError::Soft(SoftError::Load(p.error.to_string())),
+                    )
+                })
+                .collect()
+        })
     }
-    (text, origin)
+
+    fn push(&mut self, line: String, at: usize) {
+        self.text.push_str(&line);
+        self.text.push('\n');
+        self.origin.push(at);
+    }
+
+    /// A section's declarations (inputs, outputs, locals with the
+    /// generated ones, retained) and lines.
+    fn section(&mut self, d: &declare::Declarations, out: &emit::Output, at: usize) {
+        use crate::softplc::vars::Direction;
+        let blocks = [
+            ("VAR_INPUT", Direction::Input, false),
+            ("VAR_OUTPUT", Direction::Output, false),
+            ("VAR", Direction::Local, false),
+            ("VAR_RETAIN", Direction::Local, true),
+        ];
+        for (header, direction, retain) in blocks {
+            let mut vars: Vec<(String, usize)> = d
+                .list
+                .iter()
+                .filter(|v| v.direction == direction && v.retain == retain && !v.line.is_empty())
+                .map(|v| (v.line.clone(), v.xml_line))
+                .collect();
+            if header == "VAR" {
+                vars.extend(out.vars.iter().cloned());
+            }
+            if vars.is_empty() {
+                continue;
+            }
+            self.push(header.into(), at);
+            for (line, from) in vars {
+                self.push(format!("  {line}"), from);
+            }
+            self.push("END_VAR".into(), at);
+        }
+        for (line, from) in &out.lines {
+            self.push(line.clone(), *from);
+        }
+    }
 }

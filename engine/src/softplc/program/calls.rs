@@ -1,0 +1,108 @@
+//! `CAL` resolved: of a standard block's instance (its parameters by
+//! name, typed), or of an instance of the program's own blocks.
+
+use super::check::find_pin;
+use super::{LoadError, Named, Program, Src, Step};
+use crate::softplc::data::DataType;
+use crate::softplc::il::{Line, Operand};
+use crate::softplc::pins::{inputs, outputs};
+
+impl Program {
+    /// `CAL instance(…)` resolved.
+    pub(super) fn call(
+        &mut self,
+        line: &Line,
+        cr: &mut Option<DataType>,
+    ) -> Result<Step, LoadError> {
+        if line.condition.is_some() && *cr != Some(DataType::Bool) {
+            return Err(LoadError::Type("CALC needs a BOOL current result".into()));
+        }
+        let Some(Operand::Name(name)) = &line.operand else {
+            return Err(LoadError::Call("CAL needs a block instance".into()));
+        };
+        let block = match self.by_name.get(&name.to_ascii_uppercase()) {
+            Some(&Named::Block(block)) => block,
+            Some(&Named::User(u)) => return self.call_user(line, u),
+            _ => return Err(LoadError::Call(format!("`{name}` is not a block instance"))),
+        };
+        let kind = self.block_names[block].1.clone();
+        let mut ins = Vec::new();
+        for (pin, value) in &line.inputs {
+            let (i, want) = find_pin(&inputs(&kind), pin)
+                .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
+            let src = Program::fit(self.slot(value)?, want);
+            if self.type_of(src) != want {
+                return Err(LoadError::Type(format!(
+                    "{kind}'s {pin} is a {}",
+                    want.name()
+                )));
+            }
+            ins.push((i, src));
+        }
+        let mut outs = Vec::new();
+        for (pin, target) in &line.outputs {
+            let (i, t) = find_pin(&outputs(&kind), pin)
+                .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
+            let Src::Slot(slot) = self.slot(&Operand::Name(target.clone()))? else {
+                return Err(LoadError::Call(format!("`{target}` is not a variable")));
+            };
+            if self.values[slot].data_type() != t {
+                return Err(LoadError::Type(format!("{kind}'s {pin} is a {}", t.name())));
+            }
+            outs.push((i, slot));
+        }
+        Ok(Step::Cal {
+            when: line.condition,
+            block,
+            inputs: ins,
+            outputs: outs,
+        })
+    }
+
+    /// `CAL instance(input := value, output => variable)` of instance
+    /// `u` of the program's own blocks.
+    pub(super) fn call_user(&mut self, line: &Line, u: usize) -> Result<Step, LoadError> {
+        let type_name = self.user_types[self.instances[u].ty].name.clone();
+        let find = |list: &[(String, usize)], pin: &str| {
+            list.iter()
+                .find(|(n, _)| n.eq_ignore_ascii_case(pin))
+                .map(|&(_, s)| s)
+        };
+        let mut inputs = Vec::new();
+        for (pin, value) in &line.inputs {
+            let slot = find(&self.instances[u].inputs, pin)
+                .ok_or_else(|| LoadError::Call(format!("{type_name} has no input `{pin}`")))?;
+            let want = self.values[slot].data_type();
+            let src = Program::fit(self.slot(value)?, want);
+            if self.type_of(src) != want {
+                return Err(LoadError::Type(format!(
+                    "{type_name}'s {pin} is a {}",
+                    want.name()
+                )));
+            }
+            inputs.push((slot, src));
+        }
+        let mut outputs = Vec::new();
+        for (pin, target) in &line.outputs {
+            let from = find(&self.instances[u].outputs, pin)
+                .ok_or_else(|| LoadError::Call(format!("{type_name} has no output `{pin}`")))?;
+            let Src::Slot(to) = self.slot(&Operand::Name(target.clone()))? else {
+                return Err(LoadError::Call(format!("`{target}` is not a variable")));
+            };
+            let t = self.values[from].data_type();
+            if self.values[to].data_type() != t {
+                return Err(LoadError::Type(format!(
+                    "{type_name}'s {pin} is a {}",
+                    t.name()
+                )));
+            }
+            outputs.push((to, from));
+        }
+        Ok(Step::CallUser {
+            when: line.condition,
+            instance: u,
+            inputs,
+            outputs,
+        })
+    }
+}
