@@ -441,21 +441,17 @@ impl Emitter<'_> {
             }
         }
         let en = self.enable(g, e)?;
-        let mut params = Vec::new();
-        for (pin, ty) in fb_inputs(kind) {
-            if let Some(v) = self.input(g, e, pin)? {
-                params.push(format!("{pin} := {}", v.at(Some(ty)).text));
-            }
-        }
-        for (pin, ty) in fb_outputs(kind) {
-            if e.outputs.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
-                let t = self.temp(&format!("n{}_{pin}", e.id), ty.name(), e.line);
-                params.push(format!("{pin} => {t}"));
-            }
-        }
-        self.emit(format!("CAL {name}({})", params.join(", ")), e.line);
-        self.enabled(e, en);
-        Ok(())
+        let owned = |pins: Vec<(&str, DataType)>| -> Vec<(String, DataType)> {
+            pins.into_iter().map(|(p, t)| (p.to_string(), t)).collect()
+        };
+        self.cal(
+            g,
+            e,
+            &name,
+            &owned(fb_inputs(kind)),
+            &owned(fb_outputs(kind)),
+            en,
+        )
     }
 
     /// A call of an instance of the project's own function block: `CAL
@@ -479,13 +475,28 @@ impl Emitter<'_> {
             }
         }
         let en = self.enable(g, e)?;
+        self.cal(g, e, &name, &iface.inputs, &iface.outputs, en)
+    }
+
+    /// `CAL name(input := …, output => _n<id>_<PIN>)` of a block with
+    /// these pins (each input wired, each output something reads), then
+    /// the label EN jumps to and ENO.
+    fn cal(
+        &mut self,
+        g: &Graph,
+        e: &Element,
+        name: &str,
+        inputs: &[(String, DataType)],
+        outputs: &[(String, DataType)],
+        en: Option<Operand>,
+    ) -> Result<()> {
         let mut params = Vec::new();
-        for (pin, ty) in &iface.inputs {
+        for (pin, ty) in inputs {
             if let Some(v) = self.input(g, e, pin)? {
                 params.push(format!("{pin} := {}", v.at(Some(*ty)).text));
             }
         }
-        for (pin, ty) in &iface.outputs {
+        for (pin, ty) in outputs {
             if e.outputs.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
                 let t = self.temp(&format!("n{}_{pin}", e.id), ty.name(), e.line);
                 params.push(format!("{pin} => {t}"));
