@@ -45,6 +45,15 @@ impl fmt::Display for LiteralError {
 
 impl std::error::Error for LiteralError {}
 
+/// Reads `text` as a literal and says which type it fixes: `None` for an
+/// untyped integer (`42`), which takes the type of its place; a typed
+/// literal, a decimal (a REAL), a time or a BOOL fixes its own.
+pub fn literal_type(text: &str) -> Result<(Data, Option<DataType>), LiteralError> {
+    let d = parse_literal(text, None)?;
+    let typed = text.contains('#') || text.contains('.') || d.data_type().bits().is_none();
+    Ok((d, typed.then(|| d.data_type())))
+}
+
 /// Reads `text` as a literal. `expected` is the type the place needs: an
 /// untyped number takes it (without one, an integer is a DINT and a
 /// decimal a REAL); a typed literal of another type is refused.

@@ -23,7 +23,7 @@ pub mod vars;
 
 pub use address::{Address, AddressError, Area, Size};
 pub use data::{Data, DataType};
-pub use literal::{parse_literal, LiteralError};
+pub use literal::{literal_type, parse_literal, LiteralError};
 pub use plc::SoftPlc;
 pub use program::{LoadError, Program};
 pub use vars::{parse_vars, Kind, VarError, Variable};

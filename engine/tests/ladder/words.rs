@@ -51,6 +51,18 @@ fn operand() -> impl Strategy<Value = String> {
     ]
 }
 
+/// An in-line box of block `kind`, instance `instance`.
+fn instance(
+    kind: &str,
+    instance: String,
+    inputs: &[(&str, String)],
+    outputs: &[(&str, &str)],
+) -> Net {
+    let mut c = call(kind, inputs, outputs);
+    c.instance = instance;
+    leaf(Element::Block(c))
+}
+
 fn leaf(e: Element) -> Net {
     Net::Leaf(e, Pos::new(0, 0))
 }
@@ -83,38 +95,27 @@ fn inline_box(n: usize) -> impl Strategy<Value = Net> {
                 &[]
             )))),
         (1u32..6).prop_map(move |t| {
-            let mut c = call("TON", &[("PT", format!("T#{}ms", t * 10))], &[]);
-            c.instance = format!("t{n}");
-            leaf(Element::Block(c))
+            instance(
+                "TON",
+                format!("t{n}"),
+                &[("PT", format!("T#{}ms", t * 10))],
+                &[],
+            )
         }),
         (1i32..5, prop::sample::select(INPUTS.to_vec())).prop_map(move |(pv, r)| {
-            let mut c = call(
-                "CTU",
-                &[("R", r.to_string()), ("PV", pv.to_string())],
-                &[("CV", "w2")],
-            );
-            c.instance = format!("c{n}");
-            leaf(Element::Block(c))
+            let inputs = [("R", r.to_string()), ("PV", pv.to_string())];
+            instance("CTU", format!("c{n}"), &inputs, &[("CV", "w2")])
         }),
-        Just(leaf(Element::Block(BlockCall {
-            kind: "R_TRIG".into(),
-            instance: format!("e{n}"),
-            inputs: Vec::new(),
-            outputs: Vec::new(),
-        }))),
-        prop::sample::select(INPUTS.to_vec()).prop_map(move |r| {
-            let mut c = call("SR", &[("R", r.to_string())], &[]);
-            c.instance = format!("s{n}");
-            leaf(Element::Block(c))
-        }),
+        Just(instance("R_TRIG", format!("e{n}"), &[], &[])),
+        prop::sample::select(INPUTS.to_vec()).prop_map(move |r| instance(
+            "SR",
+            format!("s{n}"),
+            &[("R", r.to_string())],
+            &[]
+        )),
         (1i32..4, prop::sample::select(INPUTS.to_vec())).prop_map(move |(pv, cd)| {
-            let mut c = call(
-                "CTUD",
-                &[("CD", cd.to_string()), ("PV", pv.to_string())],
-                &[("CV", "w1")],
-            );
-            c.instance = format!("u{n}");
-            leaf(Element::Block(c))
+            let inputs = [("CD", cd.to_string()), ("PV", pv.to_string())];
+            instance("CTUD", format!("u{n}"), &inputs, &[("CV", "w1")])
         }),
     ]
 }

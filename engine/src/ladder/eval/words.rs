@@ -12,7 +12,7 @@ use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::variables::Variable;
 use crate::softplc::data::{self, Arith, Bitwise, Data, DataType, Shift};
 use crate::softplc::pins::{self, Instance};
-use crate::softplc::{parse_literal, Address};
+use crate::softplc::{literal_type, parse_literal, Address};
 
 /// Typed values by name (upper-case; a located variable also by its
 /// address) and block instances; BOOLs live in the evaluator's bits.
@@ -79,10 +79,8 @@ impl Words {
             Some((_, DataType::Bool)) => Some(Data::Bool(bits.get_bit(text.trim()))),
             Some((key, t)) => Some(*self.values.entry(key).or_insert(t.zero())),
             None => {
-                let d = parse_literal(text, None).ok()?;
-                let typed =
-                    text.contains('#') || text.contains('.') || d.data_type().bits().is_none();
-                if typed {
+                let (d, fixed) = literal_type(text).ok()?;
+                if fixed.is_some() {
                     return Some(d);
                 }
                 match want {
@@ -159,11 +157,9 @@ impl Words {
                     ty = Some(t);
                     break;
                 }
-                if let Ok(d) = parse_literal(text, None) {
-                    if text.contains('#') || text.contains('.') || d.data_type().bits().is_none() {
-                        ty = Some(d.data_type());
-                        break;
-                    }
+                if let Ok((_, Some(t))) = literal_type(text) {
+                    ty = Some(t);
+                    break;
                 }
             }
         }

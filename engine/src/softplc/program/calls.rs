@@ -30,26 +30,13 @@ impl Program {
         for (pin, value) in &line.inputs {
             let (i, want) = find_pin(&inputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
-            let src = Program::fit(self.slot(value)?, want);
-            if self.type_of(src) != want {
-                return Err(LoadError::Type(format!(
-                    "{kind}'s {pin} is a {}",
-                    want.name()
-                )));
-            }
-            ins.push((i, src));
+            ins.push((i, self.given(&kind, pin, value, want)?));
         }
         let mut outs = Vec::new();
         for (pin, target) in &line.outputs {
             let (i, t) = find_pin(&outputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
-            let Src::Slot(slot) = self.slot(&Operand::Name(target.clone()))? else {
-                return Err(LoadError::Call(format!("`{target}` is not a variable")));
-            };
-            if self.values[slot].data_type() != t {
-                return Err(LoadError::Type(format!("{kind}'s {pin} is a {}", t.name())));
-            }
-            outs.push((i, slot));
+            outs.push((i, self.taken(&kind, pin, target, t)?));
         }
         Ok(Step::Cal {
             when: line.condition,
@@ -73,30 +60,14 @@ impl Program {
             let slot = find(&self.instances[u].inputs, pin)
                 .ok_or_else(|| LoadError::Call(format!("{type_name} has no input `{pin}`")))?;
             let want = self.values[slot].data_type();
-            let src = Program::fit(self.slot(value)?, want);
-            if self.type_of(src) != want {
-                return Err(LoadError::Type(format!(
-                    "{type_name}'s {pin} is a {}",
-                    want.name()
-                )));
-            }
-            inputs.push((slot, src));
+            inputs.push((slot, self.given(&type_name, pin, value, want)?));
         }
         let mut outputs = Vec::new();
         for (pin, target) in &line.outputs {
             let from = find(&self.instances[u].outputs, pin)
                 .ok_or_else(|| LoadError::Call(format!("{type_name} has no output `{pin}`")))?;
-            let Src::Slot(to) = self.slot(&Operand::Name(target.clone()))? else {
-                return Err(LoadError::Call(format!("`{target}` is not a variable")));
-            };
             let t = self.values[from].data_type();
-            if self.values[to].data_type() != t {
-                return Err(LoadError::Type(format!(
-                    "{type_name}'s {pin} is a {}",
-                    t.name()
-                )));
-            }
-            outputs.push((to, from));
+            outputs.push((self.taken(&type_name, pin, target, t)?, from));
         }
         Ok(Step::CallUser {
             when: line.condition,
@@ -104,5 +75,45 @@ impl Program {
             inputs,
             outputs,
         })
+    }
+
+    /// A call's input `pin := value` of block `owner`, which takes a
+    /// `want` there: its slot or constant.
+    fn given(
+        &mut self,
+        owner: &str,
+        pin: &str,
+        value: &Operand,
+        want: DataType,
+    ) -> Result<Src, LoadError> {
+        let src = Program::fit(self.slot(value)?, want);
+        if self.type_of(src) != want {
+            return Err(LoadError::Type(format!(
+                "{owner}'s {pin} is a {}",
+                want.name()
+            )));
+        }
+        Ok(src)
+    }
+
+    /// A call's output `pin => target` of block `owner`, which gives a
+    /// `t` there: the target's slot.
+    fn taken(
+        &mut self,
+        owner: &str,
+        pin: &str,
+        target: &str,
+        t: DataType,
+    ) -> Result<usize, LoadError> {
+        let Src::Slot(slot) = self.slot(&Operand::Name(target.to_string()))? else {
+            return Err(LoadError::Call(format!("`{target}` is not a variable")));
+        };
+        if self.values[slot].data_type() != t {
+            return Err(LoadError::Type(format!(
+                "{owner}'s {pin} is a {}",
+                t.name()
+            )));
+        }
+        Ok(slot)
     }
 }

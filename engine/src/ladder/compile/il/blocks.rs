@@ -18,7 +18,7 @@ use crate::ladder::plcopen::soft::functions::{Function, Operand};
 use crate::ladder::variables::Variable;
 use crate::softplc::data::DataType;
 use crate::softplc::pins;
-use crate::softplc::{parse_literal, Address};
+use crate::softplc::{literal_type, Address};
 
 impl Compiler {
     /// Declares the ladder's variables; their problems (rung 1, as the
@@ -73,11 +73,10 @@ impl Compiler {
         if let Some(&t) = self.types.get(&text.to_ascii_uppercase()) {
             return Ok(Operand::temp(text.to_string(), t));
         }
-        match parse_literal(text, None) {
-            Ok(d) => Ok(Operand {
+        match literal_type(text) {
+            Ok((_, ty)) => Ok(Operand {
                 text: text.to_string(),
-                ty: (text.contains('#') || text.contains('.') || d.data_type().bits().is_none())
-                    .then(|| d.data_type()),
+                ty,
                 literal: true,
             }),
             Err(_) => Err(format!(

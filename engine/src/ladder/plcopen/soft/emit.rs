@@ -19,7 +19,7 @@ use crate::error::Located;
 use crate::softplc::data::DataType;
 use crate::softplc::pins::{inputs as fb_inputs, outputs as fb_outputs};
 use crate::softplc::vars::BLOCK_TYPES;
-use crate::softplc::{parse_literal, Address};
+use crate::softplc::{literal_type, Address};
 
 /// What the emission of every body gives.
 #[derive(Debug, Default)]
@@ -243,11 +243,10 @@ impl Emitter<'_> {
                 None => Err(SoftError::Undeclared(text.to_string())),
             };
         }
-        let d = parse_literal(text, None).map_err(|_| SoftError::Expression(text.to_string()))?;
-        let typed = text.contains('#') || text.contains('.') || d.data_type().bits().is_none();
+        let (_, ty) = literal_type(text).map_err(|_| SoftError::Expression(text.to_string()))?;
         Ok(Operand {
             text: text.to_string(),
-            ty: typed.then(|| d.data_type()),
+            ty,
             literal: true,
         })
     }
@@ -287,7 +286,7 @@ impl Emitter<'_> {
 
     fn required(&mut self, g: &Graph, e: &Element, pin: &str) -> Result<Operand> {
         self.input(g, e, pin)?
-            .ok_or_else(|| SoftError::Unconnected(describe(e, pin)))
+            .ok_or_else(|| SoftError::Unconnected(e.describe(pin)))
     }
 
     fn joined(
@@ -516,13 +515,13 @@ impl Emitter<'_> {
         {
             let v = self
                 .input(g, e, pin)?
-                .ok_or_else(|| SoftError::Unconnected(describe(e, pin)))?;
+                .ok_or_else(|| SoftError::Unconnected(e.describe(pin)))?;
             args.push((pin.clone(), v));
         }
         let consumer = consumer_type(g, e, self);
         let (code, result) = f
             .code(&args, consumer)
-            .map_err(|why| SoftError::Function(block_type(e), why))?;
+            .map_err(|why| SoftError::Function(e.block_type(), why))?;
         let out = e
             .outputs
             .iter()
@@ -576,32 +575,4 @@ fn consumer_type(g: &Graph, e: &Element, em: &Emitter) -> Option<DataType> {
                 .map(|(_, t)| *t),
             _ => None,
         })
-}
-
-fn describe(e: &Element, pin: &str) -> String {
-    let what = match &e.kind {
-        Kind::Contact { variable, .. } => format!("contact {variable}"),
-        Kind::Coil { variable, .. } => format!("coil {variable}"),
-        Kind::Block {
-            type_name,
-            instance,
-        } => format!("{type_name} block {instance}")
-            .trim_end()
-            .to_string(),
-        Kind::OutVariable(x) => format!("output variable {x}"),
-        _ => format!("element {}", e.id),
-    };
-    if pin.is_empty() {
-        what
-    } else {
-        format!("{what}'s {pin}")
-    }
-}
-
-/// The type a block element calls.
-fn block_type(e: &Element) -> String {
-    match &e.kind {
-        Kind::Block { type_name, .. } => type_name.clone(),
-        _ => String::new(),
-    }
 }

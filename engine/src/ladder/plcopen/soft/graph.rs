@@ -64,6 +64,38 @@ pub(super) struct Element {
     pub modifiers: Vec<(String, bool, Option<bool>)>,
 }
 
+impl Element {
+    /// The element in words, with its input `pin` when there is one
+    /// (`TON block T1's PT`).
+    pub fn describe(&self, pin: &str) -> String {
+        let what = match &self.kind {
+            Kind::Contact { variable, .. } => format!("contact {variable}"),
+            Kind::Coil { variable, .. } => format!("coil {variable}"),
+            Kind::Block {
+                type_name,
+                instance,
+            } => format!("{type_name} block {instance}")
+                .trim_end()
+                .to_string(),
+            Kind::OutVariable(x) => format!("output variable {x}"),
+            _ => format!("element {}", self.id),
+        };
+        if pin.is_empty() {
+            what
+        } else {
+            format!("{what}'s {pin}")
+        }
+    }
+
+    /// The type a block element calls (empty for any other element).
+    pub fn block_type(&self) -> String {
+        match &self.kind {
+            Kind::Block { type_name, .. } => type_name.clone(),
+            _ => String::new(),
+        }
+    }
+}
+
 /// The body's elements in document order, and each one's place by id.
 pub(super) struct Graph {
     pub elements: Vec<Element>,
