@@ -69,7 +69,7 @@ fn listen_to_other_tabs(workspaces: Workspaces) {
         let Some(key) = e.key() else {
             return;
         };
-        for machine in engine::MachineId::KITS {
+        for machine in engine::MachineId::ALL {
             workspaces.ladders.of(machine).on_storage(&key);
         }
         if key == editor::projects::INDEX_KEY {
@@ -155,7 +155,7 @@ pub fn page() -> Ctx {
     if let Some(kind) = storage::saved_string(storage::MACHINE_KEY)
         .as_deref()
         .and_then(|code| state::MachineKind::parse(code).ok())
-        .filter(|kind| engine::MachineId::KITS.contains(kind))
+        .filter(|kind| engine::MachineId::ALL.contains(kind))
     {
         ctx.machine.set(kind);
     }

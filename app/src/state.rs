@@ -27,7 +27,7 @@ pub fn product_name(kind: MachineKind) -> &'static str {
         MachineKind::Io86a => "PLC-IO86A",
         MachineKind::ArduinoPlc => "Arduino PLC",
         MachineKind::AvrPlc => "AVR PLC",
-        MachineKind::SoftPlc => "Soft PLC",
+        MachineKind::SoftPlc => "Soft PLC (IEC 61131-3)",
     }
 }
 

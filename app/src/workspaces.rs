@@ -1,4 +1,4 @@
-//! The four machines' workspaces, listed in this one place: adding a
+//! The five machines' workspaces, listed in this one place: adding a
 //! machine means a context here, its view here, and its frame here.
 
 use leptos::prelude::*;
@@ -12,7 +12,7 @@ use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
 use crate::machines::minasec::board::Board;
 use crate::machines::minasec::program::ProgramPane;
 use crate::machines::minasec::MinasecCtx;
-use crate::machines::{self, arduino, avr, io86a};
+use crate::machines::{self, arduino, avr, io86a, soft};
 use crate::sim::Pace;
 use crate::state::{Ctx, MachineKind, Tab};
 
@@ -23,6 +23,7 @@ pub struct Workspaces {
     pub io86a: io86a::Io86aCtx,
     pub arduino: arduino::ArduinoCtx,
     pub avr: avr::AvrCtx,
+    pub soft: soft::SoftCtx,
     /// Each machine's ladder editor.
     pub ladders: Ladders,
     /// The named projects.
@@ -36,7 +37,8 @@ impl Workspaces {
         let io86a = io86a::Io86aCtx::new();
         let arduino = arduino::ArduinoCtx::restore(page);
         let avr = avr::AvrCtx::restore(page);
-        Workspaces::around(page, minasec, io86a, arduino, avr)
+        let soft = soft::SoftCtx::restore(page);
+        Workspaces::around(page, minasec, io86a, arduino, avr, soft)
     }
 
     /// The workspaces of these machines, each with its ladder editor
@@ -47,6 +49,7 @@ impl Workspaces {
         io86a: io86a::Io86aCtx,
         arduino: arduino::ArduinoCtx,
         avr: avr::AvrCtx,
+        soft: soft::SoftCtx,
     ) -> Workspaces {
         let ladders = Ladders::new(|machine| LadderCtx::restore(page, machine));
         let wire = |machine, link: Rc<dyn MachineLink>, program: Program| {
@@ -90,11 +93,17 @@ impl Workspaces {
             machines::link(avr.sim, move || avr.refresh()),
             machines::text_program(avr.text, move || avr.load(), move || avr.save()),
         );
+        wire(
+            MachineId::SoftPlc,
+            machines::link(soft.sim, move || soft.refresh()),
+            machines::text_program(soft.text, move || soft.load(), move || soft.save()),
+        );
         Workspaces {
             minasec,
             io86a,
             arduino,
             avr,
+            soft,
             ladders,
             projects: crate::editor::projects::Projects::restore(page),
         }
@@ -106,6 +115,7 @@ impl Workspaces {
         provide_context(self.io86a);
         provide_context(self.arduino);
         provide_context(self.avr);
+        provide_context(self.soft);
         provide_context(self.ladders);
         provide_context(self.projects);
         provide_context(*self);
@@ -150,8 +160,7 @@ impl Workspaces {
                 view! { <arduino::ArduinoWorkspace ard=self.arduino /> }.into_any()
             }
             MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=self.avr /> }.into_any(),
-            // Never shown: the page opens no soft PLC project (#31).
-            MachineKind::SoftPlc => ().into_any(),
+            MachineKind::SoftPlc => view! { <soft::SoftWorkspace soft=self.soft /> }.into_any(),
         }
     }
 }

@@ -55,6 +55,7 @@ fn mount_workspaces() -> (Ctx, Workspaces, Element) {
         app::machines::io86a::Io86aCtx::new(),
         app::machines::arduino::ArduinoCtx::restore(ctx),
         app::machines::avr::AvrCtx::restore(ctx),
+        app::machines::soft::SoftCtx::restore(ctx),
     );
     let html: HtmlElement = container.clone().unchecked_into();
     let handle = leptos::mount::mount_to(

@@ -76,6 +76,27 @@ pub const EXAMPLES: &[Example] = &[
         title_ja: "自己保持回路",
         text: include_str!("../programs/arduino-plc/self-hold.txt"),
     },
+    Example {
+        id: "self-hold",
+        machine: MachineId::SoftPlc,
+        title_en: "Seed: self-holding rung",
+        title_ja: "自己保持回路",
+        text: include_str!("../programs/soft-plc/self-hold.il"),
+    },
+    Example {
+        id: "flicker",
+        machine: MachineId::SoftPlc,
+        title_en: "Seed: MINASEC-U's test (flicker, count to 10)",
+        title_ja: "MINASEC-Uのテスト (フリッカ・10カウント)",
+        text: include_str!("../programs/soft-plc/flicker.il"),
+    },
+    Example {
+        id: "parts",
+        machine: MachineId::SoftPlc,
+        title_en: "Count parts, scale an analog level, compare",
+        title_ja: "部品カウント・アナログ値の換算と比較",
+        text: include_str!("../programs/soft-plc/parts.il"),
+    },
 ];
 
 /// The examples of `machine`.

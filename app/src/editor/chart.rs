@@ -109,8 +109,9 @@ fn rises(values: &[Option<i64>]) -> usize {
         .count()
 }
 
-/// The devices a new chart shows: the ladder's outputs, then its
-/// contacts, each once, at most eight.
+/// The devices a new chart shows: the ladder's outputs (and what its
+/// output boxes write), then its contacts (and what its in-line boxes
+/// read), each once, at most eight.
 fn default_devices(ctx: LadderCtx) -> Vec<String> {
     use engine::ladder::element::Element;
     let ladder = ctx.ladder();
@@ -128,7 +129,10 @@ fn default_devices(ctx: LadderCtx) -> Vec<String> {
                         add(device)
                     }
                     (0, Element::CounterCoil { device, .. }) => add(&format!("{device}.v")),
+                    // A soft PLC box's results (a word draws as a value line).
+                    (0, Element::OutputBlock(b)) => b.outputs.iter().for_each(|(_, v)| add(v)),
                     (1, Element::Contact { device, .. }) => add(device),
+                    (1, Element::Block(b)) => b.watched().iter().for_each(|(_, d)| add(d)),
                     _ => {}
                 }
             }

@@ -4,7 +4,7 @@
 //! OK) commits (or shows the engine's refusal, changing nothing); Escape
 //! or Cancel cancels.
 
-use engine::ladder::edit::{complete, EntryKind};
+use engine::ladder::edit::{complete_declared, EntryKind};
 use leptos::prelude::*;
 
 use super::state::LadderCtx;
@@ -127,7 +127,8 @@ fn EntryOptions(ctx: LadderCtx, set_text: Callback<String>) -> impl IntoView {
             let Some(e) = e else { return Vec::new() };
             let last = e.text.split_whitespace().last().unwrap_or("");
             let comments = ctx.drawing.comments.get();
-            complete(ctx.machine, last, &comments)
+            let variables = ctx.drawing.variables.get();
+            complete_declared(ctx.machine, last, &comments, &variables)
                 .into_iter()
                 .take(SHOWN)
                 .collect::<Vec<_>>()

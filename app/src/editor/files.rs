@@ -143,13 +143,6 @@ fn open_text(
         return;
     } else {
         match Project::from_json(text) {
-            Ok(p) if !engine::MachineId::KITS.contains(&p.machine) => {
-                let texts = ctx.page.lang.get_untracked().texts();
-                ctx.panes
-                    .message
-                    .set(Some(format!("{file}: {}", texts.not_in_page)));
-                return;
-            }
             Ok(p) => {
                 let target = ladders.map_or(ctx, |l| l.of(p.machine));
                 ctx.page.machine.set(p.machine);

@@ -257,6 +257,7 @@ fn Cell(
             <span class="sym">{c.symbol.clone()}</span>
             <span class="cmt">{c.comment.clone()}</span>
             <span class="val" data-value=cell_slot.value_attr()>{cell_slot.value_attr()}</span>
+            <span class="words" data-testid="box-values">{cell_slot.words_attr()}</span>
             // "Why": the cell asked about and the cells that decide it
             // (a child: the cell already carries tachys's most attributes).
             <span class="why" data-why=move || ctx.why.shown.with(|w| w.as_ref().and_then(|w| w.role_at(&here())))></span>

@@ -32,6 +32,7 @@ pub mod state;
 pub mod store;
 
 pub mod travel;
+pub mod variables;
 pub mod why;
 pub mod zoom;
 
@@ -42,18 +43,18 @@ use leptos::prelude::*;
 pub use state::{LadderCtx, Program};
 
 /// Every machine's editor, indexed by the machine's place in
-/// [`MachineId::KITS`]; `Copy`, provided as context so that a ladder can be
+/// [`MachineId::ALL`]; `Copy`, provided as context so that a ladder can be
 /// copied to another machine.
 #[derive(Clone, Copy)]
 pub struct Ladders {
-    all: [LadderCtx; MachineId::KITS.len()],
+    all: [LadderCtx; MachineId::ALL.len()],
 }
 
 impl Ladders {
     /// An editor for each machine, made by `make`.
     pub fn new(make: impl Fn(MachineId) -> LadderCtx) -> Ladders {
         Ladders {
-            all: MachineId::KITS.map(make),
+            all: MachineId::ALL.map(make),
         }
     }
 
@@ -65,7 +66,7 @@ impl Ladders {
 
     /// The editor of `machine`, if the page has one.
     pub fn get(&self, machine: MachineId) -> Option<LadderCtx> {
-        let index = MachineId::KITS.iter().position(|m| *m == machine)?;
+        let index = MachineId::ALL.iter().position(|m| *m == machine)?;
         Some(self.all[index])
     }
 }
@@ -194,7 +195,7 @@ fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
     let run_drawing = live::run_action(ctx);
-    let others: Vec<MachineId> = MachineId::KITS
+    let others: Vec<MachineId> = MachineId::ALL
         .into_iter()
         .filter(|m| *m != ctx.machine)
         .collect();

@@ -38,6 +38,8 @@ pub struct CellData {
     pub link_down: bool,
     /// The compiler's message for this cell.
     pub error: Option<String>,
+    /// A soft PLC box's operands shown live: (label, device).
+    pub watched: Vec<(String, String)>,
 }
 
 /// One rung as drawn.
@@ -160,6 +162,15 @@ fn drawn(e: &Element) -> CellData {
             format!("(K{preset})"),
             format!("counter coil {device} K{preset}"),
         ),
+        Element::Block(b) | Element::OutputBlock(b) => {
+            return CellData {
+                kind: CellKind::Box,
+                symbol: format!("[{}]", b.label()),
+                words: format!("box {b}"),
+                watched: b.watched(),
+                ..CellData::default()
+            };
+        }
         other => {
             let (_, words) = entry_for(other);
             let device = match other {
@@ -294,8 +305,7 @@ pub fn entry_for(e: &Element) -> (EntryKind, String) {
         Element::Cmp { a, b } => words("CMP", &format!("{a} {b}")),
         Element::Inc { dst } => words("INC", dst),
         Element::Dec { dst } => words("DEC", dst),
-        // The soft PLC's boxes are drawn and entered in the page with
-        // issue #31; until then their text is shown as it is.
+        // The call form, which the entry reads back (`c0: CTU(PV := 10)`).
         Element::Block(b) | Element::OutputBlock(b) => (EntryKind::Instruction, b.to_string()),
     }
 }

@@ -272,7 +272,7 @@ fn ProjectRow(ctx: LadderCtx, e: Entry, name: RwSignal<String>) -> impl IntoView
         }
     };
     let delete = move |_| {
-        let open_somewhere = MachineId::KITS
+        let open_somewhere = MachineId::ALL
             .iter()
             .any(|m| ladders.of(*m).work.project.get_untracked() == Some(id));
         if open_somewhere {

@@ -50,16 +50,11 @@ pub fn open_from_location(page: Ctx, ladders: Ladders) {
 /// Opens share text `fragment` (see [`open_from_location`]).
 pub fn open_fragment(page: Ctx, ladders: Ladders, fragment: &str) {
     match share::decode(fragment) {
-        Ok(project) => match ladders.get(project.machine) {
-            Some(editor) => {
-                page.machine.set(project.machine);
-                editor.show_shared(project);
-            }
-            None => {
-                let texts = page.lang.get_untracked().texts();
-                page.notice.set(Some(texts.not_in_page.to_string()));
-            }
-        },
+        Ok(project) => {
+            // Every machine has its editor in the page.
+            page.machine.set(project.machine);
+            ladders.of(project.machine).show_shared(project);
+        }
         Err(e) => {
             let texts = page.lang.get_untracked().texts();
             page.notice

@@ -131,6 +131,20 @@ pub struct Texts {
     pub warn_tof: &'static str,
     pub bits: &'static str,
     pub drive: &'static str,
+    // The soft PLC's board and variables pane.
+    pub soft_board: &'static str,
+    pub soft_push: &'static str,
+    pub variables: &'static str,
+    pub var_name: &'static str,
+    pub var_type: &'static str,
+    pub var_address: &'static str,
+    pub var_initial: &'static str,
+    pub var_comment: &'static str,
+    pub var_value: &'static str,
+    pub var_add: &'static str,
+    pub var_remove: &'static str,
+    pub var_force: &'static str,
+    pub var_hint: &'static str,
     // The ladder editor.
     pub ladder: &'static str,
     pub new_ladder: &'static str,
@@ -171,9 +185,6 @@ pub struct Texts {
     pub shared_keep: &'static str,
     pub shared_back: &'static str,
     pub shared_broken: &'static str,
-    /// A project for a machine the page has no workspace for (the soft
-    /// PLC until issue #31).
-    pub not_in_page: &'static str,
     pub shared_kept: &'static str,
     /// Another tab saved newer work over this tab's own.
     pub conflict_note: &'static str,

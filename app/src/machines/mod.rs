@@ -4,6 +4,7 @@ pub mod arduino;
 pub mod avr;
 pub mod io86a;
 pub mod minasec;
+pub mod soft;
 
 use std::rc::Rc;
 

@@ -200,6 +200,55 @@ impl BlockCall {
     }
 }
 
+impl BlockCall {
+    /// The box as a cell shows it, short: the kind, then its operands in
+    /// their pins' order, `→` before what it writes (`ADD a 1 → c`,
+    /// `GT level 100`, `c0: CTU reset 10 → parts`).
+    pub fn label(&self) -> String {
+        let mut words = Vec::new();
+        if !self.instance.is_empty() {
+            words.push(format!("{}:", self.instance));
+        }
+        words.push(self.kind());
+        for pin in self.data_pins() {
+            words.push(self.input(&pin).unwrap_or("·").to_string());
+        }
+        for (i, (_, v)) in self.outputs.iter().enumerate() {
+            if i == 0 {
+                words.push("→".into());
+            }
+            words.push(v.trim().to_string());
+        }
+        words.join(" ")
+    }
+
+    /// What the live view shows on the box while the machine runs: each
+    /// variable it reads or writes, and a timer's elapsed time (`ET`) or a
+    /// counter's count (`CV`): (label, the device to read).
+    pub fn watched(&self) -> Vec<(String, String)> {
+        let mut out: Vec<(String, String)> = Vec::new();
+        let mut add = |label: String, device: String| {
+            if !out.iter().any(|(_, d)| d.eq_ignore_ascii_case(&device)) {
+                out.push((label, device));
+            }
+        };
+        if self.shape() == Some(Shape::FunctionBlock) {
+            let v = pins::outputs(&self.kind())
+                .iter()
+                .find(|(p, _)| *p == "ET" || *p == "CV")
+                .map(|(p, _)| *p);
+            if let Some(pin) = v {
+                add(pin.to_string(), format!("{}.v", self.instance.trim()));
+            }
+        }
+        let operands = self.inputs.iter().chain(self.outputs.iter());
+        for (_, o) in operands.filter(|(_, o)| is_variable(o)) {
+            add(o.trim().to_string(), o.trim().to_string());
+        }
+        out
+    }
+}
+
 /// Whether `text` names a variable or a located address.
 pub fn is_variable(text: &str) -> bool {
     let text = text.trim();
@@ -269,5 +318,51 @@ impl fmt::Display for BlockCall {
             .chain(self.outputs.iter().map(|(p, v)| format!("{p} => {v}")))
             .collect();
         write!(f, "{}({})", self.kind(), params.join(", "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn call(
+        kind: &str,
+        instance: &str,
+        inputs: &[(&str, &str)],
+        outputs: &[(&str, &str)],
+    ) -> BlockCall {
+        let pairs = |l: &[(&str, &str)]| {
+            l.iter()
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect()
+        };
+        BlockCall {
+            kind: kind.into(),
+            instance: instance.into(),
+            inputs: pairs(inputs),
+            outputs: pairs(outputs),
+        }
+    }
+
+    #[test]
+    fn a_box_shows_its_operands_short_and_watches_its_variables() {
+        let add = call("add", "", &[("IN1", "a"), ("IN2", "1")], &[("OUT", "c")]);
+        assert_eq!(add.label(), "ADD a 1 → c");
+        assert_eq!(
+            add.watched(),
+            [("a".to_string(), "a".to_string()), ("c".into(), "c".into())],
+            "the literal is not watched"
+        );
+        let ctu = call("CTU", "c0", &[("PV", "10")], &[("CV", "parts")]);
+        assert_eq!(ctu.label(), "c0: CTU · 10 → parts", "R left unwired");
+        assert_eq!(ctu.watched()[0], ("CV".to_string(), "c0.v".to_string()));
+        let ton = call("TON", "t0", &[("PT", "T#2s")], &[]);
+        assert_eq!(ton.watched(), [("ET".to_string(), "t0.v".to_string())]);
+        let gt = call("GT", "", &[("IN1", "%IW0"), ("IN2", "%IW0")], &[]);
+        assert_eq!(
+            gt.watched().len(),
+            1,
+            "one operand read twice is shown once"
+        );
     }
 }

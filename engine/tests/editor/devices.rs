@@ -127,3 +127,24 @@ fn a_clip_travels_as_text_and_refuses_what_the_target_lacks() {
         .is_err());
     assert_eq!(e.ladder(), &before);
 }
+
+#[test]
+fn the_soft_plc_entry_offers_declared_variables_first() {
+    use engine::ladder::edit::complete_declared;
+    use engine::ladder::Variable;
+    let mut level = Variable::new("level", "INT");
+    level.comment = "tank level".into();
+    let vars = [Variable::new("lamp", "BOOL"), level];
+    let all = complete_declared(MachineId::SoftPlc, "", &Default::default(), &vars);
+    assert_eq!(all[0], ("lamp".to_string(), Some("BOOL".to_string())));
+    assert_eq!(all[1].0, "level");
+    assert_eq!(all[2].0, "%IX0.0", "then the board's I/O");
+    assert_eq!(all.len(), 18);
+    let tank = complete_declared(MachineId::SoftPlc, "tank", &Default::default(), &vars);
+    assert_eq!(
+        tank,
+        [("level".to_string(), Some("tank level".to_string()))]
+    );
+    let q = complete_declared(MachineId::SoftPlc, "%q", &Default::default(), &vars);
+    assert_eq!(q.len(), 8);
+}

@@ -108,7 +108,15 @@ impl LadderCtx {
         let resolve = |c: &crate::editor::model::CellData| {
             let look = c.kind.look();
             if c.device.is_empty() {
-                return Probe::default();
+                let words = c
+                    .watched
+                    .iter()
+                    .filter_map(|(label, d)| Some((label.clone(), self.handle(plc, d)?)))
+                    .collect();
+                return Probe {
+                    words,
+                    ..Probe::default()
+                };
             }
             let counts =
                 look.shows_value && (c.device.starts_with('T') || c.device.starts_with('C'));
@@ -120,6 +128,7 @@ impl LadderCtx {
                 value: counts
                     .then(|| self.handle(plc, &format!("{}.v", c.device)))
                     .flatten(),
+                words: Vec::new(),
             }
         };
         for view in self.drawing.rungs.get_untracked() {
@@ -131,11 +140,11 @@ impl LadderCtx {
                 None => view.update_each(|_| None, |s| &s.powered),
             }
             view.probe(generation, resolve, |probes| {
-                let probe = |i: usize| probes.get(i).copied().unwrap_or_default();
+                let probe = |i: usize| probes.get(i);
                 view.update_each(
                     |i| {
                         running
-                            .then(|| probe(i).state.map(|h| plc.read(h).is_on()))
+                            .then(|| probe(i)?.state.map(|h| plc.read(h).is_on()))
                             .flatten()
                     },
                     |s| &s.on,
@@ -143,10 +152,17 @@ impl LadderCtx {
                 view.update_each(
                     |i| {
                         running
-                            .then(|| probe(i).value.map(|h| plc.read(h).as_i64()))
+                            .then(|| probe(i)?.value.map(|h| plc.read(h).as_i64()))
                             .flatten()
                     },
                     |s| &s.value,
+                );
+                view.update_each(
+                    |i| {
+                        let words = &probe(i)?.words;
+                        (running && !words.is_empty()).then(|| box_values(plc, words))
+                    },
+                    |s| &s.words,
                 );
             });
         }
@@ -177,6 +193,15 @@ impl LadderCtx {
         if self.live.watch_values.with_untracked(|old| *old != values) {
             self.live.watch_values.set(values);
         }
+        let variables: Vec<(String, String)> = self.drawing.variables.with_untracked(|vs| {
+            vs.iter()
+                .filter_map(|v| {
+                    let value = self.handle(plc, &v.name).map(|h| plc.read(h))?;
+                    Some((v.name.clone(), value.to_string()))
+                })
+                .collect()
+        });
+        crate::state::put(self.live.variable_values, variables);
     }
 
     /// Each frame: marks every cell whose power changed in some scan since
@@ -243,4 +268,13 @@ impl LadderCtx {
             .update_value(std::collections::HashMap::clear);
         self.live.probe_generation.update_value(|g| *g += 1);
     }
+}
+
+/// A box's operands' values as its cell shows them: `a=5 c=6`.
+fn box_values(plc: &dyn engine::plc::Plc, words: &[(String, engine::plc::Device)]) -> String {
+    words
+        .iter()
+        .map(|(label, h)| format!("{label}={}", plc.read(*h)))
+        .collect::<Vec<_>>()
+        .join(" ")
 }

@@ -110,6 +110,8 @@ pub struct Drawing {
     pub problems: RwSignal<Vec<Problem>>,
     /// The ladder's device comments.
     pub comments: RwSignal<BTreeMap<String, String>>,
+    /// The soft PLC's declared variables (the variables pane).
+    pub variables: RwSignal<Vec<engine::ladder::Variable>>,
 }
 
 /// The device entry, the edit message and which panes are shown.
@@ -216,6 +218,9 @@ pub struct Live {
     /// The watch table's devices and what they show.
     pub watch: RwSignal<Vec<String>>,
     pub watch_values: RwSignal<Vec<String>>,
+    /// Each declared variable's value on the machine (the variables
+    /// pane), by name; empty before a scan.
+    pub variable_values: RwSignal<Vec<(String, String)>>,
     /// The step the last single step ran, and its rung.
     pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
     /// The element the last single instruction came from.
@@ -284,6 +289,7 @@ impl LadderCtx {
                 listing: RwSignal::new(None),
                 problems: RwSignal::new(Vec::new()),
                 comments: RwSignal::new(BTreeMap::new()),
+                variables: RwSignal::new(Vec::new()),
             },
             panes: Panes {
                 entry: RwSignal::new(None),
@@ -321,6 +327,7 @@ impl LadderCtx {
                 probe_generation: StoredValue::new(0),
                 watch: RwSignal::new(Vec::new()),
                 watch_values: RwSignal::new(Vec::new()),
+                variable_values: RwSignal::new(Vec::new()),
                 stepped: RwSignal::new(None),
                 stepped_cell: RwSignal::new(None),
                 monitor: RwSignal::new(false),
@@ -364,6 +371,16 @@ impl LadderCtx {
             self.refresh(true);
         }
         result
+    }
+
+    /// Applies an edit; a refusal is returned (for a pane that shows
+    /// it itself) and changes nothing.
+    pub fn try_edit(&self, edit: Edit) -> Result<(), String> {
+        let done = self.try_apply(edit).map_err(|e| e.to_string());
+        if done.is_ok() {
+            self.drawing.anchor.set(None);
+        }
+        done
     }
 
     /// Applies an edit; a refusal is shown and changes nothing.
@@ -420,7 +437,7 @@ impl LadderCtx {
     fn refresh_as(&self, change: Change) {
         let edited = change != Change::Shown;
         let options = self.text.options.get_untracked();
-        let (listing, errors, out_col, comments, cursor, undo, redo) =
+        let (listing, errors, out_col, comments, cursor, undo, redo, variables) =
             self.drawing.editor.with_value(|e| {
                 let (listing, errors) = match compile_listing(e.ladder(), self.machine, options) {
                     Ok(l) => (Some(l), Vec::new()),
@@ -434,6 +451,7 @@ impl LadderCtx {
                     e.cursor(),
                     e.can_undo(),
                     e.can_redo(),
+                    e.ladder().variables.clone(),
                 )
             });
         let problems: Vec<Problem> = errors
@@ -449,6 +467,7 @@ impl LadderCtx {
         if self.drawing.comments.with_untracked(|c| *c != comments) {
             self.drawing.comments.set(comments);
         }
+        crate::state::put(self.drawing.variables, variables);
         if self.drawing.cursor.get_untracked() != cursor {
             self.drawing.cursor.set(cursor);
         }

@@ -32,12 +32,13 @@ pub(super) struct Probes {
     cells: Vec<Probe>,
 }
 
-/// A cell's handles: its device's state, and a timer's or counter's
-/// current value.
-#[derive(Clone, Copy, Default)]
+/// A cell's handles: its device's state, a timer's or counter's
+/// current value, and a soft PLC box's operands (label, handle).
+#[derive(Clone, Default)]
 pub(super) struct Probe {
     pub(super) state: Option<engine::plc::Device>,
     pub(super) value: Option<engine::plc::Device>,
+    pub(super) words: Vec<(String, engine::plc::Device)>,
 }
 
 /// A cell's live signals.
@@ -53,6 +54,8 @@ pub struct CellSlot {
     pub pulsed: ArcRwSignal<Option<u32>>,
     /// A timer's or counter's current value, on its coil.
     pub value: ArcRwSignal<Option<i64>>,
+    /// A soft PLC box's operands' values (`a=5 c=6`).
+    pub words: ArcRwSignal<Option<String>>,
 }
 
 fn bit(b: bool) -> &'static str {
@@ -86,6 +89,12 @@ impl CellSlot {
     pub fn rises(&self) -> impl Fn() -> Option<String> + Clone + Send + Sync + 'static {
         let pulsed = self.pulsed.clone();
         move || pulsed.get().filter(|n| *n > 0).map(|n| n.to_string())
+    }
+
+    /// A box's operands' values, as text.
+    pub fn words_attr(&self) -> impl Fn() -> Option<String> + Clone + Send + Sync + 'static {
+        let words = self.words.clone();
+        move || words.get()
     }
 
     /// A timer's or counter's current value, as text.

@@ -113,6 +113,26 @@ pub enum Edit {
         /// With what.
         to: String,
     },
+    /// The variables pane: declares a soft PLC variable, or changes the
+    /// one of its name (type, address, value, comment); refused where a
+    /// use would no longer fit.
+    DeclareVariable {
+        /// The declaration.
+        variable: crate::ladder::Variable,
+    },
+    /// The variables pane: removes a declaration no use needs.
+    RemoveVariable {
+        /// Its name (any case).
+        name: String,
+    },
+    /// The variables pane: renames a variable in its declaration and in
+    /// every cell that uses it.
+    RenameVariable {
+        /// Its name (any case).
+        from: String,
+        /// The new name.
+        to: String,
+    },
     /// An empty ladder (the old one comes back with undo).
     NewLadder,
     /// Another whole ladder: text loaded as a ladder, an example, a
@@ -145,6 +165,15 @@ pub enum EditError {
     Clip(ClipError),
     /// A replace that does not apply (the reason).
     Replace(super::devices::ReplaceError),
+    /// A declaration the soft PLC does not take.
+    Variable(crate::ladder::variables::VariableError),
+    /// No variable of that name.
+    NoSuchVariable(String),
+    /// Another variable has that name.
+    NameTaken(String),
+    /// A use of the variable that the change would no longer fit, with
+    /// the compiler's reason at its cell.
+    UseNoLongerFits(crate::ladder::LadderError),
 }
 
 impl fmt::Display for EditError {
@@ -167,6 +196,10 @@ impl fmt::Display for EditError {
             }
             EditError::Clip(e) => e.fmt(f),
             EditError::Replace(why) => why.fmt(f),
+            EditError::Variable(e) => e.fmt(f),
+            EditError::NoSuchVariable(n) => write!(f, "there is no variable {n}"),
+            EditError::NameTaken(n) => write!(f, "{n} is already declared"),
+            EditError::UseNoLongerFits(e) => write!(f, "a use would no longer fit: {e}"),
         }
     }
 }
@@ -438,6 +471,19 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
             }
             cursor
         }
+        Edit::DeclareVariable { variable } => replace_all(
+            &mut plan,
+            ladder,
+            super::variables::declare(ladder, variable)?,
+        )?,
+        Edit::RemoveVariable { name } => {
+            replace_all(&mut plan, ladder, super::variables::remove(ladder, &name)?)?
+        }
+        Edit::RenameVariable { from, to } => replace_all(
+            &mut plan,
+            ladder,
+            super::variables::rename(ladder, &from, &to)?,
+        )?,
         Edit::NewLadder => replace_all(&mut plan, ladder, Ladder::default())?,
         Edit::Replace { ladder: new } => replace_all(&mut plan, ladder, new)?,
     };

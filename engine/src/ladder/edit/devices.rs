@@ -10,8 +10,15 @@ use crate::ladder::target::capabilities;
 use crate::MachineId;
 
 /// Every device name `machine` has, in its own spelling, in the order its
-/// capability table lists them (`X00` … `X07`, `Y00` …).
+/// capability table lists them (`X00` … `X07`, `Y00` …). The soft PLC's
+/// I/O is whatever its program names: its board's 8 inputs and 8 outputs.
 pub fn device_names(machine: MachineId) -> Vec<String> {
+    if machine == MachineId::SoftPlc {
+        return ["%IX0.", "%QX0."]
+            .iter()
+            .flat_map(|area| (0..8).map(move |n| format!("{area}{n}")))
+            .collect();
+    }
     capabilities(machine)
         .devices
         .split(',')
@@ -87,6 +94,40 @@ pub fn complete(
             (name, comment)
         })
         .collect()
+}
+
+/// The device entry's completion on a ladder with declared `variables`
+/// (the soft PLC's): the variables whose name starts with `prefix` or
+/// whose comment contains it come first, each with its comment (or its
+/// type), then [`complete`]'s devices.
+pub fn complete_declared(
+    machine: MachineId,
+    prefix: &str,
+    comments: &BTreeMap<String, String>,
+    variables: &[crate::ladder::Variable],
+) -> Vec<(String, Option<String>)> {
+    let upper = prefix.trim().to_ascii_uppercase();
+    let mut out: Vec<(String, Option<String>)> = variables
+        .iter()
+        .filter(|v| {
+            v.name.to_ascii_uppercase().starts_with(&upper)
+                || (!upper.is_empty() && v.comment.to_ascii_uppercase().contains(&upper))
+        })
+        .map(|v| {
+            let about = if v.comment.is_empty() {
+                v.data_type.clone()
+            } else {
+                v.comment.clone()
+            };
+            (v.name.clone(), Some(about))
+        })
+        .collect();
+    for (name, comment) in complete(machine, prefix, comments) {
+        if !out.iter().any(|(n, _)| n.eq_ignore_ascii_case(&name)) {
+            out.push((name, comment));
+        }
+    }
+    out
 }
 
 /// How an element uses a device.

@@ -59,6 +59,16 @@ impl std::error::Error for EntryError {}
 /// the machine's spelling of its devices.
 pub fn parse_entry(machine: MachineId, kind: EntryKind, text: &str) -> Result<Element, EntryError> {
     let words: Vec<&str> = text.split_whitespace().collect();
+    if machine == MachineId::SoftPlc && words.len() > 1 && super::block_entry::is_box(text) {
+        // A box; else (`AND %IX0.0`, `TON t1 500ms`) an instruction.
+        let boxed = super::block_entry::parse_box(text)
+            .and_then(|e| check_element(machine, &e).map_err(EntryError::Element));
+        return boxed.or_else(|box_error| {
+            instruction(&words)
+                .and_then(|e| check_element(machine, &e).map_err(EntryError::Element))
+                .map_err(|_| box_error)
+        });
+    }
     let element = match (kind, words.as_slice()) {
         (_, []) => return Err(EntryError::Empty),
         (EntryKind::Open, [d]) => Element::no(d),

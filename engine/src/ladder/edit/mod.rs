@@ -10,18 +10,22 @@
 //! ladder's size.
 
 mod align;
+mod block_entry;
 mod change;
 mod clip;
 mod command;
 mod devices;
 mod entry;
+mod variables;
 
 pub use align::align_outputs;
+pub use block_entry::BOX_USAGE;
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
 pub use devices::{
-    complete, device_names, find, replace_plan, xref, Found, ReplaceError, Use, UseRole,
+    complete, complete_declared, device_names, find, replace_plan, xref, Found, ReplaceError, Use,
+    UseRole,
 };
 pub use entry::{parse_entry, EntryError, EntryKind};
 

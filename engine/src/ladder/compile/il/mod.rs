@@ -85,9 +85,11 @@ pub(crate) fn compile_mapped(
         }
     }
     let mut starts = Vec::with_capacity(rungs.len());
+    let mut first_lines = Vec::with_capacity(rungs.len());
     for (i, logic) in rungs.iter().enumerate() {
         c.rung_index = i;
         starts.push(c.steps());
+        first_lines.push(c.lines.len());
         if !logic.comment.is_empty() {
             c.lines.push(format!(
                 "(* {} *)",
@@ -108,15 +110,46 @@ pub(crate) fn compile_mapped(
         text.push_str(l);
         text.push('\n');
     }
+    let sources: Vec<(usize, Pos, usize)> = c
+        .sources
+        .into_iter()
+        .map(|(r, p, line)| (r, p, line + header))
+        .collect();
+    let first_lines: Vec<usize> = first_lines.into_iter().map(|l| l + header).collect();
+    loads(&text, &first_lines, &sources)?;
     Ok(Mapped {
         text,
         starts,
-        sources: c
-            .sources
-            .into_iter()
-            .map(|(r, p, line)| (r, p, line + header))
-            .collect(),
+        sources,
     })
+}
+
+/// What the soft PLC says of the compiled `text` when it loads it (a
+/// type that does not fit: ADD on a BOOL), each error at the cell whose
+/// code holds its line: the first leaf of that line's rung at or after
+/// it (a box's source line follows its code), else the rung.
+fn loads(
+    text: &str,
+    first_lines: &[usize],
+    sources: &[(usize, Pos, usize)],
+) -> Result<(), Vec<LadderError>> {
+    let Err(errors) = crate::softplc::Program::load(text) else {
+        return Ok(());
+    };
+    Err(errors
+        .into_iter()
+        .map(|e| {
+            let line = e.line.saturating_sub(1);
+            let rung = first_lines
+                .partition_point(|l| *l <= line)
+                .saturating_sub(1);
+            let message = e.error.to_string();
+            match sources.iter().find(|(r, _, l)| *r == rung && *l >= line) {
+                Some((_, pos, _)) => LadderError::at(rung, *pos, message),
+                None => LadderError::rung(rung, message),
+            }
+        })
+        .collect())
 }
 
 type RungResult = Result<(), (Pos, String)>;

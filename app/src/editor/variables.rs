@@ -1,0 +1,190 @@
+//! The soft PLC's variables pane `[data-testid=variables]` (issue #31):
+//! declare a variable, rename it everywhere, retype it, give it an
+//! address, a start value and a comment, each an undoable edit that the
+//! engine refuses at the use it would break (`Edit::DeclareVariable`,
+//! `Edit::RenameVariable`, `Edit::RemoveVariable`); while the machine
+//! runs, each variable's value, and a value to set (an input keeps it;
+//! another variable takes it until the program writes it again).
+
+use engine::events::{InputValue, Real};
+use engine::ladder::edit::Edit;
+use engine::ladder::Variable;
+use engine::plc::Command;
+use leptos::prelude::*;
+
+use super::LadderCtx;
+
+/// The types offered for a new variable (any IEC elementary type or
+/// standard block can be typed).
+const TYPES: [&str; 12] = [
+    "INT", "BOOL", "DINT", "UINT", "WORD", "REAL", "TIME", "TON", "TOF", "CTU", "CTD", "R_TRIG",
+];
+
+/// A value as typed: TRUE/FALSE, an integer, a decimal (for REAL).
+pub fn typed_value(text: &str) -> Option<InputValue> {
+    let text = text.trim();
+    match text.to_ascii_uppercase().as_str() {
+        "TRUE" => return Some(InputValue::Int(1)),
+        "FALSE" => return Some(InputValue::Int(0)),
+        _ => {}
+    }
+    if let Ok(n) = text.parse::<i64>() {
+        return Some(InputValue::Int(n));
+    }
+    text.parse::<f64>()
+        .ok()
+        .and_then(Real::new)
+        .map(InputValue::Real)
+}
+
+/// The pane.
+#[component]
+pub fn VariablesPane(ctx: LadderCtx) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    let error = RwSignal::new(None::<String>);
+    let edit = move |e: Edit| error.set(ctx.try_edit(e).err());
+    let name = RwSignal::new(String::new());
+    let kind = RwSignal::new("INT".to_string());
+    let declare = move || {
+        let n = name.get_untracked();
+        edit(Edit::DeclareVariable {
+            variable: Variable::new(n.trim(), &kind.get_untracked()),
+        });
+        if error.with_untracked(Option::is_none) {
+            name.set(String::new());
+        }
+    };
+    view! {
+        <section class="variables" data-testid="variables">
+            <h2>{move || t().variables}</h2>
+            <p class="hint">{move || t().var_hint}</p>
+            <div class="var-table-wrap">
+            <table class="var-table">
+                <thead><tr>
+                    <th>{move || t().var_name}</th><th>{move || t().var_type}</th>
+                    <th>{move || t().var_address}</th><th>{move || t().var_value}</th><th></th>
+                </tr></thead>
+                <For each=move || ctx.drawing.variables.get() key=|v| v.clone()
+                    children=move |v| view! { <VariableRow ctx v edit /> } />
+            </table>
+            </div>
+            <form class="var-new" on:submit=move |e| { e.prevent_default(); declare(); }>
+                <input data-testid="var-new-name" placeholder=move || t().var_name
+                    aria-label=move || t().var_name spellcheck="false" autocomplete="off"
+                    prop:value=move || name.get() on:input=move |e| name.set(event_target_value(&e)) />
+                <input data-testid="var-new-type" list="var-types" aria-label=move || t().var_type
+                    spellcheck="false" prop:value=move || kind.get()
+                    on:input=move |e| kind.set(event_target_value(&e)) />
+                <datalist id="var-types">
+                    {TYPES.map(|k| view! { <option value=k></option> }).collect_view()}
+                </datalist>
+                <button type="submit" data-testid="var-add">{move || t().var_add}</button>
+            </form>
+            <div class="entry-error" role="alert" data-testid="variables-error">{move || error.get()}</div>
+        </section>
+    }
+}
+
+/// One variable: each field edits it when it changes (Enter or leaving
+/// the field).
+#[component]
+fn VariableRow(
+    ctx: LadderCtx,
+    v: Variable,
+    edit: impl Fn(Edit) + Copy + Send + Sync + 'static,
+) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    let old = v.name.clone();
+    let field = move |get: fn(&Variable) -> String, set: fn(&mut Variable, String)| {
+        let v = v.clone();
+        (get(&v), move |e: leptos::ev::Event| {
+            let mut changed = v.clone();
+            set(&mut changed, event_target_value(&e).trim().to_string());
+            if changed != v {
+                edit(Edit::DeclareVariable { variable: changed });
+            }
+        })
+    };
+    let (kind, on_kind) = field(|v| v.data_type.clone(), |v, s| v.data_type = s);
+    let (address, on_address) = field(|v| v.address.clone(), |v, s| v.address = s);
+    let (initial, on_initial) = field(|v| v.initial.clone(), |v, s| v.initial = s);
+    let (comment, on_comment) = field(|v| v.comment.clone(), |v, s| v.comment = s);
+    let from = old.clone();
+    let rename = move |e: leptos::ev::Event| {
+        let to = event_target_value(&e);
+        if to.trim() != from {
+            edit(Edit::RenameVariable {
+                from: from.clone(),
+                to: to.trim().to_string(),
+            });
+        }
+    };
+    let gone = old.clone();
+    let watched = old.clone();
+    let value = Memo::new(move |_| {
+        ctx.live.variable_values.with(|vs| {
+            vs.iter()
+                .find(|(n, _)| *n == watched)
+                .map_or(String::new(), |(_, v)| v.clone())
+        })
+    });
+    let to_set = RwSignal::new(String::new());
+    let target = old.clone();
+    let set_value = move || {
+        let Some(value) = typed_value(&to_set.get_untracked()) else {
+            return;
+        };
+        ctx.operate(|plc| {
+            if let Ok(d) = plc.device(&target) {
+                let _ = plc.apply(Command::SetInput(d, value));
+            }
+        });
+    };
+    view! {
+        <tbody data-testid=format!("var-{old}")>
+            <tr>
+                <td><input data-testid="var-name" value=old.clone() aria-label=move || t().var_name
+                    spellcheck="false" on:change=rename /></td>
+                <td><input data-testid="var-type" value=kind list="var-types" class="narrow"
+                    aria-label=move || t().var_type on:change=on_kind /></td>
+                <td><input data-testid="var-address" value=address class="narrow"
+                    aria-label=move || t().var_address on:change=on_address /></td>
+                <td class="var-value">
+                    <output data-testid="var-value">{move || value.get()}</output>
+                    <form on:submit=move |e| { e.prevent_default(); set_value(); }>
+                        <input data-testid="var-set" class="narrow" aria-label=move || t().var_force
+                            prop:value=move || to_set.get() on:input=move |e| to_set.set(event_target_value(&e)) />
+                        <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
+                    </form>
+                </td>
+                <td><button type="button" data-testid="var-remove" aria-label=move || t().var_remove
+                    on:click=move |_| edit(Edit::RemoveVariable { name: gone.clone() })>"×"</button></td>
+            </tr>
+            <tr class="var-more">
+                <td colspan="5">
+                    <label>{move || t().var_initial} " "
+                        <input data-testid="var-initial" value=initial class="narrow" on:change=on_initial />
+                    </label>
+                    <label>{move || t().var_comment} " "
+                        <input data-testid="var-comment" value=comment class="wide" on:change=on_comment />
+                    </label>
+                </td>
+            </tr>
+        </tbody>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn typed_values_read_as_the_soft_plc_takes_them() {
+        assert_eq!(typed_value(" 42 "), Some(InputValue::Int(42)));
+        assert_eq!(typed_value("true"), Some(InputValue::Int(1)));
+        assert_eq!(typed_value("-3"), Some(InputValue::Int(-3)));
+        assert!(matches!(typed_value("2.5"), Some(InputValue::Real(r)) if r.get() == 2.5));
+        assert_eq!(typed_value("x"), None);
+        assert_eq!(typed_value("inf"), None);
+    }
+}

@@ -1,0 +1,450 @@
+//! The soft PLC workspace (issue #31): a board built from the I/O its
+//! program names — a switch and a push button for each `%IX` input, a
+//! lamp for each `%QX` output, a slider for each word input, a gauge for
+//! each word output — beside the variables pane and the program pane in
+//! Instruction List. The bits `%IX0.0–%IX0.7` and `%QX0.0–%QX0.7` are
+//! always on the board (a small PLC's 8 in / 8 out), so a new ladder has
+//! something to wire to; a program's other I/O is added after them.
+
+use engine::events::InputValue;
+use engine::machines::SoftPlc;
+use engine::plc::{Command, Device, Plc};
+use engine::softplc::{Address, Area, Size};
+use leptos::prelude::*;
+
+use crate::chrome::controls::{Led, Momentary};
+use crate::chrome::text_program::TextProgramPane;
+use crate::sim::Simulator;
+use crate::state::{put, Ctx};
+use crate::storage;
+
+/// Where the workspace's program is saved (`SavedText`); nothing was
+/// ever saved under the legacy key.
+const KEY: &str = "hashigo.soft-plc.v1";
+const LEGACY_KEY: &str = "hashigo.soft-plc.v0";
+
+/// The most a slider reaches: a 10-bit converter's top (any value of the
+/// input's type can be typed in its box).
+pub const SLIDER_MAX: i64 = 1023;
+
+/// What a terminal on the board is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TerminalKind {
+    /// A `%IX` input: a switch and a push button.
+    Switch,
+    /// A `%QX` output: a lamp.
+    Lamp,
+    /// A word input (`%IW`, `%IB`, `%ID`, `%IL`): a slider.
+    Slider,
+    /// A word output: a gauge.
+    Gauge,
+}
+
+impl TerminalKind {
+    /// The kind of terminal `a` is; `None` for memory.
+    pub fn of(a: Address) -> Option<TerminalKind> {
+        match (a.area, a.size == Size::Bit) {
+            (Area::Input, true) => Some(TerminalKind::Switch),
+            (Area::Output, true) => Some(TerminalKind::Lamp),
+            (Area::Input, false) => Some(TerminalKind::Slider),
+            (Area::Output, false) => Some(TerminalKind::Gauge),
+            (Area::Memory, _) => None,
+        }
+    }
+}
+
+/// The test hook's form of an address: `%IX0.0` → `IX0-0`.
+pub fn hook(address: &str) -> String {
+    address.trim_start_matches('%').replace('.', "-")
+}
+
+/// The board's addresses: the default 8 in / 8 out, then the program's
+/// other inputs and outputs in their order of first use.
+pub fn board_addresses(program_io: impl Iterator<Item = Address>) -> Vec<Address> {
+    let bit = |area, n| Address {
+        area,
+        size: Size::Bit,
+        index: 0,
+        bit: Some(n),
+    };
+    let mut out: Vec<Address> = (0..8)
+        .map(|n| bit(Area::Input, n))
+        .chain((0..8).map(|n| bit(Area::Output, n)))
+        .collect();
+    for a in program_io {
+        if TerminalKind::of(a).is_some() && !out.contains(&a) {
+            out.push(a);
+        }
+    }
+    out
+}
+
+/// One terminal and its signals.
+#[derive(Clone)]
+pub struct Terminal {
+    /// As IEC writes it (`%IX0.0`).
+    pub address: String,
+    /// The variable declared at it, if any.
+    pub name: String,
+    pub kind: TerminalKind,
+    /// Its handle on the machine (`None` while the program does not use it).
+    pub device: Option<Device>,
+    /// Its value on the machine (1/0 for bits).
+    pub value: RwSignal<i64>,
+    /// What the board drives an input to (kept over a new program).
+    pub driven: RwSignal<i64>,
+    /// A push button held.
+    pub held: RwSignal<bool>,
+}
+
+/// What the soft PLC workspace's components share.
+#[derive(Clone, Copy)]
+pub struct SoftCtx {
+    pub sim: StoredValue<Simulator<SoftPlc>, LocalStorage>,
+    pub terminals: RwSignal<Vec<Terminal>>,
+    pub text: RwSignal<String>,
+}
+
+impl SoftCtx {
+    /// A workspace on `page` with its saved program loaded (a fresh one
+    /// has none: the default board and an empty ladder).
+    pub fn restore(page: Ctx) -> SoftCtx {
+        let text = storage::restored_text(page, KEY, LEGACY_KEY, "");
+        let ctx = SoftCtx {
+            sim: StoredValue::new_local(Simulator::new(SoftPlc::new())),
+            terminals: RwSignal::new(Vec::new()),
+            text: RwSignal::new(text),
+        };
+        if !ctx.load() {
+            ctx.rebuild();
+        }
+        ctx
+    }
+
+    /// Copies the terminals' values into the signals that changed.
+    pub fn refresh(&self) {
+        self.sim.with_value(|s| {
+            self.terminals.with_untracked(|ts| {
+                for t in ts {
+                    if let Some(d) = t.device {
+                        put(t.value, s.machine().read(d).as_i64());
+                    }
+                }
+            });
+        });
+    }
+
+    /// Saves the program text.
+    pub fn save(&self) {
+        let program = self.text.get_untracked();
+        storage::save_to(KEY, &storage::SavedText { program });
+    }
+
+    /// Loads the pane's program (from power-up); false if it has errors.
+    /// The board follows its I/O; what the board drives stays driven.
+    pub fn load(&self) -> bool {
+        let text = self.text.get_untracked();
+        let loaded = self
+            .sim
+            .try_update_value(|s| s.machine_mut().load_text(&text))
+            .is_some_and(|r| r.is_ok());
+        if loaded {
+            self.rebuild();
+        }
+        loaded
+    }
+
+    /// The board for the program loaded: a terminal named again keeps
+    /// its row and signals (the `<For>` is keyed by address and name), its
+    /// driven level applied to the new program.
+    fn rebuild(&self) {
+        let old = self.terminals.get_untracked();
+        let rows = self.sim.with_value(|s| {
+            let plc = s.machine();
+            let program = plc.shown_machine().machine().program();
+            let named = |a: Address| {
+                program
+                    .source()
+                    .0
+                    .iter()
+                    .find(|v| v.address == Some(a))
+                    .map_or(String::new(), |v| v.name.clone())
+            };
+            board_addresses(program.io())
+                .into_iter()
+                .filter_map(|a| {
+                    let kind = TerminalKind::of(a)?;
+                    let address = a.to_string();
+                    let device = plc.device(&address).ok();
+                    let name = named(a);
+                    let before = old.iter().find(|t| t.address == address);
+                    Some(match before {
+                        Some(t) if t.name == name => Terminal {
+                            device,
+                            ..t.clone()
+                        },
+                        // Named anew: a new row (its label changes), at
+                        // the level the board drove it to.
+                        _ => Terminal {
+                            address,
+                            name,
+                            kind,
+                            device,
+                            value: RwSignal::new(0),
+                            driven: RwSignal::new(before.map_or(0, |t| t.driven.get_untracked())),
+                            held: RwSignal::new(false),
+                        },
+                    })
+                })
+                .collect::<Vec<_>>()
+        });
+        for t in &rows {
+            let level = t.driven.get_untracked();
+            if level != 0 {
+                self.drive_device(t.device, level);
+            }
+        }
+        self.terminals.set(rows);
+        self.refresh();
+    }
+
+    fn drive_device(&self, device: Option<Device>, level: i64) {
+        let Some(device) = device else {
+            return;
+        };
+        self.sim.update_value(|s| {
+            // Refused only for a value outside the input's type, which
+            // the board's controls do not give; the value is then shown
+            // as the machine keeps it.
+            let _ = s
+                .machine_mut()
+                .apply(Command::SetInput(device, InputValue::Int(level)));
+        });
+    }
+
+    /// The machine's handle of the terminal at `address` now (a row's
+    /// copy keeps the handle of the program it was made for).
+    fn device_of(&self, address: &str) -> Option<Device> {
+        self.terminals.with_untracked(|ts| {
+            ts.iter()
+                .find(|t| t.address == address)
+                .and_then(|t| t.device)
+        })
+    }
+
+    /// Drives input `t` to `level` (the switch, a slider).
+    pub fn drive(&self, t: &Terminal, level: i64) {
+        t.driven.set(level);
+        self.drive_device(
+            self.device_of(&t.address),
+            level | i64::from(t.held.get_untracked()),
+        );
+        self.refresh();
+    }
+
+    /// A push button pressed or released: the input is on while it is
+    /// held or while its switch is on.
+    pub fn push(&self, t: &Terminal, held: bool) {
+        t.held.set(held);
+        let level = i64::from(held) | t.driven.get_untracked();
+        self.drive_device(self.device_of(&t.address), level);
+        self.refresh();
+    }
+}
+
+/// The whole soft PLC workspace: board, variables, program.
+#[component]
+pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let ladder = use_context::<crate::editor::LadderCtx>();
+    let errors = Memo::new(
+        move |_| match engine::softplc::Program::load(&soft.text.get()) {
+            Ok(_) => Vec::new(),
+            Err(e) => e
+                .iter()
+                .map(|e| (e.line, e.error.to_string()))
+                .collect::<Vec<_>>(),
+        },
+    );
+    let of = move |kind: TerminalKind| {
+        move || {
+            soft.terminals
+                .get()
+                .into_iter()
+                .filter(|t| t.kind == kind)
+                .collect::<Vec<_>>()
+        }
+    };
+    view! {
+        <main class="workspace soft">
+            <section class="device soft-board" data-testid="soft-board">
+                <h2>{move || t().soft_board}</h2>
+                <div class="soft-io">
+                    <ul class="soft-inputs">
+                        <For each=of(TerminalKind::Switch) key=|t| (t.address.clone(), t.name.clone())
+                            children=move |term| view! { <SwitchRow soft term /> } />
+                    </ul>
+                    <ul class="soft-outputs">
+                        <For each=of(TerminalKind::Lamp) key=|t| (t.address.clone(), t.name.clone())
+                            children=move |term| view! { <LampRow term /> } />
+                    </ul>
+                </div>
+                <ul class="soft-analog">
+                    <For each=of(TerminalKind::Slider) key=|t| (t.address.clone(), t.name.clone())
+                        children=move |term| view! { <SliderRow soft term /> } />
+                    <For each=of(TerminalKind::Gauge) key=|t| (t.address.clone(), t.name.clone())
+                        children=move |term| view! { <GaugeRow term /> } />
+                </ul>
+            </section>
+            {ladder.map(|l| view! { <crate::editor::variables::VariablesPane ctx=l /> })}
+            <div class="side">
+                <TextProgramPane
+                    as_ladder=true
+                    prefix="soft-"
+                    text=soft.text
+                    errors=Signal::derive(move || errors.get())
+                    on_edit=Callback::new(|program: String| {
+                        storage::save_to(KEY, &storage::SavedText { program });
+                    })
+                    on_load=Callback::new(move |()| {
+                        soft.load();
+                    })
+                    tall=true
+                />
+            </div>
+        </main>
+    }
+}
+
+/// A terminal's label: its address, and its variable's name.
+fn label(term: &Terminal) -> String {
+    if term.name.is_empty() {
+        term.address.clone()
+    } else {
+        format!("{} {}", term.address, term.name)
+    }
+}
+
+#[component]
+fn SwitchRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let hook = hook(&term.address);
+    let driven = term.driven;
+    let on = Signal::derive(move || driven.get() != 0);
+    let held = term.held;
+    let (flip, press) = (term.clone(), term.clone());
+    view! {
+        <li class="soft-terminal">
+            <button type="button" class="input-switch small" class:on=on
+                data-testid=format!("soft-input-{hook}")
+                aria-pressed=move || on.get().to_string()
+                aria-label=label(&term)
+                title=move || t().drive
+                on:click=move |_| soft.drive(&flip, i64::from(!on.get_untracked()))>
+            </button>
+            <Momentary held=Signal::derive(move || held.get())
+                testid=format!("soft-push-{hook}")
+                label=Signal::derive(move || t().soft_push.to_string())
+                set=Callback::new(move |down| soft.push(&press, down)) />
+            <span class="soft-label">{label(&term)}</span>
+        </li>
+    }
+}
+
+#[component]
+fn LampRow(term: Terminal) -> impl IntoView {
+    let value = term.value;
+    let lit = RwSignal::new(false);
+    Effect::new(move |_| put(lit, value.get() != 0));
+    view! {
+        <li class="soft-terminal">
+            <Led on=lit testid=format!("soft-lamp-{}", hook(&term.address)) colour="amber"
+                label=label(&term) />
+            <span class="soft-label">{label(&term)}</span>
+        </li>
+    }
+}
+
+#[component]
+fn SliderRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
+    let hook = hook(&term.address);
+    let driven = term.driven;
+    let set = term.clone();
+    let typed = term.clone();
+    view! {
+        <li class="soft-terminal analog">
+            <label>
+                <span class="soft-label">{label(&term)}</span>
+                <input type="range" min="0" max=SLIDER_MAX.to_string()
+                    data-testid=format!("soft-analog-{hook}")
+                    prop:value=move || driven.get().to_string()
+                    on:input=move |e| {
+                        if let Ok(v) = event_target_value(&e).parse::<i64>() {
+                            soft.drive(&set, v);
+                        }
+                    } />
+            </label>
+            <input type="number" class="soft-number" data-testid=format!("soft-analog-value-{hook}")
+                aria-label=label(&term)
+                prop:value=move || driven.get().to_string()
+                on:change=move |e| {
+                    if let Ok(v) = event_target_value(&e).trim().parse::<i64>() {
+                        soft.drive(&typed, v);
+                    }
+                } />
+        </li>
+    }
+}
+
+#[component]
+fn GaugeRow(term: Terminal) -> impl IntoView {
+    let value = term.value;
+    view! {
+        <li class="soft-terminal analog">
+            <span class="soft-label">{label(&term)}</span>
+            <meter min="0" max=SLIDER_MAX.to_string() prop:value=move || value.get() as f64
+                data-testid=format!("soft-gauge-{}", hook(&term.address))
+                data-value=move || value.get().to_string()></meter>
+            <output class="soft-number">{move || value.get().to_string()}</output>
+        </li>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn addr(text: &str) -> Address {
+        Address::parse(text).expect(text)
+    }
+
+    #[test]
+    fn the_board_is_the_default_eight_and_eight_then_the_programs_own() {
+        let board = board_addresses(
+            ["%IX0.3", "%MW0", "%IW0", "%IX2.1", "%QW1", "%QX0.0"]
+                .into_iter()
+                .map(addr),
+        );
+        let names: Vec<String> = board.iter().map(|a| a.to_string()).collect();
+        assert_eq!(names.len(), 19, "{names:?}");
+        assert_eq!(names[0], "%IX0.0");
+        assert_eq!(names[15], "%QX0.7");
+        assert_eq!(names[16..], ["%IW0", "%IX2.1", "%QW1"], "memory left out");
+        let kinds: Vec<_> = board[16..]
+            .iter()
+            .filter_map(|a| TerminalKind::of(*a))
+            .collect();
+        assert_eq!(
+            kinds,
+            [
+                TerminalKind::Slider,
+                TerminalKind::Switch,
+                TerminalKind::Gauge
+            ]
+        );
+        assert_eq!(hook("%IX0.0"), "IX0-0");
+        assert_eq!(hook("%IW0"), "IW0");
+    }
+}

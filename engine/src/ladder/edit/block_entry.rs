@@ -1,0 +1,208 @@
+//! The device entry's soft PLC boxes (issue #31): a function, comparison
+//! or function block typed in one of two forms.
+//!
+//! - The call form, as the box shows itself and as IEC writes a call:
+//!   `ADD(IN1 := a, IN2 := 1, OUT => c)`, `c0: CTU(R := reset, PV := 10)`.
+//! - Operands in order, as FX mnemonics are typed: `ADD a 1 c` (the last
+//!   operand of a function is where its result goes: `c := a + 1`),
+//!   `MOVE 42 d`, `GT level 100` (a comparison; a third operand takes its
+//!   result), `CTU c0 reset 10` (a block's instance, then its inputs after
+//!   the one the power enters, in order: CTU's R and PV).
+//!
+//! A function goes to the rung's right end ([`Element::OutputBlock`], as
+//! FX's MOV is an output); a comparison or a function block stands in the
+//! condition ([`Element::Block`]) and passes its power on.
+
+use crate::ladder::block::{BlockCall, Shape};
+use crate::ladder::element::Element;
+
+use super::entry::EntryError;
+
+/// How a box is written by its operands in order.
+pub const BOX_USAGE: &str =
+    "ADD a 1 c, MOVE 42 d, GT level 100, CTU c0 reset 10 or ADD(IN1 := a, IN2 := 1, OUT => c)";
+
+/// Whether `text` asks for a box: its first word names a function,
+/// comparison or block, or it is written in the call form.
+pub fn is_box(text: &str) -> bool {
+    let head = text
+        .split(|c: char| c.is_whitespace() || c == '(')
+        .find(|w| !w.is_empty())
+        .unwrap_or("");
+    text.contains('(') || text.contains(":=") || shape_of(head).is_some()
+}
+
+fn shape_of(kind: &str) -> Option<Shape> {
+    BlockCall {
+        kind: kind.to_string(),
+        instance: String::new(),
+        inputs: Vec::new(),
+        outputs: Vec::new(),
+    }
+    .shape()
+}
+
+/// The box `text` writes, placed where its kind stands.
+pub fn parse_box(text: &str) -> Result<Element, EntryError> {
+    let call = if text.contains('(') {
+        call_form(text)?
+    } else {
+        operands_in_order(text)?
+    };
+    Ok(match call.shape() {
+        Some(Shape::Function(..)) => Element::OutputBlock(call),
+        _ => Element::Block(call),
+    })
+}
+
+/// `[instance:] KIND(PIN := operand, PIN => variable, …)`.
+fn call_form(text: &str) -> Result<BlockCall, EntryError> {
+    let usage = || EntryError::Usage(BOX_USAGE);
+    let (head, rest) = text.split_once('(').ok_or_else(usage)?;
+    let body = rest.trim_end().strip_suffix(')').ok_or_else(usage)?;
+    let (instance, kind) = match head.split_once(':') {
+        Some((i, k)) => (i.trim(), k.trim()),
+        None => ("", head.trim()),
+    };
+    if kind.is_empty() || kind.contains(char::is_whitespace) {
+        return Err(usage());
+    }
+    let mut call = new_call(kind, instance);
+    for param in body.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        if let Some((pin, variable)) = param.split_once("=>") {
+            call.outputs
+                .push((pin.trim().to_string(), variable.trim().to_string()));
+        } else if let Some((pin, operand)) = param.split_once(":=") {
+            call.inputs
+                .push((pin.trim().to_string(), operand.trim().to_string()));
+        } else {
+            return Err(usage());
+        }
+    }
+    Ok(call)
+}
+
+fn new_call(kind: &str, instance: &str) -> BlockCall {
+    BlockCall {
+        kind: kind.to_ascii_uppercase(),
+        instance: instance.to_string(),
+        inputs: Vec::new(),
+        outputs: Vec::new(),
+    }
+}
+
+/// `KIND operand …`, read by the kind's pins (module doc).
+fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
+    let words: Vec<&str> = text.split_whitespace().collect();
+    let Some((kind, operands)) = words.split_first() else {
+        return Err(EntryError::Empty);
+    };
+    let shape = shape_of(kind).ok_or_else(|| EntryError::UnknownWord(kind.to_string()))?;
+    let mut call = new_call(kind, "");
+    let operands: Vec<String> = operands.iter().map(|o| o.to_string()).collect();
+    let wire = |call: &mut BlockCall, pins: &[String], given: &[String]| {
+        for (pin, operand) in pins.iter().zip(given) {
+            call.inputs.push((pin.clone(), operand.clone()));
+        }
+    };
+    match shape {
+        Shape::Function(pins, many) => {
+            let (result, inputs) = operands.split_last().ok_or(EntryError::Usage(BOX_USAGE))?;
+            let fits = if many {
+                inputs.len() >= pins.len()
+            } else {
+                inputs.len() == pins.len()
+            };
+            if !fits {
+                return Err(EntryError::Usage(BOX_USAGE));
+            }
+            call.inputs = inputs.iter().map(|o| (String::new(), o.clone())).collect();
+            let pins = call.data_pins();
+            call.inputs.clear();
+            wire(&mut call, &pins, inputs);
+            call.outputs.push(("OUT".into(), result.clone()));
+        }
+        Shape::Compare => {
+            if !(2..=3).contains(&operands.len()) {
+                return Err(EntryError::Usage(BOX_USAGE));
+            }
+            let pins = call.data_pins();
+            wire(&mut call, &pins, &operands[..2]);
+            if let Some(result) = operands.get(2) {
+                call.outputs.push(("OUT".into(), result.clone()));
+            }
+        }
+        Shape::FunctionBlock => {
+            let (instance, inputs) = operands.split_first().ok_or(EntryError::Usage(BOX_USAGE))?;
+            call.instance = instance.clone();
+            let pins = call.data_pins();
+            if inputs.len() > pins.len() {
+                return Err(EntryError::Usage(BOX_USAGE));
+            }
+            wire(&mut call, &pins, inputs);
+        }
+    }
+    Ok(call)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn call(e: &Element) -> &BlockCall {
+        e.block().expect("a box")
+    }
+
+    #[test]
+    fn operands_in_order_wire_a_function_its_result_last() {
+        let e = parse_box("ADD a 1 c").expect("reads");
+        assert!(matches!(e, Element::OutputBlock(_)));
+        assert_eq!(
+            call(&e).to_string(),
+            "ADD(IN1 := a, IN2 := 1, OUT => c)",
+            "c := a + 1"
+        );
+        let three = parse_box("add a b 2 total").expect("ADD takes more");
+        assert_eq!(call(&three).inputs.len(), 3);
+        let mv = parse_box("MOVE 42 d").expect("reads");
+        assert_eq!(call(&mv).to_string(), "MOVE(IN := 42, OUT => d)");
+        assert!(parse_box("MOVE 42").is_err(), "no result");
+        assert!(parse_box("SUB a b c d").is_err(), "SUB takes two");
+    }
+
+    #[test]
+    fn a_comparison_and_a_block_stand_in_the_condition() {
+        let gt = parse_box("GT level 100").expect("reads");
+        assert!(matches!(gt, Element::Block(_)));
+        assert_eq!(call(&gt).to_string(), "GT(IN1 := level, IN2 := 100)");
+        let ctu = parse_box("CTU c0 reset 10").expect("reads");
+        assert!(matches!(ctu, Element::Block(_)));
+        assert_eq!(call(&ctu).to_string(), "c0: CTU(R := reset, PV := 10)");
+        assert_eq!(
+            call(&parse_box("TON t0 T#2s").expect("reads")).to_string(),
+            "t0: TON(PT := T#2s)"
+        );
+        assert!(parse_box("CTU c0 r 10 5").is_err(), "CTU takes R and PV");
+    }
+
+    #[test]
+    fn the_call_form_reads_back_what_a_box_shows() {
+        for text in [
+            "ADD(IN1 := a, IN2 := 1, OUT => c)",
+            "c0: CTU(R := reset, PV := 10)",
+            "GT(IN1 := level, IN2 := 100)",
+            "LIMIT(MN := 0, IN := raw, MX := 1000, OUT => level)",
+        ] {
+            let e = parse_box(text).expect(text);
+            assert_eq!(call(&e).to_string(), text);
+        }
+        assert!(parse_box("ADD(IN1 := a").is_err(), "unclosed");
+        assert!(parse_box("ADD(IN1 a)").is_err(), "no := or =>");
+    }
+
+    #[test]
+    fn boxes_are_told_from_devices() {
+        assert!(is_box("ADD a 1 c") && is_box("gt x 1") && is_box("c0: CTU(PV := 1)"));
+        assert!(!is_box("%IX0.0") && !is_box("start") && !is_box("SET %QX0.0"));
+    }
+}

@@ -1,0 +1,161 @@
+"""End-to-end: the soft PLC in the page (issue #31): its board, boxes on
+words, the variables pane, sharing, a ladder test on a word."""
+
+import json
+import subprocess
+
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
+
+from test_app import el, on, open_fresh, severe_console_messages, wait
+from test_ladder import HASHIGO, focus_ladder, keys, place, saved_ladder
+
+
+def choose_soft(driver, base_url):
+    open_fresh(driver, base_url)
+    select = Select(el(driver, "machine"))
+    assert "Soft PLC (IEC 61131-3)" in [o.text for o in select.options]
+    select.select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-board"))
+
+
+def box_values(driver, cell):
+    return el(driver, cell).find_element(By.CSS_SELECTOR, '[data-testid="box-values"]').text
+
+
+def test_draw_by_keys_run_and_drive_it_from_the_board(driver, base_url, artifacts):
+    choose_soft(driver, base_url)
+    # A fresh board: 8 inputs and 8 outputs.
+    for n in range(8):
+        assert el(driver, f"soft-input-IX0-{n}") and el(driver, f"soft-lamp-QX0-{n}")
+    focus_ladder(driver)
+    place(driver, Keys.F5, "%IX0.0")
+    place(driver, Keys.F7, "%QX0.0")
+    assert el(driver, "problems").text.strip() == "No problems."
+    assert "ST %QX0.0" in el(driver, "il-listing").text
+    el(driver, "run").click()
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0", message="live")
+    assert not on(driver, "soft-lamp-QX0-0")
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="%QX0.0 follows %IX0.0")
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1")
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: not on(driver, "soft-lamp-QX0-0"), message="and drops with it")
+    driver.save_screenshot(str(artifacts / "soft-drawn.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_add_and_gt_boxes_show_their_values_live(driver, base_url, artifacts):
+    choose_soft(driver, base_url)
+    # Declare the words first: the entry offers them.
+    for name in ["count", "level"]:
+        el(driver, "var-new-name").send_keys(name)
+        el(driver, "var-add").click()
+        wait(driver, lambda: el(driver, f"var-{name}"))
+    focus_ladder(driver)
+    place(driver, Keys.F5, "%IX0.1")
+    place(driver, Keys.F8, "ADD count 1 count")
+    assert el(driver, "cell-0-0-9").get_attribute("data-kind") == "box"
+    place(driver, Keys.F8, "GT count 50")
+    place(driver, Keys.F7, "%QX0.1")
+    keys(driver, Keys.F8)
+    keys(driver, "lev")
+    wait(driver, lambda: "level" in el(driver, "device-options").text, message="declared first")
+    assert el(driver, "device-options").text.splitlines()[0].startswith("level")
+    keys(driver, Keys.ESCAPE)
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    el(driver, "run").click()
+    el(driver, "soft-input-IX0-1").click()
+    wait(driver, lambda: box_values(driver, "cell-0-0-9").startswith("count="), message="ADD's values")
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-1"), timeout=10, message="count passes 50")
+    assert box_values(driver, "cell-1-0-0").startswith("count=")
+    value = int(box_values(driver, "cell-1-0-0").split("=")[1])
+    assert value > 50
+    wait(driver, lambda: el(driver, "var-count").find_element(
+        By.CSS_SELECTOR, '[data-testid="var-value"]').text not in ("", "0"))
+    driver.save_screenshot(str(artifacts / "soft-boxes.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_declare_rename_and_retype_a_variable(driver, base_url):
+    choose_soft(driver, base_url)
+    el(driver, "var-new-name").send_keys("total")
+    el(driver, "var-add").click()
+    wait(driver, lambda: el(driver, "var-total"))
+    focus_ladder(driver)
+    place(driver, Keys.F5, "%IX0.0")
+    place(driver, Keys.F8, "MOVE 42 total")
+    place(driver, Keys.F8, "EQ total 42")
+    place(driver, Keys.F7, "%QX0.2")
+    # Rename: every use follows.
+    name = el(driver, "var-total").find_element(By.CSS_SELECTOR, '[data-testid="var-name"]')
+    name.send_keys(Keys.CONTROL, "a")
+    name.send_keys("parts", Keys.TAB)
+    wait(driver, lambda: el(driver, "var-parts"))
+    ladder = saved_ladder(driver, "soft-plc")
+    text = json.dumps(ladder)
+    assert "total" not in text and text.count("parts") >= 3, text
+    # Retype to BOOL: MOVE 42 no longer fits, refused at its cell.
+    kind = el(driver, "var-parts").find_element(By.CSS_SELECTOR, '[data-testid="var-type"]')
+    kind.send_keys(Keys.CONTROL, "a")
+    kind.send_keys("BOOL", Keys.TAB)
+    wait(driver, lambda: "rung 1" in el(driver, "variables-error").text)
+    assert saved_ladder(driver, "soft-plc")["variables"][0]["type"] == "INT"
+    # A comment is kept, and undo takes it back.
+    comment = el(driver, "var-parts").find_element(By.CSS_SELECTOR, '[data-testid="var-comment"]')
+    comment.send_keys("parts made", Keys.TAB)
+    wait(driver, lambda: saved_ladder(driver, "soft-plc")["variables"][0].get("comment") == "parts made")
+    el(driver, "undo").click()
+    wait(driver, lambda: "comment" not in saved_ladder(driver, "soft-plc")["variables"][0])
+
+
+def test_a_soft_plc_ladder_shared_to_a_fresh_profile(driver, base_url):
+    choose_soft(driver, base_url)
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: el(driver, "var-parts"))
+    el(driver, "share").click()
+    link = el(driver, "share-url").get_attribute("value")
+    assert link.startswith(base_url + "/#3."), link
+    shared = saved_ladder(driver, "soft-plc")
+    project = json.loads(subprocess.run([str(HASHIGO), "unshare", link], check=True,
+                                        capture_output=True, text=True).stdout)
+    assert project["machine"] == "soft-plc" and project["ladder"] == shared
+    # A fresh profile opens it on the soft PLC, variables and boxes.
+    open_fresh(driver, base_url)
+    driver.get(link)
+    wait(driver, lambda: el(driver, "shared-banner"))
+    assert Select(el(driver, "machine")).first_selected_option.get_attribute("value") == "soft-plc"
+    wait(driver, lambda: el(driver, "var-parts") and el(driver, "var-level"))
+    assert any(c.get_attribute("data-kind") == "box"
+               for c in driver.find_elements(By.CSS_SELECTOR, '[data-kind="box"]'))
+    # It runs: the level slider, scaled to percent, on the gauge.
+    el(driver, "run").click()
+    el(driver, "soft-input-IX0-2").click()
+    slider = el(driver, "soft-analog-value-IW0")
+    slider.send_keys(Keys.CONTROL, "a")
+    slider.send_keys("900", Keys.ENTER)
+    wait(driver, lambda: el(driver, "soft-gauge-QW0").get_attribute("data-value") == "90",
+         message="90 % on the gauge")
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-1"), message="above 80 %")
+
+
+def test_a_ladder_test_on_a_word_passes_in_the_tests_pane(driver, base_url):
+    choose_soft(driver, base_url)
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: el(driver, "var-parts"))
+    el(driver, "tests-open").click()
+    wait(driver, lambda: el(driver, "add-test")).click()
+    case = wait(driver, lambda: el(driver, "test-case-0"))
+    events = "".join(f"{t / 10}s,sensor,{t % 2 == 0 and 1 or 0}\n" for t in range(1, 25))
+    case.find_element(By.CSS_SELECTOR, '[data-testid="test-events"]').send_keys(events)
+    case.find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]').send_keys(
+        "parts = 12 at 3s\nbatch = 1 at 3s")
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "pass",
+         message=el(driver, "test-case-0").text)
+    expect = el(driver, "test-case-0").find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]')
+    expect.send_keys("\nparts = 11 at 3s")
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "fail")
+    assert "parts was 12" in el(driver, "test-case-0").text
