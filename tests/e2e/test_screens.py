@@ -239,3 +239,46 @@ def test_the_import_dialog_takes_the_focus_and_gives_it_back(driver, base_url):
     driver.switch_to.active_element.send_keys(Keys.ESCAPE)
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]'))
     assert driver.switch_to.active_element.get_attribute("data-testid") == "ladder"
+
+
+def test_the_soft_plc_on_every_screen(screen, base_url, artifacts):
+    """The soft PLC's board and variables pane (issue #31) fit every
+    screen: %IX0.0 -> %QX0.0 drawn, run, driven from the board; then the
+    parts example, its analog slider and gauge and its variables."""
+    from selenium.webdriver.support.ui import Select
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-board"))
+    if touch:
+        el(driver, "cell-0-0-0").click()
+        tap_entry(driver, "palette-no", "%IX0.0")
+        tap_entry(driver, "palette-coil", "%QX0.0")
+    else:
+        focus_ladder(driver)
+        place(driver, Keys.F5, "%IX0.0")
+        place(driver, Keys.F7, "%QX0.0")
+    el(driver, "run").click()
+    scrolled = driver.execute_script("return scrollY")
+    show(driver, touch, "panel")
+    if touch:
+        driver.execute_script("document.querySelector('[data-testid=soft-input-IX0-0]').scrollIntoView({block: 'center'})")
+    wait(driver, lambda: on_screen(driver, "soft-input-IX0-0"), message="the input is on screen")
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="%QX0.0 follows %IX0.0")
+    assert on_screen(driver, "soft-lamp-QX0-0")
+    if not touch:
+        assert driver.execute_script("return scrollY") == scrolled, "no page scroll needed"
+    assert no_sideways_overflow(driver)
+    driver.save_screenshot(str(artifacts / f"screen-soft-{name}.png"))
+
+    show(driver, touch, "ladder")
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-parts"]'))
+    show(driver, touch, "panel")
+    for testid in ["soft-analog-IW0", "soft-gauge-QW0", "var-level"]:
+        driver.execute_script(f"document.querySelector('[data-testid={testid}]').scrollIntoView({{block: 'center'}})")
+        wait(driver, lambda: on_screen(driver, testid), message=f"{testid} on screen")
+    assert no_sideways_overflow(driver)
+    driver.save_screenshot(str(artifacts / f"screen-soft-parts-{name}.png"))

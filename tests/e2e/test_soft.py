@@ -57,7 +57,12 @@ def test_add_and_gt_boxes_show_their_values_live(driver, base_url, artifacts):
     place(driver, Keys.F5, "%IX0.1")
     place(driver, Keys.F8, "ADD count 1 count")
     assert el(driver, "cell-0-0-9").get_attribute("data-kind") == "box"
-    place(driver, Keys.F8, "GT count 50")
+    # The comparison from the palette: its entry opens with GT typed.
+    el(driver, "palette-gt").click()
+    entry = wait(driver, lambda: el(driver, "device-input"))
+    assert entry.get_attribute("value") == "GT "
+    entry.send_keys("count 50", Keys.ENTER)
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
     place(driver, Keys.F7, "%QX0.1")
     keys(driver, Keys.F8)
     keys(driver, "lev")
@@ -102,6 +107,24 @@ def test_declare_rename_and_retype_a_variable(driver, base_url):
     kind.send_keys("BOOL", Keys.TAB)
     wait(driver, lambda: "rung 1" in el(driver, "variables-error").text)
     assert saved_ladder(driver, "soft-plc")["variables"][0]["type"] == "INT"
+    # A value set from the pane: the program writes 42 only while %IX0.0 is on.
+    el(driver, "run").click()
+    row = el(driver, "var-parts")
+    row.find_element(By.CSS_SELECTOR, '[data-testid="var-set"]').send_keys("7", Keys.ENTER)
+    wait(driver, lambda: el(driver, "var-parts").find_element(
+        By.CSS_SELECTOR, '[data-testid="var-value"]').text == "7", message="set to 7")
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: el(driver, "var-parts").find_element(
+        By.CSS_SELECTOR, '[data-testid="var-value"]').text == "42", message="MOVE 42 writes it")
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-2"), message="EQ parts 42")
+    # An unused variable can go; a used one cannot.
+    el(driver, "var-new-name").send_keys("spare")
+    el(driver, "var-add").click()
+    wait(driver, lambda: el(driver, "var-spare"))
+    el(driver, "var-spare").find_element(By.CSS_SELECTOR, '[data-testid="var-remove"]').click()
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-spare"]'))
+    el(driver, "var-parts").find_element(By.CSS_SELECTOR, '[data-testid="var-remove"]').click()
+    wait(driver, lambda: "rung 1" in el(driver, "variables-error").text, message="parts is used")
     # A comment is kept, and undo takes it back.
     comment = el(driver, "var-parts").find_element(By.CSS_SELECTOR, '[data-testid="var-comment"]')
     comment.send_keys("parts made", Keys.TAB)
@@ -159,3 +182,34 @@ def test_a_ladder_test_on_a_word_passes_in_the_tests_pane(driver, base_url):
     el(driver, "run-tests").click()
     wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "fail")
     assert "parts was 12" in el(driver, "test-case-0").text
+
+
+def test_why_a_comparison_blocks_power_says_its_operands_values(driver, base_url):
+    choose_soft(driver, base_url)
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: el(driver, "var-level"))
+    el(driver, "run").click()
+    el(driver, "soft-input-IX0-2").click()
+    value = el(driver, "soft-analog-value-IW0")
+    value.send_keys(Keys.CONTROL, "a")
+    value.send_keys("500", Keys.ENTER)
+    wait(driver, lambda: el(driver, "soft-gauge-QW0").get_attribute("data-value") == "50")
+    assert not on(driver, "soft-lamp-QX0-1")
+    el(driver, "cell-2-0-9").click()
+    driver.switch_to.active_element.send_keys("w")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == "0")
+    causes = driver.find_elements(By.CSS_SELECTOR, '[data-testid="why-cause"]')
+    text = " ".join(c.text for c in causes)
+    assert "level = 50" in el(driver, "why-values").text, text
+    assert "GT" in text and "driven from outside" not in text, "a box is no input"
+    # Time travel: back to a scan before the level was set, the box said 0.
+    driver.switch_to.active_element.send_keys(Keys.ESCAPE)
+    el(driver, "break-input").send_keys("high rises", Keys.ENTER)
+    value.send_keys(Keys.CONTROL, "a")
+    value.send_keys("900", Keys.ENTER)
+    wait(driver, lambda: "Stopped" in el(driver, "break-status").text or el(driver, "break-status").text,
+         message="the break on high")
+    wait(driver, lambda: box_values(driver, "cell-2-0-0") == "level=90")
+    el(driver, "step-back").click()
+    wait(driver, lambda: box_values(driver, "cell-2-0-0") == "level=50", message="the scan before")
+    assert el(driver, "soft-gauge-QW0").get_attribute("data-value") == "50", "the board shows that scan"

@@ -53,6 +53,9 @@ enum Needs {
     DataBoxes,
     /// NOT, R_TRIG, F_TRIG, TON … on the rung (what they are called).
     InlineBoxes(Words),
+    /// The soft PLC's functions and blocks on words: only its palette
+    /// shows them (no other machine has words to give them).
+    WordBoxes,
 }
 
 /// Words in English and Japanese.
@@ -80,6 +83,10 @@ impl Needs {
             Needs::Pulses => (caps.pulse_outputs, ("PLS/PLF outputs", "PLS/PLF 出力")),
             Needs::DataBoxes => (caps.data_boxes, ("data boxes", "データ命令")),
             Needs::InlineBoxes(what) => (caps.inline_boxes, what),
+            Needs::WordBoxes => (
+                machine == MachineId::SoftPlc,
+                ("functions on words", "ワード命令"),
+            ),
         };
         let what = said(what, lang);
         (!has).then(|| match lang {
@@ -156,6 +163,16 @@ const SPECS: &[Spec] = &[
     spec("ton", "[TON]", ("on-delay timer: TON t1 500ms", "オンディレイタイマ: TON t1 500ms"), Entry(Instruction, false, "TON "), Needs::InlineBoxes(("in-line timers", "インラインタイマ"))),
     spec("tof", "[TOF]", ("off-delay timer: TOF t1 500ms", "オフディレイタイマ: TOF t1 500ms"), Entry(Instruction, false, "TOF "), Needs::InlineBoxes(("in-line timers", "インラインタイマ"))),
     spec("tp", "[TP]", ("pulse timer: TP t1 500ms", "パルスタイマ: TP t1 500ms"), Entry(Instruction, false, "TP "), Needs::InlineBoxes(("in-line timers", "インラインタイマ"))),
+    spec("add", "[ADD]", ("ADD a 1 c: c := a + 1", "加算: ADD a 1 c (c := a + 1)"), Entry(Instruction, false, "ADD "), Needs::WordBoxes),
+    spec("sub", "[SUB]", ("SUB a 1 c: c := a − 1", "減算: SUB a 1 c (c := a − 1)"), Entry(Instruction, false, "SUB "), Needs::WordBoxes),
+    spec("mul", "[MUL]", ("MUL a 2 c: c := a × 2", "乗算: MUL a 2 c (c := a × 2)"), Entry(Instruction, false, "MUL "), Needs::WordBoxes),
+    spec("div", "[DIV]", ("DIV a 10 c: c := a ÷ 10", "除算: DIV a 10 c (c := a ÷ 10)"), Entry(Instruction, false, "DIV "), Needs::WordBoxes),
+    spec("move", "[MOVE]", ("MOVE 42 d: d := 42", "転送: MOVE 42 d (d := 42)"), Entry(Instruction, false, "MOVE "), Needs::WordBoxes),
+    spec("gt", "[>]", ("GT a 10: power while a > 10", "比較: GT a 10 (a > 10 の間導通)"), Entry(Instruction, false, "GT "), Needs::WordBoxes),
+    spec("eq", "[=]", ("EQ a 10: power while a = 10", "比較: EQ a 10 (a = 10 の間導通)"), Entry(Instruction, false, "EQ "), Needs::WordBoxes),
+    spec("lt", "[<]", ("LT a 10: power while a < 10", "比較: LT a 10 (a < 10 の間導通)"), Entry(Instruction, false, "LT "), Needs::WordBoxes),
+    spec("ctu", "[CTU]", ("up counter: CTU c0 reset 10", "加算カウンタ: CTU c0 reset 10"), Entry(Instruction, false, "CTU "), Needs::WordBoxes),
+    spec("ctd", "[CTD]", ("down counter: CTD c1 load 10", "減算カウンタ: CTD c1 load 10"), Entry(Instruction, false, "CTD "), Needs::WordBoxes),
 ];
 
 /// The palette of `machine` in `lang`: every item, with what the machine
@@ -164,6 +181,7 @@ pub fn items(machine: MachineId, lang: Lang) -> Vec<Item> {
     let caps = capabilities(machine);
     SPECS
         .iter()
+        .filter(|s| !matches!(s.needs, Needs::WordBoxes) || machine == MachineId::SoftPlc)
         .map(|s| Item {
             id: s.id,
             symbol: s.symbol,
@@ -274,6 +292,18 @@ mod tests {
         assert_eq!(lacks(MachineId::AvrPlc, "ton"), None);
         assert!(lacks(MachineId::Io86a, "ton").is_some());
         assert_eq!(lacks(MachineId::Io86a, "or-no"), None);
+        assert_eq!(lacks(MachineId::SoftPlc, "add"), None);
+        let ids = |m| {
+            items(m, Lang::En)
+                .into_iter()
+                .map(|i| i.id)
+                .collect::<Vec<_>>()
+        };
+        assert!(ids(MachineId::SoftPlc).contains(&"ctu"));
+        assert!(
+            !ids(MachineId::Io86a).contains(&"add"),
+            "words only on the soft PLC"
+        );
     }
 
     #[test]

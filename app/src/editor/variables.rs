@@ -62,7 +62,7 @@ pub fn VariablesPane(ctx: LadderCtx) -> impl IntoView {
             <table class="var-table">
                 <thead><tr>
                     <th>{move || t().var_name}</th><th>{move || t().var_type}</th>
-                    <th>{move || t().var_address}</th><th>{move || t().var_value}</th><th></th>
+                    <th>{move || t().var_address}</th><th>{move || t().var_value}</th>
                 </tr></thead>
                 <For each=move || ctx.drawing.variables.get() key=|v| v.clone()
                     children=move |v| view! { <VariableRow ctx v edit /> } />
@@ -157,17 +157,18 @@ fn VariableRow(
                         <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
                     </form>
                 </td>
-                <td><button type="button" data-testid="var-remove" aria-label=move || t().var_remove
-                    on:click=move |_| edit(Edit::RemoveVariable { name: gone.clone() })>"×"</button></td>
             </tr>
             <tr class="var-more">
-                <td colspan="5">
+                <td colspan="4">
                     <label>{move || t().var_initial} " "
                         <input data-testid="var-initial" value=initial class="narrow" on:change=on_initial />
                     </label>
                     <label>{move || t().var_comment} " "
                         <input data-testid="var-comment" value=comment class="wide" on:change=on_comment />
                     </label>
+                    <button type="button" data-testid="var-remove" aria-label=move || t().var_remove
+                        title=move || t().var_remove
+                        on:click=move |_| edit(Edit::RemoveVariable { name: gone.clone() })>"×"</button>
                 </td>
             </tr>
         </tbody>

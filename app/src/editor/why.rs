@@ -45,6 +45,9 @@ pub struct CauseView {
     pub changed: Option<Mark>,
     /// Where its device is written: (rung, cell) of each driving output.
     pub drivers: Vec<(usize, Pos)>,
+    /// A soft PLC box's operands with their values (`level = 50`), which
+    /// decide it.
+    pub values: Vec<String>,
 }
 
 impl WhyView {
@@ -147,12 +150,22 @@ fn explain_at(ctx: LadderCtx, at: Cursor) -> Option<WhyView> {
                     .device
                     .as_deref()
                     .map_or_else(Vec::new, |d| outputs(&ladder, d));
+                let values = c.element.block().map_or_else(Vec::new, |b| {
+                    b.watched()
+                        .iter()
+                        .filter_map(|(label, d)| {
+                            let handle = plc.device(d).ok()?;
+                            Some(format!("{label} = {}", plc.read(handle)))
+                        })
+                        .collect()
+                });
                 CauseView {
                     pos: c.pos,
                     what: c.element.to_string(),
                     device,
                     changed: None,
                     drivers,
+                    values,
                 }
             })
             .collect();
@@ -265,6 +278,11 @@ fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
                 {c.what.clone()}
             </button>
             {state}
+            {(!c.values.is_empty()).then(|| view! {
+                " · " <span data-testid="why-values">{c.values.join(", ")}</span>
+            })}
+            // What changed and who drives it are a device's: a box has none.
+            {c.device.is_some().then(|| view! {
             " · "
             {match changed {
                 Some(m) => view! {
@@ -286,6 +304,7 @@ fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
                     </button>
                 }).collect_view().into_any()
             }}
+            })}
         </li>
     }
 }
