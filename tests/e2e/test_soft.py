@@ -213,3 +213,29 @@ def test_why_a_comparison_blocks_power_says_its_operands_values(driver, base_url
     el(driver, "step-back").click()
     wait(driver, lambda: box_values(driver, "cell-2-0-0") == "level=50", message="the scan before")
     assert el(driver, "soft-gauge-QW0").get_attribute("data-value") == "50", "the board shows that scan"
+
+
+def test_a_soft_plc_project_keeps_its_variables_and_the_watch_shows_words(driver, base_url):
+    choose_soft(driver, base_url)
+    el(driver, "projects-open").click()
+    el(driver, "project-name").send_keys("Tank")
+    el(driver, "project-new").click()
+    wait(driver, lambda: el(driver, "project-open-name").text == "Tank")
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: el(driver, "var-parts"))
+    [entry] = json.loads(driver.execute_script("return localStorage.getItem('hashigo.projects.v1')"))["projects"]
+    assert entry["machine"] == "soft-plc"
+    saved = lambda: json.loads(driver.execute_script(
+        "return localStorage.getItem(arguments[0])", f"hashigo.project.{entry['id']}.v1"))["ladder"]
+    wait(driver, lambda: "parts" in [v["name"] for v in saved().get("variables", [])])
+    # A reload opens the soft PLC with the project, variables and all.
+    driver.refresh()
+    wait(driver, lambda: el(driver, "var-level"))
+    el(driver, "run").click()
+    el(driver, "soft-input-IX0-2").click()
+    value = el(driver, "soft-analog-value-IW0")
+    value.send_keys(Keys.CONTROL, "a")
+    value.send_keys("640", Keys.ENTER)
+    el(driver, "watch-input").send_keys("level", Keys.ENTER)
+    wait(driver, lambda: el(driver, "watch-level").text.split()[:2] == ["level", "64"], message="a word in the watch")
+    assert "(" not in el(driver, "watch-level").text, "a word has no current value apart"

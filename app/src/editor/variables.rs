@@ -120,26 +120,6 @@ fn VariableRow(
         }
     };
     let gone = old.clone();
-    let watched = old.clone();
-    let value = Memo::new(move |_| {
-        ctx.live.variable_values.with(|vs| {
-            vs.iter()
-                .find(|(n, _)| *n == watched)
-                .map_or(String::new(), |(_, v)| v.clone())
-        })
-    });
-    let to_set = RwSignal::new(String::new());
-    let target = old.clone();
-    let set_value = move || {
-        let Some(value) = typed_value(&to_set.get_untracked()) else {
-            return;
-        };
-        ctx.operate(|plc| {
-            if let Ok(d) = plc.device(&target) {
-                let _ = plc.apply(Command::SetInput(d, value));
-            }
-        });
-    };
     view! {
         <tbody data-testid=format!("var-{old}")>
             <tr>
@@ -149,14 +129,7 @@ fn VariableRow(
                     aria-label=move || t().var_type on:change=on_kind /></td>
                 <td><input data-testid="var-address" value=address class="narrow"
                     aria-label=move || t().var_address on:change=on_address /></td>
-                <td class="var-value">
-                    <output data-testid="var-value">{move || value.get()}</output>
-                    <form on:submit=move |e| { e.prevent_default(); set_value(); }>
-                        <input data-testid="var-set" class="narrow" aria-label=move || t().var_force
-                            prop:value=move || to_set.get() on:input=move |e| to_set.set(event_target_value(&e)) />
-                        <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
-                    </form>
-                </td>
+                <ValueCell ctx name=old.clone() />
             </tr>
             <tr class="var-more">
                 <td colspan="4">
@@ -187,5 +160,41 @@ mod tests {
         assert!(matches!(typed_value("2.5"), Some(InputValue::Real(r)) if r.get() == 2.5));
         assert_eq!(typed_value("x"), None);
         assert_eq!(typed_value("inf"), None);
+    }
+}
+
+/// A variable's value on the machine, and a value to set: an input
+/// keeps it; another variable takes it until the program writes it.
+#[component]
+fn ValueCell(ctx: LadderCtx, name: String) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    let watched = name.clone();
+    let value = Memo::new(move |_| {
+        ctx.live.variable_values.with(|vs| {
+            vs.iter()
+                .find(|(n, _)| *n == watched)
+                .map_or(String::new(), |(_, v)| v.clone())
+        })
+    });
+    let to_set = RwSignal::new(String::new());
+    let set_value = move || {
+        let Some(value) = typed_value(&to_set.get_untracked()) else {
+            return;
+        };
+        ctx.operate(|plc| {
+            if let Ok(d) = plc.device(&name) {
+                let _ = plc.apply(Command::SetInput(d, value));
+            }
+        });
+    };
+    view! {
+        <td class="var-value">
+            <output data-testid="var-value">{move || value.get()}</output>
+            <form on:submit=move |e| { e.prevent_default(); set_value(); }>
+                <input data-testid="var-set" class="narrow" aria-label=move || t().var_force
+                    prop:value=move || to_set.get() on:input=move |e| to_set.set(event_target_value(&e)) />
+                <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
+            </form>
+        </td>
     }
 }

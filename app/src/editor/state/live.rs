@@ -105,32 +105,7 @@ impl LadderCtx {
             None => Vec::new(),
         };
         let generation = self.live.probe_generation.get_value();
-        let resolve = |c: &crate::editor::model::CellData| {
-            let look = c.kind.look();
-            if c.device.is_empty() {
-                let words = c
-                    .watched
-                    .iter()
-                    .filter_map(|(label, d)| Some((label.clone(), self.handle(plc, d)?)))
-                    .collect();
-                return Probe {
-                    words,
-                    ..Probe::default()
-                };
-            }
-            let counts =
-                look.shows_value && (c.device.starts_with('T') || c.device.starts_with('C'));
-            Probe {
-                state: look
-                    .shows_state
-                    .then(|| self.handle(plc, &c.device))
-                    .flatten(),
-                value: counts
-                    .then(|| self.handle(plc, &format!("{}.v", c.device)))
-                    .flatten(),
-                words: Vec::new(),
-            }
-        };
+        let resolve = |c: &crate::editor::model::CellData| self.probe_of(plc, c);
         for view in self.drawing.rungs.get_untracked() {
             let number = view.number.get_untracked();
             match powers.iter().find(|(i, _)| *i == number) {
@@ -169,14 +144,51 @@ impl LadderCtx {
         self.show_watch(plc);
     }
 
+    /// The machine's handles for cell `c`: its device's state, a timer's
+    /// or counter's current value, a soft PLC box's operands.
+    fn probe_of(&self, plc: &dyn engine::plc::Plc, c: &crate::editor::model::CellData) -> Probe {
+        let look = c.kind.look();
+        if c.device.is_empty() {
+            let words = c
+                .watched
+                .iter()
+                .filter_map(|(label, d)| Some((label.clone(), self.handle(plc, d)?)))
+                .collect();
+            return Probe {
+                words,
+                ..Probe::default()
+            };
+        }
+        let counts = look.shows_value && (c.device.starts_with('T') || c.device.starts_with('C'));
+        let state = look
+            .shows_state
+            .then(|| self.handle(plc, &c.device))
+            .flatten();
+        Probe {
+            state,
+            // A soft PLC word's `.v` is itself: no count to show apart.
+            value: counts
+                .then(|| self.handle(plc, &format!("{}.v", c.device)))
+                .flatten()
+                .filter(|v| Some(*v) != state),
+            words: Vec::new(),
+        }
+    }
+
     /// Each frame: the watch table's values (a timer's or counter's
     /// current value and preset in brackets).
     fn show_watch(&self, plc: &dyn engine::plc::Plc) {
         let values: Vec<String> = self.live.watch.with_untracked(|w| {
             w.iter()
                 .map(|name| {
-                    let value = self.handle(plc, name).map(|h| plc.read(h));
-                    let current = self.handle(plc, &format!("{name}.v")).map(|h| plc.read(h));
+                    let device = self.handle(plc, name);
+                    let value = device.map(|h| plc.read(h));
+                    // A word's `.v` is the word itself (the soft PLC):
+                    // only a timer's or counter's current value is more.
+                    let current = self
+                        .handle(plc, &format!("{name}.v"))
+                        .filter(|h| Some(*h) != device)
+                        .map(|h| plc.read(h));
                     let preset = self.preset_of(name);
                     match (value, current) {
                         (Some(v), Some(c)) => match preset {

@@ -16,7 +16,7 @@
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::element::Element;
 
-use super::entry::EntryError;
+use super::entry_error::EntryError;
 
 /// How a box is written by its operands in order.
 pub const BOX_USAGE: &str =

@@ -165,15 +165,8 @@ pub enum EditError {
     Clip(ClipError),
     /// A replace that does not apply (the reason).
     Replace(super::devices::ReplaceError),
-    /// A declaration the soft PLC does not take.
-    Variable(crate::ladder::variables::VariableError),
-    /// No variable of that name.
-    NoSuchVariable(String),
-    /// Another variable has that name.
-    NameTaken(String),
-    /// A use of the variable that the change would no longer fit, with
-    /// the compiler's reason at its cell.
-    UseNoLongerFits(crate::ladder::LadderError),
+    /// A variables pane's edit that does not apply (the reason).
+    Variable(super::variables::VariableEditError),
 }
 
 impl fmt::Display for EditError {
@@ -197,9 +190,6 @@ impl fmt::Display for EditError {
             EditError::Clip(e) => e.fmt(f),
             EditError::Replace(why) => why.fmt(f),
             EditError::Variable(e) => e.fmt(f),
-            EditError::NoSuchVariable(n) => write!(f, "there is no variable {n}"),
-            EditError::NameTaken(n) => write!(f, "{n} is already declared"),
-            EditError::UseNoLongerFits(e) => write!(f, "a use would no longer fit: {e}"),
         }
     }
 }
@@ -471,23 +461,28 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
             }
             cursor
         }
-        Edit::DeclareVariable { variable } => replace_all(
-            &mut plan,
-            ladder,
-            super::variables::declare(ladder, variable)?,
-        )?,
-        Edit::RemoveVariable { name } => {
-            replace_all(&mut plan, ladder, super::variables::remove(ladder, &name)?)?
+        Edit::DeclareVariable { .. }
+        | Edit::RemoveVariable { .. }
+        | Edit::RenameVariable { .. } => {
+            let new = super::variables::planned(ladder, variable_edit(edit))
+                .map_err(EditError::Variable)?;
+            replace_all(&mut plan, ladder, new)?
         }
-        Edit::RenameVariable { from, to } => replace_all(
-            &mut plan,
-            ladder,
-            super::variables::rename(ladder, &from, &to)?,
-        )?,
         Edit::NewLadder => replace_all(&mut plan, ladder, Ladder::default())?,
         Edit::Replace { ladder: new } => replace_all(&mut plan, ladder, new)?,
     };
     plan.done(cursor, after)
+}
+
+/// The variables pane's part of an edit (the others never come here).
+fn variable_edit(edit: Edit) -> super::variables::VariableEdit {
+    use super::variables::VariableEdit;
+    match edit {
+        Edit::DeclareVariable { variable } => VariableEdit::Declare(variable),
+        Edit::RemoveVariable { name } => VariableEdit::Remove(name),
+        Edit::RenameVariable { from, to } => VariableEdit::Rename(from, to),
+        _ => VariableEdit::Remove(String::new()),
+    }
 }
 
 /// A place edit: contacts and boxes at the cell, outputs in the output

@@ -16,6 +16,7 @@ mod clip;
 mod command;
 mod devices;
 mod entry;
+mod entry_error;
 mod variables;
 
 pub use align::align_outputs;
@@ -28,6 +29,7 @@ pub use devices::{
     UseRole,
 };
 pub use entry::{parse_entry, EntryError, EntryKind};
+pub use variables::VariableEditError;
 
 use super::grid::{Ladder, Pos};
 

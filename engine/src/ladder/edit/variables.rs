@@ -11,12 +11,56 @@ use crate::ladder::variables::Variable;
 use crate::softplc::vars::is_identifier;
 use crate::MachineId;
 
-use super::command::EditError;
+/// Why the variables pane's edit was refused; nothing changed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum VariableEditError {
+    /// A declaration the soft PLC does not take.
+    Declaration(crate::ladder::variables::VariableError),
+    /// No variable of that name.
+    NoSuchVariable(String),
+    /// Another variable has that name.
+    NameTaken(String),
+    /// A use of the variable that the change would no longer fit, with
+    /// the compiler's reason at its cell.
+    UseNoLongerFits(LadderError),
+}
+
+impl std::fmt::Display for VariableEditError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            VariableEditError::Declaration(e) => e.fmt(f),
+            VariableEditError::NoSuchVariable(n) => write!(f, "there is no variable {n}"),
+            VariableEditError::NameTaken(n) => write!(f, "{n} is already declared"),
+            VariableEditError::UseNoLongerFits(e) => write!(f, "a use would no longer fit: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for VariableEditError {}
+
+type EditError = VariableEditError;
+
+/// What the variables pane asks for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) enum VariableEdit {
+    Declare(Variable),
+    Remove(String),
+    Rename(String, String),
+}
+
+/// The ladder after `edit`, or why not.
+pub(super) fn planned(ladder: &Ladder, edit: VariableEdit) -> Result<Ladder, VariableEditError> {
+    match edit {
+        VariableEdit::Declare(v) => declare(ladder, v),
+        VariableEdit::Remove(name) => remove(ladder, &name),
+        VariableEdit::Rename(from, to) => rename(ladder, &from, &to),
+    }
+}
 
 /// The ladder with `variable` declared: added, or in place of the one of
 /// its name (any case).
-pub(super) fn declare(ladder: &Ladder, variable: Variable) -> Result<Ladder, EditError> {
-    variable.check().map_err(EditError::Variable)?;
+fn declare(ladder: &Ladder, variable: Variable) -> Result<Ladder, EditError> {
+    variable.check().map_err(EditError::Declaration)?;
     let mut after = ladder.clone();
     match position(ladder, &variable.name) {
         Some(i) => after.variables[i] = variable,
@@ -27,7 +71,7 @@ pub(super) fn declare(ladder: &Ladder, variable: Variable) -> Result<Ladder, Edi
 }
 
 /// The ladder without variable `name`.
-pub(super) fn remove(ladder: &Ladder, name: &str) -> Result<Ladder, EditError> {
+fn remove(ladder: &Ladder, name: &str) -> Result<Ladder, EditError> {
     let i = position(ladder, name).ok_or_else(|| EditError::NoSuchVariable(name.to_string()))?;
     let mut after = ladder.clone();
     after.variables.remove(i);
@@ -38,12 +82,12 @@ pub(super) fn remove(ladder: &Ladder, name: &str) -> Result<Ladder, EditError> {
 /// The ladder with variable `from` called `to` in its declaration, in
 /// every cell that names it (contacts, coils, box operands and results, a
 /// block's instance and its outputs `from.Q`) and in its comment's key.
-pub(super) fn rename(ladder: &Ladder, from: &str, to: &str) -> Result<Ladder, EditError> {
+fn rename(ladder: &Ladder, from: &str, to: &str) -> Result<Ladder, EditError> {
     let to = to.trim();
     let i = position(ladder, from).ok_or_else(|| EditError::NoSuchVariable(from.to_string()))?;
     if !is_identifier(to) {
         let bad = crate::ladder::variables::VariableError::BadName(to.to_string());
-        return Err(EditError::Variable(bad));
+        return Err(EditError::Declaration(bad));
     }
     if position(ladder, to).is_some_and(|j| j != i) {
         return Err(EditError::NameTaken(to.to_string()));
