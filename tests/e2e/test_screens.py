@@ -83,6 +83,37 @@ def tap_entry(driver, palette, device):
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="device-input"]'))
 
 
+def draw_contact_and_coil(driver, touch, contact, coil):
+    """contact -> (coil) on the first rung: by taps on touch screens, by
+    F5 / F7 on desktops."""
+    if touch:
+        el(driver, "cell-0-0-0").click()
+        tap_entry(driver, "palette-no", contact)
+        tap_entry(driver, "palette-coil", coil)
+    else:
+        focus_ladder(driver)
+        place(driver, Keys.F5, contact)
+        place(driver, Keys.F7, coil)
+
+
+def run_and_drive(driver, touch, switch, lamp):
+    """Run, then the panel's `switch` on screen and pressed, and its
+    `lamp` lit and on screen; the page's scroll before the panel showed."""
+    el(driver, "run").click()
+    scrolled = driver.execute_script("return scrollY")
+    show(driver, touch, "panel")
+    if touch:
+        # One tap showed the panel; on a phone it may be a flick away.
+        driver.execute_script(f"document.querySelector('[data-testid={switch}]').scrollIntoView({{block: 'center'}})")
+    wait(driver, lambda: on_screen(driver, switch), message="the input is on screen")
+    el(driver, switch).click()
+    wait(driver, lambda: on(driver, lamp), message=f"{lamp} follows {switch}")
+    if touch:
+        driver.execute_script(f"document.querySelector('[data-testid={lamp}]').scrollIntoView({{block: 'center'}})")
+    assert on_screen(driver, lamp)
+    return scrolled
+
+
 def coil_testid(driver):
     coils = [c for c in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="coil"]')
              if c.get_attribute("data-device") == "Y00"]
@@ -101,14 +132,7 @@ def test_draw_run_and_drive_on_every_screen(screen, base_url, artifacts):
     open_fresh(driver, base_url)
     assert no_sideways_overflow(driver), "the page fits the width"
     el(driver, "new-ladder").click()
-    if touch:
-        el(driver, "cell-0-0-0").click()
-        tap_entry(driver, "palette-no", "X00")
-        tap_entry(driver, "palette-coil", "Y00")
-    else:
-        focus_ladder(driver)
-        place(driver, Keys.F5, "X00")
-        place(driver, Keys.F7, "Y00")
+    draw_contact_and_coil(driver, touch, "X00", "Y00")
     coil = coil_testid(driver)
     assert coil.startswith("cell-0-0-")
     # The cursor went on past the coil; back on it, it is in view.
@@ -122,18 +146,7 @@ def test_draw_run_and_drive_on_every_screen(screen, base_url, artifacts):
          message="fit width shows the whole rung")
     assert no_sideways_overflow(driver)
 
-    el(driver, "run").click()
-    scrolled = driver.execute_script("return scrollY")
-    show(driver, touch, "panel")
-    if touch:
-        # One tap showed the panel; on a phone it may be a flick away.
-        driver.execute_script("document.querySelector('[data-testid=input-X00]').scrollIntoView({block: 'center'})")
-    wait(driver, lambda: on_screen(driver, "input-X00"), message="the input is on screen")
-    el(driver, "input-X00").click()
-    wait(driver, lambda: on(driver, "lamp-Y00"), message="Y00 follows X00")
-    if touch:
-        driver.execute_script("document.querySelector('[data-testid=lamp-Y00]').scrollIntoView({block: 'center'})")
-    assert on_screen(driver, "lamp-Y00")
+    scrolled = run_and_drive(driver, touch, "input-X00", "lamp-Y00")
     if not touch:
         assert on_screen(driver, coil), "the rung and the panel on screen together"
         assert driver.execute_script("return scrollY") == scrolled, "no page scroll needed"
@@ -251,23 +264,8 @@ def test_the_soft_plc_on_every_screen(screen, base_url, artifacts):
     open_fresh(driver, base_url)
     Select(el(driver, "machine")).select_by_value("soft-plc")
     wait(driver, lambda: el(driver, "soft-board"))
-    if touch:
-        el(driver, "cell-0-0-0").click()
-        tap_entry(driver, "palette-no", "%IX0.0")
-        tap_entry(driver, "palette-coil", "%QX0.0")
-    else:
-        focus_ladder(driver)
-        place(driver, Keys.F5, "%IX0.0")
-        place(driver, Keys.F7, "%QX0.0")
-    el(driver, "run").click()
-    scrolled = driver.execute_script("return scrollY")
-    show(driver, touch, "panel")
-    if touch:
-        driver.execute_script("document.querySelector('[data-testid=soft-input-IX0-0]').scrollIntoView({block: 'center'})")
-    wait(driver, lambda: on_screen(driver, "soft-input-IX0-0"), message="the input is on screen")
-    el(driver, "soft-input-IX0-0").click()
-    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="%QX0.0 follows %IX0.0")
-    assert on_screen(driver, "soft-lamp-QX0-0")
+    draw_contact_and_coil(driver, touch, "%IX0.0", "%QX0.0")
+    scrolled = run_and_drive(driver, touch, "soft-input-IX0-0", "soft-lamp-QX0-0")
     if not touch:
         assert driver.execute_script("return scrollY") == scrolled, "no page scroll needed"
     assert no_sideways_overflow(driver)

@@ -20,6 +20,17 @@ def choose_soft(driver, base_url):
     wait(driver, lambda: el(driver, "soft-board"))
 
 
+def measure_level(driver, level):
+    """The parts example running, measuring (%IX0.2 on), its level input
+    %IW0 set to `level` in the slider's box; the box."""
+    el(driver, "run").click()
+    el(driver, "soft-input-IX0-2").click()
+    box = el(driver, "soft-analog-value-IW0")
+    box.send_keys(Keys.CONTROL, "a")
+    box.send_keys(level, Keys.ENTER)
+    return box
+
+
 def box_values(driver, cell):
     return el(driver, cell).find_element(By.CSS_SELECTOR, '[data-testid="box-values"]').text
 
@@ -152,12 +163,8 @@ def test_a_soft_plc_ladder_shared_to_a_fresh_profile(driver, base_url):
     wait(driver, lambda: el(driver, "var-parts") and el(driver, "var-level"))
     assert any(c.get_attribute("data-kind") == "box"
                for c in driver.find_elements(By.CSS_SELECTOR, '[data-kind="box"]'))
-    # It runs: the level slider, scaled to percent, on the gauge.
-    el(driver, "run").click()
-    el(driver, "soft-input-IX0-2").click()
-    slider = el(driver, "soft-analog-value-IW0")
-    slider.send_keys(Keys.CONTROL, "a")
-    slider.send_keys("900", Keys.ENTER)
+    # It runs: the level typed by the slider, scaled to percent, on the gauge.
+    measure_level(driver, "900")
     wait(driver, lambda: el(driver, "soft-gauge-QW0").get_attribute("data-value") == "90",
          message="90 % on the gauge")
     wait(driver, lambda: on(driver, "soft-lamp-QX0-1"), message="above 80 %")
@@ -188,11 +195,7 @@ def test_why_a_comparison_blocks_power_says_its_operands_values(driver, base_url
     choose_soft(driver, base_url)
     Select(el(driver, "example")).select_by_value("parts")
     wait(driver, lambda: el(driver, "var-level"))
-    el(driver, "run").click()
-    el(driver, "soft-input-IX0-2").click()
-    value = el(driver, "soft-analog-value-IW0")
-    value.send_keys(Keys.CONTROL, "a")
-    value.send_keys("500", Keys.ENTER)
+    value = measure_level(driver, "500")
     wait(driver, lambda: el(driver, "soft-gauge-QW0").get_attribute("data-value") == "50")
     assert not on(driver, "soft-lamp-QX0-1")
     el(driver, "cell-2-0-9").click()
@@ -231,11 +234,7 @@ def test_a_soft_plc_project_keeps_its_variables_and_the_watch_shows_words(driver
     # A reload opens the soft PLC with the project, variables and all.
     driver.refresh()
     wait(driver, lambda: el(driver, "var-level"))
-    el(driver, "run").click()
-    el(driver, "soft-input-IX0-2").click()
-    value = el(driver, "soft-analog-value-IW0")
-    value.send_keys(Keys.CONTROL, "a")
-    value.send_keys("640", Keys.ENTER)
+    measure_level(driver, "640")
     el(driver, "watch-input").send_keys("level", Keys.ENTER)
     wait(driver, lambda: el(driver, "watch-level").text.split()[:2] == ["level", "64"], message="a word in the watch")
     assert "(" not in el(driver, "watch-level").text, "a word has no current value apart"
