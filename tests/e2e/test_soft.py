@@ -238,3 +238,32 @@ def test_a_soft_plc_project_keeps_its_variables_and_the_watch_shows_words(driver
     el(driver, "watch-input").send_keys("level", Keys.ENTER)
     wait(driver, lambda: el(driver, "watch-level").text.split()[:2] == ["level", "64"], message="a word in the watch")
     assert "(" not in el(driver, "watch-level").text, "a word has no current value apart"
+
+
+def test_a_soft_plc_ladder_goes_out_as_json_plcopen_text_and_pictures(driver, base_url, tmp_path):
+    from test_ladder import CAPTURE, downloads, steps
+    choose_soft(driver, base_url)
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: el(driver, "var-parts"))
+    driver.execute_script(CAPTURE)
+    for button in ["save-json", "export-plcopen", "export-text", "export-svg", "export-png"]:
+        el(driver, button).click()
+    got = downloads(driver, 5)
+    project = json.loads(got["soft-plc-ladder.json"])
+    assert project["machine"] == "soft-plc" and project["ladder"] == saved_ladder(driver, "soft-plc")
+    xml = got["soft-plc-ladder.xml"]
+    assert "<project" in xml and "level_in" in xml and "CTU" in xml
+    assert steps(got["soft-plc-ladder.txt"]) == steps(el(driver, "il-listing").text)
+    assert got["soft-plc-ladder.svg"].startswith("<svg") and "GT level" in got["soft-plc-ladder.svg"]
+    # Opened again on the soft PLC, this program has no ladder form in the
+    # page yet: refused whole, saying how it runs; nothing changes.
+    before = saved_ladder(driver, "soft-plc")
+    path = tmp_path / "parts.xml"
+    path.write_text(xml)
+    el(driver, "open-file").send_keys(str(path))
+    dialog = wait(driver, lambda: el(driver, "import-dialog"))
+    wait(driver, lambda: "hashigo run --machine soft-plc" in dialog.text, message=dialog.text)
+    assert "map it to a data register" not in dialog.text, "no device map on the soft PLC"
+    driver.switch_to.active_element.send_keys(Keys.ESCAPE)
+    assert saved_ladder(driver, "soft-plc") == before
+    assert severe_console_messages(driver) == []

@@ -93,6 +93,9 @@ fn import(
     rows: Option<Vec<(String, String)>>,
     pou: Option<&str>,
 ) -> ImportReply {
+    if machine == MachineId::SoftPlc {
+        return soft_import(file, text, pou);
+    }
     let mut reply = ImportReply::default();
     let root = dom::parse(text);
     if let Ok(root) = &root {
@@ -142,6 +145,37 @@ fn import(
                 .map(|e| format!("{file}:{}: {}", e.line, e.error))
                 .collect();
         }
+    }
+    reply
+}
+
+/// A PLCopen project opened on the soft PLC: no map (its variables are
+/// the soft PLC's), read as the soft PLC runs it (`plcopen::soft::to_il`)
+/// and drawn from that program when the program has a ladder form here;
+/// otherwise refused, saying how it runs as written (`hashigo run`), so
+/// nothing is half drawn (docs/soft-plc.md, "In the page").
+fn soft_import(file: &str, text: &str, pou: Option<&str>) -> ImportReply {
+    let mut reply = ImportReply::default();
+    let program = match plcopen::soft::to_il(text, pou) {
+        Ok(program) => program,
+        Err(errors) => {
+            reply.errors = errors
+                .iter()
+                .map(|e| format!("{file}:{}: {}", e.line, e.error))
+                .collect();
+            return reply;
+        }
+    };
+    reply.warnings = program
+        .warnings
+        .iter()
+        .map(|w| format!("{file}:{}: {}", w.line, w.error))
+        .collect();
+    match engine::ladder::decompile::decompile_text(MachineId::SoftPlc, &program.text, 10) {
+        Ok(ladder) => reply.ladder = Some(align_outputs(&ladder, COLUMNS - 1)),
+        Err(e) => reply.errors.push(format!(
+            "{file}: the project runs on the soft PLC as written (hashigo run --machine soft-plc --program {file}), but its program has no ladder form in the page yet ({e}); nothing was changed"
+        )),
     }
     reply
 }

@@ -95,3 +95,46 @@ fn envelopes_carry_their_number_and_garbage_gets_no_reply() {
     assert_eq!(answer("not json"), None);
     assert_eq!(answer(r#"{"id": 1, "body": "Nothing"}"#), None);
 }
+
+#[test]
+fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole() {
+    let soft = |text: &str| match handle(Request::Import {
+        file: "p.xml".into(),
+        text: text.into(),
+        machine: MachineId::SoftPlc,
+        rows: None,
+        pou: None,
+    }) {
+        Reply::Import(reply) => reply,
+        other => panic!("{other:?}"),
+    };
+    // A plain rung of BOOLs: drawn, its names kept (no device map).
+    let reply = soft(NAMED);
+    assert!(reply.rows.is_empty(), "no map on the soft PLC");
+    let ladder = reply.ladder.expect("drawn");
+    assert!(!ladder.rungs.is_empty());
+    // A project whose program has no ladder form here: refused whole,
+    // saying how it runs.
+    let example = engine::examples::EXAMPLES
+        .iter()
+        .find(|e| e.machine == MachineId::SoftPlc && e.id == "parts")
+        .expect("the example");
+    let parts = engine::ladder::decompile::decompile_text(MachineId::SoftPlc, example.text, 10)
+        .expect("opens");
+    let Reply::Export(Ok(xml)) = handle(Request::Export {
+        ladder: parts,
+        name: "Main".into(),
+    }) else {
+        panic!("exports");
+    };
+    let reply = soft(&xml);
+    assert!(reply.ladder.is_none());
+    assert!(
+        reply
+            .errors
+            .iter()
+            .any(|e| e.contains("hashigo run --machine soft-plc")),
+        "{:?}",
+        reply.errors
+    );
+}

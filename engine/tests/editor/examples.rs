@@ -156,3 +156,24 @@ fn the_soft_plcs_parts_example_counts_scales_and_compares() {
         (70, 0)
     );
 }
+
+#[test]
+fn a_soft_plc_rung_whose_box_drives_nothing_is_refused_not_dropped() {
+    let parts = EXAMPLES
+        .iter()
+        .find(|e| e.machine == MachineId::SoftPlc && e.id == "parts")
+        .expect("the example")
+        .text;
+    // The scale rung as the compiler writes it ends with `LD _p1` (its
+    // power again: an output box); without it the DIV box drives nothing.
+    let cut = parts.replacen("_skip0: LD _p1\nLD _p1\n", "_skip0: LD _p1\n", 1);
+    assert_ne!(cut, parts);
+    let err = decompile_text(MachineId::SoftPlc, &cut, 10)
+        .expect_err("the DIV rung would be lost")
+        .to_string();
+    assert!(err.contains("a box and no output"), "{err}");
+    // A box with nothing after it at the end of the text, too.
+    let end = "VAR\n a : INT;\n b : INT;\nEND_VAR\nLD a\nGT INT#3\n";
+    let err = decompile_text(MachineId::SoftPlc, end, 10).expect_err("GT alone");
+    assert!(err.to_string().contains("no output"), "{err}");
+}

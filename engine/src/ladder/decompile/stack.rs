@@ -18,6 +18,18 @@ pub(super) struct Stack {
 }
 
 impl Stack {
+    /// Whether the open rung has a soft PLC box and no output yet: closed
+    /// now, the box would be lost (a ladder draws no rung without one).
+    pub(super) fn boxes_without_output(&self) -> bool {
+        self.outputs.is_empty()
+            && self.cur.iter().chain(&self.blocks).any(|p| {
+                p.net
+                    .leaves()
+                    .iter()
+                    .any(|(e, _)| matches!(e, Element::Block(_)))
+            })
+    }
+
     pub(super) fn flush(&mut self) {
         close_rung(&mut self.rungs, self.cur.take(), &mut self.outputs);
         self.blocks.clear();

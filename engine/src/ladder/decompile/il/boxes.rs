@@ -154,6 +154,8 @@ impl Walk<'_> {
             self.power = None;
             self.s.grow(leaf, true, next)?;
         } else {
+            // A box on the rail starts a rung: the last must not lose its.
+            self.no_box_lost(next)?;
             self.power = None;
             self.s.load(leaf);
         }

@@ -71,6 +71,7 @@ pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, Dec
             None => w.line(step, &lines[step])?,
         };
     }
+    w.no_box_lost(lines.len())?;
     w.s.flush();
     drawn(&w.s.rungs)
 }
@@ -185,6 +186,18 @@ impl<'a> Walk<'a> {
     /// `LD n`: a new rung from a contact, or the output of a box (on the
     /// power held for it, or on the rail; an output box when the power
     /// is loaded again after it). The index of the next line.
+    /// Refuses to close a rung whose boxes drive nothing (at `step`):
+    /// the ladder would lose them, and with them what they compute.
+    fn no_box_lost(&self, step: usize) -> Result<(), DecompileError> {
+        if self.s.boxes_without_output() {
+            return Err(bad(
+                step,
+                "a rung before this step ends with a box and no output: a ladder cannot draw it so (end the rung with LD of its power, as the compiler writes an output box, or with a coil)",
+            ));
+        }
+        Ok(())
+    }
+
     fn load(&mut self, step: usize, n: &str, negated: bool) -> Result<usize, DecompileError> {
         if self.power.as_deref() == Some(n) {
             return Err(bad(
@@ -212,6 +225,7 @@ impl<'a> Walk<'a> {
                 }
             }
             _ => {
+                self.no_box_lost(step)?;
                 // A new rung: the power held for the last one's boxes
                 // and pulses is no longer this one's.
                 self.power = None;
