@@ -211,7 +211,13 @@ impl BlockCall {
         }
         words.push(self.kind());
         for pin in self.data_pins() {
-            words.push(self.input(&pin).unwrap_or("·").to_string());
+            let operand = self.input(&pin).unwrap_or("·");
+            // INT is what an integer is taken as: its prefix says nothing.
+            let shown = operand
+                .strip_prefix("INT#")
+                .filter(|n| !n.is_empty())
+                .unwrap_or(operand);
+            words.push(shown.to_string());
         }
         for (i, (_, v)) in self.outputs.iter().enumerate() {
             if i == 0 {
@@ -353,8 +359,8 @@ mod tests {
             [("a".to_string(), "a".to_string()), ("c".into(), "c".into())],
             "the literal is not watched"
         );
-        let ctu = call("CTU", "c0", &[("PV", "10")], &[("CV", "parts")]);
-        assert_eq!(ctu.label(), "c0: CTU · 10 → parts", "R left unwired");
+        let ctu = call("CTU", "c0", &[("PV", "INT#10")], &[("CV", "parts")]);
+        assert_eq!(ctu.label(), "c0: CTU · 10 → parts", "R left unwired, INT# not said");
         assert_eq!(ctu.watched()[0], ("CV".to_string(), "c0.v".to_string()));
         let ton = call("TON", "t0", &[("PT", "T#2s")], &[]);
         assert_eq!(ton.watched(), [("ET".to_string(), "t0.v".to_string())]);
