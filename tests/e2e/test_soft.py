@@ -168,6 +168,15 @@ def test_a_soft_plc_ladder_shared_to_a_fresh_profile(driver, base_url):
     wait(driver, lambda: el(driver, "soft-gauge-QW0").get_attribute("data-value") == "90",
          message="90 % on the gauge")
     wait(driver, lambda: on(driver, "soft-lamp-QX0-1"), message="above 80 %")
+    # A value an INT does not hold is refused, the input left as it was.
+    box = el(driver, "soft-analog-value-IW0")
+    box.send_keys(Keys.CONTROL, "a")
+    box.send_keys("40000", Keys.ENTER)
+    wait(driver, lambda: "40000" in el(driver, "soft-analog-error-IW0").text)
+    assert el(driver, "soft-gauge-QW0").get_attribute("data-value") == "90"
+    row = el(driver, "var-level_in")
+    row.find_element(By.CSS_SELECTOR, '[data-testid="var-set"]').send_keys("many", Keys.ENTER)
+    wait(driver, lambda: "many" in row.find_element(By.CSS_SELECTOR, '[data-testid="var-set-error"]').text)
 
 
 def test_a_ladder_test_on_a_word_passes_in_the_tests_pane(driver, base_url):

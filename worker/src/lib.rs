@@ -93,9 +93,6 @@ fn import(
     rows: Option<Vec<(String, String)>>,
     pou: Option<&str>,
 ) -> ImportReply {
-    if machine == MachineId::SoftPlc {
-        return soft_import(file, text, pou);
-    }
     let mut reply = ImportReply::default();
     let root = dom::parse(text);
     if let Ok(root) = &root {
@@ -107,7 +104,10 @@ fn import(
             .filter_map(|p| p.attr("name").map(str::to_string))
             .collect();
     }
+    // The soft PLC takes the project's own names: nothing to map.
+    let soft = machine == MachineId::SoftPlc;
     reply.rows = match (rows, &root) {
+        _ if soft => Vec::new(),
         (Some(rows), _) => rows,
         (None, Ok(root)) => declare::propose(root, machine, None),
         (None, Err(_)) => Vec::new(),
@@ -144,40 +144,23 @@ fn import(
                 .iter()
                 .map(|e| format!("{file}:{}: {}", e.line, e.error))
                 .collect();
+            if soft && root.is_ok() {
+                // The reader draws contacts and coils on names; blocks and
+                // words it maps to the bit machines' devices, which is no
+                // advice for the soft PLC.
+                reply.errors = vec![soft_refusal(file, &reply.errors[0])];
+            }
         }
     }
     reply
 }
 
-/// A PLCopen project opened on the soft PLC: no map (its variables are
-/// the soft PLC's), read as the soft PLC runs it (`plcopen::soft::to_il`)
-/// and drawn from that program when the program has a ladder form here;
-/// otherwise refused, saying how it runs as written (`hashigo run`), so
-/// nothing is half drawn (docs/soft-plc.md, "In the page").
-fn soft_import(file: &str, text: &str, pou: Option<&str>) -> ImportReply {
-    let mut reply = ImportReply::default();
-    let program = match plcopen::soft::to_il(text, pou) {
-        Ok(program) => program,
-        Err(errors) => {
-            reply.errors = errors
-                .iter()
-                .map(|e| format!("{file}:{}: {}", e.line, e.error))
-                .collect();
-            return reply;
-        }
-    };
-    reply.warnings = program
-        .warnings
-        .iter()
-        .map(|w| format!("{file}:{}: {}", w.line, w.error))
-        .collect();
-    match engine::ladder::decompile::decompile_text(MachineId::SoftPlc, &program.text, 10) {
-        Ok(ladder) => reply.ladder = Some(align_outputs(&ladder, COLUMNS - 1)),
-        Err(e) => reply.errors.push(format!(
-            "{file}: the project runs on the soft PLC as written (hashigo run --machine soft-plc --program {file}), but its program has no ladder form in the page yet ({e}); nothing was changed"
-        )),
-    }
-    reply
+/// Why a PLCopen project that the soft PLC runs is not drawn in the page
+/// (`first`: the reader's first reason, at its line).
+fn soft_refusal(file: &str, first: &str) -> String {
+    format!(
+        "{file}: the project runs on the soft PLC as written (hashigo run --machine soft-plc --program {file}), but the page draws only its contacts and coils yet (first: {first}); nothing was changed"
+    )
 }
 
 /// Reads a request envelope and returns the reply's, as JSON. A message

@@ -108,13 +108,13 @@ fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole(
         Reply::Import(reply) => reply,
         other => panic!("{other:?}"),
     };
-    // A plain rung of BOOLs: drawn, its names kept (no device map).
+    // Contacts and coils on the project's own names: drawn, nothing mapped.
     let reply = soft(NAMED);
     assert!(reply.rows.is_empty(), "no map on the soft PLC");
     let ladder = reply.ladder.expect("drawn");
     assert!(!ladder.rungs.is_empty());
-    // A project whose program has no ladder form here: refused whole,
-    // saying how it runs.
+    // Blocks on words: refused whole, saying how it runs, with no advice
+    // to map to a data register.
     let example = engine::examples::EXAMPLES
         .iter()
         .find(|e| e.machine == MachineId::SoftPlc && e.id == "parts")
@@ -129,12 +129,11 @@ fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole(
     };
     let reply = soft(&xml);
     assert!(reply.ladder.is_none());
+    assert_eq!(reply.errors.len(), 1, "{:?}", reply.errors);
+    assert!(reply.errors[0].contains("hashigo run --machine soft-plc"));
     assert!(
-        reply
-            .errors
-            .iter()
-            .any(|e| e.contains("hashigo run --machine soft-plc")),
-        "{:?}",
-        reply.errors
+        !reply.errors[0].contains("data register"),
+        "{}",
+        reply.errors[0]
     );
 }

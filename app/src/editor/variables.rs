@@ -177,15 +177,21 @@ fn ValueCell(ctx: LadderCtx, name: String) -> impl IntoView {
         })
     });
     let to_set = RwSignal::new(String::new());
+    let refused = RwSignal::new(None::<String>);
     let set_value = move || {
-        let Some(value) = typed_value(&to_set.get_untracked()) else {
+        let text = to_set.get_untracked();
+        let Some(value) = typed_value(&text) else {
+            refused.set(Some(format!("{text:?}: TRUE, FALSE or a number")));
             return;
         };
+        let mut said = None;
         ctx.operate(|plc| {
-            if let Ok(d) = plc.device(&name) {
-                let _ = plc.apply(Command::SetInput(d, value));
-            }
+            let done = plc
+                .device(&name)
+                .and_then(|d| plc.apply(Command::SetInput(d, value)));
+            said = done.err().map(|e| e.to_string());
         });
+        refused.set(said);
     };
     view! {
         <td class="var-value">
@@ -195,6 +201,7 @@ fn ValueCell(ctx: LadderCtx, name: String) -> impl IntoView {
                     prop:value=move || to_set.get() on:input=move |e| to_set.set(event_target_value(&e)) />
                 <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
             </form>
+            <span class="soft-refused" role="alert" data-testid="var-set-error">{move || refused.get()}</span>
         </td>
     }
 }

@@ -201,25 +201,28 @@ impl SoftCtx {
         for t in &rows {
             let level = t.driven.get_untracked();
             if level != 0 {
-                self.drive_device(t.device, level);
+                // Taken before by an input of this address and type; a
+                // new type that refuses it leaves the input at zero.
+                let _ = self.drive_device(t.device, level);
             }
         }
         self.terminals.set(rows);
         self.refresh();
     }
 
-    fn drive_device(&self, device: Option<Device>, level: i64) {
+    /// Sets `device` to `level`; the machine's refusal (a value its type
+    /// does not hold) if it refuses.
+    fn drive_device(&self, device: Option<Device>, level: i64) -> Result<(), String> {
         let Some(device) = device else {
-            return;
+            return Ok(());
         };
-        self.sim.update_value(|s| {
-            // Refused only for a value outside the input's type, which
-            // the board's controls do not give; the value is then shown
-            // as the machine keeps it.
-            let _ = s
-                .machine_mut()
-                .apply(Command::SetInput(device, InputValue::Int(level)));
-        });
+        self.sim
+            .try_update_value(|s| {
+                s.machine_mut()
+                    .apply(Command::SetInput(device, InputValue::Int(level)))
+            })
+            .unwrap_or(Ok(()))
+            .map_err(|e| e.to_string())
     }
 
     /// The machine's handle of the terminal at `address` now (a row's
@@ -232,14 +235,16 @@ impl SoftCtx {
         })
     }
 
-    /// Drives input `t` to `level` (the switch, a slider).
-    pub fn drive(&self, t: &Terminal, level: i64) {
-        t.driven.set(level);
-        self.drive_device(
-            self.device_of(&t.address),
-            level | i64::from(t.held.get_untracked()),
-        );
+    /// Drives input `t` to `level` (the switch, a slider); a value the
+    /// input's type does not hold is refused, the input left as it was.
+    pub fn drive(&self, t: &Terminal, level: i64) -> Result<(), String> {
+        let held = i64::from(t.held.get_untracked());
+        let done = self.drive_device(self.device_of(&t.address), level | held);
+        if done.is_ok() {
+            t.driven.set(level);
+        }
         self.refresh();
+        done
     }
 
     /// A push button pressed or released: the input is on while it is
@@ -247,7 +252,8 @@ impl SoftCtx {
     pub fn push(&self, t: &Terminal, held: bool) {
         t.held.set(held);
         let level = i64::from(held) | t.driven.get_untracked();
-        self.drive_device(self.device_of(&t.address), level);
+        // A bit takes 0 and 1: never refused.
+        let _ = self.drive_device(self.device_of(&t.address), level);
         self.refresh();
     }
 }
@@ -342,7 +348,10 @@ fn SwitchRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
                 aria-pressed=move || on.get().to_string()
                 aria-label=label(&term)
                 title=move || t().drive
-                on:click=move |_| soft.drive(&flip, i64::from(!on.get_untracked()))>
+                on:click=move |_| {
+                    // A bit takes 0 and 1: never refused.
+                    let _ = soft.drive(&flip, i64::from(!on.get_untracked()));
+                }>
             </button>
             <Momentary held=Signal::derive(move || held.get())
                 testid=format!("soft-push-{hook}")
@@ -371,8 +380,12 @@ fn LampRow(term: Terminal) -> impl IntoView {
 fn SliderRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
     let hook = hook(&term.address);
     let driven = term.driven;
-    let set = term.clone();
-    let typed = term.clone();
+    let refused = RwSignal::new(None::<String>);
+    let set = move |t: &Terminal, text: &str| match text.trim().parse::<i64>() {
+        Ok(v) => refused.set(soft.drive(t, v).err()),
+        Err(_) => refused.set(Some(format!("{text:?}: a whole number"))),
+    };
+    let (slid, typed) = (term.clone(), term.clone());
     view! {
         <li class="soft-terminal analog">
             <label>
@@ -380,20 +393,15 @@ fn SliderRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
                 <input type="range" min="0" max=SLIDER_MAX.to_string()
                     data-testid=format!("soft-analog-{hook}")
                     prop:value=move || driven.get().to_string()
-                    on:input=move |e| {
-                        if let Ok(v) = event_target_value(&e).parse::<i64>() {
-                            soft.drive(&set, v);
-                        }
-                    } />
+                    on:input=move |e| set(&slid, &event_target_value(&e)) />
             </label>
             <input type="number" class="soft-number" data-testid=format!("soft-analog-value-{hook}")
                 aria-label=label(&term)
                 prop:value=move || driven.get().to_string()
-                on:change=move |e| {
-                    if let Ok(v) = event_target_value(&e).trim().parse::<i64>() {
-                        soft.drive(&typed, v);
-                    }
-                } />
+                on:change=move |e| set(&typed, &event_target_value(&e)) />
+            <span class="soft-refused" role="alert" data-testid=format!("soft-analog-error-{hook}")>
+                {move || refused.get()}
+            </span>
         </li>
     }
 }

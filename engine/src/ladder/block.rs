@@ -360,7 +360,11 @@ mod tests {
             "the literal is not watched"
         );
         let ctu = call("CTU", "c0", &[("PV", "INT#10")], &[("CV", "parts")]);
-        assert_eq!(ctu.label(), "c0: CTU · 10 → parts", "R left unwired, INT# not said");
+        assert_eq!(
+            ctu.label(),
+            "c0: CTU · 10 → parts",
+            "R left unwired, INT# not said"
+        );
         assert_eq!(ctu.watched()[0], ("CV".to_string(), "c0.v".to_string()));
         let ton = call("TON", "t0", &[("PT", "T#2s")], &[]);
         assert_eq!(ton.watched(), [("ET".to_string(), "t0.v".to_string())]);
