@@ -276,3 +276,35 @@ def test_a_soft_plc_ladder_goes_out_as_json_plcopen_text_and_pictures(driver, ba
     driver.switch_to.active_element.send_keys(Keys.ESCAPE)
     assert saved_ladder(driver, "soft-plc") == before
     assert severe_console_messages(driver) == []
+
+
+def test_a_counters_reset_is_wired_as_a_network_below_the_box(driver, base_url, artifacts):
+    choose_soft(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "%IX0.0")
+    place(driver, Keys.F8, "CTU c0 - 3")
+    place(driver, Keys.F7, "%QX0.0")
+    # Below the box: %IX0.1 wired into its R.
+    focus_ladder(driver, "cell-0-1-0")
+    place(driver, Keys.F5, "%IX0.1")
+    el(driver, "palette-pin").click()
+    entry = wait(driver, lambda: el(driver, "device-input"))
+    entry.send_keys("R", Keys.ENTER)
+    wait(driver, lambda: el(driver, "cell-0-1-1").get_attribute("data-kind") == "box")
+    assert "R" in el(driver, "cell-0-1-1").text
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    el(driver, "run").click()
+    for n in range(3):
+        el(driver, "soft-input-IX0-0").click()
+        wait(driver, lambda: f"CV={n + 1}" in box_values(driver, "cell-0-0-1"), message=f"part {n + 1}")
+        el(driver, "soft-input-IX0-0").click()
+        wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "0")
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="three parts counted")
+    assert "CV=3" in box_values(driver, "cell-0-0-1")
+    el(driver, "soft-input-IX0-1").click()
+    wait(driver, lambda: not on(driver, "soft-lamp-QX0-0"), message="the network below resets it")
+    wait(driver, lambda: "CV=0" in box_values(driver, "cell-0-0-1"))
+    wait(driver, lambda: el(driver, "cell-0-1-1").get_attribute("data-powered") == "1",
+         message="the input's cell shows its network's power")
+    driver.save_screenshot(str(artifacts / "soft-reset-network.png"))
+    assert severe_console_messages(driver) == []

@@ -162,6 +162,16 @@ fn drawn(e: &Element) -> CellData {
             format!("(K{preset})"),
             format!("counter coil {device} K{preset}"),
         ),
+        // A block's input wired from the network on its left: the box
+        // goes on down (`box-input`), the pin named.
+        Element::BoxInput { pin } => {
+            return CellData {
+                kind: CellKind::Box,
+                symbol: format!("▸{pin}"),
+                words: format!("box input {pin}"),
+                ..CellData::default()
+            };
+        }
         Element::Block(b) | Element::OutputBlock(b) => {
             return CellData {
                 kind: CellKind::Box,
@@ -307,6 +317,7 @@ pub fn entry_for(e: &Element) -> (EntryKind, String) {
         Element::Dec { dst } => words("DEC", dst),
         // The call form, which the entry reads back (`c0: CTU(PV := 10)`).
         Element::Block(b) | Element::OutputBlock(b) => (EntryKind::Instruction, b.to_string()),
+        Element::BoxInput { pin } => words("PIN", pin),
     }
 }
 

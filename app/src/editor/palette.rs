@@ -172,6 +172,7 @@ const SPECS: &[Spec] = &[
     spec("eq", "[=]", ("EQ a 10: power while a = 10", "比較: EQ a 10 (a = 10 の間導通)"), Entry(Instruction, false, "EQ "), Needs::WordBoxes),
     spec("lt", "[<]", ("LT a 10: power while a < 10", "比較: LT a 10 (a < 10 の間導通)"), Entry(Instruction, false, "LT "), Needs::WordBoxes),
     spec("ctu", "[CTU]", ("up counter: CTU c0 reset 10", "加算カウンタ: CTU c0 reset 10"), Entry(Instruction, false, "CTU "), Needs::WordBoxes),
+    spec("pin", "[▸R]", ("a block's input wired from the network to its left, below the block: PIN R", "ブロックの入力 (下の行の回路から): PIN R"), Entry(Instruction, false, "PIN "), Needs::WordBoxes),
     spec("ctd", "[CTD]", ("down counter: CTD c1 load 10", "減算カウンタ: CTD c1 load 10"), Entry(Instruction, false, "CTD "), Needs::WordBoxes),
 ];
 

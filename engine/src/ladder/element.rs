@@ -123,6 +123,14 @@ pub enum Element {
     /// A soft PLC function or function block in the rung's condition:
     /// power in, power on ([`BlockCall`]).
     Block(BlockCall),
+    /// Below a soft PLC block, in its column: its Boolean input `pin`
+    /// (`R`, `LD`, `R1`), fed by the network to the cell's left on its own
+    /// rows (`ladder::net::Side`).
+    #[serde(rename = "box_input")]
+    BoxInput {
+        /// The input.
+        pin: String,
+    },
     /// A soft PLC function or function block at the rung's right end: it
     /// runs on the rung's power, its power out goes nowhere.
     #[serde(rename = "output_block")]
@@ -166,6 +174,7 @@ impl Element {
                 | Element::Edge { .. }
                 | Element::Timer { .. }
                 | Element::Block(_)
+                | Element::BoxInput { .. }
         )
     }
 
@@ -233,6 +242,7 @@ impl fmt::Display for Element {
             Element::Inc { dst } => write!(f, "INC {dst}"),
             Element::Dec { dst } => write!(f, "DEC {dst}"),
             Element::Block(b) | Element::OutputBlock(b) => write!(f, "{b}"),
+            Element::BoxInput { pin } => write!(f, "box input {pin}"),
         }
     }
 }

@@ -42,11 +42,14 @@ impl LiveLadder {
             .into_iter()
             .zip(logic)
             .map(|(i, l)| {
+                // The condition's leaves, then each box input network's.
+                let sides = l.sides.iter().flat_map(|s| s.net.leaves());
                 let steps = l
                     .condition
                     .leaves()
-                    .iter()
-                    .map(|(_, pos)| listing.step_of_leaf(i, *pos))
+                    .into_iter()
+                    .chain(sides)
+                    .map(|(_, pos)| listing.step_of_leaf(i, pos))
                     .collect();
                 (i, l, steps)
             })
@@ -109,6 +112,15 @@ fn rung_power(logic: &RungLogic, steps: &[Option<usize>], trace: &ScanTrace) -> 
     for (_, pos) in &logic.outputs {
         report.push(ElementPower {
             pos: *pos,
+            power_in: power,
+            power_out: power,
+        });
+    }
+    // A box input's network, then the input's cell with its power.
+    for side in &logic.sides {
+        let power = walk.eval(&side.net, true, &mut report);
+        report.push(ElementPower {
+            pos: side.pos,
             power_in: power,
             power_out: power,
         });

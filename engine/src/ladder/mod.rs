@@ -88,6 +88,9 @@ fn check_logic(
         Err(m) => errors.push(LadderError::at(index, pos, m.to_string())),
     };
     visit_leaves(&mut logic.condition, &mut fix);
+    for side in &mut logic.sides {
+        visit_leaves(&mut side.net, &mut fix);
+    }
     for (e, p) in &mut logic.outputs {
         fix(e, *p);
     }

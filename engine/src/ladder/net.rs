@@ -8,11 +8,13 @@
 
 mod layout;
 mod reduce;
+mod sides;
 
 use std::fmt;
 
 pub use layout::{layout, try_layout, TooLarge};
 pub(crate) use reduce::Edge;
+pub use sides::Side;
 
 use super::element::Element;
 use super::grid::{LadderError, LadderErrorKind, Pos, Rung};
@@ -180,6 +182,9 @@ pub struct RungLogic {
     pub outputs: Vec<(Element, Pos)>,
     /// The rung comment.
     pub comment: String,
+    /// Soft PLC box inputs wired as networks of their own (computed
+    /// before the condition; see [`Side`]).
+    pub sides: Vec<Side>,
 }
 
 /// Reads the logic of rung index `index` off its grid. An empty rung
@@ -188,6 +193,12 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
     if rung.is_empty() {
         return Ok(None);
     }
+    // A box's other inputs' networks come off first (soft PLC).
+    let split = sides::split(rung, index)?;
+    let (rung, sides) = match &split {
+        Some((main, sides)) => (main, sides.clone()),
+        None => (rung, Vec::new()),
+    };
     let grid = Grid::new(rung, index)?;
     let outputs = grid.outputs()?;
     let mut points = grid.points()?;
@@ -205,6 +216,7 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
         condition,
         outputs,
         comment: rung.comment.clone(),
+        sides,
     }))
 }
 

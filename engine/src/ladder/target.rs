@@ -231,6 +231,25 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
         Element::Mov { .. } | Element::Cmp { .. } | Element::Inc { .. } | Element::Dec { .. } => {
             check_data_box(machine, element)
         }
+        Element::BoxInput { pin } => {
+            if machine != MachineId::SoftPlc {
+                return Err(ElementError::Lacks {
+                    machine,
+                    what: format!("box input {pin}"),
+                    why: ": a block's inputs wired as networks are the soft PLC's",
+                });
+            }
+            if !crate::softplc::vars::is_identifier(pin) {
+                return Err(ElementError::Block(
+                    crate::ladder::block::BoxError::NoSuchInput(
+                        "the box".into(),
+                        pin.clone(),
+                        "R, LD, R1, S1, CD …".into(),
+                    ),
+                ));
+            }
+            Ok(element.clone())
+        }
         Element::Block(b) | Element::OutputBlock(b) => {
             if machine != MachineId::SoftPlc {
                 return Err(ElementError::Lacks {

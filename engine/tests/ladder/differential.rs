@@ -385,6 +385,7 @@ fn logic(
         condition,
         outputs,
         comment: String::new(),
+        sides: Vec::new(),
     }
 }
 

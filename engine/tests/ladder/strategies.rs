@@ -140,6 +140,7 @@ pub fn rung(p: &'static Pool) -> impl Strategy<Value = RungLogic> {
         condition: condition.normalised(),
         outputs,
         comment: String::new(),
+        sides: Vec::new(),
     })
 }
 

@@ -63,6 +63,7 @@ fn rung() -> impl Strategy<Value = (RungLogic, Vec<bool>)> {
             condition: net,
             outputs: vec![(Element::coil("Y00"), Pos::new(0, 99))],
             comment: String::new(),
+            sides: Vec::new(),
         };
         (Just(logic), prop::collection::vec(any::<bool>(), n))
     })
@@ -151,6 +152,7 @@ fn why_coil(net: Net, conducts: &[bool]) -> engine::ladder::why::Explanation {
         condition: net,
         outputs: vec![(Element::coil("Y00"), Pos::new(0, 9))],
         comment: String::new(),
+        sides: Vec::new(),
     };
     explain(&logic, Pos::new(0, 9), conducts).expect("the coil")
 }

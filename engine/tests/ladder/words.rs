@@ -198,6 +198,7 @@ fn rung(n: usize) -> impl Strategy<Value = RungLogic> {
                 condition: Net::Series(items).normalised(),
                 outputs: outputs.into_iter().map(|e| (e, Pos::new(0, 0))).collect(),
                 comment: String::new(),
+                sides: Vec::new(),
             }
         })
 }

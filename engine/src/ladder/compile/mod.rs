@@ -135,10 +135,14 @@ impl Temps {
 pub(crate) fn used_devices(rungs: &[RungLogic]) -> BTreeSet<String> {
     let mut used = BTreeSet::new();
     for r in rungs {
-        for (e, _) in r.condition.leaves() {
+        let sides = r.sides.iter().flat_map(|s| s.net.leaves());
+        for (e, _) in r.condition.leaves().into_iter().chain(sides) {
             if let Some(d) = e.read_device() {
                 used.insert(d.to_string());
             }
+        }
+        for s in &r.sides {
+            used.insert(s.variable.clone());
         }
         for (e, _) in &r.outputs {
             if let Some(d) = e.written_device() {

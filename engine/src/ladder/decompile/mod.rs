@@ -230,6 +230,7 @@ fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Part>, outputs: &mut
                 condition,
                 outputs: outputs.drain(..).map(|e| (e, Pos::new(0, 0))).collect(),
                 comment: String::new(),
+                sides: Vec::new(),
             });
         }
     }

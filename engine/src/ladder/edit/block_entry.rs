@@ -7,7 +7,8 @@
 //!   operand of a function is where its result goes: `c := a + 1`),
 //!   `MOVE 42 d`, `GT level 100` (a comparison; a third operand takes its
 //!   result), `CTU c0 reset 10` (a block's instance, then its inputs after
-//!   the one the power enters, in order: CTU's R and PV).
+//!   the one the power enters, in order: CTU's R and PV; `-` leaves one
+//!   unwired: `CTU c0 - 10`, its R wired below the box as a network).
 //!
 //! A function goes to the rung's right end ([`Element::OutputBlock`], as
 //! FX's MOV is an output); a comparison or a function block stands in the
@@ -100,9 +101,13 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
     let shape = shape_of(kind).ok_or_else(|| EntryError::UnknownWord(kind.to_string()))?;
     let mut call = new_call(kind, "");
     let operands: Vec<String> = operands.iter().map(|o| o.to_string()).collect();
+    // `-` (or the `·` a box shows) leaves a block's input unwired: CTU's
+    // R wired below the box, `CTU c0 - 10`.
     let wire = |call: &mut BlockCall, pins: &[String], given: &[String]| {
         for (pin, operand) in pins.iter().zip(given) {
-            call.inputs.push((pin.clone(), operand.clone()));
+            if operand != "-" && operand != "·" {
+                call.inputs.push((pin.clone(), operand.clone()));
+            }
         }
     };
     match shape {
@@ -183,6 +188,8 @@ mod tests {
             "t0: TON(PT := T#2s)"
         );
         assert!(parse_box("CTU c0 r 10 5").is_err(), "CTU takes R and PV");
+        let skipped = parse_box("CTU c0 - 10").expect("R left unwired");
+        assert_eq!(call(&skipped).to_string(), "c0: CTU(PV := 10)");
     }
 
     #[test]

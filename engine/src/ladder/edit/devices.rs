@@ -178,7 +178,11 @@ fn devices(e: &Element) -> Vec<(&str, UseRole)> {
                 .filter(|(o, _)| crate::ladder::block::is_variable(o))
                 .collect()
         }
-        Element::Wire | Element::Not | Element::Edge { .. } | Element::Timer { .. } => Vec::new(),
+        Element::Wire
+        | Element::Not
+        | Element::Edge { .. }
+        | Element::Timer { .. }
+        | Element::BoxInput { .. } => Vec::new(),
     }
 }
 
@@ -334,7 +338,11 @@ pub fn replace_plan(ladder: &Ladder, from: &str, to: &str) -> Result<Vec<Replace
                         swap(o);
                     }
                 }
-                Element::Wire | Element::Not | Element::Edge { .. } | Element::Timer { .. } => {}
+                Element::Wire
+                | Element::Not
+                | Element::Edge { .. }
+                | Element::Timer { .. }
+                | Element::BoxInput { .. } => {}
             }
             if &changed != e {
                 out.push((rung, pos, e.clone(), changed));

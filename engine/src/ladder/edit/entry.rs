@@ -82,6 +82,13 @@ fn instruction(words: &[&str]) -> Result<Element, EntryError> {
                 device: String::new(),
             },
         ),
+        // Below a soft PLC block: its input wired from the network left.
+        "PIN" => match words {
+            [_, pin] => Ok(Element::BoxInput {
+                pin: pin.to_ascii_uppercase(),
+            }),
+            _ => Err(EntryError::Usage("PIN R")),
+        },
         "NOT" | "INV" => bare(words, "NOT", Element::Not),
         "R_TRIG" | "PULSE_A" => bare(words, "R_TRIG", Element::Edge { falling: false }),
         "F_TRIG" | "PULSE_B" => bare(words, "F_TRIG", Element::Edge { falling: true }),

@@ -238,6 +238,15 @@ impl Reference {
     pub fn new(rungs: Vec<RungLogic>, scan_ms: u32) -> Result<Reference, Vec<LadderError>> {
         let mut errors = Vec::new();
         for (i, r) in rungs.iter().enumerate() {
+            if let Some(side) = r.sides.first() {
+                // Differential tests draw no such inputs; the soft PLC
+                // runs them (net/sides.rs has their tests).
+                errors.push(LadderError::at(
+                    i,
+                    side.pos,
+                    "the reference evaluator does not run a box input wired as a network",
+                ));
+            }
             for (e, p) in &r.outputs {
                 if !matches!(
                     e,

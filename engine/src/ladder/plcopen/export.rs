@@ -29,6 +29,23 @@ pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
     w.declare(&ladder.variables);
     let mut y0 = 20;
     for (i, l) in &logic {
+        // A box's input wired as a network: that network first, as a
+        // coil on the BOOL the box reads (the same in every reader).
+        for side in &l.sides {
+            let own = crate::ladder::net::RungLogic {
+                condition: side.net.clone(),
+                outputs: vec![(Element::coil(&side.variable), side.pos)],
+                comment: String::new(),
+                sides: Vec::new(),
+            };
+            if let Err((p, m)) = w.rung(&own, y0) {
+                errors.push(LadderError::at(*i, p, m));
+            }
+            let leaves = side.net.leaves();
+            let rows = |f: fn(usize, usize) -> usize| leaves.iter().map(|(_, p)| p.row).reduce(f);
+            let high = rows(usize::max).unwrap_or(0) - rows(usize::min).unwrap_or(0) + 1;
+            y0 += high * CELL_H + CELL_H;
+        }
         if let Err((p, m)) = w.rung(l, y0) {
             errors.push(LadderError::at(*i, p, m));
         }

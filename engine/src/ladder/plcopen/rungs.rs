@@ -69,6 +69,7 @@ impl Body {
                         condition,
                         outputs: outs.into_iter().map(|(e, p, _)| (e, p)).collect(),
                         comment: String::new(),
+                        sides: Vec::new(),
                     };
                     rungs.push((top(&logic), logic, first_line));
                 }

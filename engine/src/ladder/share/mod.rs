@@ -275,7 +275,8 @@ fn put_map(w: &mut Vec<u8>, m: &BTreeMap<String, String>) {
 // Cell tags: 0 empty, 1 wire, 2-5 contacts, 6-9 coils, 10 NOT, 11-12
 // R_TRIG/F_TRIG, 13-15 TON/TOF/TP, 16-17 PLS/PLF, 18 timer coil,
 // 19 counter coil, 20 MOV, 21 CMP, 22 INC, 23 DEC, 24-25 the soft PLC's
-// in-line and output boxes (version 3: words.rs).
+// in-line and output boxes, 26 a box's input wired as a network
+// (version 3: words.rs).
 fn put_cell(w: &mut Vec<u8>, cell: Option<&Element>) {
     let Some(e) = cell else {
         w.push(0);
@@ -327,6 +328,10 @@ fn put_cell(w: &mut Vec<u8>, cell: Option<&Element>) {
         Element::Block(b) | Element::OutputBlock(b) => {
             w.push(words::BLOCK + u8::from(matches!(e, Element::OutputBlock(_))));
             words::put_block(w, b);
+        }
+        Element::BoxInput { pin } => {
+            w.push(words::BOX_INPUT);
+            put_str(w, pin);
         }
         Element::Inc { dst } | Element::Dec { dst } => {
             w.push(if matches!(e, Element::Inc { .. }) {
@@ -541,6 +546,9 @@ impl Reader<'_> {
                 dst: self.string()?,
             },
             24 | 25 => self.block(tag)?,
+            words::BOX_INPUT => Element::BoxInput {
+                pin: self.string()?,
+            },
             _ => return Err(self.bad("an unknown element")),
         }))
     }

@@ -12,16 +12,19 @@ use crate::limits::MAX_MAP_ENTRIES;
 /// The cell tag of an in-line box; the next is an output box.
 pub(super) const BLOCK: u8 = 24;
 
+/// The cell tag of a box's input wired as a network.
+pub(super) const BOX_INPUT: u8 = 26;
+
 /// Most pins a box may list in a link.
 const MAX_PINS: usize = 64;
 
 /// Whether the ladder needs a version 3 link.
 pub(super) fn needed(ladder: &Ladder) -> bool {
     !ladder.variables.is_empty()
-        || ladder
-            .rungs
-            .iter()
-            .any(|r| r.elements().any(|(_, e)| e.block().is_some()))
+        || ladder.rungs.iter().any(|r| {
+            r.elements()
+                .any(|(_, e)| e.block().is_some() || matches!(e, Element::BoxInput { .. }))
+        })
 }
 
 /// A box after its tag.

@@ -96,6 +96,18 @@ pub(crate) fn compile_mapped(
                 one_line(&logic.comment).replace("*)", "* )")
             ));
         }
+        // A box's inputs wired as networks: each into its BOOL first.
+        for side in &logic.sides {
+            let own = RungLogic {
+                condition: side.net.clone(),
+                outputs: vec![(Element::coil(&side.variable), side.pos)],
+                comment: String::new(),
+                sides: Vec::new(),
+            };
+            if let Err((pos, m)) = c.rung(&own) {
+                errors.push(LadderError::at(i, pos, m));
+            }
+        }
         if let Err((pos, m)) = c.rung(logic) {
             errors.push(LadderError::at(i, pos, m));
         }
