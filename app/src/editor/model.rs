@@ -121,6 +121,9 @@ pub fn rung_data(
 /// Kind, device, symbol and words of an element (the fixed ones from
 /// [`CellKind::look`]).
 fn drawn(e: &Element) -> CellData {
+    if let Some(cell) = soft_box(e) {
+        return cell;
+    }
     let fixed = |kind: CellKind, device: &str| {
         let look = kind.look();
         (
@@ -162,25 +165,6 @@ fn drawn(e: &Element) -> CellData {
             format!("(K{preset})"),
             format!("counter coil {device} K{preset}"),
         ),
-        // A block's input wired from the network on its left: the box
-        // goes on down (`box-input`), the pin named.
-        Element::BoxInput { pin } => {
-            return CellData {
-                kind: CellKind::Box,
-                symbol: format!("▸{pin}"),
-                words: format!("box input {pin}"),
-                ..CellData::default()
-            };
-        }
-        Element::Block(b) | Element::OutputBlock(b) => {
-            return CellData {
-                kind: CellKind::Box,
-                symbol: format!("[{}]", b.label()),
-                words: format!("box {b}"),
-                watched: b.watched(),
-                ..CellData::default()
-            };
-        }
         other => {
             let (_, words) = entry_for(other);
             let device = match other {
@@ -204,6 +188,27 @@ fn drawn(e: &Element) -> CellData {
         symbol,
         words,
         ..CellData::default()
+    }
+}
+
+/// A soft PLC box or a block's input below it, as a cell.
+fn soft_box(e: &Element) -> Option<CellData> {
+    match e {
+        // A block's input wired from the network on its left: the pin named.
+        Element::BoxInput { pin } => Some(CellData {
+            kind: CellKind::Box,
+            symbol: format!("▸{pin}"),
+            words: format!("box input {pin}"),
+            ..CellData::default()
+        }),
+        Element::Block(b) | Element::OutputBlock(b) => Some(CellData {
+            kind: CellKind::Box,
+            symbol: format!("[{}]", b.label()),
+            words: format!("box {b}"),
+            watched: b.watched(),
+            ..CellData::default()
+        }),
+        _ => None,
     }
 }
 

@@ -29,6 +29,20 @@ pub struct Side {
     pub pos: Pos,
 }
 
+impl Side {
+    /// The network as a rung of its own: its condition driving a coil on
+    /// the BOOL the box reads (how the compiler and the PLCopen export
+    /// write it, before the box's rung).
+    pub fn as_rung(&self) -> super::RungLogic {
+        super::RungLogic {
+            condition: self.net.clone(),
+            outputs: vec![(Element::coil(&self.variable), self.pos)],
+            comment: String::new(),
+            sides: Vec::new(),
+        }
+    }
+}
+
 /// The BOOL that carries box `instance`'s input `pin`.
 fn carrier(instance: &str, pin: &str) -> String {
     format!("_{}_{}", instance.trim(), pin.to_ascii_uppercase())

@@ -29,23 +29,7 @@ pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
     w.declare(&ladder.variables);
     let mut y0 = 20;
     for (i, l) in &logic {
-        // A box's input wired as a network: that network first, as a
-        // coil on the BOOL the box reads (the same in every reader).
-        for side in &l.sides {
-            let own = crate::ladder::net::RungLogic {
-                condition: side.net.clone(),
-                outputs: vec![(Element::coil(&side.variable), side.pos)],
-                comment: String::new(),
-                sides: Vec::new(),
-            };
-            if let Err((p, m)) = w.rung(&own, y0) {
-                errors.push(LadderError::at(*i, p, m));
-            }
-            let leaves = side.net.leaves();
-            let rows = |f: fn(usize, usize) -> usize| leaves.iter().map(|(_, p)| p.row).reduce(f);
-            let high = rows(usize::max).unwrap_or(0) - rows(usize::min).unwrap_or(0) + 1;
-            y0 += high * CELL_H + CELL_H;
-        }
+        y0 = write_sides(&mut w, l, *i, y0, &mut errors);
         if let Err((p, m)) = w.rung(l, y0) {
             errors.push(LadderError::at(*i, p, m));
         }
@@ -584,4 +568,27 @@ impl Writer {
         }
         Ok((id, Some(power_out)))
     }
+}
+
+/// A box's inputs wired as networks (rung `index`'s), each written first
+/// at `y0` as a network of its own ending in a coil on the BOOL the box
+/// reads (the same in every reader); where the rung's own goes next.
+fn write_sides(
+    w: &mut Writer,
+    l: &crate::ladder::net::RungLogic,
+    index: usize,
+    mut y0: usize,
+    errors: &mut Vec<LadderError>,
+) -> usize {
+    for side in &l.sides {
+        let own = side.as_rung();
+        if let Err((p, m)) = w.rung(&own, y0) {
+            errors.push(LadderError::at(index, p, m));
+        }
+        let leaves = side.net.leaves();
+        let rows = |f: fn(usize, usize) -> usize| leaves.iter().map(|(_, p)| p.row).reduce(f);
+        let high = rows(usize::max).unwrap_or(0) - rows(usize::min).unwrap_or(0) + 1;
+        y0 += high * CELL_H + CELL_H;
+    }
+    y0
 }

@@ -96,18 +96,7 @@ pub(crate) fn compile_mapped(
                 one_line(&logic.comment).replace("*)", "* )")
             ));
         }
-        // A box's inputs wired as networks: each into its BOOL first.
-        for side in &logic.sides {
-            let own = RungLogic {
-                condition: side.net.clone(),
-                outputs: vec![(Element::coil(&side.variable), side.pos)],
-                comment: String::new(),
-                sides: Vec::new(),
-            };
-            if let Err((pos, m)) = c.rung(&own) {
-                errors.push(LadderError::at(i, pos, m));
-            }
-        }
+        c.sides(logic, i, &mut errors);
         if let Err((pos, m)) = c.rung(logic) {
             errors.push(LadderError::at(i, pos, m));
         }
@@ -167,6 +156,17 @@ fn loads(
 type RungResult = Result<(), (Pos, String)>;
 
 impl Compiler {
+    /// A box's inputs wired as networks (rung `i`'s): each computed into
+    /// its BOOL before the rung.
+    fn sides(&mut self, logic: &RungLogic, i: usize, errors: &mut Vec<LadderError>) {
+        for side in &logic.sides {
+            let own = side.as_rung();
+            if let Err((pos, m)) = self.rung(&own) {
+                errors.push(LadderError::at(i, pos, m));
+            }
+        }
+    }
+
     /// Steps emitted so far (comments are not steps).
     fn steps(&self) -> usize {
         self.lines.iter().filter(|l| !l.starts_with("(*")).count()
