@@ -290,7 +290,7 @@ def test_a_counters_reset_is_wired_as_a_network_below_the_box(driver, base_url, 
     el(driver, "palette-pin").click()
     entry = wait(driver, lambda: el(driver, "device-input"))
     entry.send_keys("R", Keys.ENTER)
-    wait(driver, lambda: el(driver, "cell-0-1-1").get_attribute("data-kind") == "box")
+    wait(driver, lambda: el(driver, "cell-0-1-1").get_attribute("data-kind") == "box-input")
     assert "R" in el(driver, "cell-0-1-1").text
     assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
     el(driver, "run").click()

@@ -32,6 +32,9 @@ pub enum CellKind {
     CountCoil,
     /// An instruction box (`[MOV K50 D00]`, NOT, a timer block …).
     Box,
+    /// A soft PLC block's input wired from the network on its left,
+    /// below the block (drawn as the box going on down).
+    BoxInput,
 }
 
 /// How a kind is presented.
@@ -106,6 +109,10 @@ const BOX: Look = Look {
     shows_state: false,
     ..look("box", "", ("box", "命令"))
 };
+const BOX_INPUT: Look = Look {
+    shows_state: false,
+    ..look("box-input", "", ("box input", "ブロック入力"))
+};
 
 impl CellKind {
     /// How it is presented.
@@ -123,6 +130,7 @@ impl CellKind {
             CellKind::Reset => &RESET,
             CellKind::CountCoil => &COUNT_COIL,
             CellKind::Box => &BOX,
+            CellKind::BoxInput => &BOX_INPUT,
         }
     }
 
@@ -163,6 +171,7 @@ mod tests {
             CellKind::Reset,
             CellKind::CountCoil,
             CellKind::Box,
+            CellKind::BoxInput,
         ];
         for k in all {
             assert!(!k.hook().is_empty(), "{k:?}");

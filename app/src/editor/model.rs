@@ -196,7 +196,7 @@ fn soft_box(e: &Element) -> Option<CellData> {
     match e {
         // A block's input wired from the network on its left: the pin named.
         Element::BoxInput { pin } => Some(CellData {
-            kind: CellKind::Box,
+            kind: CellKind::BoxInput,
             symbol: format!("▸{pin}"),
             words: format!("box input {pin}"),
             ..CellData::default()
@@ -227,6 +227,9 @@ pub fn cell_words(c: &CellData, lang: Lang) -> String {
             format!("{kind} {} {}", c.device, c.symbol.trim_matches(['(', ')']))
         }
         (Lang::Ja, CellKind::Box) => format!("命令 {}", c.symbol.trim_matches(['[', ']'])),
+        (Lang::Ja, CellKind::BoxInput) => {
+            format!("ブロック入力 {}", c.symbol.trim_start_matches('▸'))
+        }
         (Lang::Ja, kind) => format!("{} {}", kind.look().words_ja, c.device),
     };
     if c.comment.is_empty() {
