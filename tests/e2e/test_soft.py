@@ -306,5 +306,12 @@ def test_a_counters_reset_is_wired_as_a_network_below_the_box(driver, base_url, 
     wait(driver, lambda: "CV=0" in box_values(driver, "cell-0-0-1"))
     wait(driver, lambda: el(driver, "cell-0-1-1").get_attribute("data-powered") == "1",
          message="the input's cell shows its network's power")
+    # Why? follows into the network: the input has power through %IX0.1.
+    el(driver, "cell-0-1-1").click()
+    driver.switch_to.active_element.send_keys("w")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == "1")
+    assert el(driver, "why-head").text.startswith("box input R")
+    devices = [c.get_attribute("data-device") for c in driver.find_elements(By.CSS_SELECTOR, '[data-testid="why-cause"]')]
+    assert devices == ["%IX0.1"], devices
     driver.save_screenshot(str(artifacts / "soft-reset-network.png"))
     assert severe_console_messages(driver) == []

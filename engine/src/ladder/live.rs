@@ -73,30 +73,54 @@ impl LiveLadder {
     /// rung or a cell that is neither a contact nor an output.
     pub fn explain(&self, trace: &ScanTrace, rung: usize, target: Pos) -> Option<Explanation> {
         let (_, logic, steps) = self.rungs.iter().find(|(i, _, _)| *i == rung)?;
-        let report = rung_power(logic, steps, trace);
-        let conducts: Vec<bool> = logic
-            .condition
-            .leaves()
-            .iter()
-            .enumerate()
-            .map(|(i, (e, _))| {
-                let read = steps
-                    .get(i)
-                    .copied()
-                    .flatten()
-                    .filter(|&s| trace.ran.get(s).copied().unwrap_or(false))
-                    .is_some_and(|s| trace.read[s]);
-                let p = report[i];
-                why::leaf_conducts(e, read, p.power_in, p.power_out)
-            })
-            .collect();
-        why::explain(logic, target, &conducts)
+        // A box input's network (its cell or one of its leaves) is
+        // explained as the rung of its own it runs as.
+        let mut offset = logic.condition.leaves().len();
+        for side in &logic.sides {
+            let leaves = side.net.leaves();
+            let here = side.pos == target || leaves.iter().any(|(_, p)| *p == target);
+            if here {
+                let own = side.as_rung();
+                let steps = steps.get(offset..offset + leaves.len())?;
+                return explain_logic(&own, steps, trace, target);
+            }
+            offset += leaves.len();
+        }
+        explain_logic(logic, steps, trace, target)
     }
 
     /// The ladder index and logic of every non-empty rung.
     pub fn rungs(&self) -> impl Iterator<Item = (usize, &RungLogic)> {
         self.rungs.iter().map(|(i, l, _)| (*i, l))
     }
+}
+
+/// Why the power at `target` of `logic` (its leaves' steps `steps`) is
+/// what it was in the traced scan.
+fn explain_logic(
+    logic: &RungLogic,
+    steps: &[Option<usize>],
+    trace: &ScanTrace,
+    target: Pos,
+) -> Option<Explanation> {
+    let report = rung_power(logic, steps, trace);
+    let conducts: Vec<bool> = logic
+        .condition
+        .leaves()
+        .iter()
+        .enumerate()
+        .map(|(i, (e, _))| {
+            let read = steps
+                .get(i)
+                .copied()
+                .flatten()
+                .filter(|&s| trace.ran.get(s).copied().unwrap_or(false))
+                .is_some_and(|s| trace.read[s]);
+            let p = report[i];
+            why::leaf_conducts(e, read, p.power_in, p.power_out)
+        })
+        .collect();
+    why::explain(logic, target, &conducts)
 }
 
 /// One rung's elements' power in the traced scan: its leaves in

@@ -383,4 +383,35 @@ mod tests {
         let again = crate::ladder::Project::from_json(&json).expect("JSON reads back");
         assert_eq!(again.ladder, ladder);
     }
+
+    #[test]
+    fn why_follows_into_a_box_inputs_network() {
+        use crate::ladder::grid::Pos;
+        use crate::ladder::live::LiveLadder;
+        let ladder = counter("R", false);
+        let live = LiveLadder::new(&ladder, MachineId::SoftPlc, Options::default())
+            .unwrap_or_else(|e| panic!("{e:?}"));
+        let mut plc = SoftPlc::new();
+        plc.load_text(&live.listing.text).expect("loads");
+        plc.set_tracing(true);
+        plc.run_until(SimTime::from_millis(30));
+        let trace = plc.trace().expect("traced");
+        let why = live
+            .explain(trace, 0, Pos::new(1, 1))
+            .expect("the input explained");
+        assert!(
+            !why.powered && !why.together,
+            "off: either contact would reset it"
+        );
+        assert_eq!(why.causes, [Pos::new(1, 0), Pos::new(2, 0)]);
+        set(&mut plc, "%IX0.2", true);
+        plc.run_until(SimTime::from_millis(60));
+        let trace = plc.trace().expect("traced");
+        let why = live.explain(trace, 0, Pos::new(1, 1)).expect("explained");
+        assert!(why.powered);
+        assert_eq!(why.causes, [Pos::new(2, 0)], "the contact that resets it");
+        // The box's own rung is explained as before.
+        let main = live.explain(trace, 0, Pos::new(0, 9)).expect("the coil");
+        assert!(!main.causes.is_empty());
+    }
 }
