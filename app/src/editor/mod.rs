@@ -58,16 +58,11 @@ impl Ladders {
         }
     }
 
-    /// The editor of `machine`; the first machine's for one the page
-    /// has no workspace for (callers opening a project ask [`Ladders::get`]).
+    /// The editor of `machine` (every machine has one).
     pub fn of(&self, machine: MachineId) -> LadderCtx {
-        self.get(machine).unwrap_or(self.all[0])
-    }
-
-    /// The editor of `machine`, if the page has one.
-    pub fn get(&self, machine: MachineId) -> Option<LadderCtx> {
-        let index = MachineId::ALL.iter().position(|m| *m == machine)?;
-        Some(self.all[index])
+        let index = MachineId::ALL.iter().position(|m| *m == machine);
+        // ALL lists every machine: the position is always found.
+        self.all[index.unwrap_or_default()]
     }
 }
 

@@ -1,13 +1,13 @@
 //! The soft PLC's variables pane `[data-testid=variables]` (issue #31):
 //! declare a variable, rename it everywhere, retype it, give it an
 //! address, a start value and a comment, each an undoable edit that the
-//! engine refuses at the use it would break (`Edit::DeclareVariable`,
-//! `Edit::RenameVariable`, `Edit::RemoveVariable`); while the machine
+//! engine refuses at the use it would break (`Edit::Variable`: declare,
+//! rename, remove); while the machine
 //! runs, each variable's value, and a value to set (an input keeps it;
 //! another variable takes it until the program writes it again).
 
 use engine::events::{InputValue, Real};
-use engine::ladder::edit::Edit;
+use engine::ladder::edit::{Edit, VariableEdit};
 use engine::ladder::Variable;
 use engine::plc::Command;
 use leptos::prelude::*;
@@ -47,9 +47,10 @@ pub fn VariablesPane(ctx: LadderCtx) -> impl IntoView {
     let kind = RwSignal::new("INT".to_string());
     let declare = move || {
         let n = name.get_untracked();
-        edit(Edit::DeclareVariable {
-            variable: Variable::new(n.trim(), &kind.get_untracked()),
-        });
+        edit(Edit::Variable(VariableEdit::Declare(Variable::new(
+            n.trim(),
+            &kind.get_untracked(),
+        ))));
         if error.with_untracked(Option::is_none) {
             name.set(String::new());
         }
@@ -101,7 +102,7 @@ fn VariableRow(
             let mut changed = v.clone();
             set(&mut changed, event_target_value(&e).trim().to_string());
             if changed != v {
-                edit(Edit::DeclareVariable { variable: changed });
+                edit(Edit::Variable(VariableEdit::Declare(changed)));
             }
         })
     };
@@ -113,10 +114,10 @@ fn VariableRow(
     let rename = move |e: leptos::ev::Event| {
         let to = event_target_value(&e);
         if to.trim() != from {
-            edit(Edit::RenameVariable {
-                from: from.clone(),
-                to: to.trim().to_string(),
-            });
+            edit(Edit::Variable(VariableEdit::Rename(
+                from.clone(),
+                to.trim().to_string(),
+            )));
         }
     };
     let gone = old.clone();
@@ -141,7 +142,7 @@ fn VariableRow(
                     </label>
                     <button type="button" data-testid="var-remove" aria-label=move || t().var_remove
                         title=move || t().var_remove
-                        on:click=move |_| edit(Edit::RemoveVariable { name: gone.clone() })>"×"</button>
+                        on:click=move |_| edit(Edit::Variable(VariableEdit::Remove(gone.clone())))>"×"</button>
                 </td>
             </tr>
         </tbody>

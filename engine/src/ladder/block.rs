@@ -52,6 +52,25 @@ pub enum Shape {
     FunctionBlock,
 }
 
+impl Shape {
+    /// What sort of box `kind` (upper-case) is; `None` for a kind the
+    /// soft PLC lacks.
+    pub fn of(kind: &str) -> Option<Shape> {
+        if COMPARISONS.contains(&kind) {
+            return Some(Shape::Compare);
+        }
+        if BLOCK_TYPES.contains(&kind) {
+            return Some(Shape::FunctionBlock);
+        }
+        if let Some(&(_, pins, many)) = FUNCTIONS.iter().find(|(k, ..)| *k == kind) {
+            return Some(Shape::Function(pins, many));
+        }
+        let (from, to) = kind.split_once("_TO_")?;
+        (DataType::from_name(from).is_some() && DataType::from_name(to).is_some())
+            .then_some(Shape::Function(&["IN"], false))
+    }
+}
+
 /// The functions a box can call and their data inputs.
 const FUNCTIONS: &[(&str, &[&str], bool)] = &[
     ("ADD", &["IN1", "IN2"], true),
@@ -86,19 +105,7 @@ impl BlockCall {
 
     /// What sort of box it is; `None` for a kind the soft PLC lacks.
     pub fn shape(&self) -> Option<Shape> {
-        let kind = self.kind();
-        if COMPARISONS.contains(&kind.as_str()) {
-            return Some(Shape::Compare);
-        }
-        if BLOCK_TYPES.contains(&kind.as_str()) {
-            return Some(Shape::FunctionBlock);
-        }
-        if let Some(&(_, pins, many)) = FUNCTIONS.iter().find(|(k, ..)| *k == kind) {
-            return Some(Shape::Function(pins, many));
-        }
-        let (from, to) = kind.split_once("_TO_")?;
-        (DataType::from_name(from).is_some() && DataType::from_name(to).is_some())
-            .then_some(Shape::Function(&["IN"], false))
+        Shape::of(&self.kind())
     }
 
     /// The pin the power enters: EN, or a block's first BOOL input.
@@ -134,9 +141,15 @@ impl BlockCall {
     /// The data inputs in order: a function's IN1, IN2, … (as many as
     /// given, for one that takes more), a block's other inputs.
     pub fn data_pins(&self) -> Vec<String> {
+        self.data_pins_for(self.inputs.len())
+    }
+
+    /// [`BlockCall::data_pins`] for a box given `given` inputs (what a
+    /// function taking more than two makes of them).
+    pub fn data_pins_for(&self, given: usize) -> Vec<String> {
         match self.shape() {
             Some(Shape::Function(pins, true)) => {
-                let n = self.inputs.len().max(pins.len());
+                let n = given.max(pins.len());
                 (1..=n).map(|i| format!("IN{i}")).collect()
             }
             Some(Shape::Function(pins, false)) => pins.iter().map(|p| p.to_string()).collect(),

@@ -194,6 +194,36 @@ impl Element {
         }
     }
 
+    /// Calls `f` on every device or operand the element names (a
+    /// contact's, a coil's, a data box's, a soft PLC box's inputs and
+    /// results; not a box's instance): what a device replace or a rename
+    /// rewrites.
+    pub fn names_mut(&mut self, mut f: impl FnMut(&mut String)) {
+        match self {
+            Element::Contact { device, .. }
+            | Element::Coil { device, .. }
+            | Element::Pulse { device, .. }
+            | Element::TimerCoil { device, .. }
+            | Element::CounterCoil { device, .. } => f(device),
+            Element::Mov { src: a, dst: b } | Element::Cmp { a, b } => {
+                f(a);
+                f(b);
+            }
+            Element::Inc { dst } | Element::Dec { dst } => f(dst),
+            Element::Block(b) | Element::OutputBlock(b) => {
+                b.inputs
+                    .iter_mut()
+                    .chain(b.outputs.iter_mut())
+                    .for_each(|(_, o)| f(o));
+            }
+            Element::Wire
+            | Element::Not
+            | Element::Edge { .. }
+            | Element::Timer { .. }
+            | Element::BoxInput { .. } => {}
+        }
+    }
+
     /// The bit device an output drives, if it drives one.
     pub fn written_device(&self) -> Option<&str> {
         match self {

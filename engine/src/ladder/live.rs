@@ -42,13 +42,9 @@ impl LiveLadder {
             .into_iter()
             .zip(logic)
             .map(|(i, l)| {
-                // The condition's leaves, then each box input network's.
-                let sides = l.sides.iter().flat_map(|s| s.net.leaves());
                 let steps = l
-                    .condition
                     .leaves()
                     .into_iter()
-                    .chain(sides)
                     .map(|(_, pos)| listing.step_of_leaf(i, pos))
                     .collect();
                 (i, l, steps)

@@ -187,6 +187,18 @@ pub struct RungLogic {
     pub sides: Vec<Side>,
 }
 
+impl RungLogic {
+    /// Every leaf: the condition's, then each box input network's, in
+    /// the order the compiler emits them and the live ladder reads them.
+    pub fn leaves(&self) -> Vec<(&Element, Pos)> {
+        let mut all = self.condition.leaves();
+        for side in &self.sides {
+            all.extend(side.net.leaves());
+        }
+        all
+    }
+}
+
 /// Reads the logic of rung index `index` off its grid. An empty rung
 /// gives `Ok(None)`. Every wiring problem is reported at its cell.
 pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<LadderError>> {

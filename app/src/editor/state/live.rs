@@ -166,13 +166,24 @@ impl LadderCtx {
             .flatten();
         Probe {
             state,
-            // A soft PLC word's `.v` is itself: no count to show apart.
             value: counts
-                .then(|| self.handle(plc, &format!("{}.v", c.device)))
-                .flatten()
-                .filter(|v| Some(*v) != state),
+                .then(|| self.current_of(plc, &c.device, state))
+                .flatten(),
             words: Vec::new(),
         }
+    }
+
+    /// The handle of `name`'s current value (`name.v`: a timer's or
+    /// counter's), when it is more than the device itself (`itself`): a
+    /// soft PLC word's `.v` is the word.
+    fn current_of(
+        &self,
+        plc: &dyn engine::plc::Plc,
+        name: &str,
+        itself: Option<engine::plc::Device>,
+    ) -> Option<engine::plc::Device> {
+        self.handle(plc, &format!("{name}.v"))
+            .filter(|h| Some(*h) != itself)
     }
 
     /// Each frame: the watch table's values (a timer's or counter's
@@ -183,12 +194,7 @@ impl LadderCtx {
                 .map(|name| {
                     let device = self.handle(plc, name);
                     let value = device.map(|h| plc.read(h));
-                    // A word's `.v` is the word itself (the soft PLC):
-                    // only a timer's or counter's current value is more.
-                    let current = self
-                        .handle(plc, &format!("{name}.v"))
-                        .filter(|h| Some(*h) != device)
-                        .map(|h| plc.read(h));
+                    let current = self.current_of(plc, name, device).map(|h| plc.read(h));
                     let preset = self.preset_of(name);
                     match (value, current) {
                         (Some(v), Some(c)) => match preset {

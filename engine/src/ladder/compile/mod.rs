@@ -135,8 +135,7 @@ impl Temps {
 pub(crate) fn used_devices(rungs: &[RungLogic]) -> BTreeSet<String> {
     let mut used = BTreeSet::new();
     for r in rungs {
-        let sides = r.sides.iter().flat_map(|s| s.net.leaves());
-        for (e, _) in r.condition.leaves().into_iter().chain(sides) {
+        for (e, _) in r.leaves() {
             if let Some(d) = e.read_device() {
                 used.insert(d.to_string());
             }

@@ -30,17 +30,7 @@ pub fn is_box(text: &str) -> bool {
         .split(|c: char| c.is_whitespace() || c == '(')
         .find(|w| !w.is_empty())
         .unwrap_or("");
-    text.contains('(') || text.contains(":=") || shape_of(head).is_some()
-}
-
-fn shape_of(kind: &str) -> Option<Shape> {
-    BlockCall {
-        kind: kind.to_string(),
-        instance: String::new(),
-        inputs: Vec::new(),
-        outputs: Vec::new(),
-    }
-    .shape()
+    text.contains('(') || text.contains(":=") || Shape::of(&head.to_ascii_uppercase()).is_some()
 }
 
 /// The box `text` writes, placed where its kind stands.
@@ -98,7 +88,8 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
     let Some((kind, operands)) = words.split_first() else {
         return Err(EntryError::Empty);
     };
-    let shape = shape_of(kind).ok_or_else(|| EntryError::UnknownWord(kind.to_string()))?;
+    let shape = Shape::of(&kind.to_ascii_uppercase())
+        .ok_or_else(|| EntryError::UnknownWord(kind.to_string()))?;
     let mut call = new_call(kind, "");
     let operands: Vec<String> = operands.iter().map(|o| o.to_string()).collect();
     // `-` (or the `·` a box shows) leaves a block's input unwired: CTU's
@@ -121,9 +112,7 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
             if !fits {
                 return Err(EntryError::Usage(BOX_USAGE));
             }
-            call.inputs = inputs.iter().map(|o| (String::new(), o.clone())).collect();
-            let pins = call.data_pins();
-            call.inputs.clear();
+            let pins = call.data_pins_for(inputs.len());
             wire(&mut call, &pins, inputs);
             call.outputs.push(("OUT".into(), result.clone()));
         }

@@ -113,26 +113,10 @@ pub enum Edit {
         /// With what.
         to: String,
     },
-    /// The variables pane: declares a soft PLC variable, or changes the
-    /// one of its name (type, address, value, comment); refused where a
-    /// use would no longer fit.
-    DeclareVariable {
-        /// The declaration.
-        variable: crate::ladder::Variable,
-    },
-    /// The variables pane: removes a declaration no use needs.
-    RemoveVariable {
-        /// Its name (any case).
-        name: String,
-    },
-    /// The variables pane: renames a variable in its declaration and in
-    /// every cell that uses it.
-    RenameVariable {
-        /// Its name (any case).
-        from: String,
-        /// The new name.
-        to: String,
-    },
+    /// The variables pane's edits of the soft PLC's declarations: declare
+    /// or change one, remove one, rename one in every cell that uses it;
+    /// refused where a use would no longer fit.
+    Variable(super::variables::VariableEdit),
     /// An empty ladder (the old one comes back with undo).
     NewLadder,
     /// Another whole ladder: text loaded as a ladder, an example, a
@@ -461,28 +445,14 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
             }
             cursor
         }
-        Edit::DeclareVariable { .. }
-        | Edit::RemoveVariable { .. }
-        | Edit::RenameVariable { .. } => {
-            let new = super::variables::planned(ladder, variable_edit(edit))
-                .map_err(EditError::Variable)?;
+        Edit::Variable(change) => {
+            let new = super::variables::planned(ladder, change).map_err(EditError::Variable)?;
             replace_all(&mut plan, ladder, new)?
         }
         Edit::NewLadder => replace_all(&mut plan, ladder, Ladder::default())?,
         Edit::Replace { ladder: new } => replace_all(&mut plan, ladder, new)?,
     };
     plan.done(cursor, after)
-}
-
-/// The variables pane's part of an edit (the others never come here).
-fn variable_edit(edit: Edit) -> super::variables::VariableEdit {
-    use super::variables::VariableEdit;
-    match edit {
-        Edit::DeclareVariable { variable } => VariableEdit::Declare(variable),
-        Edit::RemoveVariable { name } => VariableEdit::Remove(name),
-        Edit::RenameVariable { from, to } => VariableEdit::Rename(from, to),
-        _ => VariableEdit::Remove(String::new()),
-    }
 }
 
 /// A place edit: contacts and boxes at the cell, outputs in the output

@@ -322,28 +322,7 @@ pub fn replace_plan(ladder: &Ladder, from: &str, to: &str) -> Result<Vec<Replace
     for (rung, r) in ladder.rungs.iter().enumerate() {
         for (pos, e) in r.elements() {
             let mut changed = e.clone();
-            match &mut changed {
-                Element::Contact { device, .. }
-                | Element::Coil { device, .. }
-                | Element::Pulse { device, .. }
-                | Element::TimerCoil { device, .. }
-                | Element::CounterCoil { device, .. } => swap(device),
-                Element::Mov { src: a, dst: b } | Element::Cmp { a, b } => {
-                    swap(a);
-                    swap(b);
-                }
-                Element::Inc { dst } | Element::Dec { dst } => swap(dst),
-                Element::Block(b) | Element::OutputBlock(b) => {
-                    for (_, o) in b.inputs.iter_mut().chain(b.outputs.iter_mut()) {
-                        swap(o);
-                    }
-                }
-                Element::Wire
-                | Element::Not
-                | Element::Edge { .. }
-                | Element::Timer { .. }
-                | Element::BoxInput { .. } => {}
-            }
+            changed.names_mut(swap);
             if &changed != e {
                 out.push((rung, pos, e.clone(), changed));
             }

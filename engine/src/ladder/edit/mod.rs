@@ -29,7 +29,7 @@ pub use devices::{
     UseRole,
 };
 pub use entry::{parse_entry, EntryError, EntryKind};
-pub use variables::VariableEditError;
+pub use variables::{VariableEdit, VariableEditError};
 
 use super::grid::{Ladder, Pos};
 

@@ -31,20 +31,25 @@ impl std::fmt::Display for VariableEditError {
             VariableEditError::Declaration(e) => e.fmt(f),
             VariableEditError::NoSuchVariable(n) => write!(f, "there is no variable {n}"),
             VariableEditError::NameTaken(n) => write!(f, "{n} is already declared"),
-            VariableEditError::UseNoLongerFits(e) => write!(f, "a use would no longer fit: {e}"),
+            VariableEditError::UseNoLongerFits(e) => {
+                write!(f, "a use would no longer fit: {e}")
+            }
         }
     }
 }
 
 impl std::error::Error for VariableEditError {}
 
-type EditError = VariableEditError;
-
-/// What the variables pane asks for.
+/// What the variables pane asks for ([`super::Edit::Variable`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(super) enum VariableEdit {
+pub enum VariableEdit {
+    /// Declares a variable, or changes the one of its name (any case):
+    /// type, address, start value, comment.
     Declare(Variable),
+    /// Removes the declaration of this name (any case) no use needs.
     Remove(String),
+    /// Renames variable `.0` (any case) to `.1` in its declaration and in
+    /// every cell that uses it.
     Rename(String, String),
 }
 
@@ -59,8 +64,8 @@ pub(super) fn planned(ladder: &Ladder, edit: VariableEdit) -> Result<Ladder, Var
 
 /// The ladder with `variable` declared: added, or in place of the one of
 /// its name (any case).
-fn declare(ladder: &Ladder, variable: Variable) -> Result<Ladder, EditError> {
-    variable.check().map_err(EditError::Declaration)?;
+fn declare(ladder: &Ladder, variable: Variable) -> Result<Ladder, VariableEditError> {
+    variable.check().map_err(VariableEditError::Declaration)?;
     let mut after = ladder.clone();
     match position(ladder, &variable.name) {
         Some(i) => after.variables[i] = variable,
@@ -71,8 +76,9 @@ fn declare(ladder: &Ladder, variable: Variable) -> Result<Ladder, EditError> {
 }
 
 /// The ladder without variable `name`.
-fn remove(ladder: &Ladder, name: &str) -> Result<Ladder, EditError> {
-    let i = position(ladder, name).ok_or_else(|| EditError::NoSuchVariable(name.to_string()))?;
+fn remove(ladder: &Ladder, name: &str) -> Result<Ladder, VariableEditError> {
+    let i = position(ladder, name)
+        .ok_or_else(|| VariableEditError::NoSuchVariable(name.to_string()))?;
     let mut after = ladder.clone();
     after.variables.remove(i);
     fits(ladder, &after)?;
@@ -82,15 +88,16 @@ fn remove(ladder: &Ladder, name: &str) -> Result<Ladder, EditError> {
 /// The ladder with variable `from` called `to` in its declaration, in
 /// every cell that names it (contacts, coils, box operands and results, a
 /// block's instance and its outputs `from.Q`) and in its comment's key.
-fn rename(ladder: &Ladder, from: &str, to: &str) -> Result<Ladder, EditError> {
+fn rename(ladder: &Ladder, from: &str, to: &str) -> Result<Ladder, VariableEditError> {
     let to = to.trim();
-    let i = position(ladder, from).ok_or_else(|| EditError::NoSuchVariable(from.to_string()))?;
+    let i = position(ladder, from)
+        .ok_or_else(|| VariableEditError::NoSuchVariable(from.to_string()))?;
     if !is_identifier(to) {
         let bad = crate::ladder::variables::VariableError::BadName(to.to_string());
-        return Err(EditError::Declaration(bad));
+        return Err(VariableEditError::Declaration(bad));
     }
     if position(ladder, to).is_some_and(|j| j != i) {
-        return Err(EditError::NameTaken(to.to_string()));
+        return Err(VariableEditError::NameTaken(to.to_string()));
     }
     let mut after = ladder.clone();
     let old = after.variables[i].name.clone();
@@ -127,29 +134,23 @@ fn renamed(name: &str, old: &str, new: &str) -> Option<String> {
         .then(|| format!("{new}.{pin}"))
 }
 
+/// Renames `old` (and its outputs `old.Q`) in `element`: its devices and
+/// operands, and a box's instance.
 fn rename_in(element: &mut Element, old: &str, new: &str) {
     let swap = |name: &mut String| {
         if let Some(n) = renamed(name, old, new) {
             *name = n;
         }
     };
-    match element {
-        Element::Contact { device, .. }
-        | Element::Coil { device, .. }
-        | Element::Pulse { device, .. } => swap(device),
-        Element::Block(b) | Element::OutputBlock(b) => {
-            swap(&mut b.instance);
-            for (_, operand) in b.inputs.iter_mut().chain(b.outputs.iter_mut()) {
-                swap(operand);
-            }
-        }
-        _ => {}
+    element.names_mut(swap);
+    if let Element::Block(b) | Element::OutputBlock(b) = element {
+        swap(&mut b.instance);
     }
 }
 
 /// Refuses `after` where it has a problem at a cell that `before` did
 /// not: a use the change no longer fits.
-fn fits(before: &Ladder, after: &Ladder) -> Result<(), EditError> {
+fn fits(before: &Ladder, after: &Ladder) -> Result<(), VariableEditError> {
     let problems = |l: &Ladder| -> Vec<LadderError> {
         compile(l, MachineId::SoftPlc, Options::default())
             .err()
@@ -160,7 +161,7 @@ fn fits(before: &Ladder, after: &Ladder) -> Result<(), EditError> {
         .into_iter()
         .find(|p| p.pos.is_some() && !old.contains(p))
     {
-        Some(p) => Err(EditError::UseNoLongerFits(p)),
+        Some(p) => Err(VariableEditError::UseNoLongerFits(p)),
         None => Ok(()),
     }
 }
@@ -168,6 +169,7 @@ fn fits(before: &Ladder, after: &Ladder) -> Result<(), EditError> {
 #[cfg(test)]
 mod tests {
     use super::super::{Cursor, Edit, Editor};
+    use super::VariableEdit;
     use crate::ladder::compile::{compile, Options};
     use crate::ladder::edit::{parse_entry, EntryKind};
     use crate::ladder::{Element, Ladder, Variable};
@@ -201,10 +203,10 @@ mod tests {
     fn renaming_a_variable_renames_every_use_and_undo_brings_it_back() {
         let mut editor = Editor::new(counting());
         editor
-            .apply(Edit::RenameVariable {
-                from: "COUNT".into(),
-                to: "parts".into(),
-            })
+            .apply(Edit::Variable(VariableEdit::Rename(
+                "COUNT".into(),
+                "parts".into(),
+            )))
             .expect("renames");
         let l = editor.ladder();
         assert_eq!(l.variables[0].name, "parts");
@@ -221,9 +223,9 @@ mod tests {
     fn a_retype_a_use_no_longer_fits_is_refused_at_its_cell() {
         let mut editor = Editor::new(counting());
         let err = editor
-            .apply(Edit::DeclareVariable {
-                variable: Variable::new("count", "BOOL"),
-            })
+            .apply(Edit::Variable(VariableEdit::Declare(Variable::new(
+                "count", "BOOL",
+            ))))
             .expect_err("ADD on a BOOL");
         let text = err.to_string();
         assert!(
@@ -233,9 +235,9 @@ mod tests {
         assert_eq!(editor.ladder(), &counting(), "nothing changed");
         // A wider integer fits every use.
         editor
-            .apply(Edit::DeclareVariable {
-                variable: Variable::new("count", "DINT"),
-            })
+            .apply(Edit::Variable(VariableEdit::Declare(Variable::new(
+                "count", "DINT",
+            ))))
             .expect("DINT fits");
         assert_eq!(editor.ladder().variables[0].data_type, "DINT");
     }
@@ -245,27 +247,21 @@ mod tests {
         let mut editor = Editor::new(counting());
         let mut bad = Variable::new("2x", "INT");
         assert!(editor
-            .apply(Edit::DeclareVariable {
-                variable: bad.clone()
-            })
+            .apply(Edit::Variable(VariableEdit::Declare(bad.clone())))
             .is_err());
         bad.name = "level".into();
         editor
-            .apply(Edit::DeclareVariable { variable: bad })
+            .apply(Edit::Variable(VariableEdit::Declare(bad)))
             .expect("declares");
-        let taken = editor.apply(Edit::RenameVariable {
-            from: "level".into(),
-            to: "Count".into(),
-        });
+        let taken = editor.apply(Edit::Variable(VariableEdit::Rename(
+            "level".into(),
+            "Count".into(),
+        )));
         assert!(taken.is_err_and(|e| e.to_string().contains("Count")));
-        let used = editor.apply(Edit::RemoveVariable {
-            name: "count".into(),
-        });
+        let used = editor.apply(Edit::Variable(VariableEdit::Remove("count".into())));
         assert!(used.is_err(), "a box reads it");
         editor
-            .apply(Edit::RemoveVariable {
-                name: "level".into(),
-            })
+            .apply(Edit::Variable(VariableEdit::Remove("level".into())))
             .expect("unused");
         assert_eq!(editor.ladder(), &counting());
     }

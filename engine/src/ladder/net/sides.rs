@@ -87,13 +87,14 @@ fn at(index: usize, pos: Pos, message: String) -> Vec<LadderError> {
 /// The box above the input at `pos`, in its column (other inputs of it
 /// between): its row.
 fn box_above(rung: &Rung, pos: Pos) -> Option<usize> {
-    (0..pos.row)
-        .rev()
-        .find_map(|row| match rung.get(Pos::new(row, pos.col)) {
-            Some(Element::BoxInput { .. }) => None,
-            Some(e) if e.block().is_some() => Some(Some(row)),
-            _ => Some(None),
-        })?
+    for row in (0..pos.row).rev() {
+        match rung.get(Pos::new(row, pos.col)) {
+            Some(Element::BoxInput { .. }) => continue,
+            Some(e) if e.block().is_some() => return Some(row),
+            _ => return None,
+        }
+    }
+    None
 }
 
 /// Input `pin` at `pos`: checked against its box, its network read off

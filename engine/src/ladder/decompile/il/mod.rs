@@ -183,9 +183,6 @@ impl<'a> Walk<'a> {
             .unwrap_or_default()
     }
 
-    /// `LD n`: a new rung from a contact, or the output of a box (on the
-    /// power held for it, or on the rail; an output box when the power
-    /// is loaded again after it). The index of the next line.
     /// Refuses to close a rung whose boxes drive nothing (at `step`):
     /// the ladder would lose them, and with them what they compute.
     fn no_box_lost(&self, step: usize) -> Result<(), DecompileError> {
@@ -198,6 +195,9 @@ impl<'a> Walk<'a> {
         Ok(())
     }
 
+    /// `LD n`: a new rung from a contact, or the output of a box (on the
+    /// power held for it, or on the rail; an output box when the power
+    /// is loaded again after it). The index of the next line.
     fn load(&mut self, step: usize, n: &str, negated: bool) -> Result<usize, DecompileError> {
         if self.power.as_deref() == Some(n) {
             return Err(bad(
