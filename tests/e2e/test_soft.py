@@ -118,6 +118,8 @@ def test_declare_rename_and_retype_a_variable(driver, base_url):
     kind.send_keys("BOOL", Keys.TAB)
     wait(driver, lambda: "rung 1" in el(driver, "variables-error").text)
     assert saved_ladder(driver, "soft-plc")["variables"][0]["type"] == "INT"
+    type_field = el(driver, "var-parts").find_element(By.CSS_SELECTOR, '[data-testid="var-type"]')
+    assert type_field.get_attribute("value") == "INT", "the field shows what is declared"
     # A value set from the pane: the program writes 42 only while %IX0.0 is on.
     el(driver, "run").click()
     row = el(driver, "var-parts")

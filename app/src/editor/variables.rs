@@ -42,16 +42,19 @@ pub fn typed_value(text: &str) -> Option<InputValue> {
 pub fn VariablesPane(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let error = RwSignal::new(None::<String>);
-    let edit = move |e: Edit| error.set(ctx.try_edit(e).err());
+    // Whether the edit was made; a refusal is said under the table.
+    let edit = move |e: Edit| {
+        let refused = ctx.try_edit(e).err();
+        let done = refused.is_none();
+        error.set(refused);
+        done
+    };
     let name = RwSignal::new(String::new());
     let kind = RwSignal::new("INT".to_string());
     let declare = move || {
         let n = name.get_untracked();
-        edit(Edit::Variable(VariableEdit::Declare(Variable::new(
-            n.trim(),
-            &kind.get_untracked(),
-        ))));
-        if error.with_untracked(Option::is_none) {
+        let declared = Variable::new(n.trim(), &kind.get_untracked());
+        if edit(Edit::Variable(VariableEdit::Declare(declared))) {
             name.set(String::new());
         }
     };
@@ -92,7 +95,7 @@ pub fn VariablesPane(ctx: LadderCtx) -> impl IntoView {
 fn VariableRow(
     ctx: LadderCtx,
     v: Variable,
-    edit: impl Fn(Edit) + Copy + Send + Sync + 'static,
+    edit: impl Fn(Edit) -> bool + Copy + Send + Sync + 'static,
 ) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let old = v.name.clone();
@@ -101,8 +104,8 @@ fn VariableRow(
         (get(&v), move |e: leptos::ev::Event| {
             let mut changed = v.clone();
             set(&mut changed, event_target_value(&e).trim().to_string());
-            if changed != v {
-                edit(Edit::Variable(VariableEdit::Declare(changed)));
+            if changed != v && !edit(Edit::Variable(VariableEdit::Declare(changed))) {
+                shown_back(&e, &get(&v));
             }
         })
     };
@@ -113,11 +116,9 @@ fn VariableRow(
     let from = old.clone();
     let rename = move |e: leptos::ev::Event| {
         let to = event_target_value(&e);
-        if to.trim() != from {
-            edit(Edit::Variable(VariableEdit::Rename(
-                from.clone(),
-                to.trim().to_string(),
-            )));
+        let rename = VariableEdit::Rename(from.clone(), to.trim().to_string());
+        if to.trim() != from && !edit(Edit::Variable(rename)) {
+            shown_back(&e, &from);
         }
     };
     let gone = old.clone();
@@ -142,7 +143,9 @@ fn VariableRow(
                     </label>
                     <button type="button" data-testid="var-remove" aria-label=move || t().var_remove
                         title=move || t().var_remove
-                        on:click=move |_| edit(Edit::Variable(VariableEdit::Remove(gone.clone())))>"×"</button>
+                        on:click=move |_| {
+                            edit(Edit::Variable(VariableEdit::Remove(gone.clone())));
+                        }>"×"</button>
                 </td>
             </tr>
         </tbody>
@@ -162,6 +165,13 @@ mod tests {
         assert_eq!(typed_value("x"), None);
         assert_eq!(typed_value("inf"), None);
     }
+}
+
+/// The field of event `e` shows `text` again: what the declaration still
+/// holds after a refused change (the row is not drawn anew, since the
+/// variable did not change).
+fn shown_back(e: &leptos::ev::Event, text: &str) {
+    event_target::<web_sys::HtmlInputElement>(e).set_value(text);
 }
 
 /// A variable's value on the machine, and a value to set: an input
