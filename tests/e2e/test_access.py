@@ -11,7 +11,7 @@ from selenium.webdriver.support.ui import Select
 from test_app import ROOT, el, open_fresh, wait
 
 AXE = ROOT / ".tools" / "node_modules" / "axe-core" / "axe.min.js"
-MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc"]
+MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc", "soft-plc"]
 PANES = [None, "tests-open", "projects-open", "find-open", "keys"]
 
 
@@ -35,6 +35,10 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
     open_fresh(driver, base_url)
     Select(el(driver, "machine")).select_by_value(machine)
     wait(driver, lambda: el(driver, "palette"))
+    if machine == "soft-plc":
+        # Its variables pane with rows, and boxes on the ladder.
+        Select(el(driver, "example")).select_by_value("parts")
+        wait(driver, lambda: el(driver, "var-parts"))
     # A case in the Tests pane, so its fields are checked too.
     el(driver, "tests-open").click()
     el(driver, "add-test").click()
