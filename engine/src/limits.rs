@@ -14,6 +14,11 @@ pub const MAX_INPUT_BYTES: usize = 16 << 20;
 /// with thousands of blocks is refused instead of taking minutes.
 pub const MAX_GATE_WORK: usize = 10_000_000;
 
+/// BOOLs (`_h0` …) the PLCopen reader may add on the soft PLC to hold a
+/// network's power where a gate's input is needed twice (the bit
+/// machines take spare relays there): far more than a real file needs.
+pub const MAX_SOFT_HELPERS: usize = 1024;
+
 /// How many PLCopen connectors one wire may pass through, each
 /// continuation feeding the next connector (followed recursively): real
 /// files pass one or two.

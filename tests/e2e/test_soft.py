@@ -10,6 +10,7 @@ from selenium.webdriver.support.ui import Select
 
 from test_app import el, on, open_fresh, severe_console_messages, wait
 from test_ladder import HASHIGO, focus_ladder, keys, place, saved_ladder
+from test_import import ROOT
 
 
 def choose_soft(driver, base_url):
@@ -266,17 +267,44 @@ def test_a_soft_plc_ladder_goes_out_as_json_plcopen_text_and_pictures(driver, ba
     assert "<project" in xml and "level_in" in xml and "CTU" in xml
     assert steps(got["soft-plc-ladder.txt"]) == steps(el(driver, "il-listing").text)
     assert got["soft-plc-ladder.svg"].startswith("<svg") and "GT level" in got["soft-plc-ladder.svg"]
-    # Opened again on the soft PLC, this program has no ladder form in the
-    # page yet: refused whole, saying how it runs; nothing changes.
-    before = saved_ladder(driver, "soft-plc")
+    # Opened again on the soft PLC: the same program, drawn with its boxes
+    # and variables (one undo away from the ladder before).
+    before = steps(el(driver, "il-listing").text)
+    el(driver, "new-ladder").click()
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-parts"]'))
     path = tmp_path / "parts.xml"
     path.write_text(xml)
     el(driver, "open-file").send_keys(str(path))
-    dialog = wait(driver, lambda: el(driver, "import-dialog"))
-    wait(driver, lambda: "hashigo run --machine soft-plc" in dialog.text, message=dialog.text)
-    assert "map it to a data register" not in dialog.text, "no device map on the soft PLC"
-    driver.switch_to.active_element.send_keys(Keys.ESCAPE)
-    assert saved_ladder(driver, "soft-plc") == before
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-parts"]'),
+         message="the project's variables in the pane")
+    assert steps(el(driver, "il-listing").text) == before
+    assert el(driver, "problems").text.strip() == "No problems."
+    assert severe_console_messages(driver) == []
+
+
+WORDS = ROOT / "engine/tests/ladder/fixtures/soft-words.xml"
+
+
+def test_a_plcopen_project_with_word_blocks_opens_drawn_and_runs(driver, base_url, artifacts):
+    """An FBD project of word functions (MUL, INT_TO_DINT, SEL, DIV, GT, a
+    three-input EQ) opens on the soft PLC as boxes with their operands and
+    the project's variables, and runs: the boxes show their values."""
+    choose_soft(driver, base_url)
+    el(driver, "open-file").send_keys(str(WORDS))
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-big"]'),
+         message="the project's variables")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    kinds = [b.text for b in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="box"]')]
+    for kind in ["MUL", "INT_TO_DINT", "SEL", "GT"]:
+        assert any(kind in k for k in kinds), (kind, kinds)
+    el(driver, "run").click()
+    box = el(driver, "soft-analog-value-IW0")
+    box.send_keys(Keys.CONTROL, "a")
+    box.send_keys("40", Keys.ENTER)
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="40 * 3 > 100: alarm")
+    wait(driver, lambda: el(driver, "var-big").find_element(By.CSS_SELECTOR, '[data-testid="var-value"]').text == "40000",
+         message="INT_TO_DINT then MUL, into big")
+    driver.save_screenshot(str(artifacts / "soft-words-opened.png"))
     assert severe_console_messages(driver) == []
 
 

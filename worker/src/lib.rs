@@ -145,21 +145,19 @@ fn import(
                 .map(|e| format!("{file}:{}: {}", e.line, e.error))
                 .collect();
             if soft && root.is_ok() {
-                // The reader draws contacts and coils on names; blocks and
-                // words it maps to the bit machines' devices, which is no
-                // advice for the soft PLC.
-                reply.errors = vec![soft_refusal(file, &reply.errors[0])];
+                reply.errors.push(soft_note(file));
             }
         }
     }
     reply
 }
 
-/// Why a PLCopen project that the soft PLC runs is not drawn in the page
-/// (`first`: the reader's first reason, at its line).
-fn soft_refusal(file: &str, first: &str) -> String {
+/// What to do with a PLCopen project the page cannot draw on the soft
+/// PLC (the reasons above it, each at its line): its own reader may still
+/// run it as written.
+fn soft_note(file: &str) -> String {
     format!(
-        "{file}: the project runs on the soft PLC as written (hashigo run --machine soft-plc --program {file}), but the page draws only its contacts and coils yet (first: {first}); nothing was changed"
+        "nothing was changed; the soft PLC may still run the project as written: hashigo run --machine soft-plc --program {file}"
     )
 }
 

@@ -1,4 +1,5 @@
 use super::*;
+use engine::ladder::edit::{align_outputs, COLUMNS};
 use engine::ladder::plcopen::import_for;
 
 const NAMED: &str = include_str!("../../engine/tests/ladder/fixtures/openplc-named.xml");
@@ -113,8 +114,7 @@ fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole(
     assert!(reply.rows.is_empty(), "no map on the soft PLC");
     let ladder = reply.ladder.expect("drawn");
     assert!(!ladder.rungs.is_empty());
-    // Blocks on words: refused whole, saying how it runs, with no advice
-    // to map to a data register.
+    // Boxes on words: drawn as the soft PLC's boxes, the same ladder.
     let example = engine::examples::EXAMPLES
         .iter()
         .find(|e| e.machine == MachineId::SoftPlc && e.id == "parts")
@@ -122,18 +122,24 @@ fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole(
     let parts = engine::ladder::decompile::decompile_text(MachineId::SoftPlc, example.text, 10)
         .expect("opens");
     let Reply::Export(Ok(xml)) = handle(Request::Export {
-        ladder: parts,
+        ladder: parts.clone(),
         name: "Main".into(),
     }) else {
         panic!("exports");
     };
     let reply = soft(&xml);
+    assert!(reply.errors.is_empty(), "{:?}", reply.errors);
+    let drawn = reply.ladder.expect("drawn");
+    let logic = |l: &engine::ladder::Ladder| l.logic(MachineId::SoftPlc).expect("reads");
+    assert_eq!(logic(&drawn), logic(&align_outputs(&parts, COLUMNS - 1)));
+    assert_eq!(drawn.variables, parts.variables);
+    // A block the soft PLC lacks: refused whole at its line, with what
+    // to do, and no advice to map to a data register.
+    let reply = soft(&xml.replace("typeName=\"CTU\"", "typeName=\"PID_X\""));
     assert!(reply.ladder.is_none());
-    assert_eq!(reply.errors.len(), 1, "{:?}", reply.errors);
-    assert!(reply.errors[0].contains("hashigo run --machine soft-plc"));
-    assert!(
-        !reply.errors[0].contains("data register"),
-        "{}",
-        reply.errors[0]
-    );
+    assert!(reply.errors[0].starts_with("p.xml:"), "{:?}", reply.errors);
+    assert!(reply.errors[0].contains("PID_X"), "{:?}", reply.errors);
+    let last = reply.errors.last().expect("a note");
+    assert!(last.contains("hashigo run --machine soft-plc"), "{last}");
+    assert!(reply.errors.iter().all(|e| !e.contains("data register")));
 }

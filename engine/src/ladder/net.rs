@@ -12,9 +12,9 @@ mod sides;
 
 use std::fmt;
 
-pub use layout::{layout, try_layout, TooLarge};
+pub use layout::{layout, sides_fit, try_layout, TooLarge};
 pub(crate) use reduce::Edge;
-pub use sides::Side;
+pub use sides::{attach_sides, carrier, Side};
 
 use super::element::Element;
 use super::grid::{LadderError, LadderErrorKind, Pos, Rung};
@@ -215,6 +215,16 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
     let outputs = grid.outputs()?;
     let mut points = grid.points()?;
     let (edges, rail, bus) = grid.edges(&mut points, &outputs)?;
+    if rail == bus {
+        // Output boxes on the rail (`Grid::edges`): always powered, as a
+        // wire from the rail into the first of them.
+        return Ok(Some(RungLogic {
+            condition: Net::Leaf(Element::Wire, outputs[0].1),
+            outputs,
+            comment: rung.comment.clone(),
+            sides,
+        }));
+    }
     grid.reaches(&edges, &mut points, rail, bus, &outputs)?;
     let condition = reduce::reduce(edges, points.len(), rail, bus).map_err(|e| {
         let (pos, kind) = match e {
@@ -389,8 +399,14 @@ impl<'a> Grid<'a> {
             });
         }
         // A shorted contact is the cause when the output also sits on the
-        // rail; only without one is the output itself the problem.
-        if bus == rail && !shorted {
+        // rail; only without one is the output itself the problem. Soft
+        // PLC output boxes may stand on it (EN on the rail: they always
+        // run, as IEC has it) when nothing but wires leads to them.
+        let boxes_on_rail = outputs
+            .iter()
+            .all(|(e, _)| matches!(e, Element::OutputBlock(_)))
+            && edges.is_empty();
+        if bus == rail && !shorted && !boxes_on_rail {
             errors.push(self.err(
                 outputs[0].1,
                 LadderErrorKind::Wiring,

@@ -13,6 +13,7 @@ mod plcopen;
 mod robustness;
 mod seed;
 mod share;
+mod soft_drawn;
 mod soft_plcopen;
 mod soft_seeds;
 mod source_map;

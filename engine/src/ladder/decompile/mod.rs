@@ -19,7 +19,7 @@ mod stack;
 
 use super::element::{ContactKind, Element};
 use super::grid::{Ladder, Pos};
-use super::net::{try_layout, Net, RungLogic, TooLarge};
+use super::net::{attach_sides, try_layout, Net, RungLogic, TooLarge};
 use crate::limits::MAX_NESTING;
 use crate::{arduino, avr, io86a, minasec, MachineId};
 use accumulator::{avr_ladder, minasec_ladder};
@@ -76,7 +76,14 @@ impl std::error::Error for DecompileError {}
 /// The rungs drawn on grids, each refused past the rung size limit.
 fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
     let mut ladder = Ladder::default();
+    // The soft PLC's box input networks, compiled as rungs of their own
+    // on their carriers, drawn under their boxes again.
+    let mut rungs = rungs.to_vec();
+    let joined = attach_sides(&mut rungs);
     for (i, logic) in rungs.iter().enumerate() {
+        if joined.contains(&i) {
+            continue;
+        }
         let rung =
             try_layout(logic).map_err(|size| DecompileError::Drawing { rung: i + 1, size })?;
         ladder.rungs.push(rung);

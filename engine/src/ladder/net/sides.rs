@@ -43,9 +43,95 @@ impl Side {
     }
 }
 
-/// The BOOL that carries box `instance`'s input `pin`.
-fn carrier(instance: &str, pin: &str) -> String {
+/// The BOOL that carries box `instance`'s input `pin` (`_c0_R`).
+pub fn carrier(instance: &str, pin: &str) -> String {
     format!("_{}_{}", instance.trim(), pin.to_ascii_uppercase())
+}
+
+/// Joins to their boxes the networks other readers write as rungs of
+/// their own (the compiled IL, a PLCopen export, a PLCopen reader): a
+/// rung whose one output is a coil on a box input's carrier (`_c0_R`,
+/// [`carrier`]) that a box reads at that pin, and that nothing else
+/// writes or reads, becomes that box's [`Side`], where it can be drawn
+/// under the box ([`super::sides_fit`]). Returns the indices of the
+/// rungs joined (for the caller to drop), in order.
+pub fn attach_sides(rungs: &mut [super::RungLogic]) -> Vec<usize> {
+    let mut joined = Vec::new();
+    for i in 0..rungs.len() {
+        let Some((device, pos)) = carrier_coil(&rungs[i]) else {
+            continue;
+        };
+        let uses = |r: &super::RungLogic| {
+            r.leaves().iter().filter(|(e, _)| names(e, &device)).count()
+                + r.outputs.iter().filter(|(e, _)| names(e, &device)).count()
+        };
+        let total: usize = rungs.iter().map(uses).sum();
+        // The coil and the box's operand, nothing else.
+        if total != 2 {
+            continue;
+        }
+        let Some(j) = (0..rungs.len()).find(|&j| j != i && reads_at_pin(&rungs[j], &device)) else {
+            continue;
+        };
+        let side = Side {
+            net: rungs[i].condition.clone(),
+            variable: device,
+            pos,
+        };
+        let mut with = rungs[j].clone();
+        with.sides.push(side);
+        if super::sides_fit(&with) {
+            rungs[j] = with;
+            joined.push(i);
+        }
+    }
+    joined
+}
+
+/// The carrier a rung's only output, a plain coil, writes.
+fn carrier_coil(r: &super::RungLogic) -> Option<(String, Pos)> {
+    match r.outputs.as_slice() {
+        [(Element::Coil { kind, device }, pos)]
+            if *kind == crate::ladder::element::CoilKind::Normal
+                && device.starts_with('_')
+                && r.sides.is_empty() =>
+        {
+            Some((device.trim().to_string(), *pos))
+        }
+        _ => None,
+    }
+}
+
+/// Whether element `e` names `device` (a contact, a coil, a box operand).
+fn names(e: &Element, device: &str) -> bool {
+    let same = |d: &str| d.trim().eq_ignore_ascii_case(device);
+    match e.block() {
+        Some(b) => b.inputs.iter().chain(&b.outputs).any(|(_, o)| same(o)),
+        None => e.read_device().or(e.written_device()).is_some_and(same),
+    }
+}
+
+/// Whether a box of rung `r` reads `device` as its carrier: at the
+/// Boolean input it is named for, one a network may feed.
+fn reads_at_pin(r: &super::RungLogic, device: &str) -> bool {
+    let boxes = r
+        .condition
+        .leaves()
+        .into_iter()
+        .map(|(e, _)| e)
+        .chain(r.outputs.iter().map(|(e, _)| e))
+        .filter_map(Element::block);
+    boxes.into_iter().any(|b| {
+        let kind = b.kind();
+        pins::inputs(&kind)
+            .iter()
+            .skip(1)
+            .filter(|(_, t)| *t == DataType::Bool)
+            .any(|(pin, _)| {
+                carrier(&b.instance, pin).eq_ignore_ascii_case(device)
+                    && b.input(pin).is_some_and(|o| o.eq_ignore_ascii_case(device))
+            })
+    })
 }
 
 /// The rung without its box inputs' networks, each box given the

@@ -138,3 +138,14 @@ fn avr_located(area: char, n: u32, address: &str) -> Result<String, AddressError
 pub(super) const AVR_INPUTS: std::ops::Range<u8> = 4..5;
 pub(super) const AVR_OUTPUTS: std::ops::Range<u8> = 5..6;
 pub(super) const AVR_RELAYS: std::ops::Range<u8> = 6..16;
+
+/// Whether variable `name` is what Hashigo's PLCopen export declares for
+/// a soft PLC ladder's bare `address` (`IX0_0` at `%IX0.0`): read back
+/// as the address, so a ladder exported and opened again is the same.
+pub(super) fn stands_for(name: &str, address: &str) -> bool {
+    crate::softplc::Address::parse(address.trim()).is_ok_and(|a| {
+        let written = a.to_string();
+        written.trim_start_matches('%').replace('.', "_") == name.trim()
+            && written == address.trim()
+    })
+}

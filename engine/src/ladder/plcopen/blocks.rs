@@ -140,7 +140,7 @@ impl Body {
     /// Whether EN connections `refs` always carry power: from the rail, a
     /// literal TRUE, or another block's ENO whose own EN always does
     /// (OpenPLC Editor chains EN to ENO); `depth` bounds the chain.
-    fn always_enabled(&self, refs: &[PinRef], depth: usize) -> bool {
+    pub(super) fn always_enabled(&self, refs: &[PinRef], depth: usize) -> bool {
         depth < 64
             && refs.iter().all(|PinRef { id: r, pin }| {
                 self.rails.contains(r)

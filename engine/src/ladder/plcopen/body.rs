@@ -67,12 +67,43 @@ pub(super) struct Body {
     pub(super) compares: Vec<CompareCopy>,
     /// The machine the body is read for.
     pub(super) machine: Option<MachineId>,
+    /// Soft PLC: each block's type (upper case), by localId.
+    pub(super) block_types: HashMap<String, String>,
+    /// Soft PLC: the outVariables fed from a block's pin.
+    pub(super) block_outs: Vec<BlockOut>,
+    /// Soft PLC: the (block, pin) other elements take power from.
+    pub(super) wired_pins: HashSet<(String, String)>,
+    /// Soft PLC: the negated inVariables, by localId.
+    pub(super) negated_variables: HashSet<String>,
+    /// Soft PLC: the (block, pin) another box's data input reads, and
+    /// the variables made to carry them ([`Temp`]).
+    pub(super) chained: HashSet<(String, String)>,
+    pub(super) temps: Vec<Temp>,
     /// What is worth saying but does not stop the import.
     pub(super) warnings: Vec<Located<String>>,
     pub(super) errors: Errors,
 }
 
 pub(super) const RAIL: usize = 0;
+
+/// An outVariable fed from a block's pin: the block, the pin (upper
+/// case) and the variable.
+#[derive(Clone, Debug)]
+pub(super) struct BlockOut {
+    pub(super) block: String,
+    pub(super) pin: String,
+    pub(super) variable: String,
+}
+
+/// A variable made to carry one box's output into another's input: its
+/// name, and the box output it holds (kind, pin, the box's operands).
+#[derive(Clone, Debug)]
+pub(super) struct Temp {
+    pub(super) name: String,
+    pub(super) kind: String,
+    pub(super) pin: String,
+    pub(super) inputs: Vec<(String, String)>,
+}
 
 /// A value read from the file and the line it was read at.
 #[derive(Clone, Debug, Default)]

@@ -152,6 +152,19 @@ pub enum ImportError {
     Soft(super::soft::error::SoftError),
     /// A block type Hashigo does not import.
     UnsupportedBlock(String),
+    /// A block the soft PLC's page cannot draw as a box (the block, why).
+    SoftBox(String, super::BoxProblem),
+    /// A declaration the soft PLC ladder's variables cannot hold.
+    SoftVariable(crate::ladder::variables::VariableError),
+    /// A name declared twice with different types.
+    SoftVariableTwice {
+        /// The name.
+        name: String,
+        /// The line of its first declaration.
+        first: usize,
+        /// The first type and this one.
+        types: (String, String),
+    },
     /// A block that calls one of the project's own POUs (its name and
     /// the language of its body).
     ProjectBlock(String, String),
@@ -286,6 +299,13 @@ impl fmt::Display for ImportError {
                 shown(ty).trim_matches('"'),
                 super::kinds::names(false),
                 super::kinds::names(true)
+            ),
+            E::SoftBox(what, problem) => write!(f, "{what}: {problem}"),
+            E::SoftVariable(e) => write!(f, "variable {e}"),
+            E::SoftVariableTwice { name, first, types } => write!(
+                f,
+                "{name} is declared as {} here and as {} at line {first}: the ladder's variables are one set",
+                types.1, types.0
             ),
             E::ProjectBlock(name, language) => write!(
                 f,

@@ -13,7 +13,7 @@ use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Ladder;
-use crate::ladder::net::try_layout;
+use crate::ladder::net::{attach_sides, try_layout, RungLogic};
 use crate::limits::MAX_RUNGS;
 use crate::MachineId;
 
@@ -80,6 +80,7 @@ pub fn import_pou(
         None => Vec::new(),
     };
     let mut helpers = Vec::new();
+    let mut temps = Vec::new();
     // The project's own POUs a block may call: (name, language).
     let own_blocks: HashMap<String, (String, String)> = pous
         .iter()
@@ -91,19 +92,24 @@ pub fn import_pou(
             ))
         })
         .collect();
-    let mut ladder = Ladder::default();
+    let mut ladder = Ladder {
+        variables: super::soft_vars::declared_for(machine, &root, &chosen)?,
+        ..Ladder::default()
+    };
     let mut errors = Vec::new();
+    let mut carriers: Vec<String> = Vec::new();
     for ld in bodies {
-        let read = Body::read(ld, &names, &own_blocks).and_then(|mut b| {
+        let read = Body::read(ld, &names, &own_blocks, machine).and_then(|mut b| {
             b.spares = std::mem::take(&mut spares);
             let rungs = b.rungs(machine, &mut warnings);
             spares = std::mem::take(&mut b.spares);
             helpers.append(&mut b.helpers);
+            temps.append(&mut b.temps);
             rungs
         });
         match read {
             Ok(rungs) => {
-                for (logic, line) in rungs {
+                for (logic, line) in joined_sides(rungs, &mut carriers) {
                     match try_layout(&logic) {
                         Ok(rung) => ladder.rungs.push(rung),
                         Err(m) => errors.push(Located::new(line, ImportError::Drawing(m))),
@@ -119,6 +125,7 @@ pub fn import_pou(
     if !errors.is_empty() {
         return Err(errors);
     }
+    super::soft_vars::settle(&mut ladder.variables, &carriers, &temps, &names);
     name_devices(&mut ladder, &names, helpers, machine, &mut warnings);
     crate::sort::by_key(&mut warnings, |w| w.line);
     Ok(Imported {
@@ -126,6 +133,26 @@ pub fn import_pou(
         unused_map_entries: names.unused_map_lines(),
         warnings,
     })
+}
+
+/// The rungs with the networks that feed soft PLC boxes' other inputs
+/// joined to their boxes ([`attach_sides`]); the BOOLs that carried them
+/// go to `carriers` (upper case).
+fn joined_sides(
+    rungs: Vec<(RungLogic, usize)>,
+    carriers: &mut Vec<String>,
+) -> Vec<(RungLogic, usize)> {
+    let (mut logics, lines): (Vec<RungLogic>, Vec<usize>) = rungs.into_iter().unzip();
+    let joined = attach_sides(&mut logics);
+    let sides = logics.iter().flat_map(|l| l.sides.iter());
+    carriers.extend(sides.map(|s| s.variable.to_ascii_uppercase()));
+    logics
+        .into_iter()
+        .zip(lines)
+        .enumerate()
+        .filter(|(i, _)| !joined.contains(i))
+        .map(|(_, r)| r)
+        .collect()
 }
 
 /// The root is a PLCopen project in a namespace this reader knows.
@@ -206,8 +233,10 @@ fn name_devices(
         ));
         ladder.device_comments.entry(relay).or_insert(what);
     }
-    // No machine here keeps a power-up value for a bit device.
-    for (name, device, value, line) in names.starting_on() {
+    // No machine here keeps a power-up value for a bit device (the soft
+    // PLC's variables keep theirs).
+    let bits_only = machine != Some(MachineId::SoftPlc);
+    for (name, device, value, line) in names.starting_on().into_iter().filter(|_| bits_only) {
         if used.contains(&device) {
             let machine = machine.map_or("the machine", MachineId::name);
             warnings.push(Located::new(

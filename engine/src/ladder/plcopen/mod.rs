@@ -25,11 +25,16 @@ mod placing;
 mod read;
 mod rungs;
 pub mod soft;
+mod soft_boxes;
+mod soft_index;
+mod soft_rungs;
+mod soft_vars;
 
 pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
 pub use import::{drawn_body, import, import_for, import_mapped, import_pou, pou_named, Imported};
+pub use soft_boxes::BoxProblem;
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";

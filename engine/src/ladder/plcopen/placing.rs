@@ -25,7 +25,8 @@ impl Body {
             .chain(self.ordered.iter().map(String::as_str))
             .map(|d| (d, (Vec::new(), Vec::new())))
             .collect();
-        if touches.is_empty() {
+        let carried = self.carried_first(rungs);
+        if touches.is_empty() && carried.is_empty() {
             return;
         }
         for (i, (_, r, _)) in rungs.iter().enumerate() {
@@ -78,6 +79,7 @@ impl Body {
             .into_values()
             .chain(wins.into_values())
             .chain(compared)
+            .chain(carried)
             .collect();
         let order = super::order::writers_first(rungs.len(), &constraints);
         let mut taken: Vec<Option<(Pos, RungLogic, usize)>> =
@@ -131,6 +133,40 @@ impl Body {
                 r.comment.push_str(&text);
             }
         }
+    }
+}
+
+impl Body {
+    /// Soft PLC: for each variable carrying a box's output into another
+    /// box, the rungs writing it (to run first) and those reading it.
+    fn carried_first(&self, rungs: &[(Pos, RungLogic, usize)]) -> Vec<(Vec<usize>, Vec<usize>)> {
+        let boxes = |r: &RungLogic| -> Vec<crate::ladder::BlockCall> {
+            r.leaves()
+                .into_iter()
+                .map(|(e, _)| e)
+                .chain(r.outputs.iter().map(|(e, _)| e))
+                .filter_map(Element::block)
+                .cloned()
+                .collect()
+        };
+        let calls: Vec<Vec<crate::ladder::BlockCall>> =
+            rungs.iter().map(|(_, r, _)| boxes(r)).collect();
+        let named = |pins: &[(String, String)], name: &str| pins.iter().any(|(_, v)| v == name);
+        self.temps
+            .iter()
+            .map(|t| {
+                let (mut writers, mut readers) = (Vec::new(), Vec::new());
+                for (i, calls) in calls.iter().enumerate() {
+                    if calls.iter().any(|c| named(&c.outputs, &t.name)) {
+                        writers.push(i);
+                    }
+                    if calls.iter().any(|c| named(&c.inputs, &t.name)) {
+                        readers.push(i);
+                    }
+                }
+                (writers, readers)
+            })
+            .collect()
     }
 }
 

@@ -15,15 +15,18 @@ use crate::error::Located;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
+use crate::MachineId;
 
 impl Body {
     pub(super) fn read(
         ld: &Node,
         names: &Names,
         own_blocks: &HashMap<String, (String, String)>,
+        machine: Option<MachineId>,
     ) -> Result<Body, Errors> {
         let mut b = Body {
             parent: vec![RAIL],
+            machine,
             ..Body::default()
         };
         for n in &ld.children {
@@ -59,6 +62,9 @@ impl Body {
                 },
             );
             b.index(id, n, names);
+            if b.soft() {
+                b.index_soft(id, n);
+            }
         }
         for (seq, n) in ld.children.iter().enumerate() {
             if let Err(m) = b.element(n, seq, names, own_blocks) {
@@ -282,6 +288,9 @@ impl Body {
                 if let Some((name, language)) = own_blocks.get(&ty) {
                     return Err(ImportError::ProjectBlock(name.clone(), language.clone()));
                 }
+                if self.soft() && !self.is_gate(n, &ty, names) {
+                    return self.soft_block(n, &id, pos, (&ty, names));
+                }
                 let kind = BlockKind::parse(&ty).ok_or(ImportError::UnsupportedBlock(ty))?;
                 blocks::plain_pins(n, kind)?;
                 self.block(n, &id, pos, names, kind)?
@@ -381,10 +390,12 @@ impl Body {
             .and_then(|c| c.attr("formalParameter"))
             .unwrap_or_default()
             .to_ascii_uppercase();
-        let block = from
-            .and_then(|c| c.attr("refLocalId"))
-            .and_then(|r| self.kinds.get(r))
-            .is_some_and(|k| k.value == "block");
+        let block_id = from.and_then(|c| c.attr("refLocalId")).unwrap_or_default();
+        let block = self.kinds.get(block_id).is_some_and(|k| k.value == "block");
+        if block && self.soft() && self.is_box_output(block_id, &pin) {
+            // The box writes it (`soft_block`).
+            return Ok(());
+        }
         if block && matches!(pin.as_str(), "ET" | "CV") {
             self.warnings.push(Located::new(
                 n.line,

@@ -114,6 +114,9 @@ impl Body {
                 .or_default()
                 .push((out.element, out.pos, out.line));
         }
+        if self.soft() {
+            self.boxes_on_rail(&mut groups, (edges, lines));
+        }
         let mut buses = Vec::new();
         let mut moved = Vec::new();
         for (bus, outs) in &mut groups {
@@ -246,8 +249,9 @@ impl Body {
                 );
                 return Ok(true);
             }
-            (Element::CounterCoil { .. }, true) => {
-                self.output(a, e.clone(), *pos, line);
+            // A soft PLC box whose power goes on to nothing: an output box.
+            (Element::CounterCoil { .. } | Element::Block(_), true) => {
+                self.output(a, super::soft_boxes::as_output(e), *pos, line);
                 return Ok(true);
             }
             (Element::CounterCoil { device, .. }, false) if env.timer_coils => {
@@ -267,7 +271,7 @@ impl Body {
                 let wired = ImportError::CounterQWired(device.clone());
                 return Err(vec![Located::new(line, wired)]);
             }
-            (Element::Timer { .. }, _) if env.off_main.contains(&index) => {
+            (Element::Timer { .. } | Element::Block(_), _) if env.off_main.contains(&index) => {
                 self.timer_through_relay((a, b), (e, *pos, line), net, (edges, lines))?;
                 return Ok(true);
             }
@@ -355,6 +359,11 @@ impl Body {
     /// `machine` takes in-line but that would not stand on its rung's main
     /// line ([`super::main_line`]).
     fn boxes_off_main_line(&mut self, machine: Option<MachineId>) -> HashSet<usize> {
+        if self.soft() {
+            // The soft PLC takes boxes anywhere; one feeding several
+            // rungs gets a rung of its own.
+            return self.shared_boxes().into_iter().collect();
+        }
         if !machine.is_some_and(|m| capabilities(m).inline_boxes) {
             return HashSet::new();
         }
