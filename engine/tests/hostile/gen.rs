@@ -195,3 +195,58 @@ pub fn plcopen_timers(n: usize) -> String {
         )
     })
 }
+
+/// `n` rungs, each X00 counting into a CTU of its own (`c<i>`, PV 3)
+/// whose Q lights Y00, its R fed by a contact of X01: on the soft PLC,
+/// each reset a network under its box.
+pub fn plcopen_counters(n: usize) -> String {
+    plcopen_block_rungs(n, |[c, t, r, k], y| {
+        format!(
+            r#"{}
+<contact localId="{r}"><position x="10" y="{}"/>{}<variable>X01</variable></contact>
+<inVariable localId="{}"><position x="20" y="{y}"/><connectionPointOut/><expression>3</expression></inVariable>
+<block localId="{t}" typeName="CTU" instanceName="c{t}"><position x="30" y="{y}"/><inputVariables><variable formalParameter="CU">{}</variable><variable formalParameter="R">{}</variable><variable formalParameter="PV">{}</variable></inputVariables><outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables></block>
+{}"#,
+            rail_contact(c, y),
+            y + 5,
+            conn(&[1]),
+            t + 100_000,
+            conn(&[c]),
+            conn(&[r]),
+            conn(&[t + 100_000]),
+            coil_after(k, y, t, "Q")
+        )
+    })
+}
+
+/// A chain of `n` MUL boxes with open EN, each taking the one before's
+/// OUT (the first a variable) times 1, the last into variable `out`.
+pub fn plcopen_box_chain(n: usize) -> String {
+    let mut s = String::from(HEAD);
+    let _ = writeln!(
+        s,
+        r#"<inVariable localId="2"><position x="0" y="0"/><connectionPointOut/><expression>level</expression></inVariable><inVariable localId="3"><position x="0" y="0"/><connectionPointOut/><expression>INT#1</expression></inVariable>"#
+    );
+    for i in 0..n {
+        let id = 10 + i;
+        let from = if i == 0 {
+            r#"<connection refLocalId="2"/>"#.to_string()
+        } else {
+            format!(
+                r#"<connection refLocalId="{}" formalParameter="OUT"/>"#,
+                id - 1
+            )
+        };
+        let _ = writeln!(
+            s,
+            r#"<block localId="{id}" typeName="MUL"><position x="{}" y="0"/><inputVariables><variable formalParameter="IN1"><connectionPointIn>{from}</connectionPointIn></variable><variable formalParameter="IN2"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable></inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#,
+            10 * i
+        );
+    }
+    let _ = writeln!(
+        s,
+        r#"<outVariable localId="5"><position x="0" y="0"/><connectionPointIn><connection refLocalId="{}" formalParameter="OUT"/></connectionPointIn><expression>out</expression></outVariable>"#,
+        9 + n
+    );
+    s + TAIL
+}

@@ -302,3 +302,33 @@ fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
         "{errors:?}"
     );
 }
+
+#[test]
+fn thousands_of_boxes_are_drawn_on_the_soft_plc_in_linear_work() {
+    use engine::ladder::plcopen::import_for;
+    let soft = Some(engine::MachineId::SoftPlc);
+    let started = std::time::Instant::now();
+    // Every counter's reset network joined to its own box.
+    let ladder = import_for(&crate::gen::plcopen_counters(3_000), soft)
+        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
+    assert_eq!(ladder.rungs.len(), 3_000);
+    assert!(ladder.rungs.iter().all(|r| r
+        .elements()
+        .any(|(_, e)| matches!(e, Element::BoxInput { .. }))));
+    // A chain of 3 000 boxes, each into the next through a variable of
+    // its own, typed from the first's INT operand, the writer first.
+    let ladder = import_for(&crate::gen::plcopen_box_chain(3_000), soft)
+        .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
+    assert_eq!(ladder.rungs.len(), 3_000);
+    let carried: Vec<_> = ladder
+        .variables
+        .iter()
+        .filter(|v| v.name.starts_with("_MUL"))
+        .collect();
+    assert_eq!(carried.len(), 2_999);
+    // The first is typed from INT#1; those after it from the one before,
+    // past the depth followed back (DINT beyond it, said by the compiler).
+    assert_eq!(carried[0].data_type, "INT");
+    // Not a speed test: a search of the ladder per box would take minutes.
+    assert!(started.elapsed().as_secs() < 60);
+}

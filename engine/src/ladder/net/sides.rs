@@ -10,6 +10,8 @@
 //! side network keeps to its rows: a link joining it to the rows above
 //! (the box's own power) is refused at the link's cell.
 
+use std::collections::HashMap;
+
 use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::{LadderError, LadderErrorKind, Link, Pos, Rung};
@@ -56,23 +58,34 @@ pub fn carrier(instance: &str, pin: &str) -> String {
 /// under the box ([`super::sides_fit`]). Returns the indices of the
 /// rungs joined (for the caller to drop), in order.
 pub fn attach_sides(rungs: &mut [super::RungLogic]) -> Vec<usize> {
+    // Each name's uses, and the rung whose box reads each carrier: one
+    // pass over the ladder.
+    let mut uses: HashMap<String, usize> = HashMap::new();
+    let mut readers: HashMap<String, usize> = HashMap::new();
+    for (j, r) in rungs.iter().enumerate() {
+        let elements = r.leaves().into_iter().map(|(e, _)| e);
+        for e in elements.chain(r.outputs.iter().map(|(e, _)| e)) {
+            for name in names(e) {
+                *uses.entry(name.to_ascii_uppercase()).or_default() += 1;
+            }
+            for carried in e.block().map(carried_inputs).unwrap_or_default() {
+                readers.insert(carried, j);
+            }
+        }
+    }
     let mut joined = Vec::new();
     for i in 0..rungs.len() {
         let Some((device, pos)) = carrier_coil(&rungs[i]) else {
             continue;
         };
-        let uses = |r: &super::RungLogic| {
-            r.leaves().iter().filter(|(e, _)| names(e, &device)).count()
-                + r.outputs.iter().filter(|(e, _)| names(e, &device)).count()
-        };
-        let total: usize = rungs.iter().map(uses).sum();
+        let key = device.to_ascii_uppercase();
         // The coil and the box's operand, nothing else.
-        if total != 2 {
+        let (Some(2), Some(&j)) = (uses.get(&key).copied(), readers.get(&key)) else {
+            continue;
+        };
+        if j == i {
             continue;
         }
-        let Some(j) = (0..rungs.len()).find(|&j| j != i && reads_at_pin(&rungs[j], &device)) else {
-            continue;
-        };
         let side = Side {
             net: rungs[i].condition.clone(),
             variable: device,
@@ -102,36 +115,34 @@ fn carrier_coil(r: &super::RungLogic) -> Option<(String, Pos)> {
     }
 }
 
-/// Whether element `e` names `device` (a contact, a coil, a box operand).
-fn names(e: &Element, device: &str) -> bool {
-    let same = |d: &str| d.trim().eq_ignore_ascii_case(device);
+/// The names element `e` reads or writes (a contact's, a coil's, a
+/// box's operands).
+fn names(e: &Element) -> Vec<&str> {
     match e.block() {
-        Some(b) => b.inputs.iter().chain(&b.outputs).any(|(_, o)| same(o)),
-        None => e.read_device().or(e.written_device()).is_some_and(same),
+        Some(b) => b
+            .inputs
+            .iter()
+            .chain(&b.outputs)
+            .map(|(_, o)| o.trim())
+            .collect(),
+        None => e.read_device().or(e.written_device()).into_iter().collect(),
     }
 }
 
-/// Whether a box of rung `r` reads `device` as its carrier: at the
-/// Boolean input it is named for, one a network may feed.
-fn reads_at_pin(r: &super::RungLogic, device: &str) -> bool {
-    let boxes = r
-        .condition
-        .leaves()
-        .into_iter()
-        .map(|(e, _)| e)
-        .chain(r.outputs.iter().map(|(e, _)| e))
-        .filter_map(Element::block);
-    boxes.into_iter().any(|b| {
-        let kind = b.kind();
-        pins::inputs(&kind)
-            .iter()
-            .skip(1)
-            .filter(|(_, t)| *t == DataType::Bool)
-            .any(|(pin, _)| {
-                carrier(&b.instance, pin).eq_ignore_ascii_case(device)
-                    && b.input(pin).is_some_and(|o| o.eq_ignore_ascii_case(device))
-            })
-    })
+/// The carriers box `b` reads (upper case): its Boolean inputs a network
+/// may feed, given the BOOL named for that input ([`carrier`]).
+fn carried_inputs(b: &crate::ladder::BlockCall) -> Vec<String> {
+    pins::inputs(&b.kind())
+        .iter()
+        .skip(1)
+        .filter(|(_, t)| *t == DataType::Bool)
+        .filter_map(|(pin, _)| {
+            let carrier = carrier(&b.instance, pin);
+            b.input(pin)
+                .filter(|o| o.eq_ignore_ascii_case(&carrier))
+                .map(|_| carrier.to_ascii_uppercase())
+        })
+        .collect()
 }
 
 /// The rung without its box inputs' networks, each box given the

@@ -11,6 +11,8 @@ use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::{Edge, Net};
+use crate::ladder::variables::Variable;
+use crate::limits::MAX_NESTING;
 use crate::softplc::data::DataType;
 use crate::softplc::pins;
 
@@ -88,59 +90,90 @@ impl Body {
         }
     }
 }
+
 /// The variables `temps` carry, each declared with the type its box
 /// gives: a conversion's target, a comparison's BOOL, a block's output
 /// type, else its first typed operand's (a declared variable, a typed
 /// literal, another such variable); an untyped number's DINT otherwise,
 /// which the soft PLC's check of the compiled ladder then holds to.
-pub(super) fn temp_variables(
-    temps: &[Temp],
-    names: &Names,
-) -> Vec<crate::ladder::variables::Variable> {
-    temps
-        .iter()
-        .map(|t| {
-            let ty = temp_type(t, temps, names, 0);
-            let mut v = crate::ladder::variables::Variable::new(&t.name, ty.name());
+/// Each is worked out once (a chain of boxes is linear work).
+pub(super) fn temp_variables(temps: &[Temp], names: &Names) -> Vec<Variable> {
+    let mut typing = Typing {
+        temps,
+        names,
+        by_name: temps
+            .iter()
+            .enumerate()
+            .map(|(k, t)| (t.name.as_str(), k))
+            .collect(),
+        known: vec![None; temps.len()],
+    };
+    (0..temps.len())
+        .map(|k| {
+            let t = &temps[k];
+            let mut v = Variable::new(&t.name, typing.of(k, 0).name());
             v.comment = format!("{}'s {} (carried between boxes)", t.kind, t.pin);
             v
         })
         .collect()
 }
 
-fn temp_type(t: &Temp, temps: &[Temp], names: &Names, depth: usize) -> DataType {
-    if let Some(to) = t
-        .kind
-        .split_once("_TO_")
-        .and_then(|(_, to)| DataType::from_name(to))
-    {
-        return to;
+/// The carried variables' types as they are worked out.
+struct Typing<'a> {
+    temps: &'a [Temp],
+    names: &'a Names,
+    by_name: HashMap<&'a str, usize>,
+    known: Vec<Option<DataType>>,
+}
+
+impl Typing<'_> {
+    /// The type of carried variable `k` (`depth`: boxes followed back).
+    fn of(&mut self, k: usize, depth: usize) -> DataType {
+        if let Some(t) = self.known[k] {
+            return t;
+        }
+        let t = self.work_out(k, depth);
+        self.known[k] = Some(t);
+        t
     }
-    match Shape::of(&t.kind) {
-        Some(Shape::Compare) => return DataType::Bool,
-        Some(Shape::FunctionBlock) => {
-            if let Some((_, ty)) = pins::outputs(&t.kind)
-                .into_iter()
-                .find(|(p, _)| *p == t.pin)
-            {
+
+    fn work_out(&mut self, k: usize, depth: usize) -> DataType {
+        let (temps, names) = (self.temps, self.names);
+        let t = &temps[k];
+        if let Some(to) = t
+            .kind
+            .split_once("_TO_")
+            .and_then(|(_, to)| DataType::from_name(to))
+        {
+            return to;
+        }
+        match Shape::of(&t.kind) {
+            Some(Shape::Compare) => return DataType::Bool,
+            Some(Shape::FunctionBlock) => {
+                let outputs = pins::outputs(&t.kind);
+                if let Some((_, ty)) = outputs.into_iter().find(|(p, _)| *p == t.pin) {
+                    return ty;
+                }
+            }
+            _ => {}
+        }
+        for (pin, operand) in &t.inputs {
+            if matches!(pin.as_str(), "G" | "N") {
+                continue;
+            }
+            let operand = operand.trim();
+            let found = match self.by_name.get(operand).copied() {
+                Some(other) if depth < MAX_NESTING => Some(self.of(other, depth + 1)),
+                Some(_) => None,
+                None => names
+                    .declared_type(operand)
+                    .and_then(DataType::from_name)
+                    .or_else(|| crate::softplc::literal_type(operand).ok()?.1),
+            };
+            if let Some(ty) = found {
                 return ty;
             }
         }
-        _ => {}
+        DataType::Dint
     }
-    let typed = |operand: &str| -> Option<DataType> {
-        if let Some(other) = temps.iter().find(|o| o.name == operand) {
-            return (depth < crate::limits::MAX_NESTING)
-                .then(|| temp_type(other, temps, names, depth + 1));
-        }
-        if let Some(ty) = names.declared_type(operand).and_then(DataType::from_name) {
-            return Some(ty);
-        }
-        crate::softplc::literal_type(operand).ok()?.1
-    };
-    t.inputs
-        .iter()
-        .filter(|(pin, _)| !matches!(pin.as_str(), "G" | "N"))
-        .find_map(|(_, o)| typed(o.trim()))
-        .unwrap_or(DataType::Dint)
 }
