@@ -304,6 +304,15 @@ def test_a_plcopen_project_with_word_blocks_opens_drawn_and_runs(driver, base_ur
     wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="40 * 3 > 100: alarm")
     wait(driver, lambda: el(driver, "var-big").find_element(By.CSS_SELECTOR, '[data-testid="var-value"]').text == "40000",
          message="INT_TO_DINT then MUL, into big")
+    # The first rung: MUL with its EN on the rail, always powered; Why?
+    # on it says so.
+    mul = el(driver, "cell-0-0-9")
+    assert "MUL" in mul.text and "level" in mul.text, mul.text
+    assert el(driver, "cell-0-0-0").get_attribute("data-kind") == "hwire"
+    wait(driver, lambda: "=120" in box_values(driver, "cell-0-0-9"), message="40 * 3 live")
+    mul.click()
+    driver.switch_to.active_element.send_keys("w")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == "1")
     driver.save_screenshot(str(artifacts / "soft-words-opened.png"))
     assert severe_console_messages(driver) == []
 
