@@ -13,6 +13,7 @@ pub mod examples;
 pub mod headless;
 pub mod io86a;
 pub mod ladder;
+pub mod ldmicro;
 pub mod limits;
 pub mod machine_id;
 pub mod machines;

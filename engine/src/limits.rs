@@ -27,6 +27,11 @@ pub const MAX_CONNECTOR_CHAIN: usize = 64;
 /// How deeply PLCopen XML elements may nest. Real files nest about 12 deep.
 pub const MAX_XML_DEPTH: usize = 256;
 
+/// Entries of one LDmicro table (a look-up table's values, a
+/// piecewise-linear table's points, a string's characters, a shift
+/// register's stages): LDmicro's own editor takes a few dozen.
+pub const MAX_LD_TABLE: usize = 1024;
+
 /// Rungs in one ladder.
 pub const MAX_RUNGS: usize = 10_000;
 

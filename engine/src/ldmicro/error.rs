@@ -1,0 +1,102 @@
+//! What can be wrong with an `.ld` file, each reported at its line
+//! (`error: FILE:LINE: …`).
+
+use std::fmt;
+
+/// Why a line of an `.ld` file is refused.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LdError {
+    /// The file does not start with `LDmicro` (what it starts with).
+    NotLdmicro(String),
+    /// No `PROGRAM` line.
+    NoProgram,
+    /// A line between rungs that is not `RUNG` (the line).
+    NotARung(String),
+    /// A keyword LDmicro has no element for.
+    UnknownElement(String),
+    /// An element with arguments of the wrong number or form (the element,
+    /// the forms it takes).
+    Arguments {
+        element: String,
+        takes: &'static str,
+    },
+    /// A number that is none (the element, the text).
+    BadNumber { element: String, text: String },
+    /// A table whose entries are not as many as it says (the element,
+    /// how many it says, how many there are).
+    TableCount {
+        element: String,
+        says: usize,
+        has: usize,
+    },
+    /// The file ends inside a rung, a series or a parallel group.
+    Unclosed(&'static str),
+    /// `PARALLEL` directly inside `PARALLEL` (LDmicro puts a `SERIES`
+    /// between).
+    ParallelInParallel,
+    /// A group with nothing in it.
+    Empty(&'static str),
+    /// Groups nested deeper than [`crate::limits::MAX_NESTING`].
+    TooDeep,
+    /// More rungs than [`crate::limits::MAX_RUNGS`].
+    TooManyRungs,
+    /// A table longer than [`crate::limits::MAX_LD_TABLE`] (the element).
+    TableTooLong(String),
+    /// A line of a list that does not read (the list, the line).
+    BadListLine { list: &'static str, text: String },
+}
+
+impl fmt::Display for LdError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use crate::limits::{MAX_LD_TABLE, MAX_NESTING, MAX_RUNGS};
+        match self {
+            LdError::NotLdmicro(first) => write!(
+                f,
+                "not an LDmicro file: it starts with {} where LDmicro writes LDmicro0.1 or LDmicro0.2",
+                crate::shown(first)
+            ),
+            LdError::NoProgram => f.write_str("no PROGRAM line: the file has no rungs"),
+            LdError::NotARung(text) => {
+                write!(f, "{} here: a rung starts with RUNG", crate::shown(text))
+            }
+            LdError::UnknownElement(k) => write!(
+                f,
+                "unknown element {}: LDmicro has no element of that name (docs/ldmicro.md lists them)",
+                crate::shown(k)
+            ),
+            LdError::Arguments { element, takes } => {
+                write!(f, "{element} takes {takes}")
+            }
+            LdError::BadNumber { element, text } => {
+                write!(f, "{element}: {} is not a number", crate::shown(text))
+            }
+            LdError::TableCount { element, says, has } => write!(
+                f,
+                "{element} says {says} entries but has {has}"
+            ),
+            LdError::Unclosed(what) => {
+                write!(f, "the file ends inside this {what}: it needs its END")
+            }
+            LdError::ParallelInParallel => f.write_str(
+                "PARALLEL directly inside PARALLEL: LDmicro puts each branch in a SERIES",
+            ),
+            LdError::Empty(what) => write!(f, "an empty {what}"),
+            LdError::TooDeep => write!(
+                f,
+                "SERIES and PARALLEL nested more than {MAX_NESTING} deep (docs/limits.md)"
+            ),
+            LdError::TooManyRungs => {
+                write!(f, "more than {MAX_RUNGS} rungs (docs/limits.md)")
+            }
+            LdError::TableTooLong(e) => write!(
+                f,
+                "{e} has more than {MAX_LD_TABLE} entries (docs/limits.md)"
+            ),
+            LdError::BadListLine { list, text } => {
+                write!(f, "{list}: {} does not read", crate::shown(text))
+            }
+        }
+    }
+}
+
+impl std::error::Error for LdError {}

@@ -1,0 +1,17 @@
+//! LDmicro's `.ld` ladder files (issue #32; docs/ldmicro.md): read in
+//! every form LDmicro 2.x and 4.x write.
+//!
+//! - [`file`]: the file as read — settings, the variable, I/O and pull-up
+//!   lists, rungs of nested series and parallel groups;
+//! - [`element`]: one variant per kind of element line;
+//! - [`parse`](mod@parse): the reader, every problem at its line.
+
+pub mod element;
+pub mod error;
+pub mod file;
+pub mod parse;
+
+pub use element::Element;
+pub use error::LdError;
+pub use file::{LdFile, LdRung, Node, Version};
+pub use parse::{decode, parse};

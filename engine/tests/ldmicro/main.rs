@@ -1,0 +1,3 @@
+//! LDmicro's `.ld` files (issue #32).
+
+mod read;
