@@ -11,6 +11,7 @@ pub mod blocks;
 mod comments;
 pub mod data;
 pub mod il;
+pub mod ld_blocks;
 pub mod listing;
 pub mod literal;
 pub mod machine;

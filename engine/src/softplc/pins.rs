@@ -28,6 +28,8 @@ pub enum State {
     FTrig(FTrig),
     Sr(Sr),
     Rs(Rs),
+    /// One of LDmicro's elements ([`super::ld_blocks`]).
+    Ld(super::ld_blocks::LdBlock),
 }
 
 /// A counter's kind and count type: `CTU` and `CTU_INT` count INT,
@@ -47,6 +49,9 @@ pub fn counter(block: &str) -> Option<(&'static str, DataType)> {
 /// A block's inputs (name, type), in order.
 pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
     use DataType::{Bool, Time};
+    if block.starts_with("LD_") {
+        return super::ld_blocks::inputs(block);
+    }
     match counter(block) {
         Some(("CTU", n)) => vec![("CU", Bool), ("R", Bool), ("PV", n)],
         Some(("CTD", n)) => vec![("CD", Bool), ("LD", Bool), ("PV", n)],
@@ -70,6 +75,9 @@ pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
 /// A block's outputs (name, type), in order.
 pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
     use DataType::{Bool, Time};
+    if block.starts_with("LD_") {
+        return super::ld_blocks::outputs(block);
+    }
     match counter(block) {
         Some(("CTUD", n)) => vec![("QU", Bool), ("QD", Bool), ("CV", n)],
         Some((_, n)) => vec![("Q", Bool), ("CV", n)],
@@ -88,6 +96,7 @@ impl Instance {
         let (base, count) = counter(block).unwrap_or((block, DataType::Int));
         let limits = Limits::of(count);
         let state = match base {
+            ld if ld.starts_with("LD_") => State::Ld(super::ld_blocks::LdBlock::new(ld)),
             "TON" => State::Ton(Ton::default()),
             "TOF" => State::Tof(Tof::default()),
             "TP" => State::Tp(Tp::default()),
@@ -137,6 +146,7 @@ impl Instance {
             State::FTrig(t) => t.call(b0),
             State::Sr(s) => s.call(b0, b1),
             State::Rs(s) => s.call(b0, b1),
+            State::Ld(b) => b.call(&self.inputs),
         }
     }
 
@@ -159,6 +169,7 @@ impl Instance {
             (State::Ctud(c), _) => int(c.cv),
             (State::RTrig(RTrig { q, .. }) | State::FTrig(FTrig { q, .. }), _) => Data::Bool(*q),
             (State::Sr(Sr { q1 }) | State::Rs(Rs { q1 }), _) => Data::Bool(*q1),
+            (State::Ld(b), i) => b.output(i),
         }
     }
 }

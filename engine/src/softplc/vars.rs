@@ -22,8 +22,9 @@ use super::data::{Data, DataType};
 use super::literal::{parse_literal, LiteralError};
 use crate::error::Located;
 
-/// The standard function blocks a variable can be an instance of.
-pub const BLOCK_TYPES: [&str; 25] = [
+/// The standard function blocks a variable can be an instance of, and
+/// LDmicro's (docs/ldmicro.md; [`super::ld_blocks`]).
+pub const BLOCK_TYPES: [&str; 39] = [
     "TON",
     "TOF",
     "TP",
@@ -49,6 +50,20 @@ pub const BLOCK_TYPES: [&str; 25] = [
     "CTUD_LINT",
     "CTUD_UDINT",
     "CTUD_ULINT",
+    "LD_TON",
+    "LD_TOF",
+    "LD_RTO",
+    "LD_RTL",
+    "LD_TCY",
+    "LD_THI",
+    "LD_TLO",
+    "LD_CTU",
+    "LD_CTD",
+    "LD_CTC",
+    "LD_CTR",
+    "LD_OSL",
+    "LD_OSC",
+    "LD_TOGGLE",
 ];
 
 /// What a variable holds.

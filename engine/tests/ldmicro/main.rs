@@ -1,3 +1,4 @@
 //! LDmicro's `.ld` files (issue #32).
 
+mod blocks;
 mod read;

@@ -1,0 +1,398 @@
+//! LDmicro's timers, counters and one-shots as the soft PLC's blocks
+//! (issue #32; docs/ldmicro.md, "Elements"): each does what LDmicro 4.x's
+//! intermediate code does for its element, scan by scan, so that an
+//! `.ld` file runs here as it runs on LDmicro's microcontroller.
+//!
+//! LDmicro keeps a timer's or counter's count in a variable of the
+//! element's name, which other elements read and write (`EQU Cwhich 3`,
+//! `MOVE Tdelay 0`), so a block here takes that count as an input (`T`,
+//! `C`) and gives it back as an output of the same name, written to the
+//! same variable: `CAL Tdelay_ld(IN := …, P := 49, T := Tdelay, T =>
+//! Tdelay)`. Periods are counts of scans (LDmicro's `TimerPeriod`,
+//! worked out when the file is read); a block's own memory (LDmicro's
+//! generated one-shot bits) lives in its instance.
+
+use super::data::{Data, DataType};
+
+/// The LDmicro blocks by name.
+pub const NAMES: [&str; 14] = [
+    "LD_TON",
+    "LD_TOF",
+    "LD_RTO",
+    "LD_RTL",
+    "LD_TCY",
+    "LD_THI",
+    "LD_TLO",
+    "LD_CTU",
+    "LD_CTD",
+    "LD_CTC",
+    "LD_CTR",
+    "LD_OSL",
+    "LD_OSC",
+    "LD_TOGGLE",
+];
+
+/// A block's inputs (name, type), in order.
+pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
+    use DataType::{Bool, Dint, Int};
+    match family(block) {
+        Some(Family::Timer) => vec![("IN", Bool), ("P", Dint), ("T", Dint)],
+        Some(Family::Counter) => vec![
+            ("IN", Bool),
+            ("MAX", Dint),
+            ("INIT", Dint),
+            ("C", Dint),
+            ("EDGE", Int),
+        ],
+        Some(Family::Shot) => vec![("IN", Bool)],
+        Some(Family::Toggle) => vec![("IN", Bool), ("V", Bool)],
+        None => Vec::new(),
+    }
+}
+
+/// A block's outputs (name, type), in order: the power it passes on
+/// first.
+pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
+    use DataType::{Bool, Dint};
+    match family(block) {
+        Some(Family::Timer) => vec![("Q", Bool), ("T", Dint)],
+        Some(Family::Counter) => vec![("Q", Bool), ("C", Dint)],
+        Some(Family::Shot) => vec![("Q", Bool)],
+        Some(Family::Toggle) => vec![("Q", Bool), ("V", Bool)],
+        None => Vec::new(),
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Family {
+    Timer,
+    Counter,
+    Shot,
+    Toggle,
+}
+
+fn family(block: &str) -> Option<Family> {
+    match block {
+        "LD_TON" | "LD_TOF" | "LD_RTO" | "LD_RTL" | "LD_TCY" | "LD_THI" | "LD_TLO" => {
+            Some(Family::Timer)
+        }
+        "LD_CTU" | "LD_CTD" | "LD_CTC" | "LD_CTR" => Some(Family::Counter),
+        "LD_OSL" | "LD_OSC" => Some(Family::Shot),
+        "LD_TOGGLE" => Some(Family::Toggle),
+        _ => None,
+    }
+}
+
+/// Which LDmicro element a block is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Ton,
+    Tof,
+    Rto,
+    Rtl,
+    Tcy,
+    Thi,
+    Tlo,
+    Ctu,
+    Ctd,
+    Ctc,
+    Ctr,
+    Osl,
+    Osc,
+    Toggle,
+}
+
+/// One instance: its kind, its memory, and what it gave out last.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LdBlock {
+    kind: Kind,
+    /// LDmicro's one-shot bit of the element (`$..._TON` and the like).
+    store: bool,
+    /// LDmicro's second bit (`ONE_SHOT_HI`) of TLO and OSL.
+    hi: bool,
+    /// Whether the first call has been made (TOF starts its count at its
+    /// period, a counter at its start, as LDmicro's `INIT VARS` does once).
+    started: bool,
+    /// The power passed on.
+    pub q: bool,
+    /// The count (T, C) or the toggled bit (V).
+    pub value: i64,
+}
+
+impl LdBlock {
+    /// A new instance of `block` (one of [`NAMES`]).
+    pub fn new(block: &str) -> LdBlock {
+        let kind = match block {
+            "LD_TON" => Kind::Ton,
+            "LD_TOF" => Kind::Tof,
+            "LD_RTO" => Kind::Rto,
+            "LD_RTL" => Kind::Rtl,
+            "LD_TCY" => Kind::Tcy,
+            "LD_THI" => Kind::Thi,
+            "LD_TLO" => Kind::Tlo,
+            "LD_CTU" => Kind::Ctu,
+            "LD_CTD" => Kind::Ctd,
+            "LD_CTC" => Kind::Ctc,
+            "LD_CTR" => Kind::Ctr,
+            "LD_OSL" => Kind::Osl,
+            "LD_OSC" => Kind::Osc,
+            _ => Kind::Toggle,
+        };
+        LdBlock {
+            kind,
+            store: false,
+            hi: false,
+            started: false,
+            q: false,
+            value: 0,
+        }
+    }
+
+    /// Output `i` (in the order of [`outputs`]).
+    pub fn output(&self, i: usize) -> Data {
+        match (self.kind, i) {
+            (_, 0) => Data::Bool(self.q),
+            (Kind::Toggle, _) => Data::Bool(self.value != 0),
+            _ => Data::integer(DataType::Dint, i128::from(self.value)),
+        }
+    }
+
+    /// One call with the block's inputs in the order of [`inputs`].
+    pub fn call(&mut self, inputs: &[Data]) {
+        let bool_in = |i: usize| matches!(inputs.get(i), Some(Data::Bool(true)));
+        let word = |i: usize| match inputs.get(i) {
+            Some(Data::Int(_, v)) => *v,
+            Some(Data::Bool(b)) => i64::from(*b),
+            _ => 0,
+        };
+        let s = bool_in(0);
+        self.q = match self.kind {
+            Kind::Ton | Kind::Tof | Kind::Rto | Kind::Rtl | Kind::Tcy | Kind::Thi | Kind::Tlo => {
+                let (period, count) = (word(1), word(2));
+                self.timer(s, period, count)
+            }
+            Kind::Ctu | Kind::Ctd | Kind::Ctc | Kind::Ctr => {
+                let (max, init, count, edge) = (word(1), word(2), word(3), word(4));
+                self.counter(s, (max, init), count, edge)
+            }
+            Kind::Osl | Kind::Osc => self.shot(s),
+            Kind::Toggle => {
+                let v = bool_in(1);
+                self.value = i64::from(v);
+                if s && !self.store {
+                    self.value = i64::from(!v);
+                }
+                self.store = s;
+                s
+            }
+        };
+        self.started = true;
+    }
+
+    /// A timer's step: `s` the power in, the count `t` as the variable
+    /// holds it; the count written back to `value`.
+    fn timer(&mut self, s: bool, period: i64, t: i64) -> bool {
+        let mut t = t;
+        if self.kind == Kind::Tof && !self.started {
+            // LDmicro starts a TOF's count at its period: off at power-up.
+            t = period;
+        }
+        let out = match self.kind {
+            Kind::Ton => {
+                if !s {
+                    t = 0;
+                    false
+                } else if t < period {
+                    t += 1;
+                    false
+                } else {
+                    true
+                }
+            }
+            Kind::Tof => {
+                if s {
+                    t = 0;
+                    true
+                } else if t < period {
+                    t += 1;
+                    true
+                } else {
+                    false
+                }
+            }
+            Kind::Rto => {
+                if t < period {
+                    if s {
+                        t += 1;
+                    }
+                    false
+                } else {
+                    true
+                }
+            }
+            Kind::Rtl => {
+                if t < period {
+                    if !s {
+                        t += 1;
+                    }
+                    false
+                } else {
+                    true
+                }
+            }
+            Kind::Tcy => {
+                if s {
+                    if t < period {
+                        t += 1;
+                    } else {
+                        t = 0;
+                        self.store = !self.store;
+                    }
+                    self.store
+                } else {
+                    t = 0;
+                    false
+                }
+            }
+            Kind::Thi => {
+                if s {
+                    self.store = true;
+                }
+                if !self.store {
+                    false
+                } else if t < period {
+                    t += 1;
+                    true
+                } else {
+                    if !s {
+                        t = 0;
+                        self.store = false;
+                    }
+                    false
+                }
+            }
+            _ => self.tlo(s, period, &mut t),
+        };
+        self.value = t;
+        out
+    }
+
+    /// TLO: low for its period after the input falls (LDmicro's code,
+    /// step for step).
+    fn tlo(&mut self, s: bool, period: i64, t: &mut i64) -> bool {
+        if !s {
+            if self.hi {
+                self.store = true;
+            }
+        } else {
+            self.hi = true;
+        }
+        if self.store {
+            if *t < period {
+                *t += 1;
+                false
+            } else {
+                if s {
+                    *t = 0;
+                    self.store = false;
+                }
+                true
+            }
+        } else {
+            s || self.hi
+        }
+    }
+
+    /// A counter's step: which change of `s` counts is `edge` (0 a rise,
+    /// 1 a fall, 2 every scan on, 3 every scan off).
+    fn counter(&mut self, s: bool, (max, init): (i64, i64), count: i64, edge: i64) -> bool {
+        let mut c = if self.started { count } else { init };
+        // Whether this scan counts, and the one-shot bit kept as LDmicro
+        // keeps it for each kind of input.
+        let counts = match edge {
+            1 => {
+                let fell = !s && self.store;
+                self.store = s;
+                fell
+            }
+            2 => s,
+            3 => !s,
+            _ => {
+                let rose = s && !self.store;
+                self.store = s;
+                rose
+            }
+        };
+        let out = match self.kind {
+            Kind::Ctu => {
+                if counts && c < max {
+                    c += 1;
+                }
+                c >= max
+            }
+            Kind::Ctd => {
+                if counts && c > max {
+                    c -= 1;
+                }
+                c > max
+            }
+            Kind::Ctc => {
+                let mut pulse = false;
+                if counts {
+                    c += 1;
+                    if c > max {
+                        c = init;
+                        pulse = true;
+                    }
+                }
+                // The power passes only in the scan it wraps.
+                pulse
+            }
+            _ => {
+                let mut pulse = false;
+                if counts {
+                    c -= 1;
+                    if c < max {
+                        c = init;
+                        pulse = true;
+                    }
+                }
+                pulse
+            }
+        };
+        self.value = c;
+        out
+    }
+
+    /// OSL (one scan low at the input's fall) and OSC (on every other
+    /// scan while on).
+    fn shot(&mut self, s: bool) -> bool {
+        match self.kind {
+            Kind::Osl => {
+                if s {
+                    self.store = false;
+                    self.hi = true;
+                    true
+                } else {
+                    let out = self.store;
+                    if self.hi {
+                        self.store = true;
+                    }
+                    out
+                }
+            }
+            _ => {
+                if !s {
+                    self.store = false;
+                    false
+                } else if self.store {
+                    self.store = false;
+                    false
+                } else {
+                    self.store = true;
+                    true
+                }
+            }
+        }
+    }
+}
