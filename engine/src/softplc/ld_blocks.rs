@@ -382,16 +382,10 @@ impl LdBlock {
                 }
             }
             _ => {
-                if !s {
-                    self.store = false;
-                    false
-                } else if self.store {
-                    self.store = false;
-                    false
-                } else {
-                    self.store = true;
-                    true
-                }
+                // Off, or on the scan after it passed: nothing passes.
+                let out = s && !self.store;
+                self.store = out;
+                out
             }
         }
     }
