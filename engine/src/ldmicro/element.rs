@@ -315,6 +315,41 @@ impl Element {
     }
 }
 
+impl Element {
+    /// Every name and operand the element holds (numbers included: an
+    /// operand may be either), for renaming.
+    pub fn operands_mut(&mut self) -> Vec<&mut String> {
+        match self {
+            Element::Contacts { name, .. }
+            | Element::Coil { name, .. }
+            | Element::Res(name)
+            | Element::Random(name)
+            | Element::Persist(name)
+            | Element::ShiftRegister { name, .. }
+            | Element::ReadAdc { name, .. }
+            | Element::UartRecv { name, .. }
+            | Element::UartSend { name, .. } => vec![name],
+            Element::Timer { name, delay, .. } | Element::TimeConvert { name, delay, .. } => {
+                vec![name, delay]
+            }
+            Element::Counter {
+                name, max, init, ..
+            } => vec![name, max, init],
+            Element::Unary { dest, src, .. } => vec![dest, src],
+            Element::Math { dest, a, b, .. } => vec![dest, a, b],
+            Element::Compare { a, b, .. } => vec![a, b],
+            Element::LookUpTable { dest, index, .. }
+            | Element::PiecewiseLinear { dest, index, .. } => vec![dest, index],
+            Element::SetPwm { duty, name, .. } => vec![duty, name],
+            Element::FormattedString { var, .. } => vec![var],
+            Element::Text { dest, var, .. } => vec![dest, var],
+            Element::Segments { dest, src, .. } => vec![dest, src],
+            Element::Bit { var, bit, .. } => vec![var, bit],
+            _ => Vec::new(),
+        }
+    }
+}
+
 impl fmt::Display for Element {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.keyword())

@@ -44,6 +44,21 @@ pub enum LdError {
     TableTooLong(String),
     /// A line of a list that does not read (the list, the line).
     BadListLine { list: &'static str, text: String },
+    /// An element that drives hardware Hashigo does not simulate (its
+    /// keyword).
+    Hardware(String),
+    /// An element the soft PLC does not run yet (its keyword).
+    NotYet(String),
+    /// A timer whose delay is not a whole number of cycles above zero
+    /// (the timer, its delay in µs, the cycle in µs, the adjust).
+    TimerPeriod {
+        name: String,
+        delay: String,
+        cycle: u64,
+        adjust: i32,
+    },
+    /// A rung whose groups cannot be drawn as a ladder (why).
+    Drawing(String),
 }
 
 impl fmt::Display for LdError {
@@ -95,6 +110,24 @@ impl fmt::Display for LdError {
             LdError::BadListLine { list, text } => {
                 write!(f, "{list}: {} does not read", crate::shown(text))
             }
+            LdError::Hardware(k) => write!(
+                f,
+                "{k} drives hardware Hashigo does not simulate (I²C, SPI, buses, steppers, pulse trains, sleep, jumps): the file is not opened"
+            ),
+            LdError::NotYet(k) => write!(
+                f,
+                "{k} does not run on the soft PLC yet (docs/ldmicro.md lists what does)"
+            ),
+            LdError::TimerPeriod {
+                name,
+                delay,
+                cycle,
+                adjust,
+            } => write!(
+                f,
+                "timer {name}: {delay} µs with adjust {adjust} is no count of {cycle} µs cycles above zero"
+            ),
+            LdError::Drawing(why) => write!(f, "this rung cannot be drawn: {why}"),
         }
     }
 }

@@ -4,14 +4,20 @@
 //! - [`file`]: the file as read — settings, the variable, I/O and pull-up
 //!   lists, rungs of nested series and parallel groups;
 //! - [`element`]: one variant per kind of element line;
-//! - [`parse`](mod@parse): the reader, every problem at its line.
+//! - [`parse`](mod@parse): the reader, every problem at its line;
+//! - [`to_ladder`]: the file as a soft PLC ladder, LDmicro's timers and
+//!   counters as its blocks ([`crate::softplc::ld_blocks`]).
 
 pub mod element;
+mod elements;
 pub mod error;
 pub mod file;
+mod ladder;
+mod lower;
 pub mod parse;
 
 pub use element::Element;
 pub use error::LdError;
 pub use file::{LdFile, LdRung, Node, Version};
+pub use ladder::to_ladder;
 pub use parse::{decode, parse};

@@ -1,0 +1,261 @@
+//! Each LDmicro element as the soft PLC's ladder has it (docs/ldmicro.md,
+//! "Elements"): contacts and coils as they are, one-shots as edge
+//! boxes, comparisons and arithmetic as the soft PLC's boxes, timers and
+//! counters as LDmicro's own blocks ([`crate::softplc::ld_blocks`]) on
+//! the variable of their name.
+
+use super::element::{
+    is_number, number, CompareOp, CounterKind, Element as Ld, MathOp, OneShotKind, TimerKind,
+    UnaryOp,
+};
+use super::error::LdError;
+use crate::ladder::element::{CoilKind, ContactKind, Element};
+use crate::ladder::BlockCall;
+
+/// What an element is in a rung: power passing through it, or an output.
+pub(super) enum Part {
+    /// A contact or in-line box: power in, power out.
+    Condition(Element),
+    /// A coil or output box: where a rung ends.
+    Output(Element),
+    /// Nothing drawn (a placeholder, a wire).
+    Nothing,
+    /// A comment line.
+    Comment(String),
+}
+
+/// Numbers and names as the soft PLC's boxes take them: a number in
+/// decimal (`0x1F`, `'A'` worked out), a name as it is.
+pub(super) fn operand(text: &str) -> Result<String, LdError> {
+    if !is_number(text) {
+        return Ok(text.trim().to_string());
+    }
+    number(text)
+        .map(|v| v.to_string())
+        .ok_or_else(|| LdError::BadNumber {
+            element: "operand".into(),
+            text: text.into(),
+        })
+}
+
+/// A timer's period in cycles: LDmicro 4.x's `TimerPeriod`,
+/// `(delay + cycle × adjust) / cycle` in whole cycles (a 0.1 file's
+/// TON, TOF and RTO written without an adjust take −1: the cycle LDmicro
+/// 2.x subtracted). A delay that is a variable's name is a count already.
+pub(super) fn period(name: &str, delay: &str, cycle: u64, adjust: i32) -> Result<String, LdError> {
+    if !is_number(delay) {
+        return Ok(delay.trim().to_string());
+    }
+    let bad = || LdError::TimerPeriod {
+        name: name.into(),
+        delay: delay.into(),
+        cycle,
+        adjust,
+    };
+    let us = number(delay).ok_or_else(bad)?;
+    let cycle_i = i64::try_from(cycle).map_err(|_| bad())?;
+    if us <= 0 || cycle_i <= 0 {
+        return Err(bad());
+    }
+    let periods = (us + cycle_i * i64::from(adjust)).div_euclid(cycle_i);
+    if periods < 1 || us / cycle_i < 1 {
+        return Err(bad());
+    }
+    Ok(periods.to_string())
+}
+
+/// The box of LDmicro block `kind` on instance `instance`.
+fn ld_box(
+    kind: &str,
+    instance: String,
+    inputs: Vec<(&str, String)>,
+    outputs: Vec<(&str, String)>,
+) -> BlockCall {
+    let pins = |v: Vec<(&str, String)>| v.into_iter().map(|(p, o)| (p.to_string(), o)).collect();
+    BlockCall {
+        kind: kind.into(),
+        instance,
+        inputs: pins(inputs),
+        outputs: pins(outputs),
+    }
+}
+
+/// A function box (`ADD`, `MOVE`) writing `dest`.
+fn function(kind: &str, inputs: Vec<(&str, String)>, dest: &str) -> BlockCall {
+    ld_box(
+        kind,
+        String::new(),
+        inputs,
+        vec![("OUT", dest.trim().to_string())],
+    )
+}
+
+/// Element `e` of a file whose cycle is `cycle` µs; `instance` names a
+/// block's instance for the element's name (`Tdelay` → `Tdelay_ld`, a
+/// second element on it `Tdelay_ld2`).
+pub(super) fn part(
+    e: &Ld,
+    cycle: u64,
+    instance: &mut impl FnMut(&str) -> String,
+) -> Result<Part, LdError> {
+    Ok(match e {
+        Ld::Comment(text) => Part::Comment(text.clone()),
+        Ld::Placeholder | Ld::Short => Part::Nothing,
+        Ld::Open => Part::Condition(Element::no(OPEN)),
+        Ld::Contacts { name, negated, .. } => Part::Condition(Element::Contact {
+            kind: if *negated {
+                ContactKind::Nc
+            } else {
+                ContactKind::No
+            },
+            device: name.clone(),
+        }),
+        Ld::Coil {
+            name,
+            negated,
+            set_only,
+            reset_only,
+            toggle,
+        } => {
+            if *toggle {
+                let call = ld_box(
+                    "LD_TOGGLE",
+                    instance(name),
+                    vec![("V", name.clone())],
+                    vec![("V", name.clone())],
+                );
+                return Ok(Part::Output(Element::OutputBlock(call)));
+            }
+            let kind = match (negated, set_only, reset_only) {
+                (true, _, _) => CoilKind::Inverted,
+                (_, true, _) => CoilKind::Set,
+                (_, _, true) => CoilKind::Reset,
+                _ => CoilKind::Normal,
+            };
+            Part::Output(Element::Coil {
+                kind,
+                device: name.clone(),
+            })
+        }
+        Ld::OneShot(OneShotKind::Rising) => Part::Condition(Element::Edge { falling: false }),
+        Ld::OneShot(OneShotKind::Falling) => Part::Condition(Element::Edge { falling: true }),
+        Ld::OneShot(k) => {
+            let kind = if *k == OneShotKind::Low {
+                "LD_OSL"
+            } else {
+                "LD_OSC"
+            };
+            let call = ld_box(kind, instance("_shot"), Vec::new(), Vec::new());
+            Part::Condition(Element::Block(call))
+        }
+        Ld::Timer {
+            kind,
+            name,
+            delay,
+            adjust,
+        } => {
+            let p = period(name, delay, cycle, *adjust)?;
+            let block = match kind {
+                TimerKind::Ton => "LD_TON",
+                TimerKind::Tof => "LD_TOF",
+                TimerKind::Rto => "LD_RTO",
+                TimerKind::Rtl => "LD_RTL",
+                TimerKind::Tcy => "LD_TCY",
+                TimerKind::Thi => "LD_THI",
+                TimerKind::Tlo => "LD_TLO",
+            };
+            let call = ld_box(
+                block,
+                instance(name),
+                vec![("P", p), ("T", name.clone())],
+                vec![("T", name.clone())],
+            );
+            Part::Condition(Element::Block(call))
+        }
+        Ld::Counter {
+            kind,
+            name,
+            max,
+            init,
+            input,
+        } => {
+            let block = match kind {
+                CounterKind::Ctu => "LD_CTU",
+                CounterKind::Ctd => "LD_CTD",
+                CounterKind::Ctc => "LD_CTC",
+                CounterKind::Ctr => "LD_CTR",
+            };
+            let mut inputs = vec![
+                ("MAX", operand(max)?),
+                ("INIT", operand(init)?),
+                ("C", name.clone()),
+            ];
+            let edge = match input {
+                '\\' => 1,
+                '-' => 2,
+                'o' => 3,
+                _ => 0,
+            };
+            if edge != 0 {
+                inputs.push(("EDGE", edge.to_string()));
+            }
+            let call = ld_box(block, instance(name), inputs, vec![("C", name.clone())]);
+            Part::Condition(Element::Block(call))
+        }
+        Ld::Unary { op, dest, src } => {
+            let kind = match op {
+                UnaryOp::Move => "MOVE",
+                UnaryOp::Not => "NOT",
+                UnaryOp::Neg => "NEG",
+                _ => return Err(LdError::NotYet(e.keyword().into())),
+            };
+            Part::Condition(Element::Block(function(
+                kind,
+                vec![("IN", operand(src)?)],
+                dest,
+            )))
+        }
+        Ld::Math { op, dest, a, b } => {
+            let (kind, pins) = match op {
+                MathOp::Add => ("ADD", ["IN1", "IN2"]),
+                MathOp::Sub => ("SUB", ["IN1", "IN2"]),
+                MathOp::Mul => ("MUL", ["IN1", "IN2"]),
+                MathOp::Div => ("DIV", ["IN1", "IN2"]),
+                MathOp::Mod => ("MOD", ["IN1", "IN2"]),
+                MathOp::And => ("AND", ["IN1", "IN2"]),
+                MathOp::Or => ("OR", ["IN1", "IN2"]),
+                MathOp::Xor => ("XOR", ["IN1", "IN2"]),
+                MathOp::Shl => ("SHL", ["IN", "N"]),
+                MathOp::Shr => ("SHR", ["IN", "N"]),
+                MathOp::Rol => ("ROL", ["IN", "N"]),
+                MathOp::Ror => ("ROR", ["IN", "N"]),
+                MathOp::Sr0 => return Err(LdError::NotYet(e.keyword().into())),
+            };
+            let inputs = vec![(pins[0], operand(a)?), (pins[1], operand(b)?)];
+            Part::Condition(Element::Block(function(kind, inputs, dest)))
+        }
+        Ld::Compare { op, a, b } => {
+            let kind = match op {
+                CompareOp::Equ => "EQ",
+                CompareOp::Neq => "NE",
+                CompareOp::Grt => "GT",
+                CompareOp::Geq => "GE",
+                CompareOp::Les => "LT",
+                CompareOp::Leq => "LE",
+            };
+            let call = ld_box(
+                kind,
+                String::new(),
+                vec![("IN1", operand(a)?), ("IN2", operand(b)?)],
+                Vec::new(),
+            );
+            Part::Condition(Element::Block(call))
+        }
+        Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
+        other => return Err(LdError::NotYet(other.keyword().into())),
+    })
+}
+
+/// The BOOL an `OPEN` element reads: declared, never written, so never
+/// on.
+pub(super) const OPEN: &str = "_OPEN";

@@ -1,0 +1,328 @@
+//! An LDmicro file as a soft PLC ladder (issue #32; docs/ldmicro.md):
+//! its rungs drawn ([`super::lower`]), its names declared — `X…` inputs
+//! on the board's `%IX` switches and `Y…` outputs on its `%QX` lamps in
+//! the order of the file's `IO LIST`, other bits as BOOLs, every number
+//! a DINT, each timer's and counter's element an instance of LDmicro's
+//! block ([`crate::softplc::ld_blocks`]).
+
+use std::collections::{BTreeMap, HashMap};
+
+use super::element::{is_number, Element as Ld};
+use super::elements::{operand, part, Part, OPEN};
+use super::error::LdError;
+use super::file::LdFile;
+use super::lower::Lowering;
+use crate::error::Located;
+use crate::ladder::element::Element;
+use crate::ladder::grid::Ladder;
+use crate::ladder::net::try_layout;
+use crate::ladder::variables::Variable;
+use crate::ladder::BlockCall;
+
+/// The file as a soft PLC ladder; every element it cannot run is an
+/// error at its line, and then nothing is made.
+pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
+    let (file, renamed) = &iec_names(file);
+    let mut taken: HashMap<String, usize> = HashMap::new();
+    let mut instances: BTreeMap<String, String> = BTreeMap::new();
+    let counters = counter_starts(file);
+    let cycle = file.cycle_us;
+    let mut analog: Vec<String> = Vec::new();
+    let mut pwm: Vec<String> = Vec::new();
+    let mut element = |e: &Ld| -> Result<Part, LdError> {
+        if let Some(p) = hardware_io(e, &mut analog, &mut pwm) {
+            return p;
+        }
+        if let Ld::Res(name) = e {
+            // A count back to its start: a counter's, else 0.
+            let start = counters.get(name).cloned().unwrap_or_else(|| "0".into());
+            let call = BlockCall {
+                kind: "MOVE".into(),
+                instance: String::new(),
+                inputs: vec![("IN".into(), start)],
+                outputs: vec![("OUT".into(), name.clone())],
+            };
+            return Ok(Part::Output(Element::OutputBlock(call)));
+        }
+        let mut instance = |name: &str| {
+            let stem = format!("{}_ld", name.trim_matches('_'));
+            let n = taken.entry(stem.to_ascii_uppercase()).or_default();
+            *n += 1;
+            if *n == 1 {
+                stem
+            } else {
+                format!("{stem}{n}")
+            }
+        };
+        let p = part(e, cycle, &mut instance)?;
+        let block = match &p {
+            Part::Condition(Element::Block(b)) | Part::Output(Element::OutputBlock(b)) => Some(b),
+            _ => None,
+        };
+        if let Some(b) = block.filter(|b| !b.instance.is_empty()) {
+            instances.insert(b.instance.clone(), b.kind());
+        }
+        Ok(p)
+    };
+    let mut lowering = Lowering {
+        rungs: Vec::new(),
+        held: 0,
+        comment: String::new(),
+        element: &mut element,
+    };
+    let mut errors = Vec::new();
+    for rung in &file.rungs {
+        if let Err(e) = lowering.series(&rung.series, None, true) {
+            errors.extend(e);
+        }
+    }
+    let leftover = std::mem::take(&mut lowering.comment);
+    let rungs = std::mem::take(&mut lowering.rungs);
+    drop(lowering);
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let mut ladder = Ladder::default();
+    for (logic, line) in rungs {
+        match try_layout(&logic) {
+            Ok(r) => ladder.rungs.push(r),
+            Err(size) => errors.push(Located::new(line, LdError::Drawing(size.to_string()))),
+        }
+    }
+    if let (Some(last), false) = (ladder.rungs.last_mut(), leftover.is_empty()) {
+        if !last.comment.is_empty() {
+            last.comment.push('\n');
+        }
+        last.comment.push_str(&leftover);
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    ladder.variables = declarations(file, &instances);
+    for v in &mut ladder.variables {
+        if let Some(original) = renamed.get(&v.name) {
+            let was = format!("LDmicro name: {original}");
+            v.comment = if v.comment.is_empty() {
+                was
+            } else {
+                format!("{was}; {}", v.comment)
+            };
+        }
+    }
+    Ok(ladder)
+}
+
+/// The file with every name that is no IEC name (`Cnew1__`, `#PORTB`)
+/// given one (`Cnew1_1`), and what each new name was.
+fn iec_names(file: &LdFile) -> (LdFile, HashMap<String, String>) {
+    use crate::softplc::vars::is_identifier;
+    let mut file = file.clone();
+    let mut map: HashMap<String, String> = HashMap::new();
+    let mut given: HashMap<String, String> = HashMap::new();
+    let mut taken: std::collections::HashSet<String> = std::collections::HashSet::new();
+    for (e, _) in file.elements() {
+        let mut e = e.clone();
+        for op in e.operands_mut() {
+            if is_identifier(op) {
+                taken.insert(op.to_ascii_uppercase());
+            }
+        }
+    }
+    let mut rename = |op: &mut String| {
+        if op.is_empty() || is_number(op) || is_identifier(op) {
+            return;
+        }
+        if let Some(n) = map.get(op.as_str()) {
+            *op = n.clone();
+            return;
+        }
+        let mut stem: String = op
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect();
+        while stem.contains("__") {
+            stem = stem.replace("__", "_");
+        }
+        let stem = stem.trim_end_matches('_');
+        let stem = if stem.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+            stem.to_string()
+        } else {
+            format!("v{stem}")
+        };
+        let mut k = 1;
+        let mut name = format!("{stem}_{k}");
+        while !taken.insert(name.to_ascii_uppercase()) {
+            k += 1;
+            name = format!("{stem}_{k}");
+        }
+        map.insert(op.clone(), name.clone());
+        given.insert(name.clone(), op.clone());
+        *op = name;
+    };
+    for rung in &mut file.rungs {
+        let mut todo: Vec<&mut super::Node> = rung.series.iter_mut().collect();
+        while let Some(n) = todo.pop() {
+            match n {
+                super::Node::Leaf(e, _) => e.operands_mut().into_iter().for_each(&mut rename),
+                super::Node::Series(v, _) | super::Node::Parallel(v, _) => {
+                    todo.extend(v.iter_mut())
+                }
+            }
+        }
+    }
+    for io in &mut file.io {
+        rename(&mut io.name);
+    }
+    (file, given)
+}
+
+/// The I/O LDmicro's hardware elements use, on the soft PLC's board:
+/// `READ_ADC Ain` reads the next analog input (`%IW0`, a 10-bit slider)
+/// into `Ain` when its power comes; `SET_PWM duty f` writes the duty to
+/// the next analog output (`%QW0`, a gauge); `PERSIST saved` draws
+/// nothing (its variable is kept over a power cycle: RETAIN).
+fn hardware_io(
+    e: &Ld,
+    analog: &mut Vec<String>,
+    pwm: &mut Vec<String>,
+) -> Option<Result<Part, LdError>> {
+    let slot = |list: &mut Vec<String>, name: &str| match list.iter().position(|n| n == name) {
+        Some(k) => k,
+        None => {
+            list.push(name.to_string());
+            list.len() - 1
+        }
+    };
+    let convert = |kind: &str, from: String, to: String| {
+        Part::Condition(Element::Block(BlockCall {
+            kind: kind.into(),
+            instance: String::new(),
+            inputs: vec![("IN".into(), from)],
+            outputs: vec![("OUT".into(), to)],
+        }))
+    };
+    Some(match e {
+        Ld::ReadAdc { name, .. } => {
+            let k = slot(analog, name);
+            Ok(convert("INT_TO_DINT", format!("%IW{k}"), name.clone()))
+        }
+        Ld::SetPwm { duty, name, .. } => {
+            let key = if name.is_empty() { "P" } else { name.as_str() };
+            let k = slot(pwm, key);
+            operand(duty).map(|d| convert("DINT_TO_INT", d, format!("%QW{k}")))
+        }
+        Ld::Persist(_) => Ok(Part::Nothing),
+        _ => return None,
+    })
+}
+
+/// Each counter's start, as a `RES` of it sets it back (the first
+/// counter element of that name gives it).
+fn counter_starts(file: &LdFile) -> HashMap<String, String> {
+    let mut out = HashMap::new();
+    for (e, _) in file.elements() {
+        if let Ld::Counter { name, init, .. } = e {
+            if let Ok(start) = operand(init) {
+                out.entry(name.clone()).or_insert(start);
+            }
+        }
+    }
+    out
+}
+
+/// What a name is in the file.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Role {
+    Bit,
+    Number,
+}
+
+/// The ladder's variables: bits and numbers the elements name, the
+/// blocks' instances.
+fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Variable> {
+    let mut roles: Vec<(String, Role)> = Vec::new();
+    let mut note = |name: &str, role: Role| {
+        let name = name.trim();
+        if name.is_empty() || is_number(name) {
+            return;
+        }
+        match roles.iter_mut().find(|(n, _)| n == name) {
+            // A bit read as a number stays a bit (the soft PLC then says
+            // where it does not fit).
+            Some((_, r)) => *r = (*r).min(role),
+            None => roles.push((name.to_string(), role)),
+        }
+    };
+    // The IO LIST's inputs and outputs first, so that the board follows
+    // its order (its ADC and PWM names are numbers, noted where used).
+    for io in file.io.iter().filter(|io| io.name.starts_with(['X', 'Y'])) {
+        note(&io.name, Role::Bit);
+    }
+    for (e, _) in file.elements() {
+        match e {
+            Ld::Contacts { name, .. } | Ld::Coil { name, .. } => note(name, Role::Bit),
+            Ld::Open => note(OPEN, Role::Bit),
+            Ld::Timer { name, delay, .. } => {
+                note(name, Role::Number);
+                note(delay, Role::Number);
+            }
+            Ld::Counter {
+                name, max, init, ..
+            } => {
+                for n in [name, max, init] {
+                    note(n, Role::Number);
+                }
+            }
+            Ld::Res(name) => note(name, Role::Number),
+            Ld::Unary { dest, src, .. } => {
+                note(dest, Role::Number);
+                note(src, Role::Number);
+            }
+            Ld::Math { dest, a, b, .. } => {
+                for n in [dest, a, b] {
+                    note(n, Role::Number);
+                }
+            }
+            Ld::Compare { a, b, .. } => {
+                note(a, Role::Number);
+                note(b, Role::Number);
+            }
+            Ld::ReadAdc { name, .. } | Ld::Persist(name) => note(name, Role::Number),
+            Ld::SetPwm { duty, .. } => note(duty, Role::Number),
+            _ => {}
+        }
+    }
+    let (mut inputs, mut outputs) = (0usize, 0usize);
+    let mut out = Vec::new();
+    for (name, role) in roles {
+        let mut v = Variable::new(&name, if role == Role::Bit { "BOOL" } else { "DINT" });
+        if role == Role::Bit && name.starts_with('X') {
+            v.address = format!("%IX{}.{}", inputs / 8, inputs % 8);
+            inputs += 1;
+        } else if role == Role::Bit && name.starts_with('Y') {
+            v.address = format!("%QX{}.{}", outputs / 8, outputs % 8);
+            outputs += 1;
+        }
+        if let Some(io) = file.io.iter().find(|io| io.name == name) {
+            v.comment = format!("LDmicro pin: {}", io.rest);
+        }
+        if let Some(size) = file.vars.iter().find(|s| s.name == name) {
+            if !size.note.is_empty() {
+                v.comment = size.note.clone();
+            }
+        }
+        if name == OPEN {
+            v.comment = "LDmicro's OPEN: never on".into();
+        }
+        v.retain = file
+            .elements()
+            .any(|(e, _)| matches!(e, Ld::Persist(p) if *p == name));
+        out.push(v);
+    }
+    for (instance, kind) in instances {
+        if !out.iter().any(|v| v.name.eq_ignore_ascii_case(instance)) {
+            out.push(Variable::new(instance, kind));
+        }
+    }
+    out
+}

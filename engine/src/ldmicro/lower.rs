@@ -1,0 +1,321 @@
+//! An LDmicro rung as the soft PLC's rungs (docs/ldmicro.md, "Rungs").
+//!
+//! LDmicro runs a rung as one bit of power passed through its elements
+//! left to right, a parallel group's branches each from the same power,
+//! OR-ed at its end; a coil passes the power on, so outputs may stand
+//! anywhere. The soft PLC's rungs end in their outputs, all on one
+//! condition. So: a run of conditions ending in outputs is one rung (the
+//! usual case, drawn element for element); where outputs stand before
+//! more elements, or in branches of their own, the power there goes
+//! into a BOOL of its own (`_ld0` …) by a rung of its own, unless it is
+//! contacts only (reading contacts twice is reading them once), and the
+//! rest reads that BOOL. A rung's boxes therefore run once a scan, in
+//! LDmicro's order.
+
+use super::elements::Part;
+use super::error::LdError;
+use super::file::Node;
+use crate::error::Located;
+use crate::ladder::element::Element;
+use crate::ladder::grid::Pos;
+use crate::ladder::net::{Net, RungLogic};
+
+/// The rungs being made from one file.
+pub(super) struct Lowering<'a> {
+    /// The soft PLC's rungs so far, with the line each came from.
+    pub(super) rungs: Vec<(RungLogic, usize)>,
+    /// How many BOOLs were made to hold power.
+    pub(super) held: usize,
+    /// A comment waiting for the next rung.
+    pub(super) comment: String,
+    /// An element as the soft PLC has it (its instance names given).
+    pub(super) element: &'a mut dyn FnMut(&super::Element) -> Result<Part, LdError>,
+}
+
+/// Power at some point of a rung: from the rail (nothing yet), or a
+/// network from it.
+type Power = Option<Net>;
+
+fn leaf(e: Element) -> Net {
+    Net::Leaf(e, Pos::new(0, 0))
+}
+
+/// `power` then `net` in series.
+fn then(power: Power, net: Net) -> Net {
+    match power {
+        None => net,
+        Some(Net::Series(mut v)) => {
+            match net {
+                Net::Series(w) => v.extend(w),
+                n => v.push(n),
+            }
+            Net::Series(v)
+        }
+        Some(p) => match net {
+            Net::Series(mut w) => {
+                w.insert(0, p);
+                Net::Series(w)
+            }
+            n => Net::Series(vec![p, n]),
+        },
+    }
+}
+
+/// Whether a network only reads (contacts): reading it again is the same.
+fn pure(power: &Power) -> bool {
+    power.as_ref().is_none_or(|n| {
+        n.leaves()
+            .iter()
+            .all(|(e, _)| matches!(e, Element::Contact { .. } | Element::Wire))
+    })
+}
+
+/// Whether a parallel group has a branch of wires alone beside a branch
+/// that does more than read contacts.
+fn wired_beside_boxes(branches: &[Node]) -> bool {
+    use super::Element as Ld;
+    let wires = |b: &Node| {
+        b.elements()
+            .iter()
+            .all(|(e, _)| matches!(e, Ld::Short | Ld::Placeholder | Ld::Comment(_)))
+    };
+    let boxes = |b: &Node| {
+        b.elements().iter().any(|(e, _)| {
+            !matches!(
+                e,
+                Ld::Short | Ld::Placeholder | Ld::Comment(_) | Ld::Contacts { .. } | Ld::Open
+            )
+        })
+    };
+    branches.iter().any(wires) && branches.iter().any(boxes)
+}
+
+/// Whether a group holds an output anywhere: a coil, a reset.
+fn has_output(node: &Node) -> bool {
+    node.elements()
+        .iter()
+        .any(|(e, _)| matches!(e, super::Element::Coil { .. } | super::Element::Res(_)))
+}
+
+impl Lowering<'_> {
+    /// A rung of `condition` driving `outputs`.
+    fn emit(&mut self, condition: Power, outputs: Vec<Element>, line: usize) {
+        // Outputs on the rail: a wire from it (output boxes only; a coil
+        // there reads as a wire too, drawn as the editor draws it).
+        let condition = condition.unwrap_or_else(|| leaf(Element::Wire));
+        let logic = RungLogic {
+            condition,
+            outputs: outputs.into_iter().map(|e| (e, Pos::new(0, 0))).collect(),
+            comment: std::mem::take(&mut self.comment),
+            sides: Vec::new(),
+        };
+        self.rungs.push((logic, line));
+    }
+
+    /// `power` as a contact on a BOOL of its own that a rung of its own
+    /// sets, where reading it twice would run its boxes twice.
+    fn hold(&mut self, power: Power, line: usize) -> Power {
+        if pure(&power) {
+            return power;
+        }
+        let name = format!("_ld{}", self.held);
+        self.held += 1;
+        self.emit(power, vec![Element::coil(&name)], line);
+        Some(leaf(Element::no(&name)))
+    }
+
+    /// A series of `nodes` from `power`; `tail`: nothing after it reads
+    /// its power. Returns the power at its end.
+    pub(super) fn series(
+        &mut self,
+        nodes: &[Node],
+        power: Power,
+        tail: bool,
+    ) -> Result<Power, Vec<Located<LdError>>> {
+        let mut power = power;
+        let mut pending: Vec<Element> = Vec::new();
+        let mut pending_line = 0;
+        for (k, node) in nodes.iter().enumerate() {
+            let last = k + 1 == nodes.len();
+            let line = node.line();
+            let leaf_kind = match node {
+                Node::Leaf(..) => Some(self.kind(node)?),
+                _ => None,
+            };
+            let grouped_outputs = leaf_kind.is_none() && has_output(node);
+            let continues = !matches!(
+                leaf_kind,
+                Some(Kind::Output(_) | Kind::Nothing | Kind::Comment(_))
+            );
+            if !pending.is_empty() && continues {
+                // Outputs before more elements: the power they share is
+                // read again after them.
+                power = self.hold(power, pending_line);
+                self.emit(power.clone(), std::mem::take(&mut pending), pending_line);
+            }
+            match (node, leaf_kind) {
+                (_, Some(Kind::Condition(e))) => power = Some(then(power, leaf(e))),
+                (_, Some(Kind::Output(e))) => {
+                    if pending.is_empty() {
+                        pending_line = line;
+                    }
+                    pending.push(e);
+                }
+                (_, Some(Kind::Nothing)) => {}
+                (_, Some(Kind::Comment(text))) => {
+                    if !self.comment.is_empty() {
+                        self.comment.push('\n');
+                    }
+                    self.comment.push_str(&text);
+                }
+                (Node::Series(inner, _), None) => {
+                    power = self.series(inner, power, tail && last)?;
+                }
+                (Node::Parallel(branches, _), None) if wired_beside_boxes(branches) => {
+                    // A wire beside boxes: power passes as it came, and
+                    // each box branch still runs on it, in a rung of its
+                    // own into a BOOL nothing reads.
+                    power = self.hold(power, line);
+                    for b in branches {
+                        let inner = match b {
+                            Node::Series(v, _) => v.as_slice(),
+                            other => std::slice::from_ref(other),
+                        };
+                        let end = self.series(inner, power.clone(), false)?;
+                        self.hold(end, line);
+                    }
+                }
+                (Node::Parallel(branches, _), None) if !grouped_outputs => {
+                    let nets = self.branches(branches)?;
+                    power = Some(then(power, nets));
+                }
+                (Node::Parallel(branches, _), None) => {
+                    power = self.hold(power, line);
+                    let mut ends = Vec::new();
+                    for b in branches {
+                        let inner = match b {
+                            Node::Series(v, _) => v.as_slice(),
+                            other => std::slice::from_ref(other),
+                        };
+                        ends.push(self.series(inner, power.clone(), tail && last)?);
+                    }
+                    power = if tail && last {
+                        None
+                    } else {
+                        let joined: Vec<Net> = ends.into_iter().flatten().collect();
+                        self.hold(Some(Net::Parallel(joined)), line)
+                    };
+                }
+                (Node::Leaf(..), None) => {}
+            }
+        }
+        if !pending.is_empty() {
+            if !tail {
+                power = self.hold(power, pending_line);
+            }
+            self.emit(power.clone(), pending, pending_line);
+        } else if tail && !pure(&power) {
+            // A rung ending in a box (a counter with no coil after it):
+            // the box is its output.
+            if let Some(net) = power.take() {
+                let (rest, last) = split_last(net);
+                match last {
+                    Some(Element::Block(b)) => self.emit(
+                        rest,
+                        vec![Element::OutputBlock(b)],
+                        nodes.last().map_or(1, Node::line),
+                    ),
+                    other => {
+                        let mut net = rest;
+                        if let Some(e) = other {
+                            net = Some(then(net, leaf(e)));
+                        }
+                        // Its boxes still run: into a BOOL nothing reads.
+                        self.hold(net, nodes.last().map_or(1, Node::line));
+                    }
+                }
+            }
+        }
+        Ok(power)
+    }
+
+    /// The branches of a parallel group holding no outputs: one network.
+    fn branches(&mut self, branches: &[Node]) -> Result<Net, Vec<Located<LdError>>> {
+        let mut nets = Vec::new();
+        for b in branches {
+            let inner = match b {
+                Node::Series(v, _) => v.as_slice(),
+                other => std::slice::from_ref(other),
+            };
+            match self.series(inner, None, false)? {
+                Some(net) => nets.push(net),
+                // A branch of wires only: the group always passes power.
+                None => nets.push(leaf(Element::Wire)),
+            }
+        }
+        if nets
+            .iter()
+            .any(|n| matches!(n, Net::Leaf(Element::Wire, _)))
+        {
+            let others: Vec<&Net> = nets
+                .iter()
+                .filter(|n| !matches!(n, Net::Leaf(Element::Wire, _)))
+                .collect();
+            if others.iter().all(|n| pure(&Some((*n).clone()))) {
+                return Ok(leaf(Element::Wire));
+            }
+            let why = "a branch of wires alone beside boxes: power always passes, and the boxes' own power would be lost".to_string();
+            let line = branches.first().map_or(1, Node::line);
+            return Err(vec![Located::new(line, LdError::Drawing(why))]);
+        }
+        Ok(match nets.len() {
+            1 => nets.remove(0),
+            _ => Net::Parallel(nets),
+        })
+    }
+
+    /// What one leaf is.
+    fn kind(&mut self, node: &Node) -> Result<Kind, Vec<Located<LdError>>> {
+        let Node::Leaf(e, line) = node else {
+            return Ok(Kind::Nothing);
+        };
+        match (self.element)(e) {
+            Ok(Part::Condition(el)) => Ok(Kind::Condition(el)),
+            Ok(Part::Output(el)) => Ok(Kind::Output(el)),
+            Ok(Part::Nothing) => Ok(Kind::Nothing),
+            Ok(Part::Comment(t)) => Ok(Kind::Comment(t)),
+            Err(err) => Err(vec![Located::new(*line, err)]),
+        }
+    }
+}
+
+/// What a leaf is, for the walk.
+enum Kind {
+    Condition(Element),
+    Output(Element),
+    Nothing,
+    Comment(String),
+}
+
+/// A series' last leaf apart from the rest.
+fn split_last(net: Net) -> (Power, Option<Element>) {
+    match net {
+        Net::Leaf(e, _) => (None, Some(e)),
+        Net::Series(mut v) => match v.pop() {
+            Some(Net::Leaf(e, _)) => {
+                let rest = match v.len() {
+                    0 => None,
+                    1 => v.pop(),
+                    _ => Some(Net::Series(v)),
+                };
+                (rest, Some(e))
+            }
+            Some(other) => {
+                v.push(other);
+                (Some(Net::Series(v)), None)
+            }
+            None => (None, None),
+        },
+        other => (Some(other), None),
+    }
+}
