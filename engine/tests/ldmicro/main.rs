@@ -1,5 +1,7 @@
 //! LDmicro's `.ld` files (issue #32).
 
 mod blocks;
+#[path = "../common/mod.rs"]
+mod common;
 mod read;
 mod run;

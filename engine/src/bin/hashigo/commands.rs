@@ -228,17 +228,18 @@ fn typed_lines(line: &str) -> impl Iterator<Item = &str> {
     line.strip_suffix('\r').unwrap_or(line).split('\r')
 }
 
-/// `hashigo compile`: a ladder (`.json` project or PLCopen `.xml`) to
-/// the machine's program text, which `hashigo run` takes back.
+/// `hashigo compile`: a ladder (`.json` project, PLCopen `.xml` or
+/// LDmicro `.ld`) to the machine's program text, which `hashigo run`
+/// takes back.
 pub fn compile(rest: &[String]) -> Result<(), Problems> {
     let args =
         Args::parse(rest, &["machine", "program", "format", "set", "map", "pou"]).map_err(one)?;
     let flag = machine_flag(&args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
-    if !matches!(format, Format::Json | Format::Xml) {
+    if !matches!(format, Format::Json | Format::Xml | Format::Ld) {
         return Err(one(format!(
-            "{path}: hashigo compile takes a ladder (.json project or PLCopen .xml)"
+            "{path}: hashigo compile takes a ladder (.json project, PLCopen .xml or LDmicro .ld)"
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;

@@ -33,6 +33,11 @@ impl SourceFile {
                 "{name}: the file is larger than the {MAX_INPUT_BYTES} bytes an input may have (docs/limits.md)"
             ));
         }
+        if name.to_ascii_lowercase().ends_with(".ld") {
+            // LDmicro's users wrote their notes in Windows' code page.
+            let text = engine::ldmicro::decode(&bytes).into_owned();
+            return Ok(SourceFile { name, text });
+        }
         let text = String::from_utf8(bytes).map_err(|e| {
             let at = e.utf8_error().valid_up_to();
             let bytes = e.as_bytes();
@@ -67,6 +72,8 @@ pub enum Format {
     Asm,
     Json,
     Xml,
+    /// An LDmicro file (`.ld`): runs on the soft PLC.
+    Ld,
 }
 
 impl Format {
@@ -79,8 +86,9 @@ impl Format {
                 "asm" => Ok(Format::Asm),
                 "json" => Ok(Format::Json),
                 "xml" => Ok(Format::Xml),
+                "ld" => Ok(Format::Ld),
                 other => Err(format!(
-                    "unknown --format {}: il, asm, json or xml",
+                    "unknown --format {}: il, asm, json, xml or ld",
                     engine::shown(other)
                 )),
             };
@@ -92,6 +100,8 @@ impl Format {
             Format::Json
         } else if lower.ends_with(".xml") {
             Format::Xml
+        } else if lower.ends_with(".ld") {
+            Format::Ld
         } else {
             Format::Il
         })

@@ -20,7 +20,7 @@ usage: hashigo <command> [options]
            --until TIME [--every TIME] --watch DEV[,DEV...]
   bench    --machine ID --program FILE --steps N
   asm      --machine ID --program FILE
-  compile  [--machine ID] --program LADDER.json|LADDER.xml [--map MAP.csv] [--pou NAME]
+  compile  [--machine ID] --program LADDER.json|LADDER.xml|LADDER.ld [--map MAP.csv] [--pou NAME]
   console  --machine io86a|arduino-plc [--program FILE] [--step TIME]
   share    --program FILE [--machine ID]      (prints the share link's fragment)
   unshare  FRAGMENT|URL                       (prints the project as JSON)

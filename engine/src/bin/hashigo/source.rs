@@ -75,7 +75,7 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
             let text = soft_program(args, &source)?;
             (MachineId::SoftPlc, Some(text), Vec::new(), None)
         }
-        Format::Json | Format::Xml => {
+        Format::Json | Format::Xml | Format::Ld => {
             let (project, text, settings) = compile_source(args, &source, format, flag)?;
             (project.machine, Some(text), settings, Some(project))
         }
@@ -107,6 +107,38 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
         format,
         project,
     })
+}
+
+/// An LDmicro file as the soft PLC's project: its ladder, and its
+/// `CYCLE=` as the scan period (docs/ldmicro.md). LDmicro files run on
+/// the soft PLC; another `--machine` is refused.
+fn ldmicro_project(
+    source: &SourceFile,
+    flag: Option<MachineId>,
+) -> Result<(Project, Settings), Problems> {
+    if let Some(m) = flag.filter(|m| *m != MachineId::SoftPlc) {
+        return Err(one(format!(
+            "{}: LDmicro files run on the soft PLC (--machine soft-plc), not {}",
+            source.name,
+            m.name()
+        )));
+    }
+    let file = engine::ldmicro::parse(&source.text).map_err(|e| source.located(&e))?;
+    let ladder = engine::ldmicro::to_ladder(&file).map_err(|e| source.located(&e))?;
+    let mut project = Project::new(MachineId::SoftPlc, ladder);
+    let us = file.cycle_us;
+    let scan = if us % 1000 == 0 {
+        format!("{}ms", us / 1000)
+    } else {
+        format!("{us}us")
+    };
+    project.settings.insert("scan".into(), scan.clone());
+    let line = source
+        .text
+        .lines()
+        .position(|l| l.trim_start().starts_with("CYCLE="))
+        .map_or(1, |i| i + 1);
+    Ok((project, vec![("scan".into(), scan, line)]))
 }
 
 /// A PLCopen project as the soft PLC runs it: no map (names stay names,
@@ -184,6 +216,9 @@ pub fn read_project(
     flag: Option<MachineId>,
     xml: &XmlOptions,
 ) -> Result<(Project, Settings), Problems> {
+    if format == Format::Ld {
+        return ldmicro_project(source, flag);
+    }
     if format == Format::Json {
         let mut project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
         project.machine = flag.unwrap_or(project.machine);
@@ -272,7 +307,7 @@ pub fn ladder_project(
     scan_ms: u32,
 ) -> Result<Project, Problems> {
     Ok(match format {
-        Format::Json | Format::Xml => {
+        Format::Json | Format::Xml | Format::Ld => {
             read_project(source, format, flag, &XmlOptions::read(args)?)?.0
         }
         Format::Il | Format::Asm => {

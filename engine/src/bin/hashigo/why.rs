@@ -119,7 +119,7 @@ impl Explained {
         })?;
         let origin = match source.format {
             Format::Il | Format::Asm => format!("{} (as its ladder)", source.name),
-            Format::Json | Format::Xml => format!("{} (compiled)", source.name),
+            Format::Json | Format::Xml | Format::Ld => format!("{} (compiled)", source.name),
         };
         let mut plc = new_plc(machine);
         plc.load_text(&live.listing.text)
