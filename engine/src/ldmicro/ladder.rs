@@ -241,16 +241,20 @@ enum Role {
 /// blocks' instances.
 fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Variable> {
     let mut roles: Vec<(String, Role)> = Vec::new();
+    let mut at: HashMap<String, usize> = HashMap::new();
     let mut note = |name: &str, role: Role| {
         let name = name.trim();
         if name.is_empty() || is_number(name) {
             return;
         }
-        match roles.iter_mut().find(|(n, _)| n == name) {
+        match at.get(name) {
             // A bit read as a number stays a bit (the soft PLC then says
             // where it does not fit).
-            Some((_, r)) => *r = (*r).min(role),
-            None => roles.push((name.to_string(), role)),
+            Some(&k) => roles[k].1 = roles[k].1.min(role),
+            None => {
+                at.insert(name.to_string(), roles.len());
+                roles.push((name.to_string(), role));
+            }
         }
     };
     // The IO LIST's inputs and outputs first, so that the board follows
@@ -292,6 +296,24 @@ fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Vari
             _ => {}
         }
     }
+    let persist: std::collections::HashSet<&str> = file
+        .elements()
+        .filter_map(|(e, _)| match e {
+            Ld::Persist(p) => Some(p.as_str()),
+            _ => None,
+        })
+        .collect();
+    let io: HashMap<&str, &str> = file
+        .io
+        .iter()
+        .map(|i| (i.name.as_str(), i.rest.as_str()))
+        .collect();
+    let notes: HashMap<&str, &str> = file
+        .vars
+        .iter()
+        .filter(|v| !v.note.is_empty())
+        .map(|v| (v.name.as_str(), v.note.as_str()))
+        .collect();
     let (mut inputs, mut outputs) = (0usize, 0usize);
     let mut out = Vec::new();
     for (name, role) in roles {
@@ -303,24 +325,22 @@ fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Vari
             v.address = format!("%QX{}.{}", outputs / 8, outputs % 8);
             outputs += 1;
         }
-        if let Some(io) = file.io.iter().find(|io| io.name == name) {
-            v.comment = format!("LDmicro pin: {}", io.rest);
+        if let Some(rest) = io.get(name.as_str()) {
+            v.comment = format!("LDmicro pin: {rest}");
         }
-        if let Some(size) = file.vars.iter().find(|s| s.name == name) {
-            if !size.note.is_empty() {
-                v.comment = size.note.clone();
-            }
+        if let Some(note) = notes.get(name.as_str()) {
+            v.comment = note.to_string();
         }
         if name == OPEN {
             v.comment = "LDmicro's OPEN: never on".into();
         }
-        v.retain = file
-            .elements()
-            .any(|(e, _)| matches!(e, Ld::Persist(p) if *p == name));
+        v.retain = persist.contains(name.as_str());
         out.push(v);
     }
+    let names: std::collections::HashSet<String> =
+        out.iter().map(|v| v.name.to_ascii_uppercase()).collect();
     for (instance, kind) in instances {
-        if !out.iter().any(|v| v.name.eq_ignore_ascii_case(instance)) {
+        if !names.contains(&instance.to_ascii_uppercase()) {
             out.push(Variable::new(instance, kind));
         }
     }

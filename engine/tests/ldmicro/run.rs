@@ -311,3 +311,30 @@ fn hashigo_runs_an_ld_file_without_a_machine_and_refuses_hardware_at_its_line() 
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("run on the soft PLC"));
 }
+
+#[test]
+fn deep_and_long_files_are_read_or_refused_at_a_line_never_slowly() {
+    let started = std::time::Instant::now();
+    // 5 000 rungs of a contact, a timer and a coil.
+    let mut body = String::new();
+    for k in 0..5_000 {
+        body.push_str(&format!(
+            "RUNG\n  CONTACTS Xa 0\n  TON T{k} 50000\n  COIL Y{k} 0 0 0\nEND\n"
+        ));
+    }
+    let file = parse(&program(&body)).expect("reads");
+    let ladder = to_ladder(&file).expect("draws");
+    assert_eq!(ladder.rungs.len(), 5_000);
+    // Groups nested 90 deep: drawn or refused at a line, never a panic.
+    let deep = format!(
+        "RUNG\n{}  CONTACTS Xa 0\n  COIL Yq 0 0 0\n{}END\n",
+        "PARALLEL\nSERIES\n".repeat(45),
+        "END\nEND\n".repeat(45)
+    );
+    let file = parse(&program(&deep)).expect("reads");
+    if let Err(errors) = to_ladder(&file) {
+        assert!(errors.iter().all(|e| e.line > 0), "{errors:?}");
+    }
+    // Not a speed test: a search of the ladder per rung would take minutes.
+    assert!(started.elapsed().as_secs() < 60);
+}
