@@ -68,7 +68,7 @@ pub fn ask(request: Request, done: impl FnOnce(Result<Reply, String>) + 'static)
     }
 }
 
-/// [`ask`], saying so on the page: `message` reads "Reading the PLCopen
+/// [`ask`], saying so on the page: `message` reads "Reading the
 /// file…" while the worker works and says why when it cannot start;
 /// `then` gets the reply (the message cleared).
 pub fn ask_saying(

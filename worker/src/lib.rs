@@ -42,6 +42,8 @@ pub enum Request {
     },
     /// Export `ladder` as PLCopen XML with one program named `name`.
     Export { ladder: Ladder, name: String },
+    /// Open an LDmicro `.ld` file as a soft PLC ladder (docs/ldmicro.md).
+    OpenLd { file: String, text: String },
 }
 
 /// The worker's answer to a [`Request`].
@@ -50,6 +52,18 @@ pub enum Reply {
     Import(ImportReply),
     /// The XML, or each reason the ladder cannot be exported.
     Export(Result<String, Vec<String>>),
+    /// The LDmicro file's ladder, or each reason it does not open
+    /// (`file:line: …`).
+    OpenLd(Result<LdOpened, Vec<String>>),
+}
+
+/// An LDmicro file as the soft PLC's ladder.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LdOpened {
+    /// The ladder, its outputs aligned.
+    pub ladder: Ladder,
+    /// The file's `CYCLE=`, in µs: the scan its timers count.
+    pub cycle_us: u64,
 }
 
 /// What an import attempt found.
@@ -82,7 +96,25 @@ pub fn handle(request: Request) -> Reply {
             plcopen::export(&ladder, &name)
                 .map_err(|errors| errors.iter().map(ToString::to_string).collect()),
         ),
+        Request::OpenLd { file, text } => Reply::OpenLd(open_ld(&file, &text)),
     }
+}
+
+/// An LDmicro file read and drawn for the soft PLC; every problem at its
+/// line.
+fn open_ld(file: &str, text: &str) -> Result<LdOpened, Vec<String>> {
+    let at = |errors: Vec<engine::Located<engine::ldmicro::LdError>>| {
+        errors
+            .iter()
+            .map(|e| format!("{file}:{}: {}", e.line, e.error))
+            .collect::<Vec<_>>()
+    };
+    let parsed = engine::ldmicro::parse(text).map_err(at)?;
+    let ladder = engine::ldmicro::to_ladder(&parsed).map_err(at)?;
+    Ok(LdOpened {
+        ladder: align_outputs(&ladder, COLUMNS - 1),
+        cycle_us: parsed.cycle_us,
+    })
 }
 
 /// One import attempt (see [`Request::Import`]).

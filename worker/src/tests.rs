@@ -143,3 +143,29 @@ fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole(
     assert!(last.contains("hashigo run --machine soft-plc"), "{last}");
     assert!(reply.errors.iter().all(|e| !e.contains("data register")));
 }
+
+#[test]
+fn an_ldmicro_file_opens_as_a_soft_plc_ladder_or_says_why_at_its_line() {
+    let open = |text: &str| match handle(Request::OpenLd {
+        file: "a.ld".into(),
+        text: text.into(),
+    }) {
+        Reply::OpenLd(r) => r,
+        other => panic!("{other:?}"),
+    };
+    let opened = open("LDmicro0.1\nCYCLE=5000\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  TON Tw 50000\n  COIL Yq 0 0 0\nEND\n")
+        .expect("opens");
+    assert_eq!(opened.cycle_us, 5000);
+    let il =
+        engine::ladder::compile::compile(&opened.ladder, MachineId::SoftPlc, Default::default())
+            .expect("compiles");
+    // 50 ms at 5 ms in a 0.1 file: 9 cycles.
+    assert!(il.contains("Tw_ld(IN := _p0, P := DINT#9"), "{il}");
+    let errors =
+        open("LDmicro0.1\nPROGRAM\nRUNG\n  I2C_RD a b c d e f g h\nEND\n").expect_err("hardware");
+    assert_eq!(errors.len(), 1);
+    assert!(
+        errors[0].starts_with("a.ld:4: I2C_RD drives hardware"),
+        "{errors:?}"
+    );
+}

@@ -6,6 +6,7 @@
 
 use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
 use engine::ladder::Project;
+use engine::MachineId;
 use files_worker::{Reply, Request};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
@@ -123,8 +124,37 @@ fn export_png(ctx: LadderCtx) {
     image.set_src(&format!("data:image/svg+xml;charset=utf-8,{encoded}"));
 }
 
-/// Reads an opened file: a project (`.json`) or PLCopen XML. A project
-/// for another machine opens on that machine.
+/// An LDmicro file opened (docs/ldmicro.md): read in the files worker,
+/// drawn on the soft PLC (the page switches to it), one undo away; a
+/// file whose cycle is not the page's 10 ms scan says so.
+fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
+    let texts = ctx.page.lang.get_untracked().texts();
+    let request = Request::OpenLd {
+        file: file.to_string(),
+        text: text.to_string(),
+    };
+    let message = ctx.panes.message;
+    crate::worker::ask_saying(message, texts, request, move |reply| match reply {
+        Reply::OpenLd(Ok(opened)) => {
+            let target = ladders.map_or(ctx, |l| l.of(MachineId::SoftPlc));
+            ctx.page.machine.set(MachineId::SoftPlc);
+            if target.ladder() != opened.ladder {
+                target.apply(Edit::Replace {
+                    ladder: opened.ladder,
+                });
+            }
+            if opened.cycle_us != 10_000 {
+                let ms = format!("{}", opened.cycle_us as f64 / 1000.0);
+                message.set(Some(texts.ld_cycle.replace("{cycle}", &ms)));
+            }
+        }
+        Reply::OpenLd(Err(errors)) => message.set(Some(errors.join("\n"))),
+        other => leptos::logging::warn!("an LDmicro file got {other:?}"),
+    });
+}
+
+/// Reads an opened file: a project (`.json`), PLCopen XML or an LDmicro
+/// `.ld` file. A project for another machine opens on that machine.
 fn open_text(
     ctx: LadderCtx,
     ladders: Option<Ladders>,
@@ -132,10 +162,12 @@ fn open_text(
     file: &str,
     text: &str,
 ) {
-    let is_xml = text
-        .trim_start_matches('\u{feff}')
-        .trim_start()
-        .starts_with('<');
+    let start = text.trim_start_matches('\u{feff}').trim_start();
+    if file.to_ascii_lowercase().ends_with(".ld") || start.starts_with("LDmicro") {
+        open_ld(ctx, ladders, file, text);
+        return;
+    }
+    let is_xml = start.starts_with('<');
     let (target, ladder) = if is_xml {
         // Another tool's project may need devices for its variables: the
         // import dialog (docs/ladder.md, "Declarations").
@@ -208,7 +240,7 @@ pub fn FileButtons(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
             </button>
             <label class="file-open">
                 {move || t().open_file}
-                <input type="file" data-testid="open-file" accept=".json,.xml,application/json,text/xml" on:change=on_file />
+                <input type="file" data-testid="open-file" accept=".json,.xml,.ld,application/json,text/xml" on:change=on_file />
             </label>
             <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>
             <button type="button" data-testid="export-text" disabled=move || ctx.drawing.listing.with(Option::is_none) on:click=move |_| {

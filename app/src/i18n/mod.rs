@@ -238,6 +238,9 @@ pub struct Texts {
     pub import_title: &'static str,
     /// While the files worker reads or writes a PLCopen file.
     pub files_loading: &'static str,
+    /// Said when an LDmicro file's cycle is not the soft PLC's scan in
+    /// the page (`{cycle}`: the file's, in ms).
+    pub ld_cycle: &'static str,
     /// The files worker could not be started.
     pub files_failed: &'static str,
     pub import_pou: &'static str,

@@ -434,7 +434,7 @@ pub fn is_number(operand: &str) -> bool {
 pub fn number(text: &str) -> Option<i64> {
     let s = text.trim();
     if let Some(quoted) = s.strip_prefix('\'').and_then(|q| q.strip_suffix('\'')) {
-        let unescaped = super::parse::unescape(quoted);
+        let unescaped = unescape(quoted);
         let mut chars = unescaped.chars();
         return match (chars.next(), chars.next()) {
             (Some(c), None) => Some(i64::from(u32::from(c))),
@@ -458,4 +458,55 @@ pub fn number(text: &str) -> Option<i64> {
         lower.parse().ok()?
     };
     Some(if negative { -value } else { value })
+}
+
+/// LDmicro's escapes in a saved string (`\n`, `\r`, `\t`, `\\`, `\x20`
+/// for a space, `\'`, `\"`, `\?`, `\a`, `\b`, `\e`, `\f`, `\v`); an
+/// unknown one keeps its backslash, as LDmicro does.
+pub fn unescape(text: &str) -> String {
+    if text == "(none)" {
+        return String::new();
+    }
+    let mut out = String::with_capacity(text.len());
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        if c != '\\' {
+            out.push(c);
+            continue;
+        }
+        let rest: String = chars.clone().take(4).collect();
+        if rest.starts_with("x20") {
+            out.push(' ');
+            chars.nth(2);
+            continue;
+        }
+        if rest.starts_with("\\x20") {
+            out.push(' ');
+            chars.nth(3);
+            continue;
+        }
+        let mapped = match chars.peek() {
+            Some('\'') => Some('\''),
+            Some('"') => Some('"'),
+            Some('?') => Some('?'),
+            Some('\\') => Some('\\'),
+            Some('a') => Some('\u{7}'),
+            Some('b') => Some('\u{8}'),
+            Some('e') => Some('\u{1b}'),
+            Some('f') => Some('\u{c}'),
+            Some('n') => Some('\n'),
+            Some('r') => Some('\r'),
+            Some('t') => Some('\t'),
+            Some('v') => Some('\u{b}'),
+            _ => None,
+        };
+        match mapped {
+            Some(m) => {
+                out.push(m);
+                chars.next();
+            }
+            None => out.push('\\'),
+        }
+    }
+    out
 }

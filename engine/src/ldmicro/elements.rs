@@ -4,10 +4,7 @@
 //! counters as LDmicro's own blocks ([`crate::softplc::ld_blocks`]) on
 //! the variable of their name.
 
-use super::element::{
-    is_number, number, CompareOp, CounterKind, Element as Ld, MathOp, OneShotKind, TimerKind,
-    UnaryOp,
-};
+use super::element::{is_number, number, CompareOp, Element as Ld, MathOp, OneShotKind, UnaryOp};
 use super::error::LdError;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::BlockCall;
@@ -110,33 +107,7 @@ pub(super) fn part(
             },
             device: name.clone(),
         }),
-        Ld::Coil {
-            name,
-            negated,
-            set_only,
-            reset_only,
-            toggle,
-        } => {
-            if *toggle {
-                let call = ld_box(
-                    "LD_TOGGLE",
-                    instance(name),
-                    vec![("V", name.clone())],
-                    vec![("V", name.clone())],
-                );
-                return Ok(Part::Output(Element::OutputBlock(call)));
-            }
-            let kind = match (negated, set_only, reset_only) {
-                (true, _, _) => CoilKind::Inverted,
-                (_, true, _) => CoilKind::Set,
-                (_, _, true) => CoilKind::Reset,
-                _ => CoilKind::Normal,
-            };
-            Part::Output(Element::Coil {
-                kind,
-                device: name.clone(),
-            })
-        }
+        Ld::Coil { .. } => coil(e, instance),
         Ld::OneShot(OneShotKind::Rising) => Part::Condition(Element::Edge { falling: false }),
         Ld::OneShot(OneShotKind::Falling) => Part::Condition(Element::Edge { falling: true }),
         Ld::OneShot(k) => {
@@ -148,6 +119,54 @@ pub(super) fn part(
             let call = ld_box(kind, instance("_shot"), Vec::new(), Vec::new());
             Part::Condition(Element::Block(call))
         }
+        Ld::Timer { .. } | Ld::Counter { .. } => {
+            Part::Condition(Element::Block(timer_or_counter(e, cycle, instance)?))
+        }
+        Ld::Unary { .. } | Ld::Math { .. } | Ld::Compare { .. } => {
+            Part::Condition(Element::Block(operation(e)?))
+        }
+        Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
+        other => return Err(LdError::NotYet(other.keyword().into())),
+    })
+}
+
+/// A coil: the soft PLC's coil of that kind, or a toggle's box.
+fn coil(e: &Ld, instance: &mut impl FnMut(&str) -> String) -> Part {
+    let Ld::Coil {
+        name,
+        negated,
+        set_only,
+        reset_only,
+        toggle,
+    } = e
+    else {
+        return Part::Nothing;
+    };
+    if *toggle {
+        let v = || vec![("V", name.clone())];
+        let call = ld_box("LD_TOGGLE", instance(name), v(), v());
+        return Part::Output(Element::OutputBlock(call));
+    }
+    let kind = match (negated, set_only, reset_only) {
+        (true, _, _) => CoilKind::Inverted,
+        (_, true, _) => CoilKind::Set,
+        (_, _, true) => CoilKind::Reset,
+        _ => CoilKind::Normal,
+    };
+    Part::Output(Element::Coil {
+        kind,
+        device: name.clone(),
+    })
+}
+
+/// A timer's or counter's box: LDmicro's block on the count variable of
+/// the element's name.
+fn timer_or_counter(
+    e: &Ld,
+    cycle: u64,
+    instance: &mut impl FnMut(&str) -> String,
+) -> Result<BlockCall, LdError> {
+    match e {
         Ld::Timer {
             kind,
             name,
@@ -155,22 +174,14 @@ pub(super) fn part(
             adjust,
         } => {
             let p = period(name, delay, cycle, *adjust)?;
-            let block = match kind {
-                TimerKind::Ton => "LD_TON",
-                TimerKind::Tof => "LD_TOF",
-                TimerKind::Rto => "LD_RTO",
-                TimerKind::Rtl => "LD_RTL",
-                TimerKind::Tcy => "LD_TCY",
-                TimerKind::Thi => "LD_THI",
-                TimerKind::Tlo => "LD_TLO",
-            };
-            let call = ld_box(
-                block,
+            let block = format!("LD_{}", kind.keyword());
+            let t = || name.clone();
+            Ok(ld_box(
+                &block,
                 instance(name),
-                vec![("P", p), ("T", name.clone())],
-                vec![("T", name.clone())],
-            );
-            Part::Condition(Element::Block(call))
+                vec![("P", p), ("T", t())],
+                vec![("T", t())],
+            ))
         }
         Ld::Counter {
             kind,
@@ -179,12 +190,6 @@ pub(super) fn part(
             init,
             input,
         } => {
-            let block = match kind {
-                CounterKind::Ctu => "LD_CTU",
-                CounterKind::Ctd => "LD_CTD",
-                CounterKind::Ctc => "LD_CTC",
-                CounterKind::Ctr => "LD_CTR",
-            };
             let mut inputs = vec![
                 ("MAX", operand(max)?),
                 ("INIT", operand(init)?),
@@ -199,40 +204,42 @@ pub(super) fn part(
             if edge != 0 {
                 inputs.push(("EDGE", edge.to_string()));
             }
-            let call = ld_box(block, instance(name), inputs, vec![("C", name.clone())]);
-            Part::Condition(Element::Block(call))
+            let block = format!("LD_{}", kind.keyword());
+            Ok(ld_box(
+                &block,
+                instance(name),
+                inputs,
+                vec![("C", name.clone())],
+            ))
         }
+        other => Err(LdError::NotYet(other.keyword().into())),
+    }
+}
+
+/// An arithmetic, move or comparison element as the soft PLC's box.
+fn operation(e: &Ld) -> Result<BlockCall, LdError> {
+    let not_yet = || LdError::NotYet(e.keyword().into());
+    match e {
         Ld::Unary { op, dest, src } => {
             let kind = match op {
                 UnaryOp::Move => "MOVE",
                 UnaryOp::Not => "NOT",
                 UnaryOp::Neg => "NEG",
-                _ => return Err(LdError::NotYet(e.keyword().into())),
+                _ => return Err(not_yet()),
             };
-            Part::Condition(Element::Block(function(
-                kind,
-                vec![("IN", operand(src)?)],
-                dest,
-            )))
+            Ok(function(kind, vec![("IN", operand(src)?)], dest))
         }
         Ld::Math { op, dest, a, b } => {
-            let (kind, pins) = match op {
-                MathOp::Add => ("ADD", ["IN1", "IN2"]),
-                MathOp::Sub => ("SUB", ["IN1", "IN2"]),
-                MathOp::Mul => ("MUL", ["IN1", "IN2"]),
-                MathOp::Div => ("DIV", ["IN1", "IN2"]),
-                MathOp::Mod => ("MOD", ["IN1", "IN2"]),
-                MathOp::And => ("AND", ["IN1", "IN2"]),
-                MathOp::Or => ("OR", ["IN1", "IN2"]),
-                MathOp::Xor => ("XOR", ["IN1", "IN2"]),
-                MathOp::Shl => ("SHL", ["IN", "N"]),
-                MathOp::Shr => ("SHR", ["IN", "N"]),
-                MathOp::Rol => ("ROL", ["IN", "N"]),
-                MathOp::Ror => ("ROR", ["IN", "N"]),
-                MathOp::Sr0 => return Err(LdError::NotYet(e.keyword().into())),
+            let kind = match op {
+                MathOp::Sr0 => return Err(not_yet()),
+                other => other.keyword(),
+            };
+            let pins = match op {
+                MathOp::Shl | MathOp::Shr | MathOp::Rol | MathOp::Ror => ["IN", "N"],
+                _ => ["IN1", "IN2"],
             };
             let inputs = vec![(pins[0], operand(a)?), (pins[1], operand(b)?)];
-            Part::Condition(Element::Block(function(kind, inputs, dest)))
+            Ok(function(kind, inputs, dest))
         }
         Ld::Compare { op, a, b } => {
             let kind = match op {
@@ -243,17 +250,11 @@ pub(super) fn part(
                 CompareOp::Les => "LT",
                 CompareOp::Leq => "LE",
             };
-            let call = ld_box(
-                kind,
-                String::new(),
-                vec![("IN1", operand(a)?), ("IN2", operand(b)?)],
-                Vec::new(),
-            );
-            Part::Condition(Element::Block(call))
+            let inputs = vec![("IN1", operand(a)?), ("IN2", operand(b)?)];
+            Ok(ld_box(kind, String::new(), inputs, Vec::new()))
         }
-        Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
-        other => return Err(LdError::NotYet(other.keyword().into())),
-    })
+        _ => Err(not_yet()),
+    }
 }
 
 /// The BOOL an `OPEN` element reads: declared, never written, so never

@@ -23,47 +23,15 @@ use crate::ladder::BlockCall;
 /// error at its line, and then nothing is made.
 pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
     let (file, renamed) = &iec_names(file);
-    let mut taken: HashMap<String, usize> = HashMap::new();
-    let mut instances: BTreeMap<String, String> = BTreeMap::new();
-    let counters = counter_starts(file);
-    let cycle = file.cycle_us;
-    let mut analog: Vec<String> = Vec::new();
-    let mut pwm: Vec<String> = Vec::new();
-    let mut element = |e: &Ld| -> Result<Part, LdError> {
-        if let Some(p) = hardware_io(e, &mut analog, &mut pwm) {
-            return p;
-        }
-        if let Ld::Res(name) = e {
-            // A count back to its start: a counter's, else 0.
-            let start = counters.get(name).cloned().unwrap_or_else(|| "0".into());
-            let call = BlockCall {
-                kind: "MOVE".into(),
-                instance: String::new(),
-                inputs: vec![("IN".into(), start)],
-                outputs: vec![("OUT".into(), name.clone())],
-            };
-            return Ok(Part::Output(Element::OutputBlock(call)));
-        }
-        let mut instance = |name: &str| {
-            let stem = format!("{}_ld", name.trim_matches('_'));
-            let n = taken.entry(stem.to_ascii_uppercase()).or_default();
-            *n += 1;
-            if *n == 1 {
-                stem
-            } else {
-                format!("{stem}{n}")
-            }
-        };
-        let p = part(e, cycle, &mut instance)?;
-        let block = match &p {
-            Part::Condition(Element::Block(b)) | Part::Output(Element::OutputBlock(b)) => Some(b),
-            _ => None,
-        };
-        if let Some(b) = block.filter(|b| !b.instance.is_empty()) {
-            instances.insert(b.instance.clone(), b.kind());
-        }
-        Ok(p)
+    let mut making = Making {
+        counters: counter_starts(file),
+        cycle: file.cycle_us,
+        analog: Vec::new(),
+        pwm: Vec::new(),
+        taken: HashMap::new(),
+        instances: BTreeMap::new(),
     };
+    let mut element = |e: &Ld| making.element(e);
     let mut lowering = Lowering {
         rungs: Vec::new(),
         held: 0,
@@ -78,27 +46,14 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
     }
     let leftover = std::mem::take(&mut lowering.comment);
     let rungs = std::mem::take(&mut lowering.rungs);
-    drop(lowering);
     if !errors.is_empty() {
         return Err(errors);
     }
-    let mut ladder = Ladder::default();
-    for (logic, line) in rungs {
-        match try_layout(&logic) {
-            Ok(r) => ladder.rungs.push(r),
-            Err(size) => errors.push(Located::new(line, LdError::Drawing(size.to_string()))),
-        }
-    }
-    if let (Some(last), false) = (ladder.rungs.last_mut(), leftover.is_empty()) {
-        if !last.comment.is_empty() {
-            last.comment.push('\n');
-        }
-        last.comment.push_str(&leftover);
-    }
-    if !errors.is_empty() {
-        return Err(errors);
-    }
-    ladder.variables = declarations(file, &instances);
+    let mut ladder = Ladder {
+        rungs: drawn(rungs, leftover)?,
+        ..Ladder::default()
+    };
+    ladder.variables = declarations(file, &making.instances);
     for v in &mut ladder.variables {
         if let Some(original) = renamed.get(&v.name) {
             let was = format!("LDmicro name: {original}");
@@ -110,6 +65,90 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
         }
     }
     Ok(ladder)
+}
+
+/// The rungs drawn on grids, a comment left after the last rung going
+/// to it.
+fn drawn(
+    rungs: Vec<(crate::ladder::net::RungLogic, usize)>,
+    leftover: String,
+) -> Result<Vec<crate::ladder::grid::Rung>, Vec<Located<LdError>>> {
+    let mut out = Vec::new();
+    let mut errors = Vec::new();
+    for (logic, line) in rungs {
+        match try_layout(&logic) {
+            Ok(r) => out.push(r),
+            Err(size) => errors.push(Located::new(line, LdError::Drawing(size.to_string()))),
+        }
+    }
+    if let (Some(last), false) = (out.last_mut(), leftover.is_empty()) {
+        if !last.comment.is_empty() {
+            last.comment.push('\n');
+        }
+        last.comment.push_str(&leftover);
+    }
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        Err(errors)
+    }
+}
+
+/// What making the ladder keeps between elements: counters' starts, the
+/// analog I/O given out, the instances named.
+struct Making {
+    counters: HashMap<String, String>,
+    cycle: u64,
+    analog: Vec<String>,
+    pwm: Vec<String>,
+    /// Instance names given, by stem (upper case), and how many times.
+    taken: HashMap<String, usize>,
+    /// Each block instance and its kind.
+    instances: BTreeMap<String, String>,
+}
+
+impl Making {
+    /// Element `e` as the soft PLC has it.
+    fn element(&mut self, e: &Ld) -> Result<Part, LdError> {
+        if let Some(p) = hardware_io(e, &mut self.analog, &mut self.pwm) {
+            return p;
+        }
+        if let Ld::Res(name) = e {
+            // A count back to its start: a counter's, else 0.
+            let start = self
+                .counters
+                .get(name)
+                .cloned()
+                .unwrap_or_else(|| "0".into());
+            let call = BlockCall {
+                kind: "MOVE".into(),
+                instance: String::new(),
+                inputs: vec![("IN".into(), start)],
+                outputs: vec![("OUT".into(), name.clone())],
+            };
+            return Ok(Part::Output(Element::OutputBlock(call)));
+        }
+        let taken = &mut self.taken;
+        let mut instance = |name: &str| {
+            let stem = format!("{}_ld", name.trim_matches('_'));
+            let n = taken.entry(stem.to_ascii_uppercase()).or_default();
+            *n += 1;
+            if *n == 1 {
+                stem
+            } else {
+                format!("{stem}{n}")
+            }
+        };
+        let p = part(e, self.cycle, &mut instance)?;
+        let block = match &p {
+            Part::Condition(Element::Block(b)) | Part::Output(Element::OutputBlock(b)) => Some(b),
+            _ => None,
+        };
+        if let Some(b) = block.filter(|b| !b.instance.is_empty()) {
+            self.instances.insert(b.instance.clone(), b.kind());
+        }
+        Ok(p)
+    }
 }
 
 /// The file with every name that is no IEC name (`Cnew1__`, `#PORTB`)
@@ -237,9 +276,9 @@ enum Role {
     Number,
 }
 
-/// The ladder's variables: bits and numbers the elements name, the
-/// blocks' instances.
-fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Variable> {
+/// Each name the file's elements use and what it is, in the order the
+/// board and the variables pane show them (the IO LIST's first).
+fn roles(file: &LdFile) -> Vec<(String, Role)> {
     let mut roles: Vec<(String, Role)> = Vec::new();
     let mut at: HashMap<String, usize> = HashMap::new();
     let mut note = |name: &str, role: Role| {
@@ -296,6 +335,13 @@ fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Vari
             _ => {}
         }
     }
+    roles
+}
+
+/// The ladder's variables: bits and numbers the elements name, the
+/// blocks' instances.
+fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Variable> {
+    let roles = roles(file);
     let persist: std::collections::HashSet<&str> = file
         .elements()
         .filter_map(|(e, _)| match e {

@@ -172,82 +172,103 @@ impl Lowering<'_> {
                     power = self.series(inner, power, tail && last)?;
                 }
                 (Node::Parallel(branches, _), None) if wired_beside_boxes(branches) => {
-                    // A wire beside boxes: power passes as it came, and
-                    // each box branch still runs on it, in a rung of its
-                    // own into a BOOL nothing reads.
-                    power = self.hold(power, line);
-                    for b in branches {
-                        let inner = match b {
-                            Node::Series(v, _) => v.as_slice(),
-                            other => std::slice::from_ref(other),
-                        };
-                        let end = self.series(inner, power.clone(), false)?;
-                        self.hold(end, line);
-                    }
+                    power = self.wire_beside(branches, power, line)?;
                 }
                 (Node::Parallel(branches, _), None) if !grouped_outputs => {
                     let nets = self.branches(branches)?;
                     power = Some(then(power, nets));
                 }
                 (Node::Parallel(branches, _), None) => {
-                    power = self.hold(power, line);
-                    let mut ends = Vec::new();
-                    for b in branches {
-                        let inner = match b {
-                            Node::Series(v, _) => v.as_slice(),
-                            other => std::slice::from_ref(other),
-                        };
-                        ends.push(self.series(inner, power.clone(), tail && last)?);
-                    }
-                    power = if tail && last {
-                        None
-                    } else {
-                        let joined: Vec<Net> = ends.into_iter().flatten().collect();
-                        self.hold(Some(Net::Parallel(joined)), line)
-                    };
+                    power = self.output_branches(branches, power, (tail && last, line))?;
                 }
                 (Node::Leaf(..), None) => {}
             }
         }
+        let end_line = nodes.last().map_or(1, Node::line);
+        self.finish(pending, (pending_line, end_line), &mut power, tail);
+        Ok(power)
+    }
+
+    /// The end of a series: its waiting outputs on its power (held first
+    /// when something after reads it); a rung ending in a box (a counter
+    /// with no coil after it) has the box as its output, and other boxes
+    /// at a rung's end still run, into a BOOL nothing reads.
+    fn finish(
+        &mut self,
+        pending: Vec<Element>,
+        (pending_line, end_line): (usize, usize),
+        power: &mut Power,
+        tail: bool,
+    ) {
         if !pending.is_empty() {
             if !tail {
-                power = self.hold(power, pending_line);
+                *power = self.hold(power.take(), pending_line);
             }
             self.emit(power.clone(), pending, pending_line);
-        } else if tail && !pure(&power) {
-            // A rung ending in a box (a counter with no coil after it):
-            // the box is its output.
-            if let Some(net) = power.take() {
-                let (rest, last) = split_last(net);
-                match last {
-                    Some(Element::Block(b)) => self.emit(
-                        rest,
-                        vec![Element::OutputBlock(b)],
-                        nodes.last().map_or(1, Node::line),
-                    ),
-                    other => {
-                        let mut net = rest;
-                        if let Some(e) = other {
-                            net = Some(then(net, leaf(e)));
-                        }
-                        // Its boxes still run: into a BOOL nothing reads.
-                        self.hold(net, nodes.last().map_or(1, Node::line));
-                    }
-                }
+            return;
+        }
+        if !tail || pure(power) {
+            return;
+        }
+        let Some(net) = power.take() else {
+            return;
+        };
+        match split_last(net) {
+            (rest, Some(Element::Block(b))) => {
+                self.emit(rest, vec![Element::OutputBlock(b)], end_line)
+            }
+            (rest, other) => {
+                let net = match other {
+                    Some(e) => Some(then(rest, leaf(e))),
+                    None => rest,
+                };
+                self.hold(net, end_line);
             }
         }
+    }
+
+    /// A wire beside boxes: power passes as it came, and each box branch
+    /// still runs on it, in a rung of its own into a BOOL nothing reads.
+    fn wire_beside(
+        &mut self,
+        branches: &[Node],
+        power: Power,
+        line: usize,
+    ) -> Result<Power, Vec<Located<LdError>>> {
+        let power = self.hold(power, line);
+        for b in branches {
+            let end = self.series(inner(b), power.clone(), false)?;
+            self.hold(end, line);
+        }
         Ok(power)
+    }
+
+    /// Branches holding outputs: each a rung (or rungs) of its own on the
+    /// power before them (held); after them, when read (`tail` false),
+    /// the OR of what each branch passes, held.
+    fn output_branches(
+        &mut self,
+        branches: &[Node],
+        power: Power,
+        (tail, line): (bool, usize),
+    ) -> Result<Power, Vec<Located<LdError>>> {
+        let power = self.hold(power, line);
+        let mut ends = Vec::new();
+        for b in branches {
+            ends.push(self.series(inner(b), power.clone(), tail)?);
+        }
+        if tail {
+            return Ok(None);
+        }
+        let joined: Vec<Net> = ends.into_iter().flatten().collect();
+        Ok(self.hold(Some(Net::Parallel(joined)), line))
     }
 
     /// The branches of a parallel group holding no outputs: one network.
     fn branches(&mut self, branches: &[Node]) -> Result<Net, Vec<Located<LdError>>> {
         let mut nets = Vec::new();
         for b in branches {
-            let inner = match b {
-                Node::Series(v, _) => v.as_slice(),
-                other => std::slice::from_ref(other),
-            };
-            match self.series(inner, None, false)? {
+            match self.series(inner(b), None, false)? {
                 Some(net) => nets.push(net),
                 // A branch of wires only: the group always passes power.
                 None => nets.push(leaf(Element::Wire)),
@@ -295,6 +316,14 @@ enum Kind {
     Output(Element),
     Nothing,
     Comment(String),
+}
+
+/// A branch's contents: a series' nodes, or the node itself.
+fn inner(b: &Node) -> &[Node] {
+    match b {
+        Node::Series(v, _) => v.as_slice(),
+        other => std::slice::from_ref(other),
+    }
 }
 
 /// A series' last leaf apart from the rest.

@@ -13,6 +13,7 @@ mod elements;
 pub mod error;
 pub mod file;
 mod ladder;
+mod leaf;
 mod lower;
 pub mod parse;
 

@@ -240,41 +240,47 @@ impl LdBlock {
                     true
                 }
             }
-            Kind::Tcy => {
-                if s {
-                    if t < period {
-                        t += 1;
-                    } else {
-                        t = 0;
-                        self.store = !self.store;
-                    }
-                    self.store
-                } else {
-                    t = 0;
-                    false
-                }
-            }
-            Kind::Thi => {
-                if s {
-                    self.store = true;
-                }
-                if !self.store {
-                    false
-                } else if t < period {
-                    t += 1;
-                    true
-                } else {
-                    if !s {
-                        t = 0;
-                        self.store = false;
-                    }
-                    false
-                }
-            }
+            Kind::Tcy => self.tcy(s, period, &mut t),
+            Kind::Thi => self.thi(s, period, &mut t),
             _ => self.tlo(s, period, &mut t),
         };
         self.value = t;
         out
+    }
+
+    /// TCY: while on, the output turns over each time the count passes
+    /// the period.
+    fn tcy(&mut self, s: bool, period: i64, t: &mut i64) -> bool {
+        if !s {
+            *t = 0;
+            return false;
+        }
+        if *t < period {
+            *t += 1;
+        } else {
+            *t = 0;
+            self.store = !self.store;
+        }
+        self.store
+    }
+
+    /// THI: high for its period after the input rises.
+    fn thi(&mut self, s: bool, period: i64, t: &mut i64) -> bool {
+        if s {
+            self.store = true;
+        }
+        if !self.store {
+            false
+        } else if *t < period {
+            *t += 1;
+            true
+        } else {
+            if !s {
+                *t = 0;
+                self.store = false;
+            }
+            false
+        }
     }
 
     /// TLO: low for its period after the input falls (LDmicro's code,

@@ -1,0 +1,78 @@
+"""End-to-end: LDmicro `.ld` files open in the page (issue #32): drawn on
+the soft PLC, run from its board; a bad file said at its line."""
+
+from selenium.webdriver.common.by import By
+
+from test_app import el, on, open_fresh, severe_console_messages, wait
+
+# Written for these tests (LDmicro's own files are not committed): a
+# counter of Xa's rises to 3 lights Yq, Xr resets it; a 0.1 file at a
+# 10 ms cycle, CRLF line ends as LDmicro writes them on Windows.
+COUNTER = "\r\n".join([
+    "LDmicro0.1",
+    "MICRO=Atmel AVR ATmega328 28-PDIP",
+    "CYCLE=10000",
+    "CRYSTAL=16000000",
+    "BAUD=2400",
+    "",
+    "IO LIST",
+    "    Xa at 14",
+    "    Xr at 15",
+    "    Yq at 16",
+    "END",
+    "",
+    "PROGRAM",
+    "RUNG",
+    "    COMMENT Count Xa's rises; Yq at 3.",
+    "END",
+    "RUNG",
+    "    CONTACTS Xa 0",
+    "    CTU Cparts 3",
+    "    COIL Yq 0 0 0",
+    "END",
+    "RUNG",
+    "    CONTACTS Xr 0",
+    "    RES Cparts",
+    "END",
+    "",
+])
+
+
+def test_an_ld_file_opens_on_the_soft_plc_and_runs_from_its_board(driver, base_url, tmp_path, artifacts):
+    open_fresh(driver, base_url)
+    assert el(driver, "machine").get_attribute("value") != "soft-plc"
+    path = tmp_path / "counter.ld"
+    path.write_bytes(COUNTER.encode("latin-1"))
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "soft-plc",
+         message="the page switches to the soft PLC")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-Cparts"]'),
+         message="the file's names in the variables pane")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    boxes = [b.text for b in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="box"]')]
+    assert any("LD_CTU" in b for b in boxes), boxes
+    el(driver, "run").click()
+    # The IO LIST's order on the board: Xa, Xr on %IX0.0, %IX0.1.
+    label = lambda testid: el(driver, testid).find_element(By.XPATH, "..").text
+    wait(driver, lambda: "Xa" in label("soft-input-IX0-0") and "Xr" in label("soft-input-IX0-1"))
+    for n in range(3):
+        el(driver, "soft-input-IX0-0").click()
+        el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="three rises count to 3: Yq")
+    el(driver, "soft-input-IX0-1").click()
+    wait(driver, lambda: not on(driver, "soft-lamp-QX0-0"), message="Xr resets the count")
+    driver.save_screenshot(str(artifacts / "ldmicro-opened.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_an_ld_file_with_hardware_the_page_does_not_simulate_is_refused_at_its_line(driver, base_url, tmp_path):
+    open_fresh(driver, base_url)
+    bad = COUNTER.replace("    RES Cparts", "    I2C_WR I2C1 a b c d e f g")
+    path = tmp_path / "i2c.ld"
+    path.write_text(bad)
+    before = el(driver, "machine").get_attribute("value")
+    el(driver, "open-file").send_keys(str(path))
+    message = wait(driver, lambda: "I2C_WR" in el(driver, "edit-message").text and el(driver, "edit-message"))
+    assert message.text.startswith("i2c.ld:24: I2C_WR drives hardware"), message.text
+    assert el(driver, "machine").get_attribute("value") == before, "nothing changed"
+    assert severe_console_messages(driver) == []
