@@ -21,7 +21,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::softplc::data::DataType;
 use crate::softplc::pins;
-use crate::softplc::vars::{is_identifier, BLOCK_TYPES};
+use crate::softplc::vars::{is_block_type, is_identifier};
 use crate::softplc::{parse_literal, Address};
 
 /// One box: what it calls and what its pins are wired to.
@@ -59,7 +59,7 @@ impl Shape {
         if COMPARISONS.contains(&kind) {
             return Some(Shape::Compare);
         }
-        if BLOCK_TYPES.contains(&kind) {
+        if is_block_type(kind) {
             return Some(Shape::FunctionBlock);
         }
         if let Some(&(_, pins, many)) = FUNCTIONS.iter().find(|(k, ..)| *k == kind) {

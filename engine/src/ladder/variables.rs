@@ -9,7 +9,7 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 use crate::softplc::data::DataType;
-use crate::softplc::vars::{is_identifier, BLOCK_TYPES};
+use crate::softplc::vars::{is_block_type, is_identifier};
 use crate::softplc::{parse_literal, Address, AddressError, LiteralError};
 
 /// One declared variable.
@@ -71,7 +71,7 @@ impl Variable {
                         .map_err(|e| VariableError::Initial(name.clone(), e))?;
                 }
             }
-            None if BLOCK_TYPES.contains(&ty.as_str()) => {
+            None if is_block_type(&ty) => {
                 if !self.address.is_empty() || !self.initial.is_empty() {
                     return Err(VariableError::BlockWithValue(name, ty));
                 }

@@ -84,7 +84,7 @@ fn settings<'a>(
     file: &mut LdFile,
     lines: &mut impl Iterator<Item = (usize, &'a str)>,
 ) -> Result<(), Errors> {
-    while let Some((n, line)) = lines.next() {
+    while let Some((_, line)) = lines.next() {
         let t = line.trim();
         let number = |rest: &str| -> u64 {
             let digits: String = rest
@@ -113,78 +113,67 @@ fn settings<'a>(
                 } else if let Some(rest) = t.strip_prefix("COMPILER=") {
                     file.compiler = rest.into();
                 }
-                let _ = n;
             }
         }
     }
     Err(vec![Located::new(1, LdError::NoProgram)])
 }
 
-/// An `IO LIST` or `PULL-UP LIST` up to its `END`.
-fn list<'a>(
+/// A list's entries up to its `END`, each non-blank line read by `entry`
+/// (its line number and trimmed text).
+fn section<'a, T>(
     lines: &mut impl Iterator<Item = (usize, &'a str)>,
     name: &'static str,
-) -> Result<Vec<IoEntry>, Errors> {
+    mut entry: impl FnMut(usize, &str) -> Result<T, LdError>,
+) -> Result<Vec<T>, Errors> {
     let mut out = Vec::new();
     let mut last = 0;
     for (n, line) in lines.by_ref() {
         last = n;
-        let t = line.trim();
-        match t {
+        match line.trim() {
             "" => continue,
             "END" => return Ok(out),
-            _ => {
-                let (name, rest) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
-                out.push(IoEntry {
-                    name: name.into(),
-                    rest: rest.trim().into(),
-                    line: n,
-                });
-            }
+            t => out.push(entry(n, t).map_err(|e| vec![Located::new(n, e)])?),
         }
     }
     Err(vec![Located::new(last, LdError::Unclosed(name))])
 }
 
-/// The `VAR LIST` up to its `END`: `2 bytes name [note]`.
+/// An `IO LIST` or `PULL-UP LIST`: a name and the rest of its line.
+fn list<'a>(
+    lines: &mut impl Iterator<Item = (usize, &'a str)>,
+    name: &'static str,
+) -> Result<Vec<IoEntry>, Errors> {
+    section(lines, name, |n, t| {
+        let (name, rest) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
+        Ok(IoEntry {
+            name: name.into(),
+            rest: rest.trim().into(),
+            line: n,
+        })
+    })
+}
+
+/// The `VAR LIST`: `2 bytes name [note]`.
 fn var_list<'a>(
     lines: &mut impl Iterator<Item = (usize, &'a str)>,
 ) -> Result<Vec<VarSize>, Errors> {
-    let mut out = Vec::new();
-    let mut last = 0;
-    for (n, line) in lines.by_ref() {
-        last = n;
-        let t = line.trim();
-        match t {
-            "" => continue,
-            "END" => return Ok(out),
-            _ => {
-                let mut words = t.split_whitespace();
-                let bytes = words.next().and_then(|b| b.parse::<u16>().ok());
-                let unit = words.next();
-                let name = words.next();
-                match (bytes, unit, name) {
-                    (Some(b @ 1..), Some("bytes" | "byte"), Some(name)) => {
-                        let note = t.split_once(name).map_or("", |(_, r)| r.trim());
-                        out.push(VarSize {
-                            name: name.into(),
-                            bytes: b,
-                            note: note.into(),
-                            line: n,
-                        })
-                    }
-                    _ => {
-                        let bad = LdError::BadListLine {
-                            list: "VAR LIST",
-                            text: t.into(),
-                        };
-                        return Err(vec![Located::new(n, bad)]);
-                    }
-                }
-            }
+    section(lines, "VAR LIST", |n, t| {
+        let mut words = t.split_whitespace();
+        let bytes = words.next().and_then(|b| b.parse::<u16>().ok());
+        match (bytes, words.next(), words.next()) {
+            (Some(b @ 1..), Some("bytes" | "byte"), Some(name)) => Ok(VarSize {
+                name: name.into(),
+                bytes: b,
+                note: t.split_once(name).map_or("", |(_, r)| r.trim()).into(),
+                line: n,
+            }),
+            _ => Err(LdError::BadListLine {
+                list: "VAR LIST",
+                text: t.into(),
+            }),
         }
-    }
-    Err(vec![Located::new(last, LdError::Unclosed("VAR LIST"))])
+    })
 }
 
 /// An open group while a rung is read.

@@ -91,7 +91,7 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
 }
 
 impl Instance {
-    /// A new instance of `block` (one of `vars::BLOCK_TYPES`).
+    /// A new instance of `block` (one [`super::vars::is_block_type`] knows).
     pub fn new(block: &str) -> Instance {
         let (base, count) = counter(block).unwrap_or((block, DataType::Int));
         let limits = Limits::of(count);

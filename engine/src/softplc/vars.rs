@@ -22,9 +22,9 @@ use super::data::{Data, DataType};
 use super::literal::{parse_literal, LiteralError};
 use crate::error::Located;
 
-/// The standard function blocks a variable can be an instance of, and
-/// LDmicro's (docs/ldmicro.md; [`super::ld_blocks`]).
-pub const BLOCK_TYPES: [&str; 39] = [
+/// The standard function blocks a variable can be an instance of (and
+/// LDmicro's: [`is_block_type`]).
+pub const BLOCK_TYPES: [&str; 25] = [
     "TON",
     "TOF",
     "TP",
@@ -50,21 +50,13 @@ pub const BLOCK_TYPES: [&str; 39] = [
     "CTUD_LINT",
     "CTUD_UDINT",
     "CTUD_ULINT",
-    "LD_TON",
-    "LD_TOF",
-    "LD_RTO",
-    "LD_RTL",
-    "LD_TCY",
-    "LD_THI",
-    "LD_TLO",
-    "LD_CTU",
-    "LD_CTD",
-    "LD_CTC",
-    "LD_CTR",
-    "LD_OSL",
-    "LD_OSC",
-    "LD_TOGGLE",
 ];
+
+/// Whether `name` (upper case) is a block a variable can be an instance
+/// of: a standard one, or one of LDmicro's ([`super::ld_blocks::NAMES`]).
+pub fn is_block_type(name: &str) -> bool {
+    BLOCK_TYPES.contains(&name) || super::ld_blocks::NAMES.contains(&name)
+}
 
 /// What a variable holds.
 #[derive(Clone, Debug, PartialEq)]
@@ -301,7 +293,7 @@ fn declaration(
         None => {
             let upper = type_name.to_ascii_uppercase();
             let own = blocks.iter().any(|b| b.eq_ignore_ascii_case(type_name));
-            if !BLOCK_TYPES.contains(&upper.as_str()) && !own {
+            if !is_block_type(&upper) && !own {
                 return Err(VarError::UnknownType(type_name.to_string()));
             }
             if address.is_some() || value.is_some() {

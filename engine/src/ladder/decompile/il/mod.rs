@@ -302,7 +302,7 @@ impl<'a> Walk<'a> {
                     preset_ms: u32::try_from(ns / 1_000_000).unwrap_or(u32::MAX),
                 })
             }
-            kind if crate::softplc::vars::BLOCK_TYPES.contains(&kind) => {
+            kind if crate::softplc::vars::is_block_type(kind) => {
                 let pins = crate::softplc::pins::inputs(kind);
                 let power_pin = pins.first().map_or("", |(p, _)| *p);
                 if !from_power(input(power_pin)) {

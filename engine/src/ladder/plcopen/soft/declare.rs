@@ -12,7 +12,7 @@ use super::SoftError;
 use crate::error::Located;
 use crate::ladder::plcopen::dom::Node;
 use crate::softplc::data::DataType;
-use crate::softplc::vars::{Direction, BLOCK_TYPES};
+use crate::softplc::vars::{is_block_type, Direction};
 use crate::softplc::{parse_literal, Address};
 
 /// What a declared name holds.
@@ -292,7 +292,7 @@ fn held(v: &Node, name: &str, own: &OwnTypes) -> Result<(Held, String), SoftErro
     let type_name = written.to_ascii_uppercase();
     let held = if let Some(t) = DataType::from_name(&type_name) {
         Held::Value(t)
-    } else if BLOCK_TYPES.contains(&type_name.as_str()) {
+    } else if is_block_type(&type_name) {
         Held::Block(type_name.clone())
     } else if let Some(b) = own
         .blocks

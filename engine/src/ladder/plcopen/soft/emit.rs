@@ -18,7 +18,7 @@ use super::SoftError;
 use crate::error::Located;
 use crate::softplc::data::DataType;
 use crate::softplc::pins::{inputs as fb_inputs, outputs as fb_outputs};
-use crate::softplc::vars::BLOCK_TYPES;
+use crate::softplc::vars::is_block_type;
 use crate::softplc::{literal_type, Address};
 
 /// What the emission of every body gives.
@@ -374,7 +374,7 @@ impl Emitter<'_> {
 
     fn block(&mut self, g: &Graph, e: &Element, type_name: &str, instance: &str) -> Result<()> {
         let upper = type_name.to_ascii_uppercase();
-        if BLOCK_TYPES.contains(&upper.as_str()) {
+        if is_block_type(&upper) {
             return self.function_block(g, e, &upper, instance);
         }
         if let Some(f) = Function::named(&upper) {
