@@ -156,25 +156,28 @@ impl Making {
 fn iec_names(file: &LdFile) -> (LdFile, HashMap<String, String>) {
     use crate::softplc::vars::is_identifier;
     let mut file = file.clone();
-    let mut map: HashMap<String, String> = HashMap::new();
-    let mut given: HashMap<String, String> = HashMap::new();
+    // Every name, and those to give new ones in sorted order: the same
+    // file, written out and read again, gives the same names.
     let mut taken: std::collections::HashSet<String> = std::collections::HashSet::new();
-    for (e, _) in file.elements() {
-        let mut e = e.clone();
-        for op in e.operands_mut() {
-            if is_identifier(op) {
-                taken.insert(op.to_ascii_uppercase());
-            }
+    let mut odd: std::collections::BTreeSet<String> = std::collections::BTreeSet::new();
+    let io = file.io.iter().map(|i| i.name.clone());
+    let ops = file.elements().flat_map(|(e, _)| {
+        e.clone()
+            .operands_mut()
+            .into_iter()
+            .map(|o| o.clone())
+            .collect::<Vec<_>>()
+    });
+    for op in io.chain(ops) {
+        if is_identifier(&op) {
+            taken.insert(op.to_ascii_uppercase());
+        } else if !op.is_empty() && !is_number(&op) {
+            odd.insert(op);
         }
     }
-    let mut rename = |op: &mut String| {
-        if op.is_empty() || is_number(op) || is_identifier(op) {
-            return;
-        }
-        if let Some(n) = map.get(op.as_str()) {
-            *op = n.clone();
-            return;
-        }
+    let mut map: HashMap<String, String> = HashMap::new();
+    let mut given: HashMap<String, String> = HashMap::new();
+    for op in odd {
         let mut stem: String = op
             .chars()
             .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
@@ -194,15 +197,19 @@ fn iec_names(file: &LdFile) -> (LdFile, HashMap<String, String>) {
             k += 1;
             name = format!("{stem}_{k}");
         }
-        map.insert(op.clone(), name.clone());
         given.insert(name.clone(), op.clone());
-        *op = name;
+        map.insert(op, name);
+    }
+    let rename = |op: &mut String| {
+        if let Some(n) = map.get(op.as_str()) {
+            *op = n.clone();
+        }
     };
     for rung in &mut file.rungs {
         let mut todo: Vec<&mut super::Node> = rung.series.iter_mut().collect();
         while let Some(n) = todo.pop() {
             match n {
-                super::Node::Leaf(e, _) => e.operands_mut().into_iter().for_each(&mut rename),
+                super::Node::Leaf(e, _) => e.operands_mut().into_iter().for_each(rename),
                 super::Node::Series(v, _) | super::Node::Parallel(v, _) => {
                     todo.extend(v.iter_mut())
                 }
@@ -283,7 +290,12 @@ fn roles(file: &LdFile) -> Vec<(String, Role)> {
     let mut at: HashMap<String, usize> = HashMap::new();
     let mut note = |name: &str, role: Role| {
         let name = name.trim();
-        if name.is_empty() || is_number(name) {
+        // The BOOLs the lowering holds power in are the compiler's to
+        // declare (they read back so from a file written out).
+        let held = name
+            .strip_prefix("_ld")
+            .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()));
+        if name.is_empty() || is_number(name) || held {
             return;
         }
         match at.get(name) {

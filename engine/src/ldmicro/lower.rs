@@ -90,6 +90,23 @@ fn wired_beside_boxes(branches: &[Node]) -> bool {
     branches.iter().any(wires) && branches.iter().any(boxes)
 }
 
+/// Whether every branch of a parallel group is one output (coils,
+/// resets, moves and arithmetic side by side, as LDmicro draws several
+/// outputs on one rung), one of them at least a coil or reset.
+fn outputs_only(branches: &[Node]) -> bool {
+    use super::Element as Ld;
+    let output = |b: &Node| {
+        matches!(
+            b,
+            Node::Leaf(
+                Ld::Coil { .. } | Ld::Res(_) | Ld::Unary { .. } | Ld::Math { .. },
+                _
+            )
+        )
+    };
+    branches.iter().all(output) && has_output(&Node::Parallel(branches.to_vec(), 0))
+}
+
 /// Whether a group holds an output anywhere: a coil, a reset.
 fn has_output(node: &Node) -> bool {
     node.elements()
@@ -170,6 +187,21 @@ impl Lowering<'_> {
                 }
                 (Node::Series(inner, _), None) => {
                     power = self.series(inner, power, tail && last)?;
+                }
+                (Node::Parallel(branches, _), None) if outputs_only(branches) => {
+                    // Outputs side by side: all on the power here, one rung.
+                    for b in branches {
+                        let out = match self.kind(b)? {
+                            Kind::Output(e) => e,
+                            // A MOVE or ADD beside coils: an output box.
+                            Kind::Condition(Element::Block(call)) => Element::OutputBlock(call),
+                            _ => continue,
+                        };
+                        if pending.is_empty() {
+                            pending_line = b.line();
+                        }
+                        pending.push(out);
+                    }
                 }
                 (Node::Parallel(branches, _), None) if wired_beside_boxes(branches) => {
                     power = self.wire_beside(branches, power, line)?;

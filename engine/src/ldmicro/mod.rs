@@ -11,6 +11,7 @@
 pub mod element;
 mod elements;
 pub mod error;
+mod export;
 pub mod file;
 mod ladder;
 mod leaf;
@@ -19,6 +20,7 @@ pub mod parse;
 
 pub use element::Element;
 pub use error::LdError;
+pub use export::export;
 pub use file::{LdFile, LdRung, Node, Version};
 pub use ladder::to_ladder;
 pub use parse::{decode, parse};

@@ -338,3 +338,59 @@ fn deep_and_long_files_are_read_or_refused_at_a_line_never_slowly() {
     // Not a speed test: a search of the ladder per rung would take minutes.
     assert!(started.elapsed().as_secs() < 60);
 }
+
+#[test]
+fn every_real_file_that_runs_goes_back_out_as_ld_and_reads_as_the_same_ladder() {
+    let Ok(dir) = std::fs::read_dir(REAL) else {
+        return;
+    };
+    let mut names: Vec<String> = dir
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.ends_with(".ld"))
+        .collect();
+    names.sort();
+    let mut round = 0;
+    for name in &names {
+        let file = parse(&real(name).expect("readable")).expect("reads");
+        let Ok(ladder) = to_ladder(&file) else {
+            continue;
+        };
+        let text = engine::ldmicro::export(&ladder, file.cycle_us)
+            .unwrap_or_else(|e| panic!("{name}: {e:?}"));
+        let again = parse(&text).unwrap_or_else(|e| panic!("{name}: {e:?}\n{text}"));
+        assert_eq!(again.cycle_us, file.cycle_us);
+        let back = to_ladder(&again).unwrap_or_else(|e| panic!("{name}: {e:?}\n{text}"));
+        assert_eq!(back.rungs, ladder.rungs, "{name}\n{text}");
+        let typed = |l: &engine::ladder::Ladder| -> Vec<(String, String, String, bool)> {
+            l.variables
+                .iter()
+                .map(|v| {
+                    (
+                        v.name.clone(),
+                        v.data_type.clone(),
+                        v.address.clone(),
+                        v.retain,
+                    )
+                })
+                .collect()
+        };
+        assert_eq!(typed(&back), typed(&ladder), "{name}");
+        round += 1;
+    }
+    assert!(round >= 15 || names.is_empty(), "{round}");
+}
+
+#[test]
+fn an_element_ldmicro_has_no_form_for_is_refused_at_its_cell() {
+    let file = parse(&program("RUNG 1\n  CONTACTS Xa 0\n  COIL Yq 0 0 0\nEND\n")).expect("reads");
+    let mut ladder = to_ladder(&file).expect("draws");
+    // A rising contact: LDmicro writes a contact and an OSR instead.
+    if let Some(Some(engine::ladder::Element::Contact { kind, .. })) =
+        ladder.rungs[0].cells[0].get_mut(0)
+    {
+        *kind = engine::ladder::ContactKind::Rising;
+    }
+    let errors = engine::ldmicro::export(&ladder, 10_000).expect_err("refused");
+    assert_eq!((errors[0].rung, errors[0].pos.map(|p| p.col)), (1, Some(0)));
+    assert!(errors[0].message.contains("OSR"), "{}", errors[0].message);
+}

@@ -1,0 +1,254 @@
+//! A soft PLC ladder made of LDmicro's elements written back as an `.ld`
+//! file in LDmicro 4.x's form (docs/ldmicro.md, "Writing it back"): each
+//! rung's network as `SERIES` and `PARALLEL` groups, its outputs at its
+//! end, each element as the line LDmicro writes for it. Read again, the
+//! file gives the same ladder, element for element. An element LDmicro
+//! has no form for is refused at its cell.
+
+use std::collections::HashMap;
+use std::fmt::Write as _;
+
+use super::elements::OPEN;
+use crate::ladder::element::{CoilKind, ContactKind, Element};
+use crate::ladder::grid::{Ladder, LadderError, Pos};
+use crate::ladder::net::Net;
+use crate::ladder::BlockCall;
+use crate::MachineId;
+
+/// `ladder` as an `.ld` file whose scan is `cycle_us`; every element
+/// without an LDmicro form is an error at its cell.
+pub fn export(ladder: &Ladder, cycle_us: u64) -> Result<String, Vec<LadderError>> {
+    let logic = ladder.logic(MachineId::SoftPlc)?;
+    // A name the reader gave an LDmicro name that is no IEC name goes
+    // back as it was; an address goes as the variable declared at it.
+    let mut names: HashMap<String, String> = HashMap::new();
+    for v in &ladder.variables {
+        if let Some(original) = v.comment.strip_prefix("LDmicro name: ") {
+            let original = original.split(';').next().unwrap_or(original).trim();
+            names.insert(v.name.to_ascii_uppercase(), original.to_string());
+        }
+        if !v.address.is_empty() {
+            names.insert(v.address.to_ascii_uppercase(), v.name.clone());
+        }
+    }
+    let w = Writer { names, cycle_us };
+    let mut body = String::new();
+    let mut errors = Vec::new();
+    for (i, rung) in logic.iter().enumerate() {
+        let at = |pos: Pos, m: String| LadderError::at(i, pos, m);
+        if !rung.sides.is_empty() {
+            errors.push(LadderError::rung(
+                i,
+                "a block input wired as a network has no LDmicro form",
+            ));
+            continue;
+        }
+        let _ = writeln!(body, "RUNG {}", i + 1);
+        if !rung.comment.is_empty() {
+            let _ = writeln!(body, "    COMMENT {}", escape(&rung.comment));
+        }
+        let mut lines = Vec::new();
+        if let Err((pos, m)) = w.series(&rung.condition, 1, &mut lines) {
+            errors.push(at(pos, m));
+        }
+        let outputs: Vec<&(Element, Pos)> = rung.outputs.iter().collect();
+        let mut outs = Vec::new();
+        for (e, pos) in &outputs {
+            match w.element(e) {
+                Ok(line) => outs.push(line),
+                Err(m) => errors.push(at(*pos, m)),
+            }
+        }
+        if outs.len() == 1 {
+            lines.push(format!("    {}", outs[0]));
+        } else {
+            lines.push("    PARALLEL".into());
+            lines.extend(outs.iter().map(|o| format!("        {o}")));
+            lines.push("    END".into());
+        }
+        for l in lines {
+            let _ = writeln!(body, "{l}");
+        }
+        body.push_str("END\n");
+    }
+    for v in ladder.variables.iter().filter(|v| v.retain) {
+        let _ = writeln!(body, "RUNG\n    PERSIST {}\nEND", w.name(&v.name));
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let mut out = format!(
+        "LDmicro0.2\nCYCLE={cycle_us} us at Timer1, YPlcCycleDuty:0, ConfigurationWord(s):0x0\n\nIO LIST\n"
+    );
+    for v in ladder
+        .variables
+        .iter()
+        .filter(|v| v.name.starts_with(['X', 'Y']))
+    {
+        let pin = v.comment.strip_prefix("LDmicro pin: ").unwrap_or("at 0");
+        let _ = writeln!(out, "    {} {pin}", w.name(&v.name));
+    }
+    out.push_str("END\n\nPROGRAM\n");
+    out.push_str(&body);
+    Ok(out)
+}
+
+/// What writing needs: the names to write back, the scan.
+struct Writer {
+    names: HashMap<String, String>,
+    cycle_us: u64,
+}
+
+impl Writer {
+    /// The name LDmicro knows `n` by.
+    fn name(&self, n: &str) -> String {
+        self.names
+            .get(&n.trim().to_ascii_uppercase())
+            .cloned()
+            .unwrap_or_else(|| n.trim().to_string())
+    }
+
+    /// A network in series, each item a line (indented by `depth`).
+    fn series(&self, net: &Net, depth: usize, out: &mut Vec<String>) -> Result<(), (Pos, String)> {
+        let pad = "    ".repeat(depth);
+        match net {
+            Net::Leaf(e, pos) => {
+                out.push(format!("{pad}{}", self.element(e).map_err(|m| (*pos, m))?))
+            }
+            Net::Series(items) => {
+                for item in items {
+                    self.series(item, depth, out)?;
+                }
+            }
+            Net::Parallel(branches) => {
+                out.push(format!("{pad}PARALLEL"));
+                for b in branches {
+                    match b {
+                        Net::Series(_) => {
+                            out.push(format!("{pad}    SERIES"));
+                            self.series(b, depth + 2, out)?;
+                            out.push(format!("{pad}    END"));
+                        }
+                        other => self.series(other, depth + 1, out)?,
+                    }
+                }
+                out.push(format!("{pad}END"));
+            }
+        }
+        Ok(())
+    }
+
+    /// One element's line.
+    fn element(&self, e: &Element) -> Result<String, String> {
+        let n = |s: &str| self.name(s);
+        Ok(match e {
+            Element::Wire => "SHORT".into(),
+            Element::Contact { kind, device } if device == OPEN && *kind == ContactKind::No => {
+                "OPEN".into()
+            }
+            Element::Contact { kind, device } => {
+                let negated = match kind {
+                    ContactKind::No => 0,
+                    ContactKind::Nc => 1,
+                    _ => {
+                        return Err(format!(
+                            "{e} has no LDmicro form: put an OSR or OSF after a contact"
+                        ))
+                    }
+                };
+                format!("CONTACTS {} {negated} 0", n(device))
+            }
+            Element::Coil { kind, device } => {
+                let flags = match kind {
+                    CoilKind::Normal => "0 0 0 0",
+                    CoilKind::Inverted => "1 0 0 0",
+                    CoilKind::Set => "0 1 0 0",
+                    CoilKind::Reset => "0 0 1 0",
+                };
+                format!("COIL {} {flags}", n(device))
+            }
+            Element::Edge { falling } => if *falling { "OSF" } else { "OSR" }.into(),
+            Element::Block(b) | Element::OutputBlock(b) => self.block(b)?,
+            other => return Err(format!("{other} has no LDmicro form")),
+        })
+    }
+
+    /// A box's line: LDmicro's blocks, the functions and comparisons its
+    /// elements became.
+    fn block(&self, b: &BlockCall) -> Result<String, String> {
+        let kind = b.kind();
+        let input = |pin: &str| b.input(pin).map(|o| self.name(o)).unwrap_or_default();
+        let output = |pin: &str| {
+            b.outputs
+                .iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                .map(|(_, v)| self.name(v))
+                .unwrap_or_default()
+        };
+        let none = || format!("{kind} has no LDmicro form");
+        if let Some(timer) = kind.strip_prefix("LD_") {
+            return Ok(match timer {
+                "TON" | "TOF" | "RTO" | "RTL" | "TCY" | "THI" | "TLO" => {
+                    let p = input("P");
+                    let delay = p
+                        .parse::<u64>()
+                        .map_or(p.clone(), |cycles| (cycles * self.cycle_us).to_string());
+                    format!("{timer} {} {delay} 0", input("T"))
+                }
+                "CTU" | "CTD" | "CTC" | "CTR" => {
+                    let edge = match input("EDGE").as_str() {
+                        "1" => '\\',
+                        "2" => '-',
+                        "3" => 'o',
+                        _ => '/',
+                    };
+                    format!(
+                        "{timer} {} {} {} {edge}",
+                        input("C"),
+                        input("MAX"),
+                        input("INIT")
+                    )
+                }
+                "OSL" | "OSC" => timer.to_string(),
+                "TOGGLE" => format!("COIL {} 0 0 0 1", input("V")),
+                _ => return Err(none()),
+            });
+        }
+        let two = |word: &str, a: &str, b2: &str| {
+            format!("{word} {} {} {}", output("OUT"), input(a), input(b2))
+        };
+        Ok(match kind.as_str() {
+            "MOVE" => format!("MOVE {} {}", output("OUT"), input("IN")),
+            "NOT" | "NEG" => format!("{kind} {} {}", output("OUT"), input("IN")),
+            "ADD" | "SUB" | "MUL" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
+                two(&kind, "IN1", "IN2")
+            }
+            "SHL" | "SHR" | "ROL" | "ROR" => two(&kind, "IN", "N"),
+            "INT_TO_DINT" if input("IN").starts_with("%IW") => {
+                format!("READ_ADC {}", output("OUT"))
+            }
+            "DINT_TO_INT" if output("OUT").starts_with("%QW") => {
+                format!("SET_PWM {} 1000", input("IN"))
+            }
+            "EQ" | "NE" | "GT" | "GE" | "LT" | "LE" => {
+                let word = match kind.as_str() {
+                    "EQ" => "EQU",
+                    "NE" => "NEQ",
+                    "GT" => "GRT",
+                    "GE" => "GEQ",
+                    "LT" => "LES",
+                    _ => "LEQ",
+                };
+                format!("{word} {} {}", input("IN1"), input("IN2"))
+            }
+            _ => return Err(none()),
+        })
+    }
+}
+
+/// A comment as LDmicro saves it: line ends and backslashes escaped.
+fn escape(text: &str) -> String {
+    text.replace('\\', "\\\\")
+        .replace('\r', "\\r")
+        .replace('\n', "\\n")
+}
