@@ -62,6 +62,20 @@ def test_an_ld_file_opens_on_the_soft_plc_and_runs_from_its_board(driver, base_u
     el(driver, "soft-input-IX0-1").click()
     wait(driver, lambda: not on(driver, "soft-lamp-QX0-0"), message="Xr resets the count")
     driver.save_screenshot(str(artifacts / "ldmicro-opened.png"))
+    # Written back as LDmicro 4.x writes it, and opened again the same.
+    from test_ladder import CAPTURE, downloads, saved_ladder
+    before = saved_ladder(driver, "soft-plc")
+    driver.execute_script(CAPTURE)
+    el(driver, "export-ld").click()
+    text = downloads(driver, 1)["soft-plc-ladder.ld"]
+    assert text.startswith("LDmicro0.2\nCYCLE=10000 us"), text
+    for line in ["Xa at 14", "CONTACTS Xa 0 0", "CTU Cparts 3 0 /", "COIL Yq 0 0 0 0", "COMMENT Count Xa's rises; Yq at 3."]:
+        assert line in text, (line, text)
+    path = tmp_path / "again.ld"
+    path.write_text(text)
+    el(driver, "new-ladder").click()
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: saved_ladder(driver, "soft-plc") == before, message="the same ladder again")
     assert severe_console_messages(driver) == []
 
 

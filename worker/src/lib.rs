@@ -44,6 +44,9 @@ pub enum Request {
     Export { ladder: Ladder, name: String },
     /// Open an LDmicro `.ld` file as a soft PLC ladder (docs/ldmicro.md).
     OpenLd { file: String, text: String },
+    /// Write a soft PLC ladder of LDmicro's elements as an `.ld` file
+    /// whose scan is `cycle_us`.
+    ExportLd { ladder: Ladder, cycle_us: u64 },
 }
 
 /// The worker's answer to a [`Request`].
@@ -55,6 +58,9 @@ pub enum Reply {
     /// The LDmicro file's ladder, or each reason it does not open
     /// (`file:line: …`).
     OpenLd(Result<LdOpened, Vec<String>>),
+    /// The `.ld` text, or each reason (at its rung and cell) it cannot
+    /// be written.
+    ExportLd(Result<String, Vec<String>>),
 }
 
 /// An LDmicro file as the soft PLC's ladder.
@@ -97,6 +103,10 @@ pub fn handle(request: Request) -> Reply {
                 .map_err(|errors| errors.iter().map(ToString::to_string).collect()),
         ),
         Request::OpenLd { file, text } => Reply::OpenLd(open_ld(&file, &text)),
+        Request::ExportLd { ladder, cycle_us } => Reply::ExportLd(
+            engine::ldmicro::export(&ladder, cycle_us)
+                .map_err(|errors| errors.iter().map(ToString::to_string).collect()),
+        ),
     }
 }
 

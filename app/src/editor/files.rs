@@ -84,6 +84,26 @@ fn export_plcopen(ctx: LadderCtx) {
     });
 }
 
+/// Downloads a soft PLC ladder of LDmicro's elements as an `.ld` file at
+/// the page's 10 ms scan (docs/ldmicro.md, "Writing it back").
+fn export_ld(ctx: LadderCtx) {
+    let texts = ctx.page.lang.get_untracked().texts();
+    let request = Request::ExportLd {
+        ladder: ctx.ladder(),
+        cycle_us: 10_000,
+    };
+    crate::worker::ask_saying(ctx.panes.message, texts, request, move |reply| {
+        ctx.panes.message.set(match reply {
+            Reply::ExportLd(Ok(text)) => {
+                download(&name(ctx, "ld"), "text/plain", &text);
+                None
+            }
+            Reply::ExportLd(Err(errors)) => Some(errors.join("; ")),
+            other => Some(format!("{other:?}")),
+        });
+    });
+}
+
 /// A file name for this machine's ladder.
 fn name(ctx: LadderCtx, ext: &str) -> String {
     format!("{}-ladder.{ext}", ctx.machine.name())
@@ -243,6 +263,9 @@ pub fn FileButtons(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                 <input type="file" data-testid="open-file" accept=".json,.xml,.ld,application/json,text/xml" on:change=on_file />
             </label>
             <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>
+            <Show when=move || ctx.machine == MachineId::SoftPlc>
+                <button type="button" data-testid="export-ld" on:click=move |_| export_ld(ctx)>"LDmicro"</button>
+            </Show>
             <button type="button" data-testid="export-text" disabled=move || ctx.drawing.listing.with(Option::is_none) on:click=move |_| {
                 if let Some(listing) = ctx.drawing.listing.get_untracked() {
                     download(&name(ctx, "txt"), "text/plain", &listing.text);
