@@ -143,9 +143,10 @@ impl Writer {
         let n = |s: &str| self.name(s);
         Ok(match e {
             Element::Wire => "SHORT".into(),
-            Element::Contact { kind, device } if device == OPEN && *kind == ContactKind::No => {
-                "OPEN".into()
-            }
+            Element::Contact { kind, device } if device == OPEN => match kind {
+                ContactKind::Nc => "SHORT".into(),
+                _ => "OPEN".into(),
+            },
             Element::Contact { kind, device } => {
                 let negated = match kind {
                     ContactKind::No => 0,

@@ -54,6 +54,16 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
         ..Ladder::default()
     };
     ladder.variables = declarations(file, &making.instances);
+    // An always-on rung's coil stands on `_OPEN`'s closed contact.
+    let open_used = ladder
+        .rungs
+        .iter()
+        .any(|r| r.elements().any(|(_, e)| e.read_device() == Some(OPEN)));
+    if open_used && !ladder.variables.iter().any(|v| v.name == OPEN) {
+        let mut v = Variable::new(OPEN, "BOOL");
+        v.comment = "LDmicro's OPEN: never on".into();
+        ladder.variables.push(v);
+    }
     for v in &mut ladder.variables {
         if let Some(original) = renamed.get(&v.name) {
             let was = format!("LDmicro name: {original}");

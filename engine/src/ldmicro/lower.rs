@@ -117,9 +117,15 @@ fn has_output(node: &Node) -> bool {
 impl Lowering<'_> {
     /// A rung of `condition` driving `outputs`.
     fn emit(&mut self, condition: Power, outputs: Vec<Element>, line: usize) {
-        // Outputs on the rail: a wire from it (output boxes only; a coil
-        // there reads as a wire too, drawn as the editor draws it).
-        let condition = condition.unwrap_or_else(|| leaf(Element::Wire));
+        // Outputs on the rail (LDmicro's always-on rung): output boxes
+        // stand there on a wire; a coil, which the editor does not put on
+        // the rail, on a closed contact of `_OPEN` (never on, so its NC
+        // contact always passes).
+        let boxes = outputs.iter().all(|e| matches!(e, Element::OutputBlock(_)));
+        let condition = condition.unwrap_or_else(|| match boxes {
+            true => leaf(Element::Wire),
+            false => leaf(Element::nc(super::elements::OPEN)),
+        });
         let logic = RungLogic {
             condition,
             outputs: outputs.into_iter().map(|e| (e, Pos::new(0, 0))).collect(),

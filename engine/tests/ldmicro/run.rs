@@ -394,3 +394,20 @@ fn an_element_ldmicro_has_no_form_for_is_refused_at_its_cell() {
     assert_eq!((errors[0].rung, errors[0].pos.map(|p| p.col)), (1, Some(0)));
     assert!(errors[0].message.contains("OSR"), "{}", errors[0].message);
 }
+
+#[test]
+fn a_rung_of_a_coil_alone_is_always_on_and_writes_back_as_it_was() {
+    let text = program("RUNG 1\n  COIL Yq 0 0 0\nEND\n");
+    let mut plc = load(&text);
+    plc.run_until(SimTime::from_millis(25));
+    assert_eq!(get(plc.as_ref(), "Yq"), 1);
+    let file = parse(&text).expect("reads");
+    let ladder = to_ladder(&file).expect("draws");
+    let out = engine::ldmicro::export(&ladder, file.cycle_us).expect("writes");
+    assert!(
+        out.contains("RUNG 1\n    SHORT\n    COIL Yq 0 0 0 0\nEND"),
+        "{out}"
+    );
+    let back = to_ladder(&parse(&out).expect("reads")).expect("draws");
+    assert_eq!(back.rungs, ladder.rungs);
+}
