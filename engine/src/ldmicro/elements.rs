@@ -13,6 +13,8 @@ use crate::ladder::BlockCall;
 pub(super) enum Part {
     /// A contact or in-line box: power in, power out.
     Condition(Element),
+    /// Several, as a network (an element the soft PLC runs as boxes).
+    Network(crate::ladder::net::Net),
     /// A coil or output box: where a rung ends.
     Output(Element),
     /// Nothing drawn (a placeholder, a wire).
@@ -125,9 +127,60 @@ pub(super) fn part(
         Ld::Unary { .. } | Ld::Math { .. } | Ld::Compare { .. } => {
             Part::Condition(Element::Block(operation(e)?))
         }
+        Ld::ShiftRegister { .. } | Ld::LookUpTable { .. } => Part::Network(as_boxes(e)?),
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
+}
+
+/// An element the soft PLC runs as boxes of its own (docs/ldmicro.md):
+/// `SHIFT_REGISTER r 4` as a rising edge and MOVEs from `r2` into `r3`
+/// down to `r0` into `r1`; `LOOK_UP_TABLE d i …` as one branch per entry,
+/// `EQ i k` then `MOVE` of the entry into `d`.
+fn as_boxes(e: &Ld) -> Result<crate::ladder::net::Net, LdError> {
+    use crate::ladder::grid::Pos;
+    use crate::ladder::net::Net;
+    let leaf = |el: Element| Net::Leaf(el, Pos::new(0, 0));
+    let mv = |src: String, dest: String| {
+        leaf(Element::Block(function("MOVE", vec![("IN", src)], &dest)))
+    };
+    match e {
+        Ld::ShiftRegister { name, stages } => {
+            let mut chain = vec![leaf(Element::Edge { falling: false })];
+            for k in (1..*stages).rev() {
+                chain.push(mv(format!("{name}{}", k - 1), format!("{name}{k}")));
+            }
+            Ok(Net::Series(chain))
+        }
+        Ld::LookUpTable {
+            dest,
+            index,
+            values,
+            ..
+        } => {
+            let index = operand(index)?;
+            let branches: Vec<Net> = values
+                .iter()
+                .enumerate()
+                .map(|(k, v)| {
+                    let inputs = vec![("IN1", index.clone()), ("IN2", k.to_string())];
+                    let eq = ld_box("EQ", String::new(), inputs, Vec::new());
+                    Net::Series(vec![
+                        leaf(Element::Block(eq)),
+                        mv(v.to_string(), dest.clone()),
+                    ])
+                })
+                .collect();
+            Ok(match branches.len() {
+                1 => branches
+                    .into_iter()
+                    .next()
+                    .unwrap_or_else(|| leaf(Element::Wire)),
+                _ => Net::Parallel(branches),
+            })
+        }
+        other => Err(LdError::NotYet(other.keyword().into())),
+    }
 }
 
 /// A coil: the soft PLC's coil of that kind, or a toggle's box.

@@ -9,9 +9,10 @@ use std::collections::HashMap;
 use std::fmt::Write as _;
 
 use super::elements::OPEN;
+use super::lower::MCR;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::{Ladder, LadderError, Pos};
-use crate::ladder::net::Net;
+use crate::ladder::net::{Net, RungLogic};
 use crate::ladder::BlockCall;
 use crate::MachineId;
 
@@ -31,30 +32,41 @@ pub fn export(ladder: &Ladder, cycle_us: u64) -> Result<String, Vec<LadderError>
             names.insert(v.address.to_ascii_uppercase(), v.name.clone());
         }
     }
+    let master = ladder.variables.iter().any(|v| v.name == MCR);
     let w = Writer { names, cycle_us };
     let mut body = String::new();
     let mut errors = Vec::new();
+    let mut number = 0;
     for (i, rung) in logic.iter().enumerate() {
         let at = |pos: Pos, m: String| LadderError::at(i, pos, m);
         if !rung.sides.is_empty() {
-            errors.push(LadderError::rung(
-                i,
-                "a block input wired as a network has no LDmicro form",
-            ));
+            let why = "a block input wired as a network has no LDmicro form";
+            errors.push(LadderError::rung(i, why));
             continue;
         }
-        let _ = writeln!(body, "RUNG {}", i + 1);
+        let (condition, relay) = match master {
+            true => match through_master(rung) {
+                Some(parts) => parts,
+                // The scan's start turning the master relay on.
+                None => continue,
+            },
+            false => (Some(rung.condition.clone()), false),
+        };
+        number += 1;
+        let _ = writeln!(body, "RUNG {number}");
         if !rung.comment.is_empty() {
             let _ = writeln!(body, "    COMMENT {}", escape(&rung.comment));
         }
         let mut lines = Vec::new();
-        if let Err((pos, m)) = w.series(&rung.condition, 1, &mut lines) {
-            errors.push(at(pos, m));
+        if let Some(c) = &condition {
+            if let Err((pos, m)) = w.series(c, 1, &mut lines) {
+                errors.push(at(pos, m));
+            }
         }
-        let outputs: Vec<&(Element, Pos)> = rung.outputs.iter().collect();
         let mut outs = Vec::new();
-        for (e, pos) in &outputs {
+        for (e, pos) in &rung.outputs {
             match w.element(e) {
+                Ok(_) if relay => outs.push("MASTER_RELAY".to_string()),
                 Ok(line) => outs.push(line),
                 Err(m) => errors.push(at(*pos, m)),
             }
@@ -91,6 +103,41 @@ pub fn export(ladder: &Ladder, cycle_us: u64) -> Result<String, Vec<LadderError>
     out.push_str("END\n\nPROGRAM\n");
     out.push_str(&body);
     Ok(out)
+}
+
+/// A rung of a ladder with LDmicro's master relay, as LDmicro has it:
+/// its condition without the relay's contact every rung starts with, and
+/// whether it is a `MASTER_RELAY` rung (`_MCR := NOT _MCR OR power`);
+/// `None` for the rung turning the relay on at each scan's start.
+fn through_master(rung: &RungLogic) -> Option<(Option<Net>, bool)> {
+    let relay = |n: &Net, kind: ContactKind| matches!(n, Net::Leaf(Element::Contact { kind: k, device }, _) if *k == kind && device == MCR);
+    let on_relay = matches!(
+        rung.outputs.as_slice(),
+        [(Element::Coil { kind: CoilKind::Normal, device }, _)] if device == MCR
+    );
+    let mut condition = rung.condition.clone();
+    if on_relay {
+        if matches!(&condition, Net::Leaf(Element::Contact { device, .. }, _) if device == OPEN) {
+            return None;
+        }
+        if let Net::Parallel(branches) = &condition {
+            if branches.len() == 2 && relay(&branches[0], ContactKind::Nc) {
+                condition = branches[1].clone();
+            }
+        }
+    }
+    let rest = match condition {
+        ref n if relay(n, ContactKind::No) => None,
+        Net::Series(mut items) if items.first().is_some_and(|n| relay(n, ContactKind::No)) => {
+            items.remove(0);
+            match items.len() {
+                1 => items.pop(),
+                _ => Some(Net::Series(items)),
+            }
+        }
+        other => Some(other),
+    };
+    Some((rest, on_relay))
 }
 
 /// What writing needs: the names to write back, the scan.

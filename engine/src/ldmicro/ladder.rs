@@ -11,11 +11,12 @@ use super::element::{is_number, Element as Ld};
 use super::elements::{operand, part, Part, OPEN};
 use super::error::LdError;
 use super::file::LdFile;
-use super::lower::Lowering;
+use super::lower::{Lowering, MCR};
 use crate::error::Located;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Ladder;
-use crate::ladder::net::try_layout;
+use crate::ladder::grid::Pos;
+use crate::ladder::net::{try_layout, Net, RungLogic};
 use crate::ladder::variables::Variable;
 use crate::ladder::BlockCall;
 
@@ -39,8 +40,24 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
         element: &mut element,
     };
     let mut errors = Vec::new();
+    // A file with a master relay: it is on at each scan's start, and each
+    // rung's power comes through it.
+    let master = file.elements().any(|(e, _)| matches!(e, Ld::MasterRelay));
+    let start = master.then(|| Net::Leaf(Element::no(MCR), Pos::new(0, 0)));
+    if master {
+        let on = Net::Leaf(Element::nc(OPEN), Pos::new(0, 0));
+        lowering.rungs.push((
+            RungLogic {
+                condition: on,
+                outputs: vec![(Element::coil(MCR), Pos::new(0, 0))],
+                comment: String::new(),
+                sides: Vec::new(),
+            },
+            1,
+        ));
+    }
     for rung in &file.rungs {
-        if let Err(e) = lowering.series(&rung.series, None, true) {
+        if let Err(e) = lowering.series(&rung.series, start.clone(), true) {
             errors.extend(e);
         }
     }
@@ -64,6 +81,11 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
         v.comment = "LDmicro's OPEN: never on".into();
         ladder.variables.push(v);
     }
+    if master {
+        let mut v = Variable::new(MCR, "BOOL");
+        v.comment = "LDmicro's master relay".into();
+        ladder.variables.push(v);
+    }
     for v in &mut ladder.variables {
         if let Some(original) = renamed.get(&v.name) {
             let was = format!("LDmicro name: {original}");
@@ -80,7 +102,7 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
 /// The rungs drawn on grids, a comment left after the last rung going
 /// to it.
 fn drawn(
-    rungs: Vec<(crate::ladder::net::RungLogic, usize)>,
+    rungs: Vec<(RungLogic, usize)>,
     leftover: String,
 ) -> Result<Vec<crate::ladder::grid::Rung>, Vec<Located<LdError>>> {
     let mut out = Vec::new();
@@ -122,6 +144,9 @@ impl Making {
     fn element(&mut self, e: &Ld) -> Result<Part, LdError> {
         if let Some(p) = hardware_io(e, &mut self.analog, &mut self.pwm) {
             return p;
+        }
+        if let Ld::MasterRelay = e {
+            return Ok(Part::Output(Element::coil(MCR)));
         }
         if let Ld::Res(name) = e {
             // A count back to its start: a counter's, else 0.
@@ -353,6 +378,15 @@ fn roles(file: &LdFile) -> Vec<(String, Role)> {
                 note(b, Role::Number);
             }
             Ld::ReadAdc { name, .. } | Ld::Persist(name) => note(name, Role::Number),
+            Ld::ShiftRegister { name, stages } => {
+                for k in 0..*stages {
+                    note(&format!("{name}{k}"), Role::Number);
+                }
+            }
+            Ld::LookUpTable { dest, index, .. } => {
+                note(dest, Role::Number);
+                note(index, Role::Number);
+            }
             Ld::SetPwm { duty, .. } => note(duty, Role::Number),
             _ => {}
         }

@@ -32,6 +32,10 @@ pub(super) struct Lowering<'a> {
     pub(super) element: &'a mut dyn FnMut(&super::Element) -> Result<Part, LdError>,
 }
 
+/// The BOOL LDmicro's master relay is kept in: set at the start of each
+/// scan, every rung's power starts from it, `MASTER_RELAY` sets it.
+pub(super) const MCR: &str = "_MCR";
+
 /// Power at some point of a rung: from the rail (nothing yet), or a
 /// network from it.
 type Power = Option<Net>;
@@ -122,10 +126,16 @@ impl Lowering<'_> {
         // the rail, on a closed contact of `_OPEN` (never on, so its NC
         // contact always passes).
         let boxes = outputs.iter().all(|e| matches!(e, Element::OutputBlock(_)));
-        let condition = condition.unwrap_or_else(|| match boxes {
+        let mut condition = condition.unwrap_or_else(|| match boxes {
             true => leaf(Element::Wire),
             false => leaf(Element::nc(super::elements::OPEN)),
         });
+        if outputs == [Element::coil(MCR)] {
+            // LDmicro's master relay: off while this rung's power is off,
+            // and back on at the next one, whatever its power (the rung
+            // then starts off): `_MCR := NOT _MCR OR power`.
+            condition = Net::Parallel(vec![leaf(Element::nc(MCR)), condition]);
+        }
         let logic = RungLogic {
             condition,
             outputs: outputs.into_iter().map(|e| (e, Pos::new(0, 0))).collect(),
@@ -178,6 +188,7 @@ impl Lowering<'_> {
             }
             match (node, leaf_kind) {
                 (_, Some(Kind::Condition(e))) => power = Some(then(power, leaf(e))),
+                (_, Some(Kind::Network(net))) => power = Some(then(power, net)),
                 (_, Some(Kind::Output(e))) => {
                     if pending.is_empty() {
                         pending_line = line;
@@ -340,6 +351,7 @@ impl Lowering<'_> {
         };
         match (self.element)(e) {
             Ok(Part::Condition(el)) => Ok(Kind::Condition(el)),
+            Ok(Part::Network(net)) => Ok(Kind::Network(net)),
             Ok(Part::Output(el)) => Ok(Kind::Output(el)),
             Ok(Part::Nothing) => Ok(Kind::Nothing),
             Ok(Part::Comment(t)) => Ok(Kind::Comment(t)),
@@ -351,6 +363,7 @@ impl Lowering<'_> {
 /// What a leaf is, for the walk.
 enum Kind {
     Condition(Element),
+    Network(Net),
     Output(Element),
     Nothing,
     Comment(String),
