@@ -71,13 +71,7 @@ pub fn export(ladder: &Ladder, cycle_us: u64) -> Result<String, Vec<LadderError>
                 Err(m) => errors.push(at(*pos, m)),
             }
         }
-        if outs.len() == 1 {
-            lines.push(format!("    {}", outs[0]));
-        } else {
-            lines.push("    PARALLEL".into());
-            lines.extend(outs.iter().map(|o| format!("        {o}")));
-            lines.push("    END".into());
-        }
+        side_by_side(outs, &mut lines);
         for l in lines {
             let _ = writeln!(body, "{l}");
         }
@@ -89,20 +83,39 @@ pub fn export(ladder: &Ladder, cycle_us: u64) -> Result<String, Vec<LadderError>
     if !errors.is_empty() {
         return Err(errors);
     }
+    let mut out = header(ladder, &w);
+    out.push_str(&body);
+    Ok(out)
+}
+
+/// A rung's outputs at its end: one, or side by side in a `PARALLEL`.
+fn side_by_side(outs: Vec<String>, lines: &mut Vec<String>) {
+    if let [one] = outs.as_slice() {
+        lines.push(format!("    {one}"));
+        return;
+    }
+    lines.push("    PARALLEL".into());
+    lines.extend(outs.iter().map(|o| format!("        {o}")));
+    lines.push("    END".into());
+}
+
+/// The file's first lines: the version, the cycle, the `IO LIST` of the
+/// ladder's inputs and outputs with their pins, up to `PROGRAM`.
+fn header(ladder: &Ladder, w: &Writer) -> String {
     let mut out = format!(
-        "LDmicro0.2\nCYCLE={cycle_us} us at Timer1, YPlcCycleDuty:0, ConfigurationWord(s):0x0\n\nIO LIST\n"
+        "LDmicro0.2\nCYCLE={} us at Timer1, YPlcCycleDuty:0, ConfigurationWord(s):0x0\n\nIO LIST\n",
+        w.cycle_us
     );
-    for v in ladder
+    let io = ladder
         .variables
         .iter()
-        .filter(|v| v.name.starts_with(['X', 'Y']))
-    {
+        .filter(|v| v.name.starts_with(['X', 'Y']));
+    for v in io {
         let pin = v.comment.strip_prefix("LDmicro pin: ").unwrap_or("at 0");
         let _ = writeln!(out, "    {} {pin}", w.name(&v.name));
     }
     out.push_str("END\n\nPROGRAM\n");
-    out.push_str(&body);
-    Ok(out)
+    out
 }
 
 /// A rung of a ladder with LDmicro's master relay, as LDmicro has it:
