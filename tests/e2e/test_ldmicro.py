@@ -90,3 +90,31 @@ def test_an_ld_file_with_hardware_the_page_does_not_simulate_is_refused_at_its_l
     assert message.text.startswith("i2c.ld:24: I2C_WR drives hardware"), message.text
     assert el(driver, "machine").get_attribute("value") == before, "nothing changed"
     assert severe_console_messages(driver) == []
+
+
+def test_ldmicros_timer_is_in_the_soft_plcs_palette_and_counts_scans(driver, base_url):
+    """LD_TON from the palette: 20 scans of 10 ms counted in Tw, then the
+    lamp, as LDmicro's TON does."""
+    from selenium.webdriver.common.keys import Keys
+    from selenium.webdriver.support.ui import Select
+    from test_ladder import focus_ladder, place
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-board"))
+    focus_ladder(driver)
+    place(driver, Keys.F5, "%IX0.0")
+    el(driver, "palette-ld-ton").click()
+    entry = wait(driver, lambda: el(driver, "device-input"))
+    assert entry.get_attribute("value") == "LD_TON "
+    entry.send_keys("Tw_ld 20 Tw", Keys.ENTER)
+    wait(driver, lambda: "LD_TON" in el(driver, "cell-0-0-1").text)
+    focus_ladder(driver, "cell-0-0-2")
+    place(driver, Keys.F7, "%QX0.0")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    el(driver, "run").click()
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="on after 20 scans")
+    assert "Tw=20" in el(driver, "cell-0-0-1").text, el(driver, "cell-0-0-1").text
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: not on(driver, "soft-lamp-QX0-0"))
+    assert severe_console_messages(driver) == []

@@ -174,6 +174,10 @@ const SPECS: &[Spec] = &[
     spec("ctu", "[CTU]", ("up counter: CTU c0 reset 10", "加算カウンタ: CTU c0 reset 10"), Entry(Instruction, false, "CTU "), Needs::WordBoxes),
     spec("pin", "[▸R]", ("a block's input wired from the network to its left, below the block: PIN R", "ブロックの入力 (下の行の回路から): PIN R"), Entry(Instruction, false, "PIN "), Needs::WordBoxes),
     spec("ctd", "[CTD]", ("down counter: CTD c1 load 10", "減算カウンタ: CTD c1 load 10"), Entry(Instruction, false, "CTD "), Needs::WordBoxes),
+    spec("ld-ton", "[LD_TON]", ("LDmicro's on-delay timer, counting scans: LD_TON Tw_ld 49 Tw", "LDmicro のオンディレイタイマ (スキャン数): LD_TON Tw_ld 49 Tw"), Entry(Instruction, false, "LD_TON "), Needs::WordBoxes),
+    spec("ld-tof", "[LD_TOF]", ("LDmicro's off-delay timer, counting scans: LD_TOF Tw_ld 49 Tw", "LDmicro のオフディレイタイマ (スキャン数): LD_TOF Tw_ld 49 Tw"), Entry(Instruction, false, "LD_TOF "), Needs::WordBoxes),
+    spec("ld-ctu", "[LD_CTU]", ("LDmicro's up counter: LD_CTU Cn_ld 10 0 Cn", "LDmicro の加算カウンタ: LD_CTU Cn_ld 10 0 Cn"), Entry(Instruction, false, "LD_CTU "), Needs::WordBoxes),
+    spec("ld-ctc", "[LD_CTC]", ("LDmicro's circular counter: LD_CTC Cn_ld 9 0 Cn", "LDmicro の循環カウンタ: LD_CTC Cn_ld 9 0 Cn"), Entry(Instruction, false, "LD_CTC "), Needs::WordBoxes),
 ];
 
 /// The palette of `machine` in `lang`: every item, with what the machine

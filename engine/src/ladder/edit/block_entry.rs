@@ -134,6 +134,19 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
                 return Err(EntryError::Usage(BOX_USAGE));
             }
             wire(&mut call, &pins, inputs);
+            // LDmicro's blocks give their count back where they took it
+            // from (`LD_TON Tw_ld 49 Tw`: T := Tw, T => Tw).
+            let both: Vec<(String, String)> = call
+                .inputs
+                .iter()
+                .filter(|(pin, _)| {
+                    crate::softplc::pins::outputs(&call.kind())
+                        .iter()
+                        .any(|(o, _)| o == pin)
+                })
+                .cloned()
+                .collect();
+            call.outputs.extend(both);
         }
     }
     Ok(call)
@@ -194,6 +207,24 @@ mod tests {
         }
         assert!(parse_box("ADD(IN1 := a").is_err(), "unclosed");
         assert!(parse_box("ADD(IN1 a)").is_err(), "no := or =>");
+    }
+
+    #[test]
+    fn an_ldmicro_block_gives_its_count_back_to_where_it_took_it() {
+        let e = parse_box("LD_TON Tw_ld 49 Tw").expect("reads");
+        let c = call(&e);
+        assert_eq!(c.instance, "Tw_ld");
+        assert_eq!(
+            c.inputs,
+            vec![("P".into(), "49".into()), ("T".into(), "Tw".into())]
+        );
+        assert_eq!(c.outputs, vec![("T".into(), "Tw".into())]);
+        assert!(
+            matches!(e, Element::Block(_)),
+            "in the condition, passing power on"
+        );
+        let e = parse_box("LD_CTC Cw_ld 4 0 Cw").expect("reads");
+        assert_eq!(call(&e).outputs, vec![("C".into(), "Cw".into())]);
     }
 
     #[test]
