@@ -108,6 +108,12 @@ def test_ldmicros_timer_is_in_the_soft_plcs_palette_and_counts_scans(driver, bas
     assert entry.get_attribute("value") == "LD_TON "
     entry.send_keys("Tw_ld 20 Tw", Keys.ENTER)
     wait(driver, lambda: "LD_TON" in el(driver, "cell-0-0-1").text)
+    # Its count is a word: declared, as every word is.
+    el(driver, "var-new-name").send_keys("Tw")
+    el(driver, "var-new-type").clear()
+    el(driver, "var-new-type").send_keys("DINT")
+    el(driver, "var-add").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-Tw"]'))
     focus_ladder(driver, "cell-0-0-2")
     place(driver, Keys.F7, "%QX0.0")
     assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
