@@ -70,3 +70,19 @@ impl Drop for Temp {
         let _ = std::fs::remove_dir_all(&self.dir);
     }
 }
+
+/// The files of the workplace's fixture folder `dir` ending in `ext`, in
+/// order; `None` (said) where the folder is absent: the real files are
+/// never committed, and their tests pass without them.
+pub fn fixture_names(dir: &str, ext: &str) -> Option<Vec<String>> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        eprintln!("no {dir}: skipped");
+        return None;
+    };
+    let mut names: Vec<String> = entries
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.ends_with(ext))
+        .collect();
+    names.sort();
+    Some(names)
+}

@@ -142,15 +142,9 @@ fn same_behaviour(name: &str, xml: &str, ladder: &Ladder) -> usize {
 
 #[test]
 fn the_real_projects_the_soft_plc_runs_are_drawn_and_run_the_same() {
-    let Ok(dir) = std::fs::read_dir(REAL) else {
-        eprintln!("no {REAL}: skipped");
+    let Some(names) = crate::common::fixture_names(REAL, ".xml") else {
         return;
     };
-    let mut names: Vec<String> = dir
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|n| n.ends_with(".xml"))
-        .collect();
-    names.sort();
     let mut drawn = Vec::new();
     for name in &names {
         let xml = std::fs::read_to_string(format!("{REAL}/{name}")).expect("readable");

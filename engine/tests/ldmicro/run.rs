@@ -68,15 +68,9 @@ const NOT_YET: [(&str, &str); 15] = [
 
 #[test]
 fn seventeen_real_files_run_and_the_others_name_their_element_at_its_line() {
-    let Ok(dir) = std::fs::read_dir(REAL) else {
-        eprintln!("no {REAL}: skipped");
+    let Some(names) = crate::common::fixture_names(REAL, ".ld") else {
         return;
     };
-    let mut names: Vec<String> = dir
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|n| n.ends_with(".ld"))
-        .collect();
-    names.sort();
     assert_eq!(names.len(), 32);
     let mut ran = Vec::new();
     for name in &names {
@@ -340,14 +334,9 @@ fn deep_and_long_files_are_read_or_refused_at_a_line_never_slowly() {
 
 #[test]
 fn every_real_file_that_runs_goes_back_out_as_ld_and_reads_as_the_same_ladder() {
-    let Ok(dir) = std::fs::read_dir(REAL) else {
+    let Some(names) = crate::common::fixture_names(REAL, ".ld") else {
         return;
     };
-    let mut names: Vec<String> = dir
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|n| n.ends_with(".ld"))
-        .collect();
-    names.sort();
     let mut round = 0;
     for name in &names {
         let file = parse(&real(name).expect("readable")).expect("reads");
