@@ -269,6 +269,62 @@ fn timer_or_counter(
     }
 }
 
+/// LDmicro's word operations the IEC functions lack (`BIN2BCD`,
+/// `BCD2BIN`, `SWAP`, `OPPOSITE`, `SR0`, `SET_BIT`, `CLEAR_BIT`) as its
+/// `LD_` block on the destination, in the destination's width from the
+/// `VAR LIST` (`bits`); `IF_BIT_SET`/`IF_BIT_CLEAR` as a block passing
+/// power while the bit is as asked. `None` for any other element.
+pub(super) fn word_op(
+    e: &Ld,
+    bits: &dyn Fn(&str) -> u16,
+    instance: &mut dyn FnMut(&str) -> String,
+) -> Option<Result<Part, LdError>> {
+    let (kind, a, b, dest) = match e {
+        Ld::Unary { op, dest, src } => {
+            let kind = match op {
+                UnaryOp::Bin2Bcd => "LD_BIN2BCD",
+                UnaryOp::Bcd2Bin => "LD_BCD2BIN",
+                UnaryOp::Swap => "LD_SWAP",
+                UnaryOp::Opposite => "LD_OPPOSITE",
+                _ => return None,
+            };
+            (kind, src.as_str(), "0", Some(dest.as_str()))
+        }
+        Ld::Math {
+            op: MathOp::Sr0,
+            dest,
+            a,
+            b,
+        } => ("LD_SR0", a.as_str(), b.as_str(), Some(dest.as_str())),
+        Ld::Bit {
+            write: true,
+            set,
+            var,
+            bit,
+        } => {
+            let kind = if *set { "LD_SETBIT" } else { "LD_CLRBIT" };
+            (kind, "0", bit.as_str(), Some(var.as_str()))
+        }
+        Ld::Bit { set, var, bit, .. } => {
+            let kind = if *set { "LD_IFBIT" } else { "LD_IFNBIT" };
+            (kind, var.as_str(), bit.as_str(), None)
+        }
+        _ => return None,
+    };
+    let built = (|| -> Result<Part, LdError> {
+        let mut inputs = vec![("A", operand(a)?), ("B", operand(b)?)];
+        let mut outputs = Vec::new();
+        if let Some(d) = dest {
+            inputs.push(("D", d.to_string()));
+            inputs.push(("W", (bits(d) * 8).to_string()));
+            outputs.push(("D", d.to_string()));
+        }
+        let call = ld_box(kind, instance("op"), inputs, outputs);
+        Ok(Part::Condition(Element::Block(call)))
+    })();
+    Some(built)
+}
+
 /// An arithmetic, move or comparison element as the soft PLC's box.
 fn operation(e: &Ld) -> Result<BlockCall, LdError> {
     let not_yet = || LdError::NotYet(e.keyword().into());

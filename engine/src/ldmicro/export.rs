@@ -272,6 +272,14 @@ impl Writer {
                 }
                 "OSL" | "OSC" => timer.to_string(),
                 "TOGGLE" => format!("COIL {} 0 0 0 1", input("V")),
+                "BIN2BCD" | "BCD2BIN" | "SWAP" | "OPPOSITE" => {
+                    format!("{timer} {} {}", input("D"), input("A"))
+                }
+                "SR0" => format!("SR0 {} {} {}", input("D"), input("A"), input("B")),
+                "SETBIT" => format!("SET_BIT {} {}", input("D"), input("B")),
+                "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
+                "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),
+                "IFNBIT" => format!("IF_BIT_CLEAR {} {}", input("A"), input("B")),
                 _ => return Err(none()),
             });
         }

@@ -8,7 +8,7 @@
 use std::collections::{BTreeMap, HashMap};
 
 use super::element::{is_number, Element as Ld};
-use super::elements::{operand, part, Part, OPEN};
+use super::elements::{operand, part, word_op, Part, OPEN};
 use super::error::LdError;
 use super::file::LdFile;
 use super::lower::{Lowering, MCR};
@@ -31,6 +31,11 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
         pwm: Vec::new(),
         taken: HashMap::new(),
         instances: BTreeMap::new(),
+        sizes: file
+            .vars
+            .iter()
+            .map(|v| (v.name.clone(), v.bytes))
+            .collect(),
     };
     let mut element = |e: &Ld| making.element(e);
     let mut lowering = Lowering {
@@ -45,16 +50,7 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
     let master = file.elements().any(|(e, _)| matches!(e, Ld::MasterRelay));
     let start = master.then(|| Net::Leaf(Element::no(MCR), Pos::new(0, 0)));
     if master {
-        let on = Net::Leaf(Element::nc(OPEN), Pos::new(0, 0));
-        lowering.rungs.push((
-            RungLogic {
-                condition: on,
-                outputs: vec![(Element::coil(MCR), Pos::new(0, 0))],
-                comment: String::new(),
-                sides: Vec::new(),
-            },
-            1,
-        ));
+        lowering.rungs.push((relay_on(), 1));
     }
     for rung in &file.rungs {
         if let Err(e) = lowering.series(&rung.series, start.clone(), true) {
@@ -99,6 +95,17 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
     Ok(ladder)
 }
 
+/// The rung that turns LDmicro's master relay on at each scan's start
+/// (on `_OPEN`'s closed contact: always).
+fn relay_on() -> RungLogic {
+    RungLogic {
+        condition: Net::Leaf(Element::nc(OPEN), Pos::new(0, 0)),
+        outputs: vec![(Element::coil(MCR), Pos::new(0, 0))],
+        comment: String::new(),
+        sides: Vec::new(),
+    }
+}
+
 /// The rungs drawn on grids, a comment left after the last rung going
 /// to it.
 fn drawn(
@@ -137,6 +144,8 @@ struct Making {
     taken: HashMap<String, usize>,
     /// Each block instance and its kind.
     instances: BTreeMap<String, String>,
+    /// The `VAR LIST`'s sizes in bytes.
+    sizes: HashMap<String, u16>,
 }
 
 impl Making {
@@ -174,7 +183,12 @@ impl Making {
                 format!("{stem}{n}")
             }
         };
-        let p = part(e, self.cycle, &mut instance)?;
+        let sizes = &self.sizes;
+        let bits = |name: &str| sizes.get(name).copied().unwrap_or(2).min(4);
+        let p = match word_op(e, &bits, &mut instance) {
+            Some(p) => p?,
+            None => part(e, self.cycle, &mut instance)?,
+        };
         let block = match &p {
             Part::Condition(Element::Block(b)) | Part::Output(Element::OutputBlock(b)) => Some(b),
             _ => None,
@@ -382,6 +396,10 @@ fn roles(file: &LdFile) -> Vec<(String, Role)> {
                 for k in 0..*stages {
                     note(&format!("{name}{k}"), Role::Number);
                 }
+            }
+            Ld::Bit { var, bit, .. } => {
+                note(var, Role::Number);
+                note(bit, Role::Number);
             }
             Ld::LookUpTable { dest, index, .. } => {
                 note(dest, Role::Number);

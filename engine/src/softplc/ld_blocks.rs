@@ -15,7 +15,7 @@
 use super::data::{Data, DataType};
 
 /// The LDmicro blocks by name.
-pub const NAMES: [&str; 14] = [
+pub const NAMES: [&str; 23] = [
     "LD_TON",
     "LD_TOF",
     "LD_RTO",
@@ -30,6 +30,15 @@ pub const NAMES: [&str; 14] = [
     "LD_OSL",
     "LD_OSC",
     "LD_TOGGLE",
+    "LD_BIN2BCD",
+    "LD_BCD2BIN",
+    "LD_SWAP",
+    "LD_OPPOSITE",
+    "LD_SR0",
+    "LD_SETBIT",
+    "LD_CLRBIT",
+    "LD_IFBIT",
+    "LD_IFNBIT",
 ];
 
 /// A block's inputs (name, type), in order.
@@ -46,6 +55,13 @@ pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
         ],
         Some(Family::Shot) => vec![("IN", Bool)],
         Some(Family::Toggle) => vec![("IN", Bool), ("V", Bool)],
+        Some(Family::Op) => vec![
+            ("IN", Bool),
+            ("A", Dint),
+            ("B", Dint),
+            ("D", Dint),
+            ("W", Int),
+        ],
         None => Vec::new(),
     }
 }
@@ -59,6 +75,7 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
         Some(Family::Counter) => vec![("Q", Bool), ("C", Dint)],
         Some(Family::Shot) => vec![("Q", Bool)],
         Some(Family::Toggle) => vec![("Q", Bool), ("V", Bool)],
+        Some(Family::Op) => vec![("Q", Bool), ("D", Dint)],
         None => Vec::new(),
     }
 }
@@ -69,6 +86,9 @@ enum Family {
     Counter,
     Shot,
     Toggle,
+    /// LDmicro's word operations the IEC functions lack: `D := f(A, B)`
+    /// in a `W`-bit word (16 when 0), or (IFBIT) a test passing power.
+    Op,
 }
 
 fn family(block: &str) -> Option<Family> {
@@ -79,6 +99,8 @@ fn family(block: &str) -> Option<Family> {
         "LD_CTU" | "LD_CTD" | "LD_CTC" | "LD_CTR" => Some(Family::Counter),
         "LD_OSL" | "LD_OSC" => Some(Family::Shot),
         "LD_TOGGLE" => Some(Family::Toggle),
+        "LD_BIN2BCD" | "LD_BCD2BIN" | "LD_SWAP" | "LD_OPPOSITE" | "LD_SR0" | "LD_SETBIT"
+        | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" => Some(Family::Op),
         _ => None,
     }
 }
@@ -100,6 +122,8 @@ enum Kind {
     Osl,
     Osc,
     Toggle,
+    /// A word operation (its name after `LD_`).
+    Op(&'static str),
 }
 
 /// One instance: its kind, its memory, and what it gave out last.
@@ -136,7 +160,8 @@ impl LdBlock {
             "LD_CTR" => Kind::Ctr,
             "LD_OSL" => Kind::Osl,
             "LD_OSC" => Kind::Osc,
-            _ => Kind::Toggle,
+            "LD_TOGGLE" => Kind::Toggle,
+            other => Kind::Op(NAMES.iter().find(|n| **n == other).map_or("", |n| &n[3..])),
         };
         LdBlock {
             kind,
@@ -176,6 +201,20 @@ impl LdBlock {
                 self.counter(s, (max, init), count, edge)
             }
             Kind::Osl | Kind::Osc => self.shot(s),
+            Kind::Op(op) => {
+                let (a, b, d, w) = (word(1), word(2), word(3), word(4));
+                self.value = d;
+                match op {
+                    "IFBIT" => s && (a >> b.clamp(0, 63)) & 1 == 1,
+                    "IFNBIT" => s && (a >> b.clamp(0, 63)) & 1 == 0,
+                    _ => {
+                        if s {
+                            self.value = word_op(op, a, b, d, if w <= 0 { 16 } else { w });
+                        }
+                        s
+                    }
+                }
+            }
             Kind::Toggle => {
                 let v = bool_in(1);
                 self.value = i64::from(v);
@@ -395,4 +434,50 @@ impl LdBlock {
             }
         }
     }
+}
+
+/// LDmicro's word operation `op` on `a` and `b` (`d` the destination as
+/// it is) in a `bits`-wide signed word, wrapped to it.
+fn word_op(op: &str, a: i64, b: i64, d: i64, bits: i64) -> i64 {
+    let bits = bits.clamp(1, 32) as u32;
+    let mask: u64 = (1u64 << bits) - 1;
+    let unsigned = |v: i64| (v as u64) & mask;
+    let r: u64 = match op {
+        "BIN2BCD" => {
+            let (mut v, mut out, mut shift) = (a.unsigned_abs(), 0u64, 0);
+            while v > 0 && shift < 64 {
+                out |= (v % 10) << shift;
+                v /= 10;
+                shift += 4;
+            }
+            out
+        }
+        "BCD2BIN" => {
+            let (mut v, mut out, mut scale) = (unsigned(a), 0u64, 1u64);
+            while v > 0 {
+                out = out.wrapping_add((v & 0xF).wrapping_mul(scale));
+                v >>= 4;
+                scale = scale.wrapping_mul(10);
+            }
+            out
+        }
+        "SWAP" => {
+            let bytes = (bits / 8).max(1);
+            let mut v = unsigned(a);
+            let mut out = 0u64;
+            for _ in 0..bytes {
+                out = (out << 8) | (v & 0xFF);
+                v >>= 8;
+            }
+            out
+        }
+        "OPPOSITE" => unsigned(a).reverse_bits() >> (64 - bits),
+        "SR0" => unsigned(a) >> b.clamp(0, 63),
+        "SETBIT" => unsigned(d) | (1u64 << b.clamp(0, 63)),
+        "CLRBIT" => unsigned(d) & !(1u64 << b.clamp(0, 63)),
+        _ => unsigned(d),
+    } & mask;
+    // Back to a signed word of that width.
+    let sign = 1u64 << (bits - 1);
+    (r ^ sign) as i64 - sign as i64
 }
