@@ -127,7 +127,19 @@ pub(super) fn part(
         Ld::Unary { .. } | Ld::Math { .. } | Ld::Compare { .. } => {
             Part::Condition(Element::Block(operation(e)?))
         }
-        Ld::ShiftRegister { .. } | Ld::LookUpTable { .. } => Part::Network(as_boxes(e)?),
+        Ld::ShiftRegister { .. } | Ld::LookUpTable { .. } | Ld::PiecewiseLinear { .. } => {
+            Part::Network(as_boxes(e)?)
+        }
+        Ld::TimeConvert {
+            to_delay: false,
+            name,
+            delay,
+        } => {
+            // The delay's count of cycles (no adjust), as LDmicro's
+            // TIME2COUNT gives it.
+            let count = period(name, delay, cycle, 0)?;
+            Part::Condition(Element::Block(function("MOVE", vec![("IN", count)], name)))
+        }
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
@@ -179,7 +191,59 @@ fn as_boxes(e: &Ld) -> Result<crate::ladder::net::Net, LdError> {
                 _ => Net::Parallel(branches),
             })
         }
+        Ld::PiecewiseLinear {
+            dest,
+            index,
+            points,
+            ..
+        } => Ok(piecewise(dest, &operand(index)?, points)),
         other => Err(LdError::NotYet(other.keyword().into())),
+    }
+}
+
+/// The DINT a piecewise-linear table computes in.
+pub(super) const PWL: &str = "_pwl";
+
+/// `PIECEWISE_LINEAR d i …` as one branch per segment between points
+/// (x0, y0) and (x1, y1): while `x0 <= i <= x1`, `d := y0 + (i - x0) *
+/// (y1 - y0) / (x1 - x0)` in boxes (a later segment wins at a shared
+/// point, where both give y1).
+fn piecewise(dest: &str, index: &str, points: &[(i64, i64)]) -> crate::ladder::net::Net {
+    use crate::ladder::grid::Pos;
+    use crate::ladder::net::Net;
+    let leaf = |b: BlockCall| Net::Leaf(Element::Block(b), Pos::new(0, 0));
+    let cmp = |kind: &str, a: String, b: String| {
+        leaf(ld_box(
+            kind,
+            String::new(),
+            vec![("IN1", a), ("IN2", b)],
+            Vec::new(),
+        ))
+    };
+    let math = |kind: &str, a: String, b: String, out: &str| {
+        leaf(function(kind, vec![("IN1", a), ("IN2", b)], out))
+    };
+    let branches: Vec<Net> = points
+        .windows(2)
+        .map(|w| {
+            let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+            Net::Series(vec![
+                cmp("GE", index.to_string(), x0.to_string()),
+                cmp("LE", index.to_string(), x1.to_string()),
+                math("SUB", index.to_string(), x0.to_string(), PWL),
+                math("MUL", PWL.into(), (y1 - y0).to_string(), PWL),
+                math("DIV", PWL.into(), (x1 - x0).max(1).to_string(), PWL),
+                math("ADD", PWL.into(), y0.to_string(), dest),
+            ])
+        })
+        .collect();
+    match branches.len() {
+        0 => Net::Leaf(Element::Wire, Pos::new(0, 0)),
+        1 => branches
+            .into_iter()
+            .next()
+            .unwrap_or(Net::Leaf(Element::Wire, Pos::new(0, 0))),
+        _ => Net::Parallel(branches),
     }
 }
 

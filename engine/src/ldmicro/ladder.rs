@@ -337,7 +337,15 @@ enum Role {
 fn roles(file: &LdFile) -> Vec<(String, Role)> {
     let mut roles: Vec<(String, Role)> = Vec::new();
     let mut at: HashMap<String, usize> = HashMap::new();
-    let mut note = |name: &str, role: Role| {
+    // The IO LIST's inputs and outputs first, so that the board follows
+    // its order (its ADC and PWM names are numbers, noted where used).
+    let io = file
+        .io
+        .iter()
+        .filter(|io| io.name.starts_with(['X', 'Y']))
+        .map(|io| (io.name.clone(), Role::Bit));
+    let used = file.elements().flat_map(|(e, _)| names_used(e));
+    for (name, role) in io.chain(used) {
         let name = name.trim();
         // The BOOLs the lowering holds power in are the compiler's to
         // declare (they read back so from a file written out).
@@ -345,7 +353,7 @@ fn roles(file: &LdFile) -> Vec<(String, Role)> {
             .strip_prefix("_ld")
             .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()));
         if name.is_empty() || is_number(name) || held {
-            return;
+            continue;
         }
         match at.get(name) {
             // A bit read as a number stays a bit (the soft PLC then says
@@ -356,60 +364,39 @@ fn roles(file: &LdFile) -> Vec<(String, Role)> {
                 roles.push((name.to_string(), role));
             }
         }
-    };
-    // The IO LIST's inputs and outputs first, so that the board follows
-    // its order (its ADC and PWM names are numbers, noted where used).
-    for io in file.io.iter().filter(|io| io.name.starts_with(['X', 'Y'])) {
-        note(&io.name, Role::Bit);
-    }
-    for (e, _) in file.elements() {
-        match e {
-            Ld::Contacts { name, .. } | Ld::Coil { name, .. } => note(name, Role::Bit),
-            Ld::Open => note(OPEN, Role::Bit),
-            Ld::Timer { name, delay, .. } => {
-                note(name, Role::Number);
-                note(delay, Role::Number);
-            }
-            Ld::Counter {
-                name, max, init, ..
-            } => {
-                for n in [name, max, init] {
-                    note(n, Role::Number);
-                }
-            }
-            Ld::Res(name) => note(name, Role::Number),
-            Ld::Unary { dest, src, .. } => {
-                note(dest, Role::Number);
-                note(src, Role::Number);
-            }
-            Ld::Math { dest, a, b, .. } => {
-                for n in [dest, a, b] {
-                    note(n, Role::Number);
-                }
-            }
-            Ld::Compare { a, b, .. } => {
-                note(a, Role::Number);
-                note(b, Role::Number);
-            }
-            Ld::ReadAdc { name, .. } | Ld::Persist(name) => note(name, Role::Number),
-            Ld::ShiftRegister { name, stages } => {
-                for k in 0..*stages {
-                    note(&format!("{name}{k}"), Role::Number);
-                }
-            }
-            Ld::Bit { var, bit, .. } => {
-                note(var, Role::Number);
-                note(bit, Role::Number);
-            }
-            Ld::LookUpTable { dest, index, .. } => {
-                note(dest, Role::Number);
-                note(index, Role::Number);
-            }
-            Ld::SetPwm { duty, .. } => note(duty, Role::Number),
-            _ => {}
-        }
     }
     roles
+}
+
+/// The names one element uses, each as a bit or a number.
+fn names_used(e: &Ld) -> Vec<(String, Role)> {
+    let numbers = |names: &[&str]| -> Vec<(String, Role)> {
+        names
+            .iter()
+            .map(|n| (n.to_string(), Role::Number))
+            .collect()
+    };
+    match e {
+        Ld::Contacts { name, .. } | Ld::Coil { name, .. } => vec![(name.clone(), Role::Bit)],
+        Ld::Open => vec![(OPEN.to_string(), Role::Bit)],
+        Ld::Timer { name, delay, .. } => numbers(&[name, delay]),
+        Ld::Counter {
+            name, max, init, ..
+        } => numbers(&[name, max, init]),
+        Ld::Res(name) | Ld::ReadAdc { name, .. } | Ld::Persist(name) => numbers(&[name]),
+        Ld::TimeConvert { name, .. } => numbers(&[name]),
+        Ld::Unary { dest, src, .. } => numbers(&[dest, src]),
+        Ld::Math { dest, a, b, .. } => numbers(&[dest, a, b]),
+        Ld::Compare { a, b, .. } => numbers(&[a, b]),
+        Ld::ShiftRegister { name, stages } => (0..*stages)
+            .map(|k| (format!("{name}{k}"), Role::Number))
+            .collect(),
+        Ld::Bit { var, bit, .. } => numbers(&[var, bit]),
+        Ld::LookUpTable { dest, index, .. } => numbers(&[dest, index]),
+        Ld::PiecewiseLinear { dest, index, .. } => numbers(&[dest, index, super::elements::PWL]),
+        Ld::SetPwm { duty, .. } => numbers(&[duty]),
+        _ => Vec::new(),
+    }
 }
 
 /// The ladder's variables: bits and numbers the elements name, the

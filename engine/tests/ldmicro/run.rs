@@ -513,3 +513,23 @@ fn ldmicros_word_operations_work_in_the_width_the_var_list_gives() {
     // from its own list: the element lines are the same.
     assert_eq!(back.rungs.len(), ladder.rungs.len());
 }
+
+#[test]
+fn a_piecewise_linear_table_interpolates_and_time2count_counts_cycles() {
+    let text = program(
+        "RUNG 1\n  CONTACTS Xa 0\n  PIECEWISE_LINEAR y x 3 0 0 100 1000 200 1500\nEND\nRUNG 2\n  TIME2COUNT n 50000\nEND\n",
+    );
+    let mut plc = load(&text);
+    for (x, y) in [(50, 500), (150, 1250), (100, 1000), (0, 0), (200, 1500)] {
+        set(plc.as_mut(), "x", x);
+        let k = plc.scans();
+        run_pattern(plc.as_mut(), &[1], k);
+        assert_eq!(get(plc.as_ref(), "y"), y, "x = {x}");
+    }
+    assert_eq!(get(plc.as_ref(), "n"), 5, "50 ms in 10 ms cycles");
+    let file = parse(&text).expect("reads");
+    let ladder = to_ladder(&file).expect("draws");
+    let out = engine::ldmicro::export(&ladder, file.cycle_us).expect("writes");
+    let back = to_ladder(&parse(&out).expect("reads")).expect("draws");
+    assert_eq!(back.rungs, ladder.rungs, "{out}");
+}
