@@ -124,3 +124,54 @@ def test_ldmicros_timer_is_in_the_soft_plcs_palette_and_counts_scans(driver, bas
     el(driver, "soft-input-IX0-0").click()
     wait(driver, lambda: not on(driver, "soft-lamp-QX0-0"))
     assert severe_console_messages(driver) == []
+
+
+# Written for this test: greets with a formatted string showing a
+# count, then echoes each key while the transmitter is free.
+ECHO = "\n".join([
+    "LDmicro0.2",
+    "CYCLE=10000",
+    "PROGRAM",
+    "RUNG",
+    "    CONTACTS Rsaid 1",
+    "    MOVE count 42",
+    "    FORMATTED_STRING count 10 72 105 44 32 92 51 92 114 92 110",
+    "    COIL Rsaid 0 1 0",
+    "END",
+    "RUNG",
+    "    UART_SEND_READY",
+    "    UART_RECV ch",
+    "    COIL Rgot 0 0 0",
+    "END",
+    "RUNG",
+    "    CONTACTS Rgot 0",
+    "    UART_SEND ch",
+    "END",
+    "",
+])
+
+
+def test_an_ld_files_uart_talks_through_the_serial_monitor(driver, base_url, tmp_path, artifacts):
+    open_fresh(driver, base_url)
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-monitor"]')
+    path = tmp_path / "echo.ld"
+    path.write_text(ECHO)
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-count"]'))
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    el(driver, "run").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-monitor"]'),
+         message="a program using the UART gets a serial monitor")
+    monitor = lambda: el(driver, "soft-monitor").text
+    wait(driver, lambda: monitor().startswith("Hi,  42"), message="the formatted string: " + monitor())
+    line = el(driver, "soft-monitor-input")
+    line.send_keys("abc\n")
+    wait(driver, lambda: monitor().endswith("abc"), message="echoed: " + repr(monitor()))
+    line.send_keys("\n")
+    line.send_keys("z\n")
+    wait(driver, lambda: monitor().endswith("abc\nz"), message="Enter alone is a CR: " + repr(monitor()))
+    driver.save_screenshot(str(artifacts / "ldmicro-serial.png"))
+    # A key that is no byte is refused in the monitor, nothing typed.
+    line.send_keys("\u00e9\u3042\n")
+    wait(driver, lambda: "not a byte" in monitor(), message=monitor())
+    assert severe_console_messages(driver) == []

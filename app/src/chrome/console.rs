@@ -7,11 +7,11 @@ use leptos::prelude::*;
 /// The most output kept on screen.
 const SCROLLBACK: usize = 20_000;
 
-/// Appends what a device sent (CR LF shown as LF), keeping the last
-/// [`SCROLLBACK`] bytes.
+/// Appends what a device sent as it sent it (a CR LF may come in two
+/// pieces), keeping the last [`SCROLLBACK`] bytes.
 pub fn append(console: RwSignal<String>, sent: &str) {
     console.update(|c| {
-        c.push_str(&sent.replace("\r\n", "\n"));
+        c.push_str(sent);
         if c.len() > SCROLLBACK {
             let cut = c.len() - SCROLLBACK;
             let cut = (cut..c.len())
@@ -40,7 +40,9 @@ pub fn ConsolePane(
         <section class="terminal">
             <h2>{move || title.get()}</h2>
             <pre data-testid=testid aria-live="polite" tabindex="0">
-                {move || console.get()}
+                // CR LF, and a CR alone, are line ends: a page cannot
+                // overwrite a line as a terminal does.
+                {move || console.with(|c| c.replace("\r\n", "\n").replace('\r', "\n"))}
             </pre>
             <div class="terminal-input">
                 <input

@@ -81,6 +81,7 @@ pub static EN: Texts = Texts {
     bits: "Bits",
     drive: "drive",
     soft_board: "Board · inputs, outputs, analog",
+    soft_monitor_hint: "Type keys and press Enter (an empty line sends Enter itself)",
     soft_push: "push",
     variables: "Variables",
     var_name: "Name",

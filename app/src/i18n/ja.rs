@@ -80,6 +80,7 @@ pub static JA: Texts = Texts {
     bits: "ビット",
     drive: "入力にする",
     soft_board: "ボード · 入力・出力・アナログ",
+    soft_monitor_hint: "キーを入力して Enter（空行で Enter そのものを送信）",
     soft_push: "押す",
     variables: "変数",
     var_name: "名前",

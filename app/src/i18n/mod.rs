@@ -133,6 +133,8 @@ pub struct Texts {
     pub drive: &'static str,
     // The soft PLC's board and variables pane.
     pub soft_board: &'static str,
+    /// The soft PLC's serial monitor's input line (LDmicro's UART).
+    pub soft_monitor_hint: &'static str,
     pub soft_push: &'static str,
     pub variables: &'static str,
     pub var_name: &'static str,

@@ -12,6 +12,7 @@ use engine::plc::{Command, Device, Plc};
 use engine::softplc::{Address, Area, Size};
 use leptos::prelude::*;
 
+use crate::chrome::console::ConsolePane;
 use crate::chrome::controls::{Led, Momentary};
 use crate::chrome::text_program::TextProgramPane;
 use crate::sim::Simulator;
@@ -103,6 +104,11 @@ pub struct SoftCtx {
     pub sim: StoredValue<Simulator<SoftPlc>, LocalStorage>,
     pub terminals: RwSignal<Vec<Terminal>>,
     pub text: RwSignal<String>,
+    /// The serial monitor, shown while the program uses the UART.
+    pub serial: RwSignal<bool>,
+    pub console: RwSignal<String>,
+    /// Bytes of the port's output the console shows.
+    console_seen: StoredValue<u64>,
 }
 
 impl SoftCtx {
@@ -114,6 +120,9 @@ impl SoftCtx {
             sim: StoredValue::new_local(Simulator::new(SoftPlc::new())),
             terminals: RwSignal::new(Vec::new()),
             text: RwSignal::new(text),
+            serial: RwSignal::new(false),
+            console: RwSignal::new(String::new()),
+            console_seen: StoredValue::new(0),
         };
         if !ctx.load() {
             ctx.rebuild();
@@ -121,7 +130,8 @@ impl SoftCtx {
         ctx
     }
 
-    /// Copies the terminals' values into the signals that changed.
+    /// Copies the terminals' values into the signals that changed, and
+    /// what the serial port sent since into the console.
     pub fn refresh(&self) {
         self.sim.with_value(|s| {
             self.terminals.with_untracked(|ts| {
@@ -131,7 +141,33 @@ impl SoftCtx {
                     }
                 }
             });
+            let seen = self.console_seen.get_value();
+            let mut sent = String::new();
+            let total = s.machine().serial_sent(seen, &mut sent);
+            if total < seen {
+                // Travelled back, or powered up anew: the port's own copy.
+                sent.clear();
+                s.machine().serial_sent(0, &mut sent);
+                self.console.set(String::new());
+            }
+            if !sent.is_empty() {
+                crate::chrome::console::append(self.console, &sent);
+            }
+            self.console_seen.set_value(total);
         });
+    }
+
+    /// Types `line` at the serial port (an empty line: the Enter key); a
+    /// refusal (a character that is no byte) is shown in the console.
+    pub fn type_line(&self, line: &str) {
+        let typed = self
+            .sim
+            .try_update_value(|s| s.machine_mut().serial(line))
+            .unwrap_or(Ok(String::new()));
+        if let Err(e) = typed {
+            crate::chrome::console::append(self.console, &format!("\n[{e}]\n"));
+        }
+        self.refresh();
     }
 
     /// Saves the program text.
@@ -170,6 +206,7 @@ impl SoftCtx {
                     .find(|v| v.address == Some(a))
                     .map_or(String::new(), |v| v.name.clone())
             };
+            put(self.serial, program.uses_serial());
             board_addresses(program.io())
                 .into_iter()
                 .filter_map(|a| {
@@ -304,6 +341,15 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                 </ul>
             </section>
             {ladder.map(|l| view! { <crate::editor::variables::VariablesPane ctx=l /> })}
+            <Show when=move || soft.serial.get()>
+                <ConsolePane
+                    title=Signal::derive(move || t().monitor.to_string())
+                    hint=Signal::derive(move || t().soft_monitor_hint.to_string())
+                    testid="soft-monitor"
+                    console=soft.console
+                    on_line=Callback::new(move |line: String| soft.type_line(&line))
+                />
+            </Show>
             <div class="side">
                 <TextProgramPane
                     as_ladder=true

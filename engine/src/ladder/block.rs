@@ -20,6 +20,7 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 use crate::softplc::data::DataType;
+use crate::softplc::ld_blocks::text_input;
 use crate::softplc::pins;
 use crate::softplc::vars::{is_block_type, is_identifier};
 use crate::softplc::{parse_literal, Address};
@@ -154,11 +155,16 @@ impl BlockCall {
             }
             Some(Shape::Function(pins, false)) => pins.iter().map(|p| p.to_string()).collect(),
             Some(Shape::Compare) => vec!["IN1".into(), "IN2".into()],
-            Some(Shape::FunctionBlock) => pins::inputs(&self.kind())
-                .iter()
-                .skip(1)
-                .map(|(p, _)| p.to_string())
-                .collect(),
+            Some(Shape::FunctionBlock) => {
+                let kind = self.kind();
+                pins::inputs(&kind)
+                    .iter()
+                    .skip(1)
+                    .map(|(p, _)| *p)
+                    .chain(text_input(&kind))
+                    .map(str::to_string)
+                    .collect()
+            }
             None => Vec::new(),
         }
     }
@@ -184,7 +190,11 @@ impl BlockCall {
                 let takes = pins.join(", ");
                 return Err(BoxError::NoSuchInput(kind, pin.clone(), takes));
             }
-            if !is_variable(operand) && parse_literal(operand, None).is_err() {
+            if text_input(&kind).is_some_and(|t| t.eq_ignore_ascii_case(pin)) {
+                // An LDmicro formatted string's text: '…'.
+                crate::softplc::literal::parse_text(operand.trim())
+                    .map_err(|_| BoxError::BadOperand(operand.clone()))?;
+            } else if !is_variable(operand) && parse_literal(operand, None).is_err() {
                 return Err(BoxError::BadOperand(operand.clone()));
             }
         }

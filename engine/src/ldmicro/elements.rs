@@ -140,7 +140,63 @@ pub(super) fn part(
             let count = period(name, delay, cycle, 0)?;
             Part::Condition(Element::Block(function("MOVE", vec![("IN", count)], name)))
         }
+        Ld::UartSend { .. }
+        | Ld::UartRecv { .. }
+        | Ld::UartRecvAvail
+        | Ld::UartSendReady
+        | Ld::FormattedString { .. } => Part::Condition(Element::Block(serial(e, instance)?)),
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
+        other => return Err(LdError::NotYet(other.keyword().into())),
+    })
+}
+
+/// The serial port's elements as LDmicro's serial blocks (one byte a
+/// call; LDmicro 4.x's several-byte forms are not run yet).
+fn serial(e: &Ld, instance: &mut impl FnMut(&str) -> String) -> Result<BlockCall, LdError> {
+    let byte = |name: &str, bytes: u32, wait: bool, whole: bool| {
+        if bytes > 1 || wait || whole {
+            Err(LdError::NotYet(format!("{} of several bytes", e.keyword())))
+        } else {
+            operand(name)
+        }
+    };
+    Ok(match e {
+        Ld::UartSend {
+            name,
+            bytes,
+            wait,
+            whole,
+        } => {
+            let v = byte(name, *bytes, *wait, *whole)?;
+            ld_box(
+                "LD_UART_SEND",
+                instance("_send"),
+                vec![("V", v)],
+                Vec::new(),
+            )
+        }
+        Ld::UartRecv {
+            name,
+            bytes,
+            wait,
+            whole,
+        } => {
+            let v = byte(name, *bytes, *wait, *whole)?;
+            let inputs = vec![("V", v.clone())];
+            ld_box("LD_UART_RECV", instance("_recv"), inputs, vec![("V", v)])
+        }
+        Ld::UartRecvAvail => ld_box("LD_UART_AVAIL", instance("_avail"), Vec::new(), Vec::new()),
+        Ld::UartSendReady => ld_box("LD_UART_READY", instance("_ready"), Vec::new(), Vec::new()),
+        Ld::FormattedString { var, text } => {
+            crate::softplc::ld_format::Format::for_element(text, !var.trim().is_empty())
+                .map_err(LdError::Format)?;
+            let mut inputs = Vec::new();
+            if !var.trim().is_empty() {
+                inputs.push(("V", operand(var)?));
+            }
+            inputs.push(("FMT", crate::softplc::literal::text_literal(text)));
+            ld_box("LD_FMTSTR", instance("_fmt"), inputs, Vec::new())
+        }
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
 }

@@ -49,6 +49,8 @@ pub enum LdError {
     Hardware(String),
     /// An element the soft PLC does not run yet (its keyword).
     NotYet(String),
+    /// A formatted string LDmicro's compiler refuses (why).
+    Format(crate::softplc::ld_format::FormatError),
     /// A timer whose delay is not a whole number of cycles above zero
     /// (the timer, its delay in µs, the cycle in µs, the adjust).
     TimerPeriod {
@@ -118,6 +120,7 @@ impl fmt::Display for LdError {
                 f,
                 "{k} does not run on the soft PLC yet (docs/ldmicro.md lists what does)"
             ),
+            LdError::Format(e) => write!(f, "FORMATTED_STRING: {e}"),
             LdError::TimerPeriod {
                 name,
                 delay,

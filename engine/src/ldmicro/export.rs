@@ -280,6 +280,11 @@ impl Writer {
                 "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
                 "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),
                 "IFNBIT" => format!("IF_BIT_CLEAR {} {}", input("A"), input("B")),
+                "UART_SEND" => format!("UART_SEND {} 1 0", input("V")),
+                "UART_RECV" => format!("UART_RECV {} 1 0", input("V")),
+                "UART_AVAIL" => "UART_RECV_AVAIL".into(),
+                "UART_READY" => "UART_SEND_READY".into(),
+                "FMTSTR" => formatted_string(b, &input("V")).ok_or_else(none)?,
                 _ => return Err(none()),
             });
         }
@@ -313,6 +318,19 @@ impl Writer {
             _ => return Err(none()),
         })
     }
+}
+
+/// A formatted string as LDmicro saves it: its variable (or `(none)`),
+/// then its length and character codes.
+fn formatted_string(b: &BlockCall, var: &str) -> Option<String> {
+    let text = crate::softplc::literal::parse_text(b.input("FMT")?).ok()?;
+    let var = if var.is_empty() { "(none)" } else { var };
+    let codes: Vec<String> = text.chars().map(|c| u32::from(c).to_string()).collect();
+    Some(format!(
+        "FORMATTED_STRING {var} {} {}",
+        codes.len(),
+        codes.join(" ")
+    ))
 }
 
 /// A comment as LDmicro saves it: line ends and backslashes escaped.

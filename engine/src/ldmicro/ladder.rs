@@ -395,6 +395,8 @@ fn names_used(e: &Ld) -> Vec<(String, Role)> {
         Ld::LookUpTable { dest, index, .. } => numbers(&[dest, index]),
         Ld::PiecewiseLinear { dest, index, .. } => numbers(&[dest, index, super::elements::PWL]),
         Ld::SetPwm { duty, .. } => numbers(&[duty]),
+        Ld::UartSend { name, .. } | Ld::UartRecv { name, .. } => numbers(&[name]),
+        Ld::FormattedString { var, .. } => numbers(&[var]),
         _ => Vec::new(),
     }
 }

@@ -228,6 +228,17 @@ pub trait Plc {
         })
     }
 
+    /// What the device sent at its serial port on its own, while running
+    /// (the soft PLC's UART; IO86A and the Arduino answer typed lines
+    /// instead): appends to `out` the bytes sent after the first `seen`
+    /// since power-on, as far as the device keeps them, and returns how
+    /// many it has sent in all. A total below `seen` means the device's
+    /// port started over (time travel to before them).
+    fn serial_sent(&self, seen: u64, out: &mut String) -> u64 {
+        let _ = (seen, out);
+        0
+    }
+
     /// Types one line at the device's serial port and returns what it
     /// sends back (`hashigo console`).
     fn serial(&mut self, line: &str) -> Result<String, PlcError> {

@@ -283,4 +283,9 @@ impl<M: Plc + Clone> Plc for Recorded<M> {
         self.live_mut();
         self.recording.serial(&mut self.live, line)
     }
+
+    /// As the shown machine (a past one while travelling) had sent.
+    fn serial_sent(&self, seen: u64, out: &mut String) -> u64 {
+        self.shown_machine().serial_sent(seen, out)
+    }
 }

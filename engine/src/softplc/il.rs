@@ -187,6 +187,9 @@ pub enum Operand {
     Name(String),
     Address(Address),
     Literal(Data),
+    /// A string literal's text (`'Hello $R$N'` read): only an LDmicro
+    /// formatted string's `FMT` takes one.
+    Text(String),
 }
 
 /// One line of IL.
@@ -457,6 +460,11 @@ fn operands(word: &str, rest: &str, out: &mut Line) -> Result<(), IlError> {
 
 /// A name, an address or a literal.
 fn operand(text: &str) -> Result<Operand, IlError> {
+    if text.starts_with('\'') {
+        return super::literal::parse_text(text)
+            .map(Operand::Text)
+            .map_err(IlError::Literal);
+    }
     if text.starts_with('%') {
         return Address::parse(text)
             .map(Operand::Address)
@@ -489,7 +497,7 @@ fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
         return Err(bad());
     }
     out.operand = Some(Operand::Name(name.to_string()));
-    for param in params.into_iter().flat_map(|p| p.split(',')).map(str::trim) {
+    for param in params.into_iter().flat_map(split_params).map(str::trim) {
         if param.is_empty() {
             continue;
         }
@@ -511,6 +519,27 @@ fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
         }
     }
     Ok(())
+}
+
+/// A call's parameters, split at the commas outside string literals.
+fn split_params(params: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut start, mut quoted, mut escaped) = (0, false, false);
+    for (i, c) in params.char_indices() {
+        match c {
+            // `$'` in a literal is a quote, not its end.
+            _ if escaped => escaped = false,
+            '$' if quoted => escaped = true,
+            '\'' => quoted = !quoted,
+            ',' if !quoted => {
+                out.push(&params[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(&params[start..]);
+    out
 }
 
 #[cfg(test)]

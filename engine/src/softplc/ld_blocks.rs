@@ -13,9 +13,11 @@
 //! generated one-shot bits) lives in its instance.
 
 use super::data::{Data, DataType};
+use super::ld_format::{Format, Sender};
+use super::uart::Uart;
 
 /// The LDmicro blocks by name.
-pub const NAMES: [&str; 23] = [
+pub const NAMES: [&str; 28] = [
     "LD_TON",
     "LD_TOF",
     "LD_RTO",
@@ -39,7 +41,26 @@ pub const NAMES: [&str; 23] = [
     "LD_CLRBIT",
     "LD_IFBIT",
     "LD_IFNBIT",
+    "LD_UART_SEND",
+    "LD_UART_RECV",
+    "LD_UART_AVAIL",
+    "LD_UART_READY",
+    "LD_FMTSTR",
 ];
+
+/// The input of a block given as a text (LDmicro's formatted string:
+/// `FMT := 'Hello \-5$R$N'`), fixed for the instance; `None` for a
+/// block without one.
+pub fn text_input(block: &str) -> Option<&'static str> {
+    (block == "LD_FMTSTR").then_some("FMT")
+}
+
+/// What an LDmicro block reaches beyond its inputs: the serial port and,
+/// for a formatted string, its text.
+pub struct Io<'a> {
+    pub uart: &'a mut Uart,
+    pub format: Option<&'a Format>,
+}
 
 /// A block's inputs (name, type), in order.
 pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
@@ -62,6 +83,7 @@ pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
             ("D", Dint),
             ("W", Int),
         ],
+        Some(Family::Serial) => vec![("IN", Bool), ("V", Dint)],
         None => Vec::new(),
     }
 }
@@ -76,6 +98,8 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
         Some(Family::Shot) => vec![("Q", Bool)],
         Some(Family::Toggle) => vec![("Q", Bool), ("V", Bool)],
         Some(Family::Op) => vec![("Q", Bool), ("D", Dint)],
+        Some(Family::Serial) if block == "LD_UART_RECV" => vec![("Q", Bool), ("V", Dint)],
+        Some(Family::Serial) => vec![("Q", Bool)],
         None => Vec::new(),
     }
 }
@@ -89,6 +113,9 @@ enum Family {
     /// LDmicro's word operations the IEC functions lack: `D := f(A, B)`
     /// in a `W`-bit word (16 when 0), or (IFBIT) a test passing power.
     Op,
+    /// The serial port's: a byte `V` sent or received, a formatted
+    /// string sent (LD_UART_AVAIL and LD_UART_READY take only IN).
+    Serial,
 }
 
 fn family(block: &str) -> Option<Family> {
@@ -97,7 +124,8 @@ fn family(block: &str) -> Option<Family> {
             Some(Family::Timer)
         }
         "LD_CTU" | "LD_CTD" | "LD_CTC" | "LD_CTR" => Some(Family::Counter),
-        "LD_OSL" | "LD_OSC" => Some(Family::Shot),
+        "LD_OSL" | "LD_OSC" | "LD_UART_AVAIL" | "LD_UART_READY" => Some(Family::Shot),
+        "LD_UART_SEND" | "LD_UART_RECV" | "LD_FMTSTR" => Some(Family::Serial),
         "LD_TOGGLE" => Some(Family::Toggle),
         "LD_BIN2BCD" | "LD_BCD2BIN" | "LD_SWAP" | "LD_OPPOSITE" | "LD_SR0" | "LD_SETBIT"
         | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" => Some(Family::Op),
@@ -124,6 +152,11 @@ enum Kind {
     Toggle,
     /// A word operation (its name after `LD_`).
     Op(&'static str),
+    UartSend,
+    UartRecv,
+    UartAvail,
+    UartReady,
+    FormattedString,
 }
 
 /// One instance: its kind, its memory, and what it gave out last.
@@ -139,8 +172,10 @@ pub struct LdBlock {
     started: bool,
     /// The power passed on.
     pub q: bool,
-    /// The count (T, C) or the toggled bit (V).
+    /// The count (T, C), the toggled bit or the byte received (V).
     pub value: i64,
+    /// A formatted string's progress.
+    sender: Sender,
 }
 
 impl LdBlock {
@@ -161,6 +196,11 @@ impl LdBlock {
             "LD_OSL" => Kind::Osl,
             "LD_OSC" => Kind::Osc,
             "LD_TOGGLE" => Kind::Toggle,
+            "LD_UART_SEND" => Kind::UartSend,
+            "LD_UART_RECV" => Kind::UartRecv,
+            "LD_UART_AVAIL" => Kind::UartAvail,
+            "LD_UART_READY" => Kind::UartReady,
+            "LD_FMTSTR" => Kind::FormattedString,
             other => Kind::Op(NAMES.iter().find(|n| **n == other).map_or("", |n| &n[3..])),
         };
         LdBlock {
@@ -170,6 +210,7 @@ impl LdBlock {
             started: false,
             q: false,
             value: 0,
+            sender: Sender::default(),
         }
     }
 
@@ -183,7 +224,7 @@ impl LdBlock {
     }
 
     /// One call with the block's inputs in the order of [`inputs`].
-    pub fn call(&mut self, inputs: &[Data]) {
+    pub fn call(&mut self, inputs: &[Data], io: Io<'_>) {
         let bool_in = |i: usize| matches!(inputs.get(i), Some(Data::Bool(true)));
         let word = |i: usize| match inputs.get(i) {
             Some(Data::Int(_, v)) => *v,
@@ -215,6 +256,31 @@ impl LdBlock {
                     }
                 }
             }
+            Kind::UartSend => {
+                // LDmicro 4.x: the power out is the transmitter's busy
+                // bit, whatever the power in.
+                if s {
+                    io.uart.send(word(1) as u8);
+                }
+                !io.uart.ready()
+            }
+            Kind::UartRecv => {
+                self.value = word(1);
+                // Without power nothing is taken from the port.
+                match s.then(|| io.uart.receive()).flatten() {
+                    Some(byte) => {
+                        self.value = i64::from(byte);
+                        true
+                    }
+                    None => false,
+                }
+            }
+            Kind::UartAvail => s && io.uart.available(),
+            Kind::UartReady => s && io.uart.ready(),
+            Kind::FormattedString => match io.format {
+                Some(format) => self.sender.call(s, word(1), format, io.uart),
+                None => false,
+            },
             Kind::Toggle => {
                 let v = bool_in(1);
                 self.value = i64::from(v);

@@ -47,6 +47,7 @@ impl fmt::Display for Operand {
             // its place: the same value either way.
             Operand::Literal(Data::Int(DataType::Dint, v)) => write!(f, "{v}"),
             Operand::Literal(d) => d.fmt(f),
+            Operand::Text(t) => f.write_str(&super::literal::text_literal(t)),
         }
     }
 }

@@ -22,6 +22,9 @@ pub enum LiteralError {
     BadTime(String),
     /// A literal of one type where another is needed.
     WrongType { text: String, expected: DataType },
+    /// A string literal (`'…'`) not closed, or with a `$` escape IEC
+    /// has not.
+    BadText(String),
 }
 
 impl fmt::Display for LiteralError {
@@ -39,6 +42,10 @@ impl fmt::Display for LiteralError {
             LiteralError::WrongType { text, expected } => {
                 write!(f, "`{text}` is not a {} value", expected.name())
             }
+            LiteralError::BadText(t) => write!(
+                f,
+                "`{t}` is not a string literal: '…' with $$ $' $R $N $L $T $P or $hh for other bytes"
+            ),
         }
     }
 }
@@ -244,4 +251,94 @@ fn time(s: &str) -> Option<i64> {
     }
     let ns = total.round() as i64;
     Some(if negative { -ns } else { ns })
+}
+
+/// A string literal `'…'` read (IEC 61131-3's single-byte strings: `$$`,
+/// `$'`, `$R`, `$N` and `$L` (LF), `$T`, `$P` and `$hh`): its bytes as
+/// characters U+0000–U+00FF. The soft PLC takes one only as an LDmicro
+/// formatted string's text.
+pub fn parse_text(text: &str) -> Result<String, LiteralError> {
+    let bad = || LiteralError::BadText(text.to_string());
+    let inner = text
+        .strip_prefix('\'')
+        .and_then(|t| t.strip_suffix('\''))
+        .ok_or_else(bad)?;
+    let mut out = String::new();
+    let mut chars = inner.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '$' => {
+                let e = chars.next().ok_or_else(bad)?;
+                out.push(match e.to_ascii_uppercase() {
+                    '$' => '$',
+                    '\'' => '\'',
+                    'R' => '\r',
+                    'N' | 'L' => '\n',
+                    'T' => '\t',
+                    'P' => '\u{c}',
+                    h => {
+                        let l = chars.next().ok_or_else(bad)?;
+                        let byte = h
+                            .to_digit(16)
+                            .zip(l.to_digit(16))
+                            .map(|(h, l)| h * 16 + l)
+                            .ok_or_else(bad)?;
+                        char::from_u32(byte).ok_or_else(bad)?
+                    }
+                });
+            }
+            '\'' => return Err(bad()),
+            c => out.push(c),
+        }
+    }
+    Ok(out)
+}
+
+/// `text` as a string literal [`parse_text`] reads back: quotes and `$`
+/// escaped, line ends as `$R` / `$N`, other control bytes (and a `*`
+/// after `(`, which would open a comment) as `$hh`.
+pub fn text_literal(text: &str) -> String {
+    let mut out = String::from("'");
+    let mut last = ' ';
+    for c in text.chars() {
+        match c {
+            '$' => out.push_str("$$"),
+            '\'' => out.push_str("$'"),
+            '\r' => out.push_str("$R"),
+            '\n' => out.push_str("$N"),
+            '\t' => out.push_str("$T"),
+            '*' if last == '(' => out.push_str("$2A"),
+            c if (c as u32) < 0x20 || ('\u{7f}'..='\u{ff}').contains(&c) => {
+                out.push_str(&format!("${:02X}", c as u32));
+            }
+            c => out.push(c),
+        }
+        last = c;
+    }
+    out.push('\'');
+    out
+}
+
+#[cfg(test)]
+mod text_tests {
+    use super::{parse_text, text_literal};
+
+    #[test]
+    fn a_text_reads_back_as_written() {
+        for text in [
+            "Hello, world: \\-5\r\n",
+            "it's $5 (*not*)",
+            "\u{7}\u{ff}\t",
+            "",
+        ] {
+            let lit = text_literal(text);
+            assert_eq!(parse_text(&lit).as_deref(), Ok(text), "{lit}");
+            assert!(!lit.contains("(*"), "{lit}");
+        }
+        assert_eq!(text_literal("a'b\r"), "'a$'b$R'");
+        assert_eq!(parse_text("'$l$P$0d$$'").as_deref(), Ok("\n\u{c}\r$"));
+        for bad in ["'a", "a'", "'$q'", "'$4'", "'a'b'"] {
+            assert!(parse_text(bad).is_err(), "{bad}");
+        }
+    }
 }

@@ -63,6 +63,10 @@ impl Machine {
         for (address, value) in self.program.input_values() {
             program.set_input(address, value);
         }
+        // The terminal keeps what was sent before the download.
+        let mut uart = std::mem::take(&mut self.program.uart);
+        uart.power_cycle();
+        program.uart = uart;
         self.program = program;
         self.start_over();
     }
@@ -90,6 +94,16 @@ impl Machine {
     pub fn set_scan_period(&mut self, period: SimTime) -> Result<(), SettingError> {
         let now = self.clock.now();
         self.clock.set_period(period, now, MAX_SCAN, "scan period")
+    }
+
+    /// The serial port (LDmicro's UART blocks).
+    pub fn uart(&self) -> &super::uart::Uart {
+        &self.program.uart
+    }
+
+    /// The serial port, to type at it.
+    pub fn uart_mut(&mut self) -> &mut super::uart::Uart {
+        &mut self.program.uart
     }
 
     /// The program's values, to drive inputs and write variables.

@@ -12,6 +12,7 @@ mod comments;
 pub mod data;
 pub mod il;
 pub mod ld_blocks;
+pub mod ld_format;
 pub mod listing;
 pub mod literal;
 pub mod machine;
@@ -20,6 +21,7 @@ pub mod plc;
 pub mod pou;
 pub mod program;
 pub mod scan;
+pub mod uart;
 pub mod vars;
 
 pub use address::{Address, AddressError, Area, Size};

@@ -13,6 +13,9 @@ pub struct Instance {
     count: DataType,
     /// Its inputs' values, in the order of [`inputs`].
     pub inputs: Vec<Data>,
+    /// Its text input's value, fixed at load (an LDmicro formatted
+    /// string's, [`super::ld_blocks::text_input`]).
+    pub format: Option<std::sync::Arc<super::ld_format::Format>>,
 }
 
 /// The state of each kind of block.
@@ -112,6 +115,7 @@ impl Instance {
             state,
             count,
             inputs: inputs(block).iter().map(|(_, t)| t.zero()).collect(),
+            format: None,
         }
     }
 
@@ -126,8 +130,9 @@ impl Instance {
         }
     }
 
-    /// Runs the block with its inputs at time `now` (ns).
-    pub fn call(&mut self, now: i64) {
+    /// Runs the block with its inputs at time `now` (ns); LDmicro's
+    /// serial blocks use `uart`.
+    pub fn call(&mut self, now: i64, uart: &mut super::uart::Uart) {
         let (b0, b1, b2, b3) = (
             self.bool_in(0),
             self.bool_in(1),
@@ -146,7 +151,13 @@ impl Instance {
             State::FTrig(t) => t.call(b0),
             State::Sr(s) => s.call(b0, b1),
             State::Rs(s) => s.call(b0, b1),
-            State::Ld(b) => b.call(&self.inputs),
+            State::Ld(b) => b.call(
+                &self.inputs,
+                super::ld_blocks::Io {
+                    uart,
+                    format: self.format.as_deref(),
+                },
+            ),
         }
     }
 

@@ -366,6 +366,30 @@ impl Plc for SoftPlc {
         SETTINGS
     }
 
+    /// The serial port's terminal: nothing is shown on opening it.
+    fn serial_open(&mut self) -> Result<String, PlcError> {
+        Ok(String::new())
+    }
+
+    /// Types `line`'s characters at the serial port (an empty line: the
+    /// Enter key, a CR); the program receives them byte by byte as it
+    /// runs, and what it sends comes through [`Plc::serial_sent`].
+    fn serial(&mut self, line: &str) -> Result<String, PlcError> {
+        self.machine
+            .uart_mut()
+            .type_line(line)
+            .map_err(PlcError::own)?;
+        Ok(String::new())
+    }
+
+    /// Bytes as characters U+0000–U+00FF (Latin-1), as a terminal of
+    /// LDmicro's time shows them.
+    fn serial_sent(&self, seen: u64, out: &mut String) -> u64 {
+        let uart = self.machine.uart();
+        out.extend(uart.sent_after(seen).map(char::from));
+        uart.sent_total()
+    }
+
     /// Whole scans of every instruction (a program's jumps are not
     /// counted: the figure assumes each scan runs every line once).
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {

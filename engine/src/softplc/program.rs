@@ -149,6 +149,8 @@ pub struct Program {
     pub(super) user_types: Vec<user::UserType>,
     pub(super) instances: Vec<user::UserInstance>,
     pub(super) entries: Vec<usize>,
+    /// The serial port LDmicro's UART blocks use.
+    pub(super) uart: super::uart::Uart,
 }
 
 /// What a declared name is.
@@ -190,6 +192,7 @@ impl Program {
             user_types: Vec::new(),
             instances: Vec::new(),
             entries: Vec::new(),
+            uart: super::uart::Uart::default(),
         };
         for b in &sections.blocks {
             let (vars, lines) = read(&b.text, &types)?;
@@ -310,6 +313,14 @@ impl Program {
         (&self.vars, &self.lines)
     }
 
+    /// Whether it uses the serial port (LDmicro's UART blocks and
+    /// formatted strings): the page shows a serial monitor then.
+    pub fn uses_serial(&self) -> bool {
+        self.block_names
+            .iter()
+            .any(|(_, kind)| kind.starts_with("LD_UART") || kind == "LD_FMTSTR")
+    }
+
     /// How many steps (IL instructions) it has.
     pub fn len(&self) -> usize {
         self.steps.len()
@@ -324,6 +335,10 @@ impl Program {
     fn slot(&mut self, operand: &Operand) -> Result<Src, LoadError> {
         match operand {
             Operand::Literal(d) => Ok(Src::Const(*d)),
+            Operand::Text(_) => Err(LoadError::Type(
+                "a string literal is only an LDmicro formatted string's text (LD_FMTSTR's FMT)"
+                    .into(),
+            )),
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
                 _ => Err(LoadError::Undeclared(n.clone())),

@@ -77,6 +77,7 @@ impl Program {
         cursor.frames.clear();
         cursor.ran = 0;
         self.overran = false;
+        self.uart.begin_scan();
     }
 
     /// Runs the step at the cursor (told to `tracer`: the bit it read and
@@ -90,6 +91,7 @@ impl Program {
             blocks,
             overran,
             entries,
+            uart,
             ..
         } = self;
         let Some(step) = steps.get(cursor.pc) else {
@@ -158,7 +160,7 @@ impl Program {
                 inputs,
                 outputs,
                 ..
-            } => call_block(values, blocks, *block, inputs, outputs, now),
+            } => call_block(values, (blocks, uart), *block, inputs, outputs, now),
         }
         tracer.step(number, read_bit, cr.is_on());
         cursor.pc < steps.len()
@@ -289,8 +291,11 @@ impl Program {
             }
         }
         for (b, (_, kind)) in self.blocks.iter_mut().zip(&self.block_names) {
+            let format = b.format.take();
             *b = Instance::new(kind);
+            b.format = format;
         }
+        self.uart.power_cycle();
     }
 }
 
@@ -361,7 +366,7 @@ fn call_function(values: &[Data], f: Function, cr: Data, args: &[Src]) -> Data {
 /// Calls block instance `block` with `inputs` and copies its `outputs`.
 fn call_block(
     values: &mut [Data],
-    blocks: &mut [Instance],
+    (blocks, uart): (&mut [Instance], &mut super::uart::Uart),
     block: usize,
     inputs: &[(usize, Src)],
     outputs: &[(usize, usize)],
@@ -375,7 +380,7 @@ fn call_block(
             *slot = read(values, src);
         }
     }
-    instance.call(now);
+    instance.call(now, uart);
     for &(i, slot) in outputs {
         values[slot] = instance.output(i);
     }

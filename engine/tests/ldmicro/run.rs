@@ -47,27 +47,19 @@ fn get(plc: &dyn Plc, name: &str) -> i64 {
     plc.read(plc.device(name).expect(name)).as_i64()
 }
 
-/// The files that do not run yet, and what each is told (at a line).
-const NOT_YET: [(&str, &str); 15] = [
+/// The files that do not run, and what each is told (at a line): the
+/// five that drive hardware Hashigo does not simulate.
+const NOT_RUN: [(&str, &str); 5] = [
     ("Tests__test-i2c-1.ld", "I2C_WR drives hardware"),
     ("Tests__test-i2c-2.ld", "I2C_RD drives hardware"),
     ("Tests__test-i2c-lcd16x2.ld", "I2C_WR drives hardware"),
     ("Tests__test-spi.ld", "SPI_WR drives hardware"),
-    ("Tests__test-uart.ld", "FORMATTED_STRING does not run"),
-    ("reg__tests__avr-hw.ld", "FORMATTED_STRING does not run"),
-    ("reg__tests__pic16-hw.ld", "FORMATTED_STRING does not run"),
-    ("sample__asm_demo.ld", "UART_RECV does not run"),
-    ("sample__c_demo.ld", "UART_RECV does not run"),
-    ("sample__frmt_escape.ld", "FORMATTED_STRING does not run"),
-    ("sample__hello.ld", "FORMATTED_STRING does not run"),
-    ("sample__pic-adc.ld", "UART_SEND does not run"),
-    ("sample__serial.ld", "UART_SEND does not run"),
-    ("sample__swatch1.ld", "FORMATTED_STRING does not run"),
+    // It drives a BUS too; its 7SEGMENTS comes first.
     ("sample__swatch2.ld", "7SEGMENTS does not run"),
 ];
 
 #[test]
-fn seventeen_real_files_run_and_the_others_name_their_element_at_its_line() {
+fn all_27_real_files_without_i2c_spi_or_bus_run_and_the_others_name_their_element() {
     let Some(names) = crate::common::fixture_names(REAL, ".ld") else {
         return;
     };
@@ -85,7 +77,7 @@ fn seventeen_real_files_run_and_the_others_name_their_element_at_its_line() {
                 ran.push(name.clone());
             }
             Err(errors) => {
-                let (_, why) = NOT_YET
+                let (_, why) = NOT_RUN
                     .iter()
                     .find(|(n, _)| n == name)
                     .unwrap_or_else(|| panic!("{name}: {errors:?}"));
@@ -101,7 +93,7 @@ fn seventeen_real_files_run_and_the_others_name_their_element_at_its_line() {
             }
         }
     }
-    assert_eq!(ran.len(), 17, "{ran:?}");
+    assert_eq!(ran.len(), 27, "{ran:?}");
 }
 
 /// `device`'s on and off stretches (ms) over `ms`, sampled every scan.
@@ -532,4 +524,141 @@ fn a_piecewise_linear_table_interpolates_and_time2count_counts_cycles() {
     let out = engine::ldmicro::export(&ladder, file.cycle_us).expect("writes");
     let back = to_ladder(&parse(&out).expect("reads")).expect("draws");
     assert_eq!(back.rungs, ladder.rungs, "{out}");
+}
+
+/// Everything `plc` sends at its serial port up to `ms`, typing each of
+/// `typed` (a line and its CR) at its time (ms).
+fn serial_until(plc: &mut dyn Plc, typed: &[(u64, &str)], ms: u64) -> String {
+    let mut out = String::new();
+    for &(at, line) in typed {
+        plc.run_until(SimTime::from_millis(at));
+        plc.serial(line).expect("typed");
+    }
+    plc.run_until(SimTime::from_millis(ms));
+    plc.serial_sent(0, &mut out);
+    out
+}
+
+#[test]
+fn hello_prints_its_counter_once_a_second_right_aligned_in_five_places() {
+    // Rosc turns over every TON of 1 s (99 cycles in a 0.1 file, on for
+    // one more); each rise adds 1 to cnt and sends "Hello, world: \-5\r\n"
+    // one character every other cycle (the transmitter busy for two).
+    let Some(text) = real("sample__hello.ld") else {
+        return;
+    };
+    let mut plc = load(&text);
+    // Rosc's negated coil turns it on in the first cycle: the first line
+    // goes at once, the others a second apart.
+    let sent = serial_until(plc.as_mut(), &[], 2500);
+    assert_eq!(
+        sent,
+        "Hello, world:      1\r\nHello, world:      2\r\nHello, world:      3\r\n"
+    );
+    // The console's terminal gets only what is new.
+    let mut more = String::new();
+    let seen = plc.serial_sent(0, &mut more);
+    plc.run_until(SimTime::from_millis(3500));
+    more.clear();
+    plc.serial_sent(seen, &mut more);
+    assert_eq!(more, "Hello, world:      4\r\n");
+}
+
+#[test]
+fn the_uart_test_echoes_what_is_typed_and_greets_after_a_second() {
+    // RUNG 2: TON 1 s then FORMATTED_STRING "Hello !" (sent once: its
+    // power stays on); RUNGs 3-6: each byte received is sent back.
+    let Some(text) = real("Tests__test-uart.ld") else {
+        return;
+    };
+    let mut plc = load(&text);
+    // Typed one key at a time (Enter alone is a CR): each comes back.
+    let sent = serial_until(plc.as_mut(), &[(100, "a"), (300, ""), (400, "b")], 1500);
+    assert_eq!(sent, "a\rbHello !");
+    // A line typed at once arrives a byte a cycle while the echo sends
+    // one every other cycle: what arrives while it is busy is dropped,
+    // as on the chip.
+    let sent = serial_until(plc.as_mut(), &[(1600, "xyz")], 1700);
+    assert_eq!(sent, "a\rbHello !xz");
+}
+
+#[test]
+fn serial_blinks_its_led_for_a_second_after_a_key_then_shows_an_o() {
+    // sample__serial.ld sends A, b, c, CR, LF at each fall of Rosc (a
+    // 250 ms TOF/TON pair); a key received sets Rjustgot for a second
+    // (TON 1 s), during which Yled follows Rfast (100 ms); then Yled is
+    // on while the last key was an "o".
+    let Some(text) = real("sample__serial.ld") else {
+        return;
+    };
+    let mut plc = load(&text);
+    assert_eq!(stretches(plc.as_mut(), "Yled", 10, 100), [(0, 100)]);
+    plc.serial("o").expect("typed");
+    let blinking = stretches(plc.as_mut(), "Yled", 10, 1000);
+    assert!(blinking.len() >= 6, "Rfast's blinking: {blinking:?}");
+    plc.run_until(SimTime::from_millis(1200));
+    assert_eq!(stretches(plc.as_mut(), "Yled", 10, 2000).len(), 1);
+    assert_eq!(get(plc.as_ref(), "Yled"), 1, "the last key was an o");
+    // One letter at each fall of Rosc, every half second.
+    plc.run_until(SimTime::from_millis(7000));
+    let mut out = String::new();
+    plc.serial_sent(0, &mut out);
+    assert_eq!(out, "bc\r\nAbc\r\nAbc\r\n");
+}
+
+#[test]
+fn format_escapes_go_out_as_ldmicro_4_sends_them() {
+    let Some(text) = real("sample__frmt_escape.ld") else {
+        return;
+    };
+    let mut plc = load(&text);
+    let sent = serial_until(plc.as_mut(), &[], 5000);
+    assert!(
+        sent.starts_with(" FormFeed as ClearScreen.\u{c}"),
+        "{sent:?}"
+    );
+    assert!(
+        sent.contains("Hello, word.\u{7}\u{8}\u{8}ld!\r\nOk\tTAB\n\r"),
+        "{sent:?}"
+    );
+}
+
+#[test]
+fn hashigo_console_talks_to_an_ld_files_uart() {
+    // An echo that takes a key only while the transmitter is free, so
+    // none is dropped; a line's characters are keys, an empty line the
+    // Enter key (a CR).
+    let tmp = Temp::new("ldmicro-console");
+    let ld = tmp.file(
+        "echo.ld",
+        &program(
+            "RUNG 1\n  UART_SEND_READY\n  UART_RECV ch\n  COIL Rgot 0 0 0\nEND\n\
+             RUNG 2\n  CONTACTS Rgot 0\n  UART_SEND ch\nEND\n",
+        ),
+    );
+    let out = hashigo(
+        &[
+            "console",
+            "--machine",
+            "soft-plc",
+            "--program",
+            &ld,
+            "--step",
+            "100ms",
+        ],
+        "abc\n\nxy\n",
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "abc\rxy");
+    // A key that is no byte is refused, saying why.
+    let out = hashigo(
+        &["console", "--machine", "soft-plc", "--program", &ld],
+        "\u{3042}\n",
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("is not a byte"),
+        "{}",
+        text(&out.stderr)
+    );
 }

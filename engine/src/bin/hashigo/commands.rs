@@ -199,13 +199,19 @@ pub fn console(rest: &[String]) -> Result<(), Problems> {
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let _ = write!(out, "{greeting}");
+    // What the program sends on its own while running (the soft PLC's
+    // UART), printed after each step.
+    let (mut seen, mut sent) = (0, String::new());
     for line in std::io::stdin().lock().lines() {
         let line = line.map_err(|e| one(format!("<stdin>: cannot read: {e}")))?;
         for typed in typed_lines(&line) {
             let reply = plc.serial(typed).map_err(|e| one(e.to_string()))?;
             let _ = write!(out, "{reply}");
-            let _ = out.flush();
             plc.run_until(advance(plc.now(), step)?);
+            sent.clear();
+            seen = plc.serial_sent(seen, &mut sent);
+            let _ = write!(out, "{sent}");
+            let _ = out.flush();
         }
     }
     Ok(())

@@ -26,6 +26,9 @@ pub(super) struct Words {
     instances: HashMap<String, Instance>,
     /// Block instance kinds declared.
     kinds: HashMap<String, String>,
+    /// The serial port of LDmicro's UART blocks (nothing is typed at it
+    /// here: the evaluator checks the ladder's logic).
+    uart: crate::softplc::uart::Uart,
 }
 
 /// Where a box's BOOLs are: the evaluator's bits by name.
@@ -213,7 +216,7 @@ impl Words {
                 *slot = v;
             }
         }
-        instance.call(now);
+        instance.call(now, &mut self.uart);
         let outs = pins::outputs(kind);
         let values: Vec<(String, Data)> = b
             .outputs

@@ -5,6 +5,8 @@ use super::check::find_pin;
 use super::{LoadError, Named, Program, Src, Step};
 use crate::softplc::data::DataType;
 use crate::softplc::il::{Line, Operand};
+use crate::softplc::ld_blocks::text_input;
+use crate::softplc::ld_format::Format;
 use crate::softplc::pins::{inputs, outputs};
 
 impl Program {
@@ -28,6 +30,10 @@ impl Program {
         let kind = self.block_names[block].1.clone();
         let mut ins = Vec::new();
         for (pin, value) in &line.inputs {
+            if text_input(&kind).is_some_and(|t| t.eq_ignore_ascii_case(pin)) {
+                self.fix_text(block, &kind, pin, value)?;
+                continue;
+            }
             let (i, want) = find_pin(&inputs(&kind), pin)
                 .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
             ins.push((i, self.given(&kind, pin, value, want)?));
@@ -44,6 +50,33 @@ impl Program {
             inputs: ins,
             outputs: outs,
         })
+    }
+
+    /// Instance `block`'s text input `pin := 'text'` (an LDmicro
+    /// formatted string's), fixed at load: every call of the instance
+    /// gives the same text, or none.
+    fn fix_text(
+        &mut self,
+        block: usize,
+        kind: &str,
+        pin: &str,
+        value: &Operand,
+    ) -> Result<(), LoadError> {
+        let Operand::Text(text) = value else {
+            return Err(LoadError::Type(format!("{kind}'s {pin} is a text: '…'")));
+        };
+        let format = Format::parse(text).map_err(|e| LoadError::Call(format!("{pin}: {e}")))?;
+        let instance = &mut self.blocks[block];
+        match &instance.format {
+            Some(f) if f.text() != text => Err(LoadError::Call(format!(
+                "{} already sends another text: one {pin} for each instance",
+                self.block_names[block].0
+            ))),
+            _ => {
+                instance.format = Some(std::sync::Arc::new(format));
+                Ok(())
+            }
+        }
     }
 
     /// `CAL instance(input := value, output => variable)` of instance

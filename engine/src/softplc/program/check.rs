@@ -48,7 +48,7 @@ pub(super) fn describe(o: &Operand) -> String {
     match o {
         Operand::Name(n) => n.clone(),
         Operand::Address(a) => a.to_string(),
-        Operand::Literal(_) => "a literal".into(),
+        Operand::Literal(_) | Operand::Text(_) => "a literal".into(),
     }
 }
 

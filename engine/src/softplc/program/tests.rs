@@ -291,3 +291,52 @@ fn instances_that_would_multiply_past_the_limits_are_refused() {
     let said = errors(&text);
     assert!(said[0].1.contains("more than 10000 instances"), "{said:?}");
 }
+
+#[test]
+fn a_formatted_string_takes_its_text_as_a_literal_and_sends_it() {
+    // Commas and `$'` inside the literal do not split the call.
+    let mut p = load(
+        "VAR\n  f : LD_FMTSTR;\n  n : DINT := 7;\nEND_VAR\n\
+         CAL f(IN := TRUE, V := n, FMT := 'it$'s, \\2$R$N')",
+    );
+    for k in 0..20 {
+        p.scan(k * 10 * MS);
+    }
+    let sent: String = p.uart.sent_after(0).map(char::from).collect();
+    assert_eq!(sent, "it's,  7\r\n");
+    // A power cycle keeps the text.
+    p.power_cycle();
+    for k in 0..20 {
+        p.scan(k * 10 * MS);
+    }
+    assert_eq!(p.uart.sent_total(), 20);
+}
+
+#[test]
+fn a_text_goes_only_where_a_formatted_string_takes_it() {
+    let said = |text: &str| crate::softplc::said(Program::load(text));
+    let head = "VAR\n  f : LD_FMTSTR;\n  n : DINT;\nEND_VAR\n";
+    assert_eq!(
+        said(&format!("{head}CAL f(IN := TRUE, FMT := 5)")),
+        [(5, "LD_FMTSTR's FMT is a text: '…'".to_string())]
+    );
+    assert_eq!(
+        said(&format!("{head}CAL f(FMT := 'a')\nCAL f(FMT := 'b')")),
+        [(
+            6,
+            "f already sends another text: one FMT for each instance".to_string()
+        )]
+    );
+    assert_eq!(
+        said(&format!("{head}LD 'a'\nST n"))[0],
+        (
+            5,
+            "a string literal is only an LDmicro formatted string's text (LD_FMTSTR's FMT)"
+                .to_string()
+        )
+    );
+    let bad = said(&format!("{head}CAL f(FMT := '\\9')"));
+    assert!(bad[0].1.starts_with("FMT: `\\9` is no escape"), "{bad:?}");
+    let open = said(&format!("{head}CAL f(FMT := 'a)"));
+    assert_eq!(open[0].0, 5, "{open:?}");
+}

@@ -17,6 +17,7 @@ use crate::ladder::grid::{LadderError, Pos};
 use crate::ladder::plcopen::soft::functions::{Function, Operand};
 use crate::ladder::variables::Variable;
 use crate::softplc::data::DataType;
+use crate::softplc::ld_blocks::text_input;
 use crate::softplc::pins;
 use crate::softplc::{literal_type, Address};
 
@@ -192,6 +193,10 @@ impl Compiler {
                 let o = self.operand(text)?.at(Some(*ty));
                 params.push(format!("{pin} := {}", o.text));
             }
+        }
+        // An LDmicro formatted string's text, as written ('…').
+        if let Some(text) = text_input(&kind).and_then(|pin| Some((pin, b.input(pin)?))) {
+            params.push(format!("{} := {}", text.0, text.1));
         }
         for (pin, variable) in &b.outputs {
             params.push(format!("{pin} => {}", variable.trim()));
