@@ -452,7 +452,9 @@ fn a_shift_register_shifts_at_each_rise_and_a_table_looks_up() {
 fn a_share_link_and_a_project_keep_an_ldmicro_ladder() {
     use engine::ladder::{share, Project};
     let text = program(
-        "RUNG 1\n  CONTACTS Xa 0\n  TON Tw 30000\n  CTC Cc 4 0 \\\n  COIL Yq 0 0 1 0\nEND\nRUNG 2\n  OSR\n  MOVE n 0x10\nEND\n",
+        "RUNG 1\n  CONTACTS Xa 0\n  TON Tw 30000\n  CTC Cc 4 0 \\\n  COIL Yq 0 0 1 0\nEND\nRUNG 2\n  OSR\n  MOVE n 0x10\nEND\n\
+         RUNG 3\n  FORMATTED_STRING n 17 105 116 39 115 44 32 40 42 36 41 32 92 51 92 114 92 110\n  \
+         UART_RECV ch\n  UART_SEND ch\nEND\n",
     );
     let ladder = to_ladder(&parse(&text).expect("reads")).expect("draws");
     let project = Project::new(MachineId::SoftPlc, ladder.clone());
@@ -661,4 +663,25 @@ fn hashigo_console_talks_to_an_ld_files_uart() {
         "{}",
         text(&out.stderr)
     );
+}
+
+#[test]
+fn the_serial_boxes_read_back_from_their_il_with_their_text() {
+    let text = program(
+        "RUNG 1\n  CONTACTS Xa 0\n  FORMATTED_STRING n 9 97 44 32 40 36 41 92 50 39\n  \
+         COIL Rbusy 0 0 0\nEND\nRUNG 2\n  UART_RECV ch\n  UART_SEND ch\n  COIL Yq 0 0 0\nEND\n",
+    );
+    let ladder = to_ladder(&parse(&text).expect("reads")).expect("draws");
+    let il = compile(&ladder, MachineId::SoftPlc, Options::default()).expect("compiles");
+    assert!(il.contains("FMT := 'a, ($$)\\2$''"), "{il}");
+    let back = engine::ladder::decompile::decompile_text(MachineId::SoftPlc, &il, 10)
+        .unwrap_or_else(|e| panic!("{e:?}\n{il}"));
+    let boxes = |l: &engine::ladder::Ladder| -> Vec<String> {
+        l.rungs
+            .iter()
+            .flat_map(|r| r.elements().map(|(_, e)| e.to_string()).collect::<Vec<_>>())
+            .filter(|e| e.contains("LD_"))
+            .collect()
+    };
+    assert_eq!(boxes(&back), boxes(&ladder), "{il}");
 }
