@@ -145,6 +145,11 @@ pub(super) fn part(
         | Ld::UartRecvAvail
         | Ld::UartSendReady
         | Ld::FormattedString { .. } => Part::Condition(Element::Block(serial(e, instance)?)),
+        // A count of the chip's own delay loop, for DELAY, which stops the
+        // chip: nothing to count on the soft PLC.
+        Ld::TimeConvert { to_delay: true, .. } => {
+            return Err(LdError::Hardware("TIME2DELAY".into()))
+        }
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
@@ -392,14 +397,44 @@ fn timer_or_counter(
 /// LDmicro's word operations the IEC functions lack (`BIN2BCD`,
 /// `BCD2BIN`, `SWAP`, `OPPOSITE`, `SR0`, `SET_BIT`, `CLEAR_BIT`) as its
 /// `LD_` block on the destination, in the destination's width from the
-/// `VAR LIST` (`bits`); `IF_BIT_SET`/`IF_BIT_CLEAR` as a block passing
-/// power while the bit is as asked. `None` for any other element.
+/// `VAR LIST` (`bits`, in bytes); `IF_BIT_SET`/`IF_BIT_CLEAR` as a block
+/// passing power while the bit is as asked; arithmetic and `MOVE` into a
+/// destination narrower than the soft PLC's DINT as `LD_ADD` … `LD_MOVE`,
+/// wrapping in its width. `None` for any other element.
 pub(super) fn word_op(
     e: &Ld,
     bits: &dyn Fn(&str) -> u16,
     instance: &mut dyn FnMut(&str) -> String,
 ) -> Option<Result<Part, LdError>> {
+    let narrow = |dest: &str| bits(dest) < 4;
     let (kind, a, b, dest) = match e {
+        Ld::Math { op, dest, a, b } if *op != MathOp::Sr0 && narrow(dest) => {
+            let kind = match op {
+                MathOp::Add => "LD_ADD",
+                MathOp::Sub => "LD_SUB",
+                MathOp::Mul => "LD_MUL",
+                MathOp::Div => "LD_DIV",
+                MathOp::Mod => "LD_MOD",
+                MathOp::And => "LD_AND",
+                MathOp::Or => "LD_OR",
+                MathOp::Xor => "LD_XOR",
+                MathOp::Shl => "LD_SHL",
+                MathOp::Shr => "LD_SHR",
+                MathOp::Rol => "LD_ROL",
+                _ => "LD_ROR",
+            };
+            (kind, a.as_str(), b.as_str(), Some(dest.as_str()))
+        }
+        Ld::Unary { op, dest, src }
+            if matches!(op, UnaryOp::Move | UnaryOp::Not | UnaryOp::Neg) && narrow(dest) =>
+        {
+            let kind = match op {
+                UnaryOp::Move => "LD_MOVE",
+                UnaryOp::Not => "LD_NOT",
+                _ => "LD_NEG",
+            };
+            (kind, src.as_str(), "0", Some(dest.as_str()))
+        }
         Ld::Unary { op, dest, src } => {
             let kind = match op {
                 UnaryOp::Bin2Bcd => "LD_BIN2BCD",

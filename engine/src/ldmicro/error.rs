@@ -114,7 +114,7 @@ impl fmt::Display for LdError {
             }
             LdError::Hardware(k) => write!(
                 f,
-                "{k} drives hardware Hashigo does not simulate (I²C, SPI, buses, steppers, pulse trains, sleep, jumps): the file is not opened"
+                "{k} drives hardware Hashigo does not simulate (I²C, SPI, buses, steppers, pulse trains, sleep, delay loops, jumps): the file is not opened"
             ),
             LdError::NotYet(k) => write!(
                 f,

@@ -99,13 +99,23 @@ fn side_by_side(outs: Vec<String>, lines: &mut Vec<String>) {
     lines.push("    END".into());
 }
 
-/// The file's first lines: the version, the cycle, the `IO LIST` of the
-/// ladder's inputs and outputs with their pins, up to `PROGRAM`.
+/// The file's first lines: the version, the cycle, the `VAR LIST` of
+/// the variables not of LDmicro's default two bytes, the `IO LIST` of
+/// the ladder's inputs and outputs with their pins, up to `PROGRAM`.
 fn header(ladder: &Ladder, w: &Writer) -> String {
     let mut out = format!(
-        "LDmicro0.2\nCYCLE={} us at Timer1, YPlcCycleDuty:0, ConfigurationWord(s):0x0\n\nIO LIST\n",
+        "LDmicro0.2\nCYCLE={} us at Timer1, YPlcCycleDuty:0, ConfigurationWord(s):0x0\n\n",
         w.cycle_us
     );
+    let sizes = sizes(ladder);
+    if !sizes.is_empty() {
+        out.push_str("VAR LIST\n");
+        for (name, bytes) in &sizes {
+            let _ = writeln!(out, "    {bytes} bytes {}", w.name(name));
+        }
+        out.push_str("END\n\n");
+    }
+    out.push_str("IO LIST\n");
     let io = ladder
         .variables
         .iter()
@@ -116,6 +126,41 @@ fn header(ladder: &Ladder, w: &Writer) -> String {
     }
     out.push_str("END\n\nPROGRAM\n");
     out
+}
+
+/// The variables' sizes in bytes where they are not LDmicro's default
+/// two, as the ladder's boxes give them: an `LD_` word operation's width
+/// `W` for its destination, 4 for what a soft PLC function box (a DINT)
+/// writes; the first box naming a variable decides, in rung order.
+fn sizes(ladder: &Ladder) -> Vec<(String, u32)> {
+    let mut sizes: Vec<(String, u32)> = Vec::new();
+    let boxes = ladder.rungs.iter().flat_map(|r| {
+        r.elements()
+            .filter_map(|(_, e)| match e {
+                Element::Block(b) | Element::OutputBlock(b) => Some(b.clone()),
+                _ => None,
+            })
+            .collect::<Vec<_>>()
+    });
+    for b in boxes {
+        let found = match (b.input("W"), b.input("D")) {
+            (Some(w), Some(d)) => w
+                .parse::<u32>()
+                .ok()
+                .map(|w| (d.to_string(), (w / 8).max(1))),
+            _ if b.instance.is_empty() && !b.outputs.is_empty() => {
+                b.outputs.first().map(|(_, v)| (v.trim().to_string(), 4))
+            }
+            _ => None,
+        };
+        if let Some((name, bytes)) = found {
+            if !name.starts_with('%') && !sizes.iter().any(|(n, _)| *n == name) {
+                sizes.push((name, bytes));
+            }
+        }
+    }
+    sizes.retain(|(_, bytes)| *bytes != 2);
+    sizes
 }
 
 /// A rung of a ladder with LDmicro's master relay, as LDmicro has it:
@@ -275,7 +320,11 @@ impl Writer {
                 "BIN2BCD" | "BCD2BIN" | "SWAP" | "OPPOSITE" => {
                     format!("{timer} {} {}", input("D"), input("A"))
                 }
-                "SR0" => format!("SR0 {} {} {}", input("D"), input("A"), input("B")),
+                "SR0" | "ADD" | "SUB" | "MUL" | "DIV" | "MOD" | "AND" | "OR" | "XOR" | "SHL"
+                | "SHR" | "ROL" | "ROR" => {
+                    format!("{timer} {} {} {}", input("D"), input("A"), input("B"))
+                }
+                "MOVE" | "NOT" | "NEG" => format!("{timer} {} {}", input("D"), input("A")),
                 "SETBIT" => format!("SET_BIT {} {}", input("D"), input("B")),
                 "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
                 "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),

@@ -17,7 +17,7 @@ use super::ld_format::{Format, Sender};
 use super::uart::Uart;
 
 /// The LDmicro blocks by name.
-pub const NAMES: [&str; 28] = [
+pub const NAMES: [&str; 43] = [
     "LD_TON",
     "LD_TOF",
     "LD_RTO",
@@ -41,6 +41,21 @@ pub const NAMES: [&str; 28] = [
     "LD_CLRBIT",
     "LD_IFBIT",
     "LD_IFNBIT",
+    "LD_ADD",
+    "LD_SUB",
+    "LD_MUL",
+    "LD_DIV",
+    "LD_MOD",
+    "LD_AND",
+    "LD_OR",
+    "LD_XOR",
+    "LD_SHL",
+    "LD_SHR",
+    "LD_ROL",
+    "LD_ROR",
+    "LD_MOVE",
+    "LD_NOT",
+    "LD_NEG",
     "LD_UART_SEND",
     "LD_UART_RECV",
     "LD_UART_AVAIL",
@@ -128,7 +143,9 @@ fn family(block: &str) -> Option<Family> {
         "LD_UART_SEND" | "LD_UART_RECV" | "LD_FMTSTR" => Some(Family::Serial),
         "LD_TOGGLE" => Some(Family::Toggle),
         "LD_BIN2BCD" | "LD_BCD2BIN" | "LD_SWAP" | "LD_OPPOSITE" | "LD_SR0" | "LD_SETBIT"
-        | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" => Some(Family::Op),
+        | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" | "LD_ADD" | "LD_SUB" | "LD_MUL" | "LD_DIV"
+        | "LD_MOD" | "LD_AND" | "LD_OR" | "LD_XOR" | "LD_SHL" | "LD_SHR" | "LD_ROL" | "LD_ROR"
+        | "LD_MOVE" | "LD_NOT" | "LD_NEG" => Some(Family::Op),
         _ => None,
     }
 }
@@ -503,12 +520,42 @@ impl LdBlock {
 }
 
 /// LDmicro's word operation `op` on `a` and `b` (`d` the destination as
-/// it is) in a `bits`-wide signed word, wrapped to it.
+/// it is) in a `bits`-wide signed word, wrapped to it: as LDmicro's
+/// simulator computes in 32 bits and keeps what the destination's size
+/// holds. A division or remainder by zero leaves `d` as it was.
 fn word_op(op: &str, a: i64, b: i64, d: i64, bits: i64) -> i64 {
     let bits = bits.clamp(1, 32) as u32;
     let mask: u64 = (1u64 << bits) - 1;
     let unsigned = |v: i64| (v as u64) & mask;
+    let shift = b.clamp(0, 63) as u32;
+    let rotate = |left: bool| {
+        let n = (b.rem_euclid(i64::from(bits))) as u32;
+        let v = unsigned(a);
+        if n == 0 {
+            v
+        } else if left {
+            (v << n) | (v >> (bits - n))
+        } else {
+            (v >> n) | (v << (bits - n))
+        }
+    };
     let r: u64 = match op {
+        "ADD" => a.wrapping_add(b) as u64,
+        "SUB" => a.wrapping_sub(b) as u64,
+        "MUL" => a.wrapping_mul(b) as u64,
+        "DIV" => a.checked_div(b).unwrap_or(d) as u64,
+        "MOD" => a.checked_rem(b).unwrap_or(d) as u64,
+        "AND" => (a & b) as u64,
+        "OR" => (a | b) as u64,
+        "XOR" => (a ^ b) as u64,
+        "SHL" => (a as u64) << shift,
+        // LDmicro's SHR keeps the sign (SR0 fills with zeros).
+        "SHR" => (a >> shift) as u64,
+        "ROL" => rotate(true),
+        "ROR" => rotate(false),
+        "MOVE" => a as u64,
+        "NOT" => !a as u64,
+        "NEG" => a.wrapping_neg() as u64,
         "BIN2BCD" => {
             let (mut v, mut out, mut shift) = (a.unsigned_abs(), 0u64, 0);
             while v > 0 && shift < 64 {

@@ -685,3 +685,60 @@ fn the_serial_boxes_read_back_from_their_il_with_their_text() {
     };
     assert_eq!(boxes(&back), boxes(&ladder), "{il}");
 }
+
+#[test]
+fn arithmetic_wraps_in_the_width_the_var_list_gives_and_16_bits_by_default() {
+    // b is one byte, w says nothing (two), d four bytes; each rung runs
+    // once, on Xa's rise.
+    let text =
+        "LDmicro0.2\nCYCLE=10000\n\nVAR LIST\n    1 bytes b\n    4 bytes d\n    1 bytes r\nEND\n\n\
+                IO LIST\n    Xa at 1\nEND\n\nPROGRAM\n\
+                RUNG 1\n  CONTACTS Xa 0\n  OSR\n  PARALLEL\n    ADD b b 1\n    ADD w w 1\n    \
+                ADD d d 1\n    ROL r r 1\n    SHR s s 1\n    DIV q q 0\n    NEG n n\n  END\nEND\n";
+    let mut plc = load(text);
+    for (name, v) in [
+        ("b", 127),
+        ("w", 32767),
+        ("d", 32767),
+        ("r", -128),
+        ("s", -8),
+        ("q", 9),
+        ("n", -32768),
+    ] {
+        set(plc.as_mut(), name, v);
+    }
+    set(plc.as_mut(), "Xa", 1);
+    plc.run_until(SimTime::from_millis(15));
+    let got: Vec<i64> = ["b", "w", "d", "r", "s", "q", "n"]
+        .iter()
+        .map(|n| get(plc.as_ref(), n))
+        .collect();
+    // 127+1 wraps to -128 in a byte, 32767+1 in two; four bytes hold
+    // 32768; 0x80 rotated left in a byte is 1; SHR keeps the sign; a
+    // division by zero leaves q; -(-32768) wraps to itself in two bytes.
+    assert_eq!(got, vec![-128, -32768, 32768, 1, -4, 9, -32768]);
+    // Written back, the VAR LIST keeps the widths: the same ladder again.
+    let ladder = to_ladder(&parse(text).expect("reads")).expect("draws");
+    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    assert!(
+        out.contains("VAR LIST\n    1 bytes b\n    4 bytes d\n    1 bytes r\nEND"),
+        "{out}"
+    );
+    let again = to_ladder(&parse(&out).expect("reads")).expect("draws");
+    assert_eq!(again.rungs, ladder.rungs);
+}
+
+#[test]
+fn time2delay_is_refused_as_the_chips_own_delay_loop() {
+    let text = program("RUNG 1\n  CONTACTS Xa 0\n  TIME2DELAY n 500\nEND\n");
+    let errors = to_ladder(&parse(&text).expect("reads")).expect_err("refused");
+    assert_eq!(errors[0].line, 14);
+    assert!(
+        errors[0]
+            .error
+            .to_string()
+            .starts_with("TIME2DELAY drives hardware"),
+        "{}",
+        errors[0].error
+    );
+}
