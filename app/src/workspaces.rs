@@ -93,10 +93,15 @@ impl Workspaces {
             machines::link(avr.sim, move || avr.refresh()),
             machines::text_program(avr.text, move || avr.load(), move || avr.save()),
         );
+        let mut soft_program =
+            machines::text_program(soft.text, move || soft.load(), move || soft.save());
+        soft_program.settings = Callback::new(move |()| soft.project_settings());
+        soft_program.apply_settings =
+            Callback::new(move |settings| soft.apply_project_settings(settings));
         wire(
             MachineId::SoftPlc,
             machines::link(soft.sim, move || soft.refresh()),
-            machines::text_program(soft.text, move || soft.load(), move || soft.save()),
+            soft_program,
         );
         Workspaces {
             minasec,

@@ -175,3 +175,36 @@ def test_an_ld_files_uart_talks_through_the_serial_monitor(driver, base_url, tmp
     line.send_keys("\u00e9\u3042\n")
     wait(driver, lambda: "not a byte" in monitor(), message=monitor())
     assert severe_console_messages(driver) == []
+
+
+def test_an_ld_files_cycle_becomes_the_soft_plcs_scan(driver, base_url, tmp_path):
+    # A 0.1 file at a 5 ms cycle: TON 50 ms is 9 cycles (LDmicro 2.x's
+    # adjust), so Yq comes on after 10 scans, 50 ms, at the file's pace.
+    open_fresh(driver, base_url)
+    path = tmp_path / "fast.ld"
+    path.write_text("LDmicro0.1\nCYCLE=5000\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  TON Tw 50000\n  COIL Yq 0 0 0\nEND\n")
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: el(driver, "soft-scan").get_attribute("value") == "5",
+         message="the scan period follows the file's CYCLE")
+    assert "scans every 5 ms" in driver.find_element(By.TAG_NAME, "body").text
+    # Written back at that cycle.
+    from test_ladder import CAPTURE, downloads
+    driver.execute_script(CAPTURE)
+    el(driver, "export-ld").click()
+    assert "CYCLE=5000 us" in downloads(driver, 1)["soft-plc-ladder.ld"]
+    # A period the machine refuses is said beside the field, which keeps
+    # what the machine runs at.
+    from selenium.webdriver.common.keys import Keys
+    field = el(driver, "soft-scan")
+    field.send_keys(Keys.CONTROL, "a")
+    field.send_keys("0\n")
+    said = lambda: field.find_element(By.XPATH, "..").find_element(By.CSS_SELECTOR, ".soft-refused").text
+    wait(driver, lambda: "scan" in said(), message="refused: " + said())
+    wait(driver, lambda: el(driver, "soft-scan").get_attribute("value") == "5")
+    # It stays over a reload.
+    driver.refresh()
+    from selenium.webdriver.support.ui import Select
+    wait(driver, lambda: el(driver, "mode-run"), message="the page again")
+    Select(el(driver, "machine")).select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-scan").get_attribute("value") == "5")
+    assert severe_console_messages(driver) == []

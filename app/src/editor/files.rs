@@ -84,13 +84,14 @@ fn export_plcopen(ctx: LadderCtx) {
     });
 }
 
-/// Downloads a soft PLC ladder of LDmicro's elements as an `.ld` file at
-/// the page's 10 ms scan (docs/ldmicro.md, "Writing it back").
+/// Downloads a soft PLC ladder of LDmicro's elements as an `.ld` file,
+/// its `CYCLE=` the soft PLC's scan period (docs/ldmicro.md, "Writing it
+/// back").
 fn export_ld(ctx: LadderCtx) {
     let texts = ctx.page.lang.get_untracked().texts();
     let request = Request::ExportLd {
         ladder: ctx.ladder(),
-        cycle_us: 10_000,
+        cycle_us: scan_us(&ctx.settings()),
     };
     crate::worker::ask_saying(ctx.panes.message, texts, request, move |reply| {
         ctx.panes.message.set(match reply {
@@ -102,6 +103,16 @@ fn export_ld(ctx: LadderCtx) {
             other => Some(format!("{other:?}")),
         });
     });
+}
+
+/// The soft PLC's scan period in µs from its project settings (10 ms
+/// when they name none).
+fn scan_us(settings: &[(String, String)]) -> u64 {
+    settings
+        .iter()
+        .find(|(name, _)| name == "scan")
+        .and_then(|(_, v)| engine::SimTime::parse(v).ok())
+        .map_or(10_000, |t| t.as_nanos() / 1000)
 }
 
 /// A file name for this machine's ladder.
@@ -145,8 +156,9 @@ fn export_png(ctx: LadderCtx) {
 }
 
 /// An LDmicro file opened (docs/ldmicro.md): read in the files worker,
-/// drawn on the soft PLC (the page switches to it), one undo away; a
-/// file whose cycle is not the page's 10 ms scan says so.
+/// drawn on the soft PLC (the page switches to it), one undo away; the
+/// soft PLC then scans at the file's cycle, which a notice says when it
+/// is not 10 ms.
 fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
     let texts = ctx.page.lang.get_untracked().texts();
     let request = Request::OpenLd {
@@ -163,9 +175,17 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
                     ladder: opened.ladder,
                 });
             }
-            if opened.cycle_us != 10_000 {
+            let scan = vec![("scan".to_string(), format!("{}us", opened.cycle_us))];
+            let refused = target.apply_settings(scan);
+            // Said in the soft PLC's editor, which the page now shows.
+            if !refused.is_empty() {
+                target.panes.message.set(Some(refused.join("\n")));
+            } else if opened.cycle_us != 10_000 {
                 let ms = format!("{}", opened.cycle_us as f64 / 1000.0);
-                message.set(Some(texts.ld_cycle.replace("{cycle}", &ms)));
+                target
+                    .panes
+                    .message
+                    .set(Some(texts.ld_cycle.replace("{cycle}", &ms)));
             }
         }
         Reply::OpenLd(Err(errors)) => message.set(Some(errors.join("\n"))),

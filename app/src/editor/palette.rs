@@ -178,6 +178,12 @@ const SPECS: &[Spec] = &[
     spec("ld-tof", "[LD_TOF]", ("LDmicro's off-delay timer, counting scans: LD_TOF Tw_ld 49 Tw", "LDmicro のオフディレイタイマ (スキャン数): LD_TOF Tw_ld 49 Tw"), Entry(Instruction, false, "LD_TOF "), Needs::WordBoxes),
     spec("ld-ctu", "[LD_CTU]", ("LDmicro's up counter: LD_CTU Cn_ld 10 0 Cn", "LDmicro の加算カウンタ: LD_CTU Cn_ld 10 0 Cn"), Entry(Instruction, false, "LD_CTU "), Needs::WordBoxes),
     spec("ld-ctc", "[LD_CTC]", ("LDmicro's circular counter: LD_CTC Cn_ld 9 0 Cn", "LDmicro の循環カウンタ: LD_CTC Cn_ld 9 0 Cn"), Entry(Instruction, false, "LD_CTC "), Needs::WordBoxes),
+    spec("ld-rto", "[LD_RTO]", ("LDmicro's retentive on-delay timer, counting scans: LD_RTO Tr_ld 49 Tr", "LDmicro の積算タイマ (スキャン数): LD_RTO Tr_ld 49 Tr"), Entry(Instruction, false, "LD_RTO "), Needs::WordBoxes),
+    spec("ld-tcy", "[LD_TCY]", ("LDmicro's cyclic timer, turning over each period: LD_TCY Tc_ld 49 Tc", "LDmicro のサイクリックタイマ: LD_TCY Tc_ld 49 Tc"), Entry(Instruction, false, "LD_TCY "), Needs::WordBoxes),
+    spec("ld-ctd", "[LD_CTD]", ("LDmicro's down counter: LD_CTD Cd_ld 0 10 Cd", "LDmicro の減算カウンタ: LD_CTD Cd_ld 0 10 Cd"), Entry(Instruction, false, "LD_CTD "), Needs::WordBoxes),
+    spec("ld-ctr", "[LD_CTR]", ("LDmicro's circular down counter: LD_CTR Cr_ld 0 9 Cr", "LDmicro の循環減算カウンタ: LD_CTR Cr_ld 0 9 Cr"), Entry(Instruction, false, "LD_CTR "), Needs::WordBoxes),
+    spec("ld-uart-send", "[UART SEND]", ("LDmicro's serial send of a byte: LD_UART_SEND send_ld ch", "LDmicro のシリアル送信 (1バイト): LD_UART_SEND send_ld ch"), Entry(Instruction, false, "LD_UART_SEND "), Needs::WordBoxes),
+    spec("ld-uart-recv", "[UART RECV]", ("LDmicro's serial receive of a byte: LD_UART_RECV recv_ld ch", "LDmicro のシリアル受信 (1バイト): LD_UART_RECV recv_ld ch"), Entry(Instruction, false, "LD_UART_RECV "), Needs::WordBoxes),
 ];
 
 /// The palette of `machine` in `lang`: every item, with what the machine

@@ -135,6 +135,8 @@ pub struct Texts {
     pub soft_board: &'static str,
     /// The soft PLC's serial monitor's input line (LDmicro's UART).
     pub soft_monitor_hint: &'static str,
+    /// The soft PLC's scan period field.
+    pub soft_scan: &'static str,
     pub soft_push: &'static str,
     pub variables: &'static str,
     pub var_name: &'static str,

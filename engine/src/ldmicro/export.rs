@@ -292,50 +292,8 @@ impl Writer {
                 .unwrap_or_default()
         };
         let none = || format!("{kind} has no LDmicro form");
-        if let Some(timer) = kind.strip_prefix("LD_") {
-            return Ok(match timer {
-                "TON" | "TOF" | "RTO" | "RTL" | "TCY" | "THI" | "TLO" => {
-                    let p = input("P");
-                    let delay = p
-                        .parse::<u64>()
-                        .map_or(p.clone(), |cycles| (cycles * self.cycle_us).to_string());
-                    format!("{timer} {} {delay} 0", input("T"))
-                }
-                "CTU" | "CTD" | "CTC" | "CTR" => {
-                    let edge = match input("EDGE").as_str() {
-                        "1" => '\\',
-                        "2" => '-',
-                        "3" => 'o',
-                        _ => '/',
-                    };
-                    format!(
-                        "{timer} {} {} {} {edge}",
-                        input("C"),
-                        input("MAX"),
-                        input("INIT")
-                    )
-                }
-                "OSL" | "OSC" => timer.to_string(),
-                "TOGGLE" => format!("COIL {} 0 0 0 1", input("V")),
-                "BIN2BCD" | "BCD2BIN" | "SWAP" | "OPPOSITE" => {
-                    format!("{timer} {} {}", input("D"), input("A"))
-                }
-                "SR0" | "ADD" | "SUB" | "MUL" | "DIV" | "MOD" | "AND" | "OR" | "XOR" | "SHL"
-                | "SHR" | "ROL" | "ROR" => {
-                    format!("{timer} {} {} {}", input("D"), input("A"), input("B"))
-                }
-                "MOVE" | "NOT" | "NEG" => format!("{timer} {} {}", input("D"), input("A")),
-                "SETBIT" => format!("SET_BIT {} {}", input("D"), input("B")),
-                "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
-                "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),
-                "IFNBIT" => format!("IF_BIT_CLEAR {} {}", input("A"), input("B")),
-                "UART_SEND" => format!("UART_SEND {} 1 0", input("V")),
-                "UART_RECV" => format!("UART_RECV {} 1 0", input("V")),
-                "UART_AVAIL" => "UART_RECV_AVAIL".into(),
-                "UART_READY" => "UART_SEND_READY".into(),
-                "FMTSTR" => formatted_string(b, &input("V")).ok_or_else(none)?,
-                _ => return Err(none()),
-            });
+        if let Some(name) = kind.strip_prefix("LD_") {
+            return self.ld_block(b, name).ok_or_else(none);
         }
         let two = |word: &str, a: &str, b2: &str| {
             format!("{word} {} {} {}", output("OUT"), input(a), input(b2))
@@ -365,6 +323,53 @@ impl Writer {
                 format!("{word} {} {}", input("IN1"), input("IN2"))
             }
             _ => return Err(none()),
+        })
+    }
+    /// The line of LDmicro's own block `LD_<name>`, if LDmicro has one.
+    fn ld_block(&self, b: &BlockCall, name: &str) -> Option<String> {
+        let input = |pin: &str| b.input(pin).map(|o| self.name(o)).unwrap_or_default();
+        Some(match name {
+            "TON" | "TOF" | "RTO" | "RTL" | "TCY" | "THI" | "TLO" => {
+                let p = input("P");
+                let delay = p
+                    .parse::<u64>()
+                    .map_or(p.clone(), |cycles| (cycles * self.cycle_us).to_string());
+                format!("{name} {} {delay} 0", input("T"))
+            }
+            "CTU" | "CTD" | "CTC" | "CTR" => {
+                let edge = match input("EDGE").as_str() {
+                    "1" => '\\',
+                    "2" => '-',
+                    "3" => 'o',
+                    _ => '/',
+                };
+                format!(
+                    "{name} {} {} {} {edge}",
+                    input("C"),
+                    input("MAX"),
+                    input("INIT")
+                )
+            }
+            "OSL" | "OSC" => name.to_string(),
+            "TOGGLE" => format!("COIL {} 0 0 0 1", input("V")),
+            "BIN2BCD" | "BCD2BIN" | "SWAP" | "OPPOSITE" => {
+                format!("{name} {} {}", input("D"), input("A"))
+            }
+            "SR0" | "ADD" | "SUB" | "MUL" | "DIV" | "MOD" | "AND" | "OR" | "XOR" | "SHL"
+            | "SHR" | "ROL" | "ROR" => {
+                format!("{name} {} {} {}", input("D"), input("A"), input("B"))
+            }
+            "MOVE" | "NOT" | "NEG" => format!("{name} {} {}", input("D"), input("A")),
+            "SETBIT" => format!("SET_BIT {} {}", input("D"), input("B")),
+            "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
+            "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),
+            "IFNBIT" => format!("IF_BIT_CLEAR {} {}", input("A"), input("B")),
+            "UART_SEND" => format!("UART_SEND {} 1 0", input("V")),
+            "UART_RECV" => format!("UART_RECV {} 1 0", input("V")),
+            "UART_AVAIL" => "UART_RECV_AVAIL".into(),
+            "UART_READY" => "UART_SEND_READY".into(),
+            "FMTSTR" => formatted_string(b, &input("V"))?,
+            _ => return None,
         })
     }
 }

@@ -522,7 +522,7 @@ fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
 }
 
 /// A call's parameters, split at the commas outside string literals.
-fn split_params(params: &str) -> Vec<&str> {
+pub(crate) fn split_params(params: &str) -> Vec<&str> {
     let mut out = Vec::new();
     let (mut start, mut quoted, mut escaped) = (0, false, false);
     for (i, c) in params.char_indices() {

@@ -155,12 +155,7 @@ impl Program {
                 let c = (&mut cursor.frames, &mut cursor.open, &mut cursor.pc);
                 enter(c, cr, values, inputs, number, entry);
             }
-            Step::Cal {
-                block,
-                inputs,
-                outputs,
-                ..
-            } => call_block(values, (blocks, uart), *block, inputs, outputs, now),
+            call @ Step::Cal { .. } => call_block(values, (blocks, uart), call, now),
         }
         tracer.step(number, read_bit, cr.is_on());
         cursor.pc < steps.len()
@@ -363,16 +358,24 @@ fn call_function(values: &[Data], f: Function, cr: Data, args: &[Src]) -> Data {
     function(f, cr, &operands[..args.len().min(2)])
 }
 
-/// Calls block instance `block` with `inputs` and copies its `outputs`.
+/// Runs a `CAL` step: its block instance called with its inputs, its
+/// outputs copied.
 fn call_block(
     values: &mut [Data],
     (blocks, uart): (&mut [Instance], &mut super::uart::Uart),
-    block: usize,
-    inputs: &[(usize, Src)],
-    outputs: &[(usize, usize)],
+    call: &Step,
     now: i64,
 ) {
-    let Some(instance) = blocks.get_mut(block) else {
+    let Step::Cal {
+        block,
+        inputs,
+        outputs,
+        ..
+    } = call
+    else {
+        return;
+    };
+    let Some(instance) = blocks.get_mut(*block) else {
         return;
     };
     for &(i, src) in inputs {

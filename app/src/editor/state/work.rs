@@ -24,6 +24,16 @@ impl LadderCtx {
             .unwrap_or_default()
     }
 
+    /// Applies settings to the machine as a project brings them; the
+    /// refusals, each named.
+    pub fn apply_settings(&self, settings: Vec<(String, String)>) -> Vec<String> {
+        self.text
+            .pane
+            .get_value()
+            .map(|p| p.apply_settings.run(settings))
+            .unwrap_or_default()
+    }
+
     /// Shows a shared project's ladder, unsaved, until it is kept or left.
     pub fn show_shared(&self, project: engine::ladder::Project) {
         if self.work.shared.get_untracked() {
@@ -75,12 +85,7 @@ impl LadderCtx {
         };
         self.work.shared.set(false);
         let settings = self.work.shared_with.with_value(|w| w.settings.clone());
-        let refused = self
-            .text
-            .pane
-            .get_value()
-            .map(|p| p.apply_settings.run(settings))
-            .unwrap_or_default();
+        let refused = self.apply_settings(settings);
         self.refresh(true);
         let mut notice = match kept_as {
             Some(key) => format!("{} {key}", texts.shared_kept),

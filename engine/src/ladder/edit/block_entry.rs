@@ -59,15 +59,25 @@ fn call_form(text: &str) -> Result<BlockCall, EntryError> {
         return Err(usage());
     }
     let mut call = new_call(kind, instance);
-    for param in body.split(',').map(str::trim).filter(|p| !p.is_empty()) {
-        if let Some((pin, variable)) = param.split_once("=>") {
-            call.outputs
-                .push((pin.trim().to_string(), variable.trim().to_string()));
-        } else if let Some((pin, operand)) = param.split_once(":=") {
-            call.inputs
-                .push((pin.trim().to_string(), operand.trim().to_string()));
-        } else {
-            return Err(usage());
+    for param in crate::softplc::il::split_params(body)
+        .into_iter()
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+    {
+        // The first of `:=` and `=>` decides (a text may hold the other).
+        let input = param.find(":=");
+        match (input, param.find("=>")) {
+            (Some(i), out) if out.is_none_or(|o| i < o) => {
+                let (pin, operand) = (&param[..i], &param[i + 2..]);
+                call.inputs
+                    .push((pin.trim().to_string(), operand.trim().to_string()));
+            }
+            (_, Some(o)) => {
+                let (pin, variable) = (&param[..o], &param[o + 2..]);
+                call.outputs
+                    .push((pin.trim().to_string(), variable.trim().to_string()));
+            }
+            _ => return Err(usage()),
         }
     }
     Ok(call)
@@ -225,6 +235,21 @@ mod tests {
         );
         let e = parse_box("LD_CTC Cw_ld 4 0 Cw").expect("reads");
         assert_eq!(call(&e).outputs, vec![("C".into(), "Cw".into())]);
+        // The serial port's: a byte received goes back where it came from,
+        // one sent is only read.
+        let e = parse_box("LD_UART_RECV recv_ld ch").expect("reads");
+        assert_eq!(call(&e).outputs, vec![("V".into(), "ch".into())]);
+        let e = parse_box("f_ld: LD_FMTSTR(V := n, FMT := 'Hi, \\3 $'x$' => ')").expect("reads");
+        assert_eq!(
+            call(&e).inputs,
+            vec![
+                ("V".into(), "n".into()),
+                ("FMT".into(), "'Hi, \\3 $'x$' => '".into())
+            ]
+        );
+        let e = parse_box("LD_UART_SEND send_ld ch").expect("reads");
+        assert_eq!(call(&e).inputs, vec![("V".into(), "ch".into())]);
+        assert!(call(&e).outputs.is_empty());
     }
 
     #[test]

@@ -13,16 +13,24 @@ use engine::softplc::{Address, Area, Size};
 use leptos::prelude::*;
 
 use crate::chrome::console::ConsolePane;
-use crate::chrome::controls::{Led, Momentary};
 use crate::chrome::text_program::TextProgramPane;
 use crate::sim::Simulator;
 use crate::state::{put, Ctx};
 use crate::storage;
 
+mod rows;
+use rows::{GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
+
 /// Where the workspace's program is saved (`SavedText`); nothing was
 /// ever saved under the legacy key.
 const KEY: &str = "hashigo.soft-plc.v1";
 const LEGACY_KEY: &str = "hashigo.soft-plc.v0";
+/// Where the scan period is saved (as the engine's setting reads it,
+/// `5000us`); absent for the default 10 ms.
+const SCAN_KEY: &str = "hashigo.soft-plc.scan.v1";
+
+/// The cyclic task's period on a fresh workspace, in µs.
+pub const DEFAULT_SCAN_US: u64 = 10_000;
 
 /// The most a slider reaches: a 10-bit converter's top (any value of the
 /// input's type can be typed in its box).
@@ -109,6 +117,8 @@ pub struct SoftCtx {
     pub console: RwSignal<String>,
     /// Bytes of the port's output the console shows.
     console_seen: StoredValue<u64>,
+    /// The cyclic task's period in µs (an LDmicro file's `CYCLE=`).
+    pub scan_us: RwSignal<u64>,
 }
 
 impl SoftCtx {
@@ -123,11 +133,69 @@ impl SoftCtx {
             serial: RwSignal::new(false),
             console: RwSignal::new(String::new()),
             console_seen: StoredValue::new(0),
+            scan_us: RwSignal::new(DEFAULT_SCAN_US),
         };
+        if let Some(saved) = storage::saved_string(SCAN_KEY) {
+            if let Err(e) = ctx.set_scan(&saved) {
+                page.notice.set(Some(format!("{SCAN_KEY}: {e}")));
+            }
+        }
         if !ctx.load() {
             ctx.rebuild();
         }
         ctx
+    }
+
+    /// Sets the cyclic task's period (`5ms`, `5000us`: as the engine's
+    /// `scan` setting reads it) and saves it; the machine's refusal
+    /// leaves it as it was.
+    pub fn set_scan(&self, value: &str) -> Result<(), String> {
+        self.sim
+            .try_update_value(|s| {
+                s.machine_mut().apply(Command::Setting {
+                    name: "scan".into(),
+                    value: value.into(),
+                })
+            })
+            .unwrap_or(Ok(()))
+            .map_err(|e| e.to_string())?;
+        let us = self.sim.with_value(|s| {
+            let period = s.machine().shown_machine().machine().scan_period();
+            period.as_nanos() / 1000
+        });
+        self.scan_us.set(us);
+        if us == DEFAULT_SCAN_US {
+            storage::remove(SCAN_KEY);
+        } else {
+            storage::save_string(SCAN_KEY, &format!("{us}us"));
+        }
+        Ok(())
+    }
+
+    /// The settings a project keeps: the scan period when it is not
+    /// the default.
+    pub fn project_settings(&self) -> Vec<(String, String)> {
+        let us = self.scan_us.get_untracked();
+        if us == DEFAULT_SCAN_US {
+            Vec::new()
+        } else {
+            vec![("scan".into(), format!("{us}us"))]
+        }
+    }
+
+    /// Applies a project's settings; returns the refusals, each named.
+    pub fn apply_project_settings(&self, settings: Vec<(String, String)>) -> Vec<String> {
+        settings
+            .into_iter()
+            .filter_map(|(name, value)| {
+                let done = if name.trim().eq_ignore_ascii_case("scan") {
+                    self.set_scan(&value)
+                } else {
+                    Err("the soft PLC's only setting is scan".into())
+                };
+                done.err().map(|e| format!("{name}={value}: {e}"))
+            })
+            .collect()
     }
 
     /// Copies the terminals' values into the signals that changed, and
@@ -323,6 +391,7 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
         <main class="workspace soft">
             <section class="device soft-board" data-testid="soft-board">
                 <h2>{move || t().soft_board}</h2>
+                <ScanSetting soft />
                 <div class="soft-io">
                     <ul class="soft-inputs">
                         <For each=of(TerminalKind::Switch) key=|t| (t.address.clone(), t.name.clone())
@@ -366,103 +435,6 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                 />
             </div>
         </main>
-    }
-}
-
-/// A terminal's label: its address, and its variable's name.
-fn label(term: &Terminal) -> String {
-    if term.name.is_empty() {
-        term.address.clone()
-    } else {
-        format!("{} {}", term.address, term.name)
-    }
-}
-
-#[component]
-fn SwitchRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
-    let ctx = Ctx::get();
-    let t = move || ctx.lang.get().texts();
-    let hook = hook(&term.address);
-    let driven = term.driven;
-    let on = Signal::derive(move || driven.get() != 0);
-    let held = term.held;
-    let (flip, press) = (term.clone(), term.clone());
-    view! {
-        <li class="soft-terminal">
-            <button type="button" class="input-switch small" class:on=on
-                data-testid=format!("soft-input-{hook}")
-                aria-pressed=move || on.get().to_string()
-                aria-label=label(&term)
-                title=move || t().drive
-                on:click=move |_| {
-                    // A bit takes 0 and 1: never refused.
-                    let _ = soft.drive(&flip, i64::from(!on.get_untracked()));
-                }>
-            </button>
-            <Momentary held=Signal::derive(move || held.get())
-                testid=format!("soft-push-{hook}")
-                label=Signal::derive(move || t().soft_push.to_string())
-                set=Callback::new(move |down| soft.push(&press, down)) />
-            <span class="soft-label">{label(&term)}</span>
-        </li>
-    }
-}
-
-#[component]
-fn LampRow(term: Terminal) -> impl IntoView {
-    let value = term.value;
-    let lit = RwSignal::new(false);
-    Effect::new(move |_| put(lit, value.get() != 0));
-    view! {
-        <li class="soft-terminal">
-            <Led on=lit testid=format!("soft-lamp-{}", hook(&term.address)) colour="amber"
-                label=label(&term) />
-            <span class="soft-label">{label(&term)}</span>
-        </li>
-    }
-}
-
-#[component]
-fn SliderRow(soft: SoftCtx, term: Terminal) -> impl IntoView {
-    let hook = hook(&term.address);
-    let driven = term.driven;
-    let refused = RwSignal::new(None::<String>);
-    let set = move |t: &Terminal, text: &str| match text.trim().parse::<i64>() {
-        Ok(v) => refused.set(soft.drive(t, v).err()),
-        Err(_) => refused.set(Some(format!("{text:?}: a whole number"))),
-    };
-    let (slid, typed) = (term.clone(), term.clone());
-    view! {
-        <li class="soft-terminal analog">
-            <label>
-                <span class="soft-label">{label(&term)}</span>
-                <input type="range" min="0" max=SLIDER_MAX.to_string()
-                    data-testid=format!("soft-analog-{hook}")
-                    prop:value=move || driven.get().to_string()
-                    on:input=move |e| set(&slid, &event_target_value(&e)) />
-            </label>
-            <input type="number" class="soft-number" data-testid=format!("soft-analog-value-{hook}")
-                aria-label=label(&term)
-                prop:value=move || driven.get().to_string()
-                on:change=move |e| set(&typed, &event_target_value(&e)) />
-            <span class="soft-refused" role="alert" data-testid=format!("soft-analog-error-{hook}")>
-                {move || refused.get()}
-            </span>
-        </li>
-    }
-}
-
-#[component]
-fn GaugeRow(term: Terminal) -> impl IntoView {
-    let value = term.value;
-    view! {
-        <li class="soft-terminal analog">
-            <span class="soft-label">{label(&term)}</span>
-            <meter min="0" max=SLIDER_MAX.to_string() prop:value=move || value.get() as f64
-                data-testid=format!("soft-gauge-{}", hook(&term.address))
-                data-value=move || value.get().to_string()></meter>
-            <output class="soft-number">{move || value.get().to_string()}</output>
-        </li>
     }
 }
 
