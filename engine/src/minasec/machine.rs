@@ -82,6 +82,10 @@ pub struct Machine {
     gate_network: bool,
     /// Per-step tracing, when on (the exact path runs meanwhile).
     pub(crate) tracer: crate::plc::Tracer,
+    /// The last clock edge (the CPU view's phase and scan signal).
+    pub(super) last_edge: super::cpu::LastEdge,
+    /// [`Machine::clocks`] at the last reset (the edges the strip has).
+    pub(super) reset_clocks: u64,
 }
 
 impl Default for Machine {
@@ -124,6 +128,8 @@ impl Machine {
             fast_path: true,
             tracer: crate::plc::Tracer::default(),
             gate_network: true,
+            last_edge: super::cpu::LastEdge::default(),
+            reset_clocks: 0,
         };
         m.clear_volatile();
         m
@@ -361,6 +367,8 @@ impl Machine {
         self.counter.clear_latches();
         self.last_scan = None;
         self.reset_at = self.now;
+        self.reset_clocks = self.clocks;
+        self.last_edge = super::cpu::LastEdge::default();
     }
 
     /// Ends a clock that is high (the oscillator is being stopped).
@@ -402,12 +410,20 @@ impl Machine {
         self.tracer.step(usize::from(self.pc), data_in, self.acc);
         self.clk_high = true;
         self.clocks += 1;
+        self.last_edge = super::cpu::LastEdge {
+            at: Some(self.now),
+            wrapped: false,
+        };
     }
 
     /// The falling edge: advance the PC; at the wrap, exchange I/O.
     fn fall(&mut self) {
         self.clk_high = false;
         self.pc = self.pc.wrapping_add(1);
+        self.last_edge = super::cpu::LastEdge {
+            at: Some(self.now),
+            wrapped: self.pc == 0,
+        };
         if self.pc == 0 {
             self.scan_boundary();
         }

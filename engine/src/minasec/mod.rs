@@ -4,11 +4,13 @@
 //! - [`asm`]: the mnemonic listing and the programming sheet;
 //! - [`machine`]: the board stepping clock by clock, and [`control`] for
 //!   operating it;
-//! - [`panel`]: the front panel as plain data.
+//! - [`panel`]: the front panel as plain data;
+//! - [`cpu`]: the CPU's signals and blocks for the view inside it.
 
 pub mod asm;
 pub mod control;
 pub mod counter;
+pub mod cpu;
 mod fast;
 pub mod isa;
 pub mod machine;

@@ -2,7 +2,6 @@
 //! so a front end can draw the board without knowing the machine.
 
 use super::control::{ClockSpeed, Mode, TimerId};
-use super::isa::{Address, Instruction};
 use super::machine::Machine;
 use crate::time::SimTime;
 
@@ -100,11 +99,7 @@ impl Machine {
         panel.write_held = self.write_held;
         panel.clock_held = self.clock_held;
         panel.count_clear_held = counter.clear_button();
-        panel.cpu = if on {
-            self.cpu_signals(instruction)
-        } else {
-            CpuSignals::default()
-        };
+        panel.cpu = self.cpu_signals();
     }
 
     /// A fresh panel snapshot.
@@ -114,16 +109,18 @@ impl Machine {
         panel
     }
 
-    fn cpu_signals(&self, instruction: Instruction) -> CpuSignals {
-        let Instruction { opcode, address } = instruction;
-        let clk = self.clock_high();
+    /// The timing chart's signals, as the CPU view has them (dark when
+    /// off).
+    fn cpu_signals(&self) -> CpuSignals {
+        let mut v = super::cpu::CpuView::default();
+        self.cpu_view_into(&mut v);
         CpuSignals {
-            clk,
-            instruction: instruction.encode(),
-            address: address.index(),
-            din: self.read(Address::from_low_bits(address.index())),
-            dout: self.acc() ^ opcode.inverts(),
-            we: !(opcode.is_store() && clk),
+            clk: v.clk,
+            instruction: v.instruction,
+            address: v.address,
+            din: v.data_in,
+            dout: v.data_out,
+            we: v.we,
         }
     }
 }

@@ -6,6 +6,7 @@ mod common;
 
 mod cli;
 mod counter;
+mod cpu_view;
 mod fast_path;
 mod harness;
 mod programming;

@@ -159,6 +159,10 @@ impl Machine {
         self.next_edge = end + self.low_time();
         // The last falling edge wraps the PC: the scan boundary.
         self.pc = 0;
+        self.last_edge = super::super::cpu::LastEdge {
+            at: Some(end),
+            wrapped: true,
+        };
         self.scan_boundary();
     }
 }
