@@ -155,6 +155,7 @@ impl Workspaces {
                 <main class="workspace">
                     <Board />
                     <ProgramPane />
+                    <crate::machines::minasec::cpu_view::CpuPanel />
                 </main>
             }
             .into_any(),

@@ -39,6 +39,12 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
         # Its variables pane with rows, and boxes on the ladder.
         Select(el(driver, "example")).select_by_value("parts")
         wait(driver, lambda: el(driver, "var-parts"))
+    if machine == "minasec-u":
+        # The view inside its CPU, an edge stepped (blocks lit).
+        el(driver, "mode-halt").click()
+        el(driver, "cpu-view-open").click()
+        el(driver, "cpu-step-edge").click()
+        wait(driver, lambda: el(driver, "cpu-phase").get_attribute("data-value") == "rising")
     # A case in the Tests pane, so its fields are checked too.
     el(driver, "tests-open").click()
     el(driver, "add-test").click()

@@ -14,18 +14,20 @@
 use super::control::Mode;
 use super::isa::{Address, Device, Instruction};
 use super::machine::Machine;
-use crate::time::SimTime;
 
 /// Where the clock stands: on an edge just taken, or between edges.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Phase {
-    /// The rising edge just happened (the step executed).
+    /// The rising edge just happened (the step executed), or was the
+    /// last while the clock is stopped.
     Rising,
-    /// High, some time after the rise.
+    /// High, the clock running, some time after the rise.
     High,
-    /// The falling edge just happened (the PC advanced).
+    /// The falling edge just happened (the PC advanced), or was the last
+    /// while the clock is stopped.
     Falling,
-    /// Low, some time after the fall (or since reset).
+    /// Low, the clock running, some time after the fall (or no edge since
+    /// reset).
     #[default]
     Low,
 }
@@ -188,14 +190,6 @@ pub struct EdgeLevels {
 /// Edges the timing strip shows.
 pub const STRIP_EDGES: usize = 32;
 
-/// The last edge the clock took: when, and whether it was a fall that
-/// wrapped the PC.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(super) struct LastEdge {
-    pub(super) at: Option<SimTime>,
-    pub(super) wrapped: bool,
-}
-
 impl Machine {
     /// Fills `view` with the CPU's signals and blocks now (dark when the
     /// board is off: everything zero).
@@ -207,7 +201,12 @@ impl Machine {
         let instruction = self.instruction();
         let Instruction { opcode, address } = instruction;
         let clk = self.clock_high();
-        let edge_now = self.last_edge.at == Some(self.now());
+        // The edge just taken: at this instant, or the last one while the
+        // clock is stopped (HALT: the view steps edges; time still runs
+        // for the timers).
+        let clocked = self.powered() && self.mode() == Mode::Run;
+        let edge_now =
+            self.last_edge.at.is_some() && (self.last_edge.at == Some(self.now()) || !clocked);
         view.phase = match (clk, edge_now) {
             (true, true) => Phase::Rising,
             (true, false) => Phase::High,

@@ -42,6 +42,14 @@ impl ScanSnapshot {
     }
 }
 
+/// The last edge the clock took: when, and whether it was a fall that
+/// wrapped the PC.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct LastEdge {
+    pub(super) at: Option<SimTime>,
+    pub(super) wrapped: bool,
+}
+
 /// One MINASEC-U board: CPU, memory, I/O, timers, counter and front panel.
 #[derive(Clone, Debug)]
 pub struct Machine {
@@ -83,7 +91,7 @@ pub struct Machine {
     /// Per-step tracing, when on (the exact path runs meanwhile).
     pub(crate) tracer: crate::plc::Tracer,
     /// The last clock edge (the CPU view's phase and scan signal).
-    pub(super) last_edge: super::cpu::LastEdge,
+    pub(super) last_edge: LastEdge,
     /// [`Machine::clocks`] at the last reset (the edges the strip has).
     pub(super) reset_clocks: u64,
 }
@@ -128,7 +136,7 @@ impl Machine {
             fast_path: true,
             tracer: crate::plc::Tracer::default(),
             gate_network: true,
-            last_edge: super::cpu::LastEdge::default(),
+            last_edge: LastEdge::default(),
             reset_clocks: 0,
         };
         m.clear_volatile();
@@ -368,7 +376,7 @@ impl Machine {
         self.last_scan = None;
         self.reset_at = self.now;
         self.reset_clocks = self.clocks;
-        self.last_edge = super::cpu::LastEdge::default();
+        self.last_edge = LastEdge::default();
     }
 
     /// Ends a clock that is high (the oscillator is being stopped).
@@ -410,7 +418,7 @@ impl Machine {
         self.tracer.step(usize::from(self.pc), data_in, self.acc);
         self.clk_high = true;
         self.clocks += 1;
-        self.last_edge = super::cpu::LastEdge {
+        self.last_edge = LastEdge {
             at: Some(self.now),
             wrapped: false,
         };
@@ -420,7 +428,7 @@ impl Machine {
     fn fall(&mut self) {
         self.clk_high = false;
         self.pc = self.pc.wrapping_add(1);
-        self.last_edge = super::cpu::LastEdge {
+        self.last_edge = LastEdge {
             at: Some(self.now),
             wrapped: self.pc == 0,
         };

@@ -214,15 +214,25 @@ fn the_view_follows_the_books_equations_at_every_edge_of_random_programs() {
 }
 
 #[test]
-fn between_edges_the_phase_is_high_or_low_and_reset_raises_clear() {
+fn the_phase_keeps_a_stepped_edge_at_halt_and_is_a_level_while_running() {
     let mut m = Machine::new();
     let mut v = CpuView::default();
     m.cpu_view_into(&mut v);
-    assert_eq!(v.phase, Phase::Low);
+    assert_eq!(v.phase, Phase::Low, "no edge since reset");
     m.apply(Command::ClockButton(true)).expect("press");
+    // At HALT time still runs (the timers), the edge stays the last.
     m.tick(engine::SimTime::from_millis(5));
     m.cpu_view_into(&mut v);
-    assert_eq!((v.phase, v.clk), (Phase::High, true));
+    assert_eq!((v.phase, v.clk), (Phase::Rising, true));
+    m.apply(Command::ClockButton(false)).expect("release");
+    m.apply(Command::SetMode(Mode::Run)).expect("run");
+    m.tick(engine::SimTime::from_nanos(1));
+    m.cpu_view_into(&mut v);
+    assert_eq!(v.phase, Phase::Low, "running, between edges");
+    assert!(v.blocks.iter().all(|b| !b.active), "no edge lights a block");
+    m.tick(engine::SimTime::from_micros(20));
+    m.cpu_view_into(&mut v);
+    assert_eq!(v.phase, Phase::High, "running, after a rise");
     m.apply(Command::SetMode(Mode::Reset)).expect("reset");
     m.cpu_view_into(&mut v);
     assert!(v.clear && !v.clk && v.pc == 0);

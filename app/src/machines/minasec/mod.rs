@@ -2,6 +2,7 @@
 //! graph), one signal per panel element, and the program pane.
 
 pub mod board;
+pub mod cpu_view;
 pub mod examples;
 pub mod header;
 pub mod program;
@@ -35,6 +36,8 @@ pub struct MinasecCtx {
     pub loaded: RwSignal<Option<String>>,
     /// The text before an example replaced it, for undo.
     pub before_example: RwSignal<Option<String>>,
+    /// The view inside the CPU (issue #33).
+    pub cpu: cpu_view::CpuSignals,
 }
 
 impl MinasecCtx {
@@ -47,6 +50,7 @@ impl MinasecCtx {
             text: RwSignal::new(String::new()),
             loaded: RwSignal::new(None),
             before_example: RwSignal::new(None),
+            cpu: cpu_view::CpuSignals::new(),
         };
         ctx.refresh();
         ctx
@@ -112,6 +116,8 @@ impl MinasecCtx {
                 self.panel
                     .sync(panel, machine.now().as_nanos() / 1_000_000, machine.scans());
             }
+            // The board shown (a past one while travelling in time).
+            self.cpu.sync(machine.shown_machine().machine());
         });
     }
 

@@ -159,7 +159,7 @@ impl Machine {
         self.next_edge = end + self.low_time();
         // The last falling edge wraps the PC: the scan boundary.
         self.pc = 0;
-        self.last_edge = super::super::cpu::LastEdge {
+        self.last_edge = LastEdge {
             at: Some(end),
             wrapped: true,
         };
