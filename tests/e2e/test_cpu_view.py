@@ -71,6 +71,14 @@ def test_a_whole_scan_edge_by_edge_agrees_with_the_front_panel(driver, base_url,
     # The strip holds the last 32 edges.
     paths = driver.find_elements(By.CSS_SELECTOR, '[data-testid="cpu-strip"] path')
     assert len(paths) == 3 and all(p.get_attribute("d").count("L") >= 32 for p in paths)
+    # The keyboard steps too: the button takes Space and Enter.
+    from selenium.webdriver.common.keys import Keys
+    before = el(driver, "cpu-block-pc").get_attribute("data-value")
+    step.send_keys(Keys.SPACE)
+    wait(driver, lambda: el(driver, "cpu-phase").get_attribute("data-value") == "rising")
+    step.send_keys(Keys.ENTER)
+    wait(driver, lambda: el(driver, "cpu-phase").get_attribute("data-value") == "falling")
+    assert int(el(driver, "cpu-block-pc").get_attribute("data-value")) == int(before) + 1
     # In RUN the button waits for HALT.
     el(driver, "mode-run").click()
     wait(driver, lambda: not el(driver, "cpu-step-edge").is_enabled())
