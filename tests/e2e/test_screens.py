@@ -280,3 +280,26 @@ def test_the_soft_plc_on_every_screen(screen, base_url, artifacts):
         wait(driver, lambda: on_screen(driver, testid), message=f"{testid} on screen")
     assert no_sideways_overflow(driver)
     driver.save_screenshot(str(artifacts / f"screen-soft-parts-{name}.png"))
+
+
+def test_the_cpu_view_on_every_screen(screen, base_url, artifacts):
+    """Inside MINASEC-U (issue #33): the CPU view opens, its step button
+    and blocks come on screen and step an edge, on every screen, with no
+    sideways scrolling."""
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    show(driver, touch, "panel")
+    el(driver, "mode-halt").click()
+    opener = el(driver, "cpu-view-open")
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", opener)
+    opener.click()
+    for testid in ["cpu-step-edge", "cpu-block-pc", "cpu-block-counter", "cpu-strip"]:
+        driver.execute_script(f"document.querySelector('[data-testid={testid}]').scrollIntoView({{block: 'center'}})")
+        wait(driver, lambda: on_screen(driver, testid), message=f"{testid} on screen")
+    driver.execute_script("document.querySelector('[data-testid=cpu-step-edge]').scrollIntoView({block: 'center'})")
+    el(driver, "cpu-step-edge").click()
+    wait(driver, lambda: el(driver, "cpu-phase").get_attribute("data-value") == "rising")
+    assert el(driver, "cpu-block-accumulator").get_attribute("data-active") == "1"
+    assert no_sideways_overflow(driver)
+    driver.save_screenshot(str(artifacts / f"screen-cpu-{name}.png"))
