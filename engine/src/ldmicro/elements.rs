@@ -171,24 +171,25 @@ fn serial(e: &Ld, instance: &mut impl FnMut(&str) -> String) -> Result<BlockCall
             bytes,
             wait,
             whole,
-        } => {
-            let v = byte(name, *bytes, *wait, *whole)?;
-            ld_box(
-                "LD_UART_SEND",
-                instance("_send"),
-                vec![("V", v)],
-                Vec::new(),
-            )
         }
-        Ld::UartRecv {
+        | Ld::UartRecv {
             name,
             bytes,
             wait,
             whole,
         } => {
             let v = byte(name, *bytes, *wait, *whole)?;
-            let inputs = vec![("V", v.clone())];
-            ld_box("LD_UART_RECV", instance("_recv"), inputs, vec![("V", v)])
+            if matches!(e, Ld::UartSend { .. }) {
+                ld_box(
+                    "LD_UART_SEND",
+                    instance("_send"),
+                    vec![("V", v)],
+                    Vec::new(),
+                )
+            } else {
+                let inputs = vec![("V", v.clone())];
+                ld_box("LD_UART_RECV", instance("_recv"), inputs, vec![("V", v)])
+            }
         }
         Ld::UartRecvAvail => ld_box("LD_UART_AVAIL", instance("_avail"), Vec::new(), Vec::new()),
         Ld::UartSendReady => ld_box("LD_UART_READY", instance("_ready"), Vec::new(), Vec::new()),
