@@ -140,11 +140,9 @@ pub(super) fn part(
             let count = period(name, delay, cycle, 0)?;
             Part::Condition(Element::Block(function("MOVE", vec![("IN", count)], name)))
         }
-        Ld::UartSend { .. }
-        | Ld::UartRecv { .. }
-        | Ld::UartRecvAvail
-        | Ld::UartSendReady
-        | Ld::FormattedString { .. } => Part::Condition(Element::Block(serial(e, instance)?)),
+        Ld::UartRecvAvail | Ld::UartSendReady | Ld::FormattedString { .. } => {
+            Part::Condition(Element::Block(serial(e, instance)?))
+        }
         // A count of the chip's own delay loop, for DELAY, which stops the
         // chip: nothing to count on the soft PLC.
         Ld::TimeConvert { to_delay: true, .. } => {
@@ -155,42 +153,10 @@ pub(super) fn part(
     })
 }
 
-/// The serial port's elements as LDmicro's serial blocks (one byte a
-/// call; LDmicro 4.x's several-byte forms are not run yet).
-fn serial(e: &Ld, instance: &mut impl FnMut(&str) -> String) -> Result<BlockCall, LdError> {
-    let byte = |name: &str, bytes: u32, wait: bool, whole: bool| {
-        if bytes > 1 || wait || whole {
-            Err(LdError::NotYet(format!("{} of several bytes", e.keyword())))
-        } else {
-            operand(name)
-        }
-    };
+/// The serial port's other elements as LDmicro's serial blocks (a
+/// byte's send and receive are [`uart_block`]).
+fn serial(e: &Ld, instance: &mut dyn FnMut(&str) -> String) -> Result<BlockCall, LdError> {
     Ok(match e {
-        Ld::UartSend {
-            name,
-            bytes,
-            wait,
-            whole,
-        }
-        | Ld::UartRecv {
-            name,
-            bytes,
-            wait,
-            whole,
-        } => {
-            let v = byte(name, *bytes, *wait, *whole)?;
-            if matches!(e, Ld::UartSend { .. }) {
-                ld_box(
-                    "LD_UART_SEND",
-                    instance("_send"),
-                    vec![("V", v)],
-                    Vec::new(),
-                )
-            } else {
-                let inputs = vec![("V", v.clone())];
-                ld_box("LD_UART_RECV", instance("_recv"), inputs, vec![("V", v)])
-            }
-        }
         Ld::UartRecvAvail => ld_box("LD_UART_AVAIL", instance("_avail"), Vec::new(), Vec::new()),
         Ld::UartSendReady => ld_box("LD_UART_READY", instance("_ready"), Vec::new(), Vec::new()),
         Ld::FormattedString { var, text } => {
@@ -205,6 +171,57 @@ fn serial(e: &Ld, instance: &mut impl FnMut(&str) -> String) -> Result<BlockCall
         }
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
+}
+
+/// `UART_SEND v [n wait]`, `UART_RECV …` and the `…n` forms (all of the
+/// variable's bytes, its `VAR LIST` size by `bits`) as `LD_UART_SEND` /
+/// `LD_UART_RECV` with `N` bytes; waiting (the chip stopped until every
+/// byte has gone) is not run. `None` for any other element.
+fn uart_block(
+    e: &Ld,
+    bits: &dyn Fn(&str) -> u16,
+    instance: &mut dyn FnMut(&str) -> String,
+) -> Option<Result<Part, LdError>> {
+    let (Ld::UartSend {
+        name,
+        bytes,
+        wait,
+        whole,
+    }
+    | Ld::UartRecv {
+        name,
+        bytes,
+        wait,
+        whole,
+    }) = e
+    else {
+        return None;
+    };
+    let built = (|| {
+        if *wait {
+            return Err(LdError::NotYet(format!(
+                "{} waiting for its bytes",
+                e.keyword()
+            )));
+        }
+        let n = if *whole {
+            u32::from(bits(name))
+        } else {
+            *bytes
+        };
+        let mut inputs = vec![("V", operand(name)?)];
+        if n > 1 {
+            inputs.push(("N", n.to_string()));
+        }
+        let call = if matches!(e, Ld::UartSend { .. }) {
+            ld_box("LD_UART_SEND", instance("_send"), inputs, Vec::new())
+        } else {
+            let out = vec![("V", operand(name)?)];
+            ld_box("LD_UART_RECV", instance("_recv"), inputs, out)
+        };
+        Ok(Part::Condition(Element::Block(call)))
+    })();
+    Some(built)
 }
 
 /// An element the soft PLC runs as boxes of its own (docs/ldmicro.md):
@@ -407,6 +424,9 @@ pub(super) fn word_op(
     bits: &dyn Fn(&str) -> u16,
     instance: &mut dyn FnMut(&str) -> String,
 ) -> Option<Result<Part, LdError>> {
+    if let Some(built) = uart_block(e, bits, instance) {
+        return Some(built);
+    }
     let narrow = |dest: &str| bits(dest) < 4;
     let (kind, a, b, dest) = match e {
         Ld::Math { op, dest, a, b } if *op != MathOp::Sr0 && narrow(dest) => {

@@ -364,8 +364,10 @@ impl Writer {
             "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
             "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),
             "IFNBIT" => format!("IF_BIT_CLEAR {} {}", input("A"), input("B")),
-            "UART_SEND" => format!("UART_SEND {} 1 0", input("V")),
-            "UART_RECV" => format!("UART_RECV {} 1 0", input("V")),
+            "UART_SEND" | "UART_RECV" => {
+                let n = input("N").parse::<u32>().unwrap_or(1).max(1);
+                format!("{name} {} {n} 0", input("V"))
+            }
             "UART_AVAIL" => "UART_RECV_AVAIL".into(),
             "UART_READY" => "UART_SEND_READY".into(),
             "FMTSTR" => formatted_string(b, &input("V"))?,

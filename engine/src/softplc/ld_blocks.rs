@@ -98,7 +98,9 @@ pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
             ("D", Dint),
             ("W", Int),
         ],
-        Some(Family::Serial) => vec![("IN", Bool), ("V", Dint)],
+        Some(Family::Serial) if block == "LD_FMTSTR" => vec![("IN", Bool), ("V", Dint)],
+        // N: how many of V's bytes, the lowest first (1 when 0).
+        Some(Family::Serial) => vec![("IN", Bool), ("V", Dint), ("N", Int)],
         None => Vec::new(),
     }
 }
@@ -193,6 +195,10 @@ pub struct LdBlock {
     pub value: i64,
     /// A formatted string's progress.
     sender: Sender,
+    /// A several-byte send or receive: the word being moved and how many
+    /// of its bytes have gone (LDmicro's `saved_` and `numb_`).
+    word: i64,
+    moved: i64,
 }
 
 impl LdBlock {
@@ -228,6 +234,8 @@ impl LdBlock {
             q: false,
             value: 0,
             sender: Sender::default(),
+            word: 0,
+            moved: 0,
         }
     }
 
@@ -273,25 +281,8 @@ impl LdBlock {
                     }
                 }
             }
-            Kind::UartSend => {
-                // LDmicro 4.x: the power out is the transmitter's busy
-                // bit, whatever the power in.
-                if s {
-                    io.uart.send(word(1) as u8);
-                }
-                !io.uart.ready()
-            }
-            Kind::UartRecv => {
-                self.value = word(1);
-                // Without power nothing is taken from the port.
-                match s.then(|| io.uart.receive()).flatten() {
-                    Some(byte) => {
-                        self.value = i64::from(byte);
-                        true
-                    }
-                    None => false,
-                }
-            }
+            Kind::UartSend => self.send(s, word(1), word(2).max(1), io.uart),
+            Kind::UartRecv => self.receive(s, word(1), word(2).max(1), io.uart),
             Kind::UartAvail => s && io.uart.available(),
             Kind::UartReady => s && io.uart.ready(),
             Kind::FormattedString => match io.format {
@@ -309,6 +300,69 @@ impl LdBlock {
             }
         };
         self.started = true;
+    }
+
+    /// `UART_SEND v [n]`, LDmicro 4.x's code: one byte — sent while the
+    /// power is on and the port free, the power out the transmitter's
+    /// busy bit whatever the power in; `n` bytes — a rise takes the
+    /// word, its bytes go one a scan as the port frees, the lowest first,
+    /// and the power is on until the last has gone.
+    fn send(&mut self, s: bool, v: i64, n: i64, uart: &mut super::uart::Uart) -> bool {
+        if n == 1 {
+            if s {
+                uart.send(v as u8);
+            }
+            return !uart.ready();
+        }
+        if s && !self.store {
+            self.store = true;
+            self.word = v;
+            self.moved = 0;
+        }
+        if self.store {
+            if self.moved < n && uart.ready() {
+                uart.send((self.word >> (8 * self.moved).min(63)) as u8);
+                self.moved += 1;
+            }
+            if self.moved >= n {
+                self.store = false;
+            }
+        }
+        self.store || !uart.ready()
+    }
+
+    /// `UART_RECV v [n]`: with power, one byte received into `v` passes
+    /// power for that scan; `n` bytes are gathered the lowest first, a
+    /// byte a scan, into `v` when the last has come (power for that
+    /// scan). Without power nothing is taken from the port.
+    fn receive(&mut self, s: bool, v: i64, n: i64, uart: &mut super::uart::Uart) -> bool {
+        self.value = v;
+        if !s {
+            return false;
+        }
+        if n == 1 {
+            return match uart.receive() {
+                Some(byte) => {
+                    self.value = i64::from(byte);
+                    true
+                }
+                None => false,
+            };
+        }
+        if self.moved < n {
+            if let Some(byte) = uart.receive() {
+                let shift = (8 * self.moved).min(56);
+                self.word = (self.word & !(0xFF << shift)) | (i64::from(byte) << shift);
+                self.moved += 1;
+            }
+        }
+        if self.moved >= n {
+            self.value = self.word;
+            self.moved = 0;
+            true
+        } else {
+            false
+        }
     }
 
     /// A timer's step: `s` the power in, the count `t` as the variable

@@ -742,3 +742,41 @@ fn time2delay_is_refused_as_the_chips_own_delay_loop() {
         errors[0].error
     );
 }
+
+#[test]
+fn several_bytes_go_out_and_come_in_the_lowest_first() {
+    // w is two bytes (UART_SENDn sends them all); r takes two bytes.
+    let text = "LDmicro0.2\nCYCLE=10000\n\nVAR LIST\n    2 bytes w\nEND\n\n\
+                IO LIST\n    Xa at 1\n    Yq at 3\nEND\n\nPROGRAM\n\
+                RUNG 1\n  CONTACTS Xa 0\n  UART_SENDn w\n  COIL Rbusy 0 0 0\nEND\n\
+                RUNG 2\n  UART_RECV r 2 0\n  COIL Yq 0 0 0\nEND\n";
+    let mut plc = load(text);
+    set(plc.as_mut(), "w", 0x4241);
+    set(plc.as_mut(), "Xa", 1);
+    plc.run_until(SimTime::from_millis(15));
+    assert_eq!(get(plc.as_ref(), "Rbusy"), 1, "on while the bytes go");
+    // Released at once: the word still goes whole (LDmicro 4.x starts
+    // it again at each scan the power is on when it is done).
+    set(plc.as_mut(), "Xa", 0);
+    plc.run_until(SimTime::from_millis(100));
+    let mut out = String::new();
+    plc.serial_sent(0, &mut out);
+    assert_eq!(out, "AB", "the low byte first");
+    assert_eq!(get(plc.as_ref(), "Rbusy"), 0);
+    // Two keys make one word; power passes in the scan the second comes.
+    plc.serial("xy").expect("typed");
+    plc.run_until(SimTime::from_millis(115));
+    assert_eq!((get(plc.as_ref(), "r"), get(plc.as_ref(), "Yq")), (0, 0));
+    plc.run_until(SimTime::from_millis(125));
+    assert_eq!(get(plc.as_ref(), "r"), i64::from(u16::from_le_bytes(*b"xy")));
+    assert_eq!(get(plc.as_ref(), "Yq"), 1);
+    // Written back with their counts, read again the same.
+    let ladder = to_ladder(&parse(text).expect("reads")).expect("draws");
+    let back = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    assert!(back.contains("UART_SEND w 2 0") && back.contains("UART_RECV r 2 0"), "{back}");
+    assert_eq!(to_ladder(&parse(&back).expect("reads")).expect("draws").rungs, ladder.rungs);
+    // Waiting for the bytes (the chip stopped) is refused at its line.
+    let waiting = program("RUNG 1\n  UART_SEND w 2 1\nEND\n");
+    let errors = to_ladder(&parse(&waiting).expect("reads")).expect_err("refused");
+    assert!(errors[0].error.to_string().contains("waiting"), "{}", errors[0].error);
+}
