@@ -768,15 +768,65 @@ fn several_bytes_go_out_and_come_in_the_lowest_first() {
     plc.run_until(SimTime::from_millis(115));
     assert_eq!((get(plc.as_ref(), "r"), get(plc.as_ref(), "Yq")), (0, 0));
     plc.run_until(SimTime::from_millis(125));
-    assert_eq!(get(plc.as_ref(), "r"), i64::from(u16::from_le_bytes(*b"xy")));
+    assert_eq!(
+        get(plc.as_ref(), "r"),
+        i64::from(u16::from_le_bytes(*b"xy"))
+    );
     assert_eq!(get(plc.as_ref(), "Yq"), 1);
     // Written back with their counts, read again the same.
     let ladder = to_ladder(&parse(text).expect("reads")).expect("draws");
     let back = engine::ldmicro::export(&ladder, 10_000).expect("exports");
-    assert!(back.contains("UART_SEND w 2 0") && back.contains("UART_RECV r 2 0"), "{back}");
-    assert_eq!(to_ladder(&parse(&back).expect("reads")).expect("draws").rungs, ladder.rungs);
+    assert!(
+        back.contains("UART_SEND w 2 0") && back.contains("UART_RECV r 2 0"),
+        "{back}"
+    );
+    assert_eq!(
+        to_ladder(&parse(&back).expect("reads"))
+            .expect("draws")
+            .rungs,
+        ladder.rungs
+    );
     // Waiting for the bytes (the chip stopped) is refused at its line.
     let waiting = program("RUNG 1\n  UART_SEND w 2 1\nEND\n");
     let errors = to_ladder(&parse(&waiting).expect("reads")).expect_err("refused");
-    assert!(errors[0].error.to_string().contains("waiting"), "{}", errors[0].error);
+    assert!(
+        errors[0].error.to_string().contains("waiting"),
+        "{}",
+        errors[0].error
+    );
+}
+
+#[test]
+fn travelling_back_shows_what_the_port_had_sent_then_and_typing_replays() {
+    use engine::record::Recorded;
+    // Echo of each key, the transmitter free first (no key dropped).
+    let text = program(
+        "RUNG 1\n  UART_SEND_READY\n  UART_RECV ch\n  COIL Rgot 0 0 0\nEND\n\
+         RUNG 2\n  CONTACTS Rgot 0\n  UART_SEND ch\nEND\n",
+    );
+    let ladder = to_ladder(&parse(&text).expect("reads")).expect("draws");
+    let il = compile(&ladder, MachineId::SoftPlc, Options::default()).expect("compiles");
+    let mut soft = engine::machines::SoftPlc::new();
+    soft.load_text(&il).expect("loads");
+    let mut r = Recorded::new(soft);
+    r.run_until(SimTime::from_millis(50));
+    r.serial("ab").expect("typed");
+    r.run_until(SimTime::from_millis(200));
+    let mut now = String::new();
+    assert_eq!(r.serial_sent(0, &mut now), 2);
+    assert_eq!(now, "ab");
+    // Back before the keys: nothing sent then; live again: both.
+    let first = r.recording().first();
+    assert!(r.show(first + 1));
+    let mut then = String::new();
+    assert_eq!(r.serial_sent(0, &mut then), 0, "{then:?}");
+    // A replayed scan after the keys shows the first byte sent.
+    assert!(r.show(first + 7));
+    then.clear();
+    r.serial_sent(0, &mut then);
+    assert_eq!(then, "a");
+    r.go_live();
+    then.clear();
+    r.serial_sent(0, &mut then);
+    assert_eq!(then, "ab");
 }
