@@ -663,6 +663,18 @@ fn hashigo_console_talks_to_an_ld_files_uart() {
         "{}",
         text(&out.stderr)
     );
+    // More keys than the port holds: refused, saying its limit.
+    let flood = format!("{}\n", "k".repeat(5000));
+    let out = hashigo(
+        &["console", "--machine", "soft-plc", "--program", &ld],
+        &flood,
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("4096 bytes"),
+        "{}",
+        text(&out.stderr)
+    );
 }
 
 #[test]
