@@ -97,6 +97,13 @@ pub const EXAMPLES: &[Example] = &[
         title_ja: "部品カウント・アナログ値の換算と比較",
         text: include_str!("../programs/soft-plc/parts.il"),
     },
+    Example {
+        id: "serial-count",
+        machine: MachineId::SoftPlc,
+        title_en: "LDmicro-style: a count said over the serial port",
+        title_ja: "LDmicro風: カウントをシリアルで表示",
+        text: include_str!("../programs/soft-plc/serial-count.il"),
+    },
 ];
 
 /// The examples of `machine`.

@@ -236,11 +236,15 @@ fn a_soft_plc_ladder_exported_and_opened_again_is_the_same_ladder() {
                 .expect("reads")
         };
         assert_eq!(logic(&back), logic(&ladder), "{name}");
-        // The export declares the instances a ladder used undeclared.
+        // The export declares the instances and the BOOLs a ladder used
+        // undeclared (a name a contact or coil uses undeclared is a BOOL).
+        let plain_bool = |v: &engine::ladder::variables::Variable| {
+            v.data_type == "BOOL" && v.address.is_empty() && v.comment.is_empty()
+        };
         let declared: Vec<_> = back
             .variables
             .iter()
-            .filter(|v| ladder.variables.contains(v) || v.data_type != "CTU")
+            .filter(|v| ladder.variables.contains(v) || (v.data_type != "CTU" && !plain_bool(v)))
             .cloned()
             .collect();
         assert_eq!(declared, ladder.variables, "{name}");
@@ -297,4 +301,50 @@ fn function_boxes_whose_en_is_open_stand_on_the_rail_and_always_run() {
     assert!(logic
         .iter()
         .any(|l| matches!(l.condition, engine::ladder::Net::Leaf(Element::Wire, _))));
+}
+
+#[test]
+fn an_exported_edge_comes_back_as_an_edge_and_a_named_trigger_as_its_box() {
+    use engine::ladder::edit::{parse_entry, Cursor, Edit, Editor, EntryKind};
+    // `a → [myTrig: R_TRIG] → r` (a project's own trigger, a box) and
+    // `a → falling edge → q` (the editor's in-line edge).
+    let mut e = Editor::new(Ladder::default());
+    let mut place = |rung, col, element| {
+        let at = Cursor::new(rung, 0, col);
+        e.apply(Edit::Place { at, element }).expect("places");
+    };
+    let trigger = parse_entry(
+        MachineId::SoftPlc,
+        EntryKind::Instruction,
+        "myTrig: R_TRIG()",
+    )
+    .expect("a box");
+    place(0, 0, Element::no("a"));
+    place(0, 1, trigger);
+    place(0, 2, Element::coil("r"));
+    place(1, 0, Element::no("a"));
+    place(1, 1, Element::Edge { falling: true });
+    place(1, 2, Element::coil("q"));
+    let ladder = e.ladder().clone();
+    let elements = |l: &Ladder| -> Vec<Element> {
+        l.rungs
+            .iter()
+            .flat_map(|r| r.elements().map(|(_, e)| e.clone()).collect::<Vec<_>>())
+            .collect()
+    };
+    let xml = export(&ladder, "Main").expect("exports");
+    assert!(xml.contains("F_TRIG"), "exported as an F_TRIG");
+    let back = import_for(&xml, SOFT).expect("imports");
+    let back_elements = elements(&back);
+    assert!(
+        back_elements.contains(&Element::Edge { falling: true }),
+        "{back_elements:?}"
+    );
+    assert!(
+        back_elements
+            .iter()
+            .any(|e| e.block().is_some_and(|b| b.instance == "myTrig")),
+        "a project's own trigger keeps its box: {back_elements:?}"
+    );
+    assert!(back.variables.iter().all(|v| !v.name.starts_with("F_TRIG")));
 }

@@ -842,3 +842,23 @@ fn travelling_back_shows_what_the_port_had_sent_then_and_typing_replays() {
     r.serial_sent(0, &mut then);
     assert_eq!(then, "ab");
 }
+
+#[test]
+fn the_serial_count_example_says_each_press_and_starts_again_at_r() {
+    let example = engine::examples::EXAMPLES
+        .iter()
+        .find(|e| e.id == "serial-count")
+        .expect("the example");
+    let mut plc = new_plc(MachineId::SoftPlc);
+    plc.load_text(example.text).expect("loads");
+    for (k, on) in [1, 0, 1, 0].into_iter().enumerate() {
+        set(plc.as_mut(), "Xcount", on);
+        plc.run_until(SimTime::from_millis(400 * (k as u64 + 1)));
+    }
+    let mut out = String::new();
+    plc.serial_sent(0, &mut out);
+    assert_eq!(out, "count =      1\r\ncount =      2\r\n");
+    plc.serial("r").expect("typed");
+    plc.run_until(SimTime::from_millis(1700));
+    assert_eq!(get(plc.as_ref(), "count"), 0);
+}

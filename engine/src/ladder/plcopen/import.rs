@@ -126,6 +126,7 @@ pub fn import_pou(
         return Err(errors);
     }
     super::soft_vars::settle(&mut ladder.variables, &carriers, &temps, &names);
+    super::soft_vars::drop_edge_instances(&mut ladder);
     name_devices(&mut ladder, &names, helpers, machine, &mut warnings);
     crate::sort::by_key(&mut warnings, |w| w.line);
     Ok(Imported {

@@ -152,7 +152,9 @@ impl Body {
                 return self.compare_chain(call, (input, out), pos, n.line);
             }
         }
-        let element = as_timer(&call).unwrap_or(Element::Block(call));
+        let element = as_timer(&call)
+            .or_else(|| as_edge(&call))
+            .unwrap_or(Element::Block(call));
         self.wire(input, out, Net::Leaf(element, pos), n.line);
         Ok(())
     }
@@ -398,6 +400,23 @@ fn as_timer(call: &BlockCall) -> Option<Element> {
         name: call.instance.clone(),
         preset_ms,
     })
+}
+
+/// An R_TRIG or F_TRIG box on the power alone, its instance named as an
+/// export names it (`R_TRIG3`): the in-line edge the editor draws for
+/// it (a project's own instance keeps its box).
+fn as_edge(call: &BlockCall) -> Option<Element> {
+    let falling = match call.kind().as_str() {
+        "R_TRIG" => false,
+        "F_TRIG" => true,
+        _ => return None,
+    };
+    let generated = call
+        .instance
+        .strip_prefix(if falling { "F_TRIG" } else { "R_TRIG" })
+        .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()));
+    (generated && call.inputs.is_empty() && call.outputs.is_empty())
+        .then_some(Element::Edge { falling })
 }
 
 /// An element standing at the end of its rung: a box as an output box.

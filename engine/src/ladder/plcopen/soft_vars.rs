@@ -51,6 +51,30 @@ pub(super) fn settle(
     variables.extend(super::soft_rungs::temp_variables(temps, names));
 }
 
+/// Drops the R_TRIG / F_TRIG instances an export named (`R_TRIG3`) that
+/// nothing names any more: their boxes were drawn as in-line edges.
+pub(super) fn drop_edge_instances(ladder: &mut crate::ladder::Ladder) {
+    let mut used = std::collections::HashSet::new();
+    for rung in &ladder.rungs {
+        for (_, element) in rung.elements() {
+            let mut e = element.clone();
+            e.names_mut(|n| {
+                let stem = n.split('.').next().unwrap_or(n);
+                used.insert(stem.to_ascii_uppercase());
+            });
+        }
+    }
+    ladder.variables.retain(|v| {
+        let generated = ["R_TRIG", "F_TRIG"].iter().any(|kind| {
+            v.data_type.eq_ignore_ascii_case(kind)
+                && v.name
+                    .strip_prefix(kind)
+                    .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
+        });
+        !generated || used.contains(&v.name.to_ascii_uppercase())
+    });
+}
+
 /// The variables the `chosen` POUs and the project's configurations
 /// declare, in file order, each once; a declaration the soft PLC does not
 /// take (an array, a structure, a bad address or start value) or a name
