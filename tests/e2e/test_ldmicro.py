@@ -208,3 +208,23 @@ def test_an_ld_files_cycle_becomes_the_soft_plcs_scan(driver, base_url, tmp_path
     Select(el(driver, "machine")).select_by_value("soft-plc")
     wait(driver, lambda: el(driver, "soft-scan").get_attribute("value") == "5")
     assert severe_console_messages(driver) == []
+
+
+def test_the_serial_count_example_talks_in_the_monitor(driver, base_url):
+    from selenium.webdriver.support.ui import Select
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-board"))
+    Select(el(driver, "example")).select_by_value("serial-count")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-count"]'))
+    el(driver, "run").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-monitor"]'))
+    switch = el(driver, "soft-input-IX0-0")
+    switch.click()
+    switch.click()
+    monitor = lambda: el(driver, "soft-monitor").text
+    wait(driver, lambda: "count =      1" in monitor(), message=monitor())
+    el(driver, "soft-monitor-input").send_keys("r\n")
+    switch.click()
+    wait(driver, lambda: monitor().count("count =      1") == 2, message="counted again from 0: " + monitor())
+    assert severe_console_messages(driver) == []
