@@ -92,6 +92,25 @@ def test_an_ld_file_with_hardware_the_page_does_not_simulate_is_refused_at_its_l
     assert severe_console_messages(driver) == []
 
 
+def from_palette(driver, item, opens_with, typed, cell):
+    """A palette item clicked: its entry opens with `opens_with`, takes
+    `typed` and Enter, and the box lands in `cell`."""
+    from selenium.webdriver.common.keys import Keys
+    el(driver, f"palette-{item}").click()
+    entry = wait(driver, lambda: el(driver, "device-input"))
+    assert entry.get_attribute("value") == opens_with
+    entry.send_keys(typed, Keys.ENTER)
+    wait(driver, lambda: opens_with.strip() in el(driver, cell).text)
+
+
+def declare_dint(driver, name):
+    el(driver, "var-new-name").send_keys(name)
+    el(driver, "var-new-type").clear()
+    el(driver, "var-new-type").send_keys("DINT")
+    el(driver, "var-add").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, f'[data-testid="var-{name}"]'))
+
+
 def test_ldmicros_timer_is_in_the_soft_plcs_palette_and_counts_scans(driver, base_url):
     """LD_TON from the palette: 20 scans of 10 ms counted in Tw, then the
     lamp, as LDmicro's TON does."""
@@ -103,17 +122,9 @@ def test_ldmicros_timer_is_in_the_soft_plcs_palette_and_counts_scans(driver, bas
     wait(driver, lambda: el(driver, "soft-board"))
     focus_ladder(driver)
     place(driver, Keys.F5, "%IX0.0")
-    el(driver, "palette-ld-ton").click()
-    entry = wait(driver, lambda: el(driver, "device-input"))
-    assert entry.get_attribute("value") == "LD_TON "
-    entry.send_keys("Tw_ld 20 Tw", Keys.ENTER)
-    wait(driver, lambda: "LD_TON" in el(driver, "cell-0-0-1").text)
+    from_palette(driver, "ld-ton", "LD_TON ", "Tw_ld 20 Tw", "cell-0-0-1")
     # Its count is a word: declared, as every word is.
-    el(driver, "var-new-name").send_keys("Tw")
-    el(driver, "var-new-type").clear()
-    el(driver, "var-new-type").send_keys("DINT")
-    el(driver, "var-add").click()
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-Tw"]'))
+    declare_dint(driver, "Tw")
     focus_ladder(driver, "cell-0-0-2")
     place(driver, Keys.F7, "%QX0.0")
     assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
@@ -227,4 +238,98 @@ def test_the_serial_count_example_talks_in_the_monitor(driver, base_url):
     el(driver, "soft-monitor-input").send_keys("r\n")
     switch.click()
     wait(driver, lambda: monitor().count("count =      1") == 2, message="counted again from 0: " + monitor())
+    assert severe_console_messages(driver) == []
+
+
+# Written for these tests: each rise of Xa adds one to n, shown on a
+# common-cathode digit `seg` and a common-anode digit `an`.
+DIGITS = "\n".join([
+    "LDmicro0.2",
+    "CYCLE=10000",
+    "",
+    "VAR LIST",
+    "    1 bytes seg",
+    "    1 bytes an",
+    "END",
+    "",
+    "IO LIST",
+    "    Xa at 14",
+    "END",
+    "",
+    "PROGRAM",
+    "RUNG",
+    "    CONTACTS Xa 0",
+    "    OSR",
+    "    ADD n n 1",
+    "END",
+    "RUNG",
+    "    PARALLEL",
+    "        7SEGMENTS seg n C",
+    "        7SEGMENTS an n A",
+    "    END",
+    "END",
+    "",
+])
+
+
+def lit_segments(driver, testid):
+    """The segments drawn lit in a digit, as letters (`.` the point)."""
+    return driver.execute_script(
+        "const d = document.querySelector(arguments[0]);"
+        "return [...d.querySelectorAll('svg .seg')].map((s, i) => s.classList.contains('lit') ? 'abcdefg.'[i] : '').join('');",
+        f'[data-testid="{testid}"]')
+
+
+def open_digits(driver, tmp_path):
+    """Opens DIGITS and runs it: a digit on the board for each 7SEGMENTS."""
+    path = tmp_path / "digits.ld"
+    path.write_text(DIGITS)
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-seg"]'),
+         message="the file's names in the variables pane")
+    el(driver, "run").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-digit-seg"]'),
+         message="a digit on the board for each 7SEGMENTS")
+
+
+def test_an_ld_files_7_segment_digits_are_drawn_on_the_board(driver, base_url, tmp_path, artifacts):
+    open_fresh(driver, base_url)
+    open_digits(driver, tmp_path)
+    assert el(driver, "soft-digit-an").get_attribute("data-common") == "A"
+    wait(driver, lambda: el(driver, "soft-digit-seg").get_attribute("data-lit") == "abcdef", message="0")
+    for _ in range(3):
+        el(driver, "soft-input-IX0-0").click()
+        el(driver, "soft-input-IX0-0").click()
+    # 3: a, b, c, d and g, on the anode digit too (its bits inverted).
+    wait(driver, lambda: el(driver, "soft-digit-seg").get_attribute("data-lit") == "abcdg", message="3")
+    assert lit_segments(driver, "soft-digit-seg") == "abcdg"
+    assert lit_segments(driver, "soft-digit-an") == "abcdg"
+    assert el(driver, "soft-digit-an").get_attribute("data-lit") == "abcdg"
+    driver.save_screenshot(str(artifacts / "ldmicro-digits.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_a_digit_from_the_palette_is_drawn_on_the_board(driver, base_url):
+    """LD_SEG7 from the palette on a rung of its own: 5 on the board's
+    digit; the formatted string's item puts its call form in the entry."""
+    from selenium.webdriver.common.keys import Keys
+    from selenium.webdriver.support.ui import Select
+    from test_ladder import focus_ladder, place
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-board"))
+    focus_ladder(driver)
+    from_palette(driver, "ld-seg7", "LD_SEG7 ", "seg_ld 5 0 seg 8", "cell-0-0-0")
+    declare_dint(driver, "seg")
+    focus_ladder(driver, "cell-0-0-1")
+    place(driver, Keys.F7, "%QX0.0")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    el(driver, "run").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-digit-seg"]'))
+    wait(driver, lambda: lit_segments(driver, "soft-digit-seg") == "acdfg", message="5")
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="the power passes the digit's box")
+    focus_ladder(driver, "cell-0-1-0")
+    el(driver, "palette-ld-fmtstr").click()
+    entry = wait(driver, lambda: el(driver, "device-input"))
+    assert entry.get_attribute("value").startswith("fmt_ld: LD_FMTSTR(V := n, FMT := '")
     assert severe_console_messages(driver) == []

@@ -303,3 +303,25 @@ def test_the_cpu_view_on_every_screen(screen, base_url, artifacts):
     assert el(driver, "cpu-block-accumulator").get_attribute("data-active") == "1"
     assert no_sideways_overflow(driver)
     driver.save_screenshot(str(artifacts / f"screen-cpu-{name}.png"))
+
+
+def test_an_ld_files_digits_on_every_screen(screen, base_url, tmp_path, artifacts):
+    """The soft PLC's 7-segment digits (issue #32) on every screen: the
+    board's input pressed, the digits on screen showing the count."""
+    from test_ldmicro import lit_segments, open_digits
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    open_digits(driver, tmp_path)
+    show(driver, touch, "panel")
+    driver.execute_script("document.querySelector('[data-testid=soft-input-IX0-0]').scrollIntoView({block: 'center'})")
+    wait(driver, lambda: on_screen(driver, "soft-input-IX0-0"), message="the input on screen")
+    el(driver, "soft-input-IX0-0").click()
+    driver.execute_script("document.querySelector('[data-testid=soft-digits]').scrollIntoView({block: 'center'})")
+    for digit in ["soft-digit-seg", "soft-digit-an"]:
+        wait(driver, lambda: on_screen(driver, digit), message=f"{digit} on screen")
+        wait(driver, lambda: lit_segments(driver, digit) == "bc", message=f"{digit} shows 1")
+        box = rect(driver, digit)
+        assert box["x"] >= 0 and box["x"] + box["w"] <= box["vw"], box
+    assert no_sideways_overflow(driver)
+    driver.save_screenshot(str(artifacts / f"screen-digits-{name}.png"))

@@ -4,4 +4,5 @@
 
 pub mod console;
 pub mod controls;
+pub mod digit;
 pub mod text_program;

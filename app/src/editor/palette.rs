@@ -183,7 +183,16 @@ const SPECS: &[Spec] = &[
     spec("ld-ctd", "[LD_CTD]", ("LDmicro's down counter: LD_CTD Cd_ld 0 10 Cd", "LDmicro の減算カウンタ: LD_CTD Cd_ld 0 10 Cd"), Entry(Instruction, false, "LD_CTD "), Needs::WordBoxes),
     spec("ld-ctr", "[LD_CTR]", ("LDmicro's circular down counter: LD_CTR Cr_ld 0 9 Cr", "LDmicro の循環減算カウンタ: LD_CTR Cr_ld 0 9 Cr"), Entry(Instruction, false, "LD_CTR "), Needs::WordBoxes),
     spec("ld-uart-send", "[UART SEND]", ("LDmicro's serial send of a byte: LD_UART_SEND send_ld ch", "LDmicro のシリアル送信 (1バイト): LD_UART_SEND send_ld ch"), Entry(Instruction, false, "LD_UART_SEND "), Needs::WordBoxes),
+    spec("ld-rtl", "[LD_RTL]", ("LDmicro's retentive timer counting while off: LD_RTL Tl_ld 49 Tl", "LDmicro のオフ積算タイマ: LD_RTL Tl_ld 49 Tl"), Entry(Instruction, false, "LD_RTL "), Needs::WordBoxes),
+    spec("ld-thi", "[LD_THI]", ("LDmicro's pulse, high for its period after a rise: LD_THI Th_ld 49 Th", "LDmicro のパルス (立上りから期間中オン): LD_THI Th_ld 49 Th"), Entry(Instruction, false, "LD_THI "), Needs::WordBoxes),
+    spec("ld-tlo", "[LD_TLO]", ("LDmicro's pulse, low for its period after a fall: LD_TLO Tf_ld 49 Tf", "LDmicro のパルス (立下りから期間中オフ): LD_TLO Tf_ld 49 Tf"), Entry(Instruction, false, "LD_TLO "), Needs::WordBoxes),
+    spec("ld-osl", "[LD_OSL]", ("LDmicro's one scan low at a fall: LD_OSL osl_ld", "LDmicro の立下り1スキャンオフ: LD_OSL osl_ld"), Entry(Instruction, false, "LD_OSL "), Needs::WordBoxes),
+    spec("ld-osc", "[LD_OSC]", ("LDmicro's oscillator, on every other scan: LD_OSC osc_ld", "LDmicro の発振 (1スキャンおき): LD_OSC osc_ld"), Entry(Instruction, false, "LD_OSC "), Needs::WordBoxes),
+    spec("ld-seg7", "[7SEG]", ("LDmicro's 7-segment digit, drawn on the board: LD_SEG7 seg_ld n 0 seg 8 (source, 0 common cathode or 1 anode, digit variable, its bits)", "LDmicro の7セグメント変換 (ボードに表示): LD_SEG7 seg_ld n 0 seg 8 (元の値, 0 カソードコモン / 1 アノードコモン, 表示変数, ビット数)"), Entry(Instruction, false, "LD_SEG7 "), Needs::WordBoxes),
     spec("ld-uart-recv", "[UART RECV]", ("LDmicro's serial receive of a byte: LD_UART_RECV recv_ld ch", "LDmicro のシリアル受信 (1バイト): LD_UART_RECV recv_ld ch"), Entry(Instruction, false, "LD_UART_RECV "), Needs::WordBoxes),
+    spec("ld-uart-avail", "[UART AVAIL]", ("power while the serial port holds a byte: LD_UART_AVAIL avail_ld", "シリアル受信データありの間導通: LD_UART_AVAIL avail_ld"), Entry(Instruction, false, "LD_UART_AVAIL "), Needs::WordBoxes),
+    spec("ld-uart-ready", "[UART READY]", ("power while the serial port can send: LD_UART_READY ready_ld", "シリアル送信可能の間導通: LD_UART_READY ready_ld"), Entry(Instruction, false, "LD_UART_READY "), Needs::WordBoxes),
+    spec("ld-fmtstr", "[FMT STR]", ("LDmicro's formatted string sent over the serial port: fmt_ld: LD_FMTSTR(V := n, FMT := 'n = \\3$R$N')", "LDmicro の書式付き文字列のシリアル送信: fmt_ld: LD_FMTSTR(V := n, FMT := 'n = \\3$R$N')"), Entry(Instruction, false, "fmt_ld: LD_FMTSTR(V := n, FMT := 'n = \\3$R$N')"), Needs::WordBoxes),
 ];
 
 /// The palette of `machine` in `lang`: every item, with what the machine
@@ -315,6 +324,23 @@ mod tests {
             !ids(MachineId::Io86a).contains(&"add"),
             "words only on the soft PLC"
         );
+    }
+
+    #[test]
+    fn every_ldmicro_entrys_example_is_a_box_the_soft_plc_takes() {
+        use engine::ladder::edit::{parse_entry, EntryKind};
+        let ld: Vec<Item> = items(MachineId::SoftPlc, Lang::En)
+            .into_iter()
+            .filter(|i| i.id.starts_with("ld-"))
+            .collect();
+        assert!(ld.len() >= 18, "{}", ld.len());
+        for item in ld {
+            // The example follows the name's colon; a note in brackets ends it.
+            let (_, example) = item.name.split_once(": ").expect(item.id);
+            let example = example.split(" (").next().unwrap_or(example);
+            let made = parse_entry(MachineId::SoftPlc, EntryKind::Instruction, example);
+            assert!(made.is_ok(), "{}: {example}: {made:?}", item.id);
+        }
     }
 
     #[test]

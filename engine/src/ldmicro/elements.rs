@@ -149,6 +149,7 @@ pub(super) fn part(
             return Err(LdError::Hardware("TIME2DELAY".into()))
         }
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
+        Ld::Segments { segments, .. } => return Err(LdError::NoSegmentTable(*segments)),
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
 }
@@ -413,7 +414,8 @@ fn timer_or_counter(
 }
 
 /// LDmicro's word operations the IEC functions lack (`BIN2BCD`,
-/// `BCD2BIN`, `SWAP`, `OPPOSITE`, `SR0`, `SET_BIT`, `CLEAR_BIT`) as its
+/// `BCD2BIN`, `SWAP`, `OPPOSITE`, `SR0`, `SET_BIT`, `CLEAR_BIT`,
+/// `7SEGMENTS`) as its
 /// `LD_` block on the destination, in the destination's width from the
 /// `VAR LIST` (`bits`, in bytes); `IF_BIT_SET`/`IF_BIT_CLEAR` as a block
 /// passing power while the bit is as asked; arithmetic and `MOVE` into a
@@ -427,8 +429,34 @@ pub(super) fn word_op(
     if let Some(built) = uart_block(e, bits, instance) {
         return Some(built);
     }
-    let narrow = |dest: &str| bits(dest) < 4;
-    let (kind, a, b, dest) = match e {
+    let (kind, a, b, dest) = word_op_operands(e, &|dest| bits(dest) < 4)?;
+    let built = (|| -> Result<Part, LdError> {
+        let mut inputs = vec![("A", operand(a)?), ("B", operand(b)?)];
+        let mut outputs = Vec::new();
+        if kind == "LD_SEG7" && !is_number(a) {
+            // LDmicro writes the source's table index back first (a
+            // source that is the destination too ends as the segments).
+            outputs.push(("A", a.trim().to_string()));
+        }
+        if let Some(d) = dest {
+            inputs.push(("D", d.to_string()));
+            inputs.push(("W", (bits(d) * 8).to_string()));
+            outputs.push(("D", d.to_string()));
+        }
+        let call = ld_box(kind, instance("op"), inputs, outputs);
+        Ok(Part::Condition(Element::Block(call)))
+    })();
+    Some(built)
+}
+
+/// Which `LD_` block a word operation is, and its operands `A`, `B` and
+/// destination (none for a bit test); `narrow` says whether a
+/// destination is narrower than a DINT.
+fn word_op_operands<'e>(
+    e: &'e Ld,
+    narrow: &dyn Fn(&str) -> bool,
+) -> Option<(&'static str, &'e str, &'e str, Option<&'e str>)> {
+    Some(match e {
         Ld::Math { op, dest, a, b } if *op != MathOp::Sr0 && narrow(dest) => {
             let kind = match op {
                 MathOp::Add => "LD_ADD",
@@ -485,20 +513,22 @@ pub(super) fn word_op(
             let kind = if *set { "LD_IFBIT" } else { "LD_IFNBIT" };
             (kind, var.as_str(), bit.as_str(), None)
         }
-        _ => return None,
-    };
-    let built = (|| -> Result<Part, LdError> {
-        let mut inputs = vec![("A", operand(a)?), ("B", operand(b)?)];
-        let mut outputs = Vec::new();
-        if let Some(d) = dest {
-            inputs.push(("D", d.to_string()));
-            inputs.push(("W", (bits(d) * 8).to_string()));
-            outputs.push(("D", d.to_string()));
+        Ld::Segments {
+            segments: 7,
+            dest,
+            src,
+            common,
+        } => {
+            // B: 1 for a common-anode digit (LDmicro saves C or A).
+            let anode = if common.eq_ignore_ascii_case(&'A') {
+                "1"
+            } else {
+                "0"
+            };
+            ("LD_SEG7", src.as_str(), anode, Some(dest.as_str()))
         }
-        let call = ld_box(kind, instance("op"), inputs, outputs);
-        Ok(Part::Condition(Element::Block(call)))
-    })();
-    Some(built)
+        _ => return None,
+    })
 }
 
 /// An arithmetic, move or comparison element as the soft PLC's box.

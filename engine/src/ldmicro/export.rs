@@ -360,6 +360,10 @@ impl Writer {
                 format!("{name} {} {} {}", input("D"), input("A"), input("B"))
             }
             "MOVE" | "NOT" | "NEG" => format!("{name} {} {}", input("D"), input("A")),
+            "SEG7" => {
+                let common = if input("B") == "0" { 'C' } else { 'A' };
+                format!("7SEGMENTS {} {} {common}", input("D"), input("A"))
+            }
             "SETBIT" => format!("SET_BIT {} {}", input("D"), input("B")),
             "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),
             "IFBIT" => format!("IF_BIT_SET {} {}", input("A"), input("B")),

@@ -397,6 +397,7 @@ fn names_used(e: &Ld) -> Vec<(String, Role)> {
         Ld::SetPwm { duty, .. } => numbers(&[duty]),
         Ld::UartSend { name, .. } | Ld::UartRecv { name, .. } => numbers(&[name]),
         Ld::FormattedString { var, .. } => numbers(&[var]),
+        Ld::Segments { dest, src, .. } => numbers(&[dest, src]),
         _ => Vec::new(),
     }
 }

@@ -239,7 +239,7 @@ fn device(l: &Line) -> Result<Element, LdError> {
         ("SET_PWM", _) => pwm(l),
         ("UART_RECV" | "UART_SEND" | "UART_RECVn" | "UART_SENDn", _) => uart(l),
         ("7SEGMENTS" | "9SEGMENTS" | "14SEGMENTS" | "16SEGMENTS", [dest, src, common])
-            if common.len() == 1 =>
+            if matches!(*common, "C" | "A" | "c" | "a") =>
         {
             Ok(Element::Segments {
                 segments: l.keyword.trim_end_matches("SEGMENTS").parse().unwrap_or(7),

@@ -14,10 +14,11 @@
 
 use super::data::{Data, DataType};
 use super::ld_format::{Format, Sender};
+use super::ld_words::word_op;
 use super::uart::Uart;
 
 /// The LDmicro blocks by name.
-pub const NAMES: [&str; 43] = [
+pub const NAMES: [&str; 44] = [
     "LD_TON",
     "LD_TOF",
     "LD_RTO",
@@ -61,6 +62,7 @@ pub const NAMES: [&str; 43] = [
     "LD_UART_AVAIL",
     "LD_UART_READY",
     "LD_FMTSTR",
+    "LD_SEG7",
 ];
 
 /// The input of a block given as a text (LDmicro's formatted string:
@@ -114,6 +116,8 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
         Some(Family::Counter) => vec![("Q", Bool), ("C", Dint)],
         Some(Family::Shot) => vec![("Q", Bool)],
         Some(Family::Toggle) => vec![("Q", Bool), ("V", Bool)],
+        // A segment digit's source comes back as LDmicro rewrites it.
+        Some(Family::Op) if block == "LD_SEG7" => vec![("Q", Bool), ("D", Dint), ("A", Dint)],
         Some(Family::Op) => vec![("Q", Bool), ("D", Dint)],
         Some(Family::Serial) if block == "LD_UART_RECV" => vec![("Q", Bool), ("V", Dint)],
         Some(Family::Serial) => vec![("Q", Bool)],
@@ -147,7 +151,7 @@ fn family(block: &str) -> Option<Family> {
         "LD_BIN2BCD" | "LD_BCD2BIN" | "LD_SWAP" | "LD_OPPOSITE" | "LD_SR0" | "LD_SETBIT"
         | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" | "LD_ADD" | "LD_SUB" | "LD_MUL" | "LD_DIV"
         | "LD_MOD" | "LD_AND" | "LD_OR" | "LD_XOR" | "LD_SHL" | "LD_SHR" | "LD_ROL" | "LD_ROR"
-        | "LD_MOVE" | "LD_NOT" | "LD_NEG" => Some(Family::Op),
+        | "LD_MOVE" | "LD_NOT" | "LD_NEG" | "LD_SEG7" => Some(Family::Op),
         _ => None,
     }
 }
@@ -244,6 +248,7 @@ impl LdBlock {
         match (self.kind, i) {
             (_, 0) => Data::Bool(self.q),
             (Kind::Toggle, _) => Data::Bool(self.value != 0),
+            (Kind::Op("SEG7"), 2) => Data::integer(DataType::Dint, i128::from(self.word)),
             _ => Data::integer(DataType::Dint, i128::from(self.value)),
         }
     }
@@ -269,13 +274,24 @@ impl LdBlock {
             Kind::Osl | Kind::Osc => self.shot(s),
             Kind::Op(op) => {
                 let (a, b, d, w) = (word(1), word(2), word(3), word(4));
+                let w = if w <= 0 { 16 } else { w };
                 self.value = d;
+                self.word = a;
                 match op {
+                    "SEG7" => {
+                        if s {
+                            // B: 0 common cathode, else common anode.
+                            let (index, segments) = super::segments::seven(a, b != 0);
+                            self.word = index;
+                            self.value = word_op("MOVE", segments, 0, d, w);
+                        }
+                        s
+                    }
                     "IFBIT" => s && (a >> b.clamp(0, 63)) & 1 == 1,
                     "IFNBIT" => s && (a >> b.clamp(0, 63)) & 1 == 0,
                     _ => {
                         if s {
-                            self.value = word_op(op, a, b, d, if w <= 0 { 16 } else { w });
+                            self.value = word_op(op, a, b, d, w);
                         }
                         s
                     }
@@ -571,80 +587,4 @@ impl LdBlock {
             }
         }
     }
-}
-
-/// LDmicro's word operation `op` on `a` and `b` (`d` the destination as
-/// it is) in a `bits`-wide signed word, wrapped to it: as LDmicro's
-/// simulator computes in 32 bits and keeps what the destination's size
-/// holds. A division or remainder by zero leaves `d` as it was.
-fn word_op(op: &str, a: i64, b: i64, d: i64, bits: i64) -> i64 {
-    let bits = bits.clamp(1, 32) as u32;
-    let mask: u64 = (1u64 << bits) - 1;
-    let unsigned = |v: i64| (v as u64) & mask;
-    let shift = b.clamp(0, 63) as u32;
-    let rotate = |left: bool| {
-        let n = (b.rem_euclid(i64::from(bits))) as u32;
-        let v = unsigned(a);
-        if n == 0 {
-            v
-        } else if left {
-            (v << n) | (v >> (bits - n))
-        } else {
-            (v >> n) | (v << (bits - n))
-        }
-    };
-    let r: u64 = match op {
-        "ADD" => a.wrapping_add(b) as u64,
-        "SUB" => a.wrapping_sub(b) as u64,
-        "MUL" => a.wrapping_mul(b) as u64,
-        "DIV" => a.checked_div(b).unwrap_or(d) as u64,
-        "MOD" => a.checked_rem(b).unwrap_or(d) as u64,
-        "AND" => (a & b) as u64,
-        "OR" => (a | b) as u64,
-        "XOR" => (a ^ b) as u64,
-        "SHL" => (a as u64) << shift,
-        // LDmicro's SHR keeps the sign (SR0 fills with zeros).
-        "SHR" => (a >> shift) as u64,
-        "ROL" => rotate(true),
-        "ROR" => rotate(false),
-        "MOVE" => a as u64,
-        "NOT" => !a as u64,
-        "NEG" => a.wrapping_neg() as u64,
-        "BIN2BCD" => {
-            let (mut v, mut out, mut shift) = (a.unsigned_abs(), 0u64, 0);
-            while v > 0 && shift < 64 {
-                out |= (v % 10) << shift;
-                v /= 10;
-                shift += 4;
-            }
-            out
-        }
-        "BCD2BIN" => {
-            let (mut v, mut out, mut scale) = (unsigned(a), 0u64, 1u64);
-            while v > 0 {
-                out = out.wrapping_add((v & 0xF).wrapping_mul(scale));
-                v >>= 4;
-                scale = scale.wrapping_mul(10);
-            }
-            out
-        }
-        "SWAP" => {
-            let bytes = (bits / 8).max(1);
-            let mut v = unsigned(a);
-            let mut out = 0u64;
-            for _ in 0..bytes {
-                out = (out << 8) | (v & 0xFF);
-                v >>= 8;
-            }
-            out
-        }
-        "OPPOSITE" => unsigned(a).reverse_bits() >> (64 - bits),
-        "SR0" => unsigned(a) >> b.clamp(0, 63),
-        "SETBIT" => unsigned(d) | (1u64 << b.clamp(0, 63)),
-        "CLRBIT" => unsigned(d) & !(1u64 << b.clamp(0, 63)),
-        _ => unsigned(d),
-    } & mask;
-    // Back to a signed word of that width.
-    let sign = 1u64 << (bits - 1);
-    (r ^ sign) as i64 - sign as i64
 }

@@ -13,6 +13,7 @@ pub mod data;
 pub mod il;
 pub mod ld_blocks;
 pub mod ld_format;
+mod ld_words;
 pub mod listing;
 pub mod literal;
 pub mod machine;
@@ -21,6 +22,7 @@ pub mod plc;
 pub mod pou;
 pub mod program;
 pub mod scan;
+pub mod segments;
 pub mod uart;
 pub mod vars;
 

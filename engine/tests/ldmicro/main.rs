@@ -5,3 +5,4 @@ mod blocks;
 mod common;
 mod read;
 mod run;
+mod segments;

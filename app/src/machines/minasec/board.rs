@@ -9,6 +9,7 @@ use leptos::ev;
 use leptos::prelude::*;
 
 use crate::chrome::controls::{Knob, Led, Momentary, Toggle};
+use crate::chrome::digit::Digit;
 use crate::machines::minasec::MinasecCtx;
 use crate::state::Ctx;
 
@@ -383,8 +384,8 @@ fn CounterPanel() -> impl IntoView {
                     <span class="sr-only">
                         {move || digits.get().map(|(a, b)| format!("{a}{b}")).unwrap_or_default()}
                     </span>
-                    <Digit value=Signal::derive(move || digits.get().map(|d| d.0)) />
-                    <Digit value=Signal::derive(move || digits.get().map(|d| d.1)) />
+                    <Digit lit=Signal::derive(move || digits.get().map_or(0, |d| seven_segments(d.0))) />
+                    <Digit lit=Signal::derive(move || digits.get().map_or(0, |d| seven_segments(d.1))) />
                 </div>
                 <div class="rotaries">
                     {rotary(0, "counter-set-tens")}
@@ -400,43 +401,5 @@ fn CounterPanel() -> impl IntoView {
                 />
             </div>
         </div>
-    }
-}
-
-/// One 7-segment digit; segments a..g as the 74HC4511 lights them.
-#[component]
-fn Digit(value: Signal<Option<u8>>) -> impl IntoView {
-    // (x, y, width, height) of segments a..g in a 20×36 cell.
-    const SEGMENTS: [(u8, u8, u8, u8); 7] = [
-        (3, 0, 14, 3),
-        (17, 3, 3, 13),
-        (17, 19, 3, 13),
-        (3, 32, 14, 3),
-        (0, 19, 3, 13),
-        (0, 3, 3, 13),
-        (3, 16, 14, 3),
-    ];
-    let lit = move || value.get().map_or(0, seven_segments);
-    view! {
-        <svg viewBox="-2 -2 24 40" class="digit" aria-hidden="true">
-            {SEGMENTS
-                .iter()
-                .enumerate()
-                .map(|(i, &(x, y, w, h))| {
-                    let on = Signal::derive(move || lit() >> i & 1 != 0);
-                    view! {
-                        <rect
-                            x=x
-                            y=y
-                            width=w
-                            height=h
-                            rx="1"
-                            class="seg"
-                            class:lit=on
-                        ></rect>
-                    }
-                })
-                .collect_view()}
-        </svg>
     }
 }

@@ -1,7 +1,8 @@
 //! The soft PLC workspace (issue #31): a board built from the I/O its
 //! program names — a switch and a push button for each `%IX` input, a
 //! lamp for each `%QX` output, a slider for each word input, a gauge for
-//! each word output — beside the variables pane and the program pane in
+//! each word output, a 7-segment digit for each variable an LDmicro
+//! `7SEGMENTS` writes — beside the variables pane and the program pane in
 //! Instruction List. The bits `%IX0.0–%IX0.7` and `%QX0.0–%QX0.7` are
 //! always on the board (a small PLC's 8 in / 8 out), so a new ladder has
 //! something to wire to; a program's other I/O is added after them.
@@ -19,7 +20,7 @@ use crate::state::{put, Ctx};
 use crate::storage;
 
 mod rows;
-use rows::{GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
+use rows::{DigitView, GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
 
 /// Where the workspace's program is saved (`SavedText`); nothing was
 /// ever saved under the legacy key.
@@ -106,11 +107,26 @@ pub struct Terminal {
     pub held: RwSignal<bool>,
 }
 
+/// A 7-segment digit on the board, wired to a variable an LDmicro
+/// `7SEGMENTS` writes.
+#[derive(Clone)]
+pub struct DigitRow {
+    /// The variable.
+    pub name: String,
+    /// Common anode: a segment lights when its bit is 0.
+    pub anode: bool,
+    pub device: Option<Device>,
+    /// The variable's value on the machine.
+    pub value: RwSignal<i64>,
+}
+
 /// What the soft PLC workspace's components share.
 #[derive(Clone, Copy)]
 pub struct SoftCtx {
     pub sim: StoredValue<Simulator<SoftPlc>, LocalStorage>,
     pub terminals: RwSignal<Vec<Terminal>>,
+    /// The digits the program's `7SEGMENTS` blocks drive.
+    pub digits: RwSignal<Vec<DigitRow>>,
     pub text: RwSignal<String>,
     /// The serial monitor, shown while the program uses the UART.
     pub serial: RwSignal<bool>,
@@ -129,6 +145,7 @@ impl SoftCtx {
         let ctx = SoftCtx {
             sim: StoredValue::new_local(Simulator::new(SoftPlc::new())),
             terminals: RwSignal::new(Vec::new()),
+            digits: RwSignal::new(Vec::new()),
             text: RwSignal::new(text),
             serial: RwSignal::new(false),
             console: RwSignal::new(String::new()),
@@ -209,6 +226,13 @@ impl SoftCtx {
                     }
                 }
             });
+            self.digits.with_untracked(|ds| {
+                for d in ds {
+                    if let Some(device) = d.device {
+                        put(d.value, s.machine().read(device).as_i64());
+                    }
+                }
+            });
             let seen = self.console_seen.get_value();
             let mut sent = String::new();
             let total = s.machine().serial_sent(seen, &mut sent);
@@ -275,6 +299,17 @@ impl SoftCtx {
                     .map_or(String::new(), |v| v.name.clone())
             };
             put(self.serial, program.uses_serial());
+            let digits: Vec<DigitRow> = program
+                .segment_displays()
+                .into_iter()
+                .map(|d| DigitRow {
+                    device: plc.device(&d.name).ok(),
+                    name: d.name,
+                    anode: d.anode,
+                    value: RwSignal::new(0),
+                })
+                .collect();
+            self.digits.set(digits);
             board_addresses(program.io())
                 .into_iter()
                 .filter_map(|a| {
@@ -408,6 +443,12 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                     <For each=of(TerminalKind::Gauge) key=|t| (t.address.clone(), t.name.clone())
                         children=move |term| view! { <GaugeRow term /> } />
                 </ul>
+                <Show when=move || soft.digits.with(|d| !d.is_empty())>
+                    <ul class="soft-digits seg7" data-testid="soft-digits">
+                        <For each=move || soft.digits.get() key=|d| (d.name.clone(), d.anode)
+                            children=move |digit| view! { <DigitView digit /> } />
+                    </ul>
+                </Show>
             </section>
             {ladder.map(|l| view! { <crate::editor::variables::VariablesPane ctx=l /> })}
             <Show when=move || soft.serial.get()>

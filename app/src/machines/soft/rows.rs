@@ -4,8 +4,9 @@
 
 use leptos::prelude::*;
 
-use super::{hook, SoftCtx, Terminal, SLIDER_MAX};
+use super::{hook, DigitRow, SoftCtx, Terminal, SLIDER_MAX};
 use crate::chrome::controls::{Led, Momentary};
+use crate::chrome::digit::Digit;
 use crate::state::{put, Ctx};
 
 /// The cyclic task's period, in ms (fractions for an LDmicro file's
@@ -148,6 +149,27 @@ pub(super) fn GaugeRow(term: Terminal) -> impl IntoView {
                 data-testid=format!("soft-gauge-{}", hook(&term.address))
                 data-value=move || value.get().to_string()></meter>
             <output class="soft-number">{move || value.get().to_string()}</output>
+        </li>
+    }
+}
+
+/// A digit wired to a variable: the segments it lights, named for tests
+/// and screen readers (`abcdefg.`).
+#[component]
+pub(super) fn DigitView(digit: DigitRow) -> impl IntoView {
+    use engine::softplc::segments::{letters, lit};
+    let (value, anode) = (digit.value, digit.anode);
+    let bits = Signal::derive(move || lit(value.get(), anode));
+    let face = move || letters(bits.get());
+    let common = if anode { "A" } else { "C" };
+    let name = digit.name.clone();
+    view! {
+        <li class="soft-digit" data-testid=format!("soft-digit-{}", digit.name)
+            data-lit=face data-common=common>
+            <Digit lit=bits />
+            <span class="soft-label" title=move || format!("{name}: {}", face())>
+                {digit.name.clone()}
+            </span>
         </li>
     }
 }

@@ -149,10 +149,12 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
             let both: Vec<(String, String)> = call
                 .inputs
                 .iter()
-                .filter(|(pin, _)| {
-                    crate::softplc::pins::outputs(&call.kind())
-                        .iter()
-                        .any(|(o, _)| o == pin)
+                .filter(|(pin, operand)| {
+                    // A constant given (a digit's source) is only read.
+                    crate::ladder::block::is_variable(operand)
+                        && crate::softplc::pins::outputs(&call.kind())
+                            .iter()
+                            .any(|(o, _)| o == pin)
                 })
                 .cloned()
                 .collect();
@@ -239,6 +241,14 @@ mod tests {
         // one sent is only read.
         let e = parse_box("LD_UART_RECV recv_ld ch").expect("reads");
         assert_eq!(call(&e).outputs, vec![("V".into(), "ch".into())]);
+        // A digit: the source's index back first, then the segments.
+        let e = parse_box("LD_SEG7 seg_ld n 0 seg 8").expect("reads");
+        assert_eq!(
+            call(&e).outputs,
+            vec![("A".into(), "n".into()), ("D".into(), "seg".into())]
+        );
+        let e = parse_box("LD_SEG7 seg_ld 72 1 seg 8").expect("reads");
+        assert_eq!(call(&e).outputs, vec![("D".into(), "seg".into())]);
         let e = parse_box("f_ld: LD_FMTSTR(V := n, FMT := 'Hi, \\3 $'x$' => ')").expect("reads");
         assert_eq!(
             call(&e).inputs,

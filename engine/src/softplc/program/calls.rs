@@ -3,7 +3,7 @@
 
 use super::check::find_pin;
 use super::{LoadError, Named, Program, Src, Step};
-use crate::softplc::data::DataType;
+use crate::softplc::data::{Data, DataType};
 use crate::softplc::il::{Line, Operand};
 use crate::softplc::ld_blocks::text_input;
 use crate::softplc::ld_format::Format;
@@ -148,5 +148,50 @@ impl Program {
             )));
         }
         Ok(slot)
+    }
+}
+
+impl Program {
+    /// The digits the board draws: each variable an LDmicro `7SEGMENTS`
+    /// block (`LD_SEG7`) writes, once, in program order, with whether
+    /// the digit is common-anode (its `B` a constant other than 0).
+    pub fn segment_displays(&self) -> Vec<crate::softplc::segments::Display> {
+        let mut out: Vec<crate::softplc::segments::Display> = Vec::new();
+        for step in &self.steps {
+            let Step::Cal {
+                block,
+                inputs: ins,
+                outputs: outs,
+                ..
+            } = step
+            else {
+                continue;
+            };
+            if self.block_names[*block].1 != "LD_SEG7" {
+                continue;
+            }
+            let kind = "LD_SEG7";
+            let at =
+                |pins: &[(&str, DataType)], pin: &str| pins.iter().position(|(n, _)| *n == pin);
+            let (Some(d), Some(b)) = (at(&outputs(kind), "D"), at(&inputs(kind), "B")) else {
+                continue;
+            };
+            let Some(slot) = outs.iter().find(|(o, _)| *o == d).map(|(_, s)| *s) else {
+                continue;
+            };
+            let Some((name, _)) = self.names.iter().find(|(_, s)| *s == slot) else {
+                continue;
+            };
+            let anode = ins
+                .iter()
+                .any(|(i, src)| *i == b && matches!(src, Src::Const(Data::Int(_, v)) if *v != 0));
+            if !out.iter().any(|d| d.name.eq_ignore_ascii_case(name)) {
+                out.push(crate::softplc::segments::Display {
+                    name: name.clone(),
+                    anode,
+                });
+            }
+        }
+        out
     }
 }

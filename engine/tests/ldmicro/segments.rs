@@ -1,0 +1,130 @@
+//! LDmicro's `7SEGMENTS dest src common` on the soft PLC (issue #32):
+//! the segments a character lights, inverted for a common-anode digit,
+//! in the destination's width; the source written back as LDmicro's code
+//! writes it; back out as `.ld`; and the displays it cannot have.
+
+use engine::ldmicro::{parse, to_ladder};
+use engine::softplc::segments::{letters, lit};
+use engine::SimTime;
+
+use crate::run::{get, load, set};
+
+/// A file whose presses of `Xa` count `n`, shown on a common-cathode
+/// digit `seg` and a common-anode `anode` (one byte each); `d` is its own
+/// source; `deg` shows `°`; `big` is past the table; `h` is a letter.
+const COUNTER: &str = "LDmicro0.2\nCYCLE=10000\n\nVAR LIST\n    1 bytes seg\n    1 bytes anode\n    2 bytes n\nEND\n\n\
+    IO LIST\n    Xa at 1\n    Yg at 2\nEND\n\nPROGRAM\n\
+    RUNG 1\n  CONTACTS Xa 0\n  OSR\n  ADD n n 1\nEND\n\
+    RUNG 2\n  PARALLEL\n    7SEGMENTS seg n C\n    7SEGMENTS anode n A\n  END\nEND\n\
+    RUNG 3\n  MOVE d 3\n  7SEGMENTS d d C\nEND\n\
+    RUNG 4\n  MOVE ch 176\n  7SEGMENTS deg ch C\nEND\n\
+    RUNG 5\n  MOVE big 300\n  7SEGMENTS blank big C\nEND\n\
+    RUNG 6\n  7SEGMENTS h 'H' C\nEND\n\
+    RUNG 7\n  IF_BIT_SET seg 6\n  COIL Yg 0 0 0\nEND\n";
+
+#[test]
+fn a_count_shown_on_a_digit_lights_its_segments_and_the_anode_digit_the_inverse() {
+    let mut plc = load(COUNTER);
+    let mut scan = 0u64;
+    let mut press = |plc: &mut dyn engine::plc::Plc| {
+        for level in [1, 0] {
+            set(plc, "Xa", level);
+            scan += 1;
+            plc.run_until(SimTime::from_millis(10 * scan + 5));
+        }
+    };
+    press(plc.as_mut());
+    // n = 1: b and c, on both digits as drawn.
+    let face =
+        |plc: &dyn engine::plc::Plc, name: &str, anode: bool| letters(lit(get(plc, name), anode));
+    assert_eq!(get(plc.as_ref(), "n"), 1);
+    assert_eq!(face(plc.as_ref(), "seg", false), "bc");
+    assert_eq!(face(plc.as_ref(), "anode", true), "bc");
+    // The anode digit's byte is the usual 0xF9, signed in one byte.
+    assert_eq!(get(plc.as_ref(), "anode"), 0xF9 - 256);
+    assert_eq!(get(plc.as_ref(), "Yg"), 0, "no g on a 1");
+    for _ in 1..8 {
+        press(plc.as_mut());
+    }
+    assert_eq!(face(plc.as_ref(), "seg", false), "abcdefg", "8");
+    assert_eq!(get(plc.as_ref(), "Yg"), 1, "g lit, read back by IF_BIT_SET");
+    for _ in 8..26 {
+        press(plc.as_mut());
+    }
+    // 26 is past the hexadecimal digits: A (10) with its point.
+    assert_eq!(face(plc.as_ref(), "seg", false), "abcefg.");
+    // Its own source: the index written first, then the segments of 3.
+    assert_eq!(face(plc.as_ref(), "d", false), "abcdg");
+    // 176 is the degree sign, and the source becomes its place, 128.
+    assert_eq!(face(plc.as_ref(), "deg", false), "abfg");
+    assert_eq!(get(plc.as_ref(), "ch"), 128);
+    // Past the table: a space, and the source becomes 32.
+    assert_eq!(face(plc.as_ref(), "blank", false), "");
+    assert_eq!(get(plc.as_ref(), "big"), 32);
+    assert_eq!(face(plc.as_ref(), "h", false), "bcefg", "'H'");
+}
+
+#[test]
+fn a_digit_goes_back_out_as_the_same_7segments_lines() {
+    let ladder = to_ladder(&parse(COUNTER).expect("reads")).expect("draws");
+    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    for line in [
+        "7SEGMENTS seg n C",
+        "7SEGMENTS anode n A",
+        "7SEGMENTS d d C",
+        "7SEGMENTS h 72 C",
+    ] {
+        assert!(out.contains(line), "{line}\n{out}");
+    }
+    let again = to_ladder(&parse(&out).expect("reads")).expect("draws");
+    assert_eq!(again.rungs, ladder.rungs);
+}
+
+#[test]
+fn nine_fourteen_and_sixteen_segments_are_refused_as_ldmicro_never_compiled_them() {
+    for n in [9, 14, 16] {
+        let text = format!(
+            "LDmicro0.2\nCYCLE=10000\n\nPROGRAM\nRUNG 1\n  MOVE c 65\nEND\nRUNG 2\n  {n}SEGMENTS d c C\nEND\n"
+        );
+        let errors = to_ladder(&parse(&text).expect("reads")).expect_err("refused");
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert_eq!(errors[0].line, 9);
+        let said = errors[0].error.to_string();
+        assert!(
+            said.starts_with(&format!("{n}SEGMENTS: LDmicro compiles only 7-segment")),
+            "{said}"
+        );
+    }
+    // A common that is neither C nor A is no LDmicro line.
+    let text = "LDmicro0.2\nCYCLE=10000\n\nPROGRAM\nRUNG 1\n  7SEGMENTS d c X\nEND\n";
+    let errors = parse(text).expect_err("refused");
+    assert_eq!(errors[0].line, 6);
+    assert!(
+        errors[0].error.to_string().contains("C or A"),
+        "{}",
+        errors[0].error
+    );
+}
+
+#[test]
+fn the_board_draws_a_digit_for_each_variable_a_7segments_writes() {
+    use engine::ladder::compile::{compile, Options};
+    let ladder = to_ladder(&parse(COUNTER).expect("reads")).expect("draws");
+    let il = compile(&ladder, engine::MachineId::SoftPlc, Options::default()).expect("compiles");
+    let program = engine::softplc::Program::load(&il).expect("loads");
+    let shown: Vec<(String, bool)> = program
+        .segment_displays()
+        .into_iter()
+        .map(|d| (d.name, d.anode))
+        .collect();
+    let want = [
+        ("seg", false),
+        ("anode", true),
+        ("d", false),
+        ("deg", false),
+        ("blank", false),
+        ("h", false),
+    ];
+    let want: Vec<(String, bool)> = want.iter().map(|(n, a)| (n.to_string(), *a)).collect();
+    assert_eq!(shown, want, "{il}");
+}
