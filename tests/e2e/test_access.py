@@ -88,3 +88,12 @@ def test_japanese_mode_names_cells_palette_and_lamps_in_japanese(driver, base_ur
     assert "データ命令がありません" in el(driver, "palette-mov").get_attribute("title")
     assert el(driver, "lamp-Y00").get_attribute("aria-label").endswith("消灯")
     assert el(driver, "break-input").get_attribute("placeholder").startswith("例")
+
+
+def test_the_soft_plcs_7_segment_digits_pass_axe(driver, base_url, tmp_path):
+    """An LDmicro file's digits on the soft PLC's board (issue #32)."""
+    from test_ldmicro import open_digits
+    driver.set_window_size(1366, 768)
+    open_fresh(driver, base_url)
+    open_digits(driver, tmp_path)
+    assert violations(driver) == []

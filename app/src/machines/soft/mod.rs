@@ -443,12 +443,15 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                     <For each=of(TerminalKind::Gauge) key=|t| (t.address.clone(), t.name.clone())
                         children=move |term| view! { <GaugeRow term /> } />
                 </ul>
-                <Show when=move || soft.digits.with(|d| !d.is_empty())>
-                    <ul class="soft-digits seg7" data-testid="soft-digits">
-                        <For each=move || soft.digits.get() key=|d| (d.name.clone(), d.anode)
-                            children=move |digit| view! { <DigitView digit /> } />
-                    </ul>
-                </Show>
+                // Rebuilt only when a program is loaded: no keyed list needed.
+                {move || {
+                    let digits = soft.digits.get();
+                    (!digits.is_empty()).then(|| view! {
+                        <ul class="soft-digits seg7" data-testid="soft-digits">
+                            {digits.into_iter().map(|digit| view! { <DigitView digit /> }).collect_view()}
+                        </ul>
+                    })
+                }}
             </section>
             {ladder.map(|l| view! { <crate::editor::variables::VariablesPane ctx=l /> })}
             <Show when=move || soft.serial.get()>
