@@ -242,7 +242,8 @@ def test_the_serial_count_example_talks_in_the_monitor(driver, base_url):
 
 
 # Written for these tests: each rise of Xa adds one to n, shown on a
-# common-cathode digit `seg` and a common-anode digit `an`.
+# common-cathode digit `seg` and a common-anode digit `an`, and on a
+# 14- and a 16-segment digit.
 DIGITS = "\n".join([
     "LDmicro0.2",
     "CYCLE=10000",
@@ -250,6 +251,8 @@ DIGITS = "\n".join([
     "VAR LIST",
     "    1 bytes seg",
     "    1 bytes an",
+    "    2 bytes w14",
+    "    4 bytes w16",
     "END",
     "",
     "IO LIST",
@@ -266,6 +269,8 @@ DIGITS = "\n".join([
     "    PARALLEL",
     "        7SEGMENTS seg n C",
     "        7SEGMENTS an n A",
+    "        14SEGMENTS w14 n C",
+    "        16SEGMENTS w16 n C",
     "    END",
     "END",
     "",
@@ -273,10 +278,11 @@ DIGITS = "\n".join([
 
 
 def lit_segments(driver, testid):
-    """The segments drawn lit in a digit, as letters (`.` the point)."""
+    """The segments drawn lit in a digit, as letters (`.` the point;
+    engine's `segments::names`)."""
     return driver.execute_script(
         "const d = document.querySelector(arguments[0]);"
-        "return [...d.querySelectorAll('svg .seg')].map((s, i) => s.classList.contains('lit') ? 'abcdefg.'[i] : '').join('');",
+        "return [...d.querySelectorAll('svg .seg')].map(s => s.classList.contains('lit') ? s.dataset.seg : '').join('');",
         f'[data-testid="{testid}"]')
 
 
@@ -305,6 +311,9 @@ def test_an_ld_files_7_segment_digits_are_drawn_on_the_board(driver, base_url, t
     assert lit_segments(driver, "soft-digit-seg") == "abcdg"
     assert lit_segments(driver, "soft-digit-an") == "abcdg"
     assert el(driver, "soft-digit-an").get_attribute("data-lit") == "abcdg"
+    # 3 on 14 segments: the middle's right half; on 16, a and d whole.
+    assert lit_segments(driver, "soft-digit-w14") == "abcdG"
+    assert lit_segments(driver, "soft-digit-w16") == "abcdGDA"
     driver.save_screenshot(str(artifacts / "ldmicro-digits.png"))
     assert severe_console_messages(driver) == []
 

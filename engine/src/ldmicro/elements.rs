@@ -149,7 +149,12 @@ pub(super) fn part(
             return Err(LdError::Hardware("TIME2DELAY".into()))
         }
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
-        Ld::Segments { segments, .. } => return Err(LdError::NoSegmentTable(*segments)),
+        Ld::Text { .. } => {
+            return Err(LdError::NoScanMeaning(
+                "STRING".into(),
+                "a sprintf into a string variable, which LDmicro's own simulator skips (an empty case), and the soft PLC has no STRING type",
+            ))
+        }
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
 }
@@ -200,10 +205,10 @@ fn uart_block(
     };
     let built = (|| {
         if *wait {
-            return Err(LdError::NotYet(format!(
-                "{} waiting for its bytes",
-                e.keyword()
-            )));
+            return Err(LdError::NoScanMeaning(
+                format!("{} waiting for its bytes", e.keyword()),
+                "LDmicro's code loops on the port inside the scan, stopping the chip until every byte has gone or come; the soft PLC's scans always run to their end",
+            ));
         }
         let n = if *whole {
             u32::from(bits(name))
@@ -433,7 +438,7 @@ pub(super) fn word_op(
     let built = (|| -> Result<Part, LdError> {
         let mut inputs = vec![("A", operand(a)?), ("B", operand(b)?)];
         let mut outputs = Vec::new();
-        if kind == "LD_SEG7" && !is_number(a) {
+        if kind.starts_with("LD_SEG") && !is_number(a) {
             // LDmicro writes the source's table index back first (a
             // source that is the destination too ends as the segments).
             outputs.push(("A", a.trim().to_string()));
@@ -458,20 +463,7 @@ fn word_op_operands<'e>(
 ) -> Option<(&'static str, &'e str, &'e str, Option<&'e str>)> {
     Some(match e {
         Ld::Math { op, dest, a, b } if *op != MathOp::Sr0 && narrow(dest) => {
-            let kind = match op {
-                MathOp::Add => "LD_ADD",
-                MathOp::Sub => "LD_SUB",
-                MathOp::Mul => "LD_MUL",
-                MathOp::Div => "LD_DIV",
-                MathOp::Mod => "LD_MOD",
-                MathOp::And => "LD_AND",
-                MathOp::Or => "LD_OR",
-                MathOp::Xor => "LD_XOR",
-                MathOp::Shl => "LD_SHL",
-                MathOp::Shr => "LD_SHR",
-                MathOp::Rol => "LD_ROL",
-                _ => "LD_ROR",
-            };
+            let kind = narrow_math(*op);
             (kind, a.as_str(), b.as_str(), Some(dest.as_str()))
         }
         Ld::Unary { op, dest, src }
@@ -514,7 +506,7 @@ fn word_op_operands<'e>(
             (kind, var.as_str(), bit.as_str(), None)
         }
         Ld::Segments {
-            segments: 7,
+            segments,
             dest,
             src,
             common,
@@ -525,10 +517,34 @@ fn word_op_operands<'e>(
             } else {
                 "0"
             };
-            ("LD_SEG7", src.as_str(), anode, Some(dest.as_str()))
+            let kind = match segments {
+                9 => "LD_SEG9",
+                14 => "LD_SEG14",
+                16 => "LD_SEG16",
+                _ => "LD_SEG7",
+            };
+            (kind, src.as_str(), anode, Some(dest.as_str()))
         }
         _ => return None,
     })
+}
+
+/// The `LD_` block of arithmetic into a destination narrower than a DINT.
+fn narrow_math(op: MathOp) -> &'static str {
+    match op {
+        MathOp::Add => "LD_ADD",
+        MathOp::Sub => "LD_SUB",
+        MathOp::Mul => "LD_MUL",
+        MathOp::Div => "LD_DIV",
+        MathOp::Mod => "LD_MOD",
+        MathOp::And => "LD_AND",
+        MathOp::Or => "LD_OR",
+        MathOp::Xor => "LD_XOR",
+        MathOp::Shl => "LD_SHL",
+        MathOp::Shr => "LD_SHR",
+        MathOp::Rol => "LD_ROL",
+        _ => "LD_ROR",
+    }
 }
 
 /// An arithmetic, move or comparison element as the soft PLC's box.

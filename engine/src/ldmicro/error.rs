@@ -49,9 +49,9 @@ pub enum LdError {
     Hardware(String),
     /// An element the soft PLC does not run yet (its keyword).
     NotYet(String),
-    /// `9SEGMENTS`, `14SEGMENTS` or `16SEGMENTS` (how many): LDmicro's
-    /// compiler has only the 7-segment table.
-    NoSegmentTable(u8),
+    /// An element LDmicro itself runs only where a chip cannot be
+    /// simulated scan by scan (the element, why).
+    NoScanMeaning(String, &'static str),
     /// A formatted string LDmicro's compiler refuses (why).
     Format(crate::softplc::ld_format::FormatError),
     /// A timer whose delay is not a whole number of cycles above zero
@@ -123,10 +123,9 @@ impl fmt::Display for LdError {
                 f,
                 "{k} does not run on the soft PLC yet (docs/ldmicro.md lists what does)"
             ),
-            LdError::NoSegmentTable(n) => write!(
-                f,
-                "{n}SEGMENTS: LDmicro compiles only 7-segment digits (its compiler stops with an internal error at 9, 14 and 16 segments), so no chip ever ran it: the file is not opened"
-            ),
+            LdError::NoScanMeaning(element, why) => {
+                write!(f, "{element}: {why}: the file is not opened")
+            }
             LdError::Format(e) => write!(f, "FORMATTED_STRING: {e}"),
             LdError::TimerPeriod {
                 name,

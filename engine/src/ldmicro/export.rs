@@ -360,9 +360,10 @@ impl Writer {
                 format!("{name} {} {} {}", input("D"), input("A"), input("B"))
             }
             "MOVE" | "NOT" | "NEG" => format!("{name} {} {}", input("D"), input("A")),
-            "SEG7" => {
+            "SEG7" | "SEG9" | "SEG14" | "SEG16" => {
                 let common = if input("B") == "0" { 'C' } else { 'A' };
-                format!("7SEGMENTS {} {} {common}", input("D"), input("A"))
+                let n = &name[3..];
+                format!("{n}SEGMENTS {} {} {common}", input("D"), input("A"))
             }
             "SETBIT" => format!("SET_BIT {} {}", input("D"), input("B")),
             "CLRBIT" => format!("CLEAR_BIT {} {}", input("D"), input("B")),

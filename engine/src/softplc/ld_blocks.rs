@@ -18,7 +18,7 @@ use super::ld_words::word_op;
 use super::uart::Uart;
 
 /// The LDmicro blocks by name.
-pub const NAMES: [&str; 44] = [
+pub const NAMES: [&str; 47] = [
     "LD_TON",
     "LD_TOF",
     "LD_RTO",
@@ -63,6 +63,9 @@ pub const NAMES: [&str; 44] = [
     "LD_UART_READY",
     "LD_FMTSTR",
     "LD_SEG7",
+    "LD_SEG9",
+    "LD_SEG14",
+    "LD_SEG16",
 ];
 
 /// The input of a block given as a text (LDmicro's formatted string:
@@ -117,7 +120,9 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
         Some(Family::Shot) => vec![("Q", Bool)],
         Some(Family::Toggle) => vec![("Q", Bool), ("V", Bool)],
         // A segment digit's source comes back as LDmicro rewrites it.
-        Some(Family::Op) if block == "LD_SEG7" => vec![("Q", Bool), ("D", Dint), ("A", Dint)],
+        Some(Family::Op) if block.starts_with("LD_SEG") => {
+            vec![("Q", Bool), ("D", Dint), ("A", Dint)]
+        }
         Some(Family::Op) => vec![("Q", Bool), ("D", Dint)],
         Some(Family::Serial) if block == "LD_UART_RECV" => vec![("Q", Bool), ("V", Dint)],
         Some(Family::Serial) => vec![("Q", Bool)],
@@ -151,7 +156,9 @@ fn family(block: &str) -> Option<Family> {
         "LD_BIN2BCD" | "LD_BCD2BIN" | "LD_SWAP" | "LD_OPPOSITE" | "LD_SR0" | "LD_SETBIT"
         | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" | "LD_ADD" | "LD_SUB" | "LD_MUL" | "LD_DIV"
         | "LD_MOD" | "LD_AND" | "LD_OR" | "LD_XOR" | "LD_SHL" | "LD_SHR" | "LD_ROL" | "LD_ROR"
-        | "LD_MOVE" | "LD_NOT" | "LD_NEG" | "LD_SEG7" => Some(Family::Op),
+        | "LD_MOVE" | "LD_NOT" | "LD_NEG" | "LD_SEG7" | "LD_SEG9" | "LD_SEG14" | "LD_SEG16" => {
+            Some(Family::Op)
+        }
         _ => None,
     }
 }
@@ -248,7 +255,9 @@ impl LdBlock {
         match (self.kind, i) {
             (_, 0) => Data::Bool(self.q),
             (Kind::Toggle, _) => Data::Bool(self.value != 0),
-            (Kind::Op("SEG7"), 2) => Data::integer(DataType::Dint, i128::from(self.word)),
+            (Kind::Op(op), 2) if op.starts_with("SEG") => {
+                Data::integer(DataType::Dint, i128::from(self.word))
+            }
             _ => Data::integer(DataType::Dint, i128::from(self.value)),
         }
     }
@@ -278,10 +287,11 @@ impl LdBlock {
                 self.value = d;
                 self.word = a;
                 match op {
-                    "SEG7" => {
+                    seg if seg.starts_with("SEG") => {
                         if s {
                             // B: 0 common cathode, else common anode.
-                            let (index, segments) = super::segments::seven(a, b != 0);
+                            let n = seg[3..].parse().unwrap_or(7);
+                            let (index, segments) = super::segments::convert(n, a, b != 0);
                             self.word = index;
                             self.value = word_op("MOVE", segments, 0, d, w);
                         }

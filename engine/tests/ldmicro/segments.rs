@@ -1,7 +1,9 @@
 //! LDmicro's `7SEGMENTS dest src common` on the soft PLC (issue #32):
 //! the segments a character lights, inverted for a common-anode digit,
 //! in the destination's width; the source written back as LDmicro's code
-//! writes it; back out as `.ld`; and the displays it cannot have.
+//! writes it; 9, 14 and 16 segments in the layout LDmicro's source gives
+//! them; back out as `.ld`; and the elements refused for having no
+//! meaning scan by scan.
 
 use engine::ldmicro::{parse, to_ladder};
 use engine::softplc::segments::{letters, lit};
@@ -35,8 +37,9 @@ fn a_count_shown_on_a_digit_lights_its_segments_and_the_anode_digit_the_inverse(
     };
     press(plc.as_mut());
     // n = 1: b and c, on both digits as drawn.
-    let face =
-        |plc: &dyn engine::plc::Plc, name: &str, anode: bool| letters(lit(get(plc, name), anode));
+    let face = |plc: &dyn engine::plc::Plc, name: &str, anode: bool| {
+        letters(7, lit(7, get(plc, name), anode))
+    };
     assert_eq!(get(plc.as_ref(), "n"), 1);
     assert_eq!(face(plc.as_ref(), "seg", false), "bc");
     assert_eq!(face(plc.as_ref(), "anode", true), "bc");
@@ -80,22 +83,60 @@ fn a_digit_goes_back_out_as_the_same_7segments_lines() {
     assert_eq!(again.rungs, ladder.rungs);
 }
 
+/// A file showing `n` on a 9-, a 14- and a 16-segment digit, common
+/// cathode, and on a 16-segment common-anode one in four bytes.
+const WIDE: &str = "LDmicro0.2\nCYCLE=10000\n\nVAR LIST\n    2 bytes s9\n    2 bytes s14\n    4 bytes s16\n    4 bytes a16\nEND\n\n\
+    PROGRAM\n\
+    RUNG 1\n  PARALLEL\n    9SEGMENTS s9 n C\n    14SEGMENTS s14 n C\n    16SEGMENTS s16 n C\n    16SEGMENTS a16 n A\n  END\nEND\n";
+
 #[test]
-fn nine_fourteen_and_sixteen_segments_are_refused_as_ldmicro_never_compiled_them() {
-    for n in [9, 14, 16] {
-        let text = format!(
-            "LDmicro0.2\nCYCLE=10000\n\nPROGRAM\nRUNG 1\n  MOVE c 65\nEND\nRUNG 2\n  {n}SEGMENTS d c C\nEND\n"
-        );
-        let errors = to_ladder(&parse(&text).expect("reads")).expect_err("refused");
-        assert_eq!(errors.len(), 1, "{errors:?}");
-        assert_eq!(errors[0].line, 9);
-        let said = errors[0].error.to_string();
-        assert!(
-            said.starts_with(&format!("{n}SEGMENTS: LDmicro compiles only 7-segment")),
-            "{said}"
-        );
+fn nine_fourteen_and_sixteen_segment_digits_light_in_ldmicros_layout() {
+    let mut plc = load(WIDE);
+    let mut shown = |n: i64| -> Vec<String> {
+        set(plc.as_mut(), "n", n);
+        let t = plc.now();
+        plc.run_until(t.saturating_add(SimTime::from_millis(10)));
+        [
+            ("s9", 9, false),
+            ("s14", 14, false),
+            ("s16", 16, false),
+            ("a16", 16, true),
+        ]
+        .iter()
+        .map(|(name, segments, anode)| {
+            letters(*segments, lit(*segments, get(plc.as_ref(), name), *anode))
+        })
+        .collect()
+    };
+    // 'X': the two long diagonals on nine segments, four strokes on 14 and 16.
+    assert_eq!(shown(i64::from(b'X')), ["jm", "jmhk", "jmhk", "jmhk"]);
+    // 'T': a, and the centre bars; a in two halves on sixteen.
+    assert_eq!(shown(i64::from(b'T')), ["defg", "ail", "ailA", "ailA"]);
+    // 7 with its point: the same as on seven segments on nine.
+    assert_eq!(shown(23)[0], "abc.");
+    // The anode digit's 16 segments are its value's low 17 bits inverted.
+    shown(i64::from(b'T'));
+    assert_eq!(
+        get(plc.as_ref(), "a16") & 0x1_FFFF,
+        !(1 | 1 << 11 | 1 << 13 | 1 << 16) & 0x1_FFFF
+    );
+    // Back out as the same lines.
+    let ladder = to_ladder(&parse(WIDE).expect("reads")).expect("draws");
+    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    for line in [
+        "9SEGMENTS s9 n C",
+        "14SEGMENTS s14 n C",
+        "16SEGMENTS s16 n C",
+        "16SEGMENTS a16 n A",
+    ] {
+        assert!(out.contains(line), "{line}\n{out}");
     }
-    // A common that is neither C nor A is no LDmicro line.
+    let again = to_ladder(&parse(&out).expect("reads")).expect("draws");
+    assert_eq!(again.rungs, ladder.rungs);
+}
+
+#[test]
+fn a_common_that_is_neither_c_nor_a_is_no_ldmicro_line() {
     let text = "LDmicro0.2\nCYCLE=10000\n\nPROGRAM\nRUNG 1\n  7SEGMENTS d c X\nEND\n";
     let errors = parse(text).expect_err("refused");
     assert_eq!(errors[0].line, 6);
@@ -117,6 +158,7 @@ fn the_board_draws_a_digit_for_each_variable_a_7segments_writes() {
         .into_iter()
         .map(|d| (d.name, d.anode))
         .collect();
+    assert!(program.segment_displays().iter().all(|d| d.segments == 7));
     let want = [
         ("seg", false),
         ("anode", true),
@@ -127,4 +169,26 @@ fn the_board_draws_a_digit_for_each_variable_a_7segments_writes() {
     ];
     let want: Vec<(String, bool)> = want.iter().map(|(n, a)| (n.to_string(), *a)).collect();
     assert_eq!(shown, want, "{il}");
+}
+
+#[test]
+fn string_and_the_waiting_uart_are_refused_saying_why() {
+    for (body, says) in [
+        (
+            "  STRING s v 2 65 66",
+            "STRING: a sprintf into a string variable, which LDmicro's own simulator skips",
+        ),
+        (
+            "  UART_RECV w 2 1",
+            "UART_RECV waiting for its bytes: LDmicro's code loops on the port inside the scan",
+        ),
+    ] {
+        let text = format!("LDmicro0.2\nCYCLE=10000\n\nPROGRAM\nRUNG 1\n{body}\nEND\n");
+        let errors = to_ladder(&parse(&text).expect("reads")).expect_err("refused");
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert_eq!(errors[0].line, 6);
+        let said = errors[0].error.to_string();
+        assert!(said.starts_with(says), "{said}");
+        assert!(said.ends_with("the file is not opened"), "{said}");
+    }
 }

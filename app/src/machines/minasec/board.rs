@@ -384,8 +384,8 @@ fn CounterPanel() -> impl IntoView {
                     <span class="sr-only">
                         {move || digits.get().map(|(a, b)| format!("{a}{b}")).unwrap_or_default()}
                     </span>
-                    <Digit lit=Signal::derive(move || digits.get().map_or(0, |d| seven_segments(d.0))) />
-                    <Digit lit=Signal::derive(move || digits.get().map_or(0, |d| seven_segments(d.1))) />
+                    <Digit lit=Signal::derive(move || digits.get().map_or(0, |d| u32::from(seven_segments(d.0)))) />
+                    <Digit lit=Signal::derive(move || digits.get().map_or(0, |d| u32::from(seven_segments(d.1)))) />
                 </div>
                 <div class="rotaries">
                     {rotary(0, "counter-set-tens")}

@@ -1,8 +1,8 @@
 //! The soft PLC workspace (issue #31): a board built from the I/O its
 //! program names — a switch and a push button for each `%IX` input, a
 //! lamp for each `%QX` output, a slider for each word input, a gauge for
-//! each word output, a 7-segment digit for each variable an LDmicro
-//! `7SEGMENTS` writes — beside the variables pane and the program pane in
+//! each word output, a segment digit for each variable an LDmicro
+//! `7SEGMENTS` … `16SEGMENTS` writes — beside the variables pane and the program pane in
 //! Instruction List. The bits `%IX0.0–%IX0.7` and `%QX0.0–%QX0.7` are
 //! always on the board (a small PLC's 8 in / 8 out), so a new ladder has
 //! something to wire to; a program's other I/O is added after them.
@@ -20,7 +20,7 @@ use crate::state::{put, Ctx};
 use crate::storage;
 
 mod rows;
-use rows::{DigitView, GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
+use rows::{Digits, GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
 
 /// Where the workspace's program is saved (`SavedText`); nothing was
 /// ever saved under the legacy key.
@@ -107,12 +107,14 @@ pub struct Terminal {
     pub held: RwSignal<bool>,
 }
 
-/// A 7-segment digit on the board, wired to a variable an LDmicro
-/// `7SEGMENTS` writes.
+/// A segment digit on the board, wired to a variable an LDmicro
+/// `7SEGMENTS` … `16SEGMENTS` writes.
 #[derive(Clone)]
 pub struct DigitRow {
     /// The variable.
     pub name: String,
+    /// 7, 9, 14 or 16.
+    pub segments: u8,
     /// Common anode: a segment lights when its bit is 0.
     pub anode: bool,
     pub device: Option<Device>,
@@ -305,6 +307,7 @@ impl SoftCtx {
                 .map(|d| DigitRow {
                     device: plc.device(&d.name).ok(),
                     name: d.name,
+                    segments: d.segments,
                     anode: d.anode,
                     value: RwSignal::new(0),
                 })
@@ -443,15 +446,7 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                     <For each=of(TerminalKind::Gauge) key=|t| (t.address.clone(), t.name.clone())
                         children=move |term| view! { <GaugeRow term /> } />
                 </ul>
-                // Rebuilt only when a program is loaded: no keyed list needed.
-                {move || {
-                    let digits = soft.digits.get();
-                    (!digits.is_empty()).then(|| view! {
-                        <ul class="soft-digits seg7" data-testid="soft-digits">
-                            {digits.into_iter().map(|digit| view! { <DigitView digit /> }).collect_view()}
-                        </ul>
-                    })
-                }}
+                <Digits soft />
             </section>
             {ladder.map(|l| view! { <crate::editor::variables::VariablesPane ctx=l /> })}
             <Show when=move || soft.serial.get()>

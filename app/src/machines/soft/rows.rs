@@ -153,20 +153,36 @@ pub(super) fn GaugeRow(term: Terminal) -> impl IntoView {
     }
 }
 
-/// A digit wired to a variable: the segments it lights, named for tests
-/// and screen readers (`abcdefg.`).
+/// The program's segment digits, when it has any.
 #[component]
-pub(super) fn DigitView(digit: DigitRow) -> impl IntoView {
+pub(super) fn Digits(soft: SoftCtx) -> impl IntoView {
+    // Rebuilt only when a program is loaded: no keyed list needed.
+    move || {
+        let digits = soft.digits.get();
+        (!digits.is_empty()).then(|| {
+            view! {
+                <ul class="soft-digits seg7" data-testid="soft-digits">
+                    {digits.into_iter().map(|digit| view! { <DigitView digit /> }).collect_view()}
+                </ul>
+            }
+        })
+    }
+}
+
+/// A digit wired to a variable: the segments it lights, named for tests
+/// and screen readers (`abcdefg.`; engine's `segments::names`).
+#[component]
+fn DigitView(digit: DigitRow) -> impl IntoView {
     use engine::softplc::segments::{letters, lit};
-    let (value, anode) = (digit.value, digit.anode);
-    let bits = Signal::derive(move || lit(value.get(), anode));
-    let face = move || letters(bits.get());
+    let (value, anode, segments) = (digit.value, digit.anode, digit.segments);
+    let bits = Signal::derive(move || lit(segments, value.get(), anode));
+    let face = move || letters(segments, bits.get());
     let common = if anode { "A" } else { "C" };
     let name = digit.name.clone();
     view! {
         <li class="soft-digit" data-testid=format!("soft-digit-{}", digit.name)
             data-lit=face data-common=common>
-            <Digit lit=bits />
+            <Digit lit=bits segments />
             <span class="soft-label" title=move || format!("{name}: {}", face())>
                 {digit.name.clone()}
             </span>

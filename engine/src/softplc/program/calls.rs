@@ -152,9 +152,10 @@ impl Program {
 }
 
 impl Program {
-    /// The digits the board draws: each variable an LDmicro `7SEGMENTS`
-    /// block (`LD_SEG7`) writes, once, in program order, with whether
-    /// the digit is common-anode (its `B` a constant other than 0).
+    /// The digits the board draws: each variable an LDmicro segments
+    /// block (`LD_SEG7` … `LD_SEG16`) writes, once, in program order,
+    /// with its segments and whether the digit is common-anode (its `B`
+    /// a constant other than 0).
     pub fn segment_displays(&self) -> Vec<crate::softplc::segments::Display> {
         let mut out: Vec<crate::softplc::segments::Display> = Vec::new();
         for step in &self.steps {
@@ -167,10 +168,10 @@ impl Program {
             else {
                 continue;
             };
-            if self.block_names[*block].1 != "LD_SEG7" {
+            let kind = self.block_names[*block].1.as_str();
+            let Some(segments) = kind.strip_prefix("LD_SEG").and_then(|n| n.parse().ok()) else {
                 continue;
-            }
-            let kind = "LD_SEG7";
+            };
             let at =
                 |pins: &[(&str, DataType)], pin: &str| pins.iter().position(|(n, _)| *n == pin);
             let (Some(d), Some(b)) = (at(&outputs(kind), "D"), at(&inputs(kind), "B")) else {
@@ -188,6 +189,7 @@ impl Program {
             if !out.iter().any(|d| d.name.eq_ignore_ascii_case(name)) {
                 out.push(crate::softplc::segments::Display {
                     name: name.clone(),
+                    segments,
                     anode,
                 });
             }
