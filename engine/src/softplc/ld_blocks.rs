@@ -182,6 +182,8 @@ enum Kind {
     Toggle,
     /// A word operation (its name after `LD_`).
     Op(&'static str),
+    /// A segment digit (`LD_SEG7` … `LD_SEG16`): how many segments.
+    Segments(u8),
     UartSend,
     UartRecv,
     UartAvail,
@@ -235,6 +237,7 @@ impl LdBlock {
             "LD_UART_AVAIL" => Kind::UartAvail,
             "LD_UART_READY" => Kind::UartReady,
             "LD_FMTSTR" => Kind::FormattedString,
+            seg if seg.starts_with("LD_SEG") => Kind::Segments(seg[6..].parse().unwrap_or(7)),
             other => Kind::Op(NAMES.iter().find(|n| **n == other).map_or("", |n| &n[3..])),
         };
         LdBlock {
@@ -255,9 +258,7 @@ impl LdBlock {
         match (self.kind, i) {
             (_, 0) => Data::Bool(self.q),
             (Kind::Toggle, _) => Data::Bool(self.value != 0),
-            (Kind::Op(op), 2) if op.starts_with("SEG") => {
-                Data::integer(DataType::Dint, i128::from(self.word))
-            }
+            (Kind::Segments(_), 2) => Data::integer(DataType::Dint, i128::from(self.word)),
             _ => Data::integer(DataType::Dint, i128::from(self.value)),
         }
     }
@@ -281,30 +282,25 @@ impl LdBlock {
                 self.counter(s, (max, init), count, edge)
             }
             Kind::Osl | Kind::Osc => self.shot(s),
-            Kind::Op(op) => {
+            Kind::Op(_) | Kind::Segments(_) => {
                 let (a, b, d, w) = (word(1), word(2), word(3), word(4));
                 let w = if w <= 0 { 16 } else { w };
-                self.value = d;
-                self.word = a;
-                match op {
-                    seg if seg.starts_with("SEG") => {
-                        if s {
-                            // B: 0 common cathode, else common anode.
-                            let n = seg[3..].parse().unwrap_or(7);
-                            let (index, segments) = super::segments::convert(n, a, b != 0);
-                            self.word = index;
-                            self.value = word_op("MOVE", segments, 0, d, w);
-                        }
+                (self.word, self.value) = (a, d);
+                match self.kind {
+                    Kind::Op("IFBIT") => s && (a >> b.clamp(0, 63)) & 1 == 1,
+                    Kind::Op("IFNBIT") => s && (a >> b.clamp(0, 63)) & 1 == 0,
+                    // B: 0 common cathode, else common anode.
+                    Kind::Segments(n) if s => {
+                        let (index, segments) = super::segments::convert(n, a, b != 0);
+                        (self.word, self.value) = (index, word_op("MOVE", segments, 0, d, w));
                         s
                     }
-                    "IFBIT" => s && (a >> b.clamp(0, 63)) & 1 == 1,
-                    "IFNBIT" => s && (a >> b.clamp(0, 63)) & 1 == 0,
-                    _ => {
-                        if s {
-                            self.value = word_op(op, a, b, d, w);
-                        }
+                    Kind::Op(op) if s => {
+                        self.value = word_op(op, a, b, d, w);
                         s
                     }
+                    // Unpowered: the values stay as they were.
+                    _ => s,
                 }
             }
             Kind::UartSend => self.send(s, word(1), word(2).max(1), io.uart),

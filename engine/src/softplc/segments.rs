@@ -30,7 +30,7 @@ pub const POINT: u32 = 0x80;
 /// `j` upper right, `m` lower left, `l` lower centre, `k` lower right;
 /// on 9 segments `j` and `m` are the two long diagonals), and on 16
 /// segments `A` and `D` the right halves of a and d (a and d their left).
-pub fn names(segments: u8) -> &'static str {
+pub const fn names(segments: u8) -> &'static str {
     match segments {
         7 => "abcdefg.",
         9 => "abcdefg.jm",
@@ -54,11 +54,7 @@ pub struct Display {
 /// The bits of a glyph written as its segments' letters in
 /// [`names`]`(segments)` order.
 const fn glyph(segments: u8, letters: &str) -> u32 {
-    let names = match segments {
-        7 => b"abcdefg.".as_slice(),
-        9 => b"abcdefg.jm".as_slice(),
-        _ => b"abcdefg.jmhiklG".as_slice(),
-    };
+    let names = names(segments).as_bytes();
     let bytes = letters.as_bytes();
     let mut bits = 0u32;
     let mut i = 0;
@@ -204,11 +200,6 @@ pub fn convert(segments: u8, src: i64, anode: bool) -> (i64, i64) {
     (at, if anode { !bits } else { bits })
 }
 
-/// [`convert`] for a 7-segment digit.
-pub fn seven(src: i64, anode: bool) -> (i64, i64) {
-    convert(7, src, anode)
-}
-
 /// The segments a digit of `segments` segments wired to a variable
 /// holding `value` lights: as many low bits as it has segments and its
 /// point, inverted for a common-anode digit, whose segments light when
@@ -238,6 +229,10 @@ pub fn letters(segments: u8, bits: u32) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn seven(src: i64, anode: bool) -> (i64, i64) {
+        convert(7, src, anode)
+    }
 
     #[test]
     fn the_digits_are_the_datasheet_encoding() {

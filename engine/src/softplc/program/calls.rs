@@ -172,9 +172,9 @@ impl Program {
             let Some(segments) = kind.strip_prefix("LD_SEG").and_then(|n| n.parse().ok()) else {
                 continue;
             };
-            let at =
-                |pins: &[(&str, DataType)], pin: &str| pins.iter().position(|(n, _)| *n == pin);
-            let (Some(d), Some(b)) = (at(&outputs(kind), "D"), at(&inputs(kind), "B")) else {
+            let (Some((d, _)), Some((b, _))) =
+                (find_pin(&outputs(kind), "D"), find_pin(&inputs(kind), "B"))
+            else {
                 continue;
             };
             let Some(slot) = outs.iter().find(|(o, _)| *o == d).map(|(_, s)| *s) else {
