@@ -123,7 +123,7 @@ pub fn run<P: Plc + ?Sized, W: Write>(
         sim.run_until(row_time);
         write!(out, "{row_time}").map_err(failed)?;
         for &w in &watches {
-            write!(out, ",{}", sim.read(w)).map_err(failed)?;
+            write!(out, ",{}", csv_field(&sim.read(w))).map_err(failed)?;
         }
         writeln!(out).map_err(failed)?;
         if row_time >= schedule.until {
@@ -132,4 +132,19 @@ pub fn run<P: Plc + ?Sized, W: Write>(
         row_time = row_time.saturating_add(schedule.every).min(schedule.until);
     }
     Ok(())
+}
+
+/// A value as one CSV field: numbers as they print; a text (a soft-PLC
+/// STRING) quoted as RFC 4180 quotes it when it holds a comma, a quote,
+/// a line end or spaces at an end.
+fn csv_field(value: &crate::plc::Value) -> std::borrow::Cow<'_, str> {
+    let crate::plc::Value::Text(t) = value else {
+        return value.to_string().into();
+    };
+    let plain = !t.contains([',', '"', '\r', '\n']) && t.trim() == &**t;
+    if plain {
+        std::borrow::Cow::Borrowed(t)
+    } else {
+        format!("\"{}\"", t.replace('"', "\"\"")).into()
+    }
 }

@@ -286,13 +286,19 @@ def lit_segments(driver, testid):
         f'[data-testid="{testid}"]')
 
 
+def open_ld(driver, tmp_path, file_name, text, variable):
+    """Opens `text` as the .ld file `file_name`, until `variable` is in
+    the variables pane."""
+    path = tmp_path / file_name
+    path.write_text(text)
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, f'[data-testid="var-{variable}"]'),
+         message="the file's names in the variables pane")
+
+
 def open_digits(driver, tmp_path):
     """Opens DIGITS and runs it: a digit on the board for each 7SEGMENTS."""
-    path = tmp_path / "digits.ld"
-    path.write_text(DIGITS)
-    el(driver, "open-file").send_keys(str(path))
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-seg"]'),
-         message="the file's names in the variables pane")
+    open_ld(driver, tmp_path, "digits.ld", DIGITS, "seg")
     el(driver, "run").click()
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-digit-seg"]'),
          message="a digit on the board for each 7SEGMENTS")
@@ -341,4 +347,66 @@ def test_a_digit_from_the_palette_is_drawn_on_the_board(driver, base_url):
     el(driver, "palette-ld-fmtstr").click()
     entry = wait(driver, lambda: el(driver, "device-input"))
     assert entry.get_attribute("value").startswith("fmt_ld: LD_FMTSTR(V := n, FMT := '")
+    assert severe_console_messages(driver) == []
+
+
+# Written for this test: while Xa is on, STRING prints the count of
+# scans into `msg` as "n=%04d" (codes 110 61 37 48 52 100).
+STRINGS = "\n".join([
+    "LDmicro0.2",
+    "CYCLE=10000",
+    "IO LIST",
+    "    Xa at 1",
+    "END",
+    "PROGRAM",
+    "RUNG",
+    "    ADD n n 1",
+    "END",
+    "RUNG",
+    "    CONTACTS Xa 0",
+    "    STRING msg n 6 110 61 37 48 52 100",
+    "END",
+    "",
+])
+
+
+def var_value(driver, name):
+    """The value the variables pane shows for `name` (all of it, where a
+    long text is cut on screen)."""
+    return driver.find_element(By.CSS_SELECTOR, f'[data-testid="var-{name}"] [data-testid="var-value"]').get_attribute("textContent")
+
+
+def test_an_ld_files_string_prints_into_a_string_variable(driver, base_url, tmp_path, artifacts):
+    """STRING prints the count into `msg`, a STRING the variables pane
+    shows in quotes, and keeps it while its rung is off."""
+    import re
+    open_fresh(driver, base_url)
+    open_ld(driver, tmp_path, "strings.ld", STRINGS, "msg")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+    row = el(driver, "var-msg")
+    assert row.find_element(By.CSS_SELECTOR, '[data-testid="var-type"]').get_attribute("value") == "STRING"
+    el(driver, "run").click()
+    wait(driver, lambda: var_value(driver, "msg") == "''", message="nothing printed while Xa is off")
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: re.fullmatch(r"'n=\d{4}'", var_value(driver, "msg")),
+         message="the count printed with four digits")
+    el(driver, "soft-input-IX0-0").click()
+    kept = var_value(driver, "msg")
+    count = int(var_value(driver, "n"))
+    wait(driver, lambda: int(var_value(driver, "n")) > count + 5, message="the scans go on")
+    assert var_value(driver, "msg") == kept, "kept while Xa is off"
+    driver.save_screenshot(str(artifacts / "ldmicro-string.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_ldmicros_string_is_in_the_soft_plcs_palette(driver, base_url):
+    from selenium.webdriver.support.ui import Select
+    from test_ladder import focus_ladder
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("soft-plc")
+    wait(driver, lambda: el(driver, "soft-board"))
+    focus_ladder(driver)
+    el(driver, "palette-ld-string").click()
+    entry = wait(driver, lambda: el(driver, "device-input"))
+    assert entry.get_attribute("value") == "str_ld: LD_STRING(V := n, D := msg, FMT := 'n=%d', D => msg)"
     assert severe_console_messages(driver) == []

@@ -325,3 +325,32 @@ def test_an_ld_files_digits_on_every_screen(screen, base_url, tmp_path, artifact
         assert box["x"] >= 0 and box["x"] + box["w"] <= box["vw"], box
     assert no_sideways_overflow(driver)
     driver.save_screenshot(str(artifacts / f"screen-digits-{name}.png"))
+
+
+def test_a_long_string_in_the_variables_pane_on_every_screen(screen, base_url, tmp_path, artifacts):
+    """A STRING of 60 characters (LDmicro's STRING, issue #32) in the
+    variables pane: cut to fit, its whole text in the title, no Set form;
+    the page no wider than the screen."""
+    from test_ldmicro import open_ld, var_value
+    name, driver = screen
+    touch = SCREENS[name][2]
+    open_fresh(driver, base_url)
+    text = "Line 1: " + "x" * 52
+    codes = " ".join(str(ord(c)) for c in text)
+    ld = "\n".join(["LDmicro0.2", "CYCLE=10000", "PROGRAM", "RUNG",
+                    f"    STRING banner (none) {len(text)} {codes}", "END", ""])
+    open_ld(driver, tmp_path, "banner.ld", ld, "banner")
+    el(driver, "run").click()
+    wait(driver, lambda: var_value(driver, "banner") == f"'{text}'", message="the text printed")
+    show(driver, touch, "panel")
+    driver.execute_script("document.querySelector('[data-testid=var-banner]').scrollIntoView({block: 'center'})")
+    shown = driver.find_element(By.CSS_SELECTOR, '[data-testid="var-banner"] [data-testid="var-value"]')
+    assert shown.get_attribute("title") == f"'{text}'"
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-banner"] [data-testid="var-set"]'), \
+        "a STRING has no value to set: its text takes the room"
+    box = driver.execute_script(
+        "const r = arguments[0].getBoundingClientRect();"
+        "return {x: r.x, w: r.width, vw: document.documentElement.clientWidth};", shown)
+    assert box["x"] >= 0 and box["x"] + box["w"] <= box["vw"], box
+    assert no_sideways_overflow(driver)
+    driver.save_screenshot(str(artifacts / f"screen-string-{name}.png"))

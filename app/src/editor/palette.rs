@@ -192,6 +192,7 @@ const SPECS: &[Spec] = &[
     spec("ld-uart-recv", "[UART RECV]", ("LDmicro's serial receive of a byte: LD_UART_RECV recv_ld ch", "LDmicro のシリアル受信 (1バイト): LD_UART_RECV recv_ld ch"), Entry(Instruction, false, "LD_UART_RECV "), Needs::WordBoxes),
     spec("ld-uart-avail", "[UART AVAIL]", ("power while the serial port holds a byte: LD_UART_AVAIL avail_ld", "シリアル受信データありの間導通: LD_UART_AVAIL avail_ld"), Entry(Instruction, false, "LD_UART_AVAIL "), Needs::WordBoxes),
     spec("ld-uart-ready", "[UART READY]", ("power while the serial port can send: LD_UART_READY ready_ld", "シリアル送信可能の間導通: LD_UART_READY ready_ld"), Entry(Instruction, false, "LD_UART_READY "), Needs::WordBoxes),
+    spec("ld-string", "[STRING]", ("LDmicro's STRING, a C format printed into a STRING variable while powered: str_ld: LD_STRING(V := n, D := msg, FMT := 'n=%d', D => msg)", "LDmicro の STRING (通電中、C の書式で STRING 変数へ書き込み): str_ld: LD_STRING(V := n, D := msg, FMT := 'n=%d', D => msg)"), Entry(Instruction, false, "str_ld: LD_STRING(V := n, D := msg, FMT := 'n=%d', D => msg)"), Needs::WordBoxes),
     spec("ld-fmtstr", "[FMT STR]", ("LDmicro's formatted string sent over the serial port: fmt_ld: LD_FMTSTR(V := n, FMT := 'n = \\3$R$N')", "LDmicro の書式付き文字列のシリアル送信: fmt_ld: LD_FMTSTR(V := n, FMT := 'n = \\3$R$N')"), Entry(Instruction, false, "fmt_ld: LD_FMTSTR(V := n, FMT := 'n = \\3$R$N')"), Needs::WordBoxes),
 ];
 

@@ -16,8 +16,9 @@ use super::LadderCtx;
 
 /// The types offered for a new variable (any IEC elementary type or
 /// standard block can be typed).
-const TYPES: [&str; 12] = [
-    "INT", "BOOL", "DINT", "UINT", "WORD", "REAL", "TIME", "TON", "TOF", "CTU", "CTD", "R_TRIG",
+const TYPES: [&str; 13] = [
+    "INT", "BOOL", "DINT", "UINT", "WORD", "REAL", "TIME", "STRING", "TON", "TOF", "CTU", "CTD",
+    "R_TRIG",
 ];
 
 /// A value as typed: TRUE/FALSE, an integer, a decimal (for REAL).
@@ -122,6 +123,7 @@ fn VariableRow(
         }
     };
     let gone = old.clone();
+    let v_is_text = kind.trim().eq_ignore_ascii_case("STRING");
     view! {
         <tbody data-testid=format!("var-{old}")>
             <tr>
@@ -131,7 +133,7 @@ fn VariableRow(
                     aria-label=move || t().var_type on:change=on_kind /></td>
                 <td><input data-testid="var-address" value=address class="narrow"
                     aria-label=move || t().var_address on:change=on_address /></td>
-                <ValueCell ctx name=old.clone() />
+                <ValueCell ctx name=old.clone() text=v_is_text />
             </tr>
             <tr class="var-more">
                 <td colspan="4">
@@ -175,9 +177,11 @@ fn shown_back(e: &leptos::ev::Event, text: &str) {
 }
 
 /// A variable's value on the machine, and a value to set: an input
-/// keeps it; another variable takes it until the program writes it.
+/// keeps it; another variable takes it until the program writes it. A
+/// STRING (`text`) has no value to set (the program writes its STRINGs):
+/// its text takes the room.
 #[component]
-fn ValueCell(ctx: LadderCtx, name: String) -> impl IntoView {
+fn ValueCell(ctx: LadderCtx, name: String, text: bool) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let watched = name.clone();
     let value = Memo::new(move |_| {
@@ -205,13 +209,15 @@ fn ValueCell(ctx: LadderCtx, name: String) -> impl IntoView {
         refused.set(said);
     };
     view! {
-        <td class="var-value">
-            <output data-testid="var-value">{move || value.get()}</output>
-            <form on:submit=move |e| { e.prevent_default(); set_value(); }>
-                <input data-testid="var-set" class="narrow" aria-label=move || t().var_force
-                    prop:value=move || to_set.get() on:input=move |e| to_set.set(event_target_value(&e)) />
-                <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
-            </form>
+        <td class="var-value" class:text=text>
+            <output data-testid="var-value" title=move || value.get()>{move || value.get()}</output>
+            {(!text).then(|| view! {
+                <form on:submit=move |e| { e.prevent_default(); set_value(); }>
+                    <input data-testid="var-set" class="narrow" aria-label=move || t().var_force
+                        prop:value=move || to_set.get() on:input=move |e| to_set.set(event_target_value(&e)) />
+                    <button type="submit" data-testid="var-set-ok">{move || t().var_force}</button>
+                </form>
+            })}
             <span class="soft-refused" role="alert" data-testid="var-set-error">{move || refused.get()}</span>
         </td>
     }

@@ -51,7 +51,7 @@ impl Compare {
 
     /// Whether a device's `value` OP `b`, compared as numbers whatever
     /// the value's kind (a bit is 0 or 1).
-    pub fn holds_value(self, value: crate::plc::Value, b: i64) -> bool {
+    pub fn holds_value(self, value: &crate::plc::Value, b: i64) -> bool {
         match value.partial_cmp(&b) {
             Some(order) => match self {
                 Compare::Eq => order.is_eq(),

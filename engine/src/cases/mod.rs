@@ -130,10 +130,10 @@ impl Watch {
         let holds = match &self.expectation {
             Expectation::At {
                 op, value: want, ..
-            } => op.holds_value(value, *want),
+            } => op.holds_value(&value, *want),
             Expectation::Stays { value: want, .. } => value == *want,
             Expectation::Edge { falling, .. } => {
-                if let Some(before) = self.last {
+                if let Some(before) = &self.last {
                     let (was, on) = (before.is_on(), value.is_on());
                     let wanted = if *falling { was && !on } else { !was && on };
                     let other = if *falling { !was && on } else { was && !on };
@@ -141,10 +141,10 @@ impl Watch {
                     if other && self.opposite.is_none() {
                         self.opposite = Some(t);
                     }
-                    self.changed |= before != value;
+                    self.changed |= *before != value;
                 }
-                self.first.get_or_insert(value);
-                self.last = Some(value);
+                self.first.get_or_insert_with(|| value.clone());
+                self.last = Some(value.clone());
                 true
             }
         };
@@ -167,8 +167,8 @@ impl Watch {
             return None;
         }
         let (first, last) = (
-            self.first.unwrap_or(Value::Int(0)),
-            self.last.unwrap_or(Value::Int(0)),
+            self.first.clone().unwrap_or(Value::Int(0)),
+            self.last.clone().unwrap_or(Value::Int(0)),
         );
         let verb = if *falling { "fall" } else { "rise" };
         let device = self.expectation.device();

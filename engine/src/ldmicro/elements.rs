@@ -6,6 +6,7 @@
 
 use super::element::{is_number, number, CompareOp, Element as Ld, MathOp, OneShotKind, UnaryOp};
 use super::error::LdError;
+use super::texts::{serial, string, uart_block};
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::BlockCall;
 
@@ -64,7 +65,7 @@ pub(super) fn period(name: &str, delay: &str, cycle: u64, adjust: i32) -> Result
 }
 
 /// The box of LDmicro block `kind` on instance `instance`.
-fn ld_box(
+pub(super) fn ld_box(
     kind: &str,
     instance: String,
     inputs: Vec<(&str, String)>,
@@ -149,85 +150,11 @@ pub(super) fn part(
             return Err(LdError::Hardware("TIME2DELAY".into()))
         }
         Ld::Hardware { keyword, .. } => return Err(LdError::Hardware(keyword.clone())),
-        Ld::Text { .. } => {
-            return Err(LdError::NoScanMeaning(
-                "STRING".into(),
-                "a sprintf into a string variable, which LDmicro's own simulator skips (an empty case), and the soft PLC has no STRING type",
-            ))
+        Ld::Text { dest, var, text } => {
+            Part::Condition(Element::Block(string(dest, var, text, instance)?))
         }
         other => return Err(LdError::NotYet(other.keyword().into())),
     })
-}
-
-/// The serial port's other elements as LDmicro's serial blocks (a
-/// byte's send and receive are [`uart_block`]).
-fn serial(e: &Ld, instance: &mut dyn FnMut(&str) -> String) -> Result<BlockCall, LdError> {
-    Ok(match e {
-        Ld::UartRecvAvail => ld_box("LD_UART_AVAIL", instance("_avail"), Vec::new(), Vec::new()),
-        Ld::UartSendReady => ld_box("LD_UART_READY", instance("_ready"), Vec::new(), Vec::new()),
-        Ld::FormattedString { var, text } => {
-            crate::softplc::ld_format::Format::for_element(text, !var.trim().is_empty())
-                .map_err(LdError::Format)?;
-            let mut inputs = Vec::new();
-            if !var.trim().is_empty() {
-                inputs.push(("V", operand(var)?));
-            }
-            inputs.push(("FMT", crate::softplc::literal::text_literal(text)));
-            ld_box("LD_FMTSTR", instance("_fmt"), inputs, Vec::new())
-        }
-        other => return Err(LdError::NotYet(other.keyword().into())),
-    })
-}
-
-/// `UART_SEND v [n wait]`, `UART_RECV …` and the `…n` forms (all of the
-/// variable's bytes, its `VAR LIST` size by `bits`) as `LD_UART_SEND` /
-/// `LD_UART_RECV` with `N` bytes; waiting (the chip stopped until every
-/// byte has gone) is not run. `None` for any other element.
-fn uart_block(
-    e: &Ld,
-    bits: &dyn Fn(&str) -> u16,
-    instance: &mut dyn FnMut(&str) -> String,
-) -> Option<Result<Part, LdError>> {
-    let (Ld::UartSend {
-        name,
-        bytes,
-        wait,
-        whole,
-    }
-    | Ld::UartRecv {
-        name,
-        bytes,
-        wait,
-        whole,
-    }) = e
-    else {
-        return None;
-    };
-    let built = (|| {
-        if *wait {
-            return Err(LdError::NoScanMeaning(
-                format!("{} waiting for its bytes", e.keyword()),
-                "LDmicro's code loops on the port inside the scan, stopping the chip until every byte has gone or come; the soft PLC's scans always run to their end",
-            ));
-        }
-        let n = if *whole {
-            u32::from(bits(name))
-        } else {
-            *bytes
-        };
-        let mut inputs = vec![("V", operand(name)?)];
-        if n > 1 {
-            inputs.push(("N", n.to_string()));
-        }
-        let call = if matches!(e, Ld::UartSend { .. }) {
-            ld_box("LD_UART_SEND", instance("_send"), inputs, Vec::new())
-        } else {
-            let out = vec![("V", operand(name)?)];
-            ld_box("LD_UART_RECV", instance("_recv"), inputs, out)
-        };
-        Ok(Part::Condition(Element::Block(call)))
-    })();
-    Some(built)
 }
 
 /// An element the soft PLC runs as boxes of its own (docs/ldmicro.md):

@@ -54,6 +54,8 @@ pub enum LdError {
     NoScanMeaning(String, &'static str),
     /// A formatted string LDmicro's compiler refuses (why).
     Format(crate::softplc::ld_format::FormatError),
+    /// A STRING whose text is no C format of its one variable (why).
+    Printf(crate::softplc::ld_printf::PrintfError),
     /// A timer whose delay is not a whole number of cycles above zero
     /// (the timer, its delay in µs, the cycle in µs, the adjust).
     TimerPeriod {
@@ -127,6 +129,7 @@ impl fmt::Display for LdError {
                 write!(f, "{element}: {why}: the file is not opened")
             }
             LdError::Format(e) => write!(f, "FORMATTED_STRING: {e}"),
+            LdError::Printf(e) => write!(f, "STRING: {e}"),
             LdError::TimerPeriod {
                 name,
                 delay,

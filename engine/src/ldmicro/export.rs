@@ -375,23 +375,22 @@ impl Writer {
             }
             "UART_AVAIL" => "UART_RECV_AVAIL".into(),
             "UART_READY" => "UART_SEND_READY".into(),
-            "FMTSTR" => formatted_string(b, &input("V"))?,
+            "FMTSTR" => formatted_string(b, "FORMATTED_STRING", &input("V"))?,
+            "STRING" => formatted_string(b, &format!("STRING {}", input("D")), &input("V"))?,
             _ => return None,
         })
     }
 }
 
-/// A formatted string as LDmicro saves it: its variable (or `(none)`),
-/// then its length and character codes.
-fn formatted_string(b: &BlockCall, var: &str) -> Option<String> {
+/// A formatted string (or a STRING, `head` naming its destination) as
+/// LDmicro saves it: its variable (or `(none)`), then its length and
+/// character codes.
+fn formatted_string(b: &BlockCall, head: &str, var: &str) -> Option<String> {
     let text = crate::softplc::literal::parse_text(b.input("FMT")?).ok()?;
     let var = if var.is_empty() { "(none)" } else { var };
     let codes: Vec<String> = text.chars().map(|c| u32::from(c).to_string()).collect();
-    Some(format!(
-        "FORMATTED_STRING {var} {} {}",
-        codes.len(),
-        codes.join(" ")
-    ))
+    let line = format!("{head} {var} {} {}", codes.len(), codes.join(" "));
+    Some(line.trim_end().to_string())
 }
 
 /// A comment as LDmicro saves it: line ends and backslashes escaped.

@@ -330,6 +330,8 @@ fn counter_starts(file: &LdFile) -> HashMap<String, String> {
 enum Role {
     Bit,
     Number,
+    /// A STRING's destination.
+    Text,
 }
 
 /// Each name the file's elements use and what it is, in the order the
@@ -397,6 +399,11 @@ fn names_used(e: &Ld) -> Vec<(String, Role)> {
         Ld::SetPwm { duty, .. } => numbers(&[duty]),
         Ld::UartSend { name, .. } | Ld::UartRecv { name, .. } => numbers(&[name]),
         Ld::FormattedString { var, .. } => numbers(&[var]),
+        Ld::Text { dest, var, .. } => {
+            let mut names = numbers(&[var]);
+            names.push((dest.clone(), Role::Text));
+            names
+        }
         Ld::Segments { dest, src, .. } => numbers(&[dest, src]),
         _ => Vec::new(),
     }
@@ -427,7 +434,12 @@ fn declarations(file: &LdFile, instances: &BTreeMap<String, String>) -> Vec<Vari
     let (mut inputs, mut outputs) = (0usize, 0usize);
     let mut out = Vec::new();
     for (name, role) in roles {
-        let mut v = Variable::new(&name, if role == Role::Bit { "BOOL" } else { "DINT" });
+        let data_type = match role {
+            Role::Bit => "BOOL",
+            Role::Number => "DINT",
+            Role::Text => "STRING",
+        };
+        let mut v = Variable::new(&name, data_type);
         if role == Role::Bit && name.starts_with('X') {
             v.address = format!("%IX{}.{}", inputs / 8, inputs % 8);
             inputs += 1;

@@ -17,6 +17,7 @@ mod ladder;
 mod leaf;
 mod lower;
 pub mod parse;
+mod texts;
 
 pub use element::Element;
 pub use error::LdError;

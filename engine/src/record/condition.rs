@@ -115,7 +115,7 @@ impl Condition {
     /// Whether it holds after the scan `machine` just completed.
     pub fn holds(&mut self, machine: &dyn Plc) -> bool {
         let now = machine.read(self.device);
-        let before = std::mem::replace(&mut self.last, now);
+        let before = std::mem::replace(&mut self.last, now.clone());
         match self.test {
             Test::Rises => !before.is_on() && now.is_on(),
             Test::Falls => before.is_on() && !now.is_on(),

@@ -192,8 +192,8 @@ impl<M: Plc + Clone> Recording<M> {
     pub fn last_change(&mut self, machine: &M, device: Device, at: Mark) -> Option<Mark> {
         let first = self.first();
         let values = self.values(machine, device, first, at);
-        let now = *values.last()?;
-        let i = values.iter().rposition(|v| *v != now)?;
+        let now = values.last()?;
+        let i = values.iter().rposition(|v| v != now)?;
         Some(first + i as u64 + 1)
     }
 

@@ -4,8 +4,13 @@
 //! gives 0 (as its MOD does), a REAL follows IEEE 754; nothing panics.
 
 use std::cmp::Ordering;
+use std::sync::Arc;
 
 use crate::plc::Value;
+
+/// The most characters a STRING holds (each one byte, as IEC's STRING
+/// has them): what a Siemens S7 STRING holds; a longer text is cut there.
+pub const STRING_CAPACITY: usize = 254;
 
 /// An elementary type the soft PLC holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -22,11 +27,13 @@ pub enum DataType {
     Real,
     /// A duration, held in nanoseconds, printed in milliseconds.
     Time,
+    /// A text of up to [`STRING_CAPACITY`] characters.
+    String,
 }
 
 impl DataType {
     /// Every type, in the order docs/soft-plc.md lists them.
-    pub const ALL: [DataType; 11] = [
+    pub const ALL: [DataType; 12] = [
         DataType::Bool,
         DataType::Int,
         DataType::Dint,
@@ -38,6 +45,7 @@ impl DataType {
         DataType::Dword,
         DataType::Real,
         DataType::Time,
+        DataType::String,
     ];
 
     /// The IEC name (`INT`, `UDINT` …).
@@ -54,6 +62,7 @@ impl DataType {
             DataType::Dword => "DWORD",
             DataType::Real => "REAL",
             DataType::Time => "TIME",
+            DataType::String => "STRING",
         }
     }
 
@@ -64,13 +73,14 @@ impl DataType {
             .find(|t| t.name().eq_ignore_ascii_case(name))
     }
 
-    /// Bits of an integer or bit-string type (`None` for BOOL, REAL, TIME).
+    /// Bits of an integer or bit-string type (`None` for BOOL, REAL, TIME,
+    /// STRING).
     pub const fn bits(self) -> Option<u32> {
         match self {
             DataType::Int | DataType::Uint | DataType::Word => Some(16),
             DataType::Dint | DataType::Udint | DataType::Dword => Some(32),
             DataType::Lint | DataType::Ulint => Some(64),
-            DataType::Bool | DataType::Real | DataType::Time => None,
+            DataType::Bool | DataType::Real | DataType::Time | DataType::String => None,
         }
     }
 
@@ -92,18 +102,19 @@ impl DataType {
     }
 
     /// The value a variable of this type starts at without an initial value.
-    pub const fn zero(self) -> Data {
+    pub fn zero(self) -> Data {
         match self {
             DataType::Bool => Data::Bool(false),
             DataType::Real => Data::Real(0.0),
             DataType::Time => Data::Time(0),
+            DataType::String => Data::Text(Arc::default()),
             _ => Data::Int(self, 0),
         }
     }
 }
 
 /// A typed value.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Data {
     Bool(bool),
     /// An integer or bit string of the type: its bits in the low end of an
@@ -112,6 +123,11 @@ pub enum Data {
     Real(f32),
     /// Nanoseconds.
     Time(i64),
+    /// A STRING (at most [`STRING_CAPACITY`] characters): shared, so moving it
+    /// between a variable and the accumulator copies no characters; behind
+    /// one thin pointer, so a value stays 16 bytes (the scan copies values
+    /// all the time, texts seldom).
+    Text(Arc<String>),
 }
 
 /// Keeps the low `bits` of `v`, sign-extended when `signed`: two's
@@ -128,6 +144,7 @@ const fn wrap(v: i128, bits: u32, signed: bool) -> i64 {
 impl Data {
     /// `v` as an integer of type `t`, wrapped into its width (`t` must be
     /// an integer or bit-string type; any other gives its zero).
+    #[inline]
     pub fn integer(t: DataType, v: i128) -> Data {
         match t.bits() {
             Some(bits) => Data::Int(t, wrap(v, bits, t.is_signed())),
@@ -135,20 +152,31 @@ impl Data {
         }
     }
 
+    /// A STRING of `text`, cut at [`STRING_CAPACITY`] characters (as
+    /// IEC cuts a text assigned to a shorter STRING).
+    pub fn text(text: &str) -> Data {
+        let end = text
+            .char_indices()
+            .nth(STRING_CAPACITY)
+            .map_or(text.len(), |(at, _)| at);
+        Data::Text(Arc::new(text[..end].to_string()))
+    }
+
     /// Its type.
-    pub const fn data_type(self) -> DataType {
+    pub const fn data_type(&self) -> DataType {
         match self {
             Data::Bool(_) => DataType::Bool,
-            Data::Int(t, _) => t,
+            Data::Int(t, _) => *t,
             Data::Real(_) => DataType::Real,
             Data::Time(_) => DataType::Time,
+            Data::Text(_) => DataType::String,
         }
     }
 
     /// As a device value for `--watch` and the page: unsigned types
     /// unsigned, TIME in milliseconds.
-    pub fn to_value(self) -> Value {
-        match self {
+    pub fn to_value(&self) -> Value {
+        match *self {
             Data::Bool(b) => Value::Bit(b),
             Data::Int(t, v) if !t.is_signed() => Value::Uint(v as u64 & mask(t)),
             Data::Int(_, v) => Value::Int(v),
@@ -156,23 +184,26 @@ impl Data {
             // f32's 0.10000000149011612.
             Data::Real(r) => Value::Real(r.to_string().parse().unwrap_or(f64::from(r))),
             Data::Time(ns) => Value::Int(ns / 1_000_000),
+            Data::Text(ref t) => Value::Text(Arc::from(t.as_str())),
         }
     }
 
     /// Whether it is on: TRUE, or a number other than zero (what a
     /// contact on it would pass; what the tracer records).
     #[inline(always)]
-    pub fn is_on(self) -> bool {
-        match self {
+    pub fn is_on(&self) -> bool {
+        match *self {
             Data::Bool(b) => b,
             Data::Int(_, v) | Data::Time(v) => v != 0,
             Data::Real(r) => r != 0.0,
+            Data::Text(_) => false,
         }
     }
 
-    /// The integer, widened (`None` for BOOL, REAL, TIME).
-    pub(super) fn int(self) -> Option<i128> {
-        match self {
+    /// The integer, widened (`None` for BOOL, REAL, TIME, STRING).
+    #[inline]
+    pub(super) fn int(&self) -> Option<i128> {
+        match *self {
             Data::Int(t, v) if !t.is_signed() => Some(i128::from(v as u64 & mask(t))),
             Data::Int(_, v) => Some(i128::from(v)),
             _ => None,
@@ -182,9 +213,10 @@ impl Data {
     /// ADD, SUB, MUL, DIV, MOD of two values of one type; `None` when the
     /// types differ or the operation does not apply to them (the compiler
     /// refuses those before a program runs).
-    pub fn arith(self, op: Arith, other: Data) -> Option<Data> {
+    #[inline]
+    pub fn arith(&self, op: Arith, other: &Data) -> Option<Data> {
         match (self, other) {
-            (Data::Int(t, _), Data::Int(u, _)) if t == u => {
+            (&Data::Int(t, _), &Data::Int(u, _)) if t == u => {
                 let (a, b) = (self.int()?, other.int()?);
                 let v = match op {
                     Arith::Add => a + b,
@@ -197,14 +229,14 @@ impl Data {
                 };
                 Some(Data::integer(t, v))
             }
-            (Data::Real(a), Data::Real(b)) => Some(Data::Real(match op {
+            (&Data::Real(a), &Data::Real(b)) => Some(Data::Real(match op {
                 Arith::Add => a + b,
                 Arith::Sub => a - b,
                 Arith::Mul => a * b,
                 Arith::Div => a / b,
                 Arith::Mod => return None,
             })),
-            (Data::Time(a), Data::Time(b)) => match op {
+            (&Data::Time(a), &Data::Time(b)) => match op {
                 Arith::Add => Some(Data::Time(a.wrapping_add(b))),
                 Arith::Sub => Some(Data::Time(a.wrapping_sub(b))),
                 _ => None,
@@ -214,25 +246,26 @@ impl Data {
     }
 
     /// NEG: the negation, wrapped (`-32768` stays `-32768` as an INT).
-    pub fn negate(self) -> Option<Data> {
-        match self {
+    pub fn negate(&self) -> Option<Data> {
+        match *self {
             Data::Int(t, _) => Some(Data::integer(t, -self.int()?)),
             Data::Real(r) => Some(Data::Real(-r)),
             Data::Time(ns) => Some(Data::Time(ns.wrapping_neg())),
-            Data::Bool(_) => None,
+            Data::Bool(_) | Data::Text(_) => None,
         }
     }
 
     /// AND, OR, XOR of two values of one type: BOOL, or an integer's bits
     /// in its width (`None` for other types, or types that differ).
-    pub fn bitwise(self, op: Bitwise, other: Data) -> Option<Data> {
+    #[inline]
+    pub fn bitwise(&self, op: Bitwise, other: &Data) -> Option<Data> {
         match (self, other) {
-            (Data::Bool(a), Data::Bool(b)) => Some(Data::Bool(match op {
+            (&Data::Bool(a), &Data::Bool(b)) => Some(Data::Bool(match op {
                 Bitwise::And => a & b,
                 Bitwise::Or => a | b,
                 Bitwise::Xor => a ^ b,
             })),
-            (Data::Int(t, a), Data::Int(u, b)) if t == u => Some(Data::integer(
+            (&Data::Int(t, a), &Data::Int(u, b)) if t == u => Some(Data::integer(
                 t,
                 i128::from(match op {
                     Bitwise::And => a & b,
@@ -245,8 +278,8 @@ impl Data {
     }
 
     /// NOT: every bit of an integer in its width, or a BOOL.
-    pub fn invert(self) -> Option<Data> {
-        match self {
+    pub fn invert(&self) -> Option<Data> {
+        match *self {
             Data::Bool(b) => Some(Data::Bool(!b)),
             Data::Int(t, v) => Some(Data::integer(t, i128::from(!v))),
             _ => None,
@@ -257,8 +290,8 @@ impl Data {
     /// fill with zeros (SHR too, on a signed type: it moves bits, it does
     /// not divide) and give 0 from `n` ≥ the width; rotations take `n`
     /// modulo the width. `None` for other types.
-    pub fn shift(self, op: Shift, n: u32) -> Option<Data> {
-        let Data::Int(t, v) = self else {
+    pub fn shift(&self, op: Shift, n: u32) -> Option<Data> {
+        let Data::Int(t, v) = *self else {
             return None;
         };
         let bits = t.bits()?;
@@ -285,13 +318,16 @@ impl Data {
     }
 
     /// EQ, GT … : how two values of one type compare (`None` for types
-    /// that differ, or a REAL NaN, which no comparison holds for).
-    pub fn compare(self, other: Data) -> Option<Ordering> {
+    /// that differ, or a REAL NaN, which no comparison holds for); two
+    /// STRINGs compare by their bytes, as IEC's comparison of texts does.
+    #[inline]
+    pub fn compare(&self, other: &Data) -> Option<Ordering> {
         match (self, other) {
-            (Data::Bool(a), Data::Bool(b)) => Some(a.cmp(&b)),
+            (Data::Bool(a), Data::Bool(b)) => Some(a.cmp(b)),
             (Data::Int(t, _), Data::Int(u, _)) if t == u => Some(self.int()?.cmp(&other.int()?)),
-            (Data::Real(a), Data::Real(b)) => a.partial_cmp(&b),
-            (Data::Time(a), Data::Time(b)) => Some(a.cmp(&b)),
+            (Data::Real(a), Data::Real(b)) => a.partial_cmp(b),
+            (Data::Time(a), Data::Time(b)) => Some(a.cmp(b)),
+            (Data::Text(a), Data::Text(b)) => Some(a.as_bytes().cmp(b.as_bytes())),
             _ => None,
         }
     }
@@ -300,13 +336,16 @@ impl Data {
     /// narrower width, a REAL rounds to the nearest integer (halves away
     /// from zero) and saturates at the type's limits (NaN gives 0), BOOL
     /// is 0 or 1, TIME converts from and to milliseconds.
-    pub fn convert(self, to: DataType) -> Data {
-        let whole: i128 = match self {
+    pub fn convert(&self, to: DataType) -> Data {
+        let whole: i128 = match *self {
             Data::Bool(b) => i128::from(b),
             Data::Int(..) => self.int().unwrap_or(0),
+            // A text is no number: the type's zero (the compiler refuses
+            // a conversion of a STRING before a program runs).
+            Data::Text(_) => return to.zero(),
             Data::Real(r) => {
                 return match to {
-                    DataType::Real => self,
+                    DataType::Real => self.clone(),
                     DataType::Bool => Data::Bool(r != 0.0),
                     DataType::Time => Data::Time((f64::from(r) * 1e6).round() as i64),
                     _ => Data::integer(to, saturate(to, r)),
@@ -317,7 +356,8 @@ impl Data {
         match to {
             DataType::Bool => Data::Bool(whole != 0),
             DataType::Real => Data::Real(whole as f32),
-            DataType::Time => Data::Time(match self {
+            DataType::String => to.zero(),
+            DataType::Time => Data::Time(match *self {
                 Data::Time(ns) => ns,
                 _ => (whole as i64).wrapping_mul(1_000_000),
             }),
@@ -345,34 +385,34 @@ const fn mask_bits(bits: u32) -> u64 {
 
 /// MIN, MAX and LIMIT of values of one type (`None` for types that
 /// differ or a NaN); LIMIT(MN, IN, MX) is IN held within MN … MX.
-pub fn min(a: Data, b: Data) -> Option<Data> {
+pub fn min(a: &Data, b: &Data) -> Option<Data> {
     Some(if a.compare(b)? == Ordering::Greater {
-        b
+        b.clone()
     } else {
-        a
+        a.clone()
     })
 }
 
 /// See [`min`].
-pub fn max(a: Data, b: Data) -> Option<Data> {
+pub fn max(a: &Data, b: &Data) -> Option<Data> {
     Some(if a.compare(b)? == Ordering::Less {
-        b
+        b.clone()
     } else {
-        a
+        a.clone()
     })
 }
 
 /// See [`min`].
-pub fn limit(mn: Data, input: Data, mx: Data) -> Option<Data> {
-    min(max(input, mn)?, mx)
+pub fn limit(mn: &Data, input: &Data, mx: &Data) -> Option<Data> {
+    min(&max(input, mn)?, mx)
 }
 
 /// SEL: `in0` when `g` is FALSE, else `in1`.
-pub fn select(g: bool, in0: Data, in1: Data) -> Data {
+pub fn select(g: bool, in0: &Data, in1: &Data) -> Data {
     if g {
-        in1
+        in1.clone()
     } else {
-        in0
+        in0.clone()
     }
 }
 
@@ -417,3 +457,6 @@ pub enum Arith {
 
 #[cfg(test)]
 mod tests;
+
+// The scan copies values all the time: a text must not make them wider.
+const _: () = assert!(std::mem::size_of::<Data>() == 16);

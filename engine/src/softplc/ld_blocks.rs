@@ -14,153 +14,15 @@
 
 use super::data::{Data, DataType};
 use super::ld_format::{Format, Sender};
+pub use super::ld_pins::{inputs, outputs, text_input, NAMES};
 use super::ld_words::word_op;
 use super::uart::Uart;
-
-/// The LDmicro blocks by name.
-pub const NAMES: [&str; 47] = [
-    "LD_TON",
-    "LD_TOF",
-    "LD_RTO",
-    "LD_RTL",
-    "LD_TCY",
-    "LD_THI",
-    "LD_TLO",
-    "LD_CTU",
-    "LD_CTD",
-    "LD_CTC",
-    "LD_CTR",
-    "LD_OSL",
-    "LD_OSC",
-    "LD_TOGGLE",
-    "LD_BIN2BCD",
-    "LD_BCD2BIN",
-    "LD_SWAP",
-    "LD_OPPOSITE",
-    "LD_SR0",
-    "LD_SETBIT",
-    "LD_CLRBIT",
-    "LD_IFBIT",
-    "LD_IFNBIT",
-    "LD_ADD",
-    "LD_SUB",
-    "LD_MUL",
-    "LD_DIV",
-    "LD_MOD",
-    "LD_AND",
-    "LD_OR",
-    "LD_XOR",
-    "LD_SHL",
-    "LD_SHR",
-    "LD_ROL",
-    "LD_ROR",
-    "LD_MOVE",
-    "LD_NOT",
-    "LD_NEG",
-    "LD_UART_SEND",
-    "LD_UART_RECV",
-    "LD_UART_AVAIL",
-    "LD_UART_READY",
-    "LD_FMTSTR",
-    "LD_SEG7",
-    "LD_SEG9",
-    "LD_SEG14",
-    "LD_SEG16",
-];
-
-/// The input of a block given as a text (LDmicro's formatted string:
-/// `FMT := 'Hello \-5$R$N'`), fixed for the instance; `None` for a
-/// block without one.
-pub fn text_input(block: &str) -> Option<&'static str> {
-    (block == "LD_FMTSTR").then_some("FMT")
-}
 
 /// What an LDmicro block reaches beyond its inputs: the serial port and,
 /// for a formatted string, its text.
 pub struct Io<'a> {
     pub uart: &'a mut Uart,
     pub format: Option<&'a Format>,
-}
-
-/// A block's inputs (name, type), in order.
-pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
-    use DataType::{Bool, Dint, Int};
-    match family(block) {
-        Some(Family::Timer) => vec![("IN", Bool), ("P", Dint), ("T", Dint)],
-        Some(Family::Counter) => vec![
-            ("IN", Bool),
-            ("MAX", Dint),
-            ("INIT", Dint),
-            ("C", Dint),
-            ("EDGE", Int),
-        ],
-        Some(Family::Shot) => vec![("IN", Bool)],
-        Some(Family::Toggle) => vec![("IN", Bool), ("V", Bool)],
-        Some(Family::Op) => vec![
-            ("IN", Bool),
-            ("A", Dint),
-            ("B", Dint),
-            ("D", Dint),
-            ("W", Int),
-        ],
-        Some(Family::Serial) if block == "LD_FMTSTR" => vec![("IN", Bool), ("V", Dint)],
-        // N: how many of V's bytes, the lowest first (1 when 0).
-        Some(Family::Serial) => vec![("IN", Bool), ("V", Dint), ("N", Int)],
-        None => Vec::new(),
-    }
-}
-
-/// A block's outputs (name, type), in order: the power it passes on
-/// first.
-pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
-    use DataType::{Bool, Dint};
-    match family(block) {
-        Some(Family::Timer) => vec![("Q", Bool), ("T", Dint)],
-        Some(Family::Counter) => vec![("Q", Bool), ("C", Dint)],
-        Some(Family::Shot) => vec![("Q", Bool)],
-        Some(Family::Toggle) => vec![("Q", Bool), ("V", Bool)],
-        // A segment digit's source comes back as LDmicro rewrites it.
-        Some(Family::Op) if block.starts_with("LD_SEG") => {
-            vec![("Q", Bool), ("D", Dint), ("A", Dint)]
-        }
-        Some(Family::Op) => vec![("Q", Bool), ("D", Dint)],
-        Some(Family::Serial) if block == "LD_UART_RECV" => vec![("Q", Bool), ("V", Dint)],
-        Some(Family::Serial) => vec![("Q", Bool)],
-        None => Vec::new(),
-    }
-}
-
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Family {
-    Timer,
-    Counter,
-    Shot,
-    Toggle,
-    /// LDmicro's word operations the IEC functions lack: `D := f(A, B)`
-    /// in a `W`-bit word (16 when 0), or (IFBIT) a test passing power.
-    Op,
-    /// The serial port's: a byte `V` sent or received, a formatted
-    /// string sent (LD_UART_AVAIL and LD_UART_READY take only IN).
-    Serial,
-}
-
-fn family(block: &str) -> Option<Family> {
-    match block {
-        "LD_TON" | "LD_TOF" | "LD_RTO" | "LD_RTL" | "LD_TCY" | "LD_THI" | "LD_TLO" => {
-            Some(Family::Timer)
-        }
-        "LD_CTU" | "LD_CTD" | "LD_CTC" | "LD_CTR" => Some(Family::Counter),
-        "LD_OSL" | "LD_OSC" | "LD_UART_AVAIL" | "LD_UART_READY" => Some(Family::Shot),
-        "LD_UART_SEND" | "LD_UART_RECV" | "LD_FMTSTR" => Some(Family::Serial),
-        "LD_TOGGLE" => Some(Family::Toggle),
-        "LD_BIN2BCD" | "LD_BCD2BIN" | "LD_SWAP" | "LD_OPPOSITE" | "LD_SR0" | "LD_SETBIT"
-        | "LD_CLRBIT" | "LD_IFBIT" | "LD_IFNBIT" | "LD_ADD" | "LD_SUB" | "LD_MUL" | "LD_DIV"
-        | "LD_MOD" | "LD_AND" | "LD_OR" | "LD_XOR" | "LD_SHL" | "LD_SHR" | "LD_ROL" | "LD_ROR"
-        | "LD_MOVE" | "LD_NOT" | "LD_NEG" | "LD_SEG7" | "LD_SEG9" | "LD_SEG14" | "LD_SEG16" => {
-            Some(Family::Op)
-        }
-        _ => None,
-    }
 }
 
 /// Which LDmicro element a block is.
@@ -189,6 +51,7 @@ enum Kind {
     UartAvail,
     UartReady,
     FormattedString,
+    Text,
 }
 
 /// One instance: its kind, its memory, and what it gave out last.
@@ -237,6 +100,7 @@ impl LdBlock {
             "LD_UART_AVAIL" => Kind::UartAvail,
             "LD_UART_READY" => Kind::UartReady,
             "LD_FMTSTR" => Kind::FormattedString,
+            "LD_STRING" => Kind::Text,
             seg if seg.starts_with("LD_SEG") => Kind::Segments(seg[6..].parse().unwrap_or(7)),
             other => Kind::Op(NAMES.iter().find(|n| **n == other).map_or("", |n| &n[3..])),
         };
@@ -251,6 +115,12 @@ impl LdBlock {
             word: 0,
             moved: 0,
         }
+    }
+
+    /// Whether it is LDmicro's STRING (its text output is the
+    /// instance's).
+    pub fn is_text(&self) -> bool {
+        self.kind == Kind::Text
     }
 
     /// Output `i` (in the order of [`outputs`]).
@@ -305,6 +175,9 @@ impl LdBlock {
             }
             Kind::UartSend => self.send(s, word(1), word(2).max(1), io.uart),
             Kind::UartRecv => self.receive(s, word(1), word(2).max(1), io.uart),
+            // The text itself is the instance's (a block's state is
+            // plain words); the power passes on.
+            Kind::Text => s,
             Kind::UartAvail => s && io.uart.available(),
             Kind::UartReady => s && io.uart.ready(),
             Kind::FormattedString => match io.format {

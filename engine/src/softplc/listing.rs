@@ -14,6 +14,7 @@ impl fmt::Display for Data {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Data::Bool(b) => f.write_str(if b { "TRUE" } else { "FALSE" }),
+            Data::Text(ref t) => f.write_str(&super::literal::text_literal(t)),
             Data::Int(t, _) => write!(f, "{}#{}", t.name(), self.to_value()),
             Data::Real(r) => {
                 // Debug is the shortest text that reads back exactly;

@@ -5,7 +5,7 @@
 
 use std::fmt;
 
-use super::data::{Data, DataType};
+use super::data::{Data, DataType, STRING_CAPACITY};
 
 /// Why a literal is not one.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -25,6 +25,8 @@ pub enum LiteralError {
     /// A string literal (`'…'`) not closed, or with a `$` escape IEC
     /// has not.
     BadText(String),
+    /// A string literal of more characters (given) than a STRING holds.
+    TooLong(usize),
 }
 
 impl fmt::Display for LiteralError {
@@ -42,6 +44,10 @@ impl fmt::Display for LiteralError {
             LiteralError::WrongType { text, expected } => {
                 write!(f, "`{text}` is not a {} value", expected.name())
             }
+            LiteralError::TooLong(n) => write!(
+                f,
+                "a STRING holds at most {STRING_CAPACITY} characters; this text has {n}"
+            ),
             LiteralError::BadText(t) => write!(
                 f,
                 "`{t}` is not a string literal: '…' with $$ $' $R $N $L $T $P or $hh for other bytes"
@@ -58,7 +64,8 @@ impl std::error::Error for LiteralError {}
 pub fn literal_type(text: &str) -> Result<(Data, Option<DataType>), LiteralError> {
     let d = parse_literal(text, None)?;
     let typed = text.contains('#') || text.contains('.') || d.data_type().bits().is_none();
-    Ok((d, typed.then(|| d.data_type())))
+    let fixed = typed.then(|| d.data_type());
+    Ok((d, fixed))
 }
 
 /// Reads `text` as a literal. `expected` is the type the place needs: an
@@ -68,6 +75,9 @@ pub fn parse_literal(text: &str, expected: Option<DataType>) -> Result<Data, Lit
     let text = text.trim();
     if text.is_empty() {
         return Err(LiteralError::Empty);
+    }
+    if text.starts_with('\'') || expected == Some(DataType::String) {
+        return string(text, expected);
     }
     let (typed, body) = match text.split_once('#') {
         Some((prefix, rest)) if prefix.chars().all(|c| c.is_ascii_alphabetic()) => {
@@ -113,36 +123,63 @@ pub fn parse_literal(text: &str, expected: Option<DataType>) -> Result<Data, Lit
                 data_type: int_type,
             })?
         }
-        None => {
-            let upper = body.to_ascii_uppercase();
-            if upper == "TRUE" || upper == "FALSE" {
-                Data::Bool(upper == "TRUE")
-            } else if body.contains(['.', 'e', 'E']) && !body.contains('#') {
-                Data::Real(real(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?)
-            } else {
-                let too_big = || LiteralError::OutOfRange {
-                    text: text.to_string(),
-                    data_type: DataType::Lint,
-                };
-                let digits = body.trim_start_matches(['-', '+']);
-                let v = match integer(body) {
-                    Some(v) => v,
-                    // All digits, yet no integer: more than 64 bits hold.
-                    None if !digits.is_empty()
-                        && underscores_between_digits(digits)
-                        && digits.bytes().all(|c| c.is_ascii_digit() || c == b'_') =>
-                    {
-                        return Err(too_big())
-                    }
-                    None => return Err(LiteralError::BadNumber(text.into())),
-                };
-                in_range(DataType::Dint, v)
-                    .or_else(|| in_range(DataType::Lint, v))
-                    .ok_or_else(too_big)?
-            }
-        }
+        None => untyped(text, body)?,
     };
     Ok(value)
+}
+
+/// A literal without a type (`body`, of the literal `text`): a BOOL, a
+/// decimal (a REAL), or an integer (a DINT, a LINT when it needs 64
+/// bits).
+fn untyped(text: &str, body: &str) -> Result<Data, LiteralError> {
+    let upper = body.to_ascii_uppercase();
+    if upper == "TRUE" || upper == "FALSE" {
+        return Ok(Data::Bool(upper == "TRUE"));
+    }
+    if body.contains(['.', 'e', 'E']) && !body.contains('#') {
+        let r = real(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?;
+        return Ok(Data::Real(r));
+    }
+    let too_big = || LiteralError::OutOfRange {
+        text: text.to_string(),
+        data_type: DataType::Lint,
+    };
+    let digits = body.trim_start_matches(['-', '+']);
+    let v = match integer(body) {
+        Some(v) => v,
+        // All digits, yet no integer: more than 64 bits hold.
+        None if !digits.is_empty()
+            && underscores_between_digits(digits)
+            && digits.bytes().all(|c| c.is_ascii_digit() || c == b'_') =>
+        {
+            return Err(too_big())
+        }
+        None => return Err(LiteralError::BadNumber(text.into())),
+    };
+    in_range(DataType::Dint, v)
+        .or_else(|| in_range(DataType::Lint, v))
+        .ok_or_else(too_big)
+}
+
+/// A STRING literal, where the place takes one.
+fn string(text: &str, expected: Option<DataType>) -> Result<Data, LiteralError> {
+    match expected {
+        Some(t) if t != DataType::String => Err(LiteralError::WrongType {
+            text: text.to_string(),
+            expected: t,
+        }),
+        _ if !text.starts_with('\'') => Err(LiteralError::WrongType {
+            text: text.to_string(),
+            expected: DataType::String,
+        }),
+        _ => {
+            let value = parse_text(text)?;
+            if value.chars().count() > STRING_CAPACITY {
+                return Err(LiteralError::TooLong(value.chars().count()));
+            }
+            Ok(Data::text(&value))
+        }
+    }
 }
 
 /// `v` as type `t` if it is within its range.
@@ -255,8 +292,8 @@ fn time(s: &str) -> Option<i64> {
 
 /// A string literal `'…'` read (IEC 61131-3's single-byte strings: `$$`,
 /// `$'`, `$R`, `$N` and `$L` (LF), `$T`, `$P` and `$hh`): its bytes as
-/// characters U+0000–U+00FF. The soft PLC takes one only as an LDmicro
-/// formatted string's text.
+/// characters U+0000–U+00FF: a STRING's value, or an LDmicro formatted
+/// string's text.
 pub fn parse_text(text: &str) -> Result<String, LiteralError> {
     let bad = || LiteralError::BadText(text.to_string());
     let inner = text

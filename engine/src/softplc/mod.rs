@@ -13,6 +13,8 @@ pub mod data;
 pub mod il;
 pub mod ld_blocks;
 pub mod ld_format;
+mod ld_pins;
+pub mod ld_printf;
 mod ld_words;
 pub mod listing;
 pub mod literal;

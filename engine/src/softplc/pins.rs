@@ -16,6 +16,10 @@ pub struct Instance {
     /// Its text input's value, fixed at load (an LDmicro formatted
     /// string's, [`super::ld_blocks::text_input`]).
     pub format: Option<std::sync::Arc<super::ld_format::Format>>,
+    /// LDmicro's STRING's C format, fixed at load like `format`, and
+    /// what it gave out last (boxed: most blocks have none, and a scan
+    /// walks the instances).
+    pub printing: Option<Box<Printing>>,
 }
 
 /// The state of each kind of block.
@@ -93,6 +97,23 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
     }
 }
 
+/// LDmicro's STRING's format and its last text.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Printing {
+    pub printf: super::ld_printf::Printf,
+    printed: Data,
+}
+
+impl Printing {
+    /// A STRING printing `printf`, nothing printed yet.
+    pub fn new(printf: super::ld_printf::Printf) -> Printing {
+        Printing {
+            printf,
+            printed: DataType::String.zero(),
+        }
+    }
+}
+
 impl Instance {
     /// A new instance of `block` (one [`super::vars::is_block_type`] knows).
     pub fn new(block: &str) -> Instance {
@@ -116,6 +137,7 @@ impl Instance {
             count,
             inputs: inputs(block).iter().map(|(_, t)| t.zero()).collect(),
             format: None,
+            printing: None,
         }
     }
 
@@ -151,13 +173,21 @@ impl Instance {
             State::FTrig(t) => t.call(b0),
             State::Sr(s) => s.call(b0, b1),
             State::Rs(s) => s.call(b0, b1),
-            State::Ld(b) => b.call(
-                &self.inputs,
-                super::ld_blocks::Io {
-                    uart,
-                    format: self.format.as_deref(),
-                },
-            ),
+            State::Ld(b) => {
+                b.call(
+                    &self.inputs,
+                    super::ld_blocks::Io {
+                        uart,
+                        format: self.format.as_deref(),
+                    },
+                );
+                if let Some(p) = self.printing.as_deref_mut().filter(|_| b.is_text()) {
+                    p.printed = match self.inputs.get(2) {
+                        Some(unpowered) if !b0 => unpowered.clone(),
+                        _ => Data::text(&p.printf.print(w1)),
+                    };
+                }
+            }
         }
     }
 
@@ -180,6 +210,10 @@ impl Instance {
             (State::Ctud(c), _) => int(c.cv),
             (State::RTrig(RTrig { q, .. }) | State::FTrig(FTrig { q, .. }), _) => Data::Bool(*q),
             (State::Sr(Sr { q1 }) | State::Rs(Rs { q1 }), _) => Data::Bool(*q1),
+            (State::Ld(b), 1) if b.is_text() => self
+                .printing
+                .as_ref()
+                .map_or(Data::Bool(false), |p| p.printed.clone()),
             (State::Ld(b), i) => b.output(i),
         }
     }

@@ -2,7 +2,9 @@
 //! variable name or `%` address, block outputs as `TON0.Q`, `TON0.ET`,
 //! `CTU0.v`, and events that set a value of any type.
 
+use std::collections::HashMap;
 use std::fmt;
+use std::sync::{Arc, Mutex, PoisonError};
 
 use super::data::{Data, DataType};
 use super::literal::in_range;
@@ -81,6 +83,7 @@ fn takes(t: DataType) -> &'static str {
         DataType::Bool => "0 or 1",
         DataType::Real => "a number such as 2.5",
         DataType::Time => "milliseconds",
+        DataType::String => "nothing: the program writes its STRINGs",
         _ => "an integer in its range",
     }
 }
@@ -104,6 +107,52 @@ fn data_for(t: DataType, value: InputValue) -> Option<Data> {
 #[derive(Clone, Debug)]
 pub struct SoftPlc {
     machine: Machine,
+    /// Every STRING value an image has held, numbered: an image keeps a
+    /// text's number in its eight bytes (a recording keeps a text that
+    /// stays the same once, however many scans it spans).
+    texts: TextBook,
+}
+
+/// The texts of [`SoftPlc::texts`], behind a lock as `image_into` reads
+/// the machine through `&self`.
+#[derive(Default)]
+struct TextBook(Mutex<Texts>);
+
+impl TextBook {
+    fn lock(&self) -> std::sync::MutexGuard<'_, Texts> {
+        self.0.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+}
+
+impl Clone for TextBook {
+    fn clone(&self) -> Self {
+        TextBook(Mutex::new(self.lock().clone()))
+    }
+}
+
+impl fmt::Debug for TextBook {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "TextBook({} texts)", self.lock().list.len())
+    }
+}
+
+/// Texts numbered in the order first seen.
+#[derive(Clone, Default)]
+struct Texts {
+    list: Vec<Arc<String>>,
+    numbers: HashMap<Arc<String>, u32>,
+}
+
+impl Texts {
+    fn number(&mut self, text: &Arc<String>) -> u32 {
+        if let Some(&n) = self.numbers.get(text) {
+            return n;
+        }
+        let n = u32::try_from(self.list.len()).unwrap_or(u32::MAX);
+        self.list.push(Arc::clone(text));
+        self.numbers.insert(Arc::clone(text), n);
+        n
+    }
 }
 
 impl Default for SoftPlc {
@@ -118,6 +167,7 @@ impl SoftPlc {
         let empty = Program::load("").unwrap_or_else(|_| unreachable!("an empty program loads"));
         SoftPlc {
             machine: Machine::new(empty),
+            texts: TextBook::default(),
         }
     }
 
@@ -190,23 +240,28 @@ impl SoftPlc {
     }
 }
 
-/// A value's eight bytes in an image.
-fn encode(d: Data) -> [u8; WIDTH] {
-    let bits = match d {
+/// A value's eight bytes in an image (a text's number in `texts`).
+fn encode(d: &Data, texts: &mut Texts) -> [u8; WIDTH] {
+    let bits = match *d {
         Data::Bool(b) => i64::from(b),
         Data::Int(_, v) | Data::Time(v) => v,
         Data::Real(r) => i64::from(r.to_bits()),
+        Data::Text(ref t) => i64::from(texts.number(t)),
     };
     bits.to_le_bytes()
 }
 
 /// A value of type `t` from its eight bytes.
-fn decode(t: DataType, bytes: [u8; WIDTH]) -> Data {
+fn decode(t: DataType, bytes: [u8; WIDTH], texts: &Texts) -> Data {
     let bits = i64::from_le_bytes(bytes);
     match t {
         DataType::Bool => Data::Bool(bits != 0),
         DataType::Real => Data::Real(f32::from_bits(bits as u32)),
         DataType::Time => Data::Time(bits),
+        DataType::String => usize::try_from(bits)
+            .ok()
+            .and_then(|n| texts.list.get(n))
+            .map_or_else(|| t.zero(), |text| Data::Text(Arc::clone(text))),
         t => Data::integer(t, i128::from(bits)),
     }
 }
@@ -233,7 +288,7 @@ impl Plc for SoftPlc {
             plc::Command::SetInput(device, value) => {
                 let slot = self.slot(device)?;
                 let data = self.data(slot, value)?;
-                if !self.machine.program_mut().set_terminal(slot, data) {
+                if !self.machine.program_mut().set_terminal(slot, data.clone()) {
                     self.machine.write(slot, data);
                 }
                 Ok(())
@@ -306,9 +361,9 @@ impl Plc for SoftPlc {
             let at = device.0 - BLOCK;
             program.block_output((at / PINS) as usize, (at % PINS) as usize)
         } else {
-            self.machine.last_scan().get(device.0 as usize).copied()
+            self.machine.last_scan().get(device.0 as usize).cloned()
         };
-        data.map_or(Value::Bit(false), Data::to_value)
+        data.map_or(Value::Bit(false), |d| d.to_value())
     }
 
     fn read_image(&self, image: &[u8], device: Device) -> Option<Value> {
@@ -323,7 +378,8 @@ impl Plc for SoftPlc {
             (slot, program.slot_type(slot)?)
         };
         let bytes = plc::image_bytes::<WIDTH>(image, at * WIDTH)?;
-        Some(decode(t, bytes).to_value())
+        let texts = self.texts.lock();
+        Some(decode(t, bytes, &texts).to_value())
     }
 
     fn next_scan_end(&self) -> Option<SimTime> {
@@ -344,8 +400,9 @@ impl Plc for SoftPlc {
     /// outputs (four 8-byte places a block).
     fn image_into(&self, image: &mut Vec<u8>) {
         image.clear();
-        for &d in self.machine.last_scan() {
-            image.extend_from_slice(&encode(d));
+        let mut texts = self.texts.lock();
+        for d in self.machine.last_scan() {
+            image.extend_from_slice(&encode(d, &mut texts));
         }
         let program = self.machine.program();
         for block in 0..program.block_count() {
@@ -353,7 +410,7 @@ impl Plc for SoftPlc {
                 let d = program
                     .block_output(block, pin)
                     .unwrap_or(Data::Bool(false));
-                image.extend_from_slice(&encode(d));
+                image.extend_from_slice(&encode(&d, &mut texts));
             }
         }
     }

@@ -6,7 +6,7 @@ use std::collections::HashMap;
 use std::fmt;
 
 use super::address::{Address, Area};
-use super::data::{Arith, Bitwise, Data, DataType};
+use super::data::{Arith, Bitwise, Data, DataType, STRING_CAPACITY};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use super::literal::in_range;
 use super::pins::Instance;
@@ -19,7 +19,7 @@ use check::{binary_type, describe, jump, need_cr};
 pub const STEPS_PER_SCAN: usize = 1_000_000;
 
 /// Where an operand's value comes from.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) enum Src {
     Slot(usize),
     Const(Data),
@@ -223,7 +223,7 @@ impl Program {
             .addresses
             .iter()
             .filter(|(a, _)| a.area == Area::Input)
-            .map(|&(_, s)| (s, p.values[s]))
+            .map(|&(_, s)| (s, p.values[s].clone()))
             .collect();
         Ok(p)
     }
@@ -334,11 +334,14 @@ impl Program {
     /// The slot of a name (any case) or an address.
     fn slot(&mut self, operand: &Operand) -> Result<Src, LoadError> {
         match operand {
-            Operand::Literal(d) => Ok(Src::Const(*d)),
-            Operand::Text(_) => Err(LoadError::Type(
-                "a string literal is only an LDmicro formatted string's text (LD_FMTSTR's FMT)"
-                    .into(),
-            )),
+            Operand::Literal(d) => Ok(Src::Const(d.clone())),
+            Operand::Text(t) if t.chars().count() > STRING_CAPACITY => {
+                Err(LoadError::Type(format!(
+                    "a STRING holds at most {STRING_CAPACITY} characters; this text has {}",
+                    t.chars().count()
+                )))
+            }
+            Operand::Text(t) => Ok(Src::Const(Data::text(t))),
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
                 _ => Err(LoadError::Undeclared(n.clone())),
@@ -359,9 +362,9 @@ impl Program {
         }
     }
 
-    fn type_of(&self, src: Src) -> DataType {
+    fn type_of(&self, src: &Src) -> DataType {
         match src {
-            Src::Slot(s) => self.values[s].data_type(),
+            Src::Slot(s) => self.values[*s].data_type(),
             Src::Const(d) => d.data_type(),
         }
     }
@@ -369,7 +372,7 @@ impl Program {
     /// An integer literal taken at `want` when it fits (an untyped `1`
     /// reads as a DINT), or an integer as a REAL.
     fn fit(src: Src, want: DataType) -> Src {
-        match src {
+        match &src {
             Src::Const(d @ Data::Int(..)) if want.bits().is_some() => d
                 .int()
                 .and_then(|v| in_range(want, v))
@@ -397,7 +400,7 @@ impl Program {
         let step = match line.operator {
             Operator::Ld => {
                 let src = self.operand(line)?.ok_or(LoadError::Unbalanced)?;
-                let t = self.type_of(src);
+                let t = self.type_of(&src);
                 if line.negated && t.bits().is_none() && t != DataType::Bool {
                     return Err(LoadError::Type(format!(
                         "LDN needs a BOOL or a bit string, not {}",
@@ -484,11 +487,11 @@ impl Program {
         let src = self.operand(line)?.map(|s| Program::fit(s, t));
         if line.deferred {
             open.push((binary, Some(t)));
-            *cr = src.map(|s| self.type_of(s));
+            *cr = src.as_ref().map(|s| self.type_of(s));
             Ok(Step::Open(binary, src))
         } else {
             let src = src.ok_or(LoadError::Unbalanced)?;
-            *cr = Some(binary_type(binary, t, self.type_of(src))?);
+            *cr = Some(binary_type(binary, t, self.type_of(&src))?);
             Ok(Step::Binary(binary, src))
         }
     }
@@ -511,19 +514,19 @@ impl Program {
             Function::Neg if t == DataType::Bool => return wrong("NEG needs a number".into()),
             Function::Neg | Function::Move => t,
             Function::Shl | Function::Shr | Function::Rol | Function::Ror => {
-                if t.bits().is_none() || self.type_of(args[0]).bits().is_none() {
+                if t.bits().is_none() || self.type_of(&args[0]).bits().is_none() {
                     return wrong("SHL, SHR, ROL and ROR shift an integer by an integer".into());
                 }
                 t
             }
             Function::Min | Function::Max | Function::Limit => {
                 for a in &mut args {
-                    *a = Program::fit(*a, t);
-                    if self.type_of(*a) != t {
+                    *a = Program::fit(a.clone(), t);
+                    if self.type_of(a) != t {
                         return wrong(format!(
                             "{} and {} do not mix: convert one (*_TO_*)",
                             t.name(),
-                            self.type_of(*a).name()
+                            self.type_of(a).name()
                         ));
                     }
                 }
@@ -533,9 +536,9 @@ impl Program {
                 if t != DataType::Bool {
                     return wrong("SEL's first input (the current result) is a BOOL".into());
                 }
-                let first = self.type_of(args[0]);
-                args[1] = Program::fit(args[1], first);
-                if self.type_of(args[1]) != first {
+                let first = self.type_of(&args[0]);
+                args[1] = Program::fit(args[1].clone(), first);
+                if self.type_of(&args[1]) != first {
                     return wrong("SEL's two values have one type".into());
                 }
                 first

@@ -68,8 +68,8 @@ impl Program {
     /// Starts a scan: the input terminals copied in, the cursor at the
     /// first step (its buffer kept).
     pub fn begin_scan(&mut self, cursor: &mut Cursor) {
-        for &(slot, v) in &self.input_terminals {
-            self.values[slot] = v;
+        for (slot, v) in &self.input_terminals {
+            self.values[*slot] = v.clone();
         }
         cursor.pc = 0;
         cursor.cr = Data::Bool(false);
@@ -109,40 +109,44 @@ impl Program {
         let cr = &mut cursor.cr;
         match step {
             Step::Ld(src, neg) => {
-                let v = read(values, *src);
+                let v = peek(values, src);
                 read_bit = v.is_on();
-                *cr = negate(v, *neg);
+                *cr = if *neg {
+                    negate(v.clone(), true)
+                } else {
+                    v.clone()
+                };
             }
-            Step::St(slot, neg) => values[*slot] = negate(*cr, *neg),
+            Step::St(slot, neg) => values[*slot] = negate(cr.clone(), *neg),
             Step::Set(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(true),
             Step::Reset(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(false),
             Step::Set(_) | Step::Reset(_) => {}
-            Step::Not => *cr = negate(*cr, true),
+            Step::Not => *cr = negate(std::mem::replace(cr, Data::Bool(false)), true),
             Step::Binary(op, src) => {
-                let v = read(values, *src);
+                let v = peek(values, src);
                 read_bit = v.is_on();
-                *cr = apply(*op, *cr, v);
+                *cr = apply(*op, cr, v);
             }
             Step::Open(op, src) => {
-                cursor.open.push((*op, *cr));
+                cursor.open.push((*op, cr.clone()));
                 if let Some(src) = src {
-                    let v = read(values, *src);
+                    let v = read(values, src);
                     read_bit = v.is_on();
                     *cr = v;
                 }
             }
             Step::Close => {
                 if let Some((op, saved)) = cursor.open.pop() {
-                    *cr = apply(op, saved, *cr);
+                    *cr = apply(op, &saved, cr);
                 }
             }
-            Step::Func(f, args) => *cr = call_function(values, *f, *cr, args),
+            Step::Func(f, args) => *cr = call_function(values, *f, cr, args),
             // A condition not met: the step does nothing.
             Step::Jmp(when, _)
             | Step::Ret(when)
             | Step::CallUser { when, .. }
             | Step::Cal { when, .. }
-                if !on(*when, *cr) => {}
+                if !on(*when, cr) => {}
             Step::Jmp(_, target) => cursor.pc = *target,
             Step::Ret(_) | Step::Return => {
                 let c = (&mut cursor.frames, &mut cursor.open, &mut cursor.pc);
@@ -177,7 +181,7 @@ impl Program {
     /// The value of a declared name (any case) or an address the program
     /// uses.
     pub fn value(&self, name_or_address: &str) -> Option<Data> {
-        self.values.get(self.slot_of(name_or_address)?).copied()
+        self.values.get(self.slot_of(name_or_address)?).cloned()
     }
 
     /// The slot of a declared name (any case) or an address the program
@@ -231,7 +235,7 @@ impl Program {
     pub fn input_values(&self) -> Vec<(Address, Data)> {
         self.input_terminals
             .iter()
-            .filter_map(|&(slot, v)| Some((self.slot_address(slot)?, v)))
+            .filter_map(|(slot, v)| Some((self.slot_address(*slot)?, v.clone())))
             .collect()
     }
 
@@ -282,13 +286,13 @@ impl Program {
     pub fn power_cycle(&mut self) {
         for (slot, v) in self.values.iter_mut().enumerate() {
             if !self.retained.contains(&slot) {
-                *v = self.initial[slot];
+                *v = self.initial[slot].clone();
             }
         }
         for (b, (_, kind)) in self.blocks.iter_mut().zip(&self.block_names) {
-            let format = b.format.take();
+            let (format, printing) = (b.format.take(), b.printing.take());
             *b = Instance::new(kind);
-            b.format = format;
+            (b.format, b.printing) = (format, printing);
         }
         self.uart.power_cycle();
     }
@@ -297,8 +301,8 @@ impl Program {
 /// Whether a step conditional on `when` (C: TRUE, CN: FALSE, none:
 /// always) runs with current result `cr`.
 #[inline(always)]
-fn on(when: Option<bool>, cr: Data) -> bool {
-    when.is_none_or(|w| cr == Data::Bool(w))
+fn on(when: Option<bool>, cr: &Data) -> bool {
+    when.is_none_or(|w| *cr == Data::Bool(w))
 }
 
 /// A call of an instance of the program's own blocks: its inputs copied
@@ -312,12 +316,12 @@ fn enter(
     call: usize,
     entry: usize,
 ) {
-    for &(slot, src) in inputs {
-        values[slot] = read(values, src);
+    for (slot, src) in inputs {
+        values[*slot] = read(values, src);
     }
     frames.push(Frame {
         ret: *pc,
-        cr: *cr,
+        cr: cr.clone(),
         open: open.len(),
         call,
     });
@@ -342,7 +346,7 @@ fn give_back(
     *pc = frame.ret;
     if let Some(Step::CallUser { outputs, .. }) = steps.get(frame.call) {
         for &(to, from) in outputs {
-            values[to] = values[from];
+            values[to] = values[from].clone();
         }
     }
 }
@@ -350,9 +354,9 @@ fn give_back(
 /// Function `f` of the current result `cr` and the operands `args` (at
 /// most two: read without allocating).
 #[inline(always)]
-fn call_function(values: &[Data], f: Function, cr: Data, args: &[Src]) -> Data {
-    let mut operands = [cr; 2];
-    for (v, &a) in operands.iter_mut().zip(args) {
+fn call_function(values: &[Data], f: Function, cr: &Data, args: &[Src]) -> Data {
+    let mut operands = [Data::Bool(false), Data::Bool(false)];
+    for (v, a) in operands.iter_mut().zip(args) {
         *v = read(values, a);
     }
     function(f, cr, &operands[..args.len().min(2)])
@@ -378,8 +382,8 @@ fn call_block(
     let Some(instance) = blocks.get_mut(*block) else {
         return;
     };
-    for &(i, src) in inputs {
-        if let Some(slot) = instance.inputs.get_mut(i) {
+    for (i, src) in inputs {
+        if let Some(slot) = instance.inputs.get_mut(*i) {
             *slot = read(values, src);
         }
     }
@@ -391,11 +395,17 @@ fn call_block(
 
 /// What `src` holds: a value of the table, or a constant.
 #[inline(always)]
-fn read(values: &[Data], src: Src) -> Data {
+fn peek<'a>(values: &'a [Data], src: &'a Src) -> &'a Data {
     match src {
-        Src::Slot(s) => values[s],
+        Src::Slot(s) => &values[*s],
         Src::Const(d) => d,
     }
+}
+
+/// A copy of what `src` holds.
+#[inline(always)]
+fn read(values: &[Data], src: &Src) -> Data {
+    peek(values, src).clone()
 }
 
 /// `d` negated when `neg`: a BOOL inverted, an integer's bits inverted.
@@ -409,9 +419,11 @@ fn negate(d: Data, neg: bool) -> Data {
 
 /// `a OP b` (types checked at load: a mismatch cannot reach here, and
 /// gives FALSE if it did).
-fn apply(op: Binary, a: Data, b: Data) -> Data {
+#[inline(always)]
+fn apply(op: Binary, a: &Data, b: &Data) -> Data {
     let result = match op {
-        Binary::Logic(bitwise, neg) => a.bitwise(bitwise, negate(b, neg)),
+        Binary::Logic(bitwise, false) => a.bitwise(bitwise, b),
+        Binary::Logic(bitwise, true) => a.bitwise(bitwise, &negate(b.clone(), true)),
         Binary::Arith(arith) => a.arith(arith, b),
         Binary::Cmp(cmp) => Some(Data::Bool(a.compare(b).is_some_and(|o| match cmp {
             Cmp::Gt => o == Ordering::Greater,
@@ -427,7 +439,7 @@ fn apply(op: Binary, a: Data, b: Data) -> Data {
 
 /// A function of the current result `cr` and `args` (types checked at
 /// load; a mismatch cannot reach here and leaves `cr` as it was).
-fn function(f: Function, cr: Data, args: &[Data]) -> Data {
+fn function(f: Function, cr: &Data, args: &[Data]) -> Data {
     let count = |d: &Data| match d.convert(DataType::Udint) {
         Data::Int(_, n) => u32::try_from(n).unwrap_or(u32::MAX),
         _ => 0,
@@ -435,22 +447,22 @@ fn function(f: Function, cr: Data, args: &[Data]) -> Data {
     let shift = |op| args.first().and_then(|n| cr.shift(op, count(n)));
     let result = match f {
         Function::Neg => cr.negate(),
-        Function::Move => Some(cr),
+        Function::Move => Some(cr.clone()),
         Function::Shl => shift(Shift::Shl),
         Function::Shr => shift(Shift::Shr),
         Function::Rol => shift(Shift::Rol),
         Function::Ror => shift(Shift::Ror),
-        Function::Min => args.first().and_then(|&b| data::min(cr, b)),
-        Function::Max => args.first().and_then(|&b| data::max(cr, b)),
+        Function::Min => args.first().and_then(|b| data::min(cr, b)),
+        Function::Max => args.first().and_then(|b| data::max(cr, b)),
         Function::Limit => match args {
-            [input, mx] => data::limit(cr, *input, *mx),
+            [input, mx] => data::limit(cr, input, mx),
             _ => None,
         },
         Function::Sel => match args {
-            [in0, in1] => Some(data::select(cr == Data::Bool(true), *in0, *in1)),
+            [in0, in1] => Some(data::select(*cr == Data::Bool(true), in0, in1)),
             _ => None,
         },
         Function::Convert { to, .. } => Some(cr.convert(to)),
     };
-    result.unwrap_or(cr)
+    result.unwrap_or_else(|| cr.clone())
 }

@@ -18,7 +18,7 @@
 use std::fmt;
 
 use super::address::{Address, AddressError};
-use super::data::{Data, DataType};
+use super::data::{Data, DataType, STRING_CAPACITY};
 use super::literal::{parse_literal, LiteralError};
 use crate::error::Located;
 
@@ -110,6 +110,9 @@ pub enum VarError {
     },
     /// No elementary type or standard block of that name.
     UnknownType(String),
+    /// `STRING[n]`: the soft PLC's STRINGs all hold up to
+    /// [`STRING_CAPACITY`] characters.
+    StringLength(String),
     Address(AddressError),
     Literal(LiteralError),
     /// A block instance cannot be located or given a value.
@@ -133,6 +136,10 @@ impl fmt::Display for VarError {
                 write!(f, "`{name}` is declared twice (first on line {first})")
             }
             VarError::UnknownType(t) => write!(f, "unknown type `{t}`"),
+            VarError::StringLength(t) => write!(
+                f,
+                "`{t}`: write STRING without a length (every STRING holds up to {STRING_CAPACITY} characters)"
+            ),
             VarError::Address(e) => e.fmt(f),
             VarError::Literal(e) => e.fmt(f),
             VarError::BlockWithValue(n) => {
@@ -294,7 +301,12 @@ fn declaration(
             let upper = type_name.to_ascii_uppercase();
             let own = blocks.iter().any(|b| b.eq_ignore_ascii_case(type_name));
             if !is_block_type(&upper) && !own {
-                return Err(VarError::UnknownType(type_name.to_string()));
+                return Err(match upper.strip_prefix("STRING") {
+                    Some(length) if length.trim_start().starts_with('[') => {
+                        VarError::StringLength(type_name.to_string())
+                    }
+                    _ => VarError::UnknownType(type_name.to_string()),
+                });
             }
             if address.is_some() || value.is_some() {
                 return Err(VarError::BlockWithValue(name));

@@ -301,13 +301,13 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
                     .map_err(|e| TestCaseError::fail(e.to_string()))?,
             );
             let want = reference.value(w).map(|d| d.to_value());
-            prop_assert_eq!(Some(got), want, "scan {}: {}\n{}", j, w, text);
+            prop_assert_eq!(Some(got.clone()), want, "scan {}: {}\n{}", j, w, text);
             let dev = third
                 .device(w)
                 .map_err(|e| TestCaseError::fail(e.to_string()))?;
             prop_assert_eq!(
                 third.read(dev),
-                got,
+                got.clone(),
                 "scan {}: {} decompiled\n{}\n{}",
                 j,
                 w,

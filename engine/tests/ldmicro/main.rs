@@ -6,3 +6,4 @@ mod common;
 mod read;
 mod run;
 mod segments;
+mod strings;

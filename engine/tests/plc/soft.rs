@@ -133,6 +133,21 @@ fn a_scan_steps_one_instruction_at_a_time_and_is_traced() {
     assert!(trace.ran.iter().all(|&r| r));
     // `LD count` read 0 (off); `ADD 1` left 1 (on).
     assert!(!trace.read[3] && trace.result[4]);
+    // Mid-scan, a read shows what the last whole scan left: `count` is
+    // stored by the sixth instruction, and shows at the scan's end.
+    assert_eq!(value(plc.as_ref(), "count"), 1);
+    for _ in 0..6 {
+        plc.step_instruction();
+    }
+    assert_eq!(
+        value(plc.as_ref(), "count"),
+        1,
+        "2 is stored, not yet shown"
+    );
+    for _ in 6..9 {
+        plc.step_instruction();
+    }
+    assert_eq!(value(plc.as_ref(), "count"), 2);
 }
 
 #[test]

@@ -198,10 +198,10 @@ impl LadderCtx {
                     let preset = self.preset_of(name);
                     match (value, current) {
                         (Some(v), Some(c)) => match preset {
-                            Some(k) => format!("{v} ({c}/K{k})"),
-                            None => format!("{v} ({c})"),
+                            Some(k) => format!("{} ({c}/K{k})", v.watched()),
+                            None => format!("{} ({c})", v.watched()),
                         },
-                        (Some(v), None) => v.to_string(),
+                        (Some(v), None) => v.watched(),
                         (None, Some(c)) => c.to_string(),
                         (None, None) => "?".to_string(),
                     }
@@ -215,7 +215,7 @@ impl LadderCtx {
             vs.iter()
                 .filter_map(|v| {
                     let value = self.handle(plc, &v.name).map(|h| plc.read(h))?;
-                    Some((v.name.clone(), value.to_string()))
+                    Some((v.name.clone(), value.watched()))
                 })
                 .collect()
         });

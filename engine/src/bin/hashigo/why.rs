@@ -241,7 +241,9 @@ fn report(
     changes: &Changes,
 ) -> String {
     let mut out = String::new();
-    let value = changes.get(name).map_or(Value::Int(0), |(_, v, _)| *v);
+    let value = changes
+        .get(name)
+        .map_or(Value::Int(0), |(_, v, _)| v.clone());
     let scans = plc.scans();
     let _ = writeln!(
         out,

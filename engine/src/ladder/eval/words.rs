@@ -80,7 +80,7 @@ impl Words {
     fn read(&mut self, text: &str, want: Option<DataType>, bits: &mut dyn Bits) -> Option<Data> {
         match self.key(text) {
             Some((_, DataType::Bool)) => Some(Data::Bool(bits.get_bit(text.trim()))),
-            Some((key, t)) => Some(*self.values.entry(key).or_insert(t.zero())),
+            Some((key, t)) => Some(self.values.entry(key).or_insert_with(|| t.zero()).clone()),
             None => {
                 let (d, fixed) = literal_type(text).ok()?;
                 if fixed.is_some() {
@@ -116,7 +116,7 @@ impl Words {
     /// A word's value, if `text` names one.
     pub fn get(&self, text: &str) -> Option<Data> {
         let (key, _) = self.key(text)?;
-        self.values.get(&key).copied()
+        self.values.get(&key).cloned()
     }
 
     /// Box `b` with power `power` at time `now` (ns): its power out.
@@ -127,7 +127,7 @@ impl Words {
             Some(Shape::Compare) => {
                 let args = self.args(b, bits);
                 let holds = match args.as_slice() {
-                    [x, y] => x.compare(*y).is_some_and(|o| compare(&kind, o)),
+                    [x, y] => x.compare(y).is_some_and(|o| compare(&kind, o)),
                     _ => false,
                 };
                 power && holds
@@ -137,7 +137,7 @@ impl Words {
                     let args = self.args(b, bits);
                     if let Some(result) = function(&kind, &args) {
                         for (_, v) in &b.outputs {
-                            self.write(v, result, bits);
+                            self.write(v, result.clone(), bits);
                         }
                     }
                 }
@@ -247,12 +247,12 @@ fn compare(kind: &str, o: Ordering) -> bool {
 
 /// A function of its data inputs (in order), as IEC defines it.
 fn function(kind: &str, args: &[Data]) -> Option<Data> {
-    let fold = |f: &dyn Fn(Data, Data) -> Option<Data>| {
+    let fold = |f: &dyn Fn(&Data, &Data) -> Option<Data>| {
         let (first, rest) = args.split_first()?;
-        rest.iter().try_fold(*first, |acc, &x| f(acc, x))
+        rest.iter().try_fold(first.clone(), |acc, x| f(&acc, x))
     };
-    let arith = |op| fold(&|a: Data, b| a.arith(op, b));
-    let logic = |op| fold(&|a: Data, b| a.bitwise(op, b));
+    let arith = |op| fold(&|a: &Data, b| a.arith(op, b));
+    let logic = |op| fold(&|a: &Data, b| a.bitwise(op, b));
     let shift = |op| {
         let n = args.get(1)?.convert(DataType::Udint).to_value().as_i64();
         args.first()?
@@ -271,13 +271,13 @@ fn function(kind: &str, args: &[Data]) -> Option<Data> {
         "MIN" => fold(&data::min),
         "NOT" => args.first()?.invert(),
         "NEG" => args.first()?.negate(),
-        "MOVE" => args.first().copied(),
+        "MOVE" => args.first().cloned(),
         "SEL" => match args {
-            [g, a, b] => Some(data::select(g.is_on(), *a, *b)),
+            [g, a, b] => Some(data::select(g.is_on(), a, b)),
             _ => None,
         },
         "LIMIT" => match args {
-            [mn, x, mx] => data::limit(*mn, *x, *mx),
+            [mn, x, mx] => data::limit(mn, x, mx),
             _ => None,
         },
         "SHL" => shift(Shift::Shl),

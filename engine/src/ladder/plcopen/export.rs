@@ -458,7 +458,10 @@ fn named(e: &Element) -> Result<(), String> {
 /// A declared soft PLC variable as PLCopen declares it.
 fn declared_variable(v: &crate::ladder::Variable) -> String {
     let ty = v.data_type.trim().to_ascii_uppercase();
-    let ty = if v.elementary().is_some() {
+    // TC6's schema writes STRING as `<string/>`, the others as named.
+    let ty = if ty == "STRING" {
+        "<string/>".to_string()
+    } else if v.elementary().is_some() {
         format!("<{ty}/>")
     } else {
         format!("<derived name=\"{}\"/>", escape(ty.as_str()))

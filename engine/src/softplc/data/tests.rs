@@ -10,15 +10,15 @@ fn int(t: DataType, v: i128) -> Data {
 fn integers_wrap_in_their_width() {
     use Arith::*;
     let i = |v| int(DataType::Int, v);
-    assert_eq!(i(32767).arith(Add, i(1)), Some(i(-32768)));
-    assert_eq!(i(-32768).arith(Sub, i(1)), Some(i(32767)));
-    assert_eq!(i(300).arith(Mul, i(300)), Some(i(90000 - 65536)));
+    assert_eq!(i(32767).arith(Add, &i(1)), Some(i(-32768)));
+    assert_eq!(i(-32768).arith(Sub, &i(1)), Some(i(32767)));
+    assert_eq!(i(300).arith(Mul, &i(300)), Some(i(90000 - 65536)));
     let u = |v| int(DataType::Uint, v);
-    assert_eq!(u(0).arith(Sub, u(1)), Some(u(65535)));
+    assert_eq!(u(0).arith(Sub, &u(1)), Some(u(65535)));
     assert_eq!(u(65535).to_value(), Value::Uint(65535));
     let ul = |v| int(DataType::Ulint, v);
     assert_eq!(
-        ul(i128::from(u64::MAX)).arith(Mul, ul(i128::from(u64::MAX))),
+        ul(i128::from(u64::MAX)).arith(Mul, &ul(i128::from(u64::MAX))),
         Some(ul(1))
     );
     assert_eq!(
@@ -31,27 +31,27 @@ fn integers_wrap_in_their_width() {
 fn division_truncates_and_by_zero_gives_zero() {
     use Arith::*;
     let d = |v| int(DataType::Dint, v);
-    assert_eq!(d(7).arith(Div, d(2)), Some(d(3)));
-    assert_eq!(d(-7).arith(Div, d(2)), Some(d(-3)));
-    assert_eq!(d(-7).arith(Mod, d(2)), Some(d(-1)));
-    assert_eq!(d(5).arith(Div, d(0)), Some(d(0)));
-    assert_eq!(d(5).arith(Mod, d(0)), Some(d(0)));
-    let Some(Data::Real(r)) = Data::Real(1.0).arith(Div, Data::Real(0.0)) else {
+    assert_eq!(d(7).arith(Div, &d(2)), Some(d(3)));
+    assert_eq!(d(-7).arith(Div, &d(2)), Some(d(-3)));
+    assert_eq!(d(-7).arith(Mod, &d(2)), Some(d(-1)));
+    assert_eq!(d(5).arith(Div, &d(0)), Some(d(0)));
+    assert_eq!(d(5).arith(Mod, &d(0)), Some(d(0)));
+    let Some(Data::Real(r)) = Data::Real(1.0).arith(Div, &Data::Real(0.0)) else {
         panic!("a REAL divides");
     };
     assert!(r.is_infinite());
-    assert_eq!(Data::Real(1.0).arith(Mod, Data::Real(2.0)), None);
+    assert_eq!(Data::Real(1.0).arith(Mod, &Data::Real(2.0)), None);
 }
 
 #[test]
 fn different_types_do_not_mix() {
     let a = int(DataType::Int, 1);
     let b = int(DataType::Dint, 1);
-    assert_eq!(a.arith(Arith::Add, b), None);
-    assert_eq!(a.compare(b), None);
-    assert_eq!(Data::Real(f32::NAN).compare(Data::Real(1.0)), None);
+    assert_eq!(a.arith(Arith::Add, &b), None);
+    assert_eq!(a.compare(&b), None);
+    assert_eq!(Data::Real(f32::NAN).compare(&Data::Real(1.0)), None);
     assert_eq!(
-        int(DataType::Word, 0xFFFF).compare(int(DataType::Word, 1)),
+        int(DataType::Word, 0xFFFF).compare(&int(DataType::Word, 1)),
         Some(Ordering::Greater),
         "a WORD compares unsigned"
     );
@@ -113,12 +113,12 @@ fn conversions_wrap_round_and_saturate() {
 #[test]
 fn words_bitwise_shifted_and_rotated_in_their_width() {
     let w = |v| int(DataType::Word, v);
-    assert_eq!(w(0xF0F0).bitwise(Bitwise::And, w(0xFF00)), Some(w(0xF000)));
-    assert_eq!(w(0xF0F0).bitwise(Bitwise::Xor, w(0xFFFF)), Some(w(0x0F0F)));
+    assert_eq!(w(0xF0F0).bitwise(Bitwise::And, &w(0xFF00)), Some(w(0xF000)));
+    assert_eq!(w(0xF0F0).bitwise(Bitwise::Xor, &w(0xFFFF)), Some(w(0x0F0F)));
     assert_eq!(w(0x00FF).invert(), Some(w(0xFF00)));
     assert_eq!(int(DataType::Int, 0).invert(), Some(int(DataType::Int, -1)));
     assert_eq!(
-        Data::Bool(true).bitwise(Bitwise::Or, Data::Bool(false)),
+        Data::Bool(true).bitwise(Bitwise::Or, &Data::Bool(false)),
         Some(Data::Bool(true))
     );
     assert_eq!(w(0x8001).shift(Shift::Shl, 1), Some(w(0x0002)));
@@ -144,14 +144,14 @@ fn words_bitwise_shifted_and_rotated_in_their_width() {
 #[test]
 fn min_max_limit_and_sel() {
     let i = |v| int(DataType::Int, v);
-    assert_eq!(min(i(3), i(-2)), Some(i(-2)));
-    assert_eq!(max(i(3), i(-2)), Some(i(3)));
-    assert_eq!(limit(i(0), i(150), i(100)), Some(i(100)));
-    assert_eq!(limit(i(0), i(-5), i(100)), Some(i(0)));
-    assert_eq!(limit(i(0), i(42), i(100)), Some(i(42)));
-    assert_eq!(min(i(1), int(DataType::Dint, 1)), None);
-    assert_eq!(select(false, i(1), i(2)), i(1));
-    assert_eq!(select(true, i(1), i(2)), i(2));
+    assert_eq!(min(&i(3), &i(-2)), Some(i(-2)));
+    assert_eq!(max(&i(3), &i(-2)), Some(i(3)));
+    assert_eq!(limit(&i(0), &i(150), &i(100)), Some(i(100)));
+    assert_eq!(limit(&i(0), &i(-5), &i(100)), Some(i(0)));
+    assert_eq!(limit(&i(0), &i(42), &i(100)), Some(i(42)));
+    assert_eq!(min(&i(1), &int(DataType::Dint, 1)), None);
+    assert_eq!(select(false, &i(1), &i(2)), i(1));
+    assert_eq!(select(true, &i(1), &i(2)), i(2));
 }
 
 #[test]
@@ -251,14 +251,14 @@ mod properties {
         ) {
             let op = [Arith::Add, Arith::Sub, Arith::Mul, Arith::Div, Arith::Mod][op];
             let (x, y) = (Data::integer(t, i128::from(a)), Data::integer(t, i128::from(b)));
-            let Some(Data::Int(rt, _)) = x.arith(op, y) else {
+            let Some(Data::Int(rt, _)) = x.arith(op, &y) else {
                 panic!("integers of one type give an integer");
             };
             prop_assert_eq!(rt, t);
             let (lo, hi) = t.range().expect("an integer type");
-            for v in [x.arith(op, y), x.negate(), Some(x.convert(DataType::Int)), Some(Data::Real(a as f32).convert(t))] {
+            for v in [x.arith(op, &y), x.negate(), Some(x.convert(DataType::Int)), Some(Data::Real(a as f32).convert(t))] {
                 if let Some(Data::Int(vt, _)) = v {
-                    let w = match v.map(Data::to_value) {
+                    let w = match v.as_ref().map(Data::to_value) {
                         Some(Value::Int(w)) => i128::from(w),
                         Some(Value::Uint(w)) => i128::from(w),
                         other => panic!("{other:?}"),

@@ -7,7 +7,9 @@ use crate::softplc::data::{Data, DataType};
 use crate::softplc::il::{Line, Operand};
 use crate::softplc::ld_blocks::text_input;
 use crate::softplc::ld_format::Format;
-use crate::softplc::pins::{inputs, outputs};
+use crate::softplc::ld_printf::Printf;
+use crate::softplc::pins::{inputs, outputs, Printing};
+use std::sync::Arc;
 
 impl Program {
     /// `CAL instance(…)` resolved.
@@ -65,17 +67,30 @@ impl Program {
         let Operand::Text(text) = value else {
             return Err(LoadError::Type(format!("{kind}'s {pin} is a text: '…'")));
         };
-        let format = Format::parse(text).map_err(|e| LoadError::Call(format!("{pin}: {e}")))?;
+        let wrong = |e: &dyn std::fmt::Display| LoadError::Call(format!("{pin}: {e}"));
         let instance = &mut self.blocks[block];
-        match &instance.format {
-            Some(f) if f.text() != text => Err(LoadError::Call(format!(
-                "{} already sends another text: one {pin} for each instance",
+        let before = if kind == "LD_STRING" {
+            let printf = Printf::parse(text).map_err(|e| wrong(&e))?;
+            let before = instance
+                .printing
+                .as_ref()
+                .map(|p| p.printf.text().to_string());
+            instance
+                .printing
+                .get_or_insert_with(|| Box::new(Printing::new(printf)));
+            before
+        } else {
+            let format = Format::parse(text).map_err(|e| wrong(&e))?;
+            let before = instance.format.as_ref().map(|f| f.text().to_string());
+            instance.format.get_or_insert_with(|| Arc::new(format));
+            before
+        };
+        match before {
+            Some(b) if b != *text => Err(LoadError::Call(format!(
+                "{} already has another text: one {pin} for each instance",
                 self.block_names[block].0
             ))),
-            _ => {
-                instance.format = Some(std::sync::Arc::new(format));
-                Ok(())
-            }
+            _ => Ok(()),
         }
     }
 
@@ -120,7 +135,7 @@ impl Program {
         want: DataType,
     ) -> Result<Src, LoadError> {
         let src = Program::fit(self.slot(value)?, want);
-        if self.type_of(src) != want {
+        if self.type_of(&src) != want {
             return Err(LoadError::Type(format!(
                 "{owner}'s {pin} is a {}",
                 want.name()

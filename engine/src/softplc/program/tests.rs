@@ -313,7 +313,7 @@ fn a_formatted_string_takes_its_text_as_a_literal_and_sends_it() {
 }
 
 #[test]
-fn a_text_goes_only_where_a_formatted_string_takes_it() {
+fn a_text_is_a_string_and_goes_only_where_one_is_taken() {
     let said = |text: &str| crate::softplc::said(Program::load(text));
     let head = "VAR\n  f : LD_FMTSTR;\n  n : DINT;\nEND_VAR\n";
     assert_eq!(
@@ -324,19 +324,109 @@ fn a_text_goes_only_where_a_formatted_string_takes_it() {
         said(&format!("{head}CAL f(FMT := 'a')\nCAL f(FMT := 'b')")),
         [(
             6,
-            "f already sends another text: one FMT for each instance".to_string()
+            "f already has another text: one FMT for each instance".to_string()
         )]
     );
     assert_eq!(
         said(&format!("{head}LD 'a'\nST n"))[0],
+        (6, "the current result is STRING, n needs DINT".to_string())
+    );
+    assert_eq!(
+        said(&format!("{head}LD 'a'\nADD 'b'"))[0],
+        (6, "this operation does not apply to STRING".to_string())
+    );
+    let long = format!("'{}'", "x".repeat(255));
+    assert_eq!(
+        said(&format!("{head}LD {long}"))[0],
         (
             5,
-            "a string literal is only an LDmicro formatted string's text (LD_FMTSTR's FMT)"
-                .to_string()
+            "a STRING holds at most 254 characters; this text has 255".to_string()
         )
     );
     let bad = said(&format!("{head}CAL f(FMT := '\\9')"));
     assert!(bad[0].1.starts_with("FMT: `\\9` is no escape"), "{bad:?}");
     let open = said(&format!("{head}CAL f(FMT := 'a)"));
     assert_eq!(open[0].0, 5, "{open:?}");
+}
+
+#[test]
+fn strings_are_declared_moved_and_compared_as_iec_says() {
+    let text = "VAR\n  greeting : STRING := 'Hello $'PLC$'';\n  copy : STRING;\n  \
+                same : BOOL;\n  later : BOOL;\nEND_VAR\n\
+                LD greeting\nST copy\nEQ 'Hello $'PLC$''\nST same\n\
+                LD 'abc'\nGT 'abb'\nST later";
+    let mut p = load(text);
+    assert_eq!(p.value("copy"), Some(Data::text("")));
+    p.scan(0);
+    assert_eq!(p.value("copy"), Some(Data::text("Hello 'PLC'")));
+    assert!(on(&p, "same"), "a text equals its copy");
+    assert!(on(&p, "later"), "texts compare by their characters");
+    // The listing reads back as the same program.
+    let again = load(&p.listing());
+    assert_eq!(again.listing(), p.listing());
+    assert!(p
+        .listing()
+        .contains("greeting : STRING := 'Hello $'PLC$'';"));
+}
+
+#[test]
+fn a_string_is_refused_where_it_does_not_fit_saying_so() {
+    let said = |text: &str| crate::softplc::said(Program::load(text));
+    assert_eq!(
+        said("VAR\n  s : STRING[20];\nEND_VAR\n"),
+        [(
+            2,
+            "`STRING[20]`: write STRING without a length (every STRING holds up to 254 characters)"
+                .to_string()
+        )]
+    );
+    assert_eq!(
+        said("VAR\n  s : STRING := 5;\nEND_VAR\n"),
+        [(2, "`5` is not a STRING value".to_string())]
+    );
+    assert_eq!(
+        said("VAR\n  n : INT := 'a';\nEND_VAR\n"),
+        [(2, "`'a'` is not a INT value".to_string())]
+    );
+    assert_eq!(
+        said("VAR\n  s AT %MD0 : STRING;\nEND_VAR\n")[0].0,
+        2,
+        "a STRING has no address"
+    );
+    let long = format!("VAR\n  s : STRING := '{}';\nEND_VAR\n", "y".repeat(300));
+    assert_eq!(
+        said(&long),
+        [(
+            2,
+            "a STRING holds at most 254 characters; this text has 300".to_string()
+        )]
+    );
+}
+
+#[test]
+fn ldmicro_string_prints_into_its_destination_while_powered() {
+    let mut p = load(
+        "VAR\n  s : LD_STRING;\n  n : DINT := 7;\n  out : STRING := 'old';\n  go : BOOL;\nEND_VAR\n\
+         LD go\nCAL s(IN := go, V := n, D := out, FMT := '[%3d]', D => out)",
+    );
+    p.scan(0);
+    assert_eq!(p.value("out"), Some(Data::text("old")), "unpowered: kept");
+    let go = p.slot_of("go").expect("go");
+    p.values[go] = Data::Bool(true);
+    p.scan(10 * MS);
+    assert_eq!(p.value("out"), Some(Data::text("[  7]")));
+    let said = |text: &str| crate::softplc::said(Program::load(text));
+    let head = "VAR\n  s : LD_STRING;\n  out : STRING;\nEND_VAR\n";
+    assert_eq!(
+        said(&format!("{head}CAL s(FMT := '%f')")),
+        [(
+            5,
+            "FMT: `%f` prints no integer: the text takes %d %i %u %x %X %o %c or %%".to_string()
+        )]
+    );
+    assert_eq!(
+        said(&format!("{head}CAL s(D => n)"))[0].0,
+        5,
+        "an output to an undeclared name"
+    );
 }

@@ -443,14 +443,10 @@ impl Emitter<'_> {
         let owned = |pins: Vec<(&str, DataType)>| -> Vec<(String, DataType)> {
             pins.into_iter().map(|(p, t)| (p.to_string(), t)).collect()
         };
-        self.cal(
-            g,
-            e,
-            &name,
-            &owned(fb_inputs(kind)),
-            &owned(fb_outputs(kind)),
-            en,
-        )
+        // An LDmicro block's text (FMT) is an input of the block's box.
+        let mut inputs = fb_inputs(kind);
+        inputs.extend(crate::softplc::ld_blocks::text_input(kind).map(|p| (p, DataType::String)));
+        self.cal(g, e, &name, &owned(inputs), &owned(fb_outputs(kind)), en)
     }
 
     /// A call of an instance of the project's own function block: `CAL
