@@ -6,37 +6,10 @@
 
 use super::element::{is_number, number, CompareOp, Element as Ld, MathOp, OneShotKind, UnaryOp};
 use super::error::LdError;
+use super::parts::{ld_box, operand, Part};
 use super::texts::{serial, string, uart_block};
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::BlockCall;
-
-/// What an element is in a rung: power passing through it, or an output.
-pub(super) enum Part {
-    /// A contact or in-line box: power in, power out.
-    Condition(Element),
-    /// Several, as a network (an element the soft PLC runs as boxes).
-    Network(crate::ladder::net::Net),
-    /// A coil or output box: where a rung ends.
-    Output(Element),
-    /// Nothing drawn (a placeholder, a wire).
-    Nothing,
-    /// A comment line.
-    Comment(String),
-}
-
-/// Numbers and names as the soft PLC's boxes take them: a number in
-/// decimal (`0x1F`, `'A'` worked out), a name as it is.
-pub(super) fn operand(text: &str) -> Result<String, LdError> {
-    if !is_number(text) {
-        return Ok(text.trim().to_string());
-    }
-    number(text)
-        .map(|v| v.to_string())
-        .ok_or_else(|| LdError::BadNumber {
-            element: "operand".into(),
-            text: text.into(),
-        })
-}
 
 /// A timer's period in cycles: LDmicro 4.x's `TimerPeriod`,
 /// `(delay + cycle × adjust) / cycle` in whole cycles (a 0.1 file's
@@ -62,22 +35,6 @@ pub(super) fn period(name: &str, delay: &str, cycle: u64, adjust: i32) -> Result
         return Err(bad());
     }
     Ok(periods.to_string())
-}
-
-/// The box of LDmicro block `kind` on instance `instance`.
-pub(super) fn ld_box(
-    kind: &str,
-    instance: String,
-    inputs: Vec<(&str, String)>,
-    outputs: Vec<(&str, String)>,
-) -> BlockCall {
-    let pins = |v: Vec<(&str, String)>| v.into_iter().map(|(p, o)| (p.to_string(), o)).collect();
-    BlockCall {
-        kind: kind.into(),
-        instance,
-        inputs: pins(inputs),
-        outputs: pins(outputs),
-    }
 }
 
 /// A function box (`ADD`, `MOVE`) writing `dest`.

@@ -8,10 +8,11 @@
 use std::collections::{BTreeMap, HashMap};
 
 use super::element::{is_number, Element as Ld};
-use super::elements::{operand, part, word_op, Part, OPEN};
+use super::elements::{part, word_op, OPEN};
 use super::error::LdError;
 use super::file::LdFile;
 use super::lower::{Lowering, MCR};
+use super::parts::{operand, Part};
 use crate::error::Located;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Ladder;

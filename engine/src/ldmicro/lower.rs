@@ -12,9 +12,9 @@
 //! rest reads that BOOL. A rung's boxes therefore run once a scan, in
 //! LDmicro's order.
 
-use super::elements::Part;
 use super::error::LdError;
 use super::file::Node;
+use super::parts::Part;
 use crate::error::Located;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;

@@ -17,6 +17,7 @@ mod ladder;
 mod leaf;
 mod lower;
 pub mod parse;
+mod parts;
 mod texts;
 
 pub use element::Element;

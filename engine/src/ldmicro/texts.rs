@@ -4,8 +4,8 @@
 //! string sent, and STRING printing into a STRING variable.
 
 use super::element::Element as Ld;
-use super::elements::{ld_box, operand, Part};
 use super::error::LdError;
+use super::parts::{ld_box, operand, Part};
 use crate::ladder::element::Element;
 use crate::ladder::BlockCall;
 use crate::softplc::ld_printf::{Printf, PrintfError};

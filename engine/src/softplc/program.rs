@@ -412,7 +412,13 @@ impl Program {
             }
             Operator::St | Operator::S | Operator::R => self.store(line, need_cr(*cr)?)?,
             Operator::Not => {
-                need_cr(*cr)?;
+                let t = need_cr(*cr)?;
+                if t.bits().is_none() && t != DataType::Bool {
+                    return Err(LoadError::Type(format!(
+                        "NOT needs a BOOL or a bit string, not {}",
+                        t.name()
+                    )));
+                }
                 Step::Not
             }
             Operator::Close => {
@@ -443,6 +449,12 @@ impl Program {
             ));
         };
         let target = self.values[slot].data_type();
+        if line.negated && t.bits().is_none() && t != DataType::Bool {
+            return Err(LoadError::Type(format!(
+                "STN needs a BOOL or a bit string, not {}",
+                t.name()
+            )));
+        }
         let bool_only = line.operator != Operator::St;
         if target != t || (bool_only && t != DataType::Bool) {
             return Err(LoadError::Type(format!(
@@ -495,72 +507,11 @@ impl Program {
             Ok(Step::Binary(binary, src))
         }
     }
-
-    /// A function call: its operands resolved and fitted, the type it
-    /// leaves checked.
-    fn function(
-        &mut self,
-        f: Function,
-        line: &Line,
-        cr: &mut Option<DataType>,
-    ) -> Result<Step, LoadError> {
-        let t = need_cr(*cr)?;
-        let mut args = Vec::new();
-        for a in &line.args {
-            args.push(self.slot(a)?);
-        }
-        let wrong = |why: String| Err(LoadError::Type(why));
-        let result = match f {
-            Function::Neg if t == DataType::Bool => return wrong("NEG needs a number".into()),
-            Function::Neg | Function::Move => t,
-            Function::Shl | Function::Shr | Function::Rol | Function::Ror => {
-                if t.bits().is_none() || self.type_of(&args[0]).bits().is_none() {
-                    return wrong("SHL, SHR, ROL and ROR shift an integer by an integer".into());
-                }
-                t
-            }
-            Function::Min | Function::Max | Function::Limit => {
-                for a in &mut args {
-                    *a = Program::fit(a.clone(), t);
-                    if self.type_of(a) != t {
-                        return wrong(format!(
-                            "{} and {} do not mix: convert one (*_TO_*)",
-                            t.name(),
-                            self.type_of(a).name()
-                        ));
-                    }
-                }
-                t
-            }
-            Function::Sel => {
-                if t != DataType::Bool {
-                    return wrong("SEL's first input (the current result) is a BOOL".into());
-                }
-                let first = self.type_of(&args[0]);
-                args[1] = Program::fit(args[1].clone(), first);
-                if self.type_of(&args[1]) != first {
-                    return wrong("SEL's two values have one type".into());
-                }
-                first
-            }
-            Function::Convert { from, to } => {
-                if from != t {
-                    return wrong(format!(
-                        "the current result is {}, not {}",
-                        t.name(),
-                        from.name()
-                    ));
-                }
-                to
-            }
-        };
-        *cr = Some(result);
-        Ok(Step::Func(f, args))
-    }
 }
 
 mod calls;
 mod check;
+mod functions;
 mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the

@@ -393,6 +393,30 @@ fn a_string_is_refused_where_it_does_not_fit_saying_so() {
         2,
         "a STRING has no address"
     );
+    let head = "VAR\n  s : STRING;\n  n : INT;\n  r : REAL;\nEND_VAR\n";
+    for (body, says) in [
+        (
+            "LD s\nSTRING_TO_INT",
+            "conversions to and from STRING do not run on the soft PLC yet",
+        ),
+        (
+            "LD n\nINT_TO_STRING",
+            "conversions to and from STRING do not run on the soft PLC yet",
+        ),
+        ("LD s\nNEG", "NEG needs a number"),
+        ("LD s\nNOT", "NOT needs a BOOL or a bit string, not STRING"),
+        (
+            "LD s\nSTN s",
+            "STN needs a BOOL or a bit string, not STRING",
+        ),
+        ("LD r\nSTN r", "STN needs a BOOL or a bit string, not REAL"),
+    ] {
+        assert_eq!(
+            said(&format!("{head}{body}")),
+            [(7, says.to_string())],
+            "{body}"
+        );
+    }
     let long = format!("VAR\n  s : STRING := '{}';\nEND_VAR\n", "y".repeat(300));
     assert_eq!(
         said(&long),
