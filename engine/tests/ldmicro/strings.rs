@@ -167,3 +167,15 @@ fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
     plc.run_until(SimTime::from_millis(15));
     assert_eq!(read_text(plc.as_ref(), "msg"), string("n=0000;"));
 }
+
+#[test]
+fn a_string_ladder_travels_in_a_share_link_and_a_project_file() {
+    use engine::ladder::project::Project;
+    use engine::ladder::share;
+    let ladder = to_ladder(&parse(&program(COUNT)).expect("reads")).expect("lowers");
+    let project = Project::new(engine::MachineId::SoftPlc, ladder);
+    let link = share::encode(&project).expect("encodes");
+    assert_eq!(share::decode(&link), Ok(project.clone()));
+    let again = Project::from_json(&project.to_json()).expect("reads back");
+    assert_eq!(again.ladder, project.ladder);
+}
