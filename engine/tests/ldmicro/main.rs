@@ -3,6 +3,7 @@
 mod blocks;
 #[path = "../common/mod.rs"]
 mod common;
+mod plcopen;
 mod read;
 mod run;
 mod segments;

@@ -13,7 +13,7 @@ use engine::{MachineId, SimTime};
 
 use crate::common::{hashigo, text, Temp};
 
-const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/ldmicro");
+pub(crate) const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/ldmicro");
 
 /// An `.ld` text loaded on a soft PLC scanning at the file's cycle.
 pub(crate) fn load(text: &str) -> Box<dyn Plc> {
@@ -31,7 +31,7 @@ pub(crate) fn load(text: &str) -> Box<dyn Plc> {
     plc
 }
 
-fn real(name: &str) -> Option<String> {
+pub(crate) fn real(name: &str) -> Option<String> {
     std::fs::read(format!("{REAL}/{name}"))
         .ok()
         .map(|b| decode(&b).into_owned())

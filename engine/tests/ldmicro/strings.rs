@@ -155,6 +155,16 @@ fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
         xml.contains("<variable name=\"msg\"><type><string/></type>"),
         "{xml}"
     );
+    // A rung whose box stands on a wire from the rail goes out too, its
+    // input on the rail (LDmicro's rungs often start with one).
+    let plain = to_ladder(&parse(&program(COUNT)).expect("reads")).expect("lowers");
+    let xml_plain = engine::ladder::plcopen::export(&plain, "count").expect("exports");
+    let mut counted = engine::machines::new_plc(MachineId::SoftPlc);
+    let il_plain = engine::ladder::plcopen::soft::to_il(&xml_plain, None).expect("imports");
+    counted.load_text(&il_plain.text).expect("runs");
+    counted.run_until(SimTime::from_millis(35));
+    assert_eq!(read_text(counted.as_ref(), "hi"), string("Hi 100%"));
+    assert_eq!(counted.read(counted.device("n").expect("n")).as_i64(), 3);
     // Opened as a ladder, the box keeps its text.
     let opened =
         engine::ladder::plcopen::import_for(&xml, Some(MachineId::SoftPlc)).expect("opens");

@@ -229,6 +229,9 @@ impl Writer {
                 }
                 all
             }
+            // A wire passes the power on as it comes: a box whose rung is
+            // a wire from the rail has its input on the rail.
+            Net::Leaf(Element::Wire, _) => from.to_vec(),
             Net::Leaf(e, p) => {
                 let (x, y) = at(*p);
                 vec![self.leaf(e, from, x, y).map_err(|m| (*p, m))?]
