@@ -352,15 +352,19 @@ fn a_text_is_a_string_and_goes_only_where_one_is_taken() {
 #[test]
 fn strings_are_declared_moved_and_compared_as_iec_says() {
     let text = "VAR\n  greeting : STRING := 'Hello $'PLC$'';\n  copy : STRING;\n  \
-                same : BOOL;\n  later : BOOL;\nEND_VAR\n\
+                same : BOOL;\n  later : BOOL;\n  least : STRING;\n  picked : STRING;\nEND_VAR\n\
                 LD greeting\nST copy\nEQ 'Hello $'PLC$''\nST same\n\
-                LD 'abc'\nGT 'abb'\nST later";
+                LD 'abc'\nGT 'abb'\nST later\n\
+                LD 'pear'\nMIN 'apple'\nMAX 'aardvark'\nST least\n\
+                LD later\nSEL 'no', greeting\nMOVE\nST picked";
     let mut p = load(text);
     assert_eq!(p.value("copy"), Some(Data::text("")));
     p.scan(0);
     assert_eq!(p.value("copy"), Some(Data::text("Hello 'PLC'")));
     assert!(on(&p, "same"), "a text equals its copy");
     assert!(on(&p, "later"), "texts compare by their characters");
+    assert_eq!(p.value("least"), Some(Data::text("apple")));
+    assert_eq!(p.value("picked"), Some(Data::text("Hello 'PLC'")));
     // The listing reads back as the same program.
     let again = load(&p.listing());
     assert_eq!(again.listing(), p.listing());
