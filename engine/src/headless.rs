@@ -141,9 +141,9 @@ fn csv_field(value: &crate::plc::Value) -> std::borrow::Cow<'_, str> {
     let crate::plc::Value::Text(t) = value else {
         return value.to_string().into();
     };
-    let plain = !t.contains([',', '"', '\r', '\n']) && t.trim() == &**t;
+    let plain = !t.contains([',', '"', '\r', '\n']) && t.trim() == t.as_str();
     if plain {
-        std::borrow::Cow::Borrowed(t)
+        std::borrow::Cow::Borrowed(t.as_str())
     } else {
         format!("\"{}\"", t.replace('"', "\"\"")).into()
     }

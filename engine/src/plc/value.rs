@@ -18,9 +18,9 @@ pub enum Value {
     Uint(u64),
     /// A real (REAL, LREAL): printed as a decimal.
     Real(f64),
-    /// A text (the soft PLC's STRING): printed as it is. Shared, so a
-    /// copy of a snapshot does not copy the characters.
-    Text(Arc<str>),
+    /// A text (the soft PLC's STRING): printed as it is. Shared with the
+    /// machine's own value, so a read copies no characters.
+    Text(Arc<String>),
 }
 
 impl Value {
@@ -154,15 +154,13 @@ mod tests {
 
     #[test]
     fn texts_print_as_they_are_compare_as_texts_and_show_quoted() {
-        let hi = Value::Text("hi".into());
+        let text = |t: &str| Value::Text(std::sync::Arc::new(t.to_string()));
+        let hi = text("hi");
         assert_eq!(hi.to_string(), "hi");
         assert_eq!(hi.watched(), "'hi'");
-        assert_eq!(Value::Text("".into()).watched(), "''");
+        assert_eq!(text("").watched(), "''");
         assert_eq!(Value::Int(5).watched(), "5");
-        assert_eq!(
-            hi.compare(&Value::Text("ha".into())),
-            Some(Ordering::Greater)
-        );
+        assert_eq!(hi.compare(&text("ha")), Some(Ordering::Greater));
         assert_eq!(hi.compare(&Value::Int(0)), None, "a text is no number");
         assert!(!hi.is_on());
         assert_ne!(hi, 0);

@@ -154,12 +154,12 @@ impl Data {
 
     /// A STRING of `text`, cut at [`STRING_CAPACITY`] characters (as
     /// IEC cuts a text assigned to a shorter STRING).
-    pub fn text(text: &str) -> Data {
-        let end = text
-            .char_indices()
-            .nth(STRING_CAPACITY)
-            .map_or(text.len(), |(at, _)| at);
-        Data::Text(Arc::new(text[..end].to_string()))
+    pub fn text(text: impl Into<String>) -> Data {
+        let mut text = text.into();
+        if let Some((end, _)) = text.char_indices().nth(STRING_CAPACITY) {
+            text.truncate(end);
+        }
+        Data::Text(Arc::new(text))
     }
 
     /// Its type.
@@ -184,7 +184,7 @@ impl Data {
             // f32's 0.10000000149011612.
             Data::Real(r) => Value::Real(r.to_string().parse().unwrap_or(f64::from(r))),
             Data::Time(ns) => Value::Int(ns / 1_000_000),
-            Data::Text(ref t) => Value::Text(Arc::from(t.as_str())),
+            Data::Text(ref t) => Value::Text(Arc::clone(t)),
         }
     }
 

@@ -172,13 +172,17 @@ fn string(text: &str, expected: Option<DataType>) -> Result<Data, LiteralError> 
             text: text.to_string(),
             expected: DataType::String,
         }),
-        _ => {
-            let value = parse_text(text)?;
-            if value.chars().count() > STRING_CAPACITY {
-                return Err(LiteralError::TooLong(value.chars().count()));
-            }
-            Ok(Data::text(&value))
-        }
+        _ => string_value(parse_text(text)?),
+    }
+}
+
+/// A text (its `$` escapes read) as a STRING value; refused when it has
+/// more characters than a STRING holds.
+pub fn string_value(text: impl Into<String>) -> Result<Data, LiteralError> {
+    let text = text.into();
+    match text.chars().count() {
+        n if n > STRING_CAPACITY => Err(LiteralError::TooLong(n)),
+        _ => Ok(Data::text(text)),
     }
 }
 

@@ -184,7 +184,7 @@ impl Instance {
                 if let Some(p) = self.printing.as_deref_mut().filter(|_| b.is_text()) {
                     p.printed = match self.inputs.get(2) {
                         Some(unpowered) if !b0 => unpowered.clone(),
-                        _ => Data::text(&p.printf.print(w1)),
+                        _ => Data::text(p.printf.print(w1)),
                     };
                 }
             }

@@ -6,13 +6,13 @@ use std::collections::HashMap;
 use std::fmt;
 
 use super::address::{Address, Area};
-use super::data::{Arith, Bitwise, Data, DataType, STRING_CAPACITY};
+use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
-use super::literal::in_range;
+use super::literal::{in_range, string_value};
 use super::pins::Instance;
 use super::vars::{parse_vars_with, Kind, VarError, Variable};
 use crate::error::Located;
-use check::{binary_type, describe, jump, need_cr};
+use check::{binary_type, describe, invertible, jump, need_cr};
 
 /// Instructions one scan may run before it is cut short (a backward JMP
 /// that never ends): the scan ends there and [`Program::overran`] says so.
@@ -335,13 +335,9 @@ impl Program {
     fn slot(&mut self, operand: &Operand) -> Result<Src, LoadError> {
         match operand {
             Operand::Literal(d) => Ok(Src::Const(d.clone())),
-            Operand::Text(t) if t.chars().count() > STRING_CAPACITY => {
-                Err(LoadError::Type(format!(
-                    "a STRING holds at most {STRING_CAPACITY} characters; this text has {}",
-                    t.chars().count()
-                )))
-            }
-            Operand::Text(t) => Ok(Src::Const(Data::text(t))),
+            Operand::Text(t) => string_value(t)
+                .map(Src::Const)
+                .map_err(|e| LoadError::Type(e.to_string())),
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
                 _ => Err(LoadError::Undeclared(n.clone())),
@@ -401,24 +397,15 @@ impl Program {
             Operator::Ld => {
                 let src = self.operand(line)?.ok_or(LoadError::Unbalanced)?;
                 let t = self.type_of(&src);
-                if line.negated && t.bits().is_none() && t != DataType::Bool {
-                    return Err(LoadError::Type(format!(
-                        "LDN needs a BOOL or a bit string, not {}",
-                        t.name()
-                    )));
+                if line.negated {
+                    invertible("LDN", t)?;
                 }
                 *cr = Some(t);
                 Step::Ld(src, line.negated)
             }
             Operator::St | Operator::S | Operator::R => self.store(line, need_cr(*cr)?)?,
             Operator::Not => {
-                let t = need_cr(*cr)?;
-                if t.bits().is_none() && t != DataType::Bool {
-                    return Err(LoadError::Type(format!(
-                        "NOT needs a BOOL or a bit string, not {}",
-                        t.name()
-                    )));
-                }
+                invertible("NOT", need_cr(*cr)?)?;
                 Step::Not
             }
             Operator::Close => {
@@ -449,11 +436,8 @@ impl Program {
             ));
         };
         let target = self.values[slot].data_type();
-        if line.negated && t.bits().is_none() && t != DataType::Bool {
-            return Err(LoadError::Type(format!(
-                "STN needs a BOOL or a bit string, not {}",
-                t.name()
-            )));
+        if line.negated {
+            invertible("STN", t)?;
         }
         let bool_only = line.operator != Operator::St;
         if target != t || (bool_only && t != DataType::Bool) {

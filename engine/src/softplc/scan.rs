@@ -111,11 +111,7 @@ impl Program {
             Step::Ld(src, neg) => {
                 let v = peek(values, src);
                 read_bit = v.is_on();
-                *cr = if *neg {
-                    negate(v.clone(), true)
-                } else {
-                    v.clone()
-                };
+                *cr = negate(v.clone(), *neg);
             }
             Step::St(slot, neg) => values[*slot] = negate(cr.clone(), *neg),
             Step::Set(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(true),
@@ -409,6 +405,7 @@ fn read(values: &[Data], src: &Src) -> Data {
 }
 
 /// `d` negated when `neg`: a BOOL inverted, an integer's bits inverted.
+#[inline(always)]
 fn negate(d: Data, neg: bool) -> Data {
     if neg {
         d.invert().unwrap_or(d)

@@ -23,7 +23,7 @@ fn read_text(plc: &dyn Plc, name: &str) -> Value {
 }
 
 fn string(text: &str) -> Value {
-    Value::Text(text.into())
+    Value::Text(std::sync::Arc::new(text.to_string()))
 }
 
 #[test]

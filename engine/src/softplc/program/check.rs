@@ -16,6 +16,18 @@ pub(super) fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {
     })
 }
 
+/// Whether `op` (LDN, STN, NOT) can invert a `t`: a BOOL or a bit
+/// string can, a REAL, TIME or STRING cannot.
+pub(super) fn invertible(op: &str, t: DataType) -> Result<(), LoadError> {
+    if t.bits().is_none() && t != DataType::Bool {
+        return Err(LoadError::Type(format!(
+            "{op} needs a BOOL or a bit string, not {}",
+            t.name()
+        )));
+    }
+    Ok(())
+}
+
 /// JMP, JMPC, JMPCN to a label of `lines`.
 pub(super) fn jump(
     line: &Line,
