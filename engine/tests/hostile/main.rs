@@ -13,3 +13,4 @@ mod messages;
 mod plcopen;
 mod properties;
 mod round2;
+mod round3;

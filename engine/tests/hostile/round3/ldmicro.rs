@@ -1,0 +1,1 @@
+//! Issue #43, round 3: ldmicro.
