@@ -1,11 +1,13 @@
-//! Hashigo's web app: the MINASEC-U front panel, the program pane and the
-//! simulation loop. It renders and dispatches; the machine is the engine's.
+//! Hashigo's web app: the workbench (app bar, the ladder editor in the
+//! centre, the machine's panel and the tools in docks) and the simulation
+//! loop. It renders and dispatches; the machine is the engine's.
 
+pub mod appbar;
 pub mod bench;
 pub mod chrome;
+pub mod docks;
 pub mod editor;
 pub mod examples;
-pub mod header;
 pub mod i18n;
 pub mod machines;
 pub mod sim;
@@ -21,7 +23,7 @@ use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::JsCast;
 
-use header::{set_document_lang, Header};
+use appbar::{set_document_lang, AppBar};
 use i18n::Lang;
 use state::Ctx;
 use workspaces::Workspaces;
@@ -177,7 +179,7 @@ pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
             <a class="skip" href="#panel" on:click=move |e| skip_to(&e, "panel")>
                 {move || ctx.lang.get().texts().skip_panel}
             </a>
-            <Header />
+            <AppBar />
             <Show when=move || ctx.notice.with(Option::is_some)>
                 <div class="notice" role="alert" data-testid="notice">
                     {move || ctx.notice.get().unwrap_or_default()}

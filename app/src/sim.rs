@@ -131,9 +131,11 @@ impl<M: Plc + Clone> Simulator<M> {
     /// last, at `pace`. `now_ms` reads the wall clock (for `Speed::Max`'s
     /// budget).
     pub fn frame(&mut self, pace: Pace, wall_ms: f64, mut now_ms: impl FnMut() -> f64) {
-        // A past scan on show holds time still.
+        // A past scan on show holds time still; so does a machine that is
+        // stopped (HALT, STOP, disabled): nothing runs, nothing counts.
         let travelling = self.machine.shown().is_some();
-        if pace.paused || travelling || !wall_ms.is_finite() || wall_ms <= 0.0 {
+        let stopped = !self.machine.running();
+        if pace.paused || travelling || stopped || !wall_ms.is_finite() || wall_ms <= 0.0 {
             return;
         }
         let wall_ms = wall_ms.min(CATCH_UP_CAP_MS);
@@ -188,6 +190,25 @@ mod tests {
             SimTime::from_millis(160)
         );
         assert_eq!(run(Speed::Times(100), false, 0.5), SimTime::from_millis(50));
+    }
+
+    #[test]
+    fn a_stopped_machines_time_stands_still() {
+        use engine::plc::{Command, Plc};
+        let mut s = Simulator::new(engine::machines::SoftPlc::new());
+        s.machine_mut()
+            .load_text(include_str!("../../engine/programs/soft-plc/self-hold.il"))
+            .expect("loads");
+        let pace = Pace {
+            speed: Speed::Times(1),
+            paused: false,
+        };
+        s.machine_mut().apply(Command::Run(false)).expect("stops");
+        s.frame(pace, 16.0, || 0.0);
+        assert_eq!(s.machine().now(), SimTime::ZERO, "stopped");
+        s.machine_mut().apply(Command::Run(true)).expect("runs");
+        s.frame(pace, 16.0, || 0.0);
+        assert_eq!(s.machine().now(), SimTime::from_millis(16), "running");
     }
 
     #[test]

@@ -43,33 +43,9 @@ pub struct Ctx {
     pub paused: RwSignal<bool>,
     /// A message about saved data (corrupt, storage unavailable).
     pub notice: RwSignal<Option<String>>,
-    /// On tablets and phones, which of ladder, panel and tools is shown.
-    pub tab: RwSignal<Tab>,
-}
-
-/// What a tablet or phone shows of a workspace (desktops show all).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Tab {
-    /// The ladder editor.
-    Ladder,
-    /// The machine's panel and program.
-    Panel,
-    /// The listing, problems, watch and timing chart.
-    Tools,
-}
-
-impl Tab {
-    /// Every tab, in the order shown.
-    pub const ALL: [Tab; 3] = [Tab::Ladder, Tab::Panel, Tab::Tools];
-
-    /// Its hook: `data-tab` and `tab-<hook>`.
-    pub const fn hook(self) -> &'static str {
-        match self {
-            Tab::Ladder => "ladder",
-            Tab::Panel => "panel",
-            Tab::Tools => "tools",
-        }
-    }
+    /// The workbench's docks: which tool is shown, which dock is open,
+    /// their sizes (`crate::docks`).
+    pub docks: crate::docks::Docks,
 }
 
 impl Ctx {
@@ -81,7 +57,7 @@ impl Ctx {
             speed: RwSignal::new(Speed::Times(1)),
             paused: RwSignal::new(false),
             notice: RwSignal::new(None),
-            tab: RwSignal::new(Tab::Ladder),
+            docks: crate::docks::Docks::restore(),
         }
     }
 

@@ -7,6 +7,8 @@ use engine::MachineId;
 
 use std::rc::Rc;
 
+use crate::docks::view::Split;
+use crate::docks::{BottomDock, RightDock, Splitter, Tool};
 use crate::editor::machine::MachineLink;
 use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
 use crate::machines::minasec::board::Board;
@@ -14,7 +16,7 @@ use crate::machines::minasec::program::ProgramPane;
 use crate::machines::minasec::MinasecCtx;
 use crate::machines::{self, arduino, avr, io86a, soft};
 use crate::sim::Pace;
-use crate::state::{Ctx, MachineKind, Tab};
+use crate::state::{Ctx, MachineKind};
 
 /// Every workspace's context; `Copy`.
 #[derive(Clone, Copy)]
@@ -132,64 +134,72 @@ impl Workspaces {
         self.ladders.of(kind).frame(pace, wall_ms, now_ms);
     }
 
-    /// The workspace of `kind`: its ladder editor above its panel and
-    /// program pane (which find the editor in context for "Load as ladder").
+    /// The workbench for `kind`: the ladder editor in the centre with the
+    /// tools dock under it, the machine's panel in the dock on the right
+    /// (docs/app.md, "The workbench").
     pub fn view(&self, kind: MachineKind) -> AnyView {
         let ladder = self.ladders.of(kind);
         provide_context(ladder);
-        let machine = self.machine_view(kind);
-        let page = ladder.page;
+        let grid = NodeRef::<leptos::html::Div>::new();
+        let mut tools = crate::editor::tools(ladder, grid);
+        tools.push((Tool::Program, self.program_view(kind)));
+        if Tool::Cpu.on(kind) {
+            tools.push((
+                Tool::Cpu,
+                view! { <crate::machines::minasec::cpu_view::CpuPanel /> }.into_any(),
+            ));
+        }
+        tools.sort_by_key(|(tool, _)| Tool::ALL.iter().position(|t| t == tool));
+        let panel = self.panel_view(kind);
+        let docks = ladder.page.docks;
+        // The style sheet keeps each dock within its share of the window.
+        let sizes = move || {
+            docks.sizes.with(|s| {
+                format!(
+                    "--dock-w: {:.0}px; --dock-h: {:.0}px",
+                    s.right_px, s.bottom_px
+                )
+            })
+        };
         view! {
-            <ViewTabs page />
-            <div class="machine-view" data-tab=move || page.tab.get().hook()>
-                <LadderEditor ctx=ladder />
-                <div class="machine-side" id="panel" tabindex="-1">{machine}</div>
+            <div class="bench" data-testid="workbench" data-machine=kind.name() style=sizes
+                data-right-open=move || docks.sizes.with(|s| s.right_open).to_string()
+                data-bottom-open=move || docks.sizes.with(|s| s.bottom_open).to_string()>
+                <main class="bench-centre" id="ladder-area">
+                    <LadderEditor ctx=ladder grid />
+                    <Splitter split=Split::Bottom />
+                    <BottomDock machine=kind panels=tools />
+                </main>
+                <Splitter split=Split::Right />
+                <RightDock>{panel}</RightDock>
             </div>
         }
         .into_any()
     }
 
-    fn machine_view(&self, kind: MachineKind) -> AnyView {
+    /// The machine's own panel: its board, lamps and switches, consoles.
+    fn panel_view(&self, kind: MachineKind) -> AnyView {
         match kind {
-            MachineKind::MinasecU => view! {
-                <main class="workspace">
-                    <Board />
-                    <ProgramPane />
-                    <crate::machines::minasec::cpu_view::CpuPanel />
-                </main>
-            }
-            .into_any(),
-            MachineKind::Io86a => {
-                view! { <io86a::view::Io86aWorkspace io=self.io86a /> }.into_any()
-            }
+            MachineKind::MinasecU => view! { <div class="workspace"><Board /></div> }.into_any(),
+            MachineKind::Io86a => view! { <io86a::view::Io86aPanel io=self.io86a /> }.into_any(),
             MachineKind::ArduinoPlc => {
-                view! { <arduino::ArduinoWorkspace ard=self.arduino /> }.into_any()
+                view! { <arduino::ArduinoPanel ard=self.arduino /> }.into_any()
             }
-            MachineKind::AvrPlc => view! { <avr::AvrWorkspace avr=self.avr /> }.into_any(),
-            MachineKind::SoftPlc => view! { <soft::SoftWorkspace soft=self.soft /> }.into_any(),
+            MachineKind::AvrPlc => view! { <avr::AvrPanel avr=self.avr /> }.into_any(),
+            MachineKind::SoftPlc => view! { <soft::SoftPanel soft=self.soft /> }.into_any(),
         }
     }
-}
 
-/// Tablets and phones: one tap between the ladder, the panel and the
-/// tools (hidden on desktops, which show all three).
-#[component]
-fn ViewTabs(page: Ctx) -> impl IntoView {
-    let t = move || page.lang.get().texts();
-    let name = move |tab: Tab| match tab {
-        Tab::Ladder => t().tab_ladder,
-        Tab::Panel => t().tab_panel,
-        Tab::Tools => t().tab_tools,
-    };
-    view! {
-        <nav class="view-tabs" role="tablist" aria-label=move || t().tabs>
-            {Tab::ALL.map(|tab| view! {
-                <button type="button" role="tab" data-testid=format!("tab-{}", tab.hook())
-                    aria-selected=move || (page.tab.get() == tab).to_string()
-                    on:click=move |_| page.tab.set(tab)>
-                    {move || name(tab)}
-                </button>
-            }).collect_view()}
-        </nav>
+    /// The machine's program text, in the tools dock.
+    fn program_view(&self, kind: MachineKind) -> AnyView {
+        match kind {
+            MachineKind::MinasecU => view! { <ProgramPane /> }.into_any(),
+            MachineKind::Io86a => view! { <io86a::view::Io86aProgram io=self.io86a /> }.into_any(),
+            MachineKind::ArduinoPlc => {
+                view! { <arduino::ArduinoProgram ard=self.arduino /> }.into_any()
+            }
+            MachineKind::AvrPlc => view! { <avr::AvrProgram avr=self.avr /> }.into_any(),
+            MachineKind::SoftPlc => view! { <soft::SoftProgram soft=self.soft /> }.into_any(),
+        }
     }
 }

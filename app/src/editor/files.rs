@@ -242,10 +242,10 @@ pub fn save_project_file(ctx: LadderCtx) {
 
 /// The file buttons.
 #[component]
-pub fn FileButtons(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
+pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
-    let pending = RwSignal::new(None::<super::import::Pending>);
+    let pending = ctx.panes.import;
     let on_file = move |e: web_sys::Event| {
         let Some(input) = e
             .target()
@@ -300,7 +300,6 @@ pub fn FileButtons(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
                     let _ = w.print();
                 }
             }>{move || t().print}</button>
-            <super::import::ImportDialog ctx shown=pending on_close=refocus />
         </span>
     }
 }

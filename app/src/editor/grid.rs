@@ -125,10 +125,10 @@ fn RungRows(
     let columns = {
         let data = data.clone();
         move || {
-            format!(
-                "grid-template-columns: repeat({}, var(--cell-w))",
-                data.with(|d| d.cols)
-            )
+            let cols = data.with(|d| d.cols);
+            ctx.drawing
+                .col_widths
+                .with(|w| super::model::grid_columns(w, cols))
         }
     };
     let t = move || ctx.page.lang.get().texts();
@@ -344,7 +344,7 @@ fn EndLine(ctx: LadderCtx, selected: Selector<Cursor>) -> impl IntoView {
         <div
             class="rung-grid"
             role="row"
-            style=move || format!("grid-template-columns: repeat({}, var(--cell-w))", ctx.drawing.out_col.get() + 1)
+            style=move || ctx.drawing.col_widths.with(|w| super::model::grid_columns(w, ctx.drawing.out_col.get() + 1))
         >
             <For
                 each=end_cells

@@ -7,7 +7,6 @@
 
 use engine::ladder::edit::device_names;
 use engine::plc::Command;
-use engine::MachineId;
 use leptos::prelude::*;
 
 use super::LadderCtx;
@@ -37,65 +36,28 @@ pub fn run_action(ctx: LadderCtx) -> impl Fn() -> bool + Copy {
     move || run_drawing(ctx)
 }
 
-/// The run and step buttons.
+/// After a single instruction was stepped: which step ran, its rung, and
+/// the element it came from (marked on the ladder).
+pub fn show_stepped(ctx: LadderCtx, stepped: Option<usize>) {
+    let rung = stepped.and_then(|s| {
+        ctx.drawing
+            .listing
+            .with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s)))
+    });
+    ctx.live.stepped.set(stepped.map(|s| (s, rung)));
+    ctx.live
+        .stepped_cell
+        .set(stepped.and_then(|s| ctx.cell_of_step(s)));
+}
+
+/// What the run means for the drawing: not written to the machine yet,
+/// the step the last single step ran. The run controls themselves are the
+/// app bar's (`crate::appbar::run`).
 #[component]
-pub fn RunBar(ctx: LadderCtx) -> impl IntoView {
+pub fn RunStatus(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
-    let kind = ctx.machine;
-    let operate = move |f: &dyn Fn(&mut dyn engine::plc::Plc)| ctx.operate(f);
-    // The AVR PLC has no RUN/STOP switch: it runs whenever powered, so
-    // Run stays Run (it writes the drawing again).
-    let stoppable = kind != MachineId::AvrPlc;
-    let runs_drawing = move || stoppable && ctx.live.monitor.get() && ctx.live.running.get();
-    let run = move |_| {
-        if runs_drawing() {
-            // Stop: the machine as it stops (MINASEC-U HALT, IO86A STOP,
-            // the Arduino sketch disabled); edits wait for the next Run.
-            operate(&|plc| {
-                let _ = plc.apply(Command::Run(false));
-            });
-            ctx.live.monitor.set(false);
-            ctx.live.running.set(false);
-            return;
-        }
-        run_drawing(ctx);
-    };
-    let step = move |which: u8| {
-        if which == 0 && ctx.travel.shown.get_untracked().is_some() {
-            // Travelling: the next recorded scan, not a new branch.
-            super::travel::step_forward(ctx);
-            return;
-        }
-        ctx.page.paused.set(true);
-        let stepped = std::cell::Cell::new(None);
-        operate(&|plc| match which {
-            0 => plc.step_scan(),
-            1 => stepped.set(plc.step_instruction()),
-            _ => {
-                plc.step_clock();
-            }
-        });
-        if which == 1 {
-            let rung = stepped.get().and_then(|s| {
-                ctx.drawing
-                    .listing
-                    .with_untracked(|l| l.as_ref().and_then(|l| l.rung_of_step(s)))
-            });
-            ctx.live.stepped.set(stepped.get().map(|s| (s, rung)));
-            ctx.live
-                .stepped_cell
-                .set(stepped.get().and_then(|s| ctx.cell_of_step(s)));
-        }
-    };
     view! {
-        <span class="run-bar">
-            <button type="button" data-testid="run" aria-pressed=move || runs_drawing().to_string()
-                on:click=run>{move || if runs_drawing() { t().stop } else { t().run_drawing }}</button>
-            <button type="button" data-testid="step-scan" on:click=move |_| step(0)>{move || t().step_scan}</button>
-            <button type="button" data-testid="step-instr" on:click=move |_| step(1)>{move || t().step_instr}</button>
-            {(kind == MachineId::MinasecU).then(|| view! {
-                <button type="button" data-testid="step-clock" on:click=move |_| step(2)>{move || t().step_clock}</button>
-            })}
+        <span class="run-status">
             <span class="not-written" data-testid="not-written" role="status"
                 hidden=move || !ctx.live.unwritten.get()>{move || t().not_written}</span>
             <span data-testid="step-at">{move || ctx.live.stepped.get().map(|(s, rung)| match rung {

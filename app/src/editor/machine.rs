@@ -134,6 +134,11 @@ impl LadderCtx {
             // from here is the way to run on from the past).
             super::travel::travel_here(*self, |t| t.go_live());
         }
+        // The AVR PLC powered off by Stop: nothing runs until Run.
+        let pace = Pace {
+            paused: pace.paused || self.live.powered_off.get_untracked(),
+            ..pace
+        };
         link.advance(pace, wall_ms, now_ms);
         link.refresh_panel();
         let hit = self.recorded(|t| {

@@ -14,6 +14,7 @@ pub mod autosave;
 pub mod cases;
 pub mod cell_kind;
 pub mod chart;
+pub mod clipboard;
 pub mod entry;
 pub mod files;
 pub mod find;
@@ -66,9 +67,12 @@ impl Ladders {
     }
 }
 
-/// The editor: toolbar, device entry, palette, grid, listing, problems.
+/// The editor in the workbench's centre: its compact toolbar, the
+/// device entry, the palette and the grid (and on a phone the strip of
+/// the ladder's inputs and outputs). The tools around it are the docks'
+/// ([`tools`]).
 #[component]
-pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
+pub fn LadderEditor(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl IntoView {
     // The key map takes the focus when it opens (Escape closes it and
     // gives the focus back to the ladder).
     let keymap = NodeRef::<leptos::html::Div>::new();
@@ -79,20 +83,14 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
             }
         }
     });
-    let grid = NodeRef::<leptos::html::Div>::new();
     let refocus = Callback::new(move |()| grid::focus(grid));
     let t = move || ctx.page.lang.get().texts();
-    clipboard_events(ctx);
+    clipboard::listen(ctx);
     view! {
         <section class="ladder-editor" data-machine=ctx.machine.name()>
             <shared::SharedBanner ctx />
             <autosave::StorageBanner ctx />
-            <Toolbar ctx refocus />
-            <Show when=move || ctx.panes.tests_open.get()>
-                <Drawer open=ctx.panes.tests_open refocus label=Signal::derive(move || t().tests.to_string())>
-                    <cases::TestsPane ctx />
-                </Drawer>
-            </Show>
+            <Toolbar ctx grid refocus />
             <Show when=move || ctx.panes.projects_open.get()>
                 <Drawer open=ctx.panes.projects_open refocus label=Signal::derive(move || t().projects.to_string())>
                     <projects::ProjectsPane ctx />
@@ -103,10 +101,7 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
                     <find::FindPane ctx on_pick=refocus />
                 </Drawer>
             </Show>
-            <div class="ladder-toolbar run-toolbar">
-                <live::RunBar ctx />
-                <zoom::ZoomBar ctx grid />
-            </div>
+            <import::ImportDialog ctx shown=ctx.panes.import on_close=refocus />
             <travel::TravelBar ctx />
             <CommentBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
@@ -116,15 +111,8 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
             <div class="ladder-main">
                 <palette::Palette ctx on_done=refocus />
                 <grid::LadderGrid ctx grid />
-                <div class="ladder-side">
-                    <side::ListingPane ctx on_pick=refocus />
-                    <side::ProblemsPane ctx on_pick=refocus />
-                    <why::WhyPanel ctx />
-                    <live::WatchTable ctx />
-                    <live::ForceList ctx />
-                </div>
             </div>
-            <chart::TimingChart ctx />
+            <crate::docks::strip::IoStrip ctx />
             <Show when=move || ctx.panes.help.get()>
                 <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys
                     node_ref=keymap tabindex="-1"
@@ -147,7 +135,45 @@ pub fn LadderEditor(ctx: LadderCtx) -> impl IntoView {
     }
 }
 
-/// A pane opened under the toolbar (Tests, Projects, Find), where the
+/// The editor's tools as the bottom dock shows them, each with its tool:
+/// watch and forces, chart, tests, Why?, listing and problems, and (the
+/// soft PLC) the variables. The machine adds its program text and views.
+pub fn tools(
+    ctx: LadderCtx,
+    grid: NodeRef<leptos::html::Div>,
+) -> Vec<(crate::docks::Tool, AnyView)> {
+    use crate::docks::Tool;
+    let refocus = Callback::new(move |()| grid::focus(grid));
+    let mut tools = vec![
+        (
+            Tool::Watch,
+            view! { <div class="dock-pair"><live::WatchTable ctx /><live::ForceList ctx /></div> }
+                .into_any(),
+        ),
+        (Tool::Chart, view! { <chart::TimingChart ctx /> }.into_any()),
+        (Tool::Tests, view! { <cases::TestsPane ctx /> }.into_any()),
+        (Tool::Why, view! { <why::WhyPanel ctx /> }.into_any()),
+        (
+            Tool::Listing,
+            view! {
+                <div class="dock-pair">
+                    <side::ListingPane ctx on_pick=refocus />
+                    <side::ProblemsPane ctx on_pick=refocus />
+                </div>
+            }
+            .into_any(),
+        ),
+    ];
+    if Tool::Variables.on(ctx.machine) {
+        tools.push((
+            Tool::Variables,
+            view! { <variables::VariablesPane ctx /> }.into_any(),
+        ));
+    }
+    tools
+}
+
+/// A pane opened under the toolbar (Projects, Find), where the
 /// user looks: it is scrolled into view and takes the focus when it opens;
 /// Escape or Close shuts it and gives the focus back to the ladder.
 #[component]
@@ -184,68 +210,74 @@ fn Drawer(
     }
 }
 
-/// New, undo, redo, write to the machine, find, keys, copy elsewhere.
+/// The compact toolbar over the ladder: New, Undo, Redo, Write to PLC,
+/// Tests, the zoom, and what the run means for the drawing. Each button
+/// is an icon with a tooltip naming its key; the rest is in the menus.
 #[component]
-fn Toolbar(ctx: LadderCtx, refocus: Callback<()>) -> impl IntoView {
+fn Toolbar(
+    ctx: LadderCtx,
+    grid: NodeRef<leptos::html::Div>,
+    refocus: Callback<()>,
+) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
-    let ladders = use_context::<Ladders>();
     let run_drawing = live::run_action(ctx);
-    let others: Vec<MachineId> = MachineId::ALL
-        .into_iter()
-        .filter(|m| *m != ctx.machine)
-        .collect();
     view! {
-        <div class="ladder-toolbar" role="toolbar">
-            <span class="tb-main">
-            <button type="button" data-testid="new-ladder" on:click=move |_| {
-                ctx.apply(Edit::NewLadder);
-                refocus.run(());
-            }>{move || t().new_ladder}</button>
-            <button type="button" data-testid="undo" disabled=move || !ctx.drawing.can_undo.get()
-                on:click=move |_| { ctx.undo(); refocus.run(()); }>{move || t().undo}</button>
-            <button type="button" data-testid="redo" disabled=move || !ctx.drawing.can_redo.get()
-                on:click=move |_| { ctx.redo(); refocus.run(()); }>{move || t().redo}</button>
-            <button type="button" data-testid="ladder-write" disabled=move || ctx.drawing.listing.with(Option::is_none)
+        <div class="ladder-toolbar" role="toolbar" aria-label=move || t().toolbar>
+            <button type="button" class="icon-button" data-testid="new-ladder" title=move || t().new_ladder
+                on:click=move |_| {
+                    ctx.apply(Edit::NewLadder);
+                    refocus.run(());
+                }><span aria-hidden="true">"＋"</span><span class="wide-only">{move || t().new_ladder}</span></button>
+            <button type="button" class="icon-button" data-testid="undo" disabled=move || !ctx.drawing.can_undo.get()
+                title=move || format!("{} (Ctrl+Z)", t().undo) aria-label=move || t().undo
+                on:click=move |_| { ctx.undo(); refocus.run(()); }>"↶"</button>
+            <button type="button" class="icon-button" data-testid="redo" disabled=move || !ctx.drawing.can_redo.get()
+                title=move || format!("{} (Ctrl+Y)", t().redo) aria-label=move || t().redo
+                on:click=move |_| { ctx.redo(); refocus.run(()); }>"↷"</button>
+            <button type="button" class="icon-button" data-testid="ladder-write" disabled=move || ctx.drawing.listing.with(Option::is_none)
+                title=move || t().write_plc
                 on:click=move |_| {
                     // The same action as Run, said where the user looks.
                     if run_drawing() {
                         ctx.panes.message.set(Some(t().written.to_string()));
                     }
-                }>{move || t().write_plc}</button>
-            </span>
-            <span class="tb-more">
-            <shared::ShareButton ctx />
-            <files::FileButtons ctx refocus />
-            <button type="button" data-testid="tests-open" on:click=move |_| ctx.panes.toggle(ctx.panes.tests_open)>
-                {move || t().tests}
+                }><span aria-hidden="true">"⇩ "</span>{move || t().write_plc}</button>
+            <button type="button" class="icon-button" data-testid="tests-open" title=move || t().tests
+                on:click=move |_| ctx.page.docks.toggle(crate::docks::Tool::Tests)>
+                <span aria-hidden="true">"✓ "</span>{move || t().tests}
             </button>
-            <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.toggle(ctx.panes.projects_open)>
-                {move || t().projects}
-            </button>
-            <button type="button" data-testid="find-open" on:click=move |_| ctx.panes.toggle(ctx.panes.find_open)>
-                {move || t().find}
-            </button>
-            <button type="button" data-testid="keys" on:click=move |_| ctx.panes.help.update(|h| *h = !*h)>
-                {move || t().keys}
-            </button>
-            <label>
-                {move || t().copy_to}
-                <select data-testid="copy-to" prop:value="" on:change=move |e| {
-                    let target = MachineId::parse(&event_target_value(&e)).ok();
-                    if let (Some(target), Some(ladders)) = (target, ladders) {
-                        let other = ladders.of(target);
-                        other.apply(Edit::Replace { ladder: ctx.ladder() });
-                        ctx.page.machine.set(target);
-                    }
-                }>
-                    <option value="">"—"</option>
-                    {others.into_iter().map(|m| view! {
-                        <option value=m.name()>{crate::state::product_name(m)}</option>
-                    }).collect_view()}
-                </select>
-            </label>
-            </span>
+            <live::RunStatus ctx />
+            <zoom::ZoomBar ctx grid />
         </div>
+    }
+}
+
+/// Copies the whole ladder to another machine's editor and shows it there.
+#[component]
+pub fn CopyTo(ctx: LadderCtx) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    let ladders = use_context::<Ladders>();
+    let others: Vec<MachineId> = MachineId::ALL
+        .into_iter()
+        .filter(|m| *m != ctx.machine)
+        .collect();
+    view! {
+        <label>
+            {move || t().copy_to}
+            <select data-testid="copy-to" prop:value="" on:change=move |e| {
+                let target = MachineId::parse(&event_target_value(&e)).ok();
+                if let (Some(target), Some(ladders)) = (target, ladders) {
+                    let other = ladders.of(target);
+                    other.apply(Edit::Replace { ladder: ctx.ladder() });
+                    ctx.page.machine.set(target);
+                }
+            }>
+                <option value="">"—"</option>
+                {others.into_iter().map(|m| view! {
+                    <option value=m.name()>{crate::state::product_name(m)}</option>
+                }).collect_view()}
+            </select>
+        </label>
     }
 }
 
@@ -298,53 +330,4 @@ fn CommentBar(ctx: LadderCtx) -> impl IntoView {
             </label>
         </div>
     }
-}
-
-/// Copy, cut and paste through the system clipboard while the ladder has
-/// the focus (the events reach the document, not the grid, when nothing
-/// editable is focused), so rungs go between two tabs of the page.
-fn clipboard_events(ctx: LadderCtx) {
-    fn on_ladder() -> bool {
-        web_sys::window()
-            .and_then(|w| w.document())
-            .and_then(|d| d.active_element())
-            .and_then(|e| e.get_attribute("data-testid"))
-            .as_deref()
-            == Some("ladder")
-    }
-    let copy = window_event_listener(leptos::ev::copy, move |e| {
-        if !on_ladder() {
-            return;
-        }
-        if let (Some(text), Some(dt)) = (ctx.copy_text(), e.clipboard_data()) {
-            let _ = dt.set_data("text/plain", &text);
-            e.prevent_default();
-        }
-    });
-    let cut = window_event_listener(leptos::ev::cut, move |e| {
-        if !on_ladder() {
-            return;
-        }
-        if let (Some(text), Some(dt)) = (ctx.cut_text(), e.clipboard_data()) {
-            let _ = dt.set_data("text/plain", &text);
-            e.prevent_default();
-        }
-    });
-    let paste = window_event_listener(leptos::ev::paste, move |e| {
-        if !on_ladder() {
-            return;
-        }
-        ctx.clip.pasted.set_value(true);
-        e.prevent_default();
-        let text = e
-            .clipboard_data()
-            .and_then(|dt| dt.get_data("text/plain").ok())
-            .filter(|t| !t.is_empty());
-        ctx.paste_text(text);
-    });
-    on_cleanup(move || {
-        copy.remove();
-        cut.remove();
-        paste.remove();
-    });
 }

@@ -241,52 +241,142 @@ pub fn activate(ctx: LadderCtx, id: &str) {
     }
 }
 
-/// The palette beside the ladder.
+/// The palette's groups, in the order shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Group {
+    Contacts,
+    Coils,
+    TimersCounters,
+    Compare,
+    Math,
+    MoveConvert,
+    Ldmicro,
+}
+
+impl Group {
+    /// Every group, in the order shown.
+    pub const ALL: [Group; 7] = [
+        Group::Contacts,
+        Group::Coils,
+        Group::TimersCounters,
+        Group::Compare,
+        Group::Math,
+        Group::MoveConvert,
+        Group::Ldmicro,
+    ];
+
+    /// The group of the item with hook `id`.
+    pub fn of(id: &str) -> Group {
+        match id {
+            _ if id.starts_with("ld-") => Group::Ldmicro,
+            "coil" | "coil-not" | "set" | "reset" | "pls" | "plf" => Group::Coils,
+            "timer" | "counter" | "ton" | "tof" | "tp" | "ctu" | "ctd" | "pin" => {
+                Group::TimersCounters
+            }
+            "cmp" | "gt" | "eq" | "lt" => Group::Compare,
+            "add" | "sub" | "mul" | "div" | "inc" | "dec" => Group::Math,
+            "mov" | "move" => Group::MoveConvert,
+            _ => Group::Contacts,
+        }
+    }
+
+    /// Its name in `lang`.
+    pub fn name(self, lang: Lang) -> &'static str {
+        said(
+            match self {
+                Group::Contacts => ("Contacts", "接点"),
+                Group::Coils => ("Coils", "コイル"),
+                Group::TimersCounters => ("Timers, counters", "タイマ・カウンタ"),
+                Group::Compare => ("Compare", "比較"),
+                Group::Math => ("Math", "演算"),
+                Group::MoveConvert => ("Move", "転送"),
+                Group::Ldmicro => ("LDmicro", "LDmicro"),
+            },
+            lang,
+        )
+    }
+}
+
+/// Whether `item` answers the palette's search `query` (its hook, symbol
+/// or name holds it, letter case aside); an empty query takes all.
+pub fn matches(item: &Item, query: &str) -> bool {
+    let q = query.trim().to_lowercase();
+    q.is_empty()
+        || [item.id, item.symbol, item.name]
+            .iter()
+            .any(|s| s.to_lowercase().contains(&q))
+}
+
+/// The palette beside the ladder: its items in groups, a search field
+/// over them; it scrolls inside, never taller than the ladder.
 #[component]
 pub fn Palette(ctx: LadderCtx, on_done: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
-    // Made again when the language changes (names and reasons).
-    let buttons = move || {
-        items(ctx.machine, ctx.page.lang.get())
-            .into_iter()
-            .map(|i| {
-                let id = i.id;
-                let disabled = i.lacks.is_some();
-                let title = match &i.lacks {
-                    Some(why) => format!("{}: {why}", i.name),
-                    None => i.name.to_string(),
-                };
-                view! {
-                    <button
-                        type="button"
-                        class="palette-item"
-                        data-testid=format!("palette-{id}")
-                        aria-label=format!("{} {title}", i.symbol)
-                        title=title
-                        aria-disabled=if disabled { "true" } else { "false" }
-                        // What the machine lacks is said, not reached by Tab.
-                        tabindex=if disabled { "-1" } else { "0" }
-                        data-reason=i.lacks.clone()
-                        draggable=if disabled { "false" } else { "true" }
-                        on:dragstart=move |e: web_sys::DragEvent| {
-                            if let Some(dt) = e.data_transfer() {
-                                let _ = dt.set_data("text/plain", &format!("palette:{id}"));
-                            }
-                        }
-                        on:click=move |_| {
-                            activate(ctx, id);
-                            on_done.run(());
-                        }
-                    >
-                        {i.symbol}
-                    </button>
+    let query = RwSignal::new(String::new());
+    let button = move |i: Item| {
+        let id = i.id;
+        let disabled = i.lacks.is_some();
+        let title = match &i.lacks {
+            Some(why) => format!("{}: {why}", i.name),
+            None => i.name.to_string(),
+        };
+        view! {
+            <button
+                type="button"
+                class="palette-item"
+                data-testid=format!("palette-{id}")
+                aria-label=format!("{} {title}", i.symbol)
+                title=title
+                aria-disabled=if disabled { "true" } else { "false" }
+                // What the machine lacks is said, not reached by Tab.
+                tabindex=if disabled { "-1" } else { "0" }
+                data-reason=i.lacks.clone()
+                draggable=if disabled { "false" } else { "true" }
+                on:dragstart=move |e: web_sys::DragEvent| {
+                    if let Some(dt) = e.data_transfer() {
+                        let _ = dt.set_data("text/plain", &format!("palette:{id}"));
+                    }
                 }
+                on:click=move |_| {
+                    activate(ctx, id);
+                    on_done.run(());
+                }
+            >
+                {i.symbol}
+            </button>
+        }
+    };
+    // Made again when the language or the search changes.
+    let groups = move || {
+        let lang = ctx.page.lang.get();
+        let q = query.get();
+        let all = items(ctx.machine, lang);
+        Group::ALL
+            .into_iter()
+            .filter_map(|g| {
+                let inside: Vec<Item> = all
+                    .iter()
+                    .filter(|i| Group::of(i.id) == g && matches(i, &q))
+                    .cloned()
+                    .collect();
+                (!inside.is_empty()).then(|| {
+                    view! {
+                        <div class="palette-group" role="group" aria-label=g.name(lang)>
+                            <h3 aria-hidden="true">{g.name(lang)}</h3>
+                            {inside.into_iter().map(button).collect_view()}
+                        </div>
+                    }
+                })
             })
             .collect_view()
     };
     view! {
         <div class="palette" data-testid="palette" role="toolbar" aria-label=move || t().palette>
-            {buttons}
+            <input type="search" class="palette-search" data-testid="palette-search"
+                placeholder=move || t().palette_search aria-label=move || t().palette_search
+                prop:value=move || query.get()
+                on:input=move |e| query.set(event_target_value(&e)) />
+            {groups}
         </div>
     }
 }
@@ -341,6 +431,34 @@ mod tests {
             let example = example.split(" (").next().unwrap_or(example);
             let made = parse_entry(MachineId::SoftPlc, EntryKind::Instruction, example);
             assert!(made.is_ok(), "{}: {example}: {made:?}", item.id);
+        }
+    }
+
+    #[test]
+    fn every_item_has_a_group_and_the_search_finds_by_name() {
+        let soft = items(MachineId::SoftPlc, Lang::En);
+        let group = |id: &str| Group::of(id);
+        assert_eq!(group("no"), Group::Contacts);
+        assert_eq!(group("coil"), Group::Coils);
+        assert_eq!(group("ctu"), Group::TimersCounters);
+        assert_eq!(group("gt"), Group::Compare);
+        assert_eq!(group("add"), Group::Math);
+        assert_eq!(group("move"), Group::MoveConvert);
+        assert_eq!(group("ld-seg7"), Group::Ldmicro);
+        let found: Vec<&str> = soft
+            .iter()
+            .filter(|i| matches(i, "COUNTER"))
+            .map(|i| i.id)
+            .collect();
+        assert!(
+            found.contains(&"ctu") && found.contains(&"ctd"),
+            "{found:?}"
+        );
+        assert!(!found.contains(&"no"));
+        assert_eq!(soft.iter().filter(|i| matches(i, "  ")).count(), soft.len());
+        // No group is empty on the soft PLC, the one machine with all.
+        for g in Group::ALL {
+            assert!(soft.iter().any(|i| Group::of(i.id) == g), "{g:?}");
         }
     }
 

@@ -134,13 +134,14 @@ impl ArduinoCtx {
     }
 }
 
-/// The whole Arduino workspace.
+/// The Arduino's panel: its pins, the sketch's quirk and its serial
+/// monitor (the panel dock).
 #[component]
-pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
+pub fn ArduinoPanel(ard: ArduinoCtx) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
     view! {
-        <main class="workspace arduino">
+        <div class="workspace arduino">
             <section class="device arduino-board">
                 <h2>
                     "Arduino (ATmega328) · "
@@ -162,18 +163,21 @@ pub fn ArduinoWorkspace(ard: ArduinoCtx) -> impl IntoView {
                     {move || t().quirk_sketch}
                 </label>
             </section>
-            <div class="side">
-                <ConsolePane
-                    title=Signal::derive(move || t().monitor.to_string())
-                    hint=Signal::derive(move || t().monitor_hint.to_string())
-                    testid="arduino-monitor"
-                    console=ard.console
-                    on_line=Callback::new(move |line: String| ard.type_line(&line))
-                />
-                <ProgramPane ard=ard />
-            </div>
-        </main>
+            <ConsolePane
+                title=Signal::derive(move || t().monitor.to_string())
+                hint=Signal::derive(move || t().monitor_hint.to_string())
+                testid="arduino-monitor"
+                console=ard.console
+                on_line=Callback::new(move |line: String| ard.type_line(&line))
+            />
+        </div>
     }
+}
+
+/// The Arduino's program text (the tools dock's Program tab).
+#[component]
+pub fn ArduinoProgram(ard: ArduinoCtx) -> impl IntoView {
+    view! { <ProgramPane ard=ard /> }
 }
 
 /// PD2-PD7 as input switches, PB0-PB5 as lamps.

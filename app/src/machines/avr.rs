@@ -158,9 +158,32 @@ fn rows_for(old: &[NamedBit], names: &[(String, BitRef)], plc: &dyn Plc) -> Vec<
         .collect()
 }
 
-/// The whole AVR workspace.
+/// The AVR PLC's panel: every named bit as a lamp and a switch.
 #[component]
-pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
+pub fn AvrPanel(avr: AvrCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <div class="workspace avr">
+            <section class="device avr-bits">
+                <h2>"AVR · " {move || t().bits}</h2>
+                <table class="bits">
+                    <tbody>
+                        <For
+                            each=move || avr.bits.get()
+                            key=|b| (b.name.clone(), b.bit.register, b.bit.bit)
+                            children=move |b: NamedBit| view! { <BitRow avr b /> }
+                        />
+                    </tbody>
+                </table>
+            </section>
+        </div>
+    }
+}
+
+/// The AVR PLC's program text (the tools dock's Program tab).
+#[component]
+pub fn AvrProgram(avr: AvrCtx) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
     // Errors by line, or whether the program has a TOF (on after power-up).
@@ -174,38 +197,22 @@ pub fn AvrWorkspace(avr: AvrCtx) -> impl IntoView {
             })
     });
     view! {
-        <main class="workspace avr">
-            <section class="device avr-bits">
-                <h2>"AVR · " {move || t().bits}</h2>
-                <table class="bits">
-                    <tbody>
-                        <For
-                            each=move || avr.bits.get()
-                            key=|b| (b.name.clone(), b.bit.register, b.bit.bit)
-                            children=move |b: NamedBit| view! { <BitRow avr b /> }
-                        />
-                    </tbody>
-                </table>
-            </section>
-            <div class="side">
-                <TextProgramPane
-                    as_ladder=true
-                    prefix="avr-"
-                    text=avr.text
-                    errors=Signal::derive(move || parsed.get().err().unwrap_or_default())
-                    on_edit=Callback::new(|program: String| {
-                        storage::save_to(KEY, &storage::SavedText { program });
-                    })
-                    on_load=Callback::new(move |()| {
-                        avr.load();
-                    })
-                    warning=Signal::derive(move || {
-                        (parsed.get() == Ok(true)).then(|| t().warn_tof.to_string())
-                    })
-                    tall=true
-                />
-            </div>
-        </main>
+        <TextProgramPane
+            as_ladder=true
+            prefix="avr-"
+            text=avr.text
+            errors=Signal::derive(move || parsed.get().err().unwrap_or_default())
+            on_edit=Callback::new(|program: String| {
+                storage::save_to(KEY, &storage::SavedText { program });
+            })
+            on_load=Callback::new(move |()| {
+                avr.load();
+            })
+            warning=Signal::derive(move || {
+                (parsed.get() == Ok(true)).then(|| t().warn_tof.to_string())
+            })
+            tall=true
+        />
     }
 }
 

@@ -92,6 +92,13 @@ impl LadderCtx {
         if self.live.running.get_untracked() != in_run {
             self.live.running.set(in_run);
         }
+        let powered = !self.live.powered_off.get_untracked();
+        let clock = self.live.clock.get_untracked().next(
+            plc.now().as_nanos(),
+            plc.scans(),
+            in_run && powered,
+        );
+        crate::state::put(self.live.clock, clock);
         let running = plc.scans() > 0 && !self.live.unwritten.get_untracked();
         let powers: Vec<(usize, Vec<(Pos, bool)>)> = match plc.trace() {
             Some(trace) => self.live.ladder.with_value(|l| {
@@ -220,6 +227,18 @@ impl LadderCtx {
                 .collect()
         });
         crate::state::put(self.live.variable_values, variables);
+        let io: Vec<(String, bool)> = self.drawing.io.with_untracked(|points| {
+            points
+                .iter()
+                .map(|p| {
+                    let on = self
+                        .handle(plc, &p.name)
+                        .is_some_and(|h| plc.read(h).is_on());
+                    (p.name.clone(), on)
+                })
+                .collect()
+        });
+        crate::state::put(self.live.io_values, io);
     }
 
     /// Each frame: marks every cell whose power changed in some scan since

@@ -112,6 +112,12 @@ pub struct Drawing {
     pub comments: RwSignal<BTreeMap<String, String>>,
     /// The soft PLC's declared variables (the variables pane).
     pub variables: RwSignal<Vec<engine::ladder::Variable>>,
+    /// Each column's width (rem) over the whole ladder, so that the rungs
+    /// line up and a contact's column is narrower than a box's.
+    pub col_widths: RwSignal<Vec<f64>>,
+    /// The inputs the ladder's contacts read and the outputs its coils
+    /// write, in order of first use (the phone's strip).
+    pub io: RwSignal<Vec<crate::docks::strip::IoPoint>>,
 }
 
 /// The device entry, the edit message and which panes are shown.
@@ -127,17 +133,17 @@ pub struct Panes {
     pub find_open: RwSignal<bool>,
     /// The projects pane is shown.
     pub projects_open: RwSignal<bool>,
-    /// The Tests pane is shown.
-    pub tests_open: RwSignal<bool>,
+    /// A file read and waiting for its import dialog's answers.
+    pub import: RwSignal<Option<crate::editor::import::Pending>>,
     /// The ladder's zoom (1.0: 100 %), see [`zoom`](crate::editor::zoom).
     pub zoom: RwSignal<f64>,
 }
 
 impl Panes {
-    /// Shows one of the sheets (Tests, Projects, Find), closing the others:
+    /// Shows one of the sheets (Projects, Find), closing the other:
     /// they open in the same place.
     pub fn show(&self, which: RwSignal<bool>) {
-        for pane in [self.tests_open, self.projects_open, self.find_open] {
+        for pane in [self.projects_open, self.find_open] {
             if pane != which && pane.get_untracked() {
                 pane.set(false);
             }
@@ -221,6 +227,12 @@ pub struct Live {
     /// Each declared variable's value on the machine (the variables
     /// pane), by name; empty before a scan.
     pub variable_values: RwSignal<Vec<(String, String)>>,
+    /// Whether each device of the phone's strip is on (`drawing.io`).
+    pub io_values: RwSignal<Vec<(String, bool)>>,
+    /// The machine's clock as the app bar shows it.
+    pub clock: RwSignal<Clock>,
+    /// The AVR PLC, which has no RUN switch, is powered off by Stop.
+    pub powered_off: RwSignal<bool>,
     /// The step the last single step ran, and its rung.
     pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
     /// The element the last single instruction came from.
@@ -240,6 +252,67 @@ pub struct Live {
     /// The machine the ladder runs on (attached with its workspace).
     pub(super) link:
         StoredValue<Option<std::rc::Rc<dyn super::machine::MachineLink>>, LocalStorage>,
+}
+
+/// The machine's clock as the app bar shows it: simulated time, scans,
+/// the last scans' duration, and whether it runs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Clock {
+    /// Simulated time, in ns.
+    pub nanos: u64,
+    /// Scans run since power-up.
+    pub scans: u64,
+    /// The scans of the last frame that ran any took this long each
+    /// (simulated µs, on average); `None` before it.
+    pub scan_us: Option<u64>,
+    /// The machine runs its program (RUN, powered).
+    pub running: bool,
+}
+
+impl Clock {
+    /// Simulated time in whole ms (`data-ms`).
+    pub fn ms(&self) -> u64 {
+        self.nanos / 1_000_000
+    }
+
+    /// The clock after a frame that left the machine at `nanos` with
+    /// `scans` scans, `running` or not: a scan's duration is the frame's
+    /// simulated time over the scans it ran (a reset starts afresh).
+    pub fn next(self, nanos: u64, scans: u64, running: bool) -> Clock {
+        let ran = scans.saturating_sub(self.scans);
+        let scan_us = if scans < self.scans || nanos < self.nanos {
+            None
+        } else if ran > 0 && self.scans > 0 {
+            Some((nanos - self.nanos) / ran / 1_000)
+        } else {
+            self.scan_us
+        };
+        Clock {
+            nanos,
+            scans,
+            scan_us,
+            running,
+        }
+    }
+}
+
+#[cfg(test)]
+mod clock_tests {
+    use super::Clock;
+
+    #[test]
+    fn a_scan_lasts_the_frames_time_over_its_scans() {
+        let c = Clock::default().next(10_000_000, 5, true);
+        assert_eq!((c.ms(), c.scans, c.scan_us), (10, 5, None));
+        // 16 ms, 160 scans: 100 µs each.
+        let c = c.next(26_000_000, 165, true);
+        assert_eq!(c.scan_us, Some(100));
+        // A frame with no scan keeps the figure; stopped, time stands.
+        let c = c.next(26_000_000, 165, false);
+        assert_eq!((c.scan_us, c.running, c.ms()), (Some(100), false, 26));
+        // A power cycle (fewer scans) starts afresh.
+        assert_eq!(c.next(30_000_000, 2, true).scan_us, None);
+    }
 }
 
 /// What a refresh follows.
@@ -273,6 +346,10 @@ impl LadderCtx {
             Some(p) => (Some(p.ladder), p.tests, p.exercise),
             None => (None, Vec::new(), false),
         };
+        if exercise && page.machine.get_untracked() == machine {
+            // An exercise opens with its tests shown.
+            page.docks.show(crate::docks::Tool::Tests);
+        }
         let ctx = LadderCtx {
             machine,
             page,
@@ -290,6 +367,8 @@ impl LadderCtx {
                 problems: RwSignal::new(Vec::new()),
                 comments: RwSignal::new(BTreeMap::new()),
                 variables: RwSignal::new(Vec::new()),
+                col_widths: RwSignal::new(vec![super::model::MIN_COL_REM; COLUMNS]),
+                io: RwSignal::new(Vec::new()),
             },
             panes: Panes {
                 entry: RwSignal::new(None),
@@ -297,7 +376,7 @@ impl LadderCtx {
                 help: RwSignal::new(false),
                 find_open: RwSignal::new(false),
                 projects_open: RwSignal::new(false),
-                tests_open: RwSignal::new(exercise),
+                import: RwSignal::new(None),
                 zoom: RwSignal::new(1.0),
             },
             text: TextLink {
@@ -328,6 +407,9 @@ impl LadderCtx {
                 watch: RwSignal::new(Vec::new()),
                 watch_values: RwSignal::new(Vec::new()),
                 variable_values: RwSignal::new(Vec::new()),
+                io_values: RwSignal::new(Vec::new()),
+                clock: RwSignal::new(Clock::default()),
+                powered_off: RwSignal::new(false),
                 stepped: RwSignal::new(None),
                 stepped_cell: RwSignal::new(None),
                 monitor: RwSignal::new(false),
@@ -529,6 +611,14 @@ impl LadderCtx {
                 })
                 .collect()
         });
+        let cols = out_col + 1;
+        let widths = super::model::column_widths(&data.iter().collect::<Vec<_>>(), cols);
+        crate::state::put(self.drawing.col_widths, widths);
+        let io = self
+            .drawing
+            .editor
+            .with_value(|e| crate::docks::strip::io_points(e.ladder()));
+        crate::state::put(self.drawing.io, io);
         let old = self.drawing.rungs.get_untracked();
         let plan = {
             let guards: Vec<_> = old.iter().map(|v| v.data.read_untracked()).collect();

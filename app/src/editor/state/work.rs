@@ -44,7 +44,7 @@ impl LadderCtx {
         let own_exercise = self.cases.exercise.get_untracked();
         self.show_cases(project.tests, project.exercise);
         if project.exercise {
-            self.panes.tests_open.set(true);
+            self.page.docks.show(crate::docks::Tool::Tests);
         }
         let replaced = self.apply(Edit::Replace {
             ladder: project.ladder,

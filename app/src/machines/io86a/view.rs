@@ -62,9 +62,10 @@ fn prefix(device: usize) -> &'static str {
     }
 }
 
-/// The whole IO86A workspace.
+/// The IO86A's panel: its device (or two), their peripherals and the
+/// serial terminal.
 #[component]
-pub fn Io86aWorkspace(io: Io86aCtx) -> impl IntoView {
+pub fn Io86aPanel(io: Io86aCtx) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
     view! {
@@ -73,7 +74,7 @@ pub fn Io86aWorkspace(io: Io86aCtx) -> impl IntoView {
                 {move || format!("{} {}", t().corrupt_saved, io.notice.get().unwrap_or_default())}
             </div>
         </Show>
-        <main class="workspace io86a">
+        <div class="workspace io86a">
             <div class="devices">
                 <Device device=0 />
                 <Show when=move || io.two.get()>
@@ -90,14 +91,22 @@ pub fn Io86aWorkspace(io: Io86aCtx) -> impl IntoView {
                     {move || t().two_devices}
                 </button>
             </div>
-            <div class="side">
-                <TerminalPane />
-                <ProgramPane device=0 />
-                <Show when=move || io.two.get()>
-                    <ProgramPane device=1 />
-                </Show>
-            </div>
-        </main>
+            <TerminalPane />
+        </div>
+    }
+}
+
+/// The IO86A's program texts, one per device (the tools dock's Program
+/// tab).
+#[component]
+pub fn Io86aProgram(io: Io86aCtx) -> impl IntoView {
+    view! {
+        <div class="io86a-programs">
+            <ProgramPane device=0 />
+            <Show when=move || io.two.get()>
+                <ProgramPane device=1 />
+            </Show>
+        </div>
     }
 }
 

@@ -401,21 +401,12 @@ impl SoftCtx {
     }
 }
 
-/// The whole soft PLC workspace: board, variables, program.
+/// The soft PLC's panel: its board, built from the program's I/O, and
+/// the serial monitor while the program uses a UART.
 #[component]
-pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
+pub fn SoftPanel(soft: SoftCtx) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
-    let ladder = use_context::<crate::editor::LadderCtx>();
-    let errors = Memo::new(
-        move |_| match engine::softplc::Program::load(&soft.text.get()) {
-            Ok(_) => Vec::new(),
-            Err(e) => e
-                .iter()
-                .map(|e| (e.line, e.error.to_string()))
-                .collect::<Vec<_>>(),
-        },
-    );
     let of = move |kind: TerminalKind| {
         move || {
             soft.terminals
@@ -426,7 +417,7 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
         }
     };
     view! {
-        <main class="workspace soft">
+        <div class="workspace soft">
             <section class="device soft-board" data-testid="soft-board">
                 <h2>{move || t().soft_board}</h2>
                 <ScanSetting soft />
@@ -448,7 +439,6 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                 </ul>
                 <Digits soft />
             </section>
-            {ladder.map(|l| view! { <crate::editor::variables::VariablesPane ctx=l /> })}
             <Show when=move || soft.serial.get()>
                 <ConsolePane
                     title=Signal::derive(move || t().monitor.to_string())
@@ -458,8 +448,24 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                     on_line=Callback::new(move |line: String| soft.type_line(&line))
                 />
             </Show>
-            <div class="side">
-                <TextProgramPane
+        </div>
+    }
+}
+
+/// The soft PLC's program text (the tools dock's Program tab).
+#[component]
+pub fn SoftProgram(soft: SoftCtx) -> impl IntoView {
+    let errors = Memo::new(
+        move |_| match engine::softplc::Program::load(&soft.text.get()) {
+            Ok(_) => Vec::new(),
+            Err(e) => e
+                .iter()
+                .map(|e| (e.line, e.error.to_string()))
+                .collect::<Vec<_>>(),
+        },
+    );
+    view! {
+        <TextProgramPane
                     as_ladder=true
                     prefix="soft-"
                     text=soft.text
@@ -472,8 +478,6 @@ pub fn SoftWorkspace(soft: SoftCtx) -> impl IntoView {
                     })
                     tall=true
                 />
-            </div>
-        </main>
     }
 }
 

@@ -1,0 +1,71 @@
+//! A menu of the app bar (File, Edit, View, Help; on a phone all of them
+//! behind one button): a button that opens a panel of the controls the
+//! toolbar once showed in a row. The panel stays in the page while closed
+//! (hidden), so a file input in it keeps its chosen file. Escape, a click
+//! outside or a click on a button inside closes it.
+
+use leptos::prelude::*;
+
+use crate::state::Ctx;
+
+/// A menu: `menu-<id>` opens `data-menu-panel="<id>"`.
+#[component]
+pub fn Menu(id: &'static str, label: Signal<&'static str>, children: Children) -> impl IntoView {
+    let open = RwSignal::new(false);
+    let node = NodeRef::<leptos::html::Div>::new();
+    // A click anywhere outside the menu closes it.
+    let outside = window_event_listener(leptos::ev::pointerdown, move |e| {
+        if !open.get_untracked() {
+            return;
+        }
+        let inside = e
+            .target()
+            .and_then(|t| {
+                use leptos::wasm_bindgen::JsCast;
+                t.dyn_into::<web_sys::Node>().ok()
+            })
+            .zip(node.get_untracked())
+            .is_some_and(|(t, menu)| menu.contains(Some(&t)));
+        if !inside {
+            open.set(false);
+        }
+    });
+    on_cleanup(move || outside.remove());
+    view! {
+        <div class="menu" node_ref=node
+            on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" && open.get_untracked() {
+                e.prevent_default();
+                open.set(false);
+            }>
+            <button type="button" class="menu-button" data-testid=format!("menu-{id}")
+                aria-haspopup="true" aria-expanded=move || open.get().to_string()
+                aria-controls=format!("menu-panel-{id}")
+                on:click=move |_| open.update(|o| *o = !*o)>
+                {move || label.get()}
+            </button>
+            <div class="menu-panel" id=format!("menu-panel-{id}") data-menu-panel=id
+                hidden=move || !open.get()
+                on:click=move |e: web_sys::MouseEvent| {
+                    // A button chosen closes the menu; a field (a select,
+                    // the file input, a check box) keeps it open to be used.
+                    use leptos::wasm_bindgen::JsCast;
+                    let chosen = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+                        .and_then(|el| el.closest("button").ok().flatten())
+                        .is_some();
+                    if chosen {
+                        open.set(false);
+                    }
+                }>
+                {children()}
+            </div>
+        </div>
+    }
+}
+
+/// The label of a menu in the page's language.
+pub fn label(f: fn(&'static crate::i18n::Texts) -> &'static str) -> Signal<&'static str> {
+    let ctx = Ctx::get();
+    Signal::derive(move || f(ctx.lang.get().texts()))
+}

@@ -1,0 +1,247 @@
+//! The app bar (issue #45, docs/app.md "The workbench"): the project's
+//! name, the menus (File, Edit, View, Help; one button on a phone), the
+//! machine, the one run control with Pause and the steps, the speed, the
+//! machine's clock, and Share. Everything acts on the machine shown.
+
+pub mod clock;
+pub mod menu;
+pub mod run;
+
+use leptos::prelude::*;
+
+use crate::editor::LadderCtx;
+use crate::examples;
+use crate::i18n::Lang;
+use crate::machines::minasec;
+use crate::state::{product_name, Ctx, MachineKind};
+use crate::storage;
+use crate::workspaces::Workspaces;
+use menu::{label, Menu};
+
+/// The app bar.
+#[component]
+pub fn AppBar() -> impl IntoView {
+    let ctx = Ctx::get();
+    let workspaces = expect_context::<Workspaces>();
+    let t = move || ctx.lang.get().texts();
+    let ladder = move || workspaces.ladders.of(ctx.machine.get());
+    let menus_open = RwSignal::new(false);
+    view! {
+        <header class="top app-bar">
+            <h1 class="brand">
+                {move || t().brand}
+                <span class="project-name" data-testid="project-name">{move || project_name(ladder())}</span>
+            </h1>
+            <button type="button" class="menus-toggle" data-testid="menus" aria-expanded=move || menus_open.get().to_string()
+                aria-controls="menus" aria-label=move || t().menus title=move || t().menus
+                on:click=move |_| menus_open.update(|o| *o = !*o)>"☰"</button>
+            <nav class="menus" id="menus" data-open=move || menus_open.get().to_string() aria-label=move || t().menus>
+                <Menu id="file" label=label(|t| t.menu_file)>
+                    {move || view! { <FileMenu ctx=ladder() /> }}
+                </Menu>
+                <Menu id="edit" label=label(|t| t.menu_edit)>
+                    {move || view! { <EditMenu ctx=ladder() /> }}
+                </Menu>
+                <Menu id="view" label=label(|t| t.menu_view)>
+                    <ViewMenu />
+                </Menu>
+                <Menu id="help" label=label(|t| t.menu_help)>
+                    {move || view! { <HelpMenu ctx=ladder() /> }}
+                </Menu>
+            </nav>
+            <MachineSelect />
+            {move || view! { <run::RunControls ctx=ladder() /> }}
+            <run::SpeedSelect />
+            {move || view! { <clock::SimClock ctx=ladder() /> }}
+            <minasec::header::ExampleUndo />
+            <span class="share-slot">{move || view! { <crate::editor::shared::ShareButton ctx=ladder() /> }}</span>
+        </header>
+    }
+}
+
+/// The project open on the machine shown, or the machine's own ladder.
+fn project_name(ladder: LadderCtx) -> String {
+    let t = ladder.page.lang.get().texts();
+    let id = ladder.work.project.get();
+    let projects = use_context::<crate::editor::projects::Projects>();
+    id.and_then(|id| {
+        projects?.index.with(|i| {
+            i.projects
+                .iter()
+                .find(|p| p.id == id)
+                .map(|p| p.name.clone())
+        })
+    })
+    .unwrap_or_else(|| t.project_untitled.to_string())
+}
+
+/// File: projects, open and import, save and export, pictures, print, the
+/// machine's examples, and copying the ladder to another machine.
+#[component]
+fn FileMenu(ctx: LadderCtx) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    let machine = ctx.machine;
+    view! {
+        <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.toggle(ctx.panes.projects_open)>
+            {move || t().projects}
+        </button>
+        <crate::editor::files::FileButtons ctx />
+        <ExampleSelect machine />
+        <crate::editor::CopyTo ctx />
+    }
+}
+
+/// Edit: undo and redo, find, the clipboard, the rung and device comments.
+#[component]
+fn EditMenu(ctx: LadderCtx) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    view! {
+        <button type="button" data-testid="menu-undo" disabled=move || !ctx.drawing.can_undo.get()
+            on:click=move |_| ctx.undo()>{move || format!("{} (Ctrl+Z)", t().undo)}</button>
+        <button type="button" data-testid="menu-redo" disabled=move || !ctx.drawing.can_redo.get()
+            on:click=move |_| ctx.redo()>{move || format!("{} (Ctrl+Y)", t().redo)}</button>
+        <button type="button" data-testid="find-open" on:click=move |_| ctx.panes.toggle(ctx.panes.find_open)>
+            {move || format!("{} (Ctrl+F)", t().find)}
+        </button>
+        <button type="button" data-testid="menu-copy" on:click=move |_| crate::editor::clipboard::copy(ctx)>
+            {move || format!("{} (Ctrl+C)", t().copy)}
+        </button>
+        <button type="button" data-testid="menu-cut" on:click=move |_| crate::editor::clipboard::cut(ctx)>
+            {move || format!("{} (Ctrl+X)", t().cut)}
+        </button>
+        <button type="button" data-testid="menu-paste" on:click=move |_| crate::editor::clipboard::paste(ctx)>
+            {move || format!("{} (Ctrl+V)", t().paste)}
+        </button>
+    }
+}
+
+/// View: the docks, and the language.
+#[component]
+fn ViewMenu() -> impl IntoView {
+    let ctx = Ctx::get();
+    let docks = ctx.docks;
+    let t = move || ctx.lang.get().texts();
+    view! {
+        <button type="button" data-testid="view-panel-dock" aria-pressed=move || docks.sizes.with(|s| s.right_open).to_string()
+            on:click=move |_| docks.resize(|s| s.right_open = !s.right_open)>{move || t().panel_dock}</button>
+        <button type="button" data-testid="view-tools-dock" aria-pressed=move || docks.sizes.with(|s| s.bottom_open).to_string()
+            on:click=move |_| docks.resize(|s| s.bottom_open = !s.bottom_open)>{move || t().tools_dock}</button>
+        <button type="button" data-testid="view-reset-docks"
+            on:click=move |_| docks.resize(|s| *s = crate::docks::Sizes::default())>{move || t().reset_docks}</button>
+        <LangSelect />
+    }
+}
+
+/// Help: the keys.
+#[component]
+fn HelpMenu(ctx: LadderCtx) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    view! {
+        <button type="button" data-testid="keys" on:click=move |_| ctx.panes.help.update(|h| *h = !*h)>
+            {move || t().keys}
+        </button>
+    }
+}
+
+/// Which machine the page shows (remembered).
+#[component]
+fn MachineSelect() -> impl IntoView {
+    let ctx = Ctx::get();
+    view! {
+        <label>
+            {move || ctx.lang.get().texts().machine}
+            <select
+                data-testid="machine"
+                prop:value=move || ctx.machine.get().name()
+                on:change=move |e| {
+                    if let Ok(kind) = MachineKind::parse(&event_target_value(&e)) {
+                        ctx.machine.set(kind);
+                        storage::save_string(storage::MACHINE_KEY, kind.name());
+                    }
+                }
+            >
+                {MachineKind::ALL
+                    .iter()
+                    .map(|&kind| view! { <option value=kind.name()>{product_name(kind)}</option> })
+                    .collect_view()}
+            </select>
+        </label>
+    }
+}
+
+/// The interface language (remembered).
+#[component]
+fn LangSelect() -> impl IntoView {
+    let ctx = Ctx::get();
+    view! {
+        <label>
+            {move || ctx.lang.get().texts().language}
+            <select
+                data-testid="lang"
+                prop:value=move || ctx.lang.get().code()
+                on:change=move |e| {
+                    if let Some(lang) = Lang::from_code(&event_target_value(&e)) {
+                        ctx.lang.set(lang);
+                        storage::save_lang(lang.code());
+                        set_document_lang(lang);
+                    }
+                }
+            >
+                <option value="ja">"日本語"</option>
+                <option value="en">"English"</option>
+            </select>
+        </label>
+    }
+}
+
+/// The machine's examples: each opens as a ladder (one undo brings the
+/// old ladder back); MINASEC-U's also replaces the text (undoable).
+#[component]
+fn ExampleSelect(machine: MachineKind) -> impl IntoView {
+    let ctx = Ctx::get();
+    let workspaces = expect_context::<Workspaces>();
+    let t = move || ctx.lang.get().texts();
+    let options = engine::examples::examples_of(machine)
+        .map(|e| {
+            view! {
+                <option value=e.id>
+                    {move || if ctx.lang.get() == Lang::Ja { e.title_ja } else { e.title_en }}
+                </option>
+            }
+        })
+        .collect_view();
+    view! {
+        <label>
+            {move || t().example}
+            <select
+                data-testid="example"
+                prop:value=""
+                on:change=move |e| {
+                    let id = event_target_value(&e);
+                    examples::open(machine, &id, workspaces);
+                    // Back to the prompt, so the same example can be opened again.
+                    use leptos::wasm_bindgen::JsCast;
+                    if let Some(select) = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<web_sys::HtmlSelectElement>().ok())
+                    {
+                        select.set_value("");
+                    }
+                }
+            >
+                <option value="">{move || t().example_none}</option>
+                {options}
+            </select>
+        </label>
+    }
+}
+
+/// Sets `<html lang>` so screen readers and fonts follow the interface.
+pub fn set_document_lang(lang: Lang) {
+    if let Some(root) = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.document_element())
+    {
+        let _ = root.set_attribute("lang", lang.code());
+    }
+}

@@ -1,0 +1,191 @@
+//! The docks as drawn: the tools dock's tabs and panels, the panel dock,
+//! and the splitters that resize them (by pointer or by arrow keys).
+
+use leptos::prelude::*;
+
+use super::{Docks, Tool};
+use crate::state::Ctx;
+
+/// The tools dock: a tab per tool this machine has, one panel shown.
+/// Every panel stays mounted (hidden when not shown), so a tool keeps its
+/// state and what it shows is up to date when its tab is chosen.
+#[component]
+pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> impl IntoView {
+    let ctx = Ctx::get();
+    let docks = ctx.docks;
+    let t = move || ctx.lang.get().texts();
+    let open = move || docks.sizes.with(|s| s.bottom_open);
+    let tools: Vec<Tool> = panels.iter().map(|(tool, _)| *tool).collect();
+    let tabs = tools
+        .into_iter()
+        .chain(std::iter::once(Tool::Panel))
+        .filter(|tool| tool.on(machine))
+        .map(|tool| {
+            let shown = move || docks.tool.get() == tool;
+            view! {
+                <button type="button" role="tab" class="dock-tab"
+                    class:phone-only=tool == Tool::Panel
+                    data-testid=format!("dock-tab-{}", tool.hook())
+                    id=format!("dock-tab-{}", tool.hook())
+                    aria-controls=format!("dock-panel-{}", tool.hook())
+                    aria-selected=move || (shown() && open()).to_string()
+                    on:click=move |_| docks.toggle(tool)>
+                    {move || tool_name(tool, t())}
+                </button>
+            }
+        })
+        .collect_view();
+    let panels = panels
+        .into_iter()
+        .map(|(tool, body)| {
+            view! {
+                <div class="dock-panel" role="tabpanel" data-dock-panel=tool.hook()
+                    id=format!("dock-panel-{}", tool.hook())
+                    aria-labelledby=format!("dock-tab-{}", tool.hook())
+                    hidden=move || docks.tool.get() != tool>
+                    {body}
+                </div>
+            }
+        })
+        .collect_view();
+    view! {
+        <section class="dock dock-bottom" data-testid="dock-bottom"
+            data-open=move || open().to_string()
+            data-sheet=move || docks.sheet.get().to_string()
+            data-tool=move || docks.tool.get().hook()
+            aria-label=move || t().tools_dock>
+            <div class="dock-tabs" role="tablist" aria-label=move || t().tools_dock>
+                {tabs}
+                <button type="button" class="dock-collapse" data-testid="dock-bottom-toggle"
+                    aria-expanded=move || open().to_string()
+                    title=move || if open() { t().dock_collapse } else { t().dock_expand }
+                    aria-label=move || if open() { t().dock_collapse } else { t().dock_expand }
+                    on:click=move |_| {
+                        let now = !docks.sizes.with_untracked(|s| s.bottom_open);
+                        docks.sheet.set(now);
+                        docks.resize(|s| s.bottom_open = now);
+                    }>
+                    {move || if open() { "▾" } else { "▴" }}
+                </button>
+            </div>
+            <div class="dock-body">{panels}</div>
+        </section>
+    }
+}
+
+/// A tool's name on its tab.
+pub fn tool_name(tool: Tool, t: &'static crate::i18n::Texts) -> &'static str {
+    match tool {
+        Tool::Watch => t.watch,
+        Tool::Chart => t.chart,
+        Tool::Tests => t.tests,
+        Tool::Why => t.why_tab,
+        Tool::Listing => t.listing_problems,
+        Tool::Variables => t.variables,
+        Tool::Program => t.program_tab,
+        Tool::Cpu => t.cpu_tab,
+        Tool::Panel => t.panel_tab,
+    }
+}
+
+/// The panel dock: the machine's board, lamps and switches. On a phone it
+/// is the sheet's Panel tab.
+#[component]
+pub fn RightDock(children: Children) -> impl IntoView {
+    let ctx = Ctx::get();
+    let docks = ctx.docks;
+    let t = move || ctx.lang.get().texts();
+    let open = move || docks.sizes.with(|s| s.right_open);
+    view! {
+        <aside class="dock dock-right machine-side" id="panel" tabindex="-1" data-testid="dock-right"
+            data-open=move || open().to_string()
+            data-sheet=move || (docks.sheet.get() && docks.tool.get() == Tool::Panel).to_string()
+            aria-label=move || t().panel_dock>
+            <button type="button" class="dock-collapse dock-right-toggle" data-testid="dock-right-toggle"
+                aria-expanded=move || open().to_string()
+                title=move || if open() { t().dock_collapse } else { t().dock_expand }
+                aria-label=move || if open() { t().dock_collapse } else { t().dock_expand }
+                on:click=move |_| docks.resize(|s| s.right_open = !s.right_open)>
+                {move || if open() { "▸" } else { "◂" }}
+            </button>
+            <div class="dock-right-body">{children()}</div>
+        </aside>
+    }
+}
+
+/// Which way a splitter moves.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Split {
+    /// Between the centre and the panel dock: moves sideways.
+    Right,
+    /// Between the ladder and the tools dock: moves up and down.
+    Bottom,
+}
+
+/// A splitter: drag it, or focus it and use the arrow keys (16 px a
+/// press, 64 with Shift). The size is remembered when the drag ends.
+#[component]
+pub fn Splitter(split: Split) -> impl IntoView {
+    let ctx = Ctx::get();
+    let docks: Docks = ctx.docks;
+    let t = move || ctx.lang.get().texts();
+    let dragging = StoredValue::new(None::<(f64, f64)>);
+    let value = move || {
+        docks.sizes.with(|s| match split {
+            Split::Right => s.right_px,
+            Split::Bottom => s.bottom_px,
+        })
+    };
+    // A drag toward the dock makes it smaller: the dock is right of and
+    // below its splitter.
+    let set = move |px: f64| {
+        docks.sizes.update(|s| match split {
+            Split::Right => s.right_px = px.max(super::sizes::MIN_RIGHT_PX),
+            Split::Bottom => s.bottom_px = px.max(super::sizes::MIN_BOTTOM_PX),
+        })
+    };
+    let along = move |e: &web_sys::PointerEvent| match split {
+        Split::Right => f64::from(e.client_x()),
+        Split::Bottom => f64::from(e.client_y()),
+    };
+    view! {
+        <div class="splitter" class:splitter-right=split == Split::Right class:splitter-bottom=split == Split::Bottom
+            role="separator" tabindex="0"
+            data-testid=match split { Split::Right => "splitter-right", Split::Bottom => "splitter-bottom" }
+            aria-orientation=match split { Split::Right => "vertical", Split::Bottom => "horizontal" }
+            aria-label=move || t().resize_dock
+            aria-valuenow=move || format!("{:.0}", value())
+            on:pointerdown=move |e: web_sys::PointerEvent| {
+                if let Some(target) = e.target() {
+                    use leptos::wasm_bindgen::JsCast;
+                    if let Ok(el) = target.dyn_into::<web_sys::Element>() {
+                        let _ = el.set_pointer_capture(e.pointer_id());
+                    }
+                }
+                dragging.set_value(Some((along(&e), value())));
+            }
+            on:pointermove=move |e: web_sys::PointerEvent| {
+                if let Some((start, size)) = dragging.get_value() {
+                    set(size - (along(&e) - start));
+                }
+            }
+            on:pointerup=move |_| {
+                if dragging.get_value().is_some() {
+                    dragging.set_value(None);
+                    docks.save();
+                }
+            }
+            on:keydown=move |e: web_sys::KeyboardEvent| {
+                let step = if e.shift_key() { 64.0 } else { 16.0 };
+                let delta = match (split, e.key().as_str()) {
+                    (Split::Right, "ArrowLeft") | (Split::Bottom, "ArrowUp") => step,
+                    (Split::Right, "ArrowRight") | (Split::Bottom, "ArrowDown") => -step,
+                    _ => return,
+                };
+                e.prevent_default();
+                set(value() + delta);
+                docks.save();
+            }
+        ></div>
+    }
+}
