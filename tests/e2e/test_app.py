@@ -15,8 +15,40 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 STORAGE_KEY = "hashigo.minasec-u.v1"
 
 
-def el(driver, testid):
-    return driver.find_element(By.CSS_SELECTOR, f'[data-testid="{testid}"]')
+# The workbench keeps controls in menus and tools in dock tabs (issue #45):
+# a control that is there but hidden is revealed as a user would reach it,
+# by opening its menu (on a phone, the menus' button first) or choosing its
+# dock tab (on a phone, the sheet's Panel tab for the machine's panel).
+REVEAL = """
+const e = arguments[0];
+if (e.getClientRects().length) return;
+const click = (id) => { const b = document.querySelector('[data-testid="' + id + '"]'); if (b) b.click(); };
+const menu = e.closest('[data-menu-panel]');
+if (menu) {
+  const menus = document.querySelector('[data-testid="menus"]');
+  if (menus && menus.getClientRects().length && menus.getAttribute('aria-expanded') !== 'true') menus.click();
+  const b = document.querySelector('[data-testid="menu-' + menu.dataset.menuPanel + '"]');
+  if (b && b.getAttribute('aria-expanded') !== 'true') b.click();
+  return;
+}
+const panel = e.closest('[data-dock-panel]');
+if (panel) {
+  const tab = document.querySelector('[data-testid="dock-tab-' + panel.dataset.dockPanel + '"]');
+  if (tab && tab.getAttribute('aria-selected') !== 'true') tab.click();
+  return;
+}
+if (e.closest('.dock-right')) {
+  const tab = document.querySelector('[data-testid="dock-tab-panel"]');
+  if (tab && tab.getClientRects().length && tab.getAttribute('aria-selected') !== 'true') tab.click();
+}
+"""
+
+
+def el(driver, testid, reveal=True):
+    found = driver.find_element(By.CSS_SELECTOR, f'[data-testid="{testid}"]')
+    if reveal:
+        driver.execute_script(REVEAL, found)
+    return found
 
 
 def wait(driver, condition, timeout=20, message=""):

@@ -367,7 +367,7 @@ impl LadderCtx {
                 problems: RwSignal::new(Vec::new()),
                 comments: RwSignal::new(BTreeMap::new()),
                 variables: RwSignal::new(Vec::new()),
-                col_widths: RwSignal::new(vec![super::model::MIN_COL_REM; COLUMNS]),
+                col_widths: RwSignal::new(vec![super::model::WIRE_COL_REM; COLUMNS]),
                 io: RwSignal::new(Vec::new()),
             },
             panes: Panes {
