@@ -1,1 +1,128 @@
-//! Issue #43, round 3: ldmicro.
+//! Issue #43, round 3: LDmicro files. Each test failed on the main branch
+//! before the fix it names.
+
+use std::process::Command;
+
+use engine::softplc::ld_printf::{Printf, PrintfError};
+
+use crate::common::Temp;
+
+/// Every format of the grid below, each value given to C as the type its
+/// length modifier names, printed by this machine's C library: one line
+/// `format TAB value TAB output` each.
+const C_GRID: &str = r##"
+#include <stdio.h>
+#include <string.h>
+int main(void) {
+    static const int values[] = {0, 1, 7, 8, -1, -7, 255, 256, 300, -300, 32767,
+        32768, 65535, 65536, 70000, -70000, 2147483647, -2147483647 - 1};
+    static const char *flags[] = {"", "-", "+", " ", "0", "#", "#0", "-#", "+0",
+        " 0", "#-", "+#", "0#+ -"};
+    static const char *widths[] = {"", "1", "6"};
+    static const char *precisions[] = {"", ".", ".0", ".1", ".4"};
+    static const char *lengths[] = {"", "h", "hh", "l", "ll"};
+    static const char convs[] = "diuxXoc";
+    char f[64], out[256];
+    for (unsigned a = 0; a < sizeof flags / sizeof *flags; a++)
+    for (unsigned b = 0; b < sizeof widths / sizeof *widths; b++)
+    for (unsigned c = 0; c < sizeof precisions / sizeof *precisions; c++)
+    for (unsigned d = 0; d < sizeof lengths / sizeof *lengths; d++)
+    for (unsigned e = 0; convs[e]; e++) {
+        if (convs[e] == 'c' && (d != 0 || c != 0)) continue;
+        snprintf(f, sizeof f, "<%%%s%s%s%s%c>", flags[a], widths[b], precisions[c],
+                 lengths[d], convs[e]);
+        for (unsigned v = 0; v < sizeof values / sizeof *values; v++) {
+            int x = values[v];
+            if (convs[e] == 'c' && x == 0) continue;
+            if (!strcmp(lengths[d], "l")) snprintf(out, sizeof out, f, (long)x);
+            else if (!strcmp(lengths[d], "ll")) snprintf(out, sizeof out, f, (long long)x);
+            else snprintf(out, sizeof out, f, x);
+            printf("%s\t%d\t%s\n", f, x, out);
+        }
+    }
+    return 0;
+}
+"##;
+
+/// Issue 43.6: STRING's text is C's printf, so every form docs/ldmicro.md
+/// accepts prints what C prints: `#` with `%o` makes the first digit a 0
+/// after the precision (`%#.5o` of 8 is `00010`, `%#.0o` of 0 is `0`);
+/// `h` and `hh` convert the value to a short and a char first (`%hd` of
+/// 70000 is 4464, `%hhu` of -1 is 255); `l` and `ll` print it as a long
+/// and long long (`%lu` of -1). Checked against this machine's C library
+/// where a C compiler is installed.
+#[test]
+fn string_printf_prints_what_c_prints_for_every_accepted_form() {
+    let temp = Temp::new("r3-printf");
+    let source = temp.file("grid.c", C_GRID);
+    let binary = source.replace("grid.c", "grid");
+    let built = Command::new("cc")
+        .args(["-w", "-O0", "-o", &binary, &source])
+        .status();
+    if !matches!(built, Ok(s) if s.success()) {
+        eprintln!("no C compiler: the printf grid is not compared");
+        return;
+    }
+    let run = Command::new(&binary).output().expect("the grid runs");
+    // A STRING holds one-byte characters, shown as Latin-1: C's bytes
+    // are read so (`%c` of 255 is `ÿ`).
+    let grid: String = run.stdout.iter().map(|&b| char::from(b)).collect();
+    let mut wrong = Vec::new();
+    let mut compared = 0;
+    for line in grid.lines() {
+        let mut parts = line.splitn(3, '\t');
+        let (Some(format), Some(value), Some(c)) = (parts.next(), parts.next(), parts.next())
+        else {
+            continue;
+        };
+        let value: i64 = value.parse().expect("a value");
+        let ours = Printf::parse(format)
+            .map(|p| p.print(value))
+            .unwrap_or_else(|e| format!("refused: {e}"));
+        compared += 1;
+        if ours != c {
+            wrong.push(format!("{format} of {value}: C {c:?}, Hashigo {ours:?}"));
+        }
+    }
+    assert!(compared > 50_000, "the grid ran ({compared} lines)");
+    assert!(
+        wrong.is_empty(),
+        "{} of {compared} differ, e.g.\n{}",
+        wrong.len(),
+        wrong[..wrong.len().min(20)].join("\n")
+    );
+}
+
+/// Issue 43.6: the same forms without a C compiler, as glibc prints them.
+#[test]
+fn octal_alternate_form_and_short_lengths_print_as_c() {
+    let print = |f: &str, v: i64| Printf::parse(f).expect(f).print(v);
+    assert_eq!(print("%#.5o", 8), "00010");
+    assert_eq!(print("%#.0o", 0), "0");
+    assert_eq!(print("%#.3o", 1), "001");
+    assert_eq!(print("%#-6o|", 8), "010   |");
+    assert_eq!(print("%hd", 70000), "4464");
+    assert_eq!(print("%hhd", 300), "44");
+    assert_eq!(print("%hhu", -1), "255");
+    assert_eq!(print("%hx", -1), "ffff");
+    assert_eq!(print("%#hho", 256), "0");
+    assert_eq!(print("%.0hd", 65536), "");
+    assert_eq!(print("%lu", -1), "18446744073709551615");
+    assert_eq!(print("%llx", -2), "fffffffffffffffe");
+}
+
+/// Issue 43.6: a length C has no meaning for is refused, not printed as
+/// a guess: `%hc`, `%lc` (a wide character), `%hhhd`, `%lld` is fine.
+#[test]
+fn lengths_c_does_not_define_are_refused() {
+    for f in [
+        "%hc", "%hhc", "%lc", "%llc", "%hhhd", "%lllx", "%hld", "%lhd",
+    ] {
+        assert!(
+            matches!(Printf::parse(f), Err(PrintfError::Length(_))),
+            "{f}: {:?}",
+            Printf::parse(f)
+        );
+    }
+    assert!(Printf::parse("%lld").is_ok());
+}
