@@ -66,6 +66,9 @@ pub enum LdError {
     },
     /// A rung whose groups cannot be drawn as a ladder (why).
     Drawing(String),
+    /// A `CYCLE=` the soft PLC cannot scan at (what follows `CYCLE=`,
+    /// why).
+    Cycle { text: String, why: &'static str },
 }
 
 impl fmt::Display for LdError {
@@ -140,6 +143,9 @@ impl fmt::Display for LdError {
                 "timer {name}: {delay} µs with adjust {adjust} is no count of {cycle} µs cycles above zero"
             ),
             LdError::Drawing(why) => write!(f, "this rung cannot be drawn: {why}"),
+            LdError::Cycle { text, why } => {
+                write!(f, "CYCLE= holds {}: {why}", crate::shown(text))
+            }
         }
     }
 }

@@ -126,3 +126,64 @@ fn lengths_c_does_not_define_are_refused() {
     }
     assert!(Printf::parse("%lld").is_ok());
 }
+
+/// An LDmicro file of `cycle` (its `CYCLE=` line, line 2) and a timer at
+/// line 6.
+fn cycle_file(cycle: &str) -> String {
+    format!(
+        "LDmicro0.2\nCYCLE={cycle}\nPROGRAM\nRUNG\n    CONTACTS Xa 0\n    TON Ton 100000\n    COIL Yb 0 0 0\nEND\n"
+    )
+}
+
+/// Issue 43.13: a `CYCLE=` that is not a number, is 0, negative or huge
+/// was read as 0 (`scan=0ms`, the timer blamed): it is refused at its
+/// own line, saying what the line holds; the timer is not blamed.
+#[test]
+fn a_cycle_that_is_no_scan_period_is_refused_at_its_line() {
+    for (cycle, says) in [
+        ("abc", "CYCLE= holds \"abc\": not a number"),
+        ("-5000", "CYCLE= holds \"-5000\": no scan period"),
+        ("0", "CYCLE= holds \"0\": LDmicro's untimed cycle"),
+        (
+            "99999999999999999999999",
+            "CYCLE= holds \"99999999999999999999999\": no scan period",
+        ),
+        ("10000001", "CYCLE= holds \"10000001\": no scan period"),
+    ] {
+        let errors = engine::ldmicro::parse(&cycle_file(cycle)).expect_err(cycle);
+        assert_eq!(errors.len(), 1, "{cycle}: {errors:?}");
+        assert_eq!(errors[0].line, 2, "{cycle}");
+        let text = errors[0].error.to_string();
+        assert!(text.starts_with(says), "{cycle}: {text}");
+    }
+    // LDmicro's own forms still read: the number, then its tail.
+    for (cycle, us) in [
+        ("10000", 10_000),
+        (" 2500", 2_500),
+        ("+1000", 1_000),
+        ("10000000", 10_000_000),
+        (
+            "5000 us at Timer1, YPlcCycleDuty:0, ConfigurationWord(s):0x0",
+            5_000,
+        ),
+    ] {
+        let file = engine::ldmicro::parse(&cycle_file(cycle)).expect(cycle);
+        assert_eq!(file.cycle_us, us, "{cycle}");
+    }
+}
+
+/// Issue 43.13 through the CLI: `error: FILE:2: CYCLE= holds …`, and the
+/// timer at line 6 is not blamed.
+#[test]
+fn hashigo_names_the_cycle_line_not_the_timer() {
+    let temp = Temp::new("r3-cycle");
+    let path = temp.file("cycle.ld", &cycle_file("abc"));
+    let out = crate::common::hashigo(&["run", "--program", &path, "--until", "50ms"], "");
+    let err = crate::common::text(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        err.contains("cycle.ld:2: CYCLE= holds \"abc\": not a number"),
+        "{err}"
+    );
+    assert!(!err.contains(":6:"), "{err}");
+}
