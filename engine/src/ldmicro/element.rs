@@ -418,47 +418,7 @@ pub const HARDWARE: [&str; 25] = [
     "TSFR",
 ];
 
-/// Whether an operand is a number rather than a variable's name, as
-/// LDmicro decides it: a digit first (after a sign), or a character in
-/// single quotes (`'A'`).
-pub fn is_number(operand: &str) -> bool {
-    let s = operand.trim();
-    let unsigned = s.trim_start_matches(['-', '+']).trim_start();
-    unsigned.starts_with(|c: char| c.is_ascii_digit())
-        || (s.len() > 2 && s.starts_with('\'') && s.ends_with('\''))
-}
-
-/// An LDmicro number's value: decimal, `0x` hex, `0b` binary, `0o` or a
-/// leading `0` octal, a sign, or a character in quotes (`'A'`, `'\n'`);
-/// `None` for anything else.
-pub fn number(text: &str) -> Option<i64> {
-    let s = text.trim();
-    if let Some(quoted) = s.strip_prefix('\'').and_then(|q| q.strip_suffix('\'')) {
-        let unescaped = unescape(quoted);
-        let mut chars = unescaped.chars();
-        return match (chars.next(), chars.next()) {
-            (Some(c), None) => Some(i64::from(u32::from(c))),
-            _ => None,
-        };
-    }
-    let (negative, digits) = match s.strip_prefix('-') {
-        Some(rest) => (true, rest.trim_start()),
-        None => (false, s.strip_prefix('+').unwrap_or(s).trim_start()),
-    };
-    let lower = digits.to_ascii_lowercase();
-    let value = if let Some(hex) = lower.strip_prefix("0x") {
-        i64::from_str_radix(hex, 16).ok()?
-    } else if let Some(bin) = lower.strip_prefix("0b") {
-        i64::from_str_radix(bin, 2).ok()?
-    } else if let Some(oct) = lower.strip_prefix("0o") {
-        i64::from_str_radix(oct, 8).ok()?
-    } else if lower.len() > 1 && lower.starts_with('0') {
-        i64::from_str_radix(&lower[1..], 8).ok()?
-    } else {
-        lower.parse().ok()?
-    };
-    Some(if negative { -value } else { value })
-}
+pub use super::numbers::{is_number, number};
 
 /// LDmicro's escapes in a saved string (`\n`, `\r`, `\t`, `\\`, `\x20`
 /// for a space, `\'`, `\"`, `\?`, `\a`, `\b`, `\e`, `\f`, `\v`); an

@@ -16,6 +16,7 @@ pub mod file;
 mod ladder;
 mod leaf;
 mod lower;
+mod numbers;
 pub mod parse;
 mod parts;
 mod texts;
