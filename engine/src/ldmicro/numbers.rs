@@ -2,7 +2,7 @@
 //! `IsNumber` decides whether an operand is a number or a name, its
 //! `hobatoi` gives the value (docs/ldmicro.md, "Reading a file").
 
-use super::element::unescape;
+use super::escape::unescape;
 
 /// Whether an operand is a number rather than a variable's name, as
 /// LDmicro's `IsNumber` decides it: a digit first, or one sign then a

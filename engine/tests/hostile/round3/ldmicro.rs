@@ -187,3 +187,100 @@ fn hashigo_names_the_cycle_line_not_the_timer() {
     );
     assert!(!err.contains(":6:"), "{err}");
 }
+
+/// A file whose names are used as two things: `msg` a STRING's text
+/// (line 5), compared as a number (line 9) and read as a bit (line 13);
+/// `Xa` a bit (line 4) added to as a number (line 14).
+const CLASHES: &str = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  STRING msg n \"n=%d\"\nEND\n\
+RUNG\n  CONTACTS Xa 0\n  EQU msg 3\n  COIL Yb 0 0 0\nEND\n\
+RUNG\n  CONTACTS msg 0\n  ADD Xa Xa 1\nEND\n";
+
+/// Issue 43.12: errors found after lowering said "rung R, row r, column
+/// c" with internal names (`LD_STRING's D is a STRING`), and only the
+/// first: every one is now at its own line in LDmicro's terms.
+#[test]
+fn names_used_as_two_things_are_said_at_each_line_in_ldmicros_terms() {
+    let file = engine::ldmicro::parse(CLASHES).expect("reads");
+    let errors = engine::ldmicro::to_ladder(&file).expect_err("clashes");
+    let said: Vec<(usize, String)> = errors
+        .iter()
+        .map(|e| (e.line, e.error.to_string()))
+        .collect();
+    assert_eq!(
+        said,
+        vec![
+            (
+                9,
+                "\"msg\" is a number for EQU here, but a STRING's text for STRING at line 5: one name cannot be both".to_string()
+            ),
+            (
+                13,
+                "\"msg\" is a bit for CONTACTS here, but a STRING's text for STRING at line 5: one name cannot be both".to_string()
+            ),
+            (
+                14,
+                "\"Xa\" is a number for ADD here, but a bit for CONTACTS at line 4: one name cannot be both".to_string()
+            ),
+        ]
+    );
+    let temp = Temp::new("r3-clash");
+    let path = temp.file("clash.ld", CLASHES);
+    let out = crate::common::hashigo(&["compile", "--program", &path], "");
+    let err = crate::common::text(&out.stderr);
+    assert!(!out.status.success());
+    for line in [9, 13, 14] {
+        assert!(err.contains(&format!("error: {path}:{line}: ")), "{err}");
+    }
+    assert!(!err.contains("rung") && !err.contains("LD_"), "{err}");
+}
+
+/// Issue 43.12: a variable named as the lowering names a timer's
+/// instance (`T1_ld` beside `TON T1`) was "declared twice (first on line
+/// 5)" — a line of the compiled IL: the instance now takes another name
+/// and the file runs.
+#[test]
+fn a_name_like_an_instance_no_longer_clashes_with_it() {
+    let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  TON T1 100000\nEND\n\
+        RUNG\n  MOVE T1_ld 4\nEND\n";
+    let file = engine::ldmicro::parse(text).expect("reads");
+    let ladder = engine::ldmicro::to_ladder(&file).expect("a ladder");
+    let il = engine::ladder::compile::compile(
+        &ladder,
+        engine::MachineId::SoftPlc,
+        engine::ladder::compile::Options::default(),
+    );
+    assert!(il.is_ok(), "{il:?}");
+}
+
+/// Issue 43.12: what only the soft PLC finds (a file naming a BOOL the
+/// lowering makes, `_ld0`) is said at the LDmicro line of the rung it
+/// came from, `error: FILE:LINE:`, never at a rung and cell.
+#[test]
+fn what_the_soft_plc_refuses_is_said_at_the_ldmicro_line() {
+    let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  PARALLEL\n    COIL Yb 0 0 0\n    SERIES\n      CONTACTS Xc 0\n      COIL Yd 0 0 0\n    END\n  END\n  ADD x x 1\nEND\n\
+        RUNG\n  CONTACTS Xa 0\n  MOVE _ld0 7\nEND\n";
+    let temp = Temp::new("r3-held");
+    let path = temp.file("held.ld", text);
+    let out = crate::common::hashigo(&["compile", "--program", &path], "");
+    let err = crate::common::text(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        err.starts_with(&format!("error: {path}:16: the soft PLC cannot run this: ")),
+        "{err}"
+    );
+    assert!(!err.contains("rung"), "{err}");
+}
+
+/// Issue 43.12: a number LDmicro refuses in an operand is said as its
+/// element's, not as an internal "operand".
+#[test]
+fn a_bad_operand_is_said_as_its_elements() {
+    let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  MOVE x 'AB'\nEND\n";
+    let file = engine::ldmicro::parse(text).expect("reads");
+    let errors = engine::ldmicro::to_ladder(&file).expect_err("refused");
+    assert_eq!(errors[0].line, 5);
+    assert_eq!(
+        errors[0].error.to_string(),
+        "MOVE: \"'AB'\" is not a number"
+    );
+}
