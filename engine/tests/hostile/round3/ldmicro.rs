@@ -284,3 +284,102 @@ fn a_bad_operand_is_said_as_its_elements() {
         "MOVE: \"'AB'\" is not a number"
     );
 }
+
+/// A soft PLC project of an LDmicro file that counts scans in `n` and
+/// prints it into the STRING `msg` (`n=%04d;`), with one case of
+/// `expect`.
+fn string_project(expect: &[&str]) -> String {
+    let text = "LDmicro0.2\nCYCLE=10000\nPROGRAM\nRUNG\n  ADD n n 1\nEND\n\
+        RUNG\n  STRING msg n 7 110 61 37 48 52 100 59\nEND\n";
+    let file = engine::ldmicro::parse(text).expect("reads");
+    let ladder = engine::ldmicro::to_ladder(&file).expect("a ladder");
+    let mut project = engine::ladder::Project::new(engine::MachineId::SoftPlc, ladder);
+    project.tests.push(engine::cases::TestCase {
+        name: "count".into(),
+        events: String::new(),
+        expect: expect.iter().map(|e| e.to_string()).collect(),
+    });
+    project.to_json()
+}
+
+/// Issue 43.15: a STRING is checked in a ladder test: `msg = 'n=0004;'
+/// at 40ms`, `<>`, a text with spaces and `$` escapes; a wrong text fails
+/// saying what the STRING held, quoted.
+#[test]
+fn a_ladder_test_checks_a_string_by_its_text() {
+    let temp = Temp::new("r3-text-test");
+    let path = temp.file(
+        "count.json",
+        &string_project(&[
+            "msg = 'n=0004;' at 40ms",
+            "msg <> 'n=0003;' at 40ms",
+            "msg != '' at 40ms",
+            "n = 4 at 40ms",
+        ]),
+    );
+    let out = crate::common::hashigo(&["test", "--program", &path], "");
+    let said = crate::common::text(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{said}{}",
+        crate::common::text(&out.stderr)
+    );
+    assert!(said.contains("pass count"), "{said}");
+
+    let path = temp.file("wrong.json", &string_project(&["msg = 'n=0003;' at 40ms"]));
+    let out = crate::common::hashigo(&["test", "--program", &path], "");
+    let said = crate::common::text(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{said}");
+    assert!(
+        said.contains("fail count: msg = 'n=0003;' at 40ms: msg was 'n=0004;' at 40ms"),
+        "{said}"
+    );
+}
+
+/// Issue 43.15: a text with spaces and escapes is one value; a text met
+/// where a number is wanted (or the other way) fails saying so; a text
+/// compared by order, or without its closing quote, is refused.
+#[test]
+fn text_expectations_read_as_iec_texts_and_refuse_what_they_cannot_mean() {
+    use engine::cases::{ExpectError, Expectation, Want};
+    let e = Expectation::parse("msg = 'a b$'c$$' at 1s").expect("reads");
+    assert_eq!(
+        e,
+        Expectation::At {
+            device: "msg".into(),
+            op: engine::cases::Compare::Eq,
+            value: Want::Text("a b'c$".into()),
+            time: engine::SimTime::from_secs(1),
+        }
+    );
+    assert_eq!(e.to_string(), "msg = 'a b$'c$$' at 1000ms");
+    assert!(matches!(
+        Expectation::parse("msg stays 'x y' from 0s to 1s"),
+        Ok(Expectation::Stays { value: Want::Text(t), .. }) if t == "x y"
+    ));
+    assert_eq!(
+        Expectation::parse("msg < 'a' at 1s"),
+        Err(ExpectError::TextOrder("<"))
+    );
+    assert!(matches!(
+        Expectation::parse("msg = 'abc at 1s"),
+        Err(ExpectError::Text(_))
+    ));
+    assert!(matches!(
+        Expectation::parse("msg = 'a$' at 1s"),
+        Err(ExpectError::Text(_))
+    ));
+
+    // Kinds that do not meet: said, not a bare "was".
+    let temp = Temp::new("r3-text-kind");
+    let path = temp.file(
+        "kind.json",
+        &string_project(&["msg = 4 at 40ms", "n = 'n' at 40ms"]),
+    );
+    let out = crate::common::hashigo(&["test", "--program", &path], "");
+    let said = crate::common::text(&out.stdout);
+    assert!(
+        said.contains("msg is a text ('n=0004;'): compare it with a text in quotes"),
+        "{said}"
+    );
+}
