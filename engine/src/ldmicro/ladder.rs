@@ -52,9 +52,19 @@ pub fn locate(file: &LdFile, errors: Vec<LadderError>) -> Vec<Located<LdError>> 
 /// from.
 fn made(file: &LdFile) -> Result<(Ladder, Vec<usize>), Vec<Located<LdError>>> {
     let (file, renamed) = &iec_names(file);
-    let clashes = conflicts(file, renamed);
-    if !clashes.is_empty() {
-        return Err(clashes);
+    // Names used as two things and every element's own error: every
+    // error of the file at once, in line order, before any rung is
+    // drawn (so that no refused element causes another error there).
+    let mut errors = conflicts(file, renamed);
+    let mut probe = Making::new(file);
+    for (e, line) in file.elements() {
+        if let Err(err) = probe.element(e) {
+            errors.push(Located::new(line, err));
+        }
+    }
+    if !errors.is_empty() {
+        errors.sort_by_key(|e| e.line);
+        return Err(errors);
     }
     let mut making = Making::new(file);
     let mut element = |e: &Ld| making.element(e);

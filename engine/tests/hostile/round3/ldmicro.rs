@@ -383,3 +383,20 @@ fn text_expectations_read_as_iec_texts_and_refuse_what_they_cannot_mean() {
         "{said}"
     );
 }
+
+/// Issue 43.12: every error at once — two refused elements in one rung,
+/// one in another, and a name used as two things — each at its line, in
+/// line order, and no error caused by another.
+#[test]
+fn every_error_of_a_file_is_said_at_once() {
+    let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  PARALLEL\n    TIME2DELAY d 100\n    ADD x x 1\n  END\n  MOVE y 'AB'\nEND\n\
+        RUNG\n  CONTACTS x 0\n  RANDOM r\nEND\n";
+    let file = engine::ldmicro::parse(text).expect("reads");
+    let errors = engine::ldmicro::to_ladder(&file).expect_err("refused");
+    let lines: Vec<usize> = errors.iter().map(|e| e.line).collect();
+    assert_eq!(lines, vec![6, 9, 12, 13], "{errors:?}");
+    assert!(errors[0].error.to_string().starts_with("TIME2DELAY"));
+    assert!(errors[1].error.to_string().starts_with("MOVE"));
+    assert!(errors[2].error.to_string().starts_with("\"x\" is a bit"));
+    assert!(errors[3].error.to_string().starts_with("RANDOM"));
+}
