@@ -28,7 +28,7 @@ int main(void) {
     for (unsigned c = 0; c < sizeof precisions / sizeof *precisions; c++)
     for (unsigned d = 0; d < sizeof lengths / sizeof *lengths; d++)
     for (unsigned e = 0; convs[e]; e++) {
-        if (convs[e] == 'c' && (d != 0 || c != 0)) continue;
+        if (convs[e] == 'c' && d != 0) continue;
         snprintf(f, sizeof f, "<%%%s%s%s%s%c>", flags[a], widths[b], precisions[c],
                  lengths[d], convs[e]);
         for (unsigned v = 0; v < sizeof values / sizeof *values; v++) {
