@@ -54,6 +54,15 @@ fn persist_in_a_branch_beside_boxes_passes_power() {
         "power passes the PERSIST branch"
     );
     assert_eq!(get(plc.as_ref(), "saved"), 3, "the ADD ran each scan");
+    // Written back, it reads again as the same ladder, `saved` kept.
+    let ladder = to_ladder(&parse(&text).expect("read")).expect("a ladder");
+    let out = engine::ldmicro::export(&ladder, 10_000).expect("written");
+    let again = to_ladder(&parse(&out).expect("read again")).expect("a ladder again");
+    assert_eq!(again.rungs, ladder.rungs, "{out}");
+    assert!(again
+        .variables
+        .iter()
+        .any(|v| v.name == "saved" && v.retain));
     // And in series between a contact and a coil.
     let text = program("RUNG\n    CONTACTS Xa 0\n    PERSIST saved\n    COIL Yq 0 0 0\nEND\n");
     let mut plc = load(&text);
