@@ -102,6 +102,16 @@ pub enum Want {
 }
 
 impl Want {
+    /// What an expectation writes for a device holding `value` (a
+    /// recorder's expectations): a text as a quoted literal, anything
+    /// else as its whole number. Printed, it reads back as the same.
+    pub fn of(value: &Value) -> Want {
+        match value {
+            Value::Text(t) => Want::Text(t.to_string()),
+            other => Want::Number(other.as_i64()),
+        }
+    }
+
     /// Why `value` is of another kind than this (a number met where a
     /// text is wanted, or a text where a number is), said for `device`.
     pub fn kind_of(&self, device: &str, value: &Value) -> Option<String> {
@@ -370,6 +380,24 @@ impl fmt::Display for Expectation {
                 ms(from),
                 ms(to)
             ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Expectation, Want};
+    use crate::plc::Value;
+
+    #[test]
+    fn a_value_written_as_an_expectation_reads_back_as_the_same() {
+        let text = Value::Text(std::sync::Arc::new("it's 5$ (*)\r\n".into()));
+        for value in [text, Value::Int(-3), Value::Bit(true)] {
+            let line = format!("d = {} at 1s", Want::of(&value));
+            let Ok(Expectation::At { value: want, .. }) = Expectation::parse(&line) else {
+                panic!("{line} does not read");
+            };
+            assert_eq!(want, Want::of(&value), "{line}");
         }
     }
 }
