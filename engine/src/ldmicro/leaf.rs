@@ -355,7 +355,7 @@ fn table(l: &Line) -> Result<Element, LdError> {
     }
     let values = rest[..entries]
         .iter()
-        .map(|v| number(v).ok_or_else(|| bad(v)))
+        .map(|v| number(v).filter(|_| is_number(v)).ok_or_else(|| bad(v)))
         .collect::<Result<Vec<i64>, LdError>>()?;
     let name = rest
         .get(entries)

@@ -117,3 +117,24 @@ fn numbers_read_as_ldmicro_reads_them() {
     let file = parse(&text).expect("read");
     assert!(to_ladder(&file).is_err());
 }
+
+/// A table's entries are numbers as `hobatoi` reads them (`0x10`, `'A'`,
+/// `7abc` is 7); an entry that is no number at all (`abc`, which
+/// LDmicro's `hobatoi` would silently read as 0) is refused at its line.
+#[test]
+fn table_entries_read_as_hobatoi_and_a_word_is_refused() {
+    let file = parse(&program(
+        "RUNG\n    LOOK_UP_TABLE d i 3 0 0x10 'A' 7abc\nEND\n",
+    ))
+    .expect("read");
+    let values = file.elements().find_map(|(e, _)| match e {
+        engine::ldmicro::Element::LookUpTable { values, .. } => Some(values.clone()),
+        _ => None,
+    });
+    assert_eq!(values, Some(vec![16, 65, 7]));
+    let e = parse(&program("RUNG\n    LOOK_UP_TABLE d i 2 0 5 abc\nEND\n")).expect_err("a word");
+    assert_eq!(
+        e[0].error.to_string(),
+        "LOOK_UP_TABLE: \"abc\" is not a number"
+    );
+}
