@@ -1,13 +1,17 @@
 //! Expectations, one a line (docs/tests.md):
 //!
-//! - `DEV OP VALUE at TIME` with OP one of `= != >= <= > <`
-//!   (`Y00 = 1 at 1s`, `C0.v >= 5 at 20s`);
+//! - `DEV OP VALUE at TIME` with OP one of `= != <> >= <= > <`
+//!   (`Y00 = 1 at 1s`, `C0.v >= 5 at 20s`), VALUE a whole number or a
+//!   text in single quotes with IEC's `$` escapes, compared with `=` and
+//!   `<>` (`msg = 'n=0002;' at 40ms`);
 //! - `DEV stays VALUE from T1 to T2`;
 //! - `DEV rises within T1..T2`, `DEV falls within T1..T2`.
 
 use std::fmt;
 
 use crate::error::shown;
+use crate::plc::Value;
+use crate::softplc::literal::{parse_text, text_literal};
 use crate::time::{SimTime, TimeError};
 
 /// A comparison.
@@ -28,8 +32,9 @@ pub enum Compare {
 }
 
 impl Compare {
-    const ALL: [(&'static str, Compare); 6] = [
+    const ALL: [(&'static str, Compare); 7] = [
         ("!=", Compare::Ne),
+        ("<>", Compare::Ne),
         (">=", Compare::Ge),
         ("<=", Compare::Le),
         ("=", Compare::Eq),
@@ -66,11 +71,70 @@ impl Compare {
         }
     }
 
+    /// Whether a device's `value` OP `want`: a number as
+    /// [`Compare::holds_value`], a text equal or not (a text is never
+    /// equal to a number; [`Want::kind_of`] says which was met).
+    pub fn holds_want(self, value: &Value, want: &Want) -> bool {
+        match want {
+            Want::Number(n) => self.holds_value(value, *n),
+            Want::Text(t) => {
+                let same = matches!(value, Value::Text(v) if v.as_str() == t);
+                same != (self == Compare::Ne)
+            }
+        }
+    }
+
     fn symbol(self) -> &'static str {
         Compare::ALL
             .iter()
             .find(|(_, c)| *c == self)
             .map_or("=", |(s, _)| s)
+    }
+}
+
+/// The value an expectation compares with.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Want {
+    /// A whole number (a bit is 0 or 1).
+    Number(i64),
+    /// A text (a STRING's value), written in single quotes.
+    Text(String),
+}
+
+impl Want {
+    /// What an expectation writes for a device holding `value` (a
+    /// recorder's expectations): a text as a quoted literal, anything
+    /// else as its whole number. Printed, it reads back as the same.
+    pub fn of(value: &Value) -> Want {
+        match value {
+            Value::Text(t) => Want::Text(t.to_string()),
+            other => Want::Number(other.as_i64()),
+        }
+    }
+
+    /// Why `value` is of another kind than this (a number met where a
+    /// text is wanted, or a text where a number is), said for `device`.
+    pub fn kind_of(&self, device: &str, value: &Value) -> Option<String> {
+        match (self, value) {
+            (Want::Text(_), Value::Text(_)) => None,
+            (Want::Text(_), v) => Some(format!(
+                "{device} is a number ({v}), not a text: compare it with a number"
+            )),
+            (Want::Number(_), Value::Text(_)) => Some(format!(
+                "{device} is a text ({}): compare it with a text in quotes ('…')",
+                value.watched()
+            )),
+            (Want::Number(_), _) => None,
+        }
+    }
+}
+
+impl fmt::Display for Want {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Want::Number(n) => write!(f, "{n}"),
+            Want::Text(t) => f.write_str(&text_literal(t)),
+        }
     }
 }
 
@@ -84,7 +148,7 @@ pub enum Expectation {
         /// How to compare.
         op: Compare,
         /// With what.
-        value: i64,
+        value: Want,
         /// When.
         time: SimTime,
     },
@@ -93,7 +157,7 @@ pub enum Expectation {
         /// The device.
         device: String,
         /// Its value throughout.
-        value: i64,
+        value: Want,
         /// From.
         from: SimTime,
         /// To (inclusive).
@@ -126,6 +190,12 @@ pub enum ExpectError {
     Time(TimeError),
     /// A window that ends before it starts.
     Window,
+    /// A text that does not read: no closing quote, a bad `$` escape
+    /// (the text, shortened).
+    Text(String),
+    /// A text compared by order (the comparison): texts take `=` and
+    /// `<>`.
+    TextOrder(&'static str),
 }
 
 impl fmt::Display for ExpectError {
@@ -144,6 +214,14 @@ impl fmt::Display for ExpectError {
             ),
             ExpectError::Time(e) => e.fmt(f),
             ExpectError::Window => f.write_str("the window ends before it starts"),
+            ExpectError::Text(t) => write!(
+                f,
+                "{t} is no text: write it in single quotes, $' for a quote, $$ for a dollar"
+            ),
+            ExpectError::TextOrder(op) => write!(
+                f,
+                "a text is compared with = or <>, not {op}"
+            ),
         }
     }
 }
@@ -153,7 +231,7 @@ impl std::error::Error for ExpectError {}
 impl Expectation {
     /// Reads one expectation line.
     pub fn parse(line: &str) -> Result<Expectation, ExpectError> {
-        let words: Vec<&str> = line.split_whitespace().collect();
+        let words = words(line)?;
         let form = || ExpectError::Form(shown(line.trim()));
         let time = |t: &str| SimTime::parse(t).map_err(ExpectError::Time);
         let value = |v: &str| {
@@ -163,6 +241,15 @@ impl Expectation {
                 }
                 _ => ExpectError::Value(shown(v)),
             })
+        };
+        let want = |v: &str| -> Result<Want, ExpectError> {
+            if v.starts_with('\'') {
+                parse_text(v)
+                    .map(Want::Text)
+                    .map_err(|_| ExpectError::Text(shown(v)))
+            } else {
+                value(v).map(Want::Number)
+            }
         };
         let window = |from: SimTime, to: SimTime| {
             if to < from {
@@ -176,7 +263,7 @@ impl Expectation {
                 let (from, to) = window(time(t1)?, time(t2)?)?;
                 Ok(Expectation::Stays {
                     device: device.to_string(),
-                    value: value(v)?,
+                    value: want(v)?,
                     from,
                     to,
                 })
@@ -197,10 +284,14 @@ impl Expectation {
                     .find(|(s, _)| s == op)
                     .map(|(_, c)| *c)
                     .ok_or_else(form)?;
+                let value = want(v)?;
+                if matches!(value, Want::Text(_)) && !matches!(op, Compare::Eq | Compare::Ne) {
+                    return Err(ExpectError::TextOrder(op.symbol()));
+                }
                 Ok(Expectation::At {
                     device: device.to_string(),
                     op,
-                    value: value(v)?,
+                    value,
                     time: time(t)?,
                 })
             }
@@ -227,6 +318,38 @@ impl Expectation {
             }
         }
     }
+}
+
+/// A line's words: a text in single quotes is one word, its spaces and
+/// escapes (`$'` a quote) kept; a text without its closing quote is an
+/// error.
+fn words(line: &str) -> Result<Vec<&str>, ExpectError> {
+    let mut out = Vec::new();
+    let mut rest = line.trim_start();
+    while !rest.is_empty() {
+        let end = if rest.starts_with('\'') {
+            let mut chars = rest.char_indices().skip(1);
+            let mut close = None;
+            while let Some((i, c)) = chars.next() {
+                match c {
+                    '$' => {
+                        chars.next();
+                    }
+                    '\'' => {
+                        close = Some(i + 1);
+                        break;
+                    }
+                    _ => {}
+                }
+            }
+            close.ok_or_else(|| ExpectError::Text(shown(rest)))?
+        } else {
+            rest.find(char::is_whitespace).unwrap_or(rest.len())
+        };
+        out.push(&rest[..end]);
+        rest = rest[end..].trim_start();
+    }
+    Ok(out)
 }
 
 impl fmt::Display for Expectation {
@@ -257,6 +380,24 @@ impl fmt::Display for Expectation {
                 ms(from),
                 ms(to)
             ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Expectation, Want};
+    use crate::plc::Value;
+
+    #[test]
+    fn a_value_written_as_an_expectation_reads_back_as_the_same() {
+        let text = Value::Text(std::sync::Arc::new("it's 5$ (*)\r\n".into()));
+        for value in [text, Value::Int(-3), Value::Bit(true)] {
+            let line = format!("d = {} at 1s", Want::of(&value));
+            let Ok(Expectation::At { value: want, .. }) = Expectation::parse(&line) else {
+                panic!("{line} does not read");
+            };
+            assert_eq!(want, Want::of(&value), "{line}");
         }
     }
 }

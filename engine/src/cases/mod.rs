@@ -10,7 +10,7 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-pub use expect::{Compare, ExpectError, Expectation};
+pub use expect::{Compare, ExpectError, Expectation, Want};
 
 use crate::error::Located;
 use crate::events::{parse_events, EventError};
@@ -127,11 +127,22 @@ impl Watch {
         if self.failed.is_some() {
             return;
         }
+        let device = self.expectation.device();
+        let want = match &self.expectation {
+            Expectation::At { value: want, .. } | Expectation::Stays { value: want, .. } => {
+                Some(want)
+            }
+            Expectation::Edge { .. } => None,
+        };
+        if let Some(wrong) = want.and_then(|w| w.kind_of(device, &value)) {
+            self.failed = Some(wrong);
+            return;
+        }
         let holds = match &self.expectation {
             Expectation::At {
                 op, value: want, ..
-            } => op.holds_value(&value, *want),
-            Expectation::Stays { value: want, .. } => value == *want,
+            } => op.holds_want(&value, want),
+            Expectation::Stays { value: want, .. } => Compare::Eq.holds_want(&value, want),
             Expectation::Edge { falling, .. } => {
                 if let Some(before) = &self.last {
                     let (was, on) = (before.is_on(), value.is_on());
@@ -150,8 +161,9 @@ impl Watch {
         };
         if !holds {
             self.failed = Some(format!(
-                "{} was {value} at {t}ms",
-                self.expectation.device()
+                "{} was {} at {t}ms",
+                self.expectation.device(),
+                value.watched()
             ));
         }
     }

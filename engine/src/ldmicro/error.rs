@@ -66,6 +66,19 @@ pub enum LdError {
     },
     /// A rung whose groups cannot be drawn as a ladder (why).
     Drawing(String),
+    /// A `CYCLE=` the soft PLC cannot scan at (what follows `CYCLE=`,
+    /// why).
+    Cycle { text: String, why: &'static str },
+    /// A name used as two things (the name as LDmicro wrote it, what it
+    /// is here, what it is where first used).
+    Role {
+        name: String,
+        here: String,
+        there: String,
+    },
+    /// What the soft PLC refuses in a rung made of this line's elements
+    /// (its message), where nothing above said it in LDmicro's terms.
+    SoftPlc(String),
 }
 
 impl fmt::Display for LdError {
@@ -140,6 +153,27 @@ impl fmt::Display for LdError {
                 "timer {name}: {delay} µs with adjust {adjust} is no count of {cycle} µs cycles above zero"
             ),
             LdError::Drawing(why) => write!(f, "this rung cannot be drawn: {why}"),
+            LdError::Role { .. } | LdError::SoftPlc(_) | LdError::Cycle { .. } => self.lowered(f),
+        }
+    }
+}
+
+impl LdError {
+    /// The errors of a whole file's names and settings, and what the soft
+    /// PLC refuses.
+    fn lowered(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LdError::Role { name, here, there } => write!(
+                f,
+                "{} is {here} here, but {there}: one name cannot be both",
+                crate::shown(name)
+            ),
+            LdError::SoftPlc(why) => write!(f, "the soft PLC cannot run this: {why}"),
+            LdError::Cycle { text, why } => {
+                write!(f, "CYCLE= holds {}: {why}", crate::shown(text))
+            }
+            // Only the three above come here.
+            other => write!(f, "{other:?}"),
         }
     }
 }

@@ -13,10 +13,11 @@ use super::error::LdError;
 use super::file::LdFile;
 use super::lower::{Lowering, MCR};
 use super::parts::{operand, Part};
+use super::roles::{conflicts, roles, Role};
 use crate::error::Located;
 use crate::ladder::element::Element;
-use crate::ladder::grid::Ladder;
 use crate::ladder::grid::Pos;
+use crate::ladder::grid::{Ladder, LadderError};
 use crate::ladder::net::{try_layout, Net, RungLogic};
 use crate::ladder::variables::Variable;
 use crate::ladder::BlockCall;
@@ -24,20 +25,48 @@ use crate::ladder::BlockCall;
 /// The file as a soft PLC ladder; every element it cannot run is an
 /// error at its line, and then nothing is made.
 pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
+    made(file).map(|(ladder, _)| ladder)
+}
+
+/// What compiling `file`'s ladder refused (`errors`, at its rungs and
+/// cells), each at the line of the LDmicro rung its rung came from —
+/// never at a rung number or cell the file does not have.
+pub fn locate(file: &LdFile, errors: Vec<LadderError>) -> Vec<Located<LdError>> {
+    let lines = made(file).map(|(_, lines)| lines).unwrap_or_default();
+    errors
+        .into_iter()
+        .map(|e| {
+            let line = e
+                .rung
+                .checked_sub(1)
+                .and_then(|k| lines.get(k))
+                .or(lines.first())
+                .copied()
+                .unwrap_or(1);
+            Located::new(line, LdError::SoftPlc(e.message))
+        })
+        .collect()
+}
+
+/// The ladder, and the line of the LDmicro rung each of its rungs came
+/// from.
+fn made(file: &LdFile) -> Result<(Ladder, Vec<usize>), Vec<Located<LdError>>> {
     let (file, renamed) = &iec_names(file);
-    let mut making = Making {
-        counters: counter_starts(file),
-        cycle: file.cycle_us,
-        analog: Vec::new(),
-        pwm: Vec::new(),
-        taken: HashMap::new(),
-        instances: BTreeMap::new(),
-        sizes: file
-            .vars
-            .iter()
-            .map(|v| (v.name.clone(), v.bytes))
-            .collect(),
-    };
+    // Names used as two things and every element's own error: every
+    // error of the file at once, in line order, before any rung is
+    // drawn (so that no refused element causes another error there).
+    let mut errors = conflicts(file, renamed);
+    let mut probe = Making::new(file);
+    for (e, line) in file.elements() {
+        if let Err(err) = probe.element(e) {
+            errors.push(Located::new(line, err));
+        }
+    }
+    if !errors.is_empty() {
+        errors.sort_by_key(|e| e.line);
+        return Err(errors);
+    }
+    let mut making = Making::new(file);
     let mut element = |e: &Ld| making.element(e);
     let mut lowering = Lowering {
         rungs: Vec::new(),
@@ -63,8 +92,9 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
     if !errors.is_empty() {
         return Err(errors);
     }
+    let (rungs, lines) = drawn(rungs, leftover)?;
     let mut ladder = Ladder {
-        rungs: drawn(rungs, leftover)?,
+        rungs,
         ..Ladder::default()
     };
     ladder.variables = declarations(file, &making.instances);
@@ -78,10 +108,11 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
         v.comment = "LDmicro's OPEN: never on".into();
         ladder.variables.push(v);
     }
-    if master {
-        let mut v = Variable::new(MCR, "BOOL");
+    if master && !ladder.variables.iter().any(|v| v.name == MCR) {
+        ladder.variables.push(Variable::new(MCR, "BOOL"));
+    }
+    if let Some(v) = ladder.variables.iter_mut().find(|v| v.name == MCR) {
         v.comment = "LDmicro's master relay".into();
-        ladder.variables.push(v);
     }
     for v in &mut ladder.variables {
         if let Some(original) = renamed.get(&v.name) {
@@ -93,7 +124,7 @@ pub fn to_ladder(file: &LdFile) -> Result<Ladder, Vec<Located<LdError>>> {
             };
         }
     }
-    Ok(ladder)
+    Ok((ladder, lines))
 }
 
 /// The rung that turns LDmicro's master relay on at each scan's start
@@ -107,17 +138,21 @@ fn relay_on() -> RungLogic {
     }
 }
 
-/// The rungs drawn on grids, a comment left after the last rung going
-/// to it.
-fn drawn(
-    rungs: Vec<(RungLogic, usize)>,
-    leftover: String,
-) -> Result<Vec<crate::ladder::grid::Rung>, Vec<Located<LdError>>> {
+/// Drawn rungs and the line each came from.
+type Drawn = (Vec<crate::ladder::grid::Rung>, Vec<usize>);
+
+/// The rungs drawn on grids, with the line each came from, a comment
+/// left after the last rung going to it.
+fn drawn(rungs: Vec<(RungLogic, usize)>, leftover: String) -> Result<Drawn, Vec<Located<LdError>>> {
     let mut out = Vec::new();
+    let mut lines = Vec::new();
     let mut errors = Vec::new();
     for (logic, line) in rungs {
         match try_layout(&logic) {
-            Ok(r) => out.push(r),
+            Ok(r) => {
+                out.push(r);
+                lines.push(line);
+            }
             Err(size) => errors.push(Located::new(line, LdError::Drawing(size.to_string()))),
         }
     }
@@ -128,7 +163,7 @@ fn drawn(
         last.comment.push_str(&leftover);
     }
     if errors.is_empty() {
-        Ok(out)
+        Ok((out, lines))
     } else {
         Err(errors)
     }
@@ -150,6 +185,29 @@ struct Making {
 }
 
 impl Making {
+    /// Ready for `file`'s elements.
+    fn new(file: &LdFile) -> Making {
+        // An instance never takes a name the file uses (`T1_ld` of TON T1
+        // beside a variable `T1_ld`): it gets the next number.
+        let taken = roles(file)
+            .into_iter()
+            .map(|(name, _)| (name.to_ascii_uppercase(), 1))
+            .collect();
+        Making {
+            counters: counter_starts(file),
+            cycle: file.cycle_us,
+            analog: Vec::new(),
+            pwm: Vec::new(),
+            taken,
+            instances: BTreeMap::new(),
+            sizes: file
+                .vars
+                .iter()
+                .map(|v| (v.name.clone(), v.bytes))
+                .collect(),
+        }
+    }
+
     /// Element `e` as the soft PLC has it.
     fn element(&mut self, e: &Ld) -> Result<Part, LdError> {
         if let Some(p) = hardware_io(e, &mut self.analog, &mut self.pwm) {
@@ -187,9 +245,17 @@ impl Making {
         let sizes = &self.sizes;
         let bits = |name: &str| sizes.get(name).copied().unwrap_or(2).min(4);
         let p = match word_op(e, &bits, &mut instance) {
-            Some(p) => p?,
-            None => part(e, self.cycle, &mut instance)?,
-        };
+            Some(p) => p,
+            None => part(e, self.cycle, &mut instance),
+        }
+        .map_err(|err| match err {
+            // An operand's number is said as its element's.
+            LdError::BadNumber { text, .. } => LdError::BadNumber {
+                element: e.keyword().into(),
+                text,
+            },
+            other => other,
+        })?;
         let block = match &p {
             Part::Condition(Element::Block(b)) | Part::Output(Element::OutputBlock(b)) => Some(b),
             _ => None,
@@ -324,90 +390,6 @@ fn counter_starts(file: &LdFile) -> HashMap<String, String> {
         }
     }
     out
-}
-
-/// What a name is in the file.
-#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-enum Role {
-    Bit,
-    Number,
-    /// A STRING's destination.
-    Text,
-}
-
-/// Each name the file's elements use and what it is, in the order the
-/// board and the variables pane show them (the IO LIST's first).
-fn roles(file: &LdFile) -> Vec<(String, Role)> {
-    let mut roles: Vec<(String, Role)> = Vec::new();
-    let mut at: HashMap<String, usize> = HashMap::new();
-    // The IO LIST's inputs and outputs first, so that the board follows
-    // its order (its ADC and PWM names are numbers, noted where used).
-    let io = file
-        .io
-        .iter()
-        .filter(|io| io.name.starts_with(['X', 'Y']))
-        .map(|io| (io.name.clone(), Role::Bit));
-    let used = file.elements().flat_map(|(e, _)| names_used(e));
-    for (name, role) in io.chain(used) {
-        let name = name.trim();
-        // The BOOLs the lowering holds power in are the compiler's to
-        // declare (they read back so from a file written out).
-        let held = name
-            .strip_prefix("_ld")
-            .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()));
-        if name.is_empty() || is_number(name) || held {
-            continue;
-        }
-        match at.get(name) {
-            // A bit read as a number stays a bit (the soft PLC then says
-            // where it does not fit).
-            Some(&k) => roles[k].1 = roles[k].1.min(role),
-            None => {
-                at.insert(name.to_string(), roles.len());
-                roles.push((name.to_string(), role));
-            }
-        }
-    }
-    roles
-}
-
-/// The names one element uses, each as a bit or a number.
-fn names_used(e: &Ld) -> Vec<(String, Role)> {
-    let numbers = |names: &[&str]| -> Vec<(String, Role)> {
-        names
-            .iter()
-            .map(|n| (n.to_string(), Role::Number))
-            .collect()
-    };
-    match e {
-        Ld::Contacts { name, .. } | Ld::Coil { name, .. } => vec![(name.clone(), Role::Bit)],
-        Ld::Open => vec![(OPEN.to_string(), Role::Bit)],
-        Ld::Timer { name, delay, .. } => numbers(&[name, delay]),
-        Ld::Counter {
-            name, max, init, ..
-        } => numbers(&[name, max, init]),
-        Ld::Res(name) | Ld::ReadAdc { name, .. } | Ld::Persist(name) => numbers(&[name]),
-        Ld::TimeConvert { name, .. } => numbers(&[name]),
-        Ld::Unary { dest, src, .. } => numbers(&[dest, src]),
-        Ld::Math { dest, a, b, .. } => numbers(&[dest, a, b]),
-        Ld::Compare { a, b, .. } => numbers(&[a, b]),
-        Ld::ShiftRegister { name, stages } => (0..*stages)
-            .map(|k| (format!("{name}{k}"), Role::Number))
-            .collect(),
-        Ld::Bit { var, bit, .. } => numbers(&[var, bit]),
-        Ld::LookUpTable { dest, index, .. } => numbers(&[dest, index]),
-        Ld::PiecewiseLinear { dest, index, .. } => numbers(&[dest, index, super::elements::PWL]),
-        Ld::SetPwm { duty, .. } => numbers(&[duty]),
-        Ld::UartSend { name, .. } | Ld::UartRecv { name, .. } => numbers(&[name]),
-        Ld::FormattedString { var, .. } => numbers(&[var]),
-        Ld::Text { dest, var, .. } => {
-            let mut names = numbers(&[var]);
-            names.push((dest.clone(), Role::Text));
-            names
-        }
-        Ld::Segments { dest, src, .. } => numbers(&[dest, src]),
-        _ => Vec::new(),
-    }
 }
 
 /// The ladder's variables: bits and numbers the elements name, the

@@ -211,12 +211,19 @@ fn device(l: &Line) -> Result<Element, LdError> {
         ("RANDOM", [n]) => Ok(Element::Random(n.to_string())),
         ("PERSIST", [n]) => Ok(Element::Persist(n.to_string())),
         ("RES" | "RANDOM" | "PERSIST", _) => Err(l.wrong("a name")),
-        ("TIME2COUNT" | "TIME2DELAY", [name, delay]) => Ok(Element::TimeConvert {
-            to_delay: l.keyword == "TIME2DELAY",
-            name: name.to_string(),
-            delay: delay.to_string(),
-        }),
-        ("TIME2COUNT" | "TIME2DELAY", _) => Err(l.wrong("name delay")),
+        // LDmicro 4.x writes a timer's adjust after the delay and reads
+        // only the name and delay back (its `sscanf` of two fields): the
+        // adjust, a whole number, changes nothing.
+        ("TIME2COUNT" | "TIME2DELAY", [name, delay, adjust @ ..])
+            if adjust.len() <= 1 && adjust.iter().all(|a| l.int(a).is_ok()) =>
+        {
+            Ok(Element::TimeConvert {
+                to_delay: l.keyword == "TIME2DELAY",
+                name: name.to_string(),
+                delay: delay.to_string(),
+            })
+        }
+        ("TIME2COUNT" | "TIME2DELAY", _) => Err(l.wrong("name delay [adjust]")),
         ("SHIFT_REGISTER", [name, stages]) => {
             let stages = u32::try_from(l.int(stages)?)
                 .ok()
@@ -348,7 +355,7 @@ fn table(l: &Line) -> Result<Element, LdError> {
     }
     let values = rest[..entries]
         .iter()
-        .map(|v| number(v).ok_or_else(|| bad(v)))
+        .map(|v| number(v).filter(|_| is_number(v)).ok_or_else(|| bad(v)))
         .collect::<Result<Vec<i64>, LdError>>()?;
     let name = rest
         .get(entries)

@@ -79,15 +79,25 @@ fn pure(power: &Power) -> bool {
 fn wired_beside_boxes(branches: &[Node]) -> bool {
     use super::Element as Ld;
     let wires = |b: &Node| {
-        b.elements()
-            .iter()
-            .all(|(e, _)| matches!(e, Ld::Short | Ld::Placeholder | Ld::Comment(_)))
+        b.elements().iter().all(|(e, _)| {
+            matches!(
+                e,
+                Ld::Short | Ld::Placeholder | Ld::Comment(_) | Ld::Persist(_)
+            )
+        })
     };
+    // PERSIST passes power through (LDmicro saves its variable whatever
+    // the power): a wire.
     let boxes = |b: &Node| {
         b.elements().iter().any(|(e, _)| {
             !matches!(
                 e,
-                Ld::Short | Ld::Placeholder | Ld::Comment(_) | Ld::Contacts { .. } | Ld::Open
+                Ld::Short
+                    | Ld::Placeholder
+                    | Ld::Comment(_)
+                    | Ld::Persist(_)
+                    | Ld::Contacts { .. }
+                    | Ld::Open
             )
         })
     };

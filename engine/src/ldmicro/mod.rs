@@ -11,18 +11,21 @@
 pub mod element;
 mod elements;
 pub mod error;
+mod escape;
 mod export;
 pub mod file;
 mod ladder;
 mod leaf;
 mod lower;
+mod numbers;
 pub mod parse;
 mod parts;
+mod roles;
 mod texts;
 
 pub use element::Element;
 pub use error::LdError;
 pub use export::export;
 pub use file::{LdFile, LdRung, Node, Version};
-pub use ladder::to_ladder;
+pub use ladder::{locate, to_ladder};
 pub use parse::{decode, parse};

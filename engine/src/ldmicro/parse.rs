@@ -52,8 +52,8 @@ pub fn parse(text: &str) -> Result<LdFile, Errors> {
         rungs: Vec::new(),
     };
     let mut lines = lines.peekable();
-    settings(&mut file, &mut lines)?;
     let mut errors = Vec::new();
+    settings(&mut file, &mut lines, &mut errors)?;
     while let Some((n, line)) = lines.next() {
         let t = line.trim();
         if t.is_empty() || t.starts_with(';') {
@@ -79,12 +79,14 @@ pub fn parse(text: &str) -> Result<LdFile, Errors> {
 }
 
 /// The settings and lists before `PROGRAM`. A line LDmicro would not
-/// understand there is skipped, as LDmicro skips it.
+/// understand there is skipped, as LDmicro skips it; a `CYCLE=` the soft
+/// PLC cannot scan at is an error in `errors`, at its line.
 fn settings<'a>(
     file: &mut LdFile,
     lines: &mut impl Iterator<Item = (usize, &'a str)>,
+    errors: &mut Errors,
 ) -> Result<(), Errors> {
-    while let Some((_, line)) = lines.next() {
+    while let Some((n, line)) = lines.next() {
         let t = line.trim();
         let number = |rest: &str| -> u64 {
             let digits: String = rest
@@ -101,7 +103,10 @@ fn settings<'a>(
             "VAR LIST" => file.vars = var_list(lines)?,
             _ => {
                 if let Some(rest) = t.strip_prefix("CYCLE=") {
-                    file.cycle_us = number(rest);
+                    match cycle(rest) {
+                        Ok(us) => file.cycle_us = us,
+                        Err(e) => errors.push(Located::new(n, e)),
+                    }
                 } else if let Some(rest) = t.strip_prefix("CRYSTAL=") {
                     file.crystal_hz = number(rest);
                 } else if let Some(rest) = t.strip_prefix("BAUD=") {
@@ -117,6 +122,35 @@ fn settings<'a>(
         }
     }
     Err(vec![Located::new(1, LdError::NoProgram)])
+}
+
+/// `CYCLE=`'s scan period in µs, read as LDmicro's `sscanf("%lld")` reads
+/// it (spaces, a sign, digits; its `us at Timer1, …` tail after them),
+/// and within the soft PLC's scan periods: above 0, at most
+/// [`crate::softplc::machine::MAX_SCAN`].
+fn cycle(rest: &str) -> Result<u64, LdError> {
+    let t = rest.trim_start();
+    let unsigned = t.strip_prefix(['-', '+']).unwrap_or(t);
+    let digits: String = unsigned.chars().take_while(char::is_ascii_digit).collect();
+    let negative = t.starts_with('-');
+    if digits.is_empty() {
+        return Err(LdError::Cycle {
+            text: rest.trim().into(),
+            why: "not a number (LDmicro writes the scan period in µs: CYCLE=10000)",
+        });
+    }
+    let max = crate::softplc::machine::MAX_SCAN.as_nanos() / 1000;
+    match digits.parse::<u64>() {
+        Ok(us) if !negative && (1..=max).contains(&us) => Ok(us),
+        Ok(0) => Err(LdError::Cycle {
+            text: rest.trim().into(),
+            why: "LDmicro's untimed cycle (the chip scans as fast as it runs); the soft PLC scans every 1 µs to 10 s (docs/limits.md)",
+        }),
+        _ => Err(LdError::Cycle {
+            text: rest.trim().into(),
+            why: "no scan period in µs the soft PLC has: it scans every 1 µs to 10 s (docs/limits.md)",
+        }),
+    }
 }
 
 /// A list's entries up to its `END`, each non-blank line read by `entry`

@@ -2,10 +2,12 @@
 //! var)` format, as LDmicro's C output passes it on. It prints one
 //! integer (`var`, LDmicro's 32-bit SDWORD) at most once, with C's
 //! integer conversions: `%d %i %u %x %X %o %c`, flags `- + space 0 #`, a
-//! width and a precision; `%%` is a `%`. Length modifiers (`h`, `hh`, `l`,
-//! `ll`) are read and change nothing (the value is always 32 bits). A
-//! format C would take a second argument, a string or a real for is
-//! refused when the program loads, never printed wrong.
+//! width and a precision; `%%` is a `%`. The length modifiers are C's:
+//! `h` and `hh` print the value converted to a `short` and a `char`, `l`
+//! and `ll` as a `long` and a `long long` (64 bits, as on the machines
+//! Hashigo's tests compare with glibc). A format C would take a second
+//! argument, a string or a real for, or a length C gives no meaning to,
+//! is refused when the program loads, never printed wrong.
 
 use std::fmt;
 
@@ -22,6 +24,9 @@ pub enum PrintfError {
     Star,
     /// A conversion, where the element names no variable (`(none)`).
     NoValue,
+    /// A length modifier C has not, or one on `%c` (the conversion as
+    /// written).
+    Length(String),
 }
 
 impl fmt::Display for PrintfError {
@@ -36,6 +41,10 @@ impl fmt::Display for PrintfError {
             PrintfError::NoValue => {
                 write!(f, "the text prints a value (%…) but no variable is named")
             }
+            PrintfError::Length(c) => write!(
+                f,
+                "`{c}`: the lengths are h, hh, l and ll, on %d %i %u %x %X %o (%c takes none)"
+            ),
         }
     }
 }
@@ -52,6 +61,8 @@ struct Spec {
     alternate: bool,
     width: usize,
     precision: Option<usize>,
+    /// The length modifier: "", "h", "hh", "l" or "ll".
+    length: &'static str,
     conversion: char,
 }
 
@@ -135,6 +146,7 @@ fn conversion(chars: &mut std::iter::Peekable<std::str::Chars<'_>>) -> Result<Sp
         alternate: false,
         width: 0,
         precision: None,
+        length: "",
         conversion: 'd',
     };
     let mut seen = String::from("%");
@@ -156,15 +168,26 @@ fn conversion(chars: &mut std::iter::Peekable<std::str::Chars<'_>>) -> Result<Sp
         chars.next();
         spec.precision = Some(number(chars, &mut seen)?);
     }
+    let mut length = String::new();
     while let Some(&c) = chars.peek() {
         if !matches!(c, 'h' | 'l') {
             break;
         }
         seen.push(c);
+        length.push(c);
         chars.next();
     }
     match chars.next() {
         Some(c @ ('d' | 'i' | 'u' | 'x' | 'X' | 'o' | 'c')) => {
+            seen.push(c);
+            spec.length = match length.as_str() {
+                "" => "",
+                "h" if c != 'c' => "h",
+                "hh" if c != 'c' => "hh",
+                "l" if c != 'c' => "l",
+                "ll" if c != 'c' => "ll",
+                _ => return Err(PrintfError::Length(seen)),
+            };
             spec.conversion = c;
             Ok(spec)
         }
@@ -202,9 +225,21 @@ impl Spec {
             let c = char::from(v as u8);
             return self.pad(String::new(), c.to_string(), false);
         }
-        let (sign, digits, prefix) = match self.conversion {
+        // The value as the type the length names (C converts it so).
+        let signed: i64 = match self.length {
+            "h" => i64::from(v as i16),
+            "hh" => i64::from(v as i8),
+            _ => i64::from(v),
+        };
+        let unsigned: u64 = match self.length {
+            "h" => u64::from(v as u16),
+            "hh" => u64::from(v as u8),
+            "l" | "ll" => i64::from(v) as u64,
+            _ => u64::from(v as u32),
+        };
+        let (sign, digits) = match self.conversion {
             'd' | 'i' => {
-                let sign = if v < 0 {
+                let sign = if signed < 0 {
                     "-"
                 } else if self.plus {
                     "+"
@@ -213,35 +248,31 @@ impl Spec {
                 } else {
                     ""
                 };
-                (sign, v.unsigned_abs().to_string(), "")
+                (sign, signed.unsigned_abs().to_string())
             }
-            'u' => ("", (v as u32).to_string(), ""),
-            'o' => {
-                let d = format!("{:o}", v as u32);
-                let prefix = if self.alternate && !d.starts_with('0') {
-                    "0"
-                } else {
-                    ""
-                };
-                ("", d, prefix)
-            }
-            'x' => (
-                "",
-                format!("{:x}", v as u32),
-                if self.alternate && v != 0 { "0x" } else { "" },
-            ),
-            _ => (
-                "",
-                format!("{:X}", v as u32),
-                if self.alternate && v != 0 { "0X" } else { "" },
-            ),
+            'u' => ("", unsigned.to_string()),
+            'o' => ("", format!("{unsigned:o}")),
+            'x' => ("", format!("{unsigned:x}")),
+            _ => ("", format!("{unsigned:X}")),
         };
+        let zero_value = digits == "0";
         // A precision is the least count of digits; `.0` prints 0 as
         // nothing.
-        let digits = match self.precision {
-            Some(0) if v == 0 => String::new(),
+        let mut digits = match self.precision {
+            Some(0) if zero_value => String::new(),
             Some(p) if digits.len() < p => format!("{}{digits}", "0".repeat(p - digits.len())),
             _ => digits,
+        };
+        // `#`: octal's first digit is a 0 (after the precision: `%#.0o`
+        // of 0 is `0`); hexadecimal other than 0 gets `0x`.
+        let prefix = match self.conversion {
+            'o' if self.alternate && !digits.starts_with('0') => {
+                digits.insert(0, '0');
+                ""
+            }
+            'x' if self.alternate && !zero_value => "0x",
+            'X' if self.alternate && !zero_value => "0X",
+            _ => "",
         };
         let zero = self.zero && !self.left && self.precision.is_none();
         self.pad(format!("{sign}{prefix}"), digits, zero)
@@ -294,6 +325,8 @@ mod tests {
         assert_eq!(print("ab%cd", 0), "ab", "a NUL ends the text");
         assert_eq!(print("%ld", 3), "3");
         assert_eq!(print("%hhx", 255), "ff");
+        assert_eq!(print("%hhx", 511), "ff");
+        assert_eq!(print("%#.4o", 8), "0010");
     }
 
     #[test]

@@ -3,6 +3,7 @@
 mod blocks;
 #[path = "../common/mod.rs"]
 mod common;
+mod forms;
 mod plcopen;
 mod read;
 mod run;

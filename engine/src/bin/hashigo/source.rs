@@ -199,6 +199,11 @@ pub fn compile_project(
     };
     let options = Options { avr_scan_ms };
     compile_ladder(&project.ladder, project.machine, options).map_err(|errors| {
+        // An LDmicro file's ladder is the program's own drawing: its
+        // problems go at the file's lines, not at rungs it does not have.
+        if let Ok(file) = engine::ldmicro::parse(&source.text) {
+            return source.located(&engine::ldmicro::locate(&file, errors));
+        }
         errors
             .iter()
             .map(|e| format!("{}: {e}", source.name))
