@@ -136,7 +136,11 @@ impl Recorder {
             expect: self
                 .outputs
                 .iter()
-                .map(|(d, device)| format!("{d} = {} at {now}ms", plc.read(*device)))
+                // A STRING's text in quotes, so the expectation reads back.
+                .map(|(d, device)| {
+                    let want = engine::cases::Want::of(&plc.read(*device));
+                    format!("{d} = {want} at {now}ms")
+                })
                 .collect(),
         }
     }
