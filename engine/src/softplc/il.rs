@@ -23,7 +23,7 @@ use std::fmt;
 
 use super::address::{Address, AddressError};
 use super::data::{Data, DataType};
-use super::literal::{parse_literal, LiteralError};
+use super::literal::{parse_literal, untyped_integer, LiteralError};
 use super::vars::is_identifier;
 use crate::error::Located;
 
@@ -183,10 +183,16 @@ impl Operator {
 /// What an operator works on.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Operand {
-    /// A declared name (or, for JMP, a label).
+    /// A declared name (or, for JMP, a label), or a block instance's
+    /// output (`t0.Q`, `c0.CV`).
     Name(String),
     Address(Address),
+    /// A typed literal (`INT#5`, `T#1s`, `TRUE`, `1.5`): its type is its own.
     Literal(Data),
+    /// An untyped integer literal (`42`, `16#FF`): it takes the type its
+    /// use needs (a DINT, or a LINT when it needs 64 bits, where no use
+    /// gives one).
+    Number(i128),
     /// A string literal's text (`'Hello $R$N'` read): only an LDmicro
     /// formatted string's `FMT` takes one.
     Text(String),
@@ -234,6 +240,12 @@ pub enum IlError {
         label: String,
         first: usize,
     },
+    /// A second `PROGRAM` in one text (the first on the line given).
+    SecondProgram(usize),
+    /// A call's parameter named twice.
+    TwiceGiven(String),
+    /// A call's parameter list with an empty place (`CAL t(IN := a, )`).
+    EmptyParameter,
 }
 
 impl fmt::Display for IlError {
@@ -253,6 +265,14 @@ impl fmt::Display for IlError {
             IlError::DuplicateLabel { label, first } => {
                 write!(f, "label `{label}` is used twice (first on line {first})")
             }
+            IlError::SecondProgram(first) => write!(
+                f,
+                "a second PROGRAM: one text holds one program (the first starts on line {first})"
+            ),
+            IlError::TwiceGiven(p) => write!(f, "the parameter `{p}` is given twice"),
+            IlError::EmptyParameter => {
+                f.write_str("an empty parameter: write each as name := value or name => variable")
+            }
         }
     }
 }
@@ -266,6 +286,7 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     let mut lines: Vec<Line> = Vec::new();
     let mut errors = Vec::new();
     let mut in_vars = false;
+    let mut first_program = None;
     // Each label (upper-case) and the line it is first on.
     let mut labels: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     let text = super::comments::blank_long_comments(text);
@@ -286,12 +307,18 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
             in_vars = false;
             continue;
         }
-        // The optional `PROGRAM name … END_PROGRAM` wrapper.
-        let wrapper = upper == "END_PROGRAM"
-            || upper
-                .strip_prefix("PROGRAM")
-                .is_some_and(|rest| rest.starts_with(char::is_whitespace));
-        if in_vars || code.is_empty() || wrapper {
+        // The optional `PROGRAM name … END_PROGRAM` wrapper: one.
+        let program = upper
+            .strip_prefix("PROGRAM")
+            .is_some_and(|rest| rest.starts_with(char::is_whitespace));
+        if program && !in_vars {
+            match first_program {
+                Some(first) => errors.push(Located::new(number, IlError::SecondProgram(first))),
+                None => first_program = Some(number),
+            }
+            continue;
+        }
+        if in_vars || code.is_empty() || upper == "END_PROGRAM" {
             continue;
         }
         match line(code, number) {
@@ -475,11 +502,17 @@ fn operand(text: &str) -> Result<Operand, IlError> {
         || text.eq_ignore_ascii_case("TRUE")
         || text.eq_ignore_ascii_case("FALSE");
     if literal_like {
+        if let Some(v) = untyped_integer(text) {
+            return Ok(Operand::Number(v));
+        }
         return parse_literal(text, None)
             .map(Operand::Literal)
             .map_err(IlError::Literal);
     }
-    if is_identifier(text) {
+    let output = text
+        .split_once('.')
+        .is_some_and(|(instance, pin)| is_identifier(instance) && is_identifier(pin));
+    if is_identifier(text) || output {
         Ok(Operand::Name(text.to_string()))
     } else {
         Err(IlError::BadName(text.to_string()))
@@ -497,9 +530,31 @@ fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
         return Err(bad());
     }
     out.operand = Some(Operand::Name(name.to_string()));
-    for param in params.into_iter().flat_map(split_params).map(str::trim) {
+    let params: Vec<&str> = params
+        .filter(|p| !p.trim().is_empty())
+        .map(split_params)
+        .unwrap_or_default();
+    for param in params.into_iter().map(str::trim) {
         if param.is_empty() {
-            continue;
+            return Err(IlError::EmptyParameter);
+        }
+        // Each input once, each output once (LDmicro's STRING has an
+        // input and an output of one name: its D).
+        let twice = match (param.split_once(":="), param.split_once("=>")) {
+            (Some((formal, _)), _) => out
+                .inputs
+                .iter()
+                .any(|(f, _)| f.eq_ignore_ascii_case(formal.trim()))
+                .then_some(formal),
+            (None, Some((formal, _))) => out
+                .outputs
+                .iter()
+                .any(|(f, _)| f.eq_ignore_ascii_case(formal.trim()))
+                .then_some(formal),
+            _ => None,
+        };
+        if let Some(formal) = twice {
+            return Err(IlError::TwiceGiven(formal.trim().to_string()));
         }
         if let Some((formal, value)) = param.split_once(":=") {
             let formal = formal.trim();

@@ -253,11 +253,7 @@ fn function(kind: &str, args: &[Data]) -> Option<Data> {
     };
     let arith = |op| fold(&|a: &Data, b| a.arith(op, b));
     let logic = |op| fold(&|a: &Data, b| a.bitwise(op, b));
-    let shift = |op| {
-        let n = args.get(1)?.convert(DataType::Udint).to_value().as_i64();
-        args.first()?
-            .shift(op, u32::try_from(n).unwrap_or(u32::MAX))
-    };
+    let shift = |op| args.first()?.shift(op, args.get(1)?);
     match kind {
         "ADD" => arith(Arith::Add),
         "SUB" => arith(Arith::Sub),

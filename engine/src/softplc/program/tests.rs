@@ -169,7 +169,7 @@ fn what_does_not_load_says_why_at_its_line() {
     assert_eq!(got[5].1, "TON has no input `XX`");
     assert_eq!(got[6].1, "TON's PT is a TIME");
     assert!(got[7].1.contains("start with LD"));
-    assert_eq!(got[8].1, "`(` and `)` do not pair");
+    assert_eq!(got[8].1, "this `(` is never closed with `)`");
     let got = errors(
         "VAR\n  i : INT;\n  r : REAL;\n  b : BOOL;\nEND_VAR\n\
          LD i\nDINT_TO_INT\n\
