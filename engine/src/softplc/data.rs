@@ -306,7 +306,11 @@ impl Data {
             Shift::Rol | Shift::Ror => {
                 // In 0 … width − 1: the cast cannot lose anything.
                 let r = n.rem_euclid(i128::from(bits)) as u32;
-                let n = if op == Shift::Rol { r } else { (bits - r) % bits };
+                let n = if op == Shift::Rol {
+                    r
+                } else {
+                    (bits - r) % bits
+                };
                 if n == 0 {
                     pattern
                 } else {

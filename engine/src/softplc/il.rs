@@ -242,7 +242,7 @@ pub enum IlError {
     },
     /// A second `PROGRAM` in one text (the first on the line given).
     SecondProgram(usize),
-    /// A call's parameter named twice.
+    /// A call's input named twice.
     TwiceGiven(String),
     /// A call's parameter list with an empty place (`CAL t(IN := a, )`).
     EmptyParameter,
@@ -269,7 +269,7 @@ impl fmt::Display for IlError {
                 f,
                 "a second PROGRAM: one text holds one program (the first starts on line {first})"
             ),
-            IlError::TwiceGiven(p) => write!(f, "the parameter `{p}` is given twice"),
+            IlError::TwiceGiven(p) => write!(f, "the input `{p}` is given twice"),
             IlError::EmptyParameter => {
                 f.write_str("an empty parameter: write each as name := value or name => variable")
             }
@@ -538,23 +538,18 @@ fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
         if param.is_empty() {
             return Err(IlError::EmptyParameter);
         }
-        // Each input once, each output once (LDmicro's STRING has an
-        // input and an output of one name: its D).
-        let twice = match (param.split_once(":="), param.split_once("=>")) {
-            (Some((formal, _)), _) => out
+        // Each input once (which value would it take?); an output may
+        // go to several variables (`Q => a, Q => b`: a ladder's box
+        // writes its Q to its own variable and to the rung's power).
+        if let Some((formal, _)) = param.split_once(":=") {
+            let formal = formal.trim();
+            if out
                 .inputs
                 .iter()
-                .any(|(f, _)| f.eq_ignore_ascii_case(formal.trim()))
-                .then_some(formal),
-            (None, Some((formal, _))) => out
-                .outputs
-                .iter()
-                .any(|(f, _)| f.eq_ignore_ascii_case(formal.trim()))
-                .then_some(formal),
-            _ => None,
-        };
-        if let Some(formal) = twice {
-            return Err(IlError::TwiceGiven(formal.trim().to_string()));
+                .any(|(f, _)| f.eq_ignore_ascii_case(formal))
+            {
+                return Err(IlError::TwiceGiven(formal.to_string()));
+            }
         }
         if let Some((formal, value)) = param.split_once(":=") {
             let formal = formal.trim();

@@ -554,8 +554,8 @@ impl Program {
 mod calls;
 mod check;
 mod flex;
-mod outputs;
 mod functions;
+mod outputs;
 mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the

@@ -65,7 +65,11 @@ pub(super) fn default_type(v: i128) -> DataType {
 
 /// The widest default of several literals (all of one type together).
 fn widest(flex: &[Flex]) -> DataType {
-    let rank = |t: DataType| [DataType::Dint, DataType::Lint, DataType::Ulint].iter().position(|&u| u == t);
+    let rank = |t: DataType| {
+        [DataType::Dint, DataType::Lint, DataType::Ulint]
+            .iter()
+            .position(|&u| u == t)
+    };
     flex.iter()
         .map(|f| default_type(f.value))
         .max_by_key(|&t| rank(t))
@@ -115,9 +119,10 @@ impl Program {
                 }
             };
             let src = match (self.steps.get_mut(f.step), f.arg) {
-                (Some(Step::Ld(src, _) | Step::Binary(_, src) | Step::Open(_, Some(src))), None) => {
-                    src
-                }
+                (
+                    Some(Step::Ld(src, _) | Step::Binary(_, src) | Step::Open(_, Some(src))),
+                    None,
+                ) => src,
                 (Some(Step::Func(_, args)), Some(i)) => match args.get_mut(i) {
                     Some(src) => src,
                     None => continue,

@@ -22,8 +22,12 @@ impl Program {
         for a in &line.args {
             args.push(self.slot(a)?);
         }
-        let placed: Vec<(Option<usize>, &Operand)> =
-            line.args.iter().enumerate().map(|(i, a)| (Some(i), a)).collect();
+        let placed: Vec<(Option<usize>, &Operand)> = line
+            .args
+            .iter()
+            .enumerate()
+            .map(|(i, a)| (Some(i), a))
+            .collect();
         let wrong = |why: String| Err(LoadError::Type(why));
         match f {
             Function::Neg if matches!(t, DataType::Bool | DataType::String) => {

@@ -62,8 +62,16 @@ fn a_negative_count_shifts_to_zero_and_rotates_the_other_way() {
     );
     p.scan(0);
     assert_eq!(p.value("a"), int(DataType::Word, 0));
-    assert_eq!(p.value("b"), int(DataType::Word, 0x8000), "ROL by -1 is ROR by 1");
-    assert_eq!(p.value("c"), int(DataType::Word, 2), "ROR by -1 is ROL by 1");
+    assert_eq!(
+        p.value("b"),
+        int(DataType::Word, 0x8000),
+        "ROL by -1 is ROR by 1"
+    );
+    assert_eq!(
+        p.value("c"),
+        int(DataType::Word, 2),
+        "ROR by -1 is ROL by 1"
+    );
 }
 
 // 43.2: ULINT counters' PV of 2^63 or more.
@@ -78,7 +86,11 @@ fn a_ulint_counter_takes_a_preset_of_two_to_the_63_and_more() {
     );
     p.scan(0);
     assert_eq!(p.value("q"), Some(Data::Bool(false)), "CV 1 is below 2^63");
-    assert_eq!(p.value("dq"), Some(Data::Bool(false)), "loaded, CV is not 0");
+    assert_eq!(
+        p.value("dq"),
+        Some(Data::Bool(false)),
+        "loaded, CV is not 0"
+    );
     assert_eq!(p.value("cv"), int(DataType::Ulint, u64::MAX.into()));
 }
 
@@ -216,17 +228,20 @@ fn a_cal_parameter_given_twice_or_empty_is_refused_at_its_line() {
     let head = "VAR\n  t : TON;\n  a : BOOL;\n  b : BOOL;\nEND_VAR\n";
     for code in [
         "CAL t(IN := a, IN := b)",
-        "CAL t(IN := a, PT := T#1s, Q => a, Q => b)",
+        "CAL t(IN := a, PT := T#1s, in := b)",
         "CAL t(IN := a, , PT := T#1s)",
         "CAL t(IN := a,)",
         "CAL t(,)",
     ] {
         let text = format!("{head}LD a\n{code}");
         let why = refused_at(&text, 7);
-        assert!(why.contains("twice") || why.contains("empty"), "{code}: {why}");
+        assert!(
+            why.contains("twice") || why.contains("empty"),
+            "{code}: {why}"
+        );
     }
-    // No parameters at all is a call.
-    load(&format!("{head}CAL t()\nCAL t"));
+    // No parameters at all is a call; an output may go to two variables.
+    load(&format!("{head}CAL t()\nCAL t\nCAL t(Q => a, Q => b)"));
 }
 
 // 43.14: messages that mislead.
@@ -264,7 +279,10 @@ fn an_unclosed_parenthesis_is_reported_at_its_own_line() {
         "VAR\n  a : BOOL;\n  b : BOOL;\nEND_VAR\nLD a\nAND( b\nST a\nLD b\nST b\nST a",
         6,
     );
-    assert!(why.contains("never closed") || why.contains("pair"), "{why}");
+    assert!(
+        why.contains("never closed") || why.contains("pair"),
+        "{why}"
+    );
 }
 
 // 44.2: block outputs as operands.
@@ -284,7 +302,11 @@ fn il_reads_a_blocks_outputs_as_operands() {
     );
     p.scan(0);
     assert_eq!(p.value("a"), Some(Data::Bool(false)));
-    assert_eq!(p.value("b"), Some(Data::Bool(false)), "f0.Q on at the first scan");
+    assert_eq!(
+        p.value("b"),
+        Some(Data::Bool(false)),
+        "f0.Q on at the first scan"
+    );
     p.scan(10 * MS);
     assert_eq!(p.value("b"), Some(Data::Bool(true)));
     p.scan(20 * MS);
