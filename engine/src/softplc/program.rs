@@ -10,7 +10,7 @@ use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use super::literal::string_value;
 use super::pins::Instance;
-use super::vars::{parse_vars_with, Kind, VarError, Variable};
+use super::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::error::Located;
 use check::{binary_type, describe, invertible, jump, need_cr};
 use flex::{Flex, Flow, Open};
@@ -210,13 +210,19 @@ impl Program {
         };
         for b in &sections.blocks {
             let (vars, lines) = read(&b.text, &types)?;
+            let (vars, var_lines) = vars.into_iter().unzip();
             p.user_types.push(user::UserType {
                 name: b.name.clone(),
                 vars,
+                var_lines,
                 lines,
                 line: b.line,
             });
         }
+        // The instances' variables counted before any is made: said
+        // once, at the declaration that passes a limit, and nothing else.
+        p.budget(&vars).map_err(|e| vec![e])?;
+        let vars: Vec<Variable> = vars.into_iter().map(|(v, _)| v).collect();
         let mut errors = Vec::new();
         if let Err(e) = p.declare(&vars, "", 0) {
             errors.push(Located::new(1, e));
@@ -560,8 +566,8 @@ mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the
 /// text's own function blocks give).
-fn read(text: &str, blocks: &[String]) -> Result<(Vec<Variable>, Vec<Line>), Errors> {
-    let vars = parse_vars_with(text, blocks).map_err(|es| {
+fn read(text: &str, blocks: &[String]) -> Result<(Vec<(Variable, usize)>, Vec<Line>), Errors> {
+    let vars = parse_vars_at(text, blocks).map_err(|es| {
         es.into_iter()
             .map(|e| Located::new(e.line, LoadError::Var(e.error)))
             .collect::<Errors>()

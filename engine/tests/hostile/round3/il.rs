@@ -336,3 +336,94 @@ fn il_reads_an_output_of_the_programs_own_block() {
     p.scan(0);
     assert_eq!(p.value("n"), int(DataType::Int, 42));
 }
+
+// 43.11: nested instances of the program's own blocks.
+
+#[test]
+fn nested_instances_past_the_variables_limit_are_refused_once_before_any_is_made() {
+    let mut text = String::from("FUNCTION_BLOCK Big\nVAR\n");
+    for k in 0..500 {
+        text.push_str(&format!("  v{k} : INT;\n"));
+    }
+    text.push_str("END_VAR\nLD v0\nADD 1\nST v0\nEND_FUNCTION_BLOCK\nFUNCTION_BLOCK Mid\nVAR\n");
+    for k in 0..100 {
+        text.push_str(&format!("  b{k} : Big;\n"));
+    }
+    text.push_str("END_VAR\nCAL b0\nEND_FUNCTION_BLOCK\nVAR\n");
+    let first = text.lines().count() + 1;
+    for k in 0..5 {
+        text.push_str(&format!("  m{k} : Mid;\n"));
+    }
+    text.push_str("END_VAR\nCAL m0\nCAL m3\nCAL m4\n");
+    let started = std::time::Instant::now();
+    let got = refused(&text);
+    assert_eq!(got.len(), 1, "said once, no cascade: {got:?}");
+    // m0 … m2 hold 150 300 variables; m3 would take them past 200 000.
+    assert_eq!(got[0].0, first + 3, "{got:?}");
+    assert!(got[0].1.contains("200000 variables"), "{got:?}");
+    assert!(started.elapsed().as_secs() < 5, "{:?}", started.elapsed());
+}
+
+#[test]
+fn a_block_that_holds_itself_is_refused_at_that_declaration() {
+    let got = refused(
+        "FUNCTION_BLOCK A\nVAR\n  b : B;\nEND_VAR\nEND_FUNCTION_BLOCK\n\
+         FUNCTION_BLOCK B\nVAR\n  x : BOOL;\n  a : A;\nEND_VAR\nEND_FUNCTION_BLOCK\n\
+         VAR\n  top : A;\nEND_VAR\nCAL top",
+    );
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 9, "{got:?}");
+    assert!(got[0].1.contains("does A hold itself?"), "{got:?}");
+}
+
+/// `%IX0.0 → [c0: CTU PV 3] → %QX0.0`, then a rung `[GT c0.CV 1] →
+/// %QX0.1`: a box that reads the counter's CV, as typed in the editor.
+fn counter_and_comparison() -> engine::ladder::Ladder {
+    use engine::ladder::edit::{parse_entry, Cursor, Edit, Editor, EntryKind};
+    use engine::ladder::{Element, Ladder};
+    use engine::MachineId;
+    let entry = |text: &str| {
+        parse_entry(MachineId::SoftPlc, EntryKind::Instruction, text)
+            .unwrap_or_else(|e| panic!("{text}: {e:?}"))
+    };
+    let mut e = Editor::new(Ladder::default());
+    for index in 0..2 {
+        e.apply(Edit::InsertRung { index }).expect("a rung");
+    }
+    let mut place = |rung, col, element| {
+        let at = Cursor::new(rung, 0, col);
+        e.apply(Edit::Place { at, element }).expect("places");
+    };
+    place(0, 0, Element::no("%IX0.0"));
+    place(0, 1, entry("CTU c0 · 3"));
+    place(0, 2, Element::coil("%QX0.0"));
+    place(1, 0, entry("GT c0.CV 1"));
+    place(1, 1, Element::coil("%QX0.1"));
+    e.ladder().clone()
+}
+
+#[test]
+fn a_ladder_box_reads_a_blocks_output() {
+    use engine::events::InputValue;
+    use engine::ladder::compile::{compile, Options};
+    use engine::plc::Command;
+    use engine::{MachineId, SimTime};
+    let ladder = counter_and_comparison();
+    let il = compile(&ladder, MachineId::SoftPlc, Options::default())
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    assert!(il.contains("c0.CV"), "{il}");
+    let mut plc = engine::machines::new_plc(MachineId::SoftPlc);
+    plc.load_text(&il).unwrap_or_else(|e| panic!("{e}\n{il}"));
+    let input = plc.device("%IX0.0").expect("the input");
+    let out = plc.device("%QX0.1").expect("the output");
+    let mut t = 0;
+    for press in [1, 0, 1, 0] {
+        plc.apply(Command::SetInput(input, InputValue::Int(press)))
+            .expect("input");
+        t += 50;
+        plc.run_until(SimTime::from_millis(t));
+        // On once the count passes 1: after the second press.
+        let want = i64::from(t >= 150);
+        assert_eq!(plc.read(out).as_i64(), want, "at {t} ms\n{il}");
+    }
+}
