@@ -566,7 +566,10 @@ mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the
 /// text's own function blocks give).
-fn read(text: &str, blocks: &[String]) -> Result<(Vec<(Variable, usize)>, Vec<Line>), Errors> {
+/// Declarations, each with its line.
+type Declared = Vec<(Variable, usize)>;
+
+fn read(text: &str, blocks: &[String]) -> Result<(Declared, Vec<Line>), Errors> {
     let vars = parse_vars_at(text, blocks).map_err(|es| {
         es.into_iter()
             .map(|e| Located::new(e.line, LoadError::Var(e.error)))

@@ -191,7 +191,10 @@ fn the_listing_of_untyped_literals_loads_back_the_same() {
 fn a_time_literal_past_times_range_is_refused_at_its_line() {
     let text = "VAR\n  t : TIME;\nEND_VAR\nLD T#106752d\nST t";
     let why = refused_at(text, 4);
-    assert!(why.contains("`T#106752d` is out of range for TIME"), "{why}");
+    assert!(
+        why.contains("`T#106752d` is out of range for TIME"),
+        "{why}"
+    );
     // 2^63 ns, one past the greatest TIME: it was saturated.
     let text = "VAR\n  t : TIME;\nEND_VAR\nLD T#106751d23h47m16s854ms775us808ns\nST t";
     assert!(refused_at(text, 4).contains("out of range for TIME"));
