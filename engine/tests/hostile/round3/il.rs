@@ -432,3 +432,73 @@ fn a_ladder_box_reads_a_blocks_output() {
         assert_eq!(plc.read(out).as_i64(), want, "at {t} ms\n{il}");
     }
 }
+
+// The CLI: a program written as IL tools write it runs; a literal that
+// does not fit is said at its own line.
+
+fn cli(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = crate::common::hashigo(args, "");
+    (
+        out.status.code(),
+        crate::common::text(&out.stdout),
+        crate::common::text(&out.stderr),
+    )
+}
+
+#[test]
+fn the_cli_runs_untyped_literals_and_block_outputs() {
+    let dir = crate::common::Temp::new("round3-il-run");
+    let program = dir.file(
+        "count.il",
+        "PROGRAM count\nVAR\n  c0 : CTU;\n  n AT %MW0 : INT;\nEND_VAR\n\
+         CAL c0(CU := %IX0.0, PV := 2)\nLD c0.CV\nADD 40\nST %MW0\n\
+         LD c0.Q\nST %QX0.0\nEND_PROGRAM\n",
+    );
+    let events = dir.file(
+        "events.csv",
+        "10ms,%IX0.0,1\n30ms,%IX0.0,0\n50ms,%IX0.0,1\n",
+    );
+    let (code, out, err) = cli(&[
+        "run",
+        "--machine",
+        "soft-plc",
+        "--program",
+        &program,
+        "--input",
+        &events,
+        "--until",
+        "100ms",
+        "--every",
+        "100ms",
+        "--watch",
+        "%MW0,%QX0.0",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    // No scan has run at 0 ms (the first ends one period after power-on).
+    assert_eq!(out, "time_ms,%MW0,%QX0.0\n0,0,0\n100,42,1\n");
+}
+
+#[test]
+fn the_cli_says_a_literal_that_does_not_fit_at_its_line() {
+    let dir = crate::common::Temp::new("round3-il-literal");
+    let program = dir.file(
+        "big.il",
+        "VAR\n  i : INT;\nEND_VAR\nLD 40000\nADD 2\nST i\n",
+    );
+    let (code, _, err) = cli(&[
+        "run",
+        "--machine",
+        "soft-plc",
+        "--program",
+        &program,
+        "--until",
+        "10ms",
+        "--watch",
+        "i",
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert_eq!(
+        err.trim_end(),
+        format!("error: {program}:4: `40000` is out of range for INT")
+    );
+}
