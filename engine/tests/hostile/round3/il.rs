@@ -502,3 +502,34 @@ fn the_cli_says_a_literal_that_does_not_fit_at_its_line() {
         format!("error: {program}:4: `40000` is out of range for INT")
     );
 }
+
+#[test]
+fn a_box_reading_a_blocks_output_loads_back_as_a_ladder() {
+    use engine::ladder::compile::{compile, Options};
+    use engine::MachineId;
+    let il = compile(
+        &counter_and_comparison(),
+        MachineId::SoftPlc,
+        Options::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e:?}"));
+    let back = engine::ladder::decompile::decompile_text(MachineId::SoftPlc, &il, 10)
+        .unwrap_or_else(|e| panic!("{e:?}\n{il}"));
+    let again = compile(&back, MachineId::SoftPlc, Options::default())
+        .unwrap_or_else(|e| panic!("{e:?}\n{il}"));
+    // The same code (the declarations may come in another order).
+    let code = |t: &str| t.split_once("END_VAR").map(|(_, c)| c.to_string());
+    assert_eq!(code(&again), code(&il), "{again}");
+    let boxes: Vec<String> = back
+        .rungs
+        .iter()
+        .flat_map(|r| r.elements().filter_map(|(_, e)| e.block().cloned()))
+        .map(|b| format!("{} {:?}", b.kind(), b.inputs))
+        .collect();
+    assert!(
+        boxes
+            .iter()
+            .any(|b| b.starts_with("GT") && b.contains("c0.CV")),
+        "{boxes:?}"
+    );
+}
