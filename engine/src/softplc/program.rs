@@ -376,15 +376,18 @@ impl Program {
             Operand::Text(t) => string_value(t)
                 .map(Src::Const)
                 .map_err(|e| LoadError::Type(e.to_string())),
+            // `instance.output`: only a block's outputs are read so (the
+            // front ends' `c0.count` names reach inside; IL does not).
+            Operand::Name(n) if n.contains('.') => match n.split_once('.') {
+                Some((instance, pin)) => self.output_slot(instance, pin),
+                None => Err(LoadError::Undeclared(n.clone())),
+            },
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
                 Some(_) => Err(LoadError::Type(format!(
                     "`{n}` is a block instance, not a value: read one of its outputs (`{n}.Q`)"
                 ))),
-                None => match n.split_once('.') {
-                    Some((instance, pin)) => self.output_slot(instance, pin),
-                    None => Err(LoadError::Undeclared(n.clone())),
-                },
+                None => Err(LoadError::Undeclared(n.clone())),
             },
             Operand::Address(a) => {
                 if let Some(&s) = self.by_address.get(a) {

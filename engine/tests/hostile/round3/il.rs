@@ -333,13 +333,19 @@ fn a_blocks_output_is_read_not_written_and_must_exist() {
 
 #[test]
 fn il_reads_an_output_of_the_programs_own_block() {
-    let mut p = load(
-        "FUNCTION_BLOCK Twice\nVAR_INPUT\n  i : INT;\nEND_VAR\nVAR_OUTPUT\n  o : INT;\n\
-         END_VAR\nVAR\n  hidden : INT;\nEND_VAR\nLD i\nMUL 2\nST o\nEND_FUNCTION_BLOCK\n\
-         VAR\n  t : Twice;\n  n : INT;\nEND_VAR\nCAL t(i := 21)\nLD t.o\nST n",
-    );
+    let text_with = |code: &str| {
+        format!(
+            "FUNCTION_BLOCK Twice\nVAR_INPUT\n  i : INT;\nEND_VAR\nVAR_OUTPUT\n  o : INT;\n\
+             END_VAR\nVAR\n  hidden : INT;\nEND_VAR\nLD i\nMUL 2\nST o\nEND_FUNCTION_BLOCK\n\
+             VAR\n  t : Twice;\n  n : INT;\nEND_VAR\nCAL t(i := 21)\n{code}"
+        )
+    };
+    let mut p = load(&text_with("LD t.o\nST n"));
     p.scan(0);
     assert_eq!(p.value("n"), int(DataType::Int, 42));
+    // Its inside is its own: only outputs are read.
+    let why = refused_at(&text_with("LD t.hidden\nST n"), 20);
+    assert!(why.contains("Twice has no output `hidden`"), "{why}");
 }
 
 // 43.11: nested instances of the program's own blocks.
