@@ -431,6 +431,39 @@ pub fn text_literal(text: &str) -> String {
 }
 
 #[cfg(test)]
+mod time_tests {
+    use super::{parse_literal, Data, DataType, LiteralError};
+
+    fn ns(text: &str) -> Result<Data, LiteralError> {
+        parse_literal(text, Some(DataType::Time))
+    }
+
+    #[test]
+    fn a_time_is_summed_in_whole_nanoseconds() {
+        assert_eq!(ns("T#1.5ns"), Ok(Data::Time(2)), "halves up");
+        assert_eq!(ns("T#1.0000000005s"), Ok(Data::Time(1_000_000_001)));
+        assert_eq!(ns("T#0.1s"), Ok(Data::Time(100_000_000)));
+        assert_eq!(ns("T#1d1ns"), Ok(Data::Time(86_400_000_000_001)));
+        assert_eq!(
+            ns("T#9223372036854775807ns"),
+            Ok(Data::Time(i64::MAX)),
+            "exact at the top"
+        );
+        assert!(matches!(
+            ns("T#9223372036854775808ns"),
+            Err(LiteralError::OutOfRange { .. })
+        ));
+        assert!(matches!(
+            ns("T#99999999999999999999999d"),
+            Err(LiteralError::OutOfRange { .. })
+        ));
+        for bad in ["T#1.2.3s", "T#s", "T#1s1s", "T#1ms1s", "T#_1s", "T#"] {
+            assert!(matches!(ns(bad), Err(LiteralError::BadTime(_))), "{bad}");
+        }
+    }
+}
+
+#[cfg(test)]
 mod text_tests {
     use super::{parse_text, text_literal};
 
