@@ -265,6 +265,9 @@ proptest::proptest! {
             "END_VAR", "  x : BOOL;", "  n : INT;", "  f : F;", "  t : TON;",
             "LD x", "ST x", "CAL f(x := TRUE, n => n)", "CAL f", "LD n", "ADD 1", "ST n",
             "RET", "l: LD x", "JMPC l", "(* a", "b *)", "PROGRAM p", "END_PROGRAM",
+            "LD 40000", "ADD 2", "GT 3", "MAX 5", "SEL 1, 2", "INT_TO_DINT", "LD t.Q",
+            "ADD( 7", ")", "LD f.n", "ST t.Q", "CAL t(IN := x, IN := x)", "CAL t(,)",
+            "  w : WORD;", "ST w", "LD -1", "SHL 40", "NOT",
         ]), 0..24)
     ) {
         let text = pieces.join("\n");
