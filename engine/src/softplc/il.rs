@@ -502,7 +502,8 @@ fn operand(text: &str) -> Result<Operand, IlError> {
         || text.eq_ignore_ascii_case("TRUE")
         || text.eq_ignore_ascii_case("FALSE");
     if literal_like {
-        if let Some(v) = untyped_integer(text) {
+        // Below LINT's least no type holds it: refused as a LINT.
+        if let Some(v) = untyped_integer(text).filter(|&v| v >= i128::from(i64::MIN)) {
             return Ok(Operand::Number(v));
         }
         return parse_literal(text, None)

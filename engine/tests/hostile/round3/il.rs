@@ -168,6 +168,8 @@ fn an_untyped_literal_that_does_not_fit_its_use_is_refused_at_its_line() {
         ("LD -1\nST u", 6),
         ("LD i\nADD 70000\nST i", 7),
         ("CAL c(PV := 40000)", 6),
+        // No type holds it, whatever its use.
+        ("LD -18446744073709551615\nGT 0\nST i", 6),
     ] {
         let text = format!("{head}{code}");
         let why = refused_at(&text, line);
