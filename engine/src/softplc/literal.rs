@@ -44,7 +44,10 @@ impl fmt::Display for LiteralError {
                 write!(f, "`{t}` is not a duration (e.g. T#500ms, T#1h2m3.5s)")
             }
             LiteralError::WrongType { text, expected } => {
-                write!(f, "`{text}` is not a {} value", expected.name())
+                // "an INT"; every other name starts with a consonant's
+                // sound (UINT is "you-int").
+                let article = if *expected == DataType::Int { "an" } else { "a" };
+                write!(f, "`{text}` is not {article} {} value", expected.name())
             }
             LiteralError::TooLong(n) => write!(
                 f,

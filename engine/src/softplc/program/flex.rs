@@ -160,6 +160,14 @@ impl Program {
                 Some(d) => d.map(Src::Const).map_err(|e| e.error),
                 None => Ok(Program::number(*v)),
             },
+            // A typed literal keeps its type: where another is needed it
+            // is refused, whether or not its value would fit.
+            Operand::Literal(d) if d.data_type() != want => Err(LoadError::Il(
+                crate::softplc::il::IlError::Literal(LiteralError::WrongType {
+                    text: d.to_string(),
+                    expected: want,
+                }),
+            )),
             _ => self.slot(operand),
         }
     }

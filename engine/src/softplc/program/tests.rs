@@ -393,7 +393,7 @@ fn a_string_is_refused_where_it_does_not_fit_saying_so() {
     );
     assert_eq!(
         said("VAR\n  n : INT := 'a';\nEND_VAR\n"),
-        [(2, "`'a'` is not a INT value".to_string())]
+        [(2, "`'a'` is not an INT value".to_string())]
     );
     assert_eq!(
         said("VAR\n  s AT %MD0 : STRING;\nEND_VAR\n")[0].0,

@@ -122,6 +122,10 @@ fn a_typed_literal_of_another_type_is_refused_even_when_it_fits() {
         let why = refused_at(&text, line);
         assert!(why.contains("INT"), "{code}: {why}");
     }
+    let why = refused_at(&format!("{head}LD d\nADD INT#5\nST d"), 8);
+    assert_eq!(why, "`INT#5` is not a DINT value");
+    let why = refused_at(&format!("{head}CAL c(CU := b, PV := DINT#5)"), 7);
+    assert_eq!(why, "`DINT#5` is not an INT value");
 }
 
 #[test]
