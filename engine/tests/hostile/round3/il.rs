@@ -545,3 +545,30 @@ fn a_box_reading_a_blocks_output_loads_back_as_a_ladder() {
         "{boxes:?}"
     );
 }
+
+/// A PLCopen FBD body that reads a counter's CV by name (an
+/// `inVariable` `c0.CV`) into a comparison.
+const READS_CV: &str = include_str!("../fixtures/reads-cv.xml");
+
+#[test]
+fn a_plcopen_body_reads_a_blocks_output_by_name() {
+    use engine::events::InputValue;
+    use engine::plc::Command;
+    use engine::{MachineId, SimTime};
+    let program =
+        engine::ladder::plcopen::soft::to_il(READS_CV, None).unwrap_or_else(|e| panic!("{e:?}"));
+    assert!(program.text.contains("c0.CV"), "{}", program.text);
+    let mut plc = engine::machines::new_plc(MachineId::SoftPlc);
+    plc.load_text(&program.text)
+        .unwrap_or_else(|e| panic!("{e}\n{}", program.text));
+    let run = plc.device("%IX0.0").expect("run");
+    let lamp = plc.device("%QX0.0").expect("lamp");
+    let mut t = 0;
+    for press in [1, 0, 1, 0] {
+        plc.apply(Command::SetInput(run, InputValue::Int(press)))
+            .expect("input");
+        t += 50;
+        plc.run_until(SimTime::from_millis(t));
+        assert_eq!(plc.read(lamp).as_i64(), i64::from(t >= 150), "at {t} ms");
+    }
+}
