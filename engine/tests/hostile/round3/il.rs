@@ -132,7 +132,7 @@ fn a_typed_literal_of_another_type_is_refused_even_when_it_fits() {
 fn untyped_literals_take_the_type_their_use_needs() {
     let mut p = load(
         "VAR\n  w AT %MW0 : INT;\n  u : UINT;\n  big : ULINT;\n  b : BOOL;\n  \
-         g : BOOL;\n  r : REAL;\n  c : CTU;\n  k : WORD;\n  n : INT := 7;\nEND_VAR\n\
+         g : BOOL;\n  r : REAL;\n  c : CTU;\n  k : WORD;\n  n : INT := 7;\n  d : DINT;\n  v : UINT;\nEND_VAR\n\
          LD 40\nADD 2\nST %MW0\n\
          LD 0\nST u\n\
          LD 18446744073709551615\nST big\n\
@@ -140,7 +140,10 @@ fn untyped_literals_take_the_type_their_use_needs() {
          LD 3\nADD 4\nMUL n\nGT 40\nST g\n\
          LD 2\nADD r\nST r\n\
          LD 16#FFFF\nNOT\nST k\n\
-         CAL c(CU := TRUE, PV := 1)",
+         CAL c(CU := TRUE, PV := 1)\n\
+         LD 70\nLIMIT 0, 50\nST n\n\
+         LD TRUE\nSEL 1, 65535\nST v\n\
+         LD 2\nMAX n\nDIV 10\nINT_TO_DINT\nST d",
     );
     p.scan(0);
     assert_eq!(p.value("w"), int(DataType::Int, 42));
@@ -150,6 +153,9 @@ fn untyped_literals_take_the_type_their_use_needs() {
     assert_eq!(p.value("g"), Some(Data::Bool(true)), "(3 + 4) * 7 > 40");
     assert_eq!(p.value("r"), Some(Data::Real(2.0)));
     assert_eq!(p.value("k"), int(DataType::Word, 0));
+    assert_eq!(p.value("n"), int(DataType::Int, 50), "LIMIT's inputs");
+    assert_eq!(p.value("v"), int(DataType::Uint, 65535), "SEL's inputs");
+    assert_eq!(p.value("d"), int(DataType::Dint, 5), "MAX(2, 50) / 10");
 }
 
 #[test]
