@@ -578,3 +578,22 @@ fn a_plcopen_body_reads_a_blocks_output_by_name() {
         assert_eq!(plc.read(lamp).as_i64(), i64::from(t >= 150), "at {t} ms");
     }
 }
+
+#[test]
+fn a_box_reading_a_blocks_output_is_exported_and_opened_again() {
+    use engine::ladder::plcopen::{export, import_for};
+    use engine::MachineId;
+    let ladder = counter_and_comparison();
+    let xml = export(&ladder, "Main").unwrap_or_else(|e| panic!("{e:?}"));
+    assert!(xml.contains("<expression>c0.CV</expression>"), "{xml}");
+    let back =
+        import_for(&xml, Some(MachineId::SoftPlc)).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+    let logic = |l: &engine::ladder::Ladder| {
+        engine::ladder::edit::align_outputs(l, 9)
+            .logic(MachineId::SoftPlc)
+            .expect("reads")
+    };
+    assert_eq!(logic(&back), logic(&ladder));
+    // And the project as written runs it.
+    engine::ladder::plcopen::soft::to_il(&xml, None).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+}
