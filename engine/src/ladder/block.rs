@@ -194,7 +194,10 @@ impl BlockCall {
                 // An LDmicro formatted string's text: '…'.
                 crate::softplc::literal::parse_text(operand.trim())
                     .map_err(|_| BoxError::BadOperand(operand.clone()))?;
-            } else if !is_variable(operand) && parse_literal(operand, None).is_err() {
+            } else if !is_variable(operand)
+                && !is_block_output(operand)
+                && parse_literal(operand, None).is_err()
+            {
                 return Err(BoxError::BadOperand(operand.clone()));
             }
         }
@@ -276,6 +279,14 @@ impl BlockCall {
         }
         out
     }
+}
+
+/// Whether `text` reads a block instance's output (`c0.CV`, `t0.Q`): an
+/// operand, never a box's output.
+pub fn is_block_output(text: &str) -> bool {
+    text.trim()
+        .split_once('.')
+        .is_some_and(|(instance, pin)| is_identifier(instance) && is_identifier(pin))
 }
 
 /// Whether `text` names a variable or a located address.

@@ -8,15 +8,16 @@
 use super::data::DataType;
 
 /// The least and greatest count of an INT counter.
-pub(super) const COUNT_MIN: i64 = i16::MIN as i64;
-pub(super) const COUNT_MAX: i64 = i16::MAX as i64;
+pub(super) const COUNT_MIN: i128 = i16::MIN as i128;
+pub(super) const COUNT_MAX: i128 = i16::MAX as i128;
 
 /// A counter's limits: the least and greatest value of its count type
-/// (a ULINT counter stops at 2^63 - 1, which no simulation reaches).
+/// (held in an `i128`, so a ULINT counter's whole range is one: a PV of
+/// 2^63 or more is not read as a negative number).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
-    pub min: i64,
-    pub max: i64,
+    pub min: i128,
+    pub max: i128,
 }
 
 impl Default for Limits {
@@ -31,13 +32,8 @@ impl Default for Limits {
 impl Limits {
     /// The limits of a count of type `t` (an integer type).
     pub fn of(t: DataType) -> Limits {
-        let (lo, hi) = t
-            .range()
-            .unwrap_or((i128::from(COUNT_MIN), i128::from(COUNT_MAX)));
-        Limits {
-            min: i64::try_from(lo).unwrap_or(i64::MIN),
-            max: i64::try_from(hi).unwrap_or(i64::MAX),
-        }
+        let (min, max) = t.range().unwrap_or((COUNT_MIN, COUNT_MAX));
+        Limits { min, max }
     }
 }
 
@@ -134,7 +130,7 @@ impl Tp {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Ctu {
     pub q: bool,
-    pub cv: i64,
+    pub cv: i128,
     last_cu: bool,
     pub limits: Limits,
 }
@@ -148,7 +144,7 @@ impl Ctu {
         }
     }
 
-    pub fn call(&mut self, cu: bool, reset: bool, pv: i64) {
+    pub fn call(&mut self, cu: bool, reset: bool, pv: i128) {
         let rising = cu && !self.last_cu;
         self.last_cu = cu;
         if reset {
@@ -165,7 +161,7 @@ impl Ctu {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Ctd {
     pub q: bool,
-    pub cv: i64,
+    pub cv: i128,
     last_cd: bool,
     pub limits: Limits,
 }
@@ -179,7 +175,7 @@ impl Ctd {
         }
     }
 
-    pub fn call(&mut self, cd: bool, load: bool, pv: i64) {
+    pub fn call(&mut self, cd: bool, load: bool, pv: i128) {
         let rising = cd && !self.last_cd;
         self.last_cd = cd;
         if load {
@@ -198,7 +194,7 @@ impl Ctd {
 pub struct Ctud {
     pub qu: bool,
     pub qd: bool,
-    pub cv: i64,
+    pub cv: i128,
     last_cu: bool,
     last_cd: bool,
     pub limits: Limits,
@@ -213,7 +209,7 @@ impl Ctud {
         }
     }
 
-    pub fn call(&mut self, cu: bool, cd: bool, reset: bool, load: bool, pv: i64) {
+    pub fn call(&mut self, cu: bool, cd: bool, reset: bool, load: bool, pv: i128) {
         let up = cu && !self.last_cu;
         let down = cd && !self.last_cd;
         self.last_cu = cu;

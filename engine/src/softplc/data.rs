@@ -286,26 +286,30 @@ impl Data {
         }
     }
 
-    /// SHL, SHR, ROL, ROR of an integer's bits in its width by `n`: shifts
-    /// fill with zeros (SHR too, on a signed type: it moves bits, it does
-    /// not divide) and give 0 from `n` ≥ the width; rotations take `n`
-    /// modulo the width. `None` for other types.
-    pub fn shift(&self, op: Shift, n: u32) -> Option<Data> {
+    /// SHL, SHR, ROL, ROR of an integer's bits in its width by the
+    /// integer `n` (any integer type, its whole value): shifts fill with
+    /// zeros (SHR too, on a signed type: it moves bits, it does not
+    /// divide) and give 0 from `n` ≥ the width, or for a negative `n`;
+    /// rotations take `n` modulo the width (ROL by −1 is ROR by 1).
+    /// `None` for other types.
+    pub fn shift(&self, op: Shift, n: &Data) -> Option<Data> {
         let Data::Int(t, v) = *self else {
             return None;
         };
         let bits = t.bits()?;
+        let n = n.int()?;
         let pattern = v as u64 & mask_bits(bits);
         let moved = match op {
-            Shift::Shl if n >= bits => 0,
-            Shift::Shr if n >= bits => 0,
+            Shift::Shl | Shift::Shr if !(0..i128::from(bits)).contains(&n) => 0,
             Shift::Shl => pattern << n,
             Shift::Shr => pattern >> n,
             Shift::Rol | Shift::Ror => {
+                // In 0 … width − 1: the cast cannot lose anything.
+                let r = n.rem_euclid(i128::from(bits)) as u32;
                 let n = if op == Shift::Rol {
-                    n % bits
+                    r
                 } else {
-                    (bits - n % bits) % bits
+                    (bits - r) % bits
                 };
                 if n == 0 {
                     pattern

@@ -23,7 +23,7 @@ use std::fmt;
 
 use super::address::{Address, AddressError};
 use super::data::{Data, DataType};
-use super::literal::{parse_literal, LiteralError};
+use super::literal::{parse_literal, untyped_integer, LiteralError};
 use super::vars::is_identifier;
 use crate::error::Located;
 
@@ -183,10 +183,16 @@ impl Operator {
 /// What an operator works on.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Operand {
-    /// A declared name (or, for JMP, a label).
+    /// A declared name (or, for JMP, a label), or a block instance's
+    /// output (`t0.Q`, `c0.CV`).
     Name(String),
     Address(Address),
+    /// A typed literal (`INT#5`, `T#1s`, `TRUE`, `1.5`): its type is its own.
     Literal(Data),
+    /// An untyped integer literal (`42`, `16#FF`): it takes the type its
+    /// use needs (a DINT, or a LINT when it needs 64 bits, where no use
+    /// gives one).
+    Number(i128),
     /// A string literal's text (`'Hello $R$N'` read): only an LDmicro
     /// formatted string's `FMT` takes one.
     Text(String),
@@ -234,6 +240,12 @@ pub enum IlError {
         label: String,
         first: usize,
     },
+    /// A second `PROGRAM` in one text (the first on the line given).
+    SecondProgram(usize),
+    /// A call's input named twice.
+    TwiceGiven(String),
+    /// A call's parameter list with an empty place (`CAL t(IN := a, )`).
+    EmptyParameter,
 }
 
 impl fmt::Display for IlError {
@@ -253,6 +265,14 @@ impl fmt::Display for IlError {
             IlError::DuplicateLabel { label, first } => {
                 write!(f, "label `{label}` is used twice (first on line {first})")
             }
+            IlError::SecondProgram(first) => write!(
+                f,
+                "a second PROGRAM: one text holds one program (the first starts on line {first})"
+            ),
+            IlError::TwiceGiven(p) => write!(f, "the input `{p}` is given twice"),
+            IlError::EmptyParameter => {
+                f.write_str("an empty parameter: write each as name := value or name => variable")
+            }
         }
     }
 }
@@ -266,6 +286,7 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     let mut lines: Vec<Line> = Vec::new();
     let mut errors = Vec::new();
     let mut in_vars = false;
+    let mut first_program = None;
     // Each label (upper-case) and the line it is first on.
     let mut labels: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     let text = super::comments::blank_long_comments(text);
@@ -286,12 +307,18 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
             in_vars = false;
             continue;
         }
-        // The optional `PROGRAM name … END_PROGRAM` wrapper.
-        let wrapper = upper == "END_PROGRAM"
-            || upper
-                .strip_prefix("PROGRAM")
-                .is_some_and(|rest| rest.starts_with(char::is_whitespace));
-        if in_vars || code.is_empty() || wrapper {
+        // The optional `PROGRAM name … END_PROGRAM` wrapper: one.
+        let program = upper
+            .strip_prefix("PROGRAM")
+            .is_some_and(|rest| rest.starts_with(char::is_whitespace));
+        if program && !in_vars {
+            match first_program {
+                Some(first) => errors.push(Located::new(number, IlError::SecondProgram(first))),
+                None => first_program = Some(number),
+            }
+            continue;
+        }
+        if in_vars || code.is_empty() || upper == "END_PROGRAM" {
             continue;
         }
         match line(code, number) {
@@ -475,72 +502,27 @@ fn operand(text: &str) -> Result<Operand, IlError> {
         || text.eq_ignore_ascii_case("TRUE")
         || text.eq_ignore_ascii_case("FALSE");
     if literal_like {
+        // Below LINT's least no type holds it: refused as a LINT.
+        if let Some(v) = untyped_integer(text).filter(|&v| v >= i128::from(i64::MIN)) {
+            return Ok(Operand::Number(v));
+        }
         return parse_literal(text, None)
             .map(Operand::Literal)
             .map_err(IlError::Literal);
     }
-    if is_identifier(text) {
+    let output = text
+        .split_once('.')
+        .is_some_and(|(instance, pin)| is_identifier(instance) && is_identifier(pin));
+    if is_identifier(text) || output {
         Ok(Operand::Name(text.to_string()))
     } else {
         Err(IlError::BadName(text.to_string()))
     }
 }
 
-/// `instance` or `instance(IN := a, PT := T#1s, Q => b)`.
-fn call(text: &str, out: &mut Line) -> Result<(), IlError> {
-    let bad = || IlError::BadCall(text.to_string());
-    let (name, params) = match text.split_once('(') {
-        Some((n, p)) => (n.trim(), Some(p.trim().strip_suffix(')').ok_or_else(bad)?)),
-        None => (text.trim(), None),
-    };
-    if !is_identifier(name) {
-        return Err(bad());
-    }
-    out.operand = Some(Operand::Name(name.to_string()));
-    for param in params.into_iter().flat_map(split_params).map(str::trim) {
-        if param.is_empty() {
-            continue;
-        }
-        if let Some((formal, value)) = param.split_once(":=") {
-            let formal = formal.trim();
-            if !is_identifier(formal) {
-                return Err(bad());
-            }
-            out.inputs
-                .push((formal.to_string(), operand(value.trim())?));
-        } else if let Some((formal, target)) = param.split_once("=>") {
-            let (formal, target) = (formal.trim(), target.trim());
-            if !is_identifier(formal) || !is_identifier(target) {
-                return Err(bad());
-            }
-            out.outputs.push((formal.to_string(), target.to_string()));
-        } else {
-            return Err(bad());
-        }
-    }
-    Ok(())
-}
-
-/// A call's parameters, split at the commas outside string literals.
-pub(crate) fn split_params(params: &str) -> Vec<&str> {
-    let mut out = Vec::new();
-    let (mut start, mut quoted, mut escaped) = (0, false, false);
-    for (i, c) in params.char_indices() {
-        match c {
-            // `$'` in a literal is a quote, not its end.
-            _ if escaped => escaped = false,
-            '$' if quoted => escaped = true,
-            '\'' => quoted = !quoted,
-            ',' if !quoted => {
-                out.push(&params[start..i]);
-                start = i + 1;
-            }
-            _ => {}
-        }
-    }
-    out.push(&params[start..]);
-    out
-}
+mod call;
+use call::call;
+pub(crate) use call::split_params;
 
 #[cfg(test)]
 mod tests;

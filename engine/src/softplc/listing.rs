@@ -48,6 +48,7 @@ impl fmt::Display for Operand {
             // its place: the same value either way.
             Operand::Literal(Data::Int(DataType::Dint, v)) => write!(f, "{v}"),
             Operand::Literal(d) => d.fmt(f),
+            Operand::Number(v) => write!(f, "{v}"),
             Operand::Text(t) => f.write_str(&super::literal::text_literal(t)),
         }
     }

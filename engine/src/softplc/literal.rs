@@ -27,6 +27,8 @@ pub enum LiteralError {
     BadText(String),
     /// A string literal of more characters (given) than a STRING holds.
     TooLong(usize),
+    /// A character a STRING's one byte cannot hold (above U+00FF).
+    WideChar(char),
 }
 
 impl fmt::Display for LiteralError {
@@ -42,11 +44,19 @@ impl fmt::Display for LiteralError {
                 write!(f, "`{t}` is not a duration (e.g. T#500ms, T#1h2m3.5s)")
             }
             LiteralError::WrongType { text, expected } => {
-                write!(f, "`{text}` is not a {} value", expected.name())
+                // "an INT"; every other name starts with a consonant's
+                // sound (UINT is "you-int").
+                let article = if *expected == DataType::Int { "an" } else { "a" };
+                write!(f, "`{text}` is not {article} {} value", expected.name())
             }
             LiteralError::TooLong(n) => write!(
                 f,
                 "a STRING holds at most {STRING_CAPACITY} characters; this text has {n}"
+            ),
+            LiteralError::WideChar(c) => write!(
+                f,
+                "`{c}` (U+{:04X}) is not a one-byte character: a STRING holds U+0000 … U+00FF",
+                u32::from(*c)
             ),
             LiteralError::BadText(t) => write!(
                 f,
@@ -100,9 +110,7 @@ pub fn parse_literal(text: &str, expected: Option<DataType>) -> Result<Data, Lit
     }
     let t = typed.or(expected);
     let value = match t {
-        Some(DataType::Time) => {
-            Data::Time(time(body).ok_or_else(|| LiteralError::BadTime(text.into()))?)
-        }
+        Some(DataType::Time) => Data::Time(time(body, text)?),
         Some(DataType::Bool) => match body.to_ascii_uppercase().as_str() {
             "TRUE" | "1" => Data::Bool(true),
             "FALSE" | "0" => Data::Bool(false),
@@ -144,7 +152,8 @@ fn untyped(text: &str, body: &str) -> Result<Data, LiteralError> {
         text: text.to_string(),
         data_type: DataType::Lint,
     };
-    let digits = body.trim_start_matches(['-', '+']);
+    // One sign at most: `--5` is not a number.
+    let digits = body.strip_prefix(['-', '+']).unwrap_or(body);
     let v = match integer(body) {
         Some(v) => v,
         // All digits, yet no integer: more than 64 bits hold.
@@ -159,6 +168,20 @@ fn untyped(text: &str, body: &str) -> Result<Data, LiteralError> {
     in_range(DataType::Dint, v)
         .or_else(|| in_range(DataType::Lint, v))
         .ok_or_else(too_big)
+}
+
+/// The value of an untyped integer literal (`42`, `-5`, `16#FF`,
+/// `1_000`), which takes the type of its use; `None` for any other text
+/// (a typed, decimal, time, BOOL or bad literal).
+pub fn untyped_integer(text: &str) -> Option<i128> {
+    let text = text.trim();
+    let typed = text
+        .split_once('#')
+        .is_some_and(|(prefix, _)| prefix.chars().all(|c| c.is_ascii_alphabetic()));
+    if typed {
+        return None;
+    }
+    integer(text)
 }
 
 /// A STRING literal, where the place takes one.
@@ -180,6 +203,9 @@ fn string(text: &str, expected: Option<DataType>) -> Result<Data, LiteralError> 
 /// more characters than a STRING holds.
 pub fn string_value(text: impl Into<String>) -> Result<Data, LiteralError> {
     let text = text.into();
+    if let Some(c) = text.chars().find(|&c| u32::from(c) > 0xFF) {
+        return Err(LiteralError::WideChar(c));
+    }
     match text.chars().count() {
         n if n > STRING_CAPACITY => Err(LiteralError::TooLong(n)),
         _ => Ok(Data::text(text)),
@@ -252,46 +278,93 @@ fn underscores_between_digits(s: &str) -> bool {
     })
 }
 
-/// A duration in nanoseconds: an optional sign, then one or more
-/// number-unit pairs, largest unit first (`1h2m3.5s`, `500ms`, `1_000us`).
-fn time(s: &str) -> Option<i64> {
+/// A duration in nanoseconds (of the literal `text`): an optional sign,
+/// then one or more number-unit pairs, largest unit first (`1h2m3.5s`,
+/// `500ms`, `1_000us`). Summed exactly in integers (a fraction rounded
+/// to the nearest nanosecond, halves up); past TIME's range it is
+/// refused, not saturated.
+fn time(s: &str, text: &str) -> Result<i64, LiteralError> {
+    let bad = || LiteralError::BadTime(text.to_string());
     let (negative, mut rest) = match s.strip_prefix('-') {
         Some(r) => (true, r),
         None => (false, s.strip_prefix('+').unwrap_or(s)),
     };
-    const UNITS: [(&str, f64); 7] = [
-        ("d", 86_400e9),
-        ("h", 3_600e9),
-        ("ms", 1e6),
-        ("m", 60e9),
-        ("s", 1e9),
-        ("us", 1e3),
-        ("ns", 1.0),
+    const UNITS: [(&str, i128); 7] = [
+        ("d", 86_400_000_000_000),
+        ("h", 3_600_000_000_000),
+        ("ms", 1_000_000),
+        ("m", 60_000_000_000),
+        ("s", 1_000_000_000),
+        ("us", 1_000),
+        ("ns", 1),
     ];
-    let mut total = 0f64;
-    let mut last_scale = f64::INFINITY;
+    // Past i64 (either sign) is out of range; checked as it grows.
+    let limit = i128::from(i64::MAX) + 1;
+    let (mut total, mut last_scale) = (0i128, i128::MAX);
     while !rest.is_empty() {
         let end = rest
             .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_'))
-            .filter(|&e| e > 0)?;
-        let number: f64 = rest[..end].replace('_', "").parse().ok()?;
+            .filter(|&e| e > 0)
+            .ok_or_else(bad)?;
+        let number = &rest[..end];
         rest = &rest[end..];
         let &(unit, scale) = UNITS
             .iter()
-            .find(|(u, _)| rest.to_ascii_lowercase().starts_with(u))?;
+            .find(|(u, _)| rest.to_ascii_lowercase().starts_with(u))
+            .ok_or_else(bad)?;
         // Largest first, each unit once.
         if scale >= last_scale {
-            return None;
+            return Err(bad());
         }
         last_scale = scale;
         rest = &rest[unit.len()..];
-        total += number * scale;
+        total = total
+            .checked_add(scaled(number, scale).ok_or_else(bad)?)
+            .filter(|&t| t <= limit)
+            .ok_or_else(|| LiteralError::OutOfRange {
+                text: text.to_string(),
+                data_type: DataType::Time,
+            })?;
     }
-    if last_scale.is_infinite() || total > i64::MAX as f64 {
+    if last_scale == i128::MAX {
+        return Err(bad());
+    }
+    let ns = if negative { -total } else { total };
+    i64::try_from(ns).map_err(|_| LiteralError::OutOfRange {
+        text: text.to_string(),
+        data_type: DataType::Time,
+    })
+}
+
+/// `number` (digits, `_` between them, an optional fraction) times
+/// `scale`, exactly, the fraction rounded to the nearest unit; `None`
+/// when it is not a number, or past what any TIME holds (`u64`).
+fn scaled(number: &str, scale: i128) -> Option<i128> {
+    if !underscores_between_digits(number) || number.matches('.').count() > 1 {
         return None;
     }
-    let ns = total.round() as i64;
-    Some(if negative { -ns } else { ns })
+    let clean: String = number.chars().filter(|&c| c != '_').collect();
+    let (whole, fraction) = clean.split_once('.').unwrap_or((&clean, ""));
+    if whole.is_empty() && fraction.is_empty() {
+        return None;
+    }
+    let mut v: i128 = 0;
+    for d in whole.bytes() {
+        v = v.checked_mul(10)?.checked_add(i128::from(d - b'0'))?;
+        if v > i128::from(u64::MAX) {
+            // Out of range however it is scaled: far past TIME's.
+            return Some(i128::from(u64::MAX) * scale);
+        }
+    }
+    // Digits past the 18th cannot move a nanosecond (scale < 10^14).
+    let fraction = &fraction[..fraction.len().min(18)];
+    let mut f: i128 = 0;
+    for d in fraction.bytes() {
+        f = f * 10 + i128::from(d - b'0');
+    }
+    let denominator = 10i128.pow(fraction.len() as u32);
+    let part = (2 * f * scale + denominator) / (2 * denominator);
+    v.checked_mul(scale)?.checked_add(part)
 }
 
 /// A string literal `'…'` read (IEC 61131-3's single-byte strings: `$$`,
@@ -358,6 +431,39 @@ pub fn text_literal(text: &str) -> String {
     }
     out.push('\'');
     out
+}
+
+#[cfg(test)]
+mod time_tests {
+    use super::{parse_literal, Data, DataType, LiteralError};
+
+    fn ns(text: &str) -> Result<Data, LiteralError> {
+        parse_literal(text, Some(DataType::Time))
+    }
+
+    #[test]
+    fn a_time_is_summed_in_whole_nanoseconds() {
+        assert_eq!(ns("T#1.5ns"), Ok(Data::Time(2)), "halves up");
+        assert_eq!(ns("T#1.0000000005s"), Ok(Data::Time(1_000_000_001)));
+        assert_eq!(ns("T#0.1s"), Ok(Data::Time(100_000_000)));
+        assert_eq!(ns("T#1d1ns"), Ok(Data::Time(86_400_000_000_001)));
+        assert_eq!(
+            ns("T#9223372036854775807ns"),
+            Ok(Data::Time(i64::MAX)),
+            "exact at the top"
+        );
+        assert!(matches!(
+            ns("T#9223372036854775808ns"),
+            Err(LiteralError::OutOfRange { .. })
+        ));
+        assert!(matches!(
+            ns("T#99999999999999999999999d"),
+            Err(LiteralError::OutOfRange { .. })
+        ));
+        for bad in ["T#1.2.3s", "T#s", "T#1s1s", "T#1ms1s", "T#_1s", "T#"] {
+            assert!(matches!(ns(bad), Err(LiteralError::BadTime(_))), "{bad}");
+        }
+    }
 }
 
 #[cfg(test)]

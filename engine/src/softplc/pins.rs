@@ -145,10 +145,13 @@ impl Instance {
         matches!(self.inputs.get(i), Some(Data::Bool(true)))
     }
 
-    fn word_in(&self, i: usize) -> i64 {
+    /// Input `i` as a number: an integer's value (a ULINT's above 2^63
+    /// too), a TIME's nanoseconds.
+    fn word_in(&self, i: usize) -> i128 {
         match self.inputs.get(i) {
-            Some(Data::Int(_, v) | Data::Time(v)) => *v,
-            _ => 0,
+            Some(Data::Time(v)) => i128::from(*v),
+            Some(d) => d.int().unwrap_or(0),
+            None => 0,
         }
     }
 
@@ -161,7 +164,9 @@ impl Instance {
             self.bool_in(2),
             self.bool_in(3),
         );
-        let (w1, w2, w4) = (self.word_in(1), self.word_in(2), self.word_in(4));
+        let (w2, w4) = (self.word_in(2), self.word_in(4));
+        // A TIME's nanoseconds, or (LDmicro's STRING) an integer's bits.
+        let w1 = self.word_in(1) as i64;
         match &mut self.state {
             State::Ton(t) => t.call(b0, w1, now),
             State::Tof(t) => t.call(b0, w1, now),
@@ -193,7 +198,7 @@ impl Instance {
 
     /// Output `i` (in the order of [`outputs`]).
     pub fn output(&self, i: usize) -> Data {
-        let int = |v: i64| Data::integer(self.count, i128::from(v));
+        let int = |v: i128| Data::integer(self.count, v);
         match (&self.state, i) {
             (
                 State::Ton(Ton { q, .. }) | State::Tof(Tof { q, .. }) | State::Tp(Tp { q, .. }),

@@ -8,11 +8,12 @@ use std::fmt;
 use super::address::{Address, Area};
 use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
-use super::literal::{in_range, string_value};
+use super::literal::string_value;
 use super::pins::Instance;
-use super::vars::{parse_vars_with, Kind, VarError, Variable};
+use super::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::error::Located;
 use check::{binary_type, describe, invertible, jump, need_cr};
+use flex::{Flex, Flow, Open};
 
 /// Instructions one scan may run before it is cut short (a backward JMP
 /// that never ends): the scan ends there and [`Program::overran`] says so.
@@ -96,8 +97,13 @@ pub enum LoadError {
     /// CAL of something that is not a block instance, or a parameter it
     /// does not have.
     Call(String),
-    /// A `)` with no `(`, or a `(` never closed.
+    /// An instruction that needs the current result where it is not
+    /// known (after a label or a jump).
+    UnknownResult,
+    /// A `)` with no `(`.
     Unbalanced,
+    /// A `(` never closed (at its line).
+    Unclosed,
     /// The function blocks' sections do not pair.
     Pou(super::pou::PouError),
 }
@@ -113,7 +119,11 @@ impl fmt::Display for LoadError {
             }
             LoadError::NoLabel(l) => write!(f, "no line has the label `{l}`"),
             LoadError::Type(why) | LoadError::Call(why) => f.write_str(why),
+            LoadError::UnknownResult => f.write_str(
+                "the current result is not known here (after a label or a jump): start with LD",
+            ),
             LoadError::Unbalanced => f.write_str("`(` and `)` do not pair"),
+            LoadError::Unclosed => f.write_str("this `(` is never closed with `)`"),
             LoadError::Pou(e) => e.fmt(f),
         }
     }
@@ -151,6 +161,9 @@ pub struct Program {
     pub(super) entries: Vec<usize>,
     /// The serial port LDmicro's UART blocks use.
     pub(super) uart: super::uart::Uart,
+    /// The standard blocks' outputs read as operands: (block, output,
+    /// the slot each call writes it to).
+    pub(super) shadows: Vec<(usize, usize, usize)>,
 }
 
 /// What a declared name is.
@@ -193,16 +206,23 @@ impl Program {
             instances: Vec::new(),
             entries: Vec::new(),
             uart: super::uart::Uart::default(),
+            shadows: Vec::new(),
         };
         for b in &sections.blocks {
             let (vars, lines) = read(&b.text, &types)?;
+            let (vars, var_lines) = vars.into_iter().unzip();
             p.user_types.push(user::UserType {
                 name: b.name.clone(),
                 vars,
+                var_lines,
                 lines,
                 line: b.line,
             });
         }
+        // The instances' variables counted before any is made: said
+        // once, at the declaration that passes a limit, and nothing else.
+        p.budget(&vars).map_err(|e| vec![e])?;
+        let vars: Vec<Variable> = vars.into_iter().map(|(v, _)| v).collect();
         let mut errors = Vec::new();
         if let Err(e) = p.declare(&vars, "", 0) {
             errors.push(Located::new(1, e));
@@ -216,6 +236,7 @@ impl Program {
         if !errors.is_empty() {
             return Err(errors);
         }
+        p.wire_outputs();
         p.initial = p.values.clone();
         p.vars = vars;
         p.lines = lines;
@@ -232,28 +253,44 @@ impl Program {
     /// step they get); every error into `errors` at its line.
     fn compile_lines(&mut self, lines: &[Line], errors: &mut Errors) {
         let base = self.steps.len();
-        let mut cr: Option<DataType> = None;
-        let mut open: Vec<(Binary, Option<DataType>)> = Vec::new();
+        let mut flow = Flow::default();
         let labels: HashMap<String, usize> = lines
             .iter()
             .enumerate()
             .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), base + i)))
             .collect();
         for line in lines {
-            if line.label.is_some() {
-                cr = None;
+            if line.label.is_some() || line.operator == Operator::Ld {
+                flow.refused = false;
             }
-            match self.resolve(line, &labels, &mut cr, &mut open) {
+            if line.label.is_some() {
+                flow.cr = None;
+                flow.flex.clear();
+            }
+            match self.resolve(line, &labels, &mut flow) {
                 Ok(step) => self.steps.push(step),
                 Err(e) => {
-                    errors.push(Located::new(line.line, e));
+                    // After a refused line the current result is not
+                    // known: the lines that use it are not refused again
+                    // for that (no cascade), until an LD or a label.
+                    if !(flow.refused && e == LoadError::UnknownResult) {
+                        errors.push(Located::new(line.line, e));
+                    }
+                    flow.refused = true;
+                    flow.cr = None;
+                    flow.flex.clear();
                     self.steps.push(Step::Ret(None));
                 }
             }
         }
-        if !open.is_empty() {
-            let last = lines.last().map_or(1, |l| l.line);
-            errors.push(Located::new(last, LoadError::Unbalanced));
+        // Each `(` never closed, at its own line.
+        for open in &flow.open {
+            errors.push(Located::new(open.line, LoadError::Unclosed));
+        }
+        for e in flow.late {
+            if !errors.contains(&e) {
+                errors.push(e);
+            }
         }
     }
 
@@ -335,12 +372,22 @@ impl Program {
     fn slot(&mut self, operand: &Operand) -> Result<Src, LoadError> {
         match operand {
             Operand::Literal(d) => Ok(Src::Const(d.clone())),
+            Operand::Number(v) => Ok(Program::number(*v)),
             Operand::Text(t) => string_value(t)
                 .map(Src::Const)
                 .map_err(|e| LoadError::Type(e.to_string())),
+            // `instance.output`: only a block's outputs are read so (the
+            // front ends' `c0.count` names reach inside; IL does not).
+            Operand::Name(n) if n.contains('.') => match n.split_once('.') {
+                Some((instance, pin)) => self.output_slot(instance, pin),
+                None => Err(LoadError::Undeclared(n.clone())),
+            },
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
-                _ => Err(LoadError::Undeclared(n.clone())),
+                Some(_) => Err(LoadError::Type(format!(
+                    "`{n}` is a block instance, not a value: read one of its outputs (`{n}.Q`)"
+                ))),
+                None => Err(LoadError::Undeclared(n.clone())),
             },
             Operand::Address(a) => {
                 if let Some(&s) = self.by_address.get(a) {
@@ -365,33 +412,17 @@ impl Program {
         }
     }
 
-    /// An integer literal taken at `want` when it fits (an untyped `1`
-    /// reads as a DINT), or an integer as a REAL.
-    fn fit(src: Src, want: DataType) -> Src {
-        match &src {
-            Src::Const(d @ Data::Int(..)) if want.bits().is_some() => d
-                .int()
-                .and_then(|v| in_range(want, v))
-                .map_or(src, Src::Const),
-            Src::Const(d @ Data::Int(..)) if want == DataType::Real => {
-                Src::Const(d.convert(DataType::Real))
-            }
-            _ => src,
-        }
-    }
-
     /// The slot or constant of the line's operand, if it has one.
     fn operand(&mut self, line: &Line) -> Result<Option<Src>, LoadError> {
         line.operand.as_ref().map(|o| self.slot(o)).transpose()
     }
 
-    /// One line resolved and checked; `cr` is the current result's type.
+    /// One line resolved and checked; `flow` knows the current result.
     fn resolve(
         &mut self,
         line: &Line,
         labels: &HashMap<String, usize>,
-        cr: &mut Option<DataType>,
-        open: &mut Vec<(Binary, Option<DataType>)>,
+        flow: &mut Flow,
     ) -> Result<Step, LoadError> {
         let step = match line.operator {
             Operator::Ld => {
@@ -400,52 +431,74 @@ impl Program {
                 if line.negated {
                     invertible("LDN", t)?;
                 }
-                *cr = Some(t);
+                flow.cr = Some(t);
+                flow.flex.clear();
+                if let Some(Operand::Number(v)) = line.operand {
+                    flow.flex.push(Flex {
+                        step: self.steps.len(),
+                        arg: None,
+                        line: line.line,
+                        value: v,
+                    });
+                }
                 Step::Ld(src, line.negated)
             }
-            Operator::St | Operator::S | Operator::R => self.store(line, need_cr(*cr)?)?,
+            Operator::St | Operator::S | Operator::R => self.store(line, flow)?,
             Operator::Not => {
-                invertible("NOT", need_cr(*cr)?)?;
+                invertible("NOT", need_cr(flow.cr)?)?;
                 Step::Not
             }
-            Operator::Close => {
-                let (op, saved) = open.pop().ok_or(LoadError::Unbalanced)?;
-                let (a, b) = (need_cr(saved)?, need_cr(*cr)?);
-                *cr = Some(binary_type(op, a, b)?);
-                Step::Close
+            Operator::Close => self.close(flow)?,
+            Operator::Jmp => {
+                let step = jump(line, labels, &mut flow.cr)?;
+                if flow.cr.is_none() {
+                    flow.flex.clear();
+                }
+                step
             }
-            Operator::Jmp => jump(line, labels, cr)?,
             Operator::Ret => {
-                if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
+                if line.condition.is_some() && need_cr(flow.cr)? != DataType::Bool {
                     return Err(LoadError::Type("RETC needs a BOOL current result".into()));
                 }
                 Step::Ret(line.condition)
             }
-            Operator::Cal => self.call(line, cr)?,
-            Operator::Function(f) => self.function(f, line, cr)?,
-            op => self.binary(op, line, cr, open)?,
+            Operator::Cal => self.call(line, &mut flow.cr)?,
+            Operator::Function(f) => self.function(f, line, flow)?,
+            op => self.binary(op, line, flow)?,
         };
         Ok(step)
     }
 
-    /// ST, S, R: the current result (of type `t`) into a variable.
-    fn store(&mut self, line: &Line, t: DataType) -> Result<Step, LoadError> {
+    /// ST, S, R: the current result into a variable (untyped literals
+    /// taken at its type).
+    fn store(&mut self, line: &Line, flow: &mut Flow) -> Result<Step, LoadError> {
+        need_cr(flow.cr)?;
         let Some(Src::Slot(slot)) = self.operand(line)? else {
             return Err(LoadError::Type(
                 "a value is stored in a variable, not a literal".into(),
             ));
         };
+        let what = line.operand.as_ref().map_or(String::new(), describe);
+        self.writable(slot, &what)?;
         let target = self.values[slot].data_type();
+        let bool_only = line.operator != Operator::St;
+        if bool_only && target != DataType::Bool {
+            return Err(LoadError::Type(format!(
+                "{} sets or resets a BOOL: {what} is {}",
+                line.operator.mnemonic(),
+                target.name()
+            )));
+        }
+        self.settle(flow, target);
+        let t = need_cr(flow.cr)?;
         if line.negated {
             invertible("STN", t)?;
         }
-        let bool_only = line.operator != Operator::St;
-        if target != t || (bool_only && t != DataType::Bool) {
+        if target != t {
             return Err(LoadError::Type(format!(
-                "the current result is {}, {} needs {}",
+                "the current result is {}, {what} needs {}",
                 t.name(),
-                line.operand.as_ref().map_or(String::new(), describe),
-                if bool_only { "BOOL" } else { target.name() }
+                target.name()
             )));
         }
         Ok(match line.operator {
@@ -456,13 +509,7 @@ impl Program {
     }
 
     /// AND … LT, now or deferred by `(`.
-    fn binary(
-        &mut self,
-        op: Operator,
-        line: &Line,
-        cr: &mut Option<DataType>,
-        open: &mut Vec<(Binary, Option<DataType>)>,
-    ) -> Result<Step, LoadError> {
+    fn binary(&mut self, op: Operator, line: &Line, flow: &mut Flow) -> Result<Step, LoadError> {
         let binary = match op {
             Operator::And => Binary::Logic(Bitwise::And, line.negated),
             Operator::Or => Binary::Logic(Bitwise::Or, line.negated),
@@ -479,29 +526,54 @@ impl Program {
             Operator::Le => Binary::Cmp(Cmp::Le),
             _ => Binary::Cmp(Cmp::Lt),
         };
-        let t = need_cr(*cr)?;
-        let src = self.operand(line)?.map(|s| Program::fit(s, t));
+        need_cr(flow.cr)?;
         if line.deferred {
-            open.push((binary, Some(t)));
-            *cr = src.as_ref().map(|s| self.type_of(s));
-            Ok(Step::Open(binary, src))
-        } else {
-            let src = src.ok_or(LoadError::Unbalanced)?;
-            *cr = Some(binary_type(binary, t, self.type_of(&src))?);
-            Ok(Step::Binary(binary, src))
+            // `OP( operand`: the operand starts what the `)` applies.
+            let src = self.operand(line)?;
+            flow.open.push(Open {
+                op: binary,
+                saved: flow.cr,
+                flex: std::mem::take(&mut flow.flex),
+                line: line.line,
+            });
+            flow.cr = src.as_ref().map(|s| self.type_of(s));
+            if let Some(Operand::Number(v)) = line.operand {
+                flow.flex.push(Flex {
+                    step: self.steps.len(),
+                    arg: None,
+                    line: line.line,
+                    value: v,
+                });
+            }
+            return Ok(Step::Open(binary, src));
         }
+        let operand = line.operand.as_ref().ok_or(LoadError::Unbalanced)?;
+        let mut src = [self.slot(operand)?];
+        let t = self.join(flow, line, &[(None, operand)], &mut src)?;
+        let [src] = src;
+        let result = binary_type(binary, t, self.type_of(&src))?;
+        if matches!(binary, Binary::Cmp(_)) {
+            flow.flex.clear();
+        }
+        flow.cr = Some(result);
+        Ok(Step::Binary(binary, src))
     }
 }
 
 mod calls;
 mod check;
+mod flex;
 mod functions;
+mod outputs;
 mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the
 /// text's own function blocks give).
-fn read(text: &str, blocks: &[String]) -> Result<(Vec<Variable>, Vec<Line>), Errors> {
-    let vars = parse_vars_with(text, blocks).map_err(|es| {
+/// Declarations, each with its line.
+type Declared = Vec<(Variable, usize)>;
+
+fn read(text: &str, blocks: &[String]) -> Result<(Declared, Vec<Line>), Errors> {
+    let vars = parse_vars_at(text, blocks).map_err(|es| {
         es.into_iter()
             .map(|e| Located::new(e.line, LoadError::Var(e.error)))
             .collect::<Errors>()

@@ -437,11 +437,7 @@ fn apply(op: Binary, a: &Data, b: &Data) -> Data {
 /// A function of the current result `cr` and `args` (types checked at
 /// load; a mismatch cannot reach here and leaves `cr` as it was).
 fn function(f: Function, cr: &Data, args: &[Data]) -> Data {
-    let count = |d: &Data| match d.convert(DataType::Udint) {
-        Data::Int(_, n) => u32::try_from(n).unwrap_or(u32::MAX),
-        _ => 0,
-    };
-    let shift = |op| args.first().and_then(|n| cr.shift(op, count(n)));
+    let shift = |op| args.first().and_then(|n| cr.shift(op, n));
     let result = match f {
         Function::Neg => cr.negate(),
         Function::Move => Some(cr.clone()),

@@ -175,6 +175,14 @@ pub fn parse_vars_with(
     text: &str,
     blocks: &[String],
 ) -> Result<Vec<Variable>, Vec<Located<VarError>>> {
+    parse_vars_at(text, blocks).map(|vars| vars.into_iter().map(|(v, _)| v).collect())
+}
+
+/// [`parse_vars_with`], each variable with the line that declares it.
+pub fn parse_vars_at(
+    text: &str,
+    blocks: &[String],
+) -> Result<Vec<(Variable, usize)>, Vec<Located<VarError>>> {
     let mut vars: Vec<(Variable, usize)> = Vec::new();
     let mut errors = Vec::new();
     let mut open: Option<(bool, Direction, usize)> = None; // (retain, direction, line)
@@ -230,7 +238,7 @@ pub fn parse_vars_with(
         errors.push(Located::new(line, VarError::Unbalanced(word.to_string())));
     }
     if errors.is_empty() {
-        Ok(vars.into_iter().map(|(v, _)| v).collect())
+        Ok(vars)
     } else {
         Err(errors)
     }

@@ -76,8 +76,26 @@ impl Words {
         Some((key, t))
     }
 
+    /// A block instance's output read as an operand (`c0.CV`, `t0.Q`):
+    /// its value now (an instance not called yet gives its first).
+    fn output_of(&self, text: &str) -> Option<Data> {
+        let (instance, pin) = text.trim().split_once('.')?;
+        let upper = instance.to_ascii_uppercase();
+        let kind = self.kinds.get(&upper)?;
+        let i = pins::outputs(kind)
+            .iter()
+            .position(|(p, _)| p.eq_ignore_ascii_case(pin))?;
+        Some(match self.instances.get(&upper) {
+            Some(x) => x.output(i),
+            None => Instance::new(kind).output(i),
+        })
+    }
+
     /// The spelling the bits use for a BOOL name (as written).
     fn read(&mut self, text: &str, want: Option<DataType>, bits: &mut dyn Bits) -> Option<Data> {
+        if let Some(d) = self.output_of(text) {
+            return Some(d);
+        }
         match self.key(text) {
             Some((_, DataType::Bool)) => Some(Data::Bool(bits.get_bit(text.trim()))),
             Some((key, t)) => Some(self.values.entry(key).or_insert_with(|| t.zero()).clone()),
@@ -156,7 +174,11 @@ impl Words {
         let mut ty = None;
         for pin in pins.iter().filter(|p| shared(p)) {
             if let Some(text) = b.input(pin) {
-                if let Some((_, t)) = self.key(text) {
+                if let Some(t) = self
+                    .key(text)
+                    .map(|(_, t)| t)
+                    .or_else(|| Some(self.output_of(text)?.data_type()))
+                {
                     ty = Some(t);
                     break;
                 }
@@ -207,6 +229,10 @@ impl Words {
                     .and_then(|text| self.read(text, Some(*t), bits)),
             );
         }
+        // Its outputs may be read as operands (`c0.CV`).
+        self.kinds
+            .entry(upper.clone())
+            .or_insert_with(|| kind.to_string());
         let instance = self
             .instances
             .entry(upper)
@@ -253,11 +279,7 @@ fn function(kind: &str, args: &[Data]) -> Option<Data> {
     };
     let arith = |op| fold(&|a: &Data, b| a.arith(op, b));
     let logic = |op| fold(&|a: &Data, b| a.bitwise(op, b));
-    let shift = |op| {
-        let n = args.get(1)?.convert(DataType::Udint).to_value().as_i64();
-        args.first()?
-            .shift(op, u32::try_from(n).unwrap_or(u32::MAX))
-    };
+    let shift = |op| args.first()?.shift(op, args.get(1)?);
     match kind {
         "ADD" => arith(Arith::Add),
         "SUB" => arith(Arith::Sub),

@@ -121,24 +121,48 @@ fn words_bitwise_shifted_and_rotated_in_their_width() {
         Data::Bool(true).bitwise(Bitwise::Or, &Data::Bool(false)),
         Some(Data::Bool(true))
     );
-    assert_eq!(w(0x8001).shift(Shift::Shl, 1), Some(w(0x0002)));
-    assert_eq!(w(0x8001).shift(Shift::Shr, 1), Some(w(0x4000)));
-    assert_eq!(w(0x8001).shift(Shift::Rol, 1), Some(w(0x0003)));
-    assert_eq!(w(0x8001).shift(Shift::Ror, 1), Some(w(0xC000)));
     assert_eq!(
-        w(0x8001).shift(Shift::Rol, 17),
+        w(0x8001).shift(Shift::Shl, &Data::integer(DataType::Udint, 1)),
+        Some(w(0x0002))
+    );
+    assert_eq!(
+        w(0x8001).shift(Shift::Shr, &Data::integer(DataType::Udint, 1)),
+        Some(w(0x4000))
+    );
+    assert_eq!(
+        w(0x8001).shift(Shift::Rol, &Data::integer(DataType::Udint, 1)),
+        Some(w(0x0003))
+    );
+    assert_eq!(
+        w(0x8001).shift(Shift::Ror, &Data::integer(DataType::Udint, 1)),
+        Some(w(0xC000))
+    );
+    assert_eq!(
+        w(0x8001).shift(Shift::Rol, &Data::integer(DataType::Udint, 17)),
         Some(w(0x0003)),
         "modulo the width"
     );
-    assert_eq!(w(0x8001).shift(Shift::Shl, 16), Some(w(0)));
     assert_eq!(
-        int(DataType::Int, -2).shift(Shift::Shr, 1),
+        w(0x8001).shift(Shift::Shl, &Data::integer(DataType::Udint, 16)),
+        Some(w(0))
+    );
+    assert_eq!(
+        int(DataType::Int, -2).shift(Shift::Shr, &Data::integer(DataType::Udint, 1)),
         Some(int(DataType::Int, 0x7FFF))
     );
     let l = |v| int(DataType::Ulint, v);
-    assert_eq!(l(1).shift(Shift::Ror, 1), Some(l(1 << 63)));
-    assert_eq!(l(1).shift(Shift::Shl, 64), Some(l(0)));
-    assert_eq!(Data::Real(1.0).shift(Shift::Shl, 1), None);
+    assert_eq!(
+        l(1).shift(Shift::Ror, &Data::integer(DataType::Udint, 1)),
+        Some(l(1 << 63))
+    );
+    assert_eq!(
+        l(1).shift(Shift::Shl, &Data::integer(DataType::Udint, 64)),
+        Some(l(0))
+    );
+    assert_eq!(
+        Data::Real(1.0).shift(Shift::Shl, &Data::integer(DataType::Udint, 1)),
+        None
+    );
 }
 
 #[test]

@@ -134,7 +134,7 @@ impl Program {
         value: &Operand,
         want: DataType,
     ) -> Result<Src, LoadError> {
-        let src = Program::fit(self.slot(value)?, want);
+        let src = self.fitted(value, want, 0)?;
         if self.type_of(&src) != want {
             return Err(LoadError::Type(format!(
                 "{owner}'s {pin} is a {}",
@@ -156,6 +156,7 @@ impl Program {
         let Src::Slot(slot) = self.slot(&Operand::Name(target.to_string()))? else {
             return Err(LoadError::Call(format!("`{target}` is not a variable")));
         };
+        self.writable(slot, target)?;
         if self.values[slot].data_type() != t {
             return Err(LoadError::Type(format!(
                 "{owner}'s {pin} is a {}",

@@ -9,11 +9,7 @@ use crate::softplc::il::{Line, Operand};
 
 /// The current result's type, where an instruction needs one.
 pub(super) fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {
-    cr.ok_or_else(|| {
-        LoadError::Type(
-            "the current result is not known here (after a label or a jump): start with LD".into(),
-        )
-    })
+    cr.ok_or(LoadError::UnknownResult)
 }
 
 /// Whether `op` (LDN, STN, NOT) can invert a `t`: a BOOL or a bit
@@ -60,7 +56,7 @@ pub(super) fn describe(o: &Operand) -> String {
     match o {
         Operand::Name(n) => n.clone(),
         Operand::Address(a) => a.to_string(),
-        Operand::Literal(_) | Operand::Text(_) => "a literal".into(),
+        Operand::Literal(_) | Operand::Number(_) | Operand::Text(_) => "a literal".into(),
     }
 }
 

@@ -1,41 +1,49 @@
 //! An IL function line resolved (`SHL`, `MIN`, `SEL`, `INT_TO_DINT` …):
-//! its operands fitted to the current result's type, the type it leaves
-//! checked.
+//! its operands joined with the current result's type (untyped literals
+//! taking it), the type it leaves checked.
 
 use super::check::need_cr;
+use super::flex::Flow;
 use super::{LoadError, Program, Step};
 use crate::softplc::data::DataType;
-use crate::softplc::il::{Function, Line};
+use crate::softplc::il::{Function, Line, Operand};
 
 impl Program {
-    /// A function call: its operands resolved and fitted, the type it
+    /// A function call: its operands resolved and joined, the type it
     /// leaves checked.
     pub(super) fn function(
         &mut self,
         f: Function,
         line: &Line,
-        cr: &mut Option<DataType>,
+        flow: &mut Flow,
     ) -> Result<Step, LoadError> {
-        let t = need_cr(*cr)?;
+        let t = need_cr(flow.cr)?;
         let mut args = Vec::new();
         for a in &line.args {
             args.push(self.slot(a)?);
         }
+        let placed: Vec<(Option<usize>, &Operand)> = line
+            .args
+            .iter()
+            .enumerate()
+            .map(|(i, a)| (Some(i), a))
+            .collect();
         let wrong = |why: String| Err(LoadError::Type(why));
-        let result = match f {
+        match f {
             Function::Neg if matches!(t, DataType::Bool | DataType::String) => {
                 return wrong("NEG needs a number".into())
             }
-            Function::Neg | Function::Move => t,
+            // The result is the current result's type: its untyped
+            // literals stay untyped.
+            Function::Neg | Function::Move => {}
             Function::Shl | Function::Shr | Function::Rol | Function::Ror => {
                 if t.bits().is_none() || self.type_of(&args[0]).bits().is_none() {
                     return wrong("SHL, SHR, ROL and ROR shift an integer by an integer".into());
                 }
-                t
             }
             Function::Min | Function::Max | Function::Limit => {
-                for a in &mut args {
-                    *a = Program::fit(a.clone(), t);
+                let t = self.join(flow, line, &placed, &mut args)?;
+                for a in &args {
                     if self.type_of(a) != t {
                         return wrong(format!(
                             "{} and {} do not mix: convert one (*_TO_*)",
@@ -44,25 +52,16 @@ impl Program {
                         ));
                     }
                 }
-                t
             }
-            Function::Sel => {
-                if t != DataType::Bool {
-                    return wrong("SEL's first input (the current result) is a BOOL".into());
-                }
-                let first = self.type_of(&args[0]);
-                args[1] = Program::fit(args[1].clone(), first);
-                if self.type_of(&args[1]) != first {
-                    return wrong("SEL's two values have one type".into());
-                }
-                first
-            }
+            Function::Sel => self.select(flow, line, &placed, &mut args)?,
             Function::Convert { from, to } => {
                 if from == DataType::String || to == DataType::String {
                     return wrong(
                         "conversions to and from STRING do not run on the soft PLC yet".into(),
                     );
                 }
+                self.settle(flow, from);
+                let t = need_cr(flow.cr)?;
                 if from != t {
                     return wrong(format!(
                         "the current result is {}, not {}",
@@ -70,10 +69,35 @@ impl Program {
                         from.name()
                     ));
                 }
-                to
+                flow.flex.clear();
+                flow.cr = Some(to);
             }
-        };
-        *cr = Some(result);
+        }
         Ok(Step::Func(f, args))
+    }
+
+    /// SEL: the current result (G) a BOOL, its two values of one type
+    /// (untyped literals joined between them), which it leaves.
+    fn select(
+        &mut self,
+        flow: &mut Flow,
+        line: &Line,
+        placed: &[(Option<usize>, &Operand)],
+        args: &mut [super::Src],
+    ) -> Result<(), LoadError> {
+        if need_cr(flow.cr)? != DataType::Bool || !flow.flex.is_empty() {
+            return Err(LoadError::Type(
+                "SEL's first input (the current result) is a BOOL".into(),
+            ));
+        }
+        let mut own = Flow::default();
+        let t = self.join(&mut own, line, placed, args)?;
+        flow.late.append(&mut own.late);
+        if args.iter().any(|a| self.type_of(a) != t) {
+            return Err(LoadError::Type("SEL's two values have one type".into()));
+        }
+        flow.cr = Some(t);
+        flow.flex = own.flex;
+        Ok(())
     }
 }

@@ -169,7 +169,7 @@ fn what_does_not_load_says_why_at_its_line() {
     assert_eq!(got[5].1, "TON has no input `XX`");
     assert_eq!(got[6].1, "TON's PT is a TIME");
     assert!(got[7].1.contains("start with LD"));
-    assert_eq!(got[8].1, "`(` and `)` do not pair");
+    assert_eq!(got[8].1, "this `(` is never closed with `)`");
     let got = errors(
         "VAR\n  i : INT;\n  r : REAL;\n  b : BOOL;\nEND_VAR\n\
          LD i\nDINT_TO_INT\n\
@@ -265,6 +265,9 @@ proptest::proptest! {
             "END_VAR", "  x : BOOL;", "  n : INT;", "  f : F;", "  t : TON;",
             "LD x", "ST x", "CAL f(x := TRUE, n => n)", "CAL f", "LD n", "ADD 1", "ST n",
             "RET", "l: LD x", "JMPC l", "(* a", "b *)", "PROGRAM p", "END_PROGRAM",
+            "LD 40000", "ADD 2", "GT 3", "MAX 5", "SEL 1, 2", "INT_TO_DINT", "LD t.Q",
+            "ADD( 7", ")", "LD f.n", "ST t.Q", "CAL t(IN := x, IN := x)", "CAL t(,)",
+            "  w : WORD;", "ST w", "LD -1", "SHL 40", "NOT",
         ]), 0..24)
     ) {
         let text = pieces.join("\n");
@@ -390,7 +393,7 @@ fn a_string_is_refused_where_it_does_not_fit_saying_so() {
     );
     assert_eq!(
         said("VAR\n  n : INT := 'a';\nEND_VAR\n"),
-        [(2, "`'a'` is not a INT value".to_string())]
+        [(2, "`'a'` is not an INT value".to_string())]
     );
     assert_eq!(
         said("VAR\n  s AT %MD0 : STRING;\nEND_VAR\n")[0].0,

@@ -10,7 +10,7 @@ use std::collections::HashMap;
 use super::{Errors, LoadError, Named, Program, Step};
 use crate::error::Located;
 use crate::softplc::il::Line;
-use crate::softplc::vars::{Direction, Variable};
+use crate::softplc::vars::{Direction, Kind, Variable};
 
 /// How deeply instances may hold instances (a block holding an instance
 /// of itself would never end).
@@ -22,14 +22,39 @@ pub(crate) const MAX_BLOCK_NESTING: usize = 8;
 pub(crate) const MAX_INSTANCES: usize = 10_000;
 pub(crate) const MAX_BODY_STEPS: usize = 2_000_000;
 
+/// Most variables (values and block instances) the instances of the
+/// program's own blocks may hold in all: counted before any is made, so
+/// a short text of nested instances is refused, not built until memory
+/// runs out.
+pub(crate) const MAX_INSTANCE_VARIABLES: u64 = 200_000;
+
 /// One of the program's own function blocks as read.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct UserType {
     pub name: String,
     pub vars: Vec<Variable>,
+    /// The line declaring each of `vars`.
+    pub var_lines: Vec<usize>,
     pub lines: Vec<Line>,
     /// The line of its `FUNCTION_BLOCK`.
     pub line: usize,
+}
+
+/// What one instance of a block holds, all its own instances with it.
+#[derive(Clone, Copy, Debug)]
+struct Size {
+    variables: u64,
+    instances: u64,
+    /// How deep its instances nest (1: none).
+    height: usize,
+}
+
+/// The block type a declaration names, if it is a block instance.
+fn block_of(v: &Variable) -> Option<&str> {
+    match &v.kind {
+        Kind::Block(b) => Some(b),
+        Kind::Value { .. } => None,
+    }
 }
 
 /// One instance: its type, its names, its inputs' and outputs' slots.
@@ -128,6 +153,90 @@ impl Program {
             }
             self.steps.push(Step::Return);
         }
+    }
+
+    /// Checks, before any instance is made, that the program's
+    /// declarations (`vars`, each with its line) hold no block that holds
+    /// itself or nests too deep, and that their instances' variables and
+    /// instances stay within the limits: the first declaration that does
+    /// not, at its line.
+    pub(super) fn budget(&self, vars: &[(Variable, usize)]) -> Result<(), Located<LoadError>> {
+        let mut sizes: HashMap<usize, Size> = HashMap::new();
+        let (mut variables, mut instances) = (0u64, 0u64);
+        for (v, line) in vars {
+            let Some(ty) = block_of(v).and_then(|b| self.user_type(b)) else {
+                continue;
+            };
+            let size = self.size(ty, &mut sizes, &mut Vec::new())?;
+            if size.height > MAX_BLOCK_NESTING {
+                return Err(Located::new(
+                    *line,
+                    LoadError::Call(format!(
+                        "{}: function blocks hold instances more than {MAX_BLOCK_NESTING} deep",
+                        v.name
+                    )),
+                ));
+            }
+            variables = variables.saturating_add(size.variables);
+            instances = instances.saturating_add(size.instances);
+            let over = if instances > MAX_INSTANCES as u64 {
+                format!("more than {MAX_INSTANCES} instances of the program's own blocks")
+            } else if variables > MAX_INSTANCE_VARIABLES {
+                format!(
+                    "the instances of the program's own blocks would hold more than {MAX_INSTANCE_VARIABLES} variables"
+                )
+            } else {
+                continue;
+            };
+            return Err(Located::new(
+                *line,
+                LoadError::Call(format!("{}: {over} (docs/limits.md)", v.name)),
+            ));
+        }
+        Ok(())
+    }
+
+    /// What one instance of type `ty` holds (memoized in `sizes`;
+    /// `inside` the types being counted, to find a block that holds
+    /// itself, refused at that declaration's line).
+    fn size(
+        &self,
+        ty: usize,
+        sizes: &mut HashMap<usize, Size>,
+        inside: &mut Vec<usize>,
+    ) -> Result<Size, Located<LoadError>> {
+        if let Some(&s) = sizes.get(&ty) {
+            return Ok(s);
+        }
+        inside.push(ty);
+        let t = &self.user_types[ty];
+        let mut size = Size {
+            variables: 0,
+            instances: 1,
+            height: 1,
+        };
+        for (v, &line) in t.vars.iter().zip(&t.var_lines) {
+            size.variables = size.variables.saturating_add(1);
+            let Some(inner) = block_of(v).and_then(|b| self.user_type(b)) else {
+                continue;
+            };
+            if inside.contains(&inner) {
+                return Err(Located::new(
+                    line,
+                    LoadError::Call(format!(
+                        "{}: function blocks hold instances more than {MAX_BLOCK_NESTING} deep (does {} hold itself?)",
+                        v.name, self.user_types[inner].name
+                    )),
+                ));
+            }
+            let s = self.size(inner, sizes, inside)?;
+            size.variables = size.variables.saturating_add(s.variables);
+            size.instances = size.instances.saturating_add(s.instances);
+            size.height = size.height.max(s.height + 1);
+        }
+        inside.pop();
+        sizes.insert(ty, size);
+        Ok(size)
     }
 
     /// The program's own function blocks as read (for the listing).

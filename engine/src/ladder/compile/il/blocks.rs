@@ -74,6 +74,18 @@ impl Compiler {
         if let Some(&t) = self.types.get(&text.to_ascii_uppercase()) {
             return Ok(Operand::temp(text.to_string(), t));
         }
+        // A block instance's output read (`c0.CV`): the IL reads it so.
+        if let Some((instance, pin)) = text.split_once('.') {
+            let kind = self
+                .blocks
+                .get(&instance.to_ascii_uppercase())
+                .ok_or_else(|| format!("`{instance}` is not a block instance: declare it"))?;
+            let (_, t) = pins::outputs(kind)
+                .into_iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                .ok_or_else(|| format!("{kind} has no output `{pin}`"))?;
+            return Ok(Operand::temp(text.to_string(), t));
+        }
         match literal_type(text) {
             Ok((_, ty)) => Ok(Operand {
                 text: text.to_string(),

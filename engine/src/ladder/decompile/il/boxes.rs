@@ -68,7 +68,7 @@ impl Walk<'_> {
             Some(Operand::Literal(d)) => d.data_type() != crate::softplc::data::DataType::Bool,
             Some(Operand::Address(a)) => a.size != crate::softplc::Size::Bit,
             Some(Operand::Name(n)) => self.words.contains(&n.to_ascii_uppercase()),
-            Some(Operand::Text(_)) => true,
+            Some(Operand::Text(_) | Operand::Number(_)) => true,
             None => false,
         }
     }

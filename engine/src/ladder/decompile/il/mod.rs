@@ -49,11 +49,23 @@ type Step = Result<(), DecompileError>;
 
 /// The ladder of an IL program's declarations and lines.
 pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, DecompileError> {
-    let words = vars
+    let mut words: HashSet<String> = vars
         .iter()
         .filter(|v| matches!(v.kind, Kind::Value { data_type, .. } if data_type != crate::softplc::data::DataType::Bool))
         .map(|v| v.name.to_ascii_uppercase())
         .collect();
+    // A block's word outputs read as operands (`GT c0.CV 3`).
+    for v in vars {
+        if let Kind::Block(kind) = &v.kind {
+            let outputs = crate::softplc::pins::outputs(kind);
+            for (pin, _) in outputs
+                .iter()
+                .filter(|(_, t)| *t != crate::softplc::data::DataType::Bool)
+            {
+                words.insert(format!("{}.{pin}", v.name.to_ascii_uppercase()));
+            }
+        }
+    }
     let mut w = Walk {
         vars,
         lines,

@@ -91,6 +91,33 @@ impl Declarations {
             .unwrap_or_else(|| name.to_string())
     }
 
+    /// `instance.pin` of POU `pou`, an output of a block instance read
+    /// by name as the IL reads it (`TON0.ET`, `CTU0.CV`): its soft PLC
+    /// name and type (`user`: the project's own blocks' interfaces).
+    pub fn block_output(
+        &self,
+        pou: &str,
+        instance: &str,
+        pin: &str,
+        user: &HashMap<String, Interface>,
+    ) -> Option<(String, DataType)> {
+        let name = self.name_in(pou, instance);
+        let t = match self.held(&name)? {
+            Held::Block(kind) => crate::softplc::pins::outputs(kind)
+                .into_iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                .map(|(_, t)| t),
+            Held::User(kind) => user
+                .get(&kind.to_ascii_uppercase())?
+                .outputs
+                .iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                .map(|&(_, t)| t),
+            Held::Value(_) => None,
+        }?;
+        Some((format!("{name}.{pin}"), t))
+    }
+
     /// What a (soft PLC) name holds, if declared.
     pub fn held(&self, name: &str) -> Option<&Held> {
         let &i = self.index.get(&name.to_ascii_uppercase())?;

@@ -18,7 +18,7 @@ use super::SoftError;
 use crate::error::Located;
 use crate::softplc::data::DataType;
 use crate::softplc::pins::{inputs as fb_inputs, outputs as fb_outputs};
-use crate::softplc::vars::is_block_type;
+use crate::softplc::vars::{is_block_type, is_identifier};
 use crate::softplc::{literal_type, Address};
 
 /// What the emission of every body gives.
@@ -230,7 +230,7 @@ impl Emitter<'_> {
                 .ok_or_else(|| SoftError::Expression(format!("{text}: a byte has no type here")))?;
             return Ok(Operand::temp(a.to_string(), ty));
         }
-        if crate::softplc::vars::is_identifier(text)
+        if is_identifier(text)
             && !text.eq_ignore_ascii_case("TRUE")
             && !text.eq_ignore_ascii_case("FALSE")
         {
@@ -242,6 +242,14 @@ impl Emitter<'_> {
                 ))),
                 None => Err(SoftError::Undeclared(text.to_string())),
             };
+        }
+        let output = text
+            .split_once('.')
+            .filter(|(i, p)| is_identifier(i) && is_identifier(p));
+        if let Some((instance, pin)) = output {
+            let (name, t) = (self.decl.block_output(&self.pou, instance, pin, self.user))
+                .ok_or_else(|| SoftError::Expression(text.to_string()))?;
+            return Ok(Operand::temp(name, t));
         }
         let (_, ty) = literal_type(text).map_err(|_| SoftError::Expression(text.to_string()))?;
         Ok(Operand {

@@ -1,0 +1,272 @@
+//! Untyped integer literals take the type their use needs (IEC 61131-3,
+//! as every IL tool reads them): in `LD 40` / `ADD 2` / `ST %MW0` both
+//! literals are INTs, because the store needs one. While the current
+//! result is made of untyped literals only, the loader keeps where each
+//! of them is (its step, its line, its value); the first use that needs
+//! a type (a store, an operand, a comparison, a conversion) rewrites
+//! them all at that type, and one that does not fit is refused at its
+//! own line. With no typed use they stay what they were loaded as: a
+//! DINT (or the first of LINT, ULINT that holds the value). A typed
+//! literal (`INT#5`) keeps its type, and is refused where another is
+//! needed.
+
+use super::check::binary_type;
+use super::{Binary, Errors, LoadError, Program, Src, Step};
+use crate::error::Located;
+use crate::softplc::data::{Data, DataType};
+use crate::softplc::il::{Line, Operand};
+use crate::softplc::literal::{in_range, LiteralError};
+
+/// One untyped literal of the current result: where its constant is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Flex {
+    /// The step holding it (maybe the one being resolved).
+    pub step: usize,
+    /// Which of its operands: `None` the line's operand, `Some(i)` a
+    /// function's `i`-th.
+    pub arg: Option<usize>,
+    pub line: usize,
+    pub value: i128,
+}
+
+/// A deferred operation `OP(` waiting for its `)`.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Open {
+    pub op: Binary,
+    /// The current result's type before it, and its untyped literals.
+    pub saved: Option<DataType>,
+    pub flex: Vec<Flex>,
+    /// The line of the `(`.
+    pub line: usize,
+}
+
+/// What the loader knows of the current result while it reads lines.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(super) struct Flow {
+    pub cr: Option<DataType>,
+    /// The untyped literals it is made of (empty: its type is fixed).
+    pub flex: Vec<Flex>,
+    pub open: Vec<Open>,
+    /// Errors found at other lines than the one being read (a literal
+    /// that does not fit the type a later line needs).
+    pub late: Errors,
+    /// A line since the last LD or label was refused.
+    pub refused: bool,
+}
+
+/// The type an untyped literal is with no typed use: DINT, or the first
+/// of LINT, ULINT that holds it.
+pub(super) fn default_type(v: i128) -> DataType {
+    [DataType::Dint, DataType::Lint]
+        .into_iter()
+        .find(|&t| in_range(t, v).is_some())
+        .unwrap_or(DataType::Ulint)
+}
+
+/// The widest default of several literals (all of one type together).
+fn widest(flex: &[Flex]) -> DataType {
+    let rank = |t: DataType| {
+        [DataType::Dint, DataType::Lint, DataType::Ulint]
+            .iter()
+            .position(|&u| u == t)
+    };
+    flex.iter()
+        .map(|f| default_type(f.value))
+        .max_by_key(|&t| rank(t))
+        .unwrap_or(DataType::Dint)
+}
+
+/// Untyped literal `v` as a `t`: `None` for a type no integer becomes.
+fn as_type(v: i128, t: DataType, line: usize) -> Option<Result<Data, Located<LoadError>>> {
+    if t == DataType::Real {
+        return Some(Ok(Data::Real(v as f32)));
+    }
+    t.bits()?;
+    Some(in_range(t, v).ok_or_else(|| {
+        Located::new(
+            line,
+            LoadError::Il(crate::softplc::il::IlError::Literal(
+                LiteralError::OutOfRange {
+                    text: v.to_string(),
+                    data_type: t,
+                },
+            )),
+        )
+    }))
+}
+
+impl Program {
+    /// The constant of untyped literal `v` where nothing needs a type.
+    pub(super) fn number(v: i128) -> Src {
+        Src::Const(Data::integer(default_type(v), v))
+    }
+
+    /// The untyped literals `flex` rewritten as `t`s, each that does not
+    /// fit refused at its line (into `late`); nothing when no integer
+    /// becomes a `t` (the caller's type check says why).
+    fn retype(&mut self, flex: &[Flex], t: DataType, late: &mut Errors) {
+        for f in flex {
+            let Some(d) = as_type(f.value, t, f.line) else {
+                return;
+            };
+            let d = match d {
+                Ok(d) => d,
+                Err(e) => {
+                    if !late.contains(&e) {
+                        late.push(e);
+                    }
+                    continue;
+                }
+            };
+            let src = match (self.steps.get_mut(f.step), f.arg) {
+                (
+                    Some(Step::Ld(src, _) | Step::Binary(_, src) | Step::Open(_, Some(src))),
+                    None,
+                ) => src,
+                (Some(Step::Func(_, args)), Some(i)) => match args.get_mut(i) {
+                    Some(src) => src,
+                    None => continue,
+                },
+                _ => continue,
+            };
+            *src = Src::Const(d);
+        }
+    }
+
+    /// The current result (untyped literals, if it is made of them) now
+    /// needed as a `t`: its literals rewritten, its type fixed.
+    pub(super) fn settle(&mut self, flow: &mut Flow, t: DataType) {
+        if flow.flex.is_empty() {
+            return;
+        }
+        let flex = std::mem::take(&mut flow.flex);
+        self.retype(&flex, t, &mut flow.late);
+        if becomes(t) {
+            flow.cr = Some(t);
+        }
+    }
+
+    /// The line's operand, if it has one, as a `want` (where the place
+    /// needs one): an untyped literal taken at `want` (refused when it
+    /// does not fit), anything else as it is.
+    pub(super) fn fitted(
+        &mut self,
+        operand: &Operand,
+        want: DataType,
+        line: usize,
+    ) -> Result<Src, LoadError> {
+        match operand {
+            Operand::Number(v) => match as_type(*v, want, line) {
+                Some(d) => d.map(Src::Const).map_err(|e| e.error),
+                None => Ok(Program::number(*v)),
+            },
+            // A typed literal keeps its type: where another is needed it
+            // is refused, whether or not its value would fit.
+            Operand::Literal(d) if d.data_type() != want => Err(LoadError::Il(
+                crate::softplc::il::IlError::Literal(LiteralError::WrongType {
+                    text: d.to_string(),
+                    expected: want,
+                }),
+            )),
+            _ => self.slot(operand),
+        }
+    }
+
+    /// Joins the current result with `operands` (each with its place:
+    /// `None` the line's operand, `Some(i)` a function's `i`-th; their
+    /// sources in `srcs`) for an operation that needs them of one type:
+    /// untyped literals take the type of the typed side, or all the
+    /// widest default when every side is untyped (and stay untyped in
+    /// `flow.flex`). The type they share.
+    pub(super) fn join(
+        &mut self,
+        flow: &mut Flow,
+        line: &Line,
+        operands: &[(Option<usize>, &Operand)],
+        srcs: &mut [Src],
+    ) -> Result<DataType, LoadError> {
+        let typed = operands
+            .iter()
+            .zip(srcs.iter())
+            .find(|((_, o), _)| !matches!(o, Operand::Number(_)))
+            .map(|(_, s)| self.type_of(s));
+        let want = if flow.flex.is_empty() && flow.cr.is_some() {
+            flow.cr
+        } else if let Some(t) = typed {
+            if becomes(t) {
+                self.settle(flow, t);
+                Some(t)
+            } else {
+                // Literals cannot be a `t`: the caller's check says so.
+                flow.flex.clear();
+                flow.cr.or(Some(t))
+            }
+        } else {
+            None
+        };
+        let t = match want {
+            Some(t) => t,
+            None => {
+                for ((arg, o), _) in operands.iter().zip(srcs.iter()) {
+                    if let Operand::Number(v) = o {
+                        flow.flex.push(Flex {
+                            step: self.steps.len(),
+                            arg: *arg,
+                            line: line.line,
+                            value: *v,
+                        });
+                    }
+                }
+                let t = widest(&flow.flex);
+                let flex = flow.flex.clone();
+                self.retype(&flex, t, &mut flow.late);
+                t
+            }
+        };
+        for ((_, o), s) in operands.iter().zip(srcs.iter_mut()) {
+            *s = self.fitted(o, t, line.line)?;
+        }
+        flow.cr = Some(t);
+        Ok(t)
+    }
+
+    /// `)`: the deferred operation applied to what its parentheses
+    /// left, the two sides' untyped literals joined.
+    pub(super) fn close(&mut self, flow: &mut Flow) -> Result<Step, LoadError> {
+        let open = flow.open.pop().ok_or(LoadError::Unbalanced)?;
+        let saved = super::check::need_cr(open.saved)?;
+        let inner = super::check::need_cr(flow.cr)?;
+        let (a, b) = match (open.flex.is_empty(), flow.flex.is_empty()) {
+            (true, true) => (saved, inner),
+            (false, true) if becomes(inner) => {
+                let mut late = std::mem::take(&mut flow.late);
+                self.retype(&open.flex, inner, &mut late);
+                flow.late = late;
+                (inner, inner)
+            }
+            (false, true) => (saved, inner),
+            (true, false) => {
+                self.settle(flow, saved);
+                (saved, super::check::need_cr(flow.cr)?)
+            }
+            (false, false) => {
+                flow.flex.extend(open.flex);
+                let t = widest(&flow.flex);
+                let flex = flow.flex.clone();
+                self.retype(&flex, t, &mut flow.late);
+                (t, t)
+            }
+        };
+        let result = binary_type(open.op, a, b)?;
+        if matches!(open.op, Binary::Cmp(_)) {
+            flow.flex.clear();
+        }
+        flow.cr = Some(result);
+        Ok(Step::Close)
+    }
+}
+
+/// Whether an integer literal can be a `t` (an integer type or REAL).
+pub(super) fn becomes(t: DataType) -> bool {
+    t.bits().is_some() || t == DataType::Real
+}
