@@ -42,6 +42,18 @@ pub enum SoftError {
     NotDrawn(String),
     /// The generated program does not load (the loader's words).
     Load(String),
+    /// A block input the block does not have (the block, the pin, the
+    /// inputs it has).
+    NoInput(String, String, String),
+    /// A wire from a block output the block does not have (what the wire
+    /// feeds, the block, the pin, the outputs it has).
+    NoOutput(String, String, String, String),
+    /// An element fed by one already refused: never shown, the first
+    /// refusal says what is wrong (it was called a loop of wires).
+    Follows,
+    /// An instance of the project's own function block that no variable
+    /// declares (instance, type).
+    UndeclaredInstance(String, String),
 }
 
 impl fmt::Display for SoftError {
@@ -94,6 +106,18 @@ impl fmt::Display for SoftError {
                 write!(f, "no program the tasks run is drawn in LD or FBD: {pous}")
             }
             SoftError::Load(why) => f.write_str(why),
+            SoftError::NoInput(block, pin, has) => {
+                write!(f, "{block} has no input `{pin}` (its inputs: {has})")
+            }
+            SoftError::NoOutput(reader, block, pin, has) => write!(
+                f,
+                "{reader} is wired from {block}'s `{pin}`, an output the block does not have (its outputs: {has})"
+            ),
+            SoftError::Follows => f.write_str("fed by an element refused above"),
+            SoftError::UndeclaredInstance(name, ty) => write!(
+                f,
+                "{name} is not declared: declare it as a {ty} instance (`{name} : {ty};`) among the POU's variables"
+            ),
         }
     }
 }
