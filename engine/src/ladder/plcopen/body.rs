@@ -139,6 +139,9 @@ pub(super) struct CommentBox {
     pub(super) row: usize,
     pub(super) col: usize,
     pub(super) text: String,
+    /// Its line: among rungs as near, it goes to the first one after
+    /// it in the file (CODESYS draws every element at 0,0).
+    pub(super) line: usize,
 }
 
 /// A spare relay taken: the relay, what it holds, the line needing it.

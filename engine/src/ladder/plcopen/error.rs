@@ -148,6 +148,8 @@ pub enum ImportError {
     WordOutput(String),
     /// An element Hashigo does not import (its name).
     Unsupported(String),
+    /// A vendor element that carries logic (why it is taken to).
+    VendorLogic(String),
     /// Part of the project the soft PLC does not run.
     Soft(super::soft::error::SoftError),
     /// A block type Hashigo does not import.
@@ -292,6 +294,7 @@ impl fmt::Display for ImportError {
                 "<{el}> is not imported: Hashigo's ladders have no word outputs from blocks"
             ),
             E::Unsupported(el) => write!(f, "<{el}> is not supported in LD or FBD bodies here"),
+            E::VendorLogic(why) => f.write_str(&super::vendor::logic_refused(why)),
             E::Soft(e) => e.fmt(f),
             E::UnsupportedBlock(ty) => write!(
                 f,

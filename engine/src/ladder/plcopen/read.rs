@@ -36,7 +36,12 @@ impl Body {
                     row: y,
                     col: x,
                     text: n.deep_text(),
+                    line: n.line,
                 });
+                continue;
+            }
+            if n.name == "vendorElement" {
+                b.vendor_element(n);
                 continue;
             }
             let Some(id) = n.attr("localId") else {
@@ -300,19 +305,8 @@ impl Body {
             }
             // Read where a continuation names them (`Body::join`).
             "connector" | "continuation" => {}
-            "leftPowerRail" | "rightPowerRail" | "comment" => {}
+            "leftPowerRail" | "rightPowerRail" | "comment" | "vendorElement" => {}
             "outVariable" => self.out_variable(n, pos, names)?,
-            "vendorElement" => {
-                let what = n
-                    .child("alternativeText")
-                    .map(|t| t.deep_text().trim().to_string())
-                    .filter(|t| !t.is_empty())
-                    .unwrap_or_else(|| "a vendor element".to_string());
-                self.warnings.push(Located::new(
-                    n.line,
-                    format!("{} skipped: a vendor's own element", crate::shown(&what)),
-                ));
-            }
             "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
             other => return Err(ImportError::Unsupported(other.to_string())),
         }

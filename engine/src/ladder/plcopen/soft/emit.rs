@@ -71,6 +71,7 @@ impl Emitter<'_> {
                 }
             }
         }
+        self.out.warnings.extend(g.warnings.iter().cloned());
         self.failed.clear();
         super::infer::output_types(self, g);
         for i in order(g) {

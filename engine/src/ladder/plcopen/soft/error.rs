@@ -51,6 +51,8 @@ pub enum SoftError {
     /// An element fed by one already refused: never shown, the first
     /// refusal says what is wrong (it was called a loop of wires).
     Follows,
+    /// A vendor element that carries logic (why it is taken to).
+    VendorLogic(String),
     /// An instance of the project's own function block that no variable
     /// declares (instance, type).
     UndeclaredInstance(String, String),
@@ -98,6 +100,10 @@ impl fmt::Display for SoftError {
                 f,
                 "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD"
             ),
+            SoftError::Block(name) if name.eq_ignore_ascii_case("EXECUTE") => write!(
+                f,
+                "{name} is CODESYS's block of in-line ST: the soft PLC does not run ST"
+            ),
             SoftError::Block(name) => write!(
                 f,
                 "{name} is not a standard block the soft PLC has (a vendor's or a library's block)"
@@ -113,6 +119,9 @@ impl fmt::Display for SoftError {
                 f,
                 "{reader} is wired from {block}'s `{pin}`, an output the block does not have (its outputs: {has})"
             ),
+            SoftError::VendorLogic(why) => {
+                f.write_str(&crate::ladder::plcopen::vendor::logic_refused(why))
+            }
             SoftError::Follows => f.write_str("fed by an element refused above"),
             SoftError::UndeclaredInstance(name, ty) => write!(
                 f,
