@@ -416,3 +416,33 @@ impl Body {
         Ok(())
     }
 }
+
+impl Body {
+    /// Reads vendor element `n` for the bit machines and the page: a
+    /// network title is a comment at its place (its rung's, as a
+    /// `<comment>` is), settings are nothing, an unknown element without
+    /// wires or data is skipped with a warning, one carrying logic is
+    /// refused at its line.
+    pub(super) fn vendor_element(&mut self, n: &Node) {
+        use super::vendor::{classify, Vendor};
+        match classify(n) {
+            Vendor::Title(text) => {
+                let (row, col) = position(n);
+                self.comments.push(CommentBox {
+                    row,
+                    col,
+                    text,
+                    line: n.line,
+                });
+            }
+            Vendor::Cosmetic => {}
+            Vendor::Unknown(what) => self.warnings.push(Located::new(
+                n.line,
+                format!("{what} skipped: a vendor's own element"),
+            )),
+            Vendor::Logic(why) => self
+                .errors
+                .push(Located::new(n.line, ImportError::VendorLogic(why))),
+        }
+    }
+}

@@ -73,33 +73,3 @@ pub(crate) fn classify(n: &Node) -> Vendor {
 pub(crate) fn logic_refused(why: &str) -> String {
     format!("<vendorElement> carries logic ({why}): an element of the tool that wrote the file, which Hashigo cannot run")
 }
-
-impl super::body::Body {
-    /// Reads vendor element `n` for the bit machines and the page: a
-    /// network title is a comment at its place (its rung's, as a
-    /// `<comment>` is), settings are nothing, an unknown element without
-    /// wires or data is skipped with a warning, one carrying logic is
-    /// refused at its line.
-    pub(super) fn vendor_element(&mut self, n: &Node) {
-        use crate::error::Located;
-        match classify(n) {
-            Vendor::Title(text) => {
-                let (row, col) = super::parts::position(n);
-                self.comments.push(super::body::CommentBox {
-                    row,
-                    col,
-                    text,
-                    line: n.line,
-                });
-            }
-            Vendor::Cosmetic => {}
-            Vendor::Unknown(what) => self.warnings.push(Located::new(
-                n.line,
-                format!("{what} skipped: a vendor's own element"),
-            )),
-            Vendor::Logic(why) => self
-                .errors
-                .push(Located::new(n.line, super::ImportError::VendorLogic(why))),
-        }
-    }
-}

@@ -73,7 +73,12 @@ impl Emitter<'_> {
         }
         self.out.warnings.extend(g.warnings.iter().cloned());
         self.failed.clear();
-        super::infer::output_types(self, g);
+        let known = super::infer::Known {
+            operand: &|x| self.expression(x).ok().map(|o| o.ty),
+            user: self.user,
+        };
+        let types = super::infer::output_types(&known, g, self.index);
+        self.out.types.extend(types);
         for i in order(g) {
             let e = &g.elements[i];
             if let Err(err) = self.element(g, e) {
@@ -404,18 +409,7 @@ impl Emitter<'_> {
         if let Some(iface) = self.user.get(&upper) {
             return self.user_block(g, e, type_name, instance, &iface.clone());
         }
-        if self
-            .own_blocks
-            .blocks
-            .iter()
-            .any(|b| b.eq_ignore_ascii_case(type_name))
-        {
-            // Drawn, so it would run: only its instance is missing.
-            return Err(SoftError::UndeclaredInstance(
-                instance.to_string(),
-                type_name.to_string(),
-            ));
-        }
+        super::formal::check_own_instance(self.own_blocks, type_name, instance)?;
         if let Some((_, how)) = self
             .own_blocks
             .names

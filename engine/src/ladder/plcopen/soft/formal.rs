@@ -86,3 +86,20 @@ pub(super) fn check_output(
         _ => Ok(()),
     }
 }
+
+/// Refuses a call of one of the project's own function blocks drawn in
+/// LD or FBD (which run) when it gets here: no variable declares its
+/// instance (it was told the soft PLC runs such blocks, which it does).
+pub(super) fn check_own_instance(
+    own: &super::declare::OwnTypes,
+    type_name: &str,
+    instance: &str,
+) -> Result<(), SoftError> {
+    if own.blocks.iter().any(|b| b.eq_ignore_ascii_case(type_name)) {
+        return Err(SoftError::UndeclaredInstance(
+            instance.to_string(),
+            type_name.to_string(),
+        ));
+    }
+    Ok(())
+}

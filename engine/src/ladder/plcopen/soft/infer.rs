@@ -7,7 +7,7 @@
 
 use std::collections::HashMap;
 
-use super::emit::Emitter;
+use super::declare::Interface;
 use super::functions::{Function, Operand};
 use super::graph::{Element, Graph, Kind, Source};
 use super::order::order;
@@ -41,9 +41,17 @@ pub(super) fn function_output(e: &Element) -> String {
         .unwrap_or_else(|| "OUT".into())
 }
 
-/// Records, in the emitter's generated types, the output type of every
-/// function of `g` the drawing settles.
-pub(super) fn output_types(em: &mut Emitter, g: &Graph) {
+/// What the types are found from: the type of a variable, address or
+/// literal as the file writes it (`None`: not one; `Some(None)`: an
+/// untyped literal), and the project's own blocks by type (upper-case).
+pub(super) struct Known<'a> {
+    pub operand: &'a dyn Fn(&str) -> Option<Option<DataType>>,
+    pub user: &'a HashMap<String, Interface>,
+}
+
+/// The output type of every function of `g` (the body's place `index`)
+/// the drawing settles, by its output variable's name (`_<index>_n<id>_OUT`).
+pub(super) fn output_types(em: &Known, g: &Graph, index: usize) -> Vec<(String, DataType)> {
     let functions: Vec<(usize, Function)> = order(g)
         .into_iter()
         .filter_map(|i| match &g.elements[i].kind {
@@ -69,16 +77,18 @@ pub(super) fn output_types(em: &mut Emitter, g: &Graph) {
             break;
         }
     }
-    for (id, t) in known {
-        let e = &g.elements[g.by_id[id]];
-        let name = format!("_{}_n{id}_{}", em.index, function_output(e));
-        em.out.types.insert(name, t);
-    }
+    known
+        .into_iter()
+        .map(|(id, t)| {
+            let e = &g.elements[g.by_id[id]];
+            (format!("_{index}_n{id}_{}", function_output(e)), t)
+        })
+        .collect()
 }
 
 /// Function `f`'s result type at `e`, if its inputs settle it.
 fn settled(
-    em: &Emitter,
+    em: &Known,
     g: &Graph,
     e: &Element,
     f: Function,
@@ -126,7 +136,7 @@ fn settled(
 /// The type of what `s` carries: `None` not known yet, `Some(None)` an
 /// untyped literal.
 fn source_type(
-    em: &Emitter,
+    em: &Known,
     g: &Graph,
     s: &Source,
     known: &HashMap<&str, DataType>,
@@ -135,7 +145,7 @@ fn source_type(
     let from = &g.elements[*g.by_id.get(&s.from)?];
     match &from.kind {
         Kind::LeftRail | Kind::Contact { .. } | Kind::Coil { .. } => Some(Some(DataType::Bool)),
-        Kind::InVariable(x) | Kind::InOutVariable(x) => em.expression(x).ok().map(|o| o.ty),
+        Kind::InVariable(x) | Kind::InOutVariable(x) => (em.operand)(x),
         Kind::Continuation(name) if depth <= crate::limits::MAX_CONNECTOR_CHAIN => {
             let c = &g.elements[*g.connectors.get(&name.to_ascii_lowercase())?];
             match c.inputs.first()?.1.as_slice() {
