@@ -719,3 +719,63 @@ fn why_names_the_il_line_that_writes_a_variable_the_ladder_does_not_show() {
         "{out}"
     );
 }
+
+/// Item 7 on the bit machines: a CTU's misspelled `RESET` was dropped
+/// (the counter never reset); refused at the block's line, as a TON's
+/// `PTT` (which was "its PT input is not connected").
+#[test]
+fn a_bit_machines_block_input_it_does_not_have_is_refused_at_its_line() {
+    let vars = [
+        var("pulse", "BOOL", "%IX0.0"),
+        var("clear", "BOOL", "%IX0.1"),
+        var("done", "BOOL", "%QX0.0"),
+        var("c0", "CTU", ""),
+        var("t0", "TON", ""),
+        var("lamp", "BOOL", "%QX0.1"),
+    ]
+    .concat();
+    let body = [
+        input(1, "pulse"),
+        input(2, "clear"),
+        input(5, "3"),
+        block(
+            3,
+            "CTU",
+            "c0",
+            &[("CU", 1, ""), ("RESET", 2, ""), ("PV", 5, "")],
+            &["Q", "CV"],
+        ),
+        output(4, 3, "Q", "done"),
+        input(6, "T#500ms"),
+        block(
+            7,
+            "TON",
+            "t0",
+            &[("IN", 1, ""), ("PTT", 6, "")],
+            &["Q", "ET"],
+        ),
+        output(8, 7, "Q", "lamp"),
+    ]
+    .concat();
+    let xml = project(&vars, &body, "");
+    let map = engine::ladder::plcopen::VarMap::parse("c0,C00\nt0,T00\n").expect("a map");
+    let errors = refused(
+        engine::ladder::plcopen::import_pou(&xml, Some(MachineId::Io86a), Some(&map), None),
+        "misspelled inputs",
+    );
+    let said: Vec<String> = errors
+        .iter()
+        .map(|e| format!("{}: {}", e.line, e.error))
+        .collect();
+    let (ctu, ton) = (
+        line_of(&xml, "typeName=\"CTU\""),
+        line_of(&xml, "typeName=\"TON\""),
+    );
+    assert_eq!(
+        said,
+        [
+            format!("{ctu}: CTU block c0: it has no input `RESET` (its inputs: CU, R, PV)"),
+            format!("{ton}: TON block t0: it has no input `PTT` (its inputs: IN, PT)"),
+        ]
+    );
+}
