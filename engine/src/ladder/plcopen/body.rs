@@ -69,6 +69,9 @@ pub(super) struct Body {
     pub(super) machine: Option<MachineId>,
     /// Soft PLC: each block's type (upper case), by localId.
     pub(super) block_types: HashMap<String, String>,
+    /// Every block's type and instance as written, by localId (a wire
+    /// from an output it lacks is said by name).
+    pub(super) block_names: HashMap<String, (String, String)>,
     /// Soft PLC: the outVariables fed from a block's pin.
     pub(super) block_outs: Vec<BlockOut>,
     /// Soft PLC: the (block, pin) other elements take power from.

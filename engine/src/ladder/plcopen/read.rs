@@ -131,6 +131,8 @@ impl Body {
                     })
                     .unwrap_or_default();
                 self.enables.insert(id.to_string(), en);
+                self.block_names
+                    .insert(id.to_string(), type_and_instance(n));
             }
             "inVariable" => {
                 let expr = n
@@ -185,6 +187,7 @@ impl Body {
                 Some("continuation") => self.follow_connector(r, what)?,
                 Some("block") => {
                     let pin = c.attr("formalParameter").unwrap_or("Q");
+                    self.has_output(r, pin).map_err(fail)?;
                     self.point(r, pin)
                 }
                 Some("inVariable") => match self.variables.get(r).cloned() {
@@ -445,4 +448,34 @@ impl Body {
                 .push(Located::new(n.line, ImportError::VendorLogic(why))),
         }
     }
+}
+
+impl Body {
+    /// Refuses a wire from output `pin` of block `id` when the block is a
+    /// standard one without it (it made a point nothing drives: "no path
+    /// joins the left rail"). Functions and others are left to their
+    /// readers.
+    fn has_output(&self, id: &str, pin: &str) -> Result<(), Connection> {
+        let Some((ty, instance)) = self.block_names.get(id) else {
+            return Ok(());
+        };
+        let has = crate::softplc::pins::outputs(&ty.to_ascii_uppercase());
+        let known =
+            pin.eq_ignore_ascii_case("ENO") || has.iter().any(|(p, _)| p.eq_ignore_ascii_case(pin));
+        if has.is_empty() || known || BlockKind::parse(ty).is_none() {
+            return Ok(());
+        }
+        let list: Vec<&str> = has.iter().map(|(p, _)| *p).collect();
+        Err(Connection::NoOutput {
+            block: format!("{ty} block {instance}").trim_end().to_string(),
+            pin: pin.to_string(),
+            has: list.join(", "),
+        })
+    }
+}
+
+/// A block's type and instance as written (trimmed).
+fn type_and_instance(n: &Node) -> (String, String) {
+    let name = |a: &str| n.attr(a).unwrap_or_default().trim().to_string();
+    (name("typeName"), name("instanceName"))
 }

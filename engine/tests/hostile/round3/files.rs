@@ -779,3 +779,52 @@ fn a_bit_machines_block_input_it_does_not_have_is_refused_at_its_line() {
         ]
     );
 }
+
+/// Item 14 on the bit machines: a wire from an output the block does not
+/// have was "no path joins the left rail to coil Y01"; it says the pin,
+/// as the soft PLC's readers do.
+#[test]
+fn every_reader_says_a_wire_from_an_output_a_block_lacks() {
+    let vars = [
+        var("start", "BOOL", "%IX0.0"),
+        var("lamp", "BOOL", "%QX0.1"),
+        var("t0", "TON", ""),
+    ]
+    .concat();
+    let body = [
+        input(1, "start"),
+        input(2, "T#500ms"),
+        block(
+            3,
+            "TON",
+            "t0",
+            &[("IN", 1, ""), ("PT", 2, "")],
+            &["Q", "ET"],
+        ),
+        output(4, 3, "QQ", "lamp"),
+    ]
+    .concat();
+    let xml = project(&vars, &body, "");
+    let at = line_of(&xml, "<outVariable localId=\"4\"");
+    let map = engine::ladder::plcopen::VarMap::parse("t0,T00\n").expect("a map");
+    let said = |machine| -> Vec<String> {
+        let errors = refused(
+            engine::ladder::plcopen::import_pou(&xml, Some(machine), Some(&map), None),
+            "a wire from QQ",
+        );
+        errors
+            .iter()
+            .map(|e| format!("{}: {}", e.line, e.error))
+            .collect()
+    };
+    assert_eq!(
+        said(MachineId::Io86a),
+        [format!("{at}: output variable lamp is wired from TON block t0's `QQ`, an output the block does not have (its outputs: Q, ET)")],
+    );
+    // The page's reader on the soft PLC said it already, at the block.
+    let block = line_of(&xml, "typeName=\"TON\"");
+    assert_eq!(
+        said(MachineId::SoftPlc),
+        [format!("{block}: TON block t0: TON has no output QQ")]
+    );
+}
