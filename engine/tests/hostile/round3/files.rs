@@ -828,3 +828,35 @@ fn every_reader_says_a_wire_from_an_output_a_block_lacks() {
         [format!("{block}: TON block t0: TON has no output QQ")]
     );
 }
+
+/// Issue #44 item 4: with every element at 0,0, each of 40 networks keeps
+/// its own title (past the 16 rungs a comment weighs by place).
+#[test]
+fn forty_codesys_network_titles_each_go_to_their_own_rung() {
+    let at = r#"<position x="0" y="0"/>"#;
+    let mut body = format!("<leftPowerRail localId=\"0\">{at}<connectionPointOut formalParameter=\"none\"/></leftPowerRail>\n");
+    let mut vars = var("start", "BOOL", "%IX0.0");
+    for k in 0..40u32 {
+        let (title, contact, coil) = (100 + 3 * k, 101 + 3 * k, 102 + 3 * k);
+        body.push_str(&format!(
+            r#"<vendorElement localId="{title}">{at}<alternativeText><xhtml xmlns="http://www.w3.org/1999/xhtml">network {k}</xhtml></alternativeText><addData><data name="http://www.3s-software.com/plcopenxml/fbdelementtype" handleUnknown="implementation"><ElementType xmlns="">networktitle</ElementType></data></addData></vendorElement>
+<contact localId="{contact}">{at}<connectionPointIn><connection refLocalId="0"/></connectionPointIn><connectionPointOut/><variable>start</variable></contact>
+<coil localId="{coil}">{at}<connectionPointIn><connection refLocalId="{contact}"/></connectionPointIn><connectionPointOut/><variable>m{k}</variable></coil>
+"#
+        ));
+        vars.push_str(&var(&format!("m{k}"), "BOOL", ""));
+    }
+    let xml = project(&vars, &body, "")
+        .replace("<FBD>", "<LD>")
+        .replace("</FBD>", "</LD>");
+    let imported = engine::ladder::plcopen::import_pou(&xml, Some(MachineId::SoftPlc), None, None)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    let comments: Vec<String> = imported
+        .ladder
+        .rungs
+        .iter()
+        .map(|r| r.comment.clone())
+        .collect();
+    let expected: Vec<String> = (0..40).map(|k| format!("network {k}")).collect();
+    assert_eq!(comments, expected);
+}
