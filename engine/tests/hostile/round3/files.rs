@@ -860,3 +860,88 @@ fn forty_codesys_network_titles_each_go_to_their_own_rung() {
     let expected: Vec<String> = (0..40).map(|k| format!("network {k}")).collect();
     assert_eq!(comments, expected);
 }
+
+/// Items 7 and 8 through `hashigo run`: a misspelled input exits 2 with
+/// the block's line; a loop of wires through an ADD runs, adding one a
+/// scan.
+#[test]
+fn hashigo_run_refuses_a_misspelled_input_and_runs_a_typed_loop() {
+    let tmp = crate::common::Temp::new("round3-files-run");
+    let vars = [
+        var("start", "BOOL", "%IX0.0"),
+        var("lamp", "BOOL", "%QX0.0"),
+        var("t0", "TON", ""),
+    ]
+    .concat();
+    let body = [
+        input(1, "start"),
+        input(2, "T#500ms"),
+        block(
+            3,
+            "TON",
+            "t0",
+            &[("IN", 1, ""), ("PTT", 2, "")],
+            &["Q", "ET"],
+        ),
+        output(4, 3, "Q", "lamp"),
+    ]
+    .concat();
+    let xml = project(&vars, &body, "");
+    let at = line_of(&xml, "typeName=\"TON\"");
+    let path = tmp.file("misspelled.xml", &xml);
+    let args = [
+        "run",
+        "--machine",
+        "soft-plc",
+        "--program",
+        &path,
+        "--until",
+        "50ms",
+        "--every",
+        "10ms",
+        "--watch",
+    ];
+    let out = crate::common::hashigo(&[&args[..], &["lamp"]].concat(), "");
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        crate::common::text(&out.stderr),
+        format!("error: {path}:{at}: TON block t0 has no input `PTT` (its inputs: IN, PT)\n")
+    );
+
+    let vars = var("count", "INT", "%QW0");
+    let body = [
+        input(1, "INT#1"),
+        block(2, "ADD", "", &[("IN1", 2, "OUT"), ("IN2", 1, "")], &["OUT"]),
+        output(3, 2, "OUT", "count"),
+    ]
+    .concat();
+    let path = tmp.file("loop.xml", &project(&vars, &body, ""));
+    let args = [
+        "run",
+        "--machine",
+        "soft-plc",
+        "--program",
+        &path,
+        "--until",
+        "50ms",
+        "--every",
+        "10ms",
+        "--watch",
+        "count",
+    ];
+    let out = crate::common::hashigo(&args, "");
+    let stdout = crate::common::text(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        crate::common::text(&out.stderr)
+    );
+    let counts: Vec<i64> = stdout
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).and_then(|v| v.parse().ok()).expect(l))
+        .collect();
+    assert_eq!(counts.len(), 6, "{stdout}");
+    assert!(counts.windows(2).all(|w| w[1] == w[0] + 1), "{stdout}");
+}
