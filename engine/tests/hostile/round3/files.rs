@@ -493,7 +493,7 @@ fn a_loop_whose_type_nothing_gives_is_refused_saying_so() {
     assert_eq!(
         soft_errors(&xml),
         [format!(
-            "{at}: a loop of wires through a ADD block: break it with a variable"
+            "{at}: ADD block: a loop of wires through it whose type nothing gives: type a literal in the loop (INT#1) or break it with a variable"
         )]
     );
 }

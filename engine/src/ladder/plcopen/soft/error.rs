@@ -85,7 +85,7 @@ impl fmt::Display for SoftError {
             SoftError::ConnectorLoop(name) => write!(f, "connector {name} feeds itself"),
             SoftError::Feedback(ty) => write!(
                 f,
-                "a loop of wires through a {ty} block: break it with a variable"
+                "{ty} block: a loop of wires through it whose type nothing gives: type a literal in the loop (INT#1) or break it with a variable"
             ),
             SoftError::Expression(x) => {
                 write!(f, "`{x}` is not a variable, an address or a literal")
