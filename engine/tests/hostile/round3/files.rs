@@ -945,3 +945,84 @@ fn hashigo_run_refuses_a_misspelled_input_and_runs_a_typed_loop() {
     assert_eq!(counts.len(), 6, "{stdout}");
     assert!(counts.windows(2).all(|w| w[1] == w[0] + 1), "{stdout}");
 }
+
+/// Item 5 on a PLCopen project: a CTU's CV wired to `count` (at `%QW0`)
+/// was "No output of the ladder writes"; by name, by address and as
+/// `c0.CV` it names the box.
+#[test]
+fn why_on_a_plcopen_projects_counter_output_names_its_box() {
+    let tmp = crate::common::Temp::new("round3-why-plcopen");
+    let vars = [
+        var("pulse", "BOOL", "%IX0.0"),
+        var("clear", "BOOL", "%IX0.1"),
+        var("count", "INT", "%QW0"),
+        var("c0", "CTU", ""),
+    ]
+    .concat();
+    let body = [
+        input(1, "pulse"),
+        input(2, "clear"),
+        input(5, "3"),
+        block(
+            3,
+            "CTU",
+            "c0",
+            &[("CU", 1, ""), ("R", 2, ""), ("PV", 5, "")],
+            &["Q", "CV"],
+        ),
+        output(4, 3, "CV", "count"),
+    ]
+    .concat();
+    let path = tmp.file("counter.xml", &project(&vars, &body, ""));
+    let events = tmp.file("events.csv", "100ms,pulse,1\n150ms,pulse,0\n");
+    for device in ["count", "%QW0", "c0.CV"] {
+        let out = crate::common::hashigo(
+            &[
+                "why",
+                "--machine",
+                "soft-plc",
+                "--program",
+                &path,
+                "--input",
+                &events,
+                "--at",
+                "200ms",
+                "--device",
+                device,
+            ],
+            "",
+        );
+        let stdout = crate::common::text(&out.stdout);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            crate::common::text(&out.stderr)
+        );
+        let lines: Vec<&str> = stdout.lines().collect();
+        // The CTU writes nothing else, so it is an output box: `count` is
+        // its output as a coil's device is; `c0.CV` is its instance's.
+        let (name, box_line) = if device == "c0.CV" {
+            ("c0.CV", "box CTU c0 writes c0.CV through its CV output; its power (CU) is off in this scan.")
+        } else {
+            (
+                "count",
+                "c0: CTU(R := clear, PV := 3, CV => count) gets no power.",
+            )
+        };
+        assert!(
+            lines[0].starts_with(&format!("{name} = 1 at 200 ms")),
+            "{stdout}"
+        );
+        assert_eq!(
+            lines[1],
+            format!("Rung 1, row 1, column 2: {box_line}"),
+            "{stdout}"
+        );
+        let cause = "  rung 1, row 1, column 1: contact pulse; pulse = 0";
+        assert!(
+            lines.last().is_some_and(|l| l.starts_with(cause)),
+            "{stdout}"
+        );
+    }
+}
