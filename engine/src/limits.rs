@@ -27,6 +27,11 @@ pub const MAX_CONNECTOR_CHAIN: usize = 64;
 /// How deeply PLCopen XML elements may nest. Real files nest about 12 deep.
 pub const MAX_XML_DEPTH: usize = 256;
 
+/// Attributes on one XML element. PLCopen elements carry at most a
+/// handful (the real projects six); the limit keeps a hostile element
+/// from being built before it is refused.
+pub const MAX_XML_ATTRIBUTES: usize = 256;
+
 /// Entries of one LDmicro table (a look-up table's values, a
 /// piecewise-linear table's points, a string's characters, a shift
 /// register's stages): LDmicro's own editor takes a few dozen.

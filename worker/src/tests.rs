@@ -169,3 +169,24 @@ fn an_ldmicro_file_opens_as_a_soft_plc_ladder_or_says_why_at_its_line() {
         "{errors:?}"
     );
 }
+
+#[test]
+fn an_element_with_too_many_attributes_is_refused_at_its_line() {
+    // Issue #43 item 10: the page's reader is the engine's, attributes
+    // read in linear time and at most 256 an element.
+    let attrs: String = (0..100_000).map(|i| format!(" a{i}=\"\"")).collect();
+    let text = NAMED.replacen("<types>", &format!("<types>\n<x{attrs}/>"), 1);
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("<x a0"))
+        .expect("there")
+        + 1;
+    let reply = import_request(&text, None);
+    assert!(reply.ladder.is_none());
+    assert_eq!(
+        reply.errors,
+        [format!(
+            "named.xml:{line}: <x> has more than 256 attributes (docs/limits.md)"
+        )]
+    );
+}

@@ -245,3 +245,40 @@ pub fn deciding_output(ladder: &Ladder, device: &str) -> Option<(usize, Pos)> {
         .map(|u| (u.rung, u.pos))
         .next_back()
 }
+
+/// A box that writes `device` through one of its outputs (`CV => parts`),
+/// or the box of the instance whose output `device` names (`c0.CV`):
+/// the last one in the ladder (rung, cell, the output pin). What `why`
+/// names when no coil or output box writes it.
+pub fn box_output(ladder: &Ladder, device: &str) -> Option<(usize, Pos, String)> {
+    let device = device.trim();
+    let member = device.split_once('.');
+    let mut found = None;
+    for (i, rung) in ladder.rungs.iter().enumerate() {
+        for (pos, e) in rung.elements() {
+            let Some(b) = e.block() else {
+                continue;
+            };
+            let through = b
+                .outputs
+                .iter()
+                .find(|(_, v)| v.trim().eq_ignore_ascii_case(device))
+                .map(|(pin, _)| pin.clone());
+            let own = member
+                .filter(|(inst, _)| {
+                    !b.instance.is_empty() && b.instance.trim().eq_ignore_ascii_case(inst)
+                })
+                .and_then(|(_, pin)| {
+                    let kind = b.kind();
+                    crate::softplc::pins::outputs(&kind)
+                        .into_iter()
+                        .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                        .map(|(p, _)| p.to_string())
+                });
+            if let Some(pin) = through.or(own) {
+                found = Some((i, pos, pin));
+            }
+        }
+    }
+    found
+}

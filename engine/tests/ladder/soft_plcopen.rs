@@ -59,7 +59,7 @@ const REFUSED: [(&str, &str); 7] = [
     ),
     (
         "codesys-execute.xml",
-        "<vendorElement> does not run on the soft PLC",
+        "EXECUTE is CODESYS's block of in-line ST",
     ),
     (
         "openplc-ex-blink-p1am.xml",

@@ -10,7 +10,7 @@ use engine::clock::PeriodicClock;
 use engine::ladder::compile::Options;
 use engine::ladder::live::LiveLadder;
 use engine::ladder::target::check_element;
-use engine::ladder::why::{causes, deciding_output, Explanation};
+use engine::ladder::why::{box_output, causes, deciding_output, Explanation};
 use engine::ladder::Ladder;
 use engine::machines::new_plc;
 use engine::plc::{Command, Device, Plc, PlcError, Value};
@@ -74,7 +74,12 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         return Err(problems);
     }
     let changes = run_to(plc.as_mut(), ladder, (&name, device), &inputs, at);
-    print!("{}", report(ladder, live, plc.as_ref(), &name, &changes));
+    let il = explained
+        .il
+        .as_deref()
+        .map(|text| (explained.name.as_str(), text));
+    let out = report(ladder, live, plc.as_ref(), (&name, il), &changes);
+    print!("{out}");
     Ok(())
 }
 
@@ -87,6 +92,9 @@ struct Explained {
     written: Box<dyn Plc>,
     name: String,
     settings: source::Settings,
+    /// The soft PLC's Instruction List as written, when that is the
+    /// program: a variable its ladder does not show is found at its line.
+    il: Option<String>,
 }
 
 impl Explained {
@@ -124,7 +132,10 @@ impl Explained {
         let mut plc = new_plc(machine);
         plc.load_text(&live.listing.text)
             .map_err(|e| located(&origin, e))?;
+        let il = (source.format == Format::Il && machine == MachineId::SoftPlc)
+            .then(|| source.file.text.clone());
         Ok(Explained {
+            il,
             ladder,
             live,
             plc,
@@ -209,7 +220,16 @@ impl<'a> Names<'a> {
         let mut spelled = HashMap::new();
         for rung in &ladder.rungs {
             for (_, e) in rung.elements() {
-                if let Some(name) = e.read_device().or(e.written_device()) {
+                // A box's operands too: `%QW0` is the `level` a DIV writes.
+                let operands = e.block().into_iter().flat_map(|b| {
+                    b.inputs
+                        .iter()
+                        .chain(&b.outputs)
+                        .map(|(_, o)| o.as_str())
+                        .filter(|o| engine::ladder::block::is_variable(o))
+                });
+                let names = e.read_device().or(e.written_device()).into_iter();
+                for name in names.chain(operands) {
                     if let Ok(d) = running.device(name) {
                         spelled.entry(d).or_insert_with(|| name.to_string());
                     }
@@ -233,11 +253,13 @@ impl<'a> Names<'a> {
 }
 
 /// The explanation as text.
+/// `il`: the IL program as written (its file's name, its text), when it
+/// is one.
 fn report(
     ladder: &Ladder,
     live: &LiveLadder,
     plc: &dyn Plc,
-    name: &str,
+    (name, il): (&str, Option<(&str, &str)>),
     changes: &Changes,
 ) -> String {
     let mut out = String::new();
@@ -252,6 +274,22 @@ fn report(
         since(changes.get(name))
     );
     let Some((rung, pos)) = deciding_output(ladder, name) else {
+        if let Some((rung, pos, pin)) = box_output(ladder, name) {
+            box_report(
+                &mut out,
+                (ladder, live, plc),
+                name,
+                (rung, pos, &pin),
+                changes,
+            );
+            return out;
+        }
+        // The ladder drew the variable away (a box's output carried on as
+        // its power): the program's own line still writes it.
+        if let Some((file, (line, code))) = il.and_then(|(f, t)| Some((f, il_writer(t, name)?))) {
+            let _ = writeln!(out, "Line {line} of {file} writes {name}: {code}");
+            return out;
+        }
         let _ = writeln!(
             out,
             "No output of the ladder writes {name}: it is an input or driven from outside."
@@ -283,6 +321,70 @@ fn report(
         cause_line(&mut out, ladder, rung, &cause, plc, changes);
     }
     out
+}
+
+/// The box at `pos` of rung `rung` that writes `name` through its output
+/// `pin` (`CV => parts`, or `c0.CV` itself): where it is, whether its
+/// power input was on in the scan, what it reads and, when off, what
+/// would give it power.
+fn box_report(
+    out: &mut String,
+    (ladder, live, plc): (&Ladder, &LiveLadder, &dyn Plc),
+    name: &str,
+    (rung, pos, pin): (usize, engine::ladder::Pos, &str),
+    changes: &Changes,
+) {
+    let Some(b) = ladder.rungs[rung]
+        .get(pos)
+        .and_then(engine::ladder::Element::block)
+    else {
+        return;
+    };
+    let what = format!("{} {}", b.kind(), b.instance.trim());
+    let powered = plc.trace().and_then(|t| {
+        let (_, power) = live.power(t).into_iter().find(|(i, _)| *i == rung)?;
+        power.iter().find(|p| p.pos == pos).map(|p| p.power_in)
+    });
+    let state = match powered {
+        Some(true) => "on",
+        Some(false) => "off",
+        None => "not run",
+    };
+    let _ = writeln!(
+        out,
+        "Rung {}, row {}, column {}: box {} writes {name} through its {pin} output; its power ({}) is {state} in this scan.",
+        rung + 1,
+        pos.row + 1,
+        pos.col + 1,
+        what.trim(),
+        b.power_in()
+    );
+    let reads: Vec<String> = b
+        .inputs
+        .iter()
+        .map(|(p, operand)| match plc.device(operand) {
+            Ok(d) => format!("{p} {operand} = {}", plc.read(d)),
+            Err(_) => format!("{p} {operand}"),
+        })
+        .collect();
+    if !reads.is_empty() {
+        let _ = writeln!(out, "It reads {}.", reads.join("; "));
+    }
+    if powered != Some(false) {
+        return;
+    }
+    let why = plc.trace().and_then(|t| live.explain(t, rung, pos));
+    if let Some(why) = why.filter(|w| !w.causes.is_empty()) {
+        let lead = if why.together {
+            "Its power would come on only if all of these changed:"
+        } else {
+            "Its power would come on if any one of these changed:"
+        };
+        let _ = writeln!(out, "{lead}");
+        for cause in causes(ladder, rung, &why) {
+            cause_line(out, ladder, rung, &cause, plc, changes);
+        }
+    }
 }
 
 /// One cause: its cell and element, a box's operands' values, a
@@ -346,4 +448,37 @@ fn since(change: Option<&Watched>) -> String {
         Some((t, scan)) => format!(", since {t} ms (scan {scan})"),
         None => ", unchanged since power-on".to_string(),
     }
+}
+
+/// The last line of an IL text that writes `name`: a `CAL` giving it an
+/// output (`Q => name`), or `ST`, `STN`, `S`, `R` of it (its line, the
+/// instruction as written).
+fn il_writer(il: &str, name: &str) -> Option<(usize, String)> {
+    let wanted = |word: &str| {
+        word.trim_end_matches([',', ')', ';'])
+            .eq_ignore_ascii_case(name)
+    };
+    let mut found = None;
+    for (i, line) in il.lines().enumerate() {
+        let code = line.split("(*").next().unwrap_or_default().trim();
+        // A label (`_skip0: LD x`) is not the instruction.
+        let code = match code.split_once(':') {
+            Some((label, rest)) if !label.contains(' ') && !rest.starts_with('=') => rest.trim(),
+            _ => code,
+        };
+        let words: Vec<&str> = code.split_whitespace().collect();
+        let stores = matches!(
+            words.first().map(|w| w.to_ascii_uppercase()).as_deref(),
+            Some("ST" | "STN" | "S" | "R")
+        ) && words.get(1).is_some_and(|w| wanted(w));
+        let output = words.windows(2).any(|w| w[0] == "=>" && wanted(w[1]))
+            || words.iter().any(|w| {
+                w.strip_prefix("=>")
+                    .is_some_and(|w| !w.is_empty() && wanted(w))
+            });
+        if stores || output {
+            found = Some((i + 1, code.to_string()));
+        }
+    }
+    found
 }

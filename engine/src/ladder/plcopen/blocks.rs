@@ -84,6 +84,7 @@ pub(super) fn pin_of<'a>(n: &'a Node, name: &str) -> Option<&'a Node> {
 /// A rising mark on a counter's CU or CD is what the counter does.
 /// A mark that is no XML boolean or edge is refused, as on a contact.
 pub(super) fn plain_pins(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
+    known_inputs(n, ty)?;
     let pins = ["inputVariables", "outputVariables"]
         .into_iter()
         .filter_map(|side| n.child(side))
@@ -104,6 +105,39 @@ pub(super) fn plain_pins(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
             format!("{ty} block"),
             format!("its pin {name} is {mark}"),
         ));
+    }
+    Ok(())
+}
+
+/// Refuses an input of a standard function block (`ty`: TON … RS) that
+/// the block does not have (EN aside): a misspelled CTU `RESET` was
+/// dropped and the counter never reset. Functions (AND, GT …) take
+/// their inputs in order, whatever their names.
+fn known_inputs(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
+    let has = crate::softplc::pins::inputs(ty.name());
+    if has.is_empty() {
+        return Ok(());
+    }
+    let inputs = n
+        .child("inputVariables")
+        .into_iter()
+        .flat_map(|v| v.all("variable"));
+    for pin in inputs {
+        let name = pin.attr("formalParameter").unwrap_or_default();
+        let known = name.eq_ignore_ascii_case("EN")
+            || has.iter().any(|(p, _)| p.eq_ignore_ascii_case(name));
+        if !known {
+            let list: Vec<&str> = has.iter().map(|(p, _)| *p).collect();
+            let instance = n.attr("instanceName").unwrap_or_default();
+            return Err(ImportError::Gate(
+                format!("{ty} block {instance}").trim_end().to_string(),
+                format!(
+                    "it has no input `{}` (its inputs: {})",
+                    crate::error::shown(name).trim_matches('"'),
+                    list.join(", ")
+                ),
+            ));
+        }
     }
     Ok(())
 }

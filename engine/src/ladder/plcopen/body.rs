@@ -69,6 +69,9 @@ pub(super) struct Body {
     pub(super) machine: Option<MachineId>,
     /// Soft PLC: each block's type (upper case), by localId.
     pub(super) block_types: HashMap<String, String>,
+    /// Every block's type and instance as written, by localId (a wire
+    /// from an output it lacks is said by name).
+    pub(super) block_names: HashMap<String, (String, String)>,
     /// Soft PLC: the outVariables fed from a block's pin.
     pub(super) block_outs: Vec<BlockOut>,
     /// Soft PLC: the (block, pin) other elements take power from.
@@ -139,6 +142,9 @@ pub(super) struct CommentBox {
     pub(super) row: usize,
     pub(super) col: usize,
     pub(super) text: String,
+    /// Its line: among rungs as near, it goes to the first one after
+    /// it in the file (CODESYS draws every element at 0,0).
+    pub(super) line: usize,
 }
 
 /// A spare relay taken: the relay, what it holds, the line needing it.

@@ -7,7 +7,8 @@ use quick_xml::Reader;
 use std::fmt;
 
 use crate::error::Located;
-use crate::limits::{MAX_INPUT_BYTES, MAX_XML_DEPTH};
+use crate::limits::{MAX_INPUT_BYTES, MAX_XML_ATTRIBUTES, MAX_XML_DEPTH};
+use std::collections::HashSet;
 
 /// Why the text is not XML the reader takes.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -28,6 +29,13 @@ pub enum XmlError {
     Empty,
     /// Elements nested past [`MAX_XML_DEPTH`].
     TooDeep,
+    /// An element with more than [`MAX_XML_ATTRIBUTES`] attributes (its
+    /// name).
+    TooManyAttributes(String),
+    /// An attribute written twice on one element (element, attribute).
+    DuplicateAttribute(String, String),
+    /// A second element at the top (its name).
+    SecondRoot(String),
 }
 
 impl fmt::Display for XmlError {
@@ -46,6 +54,17 @@ impl fmt::Display for XmlError {
             XmlError::TooDeep => write!(
                 f,
                 "elements nest more than {MAX_XML_DEPTH} deep here (docs/limits.md)"
+            ),
+            XmlError::TooManyAttributes(el) => write!(
+                f,
+                "<{el}> has more than {MAX_XML_ATTRIBUTES} attributes (docs/limits.md)"
+            ),
+            XmlError::DuplicateAttribute(el, a) => {
+                write!(f, "bad attribute in <{el}>: `{a}` is written twice")
+            }
+            XmlError::SecondRoot(el) => write!(
+                f,
+                "a second root element <{el}>: an XML file holds one element, the project"
             ),
         }
     }
@@ -143,11 +162,24 @@ impl Lines<'_> {
     }
 }
 
+/// The element `e` starts, its attributes read in linear time: quick-xml's
+/// own check for a name written twice compares each with every one
+/// before it (200 000 attributes took over 15 s), so a set of the names
+/// seen does it, and an element past [`MAX_XML_ATTRIBUTES`] is refused
+/// before the rest are read.
 fn start(e: &BytesStart, line: usize) -> Result<Node, XmlError> {
     let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
     let mut attrs = Vec::new();
-    for a in e.attributes() {
+    let mut seen: HashSet<Vec<u8>> = HashSet::new();
+    for a in e.attributes().with_checks(false) {
         let a = a.map_err(|err| XmlError::BadAttribute(name.clone(), err.to_string()))?;
+        if attrs.len() == MAX_XML_ATTRIBUTES {
+            return Err(XmlError::TooManyAttributes(name));
+        }
+        if !seen.insert(a.key.as_ref().to_vec()) {
+            let key = String::from_utf8_lossy(a.key.as_ref()).into_owned();
+            return Err(XmlError::DuplicateAttribute(name, key));
+        }
         let key = String::from_utf8_lossy(a.key.local_name().as_ref()).into_owned();
         let value = a
             .unescape_value()
@@ -167,6 +199,16 @@ fn start(e: &BytesStart, line: usize) -> Result<Node, XmlError> {
         line,
         ..Node::default()
     })
+}
+
+/// Refuses an element that starts after the root closed (XML has one
+/// root; the second was ignored).
+fn second_root(root: &Option<Node>, e: &BytesStart, line: usize) -> Result<(), Located<XmlError>> {
+    if root.is_none() {
+        return Ok(());
+    }
+    let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
+    Err(Located::new(line, XmlError::SecondRoot(name)))
 }
 
 /// Parses `text` into its root element; errors name their line. Nesting
@@ -200,16 +242,22 @@ pub fn parse(text: &str) -> Result<Node, Located<XmlError>> {
         })?;
         match event {
             Event::Start(e) => {
+                if stack.is_empty() {
+                    second_root(&root, &e, line)?;
+                }
                 if stack.len() >= MAX_XML_DEPTH {
                     return Err(Located::new(line, XmlError::TooDeep));
                 }
                 stack.push(start(&e, line).map_err(|m| Located::new(line, m))?)
             }
             Event::Empty(e) => {
+                if stack.is_empty() {
+                    second_root(&root, &e, line)?;
+                }
                 let node = start(&e, line).map_err(|m| Located::new(line, m))?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(node),
-                    None => root = root.or(Some(node)),
+                    None => root = Some(node),
                 }
             }
             Event::End(_) => {
@@ -218,7 +266,7 @@ pub fn parse(text: &str) -> Result<Node, Located<XmlError>> {
                     .ok_or_else(|| Located::new(line, XmlError::EndWithoutStart))?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(node),
-                    None => root = root.or(Some(node)),
+                    None => root = Some(node),
                 }
             }
             Event::Text(t) => {

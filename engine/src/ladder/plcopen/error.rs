@@ -81,6 +81,15 @@ pub enum Connection {
     /// More connectors in a row than [`crate::limits::MAX_CONNECTOR_CHAIN`]
     /// (the one past it).
     ConnectorChain(String),
+    /// A wire from an output a standard block does not have.
+    NoOutput {
+        /// The block (`TON block t0`).
+        block: String,
+        /// The pin the wire names.
+        pin: String,
+        /// The outputs it has.
+        has: String,
+    },
 }
 
 /// Why a PLCopen file could not be imported.
@@ -148,6 +157,8 @@ pub enum ImportError {
     WordOutput(String),
     /// An element Hashigo does not import (its name).
     Unsupported(String),
+    /// A vendor element that carries logic (why it is taken to).
+    VendorLogic(String),
     /// Part of the project the soft PLC does not run.
     Soft(super::soft::error::SoftError),
     /// A block type Hashigo does not import.
@@ -233,36 +244,7 @@ impl fmt::Display for ImportError {
                 "connector {} is drawn again (first on line {first}): a continuation must name one",
                 shown(name)
             ),
-            E::Connection { what, problem } => match problem {
-                Connection::NoRef => write!(f, "a connection of the {what} has no refLocalId"),
-                Connection::Missing(r) => write!(
-                    f,
-                    "the {what} connects to localId {}, which does not exist",
-                    shown(r)
-                ),
-                Connection::FromVariable(r) => write!(
-                    f,
-                    "the {what} takes power from a variable box (localId {}): wire it from the rail through a contact",
-                    shown(r)
-                ),
-                Connection::Unconnected => write!(f, "the {what} is not connected on its left"),
-                Connection::NoConnector(name) => write!(
-                    f,
-                    "the {what} takes power from continuation {}, whose connector is not drawn",
-                    shown(name)
-                ),
-                Connection::ConnectorChain(name) => write!(
-                    f,
-                    "the {what} passes through more than {} connectors in a row (at {}; docs/limits.md)",
-                    crate::limits::MAX_CONNECTOR_CHAIN,
-                    shown(name)
-                ),
-                Connection::ConnectorLoop(name) => write!(
-                    f,
-                    "the {what} takes power from connector {}, which feeds itself through its continuations",
-                    shown(name)
-                ),
-            },
+            E::Connection { what, problem } => connection(f, what, problem),
             E::NoVariable(kind) => write!(f, "a {kind} with no variable"),
             E::Variable(why) => why.fmt(f),
             E::Gate(what, why) => write!(f, "{what}: {why}"),
@@ -292,6 +274,7 @@ impl fmt::Display for ImportError {
                 "<{el}> is not imported: Hashigo's ladders have no word outputs from blocks"
             ),
             E::Unsupported(el) => write!(f, "<{el}> is not supported in LD or FBD bodies here"),
+            E::VendorLogic(why) => f.write_str(&super::vendor::logic_refused(why)),
             E::Soft(e) => e.fmt(f),
             E::UnsupportedBlock(ty) => write!(
                 f,
@@ -360,5 +343,44 @@ impl std::error::Error for ImportError {}
 impl From<XmlError> for ImportError {
     fn from(e: XmlError) -> Self {
         ImportError::Xml(e)
+    }
+}
+
+/// A [`Connection`] problem of `what` in words.
+fn connection(f: &mut fmt::Formatter<'_>, what: &str, problem: &Connection) -> fmt::Result {
+    match problem {
+        Connection::NoRef => write!(f, "a connection of the {what} has no refLocalId"),
+        Connection::Missing(r) => write!(
+            f,
+            "the {what} connects to localId {}, which does not exist",
+            shown(r)
+        ),
+        Connection::FromVariable(r) => write!(
+            f,
+            "the {what} takes power from a variable box (localId {}): wire it from the rail through a contact",
+            shown(r)
+        ),
+        Connection::Unconnected => write!(f, "the {what} is not connected on its left"),
+        Connection::NoConnector(name) => write!(
+            f,
+            "the {what} takes power from continuation {}, whose connector is not drawn",
+            shown(name)
+        ),
+        Connection::ConnectorChain(name) => write!(
+            f,
+            "the {what} passes through more than {} connectors in a row (at {}; docs/limits.md)",
+            crate::limits::MAX_CONNECTOR_CHAIN,
+            shown(name)
+        ),
+        Connection::ConnectorLoop(name) => write!(
+            f,
+            "the {what} takes power from connector {}, which feeds itself through its continuations",
+            shown(name)
+        ),
+        Connection::NoOutput { block, pin, has } => write!(
+            f,
+            "{what} is wired from {block}'s `{}`, an output the block does not have (its outputs: {has})",
+            shown(pin).trim_matches('"')
+        ),
     }
 }

@@ -29,6 +29,7 @@ mod soft_boxes;
 mod soft_index;
 mod soft_rungs;
 mod soft_vars;
+pub(crate) mod vendor;
 
 pub use declare::VarMap;
 pub use error::{Connection, ImportError, XmlError};

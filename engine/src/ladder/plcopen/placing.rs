@@ -102,7 +102,9 @@ impl Body {
     /// which may start lower than the next column's. Only the
     /// [`COMMENT_REACH`] rungs starting first below it are weighed (rungs
     /// are sorted by their top); below the last rung, the last rung
-    /// takes it.
+    /// takes it. Among rungs as near, the first one after it in the file
+    /// takes it, weighed too when past those 16: CODESYS draws every
+    /// element at 0,0 and writes each network's title before it.
     pub(super) fn attach_comments(&mut self, rungs: &mut [(Pos, RungLogic, usize)]) {
         if self.comments.is_empty() {
             return;
@@ -115,16 +117,34 @@ impl Body {
                 places.map(|p| drawn_x(p.col)).min().unwrap_or(0)
             })
             .collect();
+        // The rungs by their line in the file.
+        let mut by_line: Vec<(usize, usize)> =
+            rungs.iter().enumerate().map(|(i, r)| (r.2, i)).collect();
+        crate::sort::all(&mut by_line);
         for CommentBox {
             row: y,
             col: x,
             text,
+            line,
         } in std::mem::take(&mut self.comments)
         {
             let first = rungs.partition_point(|(top, _, _)| top.row < y);
             let distance = |i: usize| (rungs[i].0.row - y) + lefts[i].abs_diff(x);
+            // The first rung after the comment in the file.
+            let next = by_line
+                .get(by_line.partition_point(|&(l, _)| l <= line))
+                .map(|&(_, i)| i)
+                .filter(|&i| i >= first);
+            let after = |i: usize| {
+                if rungs[i].2 > line {
+                    rungs[i].2
+                } else {
+                    usize::MAX
+                }
+            };
             let i = (first..rungs.len().min(first + COMMENT_REACH))
-                .min_by_key(|&i| distance(i))
+                .chain(next)
+                .min_by_key(|&i| (distance(i), after(i), i))
                 .unwrap_or(rungs.len().saturating_sub(1));
             if let Some((_, r, _)) = rungs.get_mut(i) {
                 if !r.comment.is_empty() {

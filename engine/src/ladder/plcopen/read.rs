@@ -36,7 +36,12 @@ impl Body {
                     row: y,
                     col: x,
                     text: n.deep_text(),
+                    line: n.line,
                 });
+                continue;
+            }
+            if n.name == "vendorElement" {
+                b.vendor_element(n);
                 continue;
             }
             let Some(id) = n.attr("localId") else {
@@ -126,6 +131,8 @@ impl Body {
                     })
                     .unwrap_or_default();
                 self.enables.insert(id.to_string(), en);
+                self.block_names
+                    .insert(id.to_string(), type_and_instance(n));
             }
             "inVariable" => {
                 let expr = n
@@ -180,6 +187,7 @@ impl Body {
                 Some("continuation") => self.follow_connector(r, what)?,
                 Some("block") => {
                     let pin = c.attr("formalParameter").unwrap_or("Q");
+                    self.has_output(r, pin).map_err(fail)?;
                     self.point(r, pin)
                 }
                 Some("inVariable") => match self.variables.get(r).cloned() {
@@ -300,19 +308,8 @@ impl Body {
             }
             // Read where a continuation names them (`Body::join`).
             "connector" | "continuation" => {}
-            "leftPowerRail" | "rightPowerRail" | "comment" => {}
+            "leftPowerRail" | "rightPowerRail" | "comment" | "vendorElement" => {}
             "outVariable" => self.out_variable(n, pos, names)?,
-            "vendorElement" => {
-                let what = n
-                    .child("alternativeText")
-                    .map(|t| t.deep_text().trim().to_string())
-                    .filter(|t| !t.is_empty())
-                    .unwrap_or_else(|| "a vendor element".to_string());
-                self.warnings.push(Located::new(
-                    n.line,
-                    format!("{} skipped: a vendor's own element", crate::shown(&what)),
-                ));
-            }
             "inOutVariable" => return Err(ImportError::WordOutput(n.name.clone())),
             other => return Err(ImportError::Unsupported(other.to_string())),
         }
@@ -421,4 +418,64 @@ impl Body {
         self.output(input, element, pos, n.line);
         Ok(())
     }
+}
+
+impl Body {
+    /// Reads vendor element `n` for the bit machines and the page: a
+    /// network title is a comment at its place (its rung's, as a
+    /// `<comment>` is), settings are nothing, an unknown element without
+    /// wires or data is skipped with a warning, one carrying logic is
+    /// refused at its line.
+    pub(super) fn vendor_element(&mut self, n: &Node) {
+        use super::vendor::{classify, Vendor};
+        match classify(n) {
+            Vendor::Title(text) => {
+                let (row, col) = position(n);
+                self.comments.push(CommentBox {
+                    row,
+                    col,
+                    text,
+                    line: n.line,
+                });
+            }
+            Vendor::Cosmetic => {}
+            Vendor::Unknown(what) => self.warnings.push(Located::new(
+                n.line,
+                format!("{what} skipped: a vendor's own element"),
+            )),
+            Vendor::Logic(why) => self
+                .errors
+                .push(Located::new(n.line, ImportError::VendorLogic(why))),
+        }
+    }
+}
+
+impl Body {
+    /// Refuses a wire from output `pin` of block `id` when the block is a
+    /// standard one without it (it made a point nothing drives: "no path
+    /// joins the left rail"). Functions and others are left to their
+    /// readers.
+    fn has_output(&self, id: &str, pin: &str) -> Result<(), Connection> {
+        let Some((ty, instance)) = self.block_names.get(id) else {
+            return Ok(());
+        };
+        let has = crate::softplc::pins::outputs(&ty.to_ascii_uppercase());
+        let known =
+            pin.eq_ignore_ascii_case("ENO") || has.iter().any(|(p, _)| p.eq_ignore_ascii_case(pin));
+        if has.is_empty() || known || BlockKind::parse(ty).is_none() {
+            return Ok(());
+        }
+        let list: Vec<&str> = has.iter().map(|(p, _)| *p).collect();
+        Err(Connection::NoOutput {
+            block: format!("{ty} block {instance}").trim_end().to_string(),
+            pin: pin.to_string(),
+            has: list.join(", "),
+        })
+    }
+}
+
+/// A block's type and instance as written (trimmed).
+fn type_and_instance(n: &Node) -> (String, String) {
+    let name = |a: &str| n.attr(a).unwrap_or_default().trim().to_string();
+    (name("typeName"), name("instanceName"))
 }

@@ -13,6 +13,7 @@ use std::collections::HashMap;
 use super::declare::{Declarations, Held, Interface};
 use super::functions::{Function, Operand};
 use super::graph::{Element, Graph, Kind, Source};
+use super::infer::output_type;
 use super::order::order;
 use super::SoftError;
 use crate::error::Located;
@@ -31,7 +32,7 @@ pub(super) struct Output {
     /// What was taken on trust, each at its line.
     pub warnings: Vec<Located<String>>,
     /// Each generated variable's type.
-    types: HashMap<String, DataType>,
+    pub(super) types: HashMap<String, DataType>,
 }
 
 /// Emits one body.
@@ -48,6 +49,9 @@ pub(super) struct Emitter<'a> {
     /// The body's elements each output feeds: (element, pin) by the
     /// feeding element's id.
     pub consumers: HashMap<String, Vec<(usize, String)>>,
+    /// The ids of the body's elements refused so far: what they feed is
+    /// not refused again (it was called a loop of wires).
+    pub failed: std::collections::HashSet<String>,
 }
 
 type Result<T> = std::result::Result<T, SoftError>;
@@ -67,10 +71,21 @@ impl Emitter<'_> {
                 }
             }
         }
+        self.out.warnings.extend(g.warnings.iter().cloned());
+        self.failed.clear();
+        let known = super::infer::Known {
+            operand: &|x| self.expression(x).ok().map(|o| o.ty),
+            user: self.user,
+        };
+        let types = super::infer::output_types(&known, g, self.index);
+        self.out.types.extend(types);
         for i in order(g) {
             let e = &g.elements[i];
             if let Err(err) = self.element(g, e) {
-                errors.push(Located::new(e.line, err));
+                self.failed.insert(e.id.clone());
+                if err != SoftError::Follows {
+                    errors.push(Located::new(e.line, err));
+                }
             }
         }
         if errors.is_empty() {
@@ -218,7 +233,7 @@ impl Emitter<'_> {
     }
 
     /// A variable, an address or a literal as the file writes it.
-    fn expression(&self, text: &str) -> Result<Operand> {
+    pub(super) fn expression(&self, text: &str) -> Result<Operand> {
         let text = text.trim();
         if text.starts_with('%') {
             let a =
@@ -265,7 +280,14 @@ impl Emitter<'_> {
         let Some((_, sources)) = e.inputs.iter().find(|(p, _)| p.eq_ignore_ascii_case(pin)) else {
             return Ok(None);
         };
-        let value = self.joined(g, sources, &format!("w{}_{pin}", e.id), e.line, 0)?;
+        let value = self
+            .joined(g, sources, &format!("w{}_{pin}", e.id), e.line, 0)
+            .map_err(|err| match err {
+                SoftError::NoOutput(_, block, p, has) => {
+                    SoftError::NoOutput(e.describe(pin), block, p, has)
+                }
+                other => other,
+            })?;
         let Some(&(_, negated, edge)) = e
             .modifiers
             .iter()
@@ -332,6 +354,9 @@ impl Emitter<'_> {
             .get(&s.from)
             .ok_or_else(|| SoftError::Missing(s.from.clone()))?;
         let from = &g.elements[i];
+        if self.failed.contains(&from.id) {
+            return Err(SoftError::Follows);
+        }
         let k = self.index;
         Ok(match &from.kind {
             Kind::LeftRail => Operand {
@@ -363,6 +388,7 @@ impl Emitter<'_> {
                     .or_else(|| from.outputs.iter().find(|p| *p != "ENO").cloned())
                     .unwrap_or_else(|| "OUT".into());
                 let user = self.user.get(&type_name.to_ascii_uppercase());
+                super::formal::check_output(from, type_name, &pin, user)?;
                 let ty = output_type(type_name, &pin)
                     .or_else(|| user.and_then(|i| i.pin(&pin)))
                     .or_else(|| {
@@ -391,6 +417,7 @@ impl Emitter<'_> {
         if let Some(iface) = self.user.get(&upper) {
             return self.user_block(g, e, type_name, instance, &iface.clone());
         }
+        super::formal::check_own_instance(self.own_blocks, type_name, instance)?;
         if let Some((_, how)) = self
             .own_blocks
             .names
@@ -493,6 +520,7 @@ impl Emitter<'_> {
         outputs: &[(String, DataType)],
         en: Option<Operand>,
     ) -> Result<()> {
+        super::formal::check_inputs(e, inputs)?;
         let mut params = Vec::new();
         for (pin, ty) in inputs {
             if let Some(v) = self.input(g, e, pin)? {
@@ -552,17 +580,6 @@ impl Emitter<'_> {
         self.enabled(e, en);
         Ok(())
     }
-}
-
-/// The type of a standard block's output pin, if fixed.
-fn output_type(type_name: &str, pin: &str) -> Option<DataType> {
-    if pin.eq_ignore_ascii_case("ENO") {
-        return Some(DataType::Bool);
-    }
-    fb_outputs(&type_name.to_ascii_uppercase())
-        .iter()
-        .find(|(p, _)| p.eq_ignore_ascii_case(pin))
-        .map(|(_, t)| *t)
 }
 
 /// The type the elements fed by `e`'s output want (an output variable's,

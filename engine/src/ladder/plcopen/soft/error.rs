@@ -42,6 +42,20 @@ pub enum SoftError {
     NotDrawn(String),
     /// The generated program does not load (the loader's words).
     Load(String),
+    /// A block input the block does not have (the block, the pin, the
+    /// inputs it has).
+    NoInput(String, String, String),
+    /// A wire from a block output the block does not have (what the wire
+    /// feeds, the block, the pin, the outputs it has).
+    NoOutput(String, String, String, String),
+    /// An element fed by one already refused: never shown, the first
+    /// refusal says what is wrong (it was called a loop of wires).
+    Follows,
+    /// A vendor element that carries logic (why it is taken to).
+    VendorLogic(String),
+    /// An instance of the project's own function block that no variable
+    /// declares (instance, type).
+    UndeclaredInstance(String, String),
 }
 
 impl fmt::Display for SoftError {
@@ -71,7 +85,7 @@ impl fmt::Display for SoftError {
             SoftError::ConnectorLoop(name) => write!(f, "connector {name} feeds itself"),
             SoftError::Feedback(ty) => write!(
                 f,
-                "a loop of wires through a {ty} block: break it with a variable"
+                "{ty} block: a loop of wires through it whose type nothing gives: type a literal in the loop (INT#1) or break it with a variable"
             ),
             SoftError::Expression(x) => {
                 write!(f, "`{x}` is not a variable, an address or a literal")
@@ -86,6 +100,10 @@ impl fmt::Display for SoftError {
                 f,
                 "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD"
             ),
+            SoftError::Block(name) if name.eq_ignore_ascii_case("EXECUTE") => write!(
+                f,
+                "{name} is CODESYS's block of in-line ST: the soft PLC does not run ST"
+            ),
             SoftError::Block(name) => write!(
                 f,
                 "{name} is not a standard block the soft PLC has (a vendor's or a library's block)"
@@ -94,6 +112,21 @@ impl fmt::Display for SoftError {
                 write!(f, "no program the tasks run is drawn in LD or FBD: {pous}")
             }
             SoftError::Load(why) => f.write_str(why),
+            SoftError::NoInput(block, pin, has) => {
+                write!(f, "{block} has no input `{pin}` (its inputs: {has})")
+            }
+            SoftError::NoOutput(reader, block, pin, has) => write!(
+                f,
+                "{reader} is wired from {block}'s `{pin}`, an output the block does not have (its outputs: {has})"
+            ),
+            SoftError::VendorLogic(why) => {
+                f.write_str(&crate::ladder::plcopen::vendor::logic_refused(why))
+            }
+            SoftError::Follows => f.write_str("fed by an element refused above"),
+            SoftError::UndeclaredInstance(name, ty) => write!(
+                f,
+                "{name} is not declared: declare it as a {ty} instance (`{name} : {ty};`) among the POU's variables"
+            ),
         }
     }
 }

@@ -102,6 +102,9 @@ pub(super) struct Graph {
     pub by_id: HashMap<String, usize>,
     /// Connector name (lower-case) → the connector's place.
     pub connectors: HashMap<String, usize>,
+    /// Vendor elements skipped (neither wired nor holding data), each at
+    /// its line.
+    pub warnings: Vec<Located<String>>,
 }
 
 type Errors = Vec<Located<SoftError>>;
@@ -153,9 +156,25 @@ pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
         elements: Vec::new(),
         by_id: HashMap::new(),
         connectors: HashMap::new(),
+        warnings: Vec::new(),
     };
     let mut errors = Vec::new();
     for n in &body.children {
+        if n.name == "vendorElement" {
+            use crate::ladder::plcopen::vendor::{classify, Vendor};
+            // Titles and settings do not run; IL has no rung comments.
+            match classify(n) {
+                Vendor::Title(_) | Vendor::Cosmetic => {}
+                Vendor::Unknown(what) => g.warnings.push(Located::new(
+                    n.line,
+                    format!("{what} skipped: a vendor's own element"),
+                )),
+                Vendor::Logic(why) => {
+                    errors.push(Located::new(n.line, SoftError::VendorLogic(why)))
+                }
+            }
+            continue;
+        }
         let (kind, inputs, outputs, modifiers) = match parts(n) {
             Ok(Some(parts)) => parts,
             Ok(None) => continue,

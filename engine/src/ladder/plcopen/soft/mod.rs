@@ -10,8 +10,10 @@
 mod declare;
 mod emit;
 pub mod error;
+mod formal;
 pub(crate) mod functions;
 mod graph;
+mod infer;
 mod order;
 
 use super::dom::Node;
@@ -155,6 +157,7 @@ fn emitter<'a>(
         own_blocks: own,
         user,
         consumers: Default::default(),
+        failed: Default::default(),
     }
 }
 
