@@ -827,8 +827,8 @@ def test_inputs_driven_from_the_ladder_and_the_stepped_element(driver, base_url)
 
 
 def live_scan(driver):
-    """The scan number the travel bar shows while live."""
-    return int(re.search(r"(\d+)", el(driver, "travel-at").text).group(1))
+    """The last recorded scan, which the travel bar marks while live."""
+    return int(el(driver, "travel-at").get_attribute("data-mark"))
 
 
 def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, tmp_path):

@@ -19,6 +19,7 @@ pub fn SimClock(ctx: LadderCtx) -> impl IntoView {
     };
     view! {
         <span class="clock" data-testid="sim-time" role="status" data-state=state
+            title=move || t().sim_time
             data-ms=move || clock.with(|c| c.ms()).to_string()>
             <span class="clock-state">{move || match state() {
                 "running" => t().state_running,
@@ -33,8 +34,7 @@ pub fn SimClock(ctx: LadderCtx) -> impl IntoView {
                     .map(|us| format!(" · {} {}.{:02} ms", t().scan_time, us / 1000, us % 1000 / 10))
                     .unwrap_or_default();
                 format!(
-                    " · {} {}.{:03} {} · {} {}{scan}",
-                    t().sim_time,
+                    " · {}.{:03} {} · {} {}{scan}",
                     ms / 1000,
                     ms % 1000,
                     t().seconds,

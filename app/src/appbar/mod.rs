@@ -148,8 +148,8 @@ fn HelpMenu(ctx: LadderCtx) -> impl IntoView {
 fn MachineSelect() -> impl IntoView {
     let ctx = Ctx::get();
     view! {
-        <label>
-            {move || ctx.lang.get().texts().machine}
+        <label class="machine-select">
+            <span class="label-text">{move || ctx.lang.get().texts().machine}</span>
             <select
                 data-testid="machine"
                 prop:value=move || ctx.machine.get().name()

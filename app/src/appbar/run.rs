@@ -66,13 +66,12 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
             <button type="button" class="run-button" data-testid="run" aria-pressed=move || runs().to_string()
                 data-running=move || runs().to_string()
                 on:click=run>
-                <span aria-hidden="true">{move || if runs() { "■ " } else { "▶ " }}</span>
                 {move || if runs() { t().stop } else { t().run_drawing }}
             </button>
             <PauseButton />
             <button type="button" class="icon-button" data-testid="step-scan" title=move || t().step_scan
                 aria-label=move || t().step_scan on:click=move |_| step(0)>
-                <span aria-hidden="true">"⏭"</span><span class="wide-only">{move || t().step_scan_short}</span>
+                <span aria-hidden="true">"⇥"</span><span class="wide-only">{move || t().step_scan_short}</span>
             </button>
             <button type="button" class="icon-button" data-testid="step-instr" title=move || t().step_instr
                 aria-label=move || t().step_instr on:click=move |_| step(1)>
@@ -81,7 +80,7 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
             {(kind == MachineId::MinasecU).then(|| view! {
                 <button type="button" class="icon-button" data-testid="step-clock" title=move || t().step_clock
                     aria-label=move || t().step_clock on:click=move |_| step(2)>
-                    <span aria-hidden="true">"⏱"</span><span class="wide-only">{move || t().step_clock_short}</span>
+                    <span aria-hidden="true">"◷"</span><span class="wide-only">{move || t().step_clock_short}</span>
                 </button>
             })}
         </span>
@@ -100,9 +99,10 @@ fn PauseButton() -> impl IntoView {
             data-testid="pause"
             aria-pressed=move || ctx.paused.get().to_string()
             title=move || if ctx.paused.get() { t().resume } else { t().pause }
+            aria-label=move || if ctx.paused.get() { t().resume } else { t().pause }
             on:click=move |_| ctx.paused.update(|p| *p = !*p)
         >
-            <span aria-hidden="true">{move || if ctx.paused.get() { "⏵" } else { "⏸" }}</span>
+            <span aria-hidden="true">{move || if ctx.paused.get() { "▶" } else { "‖" }}</span>
             <span class="wide-only">{move || if ctx.paused.get() { t().resume } else { t().pause }}</span>
         </button>
     }

@@ -15,6 +15,8 @@ pub enum Tool {
     Why,
     /// The compiled listing and the ladder's problems.
     Listing,
+    /// The cursor's rung comment and its device's comment.
+    Comments,
     /// The soft PLC's declared variables.
     Variables,
     /// The machine's program text.
@@ -27,12 +29,13 @@ pub enum Tool {
 
 impl Tool {
     /// Every tool, in tab order.
-    pub const ALL: [Tool; 9] = [
+    pub const ALL: [Tool; 10] = [
         Tool::Watch,
         Tool::Chart,
         Tool::Tests,
         Tool::Why,
         Tool::Listing,
+        Tool::Comments,
         Tool::Variables,
         Tool::Program,
         Tool::Cpu,
@@ -47,6 +50,7 @@ impl Tool {
             Tool::Tests => "tests",
             Tool::Why => "why",
             Tool::Listing => "listing",
+            Tool::Comments => "comments",
             Tool::Variables => "variables",
             Tool::Program => "program",
             Tool::Cpu => "cpu",
@@ -93,7 +97,7 @@ impl Default for Sizes {
     fn default() -> Sizes {
         Sizes {
             right_px: 400.0,
-            bottom_px: 190.0,
+            bottom_px: 170.0,
             right_open: true,
             bottom_open: true,
             tool: Tool::Watch,
@@ -103,7 +107,7 @@ impl Default for Sizes {
 
 impl Sizes {
     /// The sizes as storage keeps them: `right,bottom,right open,bottom
-    /// open,tool` (`400,190,1,1,watch`).
+    /// open,tool` (`400,170,1,1,watch`).
     pub fn to_text(&self) -> String {
         format!(
             "{:.0},{:.0},{},{},{}",

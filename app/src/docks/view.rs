@@ -81,6 +81,7 @@ pub fn tool_name(tool: Tool, t: &'static crate::i18n::Texts) -> &'static str {
         Tool::Tests => t.tests,
         Tool::Why => t.why_tab,
         Tool::Listing => t.listing_problems,
+        Tool::Comments => t.comments_tab,
         Tool::Variables => t.variables,
         Tool::Program => t.program_tab,
         Tool::Cpu => t.cpu_tab,

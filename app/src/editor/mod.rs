@@ -103,7 +103,6 @@ pub fn LadderEditor(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl In
             </Show>
             <import::ImportDialog ctx shown=ctx.panes.import on_close=refocus />
             <travel::TravelBar ctx />
-            <CommentBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
             <div class="edit-message" role="alert" data-testid="edit-message">
                 {move || ctx.panes.message.get()}
@@ -164,6 +163,7 @@ pub fn tools(
             .into_any(),
         ),
     ];
+    tools.push((Tool::Comments, view! { <CommentBar ctx /> }.into_any()));
     if Tool::Variables.on(ctx.machine) {
         tools.push((
             Tool::Variables,
@@ -224,10 +224,11 @@ fn Toolbar(
     view! {
         <div class="ladder-toolbar" role="toolbar" aria-label=move || t().toolbar>
             <button type="button" class="icon-button" data-testid="new-ladder" title=move || t().new_ladder
+                aria-label=move || t().new_ladder
                 on:click=move |_| {
                     ctx.apply(Edit::NewLadder);
                     refocus.run(());
-                }><span aria-hidden="true">"＋"</span><span class="wide-only">{move || t().new_ladder}</span></button>
+                }><span aria-hidden="true">"+"</span><span class="wide-only" aria-hidden="true">{move || t().new_ladder}</span></button>
             <button type="button" class="icon-button" data-testid="undo" disabled=move || !ctx.drawing.can_undo.get()
                 title=move || format!("{} (Ctrl+Z)", t().undo) aria-label=move || t().undo
                 on:click=move |_| { ctx.undo(); refocus.run(()); }>"↶"</button>
@@ -235,16 +236,17 @@ fn Toolbar(
                 title=move || format!("{} (Ctrl+Y)", t().redo) aria-label=move || t().redo
                 on:click=move |_| { ctx.redo(); refocus.run(()); }>"↷"</button>
             <button type="button" class="icon-button" data-testid="ladder-write" disabled=move || ctx.drawing.listing.with(Option::is_none)
-                title=move || t().write_plc
+                title=move || t().write_plc aria-label=move || t().write_plc
                 on:click=move |_| {
                     // The same action as Run, said where the user looks.
                     if run_drawing() {
                         ctx.panes.message.set(Some(t().written.to_string()));
                     }
-                }><span aria-hidden="true">"⇩ "</span>{move || t().write_plc}</button>
+                }><span aria-hidden="true">"⇩"</span><span class="wide-only" aria-hidden="true">{move || t().write_plc}</span></button>
             <button type="button" class="icon-button" data-testid="tests-open" title=move || t().tests
+                aria-label=move || t().tests
                 on:click=move |_| ctx.page.docks.toggle(crate::docks::Tool::Tests)>
-                <span aria-hidden="true">"✓ "</span>{move || t().tests}
+                <span aria-hidden="true">"✓"</span><span class="wide-only" aria-hidden="true">{move || t().tests}</span>
             </button>
             <live::RunStatus ctx />
             <zoom::ZoomBar ctx grid />

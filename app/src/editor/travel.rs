@@ -142,7 +142,8 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
         let (first, last) = s.marks.get();
         match s.shown.get() {
             Some(m) => format!("{} {m} / {last} ({} {first})", t().scan, t().kept_from),
-            None => format!("{} · {} {last}", t().live, t().scan),
+            // The scan count is the app bar's clock's (one count, one place).
+            None => t().live.to_string(),
         }
     };
     let set_break = move || {
@@ -155,7 +156,7 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
         s.break_error.set(error);
     };
     view! {
-        <div class="travel-bar" data-testid="travel-bar">
+        <div class="travel-bar" data-testid="travel-bar" data-travelling=move || s.shown.get().is_some().to_string()>
             <button type="button" data-testid="step-back" title=move || t().step_back
                 on:click=move |_| step_back(ctx)>"◀"</button>
             <input type="range" data-testid="timeline" class="timeline" aria-label=move || t().scan_slider
@@ -169,7 +170,8 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
                 } />
             <button type="button" data-testid="step-forward" title=move || t().step_forward
                 on:click=move |_| step_forward(ctx)>"▶"</button>
-            <span class="travel-at" data-testid="travel-at" data-shown=move || s.shown.get().map(|m| m.to_string())>
+            <span class="travel-at" data-testid="travel-at" data-shown=move || s.shown.get().map(|m| m.to_string())
+                data-mark=move || at().to_string()>
                 {label}
             </span>
             <button type="button" data-testid="go-live" disabled=move || s.shown.get().is_none()

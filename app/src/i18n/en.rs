@@ -251,4 +251,5 @@ pub static EN: Texts = Texts {
     cpu_tab: "CPU",
     panel_tab: "Panel",
     palette_search: "Find a part",
+    comments_tab: "Comments",
 };

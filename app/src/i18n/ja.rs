@@ -252,4 +252,5 @@ pub static JA: Texts = Texts {
     cpu_tab: "CPU",
     panel_tab: "パネル",
     palette_search: "部品を探す",
+    comments_tab: "コメント",
 };

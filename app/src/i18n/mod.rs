@@ -323,4 +323,5 @@ pub struct Texts {
     pub cpu_tab: &'static str,
     pub panel_tab: &'static str,
     pub palette_search: &'static str,
+    pub comments_tab: &'static str,
 }
