@@ -13,6 +13,7 @@ pub mod machines;
 pub mod sim;
 pub mod state;
 pub mod storage;
+pub mod workbench;
 pub mod worker;
 pub mod workspaces;
 

@@ -7,8 +7,7 @@ use engine::MachineId;
 
 use std::rc::Rc;
 
-use crate::docks::view::Split;
-use crate::docks::{BottomDock, RightDock, Splitter, Tool};
+use crate::docks::Tool;
 use crate::editor::machine::MachineLink;
 use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
 use crate::machines::minasec::board::Board;
@@ -17,6 +16,7 @@ use crate::machines::minasec::MinasecCtx;
 use crate::machines::{self, arduino, avr, io86a, soft};
 use crate::sim::Pace;
 use crate::state::{Ctx, MachineKind};
+use crate::workbench::docks::{BottomDock, RightDock, Split, Splitter};
 
 /// Every workspace's context; `Copy`.
 #[derive(Clone, Copy)]

@@ -1,17 +1,15 @@
-//! The workbench's docks (issue #45, docs/app.md "The workbench"): the
+//! The workbench's docks as data (issue #45, docs/app.md "The
+//! workbench"; drawn by `crate::workbench::docks`): the
 //! machine's panel in a dock on the right, the tools (watch, chart, tests,
 //! Why?, listing and problems, variables, program text, the CPU view) as
 //! tabs in a dock under the ladder. Docks resize by their splitters,
 //! collapse, and remember both in storage. On a phone the docks become a
-//! bottom sheet and the machine's inputs and outputs a strip beside the
-//! ladder ([`strip`]).
+//! bottom sheet (the ladder's inputs and outputs are a strip beside the
+//! ladder: `crate::editor::strip`).
 
 pub mod sizes;
-pub mod strip;
-pub mod view;
 
 pub use sizes::{Sizes, Tool};
-pub use view::{BottomDock, RightDock, Splitter};
 
 use leptos::prelude::*;
 

@@ -128,7 +128,7 @@ fn RungRows(
             let cols = data.with(|d| d.cols);
             ctx.drawing
                 .col_widths
-                .with(|w| super::model::grid_columns(w, cols))
+                .with(|w| super::columns::grid_columns(w, cols))
         }
     };
     let t = move || ctx.page.lang.get().texts();
@@ -344,7 +344,7 @@ fn EndLine(ctx: LadderCtx, selected: Selector<Cursor>) -> impl IntoView {
         <div
             class="rung-grid"
             role="row"
-            style=move || ctx.drawing.col_widths.with(|w| super::model::grid_columns(w, ctx.drawing.out_col.get() + 1))
+            style=move || ctx.drawing.col_widths.with(|w| super::columns::grid_columns(w, ctx.drawing.out_col.get() + 1))
         >
             <For
                 each=end_cells

@@ -15,6 +15,7 @@ pub mod cases;
 pub mod cell_kind;
 pub mod chart;
 pub mod clipboard;
+pub mod columns;
 pub mod entry;
 pub mod files;
 pub mod find;
@@ -31,6 +32,7 @@ pub mod shared;
 pub mod side;
 pub mod state;
 pub mod store;
+pub mod strip;
 
 pub mod travel;
 pub mod variables;
@@ -111,7 +113,7 @@ pub fn LadderEditor(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl In
                 <palette::Palette ctx on_done=refocus />
                 <grid::LadderGrid ctx grid />
             </div>
-            <crate::docks::strip::IoStrip ctx />
+            <strip::IoStrip ctx />
             <Show when=move || ctx.panes.help.get()>
                 <div class="keymap" data-testid="keymap" role="dialog" aria-label=move || t().keys
                     node_ref=keymap tabindex="-1"

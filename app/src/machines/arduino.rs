@@ -44,7 +44,7 @@ impl ArduinoCtx {
     /// example); a saved value that does not read is kept aside and
     /// reported in the page's notice.
     pub fn restore(page: Ctx) -> ArduinoCtx {
-        let text = storage::restored_text(page, KEY, LEGACY_KEY, SELF_HOLD);
+        let text = crate::machines::restored_text(page, KEY, LEGACY_KEY, SELF_HOLD);
         let plc = ArduinoPlc::new();
         // The pin names are the machine's own: they always resolve.
         let pin = |name: String| plc.device(&name).unwrap_or_else(|_| unreachable!("{name}"));

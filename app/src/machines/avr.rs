@@ -47,7 +47,7 @@ impl AvrCtx {
     /// example); a saved value that does not read is kept aside and
     /// reported in the page's notice.
     pub fn restore(page: Ctx) -> AvrCtx {
-        let text = storage::restored_text(page, KEY, LEGACY_KEY, SELF_HOLD);
+        let text = crate::machines::restored_text(page, KEY, LEGACY_KEY, SELF_HOLD);
         let ctx = AvrCtx {
             sim: StoredValue::new_local(Simulator::new(AvrPlc::new())),
             bits: RwSignal::new(Vec::new()),

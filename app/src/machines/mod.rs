@@ -10,6 +10,8 @@ use std::rc::Rc;
 
 use leptos::prelude::*;
 
+use crate::storage;
+
 use crate::editor::machine::{Linked, MachineLink};
 use crate::editor::Program;
 use crate::sim::Simulator;
@@ -59,4 +61,20 @@ fn not_applied(settings: Vec<(String, String)>) -> Vec<String> {
             format!("{name}={value}: this workspace keeps no settings; not applied.")
         })
         .collect()
+}
+
+/// The program text saved under `key` (or `legacy`), else `default`; a
+/// saved value that does not read is kept aside and reported in `page`'s
+/// notice.
+pub fn restored_text(page: crate::state::Ctx, key: &str, legacy: &str, default: &str) -> String {
+    match storage::restore_text(key, legacy) {
+        storage::Restored::Saved(saved) => saved.program,
+        storage::Restored::Corrupt { kept_as } => {
+            let texts = page.lang.get_untracked().texts();
+            page.notice
+                .set(Some(format!("{} {kept_as}", texts.corrupt_saved)));
+            default.to_string()
+        }
+        storage::Restored::Nothing | storage::Restored::Unavailable => default.to_string(),
+    }
 }

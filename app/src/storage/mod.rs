@@ -10,7 +10,6 @@ pub mod slot;
 
 pub use backend::{backend, StorageBackend, StorageFault};
 
-use leptos::prelude::*;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
@@ -98,22 +97,6 @@ pub fn restore_text(key: &str, legacy: &str) -> Restored<SavedText> {
             None => Restored::Nothing,
         },
         other => other,
-    }
-}
-
-/// The program text saved under `key` (or `legacy`), else `default`; a
-/// saved value that does not read is kept aside and reported in `page`'s
-/// notice.
-pub fn restored_text(page: crate::state::Ctx, key: &str, legacy: &str, default: &str) -> String {
-    match restore_text(key, legacy) {
-        Restored::Saved(saved) => saved.program,
-        Restored::Corrupt { kept_as } => {
-            let texts = page.lang.get_untracked().texts();
-            page.notice
-                .set(Some(format!("{} {kept_as}", texts.corrupt_saved)));
-            default.to_string()
-        }
-        Restored::Nothing | Restored::Unavailable => default.to_string(),
     }
 }
 

@@ -3,6 +3,76 @@
 
 use super::*;
 
+/// The machine as the ladder shows it running: the drawing it runs, the
+/// device handles, the watch table, forcing and stepping.
+#[derive(Clone, Copy)]
+pub struct Live {
+    /// The ladder the machine runs, compiled with its source map, from
+    /// Run until the next edit: the colours come from it.
+    pub(super) ladder: StoredValue<Option<engine::ladder::live::LiveLadder>>,
+    /// Device handles on the machine, by name (cleared when the ladder or
+    /// the program changes).
+    pub(super) handles: StoredValue<std::collections::HashMap<String, Option<engine::plc::Device>>>,
+    /// Bumped when device handles are forgotten: rungs resolve their
+    /// probes again.
+    pub(super) probe_generation: StoredValue<u64>,
+    /// The watch table's devices and what they show.
+    pub watch: RwSignal<Vec<String>>,
+    pub watch_values: RwSignal<Vec<String>>,
+    /// Each declared variable's value on the machine (the variables
+    /// pane), by name; empty before a scan.
+    pub variable_values: RwSignal<Vec<(String, String)>>,
+    /// Whether each device of the phone's strip is on (`drawing.io`).
+    pub io_values: RwSignal<Vec<(String, bool)>>,
+    /// The machine's clock as the app bar shows it.
+    pub clock: RwSignal<Clock>,
+    /// The AVR PLC, which has no RUN switch, is powered off by Stop.
+    pub powered_off: RwSignal<bool>,
+    /// The step the last single step ran, and its rung.
+    pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
+    /// The element the last single instruction came from.
+    pub stepped_cell: RwSignal<Option<Cursor>>,
+    /// Run was pressed: the machine runs the drawing (each edit is
+    /// written to it at once) and a click on a contact drives its input
+    /// (docs/editor.md, "Inputs from the ladder").
+    pub monitor: RwSignal<bool>,
+    /// The machine was running the drawing, and the drawing as it now
+    /// stands cannot be written (it has errors): the ladder shows no live
+    /// state until it can.
+    pub unwritten: RwSignal<bool>,
+    /// The machine is in RUN (as its last frame showed).
+    pub running: RwSignal<bool>,
+    /// Inputs held from the ladder at a value until released.
+    pub forced: RwSignal<Vec<(String, bool)>>,
+    /// The machine the ladder runs on (attached with its workspace).
+    pub(crate) link:
+        StoredValue<Option<std::rc::Rc<dyn crate::editor::machine::MachineLink>>, LocalStorage>,
+}
+
+impl Live {
+    /// Nothing running yet: no ladder written, no handles, the clock at 0.
+    pub(super) fn new() -> Live {
+        Live {
+            ladder: StoredValue::new(None),
+            handles: StoredValue::new(std::collections::HashMap::new()),
+            probe_generation: StoredValue::new(0),
+            watch: RwSignal::new(Vec::new()),
+            watch_values: RwSignal::new(Vec::new()),
+            variable_values: RwSignal::new(Vec::new()),
+            io_values: RwSignal::new(Vec::new()),
+            clock: RwSignal::new(Clock::default()),
+            powered_off: RwSignal::new(false),
+            stepped: RwSignal::new(None),
+            stepped_cell: RwSignal::new(None),
+            monitor: RwSignal::new(false),
+            unwritten: RwSignal::new(false),
+            running: RwSignal::new(false),
+            forced: RwSignal::new(Vec::new()),
+            link: StoredValue::new_local(None),
+        }
+    }
+}
+
 impl LadderCtx {
     /// Starts recording the inputs the user changes into a new case.
     pub fn start_recording(&self, plc: &dyn engine::plc::Plc) {

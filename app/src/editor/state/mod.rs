@@ -13,11 +13,14 @@
 //! - [`live`]: the running machine shown on the ladder, recording cases.
 
 mod actions;
+mod clock;
 mod live;
 mod rung_view;
 mod text;
 mod work;
 
+pub use clock::Clock;
+pub use live::Live;
 use rung_view::Probe;
 pub use rung_view::{CellSlot, EntryState, Problem, RungView};
 use work::SharedWith;
@@ -117,7 +120,7 @@ pub struct Drawing {
     pub col_widths: RwSignal<Vec<f64>>,
     /// The inputs the ladder's contacts read and the outputs its coils
     /// write, in order of first use (the phone's strip).
-    pub io: RwSignal<Vec<crate::docks::strip::IoPoint>>,
+    pub io: RwSignal<Vec<crate::editor::strip::IoPoint>>,
 }
 
 /// The device entry, the edit message and which panes are shown.
@@ -208,113 +211,6 @@ pub struct Cases {
     recorder: StoredValue<Option<super::cases::Recorder>>,
 }
 
-/// The machine as the ladder shows it running: the drawing it runs, the
-/// device handles, the watch table, forcing and stepping.
-#[derive(Clone, Copy)]
-pub struct Live {
-    /// The ladder the machine runs, compiled with its source map, from
-    /// Run until the next edit: the colours come from it.
-    ladder: StoredValue<Option<engine::ladder::live::LiveLadder>>,
-    /// Device handles on the machine, by name (cleared when the ladder or
-    /// the program changes).
-    handles: StoredValue<std::collections::HashMap<String, Option<engine::plc::Device>>>,
-    /// Bumped when device handles are forgotten: rungs resolve their
-    /// probes again.
-    probe_generation: StoredValue<u64>,
-    /// The watch table's devices and what they show.
-    pub watch: RwSignal<Vec<String>>,
-    pub watch_values: RwSignal<Vec<String>>,
-    /// Each declared variable's value on the machine (the variables
-    /// pane), by name; empty before a scan.
-    pub variable_values: RwSignal<Vec<(String, String)>>,
-    /// Whether each device of the phone's strip is on (`drawing.io`).
-    pub io_values: RwSignal<Vec<(String, bool)>>,
-    /// The machine's clock as the app bar shows it.
-    pub clock: RwSignal<Clock>,
-    /// The AVR PLC, which has no RUN switch, is powered off by Stop.
-    pub powered_off: RwSignal<bool>,
-    /// The step the last single step ran, and its rung.
-    pub stepped: RwSignal<Option<(usize, Option<usize>)>>,
-    /// The element the last single instruction came from.
-    pub stepped_cell: RwSignal<Option<Cursor>>,
-    /// Run was pressed: the machine runs the drawing (each edit is
-    /// written to it at once) and a click on a contact drives its input
-    /// (docs/editor.md, "Inputs from the ladder").
-    pub monitor: RwSignal<bool>,
-    /// The machine was running the drawing, and the drawing as it now
-    /// stands cannot be written (it has errors): the ladder shows no live
-    /// state until it can.
-    pub unwritten: RwSignal<bool>,
-    /// The machine is in RUN (as its last frame showed).
-    pub running: RwSignal<bool>,
-    /// Inputs held from the ladder at a value until released.
-    pub forced: RwSignal<Vec<(String, bool)>>,
-    /// The machine the ladder runs on (attached with its workspace).
-    pub(super) link:
-        StoredValue<Option<std::rc::Rc<dyn super::machine::MachineLink>>, LocalStorage>,
-}
-
-/// The machine's clock as the app bar shows it: simulated time, scans,
-/// the last scans' duration, and whether it runs.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Clock {
-    /// Simulated time, in ns.
-    pub nanos: u64,
-    /// Scans run since power-up.
-    pub scans: u64,
-    /// The scans of the last frame that ran any took this long each
-    /// (simulated µs, on average); `None` before it.
-    pub scan_us: Option<u64>,
-    /// The machine runs its program (RUN, powered).
-    pub running: bool,
-}
-
-impl Clock {
-    /// Simulated time in whole ms (`data-ms`).
-    pub fn ms(&self) -> u64 {
-        self.nanos / 1_000_000
-    }
-
-    /// The clock after a frame that left the machine at `nanos` with
-    /// `scans` scans, `running` or not: a scan's duration is the frame's
-    /// simulated time over the scans it ran (a reset starts afresh).
-    pub fn next(self, nanos: u64, scans: u64, running: bool) -> Clock {
-        let ran = scans.saturating_sub(self.scans);
-        let scan_us = if scans < self.scans || nanos < self.nanos {
-            None
-        } else if ran > 0 && self.scans > 0 {
-            Some((nanos - self.nanos) / ran / 1_000)
-        } else {
-            self.scan_us
-        };
-        Clock {
-            nanos,
-            scans,
-            scan_us,
-            running,
-        }
-    }
-}
-
-#[cfg(test)]
-mod clock_tests {
-    use super::Clock;
-
-    #[test]
-    fn a_scan_lasts_the_frames_time_over_its_scans() {
-        let c = Clock::default().next(10_000_000, 5, true);
-        assert_eq!((c.ms(), c.scans, c.scan_us), (10, 5, None));
-        // 16 ms, 160 scans: 100 µs each.
-        let c = c.next(26_000_000, 165, true);
-        assert_eq!(c.scan_us, Some(100));
-        // A frame with no scan keeps the figure; stopped, time stands.
-        let c = c.next(26_000_000, 165, false);
-        assert_eq!((c.scan_us, c.running, c.ms()), (Some(100), false, 26));
-        // A power cycle (fewer scans) starts afresh.
-        assert_eq!(c.next(30_000_000, 2, true).scan_us, None);
-    }
-}
-
 /// What a refresh follows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Change {
@@ -367,7 +263,7 @@ impl LadderCtx {
                 problems: RwSignal::new(Vec::new()),
                 comments: RwSignal::new(BTreeMap::new()),
                 variables: RwSignal::new(Vec::new()),
-                col_widths: RwSignal::new(vec![super::model::WIRE_COL_REM; COLUMNS]),
+                col_widths: RwSignal::new(vec![super::columns::WIRE_COL_REM; COLUMNS]),
                 io: RwSignal::new(Vec::new()),
             },
             panes: Panes {
@@ -400,24 +296,7 @@ impl LadderCtx {
                 results: RwSignal::new(Vec::new()),
                 recorder: StoredValue::new(None),
             },
-            live: Live {
-                ladder: StoredValue::new(None),
-                handles: StoredValue::new(std::collections::HashMap::new()),
-                probe_generation: StoredValue::new(0),
-                watch: RwSignal::new(Vec::new()),
-                watch_values: RwSignal::new(Vec::new()),
-                variable_values: RwSignal::new(Vec::new()),
-                io_values: RwSignal::new(Vec::new()),
-                clock: RwSignal::new(Clock::default()),
-                powered_off: RwSignal::new(false),
-                stepped: RwSignal::new(None),
-                stepped_cell: RwSignal::new(None),
-                monitor: RwSignal::new(false),
-                unwritten: RwSignal::new(false),
-                running: RwSignal::new(false),
-                forced: RwSignal::new(Vec::new()),
-                link: StoredValue::new_local(None),
-            },
+            live: Live::new(),
             travel: super::travel::TravelState::new(),
             why: super::why::WhyState::new(),
         };
@@ -612,12 +491,12 @@ impl LadderCtx {
                 .collect()
         });
         let cols = out_col + 1;
-        let widths = super::model::column_widths(&data.iter().collect::<Vec<_>>(), cols);
+        let widths = super::columns::column_widths(&data.iter().collect::<Vec<_>>(), cols);
         crate::state::put(self.drawing.col_widths, widths);
         let io = self
             .drawing
             .editor
-            .with_value(|e| crate::docks::strip::io_points(e.ladder()));
+            .with_value(|e| crate::editor::strip::io_points(e.ladder()));
         crate::state::put(self.drawing.io, io);
         let old = self.drawing.rungs.get_untracked();
         let plan = {

@@ -143,7 +143,7 @@ impl SoftCtx {
     /// A workspace on `page` with its saved program loaded (a fresh one
     /// has none: the default board and an empty ladder).
     pub fn restore(page: Ctx) -> SoftCtx {
-        let text = storage::restored_text(page, KEY, LEGACY_KEY, "");
+        let text = crate::machines::restored_text(page, KEY, LEGACY_KEY, "");
         let ctx = SoftCtx {
             sim: StoredValue::new_local(Simulator::new(SoftPlc::new())),
             terminals: RwSignal::new(Vec::new()),

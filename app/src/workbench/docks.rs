@@ -3,7 +3,7 @@
 
 use leptos::prelude::*;
 
-use super::{Docks, Tool};
+use crate::docks::{Docks, Tool};
 use crate::state::Ctx;
 
 /// The tools dock: a tab per tool this machine has, one panel shown.
@@ -141,8 +141,8 @@ pub fn Splitter(split: Split) -> impl IntoView {
     // below its splitter.
     let set = move |px: f64| {
         docks.sizes.update(|s| match split {
-            Split::Right => s.right_px = px.max(super::sizes::MIN_RIGHT_PX),
-            Split::Bottom => s.bottom_px = px.max(super::sizes::MIN_BOTTOM_PX),
+            Split::Right => s.right_px = px.max(crate::docks::sizes::MIN_RIGHT_PX),
+            Split::Bottom => s.bottom_px = px.max(crate::docks::sizes::MIN_BOTTOM_PX),
         })
     };
     let along = move |e: &web_sys::PointerEvent| match split {

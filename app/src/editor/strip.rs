@@ -7,7 +7,7 @@
 use engine::ladder::Ladder;
 use leptos::prelude::*;
 
-use crate::editor::LadderCtx;
+use super::LadderCtx;
 
 /// A device on the strip.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -86,7 +86,7 @@ pub fn IoStrip(ctx: LadderCtx) -> impl IntoView {
                     let shown = name.clone();
                     view! {
                         <button type="button" class="strip-in" data-testid=testid data-on=lit aria-pressed=pressed
-                            on:click=move |_| crate::editor::live::drive_from_ladder(ctx, &name, false)>
+                            on:click=move |_| super::live::drive_from_ladder(ctx, &name, false)>
                             {shown}
                         </button>
                     }
