@@ -43,7 +43,7 @@ pub fn AppBar() -> impl IntoView {
                     {move || view! { <EditMenu ctx=ladder() /> }}
                 </Menu>
                 <Menu id="view" label=label(|t| t.menu_view)>
-                    <ViewMenu />
+                    {move || view! { <ViewMenu ctx=ladder() /> }}
                 </Menu>
                 <Menu id="help" label=label(|t| t.menu_help)>
                     {move || view! { <HelpMenu ctx=ladder() /> }}
@@ -82,6 +82,9 @@ fn FileMenu(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let machine = ctx.machine;
     view! {
+        <button type="button" data-testid="menu-new" on:click=move |_| { ctx.apply(engine::ladder::edit::Edit::NewLadder); }>
+            {move || t().new_ladder}
+        </button>
         <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.toggle(ctx.panes.projects_open)>
             {move || t().projects}
         </button>
@@ -115,13 +118,20 @@ fn EditMenu(ctx: LadderCtx) -> impl IntoView {
     }
 }
 
-/// View: the docks, and the language.
+/// View: the ladder's zoom, the docks, and the language.
 #[component]
-fn ViewMenu() -> impl IntoView {
-    let ctx = Ctx::get();
+fn ViewMenu(ctx: LadderCtx) -> impl IntoView {
+    let ladder = ctx;
+    let ctx = ladder.page;
     let docks = ctx.docks;
     let t = move || ctx.lang.get().texts();
     view! {
+        <button type="button" data-testid="view-zoom-in"
+            on:click=move |_| crate::editor::zoom::step(ladder, true)>{move || format!("{} (Ctrl+wheel)", t().zoom_in)}</button>
+        <button type="button" data-testid="view-zoom-out"
+            on:click=move |_| crate::editor::zoom::step(ladder, false)>{move || t().zoom_out}</button>
+        <button type="button" data-testid="view-zoom-100"
+            on:click=move |_| ladder.panes.zoom.set(1.0)>"100 %"</button>
         <button type="button" data-testid="view-panel-dock" aria-pressed=move || docks.sizes.with(|s| s.right_open).to_string()
             on:click=move |_| docks.resize(|s| s.right_open = !s.right_open)>{move || t().panel_dock}</button>
         <button type="button" data-testid="view-tools-dock" aria-pressed=move || docks.sizes.with(|s| s.bottom_open).to_string()

@@ -32,6 +32,13 @@ pub fn fit(room: f64, natural: f64) -> f64 {
     clamp((room / natural).min(1.0))
 }
 
+/// One step in (`true`) or out, as the zoom buttons and the View menu do.
+pub fn step(ctx: LadderCtx, zoom_in: bool) {
+    ctx.panes.zoom.update(|z| {
+        *z = clamp(if zoom_in { *z * STEP } else { *z / STEP });
+    });
+}
+
 /// The zoom after a wheel notch with `delta_y` (up zooms in).
 pub fn wheeled(z: f64, delta_y: f64) -> f64 {
     clamp(if delta_y < 0.0 { z * STEP } else { z / STEP })
@@ -53,12 +60,11 @@ fn fit_width(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) {
 #[component]
 pub fn ZoomBar(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
-    let by = move |f: f64| ctx.panes.zoom.update(|z| *z = clamp(*z * f));
     view! {
         <span class="zoom-bar" role="group" aria-label=move || t().zoom>
-            <button type="button" data-testid="zoom-out" aria-label=move || t().zoom_out on:click=move |_| by(1.0 / STEP)>"−"</button>
+            <button type="button" data-testid="zoom-out" aria-label=move || t().zoom_out on:click=move |_| step(ctx, false)>"−"</button>
             <span class="zoom-at" data-testid="zoom-at">{move || format!("{:.0} %", ctx.panes.zoom.get() * 100.0)}</span>
-            <button type="button" data-testid="zoom-in" aria-label=move || t().zoom_in on:click=move |_| by(STEP)>"+"</button>
+            <button type="button" data-testid="zoom-in" aria-label=move || t().zoom_in on:click=move |_| step(ctx, true)>"+"</button>
             <button type="button" data-testid="zoom-fit" on:click=move |_| fit_width(ctx, grid)>{move || t().zoom_fit}</button>
             <button type="button" data-testid="zoom-100" on:click=move |_| ctx.panes.zoom.set(1.0)>"100 %"</button>
         </span>
