@@ -60,7 +60,7 @@ def open_fresh(driver, base_url, lang="en"):
     driver.get(base_url)
     driver.execute_script("localStorage.clear(); localStorage.setItem('hashigo.lang', arguments[0]);", lang)
     driver.get(base_url)
-    wait(driver, lambda: el(driver, "mode-run"), message="the board mounts")
+    wait(driver, lambda: el(driver, "mode-run", reveal=False), message="the board mounts")
 
 
 def on(driver, testid):

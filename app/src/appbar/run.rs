@@ -3,8 +3,8 @@
 //! drawing to the machine and starts it; Stop stops the machine as its
 //! own switch would (MINASEC-U HALT, IO86A STOP, the Arduino sketch
 //! disabled, the soft PLC STOP) and powers the AVR PLC off, which has no
-//! RUN switch. A board's own RUN/HALT keys act on the same machine, so
-//! this control and the board always show one state.
+//! RUN switch. A board's own RUN/HALT keys act on the same machine; the
+//! clock (`clock.rs`) shows the machine's state, whatever started it.
 
 use engine::plc::Command;
 use engine::MachineId;
@@ -20,8 +20,13 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let kind = ctx.machine;
     let operate = move |f: &dyn Fn(&mut dyn engine::plc::Plc)| ctx.operate(f);
-    // The machine runs (as its last frame showed), whatever started it.
-    let runs = move || ctx.live.running.get() && !ctx.live.powered_off.get();
+    // The machine runs the drawing: Run wrote it, and the machine (as
+    // its last frame showed) is in RUN. A machine that runs a program of
+    // its own (the IO86A's and the AVR's from power-up, a text loaded by
+    // hand) shows Run, which writes the drawing: the clock beside it says
+    // the machine's state either way.
+    let runs =
+        move || ctx.live.monitor.get() && ctx.live.running.get() && !ctx.live.powered_off.get();
     let run = move |_| {
         if runs() {
             if kind == MachineId::AvrPlc {

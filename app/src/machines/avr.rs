@@ -102,7 +102,7 @@ impl AvrCtx {
                 {
                     machine.apply(Command::ReleaseInput(gone.device))?;
                 }
-                Ok::<_, engine::plc::PlcError>(rows_for(&old, program.names(), machine))
+                Ok::<_, engine::plc::PlcError>(rows_for(&old, &program.bits_in_use(), machine))
             })
             .and_then(Result::ok);
         let Some(rows) = loaded else {
@@ -137,7 +137,8 @@ pub fn scan_ms_default() -> u32 {
     scan_ms(DEFAULT_SCAN).unwrap_or(10)
 }
 
-/// The rows for a program's named bits: an old row whose name and bit
+/// The rows for a program's bits (named, or used by a ladder compiled
+/// without names: `R0.0`): an old row whose name and bit
 /// are named again is kept as it is (same signals), the others are new;
 /// each row's device is resolved by `plc` once.
 fn rows_for(old: &[NamedBit], names: &[(String, BitRef)], plc: &dyn Plc) -> Vec<NamedBit> {

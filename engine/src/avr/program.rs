@@ -110,6 +110,30 @@ impl Program {
         &self.names
     }
 
+    /// Every bit the program names or uses: the named bits first, in the
+    /// source's order, then each bit an instruction reads or writes that
+    /// no name covers, named as a register bit (`R0.0`), in program order.
+    /// A ladder compiled for the AVR names none, so its panel shows these.
+    pub fn bits_in_use(&self) -> Vec<(String, BitRef)> {
+        let mut bits = self.names.clone();
+        for i in &self.instructions {
+            let bit = match *i {
+                Instruction::Load(b, _)
+                | Instruction::And(b, _)
+                | Instruction::Or(b, _)
+                | Instruction::Coil(b, _)
+                | Instruction::Set(b)
+                | Instruction::Reset(b)
+                | Instruction::Pulse(b, _) => b,
+                Instruction::Timer { .. } | Instruction::Not | Instruction::End => continue,
+            };
+            if !bits.iter().any(|(_, known)| *known == bit) {
+                bits.push((bit.to_string(), bit));
+            }
+        }
+        bits
+    }
+
     /// The timer word a label names.
     pub fn timer(&self, name: &str) -> Option<usize> {
         self.timer_names
@@ -315,3 +339,20 @@ impl fmt::Display for ProgramError {
 }
 
 impl std::error::Error for ProgramError {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bits_no_name_covers_are_in_use_as_register_bits() {
+        let p = Program::parse(
+            ".equ Start_R=0\n.equ Start_B=Bit0\n.db Load_A,Start_R,Start_B,0\n\
+             .db And_B,0,Bit1,0\n.db Coil_A,1,Bit0,0\n.db Coil_A,1,Bit0,0\n.db End_PLC,0,0,0\n",
+            10,
+        )
+        .expect("assembles");
+        let names: Vec<String> = p.bits_in_use().into_iter().map(|(n, _)| n).collect();
+        assert_eq!(names, ["Start", "R0.1", "R1.0"]);
+    }
+}
