@@ -138,7 +138,7 @@ impl Program {
         }
         let here = way.cr.map_or("not known", DataType::name);
         Err(LoadError::Type(format!(
-            "the label `{label}` (line {at}) goes on with a {} current result; here it is {here}: make them one type or start there with LD",
+            "line {at}, after the label `{label}`, uses the current result as {}; this jump brings {here}: make them one type or start there with LD",
             t.name()
         )))
     }
