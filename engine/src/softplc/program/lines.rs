@@ -94,8 +94,8 @@ impl Program {
                     self.steps.push(Step::Ret(None));
                 }
             }
-            falls = !matches!(line.operator, Operator::Jmp | Operator::Ret)
-                || line.condition.is_some();
+            falls =
+                !matches!(line.operator, Operator::Jmp | Operator::Ret) || line.condition.is_some();
         }
         // Each `(` never closed, at its own line.
         for open in &flow.open {
@@ -151,7 +151,10 @@ impl Program {
         if came.is_empty() || came.iter().any(|w| w.cr.is_none()) {
             return None;
         }
-        let mut typed = came.iter().filter(|w| w.flex.is_empty()).filter_map(|w| w.cr);
+        let mut typed = came
+            .iter()
+            .filter(|w| w.flex.is_empty())
+            .filter_map(|w| w.cr);
         let Some(t) = typed.next() else {
             // Untyped literals every way: they wait together for a use.
             flow.flex = came.into_iter().flat_map(|w| w.flex).collect();

@@ -79,7 +79,10 @@ fn an_il_bodys_names_and_labels_are_written_as_its_program_has_them() {
     // Both programs declare `n`: main's is main_n, in its body too.
     assert!(text.contains("LD main_n\nADD 1\nST main_n"), "{text}");
     // Both use the label `over`; second's RET jumps to its end.
-    assert!(text.contains("JMP main_over") && text.contains("\nmain_over:"), "{text}");
+    assert!(
+        text.contains("JMP main_over") && text.contains("\nmain_over:"),
+        "{text}"
+    );
     assert!(text.contains("JMP second_end\n"), "{text}");
     // The CAL over four lines is one line.
     assert!(text.contains("CAL c0( CU := run, PV := 5 )"), "{text}");
@@ -90,10 +93,7 @@ fn an_il_bodys_names_and_labels_are_written_as_its_program_has_them() {
 #[test]
 fn an_il_body_error_is_said_at_its_line_of_the_file() {
     let bad = BODIES.replace("LD d0.OUT", "ST t0.IN");
-    let line = 1 + bad
-        .lines()
-        .position(|l| l == "ST t0.IN")
-        .expect("the line");
+    let line = 1 + bad.lines().position(|l| l == "ST t0.IN").expect("the line");
     let errors = to_il(&bad, None).expect_err("refused");
     let got: Vec<(usize, String)> = errors
         .iter()
@@ -156,7 +156,9 @@ fn ways_that_disagree_at_a_label_are_refused_there() {
     assert_eq!(got.len(), 1, "{got:?}");
     assert_eq!(got[0].0, 13, "{got:?}");
     assert!(
-        got[0].1.contains("reaches the label `put` as INT and as DINT"),
+        got[0]
+            .1
+            .contains("reaches the label `put` as INT and as DINT"),
         "{got:?}"
     );
     // A jump back to a label whose instruction used an INT, with a DINT.
@@ -167,7 +169,9 @@ fn ways_that_disagree_at_a_label_are_refused_there() {
     assert_eq!(got.len(), 1, "{got:?}");
     assert_eq!(got[0].0, 13, "at the JMP: {got:?}");
     assert!(
-        got[0].1.contains("line 7, after the label `back`, uses the current result as INT; this jump brings DINT"),
+        got[0].1.contains(
+            "line 7, after the label `back`, uses the current result as INT; this jump brings DINT"
+        ),
         "{got:?}"
     );
 }
@@ -209,4 +213,20 @@ fn the_beremiz_counter_il_runs_alone_with_pou() {
         "time_ms,OUT,Cnt,ResetCounterValue\n0,0,0,17\n10,1,1,17\n20,2,2,17\n\
          30,3,3,17\n40,4,4,17\n50,5,5,17\n"
     );
+}
+
+#[test]
+fn a_section_word_in_an_il_body_is_refused_at_its_line() {
+    // The loader would read `VAR_INPUT` as declarations, `END_PROGRAM`
+    // as the program's end: in a body they are said to be out of place.
+    let bad = BODIES.replace("over:\nLD TRUE", "over:\nVAR_INPUT\nLD TRUE");
+    let line = 1 + bad.lines().position(|l| l == "VAR_INPUT").expect("line");
+    let errors = to_il(&bad, None).expect_err("refused");
+    let got: Vec<(usize, String)> = errors
+        .iter()
+        .map(|e| (e.line, e.error.to_string()))
+        .collect();
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, line, "{got:?}");
+    assert!(got[0].1.starts_with("`VAR_INPUT` in an IL body"), "{got:?}");
 }

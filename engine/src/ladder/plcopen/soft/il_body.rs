@@ -19,6 +19,8 @@ use std::collections::{HashMap, HashSet};
 
 use super::declare::Declarations;
 use super::emit::Output;
+use super::SoftError;
+use crate::error::Located;
 use crate::ladder::plcopen::dom::Node;
 
 /// The text of `pou`'s IL body, if it has one, and the node it is in.
@@ -36,8 +38,16 @@ pub(super) struct Place<'a> {
     pub labels: Option<&'a mut HashSet<String>>,
 }
 
-/// Writes the IL body `text_node` of `pou` (from file `source`).
-pub(super) fn write(pou: &Node, text_node: &Node, source: &str, place: Place) {
+/// Writes the IL body `text_node` of `pou` (from file `source`); a line
+/// that is not an instruction (a `VAR` block, `END_PROGRAM`), refused
+/// at its line.
+pub(super) fn write(
+    pou: &Node,
+    text_node: &Node,
+    source: &str,
+    place: Place,
+) -> Vec<Located<SoftError>> {
+    let mut errors = Vec::new();
     let name = pou.attr("name").unwrap_or_default();
     let text = text_node.text.as_str();
     let first = first_line(text, text_node.line, source);
@@ -49,7 +59,10 @@ pub(super) fn write(pou: &Node, text_node: &Node, source: &str, place: Place) {
             let mut unique = label.to_string();
             let mut n = 2;
             while used.contains(&unique.to_ascii_uppercase()) {
-                unique = format!("{name}_{label}{}", if n == 2 { String::new() } else { n.to_string() });
+                unique = format!(
+                    "{name}_{label}{}",
+                    if n == 2 { String::new() } else { n.to_string() }
+                );
                 n += 1;
             }
             used.insert(unique.to_ascii_uppercase());
@@ -60,8 +73,12 @@ pub(super) fn write(pou: &Node, text_node: &Node, source: &str, place: Place) {
         let mut end = format!("{name}_end");
         let mut n = 2;
         let taken = |l: &str| {
-            renamed_labels.values().any(|r: &String| r.eq_ignore_ascii_case(l))
-                || used.as_deref().is_some_and(|u| u.contains(&l.to_ascii_uppercase()))
+            renamed_labels
+                .values()
+                .any(|r: &String| r.eq_ignore_ascii_case(l))
+                || used
+                    .as_deref()
+                    .is_some_and(|u| u.contains(&l.to_ascii_uppercase()))
         };
         while taken(&end) {
             end = format!("{name}_end{n}");
@@ -86,6 +103,12 @@ pub(super) fn write(pou: &Node, text_node: &Node, source: &str, place: Place) {
         let at = first + i;
         last = at;
         let (line, code) = words.rewrite(raw, &mut comment);
+        if let Some(word) = section_word(&code) {
+            errors.push(Located::new(at, SoftError::Load(format!(
+                "`{word}` in an IL body: the body holds instructions alone, its variables are the POU's interface"
+            ))));
+            continue;
+        }
         let depth = paren_depth(&code);
         if let Some((mut joined, from, open)) = call.take() {
             joined.push(' ');
@@ -109,6 +132,26 @@ pub(super) fn write(pou: &Node, text_node: &Node, source: &str, place: Place) {
     if let (Some(end), true) = (words.end, words.returned) {
         place.out.lines.push((format!("{end}:"), last));
     }
+    errors
+}
+
+/// The first word of `code` when it opens or closes a section of an IL
+/// text (`VAR_INPUT`, `END_PROGRAM`, `FUNCTION_BLOCK` …), which a body
+/// does not hold (the loader would read it as one).
+fn section_word(code: &str) -> Option<String> {
+    let word = code.split(|c: char| c.is_whitespace() || c == ';').next()?;
+    let upper = word.to_ascii_uppercase();
+    let sections = [
+        "VAR",
+        "END_VAR",
+        "PROGRAM",
+        "END_PROGRAM",
+        "FUNCTION_BLOCK",
+        "END_FUNCTION_BLOCK",
+        "FUNCTION",
+        "END_FUNCTION",
+    ];
+    (sections.contains(&upper.as_str()) || upper.starts_with("VAR_")).then_some(upper)
 }
 
 /// The file line of the text's first line: the text is trimmed, so the

@@ -73,7 +73,7 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
                 out: &mut out,
                 labels: None,
             };
-            il_body::write(p, il, text, place);
+            errors.extend(il_body::write(p, il, text, place));
         } else {
             let em = emitter(&mut d, &mut out, p, index, &own, &user);
             errors.extend(emit_body(em, p));
@@ -92,7 +92,7 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
                 out: &mut out,
                 labels: Some(&mut labels),
             };
-            il_body::write(p, il, text, place);
+            errors.extend(il_body::write(p, il, text, place));
             continue;
         }
         if drawn_body(p).is_none() {
