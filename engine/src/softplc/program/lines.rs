@@ -23,11 +23,11 @@ struct Way {
 }
 
 /// Whether `line` uses the current result it is given (an LD or an
-/// unconditional JMP or RET does not).
+/// unconditional JMP, RET or CAL does not).
 fn uses_result(line: &Line) -> bool {
     match line.operator {
         Operator::Ld => false,
-        Operator::Jmp | Operator::Ret => line.condition.is_some(),
+        Operator::Jmp | Operator::Ret | Operator::Cal => line.condition.is_some(),
         _ => true,
     }
 }

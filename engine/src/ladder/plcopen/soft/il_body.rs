@@ -51,44 +51,15 @@ pub(super) fn write(
     let name = pou.attr("name").unwrap_or_default();
     let text = text_node.text.as_str();
     let first = first_line(text, text_node.line, source);
-    let mut used = place.labels;
-    let program = used.is_some();
+    // A program's labels, and the end its RETs jump to, unique in the
+    // programs' section.
     let mut renamed_labels = HashMap::new();
-    if let Some(used) = used.as_deref_mut() {
+    let end = place.labels.map(|used| {
         for label in text.lines().filter_map(label_of) {
-            let mut unique = label.to_string();
-            let mut n = 2;
-            while used.contains(&unique.to_ascii_uppercase()) {
-                unique = format!(
-                    "{name}_{label}{}",
-                    if n == 2 { String::new() } else { n.to_string() }
-                );
-                n += 1;
-            }
-            used.insert(unique.to_ascii_uppercase());
-            renamed_labels.insert(label.to_ascii_uppercase(), unique);
+            renamed_labels.insert(label.to_ascii_uppercase(), unique(label, name, used));
         }
-    }
-    let end = program.then(|| {
-        let mut end = format!("{name}_end");
-        let mut n = 2;
-        let taken = |l: &str| {
-            renamed_labels
-                .values()
-                .any(|r: &String| r.eq_ignore_ascii_case(l))
-                || used
-                    .as_deref()
-                    .is_some_and(|u| u.contains(&l.to_ascii_uppercase()))
-        };
-        while taken(&end) {
-            end = format!("{name}_end{n}");
-            n += 1;
-        }
-        end
+        unique(&format!("{name}_end"), name, used)
     });
-    if let (Some(end), Some(used)) = (&end, used) {
-        used.insert(end.to_ascii_uppercase());
-    }
     let mut words = Words {
         pou: name,
         decl: place.decl,
@@ -152,6 +123,22 @@ fn section_word(code: &str) -> Option<String> {
         "END_FUNCTION",
     ];
     (sections.contains(&upper.as_str()) || upper.starts_with("VAR_")).then_some(upper)
+}
+
+/// `label`, or `pou_label` (then `pou_label3` …) when `used` has it;
+/// used from now on.
+fn unique(label: &str, pou: &str, used: &mut HashSet<String>) -> String {
+    let mut out = label.to_string();
+    let mut n = 2;
+    while used.contains(&out.to_ascii_uppercase()) {
+        out = match n {
+            2 => format!("{pou}_{label}"),
+            _ => format!("{pou}_{label}{n}"),
+        };
+        n += 1;
+    }
+    used.insert(out.to_ascii_uppercase());
+    out
 }
 
 /// The file line of the text's first line: the text is trimmed, so the

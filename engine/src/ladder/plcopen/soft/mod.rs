@@ -64,22 +64,7 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
         })
         .collect();
     let mut errors = Vec::new();
-    let mut sections = Vec::new();
-    for (index, (p, mut d)) in blocks.into_iter().enumerate() {
-        let mut out = emit::Output::default();
-        if let Some(il) = il_body::il_body(p) {
-            let place = il_body::Place {
-                decl: &d,
-                out: &mut out,
-                labels: None,
-            };
-            errors.extend(il_body::write(p, il, text, place));
-        } else {
-            let em = emitter(&mut d, &mut out, p, index, &own, &user);
-            errors.extend(emit_body(em, p));
-        }
-        sections.push((p, d, out));
-    }
+    let mut sections = block_sections(blocks, &own, &user, text, &mut errors);
     let mut out = emit::Output::default();
     let mut drawn = 0;
     // The labels of the programs' IL bodies, one section for them all.
@@ -127,6 +112,36 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
         text: text.text,
         warnings,
     })
+}
+
+type Section<'a> = (&'a Node, declare::Declarations, emit::Output);
+
+/// The project's own function blocks' sections (from `source`), each
+/// body written as the soft PLC's IL; their problems into `errors`.
+fn block_sections<'a>(
+    blocks: Vec<(&'a Node, declare::Declarations)>,
+    own: &declare::OwnTypes,
+    user: &HashMap<String, declare::Interface>,
+    source: &str,
+    errors: &mut Vec<Located<SoftError>>,
+) -> Vec<Section<'a>> {
+    let mut sections = Vec::new();
+    for (index, (p, mut d)) in blocks.into_iter().enumerate() {
+        let mut out = emit::Output::default();
+        if let Some(il) = il_body::il_body(p) {
+            let place = il_body::Place {
+                decl: &d,
+                out: &mut out,
+                labels: None,
+            };
+            errors.extend(il_body::write(p, il, source, place));
+        } else {
+            let em = emitter(&mut d, &mut out, p, index, own, user);
+            errors.extend(emit_body(em, p));
+        }
+        sections.push((p, d, out));
+    }
+    sections
 }
 
 /// The project's own POUs, and which of them run as blocks.
