@@ -65,9 +65,14 @@ impl Program {
                     passed.insert(base + i, (t, label.clone(), line.line));
                 }
             }
+            // What a jump brings (its literals copied for jumps alone: a
+            // long chain of them is not copied at every line).
             let before = Way {
                 cr: flow.cr,
-                flex: flow.flex.clone(),
+                flex: match line.operator {
+                    Operator::Jmp => flow.flex.clone(),
+                    _ => Vec::new(),
+                },
             };
             let resolved = self.resolve(line, &labels, &mut flow).and_then(|step| {
                 if let Step::Jmp(_, target) = step {

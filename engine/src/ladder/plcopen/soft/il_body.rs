@@ -240,8 +240,14 @@ impl Words<'_> {
                 }
                 let word: String = chars[start..i].iter().collect();
                 let before = code.trim_end().chars().last();
-                let after: String = chars[i..].iter().collect::<String>();
-                let after = after.trim_start();
+                // The two characters after the word and its spaces (not
+                // the rest of the line: a long line stays linear).
+                let after: String = chars[i..]
+                    .iter()
+                    .skip_while(|c| c.is_whitespace())
+                    .take(2)
+                    .collect();
+                let after = after.as_str();
                 let written = self.word(&word, before, after, &mut nth, &mut operator);
                 out.push_str(&written);
                 code.push_str(&written);
