@@ -287,8 +287,7 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
     let mut errors = Vec::new();
     let mut in_vars = false;
     let mut first_program = None;
-    // Each label (upper-case) and the line it is first on.
-    let mut labels: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    let mut labels = labels::Labels::default();
     let text = super::comments::blank_long_comments(text);
     for (i, raw) in text.lines().enumerate() {
         let number = i + 1;
@@ -321,26 +320,17 @@ pub fn parse_il(text: &str) -> Result<Vec<Line>, Vec<Located<IlError>>> {
         if in_vars || code.is_empty() || upper == "END_PROGRAM" {
             continue;
         }
-        match line(code, number) {
-            Ok(l) => {
-                if let Some(label) = &l.label {
-                    if let Some(&first) = labels.get(&label.to_ascii_uppercase()) {
-                        errors.push(Located::new(
-                            number,
-                            IlError::DuplicateLabel {
-                                label: label.clone(),
-                                first,
-                            },
-                        ));
-                        continue;
-                    }
-                    labels.insert(label.to_ascii_uppercase(), number);
-                }
-                lines.push(l);
+        if let Some(done) = labels.alone(code, number, &mut lines) {
+            if let Err(e) = done {
+                errors.push(Located::new(number, e));
             }
-            Err(e) => errors.push(Located::new(number, e)),
+            continue;
+        }
+        if let Err(e) = line(code, number).and_then(|l| labels.place(l, &mut lines)) {
+            errors.push(Located::new(number, e));
         }
     }
+    labels.finish(&mut lines);
     if errors.is_empty() {
         Ok(lines)
     } else {
@@ -521,6 +511,7 @@ fn operand(text: &str) -> Result<Operand, IlError> {
 }
 
 mod call;
+mod labels;
 use call::call;
 pub(crate) use call::split_params;
 

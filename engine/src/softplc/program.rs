@@ -249,51 +249,6 @@ impl Program {
         Ok(p)
     }
 
-    /// Resolves `lines` into steps (their labels numbered from the first
-    /// step they get); every error into `errors` at its line.
-    fn compile_lines(&mut self, lines: &[Line], errors: &mut Errors) {
-        let base = self.steps.len();
-        let mut flow = Flow::default();
-        let labels: HashMap<String, usize> = lines
-            .iter()
-            .enumerate()
-            .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), base + i)))
-            .collect();
-        for line in lines {
-            if line.label.is_some() || line.operator == Operator::Ld {
-                flow.refused = false;
-            }
-            if line.label.is_some() {
-                flow.cr = None;
-                flow.flex.clear();
-            }
-            match self.resolve(line, &labels, &mut flow) {
-                Ok(step) => self.steps.push(step),
-                Err(e) => {
-                    // After a refused line the current result is not
-                    // known: the lines that use it are not refused again
-                    // for that (no cascade), until an LD or a label.
-                    if !(flow.refused && e == LoadError::UnknownResult) {
-                        errors.push(Located::new(line.line, e));
-                    }
-                    flow.refused = true;
-                    flow.cr = None;
-                    flow.flex.clear();
-                    self.steps.push(Step::Ret(None));
-                }
-            }
-        }
-        // Each `(` never closed, at its own line.
-        for open in &flow.open {
-            errors.push(Located::new(open.line, LoadError::Unclosed));
-        }
-        for e in flow.late {
-            if !errors.contains(&e) {
-                errors.push(e);
-            }
-        }
-    }
-
     /// Gives every declared variable its slot (and index), every block
     /// instance its state, every instance of the program's own blocks
     /// its variables (named `prefix` + name for the front ends).
@@ -564,6 +519,7 @@ mod calls;
 mod check;
 mod flex;
 mod functions;
+mod lines;
 mod outputs;
 mod user;
 

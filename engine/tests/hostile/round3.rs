@@ -4,4 +4,5 @@
 
 mod files;
 mod il;
+mod il_bodies;
 mod ldmicro;

@@ -64,7 +64,7 @@ pub(super) fn default_type(v: i128) -> DataType {
 }
 
 /// The widest default of several literals (all of one type together).
-fn widest(flex: &[Flex]) -> DataType {
+pub(super) fn widest(flex: &[Flex]) -> DataType {
     let rank = |t: DataType| {
         [DataType::Dint, DataType::Lint, DataType::Ulint]
             .iter()
@@ -104,7 +104,7 @@ impl Program {
     /// The untyped literals `flex` rewritten as `t`s, each that does not
     /// fit refused at its line (into `late`); nothing when no integer
     /// becomes a `t` (the caller's type check says why).
-    fn retype(&mut self, flex: &[Flex], t: DataType, late: &mut Errors) {
+    pub(super) fn retype(&mut self, flex: &[Flex], t: DataType, late: &mut Errors) {
         for f in flex {
             let Some(d) = as_type(f.value, t, f.line) else {
                 return;

@@ -7,7 +7,19 @@
 
 use super::check::find_pin;
 use super::{LoadError, Named, Program, Src, Step};
-use crate::softplc::pins::{outputs, Instance};
+use crate::softplc::pins::{inputs, outputs, Instance};
+
+/// Why `instance.pin` is not an output of a `kind`: IEC's IL may also
+/// store to a block's input before a bare `CAL` (`ST t0.IN` / `CAL t0`);
+/// the soft PLC gives inputs in the CAL, which says so.
+fn no_output(kind: &str, instance: &str, pin: &str, input: bool) -> LoadError {
+    if input {
+        return LoadError::Call(format!(
+            "`{instance}.{pin}`: {pin} is an input of {kind}; the soft PLC gives a block's inputs in its CAL (CAL {instance}({pin} := …)) and reads only its outputs"
+        ));
+    }
+    LoadError::Call(format!("{kind} has no output `{pin}`"))
+}
 
 impl Program {
     /// The source of `instance.pin`, an output of a block instance.
@@ -16,8 +28,9 @@ impl Program {
         match named {
             Some(Named::Block(block)) => {
                 let kind = self.block_names[block].1.clone();
+                let input = find_pin(&inputs(&kind), pin).is_some();
                 let (i, _) = find_pin(&outputs(&kind), pin)
-                    .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
+                    .ok_or_else(|| no_output(&kind, instance, pin, input))?;
                 if let Some(&(.., slot)) = self.shadows.iter().find(|s| (s.0, s.1) == (block, i)) {
                     return Ok(Src::Slot(slot));
                 }
@@ -33,7 +46,13 @@ impl Program {
                     .iter()
                     .find(|(n, _)| n.eq_ignore_ascii_case(pin))
                     .map(|&(_, s)| Src::Slot(s))
-                    .ok_or_else(|| LoadError::Call(format!("{ty} has no output `{pin}`")))
+                    .ok_or_else(|| {
+                        let input = self.instances[u]
+                            .inputs
+                            .iter()
+                            .any(|(n, _)| n.eq_ignore_ascii_case(pin));
+                        no_output(ty, instance, pin, input)
+                    })
             }
             Some(Named::Slot(_)) => Err(LoadError::Type(format!(
                 "`{instance}` is not a block instance: `{instance}.{pin}` reads a block's output"

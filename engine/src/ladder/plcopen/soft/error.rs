@@ -98,7 +98,7 @@ impl fmt::Display for SoftError {
             SoftError::Function(ty, why) => write!(f, "{ty}: {why}"),
             SoftError::ProjectBlock(name, how) => write!(
                 f,
-                "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD"
+                "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD or written in IL"
             ),
             SoftError::Block(name) if name.eq_ignore_ascii_case("EXECUTE") => write!(
                 f,
@@ -109,7 +109,10 @@ impl fmt::Display for SoftError {
                 "{name} is not a standard block the soft PLC has (a vendor's or a library's block)"
             ),
             SoftError::NotDrawn(pous) => {
-                write!(f, "no program the tasks run is drawn in LD or FBD: {pous}")
+                write!(
+                    f,
+                    "no program the tasks run is drawn in LD or FBD or written in IL: {pous}"
+                )
             }
             SoftError::Load(why) => f.write_str(why),
             SoftError::NoInput(block, pin, has) => {

@@ -13,6 +13,7 @@ pub mod error;
 mod formal;
 pub(crate) mod functions;
 mod graph;
+mod il_body;
 mod infer;
 mod order;
 
@@ -63,16 +64,22 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
         })
         .collect();
     let mut errors = Vec::new();
-    let mut sections = Vec::new();
-    for (index, (p, mut d)) in blocks.into_iter().enumerate() {
-        let mut out = emit::Output::default();
-        let em = emitter(&mut d, &mut out, p, index, &own, &user);
-        errors.extend(emit_body(em, p));
-        sections.push((p, d, out));
-    }
+    let mut sections = block_sections(blocks, &own, &user, text, &mut errors);
     let mut out = emit::Output::default();
     let mut drawn = 0;
+    // The labels of the programs' IL bodies, one section for them all.
+    let mut labels = std::collections::HashSet::new();
     for (index, p) in chosen.iter().enumerate() {
+        if let Some(il) = il_body::il_body(p) {
+            drawn += 1;
+            let place = il_body::Place {
+                decl: &declarations,
+                out: &mut out,
+                labels: Some(&mut labels),
+            };
+            errors.extend(il_body::write(p, il, text, place));
+            continue;
+        }
         if drawn_body(p).is_none() {
             let what = format!("{} in {}", p.attr("name").unwrap_or_default(), language(p));
             errors.push(Located::new(p.line, SoftError::NotDrawn(what)));
@@ -107,6 +114,36 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
     })
 }
 
+type Section<'a> = (&'a Node, declare::Declarations, emit::Output);
+
+/// The project's own function blocks' sections (from `source`), each
+/// body written as the soft PLC's IL; their problems into `errors`.
+fn block_sections<'a>(
+    blocks: Vec<(&'a Node, declare::Declarations)>,
+    own: &declare::OwnTypes,
+    user: &HashMap<String, declare::Interface>,
+    source: &str,
+    errors: &mut Vec<Located<SoftError>>,
+) -> Vec<Section<'a>> {
+    let mut sections = Vec::new();
+    for (index, (p, mut d)) in blocks.into_iter().enumerate() {
+        let mut out = emit::Output::default();
+        if let Some(il) = il_body::il_body(p) {
+            let place = il_body::Place {
+                decl: &d,
+                out: &mut out,
+                labels: None,
+            };
+            errors.extend(il_body::write(p, il, source, place));
+        } else {
+            let em = emitter(&mut d, &mut out, p, index, own, user);
+            errors.extend(emit_body(em, p));
+        }
+        sections.push((p, d, out));
+    }
+    sections
+}
+
 /// The project's own POUs, and which of them run as blocks.
 fn own_types(pous: &[&Node]) -> declare::OwnTypes {
     declare::OwnTypes {
@@ -126,10 +163,15 @@ fn own_types(pous: &[&Node]) -> declare::OwnTypes {
             .collect(),
         blocks: pous
             .iter()
-            .filter(|p| p.attr("pouType") == Some("functionBlock") && drawn_body(p).is_some())
+            .filter(|p| p.attr("pouType") == Some("functionBlock") && runs(p))
             .filter_map(|p| p.attr("name").map(str::to_string))
             .collect(),
     }
+}
+
+/// Whether the soft PLC runs `pou`'s body: drawn (LD, FBD) or IL.
+fn runs(pou: &Node) -> bool {
+    drawn_body(pou).is_some() || il_body::il_body(pou).is_some()
 }
 
 /// `pou`'s drawn body emitted by `em`; its problems.

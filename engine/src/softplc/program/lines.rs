@@ -1,0 +1,193 @@
+//! Lines resolved in order, and what the current result is at a label
+//! (issue #44): the one every way there brings, the line before (when
+//! it falls through) and each jump to it from above, when they agree in
+//! type, as Beremiz's `QuitFb:` / `ST Cnt` needs (reached from `JMP
+//! QuitFb` with `Cnt + 1` and from `LD ResetCounterValue` above it).
+//! Ways that disagree, or a way that brings none, leave it unknown: the
+//! instruction there must start with LD, and says why when it does not.
+//! A jump back to a label whose instruction used the current result
+//! must bring that type too (it is refused at the jump otherwise).
+
+use std::collections::HashMap;
+
+use super::flex::{becomes, widest, Flex, Flow};
+use super::{Errors, LoadError, Program, Step};
+use crate::error::Located;
+use crate::softplc::data::DataType;
+use crate::softplc::il::{Line, Operator};
+
+/// The current result one way brings to a label.
+struct Way {
+    cr: Option<DataType>,
+    flex: Vec<Flex>,
+}
+
+/// Whether `line` uses the current result it is given (an LD or an
+/// unconditional JMP, RET or CAL does not).
+fn uses_result(line: &Line) -> bool {
+    match line.operator {
+        Operator::Ld => false,
+        Operator::Jmp | Operator::Ret | Operator::Cal => line.condition.is_some(),
+        _ => true,
+    }
+}
+
+impl Program {
+    /// Resolves `lines` into steps (their labels numbered from the first
+    /// step they get); every error into `errors` at its line.
+    pub(super) fn compile_lines(&mut self, lines: &[Line], errors: &mut Errors) {
+        let base = self.steps.len();
+        let mut flow = Flow::default();
+        let labels: HashMap<String, usize> = lines
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), base + i)))
+            .collect();
+        // What the jumps read so far bring to each label below them.
+        let mut ways: HashMap<usize, Vec<Way>> = HashMap::new();
+        // Each label passed whose instruction used the current result:
+        // its type, its name and line.
+        let mut passed: HashMap<usize, (DataType, String, usize)> = HashMap::new();
+        let mut falls = true;
+        for (i, line) in lines.iter().enumerate() {
+            if line.label.is_some() || line.operator == Operator::Ld {
+                flow.refused = false;
+            }
+            let mut disagree = None;
+            if let Some(label) = &line.label {
+                let mut came = ways.remove(&(base + i)).unwrap_or_default();
+                if falls {
+                    let flex = std::mem::take(&mut flow.flex);
+                    came.push(Way { cr: flow.cr, flex });
+                }
+                disagree = self.meet(&mut flow, came, label);
+                if let (Some(t), true) = (flow.cr, uses_result(line)) {
+                    passed.insert(base + i, (t, label.clone(), line.line));
+                }
+            }
+            // What a jump brings (its literals copied for jumps alone: a
+            // long chain of them is not copied at every line).
+            let before = Way {
+                cr: flow.cr,
+                flex: match line.operator {
+                    Operator::Jmp => flow.flex.clone(),
+                    _ => Vec::new(),
+                },
+            };
+            let resolved = self.resolve(line, &labels, &mut flow).and_then(|step| {
+                if let Step::Jmp(_, target) = step {
+                    self.arrive(target, before, &passed, &mut ways)?;
+                }
+                Ok(step)
+            });
+            match resolved {
+                Ok(step) => self.steps.push(step),
+                Err(e) => {
+                    let e = match (e, disagree) {
+                        (LoadError::UnknownResult, Some(why)) => why,
+                        (e, _) => e,
+                    };
+                    // After a refused line the current result is not
+                    // known: the lines that use it are not refused again
+                    // for that (no cascade), until an LD or a label.
+                    if !(flow.refused && e == LoadError::UnknownResult) {
+                        errors.push(Located::new(line.line, e));
+                    }
+                    flow.refused = true;
+                    flow.cr = None;
+                    flow.flex.clear();
+                    self.steps.push(Step::Ret(None));
+                }
+            }
+            falls =
+                !matches!(line.operator, Operator::Jmp | Operator::Ret) || line.condition.is_some();
+        }
+        // Each `(` never closed, at its own line.
+        for open in &flow.open {
+            errors.push(Located::new(open.line, LoadError::Unclosed));
+        }
+        for e in flow.late {
+            if !errors.contains(&e) {
+                errors.push(e);
+            }
+        }
+    }
+
+    /// A jump to step `target` bringing `way`: kept for a label below, or
+    /// checked against what a label above went on with.
+    fn arrive(
+        &mut self,
+        target: usize,
+        mut way: Way,
+        passed: &HashMap<usize, (DataType, String, usize)>,
+        ways: &mut HashMap<usize, Vec<Way>>,
+    ) -> Result<(), LoadError> {
+        if target >= self.steps.len() {
+            ways.entry(target).or_default().push(way);
+            return Ok(());
+        }
+        let Some((t, label, at)) = passed.get(&target) else {
+            return Ok(());
+        };
+        if !way.flex.is_empty() {
+            let mut f = Flow {
+                cr: way.cr,
+                flex: std::mem::take(&mut way.flex),
+                ..Flow::default()
+            };
+            self.settle(&mut f, *t);
+            way.cr = f.cr;
+        }
+        if way.cr == Some(*t) {
+            return Ok(());
+        }
+        let here = way.cr.map_or("not known", DataType::name);
+        Err(LoadError::Type(format!(
+            "line {at}, after the label `{label}`, uses the current result as {}; this jump brings {here}: make them one type or start there with LD",
+            t.name()
+        )))
+    }
+
+    /// The current result at a label, from what `came` there; why the
+    /// ways disagree, when they do.
+    fn meet(&mut self, flow: &mut Flow, came: Vec<Way>, label: &str) -> Option<LoadError> {
+        flow.cr = None;
+        flow.flex.clear();
+        if came.is_empty() || came.iter().any(|w| w.cr.is_none()) {
+            return None;
+        }
+        let mut typed = came
+            .iter()
+            .filter(|w| w.flex.is_empty())
+            .filter_map(|w| w.cr);
+        let Some(t) = typed.next() else {
+            // Untyped literals every way: they wait together for a use.
+            flow.flex = came.into_iter().flat_map(|w| w.flex).collect();
+            let t = widest(&flow.flex);
+            let flex = flow.flex.clone();
+            self.retype(&flex, t, &mut flow.late);
+            flow.cr = Some(t);
+            return None;
+        };
+        let untyped = came.iter().find(|w| !w.flex.is_empty() && !becomes(t));
+        let other = typed.find(|&u| u != t).or(untyped.and_then(|w| w.cr));
+        if let Some(u) = other {
+            return Some(LoadError::Type(format!(
+                "the current result reaches the label `{label}` as {} and as {}: make them one type (*_TO_*) or start with LD",
+                t.name(),
+                u.name()
+            )));
+        }
+        for w in came.into_iter().filter(|w| !w.flex.is_empty()) {
+            let mut f = Flow {
+                cr: w.cr,
+                flex: w.flex,
+                ..Flow::default()
+            };
+            self.settle(&mut f, t);
+            flow.late.append(&mut f.late);
+        }
+        flow.cr = Some(t);
+        None
+    }
+}

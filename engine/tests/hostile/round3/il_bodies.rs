@@ -1,0 +1,232 @@
+//! Issue #44, item 2 in PLCopen IL bodies: a project's IL bodies
+//! (programs and its own function blocks) run on the soft PLC, reading
+//! block outputs (`LD t0.Q`, `GE c0.CV`), with what Beremiz and OpenPLC
+//! Editor write: labels on their own line, a label whose instruction
+//! uses the current result, RET in a program, a CAL over several lines.
+
+use engine::events::InputValue;
+use engine::ladder::plcopen::soft::to_il;
+use engine::machines::new_plc;
+use engine::plc::{Command, Plc};
+use engine::softplc::{Data, DataType, Program};
+use engine::{MachineId, SimTime};
+
+const BODIES: &str = include_str!("../fixtures/il-bodies.xml");
+const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/plcopen");
+
+fn load(text: &str) -> Program {
+    Program::load(text).unwrap_or_else(|e| panic!("{text}\n{e:?}"))
+}
+
+/// Each error of a text refused: its line and message.
+fn refused(text: &str) -> Vec<(usize, String)> {
+    match Program::load(text) {
+        Ok(_) => panic!("loaded, should be refused:\n{text}"),
+        Err(errors) => errors
+            .into_iter()
+            .map(|e| (e.line, e.error.to_string()))
+            .collect(),
+    }
+}
+
+fn int(v: i128) -> Option<Data> {
+    Some(Data::integer(DataType::Int, v))
+}
+
+fn read(plc: &dyn Plc, device: &str) -> i64 {
+    plc.read(plc.device(device).expect(device)).as_i64()
+}
+
+#[test]
+fn a_plcopen_il_body_reads_the_outputs_of_the_blocks_it_calls() {
+    let program = to_il(BODIES, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let mut plc = new_plc(MachineId::SoftPlc);
+    plc.load_text(&program.text)
+        .unwrap_or_else(|e| panic!("{e}\n{}", program.text));
+    let run = plc.device("%IX0.0").expect("run");
+    // Presses at 10 and 30 ms: c0.CV is 1, then 2 from the scan at 30
+    // ms, when t0 (30 ms) starts; its Q reaches the lamp at 60 ms.
+    let presses = [(10, 1), (20, 0), (30, 1)];
+    // (ms, scans main ran, doubled c0.CV, lamp, late)
+    let want = [
+        (10, 1, 2, 0, 0),
+        (20, 2, 2, 0, 0),
+        (30, 3, 4, 0, 0),
+        (40, 4, 4, 0, 1),
+        (50, 5, 4, 0, 1),
+        (60, 6, 4, 1, 1),
+        (90, 9, 4, 1, 1),
+    ];
+    for (ms, scans, doubled, lamp, late) in want {
+        if let Some(&(_, v)) = presses.iter().find(|(t, _)| *t == ms) {
+            plc.apply(Command::SetInput(run, InputValue::Int(v)))
+                .expect("input");
+        }
+        plc.run_until(SimTime::from_millis(ms));
+        // `second` runs first and RETurns before `over` until its n
+        // passes 3: its RET ends it alone, main runs every scan.
+        assert_eq!(read(plc.as_ref(), "%MW0"), scans, "main's scans at {ms} ms");
+        assert_eq!(read(plc.as_ref(), "%MW2"), doubled, "d0.OUT at {ms} ms");
+        assert_eq!(read(plc.as_ref(), "%QX0.0"), lamp, "lamp (t0.Q) at {ms} ms");
+        assert_eq!(read(plc.as_ref(), "%QX0.1"), late, "late at {ms} ms");
+    }
+}
+
+#[test]
+fn an_il_bodys_names_and_labels_are_written_as_its_program_has_them() {
+    let program = to_il(BODIES, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let text = &program.text;
+    // Both programs declare `n`: main's is main_n, in its body too.
+    assert!(text.contains("LD main_n\nADD 1\nST main_n"), "{text}");
+    // Both use the label `over`; second's RET jumps to its end.
+    assert!(
+        text.contains("JMP main_over") && text.contains("\nmain_over:"),
+        "{text}"
+    );
+    assert!(text.contains("JMP second_end\n"), "{text}");
+    // The CAL over four lines is one line.
+    assert!(text.contains("CAL c0( CU := run, PV := 5 )"), "{text}");
+    // The block's RETC stays a RETC: it returns from the block.
+    assert!(text.contains("GT 100\nRETC\n"), "{text}");
+}
+
+#[test]
+fn an_il_body_error_is_said_at_its_line_of_the_file() {
+    let bad = BODIES.replace("LD d0.OUT", "ST t0.IN");
+    let line = 1 + bad.lines().position(|l| l == "ST t0.IN").expect("the line");
+    let errors = to_il(&bad, None).expect_err("refused");
+    let got: Vec<(usize, String)> = errors
+        .iter()
+        .map(|e| (e.line, e.error.to_string()))
+        .collect();
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, line, "{got:?}");
+    assert!(
+        got[0].1.contains("IN is an input of TON") && got[0].1.contains("CAL t0(IN := …)"),
+        "{got:?}"
+    );
+}
+
+#[test]
+fn a_label_alone_on_its_line_labels_the_next_instruction() {
+    let mut p = load(
+        "VAR\n  x : BOOL := TRUE;\n  n : INT;\n  m : INT;\nEND_VAR\n\
+         LD x\nJMPC skip\nLD 1\nST n\n\
+         skip:\n(* two labels in a row *)\nagain:\nLD m\nADD 1\nST m\n\
+         LD m\nLT 3\nJMPC again\n\
+         done:\n",
+    );
+    p.scan(0);
+    assert_eq!(p.value("n"), int(0), "LD 1 / ST n jumped over");
+    assert_eq!(p.value("m"), int(3), "the loop back to `again`");
+}
+
+#[test]
+fn a_label_goes_on_with_the_current_result_every_way_brings() {
+    // Beremiz's CounterIL, as its IL reads: `QuitFb:` stores what the
+    // jump from above and the line before it bring, both INT.
+    let text = "VAR\n  reset : BOOL;\n  start : INT := 17;\n  cnt : INT;\n  out : INT;\n\
+                wide : DINT;\nEND_VAR\n\
+                LD reset\nJMPC again\nLD cnt\nADD 1\nJMP quit\n\
+                again:\nLD start\n\
+                quit:\nST cnt\nST out\n\
+                LD reset\nJMPCN keep\nLD 70000\nJMP put\n\
+                keep:\nLD 5\n\
+                put:\nST wide\n";
+    let mut p = load(text);
+    for n in 1..=3 {
+        p.scan(0);
+        assert_eq!(p.value("out"), int(n), "scan {n}");
+    }
+    assert_eq!(p.value("wide"), Some(Data::integer(DataType::Dint, 5)));
+    // Untyped literals from both ways take the type of the store.
+    let int_put = text.replace("ST wide", "ST out");
+    let got = refused(&int_put);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 20, "at 70000's line: {got:?}");
+    assert!(got[0].1.contains("out of range for INT"), "{got:?}");
+}
+
+#[test]
+fn ways_that_disagree_at_a_label_are_refused_there() {
+    let got = refused(
+        "VAR\n  x : BOOL;\n  n : INT;\n  d : DINT;\nEND_VAR\n\
+         LD x\nJMPC wide\nLD n\nJMP put\nwide:\nLD d\nput:\nST n\n",
+    );
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 13, "{got:?}");
+    assert!(
+        got[0]
+            .1
+            .contains("reaches the label `put` as INT and as DINT"),
+        "{got:?}"
+    );
+    // A jump back to a label whose instruction used an INT, with a DINT.
+    let got = refused(
+        "VAR\n  n : INT;\n  d : DINT;\nEND_VAR\n\
+         LD n\nback:\nADD 1\nST n\nLD d\nGT 5\nJMPC out\nLD d\nJMP back\nout:\nLD n\n",
+    );
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 13, "at the JMP: {got:?}");
+    assert!(
+        got[0].1.contains(
+            "line 7, after the label `back`, uses the current result as INT; this jump brings DINT"
+        ),
+        "{got:?}"
+    );
+}
+
+fn cli(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = crate::common::hashigo(args, "");
+    (
+        out.status.code(),
+        crate::common::text(&out.stdout),
+        crate::common::text(&out.stderr),
+    )
+}
+
+#[test]
+fn the_beremiz_counter_il_runs_alone_with_pou() {
+    let file = format!("{REAL}/beremiz-first-steps.xml");
+    if !std::path::Path::new(&file).exists() {
+        return;
+    }
+    let (code, out, err) = cli(&[
+        "run",
+        "--machine",
+        "soft-plc",
+        "--program",
+        &file,
+        "--pou",
+        "CounterIL",
+        "--until",
+        "50ms",
+        "--every",
+        "10ms",
+        "--watch",
+        "OUT,Cnt,ResetCounterValue",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    // Reset is off: each scan adds one; the constant global is 17.
+    assert_eq!(
+        out,
+        "time_ms,OUT,Cnt,ResetCounterValue\n0,0,0,17\n10,1,1,17\n20,2,2,17\n\
+         30,3,3,17\n40,4,4,17\n50,5,5,17\n"
+    );
+}
+
+#[test]
+fn a_section_word_in_an_il_body_is_refused_at_its_line() {
+    // The loader would read `VAR_INPUT` as declarations, `END_PROGRAM`
+    // as the program's end: in a body they are said to be out of place.
+    let bad = BODIES.replace("over:\nLD TRUE", "over:\nVAR_INPUT\nLD TRUE");
+    let line = 1 + bad.lines().position(|l| l == "VAR_INPUT").expect("line");
+    let errors = to_il(&bad, None).expect_err("refused");
+    let got: Vec<(usize, String)> = errors
+        .iter()
+        .map(|e| (e.line, e.error.to_string()))
+        .collect();
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, line, "{got:?}");
+    assert!(got[0].1.starts_with("`VAR_INPUT` in an IL body"), "{got:?}");
+}
