@@ -717,7 +717,7 @@ def test_a_timeline_is_recorded_from_what_the_user_clicks(driver, base_url):
 
 
 def scans(driver):
-    return int(re.search(r"· (\d+) scans", el(driver, "sim-time").text).group(1))
+    return int(re.search(r"(\d+) scans", el(driver, "sim-time").text).group(1))
 
 
 def seed_running(driver, base_url, speed):
@@ -770,7 +770,7 @@ def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
     assert scans(driver) == before + 1, "paused after a step"
     el(driver, "step-instr").click()
     wait(driver, lambda: el(driver, "step-at").text.startswith("step "))
-    assert "step-clock" in [b.get_attribute("data-testid") for b in driver.find_elements(By.CSS_SELECTOR, ".run-bar button")]
+    assert "step-clock" in [b.get_attribute("data-testid") for b in driver.find_elements(By.CSS_SELECTOR, ".run-controls button")]
 
 
 def test_a_one_scan_pulse_is_marked_in_the_frame_after_it(driver, base_url):

@@ -21,27 +21,29 @@ pub fn SimClock(ctx: LadderCtx) -> impl IntoView {
         <span class="clock" data-testid="sim-time" role="status" data-state=state
             title=move || t().sim_time
             data-ms=move || clock.with(|c| c.ms()).to_string()>
-            <span class="clock-state">{move || match state() {
-                "running" => t().state_running,
-                "paused" => t().state_paused,
-                _ => t().state_stopped,
-            }}</span>
-            {move || {
-                let c = clock.get();
-                let ms = c.ms();
-                let scan = c
-                    .scan_us
-                    .map(|us| format!(" · {} {}.{:02} ms", t().scan_time, us / 1000, us % 1000 / 10))
-                    .unwrap_or_default();
-                format!(
-                    " · {}.{:03} {} · {} {}{scan}",
-                    ms / 1000,
-                    ms % 1000,
-                    t().seconds,
-                    c.scans,
-                    t().scans,
-                )
-            }}
+            // Two short lines of a fixed width, so the app bar does not
+            // move as the figures grow.
+            <span class="clock-line">
+                <span class="clock-state">{move || match state() {
+                    "running" => t().state_running,
+                    "paused" => t().state_paused,
+                    _ => t().state_stopped,
+                }}</span>
+                {move || {
+                    let ms = clock.with(|c| c.ms());
+                    format!(" · {}.{:03} {} ·", ms / 1000, ms % 1000, t().seconds)
+                }}
+            </span>
+            <span class="clock-line">
+                {move || {
+                    let c = clock.get();
+                    let scan = c
+                        .scan_us
+                        .map(|us| format!(" · {} {}.{:02} ms", t().scan_time, us / 1000, us % 1000 / 10))
+                        .unwrap_or_default();
+                    format!("{} {}{scan}", c.scans, t().scans)
+                }}
+            </span>
         </span>
     }
 }

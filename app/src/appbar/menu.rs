@@ -2,7 +2,7 @@
 //! behind one button): a button that opens a panel of the controls the
 //! toolbar once showed in a row. The panel stays in the page while closed
 //! (hidden), so a file input in it keeps its chosen file. Escape, a click
-//! outside or a click on a button inside closes it.
+//! outside, a button chosen inside or a choice made in a field closes it.
 
 use leptos::prelude::*;
 
@@ -45,6 +45,18 @@ pub fn Menu(id: &'static str, label: Signal<&'static str>, children: Children) -
             </button>
             <div class="menu-panel" id=format!("menu-panel-{id}") data-menu-panel=id
                 hidden=move || !open.get()
+                // A choice made in a field (an example, a file, the machine
+                // to copy to) closes the menu too; a check box does not.
+                on:change=move |e: web_sys::Event| {
+                    use leptos::wasm_bindgen::JsCast;
+                    let checkbox = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok())
+                        .is_some_and(|i| i.type_() == "checkbox");
+                    if !checkbox {
+                        open.set(false);
+                    }
+                }
                 on:click=move |e: web_sys::MouseEvent| {
                     // A button chosen closes the menu; a field (a select,
                     // the file input, a check box) keeps it open to be used.

@@ -26,16 +26,52 @@ pub fn AppBar() -> impl IntoView {
     let t = move || ctx.lang.get().texts();
     let ladder = move || workspaces.ladders.of(ctx.machine.get());
     let menus_open = RwSignal::new(false);
+    // On a phone the menus are behind one button: a press outside them or
+    // on a button inside closes them, as a menu chosen from does.
+    let menus = NodeRef::<leptos::html::Nav>::new();
+    let toggle = NodeRef::<leptos::html::Button>::new();
+    let outside = window_event_listener(leptos::ev::pointerdown, move |e| {
+        if !menus_open.get_untracked() {
+            return;
+        }
+        let target = e.target().and_then(|t| {
+            use leptos::wasm_bindgen::JsCast;
+            t.dyn_into::<web_sys::Node>().ok()
+        });
+        let within = |node: Option<web_sys::HtmlElement>| {
+            node.zip(target.as_ref())
+                .is_some_and(|(n, t)| n.contains(Some(t)))
+        };
+        let in_menus = within(menus.get_untracked());
+        let on_toggle = within(toggle.get_untracked().map(Into::into));
+        if !in_menus && !on_toggle {
+            menus_open.set(false);
+        }
+    });
+    on_cleanup(move || outside.remove());
     view! {
         <header class="top app-bar">
             <h1 class="brand">
                 {move || t().brand}
-                <span class="project-name" data-testid="project-name">{move || project_name(ladder())}</span>
+                <span class="project-name" data-testid="app-project">{move || project_name(ladder())}</span>
             </h1>
-            <button type="button" class="menus-toggle" data-testid="menus" aria-expanded=move || menus_open.get().to_string()
+            <button type="button" class="menus-toggle" data-testid="menus" node_ref=toggle aria-expanded=move || menus_open.get().to_string()
                 aria-controls="menus" aria-label=move || t().menus title=move || t().menus
                 on:click=move |_| menus_open.update(|o| *o = !*o)>"☰"</button>
-            <nav class="menus" id="menus" data-open=move || menus_open.get().to_string() aria-label=move || t().menus>
+            <nav class="menus" id="menus" node_ref=menus data-open=move || menus_open.get().to_string() aria-label=move || t().menus
+                on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" { menus_open.set(false); }
+                on:click=move |e: web_sys::MouseEvent| {
+                    // A choice in a menu's panel closes the phone's menus.
+                    use leptos::wasm_bindgen::JsCast;
+                    let chosen = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+                        .and_then(|el| el.closest(".menu-panel button").ok().flatten())
+                        .is_some();
+                    if chosen {
+                        menus_open.set(false);
+                    }
+                }>
                 <Menu id="file" label=label(|t| t.menu_file)>
                     {move || view! { <FileMenu ctx=ladder() /> }}
                 </Menu>

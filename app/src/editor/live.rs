@@ -17,9 +17,9 @@ use super::LadderCtx;
 pub fn run_drawing(ctx: LadderCtx) -> bool {
     let t = ctx.page.lang.get_untracked().texts();
     if !ctx.write_drawing() {
-        ctx.panes
-            .message
-            .set(Some(t.tests_need_compile.to_string()));
+        ctx.panes.message.set(Some(t.run_needs_compile.to_string()));
+        // Where the problems are said, each at its cell.
+        ctx.page.docks.show(crate::docks::Tool::Listing);
         return false;
     }
     ctx.live.unwritten.set(false);

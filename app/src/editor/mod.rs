@@ -6,43 +6,34 @@
 //! - [`model`], [`keys`]: what the cells show and what keys do (plain
 //!   Rust, tested natively);
 //! - [`grid`], [`entry`], [`palette`], [`side`], [`find`]: the views;
-//! - [`store`], [`projects`]: the autosave and named projects;
-//! - [`shared`], [`files`], [`picture`]: share links, files, SVG / PNG;
-//! - [`cases`]: the Tests pane.
+//! - [`panes`]: the tools' panes (Tests, chart, Why?, listing, variables,
+//!   Find, Projects);
+//! - [`files`]: share links, files, SVG / PNG, the autosave.
 
-pub mod autosave;
-pub mod cases;
 pub mod cell_kind;
-pub mod chart;
 pub mod clipboard;
 pub mod columns;
 pub mod entry;
 pub mod files;
-pub mod find;
 pub mod grid;
-pub mod import;
 pub mod keys;
 pub mod live;
 pub mod machine;
 pub mod model;
 pub mod palette;
-pub mod picture;
-pub mod projects;
-pub mod shared;
-pub mod side;
+pub mod panes;
 pub mod state;
-pub mod store;
 pub mod strip;
 
 pub mod travel;
-pub mod variables;
-pub mod why;
 pub mod zoom;
 
 use engine::ladder::edit::Edit;
 use engine::MachineId;
 use leptos::prelude::*;
 
+pub use files::{autosave, import, picture, shared, store};
+pub use panes::{cases, chart, find, projects, side, variables, why};
 pub use state::{LadderCtx, Program};
 
 /// Every machine's editor, indexed by the machine's place in

@@ -250,6 +250,7 @@ pub static EN: Texts = Texts {
     program_tab: "Program",
     cpu_tab: "CPU",
     panel_tab: "Panel",
-    palette_search: "Find a part",
+    palette_search: "Find",
     comments_tab: "Comments",
+    run_needs_compile: "The ladder has problems, so it cannot run: each is marked on its cell and listed under Listing & problems.",
 };

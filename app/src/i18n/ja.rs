@@ -251,6 +251,7 @@ pub static JA: Texts = Texts {
     program_tab: "プログラム",
     cpu_tab: "CPU",
     panel_tab: "パネル",
-    palette_search: "部品を探す",
+    palette_search: "検索",
     comments_tab: "コメント",
+    run_needs_compile: "ラダーに問題があるため実行できません。問題はそのセルに印が付き、「リストと問題」に一覧されます。",
 };

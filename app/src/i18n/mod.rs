@@ -324,4 +324,5 @@ pub struct Texts {
     pub panel_tab: &'static str,
     pub palette_search: &'static str,
     pub comments_tab: &'static str,
+    pub run_needs_compile: &'static str,
 }

@@ -54,19 +54,21 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
             data-sheet=move || docks.sheet.get().to_string()
             data-tool=move || docks.tool.get().hook()
             aria-label=move || t().tools_dock>
-            <div class="dock-tabs" role="tablist" aria-label=move || t().tools_dock>
-                {tabs}
+            <div class="dock-tabs-row">
+                <div class="dock-tabs" role="tablist" aria-label=move || t().tools_dock>
+                    {tabs}
+                </div>
                 <button type="button" class="dock-collapse" data-testid="dock-bottom-toggle"
-                    aria-expanded=move || open().to_string()
-                    title=move || if open() { t().dock_collapse } else { t().dock_expand }
-                    aria-label=move || if open() { t().dock_collapse } else { t().dock_expand }
-                    on:click=move |_| {
-                        let now = !docks.sizes.with_untracked(|s| s.bottom_open);
-                        docks.sheet.set(now);
-                        docks.resize(|s| s.bottom_open = now);
-                    }>
-                    {move || if open() { "▾" } else { "▴" }}
-                </button>
+                        aria-expanded=move || open().to_string()
+                        title=move || if open() { t().dock_collapse } else { t().dock_expand }
+                        aria-label=move || if open() { t().dock_collapse } else { t().dock_expand }
+                        on:click=move |_| {
+                            let now = !docks.sizes.with_untracked(|s| s.bottom_open);
+                            docks.sheet.set(now);
+                            docks.resize(|s| s.bottom_open = now);
+                        }>
+                        {move || if open() { "▾" } else { "▴" }}
+                    </button>
             </div>
             <div class="dock-body">{panels}</div>
         </section>

@@ -10,7 +10,7 @@ use engine::ladder::share;
 use engine::ladder::Project;
 use leptos::prelude::*;
 
-use super::{LadderCtx, Ladders};
+use crate::editor::{LadderCtx, Ladders};
 use crate::state::Ctx;
 
 /// The fragment of the page's URL, without `#`, when it has one.
@@ -131,7 +131,7 @@ pub fn SharedBanner(ctx: LadderCtx) -> impl IntoView {
             <div class="shared-banner" role="status" data-testid="shared-banner">
                 <span>{move || t().shared_note}</span>
                 <button type="button" data-testid="shared-keep" on:click=move |_| {
-                    ctx.keep_shared(use_context::<super::projects::Projects>());
+                    ctx.keep_shared(use_context::<crate::editor::projects::Projects>());
                     clear_fragment();
                 }>{move || t().shared_keep}</button>
                 <button type="button" data-testid="shared-back" on:click=move |_| {

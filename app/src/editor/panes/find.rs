@@ -6,7 +6,7 @@
 use engine::ladder::edit::{find, replace_plan, xref, Cursor, Edit, UseRole};
 use leptos::prelude::*;
 
-use super::state::LadderCtx;
+use crate::editor::state::LadderCtx;
 
 /// Tracks every change of the ladder (the listing and problems both
 /// change with it; the rung list covers rung moves).

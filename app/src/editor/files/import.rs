@@ -11,7 +11,7 @@ use engine::ladder::edit::Edit;
 use files_worker::{Reply, Request};
 use leptos::prelude::*;
 
-use super::LadderCtx;
+use crate::editor::LadderCtx;
 
 /// A file waiting in the dialog.
 #[derive(Clone, Debug, PartialEq, Eq)]

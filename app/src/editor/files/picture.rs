@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use super::model::{CellData, RungData};
+use crate::editor::model::{CellData, RungData};
 
 const CELL_W: usize = 80;
 const CELL_H: usize = 48;
@@ -113,7 +113,7 @@ fn cell(s: &mut String, c: &CellData, x: usize, y: usize) {
         "<line x1=\"{x}\" y1=\"{mid}\" x2=\"{}\" y2=\"{mid}\" stroke=\"#000\" stroke-width=\"2\"/>",
         x + CELL_W
     );
-    if c.kind == super::model::CellKind::Wire {
+    if c.kind == crate::editor::model::CellKind::Wire {
         return;
     }
     let cx = x + CELL_W / 2;

@@ -10,7 +10,7 @@ use engine::record::Mark;
 use engine::SimTime;
 use leptos::prelude::*;
 
-use super::LadderCtx;
+use crate::editor::LadderCtx;
 
 /// The chart's width in pixels (one column per pixel).
 const WIDTH: usize = 600;
@@ -291,7 +291,7 @@ impl Chart {
 
     fn export(self) {
         let csv = self.data.with_untracked(csv_of);
-        super::files::download("timing.csv", "text/csv", &csv);
+        crate::editor::files::download("timing.csv", "text/csv", &csv);
     }
 
     /// A click at `x` pixels: the cursor there (and, paused, that scan).
@@ -304,7 +304,7 @@ impl Chart {
         let mark = from + (x.min(WIDTH - 1) * n / WIDTH) as u64;
         self.cursor.set(Some(mark));
         if self.ctx.page.paused.get_untracked() {
-            super::travel::seek(self.ctx, mark);
+            crate::editor::travel::seek(self.ctx, mark);
         }
     }
 

@@ -10,7 +10,7 @@ use engine::ladder::why::{causes, drivers};
 use engine::record::Mark;
 use leptos::prelude::*;
 
-use super::LadderCtx;
+use crate::editor::LadderCtx;
 use engine::ladder::edit::Cursor;
 
 /// One explanation as the page shows it.
@@ -287,7 +287,7 @@ fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
             {match changed {
                 Some(m) => view! {
                     <button type="button" data-testid="why-changed" data-scan=m.to_string()
-                        on:click=move |_| super::travel::seek(ctx, m)>
+                        on:click=move |_| crate::editor::travel::seek(ctx, m)>
                         {format!("{} {m}", t().why_changed)}
                     </button>
                 }.into_any(),

@@ -12,8 +12,8 @@ use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::{JsCast, JsValue};
 
-use super::model::RungData;
-use super::{picture, LadderCtx, Ladders};
+use crate::editor::model::RungData;
+use crate::editor::{picture, LadderCtx, Ladders};
 
 /// Offers `content` as a download named `name`.
 pub fn download(name: &str, mime: &str, content: &str) {
@@ -198,7 +198,7 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
 fn open_text(
     ctx: LadderCtx,
     ladders: Option<Ladders>,
-    pending: RwSignal<Option<super::import::Pending>>,
+    pending: RwSignal<Option<crate::editor::import::Pending>>,
     file: &str,
     text: &str,
 ) {
@@ -211,7 +211,7 @@ fn open_text(
     let (target, ladder) = if is_xml {
         // Another tool's project may need devices for its variables: the
         // import dialog (docs/ladder.md, "Declarations").
-        super::import::open(ctx, pending, file, text);
+        crate::editor::import::open(ctx, pending, file, text);
         return;
     } else {
         match Project::from_json(text) {
@@ -236,7 +236,7 @@ fn open_text(
 
 /// Offers the project (ladder, settings, tests) as a JSON file.
 pub fn save_project_file(ctx: LadderCtx) {
-    let project = super::shared::project_of(ctx);
+    let project = crate::editor::shared::project_of(ctx);
     download(&name(ctx, "json"), "application/json", &project.to_json());
 }
 

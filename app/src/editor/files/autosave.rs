@@ -99,9 +99,9 @@ impl Autosave {
 /// What the autosave has to say: a conflict with another tab's work (two
 /// choices), or a storage that refuses (the project file offered).
 #[component]
-pub fn StorageBanner(ctx: super::LadderCtx) -> impl IntoView {
+pub fn StorageBanner(ctx: crate::editor::LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
-    let projects = use_context::<super::projects::Projects>();
+    let projects = use_context::<crate::editor::projects::Projects>();
     let trouble = move || match ctx.work.saving.trouble.get() {
         Some(StorageFault::Full) => Some(t().storage_full),
         Some(StorageFault::Unavailable) => Some(t().storage_blocked),
@@ -125,7 +125,7 @@ pub fn StorageBanner(ctx: super::LadderCtx) -> impl IntoView {
             <div class="storage-trouble" role="alert" data-testid="storage-trouble">
                 <span>{move || trouble().unwrap_or_default()}</span>
                 <button type="button" data-testid="storage-save-file" on:click=move |_| {
-                    super::files::save_project_file(ctx);
+                    crate::editor::files::save_project_file(ctx);
                 }>{move || t().save_json}</button>
             </div>
         </Show>

@@ -5,7 +5,7 @@
 use engine::ladder::edit::Cursor;
 use leptos::prelude::*;
 
-use super::state::LadderCtx;
+use crate::editor::state::LadderCtx;
 
 /// `[data-testid=il-listing]`.
 #[component]

@@ -9,7 +9,7 @@ use engine::MachineId;
 use leptos::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::{LadderCtx, Ladders};
+use crate::editor::{LadderCtx, Ladders};
 use crate::storage::{self, Checked, Restored};
 
 /// Where the index is kept.

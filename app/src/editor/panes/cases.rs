@@ -11,7 +11,7 @@ use engine::plc::{Command, Device, Plc};
 use engine::{MachineId, SimTime};
 use leptos::prelude::*;
 
-use super::state::{CaseResult, LadderCtx};
+use crate::editor::state::{CaseResult, LadderCtx};
 
 /// Runs `cases` on `machine`, each on a fresh machine with `settings`
 /// applied and `program` loaded.

@@ -12,7 +12,7 @@ use engine::ladder::Variable;
 use engine::plc::Command;
 use leptos::prelude::*;
 
-use super::LadderCtx;
+use crate::editor::LadderCtx;
 
 /// The types offered for a new variable (any IEC elementary type or
 /// standard block can be typed).

@@ -42,7 +42,7 @@ fn open_key(machine: MachineId) -> String {
 /// Where `machine`'s ladder is saved: the open project's key, or the
 /// machine's own.
 pub fn slot(machine: MachineId, project: Option<u64>) -> String {
-    project.map_or_else(|| key(machine), super::projects::key_of)
+    project.map_or_else(|| key(machine), crate::editor::projects::key_of)
 }
 
 /// Remembers which project `machine`'s editor has open.
@@ -60,7 +60,7 @@ pub fn remember_open(machine: MachineId, project: Option<u64>) {
 pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Project>) {
     let open = storage::saved_string(&open_key(machine)).and_then(|s| s.parse::<u64>().ok());
     if let Some(id) = open {
-        if let Some(ladder) = restore_from(page, machine, &super::projects::key_of(id)) {
+        if let Some(ladder) = restore_from(page, machine, &crate::editor::projects::key_of(id)) {
             return (Some(id), Some(ladder));
         }
     }
