@@ -521,6 +521,7 @@ mod flex;
 mod functions;
 mod lines;
 mod outputs;
+mod said;
 mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the

@@ -21,7 +21,8 @@
 use std::collections::VecDeque;
 
 use super::check::binary_type;
-use super::{Binary, Errors, LoadError, Program, Src, Step};
+use super::said::Said;
+use super::{Binary, LoadError, Program, Src, Step};
 use crate::error::Located;
 use crate::softplc::data::{Data, DataType};
 use crate::softplc::il::{Line, Operand};
@@ -100,7 +101,7 @@ pub(super) struct Flow {
     pub open: Vec<Open>,
     /// Errors found at other lines than the one being read (a literal
     /// that does not fit the type a later line needs).
-    pub late: Errors,
+    pub late: Said,
     /// A line since the last LD or label was refused.
     pub refused: bool,
 }
@@ -177,7 +178,7 @@ impl Program {
         &mut self,
         flex: impl IntoIterator<Item = &'a Flex>,
         t: DataType,
-        late: &mut Errors,
+        late: &mut Said,
     ) {
         for f in flex {
             let Some(d) = as_type(f.value, t, f.line) else {
@@ -186,9 +187,7 @@ impl Program {
             let d = match d {
                 Ok(d) => d,
                 Err(e) => {
-                    if !late.contains(&e) {
-                        late.push(e);
-                    }
+                    late.push_new(e);
                     continue;
                 }
             };
@@ -210,7 +209,7 @@ impl Program {
     /// `p`'s literals rewritten as `t` (the widest default of them and
     /// those they join), unless they are written so already: a run is
     /// rewritten when its type widens, at most twice, not at each line.
-    fn widen(&mut self, p: &mut Pending, t: DataType, late: &mut Errors) {
+    fn widen(&mut self, p: &mut Pending, t: DataType, late: &mut Said) {
         if p.at != t {
             self.retype(&p.list, t, late);
             p.at = t;
@@ -219,7 +218,7 @@ impl Program {
 
     /// Untyped literals of several sides joined (in order), all of them
     /// at the widest default.
-    pub(super) fn merge(&mut self, parts: Vec<Pending>, late: &mut Errors) -> Pending {
+    pub(super) fn merge(&mut self, parts: Vec<Pending>, late: &mut Said) -> Pending {
         let t = widest(parts.iter().map(|p| p.at));
         let mut lists = Vec::with_capacity(parts.len());
         for mut p in parts {

@@ -11,6 +11,7 @@
 use std::collections::HashMap;
 
 use super::flex::{becomes, Flow, Pending};
+use super::said::Said;
 use super::{Errors, LoadError, Program, Step};
 use crate::error::Located;
 use crate::softplc::data::DataType;
@@ -110,10 +111,12 @@ impl Program {
         for open in &flow.open {
             errors.push(Located::new(open.line, LoadError::Unclosed));
         }
-        for e in flow.late {
-            if !errors.contains(&e) {
-                errors.push(e);
+        if !flow.late.is_empty() {
+            let mut all = Said::new(std::mem::take(errors));
+            for e in flow.late.into_errors() {
+                all.push_new(e);
             }
+            *errors = all.into_errors();
         }
     }
 

@@ -73,3 +73,26 @@ fn a_long_run_through_labels_brings_its_literals_every_jump() {
     body.push_str("ST n\n");
     assert_eq!(run(&body).value("n"), dint(pairs as i128 + 1));
 }
+
+#[test]
+fn a_long_run_that_does_not_fit_is_refused_at_each_of_its_lines() {
+    // Every -1 is refused as a ULINT, the widest literal's type (one
+    // error a line, each said once), and 2^64 - 1 as the store's LINT.
+    let body = format!(
+        "LD -1\n{}ADD 18446744073709551615\nST w\n",
+        "ADD -1\n".repeat(N)
+    );
+    let Err(errors) = Program::load(&format!("{VARS}{body}")) else {
+        panic!("loaded, should be refused");
+    };
+    let first = VARS.lines().count() + 1;
+    let want: Vec<(usize, &str)> = (first..=first + N)
+        .map(|line| (line, "out of range for ULINT"))
+        .chain([(first + N + 1, "out of range for LINT")])
+        .collect();
+    assert_eq!(errors.len(), want.len());
+    for (e, (line, says)) in errors.iter().zip(want) {
+        assert_eq!(e.line, line, "{e:?}");
+        assert!(e.error.to_string().contains(says), "{e:?}");
+    }
+}
