@@ -219,7 +219,7 @@ impl Program {
     /// Untyped literals of several sides joined (in order), all of them
     /// at the widest default.
     pub(super) fn merge(&mut self, parts: Vec<Pending>, late: &mut Said) -> Pending {
-        let t = widest(parts.iter().map(|p| p.at));
+        let t = widest(parts.iter().filter(|p| !p.is_empty()).map(|p| p.at));
         let mut lists = Vec::with_capacity(parts.len());
         for mut p in parts {
             self.widen(&mut p, t, late);
@@ -318,10 +318,11 @@ impl Program {
                         _ => None,
                     })
                     .collect();
-                let t = widest([
-                    flow.flex.at,
-                    widest(new.iter().map(|f| default_type(f.value))),
-                ]);
+                let run = (!flow.flex.is_empty()).then_some(flow.flex.at);
+                let t = widest(
+                    run.into_iter()
+                        .chain(new.iter().map(|f| default_type(f.value))),
+                );
                 self.widen(&mut flow.flex, t, &mut flow.late);
                 // The line's own literals always, as every literal of
                 // the run was before: each that does not fit is said.

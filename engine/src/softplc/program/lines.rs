@@ -11,7 +11,7 @@
 use std::collections::HashMap;
 
 use super::flex::{becomes, Flow, Pending};
-use super::said::Said;
+use super::said;
 use super::{Errors, LoadError, Program, Step};
 use crate::error::Located;
 use crate::softplc::data::DataType;
@@ -111,13 +111,7 @@ impl Program {
         for open in &flow.open {
             errors.push(Located::new(open.line, LoadError::Unclosed));
         }
-        if !flow.late.is_empty() {
-            let mut all = Said::new(std::mem::take(errors));
-            for e in flow.late.into_errors() {
-                all.push_new(e);
-            }
-            *errors = all.into_errors();
-        }
+        said::after(errors, flow.late);
     }
 
     /// A jump to step `target` bringing `way`: kept for a label below, or

@@ -60,3 +60,15 @@ impl Said {
         self.errors
     }
 }
+
+/// `late`'s errors after `errors`, each unless said already.
+pub(super) fn after(errors: &mut Errors, late: Said) {
+    if late.is_empty() {
+        return;
+    }
+    let mut all = Said::new(std::mem::take(errors));
+    for e in late.into_errors() {
+        all.push_new(e);
+    }
+    *errors = all.into_errors();
+}
