@@ -11,7 +11,7 @@
 use std::collections::HashMap;
 
 use super::flex::{becomes, Flow, Pending};
-use super::said;
+use super::said::{self, Said};
 use super::{Errors, LoadError, Program, Step};
 use crate::error::Located;
 use crate::softplc::data::DataType;
@@ -81,7 +81,7 @@ impl Program {
             };
             let resolved = self.resolve(line, &labels, &mut flow).and_then(|step| {
                 if let Step::Jmp(_, target) = step {
-                    self.arrive(target, before, &passed, &mut ways)?;
+                    self.arrive(target, before, &passed, &mut ways, &mut flow.late)?;
                 }
                 Ok(step)
             });
@@ -115,13 +115,15 @@ impl Program {
     }
 
     /// A jump to step `target` bringing `way`: kept for a label below, or
-    /// checked against what a label above went on with.
+    /// checked against what a label above went on with (its untyped
+    /// literals taken at that type, each that does not fit into `late`).
     fn arrive(
         &mut self,
         target: usize,
         mut way: Way,
         passed: &HashMap<usize, (DataType, String, usize)>,
         ways: &mut HashMap<usize, Vec<Way>>,
+        late: &mut Said,
     ) -> Result<(), LoadError> {
         if target >= self.steps.len() {
             ways.entry(target).or_default().push(way);
@@ -137,6 +139,9 @@ impl Program {
                 ..Flow::default()
             };
             self.settle(&mut f, *t);
+            // A literal that does not fit is refused at its line, as
+            // everywhere (it was dropped here, and loaded).
+            late.append(&mut f.late);
             way.cr = f.cr;
         }
         if way.cr == Some(*t) {
