@@ -67,6 +67,7 @@ impl Pending {
         }
     }
 
+    /// Whether there are none (the current result's type is fixed).
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
     }
@@ -76,6 +77,7 @@ impl Pending {
         self.at
     }
 
+    /// None left (their type fixed, or the current result ended).
     pub fn clear(&mut self) {
         *self = Pending::default();
     }

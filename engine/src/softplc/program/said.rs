@@ -52,10 +52,12 @@ impl Said {
         }
     }
 
+    /// Whether none was said.
     pub fn is_empty(&self) -> bool {
         self.errors.is_empty()
     }
 
+    /// The errors, in the order they were found.
     pub fn into_errors(self) -> Errors {
         self.errors
     }
