@@ -13,7 +13,7 @@ use super::pins::Instance;
 use super::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::error::Located;
 use check::{binary_type, describe, invertible, jump, need_cr};
-use flex::{Flex, Flow, Open};
+use flex::{Flex, Flow, Open, Pending};
 
 /// Instructions one scan may run before it is cut short (a backward JMP
 /// that never ends): the scan ends there and [`Program::overran`] says so.
@@ -389,7 +389,7 @@ impl Program {
                 flow.cr = Some(t);
                 flow.flex.clear();
                 if let Some(Operand::Number(v)) = line.operand {
-                    flow.flex.push(Flex {
+                    flow.flex = Pending::one(Flex {
                         step: self.steps.len(),
                         arg: None,
                         line: line.line,
@@ -493,7 +493,7 @@ impl Program {
             });
             flow.cr = src.as_ref().map(|s| self.type_of(s));
             if let Some(Operand::Number(v)) = line.operand {
-                flow.flex.push(Flex {
+                flow.flex = Pending::one(Flex {
                     step: self.steps.len(),
                     arg: None,
                     line: line.line,
@@ -521,6 +521,7 @@ mod flex;
 mod functions;
 mod lines;
 mod outputs;
+mod said;
 mod user;
 
 /// A section's declarations and IL lines (`blocks`: the types the

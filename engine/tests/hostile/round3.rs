@@ -5,4 +5,5 @@
 mod files;
 mod il;
 mod il_bodies;
+mod il_chains;
 mod ldmicro;

@@ -9,9 +9,20 @@
 //! DINT (or the first of LINT, ULINT that holds the value). A typed
 //! literal (`INT#5`) keeps its type, and is refused where another is
 //! needed.
+//!
+//! Loading stays about linear in the lines (issue #44): a run of
+//! untyped literals (`LD 1` and N lines `ADD 1`) is rewritten only when
+//! its type widens (DINT to LINT to ULINT: at most twice per literal),
+//! not at every line, and runs are joined by copying the shorter into
+//! the longer (each literal copied O(log N) times). Retyping and
+//! copying the whole run at every line took N² (a minute for 20 000
+//! lines in a debug build).
+
+use std::collections::VecDeque;
 
 use super::check::binary_type;
-use super::{Binary, Errors, LoadError, Program, Src, Step};
+use super::said::Said;
+use super::{Binary, LoadError, Program, Src, Step};
 use crate::error::Located;
 use crate::softplc::data::{Data, DataType};
 use crate::softplc::il::{Line, Operand};
@@ -29,13 +40,56 @@ pub(super) struct Flex {
     pub value: i128,
 }
 
+/// The untyped literals a current result is made of, in the order they
+/// were read (the order their errors are said in), all written as one
+/// type: the widest default of them.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Pending {
+    list: VecDeque<Flex>,
+    at: DataType,
+}
+
+impl Default for Pending {
+    fn default() -> Self {
+        Pending {
+            list: VecDeque::new(),
+            at: DataType::Dint,
+        }
+    }
+}
+
+impl Pending {
+    /// One literal, written (by [`Program::number`]) as its default.
+    pub fn one(f: Flex) -> Pending {
+        Pending {
+            at: default_type(f.value),
+            list: VecDeque::from([f]),
+        }
+    }
+
+    /// Whether there are none (the current result's type is fixed).
+    pub fn is_empty(&self) -> bool {
+        self.list.is_empty()
+    }
+
+    /// The type they are written as.
+    pub fn at(&self) -> DataType {
+        self.at
+    }
+
+    /// None left (their type fixed, or the current result ended).
+    pub fn clear(&mut self) {
+        *self = Pending::default();
+    }
+}
+
 /// A deferred operation `OP(` waiting for its `)`.
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Open {
     pub op: Binary,
     /// The current result's type before it, and its untyped literals.
     pub saved: Option<DataType>,
-    pub flex: Vec<Flex>,
+    pub flex: Pending,
     /// The line of the `(`.
     pub line: usize,
 }
@@ -45,11 +99,11 @@ pub(super) struct Open {
 pub(super) struct Flow {
     pub cr: Option<DataType>,
     /// The untyped literals it is made of (empty: its type is fixed).
-    pub flex: Vec<Flex>,
+    pub flex: Pending,
     pub open: Vec<Open>,
     /// Errors found at other lines than the one being read (a literal
     /// that does not fit the type a later line needs).
-    pub late: Errors,
+    pub late: Said,
     /// A line since the last LD or label was refused.
     pub refused: bool,
 }
@@ -63,17 +117,35 @@ pub(super) fn default_type(v: i128) -> DataType {
         .unwrap_or(DataType::Ulint)
 }
 
-/// The widest default of several literals (all of one type together).
-pub(super) fn widest(flex: &[Flex]) -> DataType {
+/// The widest of several defaults (all of one type together), DINT for
+/// none.
+fn widest(types: impl IntoIterator<Item = DataType>) -> DataType {
     let rank = |t: DataType| {
         [DataType::Dint, DataType::Lint, DataType::Ulint]
             .iter()
             .position(|&u| u == t)
     };
-    flex.iter()
-        .map(|f| default_type(f.value))
+    types
+        .into_iter()
         .max_by_key(|&t| rank(t))
         .unwrap_or(DataType::Dint)
+}
+
+/// `parts` one after another, the longest kept and the others copied
+/// before or after it: a literal is only copied into a list at least
+/// twice as long as the one it was in, so a run joined at every line
+/// copies each literal O(log N) times, not the whole run each time.
+fn concat(mut parts: Vec<VecDeque<Flex>>) -> VecDeque<Flex> {
+    let Some(big) = (0..parts.len()).max_by_key(|&i| parts[i].len()) else {
+        return VecDeque::new();
+    };
+    let after = parts.split_off(big + 1);
+    let mut list = parts.pop().unwrap_or_default();
+    for f in parts.into_iter().rev().flat_map(|p| p.into_iter().rev()) {
+        list.push_front(f);
+    }
+    list.extend(after.into_iter().flatten());
+    list
 }
 
 /// Untyped literal `v` as a `t`: `None` for a type no integer becomes.
@@ -104,7 +176,12 @@ impl Program {
     /// The untyped literals `flex` rewritten as `t`s, each that does not
     /// fit refused at its line (into `late`); nothing when no integer
     /// becomes a `t` (the caller's type check says why).
-    pub(super) fn retype(&mut self, flex: &[Flex], t: DataType, late: &mut Errors) {
+    pub(super) fn retype<'a>(
+        &mut self,
+        flex: impl IntoIterator<Item = &'a Flex>,
+        t: DataType,
+        late: &mut Said,
+    ) {
         for f in flex {
             let Some(d) = as_type(f.value, t, f.line) else {
                 return;
@@ -112,9 +189,7 @@ impl Program {
             let d = match d {
                 Ok(d) => d,
                 Err(e) => {
-                    if !late.contains(&e) {
-                        late.push(e);
-                    }
+                    late.push_new(e);
                     continue;
                 }
             };
@@ -133,6 +208,31 @@ impl Program {
         }
     }
 
+    /// `p`'s literals rewritten as `t` (the widest default of them and
+    /// those they join), unless they are written so already: a run is
+    /// rewritten when its type widens, at most twice, not at each line.
+    fn widen(&mut self, p: &mut Pending, t: DataType, late: &mut Said) {
+        if p.at != t {
+            self.retype(&p.list, t, late);
+            p.at = t;
+        }
+    }
+
+    /// Untyped literals of several sides joined (in order), all of them
+    /// at the widest default.
+    pub(super) fn merge(&mut self, parts: Vec<Pending>, late: &mut Said) -> Pending {
+        let t = widest(parts.iter().filter(|p| !p.is_empty()).map(|p| p.at));
+        let mut lists = Vec::with_capacity(parts.len());
+        for mut p in parts {
+            self.widen(&mut p, t, late);
+            lists.push(p.list);
+        }
+        Pending {
+            list: concat(lists),
+            at: t,
+        }
+    }
+
     /// The current result (untyped literals, if it is made of them) now
     /// needed as a `t`: its literals rewritten, its type fixed.
     pub(super) fn settle(&mut self, flow: &mut Flow, t: DataType) {
@@ -140,7 +240,7 @@ impl Program {
             return;
         }
         let flex = std::mem::take(&mut flow.flex);
-        self.retype(&flex, t, &mut flow.late);
+        self.retype(&flex.list, t, &mut flow.late);
         if becomes(t) {
             flow.cr = Some(t);
         }
@@ -207,19 +307,29 @@ impl Program {
         let t = match want {
             Some(t) => t,
             None => {
-                for ((arg, o), _) in operands.iter().zip(srcs.iter()) {
-                    if let Operand::Number(v) = o {
-                        flow.flex.push(Flex {
-                            step: self.steps.len(),
-                            arg: *arg,
+                let step = self.steps.len();
+                let new: VecDeque<Flex> = operands
+                    .iter()
+                    .filter_map(|&(arg, o)| match o {
+                        Operand::Number(v) => Some(Flex {
+                            step,
+                            arg,
                             line: line.line,
                             value: *v,
-                        });
-                    }
-                }
-                let t = widest(&flow.flex);
-                let flex = flow.flex.clone();
-                self.retype(&flex, t, &mut flow.late);
+                        }),
+                        _ => None,
+                    })
+                    .collect();
+                let run = (!flow.flex.is_empty()).then_some(flow.flex.at);
+                let t = widest(
+                    run.into_iter()
+                        .chain(new.iter().map(|f| default_type(f.value))),
+                );
+                self.widen(&mut flow.flex, t, &mut flow.late);
+                // The line's own literals always, as every literal of
+                // the run was before: each that does not fit is said.
+                self.retype(&new, t, &mut flow.late);
+                flow.flex.list.extend(new);
                 t
             }
         };
@@ -239,9 +349,7 @@ impl Program {
         let (a, b) = match (open.flex.is_empty(), flow.flex.is_empty()) {
             (true, true) => (saved, inner),
             (false, true) if becomes(inner) => {
-                let mut late = std::mem::take(&mut flow.late);
-                self.retype(&open.flex, inner, &mut late);
-                flow.late = late;
+                self.retype(&open.flex.list, inner, &mut flow.late);
                 (inner, inner)
             }
             (false, true) => (saved, inner),
@@ -250,11 +358,9 @@ impl Program {
                 (saved, super::check::need_cr(flow.cr)?)
             }
             (false, false) => {
-                flow.flex.extend(open.flex);
-                let t = widest(&flow.flex);
-                let flex = flow.flex.clone();
-                self.retype(&flex, t, &mut flow.late);
-                (t, t)
+                let inner = std::mem::take(&mut flow.flex);
+                flow.flex = self.merge(vec![inner, open.flex], &mut flow.late);
+                (flow.flex.at, flow.flex.at)
             }
         };
         let result = binary_type(open.op, a, b)?;

@@ -10,7 +10,8 @@
 
 use std::collections::HashMap;
 
-use super::flex::{becomes, widest, Flex, Flow};
+use super::flex::{becomes, Flow, Pending};
+use super::said::{self, Said};
 use super::{Errors, LoadError, Program, Step};
 use crate::error::Located;
 use crate::softplc::data::DataType;
@@ -19,7 +20,7 @@ use crate::softplc::il::{Line, Operator};
 /// The current result one way brings to a label.
 struct Way {
     cr: Option<DataType>,
-    flex: Vec<Flex>,
+    flex: Pending,
 }
 
 /// Whether `line` uses the current result it is given (an LD or an
@@ -65,18 +66,22 @@ impl Program {
                     passed.insert(base + i, (t, label.clone(), line.line));
                 }
             }
-            // What a jump brings (its literals copied for jumps alone: a
-            // long chain of them is not copied at every line).
+            // What a jump brings (its literals for jumps alone: a long
+            // run of them is not copied at every line). An unconditional
+            // JMP ends the current result, so it hands its literals on
+            // (a run through `JMP l` / `l: ADD 1` is never copied); a
+            // JMPC has a BOOL, none.
             let before = Way {
                 cr: flow.cr,
-                flex: match line.operator {
-                    Operator::Jmp => flow.flex.clone(),
-                    _ => Vec::new(),
+                flex: match (line.operator, line.condition) {
+                    (Operator::Jmp, None) => std::mem::take(&mut flow.flex),
+                    (Operator::Jmp, Some(_)) => flow.flex.clone(),
+                    _ => Pending::default(),
                 },
             };
             let resolved = self.resolve(line, &labels, &mut flow).and_then(|step| {
                 if let Step::Jmp(_, target) = step {
-                    self.arrive(target, before, &passed, &mut ways)?;
+                    self.arrive(target, before, &passed, &mut ways, &mut flow.late)?;
                 }
                 Ok(step)
             });
@@ -106,21 +111,19 @@ impl Program {
         for open in &flow.open {
             errors.push(Located::new(open.line, LoadError::Unclosed));
         }
-        for e in flow.late {
-            if !errors.contains(&e) {
-                errors.push(e);
-            }
-        }
+        said::after(errors, flow.late);
     }
 
     /// A jump to step `target` bringing `way`: kept for a label below, or
-    /// checked against what a label above went on with.
+    /// checked against what a label above went on with (its untyped
+    /// literals taken at that type, each that does not fit into `late`).
     fn arrive(
         &mut self,
         target: usize,
         mut way: Way,
         passed: &HashMap<usize, (DataType, String, usize)>,
         ways: &mut HashMap<usize, Vec<Way>>,
+        late: &mut Said,
     ) -> Result<(), LoadError> {
         if target >= self.steps.len() {
             ways.entry(target).or_default().push(way);
@@ -136,6 +139,9 @@ impl Program {
                 ..Flow::default()
             };
             self.settle(&mut f, *t);
+            // A literal that does not fit is refused at its line, as
+            // everywhere (it was dropped here, and loaded).
+            late.append(&mut f.late);
             way.cr = f.cr;
         }
         if way.cr == Some(*t) {
@@ -162,11 +168,9 @@ impl Program {
             .filter_map(|w| w.cr);
         let Some(t) = typed.next() else {
             // Untyped literals every way: they wait together for a use.
-            flow.flex = came.into_iter().flat_map(|w| w.flex).collect();
-            let t = widest(&flow.flex);
-            let flex = flow.flex.clone();
-            self.retype(&flex, t, &mut flow.late);
-            flow.cr = Some(t);
+            let ways = came.into_iter().map(|w| w.flex).collect();
+            flow.flex = self.merge(ways, &mut flow.late);
+            flow.cr = Some(flow.flex.at());
             return None;
         };
         let untyped = came.iter().find(|w| !w.flex.is_empty() && !becomes(t));

@@ -176,6 +176,20 @@ fn ways_that_disagree_at_a_label_are_refused_there() {
     );
 }
 
+#[test]
+fn a_jump_back_with_a_literal_that_does_not_fit_is_refused_at_the_literal() {
+    // `again:` stores an INT; the jump back brings the untyped 70000,
+    // which takes that type and does not fit: refused at its line, as
+    // a literal that does not fit its use anywhere else (it loaded).
+    let text = "VAR\n  n : INT;\nEND_VAR\nLD n\nagain: ST n\nLD 70000\nJMP again\n";
+    let got = refused(text);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 6, "at 70000's line: {got:?}");
+    assert!(got[0].1.contains("out of range for INT"), "{got:?}");
+    // One that fits takes the label's type.
+    load(&text.replace("70000", "7000"));
+}
+
 fn cli(args: &[&str]) -> (Option<i32>, String, String) {
     let out = crate::common::hashigo(args, "");
     (
