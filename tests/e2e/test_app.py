@@ -18,7 +18,7 @@ STORAGE_KEY = "hashigo.minasec-u.v1"
 # The workbench keeps controls in menus and tools in dock tabs (issue #45):
 # a control that is there but hidden is revealed as a user would reach it,
 # by opening its menu (on a phone, the menus' button first) or choosing its
-# dock tab (on a phone, the sheet's Panel tab for the machine's panel).
+# dock tab. The phone's machine panel is shown by test_screens.show().
 REVEAL = """
 const e = arguments[0];
 if (e.getClientRects().length) return;
@@ -35,11 +35,6 @@ const panel = e.closest('[data-dock-panel]');
 if (panel) {
   const tab = document.querySelector('[data-testid="dock-tab-' + panel.dataset.dockPanel + '"]');
   if (tab && tab.getAttribute('aria-selected') !== 'true') tab.click();
-  return;
-}
-if (e.closest('.dock-right')) {
-  const tab = document.querySelector('[data-testid="dock-tab-panel"]');
-  if (tab && tab.getClientRects().length && tab.getAttribute('aria-selected') !== 'true') tab.click();
 }
 """
 

@@ -868,8 +868,14 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, tm
         return {"p50": pick(0.5), "p95": pick(0.95), "max": round(d[-1], 2), "frames": len(d)}
 
     runs = {"running": [], "paused": []}
-    for _ in range(3):
+    # The AVR PLC runs its own program from power-up: the one run control
+    # says Stop (issue #45); stopped, Run writes the drawing, and later
+    # rounds resume from Pause.
+    if el(driver, "run").get_attribute("aria-pressed") == "true":
         el(driver, "run").click()
+        wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "false")
+    for round_ in range(3):
+        el(driver, "run" if round_ == 0 else "pause").click()
         wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-powered") in ("0", "1"))
         first_scan = live_scan(driver)
         running = driver.execute_async_script(measure)

@@ -292,6 +292,7 @@ def test_the_soft_plc_on_every_screen(screen, base_url, artifacts):
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-parts"]'))
     show(driver, touch, "panel")
     for testid in ["soft-analog-IW0", "soft-gauge-QW0", "var-level"]:
+        el(driver, testid)  # its dock tab (the variables) or the phone's Panel sheet shown
         driver.execute_script(f"document.querySelector('[data-testid={testid}]').scrollIntoView({{block: 'center'}})")
         wait(driver, lambda: on_screen(driver, testid), message=f"{testid} on screen")
     assert no_sideways_overflow(driver)

@@ -60,6 +60,7 @@ pub fn AppBar() -> impl IntoView {
                 on:click=move |_| menus_open.update(|o| *o = !*o)>"☰"</button>
             <nav class="menus" id="menus" node_ref=menus data-open=move || menus_open.get().to_string() aria-label=move || t().menus
                 on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" { menus_open.set(false); }
+                on:change=move |_| menus_open.set(false)
                 on:click=move |e: web_sys::MouseEvent| {
                     // A choice in a menu's panel closes the phone's menus.
                     use leptos::wasm_bindgen::JsCast;
