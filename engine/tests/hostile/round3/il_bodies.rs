@@ -206,6 +206,16 @@ fn a_jump_back_to_an_untyped_run_takes_the_type_the_run_settles_to() {
     assert_eq!(got.len(), 1, "{got:?}");
     assert_eq!(got[0].0, 7, "at 70000's line: {got:?}");
     assert!(got[0].1.contains("out of range for INT"), "{got:?}");
+    // A typed DINT brought back is refused at the jump, as at a label
+    // that held an INT.
+    let typed = "VAR\n  n : INT;\n  w : DINT;\nEND_VAR\nLD 1\nagain: ST n\nLD w\nJMP again\n";
+    let got = refused(typed);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 8, "at the jump: {got:?}");
+    assert!(
+        got[0].1.contains("as INT; this jump brings DINT"),
+        "{got:?}"
+    );
     // One that fits takes the run's type, and a scan stores an INT.
     // (The loop never ends: the scan is cut at its step limit.)
     let mut p = load(&text.replace("70000", "7000"));
