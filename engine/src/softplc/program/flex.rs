@@ -77,6 +77,11 @@ impl Pending {
         self.at
     }
 
+    /// The first of them (all are written as one type).
+    pub fn first(&self) -> Option<Flex> {
+        self.list.front().copied()
+    }
+
     /// None left (their type fixed, or the current result ended).
     pub fn clear(&mut self) {
         *self = Pending::default();
@@ -193,18 +198,30 @@ impl Program {
                     continue;
                 }
             };
-            let src = match (self.steps.get_mut(f.step), f.arg) {
-                (
-                    Some(Step::Ld(src, _) | Step::Binary(_, src) | Step::Open(_, Some(src))),
-                    None,
-                ) => src,
-                (Some(Step::Func(_, args)), Some(i)) => match args.get_mut(i) {
-                    Some(src) => src,
-                    None => continue,
-                },
-                _ => continue,
-            };
-            *src = Src::Const(d);
+            if let Some(src) = self.place(f) {
+                *src = Src::Const(d);
+            }
+        }
+    }
+
+    /// Where untyped literal `f`'s constant is in the steps.
+    fn place(&mut self, f: &Flex) -> Option<&mut Src> {
+        match (self.steps.get_mut(f.step), f.arg) {
+            (Some(Step::Ld(src, _) | Step::Binary(_, src) | Step::Open(_, Some(src))), None) => {
+                Some(src)
+            }
+            (Some(Step::Func(_, args)), Some(i)) => args.get_mut(i),
+            _ => None,
+        }
+    }
+
+    /// The type untyped literal `f` is written as now: once the lines
+    /// are read, the type its run settled to (every literal of a run is
+    /// rewritten together).
+    pub(super) fn written(&mut self, f: &Flex) -> Option<DataType> {
+        match self.place(f)? {
+            Src::Const(d) => Some(d.data_type()),
+            _ => None,
         }
     }
 

@@ -6,11 +6,14 @@
 //! Ways that disagree, or a way that brings none, leave it unknown: the
 //! instruction there must start with LD, and says why when it does not.
 //! A jump back to a label whose instruction used the current result
-//! must bring that type too (it is refused at the jump otherwise).
+//! must bring that type too (it is refused at the jump otherwise). When
+//! the current result at that label is a run of untyped literals, its
+//! type is the one the run settles to, maybe many lines later: such
+//! jumps are checked once every line is read.
 
 use std::collections::HashMap;
 
-use super::flex::{becomes, Flow, Pending};
+use super::flex::{becomes, Flex, Flow, Pending};
 use super::said::{self, Said};
 use super::{Errors, LoadError, Program, Step};
 use crate::error::Located;
@@ -21,6 +24,40 @@ use crate::softplc::il::{Line, Operator};
 struct Way {
     cr: Option<DataType>,
     flex: Pending,
+}
+
+/// What a label passed went on with: a type, or a run of untyped
+/// literals (one of them: the type they all settle to is known once
+/// every line is read).
+#[derive(Clone, Copy)]
+enum Held {
+    Typed(DataType),
+    Run(Flex),
+}
+
+/// A label passed whose instruction used the current result: what it
+/// held, its name and its instruction's line.
+struct Passed {
+    held: Held,
+    label: String,
+    at: usize,
+}
+
+/// A jump back to a label that held a run: its step, what it brings and
+/// its line, checked once the run has its type.
+struct Back {
+    target: usize,
+    way: Way,
+    line: usize,
+}
+
+/// The jumps read so far: what they bring to each label below them, the
+/// labels above, and the jumps back checked at the end.
+#[derive(Default)]
+struct Jumps {
+    ways: HashMap<usize, Vec<Way>>,
+    passed: HashMap<usize, Passed>,
+    back: Vec<Back>,
 }
 
 /// Whether `line` uses the current result it is given (an LD or an
@@ -44,11 +81,7 @@ impl Program {
             .enumerate()
             .filter_map(|(i, l)| Some((l.label.as_ref()?.to_ascii_uppercase(), base + i)))
             .collect();
-        // What the jumps read so far bring to each label below them.
-        let mut ways: HashMap<usize, Vec<Way>> = HashMap::new();
-        // Each label passed whose instruction used the current result:
-        // its type, its name and line.
-        let mut passed: HashMap<usize, (DataType, String, usize)> = HashMap::new();
+        let mut jumps = Jumps::default();
         let mut falls = true;
         for (i, line) in lines.iter().enumerate() {
             if line.label.is_some() || line.operator == Operator::Ld {
@@ -56,14 +89,19 @@ impl Program {
             }
             let mut disagree = None;
             if let Some(label) = &line.label {
-                let mut came = ways.remove(&(base + i)).unwrap_or_default();
+                let mut came = jumps.ways.remove(&(base + i)).unwrap_or_default();
                 if falls {
                     let flex = std::mem::take(&mut flow.flex);
                     came.push(Way { cr: flow.cr, flex });
                 }
                 disagree = self.meet(&mut flow, came, label);
-                if let (Some(t), true) = (flow.cr, uses_result(line)) {
-                    passed.insert(base + i, (t, label.clone(), line.line));
+                let held = match flow.flex.first() {
+                    Some(f) => flow.cr.map(|_| Held::Run(f)),
+                    None => flow.cr.map(Held::Typed),
+                };
+                if let (Some(held), true) = (held, uses_result(line)) {
+                    let (label, at) = (label.clone(), line.line);
+                    jumps.passed.insert(base + i, Passed { held, label, at });
                 }
             }
             // What a jump brings (its literals for jumps alone: a long
@@ -81,7 +119,7 @@ impl Program {
             };
             let resolved = self.resolve(line, &labels, &mut flow).and_then(|step| {
                 if let Step::Jmp(_, target) = step {
-                    self.arrive(target, before, &passed, &mut ways, &mut flow.late)?;
+                    self.arrive(target, before, line.line, &mut jumps, &mut flow.late)?;
                 }
                 Ok(step)
             });
@@ -111,45 +149,90 @@ impl Program {
         for open in &flow.open {
             errors.push(Located::new(open.line, LoadError::Unclosed));
         }
+        self.check_back(jumps, errors, &mut flow.late);
         said::after(errors, flow.late);
     }
 
-    /// A jump to step `target` bringing `way`: kept for a label below, or
+    /// The jumps back to a label that held a run of untyped literals,
+    /// checked against the type the run settled to: a literal the jump
+    /// brings that does not fit it is refused at its line.
+    fn check_back(&mut self, jumps: Jumps, errors: &mut Errors, late: &mut Said) {
+        for back in jumps.back {
+            let Some(passed) = jumps.passed.get(&back.target) else {
+                continue;
+            };
+            let Held::Run(f) = passed.held else {
+                continue;
+            };
+            // None only for a literal whose place is gone: nothing to check.
+            let Some(t) = self.written(&f) else {
+                continue;
+            };
+            if let Err(e) = self.brings(t, passed, back.way, late) {
+                errors.push(Located::new(back.line, e));
+            }
+        }
+    }
+
+    /// A jump to step `target` bringing `way`: kept for a label below,
     /// checked against what a label above went on with (its untyped
-    /// literals taken at that type, each that does not fit into `late`).
+    /// literals taken at that type, each that does not fit into `late`),
+    /// or, when that was a run of untyped literals, kept to be checked
+    /// against the type the run settles to.
     fn arrive(
         &mut self,
         target: usize,
-        mut way: Way,
-        passed: &HashMap<usize, (DataType, String, usize)>,
-        ways: &mut HashMap<usize, Vec<Way>>,
+        way: Way,
+        line: usize,
+        jumps: &mut Jumps,
         late: &mut Said,
     ) -> Result<(), LoadError> {
         if target >= self.steps.len() {
-            ways.entry(target).or_default().push(way);
+            jumps.ways.entry(target).or_default().push(way);
             return Ok(());
         }
-        let Some((t, label, at)) = passed.get(&target) else {
+        let Some(passed) = jumps.passed.get(&target) else {
             return Ok(());
         };
+        match passed.held {
+            Held::Typed(t) => self.brings(t, passed, way, late),
+            Held::Run(_) => {
+                jumps.back.push(Back { target, way, line });
+                Ok(())
+            }
+        }
+    }
+
+    /// Whether `way` brings a `t`, as the label `passed` went on with:
+    /// its untyped literals taken at `t`, each that does not fit into
+    /// `late`.
+    fn brings(
+        &mut self,
+        t: DataType,
+        passed: &Passed,
+        mut way: Way,
+        late: &mut Said,
+    ) -> Result<(), LoadError> {
         if !way.flex.is_empty() {
             let mut f = Flow {
                 cr: way.cr,
                 flex: std::mem::take(&mut way.flex),
                 ..Flow::default()
             };
-            self.settle(&mut f, *t);
+            self.settle(&mut f, t);
             // A literal that does not fit is refused at its line, as
             // everywhere (it was dropped here, and loaded).
             late.append(&mut f.late);
             way.cr = f.cr;
         }
-        if way.cr == Some(*t) {
+        if way.cr == Some(t) {
             return Ok(());
         }
         let here = way.cr.map_or("not known", DataType::name);
         Err(LoadError::Type(format!(
-            "line {at}, after the label `{label}`, uses the current result as {}; this jump brings {here}: make them one type or start there with LD",
+            "line {}, after the label `{}`, uses the current result as {}; this jump brings {here}: make them one type or start there with LD",
+            passed.at,
+            passed.label,
             t.name()
         )))
     }

@@ -190,6 +190,39 @@ fn a_jump_back_with_a_literal_that_does_not_fit_is_refused_at_the_literal() {
     load(&text.replace("70000", "7000"));
 }
 
+#[test]
+fn a_jump_back_to_an_untyped_run_takes_the_type_the_run_settles_to() {
+    // At `again:` the current result is the untyped 1, which `ST n`
+    // makes an INT: the jump back's 70000 takes that type and does not
+    // fit (it loaded and stored a DINT 70000 in the INT `n`).
+    let text = "VAR\n  n : INT;\nEND_VAR\nLD 1\nagain: ST n\nLD 70000\nJMP again\n";
+    let got = refused(text);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 6, "at 70000's line: {got:?}");
+    assert!(got[0].1.contains("out of range for INT"), "{got:?}");
+    // Settled lines later (`ADD 2` keeps it untyped), the same.
+    let later = text.replace("again: ST n", "again: ADD 2\nST n");
+    let got = refused(&later);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 7, "at 70000's line: {got:?}");
+    assert!(got[0].1.contains("out of range for INT"), "{got:?}");
+    // A typed DINT brought back is refused at the jump, as at a label
+    // that held an INT.
+    let typed = "VAR\n  n : INT;\n  w : DINT;\nEND_VAR\nLD 1\nagain: ST n\nLD w\nJMP again\n";
+    let got = refused(typed);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, 8, "at the jump: {got:?}");
+    assert!(
+        got[0].1.contains("as INT; this jump brings DINT"),
+        "{got:?}"
+    );
+    // One that fits takes the run's type, and a scan stores an INT.
+    // (The loop never ends: the scan is cut at its step limit.)
+    let mut p = load(&text.replace("70000", "7000"));
+    p.scan(0);
+    assert_eq!(p.value("n"), int(7000));
+}
+
 fn cli(args: &[&str]) -> (Option<i32>, String, String) {
     let out = crate::common::hashigo(args, "");
     (
