@@ -153,6 +153,20 @@ impl CellKind {
     }
 }
 
+/// A box's whole text (shown on hover, on focus and in its accessible
+/// name however narrow its column): its call as written (`c0: CTU(CU :=
+/// X00, PV := 10)`), with its operands' live values when it has them.
+pub fn whole_text(kind: CellKind, words: &str, values: Option<&str>) -> Option<String> {
+    if kind != CellKind::Box {
+        return None;
+    }
+    let call = words.strip_prefix("box ").unwrap_or(words);
+    Some(match values {
+        Some(v) if !v.is_empty() => format!("{call} \u{2014} {v}"),
+        _ => call.to_string(),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -189,5 +203,25 @@ mod tests {
         assert!(CellKind::CountCoil.look().shows_value && !CellKind::Set.look().shows_value);
         assert!(!CellKind::Box.look().shows_state && !CellKind::Wire.look().shows_state);
         assert_eq!(CellKind::Empty.hook(), "");
+    }
+
+    #[test]
+    fn a_boxs_whole_text_is_its_call_and_its_values() {
+        assert_eq!(
+            whole_text(
+                CellKind::Box,
+                "box c0: CTU(CU := X00, PV := 10)",
+                Some("CV=4")
+            ),
+            Some("c0: CTU(CU := X00, PV := 10) \u{2014} CV=4".to_string())
+        );
+        assert_eq!(
+            whole_text(CellKind::Box, "box MOV K50 D00", None).as_deref(),
+            Some("MOV K50 D00")
+        );
+        assert_eq!(
+            whole_text(CellKind::No, "normally open contact X00", None),
+            None
+        );
     }
 }

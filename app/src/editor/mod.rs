@@ -15,6 +15,7 @@ pub mod cases;
 pub mod cell_kind;
 pub mod chart;
 pub mod clipboard;
+pub mod conduct;
 pub mod entry;
 pub mod files;
 pub mod find;

@@ -79,7 +79,7 @@ pub const MIN_COL_REM: f64 = 3.0;
 pub const WIRE_COL_REM: f64 = 1.4;
 /// The widest a column is drawn (rem); a longer text is cut with an
 /// ellipsis and shown whole in its title.
-pub const MAX_COL_REM: f64 = 13.0;
+pub const MAX_COL_REM: f64 = 16.0;
 
 /// How wide (rem) `cell` needs its column: nothing for a wire or an
 /// empty cell; else its symbol (a box's text) in the symbol's face and its
@@ -91,7 +91,17 @@ pub fn cell_width_rem(cell: &CellData) -> f64 {
     }
     let symbol = cell.symbol.chars().count() as f64 * 0.6 * 0.78 + 0.6;
     let device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
-    symbol.max(device).clamp(MIN_COL_REM, MAX_COL_REM)
+    // A soft PLC box's live operands (`CV=4 Q=1`), with room for values.
+    let values: usize = cell
+        .watched
+        .iter()
+        .map(|(l, _)| l.chars().count() + 5)
+        .sum();
+    let values = values as f64 * 0.6 * 0.62 + 0.6;
+    symbol
+        .max(device)
+        .max(values)
+        .clamp(MIN_COL_REM, MAX_COL_REM)
 }
 
 /// Each column's width (rem) over the whole ladder, so that every rung's
