@@ -11,6 +11,7 @@
 //! - [`cases`]: the Tests pane.
 
 pub mod autosave;
+pub mod bands;
 pub mod cases;
 pub mod cell_kind;
 pub mod chart;
