@@ -1,0 +1,120 @@
+"""End-to-end: a ladder read at a glance (issue #46): contacts lit by
+conduction (`data-conducts`), the old colouring by device value as a
+remembered View setting, a box's whole text on focus, the timing chart's
+values written in their bands."""
+
+import re
+
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
+
+from test_app import el, open_fresh, wait
+from test_ladder import focus_ladder, place, seed_running
+from test_soft import choose_soft
+
+
+def conducts(driver, cell):
+    return el(driver, cell).get_attribute("data-conducts")
+
+
+def lit(driver, cell):
+    return "lit" in el(driver, cell).get_attribute("class").split()
+
+
+def by_value(driver):
+    return el(driver, "view-colour-by-value").get_attribute("aria-pressed") == "true"
+
+
+def test_minasec_contacts_are_lit_while_closed_and_the_old_colouring_is_kept(driver, base_url):
+    # The seed: X00 (NO, start) and X01 (NC, stop) in series to Y00.
+    seed_running(driver, base_url, "max")
+    no, nc = "cell-0-0-0", "cell-0-0-1"
+    assert el(driver, nc).get_attribute("data-on") == "0", "X01 off"
+    wait(driver, lambda: conducts(driver, nc) == "1", message="an NC contact whose input is off conducts")
+    assert conducts(driver, no) == "0", "an NO contact whose input is off does not"
+    assert lit(driver, nc) and not lit(driver, no)
+    assert conducts(driver, "cell-0-0-9") is None, "a coil has no conduction"
+    label = el(driver, nc).get_attribute("aria-label")
+    assert label.endswith("off, closed"), label
+    el(driver, "input-X00").click()
+    el(driver, "input-X01").click()
+    wait(driver, lambda: conducts(driver, no) == "1" and conducts(driver, nc) == "0", message="they swap")
+    assert lit(driver, no) and not lit(driver, nc)
+    # The old colouring: by the devices' values; the conduction stays said.
+    assert not by_value(driver)
+    el(driver, "view-colour-by-value").click()
+    wait(driver, lambda: lit(driver, nc), message="X01 on: lit by value")
+    assert lit(driver, no) and conducts(driver, nc) == "0"
+    el(driver, "input-X01").click()
+    wait(driver, lambda: conducts(driver, nc) == "1")
+    assert not lit(driver, nc), "closed but its device off: unlit by value"
+    # Kept over a reload.
+    driver.refresh()
+    wait(driver, lambda: el(driver, "cell-0-0-1").get_attribute("data-device") == "X01")
+    assert by_value(driver)
+    el(driver, "run").click()
+    wait(driver, lambda: conducts(driver, nc) == "1", message="running again")
+    assert not lit(driver, nc)
+    el(driver, "view-colour-by-value").click()
+    wait(driver, lambda: lit(driver, nc))
+    driver.refresh()
+    wait(driver, lambda: el(driver, "cell-0-0-1").get_attribute("data-device") == "X01")
+    assert not by_value(driver)
+
+
+def test_soft_plc_contacts_are_lit_while_closed(driver, base_url):
+    choose_soft(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "%IX0.0")
+    place(driver, Keys.F6, "%IX0.0")
+    place(driver, Keys.F7, "%QX0.0")
+    el(driver, "run").click()
+    no, nc = "cell-0-0-0", "cell-0-0-1"
+    wait(driver, lambda: conducts(driver, nc) == "1", message="NC of an input that is off: closed")
+    assert conducts(driver, no) == "0" and el(driver, no).get_attribute("data-on") == "0"
+    assert lit(driver, nc) and not lit(driver, no)
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: conducts(driver, no) == "1" and conducts(driver, nc) == "0", message="they swap")
+    assert lit(driver, no) and not lit(driver, nc)
+    assert el(driver, nc).get_attribute("data-on") == "1", "the device's own value stays on the cell"
+
+
+def test_a_boxs_whole_text_shows_on_focus_and_in_its_name(driver, base_url):
+    choose_soft(driver, base_url)
+    Select(el(driver, "example")).select_by_value("parts")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-kind="box"]'))
+    boxes = driver.find_elements(By.CSS_SELECTOR, '[data-kind="box"]')
+    # The box with the longest text.
+    cell = max(boxes, key=lambda b: len(b.get_attribute("title") or ""))
+    whole = cell.get_attribute("title")
+    assert len(whole) > 20, whole
+    assert whole in cell.get_attribute("aria-label")
+    full = cell.find_element(By.CSS_SELECTOR, '[data-testid="box-whole"]')
+    assert not full.is_displayed(), "shown only on hover or focus"
+    cell.click()
+    assert cell.get_attribute("aria-selected") == "true"
+    wait(driver, full.is_displayed, message="the whole text on focus")
+    assert full.text == whole
+    cut = driver.execute_script(
+        "const e = arguments[0], r = e.getBoundingClientRect();"
+        "return e.scrollWidth > e.clientWidth + 1 || e.scrollHeight > e.clientHeight + 1"
+        " || r.right > innerWidth + 1 || r.left < -1;", full)
+    assert not cut, "the whole text is not cut"
+
+
+def test_the_chart_writes_a_counters_value_in_its_band(driver, base_url):
+    seed_running(driver, base_url, "max")
+    el(driver, "input-X00").click()
+    el(driver, "dock-tab-chart").click()
+    wait(driver, lambda: el(driver, "chart-row-C0.v"))
+    assert el(driver, "chart-row-C0.v").get_attribute("data-shape") == "bands"
+    texts = lambda: [int(t.text) for t in driver.find_elements(
+        By.CSS_SELECTOR, '.chart-band-text[data-row="C0.v"]') if re.fullmatch(r"\d+", t.text)]
+    wait(driver, lambda: any(v > 0 for v in texts()), timeout=30, message="a count written in its band")
+    values = texts()
+    assert values == sorted(values), f"a counter counts up: {values}"
+    # The bits are steps, not bands.
+    assert el(driver, "chart-row-Y00").get_attribute("data-shape") == "bits"
+    axis = el(driver, "chart-axis").text
+    assert "Time" in axis, axis
