@@ -209,26 +209,13 @@ fn Cell(
     let forced_here = forced(ctx, c.device.clone());
     let hover = hover_of(&c, &cell_slot);
     let whole = whole_of(&c, &cell_slot);
-    let (on, power, pulse, conducts) = (
+    let (on, power, pulse) = (
         cell_slot.on_attr(),
         cell_slot.power_attr(),
         cell_slot.pulse_attr(),
-        cell_slot.conducts_attr(),
     );
-    let lit = {
-        let slot = cell_slot.clone();
-        move || {
-            let by = ctx.page.colouring.get();
-            super::conduct::lit(c.kind, slot.on.get(), slot.conducts.get(), by)
-        }
-    };
-    let (h1, h2, h3, h4, h5) = (
-        here.clone(),
-        here.clone(),
-        here.clone(),
-        here.clone(),
-        here.clone(),
-    );
+    let lit = lit_of(ctx, c.kind, &cell_slot);
+    let [h1, h2, h3, h4, h5] = [(); 5].map(|_| here.clone());
     let (kind, driven) = (c.kind, device.clone());
     view! {
         <div
@@ -240,7 +227,7 @@ fn Cell(
             data-device=device
             data-on=on.clone()
             class:on=move || on() == Some("1")
-            data-conducts=conducts
+            data-conducts=cell_slot.conducts_attr()
             class:lit=lit
             data-powered=power.clone()
             class:powered=move || power() == Some("1")
@@ -304,6 +291,17 @@ fn label_of(
             Lang::Ja => format!("ラング{rung} {row}行 {col}列: {words}{state}"),
         }
     }
+}
+
+/// Whether a cell is drawn lit, in the colouring chosen
+/// ([`super::conduct::lit`]).
+fn lit_of(
+    ctx: LadderCtx,
+    kind: super::model::CellKind,
+    slot: &super::state::CellSlot,
+) -> impl Fn() -> bool + Send + Sync + 'static {
+    let (on, conducts) = (slot.on.clone(), slot.conducts.clone());
+    move || super::conduct::lit(kind, on.get(), conducts.get(), ctx.page.colouring.get())
 }
 
 /// Whether `device` is held from the ladder.

@@ -91,13 +91,7 @@ pub fn cell_width_rem(cell: &CellData) -> f64 {
     }
     let symbol = cell.symbol.chars().count() as f64 * 0.6 * 0.78 + 0.6;
     let device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
-    // A soft PLC box's live operands (`CV=4 Q=1`), with room for values.
-    let values: usize = cell
-        .watched
-        .iter()
-        .map(|(l, _)| l.chars().count() + 5)
-        .sum();
-    let values = values as f64 * 0.6 * 0.62 + 0.6;
+    let values = super::cell_kind::values_width_rem(&cell.watched);
     symbol
         .max(device)
         .max(values)
