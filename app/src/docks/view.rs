@@ -54,8 +54,10 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
             data-sheet=move || docks.sheet.get().to_string()
             data-tool=move || docks.tool.get().hook()
             aria-label=move || t().tools_dock>
-            <div class="dock-tabs" role="tablist" aria-label=move || t().tools_dock>
-                {tabs}
+            <div class="dock-tabs">
+                // Only tabs in the tablist (axe: aria-required-children);
+                // laid out in the bar as before.
+                <div class="dock-tablist" role="tablist" aria-label=move || t().tools_dock>{tabs}</div>
                 <button type="button" class="dock-collapse" data-testid="dock-bottom-toggle"
                     aria-expanded=move || open().to_string()
                     title=move || if open() { t().dock_collapse } else { t().dock_expand }

@@ -221,6 +221,8 @@ fn Cell(
         <div
             class=cell_class(&c)
             class:sel=in_block
+            // A box in the rung's right half shows its whole text leftwards.
+            class:whole-left=c.kind == super::model::CellKind::Box && c.col * 2 >= c.cols
             role="gridcell"
             data-testid=testid
             data-kind=c.kind.hook()
