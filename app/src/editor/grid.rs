@@ -215,14 +215,15 @@ fn Cell(
         cell_slot.pulse_attr(),
     );
     let lit = lit_of(ctx, c.kind, &cell_slot);
+    // A box in the rung's right half shows its whole text leftwards.
+    let whole_left = c.kind == super::model::CellKind::Box && c.col * 2 >= c.cols;
     let [h1, h2, h3, h4, h5] = [(); 5].map(|_| here.clone());
     let (kind, driven) = (c.kind, device.clone());
     view! {
         <div
             class=cell_class(&c)
             class:sel=in_block
-            // A box in the rung's right half shows its whole text leftwards.
-            class:whole-left=c.kind == super::model::CellKind::Box && c.col * 2 >= c.cols
+            class:whole-left=whole_left
             role="gridcell"
             data-testid=testid
             data-kind=c.kind.hook()
