@@ -7,10 +7,10 @@ import pathlib
 
 import pytest
 from selenium.webdriver.common.by import By
-from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 from test_app import ROOT, el, open_fresh, wait
+from test_glance import close_menu
 
 AXE = ROOT / ".tools" / "node_modules" / "axe-core" / "axe.min.js"
 MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc", "soft-plc"]
@@ -41,7 +41,7 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
         # Its variables pane with rows, and boxes on the ladder.
         Select(el(driver, "example")).select_by_value("parts")
         wait(driver, lambda: el(driver, "var-parts"))
-        driver.find_element(By.TAG_NAME, "body").send_keys(Keys.ESCAPE)  # the File menu closed
+        close_menu(driver)
     if machine == "minasec-u":
         # The view inside its CPU, an edge stepped (blocks lit).
         el(driver, "mode-halt").click()

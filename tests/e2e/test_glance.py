@@ -17,6 +17,15 @@ from test_screens import screen_driver
 from test_soft import choose_soft
 
 
+def close_menu(driver):
+    """Any open menu closed again, as a second press on its button does
+    (a control chosen inside a menu leaves it open)."""
+    driver.execute_script(
+        "for (const b of document.querySelectorAll('[aria-haspopup][aria-expanded=\"true\"]')) b.click();")
+    wait(driver, lambda: not driver.find_elements(
+        By.CSS_SELECTOR, '[aria-haspopup][aria-expanded="true"]'), message="menus closed")
+
+
 def conducts(driver, cell):
     return el(driver, cell).get_attribute("data-conducts")
 
@@ -150,7 +159,7 @@ def test_screenshots_of_a_running_ladder_and_its_chart(tmp_path, base_url, artif
         open_fresh(drv, base_url)
         Select(el(drv, "example")).select_by_value("seed-test")
         wait(drv, lambda: el(drv, "cell-4-0-9").get_attribute("data-device") == "C0R")
-        drv.find_element(By.TAG_NAME, "body").send_keys(Keys.ESCAPE)  # the File menu closed
+        close_menu(drv)
         js_click(drv, "run")
         js_click(drv, "input-X00")
         wait(drv, lambda: conducts(drv, "cell-0-0-0") == "1")
@@ -165,6 +174,7 @@ def test_screenshots_of_a_running_ladder_and_its_chart(tmp_path, base_url, artif
         Select(el(drv, "machine")).select_by_value("soft-plc")
         Select(el(drv, "example")).select_by_value("parts")
         wait(drv, lambda: drv.find_elements(By.CSS_SELECTOR, '[data-kind="box"]'))
+        close_menu(drv)
         boxes = drv.find_elements(By.CSS_SELECTOR, '[data-kind="box"]')
         box = max(boxes, key=lambda b: len(b.get_attribute("title") or ""))
         drv.execute_script("arguments[0].scrollIntoView({block: 'center'})", box)
