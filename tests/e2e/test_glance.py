@@ -20,10 +20,9 @@ from test_soft import choose_soft
 def close_menu(driver):
     """Any open menu closed again, as a second press on its button does
     (a control chosen inside a menu leaves it open)."""
-    driver.execute_script(
-        "for (const b of document.querySelectorAll('[aria-haspopup][aria-expanded=\"true\"]')) b.click();")
-    wait(driver, lambda: not driver.find_elements(
-        By.CSS_SELECTOR, '[aria-haspopup][aria-expanded="true"]'), message="menus closed")
+    shut = '[aria-haspopup][aria-expanded="true"], [data-testid="menus"][aria-expanded="true"]'
+    driver.execute_script("for (const b of document.querySelectorAll(arguments[0])) b.click();", shut)
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, shut), message="menus closed")
 
 
 def conducts(driver, cell):

@@ -90,7 +90,12 @@ pub fn cell_width_rem(cell: &CellData) -> f64 {
         return 0.0;
     }
     let symbol = cell.symbol.chars().count() as f64 * 0.6 * 0.78 + 0.6;
-    let device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
+    let mut device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
+    if cell.kind == CellKind::CountCoil {
+        // Its current value (up to five digits, 0.65 rem) at the top right,
+        // clear of the name centred above the coil: room on both sides.
+        device += 2.0 * 5.0 * 0.6 * 0.65;
+    }
     let values = super::cell_kind::values_width_rem(&cell.watched);
     symbol
         .max(device)
@@ -542,6 +547,14 @@ mod tests {
         );
         assert_eq!(widths[2], WIRE_COL_REM);
         assert_eq!(widths[3], MIN_COL_REM, "the coil's");
+        // A timer's coil has room for its name and its value beside it.
+        let timer = CellData {
+            kind: CellKind::CountCoil,
+            device: "T0".into(),
+            symbol: "(K10)".into(),
+            ..CellData::default()
+        };
+        assert!(cell_width_rem(&timer) > 4.5, "{}", cell_width_rem(&timer));
         let only_x00 = column_widths(&[&a], 4);
         assert_eq!(only_x00[0], MIN_COL_REM);
         assert!(widths
