@@ -91,7 +91,8 @@ pub fn cell_width_rem(cell: &CellData) -> f64 {
     }
     let symbol = cell.symbol.chars().count() as f64 * 0.6 * 0.78 + 0.6;
     let mut device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
-    if cell.kind == CellKind::CountCoil {
+    let counts = cell.device.starts_with('T') || cell.device.starts_with('C');
+    if cell.kind.look().shows_value && counts {
         // Its current value (up to five digits, 0.65 rem) at the top right,
         // clear of the name centred above the coil: room on both sides.
         device += 2.0 * 5.0 * 0.6 * 0.65;
@@ -547,7 +548,15 @@ mod tests {
         );
         assert_eq!(widths[2], WIRE_COL_REM);
         assert_eq!(widths[3], MIN_COL_REM, "the coil's");
-        // A timer's coil has room for its name and its value beside it.
+        // A timer's coil has room for its name and its value beside it
+        // (MINASEC-U's `OUT T0` is a plain coil that shows it too).
+        let plain = CellData {
+            kind: CellKind::Coil,
+            device: "T0".into(),
+            symbol: "( )".into(),
+            ..CellData::default()
+        };
+        assert!(cell_width_rem(&plain) > 4.5, "{}", cell_width_rem(&plain));
         let timer = CellData {
             kind: CellKind::CountCoil,
             device: "T0".into(),
