@@ -215,8 +215,7 @@ fn Cell(
         cell_slot.pulse_attr(),
     );
     let lit = lit_of(ctx, c.kind, &cell_slot);
-    // A box in the rung's right half shows its whole text leftwards.
-    let whole_left = c.kind == super::model::CellKind::Box && c.col * 2 >= c.cols;
+    let whole_left = opens_left(&c);
     let [h1, h2, h3, h4, h5] = [(); 5].map(|_| here.clone());
     let (kind, driven) = (c.kind, device.clone());
     view! {
@@ -305,6 +304,11 @@ fn lit_of(
 ) -> impl Fn() -> bool + Send + Sync + 'static {
     let (on, conducts) = (slot.on.clone(), slot.conducts.clone());
     move || super::conduct::lit(kind, on.get(), conducts.get(), ctx.page.colouring.get())
+}
+
+/// A box in its rung's right half shows its whole text leftwards.
+fn opens_left(c: &CellData) -> bool {
+    c.kind == super::model::CellKind::Box && c.col * 2 >= c.cols
 }
 
 /// Whether `device` is held from the ladder.
