@@ -46,6 +46,8 @@ pub struct Ctx {
     /// The workbench's docks: which tool is shown, which dock is open,
     /// their sizes (`crate::docks`).
     pub docks: crate::docks::Docks,
+    /// How contacts are coloured (View menu; remembered).
+    pub colouring: RwSignal<crate::editor::conduct::Colouring>,
 }
 
 impl Ctx {
@@ -58,6 +60,9 @@ impl Ctx {
             paused: RwSignal::new(false),
             notice: RwSignal::new(None),
             docks: crate::docks::Docks::restore(),
+            colouring: RwSignal::new(crate::editor::conduct::Colouring::parse(
+                crate::storage::saved_string(crate::editor::conduct::COLOURING_KEY).as_deref(),
+            )),
         }
     }
 

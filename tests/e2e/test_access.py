@@ -1,14 +1,16 @@
 """End-to-end: accessibility (issue #27). axe-core (from the npm registry,
 installed into .tools/ by scripts/setup.sh) checks each machine's
-workspace against WCAG 2.1 A/AA, with a test case and each pane open: no
-critical or serious finding."""
+workspace against WCAG 2.1 A/AA, with a test case, each pane and each
+dock tab open (issue #46): no critical or serious finding."""
 
 import pathlib
 
 import pytest
+from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
 from test_app import ROOT, el, open_fresh, wait
+from test_glance import close_menu
 
 AXE = ROOT / ".tools" / "node_modules" / "axe-core" / "axe.min.js"
 MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc", "soft-plc"]
@@ -39,6 +41,7 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
         # Its variables pane with rows, and boxes on the ladder.
         Select(el(driver, "example")).select_by_value("parts")
         wait(driver, lambda: el(driver, "var-parts"))
+        close_menu(driver)
     if machine == "minasec-u":
         # The view inside its CPU, an edge stepped (blocks lit).
         el(driver, "mode-halt").click()
@@ -58,6 +61,20 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
             found.setdefault(v["id"], (v["impact"], pane, v["nodes"]))
         if pane:
             el(driver, pane).click()  # closed again before the next opens
+    # Each dock tab open in turn (issue #46): every tool's view checked.
+    # (The panel's own tab shows only where the docks are sheets.)
+    tabs = [t.get_attribute("data-testid") for t in
+            driver.find_elements(By.CSS_SELECTOR, '[data-testid^="dock-tab-"]')
+            if t.get_attribute("data-testid") != "dock-tab-panel"]
+    assert "dock-tab-chart" in tabs, tabs
+    for tab in tabs:
+        if el(driver, "dock-bottom").get_attribute("data-open") == "false":
+            el(driver, "view-tools-dock").click()
+            wait(driver, lambda: el(driver, "dock-bottom").get_attribute("data-open") == "true")
+        el(driver, tab).click()
+        wait(driver, lambda: el(driver, tab).get_attribute("aria-selected") == "true", message=tab)
+        for v in violations(driver):
+            found.setdefault(v["id"], (v["impact"], tab, v["nodes"]))
     assert not found, found
 
 

@@ -175,7 +175,31 @@ fn ViewMenu(ctx: LadderCtx) -> impl IntoView {
             on:click=move |_| docks.resize(|s| s.bottom_open = !s.bottom_open)>{move || t().tools_dock}</button>
         <button type="button" data-testid="view-reset-docks"
             on:click=move |_| docks.resize(|s| *s = crate::docks::Sizes::default())>{move || t().reset_docks}</button>
+        <ColouringToggle />
         <LangSelect />
+    }
+}
+
+/// The old colouring of contacts, by device value (issue #46): a
+/// toggle, remembered.
+#[component]
+fn ColouringToggle() -> impl IntoView {
+    use crate::editor::conduct::{Colouring, COLOURING_KEY};
+    let ctx = Ctx::get();
+    let t = move || ctx.lang.get().texts();
+    let by_value = move || ctx.colouring.get() == Colouring::ByValue;
+    let toggle = move |_| {
+        let next = if by_value() {
+            Colouring::ByConduction
+        } else {
+            Colouring::ByValue
+        };
+        ctx.colouring.set(next);
+        storage::save_string(COLOURING_KEY, next.code());
+    };
+    view! {
+        <button type="button" data-testid="view-colour-by-value" aria-pressed=move || by_value().to_string()
+            title=move || t().colour_by_value_hint on:click=toggle>{move || t().colour_by_value}</button>
     }
 }
 

@@ -3,8 +3,8 @@
 //! drawing to the machine and starts it; Stop stops the machine as its
 //! own switch would (MINASEC-U HALT, IO86A STOP, the Arduino sketch
 //! disabled, the soft PLC STOP) and powers the AVR PLC off, which has no
-//! RUN switch. A board's own RUN/HALT keys act on the same machine, so
-//! this control, the clock (`clock.rs`) and the board show one state.
+//! RUN switch. A board's own RUN/HALT keys act on the same machine; the
+//! clock (`clock.rs`) shows the machine's state, whatever started it.
 
 use engine::plc::Command;
 use engine::MachineId;

@@ -153,6 +153,30 @@ impl CellKind {
     }
 }
 
+/// How wide (rem) a soft PLC box's live operands (`CV=4 Q=1`, 0.62 rem
+/// monospace) need their column, with room for a few digits each.
+pub fn values_width_rem(watched: &[(String, String)]) -> f64 {
+    let chars: usize = watched.iter().map(|(l, _)| l.chars().count() + 5).sum();
+    if chars == 0 {
+        return 0.0;
+    }
+    chars as f64 * 0.6 * 0.62 + 0.6
+}
+
+/// A box's whole text (shown on hover, on focus and in its accessible
+/// name however narrow its column): its call as written (`c0: CTU(CU :=
+/// X00, PV := 10)`), with its operands' live values when it has them.
+pub fn whole_text(kind: CellKind, words: &str, values: Option<&str>) -> Option<String> {
+    if kind != CellKind::Box {
+        return None;
+    }
+    let call = words.strip_prefix("box ").unwrap_or(words);
+    Some(match values {
+        Some(v) if !v.is_empty() => format!("{call} \u{2014} {v}"),
+        _ => call.to_string(),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -189,5 +213,37 @@ mod tests {
         assert!(CellKind::CountCoil.look().shows_value && !CellKind::Set.look().shows_value);
         assert!(!CellKind::Box.look().shows_state && !CellKind::Wire.look().shows_state);
         assert_eq!(CellKind::Empty.hook(), "");
+    }
+
+    #[test]
+    fn a_boxs_whole_text_is_its_call_and_its_values() {
+        assert_eq!(
+            whole_text(
+                CellKind::Box,
+                "box c0: CTU(CU := X00, PV := 10)",
+                Some("CV=4")
+            ),
+            Some("c0: CTU(CU := X00, PV := 10) \u{2014} CV=4".to_string())
+        );
+        assert_eq!(
+            whole_text(CellKind::Box, "box MOV K50 D00", None).as_deref(),
+            Some("MOV K50 D00")
+        );
+        assert_eq!(
+            whole_text(CellKind::No, "normally open contact X00", None),
+            None
+        );
+    }
+
+    #[test]
+    fn a_boxs_column_has_room_for_its_live_operands() {
+        assert_eq!(values_width_rem(&[]), 0.0);
+        let one = values_width_rem(&[("CV".into(), "c0.CV".into())]);
+        let three = values_width_rem(&[
+            ("CV".into(), "c0.CV".into()),
+            ("Q".into(), "c0.Q".into()),
+            ("%IX0.1".into(), "%IX0.1".into()),
+        ]);
+        assert!(one > 2.0 && three > 2.0 * one, "{one} {three}");
     }
 }

@@ -14,7 +14,7 @@ pub const MIN_COL_REM: f64 = 3.0;
 pub const WIRE_COL_REM: f64 = 1.4;
 /// The widest a column is drawn (rem); a longer text is cut with an
 /// ellipsis and shown whole in its title.
-pub const MAX_COL_REM: f64 = 13.0;
+pub const MAX_COL_REM: f64 = 16.0;
 
 /// How wide (rem) `cell` needs its column: nothing for a wire or an
 /// empty cell; else its symbol (a box's text) in the symbol's face and its
@@ -25,8 +25,18 @@ pub fn cell_width_rem(cell: &CellData) -> f64 {
         return 0.0;
     }
     let symbol = cell.symbol.chars().count() as f64 * 0.6 * 0.78 + 0.6;
-    let device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
-    symbol.max(device).clamp(MIN_COL_REM, MAX_COL_REM)
+    let mut device = cell.device.chars().count() as f64 * 0.6 * 0.72 + 0.8;
+    let counts = cell.device.starts_with('T') || cell.device.starts_with('C');
+    if cell.kind.look().shows_value && counts {
+        // Its current value (up to five digits, 0.65 rem) at the top right,
+        // clear of the name centred above the coil: room on both sides.
+        device += 2.0 * 5.0 * 0.6 * 0.65;
+    }
+    let values = super::cell_kind::values_width_rem(&cell.watched);
+    symbol
+        .max(device)
+        .max(values)
+        .clamp(MIN_COL_REM, MAX_COL_REM)
 }
 
 /// Each column's width (rem) over the whole ladder, so that every rung's
@@ -110,6 +120,22 @@ mod tests {
         );
         assert_eq!(widths[2], WIRE_COL_REM);
         assert_eq!(widths[3], MIN_COL_REM, "the coil's");
+        // A timer's coil has room for its name and its value beside it
+        // (MINASEC-U's `OUT T0` is a plain coil that shows it too).
+        let plain = CellData {
+            kind: CellKind::Coil,
+            device: "T0".into(),
+            symbol: "( )".into(),
+            ..CellData::default()
+        };
+        assert!(cell_width_rem(&plain) > 4.5, "{}", cell_width_rem(&plain));
+        let timer = CellData {
+            kind: CellKind::CountCoil,
+            device: "T0".into(),
+            symbol: "(K10)".into(),
+            ..CellData::default()
+        };
+        assert!(cell_width_rem(&timer) > 4.5, "{}", cell_width_rem(&timer));
         let only_x00 = column_widths(&[&a], 4);
         assert_eq!(only_x00[0], MIN_COL_REM);
         assert!(widths

@@ -208,29 +208,29 @@ fn Cell(
     let device = (!c.device.is_empty()).then(|| c.device.clone());
     let forced_here = forced(ctx, c.device.clone());
     let hover = hover_of(&c, &cell_slot);
+    let whole = whole_of(&c, &cell_slot);
     let (on, power, pulse) = (
         cell_slot.on_attr(),
         cell_slot.power_attr(),
         cell_slot.pulse_attr(),
     );
-    let (h1, h2, h3, h4, h5) = (
-        here.clone(),
-        here.clone(),
-        here.clone(),
-        here.clone(),
-        here.clone(),
-    );
+    let lit = lit_of(ctx, c.kind, &cell_slot);
+    let whole_left = opens_left(&c);
+    let [h1, h2, h3, h4, h5] = [(); 5].map(|_| here.clone());
     let (kind, driven) = (c.kind, device.clone());
     view! {
         <div
             class=cell_class(&c)
             class:sel=in_block
+            class:whole-left=whole_left
             role="gridcell"
             data-testid=testid
             data-kind=c.kind.hook()
             data-device=device
             data-on=on.clone()
             class:on=move || on() == Some("1")
+            data-conducts=cell_slot.conducts_attr()
+            class:lit=lit
             data-powered=power.clone()
             class:powered=move || power() == Some("1")
             data-pulsed=pulse.clone()
@@ -258,6 +258,7 @@ fn Cell(
             <span class="cmt">{c.comment.clone()}</span>
             <span class="val" data-value=cell_slot.value_attr()>{cell_slot.value_attr()}</span>
             <span class="words" data-testid="box-values">{cell_slot.words_attr()}</span>
+            {whole.map(|w| view! { <span class="whole" data-testid="box-whole" aria-hidden="true">{w}</span> })}
             // "Why": the cell asked about and the cells that decide it
             // (a child: the cell already carries tachys's most attributes).
             <span class="why" data-why=move || ctx.why.shown.with(|w| w.as_ref().and_then(|w| w.role_at(&here())))></span>
@@ -280,13 +281,34 @@ fn label_of(
     move || {
         let lang = ctx.page.lang.get();
         let words = if lang == Lang::Ja { &ja } else { &en };
-        let state = live_words(slot.on.get(), slot.powered.get(), lang);
+        let mut state = live_words(slot.on.get(), slot.powered.get(), lang);
+        state.push_str(super::conduct::conduct_words(slot.conducts.get(), lang));
+        if let Some(values) = slot.words.get() {
+            state.push_str(", ");
+            state.push_str(&values);
+        }
         let rung = number.get() + 1;
         match lang {
             Lang::En => format!("rung {rung}, row {row}, column {col}: {words}{state}"),
             Lang::Ja => format!("ラング{rung} {row}行 {col}列: {words}{state}"),
         }
     }
+}
+
+/// Whether a cell is drawn lit, in the colouring chosen
+/// ([`super::conduct::lit`]).
+fn lit_of(
+    ctx: LadderCtx,
+    kind: super::model::CellKind,
+    slot: &super::state::CellSlot,
+) -> impl Fn() -> bool + Send + Sync + 'static {
+    let (on, conducts) = (slot.on.clone(), slot.conducts.clone());
+    move || super::conduct::lit(kind, on.get(), conducts.get(), ctx.page.colouring.get())
+}
+
+/// A box in its rung's right half shows its whole text leftwards.
+fn opens_left(c: &CellData) -> bool {
+    c.kind == super::model::CellKind::Box && c.col * 2 >= c.cols
 }
 
 /// Whether `device` is held from the ladder.
@@ -300,14 +322,36 @@ fn forced(ctx: LadderCtx, device: String) -> impl Fn() -> bool + Clone + Send + 
     }
 }
 
-/// A cell's tooltip: its error, else how often its device rose since the
-/// last frame (a pulse too short to see).
+/// A cell's tooltip: its error, else a box's whole text, else how often
+/// its device rose since the last frame (a pulse too short to see).
 fn hover_of(
     c: &CellData,
     slot: &super::state::CellSlot,
 ) -> impl Fn() -> Option<String> + Send + Sync + 'static {
     let (error, rises) = (c.error.clone(), slot.rises());
-    move || error.clone().or_else(|| rises().map(|n| format!("{n} ↑")))
+    let whole = whole_of(c, slot);
+    move || {
+        error
+            .clone()
+            .or_else(|| whole.as_ref().map(|w| w()))
+            .or_else(|| rises().map(|n| format!("{n} ↑")))
+    }
+}
+
+/// A box's whole text with its live values (`None` for anything else):
+/// shown under the cell on hover, when the cursor is on it (focus, a tap
+/// or a long press on touch), and as its tooltip.
+fn whole_of(
+    c: &CellData,
+    slot: &super::state::CellSlot,
+) -> Option<impl Fn() -> String + Clone + Send + Sync + 'static> {
+    super::cell_kind::whole_text(c.kind, &c.words, None)?;
+    let (kind, words, values) = (c.kind, c.words.clone(), slot.words.clone());
+    Some(move || {
+        values
+            .with(|v| super::cell_kind::whole_text(kind, &words, v.as_deref()))
+            .unwrap_or_default()
+    })
 }
 
 /// A press on a cell: the cursor there (Shift: the selection grows to

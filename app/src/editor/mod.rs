@@ -10,9 +10,11 @@
 //!   Find, Projects);
 //! - [`files`]: share links, files, SVG / PNG, the autosave.
 
+pub mod bands;
 pub mod cell_kind;
 pub mod clipboard;
 pub mod columns;
+pub mod conduct;
 pub mod entry;
 pub mod files;
 pub mod grid;

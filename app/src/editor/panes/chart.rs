@@ -1,6 +1,7 @@
 //! The timing chart (issue #16), `[data-testid=timing-chart]`: chosen
-//! devices against the recorded scans, bits as steps and values as
-//! lines. Each pixel column shows every value its scans took (so a
+//! devices against the recorded scans, bits as steps and words as bands
+//! with their values written in them (issue #46, laid out in
+//! [`super::bands`]). Each pixel column shows every value its scans took (so a
 //! one-scan pulse is always at least a pixel wide, never merged away);
 //! zoom and pan move over the recording, Follow keeps the newest scans
 //! in view; a click puts the cursor on a scan (and, paused, travels
@@ -10,12 +11,12 @@ use engine::record::Mark;
 use engine::SimTime;
 use leptos::prelude::*;
 
-use crate::editor::LadderCtx;
+use crate::editor::{bands, LadderCtx};
 
 /// The chart's width in pixels (one column per pixel).
 const WIDTH: usize = 600;
-/// Each device's row height in pixels.
-const ROW: usize = 26;
+/// Each device's row height in pixels (a name button fits beside it).
+const ROW: usize = 30;
 /// Scans in view when following, at first.
 const SPAN: u64 = 600;
 
@@ -42,58 +43,6 @@ impl ChartData {
         at.and_then(|m| m.checked_sub(self.from))
             .map(|i| i as usize)
     }
-}
-
-/// Each pixel column's scans: `[start, end)` indices into `n` scans.
-fn columns(n: usize) -> impl Iterator<Item = (usize, usize)> {
-    (0..WIDTH).map(move |c| {
-        let start = c * n / WIDTH;
-        let end = ((c + 1) * n / WIDTH).max(start + 1).min(n.max(1));
-        (start.min(n.saturating_sub(1)), end)
-    })
-}
-
-/// A bit row as an SVG path: a level where a column's scans agree, a
-/// full-height stroke where they differ (a change or a pulse).
-fn bit_path(values: &[Option<i64>]) -> String {
-    let (high, low) = (3.0, (ROW - 4) as f64);
-    let mut d = String::new();
-    for (x, (start, end)) in columns(values.len()).enumerate() {
-        let slice = values.get(start..end).unwrap_or(&[]);
-        let on = slice.iter().any(|v| v.is_some_and(|v| v != 0));
-        let off = slice.iter().any(|v| v.is_none_or(|v| v == 0));
-        let x = x as f64;
-        if on && off {
-            d.push_str(&format!("M{x} {low}V{high}"));
-        } else if on || off {
-            let y = if on { high } else { low };
-            d.push_str(&format!("M{x} {y}h1"));
-        }
-    }
-    d
-}
-
-/// A value row: each column's lowest to highest value, scaled to the row.
-fn value_path(values: &[Option<i64>]) -> String {
-    let known = values.iter().flatten();
-    let (lo, hi) = known.fold((i64::MAX, i64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
-    if lo > hi {
-        return String::new();
-    }
-    let range = (hi - lo).max(1) as f64;
-    let y = |v: i64| (ROW - 4) as f64 - (v - lo) as f64 / range * (ROW - 7) as f64;
-    let mut d = String::new();
-    for (x, (start, end)) in columns(values.len()).enumerate() {
-        let slice = values.get(start..end).unwrap_or(&[]);
-        let (a, b) = slice
-            .iter()
-            .flatten()
-            .fold((i64::MAX, i64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
-        if a <= b {
-            d.push_str(&format!("M{x} {}V{}h1", y(a), y(b)));
-        }
-    }
-    d
 }
 
 /// Whether a row is bits: every value 0 or 1.
@@ -181,6 +130,10 @@ struct Chart {
     adding: RwSignal<String>,
     error: RwSignal<Option<String>>,
     data: RwSignal<ChartData>,
+    /// The plot's width on the page (px), measured at each redraw: where
+    /// a band is wide enough to write its value in.
+    shown: RwSignal<f64>,
+    plot: NodeRef<leptos::html::Div>,
 }
 
 impl Chart {
@@ -196,6 +149,8 @@ impl Chart {
             adding: RwSignal::new(String::new()),
             error: RwSignal::new(None),
             data: RwSignal::new(ChartData::default()),
+            shown: RwSignal::new(WIDTH as f64),
+            plot: NodeRef::new(),
         }
     }
 
@@ -239,6 +194,12 @@ impl Chart {
         if let Some(fresh) = fresh {
             if self.data.with_untracked(|d| *d != fresh) {
                 self.data.set(fresh);
+            }
+        }
+        if let Some(plot) = self.plot.get_untracked() {
+            let w = plot.get_bounding_client_rect().width().round();
+            if w > 0.0 && self.shown.get_untracked() != w {
+                self.shown.set(w);
             }
         }
     }
@@ -374,7 +335,6 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
                 <ChartNames chart />
                 <ChartPlot chart />
             </div>
-            <ChartAxis chart />
             <ChartValues chart />
         </section>
     }
@@ -430,42 +390,103 @@ fn ChartNames(chart: Chart) -> impl IntoView {
     }
 }
 
-/// The rows drawn, the breaks and the cursor.
+/// The rows drawn, the breaks and the cursor, with the values written
+/// over them (HTML, so the text is not stretched with the plot) and the
+/// time axis under them.
 #[component]
 fn ChartPlot(chart: Chart) -> impl IntoView {
     let height = move || chart.height();
     view! {
-        <svg class="chart" height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
-            preserveAspectRatio="none"
-            on:click=move |e: web_sys::MouseEvent| chart.pick_at(&e)>
-            {move || chart.data.with(|d| d.rows.iter().enumerate().map(|(i, (name, values))| {
-                let path = if is_bits(values) { bit_path(values) } else { value_path(values) };
-                view! {
-                    <g class="chart-row" data-testid=format!("chart-row-{name}")
-                        data-rises=rises(values).to_string()
-                        data-scans=values.len().to_string()
-                        transform=format!("translate(0 {})", i * ROW)>
-                        <path d=path />
-                    </g>
-                }
-            }).collect_view())}
-            {move || {
-                let (from, n) = chart.data.with(|d| (d.from, d.times.len() as u64));
-                let x = move |m: Mark| (m.saturating_sub(from) * WIDTH as u64 / n.max(1)) as usize;
-                let inside = move |m: &Mark| *m >= from && *m < from + n;
-                let breaks = chart.ctx.travel.breaks.get().into_iter().filter(inside).map(|m| view! {
-                    <line class="chart-break" data-testid="chart-break" x1=x(m) x2=x(m) y1="0" y2=height() />
-                }).collect_view();
-                let shown = chart.at().filter(inside).map(|m| view! {
-                    <line class="chart-cursor" x1=x(m) x2=x(m) y1="0" y2=height() />
-                });
-                (breaks, shown)
-            }}
-        </svg>
+        <div class="chart-plot-col">
+            <div class="chart-plot" node_ref=chart.plot style=move || format!("height: {}px", height())>
+                <svg class="chart" height=height viewBox=move || format!("0 0 {WIDTH} {}", height())
+                    preserveAspectRatio="none" aria-hidden="true"
+                    on:click=move |e: web_sys::MouseEvent| chart.pick_at(&e)>
+                    {move || chart.data.with(|d| d.rows.iter().enumerate().map(|(i, (name, values))| {
+                        view! {
+                            <g class="chart-row" data-testid=format!("chart-row-{name}")
+                                data-rises=rises(values).to_string()
+                                data-scans=values.len().to_string()
+                                data-shape=if is_bits(values) { "bits" } else { "bands" }
+                                transform=format!("translate(0 {})", i * ROW)>
+                                {row_paths(values)}
+                            </g>
+                        }
+                    }).collect_view())}
+                    <ChartMarks chart />
+                </svg>
+                <ChartTexts chart />
+            </div>
+            <ChartAxis chart />
+        </div>
     }
 }
 
-/// The axis: the scans and simulated times at both ends.
+/// A row's paths: a bit row's steps, a word row's bands.
+fn row_paths(values: &[Option<i64>]) -> impl IntoView {
+    if is_bits(values) {
+        let d = bands::bit_path(values, WIDTH, ROW);
+        view! { <path class="chart-bits" d=d /> }.into_any()
+    } else {
+        let (lines, busy) = bands::word_path(&bands::bands(values, WIDTH), ROW);
+        view! {
+            <path class="chart-busy" d=busy />
+            <path class="chart-word" d=lines />
+        }
+        .into_any()
+    }
+}
+
+/// The breakpoints and the cursor.
+#[component]
+fn ChartMarks(chart: Chart) -> impl IntoView {
+    let height = move || chart.height();
+    move || {
+        let (from, n) = chart.data.with(|d| (d.from, d.times.len() as u64));
+        let x = move |m: Mark| (m.saturating_sub(from) * WIDTH as u64 / n.max(1)) as usize;
+        let inside = move |m: &Mark| *m >= from && *m < from + n;
+        let breaks = chart.ctx.travel.breaks.get().into_iter().filter(inside).map(|m| view! {
+            <line class="chart-break" data-testid="chart-break" x1=x(m) x2=x(m) y1="0" y2=height() />
+        }).collect_view();
+        let shown = chart.at().filter(inside).map(|m| {
+            view! {
+                <line class="chart-cursor" x1=x(m) x2=x(m) y1="0" y2=height() />
+            }
+        });
+        (breaks, shown)
+    }
+}
+
+/// The words' values: written in each band wide enough on the page, and
+/// at the cursor always.
+#[component]
+fn ChartTexts(chart: Chart) -> impl IntoView {
+    let pct = |col: usize| col as f64 * 100.0 / WIDTH as f64;
+    move || {
+        let px_per_col = chart.shown.get() / WIDTH as f64;
+        let at = chart.at();
+        chart.data.with(|d| {
+            let cursor = d.index_of(at).filter(|&i| i < d.times.len());
+            let n = d.times.len().max(1);
+            d.rows.iter().enumerate().filter(|(_, (_, v))| !is_bits(v)).map(|(i, (name, values))| {
+                let top = i * ROW;
+                let written = bands::bands(values, WIDTH).into_iter().filter_map(|b| {
+                    let text = bands::band_text(&b, px_per_col)?;
+                    let style = format!("left: {:.3}%; width: {:.3}%; top: {top}px; height: {ROW}px",
+                        pct(b.from), pct(b.to - b.from));
+                    Some(view! { <span class="chart-band-text" data-row=name.clone() style=style>{text}</span> })
+                }).collect_view();
+                let here = cursor.and_then(|c| Some((c, values.get(c).copied().flatten()?))).map(|(c, v)| {
+                    let style = format!("left: {:.3}%; top: {top}px; height: {ROW}px", pct(c * WIDTH / n));
+                    view! { <span class="chart-at" data-testid=format!("chart-at-{name}") style=style>{v.to_string()}</span> }
+                });
+                (written, here)
+            }).collect_view()
+        })
+    }
+}
+
+/// The time axis, labelled: the scans and simulated times at both ends.
 #[component]
 fn ChartAxis(chart: Chart) -> impl IntoView {
     let ctx = chart.ctx;
@@ -477,6 +498,7 @@ fn ChartAxis(chart: Chart) -> impl IntoView {
                 });
                 (
                     view! { <span>{end(0)}</span> },
+                    view! { <span class="chart-axis-label">{move || ctx.page.lang.get().texts().chart_time_axis}</span> },
                     view! { <span>{end(d.times.len().saturating_sub(1))}</span> },
                 )
             })}
@@ -508,21 +530,8 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_one_scan_pulse_among_thousands_still_takes_a_column() {
-        let mut values = vec![Some(0); 100_000];
-        values[54_321] = Some(1);
-        let d = bit_path(&values);
-        // Exactly one column shows both levels: a stroke from low to high.
-        assert_eq!(d.matches('V').count(), 1, "{}", &d[..200.min(d.len())]);
-        assert_eq!(rises(&values), 1);
-    }
-
-    #[test]
-    fn few_scans_spread_over_the_columns_and_keep_their_levels() {
+    fn rows_are_bits_only_when_every_value_is_0_or_1() {
         let values = [Some(0), Some(1), Some(1), Some(0)];
-        let d = bit_path(&values);
-        assert_eq!(d.matches('V').count(), 0, "no column mixes levels");
-        assert_eq!(d.matches('M').count(), WIDTH);
         assert_eq!(rises(&values), 1);
         assert!(is_bits(&values));
         assert!(!is_bits(&[Some(5)]));
@@ -555,13 +564,5 @@ mod tests {
         assert_eq!(clock(SimTime::from_millis(1_500)), "1.50 s");
         assert_eq!(clock(SimTime::from_micros(16_500)), "16.5 ms");
         assert_eq!(clock(SimTime::ZERO), "0 ms");
-    }
-
-    #[test]
-    fn value_rows_cover_each_columns_range() {
-        let values: Vec<Option<i64>> = (0..1200).map(|i| Some(i % 10)).collect();
-        let d = value_path(&values);
-        assert_eq!(d.matches('M').count(), WIDTH);
-        assert!(value_path(&[None, None]).is_empty());
     }
 }

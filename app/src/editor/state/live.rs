@@ -217,8 +217,42 @@ impl LadderCtx {
                     |s| &s.words,
                 );
             });
+            self.show_conduction(plc.trace(), &view, number);
         }
         self.show_watch(plc);
+    }
+
+    /// Each frame, after the devices' states: whether each contact is
+    /// closed (`data-conducts`, `crate::editor::conduct`); an edge
+    /// contact's from the bit its step read in the traced scan (the
+    /// relay its edge was computed into).
+    fn show_conduction(
+        &self,
+        trace: Option<&engine::plc::ScanTrace>,
+        view: &RungView,
+        number: usize,
+    ) {
+        use crate::editor::model::CellKind;
+        view.data.with_untracked(|d| {
+            view.update_each_from(
+                |i, slot| {
+                    let c = d.cells.get(i)?;
+                    let edge = match c.kind {
+                        CellKind::Rise | CellKind::Fall => trace.map(|t| {
+                            let pos = Pos::new(c.row, c.col);
+                            let step = self.with_live(|l| l?.listing.step_of_leaf(number, pos));
+                            step.is_some_and(|s| {
+                                t.ran.get(s).copied().unwrap_or(false)
+                                    && t.read.get(s).copied().unwrap_or(false)
+                            })
+                        }),
+                        _ => None,
+                    };
+                    crate::editor::conduct::conducts(c.kind, slot.on.get_untracked(), edge)
+                },
+                |s| &s.conducts,
+            );
+        });
     }
 
     /// The machine's handles for cell `c`: its device's state, a timer's

@@ -52,6 +52,8 @@ pub struct CellSlot {
     /// Its power changed in a scan since the last frame: how often its
     /// contact's device rose.
     pub pulsed: ArcRwSignal<Option<u32>>,
+    /// Whether its contact is closed (`crate::editor::conduct`).
+    pub conducts: ArcRwSignal<Option<bool>>,
     /// A timer's or counter's current value, on its coil.
     pub value: ArcRwSignal<Option<i64>>,
     /// A soft PLC box's operands' values (`a=5 c=6`).
@@ -71,6 +73,14 @@ impl CellSlot {
     pub fn on_attr(&self) -> impl Fn() -> Option<&'static str> + Clone + Send + Sync + 'static {
         let on = self.on.clone();
         move || on.get().map(bit)
+    }
+
+    /// `data-conducts`: whether its contact is closed.
+    pub fn conducts_attr(
+        &self,
+    ) -> impl Fn() -> Option<&'static str> + Clone + Send + Sync + 'static {
+        let conducts = self.conducts.clone();
+        move || conducts.get().map(bit)
     }
 
     /// `data-powered`: its power in the last scan.
@@ -123,11 +133,21 @@ impl RungView {
         value_of: impl Fn(usize) -> Option<T>,
         field: impl Fn(&CellSlot) -> &ArcRwSignal<Option<T>>,
     ) {
+        self.update_each_from(|i, _| value_of(i), field);
+    }
+
+    /// [`Self::update_each`] with each cell's value computed from its place
+    /// and its slot as it is (a value made from the cell's other signals).
+    pub(super) fn update_each_from<T: PartialEq + Send + Sync + 'static>(
+        &self,
+        value_of: impl Fn(usize, &CellSlot) -> Option<T>,
+        field: impl Fn(&CellSlot) -> &ArcRwSignal<Option<T>>,
+    ) {
         let Ok(slots) = self.slots.lock() else {
             return;
         };
         for (i, slot) in slots.iter().enumerate() {
-            let new = value_of(i);
+            let new = value_of(i, slot);
             let signal = field(slot);
             if signal.with_untracked(|old| *old != new) {
                 signal.set(new);
