@@ -89,7 +89,7 @@ def test_the_cpu_view_reads_on_a_phone_in_japanese(driver, base_url, artifacts):
     driver.set_window_size(390, 844)
     try:
         open_fresh(driver, base_url, lang="ja")
-        tab = driver.find_elements(By.CSS_SELECTOR, '[data-testid="tab-panel"]')
+        tab = driver.find_elements(By.CSS_SELECTOR, '[data-testid="dock-tab-panel"]')
         if tab:
             tab[0].click()
         el(driver, "mode-halt").click()

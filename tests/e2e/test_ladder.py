@@ -299,6 +299,7 @@ def test_find_cross_reference_and_batch_replace(driver, base_url):
     el(driver, "xref").find_elements(By.TAG_NAME, "button")[2].click()
     assert cursor(driver) == "cell-1-0-0"
     # Selecting a rung lights its steps in the listing; a step shows its rung.
+    el(driver, "il-listing")  # the Listing tab shown
     lit = [s.get_attribute("data-step") for s in driver.find_elements(By.CSS_SELECTOR, '.listing .lit')]
     assert lit == ["4", "5", "6"]
     driver.find_element(By.CSS_SELECTOR, '.listing [data-step="12"]').click()

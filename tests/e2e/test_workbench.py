@@ -17,7 +17,7 @@ from selenium.webdriver.support.ui import Select
 
 from test_app import el, on, open_fresh, wait
 from test_ladder import focus_ladder, place
-from test_screens import SCREENS, no_sideways_overflow, on_screen, screen_driver, tap_entry
+from test_screens import SCREENS, no_sideways_overflow, on_screen, screen, tap_entry  # noqa: F401 (screen: a fixture)
 
 # Each machine's names for X00, X01, Y00, and its panel's switch and lamp
 # (the AVR PLC's panel names its bits after the program it runs).
@@ -28,14 +28,6 @@ MACHINES = {
     "avr-plc": ("R0.0", "R0.1", "R1.0", None, None),
     "soft-plc": ("%IX0.0", "%IX0.1", "%QX0.0", "soft-input-IX0-0", "soft-lamp-QX0-0"),
 }
-
-
-@pytest.fixture(params=list(SCREENS))
-def screen(request, tmp_path):
-    drv = screen_driver(tmp_path, request.param)
-    request.node.funcargs["driver"] = drv
-    yield request.param, drv
-    drv.quit()
 
 
 def page_scrolls(driver):

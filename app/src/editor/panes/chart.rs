@@ -351,8 +351,8 @@ fn ChartTools(chart: Chart) -> impl IntoView {
                 on:input=move |e| chart.adding.set(event_target_value(&e))
                 on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { chart.add() } />
             <button type="button" on:click=move |_| chart.add()>"+"</button>
-            <button type="button" data-testid="chart-zoom-in" title=move || t().zoom_in on:click=move |_| chart.zoom(0.5)>"+🔍"</button>
-            <button type="button" data-testid="chart-zoom-out" title=move || t().zoom_out on:click=move |_| chart.zoom(2.0)>"−🔍"</button>
+            <button type="button" data-testid="chart-zoom-in" title=move || t().zoom_in aria-label=move || t().zoom_in on:click=move |_| chart.zoom(0.5)>"⊕"</button>
+            <button type="button" data-testid="chart-zoom-out" title=move || t().zoom_out aria-label=move || t().zoom_out on:click=move |_| chart.zoom(2.0)>"⊖"</button>
             <button type="button" data-testid="chart-pan-left" title=move || t().pan_left on:click=move |_| chart.pan(-1)>"◀"</button>
             <button type="button" data-testid="chart-pan-right" title=move || t().pan_right on:click=move |_| chart.pan(1)>"▶"</button>
             <button type="button" data-testid="chart-follow" on:click=move |_| chart.window.update(|w| w.end = None)>{move || t().chart_follow}</button>
