@@ -360,6 +360,20 @@ impl Program {
         }
     }
 
+    /// The untyped literal `line` loads (as the step about to be pushed),
+    /// waiting for the type its use needs; none for any other operand.
+    fn literal_of(&self, line: &Line) -> Pending {
+        match line.operand {
+            Some(Operand::Number(value)) => Pending::one(Flex {
+                step: self.steps.len(),
+                arg: None,
+                line: line.line,
+                value,
+            }),
+            _ => Pending::default(),
+        }
+    }
+
     fn type_of(&self, src: &Src) -> DataType {
         match src {
             Src::Slot(s) => self.values[*s].data_type(),
@@ -387,15 +401,7 @@ impl Program {
                     invertible("LDN", t)?;
                 }
                 flow.cr = Some(t);
-                flow.flex.clear();
-                if let Some(Operand::Number(v)) = line.operand {
-                    flow.flex = Pending::one(Flex {
-                        step: self.steps.len(),
-                        arg: None,
-                        line: line.line,
-                        value: v,
-                    });
-                }
+                flow.flex = self.literal_of(line);
                 Step::Ld(src, line.negated)
             }
             Operator::St | Operator::S | Operator::R => self.store(line, flow)?,
@@ -492,14 +498,7 @@ impl Program {
                 line: line.line,
             });
             flow.cr = src.as_ref().map(|s| self.type_of(s));
-            if let Some(Operand::Number(v)) = line.operand {
-                flow.flex = Pending::one(Flex {
-                    step: self.steps.len(),
-                    arg: None,
-                    line: line.line,
-                    value: v,
-                });
-            }
+            flow.flex = self.literal_of(line);
             return Ok(Step::Open(binary, src));
         }
         let operand = line.operand.as_ref().ok_or(LoadError::Unbalanced)?;

@@ -5,12 +5,12 @@ use engine::softplc::{Data, DataType, Program};
 
 const MS: i64 = 1_000_000;
 
-fn load(text: &str) -> Program {
+pub(super) fn load(text: &str) -> Program {
     Program::load(text).unwrap_or_else(|e| panic!("{text}\n{e:?}"))
 }
 
 /// Each error of a text refused: its line and message.
-fn refused(text: &str) -> Vec<(usize, String)> {
+pub(super) fn refused(text: &str) -> Vec<(usize, String)> {
     match Program::load(text) {
         Ok(_) => panic!("loaded, should be refused:\n{text}"),
         Err(errors) => errors

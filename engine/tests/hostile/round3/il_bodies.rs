@@ -8,26 +8,13 @@ use engine::events::InputValue;
 use engine::ladder::plcopen::soft::to_il;
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
-use engine::softplc::{Data, DataType, Program};
+use engine::softplc::{Data, DataType};
 use engine::{MachineId, SimTime};
 
 const BODIES: &str = include_str!("../fixtures/il-bodies.xml");
 const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/plcopen");
 
-fn load(text: &str) -> Program {
-    Program::load(text).unwrap_or_else(|e| panic!("{text}\n{e:?}"))
-}
-
-/// Each error of a text refused: its line and message.
-fn refused(text: &str) -> Vec<(usize, String)> {
-    match Program::load(text) {
-        Ok(_) => panic!("loaded, should be refused:\n{text}"),
-        Err(errors) => errors
-            .into_iter()
-            .map(|e| (e.line, e.error.to_string()))
-            .collect(),
-    }
-}
+use super::il::{load, refused};
 
 fn int(v: i128) -> Option<Data> {
     Some(Data::integer(DataType::Int, v))
