@@ -31,6 +31,14 @@ if pattern.search(html) or "<script>" in html:
 worker = staging / "sw.js"
 if worker.exists():
     files = sorted(p.name for p in staging.iterdir() if p.is_file() and p.name != "sw.js")
+    # The start screen (a fresh profile's first screen, and Help's) is kept
+    # for offline use with the page; the guide is kept when first read
+    # (web/sw.js).
+    start = staging / "start"
+    if start.is_dir():
+        files += sorted(
+            str(p.relative_to(staging)) for p in start.rglob("*")
+            if p.is_file() and p.suffix not in (".gz", ".br"))
     # Over every file's bytes: the files worker's names carry no hash
     # (Trunk names a worker by its binary), so a name list would miss a
     # change to it.

@@ -5,7 +5,7 @@
 // its highest level from Node's zlib; gzip by Zopfli (@gfx/zopfli, from
 // npm into .tools/ by scripts/setup.sh), which any gzip reader reads and
 // which is about 5 % smaller than zlib's best. A few seconds a build.
-import { readdirSync, readFileSync, writeFileSync, statSync } from "node:fs";
+import { readdirSync, readFileSync, writeFileSync } from "node:fs";
 import { createRequire } from "node:module";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -21,9 +21,10 @@ const { gzipAsync } = createRequire(join(root, ".tools", "node_modules", "x.js")
 const dir = process.env.TRUNK_STAGING_DIR ?? process.argv[2] ?? "dist";
 const worth = /\.(html|js|css|wasm|svg|webmanifest|json)$/;
 
-for (const name of readdirSync(dir)) {
-  const path = join(dir, name);
-  if (!worth.test(name) || !statSync(path).isFile()) {
+// The folders too: the start screen and the guide (web/start, web/guide).
+for (const entry of readdirSync(dir, { recursive: true, withFileTypes: true })) {
+  const path = join(entry.parentPath ?? entry.path, entry.name);
+  if (!entry.isFile() || !worth.test(entry.name)) {
     continue;
   }
   const bytes = readFileSync(path);

@@ -31,5 +31,24 @@ self.addEventListener("fetch", (event) => {
     );
     return;
   }
+  // The start screen and the guide are not in FILES (the first visit
+  // does not fetch them all): each is kept when first fetched, and a
+  // fresh copy is asked for while online.
+  const path = new URL(request.url).pathname;
+  if (path.startsWith("/start/") || path.startsWith("/guide/")) {
+    event.respondWith(
+      caches.open(CACHE).then((cache) =>
+        fetch(request)
+          .then((response) => {
+            if (response.ok) {
+              cache.put(request, response.clone());
+            }
+            return response;
+          })
+          .catch(() => cache.match(request).then((hit) => hit || Response.error())),
+      ),
+    );
+    return;
+  }
   event.respondWith(caches.match(request).then((hit) => hit || fetch(request)));
 });

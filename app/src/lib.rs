@@ -11,6 +11,7 @@ pub mod examples;
 pub mod i18n;
 pub mod machines;
 pub mod sim;
+pub mod start;
 pub mod state;
 pub mod storage;
 pub mod workbench;
@@ -45,6 +46,8 @@ pub fn start() {
         return;
     }
     let ctx = page();
+    // Asked before anything is restored or opened (which may save).
+    ctx.start.open.set(start::first_visit());
     let workspaces = Workspaces::restore(ctx);
     editor::shared::open_from_location(ctx, workspaces.ladders);
     // A link pasted into the address bar of the open page.
@@ -186,7 +189,12 @@ pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
                     {move || ctx.notice.get().unwrap_or_default()}
                 </div>
             </Show>
+            // On a phone the tour's card stands in the page's flow, above
+            // the ladder; elsewhere it floats beside it.
+            <start::tour::Tour />
             {move || workspaces.view(ctx.machine.get())}
+            <start::screen::StartScreen />
+            <start::guide::Guide />
         </ErrorBoundary>
     }
 }

@@ -11,6 +11,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
+from conftest import as_returning_user
 from test_app import el, on, open_fresh, wait
 from test_ladder import focus_ladder, place
 
@@ -22,7 +23,7 @@ SCREENS = {
 }
 
 
-def screen_driver(tmp_path, name):
+def screen_driver(tmp_path, name, first_visit=False):
     width, height, touch = SCREENS[name]
     options = webdriver.ChromeOptions()
     options.binary_location = "/usr/bin/chromium"
@@ -37,6 +38,8 @@ def screen_driver(tmp_path, name):
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     drv = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
     drv.set_page_load_timeout(30)
+    if not first_visit:
+        as_returning_user(drv)
     return drv
 
 
@@ -80,6 +83,9 @@ def tap_entry(driver, palette, device):
     el(driver, palette).click()
     chips = wait(driver, lambda: [b for b in driver.find_elements(
         By.CSS_SELECTOR, '[data-testid="device-options"] button') if b.text.split()[0] == device])
+    # In the middle of the screen, clear of the sticky strip as a user
+    # would scroll it.
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", chips[0])
     chips[0].click()
     el(driver, "device-ok").click()
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="device-input"]'))

@@ -203,11 +203,24 @@ fn ColouringToggle() -> impl IntoView {
     }
 }
 
-/// Help: the keys.
+/// Help: the guide, the start screen, the guided first rung, the keys.
 #[component]
 fn HelpMenu(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let s = move || ctx.page.lang.get().start();
+    let start = ctx.page.start;
     view! {
+        <button type="button" data-testid="help-guide" on:click=move |_| start.open_guide("")>
+            {move || s().guide}
+        </button>
+        <button type="button" data-testid="help-start" on:click=move |_| start.open.set(true)>
+            {move || s().start_again}
+        </button>
+        <button type="button" data-testid="help-tour" on:click=move |_| {
+            start.tour.set(Some(crate::start::steps::Step::Intro));
+        }>
+            {move || s().tour_label}
+        </button>
         <button type="button" data-testid="keys" on:click=move |_| ctx.panes.help.update(|h| *h = !*h)>
             {move || t().keys}
         </button>

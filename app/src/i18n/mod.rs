@@ -3,6 +3,7 @@
 
 mod en;
 mod ja;
+pub mod start;
 
 use en::EN;
 use ja::JA;
@@ -48,6 +49,14 @@ impl Lang {
         match self {
             Lang::Ja => &JA,
             Lang::En => &EN,
+        }
+    }
+
+    /// The start screen's, the tour's and the guide's strings (issue #47).
+    pub const fn start(self) -> &'static start::StartTexts {
+        match self {
+            Lang::Ja => &start::JA,
+            Lang::En => &start::EN,
         }
     }
 }

@@ -58,6 +58,9 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
                 <div class="dock-tabs" role="tablist" aria-label=move || t().tools_dock>
                     {tabs}
                 </div>
+                <crate::start::guide::GuideLink section=Signal::derive(move || {
+                    crate::start::guide::section_of(docks.tool.get(), machine)
+                }) />
                 <button type="button" class="dock-collapse" data-testid="dock-bottom-toggle"
                         aria-expanded=move || open().to_string()
                         title=move || if open() { t().dock_collapse } else { t().dock_expand }
@@ -111,6 +114,7 @@ pub fn RightDock(children: Children) -> impl IntoView {
                 on:click=move |_| docks.resize(|s| s.right_open = !s.right_open)>
                 {move || if open() { "▸" } else { "◂" }}
             </button>
+            <crate::start::guide::GuideLink section=Signal::derive(move || ctx.machine.get().name()) />
             <div class="dock-right-body">{children()}</div>
         </aside>
     }

@@ -27,6 +27,10 @@ pub struct Capabilities {
     pub data_boxes: bool,
     /// The device names, for the palette and error messages.
     pub devices: &'static str,
+    /// The devices a first rung uses (the guided first rung, issue #47):
+    /// a start input, a stop input and an output, as the machine's
+    /// documents name its first switches and lamp.
+    pub starter: [&'static str; 3],
 }
 
 const ALL_CONTACTS: &[ContactKind] = &[
@@ -53,6 +57,7 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             timer_counter_coils: false,
             data_boxes: false,
             devices: "X00-X07, Y00-Y07, M00-M07, M10-M13, T0, T1, C0, C0R",
+            starter: ["X00", "X01", "Y00"],
         },
         MachineId::Io86a => Capabilities {
             contacts: ALL_CONTACTS,
@@ -62,6 +67,7 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             timer_counter_coils: true,
             data_boxes: true,
             devices: "X00-X07, Y00-Y05, M00-M63, S00-S07, T00-T31, C00-C07, D00-D07, K",
+            starter: ["X00", "X01", "Y00"],
         },
         MachineId::AvrPlc => Capabilities {
             contacts: ALL_CONTACTS,
@@ -71,6 +77,7 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             timer_counter_coils: false,
             data_boxes: false,
             devices: "R0.0-R31.7",
+            starter: ["R0.0", "R0.1", "R1.0"],
         },
         MachineId::ArduinoPlc => Capabilities {
             contacts: &[ContactKind::No, ContactKind::Nc],
@@ -80,6 +87,7 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             timer_counter_coils: false,
             data_boxes: false,
             devices: "X000-X005, Y000-Y005",
+            starter: ["X000", "X001", "Y000"],
         },
         MachineId::SoftPlc => Capabilities {
             contacts: ALL_CONTACTS,
@@ -89,6 +97,7 @@ pub const fn capabilities(machine: MachineId) -> Capabilities {
             timer_counter_coils: false,
             data_boxes: false,
             devices: "%IX0.0, %QX0.0, %MX0.0 or a name",
+            starter: ["%IX0.0", "%IX0.1", "%QX0.0"],
         },
     }
 }

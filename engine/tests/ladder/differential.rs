@@ -548,3 +548,54 @@ fn the_live_colours_are_the_machines_own_on_every_machine() {
         property(machine, 200, check_colours);
     }
 }
+
+/// The guided first rung's devices (issue #47, `Capabilities::starter`):
+/// the self-hold the tour asks for, drawn with them, runs on each machine
+/// as the reference runs it, and the reference latches and releases.
+#[test]
+fn each_machines_first_rung_devices_run_a_self_hold() {
+    use engine::ladder::edit::{Cursor, Edit, Editor};
+    use engine::ladder::Element;
+    for machine in MachineId::ALL {
+        let [start, stop, out] = engine::ladder::target::capabilities(machine).starter;
+        assert_eq!(&pool(machine).inputs[..2], &[start, stop], "{machine:?}");
+        let mut editor = Editor::new(Ladder::default());
+        let edits = [
+            Edit::Place {
+                at: Cursor::new(0, 0, 0),
+                element: Element::no(start),
+            },
+            Edit::Place {
+                at: Cursor::new(0, 0, 1),
+                element: Element::nc(stop),
+            },
+            Edit::Place {
+                at: Cursor::new(0, 0, 2),
+                element: Element::coil(out),
+            },
+            Edit::PlaceBranch {
+                at: Cursor::new(0, 1, 0),
+                element: Element::no(out),
+            },
+        ];
+        for edit in edits {
+            editor.apply(edit).expect("the edit applies");
+        }
+        let logic = editor.ladder().logic(machine).expect("the self-hold reads");
+        // Idle, start, let go, stop, let go.
+        let timeline: Vec<Vec<bool>> = [
+            (false, false),
+            (true, false),
+            (false, false),
+            (false, true),
+            (false, false),
+        ]
+        .iter()
+        .map(|&(a, b)| vec![a, b, false, false])
+        .collect();
+        assert_eq!(check(machine, &logic, &timeline), Ok(true), "{machine:?}");
+        let mut seen = Vec::new();
+        reference_run(machine, logic, &timeline, |r, _| seen.push(r.get(out))).expect("it runs");
+        assert_eq!(seen, [false, true, true, false, false], "{machine:?}");
+    }
+}

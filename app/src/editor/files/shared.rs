@@ -14,7 +14,7 @@ use crate::editor::{LadderCtx, Ladders};
 use crate::state::Ctx;
 
 /// The fragment of the page's URL, without `#`, when it has one.
-fn location_fragment() -> Option<String> {
+pub fn location_fragment() -> Option<String> {
     let hash = web_sys::window()?.location().hash().ok()?;
     let fragment = hash.strip_prefix('#').unwrap_or(&hash).to_string();
     (!fragment.is_empty()).then_some(fragment)
