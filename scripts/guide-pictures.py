@@ -21,8 +21,10 @@ are reduced to a 64-colour palette (the page's flat colours survive it).
 """
 
 import argparse
+import html.parser
 import io
 import pathlib
+import re
 import sys
 import time
 
@@ -63,6 +65,8 @@ class Page:
         self.d.get(url)
         self.d.execute_script(
             "localStorage.clear(); localStorage.setItem('hashigo.lang', arguments[0]);"
+            # The start screen a fresh profile sees, closed as once used.
+            "localStorage.setItem('hashigo.start', 'closed');"
             "if (arguments[1]) localStorage.setItem('hashigo.docks', arguments[1]);", lang, docks)
         self.d.get(url)
         self.wait(lambda: self.find("run"), "the page mounts")
@@ -148,6 +152,18 @@ class Page:
             "return [r.left, r.top, Math.min(r.right, innerWidth), Math.min(r.bottom, innerHeight)];",
             self.el(testid))
         return (r[0] - pad, r[1] - pad, r[2] + pad, r[3] + pad)
+
+    def content_box(self, testid, pad=4):
+        """The box around what the element shows (its innermost elements),
+        cut to the window: a dock's panel without the dock's empty rest."""
+        r = self.d.execute_script(
+            "const e = arguments[0], o = e.getBoundingClientRect(); let right = o.left, bottom = o.top;"
+            "for (const c of e.querySelectorAll('*')) { if (c.children.length) continue;"
+            "  const b = c.getBoundingClientRect(); if (!b.width || !b.height) continue;"
+            "  right = Math.max(right, b.right); bottom = Math.max(bottom, b.bottom); }"
+            "return [o.left, o.top, Math.min(right, innerWidth), Math.min(bottom, innerHeight)];",
+            self.el(testid))
+        return (r[0], r[1], r[2] + pad, r[3] + pad)
 
     def stack(self, path, boxes, gap=8):
         """Several boxes of the screen, one under the other, as one picture."""
@@ -269,11 +285,30 @@ def why(p, path):
     p.stack(path, [rung_box(p), p.box("why-panel", 4)])
 
 
+# The book's test program with its five cases as a share link:
+# `hashigo share --program engine/programs/minasec-u/seed-test.json`. (Opened
+# with File > Open, the page of this release shows the ladder but not its
+# cases; opened as a link, the cases run with the board's settings until
+# the link is kept.)
+SEED_LINK = (
+    "2.lVNNb9NAEHXs2pVa0RaEOACV5gaHdDW7bRpaxAVL_ADwAY5WusarOnbk2YL498zsOhRKe2gO0cybjzfv2U6ytMRUY1rhjl"
+    "aa0kqnmvLsK2JOvh49R3qH_LDhwOyvhpvew6qz9Zh9Q9wdb_re9d851k9ibbT1qrVX-dsvMg28Zw4yzpG-BJ6BduiuCJwn2z"
+    "Uw9GmWClsmRIUsnaXhP5mpT51bXdsRfrauszBxXUKFEtMEVxocwdA0sywMZiyhYDnJCVe8W1vigTfc0Z9I9h7kwLDDkYVwNA"
+    "F7wL8KC9GfFOwJ8z8rg6J17UURdPV6M-OuEuVMneyXt2YwLv4UWYmfkySP1r1AtaC5OKD3UC1jiHvZobjwARBqD6jO6JXkcg"
+    "1Lcr51fUCVQnVOr6XG234RaGjGYQ2yCfwABmm3iQY9RPSyurNXc59Smluk1NRd96dkQsmod_Tf1CnfodSpuqDp-TO7xgdIi4"
+    "MS1Q-Wp0WeocMpvQgp0gFbtxXP6dG2OwJmW9dTehzqkwEYHTA6GnBGz8ObdW3thpF2eprz-w8zAdQMmoUyMWaPgvn_OhGMWP"
+    "DHcHxr_pZa4EC-vHv6OeXhVfj4GHoT6kbQZUQNo-nTaXXcvGTOo79tk9bf"
+)
+
+
 def tests(p, path):
-    p.example("seed-test")
+    p.d.get(p.url + "#" + SEED_LINK)
+    p.wait(lambda: p.d.find_elements(By.CSS_SELECTOR, '[data-kind="coil"][data-device="C0R"]'), "the link opens")
+    time.sleep(1)
+    p.click("shared-keep", 1.0)  # its settings (the book's pots and preset) apply only once kept
     p.tab("tests")
     p.click("run-tests", 3.0)
-    p.wait(lambda: "5" in p.el("tests-summary").text, "the book's five cases run")
+    p.wait(lambda: p.el("tests-summary").text.strip().startswith("5"), "the book's five cases run")
     p.crop(path, box=p.box("dock-bottom", 0))
 
 
@@ -292,23 +327,32 @@ def listing(p, path):
     p.self_hold()
     p.tab("listing")
     time.sleep(0.5)
-    p.crop(path, box=p.box("dock-bottom", 0))
+    dock, listed = p.box("dock-bottom", 0), p.box("il-listing", 8)
+    p.crop(path, box=(dock[0], dock[1], dock[2], listed[3]))
 
 
 def cpu(p, path):
     p.example("seed-test")
     p.tab("cpu")
-    time.sleep(0.5)
+    p.click("cpu-view-open", 0.5)
+    for _ in range(3):  # a few edges in, so that blocks are lit
+        p.click("cpu-step-edge", 0.2)
     p.crop(path, box=p.box("cpu-view", 2))
 
 
-def machine_panel(machine, example):
+def machine_panel(machine, example, press):
+    """The machine's panel running its example, the inputs `press`
+    (testid prefixes: the first element matching each) switched on."""
     def scene(p, path):
         p.machine(machine)
         if example:
             p.example(example)
         p.click("run", 1.2)
-        p.crop(path, box=p.box("dock-right", 0))
+        for prefix in press:
+            p.d.find_element(By.CSS_SELECTOR, f'[data-testid^="{prefix}"]').click()
+            time.sleep(0.4)
+        time.sleep(0.8)
+        p.crop(path, box=p.content_box("dock-right"))
     return scene
 
 
@@ -325,19 +369,106 @@ SCENES = [
     ("why", True, why, 300),
     ("tests", True, tests, 430),
     ("listing", True, listing, 300),
-    ("cpu", True, cpu, 560),
-    ("io86a", True, machine_panel("io86a", "timer"), None),
-    ("avr-plc", True, machine_panel("avr-plc", "self-hold"), None),
-    ("arduino-plc", True, machine_panel("arduino-plc", "self-hold"), None),
-    ("soft-plc", True, machine_panel("soft-plc", "parts"), None),
+    ("cpu", True, cpu, 640),
+    ("io86a", True, machine_panel("io86a", "timer", ["io86a-input-X00"]), None),
+    ("avr-plc", True, machine_panel("avr-plc", "self-hold", ["avr-input-R4.0", "avr-input-R4.1"]), None),
+    ("arduino-plc", True, machine_panel("arduino-plc", "self-hold", ["arduino-input-X000"]), None),
+    ("soft-plc", True, machine_panel("soft-plc", "parts", ["soft-input-IX0-0"]), None),
 ]
+
+
+# The sections the page's panes link to, in both languages.
+SECTION_IDS = ["start", "drawing", "running", "forcing", "stepping", "time-travel", "watch", "chart", "why",
+               "tests", "sharing", "files", "listing", "variables", "program", "cpu", "machines",
+               "minasec-u", "io86a", "avr-plc", "arduino-plc", "soft-plc"]
+
+
+class Fragment(html.parser.HTMLParser):
+    """What the check needs from a guide file: ids, links, images, and
+    anything the page's CSP or its guide panel would not take."""
+
+    def __init__(self):
+        super().__init__()
+        self.ids, self.links, self.images, self.bad, self.roots = [], [], [], [], []
+        self.depth = 0
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if self.depth == 0:
+            self.roots.append((tag, a.get("class"), a.get("lang")))
+        if tag not in ("img", "br", "hr"):
+            self.depth += 1
+        if tag in ("script", "style", "html", "head", "body", "iframe"):
+            self.bad.append(f"<{tag}>")
+        self.bad += [f"{name}= on <{tag}>" for name in a if name == "style" or name.startswith("on")]
+        if "id" in a:
+            self.ids.append(a["id"])
+        if tag == "a" and a.get("href", "").startswith("#"):
+            self.links.append(a["href"][1:])
+        if tag == "img":
+            self.images.append(a)
+
+    def handle_endtag(self, tag):
+        self.depth -= 1
+
+
+def check_guide(fix_sizes=False):
+    """Checks web/guide/{en,ja}.html (one root article, the sections' ids,
+    the same ids in both, links that land, no inline script or style, each
+    picture there with its alt, width and height); with fix_sizes, writes
+    each picture's real size into its width and height first."""
+    problems = []
+    ids = {}
+    for lang in ["en", "ja"]:
+        path = ROOT / "web" / "guide" / f"{lang}.html"
+        text = path.read_text()
+        if fix_sizes:
+            def sized(m):
+                file = ROOT / "web" / m.group(2)
+                if not file.exists():
+                    return m.group(0)
+                w, h = Image.open(file).size
+                return f'{m.group(1)}width="{w}" height="{h}"'
+            text = re.sub(r'(<img src="(guide/img/[^"]+)" alt="[^"]*" )width="\d+" height="\d+"', sized, text)
+            path.write_text(text)
+        f = Fragment()
+        f.feed(text)
+        if f.roots != [("article", "guide-doc", lang)]:
+            problems.append(f"{lang}: one root <article class=guide-doc lang={lang}>, not {f.roots}")
+        problems += [f"{lang}: {b}" for b in f.bad]
+        problems += [f"{lang}: no section #{i}" for i in SECTION_IDS if i not in f.ids]
+        problems += [f"{lang}: #{i} twice" for i in set(f.ids) if f.ids.count(i) > 1]
+        # A share link (an exercise) is written `./#2.…`, so the guide's panel,
+        # which scrolls to `#section` links, leaves it to the page.
+        problems += [f"{lang}: a link to #{i}, which is not there" for i in f.links
+                     if i not in f.ids and not re.match(r"\d+\.", i)]
+        if "guide-toc" not in text:
+            problems.append(f"{lang}: no nav.guide-toc")
+        for img in f.images:
+            file = ROOT / "web" / img.get("src", "")
+            if not img.get("src", "").startswith("guide/img/") or not file.exists():
+                problems.append(f"{lang}: no picture {img.get('src')}")
+            elif (int(img.get("width", 0)), int(img.get("height", 0))) != Image.open(file).size:
+                problems.append(f"{lang}: {img['src']} is {Image.open(file).size}, not its width and height")
+            if not img.get("alt"):
+                problems.append(f"{lang}: {img.get('src')} has no alt")
+        ids[lang] = f.ids
+    if ids["en"] != ids["ja"]:
+        problems.append("en and ja do not have the same ids in the same order")
+    return problems
 
 
 def main():
     args = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     args.add_argument("--url", default="http://127.0.0.1:8150/")
     args.add_argument("--only", default="", help="comma-separated scene names (workbench for the README's)")
+    args.add_argument("--check", action="store_true", help="only check the guide's files, take no picture")
     args = args.parse_args()
+    if args.check:
+        problems = check_guide()
+        for problem in problems:
+            print(problem, file=sys.stderr)
+        return 1 if problems else 0
     only = set(filter(None, args.only.split(",")))
     failed = []
     jobs = [("workbench", None, workbench, DOCS_IMG / "workbench.png", False, None)]
@@ -357,6 +488,7 @@ def main():
             failed.append(f"{path.name}: {e}")
         finally:
             page.quit()
+    failed += check_guide(fix_sizes=True)
     for f in failed:
         print("failed:", f, file=sys.stderr)
     return 1 if failed else 0
