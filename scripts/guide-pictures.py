@@ -153,16 +153,23 @@ class Page:
             self.el(testid))
         return (r[0] - pad, r[1] - pad, r[2] + pad, r[3] + pad)
 
-    def content_box(self, testid, pad=4):
-        """The box around what the element shows (its innermost elements),
-        cut to the window: a dock's panel without the dock's empty rest."""
+    def content_box(self, testid, pad=4, css=None):
+        """The box around what the element (or the one `css` selects)
+        shows, its innermost elements, cut to the window: a dock's panel
+        without the dock's empty rest."""
+        element = self.d.find_element(By.CSS_SELECTOR, css) if css else self.el(testid)
         r = self.d.execute_script(
             "const e = arguments[0], o = e.getBoundingClientRect(); let right = o.left, bottom = o.top;"
-            "for (const c of e.querySelectorAll('*')) { if (c.children.length) continue;"
-            "  const b = c.getBoundingClientRect(); if (!b.width || !b.height) continue;"
+            "const shows = (c) => /^(INPUT|BUTTON|TEXTAREA|SELECT|IMG|svg|CANVAS)$/.test(c.tagName)"
+            "  || [...c.childNodes].some(n => n.nodeType === 3 && n.textContent.trim());"
+            "for (const c of e.querySelectorAll('*')) { if (!shows(c)) continue;"
+            "  const r = document.createRange(); r.selectNodeContents(c);"
+            "  const b = /^(INPUT|BUTTON|TEXTAREA|SELECT|IMG|svg|CANVAS)$/.test(c.tagName)"
+            "    ? c.getBoundingClientRect() : r.getBoundingClientRect();"
+            "  if (!b.width || !b.height) continue;"
             "  right = Math.max(right, b.right); bottom = Math.max(bottom, b.bottom); }"
             "return [o.left, o.top, Math.min(right, innerWidth), Math.min(bottom, innerHeight)];",
-            self.el(testid))
+            element)
         return (r[0], r[1], r[2] + pad, r[3] + pad)
 
     def stack(self, path, boxes, gap=8):
@@ -246,7 +253,7 @@ def watch_forces(p, path):
         p.click("watch-add", 0.2)
     p.el("cell-0-0-0").click()  # X00's contact: held on from the ladder
     time.sleep(0.8)
-    p.stack(path, [rung_box(p), p.box("dock-bottom", 0)])
+    p.stack(path, [rung_box(p), p.content_box(None, 8, '[data-dock-panel="watch"]')])
 
 
 def travel(p, path):
@@ -282,7 +289,7 @@ def why(p, path):
     p.keys("w")
     p.tab("why")
     time.sleep(0.8)
-    p.stack(path, [rung_box(p), p.box("why-panel", 4)])
+    p.stack(path, [rung_box(p), p.content_box("why-panel", 8)])
 
 
 # The book's test program with its five cases as a share link:
@@ -327,8 +334,7 @@ def listing(p, path):
     p.self_hold()
     p.tab("listing")
     time.sleep(0.5)
-    dock, listed = p.box("dock-bottom", 0), p.box("il-listing", 8)
-    p.crop(path, box=(dock[0], dock[1], dock[2], listed[3]))
+    p.crop(path, box=p.content_box(None, 8, '[data-dock-panel="listing"]'))
 
 
 def cpu(p, path):
