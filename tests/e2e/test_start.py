@@ -223,3 +223,15 @@ def test_after_one_visit_the_guide_opens_offline(driver, artifacts):
     # The start screen is kept with the page too.
     el(driver, "help-start").click()
     wait(driver, lambda: shown(driver, "start-draw"), message="the start screen, offline")
+
+
+@pytest.mark.first_visit
+def test_an_exercise_opens_from_the_start_screen(driver, base_url):
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-exercise"))
+    el(driver, "start-exercise").click()
+    wait(driver, lambda: shown(driver, "start-exercise-0"))
+    el(driver, "start-exercise-0").click()
+    wait(driver, lambda: el(driver, "dock-tab-tests", reveal=False).get_attribute("aria-selected") == "true",
+         message="the exercise opens with its tests shown")
+    assert not shown(driver, "start")

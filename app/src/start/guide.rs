@@ -31,8 +31,13 @@ pub fn Guide() -> impl IntoView {
     Effect::new(move |_| {
         let section = start.guide.get();
         let loaded = fetched.with(|f| matches!(f, Fetched::Text(_)));
-        if let (Some(section), true, Some(root)) = (section, loaded, body.get()) {
-            scroll_to(&root, &section);
+        if let (Some(section), true) = (section, loaded) {
+            // After the text is drawn into the page.
+            request_animation_frame(move || {
+                if let Some(root) = body.get_untracked() {
+                    scroll_to(&root, &section);
+                }
+            });
         }
     });
     let html = move || match fetched.get() {
