@@ -172,6 +172,14 @@ def test_escape_leaves_the_tour_at_any_step(driver, base_url):
     assert el(driver, "cell-0-0-0").get_attribute("data-device") == "X00"
 
 
+def section_in_view(driver, section):
+    return driver.execute_script(
+        "const g = document.querySelector('[data-testid=guide]').getBoundingClientRect();"
+        "const s = document.querySelector('[data-testid=guide] [id=' + arguments[0] + ']');"
+        "if (!s) return false; const b = s.getBoundingClientRect();"
+        "return b.top >= g.top - 1 && b.top < g.top + g.height / 2;", section)
+
+
 def guide_lang(driver):
     return driver.execute_script(
         "const a = document.querySelector('[data-testid=guide] article'); return a && a.lang")
@@ -192,13 +200,10 @@ def test_help_opens_the_guide_in_both_languages_and_a_pane_opens_its_section(dri
     link = driver.find_element(By.CSS_SELECTOR, '.dock-bottom [data-testid="guide-link"]')
     assert link.get_attribute("data-section") == "tests"
     link.click()
-    wait(driver, lambda: driver.execute_script(
-        "const g = document.querySelector('[data-testid=guide]').getBoundingClientRect();"
-        "const s = document.querySelector('[data-testid=guide] [id=tests]');"
-        "if (!s) return false; const b = s.getBoundingClientRect();"
-        "return b.top >= g.top - 1 && b.top < g.top + g.height / 2;"), message="the tests section in view")
+    wait(driver, lambda: section_in_view(driver, "tests"), message="the tests section in view")
     Select(el(driver, "lang")).select_by_value("ja")
     wait(driver, lambda: guide_lang(driver) == "ja", message="the Japanese guide")
+    wait(driver, lambda: section_in_view(driver, "tests"), message="still at the tests section")
     driver.save_screenshot(str(artifacts / "start-guide-ja.png"))
 
 
@@ -234,4 +239,19 @@ def test_an_exercise_opens_from_the_start_screen(driver, base_url):
     el(driver, "start-exercise-0").click()
     wait(driver, lambda: el(driver, "dock-tab-tests", reveal=False).get_attribute("aria-selected") == "true",
          message="the exercise opens with its tests shown")
+    assert not shown(driver, "start")
+
+
+@pytest.mark.first_visit
+def test_open_a_file_from_the_start_screen_asks_for_the_file(driver, base_url):
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-open"))
+    # The browser's file chooser cannot be driven; the click that opens it
+    # is caught instead.
+    driver.execute_script(
+        "document.querySelector('[data-testid=open-file]').addEventListener('click',"
+        " (e) => { window.fileAsked = true; e.preventDefault(); });")
+    el(driver, "start-open").click()
+    wait(driver, lambda: driver.execute_script("return window.fileAsked === true"),
+         message="the File menu's file input is asked for a file")
     assert not shown(driver, "start")

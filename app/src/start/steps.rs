@@ -3,7 +3,7 @@
 //! running machine shows. The tour view only asks these.
 
 use engine::ladder::target::{capabilities, check_device};
-use engine::ladder::{CoilKind, ContactKind, Element, Ladder};
+use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Net};
 use engine::MachineId;
 
 /// A step of the tour, in order.
@@ -168,31 +168,55 @@ pub fn under_start(machine: MachineId, ladder: &Ladder) -> Option<engine::ladder
     })
 }
 
-/// Whether the ladder, run by the reference evaluator, is a start/stop
-/// self-hold: start latches the output, letting go keeps it, stop drops
-/// it and it stays dropped. Drawn any way that behaves so, it counts.
+/// Whether the ladder holds a start/stop self-hold: a rung whose coil is
+/// the output and whose contacts, on the start, the stop and the output
+/// only, conduct exactly when (start or output) and not stop. Judged by
+/// the rung's truth table, so any drawing that behaves so counts.
 pub fn holds(machine: MachineId, ladder: &Ladder, d: &Devices) -> bool {
-    let Ok(logic) = ladder.logic(machine) else {
+    let Ok(rungs) = ladder.logic(machine) else {
         return false;
     };
-    let Ok(mut run) = engine::ladder::eval::Reference::new(logic, 10) else {
-        return false;
-    };
-    // (start, stop) for a scan, and the output expected after it.
-    let sequence = [
-        (false, false, false),
-        (true, false, true),
-        (false, false, true),
-        (false, true, false),
-        (false, false, false),
-        (true, true, false),
-    ];
-    sequence.iter().all(|&(start, stop, out)| {
-        run.set(&d.start, start);
-        run.set(&d.stop, stop);
-        run.scan();
-        run.get(&d.out) == out
+    let is = |drawn: &str, wanted: &str| drawn.eq_ignore_ascii_case(wanted);
+    rungs.iter().any(|rung| {
+        let drives = rung.outputs.iter().any(|(e, _)| {
+            matches!(e, Element::Coil { kind: CoilKind::Normal, device } if is(device, &d.out))
+        });
+        drives
+            && (0..8u8).all(|bits| {
+                let (start, stop, out) = (bits & 1 != 0, bits & 2 != 0, bits & 4 != 0);
+                let value = |device: &str| {
+                    if is(device, &d.start) {
+                        Some(start)
+                    } else if is(device, &d.stop) {
+                        Some(stop)
+                    } else if is(device, &d.out) {
+                        Some(out)
+                    } else {
+                        None
+                    }
+                };
+                conducts(&rung.condition, &value) == Some((start || out) && !stop)
+            })
     })
+}
+
+/// Whether `net` conducts with the devices at `value`; `None` when it
+/// holds anything but contacts on those devices.
+fn conducts(net: &Net, value: &dyn Fn(&str) -> Option<bool>) -> Option<bool> {
+    match net {
+        Net::Leaf(Element::Contact { kind, device }, _) => match kind {
+            ContactKind::No => value(device),
+            ContactKind::Nc => value(device).map(|on| !on),
+            _ => None,
+        },
+        Net::Leaf(..) => None,
+        Net::Series(parts) => parts
+            .iter()
+            .try_fold(true, |all, p| Some(conducts(p, value)? && all)),
+        Net::Parallel(parts) => parts
+            .iter()
+            .try_fold(false, |any, p| Some(conducts(p, value)? || any)),
+    }
 }
 
 #[cfg(test)]
@@ -260,6 +284,19 @@ mod tests {
                 "{machine:?}"
             );
         }
+    }
+
+    #[test]
+    fn a_branch_around_the_stop_contact_does_not_hold() {
+        let m = MachineId::MinasecU;
+        let ladder = drawn(&[
+            (Cursor::new(0, 0, 0), Element::no("X00"), false),
+            (Cursor::new(0, 0, 1), Element::nc("X01"), false),
+            (Cursor::new(0, 0, 2), Element::coil("Y00"), false),
+            (Cursor::new(0, 1, 1), Element::no("Y00"), true),
+        ]);
+        assert!(done(Step::Coil, m, &ladder, Running::default()));
+        assert!(!done(Step::Hold, m, &ladder, Running::default()));
     }
 
     #[test]
