@@ -202,7 +202,7 @@ impl Data {
 
     /// The integer, widened (`None` for BOOL, REAL, TIME, STRING).
     #[inline]
-    pub(super) fn int(&self) -> Option<i128> {
+    pub(crate) fn int(&self) -> Option<i128> {
         match *self {
             Data::Int(t, v) if !t.is_signed() => Some(i128::from(v as u64 & mask(t))),
             Data::Int(_, v) => Some(i128::from(v)),

@@ -213,7 +213,7 @@ pub fn string_value(text: impl Into<String>) -> Result<Data, LiteralError> {
 }
 
 /// `v` as type `t` if it is within its range.
-pub(super) fn in_range(t: DataType, v: i128) -> Option<Data> {
+pub(crate) fn in_range(t: DataType, v: i128) -> Option<Data> {
     let (lo, hi) = t.range()?;
     (lo..=hi).contains(&v).then(|| Data::integer(t, v))
 }

@@ -1,43 +1,12 @@
-//! The standard blocks' parameters by name, and one instance's state
-//! with the inputs it keeps between calls (IEC: an input not given in a
-//! call keeps its last value).
+//! The standard blocks' parameters by name (IEC 61131-3's timers,
+//! counters, edges and bistables, and LDmicro's elements run as blocks:
+//! [`ldmicro`]): what every layer asks of a block's signature, from the
+//! ladder's drawing to the soft PLC's loader. Their runtime is
+//! `crate::runtime`.
 
-use super::blocks::{Ctd, Ctu, Ctud, FTrig, Limits, RTrig, Rs, Sr, Tof, Ton, Tp};
-use super::data::{Data, DataType};
+pub mod ldmicro;
 
-/// One instance of a standard block.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Instance {
-    pub state: State,
-    /// A counter's count type (INT for other blocks).
-    count: DataType,
-    /// Its inputs' values, in the order of [`inputs`].
-    pub inputs: Vec<Data>,
-    /// Its text input's value, fixed at load (an LDmicro formatted
-    /// string's, [`super::ld_blocks::text_input`]).
-    pub format: Option<std::sync::Arc<super::ld_format::Format>>,
-    /// LDmicro's STRING's C format, fixed at load like `format`, and
-    /// what it gave out last (boxed: most blocks have none, and a scan
-    /// walks the instances).
-    pub printing: Option<Box<Printing>>,
-}
-
-/// The state of each kind of block.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum State {
-    Ton(Ton),
-    Tof(Tof),
-    Tp(Tp),
-    Ctu(Ctu),
-    Ctd(Ctd),
-    Ctud(Ctud),
-    RTrig(RTrig),
-    FTrig(FTrig),
-    Sr(Sr),
-    Rs(Rs),
-    /// One of LDmicro's elements ([`super::ld_blocks`]).
-    Ld(super::ld_blocks::LdBlock),
-}
+use super::data::DataType;
 
 /// A counter's kind and count type: `CTU` and `CTU_INT` count INT,
 /// `CTU_DINT` DINT … (CTD, CTUD alike); `None` for any other block.
@@ -57,7 +26,7 @@ pub fn counter(block: &str) -> Option<(&'static str, DataType)> {
 pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
     use DataType::{Bool, Time};
     if block.starts_with("LD_") {
-        return super::ld_blocks::inputs(block);
+        return ldmicro::inputs(block);
     }
     match counter(block) {
         Some(("CTU", n)) => vec![("CU", Bool), ("R", Bool), ("PV", n)],
@@ -83,7 +52,7 @@ pub fn inputs(block: &str) -> Vec<(&'static str, DataType)> {
 pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
     use DataType::{Bool, Time};
     if block.starts_with("LD_") {
-        return super::ld_blocks::outputs(block);
+        return ldmicro::outputs(block);
     }
     match counter(block) {
         Some(("CTUD", n)) => vec![("QU", Bool), ("QD", Bool), ("CV", n)],
@@ -97,129 +66,38 @@ pub fn outputs(block: &str) -> Vec<(&'static str, DataType)> {
     }
 }
 
-/// LDmicro's STRING's format and its last text.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Printing {
-    pub printf: super::ld_printf::Printf,
-    printed: Data,
-}
+/// The standard function blocks a variable can be an instance of (and
+/// LDmicro's: [`is_block_type`]).
+pub const BLOCK_TYPES: [&str; 25] = [
+    "TON",
+    "TOF",
+    "TP",
+    "CTU",
+    "CTD",
+    "CTUD",
+    "R_TRIG",
+    "F_TRIG",
+    "SR",
+    "RS",
+    "CTU_INT",
+    "CTU_DINT",
+    "CTU_LINT",
+    "CTU_UDINT",
+    "CTU_ULINT",
+    "CTD_INT",
+    "CTD_DINT",
+    "CTD_LINT",
+    "CTD_UDINT",
+    "CTD_ULINT",
+    "CTUD_INT",
+    "CTUD_DINT",
+    "CTUD_LINT",
+    "CTUD_UDINT",
+    "CTUD_ULINT",
+];
 
-impl Printing {
-    /// A STRING printing `printf`, nothing printed yet.
-    pub fn new(printf: super::ld_printf::Printf) -> Printing {
-        Printing {
-            printf,
-            printed: DataType::String.zero(),
-        }
-    }
-}
-
-impl Instance {
-    /// A new instance of `block` (one [`super::vars::is_block_type`] knows).
-    pub fn new(block: &str) -> Instance {
-        let (base, count) = counter(block).unwrap_or((block, DataType::Int));
-        let limits = Limits::of(count);
-        let state = match base {
-            ld if ld.starts_with("LD_") => State::Ld(super::ld_blocks::LdBlock::new(ld)),
-            "TON" => State::Ton(Ton::default()),
-            "TOF" => State::Tof(Tof::default()),
-            "TP" => State::Tp(Tp::default()),
-            "CTU" => State::Ctu(Ctu::counting(limits)),
-            "CTD" => State::Ctd(Ctd::counting(limits)),
-            "CTUD" => State::Ctud(Ctud::counting(limits)),
-            "R_TRIG" => State::RTrig(RTrig::default()),
-            "F_TRIG" => State::FTrig(FTrig::default()),
-            "SR" => State::Sr(Sr::default()),
-            _ => State::Rs(Rs::default()),
-        };
-        Instance {
-            state,
-            count,
-            inputs: inputs(block).iter().map(|(_, t)| t.zero()).collect(),
-            format: None,
-            printing: None,
-        }
-    }
-
-    fn bool_in(&self, i: usize) -> bool {
-        matches!(self.inputs.get(i), Some(Data::Bool(true)))
-    }
-
-    /// Input `i` as a number: an integer's value (a ULINT's above 2^63
-    /// too), a TIME's nanoseconds.
-    fn word_in(&self, i: usize) -> i128 {
-        match self.inputs.get(i) {
-            Some(Data::Time(v)) => i128::from(*v),
-            Some(d) => d.int().unwrap_or(0),
-            None => 0,
-        }
-    }
-
-    /// Runs the block with its inputs at time `now` (ns); LDmicro's
-    /// serial blocks use `uart`.
-    pub fn call(&mut self, now: i64, uart: &mut super::uart::Uart) {
-        let (b0, b1, b2, b3) = (
-            self.bool_in(0),
-            self.bool_in(1),
-            self.bool_in(2),
-            self.bool_in(3),
-        );
-        let (w2, w4) = (self.word_in(2), self.word_in(4));
-        // A TIME's nanoseconds, or (LDmicro's STRING) an integer's bits.
-        let w1 = self.word_in(1) as i64;
-        match &mut self.state {
-            State::Ton(t) => t.call(b0, w1, now),
-            State::Tof(t) => t.call(b0, w1, now),
-            State::Tp(t) => t.call(b0, w1, now),
-            State::Ctu(c) => c.call(b0, b1, w2),
-            State::Ctd(c) => c.call(b0, b1, w2),
-            State::Ctud(c) => c.call(b0, b1, b2, b3, w4),
-            State::RTrig(t) => t.call(b0),
-            State::FTrig(t) => t.call(b0),
-            State::Sr(s) => s.call(b0, b1),
-            State::Rs(s) => s.call(b0, b1),
-            State::Ld(b) => {
-                b.call(
-                    &self.inputs,
-                    super::ld_blocks::Io {
-                        uart,
-                        format: self.format.as_deref(),
-                    },
-                );
-                if let Some(p) = self.printing.as_deref_mut().filter(|_| b.is_text()) {
-                    p.printed = match self.inputs.get(2) {
-                        Some(unpowered) if !b0 => unpowered.clone(),
-                        _ => Data::text(p.printf.print(w1)),
-                    };
-                }
-            }
-        }
-    }
-
-    /// Output `i` (in the order of [`outputs`]).
-    pub fn output(&self, i: usize) -> Data {
-        let int = |v: i128| Data::integer(self.count, v);
-        match (&self.state, i) {
-            (
-                State::Ton(Ton { q, .. }) | State::Tof(Tof { q, .. }) | State::Tp(Tp { q, .. }),
-                0,
-            ) => Data::Bool(*q),
-            (
-                State::Ton(Ton { et, .. }) | State::Tof(Tof { et, .. }) | State::Tp(Tp { et, .. }),
-                _,
-            ) => Data::Time(*et),
-            (State::Ctu(Ctu { q, .. }) | State::Ctd(Ctd { q, .. }), 0) => Data::Bool(*q),
-            (State::Ctu(Ctu { cv, .. }) | State::Ctd(Ctd { cv, .. }), _) => int(*cv),
-            (State::Ctud(c), 0) => Data::Bool(c.qu),
-            (State::Ctud(c), 1) => Data::Bool(c.qd),
-            (State::Ctud(c), _) => int(c.cv),
-            (State::RTrig(RTrig { q, .. }) | State::FTrig(FTrig { q, .. }), _) => Data::Bool(*q),
-            (State::Sr(Sr { q1 }) | State::Rs(Rs { q1 }), _) => Data::Bool(*q1),
-            (State::Ld(b), 1) if b.is_text() => self
-                .printing
-                .as_ref()
-                .map_or(Data::Bool(false), |p| p.printed.clone()),
-            (State::Ld(b), i) => b.output(i),
-        }
-    }
+/// Whether `name` (upper case) is a block a variable can be an instance
+/// of: a standard one, or one of LDmicro's ([`ldmicro::NAMES`]).
+pub fn is_block_type(name: &str) -> bool {
+    BLOCK_TYPES.contains(&name) || ldmicro::NAMES.contains(&name)
 }

@@ -1,7 +1,7 @@
 //! Each LDmicro element as the soft PLC's ladder has it (docs/ldmicro.md,
 //! "Elements"): contacts and coils as they are, one-shots as edge
 //! boxes, comparisons and arithmetic as the soft PLC's boxes, timers and
-//! counters as LDmicro's own blocks ([`crate::softplc::ld_blocks`]) on
+//! counters as LDmicro's own blocks ([`crate::runtime::ldmicro`]) on
 //! the variable of their name.
 
 use super::element::{is_number, number, CompareOp, Element as Ld, MathOp, OneShotKind, UnaryOp};

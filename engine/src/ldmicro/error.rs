@@ -53,9 +53,9 @@ pub enum LdError {
     /// simulated scan by scan (the element, why).
     NoScanMeaning(String, &'static str),
     /// A formatted string LDmicro's compiler refuses (why).
-    Format(crate::softplc::ld_format::FormatError),
+    Format(crate::runtime::ldmicro::format::FormatError),
     /// A STRING whose text is no C format of its one variable (why).
-    Printf(crate::softplc::ld_printf::PrintfError),
+    Printf(crate::runtime::ldmicro::printf::PrintfError),
     /// A timer whose delay is not a whole number of cycles above zero
     /// (the timer, its delay in µs, the cycle in µs, the adjust).
     TimerPeriod {

@@ -386,7 +386,7 @@ impl Writer {
 /// LDmicro saves it: its variable (or `(none)`), then its length and
 /// character codes.
 fn formatted_string(b: &BlockCall, head: &str, var: &str) -> Option<String> {
-    let text = crate::softplc::literal::parse_text(b.input("FMT")?).ok()?;
+    let text = crate::iec::literal::parse_text(b.input("FMT")?).ok()?;
     let var = if var.is_empty() { "(none)" } else { var };
     let codes: Vec<String> = text.chars().map(|c| u32::from(c).to_string()).collect();
     let line = format!("{head} {var} {} {}", codes.len(), codes.join(" "));

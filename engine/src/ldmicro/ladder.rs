@@ -3,7 +3,7 @@
 //! on the board's `%IX` switches and `Y…` outputs on its `%QX` lamps in
 //! the order of the file's `IO LIST`, other bits as BOOLs, every number
 //! a DINT, each timer's and counter's element an instance of LDmicro's
-//! block ([`crate::softplc::ld_blocks`]).
+//! block ([`crate::runtime::ldmicro`]).
 
 use std::collections::{BTreeMap, HashMap};
 
@@ -270,7 +270,7 @@ impl Making {
 /// The file with every name that is no IEC name (`Cnew1__`, `#PORTB`)
 /// given one (`Cnew1_1`), and what each new name was.
 fn iec_names(file: &LdFile) -> (LdFile, HashMap<String, String>) {
-    use crate::softplc::vars::is_identifier;
+    use crate::iec::is_identifier;
     let mut file = file.clone();
     // Every name, and those to give new ones in sorted order: the same
     // file, written out and read again, gives the same names.

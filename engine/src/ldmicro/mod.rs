@@ -6,7 +6,7 @@
 //! - [`element`]: one variant per kind of element line;
 //! - [`parse`](mod@parse): the reader, every problem at its line;
 //! - [`to_ladder`]: the file as a soft PLC ladder, LDmicro's timers and
-//!   counters as its blocks ([`crate::softplc::ld_blocks`]).
+//!   counters as its blocks ([`crate::runtime::ldmicro`]).
 
 pub mod element;
 mod elements;

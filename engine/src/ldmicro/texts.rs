@@ -8,7 +8,7 @@ use super::error::LdError;
 use super::parts::{ld_box, operand, Part};
 use crate::ladder::element::Element;
 use crate::ladder::BlockCall;
-use crate::softplc::ld_printf::{Printf, PrintfError};
+use crate::runtime::ldmicro::printf::{Printf, PrintfError};
 
 /// `STRING dest var text` as `LD_STRING`: `dest := sprintf(text, var)`
 /// while powered, the text checked as a C format of the one variable.
@@ -26,7 +26,7 @@ pub(super) fn string(
         return Err(LdError::Printf(PrintfError::NoValue));
     }
     inputs.push(("D", dest.to_string()));
-    inputs.push(("FMT", crate::softplc::literal::text_literal(text)));
+    inputs.push(("FMT", crate::iec::literal::text_literal(text)));
     let out = vec![("D", dest.to_string())];
     Ok(ld_box("LD_STRING", instance("_str"), inputs, out))
 }
@@ -41,13 +41,13 @@ pub(super) fn serial(
         Ld::UartRecvAvail => ld_box("LD_UART_AVAIL", instance("_avail"), Vec::new(), Vec::new()),
         Ld::UartSendReady => ld_box("LD_UART_READY", instance("_ready"), Vec::new(), Vec::new()),
         Ld::FormattedString { var, text } => {
-            crate::softplc::ld_format::Format::for_element(text, !var.trim().is_empty())
+            crate::runtime::ldmicro::format::Format::for_element(text, !var.trim().is_empty())
                 .map_err(LdError::Format)?;
             let mut inputs = Vec::new();
             if !var.trim().is_empty() {
                 inputs.push(("V", operand(var)?));
             }
-            inputs.push(("FMT", crate::softplc::literal::text_literal(text)));
+            inputs.push(("FMT", crate::iec::literal::text_literal(text)));
             ld_box("LD_FMTSTR", instance("_fmt"), inputs, Vec::new())
         }
         other => return Err(LdError::NotYet(other.keyword().into())),

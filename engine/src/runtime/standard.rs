@@ -5,7 +5,7 @@
 //! counts are INT, as the standard's CTU, CTD and CTUD, or the type a
 //! typed counter names (CTU_DINT, CTUD_ULINT …).
 
-use super::data::DataType;
+use crate::iec::data::DataType;
 
 /// The least and greatest count of an INT counter.
 pub(super) const COUNT_MIN: i128 = i16::MIN as i128;

@@ -21,11 +21,11 @@
 
 use std::fmt;
 
-use super::address::{Address, AddressError};
-use super::data::{Data, DataType};
-use super::literal::{parse_literal, untyped_integer, LiteralError};
-use super::vars::is_identifier;
 use crate::error::Located;
+use crate::iec::address::{Address, AddressError};
+use crate::iec::data::{Data, DataType};
+use crate::iec::is_identifier;
+use crate::iec::literal::{parse_literal, untyped_integer, LiteralError};
 
 /// An IL operator.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -478,7 +478,7 @@ fn operands(word: &str, rest: &str, out: &mut Line) -> Result<(), IlError> {
 /// A name, an address or a literal.
 fn operand(text: &str) -> Result<Operand, IlError> {
     if text.starts_with('\'') {
-        return super::literal::parse_text(text)
+        return crate::iec::literal::parse_text(text)
             .map(Operand::Text)
             .map_err(IlError::Literal);
     }

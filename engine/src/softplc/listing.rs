@@ -4,9 +4,9 @@
 
 use std::fmt;
 
-use super::data::{Data, DataType};
 use super::il::{Function, Line, Operand, Operator};
 use super::vars::{Direction, Kind, Variable};
+use crate::iec::data::{Data, DataType};
 
 impl fmt::Display for Data {
     /// As a typed IEC literal: `TRUE`, `INT#-5`, `UINT#65535`,
@@ -14,7 +14,7 @@ impl fmt::Display for Data {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Data::Bool(b) => f.write_str(if b { "TRUE" } else { "FALSE" }),
-            Data::Text(ref t) => f.write_str(&super::literal::text_literal(t)),
+            Data::Text(ref t) => f.write_str(&crate::iec::literal::text_literal(t)),
             Data::Int(t, _) => write!(f, "{}#{}", t.name(), self.to_value()),
             Data::Real(r) => {
                 // Debug is the shortest text that reads back exactly;
@@ -49,7 +49,7 @@ impl fmt::Display for Operand {
             Operand::Literal(Data::Int(DataType::Dint, v)) => write!(f, "{v}"),
             Operand::Literal(d) => d.fmt(f),
             Operand::Number(v) => write!(f, "{v}"),
-            Operand::Text(t) => f.write_str(&super::literal::text_literal(t)),
+            Operand::Text(t) => f.write_str(&crate::iec::literal::text_literal(t)),
         }
     }
 }

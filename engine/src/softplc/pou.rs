@@ -6,8 +6,8 @@
 
 use std::fmt;
 
-use super::vars::is_identifier;
 use crate::error::Located;
+use crate::iec::is_identifier;
 
 /// A function block the text defines.
 #[derive(Clone, Debug, PartialEq, Eq)]

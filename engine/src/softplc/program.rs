@@ -5,13 +5,13 @@
 use std::collections::HashMap;
 use std::fmt;
 
-use super::address::{Address, Area};
-use super::data::{Arith, Bitwise, Data, DataType};
 use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
-use super::literal::string_value;
-use super::pins::Instance;
 use super::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::error::Located;
+use crate::iec::address::{Address, Area};
+use crate::iec::data::{Arith, Bitwise, Data, DataType};
+use crate::iec::literal::string_value;
+use crate::runtime::instance::Instance;
 use check::{binary_type, describe, invertible, jump, need_cr};
 use flex::{Flex, Flow, Open, Pending};
 
@@ -160,7 +160,7 @@ pub struct Program {
     pub(super) instances: Vec<user::UserInstance>,
     pub(super) entries: Vec<usize>,
     /// The serial port LDmicro's UART blocks use.
-    pub(super) uart: super::uart::Uart,
+    pub(super) uart: crate::runtime::uart::Uart,
     /// The standard blocks' outputs read as operands: (block, output,
     /// the slot each call writes it to).
     pub(super) shadows: Vec<(usize, usize, usize)>,
@@ -205,7 +205,7 @@ impl Program {
             user_types: Vec::new(),
             instances: Vec::new(),
             entries: Vec::new(),
-            uart: super::uart::Uart::default(),
+            uart: crate::runtime::uart::Uart::default(),
             shadows: Vec::new(),
         };
         for b in &sections.blocks {

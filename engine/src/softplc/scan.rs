@@ -6,13 +6,13 @@
 
 use std::cmp::Ordering;
 
-use super::address::{Address, Area};
-use super::data::DataType;
-use super::data::{self, Data, Shift};
 use super::il::Function;
-use super::pins::Instance;
 use super::program::{Binary, Cmp, Named, Program, Src, Step, STEPS_PER_SCAN};
+use crate::iec::address::{Address, Area};
+use crate::iec::data::DataType;
+use crate::iec::data::{self, Data, Shift};
 use crate::plc::Tracer;
+use crate::runtime::instance::Instance;
 
 /// Where a scan under way stands: the next step, the current result, the
 /// deferred `(` operations and how many steps it has run.
@@ -251,7 +251,7 @@ impl Program {
     /// Output `pin` (its place in the kind's outputs) of block `block`.
     pub fn block_output(&self, block: usize, pin: usize) -> Option<Data> {
         let b = self.blocks.get(block)?;
-        (pin < super::pins::outputs(&self.block_names[block].1).len()).then(|| b.output(pin))
+        (pin < crate::iec::pins::outputs(&self.block_names[block].1).len()).then(|| b.output(pin))
     }
 
     /// Every declared variable's and used address's name with its slot:
@@ -362,7 +362,7 @@ fn call_function(values: &[Data], f: Function, cr: &Data, args: &[Src]) -> Data 
 /// outputs copied.
 fn call_block(
     values: &mut [Data],
-    (blocks, uart): (&mut [Instance], &mut super::uart::Uart),
+    (blocks, uart): (&mut [Instance], &mut crate::runtime::uart::Uart),
     call: &Step,
     now: i64,
 ) {

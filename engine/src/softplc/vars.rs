@@ -17,46 +17,12 @@
 
 use std::fmt;
 
-use super::address::{Address, AddressError};
-use super::data::{Data, DataType, STRING_CAPACITY};
-use super::literal::{parse_literal, LiteralError};
 use crate::error::Located;
-
-/// The standard function blocks a variable can be an instance of (and
-/// LDmicro's: [`is_block_type`]).
-pub const BLOCK_TYPES: [&str; 25] = [
-    "TON",
-    "TOF",
-    "TP",
-    "CTU",
-    "CTD",
-    "CTUD",
-    "R_TRIG",
-    "F_TRIG",
-    "SR",
-    "RS",
-    "CTU_INT",
-    "CTU_DINT",
-    "CTU_LINT",
-    "CTU_UDINT",
-    "CTU_ULINT",
-    "CTD_INT",
-    "CTD_DINT",
-    "CTD_LINT",
-    "CTD_UDINT",
-    "CTD_ULINT",
-    "CTUD_INT",
-    "CTUD_DINT",
-    "CTUD_LINT",
-    "CTUD_UDINT",
-    "CTUD_ULINT",
-];
-
-/// Whether `name` (upper case) is a block a variable can be an instance
-/// of: a standard one, or one of LDmicro's ([`super::ld_blocks::NAMES`]).
-pub fn is_block_type(name: &str) -> bool {
-    BLOCK_TYPES.contains(&name) || super::ld_blocks::NAMES.contains(&name)
-}
+use crate::iec::address::{Address, AddressError};
+use crate::iec::data::{Data, DataType, STRING_CAPACITY};
+use crate::iec::is_identifier;
+use crate::iec::literal::{parse_literal, LiteralError};
+use crate::iec::pins::is_block_type;
 
 /// What a variable holds.
 #[derive(Clone, Debug, PartialEq)]
@@ -151,16 +117,6 @@ impl fmt::Display for VarError {
 }
 
 impl std::error::Error for VarError {}
-
-/// Whether `name` is an IEC identifier.
-pub fn is_identifier(name: &str) -> bool {
-    let mut chars = name.chars();
-    chars
-        .next()
-        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
-        && !name.contains("__")
-}
 
 /// Reads the `VAR … END_VAR` blocks of `text` (lines outside them are not
 /// looked at: the program's body). Every error is given, at its line

@@ -6,7 +6,7 @@
 //! meaning scan by scan.
 
 use engine::ldmicro::{parse, to_ladder};
-use engine::softplc::segments::{letters, lit};
+use engine::runtime::ldmicro::segments::{letters, lit};
 use engine::SimTime;
 
 use crate::run::{get, load, set};

@@ -1,6 +1,6 @@
 use super::*;
-use crate::softplc::literal::parse_literal;
-use crate::softplc::literal::LiteralError;
+use crate::iec::literal::parse_literal;
+use crate::iec::literal::LiteralError;
 
 fn int(t: DataType, v: i128) -> Data {
     Data::integer(t, v)

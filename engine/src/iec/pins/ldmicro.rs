@@ -1,8 +1,8 @@
-//! The LDmicro blocks' names and parameters ([`super::ld_blocks`] runs
+//! The LDmicro blocks' names and parameters (`crate::runtime::ldmicro` runs
 //! them): which inputs each takes and which outputs it gives, in order,
 //! with their types, and the one input given as a text.
 
-use super::data::DataType;
+use crate::iec::data::DataType;
 
 /// The LDmicro blocks by name.
 pub const NAMES: [&str; 48] = [
@@ -127,7 +127,7 @@ enum Family {
     /// string sent (LD_UART_AVAIL and LD_UART_READY take only IN).
     Serial,
     /// LDmicro's STRING: `D := sprintf(FMT, V)` while powered (the text
-    /// is the instance's, [`super::pins::Instance`] prints it).
+    /// is the instance's, `crate::runtime::instance::Instance` prints it).
     Text,
 }
 

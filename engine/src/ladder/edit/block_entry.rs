@@ -152,7 +152,7 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
                 .filter(|(pin, operand)| {
                     // A constant given (a digit's source) is only read.
                     crate::ladder::block::is_variable(operand)
-                        && crate::softplc::pins::outputs(&call.kind())
+                        && crate::iec::pins::outputs(&call.kind())
                             .iter()
                             .any(|(o, _)| o == pin)
                 })

@@ -12,11 +12,11 @@
 
 use std::collections::HashMap;
 
+use crate::iec::data::DataType;
+use crate::iec::pins;
 use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::{LadderError, LadderErrorKind, Link, Pos, Rung};
-use crate::softplc::data::DataType;
-use crate::softplc::pins;
 
 use super::Net;
 

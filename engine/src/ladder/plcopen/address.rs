@@ -143,7 +143,7 @@ pub(super) const AVR_RELAYS: std::ops::Range<u8> = 6..16;
 /// a soft PLC ladder's bare `address` (`IX0_0` at `%IX0.0`): read back
 /// as the address, so a ladder exported and opened again is the same.
 pub(super) fn stands_for(name: &str, address: &str) -> bool {
-    crate::softplc::Address::parse(address.trim()).is_ok_and(|a| {
+    crate::iec::Address::parse(address.trim()).is_ok_and(|a| {
         let written = a.to_string();
         written.trim_start_matches('%').replace('.', "_") == name.trim()
             && written == address.trim()

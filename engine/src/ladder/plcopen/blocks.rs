@@ -114,7 +114,7 @@ pub(super) fn plain_pins(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
 /// dropped and the counter never reset. Functions (AND, GT …) take
 /// their inputs in order, whatever their names.
 fn known_inputs(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
-    let has = crate::softplc::pins::inputs(ty.name());
+    let has = crate::iec::pins::inputs(ty.name());
     if has.is_empty() {
         return Ok(());
     }

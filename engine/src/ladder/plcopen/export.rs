@@ -128,7 +128,7 @@ impl Writer {
     fn declare(&mut self, variables: &[crate::ladder::Variable]) {
         for v in variables {
             self.declared.insert(v.name.to_ascii_uppercase());
-            if let Ok(a) = crate::softplc::Address::parse(&v.address) {
+            if let Ok(a) = crate::iec::Address::parse(&v.address) {
                 self.at_address.insert(a.to_string(), v.name.clone());
             }
         }
@@ -140,7 +140,7 @@ impl Writer {
     /// it.
     fn name_for(&mut self, device: &str, ty: &str) -> String {
         let device = device.trim();
-        let Ok(a) = crate::softplc::Address::parse(device) else {
+        let Ok(a) = crate::iec::Address::parse(device) else {
             self.variable(device, ty);
             return device.to_string();
         };

@@ -459,7 +459,7 @@ impl Body {
         let Some((ty, instance)) = self.block_names.get(id) else {
             return Ok(());
         };
-        let has = crate::softplc::pins::outputs(&ty.to_ascii_uppercase());
+        let has = crate::iec::pins::outputs(&ty.to_ascii_uppercase());
         let known =
             pin.eq_ignore_ascii_case("ENO") || has.iter().any(|(p, _)| p.eq_ignore_ascii_case(pin));
         if has.is_empty() || known || BlockKind::parse(ty).is_none() {

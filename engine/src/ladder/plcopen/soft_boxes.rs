@@ -22,12 +22,12 @@ use super::declare::Names;
 use super::dom::Node;
 use super::error::ImportError;
 use super::parts::SPLIT_PLACES;
+use crate::iec::data::DataType;
+use crate::iec::pins;
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::{carrier, Net};
-use crate::softplc::data::DataType;
-use crate::softplc::pins;
 
 /// Why a block cannot be drawn as a soft PLC box.
 #[derive(Clone, Debug, PartialEq, Eq)]

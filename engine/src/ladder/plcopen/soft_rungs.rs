@@ -7,14 +7,14 @@ use std::collections::{BTreeMap, HashMap};
 
 use super::body::{Body, Temp, RAIL};
 use super::declare::Names;
+use crate::iec::data::DataType;
+use crate::iec::pins;
 use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::{Edge, Net};
 use crate::ladder::variables::Variable;
 use crate::limits::MAX_NESTING;
-use crate::softplc::data::DataType;
-use crate::softplc::pins;
 
 impl Body {
     /// The soft PLC boxes (edge indices) whose power out leads to more
@@ -168,7 +168,7 @@ impl Typing<'_> {
                 None => names
                     .declared_type(operand)
                     .and_then(DataType::from_name)
-                    .or_else(|| crate::softplc::literal_type(operand).ok()?.1),
+                    .or_else(|| crate::iec::literal_type(operand).ok()?.1),
             };
             if let Some(ty) = found {
                 return ty;

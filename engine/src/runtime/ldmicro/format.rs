@@ -7,7 +7,7 @@
 //! character a scan while the transmitter is free, the number's digits
 //! worked out one per character with its leading zeros as spaces.
 
-use super::uart::Uart;
+use crate::runtime::uart::Uart;
 
 /// One character of the text as sent.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

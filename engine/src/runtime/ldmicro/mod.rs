@@ -12,11 +12,16 @@
 //! worked out when the file is read); a block's own memory (LDmicro's
 //! generated one-shot bits) lives in its instance.
 
-use super::data::{Data, DataType};
-use super::ld_format::{Format, Sender};
-pub use super::ld_pins::{inputs, outputs, text_input, NAMES};
-use super::ld_words::word_op;
+pub mod format;
+pub mod printf;
+pub mod segments;
+mod words;
+
 use super::uart::Uart;
+use crate::iec::data::{Data, DataType};
+use crate::iec::pins::ldmicro::NAMES;
+use format::{Format, Sender};
+use words::word_op;
 
 /// What an LDmicro block reaches beyond its inputs: the serial port and,
 /// for a formatted string, its text.
@@ -123,7 +128,7 @@ impl LdBlock {
         self.kind == Kind::Text
     }
 
-    /// Output `i` (in the order of [`outputs`]).
+    /// Output `i` (in the order of [`crate::iec::pins::ldmicro::outputs`]).
     pub fn output(&self, i: usize) -> Data {
         match (self.kind, i) {
             (_, 0) => Data::Bool(self.q),
@@ -133,7 +138,7 @@ impl LdBlock {
         }
     }
 
-    /// One call with the block's inputs in the order of [`inputs`].
+    /// One call with the block's inputs in the order of [`crate::iec::pins::ldmicro::inputs`].
     pub fn call(&mut self, inputs: &[Data], io: Io<'_>) {
         let bool_in = |i: usize| matches!(inputs.get(i), Some(Data::Bool(true)));
         let word = |i: usize| match inputs.get(i) {
@@ -161,7 +166,7 @@ impl LdBlock {
                     Kind::Op("IFNBIT") => s && (a >> b.clamp(0, 63)) & 1 == 0,
                     // B: 0 common cathode, else common anode.
                     Kind::Segments(n) if s => {
-                        let (index, segments) = super::segments::convert(n, a, b != 0);
+                        let (index, segments) = segments::convert(n, a, b != 0);
                         (self.word, self.value) = (index, word_op("MOVE", segments, 0, d, w));
                         s
                     }
@@ -202,7 +207,7 @@ impl LdBlock {
     /// busy bit whatever the power in; `n` bytes — a rise takes the
     /// word, its bytes go one a scan as the port frees, the lowest first,
     /// and the power is on until the last has gone.
-    fn send(&mut self, s: bool, v: i64, n: i64, uart: &mut super::uart::Uart) -> bool {
+    fn send(&mut self, s: bool, v: i64, n: i64, uart: &mut Uart) -> bool {
         if n == 1 {
             if s {
                 uart.send(v as u8);
@@ -230,7 +235,7 @@ impl LdBlock {
     /// power for that scan; `n` bytes are gathered the lowest first, a
     /// byte a scan, into `v` when the last has come (power for that
     /// scan). Without power nothing is taken from the port.
-    fn receive(&mut self, s: bool, v: i64, n: i64, uart: &mut super::uart::Uart) -> bool {
+    fn receive(&mut self, s: bool, v: i64, n: i64, uart: &mut Uart) -> bool {
         self.value = v;
         if !s {
             return false;

@@ -2,7 +2,7 @@
 //! and `output => variable`, each input given once, no empty place.
 
 use super::{operand, IlError, Line, Operand};
-use crate::softplc::vars::is_identifier;
+use crate::iec::is_identifier;
 
 /// `instance` or `instance(IN := a, PT := T#1s, Q => b)`.
 pub(super) fn call(text: &str, out: &mut Line) -> Result<(), IlError> {

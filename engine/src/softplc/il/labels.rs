@@ -9,7 +9,7 @@
 use std::collections::HashMap;
 
 use super::{IlError, Line, Operand, Operator};
-use crate::softplc::vars::is_identifier;
+use crate::iec::is_identifier;
 
 /// The labels read so far, and the one waiting for its instruction.
 #[derive(Default)]

@@ -1,5 +1,5 @@
 use super::*;
-use crate::softplc::data::DataType;
+use crate::iec::data::DataType;
 
 const PROGRAM: &str = "\
 VAR

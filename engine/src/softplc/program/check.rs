@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 
 use super::{Binary, LoadError, Step};
-use crate::softplc::data::{Arith, DataType};
+use crate::iec::data::{Arith, DataType};
 use crate::softplc::il::{Line, Operand};
 
 /// The current result's type, where an instruction needs one.

@@ -24,9 +24,9 @@ use super::check::binary_type;
 use super::said::Said;
 use super::{Binary, LoadError, Program, Src, Step};
 use crate::error::Located;
-use crate::softplc::data::{Data, DataType};
+use crate::iec::data::{Data, DataType};
+use crate::iec::literal::{in_range, LiteralError};
 use crate::softplc::il::{Line, Operand};
-use crate::softplc::literal::{in_range, LiteralError};
 
 /// One untyped literal of the current result: where its constant is.
 #[derive(Clone, Copy, Debug, PartialEq)]

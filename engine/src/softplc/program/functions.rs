@@ -5,7 +5,7 @@
 use super::check::need_cr;
 use super::flex::Flow;
 use super::{LoadError, Program, Step};
-use crate::softplc::data::DataType;
+use crate::iec::data::DataType;
 use crate::softplc::il::{Function, Line, Operand};
 
 impl Program {

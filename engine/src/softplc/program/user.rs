@@ -10,7 +10,9 @@ use std::collections::HashMap;
 use super::{Errors, LoadError, Named, Program, Step};
 use crate::error::Located;
 use crate::softplc::il::Line;
-use crate::softplc::vars::{Direction, Kind, Variable};
+use crate::softplc::vars::Direction;
+use crate::softplc::vars::Kind;
+use crate::softplc::vars::Variable;
 
 /// How deeply instances may hold instances (a block holding an instance
 /// of itself would never end).

@@ -1,5 +1,5 @@
 use super::*;
-use crate::softplc::address::Size;
+use crate::iec::address::Size;
 
 const HEADER: &str = "\
 VAR
@@ -89,14 +89,4 @@ fn an_unclosed_var_is_named_at_its_line() {
         errors("LD x\nVAR\n  x : BOOL;"),
         [(2, "`VAR` without its pair".to_string())]
     );
-}
-
-#[test]
-fn identifiers() {
-    for ok in ["a", "_x", "Motor_1", "T0"] {
-        assert!(is_identifier(ok), "{ok}");
-    }
-    for bad in ["", "1a", "a b", "a__b", "é", "a-b"] {
-        assert!(!is_identifier(bad), "{bad}");
-    }
 }

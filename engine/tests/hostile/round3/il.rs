@@ -1,7 +1,8 @@
 //! Issue #43, round 3: il. The soft PLC's Instruction List loader, its
 //! literals and types (and issue #44's literals and block outputs).
 
-use engine::softplc::{Data, DataType, Program};
+use engine::iec::{Data, DataType};
+use engine::softplc::Program;
 
 const MS: i64 = 1_000_000;
 

@@ -3,7 +3,7 @@
 
 use std::process::Command;
 
-use engine::softplc::ld_printf::{Printf, PrintfError};
+use engine::runtime::ldmicro::printf::{Printf, PrintfError};
 
 use crate::common::Temp;
 

@@ -14,11 +14,11 @@ use std::collections::{BTreeSet, HashMap};
 
 use super::accumulator::one_line;
 use super::{is_pure, used_devices, Mapped};
+use crate::iec::data::DataType;
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{LadderError, Pos};
 use crate::ladder::net::{Net, RungLogic};
 use crate::ladder::variables::Variable;
-use crate::softplc::data::DataType;
 
 /// Where the power into a network comes from.
 #[derive(Clone, Debug, PartialEq)]

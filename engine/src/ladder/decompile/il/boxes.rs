@@ -65,8 +65,8 @@ impl Walk<'_> {
     /// word address, a literal other than TRUE / FALSE).
     fn word(&self, line: &Line) -> bool {
         match &line.operand {
-            Some(Operand::Literal(d)) => d.data_type() != crate::softplc::data::DataType::Bool,
-            Some(Operand::Address(a)) => a.size != crate::softplc::Size::Bit,
+            Some(Operand::Literal(d)) => d.data_type() != crate::iec::data::DataType::Bool,
+            Some(Operand::Address(a)) => a.size != crate::iec::Size::Bit,
             Some(Operand::Name(n)) => self.words.contains(&n.to_ascii_uppercase()),
             Some(Operand::Text(_) | Operand::Number(_)) => true,
             None => false,
@@ -125,7 +125,7 @@ impl Walk<'_> {
         // A function on the rail: … / LD TRUE.
         let Some(end) = (i..lines.len()).find(|&k| {
             lines[k].operator == Operator::Ld
-                && lines[k].operand == Some(Operand::Literal(crate::softplc::Data::Bool(true)))
+                && lines[k].operand == Some(Operand::Literal(crate::iec::Data::Bool(true)))
         }) else {
             return Ok(None);
         };

@@ -10,10 +10,11 @@ use std::collections::HashMap;
 
 use super::SoftError;
 use crate::error::Located;
+use crate::iec::data::DataType;
+use crate::iec::pins::is_block_type;
+use crate::iec::{parse_literal, Address};
 use crate::ladder::plcopen::dom::Node;
-use crate::softplc::data::DataType;
-use crate::softplc::vars::{is_block_type, Direction};
-use crate::softplc::{parse_literal, Address};
+use crate::softplc::vars::Direction;
 
 /// What a declared name holds.
 #[derive(Clone, Debug, PartialEq)]
@@ -103,7 +104,7 @@ impl Declarations {
     ) -> Option<(String, DataType)> {
         let name = self.name_in(pou, instance);
         let t = match self.held(&name)? {
-            Held::Block(kind) => crate::softplc::pins::outputs(kind)
+            Held::Block(kind) => crate::iec::pins::outputs(kind)
                 .into_iter()
                 .find(|(p, _)| p.eq_ignore_ascii_case(pin))
                 .map(|(_, t)| t),
@@ -259,7 +260,7 @@ fn declare(
 ) -> Result<(), Located<SoftError>> {
     let at = |e: SoftError| Located::new(v.line, e);
     let name = v.attr("name").unwrap_or_default().to_string();
-    if !crate::softplc::vars::is_identifier(&name) {
+    if !crate::iec::is_identifier(&name) {
         return Err(at(SoftError::Declaration(name, "not an IEC name".into())));
     }
     let (held, type_name) = held(v, &name, own).map_err(at)?;

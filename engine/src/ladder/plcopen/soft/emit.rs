@@ -17,10 +17,11 @@ use super::infer::output_type;
 use super::order::order;
 use super::SoftError;
 use crate::error::Located;
-use crate::softplc::data::DataType;
-use crate::softplc::pins::{inputs as fb_inputs, outputs as fb_outputs};
-use crate::softplc::vars::{is_block_type, is_identifier};
-use crate::softplc::{literal_type, Address};
+use crate::iec::data::DataType;
+use crate::iec::is_identifier;
+use crate::iec::pins::is_block_type;
+use crate::iec::pins::{inputs as fb_inputs, outputs as fb_outputs};
+use crate::iec::{literal_type, Address};
 
 /// What the emission of every body gives.
 #[derive(Debug, Default)]
@@ -480,7 +481,7 @@ impl Emitter<'_> {
         };
         // An LDmicro block's text (FMT) is an input of the block's box.
         let mut inputs = fb_inputs(kind);
-        inputs.extend(crate::softplc::ld_blocks::text_input(kind).map(|p| (p, DataType::String)));
+        inputs.extend(crate::iec::pins::ldmicro::text_input(kind).map(|p| (p, DataType::String)));
         self.cal(g, e, &name, &owned(inputs), &owned(fb_outputs(kind)), en)
     }
 

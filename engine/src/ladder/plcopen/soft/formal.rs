@@ -8,9 +8,9 @@ use super::declare::Interface;
 use super::functions::Function;
 use super::graph::Element;
 use super::SoftError;
-use crate::softplc::data::DataType;
-use crate::softplc::pins::outputs as fb_outputs;
-use crate::softplc::vars::is_block_type;
+use crate::iec::data::DataType;
+use crate::iec::pins::is_block_type;
+use crate::iec::pins::outputs as fb_outputs;
 
 /// The pins' names, for a message (`IN, PT`).
 fn names(pins: &[(String, DataType)]) -> String {

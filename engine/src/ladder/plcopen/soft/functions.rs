@@ -4,7 +4,7 @@
 //! first typed input's (an untyped literal takes it), or, when every
 //! input is an untyped literal, the type the output feeds.
 
-use crate::softplc::data::DataType;
+use crate::iec::data::DataType;
 
 /// An operand and its type (`None`: an untyped literal).
 #[derive(Clone, Debug, PartialEq)]

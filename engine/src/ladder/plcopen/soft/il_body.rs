@@ -160,7 +160,7 @@ fn first_line(text: &str, from: usize, source: &str) -> usize {
 fn label_of(line: &str) -> Option<&str> {
     let (head, rest) = line.split_once(':')?;
     let head = head.trim();
-    let ok = !rest.starts_with('=') && crate::softplc::vars::is_identifier(head);
+    let ok = !rest.starts_with('=') && crate::iec::is_identifier(head);
     ok.then_some(head)
 }
 

@@ -11,8 +11,8 @@ use super::declare::Interface;
 use super::functions::{Function, Operand};
 use super::graph::{Element, Graph, Kind, Source};
 use super::order::order;
-use crate::softplc::data::DataType;
-use crate::softplc::pins::outputs as fb_outputs;
+use crate::iec::data::DataType;
+use crate::iec::pins::outputs as fb_outputs;
 
 /// Passes over the body's functions at most: each pass settles every
 /// function whose inputs are settled, so a drawing needs one per loop
