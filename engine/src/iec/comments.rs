@@ -5,7 +5,7 @@
 /// breaks kept, so every line keeps its number); a comment on one line
 /// stays for the line's own reader (a declaration keeps it). A comment
 /// never closed is left as it is: the line that opens it says so.
-pub(super) fn blank_long_comments(text: &str) -> String {
+pub(crate) fn blank_long_comments(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     let mut rest = text;
     while let Some(at) = rest.find("(*") {

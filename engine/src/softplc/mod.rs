@@ -7,28 +7,11 @@
 //! ([`program`]), the scan that runs it ([`scan`], [`machine`]) and its
 //! place behind `Plc` ([`plc`]); docs/soft-plc.md states its semantics.
 
-mod comments;
-pub mod il;
-pub mod listing;
 pub mod machine;
 pub mod plc;
 pub mod pou;
 pub mod program;
 pub mod scan;
-pub mod vars;
 
 pub use plc::SoftPlc;
 pub use program::{LoadError, Program};
-pub use vars::{parse_vars, Kind, VarError, Variable};
-
-/// The tests' view of a refusal: each error's line and message.
-#[cfg(test)]
-fn said<T: std::fmt::Debug, E: std::fmt::Display>(
-    result: Result<T, Vec<crate::error::Located<E>>>,
-) -> Vec<(usize, String)> {
-    result
-        .expect_err("refused")
-        .into_iter()
-        .map(|e| (e.line, e.error.to_string()))
-        .collect()
-}

@@ -5,12 +5,12 @@
 use std::collections::HashMap;
 use std::fmt;
 
-use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
-use super::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::error::Located;
 use crate::iec::address::{Address, Area};
 use crate::iec::data::{Arith, Bitwise, Data, DataType};
+use crate::iec::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use crate::iec::literal::string_value;
+use crate::iec::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::runtime::instance::Instance;
 use check::{binary_type, describe, invertible, jump, need_cr};
 use flex::{Flex, Flow, Open, Pending};
@@ -293,10 +293,10 @@ impl Program {
         let mut out = String::new();
         for t in self.user_types() {
             out.push_str(&format!("FUNCTION_BLOCK {}\n", t.name));
-            out.push_str(&super::listing::listing(&t.vars, &t.lines));
+            out.push_str(&crate::iec::listing::listing(&t.vars, &t.lines));
             out.push_str("END_FUNCTION_BLOCK\n");
         }
-        out.push_str(&super::listing::listing(&self.vars, &self.lines));
+        out.push_str(&crate::iec::listing::listing(&self.vars, &self.lines));
         out
     }
 

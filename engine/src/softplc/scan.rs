@@ -6,11 +6,11 @@
 
 use std::cmp::Ordering;
 
-use super::il::Function;
 use super::program::{Binary, Cmp, Named, Program, Src, Step, STEPS_PER_SCAN};
 use crate::iec::address::{Address, Area};
 use crate::iec::data::DataType;
 use crate::iec::data::{self, Data, Shift};
+use crate::iec::il::Function;
 use crate::plc::Tracer;
 use crate::runtime::instance::Instance;
 

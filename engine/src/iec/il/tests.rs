@@ -68,7 +68,7 @@ fn modifiers_go_where_iec_allows_them() {
 }
 
 fn errors(text: &str) -> Vec<(usize, String)> {
-    crate::softplc::said(parse_il(text))
+    crate::iec::said(parse_il(text))
 }
 
 #[test]
@@ -145,7 +145,7 @@ fn comments_anywhere_and_var_blocks_are_skipped() {
         lines[1].line, 6,
         "a line keeps its number after a long comment"
     );
-    let open = crate::softplc::said(parse_il("LD x\nST y (* never closed\nST z"));
+    let open = crate::iec::said(parse_il("LD x\nST y (* never closed\nST z"));
     assert_eq!(
         open,
         [(2, "a comment `(*` is never closed with `*)`".to_string())]

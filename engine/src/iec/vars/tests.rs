@@ -45,7 +45,7 @@ fn a_header_with_located_named_retained_and_block_variables() {
 }
 
 fn errors(text: &str) -> Vec<(usize, String)> {
-    crate::softplc::said(parse_vars(text))
+    crate::iec::said(parse_vars(text))
 }
 
 #[test]

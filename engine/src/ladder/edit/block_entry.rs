@@ -59,7 +59,7 @@ fn call_form(text: &str) -> Result<BlockCall, EntryError> {
         return Err(usage());
     }
     let mut call = new_call(kind, instance);
-    for param in crate::softplc::il::split_params(body)
+    for param in crate::iec::il::split_params(body)
         .into_iter()
         .map(str::trim)
         .filter(|p| !p.is_empty())

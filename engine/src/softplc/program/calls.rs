@@ -4,12 +4,12 @@
 use super::check::find_pin;
 use super::{LoadError, Named, Program, Src, Step};
 use crate::iec::data::{Data, DataType};
+use crate::iec::il::{Line, Operand};
 use crate::iec::pins::ldmicro::text_input;
 use crate::iec::pins::{inputs, outputs};
 use crate::runtime::instance::Printing;
 use crate::runtime::ldmicro::format::Format;
 use crate::runtime::ldmicro::printf::Printf;
-use crate::softplc::il::{Line, Operand};
 use std::sync::Arc;
 
 impl Program {

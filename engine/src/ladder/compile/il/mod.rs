@@ -105,7 +105,7 @@ pub(crate) fn compile_mapped(
         return Err(errors);
     }
     let mut text = String::from("(* compiled by hashigo from a ladder *)\n");
-    text.push_str(&crate::softplc::listing::var_blocks(&c.vars, &c.retained));
+    text.push_str(&crate::iec::listing::var_blocks(&c.vars, &c.retained));
     let header = text.lines().count();
     for l in &c.lines {
         text.push_str(l);

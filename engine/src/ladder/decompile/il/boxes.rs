@@ -11,11 +11,11 @@
 //! `p` is the power held in a generated BOOL (`ST _pN` before it); with
 //! none, the box stands on the rail.
 
+use crate::iec::il::{Function, Line, Operand, Operator};
 use crate::ladder::block::{BlockCall, COMPARISONS};
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
-use crate::softplc::il::{Function, Line, Operand, Operator};
 
 use super::{bad, Walk};
 

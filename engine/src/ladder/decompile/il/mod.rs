@@ -16,12 +16,12 @@ use std::collections::{HashMap, HashSet};
 
 use super::stack::Stack;
 use super::{contact, drawn, DecompileError, Part, StepError};
+use crate::iec::il::{Line, Operand, Operator};
+use crate::iec::vars::Kind;
+use crate::iec::vars::Variable;
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{Ladder, Pos};
 use crate::ladder::net::Net;
-use crate::softplc::il::{Line, Operand, Operator};
-use crate::softplc::vars::Kind;
-use crate::softplc::vars::Variable;
 
 /// What a generated BOOL stands for.
 enum Stands {

@@ -12,9 +12,9 @@ use super::SoftError;
 use crate::error::Located;
 use crate::iec::data::DataType;
 use crate::iec::pins::is_block_type;
+use crate::iec::vars::Direction;
 use crate::iec::{parse_literal, Address};
 use crate::ladder::plcopen::dom::Node;
-use crate::softplc::vars::Direction;
 
 /// What a declared name holds.
 #[derive(Clone, Debug, PartialEq)]

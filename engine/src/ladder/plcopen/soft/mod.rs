@@ -292,7 +292,7 @@ impl Text {
     /// A section's declarations (inputs, outputs, locals with the
     /// generated ones, retained) and lines.
     fn section(&mut self, d: &declare::Declarations, out: &emit::Output, at: usize) {
-        use crate::softplc::vars::Direction;
+        use crate::iec::vars::Direction;
         let blocks = [
             ("VAR_INPUT", Direction::Input, false),
             ("VAR_OUTPUT", Direction::Output, false),
