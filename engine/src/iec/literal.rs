@@ -278,9 +278,25 @@ fn underscores_between_digits(s: &str) -> bool {
     })
 }
 
+/// A TIME literal (`T#500ms`, `TIME#1.5s`, `t#1m30s`) in whole
+/// milliseconds, as the bit machines' timer presets are kept: the one
+/// TIME grammar [`parse_literal`] reads, rounded to the nearest
+/// millisecond (halves up); `None` for anything else, a negative time or
+/// one past `u32::MAX` ms.
+pub fn parse_time_literal(text: &str) -> Option<u32> {
+    let (prefix, body) = text.trim().split_once('#')?;
+    if !matches!(prefix.to_ascii_uppercase().as_str(), "T" | "TIME") {
+        return None;
+    }
+    let ns = time(body, text).ok().filter(|ns| *ns >= 0)?;
+    u32::try_from((i128::from(ns) + 500_000) / 1_000_000).ok()
+}
+
 /// A duration in nanoseconds (of the literal `text`): an optional sign,
-/// then one or more number-unit pairs, largest unit first (`1h2m3.5s`,
-/// `500ms`, `1_000us`). Summed exactly in integers (a fraction rounded
+/// then one or more number-unit pairs, largest unit first, each once, an
+/// `_` allowed between them (`1h2m3.5s`, `1h_2m`, `500ms`, `1_000us`).
+/// This is the one IEC TIME parser: IL, declarations and PLCopen files
+/// all come here (`SimTime::parse` reads the command line's own times). Summed exactly in integers (a fraction rounded
 /// to the nearest nanosecond, halves up); past TIME's range it is
 /// refused, not saturated.
 fn time(s: &str, text: &str) -> Result<i64, LiteralError> {
@@ -318,6 +334,10 @@ fn time(s: &str, text: &str) -> Result<i64, LiteralError> {
         }
         last_scale = scale;
         rest = &rest[unit.len()..];
+        // IEC lets one `_` part a unit from the next number (`1h_2m`).
+        if let Some(more) = rest.strip_prefix('_').filter(|m| !m.is_empty()) {
+            rest = more;
+        }
         total = total
             .checked_add(scaled(number, scale).ok_or_else(bad)?)
             .filter(|&t| t <= limit)
@@ -462,6 +482,23 @@ mod time_tests {
         ));
         for bad in ["T#1.2.3s", "T#s", "T#1s1s", "T#1ms1s", "T#_1s", "T#"] {
             assert!(matches!(ns(bad), Err(LiteralError::BadTime(_))), "{bad}");
+        }
+    }
+
+    /// One parser for IL's and PLCopen's TIME literals: IEC's grammar
+    /// (largest unit first, each once, `_` between digits or after a
+    /// unit), PLCopen's presets taken in whole milliseconds.
+    #[test]
+    fn one_parser_reads_il_and_plcopen_times() {
+        assert_eq!(ns("T#1h_2m"), Ok(Data::Time(3_720_000_000_000)));
+        assert_eq!(ns("t#1M30S"), Ok(Data::Time(90_000_000_000)));
+        let ms = super::parse_time_literal;
+        assert_eq!(ms("T#1h_2m"), Some(3_720_000));
+        assert_eq!(ms("T#1500us"), Some(2), "to the nearest ms, halves up");
+        assert_eq!(ms("T#499999ns"), Some(0));
+        assert_eq!(ms("TIME#49d17h2m47s295ms"), Some(u32::MAX));
+        for bad in ["T#-1s", "T#1s1s", "T#1ms1s", "T#49d17h2m47s296ms"] {
+            assert_eq!(ms(bad), None, "{bad}");
         }
     }
 }

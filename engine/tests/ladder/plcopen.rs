@@ -1,8 +1,9 @@
 //! PLCopen TC6 XML: both namespaces, OpenPLC's dialect, round trips,
 //! and imported programs running on the machines.
 
+use engine::iec::literal::parse_time_literal;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::plcopen::{export, import, parse_time_literal};
+use engine::ladder::plcopen::{export, import};
 use engine::ladder::{Ladder, Project};
 use engine::{avr, MachineId, SimTime};
 use proptest::prelude::*;

@@ -44,51 +44,6 @@ pub const NS_V200: &str = "http://www.plcopen.org/xml/tc6_0200";
 /// The TC6 v1.0 namespace.
 pub const NS_V10: &str = "http://www.plcopen.org/xml/tc6.xsd";
 
-/// Parses an IEC time literal (`T#500ms`, `TIME#1.5s`, `t#1m30s`) to ms.
-pub fn parse_time_literal(text: &str) -> Option<u32> {
-    let t = text.trim();
-    let (prefix, rest) = t.split_once('#')?;
-    if !matches!(prefix.to_ascii_uppercase().as_str(), "T" | "TIME") {
-        return None;
-    }
-    let rest = rest.replace('_', "").to_ascii_lowercase();
-    let mut total = 0f64;
-    let mut number = String::new();
-    let mut chars = rest.chars().peekable();
-    let mut any = false;
-    while let Some(c) = chars.next() {
-        if c.is_ascii_digit() || c == '.' {
-            number.push(c);
-            continue;
-        }
-        let mut unit = String::from(c);
-        while let Some(&n) = chars.peek() {
-            if n.is_ascii_alphabetic() {
-                unit.push(n);
-                chars.next();
-            } else {
-                break;
-            }
-        }
-        let factor = match unit.as_str() {
-            "d" => 86_400_000.0,
-            "h" => 3_600_000.0,
-            "m" => 60_000.0,
-            "s" => 1000.0,
-            "ms" => 1.0,
-            _ => return None,
-        };
-        let value: f64 = number.parse().ok()?;
-        total += value * factor;
-        number.clear();
-        any = true;
-    }
-    if !number.is_empty() || !any || !(0.0..=f64::from(u32::MAX)).contains(&total) {
-        return None;
-    }
-    Some(total.round() as u32)
-}
-
 /// An IEC time literal for `ms` (`T#500ms`, `T#1s`).
 pub fn time_literal(ms: u32) -> String {
     if ms.is_multiple_of(1000) && ms > 0 {

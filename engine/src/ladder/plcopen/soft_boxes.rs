@@ -394,7 +394,7 @@ fn as_timer(call: &BlockCall) -> Option<Element> {
     let [(pin, pt)] = call.inputs.as_slice() else {
         return None;
     };
-    let preset_ms = super::parse_time_literal(pt).filter(|_| pin == "PT")?;
+    let preset_ms = crate::iec::literal::parse_time_literal(pt).filter(|_| pin == "PT")?;
     (call.outputs.is_empty() && preset_ms > 0).then(|| Element::Timer {
         kind,
         name: call.instance.clone(),
