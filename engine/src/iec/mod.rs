@@ -10,6 +10,7 @@
 
 pub mod address;
 pub(crate) mod comments;
+pub mod comparison;
 pub mod data;
 pub mod identifier;
 pub mod il;
@@ -19,6 +20,7 @@ pub mod pins;
 pub mod vars;
 
 pub use address::{Address, AddressError, Area, Size};
+pub use comparison::Comparison;
 pub use data::{Data, DataType};
 pub use identifier::is_identifier;
 pub use literal::{literal_type, parse_literal, LiteralError};

@@ -7,6 +7,8 @@
 
 use std::fmt;
 
+use crate::iec::Comparison;
+
 /// LDmicro's timers: all count scans of the file's cycle in a variable of
 /// their own name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -88,15 +90,31 @@ pub enum UnaryOp {
     SeedRandom,
 }
 
-/// A comparison (`EQU a b`), passing power while it holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CompareOp {
-    Equ,
-    Neq,
-    Grt,
-    Geq,
-    Les,
-    Leq,
+/// LDmicro's keyword for each comparison (`EQU a b`, passing power while
+/// it holds); the comparison itself is IEC's.
+const COMPARE_KEYWORDS: [(Comparison, &str); 6] = [
+    (Comparison::Eq, "EQU"),
+    (Comparison::Ne, "NEQ"),
+    (Comparison::Gt, "GRT"),
+    (Comparison::Ge, "GEQ"),
+    (Comparison::Lt, "LES"),
+    (Comparison::Le, "LEQ"),
+];
+
+/// LDmicro's keyword for `op`.
+pub fn compare_keyword(op: Comparison) -> &'static str {
+    COMPARE_KEYWORDS
+        .iter()
+        .find(|(c, _)| *c == op)
+        .map_or("EQU", |(_, w)| w)
+}
+
+/// The comparison LDmicro's keyword `word` names.
+pub fn compare_from_keyword(word: &str) -> Option<Comparison> {
+    COMPARE_KEYWORDS
+        .iter()
+        .find(|(_, w)| *w == word)
+        .map(|(c, _)| *c)
 }
 
 /// One element line of a rung.
@@ -168,7 +186,11 @@ pub enum Element {
         b: String,
     },
     /// `EQU a b` and the other comparisons.
-    Compare { op: CompareOp, a: String, b: String },
+    Compare {
+        op: Comparison,
+        a: String,
+        b: String,
+    },
     /// `OSR`, `OSF`, `OSL`, `OSC`.
     OneShot(OneShotKind),
     /// `SHIFT_REGISTER name stages`: `name0` … `name<stages-1>`.
@@ -271,7 +293,7 @@ impl Element {
             Element::Res(_) => "RES",
             Element::Unary { op, .. } => op.keyword(),
             Element::Math { op, .. } => op.keyword(),
-            Element::Compare { op, .. } => op.keyword(),
+            Element::Compare { op, .. } => compare_keyword(*op),
             Element::OneShot(k) => k.keyword(),
             Element::ShiftRegister { .. } => "SHIFT_REGISTER",
             Element::LookUpTable { .. } => "LOOK_UP_TABLE",
@@ -387,7 +409,6 @@ keywords!(UnaryOp {
     Move => "MOVE", Not => "NOT", Neg => "NEG", Bin2Bcd => "BIN2BCD", Bcd2Bin => "BCD2BIN",
     Opposite => "OPPOSITE", Swap => "SWAP", SeedRandom => "SEED_RANDOM",
 });
-keywords!(CompareOp { Equ => "EQU", Neq => "NEQ", Grt => "GRT", Geq => "GEQ", Les => "LES", Leq => "LEQ" });
 
 /// The elements that drive hardware Hashigo does not simulate, by keyword.
 pub const HARDWARE: [&str; 25] = [

@@ -4,7 +4,7 @@
 //! counters as LDmicro's own blocks ([`crate::runtime::ldmicro`]) on
 //! the variable of their name.
 
-use super::element::{is_number, number, CompareOp, Element as Ld, MathOp, OneShotKind, UnaryOp};
+use super::element::{is_number, number, Element as Ld, MathOp, OneShotKind, UnaryOp};
 use super::error::LdError;
 use super::parts::{ld_box, operand, Part};
 use super::texts::{serial, string, uart_block};
@@ -457,14 +457,7 @@ fn operation(e: &Ld) -> Result<BlockCall, LdError> {
             Ok(function(kind, inputs, dest))
         }
         Ld::Compare { op, a, b } => {
-            let kind = match op {
-                CompareOp::Equ => "EQ",
-                CompareOp::Neq => "NE",
-                CompareOp::Grt => "GT",
-                CompareOp::Geq => "GE",
-                CompareOp::Les => "LT",
-                CompareOp::Leq => "LE",
-            };
+            let kind = op.name();
             let inputs = vec![("IN1", operand(a)?), ("IN2", operand(b)?)];
             Ok(ld_box(kind, String::new(), inputs, Vec::new()))
         }

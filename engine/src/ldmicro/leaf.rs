@@ -163,7 +163,7 @@ fn operation(l: &Line) -> Option<Result<Element, LdError>> {
             _ => Err(l.wrong("dest src")),
         });
     }
-    if let Some(op) = CompareOp::from_keyword(l.keyword) {
+    if let Some(op) = compare_from_keyword(l.keyword) {
         return Some(match args {
             [a, b] => Ok(Element::Compare {
                 op,

@@ -11,6 +11,7 @@ use crate::iec::data::{Arith, Bitwise, Data, DataType};
 use crate::iec::il::{parse_il, Function, IlError, Line, Operand, Operator};
 use crate::iec::literal::string_value;
 use crate::iec::vars::{parse_vars_at, Kind, VarError, Variable};
+use crate::iec::Comparison;
 use crate::runtime::instance::Instance;
 use check::{binary_type, describe, invertible, jump, need_cr};
 use flex::{Flex, Flow, Open, Pending};
@@ -26,23 +27,12 @@ pub(super) enum Src {
     Const(Data),
 }
 
-/// A comparison.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Cmp {
-    Gt,
-    Ge,
-    Eq,
-    Ne,
-    Le,
-    Lt,
-}
-
 /// An operation that works on the current result and an operand.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Binary {
     Logic(Bitwise, bool),
     Arith(Arith),
-    Cmp(Cmp),
+    Cmp(Comparison),
 }
 
 /// One resolved instruction.
@@ -480,12 +470,12 @@ impl Program {
             Operator::Mul => Binary::Arith(Arith::Mul),
             Operator::Div => Binary::Arith(Arith::Div),
             Operator::Mod => Binary::Arith(Arith::Mod),
-            Operator::Gt => Binary::Cmp(Cmp::Gt),
-            Operator::Ge => Binary::Cmp(Cmp::Ge),
-            Operator::Eq => Binary::Cmp(Cmp::Eq),
-            Operator::Ne => Binary::Cmp(Cmp::Ne),
-            Operator::Le => Binary::Cmp(Cmp::Le),
-            _ => Binary::Cmp(Cmp::Lt),
+            Operator::Gt => Binary::Cmp(Comparison::Gt),
+            Operator::Ge => Binary::Cmp(Comparison::Ge),
+            Operator::Eq => Binary::Cmp(Comparison::Eq),
+            Operator::Ne => Binary::Cmp(Comparison::Ne),
+            Operator::Le => Binary::Cmp(Comparison::Le),
+            _ => Binary::Cmp(Comparison::Lt),
         };
         need_cr(flow.cr)?;
         if line.deferred {

@@ -4,9 +4,7 @@
 //! run one instruction at a time ([`Cursor`]), as the page's step button
 //! and the tracer need.
 
-use std::cmp::Ordering;
-
-use super::program::{Binary, Cmp, Named, Program, Src, Step, STEPS_PER_SCAN};
+use super::program::{Binary, Named, Program, Src, Step, STEPS_PER_SCAN};
 use crate::iec::address::{Address, Area};
 use crate::iec::data::DataType;
 use crate::iec::data::{self, Data, Shift};
@@ -422,14 +420,7 @@ fn apply(op: Binary, a: &Data, b: &Data) -> Data {
         Binary::Logic(bitwise, false) => a.bitwise(bitwise, b),
         Binary::Logic(bitwise, true) => a.bitwise(bitwise, &negate(b.clone(), true)),
         Binary::Arith(arith) => a.arith(arith, b),
-        Binary::Cmp(cmp) => Some(Data::Bool(a.compare(b).is_some_and(|o| match cmp {
-            Cmp::Gt => o == Ordering::Greater,
-            Cmp::Ge => o != Ordering::Less,
-            Cmp::Eq => o == Ordering::Equal,
-            Cmp::Ne => o != Ordering::Equal,
-            Cmp::Le => o != Ordering::Greater,
-            Cmp::Lt => o == Ordering::Less,
-        }))),
+        Binary::Cmp(cmp) => Some(Data::Bool(a.compare(b).is_some_and(|o| cmp.holds(o)))),
     };
     result.unwrap_or(Data::Bool(false))
 }

@@ -6,9 +6,10 @@ use super::body::{Body, Gate, GateKind};
 use super::declare::Names;
 use super::dom::Node;
 use super::error::ImportError;
-use super::kinds::{BlockKind, Comparison};
+use super::kinds::BlockKind;
 use super::parts::is_variable_name;
 use crate::error::Located;
+use crate::iec::Comparison;
 use crate::ladder::grid::Pos;
 
 /// The input pins of a comparison Hashigo reads, in order (IEC extends

@@ -4,6 +4,8 @@
 
 use std::fmt;
 
+use crate::iec::Comparison;
+
 /// A block type Hashigo lowers to ladder.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum BlockKind {
@@ -37,17 +39,6 @@ pub(super) enum BlockKind {
     Rs,
     /// A comparison of words.
     Compare(Comparison),
-}
-
-/// A comparison block.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Comparison {
-    Gt,
-    Ge,
-    Eq,
-    Ne,
-    Le,
-    Lt,
 }
 
 /// Every block type by its IEC name.
