@@ -8,26 +8,7 @@
 use std::fmt;
 
 use crate::iec::Comparison;
-
-/// LDmicro's timers: all count scans of the file's cycle in a variable of
-/// their own name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TimerKind {
-    /// On-delay.
-    Ton,
-    /// Off-delay.
-    Tof,
-    /// Retentive on-delay.
-    Rto,
-    /// Retentive on-delay counting while the input is off.
-    Rtl,
-    /// Cyclic: a one-scan pulse every period while on.
-    Tcy,
-    /// High for its delay after the input's rise.
-    Thi,
-    /// Low for its delay after the input's fall.
-    Tlo,
-}
+use crate::runtime::ldmicro::TimerKind;
 
 /// LDmicro's counters, each counting in a variable of its own name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -6,6 +6,7 @@ use super::element::*;
 use super::error::LdError;
 use super::file::Version;
 use crate::limits::MAX_LD_TABLE;
+use crate::runtime::ldmicro::TimerKind;
 
 /// An element line being read: its keyword, arguments and whole text.
 struct Line<'a> {

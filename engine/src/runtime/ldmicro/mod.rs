@@ -30,16 +30,30 @@ pub struct Io<'a> {
     pub format: Option<&'a Format>,
 }
 
+/// LDmicro's timers: all count scans of the file's cycle in a variable of
+/// their own name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TimerKind {
+    /// On-delay.
+    Ton,
+    /// Off-delay.
+    Tof,
+    /// Retentive on-delay.
+    Rto,
+    /// Retentive on-delay counting while the input is off.
+    Rtl,
+    /// Cyclic: a one-scan pulse every period while on.
+    Tcy,
+    /// High for its delay after the input's rise.
+    Thi,
+    /// Low for its delay after the input's fall.
+    Tlo,
+}
+
 /// Which LDmicro element a block is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
-    Ton,
-    Tof,
-    Rto,
-    Rtl,
-    Tcy,
-    Thi,
-    Tlo,
+    Timer(TimerKind),
     Ctu,
     Ctd,
     Ctc,
@@ -86,13 +100,13 @@ impl LdBlock {
     /// A new instance of `block` (one of [`NAMES`]).
     pub fn new(block: &str) -> LdBlock {
         let kind = match block {
-            "LD_TON" => Kind::Ton,
-            "LD_TOF" => Kind::Tof,
-            "LD_RTO" => Kind::Rto,
-            "LD_RTL" => Kind::Rtl,
-            "LD_TCY" => Kind::Tcy,
-            "LD_THI" => Kind::Thi,
-            "LD_TLO" => Kind::Tlo,
+            "LD_TON" => Kind::Timer(TimerKind::Ton),
+            "LD_TOF" => Kind::Timer(TimerKind::Tof),
+            "LD_RTO" => Kind::Timer(TimerKind::Rto),
+            "LD_RTL" => Kind::Timer(TimerKind::Rtl),
+            "LD_TCY" => Kind::Timer(TimerKind::Tcy),
+            "LD_THI" => Kind::Timer(TimerKind::Thi),
+            "LD_TLO" => Kind::Timer(TimerKind::Tlo),
             "LD_CTU" => Kind::Ctu,
             "LD_CTD" => Kind::Ctd,
             "LD_CTC" => Kind::Ctc,
@@ -148,7 +162,7 @@ impl LdBlock {
         };
         let s = bool_in(0);
         self.q = match self.kind {
-            Kind::Ton | Kind::Tof | Kind::Rto | Kind::Rtl | Kind::Tcy | Kind::Thi | Kind::Tlo => {
+            Kind::Timer(_) => {
                 let (period, count) = (word(1), word(2));
                 self.timer(s, period, count)
             }
@@ -269,12 +283,15 @@ impl LdBlock {
     /// holds it; the count written back to `value`.
     fn timer(&mut self, s: bool, period: i64, t: i64) -> bool {
         let mut t = t;
-        if self.kind == Kind::Tof && !self.started {
+        if self.kind == Kind::Timer(TimerKind::Tof) && !self.started {
             // LDmicro starts a TOF's count at its period: off at power-up.
             t = period;
         }
-        let out = match self.kind {
-            Kind::Ton => {
+        let Kind::Timer(kind) = self.kind else {
+            return false;
+        };
+        let out = match kind {
+            TimerKind::Ton => {
                 if !s {
                     t = 0;
                     false
@@ -285,7 +302,7 @@ impl LdBlock {
                     true
                 }
             }
-            Kind::Tof => {
+            TimerKind::Tof => {
                 if s {
                     t = 0;
                     true
@@ -296,7 +313,7 @@ impl LdBlock {
                     false
                 }
             }
-            Kind::Rto => {
+            TimerKind::Rto => {
                 if t < period {
                     if s {
                         t += 1;
@@ -306,7 +323,7 @@ impl LdBlock {
                     true
                 }
             }
-            Kind::Rtl => {
+            TimerKind::Rtl => {
                 if t < period {
                     if !s {
                         t += 1;
@@ -316,9 +333,9 @@ impl LdBlock {
                     true
                 }
             }
-            Kind::Tcy => self.tcy(s, period, &mut t),
-            Kind::Thi => self.thi(s, period, &mut t),
-            _ => self.tlo(s, period, &mut t),
+            TimerKind::Tcy => self.tcy(s, period, &mut t),
+            TimerKind::Thi => self.thi(s, period, &mut t),
+            TimerKind::Tlo => self.tlo(s, period, &mut t),
         };
         self.value = t;
         out
