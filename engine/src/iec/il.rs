@@ -510,6 +510,14 @@ fn operand(text: &str) -> Result<Operand, IlError> {
     }
 }
 
+/// An Instruction List program as it was written: its declarations and
+/// lines. The ladder reads a program back through this, whoever loaded
+/// and checked it (the soft PLC's loader), so it needs no machine.
+pub trait IlSource {
+    /// The declarations and the IL lines, in order.
+    fn source(&self) -> (&[crate::iec::vars::Variable], &[Line]);
+}
+
 mod call;
 mod labels;
 use call::call;

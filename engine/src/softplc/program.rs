@@ -532,5 +532,11 @@ fn read(text: &str, blocks: &[String]) -> Result<(Declared, Vec<Line>), Errors> 
     Ok((vars, lines))
 }
 
+impl crate::iec::il::IlSource for Program {
+    fn source(&self) -> (&[Variable], &[Line]) {
+        Program::source(self)
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -1,7 +1,8 @@
 //! The reference evaluator's word data (issue #30): the soft PLC's boxes
 //! run by the book on typed values, with the meaning `ladder::block`
-//! states. It shares the soft PLC's arithmetic (`softplc::data`, tested
-//! on its own) and block state machines, not its compiler or its IL:
+//! states. It shares the soft PLC's arithmetic (`iec::data`, tested
+//! on its own) and block state machines (`runtime`), not its compiler
+//! or its IL:
 //! what the differential tests compare is the compiled program against
 //! this.
 

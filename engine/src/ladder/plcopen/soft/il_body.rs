@@ -13,7 +13,7 @@
 //!   examples write it) is joined into one line.
 //!
 //! Labels on their own line and a label whose instruction uses the
-//! current result are the loader's own (`softplc::il`).
+//! current result are the loader's own (`iec::il`).
 
 use std::collections::{HashMap, HashSet};
 
