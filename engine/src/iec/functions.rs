@@ -1,6 +1,7 @@
-//! The standard functions a drawn body calls, as IL: the first data
-//! input loaded, the others applied in turn (`LD IN1`, `ADD IN2`, `ADD
-//! IN3`), the result left for the caller to store. Their type is their
+//! The standard functions (ADD, SEL, MUX, …) a drawn body or a ladder's
+//! box calls, as IL: the first data input loaded, the others applied in
+//! turn (`LD IN1`, `ADD IN2`, `ADD IN3`), the result left for the caller
+//! to store. Their type is their
 //! first typed input's (an untyped literal takes it), or, when every
 //! input is an untyped literal, the type the output feeds.
 

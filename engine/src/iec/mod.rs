@@ -2,7 +2,8 @@
 //! types and typed values with their arithmetic ([`data`]), literals
 //! ([`literal`], the one IEC TIME literal parser among them),
 //! identifiers ([`identifier`]), located variables' addresses
-//! ([`address`]), the blocks' signatures ([`pins`]), and the texts'
+//! ([`address`]), the blocks' signatures ([`pins`]), the standard
+//! functions' typing and IL ([`functions`]), and the texts'
 //! syntax: `VAR … END_VAR` declarations ([`vars`]), Instruction List
 //! lines ([`il`]) and both written back ([`listing`]). It names no
 //! machine and no file format: the ladder, the soft PLC, the file formats
@@ -12,6 +13,7 @@ pub mod address;
 pub(crate) mod comments;
 pub mod comparison;
 pub mod data;
+pub mod functions;
 pub mod identifier;
 pub mod il;
 pub mod listing;

@@ -13,12 +13,12 @@
 
 use super::{Compiler, Pin};
 use crate::iec::data::DataType;
+use crate::iec::functions::{Function, Operand};
 use crate::iec::pins;
 use crate::iec::pins::ldmicro::text_input;
 use crate::iec::{literal_type, Address};
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::grid::{LadderError, Pos};
-use crate::ladder::plcopen::soft::functions::{Function, Operand};
 use crate::ladder::variables::Variable;
 
 impl Compiler {

@@ -11,13 +11,13 @@
 use std::collections::HashMap;
 
 use super::declare::{Declarations, Held, Interface};
-use super::functions::{Function, Operand};
 use super::graph::{Element, Graph, Kind, Source};
 use super::infer::output_type;
 use super::order::order;
 use super::SoftError;
 use crate::error::Located;
 use crate::iec::data::DataType;
+use crate::iec::functions::{Function, Operand};
 use crate::iec::is_identifier;
 use crate::iec::pins::is_block_type;
 use crate::iec::pins::{inputs as fb_inputs, outputs as fb_outputs};

@@ -32,7 +32,7 @@ pub enum SoftError {
     /// A block instance declared as another type (instance, type).
     Instance(String, String),
     /// A function called with inputs it does not take (its type, why).
-    Function(String, super::functions::FunctionError),
+    Function(String, crate::iec::functions::FunctionError),
     /// A call of one of the project's own POUs.
     ProjectBlock(String, String),
     /// A block type the soft PLC does not have.

@@ -5,10 +5,10 @@
 //! line, as the IL loader refuses an unknown `CAL` pin.
 
 use super::declare::Interface;
-use super::functions::Function;
 use super::graph::Element;
 use super::SoftError;
 use crate::iec::data::DataType;
+use crate::iec::functions::Function;
 use crate::iec::pins::is_block_type;
 use crate::iec::pins::outputs as fb_outputs;
 

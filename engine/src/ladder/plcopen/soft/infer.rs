@@ -8,10 +8,10 @@
 use std::collections::HashMap;
 
 use super::declare::Interface;
-use super::functions::{Function, Operand};
 use super::graph::{Element, Graph, Kind, Source};
 use super::order::order;
 use crate::iec::data::DataType;
+use crate::iec::functions::{Function, Operand};
 use crate::iec::pins::outputs as fb_outputs;
 
 /// Passes over the body's functions at most: each pass settles every

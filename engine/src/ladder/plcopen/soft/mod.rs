@@ -11,7 +11,6 @@ mod declare;
 mod emit;
 pub mod error;
 mod formal;
-pub(crate) mod functions;
 mod graph;
 mod il_body;
 mod infer;
