@@ -5,8 +5,8 @@
 //! uses the current result, RET in a program, a CAL over several lines.
 
 use engine::events::InputValue;
+use engine::formats::plcopen::soft::to_il;
 use engine::iec::{Data, DataType};
-use engine::ladder::plcopen::soft::to_il;
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};

@@ -10,11 +10,11 @@ use std::collections::HashMap;
 
 use super::SoftError;
 use crate::error::Located;
+use crate::formats::plcopen::dom::Node;
 use crate::iec::data::DataType;
 use crate::iec::pins::is_block_type;
 use crate::iec::vars::Direction;
 use crate::iec::{parse_literal, Address};
-use crate::ladder::plcopen::dom::Node;
 
 /// What a declared name holds.
 #[derive(Clone, Debug, PartialEq)]

@@ -123,7 +123,7 @@ impl fmt::Display for SoftError {
                 "{reader} is wired from {block}'s `{pin}`, an output the block does not have (its outputs: {has})"
             ),
             SoftError::VendorLogic(why) => {
-                f.write_str(&crate::ladder::plcopen::vendor::logic_refused(why))
+                f.write_str(&crate::formats::plcopen::vendor::logic_refused(why))
             }
             SoftError::Follows => f.write_str("fed by an element refused above"),
             SoftError::UndeclaredInstance(name, ty) => write!(

@@ -7,7 +7,7 @@ use std::collections::HashMap;
 
 use super::SoftError;
 use crate::error::Located;
-use crate::ladder::plcopen::dom::Node;
+use crate::formats::plcopen::dom::Node;
 
 /// What an element is.
 #[derive(Clone, Debug, PartialEq)]
@@ -161,7 +161,7 @@ pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
     let mut errors = Vec::new();
     for n in &body.children {
         if n.name == "vendorElement" {
-            use crate::ladder::plcopen::vendor::{classify, Vendor};
+            use crate::formats::plcopen::vendor::{classify, Vendor};
             // Titles and settings do not run; IL has no rung comments.
             match classify(n) {
                 Vendor::Title(_) | Vendor::Cosmetic => {}

@@ -21,7 +21,7 @@ use super::declare::Declarations;
 use super::emit::Output;
 use super::SoftError;
 use crate::error::Located;
-use crate::ladder::plcopen::dom::Node;
+use crate::formats::plcopen::dom::Node;
 
 /// The text of `pou`'s IL body, if it has one, and the node it is in.
 pub(super) fn il_body(pou: &Node) -> Option<&Node> {
