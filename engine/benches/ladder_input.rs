@@ -9,8 +9,8 @@
 //! Run with `cargo bench -p engine --bench ladder_input`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use engine::formats::plcopen::import;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::plcopen::import;
 use engine::ladder::Project;
 
 #[path = "../tests/hostile/gen.rs"]

@@ -8,8 +8,8 @@
 //! The page and the worker exchange [`Envelope`]s as JSON text; what each
 //! request does is plain Rust ([`handle`]), tested natively.
 
+use engine::formats::plcopen::{self, declare, dom, drawn_body, import_pou, VarMap};
 use engine::ladder::edit::{align_outputs, COLUMNS};
-use engine::ladder::plcopen::{self, declare, dom, drawn_body, import_pou, VarMap};
 use engine::ladder::Ladder;
 use engine::MachineId;
 use serde::{Deserialize, Serialize};
@@ -104,7 +104,7 @@ pub fn handle(request: Request) -> Reply {
         ),
         Request::OpenLd { file, text } => Reply::OpenLd(open_ld(&file, &text)),
         Request::ExportLd { ladder, cycle_us } => Reply::ExportLd(
-            engine::ldmicro::export(&ladder, cycle_us)
+            engine::formats::ldmicro::export(&ladder, cycle_us)
                 .map_err(|errors| errors.iter().map(ToString::to_string).collect()),
         ),
     }
@@ -113,14 +113,14 @@ pub fn handle(request: Request) -> Reply {
 /// An LDmicro file read and drawn for the soft PLC; every problem at its
 /// line.
 fn open_ld(file: &str, text: &str) -> Result<LdOpened, Vec<String>> {
-    let at = |errors: Vec<engine::Located<engine::ldmicro::LdError>>| {
+    let at = |errors: Vec<engine::Located<engine::formats::ldmicro::LdError>>| {
         errors
             .iter()
             .map(|e| format!("{file}:{}: {}", e.line, e.error))
             .collect::<Vec<_>>()
     };
-    let parsed = engine::ldmicro::parse(text).map_err(at)?;
-    let ladder = engine::ldmicro::to_ladder(&parsed).map_err(at)?;
+    let parsed = engine::formats::ldmicro::parse(text).map_err(at)?;
+    let ladder = engine::formats::ldmicro::to_ladder(&parsed).map_err(at)?;
     Ok(LdOpened {
         ladder: align_outputs(&ladder, COLUMNS - 1),
         cycle_us: parsed.cycle_us,

@@ -1,6 +1,6 @@
 use super::*;
+use engine::formats::plcopen::import_for;
 use engine::ladder::edit::{align_outputs, COLUMNS};
-use engine::ladder::plcopen::import_for;
 
 const NAMED: &str = include_str!("../../engine/tests/ladder/fixtures/openplc-named.xml");
 

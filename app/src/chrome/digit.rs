@@ -14,7 +14,7 @@ enum Shape {
     Dot,
 }
 
-/// Where segment `name` (a letter of `engine::softplc::segments::names`)
+/// Where segment `name` (a letter of `engine::runtime::ldmicro::segments::names`)
 /// is on a digit of `segments` segments.
 fn shape(segments: u8, name: char) -> Shape {
     use Shape::{Bar, Dot, Stroke};
@@ -48,11 +48,11 @@ fn shape(segments: u8, name: char) -> Shape {
 }
 
 /// A digit of `segments` segments (7 when not given) lighting the bits
-/// of `lit`, in the order `engine::softplc::segments::names` gives (on
+/// of `lit`, in the order `engine::runtime::ldmicro::segments::names` gives (on
 /// seven: bit 0 = a … bit 6 = g, bit 7 the point).
 #[component]
 pub fn Digit(lit: Signal<u32>, #[prop(default = 7)] segments: u8) -> impl IntoView {
-    let names = engine::softplc::segments::names(segments);
+    let names = engine::runtime::ldmicro::segments::names(segments);
     view! {
         <svg viewBox="-2 -2 26 40" class="digit" aria-hidden="true">
             {names

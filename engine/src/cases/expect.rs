@@ -10,8 +10,8 @@
 use std::fmt;
 
 use crate::error::shown;
+use crate::iec::literal::{parse_text, text_literal};
 use crate::plc::Value;
-use crate::softplc::literal::{parse_text, text_literal};
 use crate::time::{SimTime, TimeError};
 
 /// A comparison.

@@ -19,11 +19,12 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use crate::softplc::data::DataType;
-use crate::softplc::ld_blocks::text_input;
-use crate::softplc::pins;
-use crate::softplc::vars::{is_block_type, is_identifier};
-use crate::softplc::{parse_literal, Address};
+use crate::iec::data::DataType;
+use crate::iec::is_identifier;
+use crate::iec::pins;
+use crate::iec::pins::is_block_type;
+use crate::iec::pins::ldmicro::text_input;
+use crate::iec::{parse_literal, Address};
 
 /// One box: what it calls and what its pins are wired to.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -192,7 +193,7 @@ impl BlockCall {
             }
             if text_input(&kind).is_some_and(|t| t.eq_ignore_ascii_case(pin)) {
                 // An LDmicro formatted string's text: '…'.
-                crate::softplc::literal::parse_text(operand.trim())
+                crate::iec::literal::parse_text(operand.trim())
                     .map_err(|_| BoxError::BadOperand(operand.clone()))?;
             } else if !is_variable(operand)
                 && !is_block_output(operand)

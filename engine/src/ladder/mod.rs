@@ -20,7 +20,6 @@ pub mod eval;
 pub mod grid;
 pub mod live;
 pub mod net;
-pub mod plcopen;
 pub mod project;
 pub mod share;
 pub mod target;

@@ -248,7 +248,7 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
                     why: ": a block's inputs wired as networks are the soft PLC's",
                 });
             }
-            if !crate::softplc::vars::is_identifier(pin) {
+            if !crate::iec::is_identifier(pin) {
                 return Err(ElementError::Block(
                     crate::ladder::block::BoxError::NoSuchInput(
                         "the box".into(),
@@ -419,12 +419,12 @@ fn canonical(machine: MachineId, device: &str, role: Role) -> Result<String, Ele
 /// A soft PLC bit: an address (`%IX0.0`; `%I0.0` is written `%IX0.0`)
 /// or a variable's name.
 fn soft_canonical(device: &str) -> Option<String> {
-    use crate::softplc::{Address, Size};
+    use crate::iec::{Address, Size};
     if device.starts_with('%') {
         let a = Address::parse(device).ok()?;
         return (a.size == Size::Bit).then(|| a.to_string());
     }
-    crate::softplc::vars::is_identifier(device).then(|| device.to_string())
+    crate::iec::is_identifier(device).then(|| device.to_string())
 }
 
 fn io86a_canonical(device: &str, role: Role) -> Result<String, ElementError> {

@@ -8,9 +8,10 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use crate::softplc::data::DataType;
-use crate::softplc::vars::{is_block_type, is_identifier};
-use crate::softplc::{parse_literal, Address, AddressError, LiteralError};
+use crate::iec::data::DataType;
+use crate::iec::is_identifier;
+use crate::iec::pins::is_block_type;
+use crate::iec::{parse_literal, Address, AddressError, LiteralError};
 
 /// One declared variable.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]

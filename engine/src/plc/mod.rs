@@ -1,4 +1,4 @@
-//! One interface to the four machines (docs/architecture.md).
+//! One interface to the five machines (docs/architecture.md).
 //!
 //! The command line, the page and the tests drive every machine through
 //! [`Plc`]: load a program, apply [`Command`]s, advance simulated time (by

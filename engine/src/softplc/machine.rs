@@ -2,10 +2,10 @@
 //! period (read inputs, solve, write outputs), RUN / STOP, the values the
 //! last completed scan left, and scans stepped an instruction at a time.
 
-use super::data::Data;
 use super::program::Program;
 use super::scan::Cursor;
 use crate::clock::PeriodicClock;
+use crate::iec::data::Data;
 use crate::plc::{SettingError, Tracer};
 use crate::time::SimTime;
 
@@ -103,12 +103,12 @@ impl Machine {
     }
 
     /// The serial port (LDmicro's UART blocks).
-    pub fn uart(&self) -> &super::uart::Uart {
+    pub fn uart(&self) -> &crate::runtime::uart::Uart {
         &self.program.uart
     }
 
     /// The serial port, to type at it.
-    pub fn uart_mut(&mut self) -> &mut super::uart::Uart {
+    pub fn uart_mut(&mut self) -> &mut crate::runtime::uart::Uart {
         &mut self.program.uart
     }
 

@@ -6,12 +6,12 @@ use std::collections::HashMap;
 use std::fmt;
 use std::sync::{Arc, Mutex, PoisonError};
 
-use super::data::{Data, DataType};
-use super::literal::in_range;
 use super::machine::Machine;
-use super::pins::outputs;
 use super::program::Program;
 use crate::events::InputValue;
+use crate::iec::data::{Data, DataType};
+use crate::iec::literal::in_range;
+use crate::iec::pins::outputs;
 use crate::plc::SettingInfo;
 use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
 use crate::time::SimTime;

@@ -6,8 +6,8 @@
 
 use std::fmt;
 
-use super::vars::is_identifier;
 use crate::error::Located;
+use crate::iec::is_identifier;
 
 /// A function block the text defines.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -65,7 +65,7 @@ impl std::error::Error for PouError {}
 
 /// The sections of `text`; every problem at its line.
 pub fn split(text: &str) -> Result<Sections, Vec<Located<PouError>>> {
-    let plain = super::comments::blank_long_comments(text);
+    let plain = crate::iec::comments::blank_long_comments(text);
     let lines: Vec<&str> = text.lines().collect();
     let mut owner: Vec<Option<usize>> = vec![None; lines.len()];
     let mut blocks: Vec<(String, usize, usize)> = Vec::new();

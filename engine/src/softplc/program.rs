@@ -5,13 +5,14 @@
 use std::collections::HashMap;
 use std::fmt;
 
-use super::address::{Address, Area};
-use super::data::{Arith, Bitwise, Data, DataType};
-use super::il::{parse_il, Function, IlError, Line, Operand, Operator};
-use super::literal::string_value;
-use super::pins::Instance;
-use super::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::error::Located;
+use crate::iec::address::{Address, Area};
+use crate::iec::data::{Arith, Bitwise, Data, DataType};
+use crate::iec::il::{parse_il, Function, IlError, Line, Operand, Operator};
+use crate::iec::literal::string_value;
+use crate::iec::vars::{parse_vars_at, Kind, VarError, Variable};
+use crate::iec::Comparison;
+use crate::runtime::instance::Instance;
 use check::{binary_type, describe, invertible, jump, need_cr};
 use flex::{Flex, Flow, Open, Pending};
 
@@ -26,23 +27,12 @@ pub(super) enum Src {
     Const(Data),
 }
 
-/// A comparison.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Cmp {
-    Gt,
-    Ge,
-    Eq,
-    Ne,
-    Le,
-    Lt,
-}
-
 /// An operation that works on the current result and an operand.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Binary {
     Logic(Bitwise, bool),
     Arith(Arith),
-    Cmp(Cmp),
+    Cmp(Comparison),
 }
 
 /// One resolved instruction.
@@ -160,7 +150,7 @@ pub struct Program {
     pub(super) instances: Vec<user::UserInstance>,
     pub(super) entries: Vec<usize>,
     /// The serial port LDmicro's UART blocks use.
-    pub(super) uart: super::uart::Uart,
+    pub(super) uart: crate::runtime::uart::Uart,
     /// The standard blocks' outputs read as operands: (block, output,
     /// the slot each call writes it to).
     pub(super) shadows: Vec<(usize, usize, usize)>,
@@ -205,7 +195,7 @@ impl Program {
             user_types: Vec::new(),
             instances: Vec::new(),
             entries: Vec::new(),
-            uart: super::uart::Uart::default(),
+            uart: crate::runtime::uart::Uart::default(),
             shadows: Vec::new(),
         };
         for b in &sections.blocks {
@@ -293,10 +283,10 @@ impl Program {
         let mut out = String::new();
         for t in self.user_types() {
             out.push_str(&format!("FUNCTION_BLOCK {}\n", t.name));
-            out.push_str(&super::listing::listing(&t.vars, &t.lines));
+            out.push_str(&crate::iec::listing::listing(&t.vars, &t.lines));
             out.push_str("END_FUNCTION_BLOCK\n");
         }
-        out.push_str(&super::listing::listing(&self.vars, &self.lines));
+        out.push_str(&crate::iec::listing::listing(&self.vars, &self.lines));
         out
     }
 
@@ -480,12 +470,12 @@ impl Program {
             Operator::Mul => Binary::Arith(Arith::Mul),
             Operator::Div => Binary::Arith(Arith::Div),
             Operator::Mod => Binary::Arith(Arith::Mod),
-            Operator::Gt => Binary::Cmp(Cmp::Gt),
-            Operator::Ge => Binary::Cmp(Cmp::Ge),
-            Operator::Eq => Binary::Cmp(Cmp::Eq),
-            Operator::Ne => Binary::Cmp(Cmp::Ne),
-            Operator::Le => Binary::Cmp(Cmp::Le),
-            _ => Binary::Cmp(Cmp::Lt),
+            Operator::Gt => Binary::Cmp(Comparison::Gt),
+            Operator::Ge => Binary::Cmp(Comparison::Ge),
+            Operator::Eq => Binary::Cmp(Comparison::Eq),
+            Operator::Ne => Binary::Cmp(Comparison::Ne),
+            Operator::Le => Binary::Cmp(Comparison::Le),
+            _ => Binary::Cmp(Comparison::Lt),
         };
         need_cr(flow.cr)?;
         if line.deferred {
@@ -540,6 +530,12 @@ fn read(text: &str, blocks: &[String]) -> Result<(Declared, Vec<Line>), Errors> 
             .collect::<Errors>()
     })?;
     Ok((vars, lines))
+}
+
+impl crate::iec::il::IlSource for Program {
+    fn source(&self) -> (&[Variable], &[Line]) {
+        Program::source(self)
+    }
 }
 
 #[cfg(test)]

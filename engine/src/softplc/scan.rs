@@ -4,15 +4,13 @@
 //! run one instruction at a time ([`Cursor`]), as the page's step button
 //! and the tracer need.
 
-use std::cmp::Ordering;
-
-use super::address::{Address, Area};
-use super::data::DataType;
-use super::data::{self, Data, Shift};
-use super::il::Function;
-use super::pins::Instance;
-use super::program::{Binary, Cmp, Named, Program, Src, Step, STEPS_PER_SCAN};
+use super::program::{Binary, Named, Program, Src, Step, STEPS_PER_SCAN};
+use crate::iec::address::{Address, Area};
+use crate::iec::data::DataType;
+use crate::iec::data::{self, Data, Shift};
+use crate::iec::il::Function;
 use crate::plc::Tracer;
+use crate::runtime::instance::Instance;
 
 /// Where a scan under way stands: the next step, the current result, the
 /// deferred `(` operations and how many steps it has run.
@@ -251,7 +249,7 @@ impl Program {
     /// Output `pin` (its place in the kind's outputs) of block `block`.
     pub fn block_output(&self, block: usize, pin: usize) -> Option<Data> {
         let b = self.blocks.get(block)?;
-        (pin < super::pins::outputs(&self.block_names[block].1).len()).then(|| b.output(pin))
+        (pin < crate::iec::pins::outputs(&self.block_names[block].1).len()).then(|| b.output(pin))
     }
 
     /// Every declared variable's and used address's name with its slot:
@@ -362,7 +360,7 @@ fn call_function(values: &[Data], f: Function, cr: &Data, args: &[Src]) -> Data 
 /// outputs copied.
 fn call_block(
     values: &mut [Data],
-    (blocks, uart): (&mut [Instance], &mut super::uart::Uart),
+    (blocks, uart): (&mut [Instance], &mut crate::runtime::uart::Uart),
     call: &Step,
     now: i64,
 ) {
@@ -422,14 +420,7 @@ fn apply(op: Binary, a: &Data, b: &Data) -> Data {
         Binary::Logic(bitwise, false) => a.bitwise(bitwise, b),
         Binary::Logic(bitwise, true) => a.bitwise(bitwise, &negate(b.clone(), true)),
         Binary::Arith(arith) => a.arith(arith, b),
-        Binary::Cmp(cmp) => Some(Data::Bool(a.compare(b).is_some_and(|o| match cmp {
-            Cmp::Gt => o == Ordering::Greater,
-            Cmp::Ge => o != Ordering::Less,
-            Cmp::Eq => o == Ordering::Equal,
-            Cmp::Ne => o != Ordering::Equal,
-            Cmp::Le => o != Ordering::Greater,
-            Cmp::Lt => o == Ordering::Less,
-        }))),
+        Binary::Cmp(cmp) => Some(Data::Bool(a.compare(b).is_some_and(|o| cmp.holds(o)))),
     };
     result.unwrap_or(Data::Bool(false))
 }

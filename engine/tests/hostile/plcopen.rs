@@ -1,6 +1,6 @@
 //! PLCopen XML: depth, size, duplicate ids, booleans and edges.
 
-use engine::ladder::plcopen::import;
+use engine::formats::plcopen::import;
 use engine::ladder::{ContactKind, Element};
 
 use crate::gen::{plcopen_alternating, plcopen_rails, plcopen_rungs};
@@ -152,7 +152,7 @@ fn an_unknown_edge_is_called_what_it_is() {
     assert_eq!(errors[0].line, 3);
     assert_eq!(
         errors[0].error,
-        engine::ladder::plcopen::ImportError::BadEdge("bogus".into())
+        engine::formats::plcopen::ImportError::BadEdge("bogus".into())
     );
     assert_eq!(
         errors[0].error.to_string(),
@@ -190,7 +190,7 @@ fn thousands_of_or_blocks_lower_in_one_pass() {
 
 /// `xml` imported for IO86A, or a panic with its first errors.
 fn imported_for_io86a(xml: &str) -> engine::ladder::Ladder {
-    engine::ladder::plcopen::import_for(xml, Some(engine::MachineId::Io86a))
+    engine::formats::plcopen::import_for(xml, Some(engine::MachineId::Io86a))
         .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]))
 }
 
@@ -278,7 +278,7 @@ fn a_long_chain_of_connectors_is_refused_not_followed_to_the_end() {
 
 #[test]
 fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
-    use engine::ladder::plcopen::soft::to_il;
+    use engine::formats::plcopen::soft::to_il;
     let started = std::time::Instant::now();
     let rungs = to_il(&plcopen_rungs(5_000, "X00", "Y00"), None).expect("5 000 rungs");
     assert!(rungs.text.lines().count() > 5_000);
@@ -305,7 +305,7 @@ fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
 
 #[test]
 fn thousands_of_boxes_are_drawn_on_the_soft_plc_in_linear_work() {
-    use engine::ladder::plcopen::import_for;
+    use engine::formats::plcopen::import_for;
     let soft = Some(engine::MachineId::SoftPlc);
     let started = std::time::Instant::now();
     // Every counter's reset network joined to its own box.

@@ -4,8 +4,8 @@
 //! hostile -- --ignored` runs thousands.
 
 use engine::avr::asm::assemble;
+use engine::formats::plcopen::import;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::plcopen::import;
 use engine::ladder::{Element, Ladder, Link, Project, Rung};
 use engine::limits::MAX_NESTING;
 use engine::time::MAX_SIM_TIME;

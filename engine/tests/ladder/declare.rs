@@ -3,7 +3,7 @@
 //! file does not use is a warning; real files from other tools, when the
 //! workplace's fixtures are present.
 
-use engine::ladder::plcopen::{import_for, import_mapped, VarMap};
+use engine::formats::plcopen::{import_for, import_mapped, VarMap};
 use engine::MachineId;
 
 use crate::common::{hashigo, text, Temp};
@@ -47,7 +47,7 @@ fn located_variables_map_by_rule_and_the_rest_need_a_map() {
     assert_eq!(comments.get("M05").map(String::as_str), Some("memo"));
     assert_eq!(imported.unused_map_entries, vec![("TON9".to_string(), 2)]);
     // No machine: the names stay as written (a plain import).
-    assert!(engine::ladder::plcopen::import(NAMED).is_ok());
+    assert!(engine::formats::plcopen::import(NAMED).is_ok());
 }
 
 #[test]
@@ -191,7 +191,7 @@ fn line_of(needle: &str) -> usize {
 
 #[test]
 fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
-    use engine::ladder::plcopen::import_pou;
+    use engine::formats::plcopen::import_pou;
     // IO86A: the in-line TON becomes T00's coil and contact (TON0 mapped).
     let map = VarMap::parse("TON0,T00\n").expect("a map");
     let io = import_mapped(TIMER, Some(MachineId::Io86a), Some(&map)).expect("imports");
@@ -319,7 +319,7 @@ fn a_time_from_a_constant_initialised_variable_and_a_proposed_map() {
 /// the map `hashigo map` would propose; the counts docs/ladder.md reports.
 #[test]
 fn the_real_projects_that_compile_with_a_proposed_map() {
-    use engine::ladder::plcopen::{declare, dom};
+    use engine::formats::plcopen::{declare, dom};
     let Ok(entries) = std::fs::read_dir(REAL) else {
         eprintln!("skipped: {REAL} is not here");
         return;

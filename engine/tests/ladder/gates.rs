@@ -3,8 +3,8 @@
 //! table says.
 
 use engine::events::InputValue;
+use engine::formats::plcopen::{import_mapped, VarMap};
 use engine::ladder::compile::compile;
-use engine::ladder::plcopen::{import_mapped, VarMap};
 use engine::machines::{AvrPlc, Io86aPlc};
 use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};
@@ -794,7 +794,7 @@ fn a_relay_holding_an_input_is_written_before_the_rung_reading_it() {
 
 #[test]
 fn a_proposal_skips_the_relay_a_given_timer_and_relay_entry_holds() {
-    use engine::ladder::plcopen::{declare, dom};
+    use engine::formats::plcopen::{declare, dom};
     let xml = timer_block("TOF");
     let root = dom::parse(&xml).expect("parses");
     let given = VarMap::parse("other,T05+M00\n").expect("a map");

@@ -9,7 +9,7 @@
 //! written, shows here. A coil may join several wires (their OR).
 
 use engine::events::InputValue;
-use engine::ladder::plcopen::VarMap;
+use engine::formats::plcopen::VarMap;
 use engine::plc::{Command, Plc};
 use engine::MachineId;
 use proptest::prelude::*;
@@ -535,7 +535,7 @@ const MINASEC: Target = Target {
     relay: |k| format!("M0{k}"),
     load: |xml, map| {
         let imported =
-            engine::ladder::plcopen::import_mapped(xml, Some(MachineId::MinasecU), Some(map))
+            engine::formats::plcopen::import_mapped(xml, Some(MachineId::MinasecU), Some(map))
                 .map_err(|e| format!("{e:?}"))?;
         let text = engine::ladder::compile::compile(
             &imported.ladder,

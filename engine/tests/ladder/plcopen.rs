@@ -1,8 +1,9 @@
 //! PLCopen TC6 XML: both namespaces, OpenPLC's dialect, round trips,
 //! and imported programs running on the machines.
 
+use engine::formats::plcopen::{export, import};
+use engine::iec::literal::parse_time_literal;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::plcopen::{export, import, parse_time_literal};
 use engine::ladder::{Ladder, Project};
 use engine::{avr, MachineId, SimTime};
 use proptest::prelude::*;
@@ -128,7 +129,7 @@ proptest! {
 }
 
 /// An import's warnings, each as `LINE: text`.
-pub(crate) fn said_warnings(imported: &engine::ladder::plcopen::Imported) -> Vec<String> {
+pub(crate) fn said_warnings(imported: &engine::formats::plcopen::Imported) -> Vec<String> {
     imported
         .warnings
         .iter()
@@ -185,7 +186,7 @@ fn bad_files_are_errors_at_their_lines() {
         .position(|l| l.contains("localId=\"99\""))
         .expect("line")
         + 1;
-    let imported = engine::ladder::plcopen::import_mapped(&dangling, None, None).expect("imports");
+    let imported = engine::formats::plcopen::import_mapped(&dangling, None, None).expect("imports");
     let said = said_warnings(&imported);
     assert_eq!(
         said,

@@ -1,8 +1,8 @@
 //! Never a panic: arbitrary text into the project and PLCopen readers,
 //! arbitrary grids into the analysis, every compiler and the exporter.
 
+use engine::formats::plcopen::{export, import};
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::plcopen::{export, import};
 use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Link, Pos, Project, Rung, TimerKind};
 use engine::MachineId;
 use proptest::prelude::*;

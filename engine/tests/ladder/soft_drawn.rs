@@ -4,14 +4,14 @@
 //! (the soft PLC's own PLCopen reader, [`to_il`], is the oracle).
 
 use engine::events::InputValue;
+use engine::formats::plcopen::soft::to_il;
+use engine::formats::plcopen::{export, import_for};
+use engine::iec::Address;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::edit::align_outputs;
-use engine::ladder::plcopen::soft::to_il;
-use engine::ladder::plcopen::{export, import_for};
 use engine::ladder::{Element, Ladder};
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
-use engine::softplc::Address;
 use engine::{MachineId, SimTime};
 
 const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/plcopen");

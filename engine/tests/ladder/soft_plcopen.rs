@@ -4,7 +4,7 @@
 //! behaviour; and a project of our own with word data.
 
 use engine::events::InputValue;
-use engine::ladder::plcopen::soft::to_il;
+use engine::formats::plcopen::soft::to_il;
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};

@@ -235,9 +235,9 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
     plc.set_tracing(true);
     // The same ladder exported as PLCopen (what OpenPLC Editor opens)
     // and read back onto the soft PLC as written.
-    let xml = engine::ladder::plcopen::export(&ladder, "words")
+    let xml = engine::formats::plcopen::export(&ladder, "words")
         .map_err(|e| TestCaseError::fail(format!("export: {e:?}")))?;
-    let again = engine::ladder::plcopen::soft::to_il(&xml, None)
+    let again = engine::formats::plcopen::soft::to_il(&xml, None)
         .map_err(|e| TestCaseError::fail(format!("{e:?}\n{xml}")))?;
     // And the IL read back as a ladder, compiled again.
     let program =

@@ -2,7 +2,7 @@
 //! docs/ldmicro.md lists, as LDmicro 4.x writes them, run as LDmicro runs
 //! them; a form LDmicro itself refuses stays refused.
 
-use engine::ldmicro::{parse, to_ladder};
+use engine::formats::ldmicro::{parse, to_ladder};
 use engine::plc::Plc;
 use engine::SimTime;
 
@@ -56,7 +56,7 @@ fn persist_in_a_branch_beside_boxes_passes_power() {
     assert_eq!(get(plc.as_ref(), "saved"), 3, "the ADD ran each scan");
     // Written back, it reads again as the same ladder, `saved` kept.
     let ladder = to_ladder(&parse(&text).expect("read")).expect("a ladder");
-    let out = engine::ldmicro::export(&ladder, 10_000).expect("written");
+    let out = engine::formats::ldmicro::export(&ladder, 10_000).expect("written");
     let again = to_ladder(&parse(&out).expect("read again")).expect("a ladder again");
     assert_eq!(again.rungs, ladder.rungs, "{out}");
     assert!(again
@@ -128,7 +128,7 @@ fn table_entries_read_as_hobatoi_and_a_word_is_refused() {
     ))
     .expect("read");
     let values = file.elements().find_map(|(e, _)| match e {
-        engine::ldmicro::Element::LookUpTable { values, .. } => Some(values.clone()),
+        engine::formats::ldmicro::Element::LookUpTable { values, .. } => Some(values.clone()),
         _ => None,
     });
     assert_eq!(values, Some(vec![16, 65, 7]));

@@ -3,8 +3,8 @@
 //! runs that project — as written, and opened again as a ladder — as it
 //! runs the file.
 
+use engine::formats::ldmicro::{parse, to_ladder};
 use engine::ladder::compile::{compile, Options};
-use engine::ldmicro::{parse, to_ladder};
 use engine::machines::new_plc;
 use engine::plc::Plc;
 use engine::{MachineId, SimTime};
@@ -23,12 +23,12 @@ fn every_real_file_that_runs_goes_out_as_plcopen_and_runs_the_same() {
             continue;
         };
         let il = compile(&ladder, MachineId::SoftPlc, Options::default()).expect("compiles");
-        let xml = engine::ladder::plcopen::export(&ladder, "ld")
+        let xml = engine::formats::plcopen::export(&ladder, "ld")
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
-        let again = engine::ladder::plcopen::soft::to_il(&xml, None)
+        let again = engine::formats::plcopen::soft::to_il(&xml, None)
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
         // Opened in the page, the project is a ladder again.
-        let opened = engine::ladder::plcopen::import_for(&xml, Some(MachineId::SoftPlc))
+        let opened = engine::formats::plcopen::import_for(&xml, Some(MachineId::SoftPlc))
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
         let redrawn = compile(&opened, MachineId::SoftPlc, Options::default())
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));

@@ -4,8 +4,9 @@
 
 use std::collections::BTreeMap;
 
-use engine::ldmicro::element::{CounterKind, TimerKind};
-use engine::ldmicro::{decode, parse, Element, LdFile, Node, Version};
+use engine::formats::ldmicro::element::CounterKind;
+use engine::formats::ldmicro::{decode, parse, Element, LdFile, Node, Version};
+use engine::runtime::ldmicro::TimerKind;
 
 const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/ldmicro");
 

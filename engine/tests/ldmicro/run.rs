@@ -5,8 +5,8 @@
 //! the master relay, a shift register and a look-up table.
 
 use engine::events::InputValue;
+use engine::formats::ldmicro::{decode, parse, to_ladder};
 use engine::ladder::compile::{compile, Options};
-use engine::ldmicro::{decode, parse, to_ladder};
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};
@@ -335,7 +335,7 @@ fn every_real_file_that_runs_goes_back_out_as_ld_and_reads_as_the_same_ladder() 
         let Ok(ladder) = to_ladder(&file) else {
             continue;
         };
-        let text = engine::ldmicro::export(&ladder, file.cycle_us)
+        let text = engine::formats::ldmicro::export(&ladder, file.cycle_us)
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
         let again = parse(&text).unwrap_or_else(|e| panic!("{name}: {e:?}\n{text}"));
         assert_eq!(again.cycle_us, file.cycle_us);
@@ -373,7 +373,7 @@ fn an_element_ldmicro_has_no_form_for_is_refused_at_its_cell() {
     {
         *kind = engine::ladder::ContactKind::Rising;
     }
-    let errors = engine::ldmicro::export(&ladder, 10_000).expect_err("refused");
+    let errors = engine::formats::ldmicro::export(&ladder, 10_000).expect_err("refused");
     assert_eq!((errors[0].rung, errors[0].pos.map(|p| p.col)), (1, Some(0)));
     assert!(errors[0].message.contains("OSR"), "{}", errors[0].message);
 }
@@ -386,7 +386,7 @@ fn a_rung_of_a_coil_alone_is_always_on_and_writes_back_as_it_was() {
     assert_eq!(get(plc.as_ref(), "Yq"), 1);
     let file = parse(&text).expect("reads");
     let ladder = to_ladder(&file).expect("draws");
-    let out = engine::ldmicro::export(&ladder, file.cycle_us).expect("writes");
+    let out = engine::formats::ldmicro::export(&ladder, file.cycle_us).expect("writes");
     assert!(
         out.contains("RUNG 1\n    SHORT\n    COIL Yq 0 0 0 0\nEND"),
         "{out}"
@@ -491,7 +491,7 @@ fn ldmicros_word_operations_work_in_the_width_the_var_list_gives() {
     // Written back as the same elements.
     let file = parse(text).expect("reads");
     let ladder = to_ladder(&file).expect("draws");
-    let out = engine::ldmicro::export(&ladder, file.cycle_us).expect("writes");
+    let out = engine::formats::ldmicro::export(&ladder, file.cycle_us).expect("writes");
     for line in [
         "BIN2BCD bcd n",
         "BCD2BIN back bcd",
@@ -523,7 +523,7 @@ fn a_piecewise_linear_table_interpolates_and_time2count_counts_cycles() {
     assert_eq!(get(plc.as_ref(), "n"), 5, "50 ms in 10 ms cycles");
     let file = parse(&text).expect("reads");
     let ladder = to_ladder(&file).expect("draws");
-    let out = engine::ldmicro::export(&ladder, file.cycle_us).expect("writes");
+    let out = engine::formats::ldmicro::export(&ladder, file.cycle_us).expect("writes");
     let back = to_ladder(&parse(&out).expect("reads")).expect("draws");
     assert_eq!(back.rungs, ladder.rungs, "{out}");
 }
@@ -731,7 +731,7 @@ fn arithmetic_wraps_in_the_width_the_var_list_gives_and_16_bits_by_default() {
     assert_eq!(got, vec![-128, -32768, 32768, 1, -4, 9, -32768]);
     // Written back, the VAR LIST keeps the widths: the same ladder again.
     let ladder = to_ladder(&parse(text).expect("reads")).expect("draws");
-    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    let out = engine::formats::ldmicro::export(&ladder, 10_000).expect("exports");
     assert!(
         out.contains("VAR LIST\n    1 bytes b\n    4 bytes d\n    1 bytes r\nEND"),
         "{out}"
@@ -787,7 +787,7 @@ fn several_bytes_go_out_and_come_in_the_lowest_first() {
     assert_eq!(get(plc.as_ref(), "Yq"), 1);
     // Written back with their counts, read again the same.
     let ladder = to_ladder(&parse(text).expect("reads")).expect("draws");
-    let back = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    let back = engine::formats::ldmicro::export(&ladder, 10_000).expect("exports");
     assert!(
         back.contains("UART_SEND w 2 0") && back.contains("UART_RECV r 2 0"),
         "{back}"

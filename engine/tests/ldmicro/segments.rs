@@ -5,8 +5,8 @@
 //! them; back out as `.ld`; and the waiting UART refused for having no
 //! meaning scan by scan.
 
-use engine::ldmicro::{parse, to_ladder};
-use engine::softplc::segments::{letters, lit};
+use engine::formats::ldmicro::{parse, to_ladder};
+use engine::runtime::ldmicro::segments::{letters, lit};
 use engine::SimTime;
 
 use crate::run::{get, load, set};
@@ -70,7 +70,7 @@ fn a_count_shown_on_a_digit_lights_its_segments_and_the_anode_digit_the_inverse(
 #[test]
 fn a_digit_goes_back_out_as_the_same_7segments_lines() {
     let ladder = to_ladder(&parse(COUNTER).expect("reads")).expect("draws");
-    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    let out = engine::formats::ldmicro::export(&ladder, 10_000).expect("exports");
     for line in [
         "7SEGMENTS seg n C",
         "7SEGMENTS anode n A",
@@ -122,7 +122,7 @@ fn nine_fourteen_and_sixteen_segment_digits_light_in_ldmicros_layout() {
     );
     // Back out as the same lines.
     let ladder = to_ladder(&parse(WIDE).expect("reads")).expect("draws");
-    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    let out = engine::formats::ldmicro::export(&ladder, 10_000).expect("exports");
     for line in [
         "9SEGMENTS s9 n C",
         "14SEGMENTS s14 n C",

@@ -5,7 +5,7 @@
 //! back out as `.ld`; a text C would read another argument for is
 //! refused at its line.
 
-use engine::ldmicro::{parse, to_ladder};
+use engine::formats::ldmicro::{parse, to_ladder};
 use engine::plc::{Plc, Value};
 use engine::SimTime;
 
@@ -91,7 +91,7 @@ fn the_cli_watches_a_string_and_quotes_it_where_csv_needs() {
 fn a_string_goes_back_out_as_the_line_it_was() {
     let text = program(COUNT);
     let ladder = to_ladder(&parse(&text).expect("reads")).expect("lowers");
-    let out = engine::ldmicro::export(&ladder, 10_000).expect("exports");
+    let out = engine::formats::ldmicro::export(&ladder, 10_000).expect("exports");
     assert!(
         out.contains("STRING msg n 7 110 61 37 48 52 100 59\n"),
         "{out}"
@@ -150,7 +150,7 @@ fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
     let back = decompile(Source::Soft(&loaded)).expect("decompiles");
     let again = compile(&back, MachineId::SoftPlc, Options::default()).expect("recompiles");
     assert_eq!(again, il);
-    let xml = engine::ladder::plcopen::export(&ladder, "strings").expect("exports");
+    let xml = engine::formats::plcopen::export(&ladder, "strings").expect("exports");
     assert!(
         xml.contains("<variable name=\"msg\"><type><string/></type>"),
         "{xml}"
@@ -158,19 +158,19 @@ fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
     // A rung whose box stands on a wire from the rail goes out too, its
     // input on the rail (LDmicro's rungs often start with one).
     let plain = to_ladder(&parse(&program(COUNT)).expect("reads")).expect("lowers");
-    let xml_plain = engine::ladder::plcopen::export(&plain, "count").expect("exports");
+    let xml_plain = engine::formats::plcopen::export(&plain, "count").expect("exports");
     let mut counted = engine::machines::new_plc(MachineId::SoftPlc);
-    let il_plain = engine::ladder::plcopen::soft::to_il(&xml_plain, None).expect("imports");
+    let il_plain = engine::formats::plcopen::soft::to_il(&xml_plain, None).expect("imports");
     counted.load_text(&il_plain.text).expect("runs");
     counted.run_until(SimTime::from_millis(35));
     assert_eq!(read_text(counted.as_ref(), "hi"), string("Hi 100%"));
     assert_eq!(counted.read(counted.device("n").expect("n")).as_i64(), 3);
     // Opened as a ladder, the box keeps its text.
     let opened =
-        engine::ladder::plcopen::import_for(&xml, Some(MachineId::SoftPlc)).expect("opens");
+        engine::formats::plcopen::import_for(&xml, Some(MachineId::SoftPlc)).expect("opens");
     let il_again = compile(&opened, MachineId::SoftPlc, Options::default()).expect("compiles");
     assert!(il_again.contains("FMT := 'n=%04d;'"), "{il_again}");
-    let from_xml = engine::ladder::plcopen::soft::to_il(&xml, None).expect("imports");
+    let from_xml = engine::formats::plcopen::soft::to_il(&xml, None).expect("imports");
     let mut plc = engine::machines::new_plc(MachineId::SoftPlc);
     plc.load_text(&from_xml.text).expect("runs");
     set(plc.as_mut(), "Xa", 1);

@@ -8,9 +8,9 @@
 //! something to wire to; a program's other I/O is added after them.
 
 use engine::events::InputValue;
+use engine::iec::{Address, Area, Size};
 use engine::machines::SoftPlc;
 use engine::plc::{Command, Device, Plc};
-use engine::softplc::{Address, Area, Size};
 use leptos::prelude::*;
 
 use crate::chrome::console::ConsolePane;

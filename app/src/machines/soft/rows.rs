@@ -173,7 +173,7 @@ pub(super) fn Digits(soft: SoftCtx) -> impl IntoView {
 /// and screen readers (`abcdefg.`; engine's `segments::names`).
 #[component]
 fn DigitView(digit: DigitRow) -> impl IntoView {
-    use engine::softplc::segments::{letters, lit};
+    use engine::runtime::ldmicro::segments::{letters, lit};
     let (value, anode, segments) = (digit.value, digit.anode, digit.segments);
     let bits = Signal::derive(move || lit(segments, value.get(), anode));
     let face = move || letters(segments, bits.get());

@@ -35,7 +35,7 @@ impl SourceFile {
         }
         if name.to_ascii_lowercase().ends_with(".ld") {
             // LDmicro's users wrote their notes in Windows' code page.
-            let text = engine::ldmicro::decode(&bytes).into_owned();
+            let text = engine::formats::ldmicro::decode(&bytes).into_owned();
             return Ok(SourceFile { name, text });
         }
         let text = String::from_utf8(bytes).map_err(|e| {

@@ -4,7 +4,7 @@
 //! entries of a `--map` given are kept first. The user edits it and passes
 //! it back as `--map` to compile, run, asm, share or why.
 
-use engine::ladder::plcopen::{self, declare, dom};
+use engine::formats::plcopen::{self, declare, dom};
 use engine::MachineId;
 
 use crate::args::Args;

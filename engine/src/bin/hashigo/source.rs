@@ -1,10 +1,11 @@
 //! `--program` read, compiled when it is a ladder, and loaded into a new
 //! machine of its kind, through the engine's one machine interface.
 
+use engine::formats::plcopen;
+use engine::formats::plcopen::VarMap;
 use engine::ladder::compile::{compile as compile_ladder, Options};
 use engine::ladder::decompile::decompile_text;
-use engine::ladder::plcopen::VarMap;
-use engine::ladder::{plcopen, Project};
+use engine::ladder::Project;
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc, PlcError};
 use engine::{MachineId, SimTime};
@@ -123,8 +124,8 @@ fn ldmicro_project(
             m.name()
         )));
     }
-    let file = engine::ldmicro::parse(&source.text).map_err(|e| source.located(&e))?;
-    let ladder = engine::ldmicro::to_ladder(&file).map_err(|e| source.located(&e))?;
+    let file = engine::formats::ldmicro::parse(&source.text).map_err(|e| source.located(&e))?;
+    let ladder = engine::formats::ldmicro::to_ladder(&file).map_err(|e| source.located(&e))?;
     let mut project = Project::new(MachineId::SoftPlc, ladder);
     let us = file.cycle_us;
     let scan = if us % 1000 == 0 {
@@ -201,8 +202,8 @@ pub fn compile_project(
     compile_ladder(&project.ladder, project.machine, options).map_err(|errors| {
         // An LDmicro file's ladder is the program's own drawing: its
         // problems go at the file's lines, not at rungs it does not have.
-        if let Ok(file) = engine::ldmicro::parse(&source.text) {
-            return source.located(&engine::ldmicro::locate(&file, errors));
+        if let Ok(file) = engine::formats::ldmicro::parse(&source.text) {
+            return source.located(&engine::formats::ldmicro::locate(&file, errors));
         }
         errors
             .iter()

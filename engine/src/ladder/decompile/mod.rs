@@ -102,7 +102,7 @@ pub enum Source<'a> {
     /// An Arduino sketch program.
     Arduino(&'a arduino::Program),
     /// A soft PLC program.
-    Soft(&'a crate::softplc::Program),
+    Soft(&'a dyn crate::iec::il::IlSource),
 }
 
 /// The program as a ladder.

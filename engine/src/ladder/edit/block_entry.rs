@@ -59,7 +59,7 @@ fn call_form(text: &str) -> Result<BlockCall, EntryError> {
         return Err(usage());
     }
     let mut call = new_call(kind, instance);
-    for param in crate::softplc::il::split_params(body)
+    for param in crate::iec::il::split_params(body)
         .into_iter()
         .map(str::trim)
         .filter(|p| !p.is_empty())
@@ -152,7 +152,7 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
                 .filter(|(pin, operand)| {
                     // A constant given (a digit's source) is only read.
                     crate::ladder::block::is_variable(operand)
-                        && crate::softplc::pins::outputs(&call.kind())
+                        && crate::iec::pins::outputs(&call.kind())
                             .iter()
                             .any(|(o, _)| o == pin)
                 })

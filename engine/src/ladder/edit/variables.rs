@@ -4,11 +4,11 @@
 //! BOOL, a removed word a box reads) is refused at that use's cell, with
 //! the compiler's reason; nothing changes.
 
+use crate::iec::is_identifier;
 use crate::ladder::compile::{compile, Options};
 use crate::ladder::element::Element;
 use crate::ladder::grid::{Ladder, LadderError};
 use crate::ladder::variables::Variable;
-use crate::softplc::vars::is_identifier;
 use crate::MachineId;
 
 /// Why the variables pane's edit was refused; nothing changed.

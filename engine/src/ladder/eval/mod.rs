@@ -18,8 +18,8 @@ use super::element::{CoilKind, ContactKind, Element};
 use super::grid::{LadderError, Pos};
 use super::net::{Net, RungLogic};
 use super::variables::Variable;
+use crate::iec::data::Data;
 use crate::scan_timer::ScanTimer;
-use crate::softplc::data::Data;
 
 /// Power into and out of one element in the last evaluation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,18 +1,20 @@
 //! The reference evaluator's word data (issue #30): the soft PLC's boxes
 //! run by the book on typed values, with the meaning `ladder::block`
-//! states. It shares the soft PLC's arithmetic (`softplc::data`, tested
-//! on its own) and block state machines, not its compiler or its IL:
+//! states. It shares the soft PLC's arithmetic (`iec::data`, tested
+//! on its own) and block state machines (`runtime`), not its compiler
+//! or its IL:
 //! what the differential tests compare is the compiled program against
 //! this.
 
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
+use crate::iec::data::{self, Arith, Bitwise, Data, DataType, Shift};
+use crate::iec::pins;
+use crate::iec::{literal_type, parse_literal, Address};
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::variables::Variable;
-use crate::softplc::data::{self, Arith, Bitwise, Data, DataType, Shift};
-use crate::softplc::pins::{self, Instance};
-use crate::softplc::{literal_type, parse_literal, Address};
+use crate::runtime::instance::Instance;
 
 /// Typed values by name (upper-case; a located variable also by its
 /// address) and block instances; BOOLs live in the evaluator's bits.
@@ -28,7 +30,7 @@ pub(super) struct Words {
     kinds: HashMap<String, String>,
     /// The serial port of LDmicro's UART blocks (nothing is typed at it
     /// here: the evaluator checks the ladder's logic).
-    uart: crate::softplc::uart::Uart,
+    uart: crate::runtime::uart::Uart,
 }
 
 /// Where a box's BOOLs are: the evaluator's bits by name.

@@ -12,11 +12,11 @@
 
 use std::collections::HashMap;
 
+use crate::iec::data::DataType;
+use crate::iec::pins;
 use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::{LadderError, LadderErrorKind, Link, Pos, Rung};
-use crate::softplc::data::DataType;
-use crate::softplc::pins;
 
 use super::Net;
 
@@ -466,7 +466,7 @@ mod tests {
 
     #[test]
     fn a_box_input_network_goes_out_as_plcopen_and_in_a_share_link() {
-        use crate::ladder::plcopen;
+        use crate::formats::plcopen;
         let ladder = counter("R", false);
         let xml = plcopen::export(&ladder, "main").expect("exports");
         assert!(xml.contains("_c0_R"), "the network's BOOL is in the export");

@@ -3,12 +3,13 @@
 
 use super::check::find_pin;
 use super::{LoadError, Named, Program, Src, Step};
-use crate::softplc::data::{Data, DataType};
-use crate::softplc::il::{Line, Operand};
-use crate::softplc::ld_blocks::text_input;
-use crate::softplc::ld_format::Format;
-use crate::softplc::ld_printf::Printf;
-use crate::softplc::pins::{inputs, outputs, Printing};
+use crate::iec::data::{Data, DataType};
+use crate::iec::il::{Line, Operand};
+use crate::iec::pins::ldmicro::text_input;
+use crate::iec::pins::{inputs, outputs};
+use crate::runtime::instance::Printing;
+use crate::runtime::ldmicro::format::Format;
+use crate::runtime::ldmicro::printf::Printf;
 use std::sync::Arc;
 
 impl Program {
@@ -172,8 +173,8 @@ impl Program {
     /// block (`LD_SEG7` … `LD_SEG16`) writes, once, in program order,
     /// with its segments and whether the digit is common-anode (its `B`
     /// a constant other than 0).
-    pub fn segment_displays(&self) -> Vec<crate::softplc::segments::Display> {
-        let mut out: Vec<crate::softplc::segments::Display> = Vec::new();
+    pub fn segment_displays(&self) -> Vec<crate::runtime::ldmicro::segments::Display> {
+        let mut out: Vec<crate::runtime::ldmicro::segments::Display> = Vec::new();
         for step in &self.steps {
             let Step::Cal {
                 block,
@@ -203,7 +204,7 @@ impl Program {
                 .iter()
                 .any(|(i, src)| *i == b && matches!(src, Src::Const(Data::Int(_, v)) if *v != 0));
             if !out.iter().any(|d| d.name.eq_ignore_ascii_case(name)) {
-                out.push(crate::softplc::segments::Display {
+                out.push(crate::runtime::ldmicro::segments::Display {
                     name: name.clone(),
                     segments,
                     anode,

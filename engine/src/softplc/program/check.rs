@@ -4,8 +4,8 @@
 use std::collections::HashMap;
 
 use super::{Binary, LoadError, Step};
-use crate::softplc::data::{Arith, DataType};
-use crate::softplc::il::{Line, Operand};
+use crate::iec::data::{Arith, DataType};
+use crate::iec::il::{Line, Operand};
 
 /// The current result's type, where an instruction needs one.
 pub(super) fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {

@@ -24,9 +24,9 @@ use super::check::binary_type;
 use super::said::Said;
 use super::{Binary, LoadError, Program, Src, Step};
 use crate::error::Located;
-use crate::softplc::data::{Data, DataType};
-use crate::softplc::il::{Line, Operand};
-use crate::softplc::literal::{in_range, LiteralError};
+use crate::iec::data::{Data, DataType};
+use crate::iec::il::{Line, Operand};
+use crate::iec::literal::{in_range, LiteralError};
 
 /// One untyped literal of the current result: where its constant is.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -162,12 +162,10 @@ fn as_type(v: i128, t: DataType, line: usize) -> Option<Result<Data, Located<Loa
     Some(in_range(t, v).ok_or_else(|| {
         Located::new(
             line,
-            LoadError::Il(crate::softplc::il::IlError::Literal(
-                LiteralError::OutOfRange {
-                    text: v.to_string(),
-                    data_type: t,
-                },
-            )),
+            LoadError::Il(crate::iec::il::IlError::Literal(LiteralError::OutOfRange {
+                text: v.to_string(),
+                data_type: t,
+            })),
         )
     }))
 }
@@ -280,7 +278,7 @@ impl Program {
             // A typed literal keeps its type: where another is needed it
             // is refused, whether or not its value would fit.
             Operand::Literal(d) if d.data_type() != want => Err(LoadError::Il(
-                crate::softplc::il::IlError::Literal(LiteralError::WrongType {
+                crate::iec::il::IlError::Literal(LiteralError::WrongType {
                     text: d.to_string(),
                     expected: want,
                 }),

@@ -5,8 +5,8 @@
 use super::check::need_cr;
 use super::flex::Flow;
 use super::{LoadError, Program, Step};
-use crate::softplc::data::DataType;
-use crate::softplc::il::{Function, Line, Operand};
+use crate::iec::data::DataType;
+use crate::iec::il::{Function, Line, Operand};
 
 impl Program {
     /// A function call: its operands resolved and joined, the type it

@@ -17,8 +17,8 @@ use super::flex::{becomes, Flex, Flow, Pending};
 use super::said::{self, Said};
 use super::{Errors, LoadError, Program, Step};
 use crate::error::Located;
-use crate::softplc::data::DataType;
-use crate::softplc::il::{Line, Operator};
+use crate::iec::data::DataType;
+use crate::iec::il::{Line, Operator};
 
 /// The current result one way brings to a label.
 struct Way {

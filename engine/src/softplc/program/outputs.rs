@@ -7,7 +7,8 @@
 
 use super::check::find_pin;
 use super::{LoadError, Named, Program, Src, Step};
-use crate::softplc::pins::{inputs, outputs, Instance};
+use crate::iec::pins::{inputs, outputs};
+use crate::runtime::instance::Instance;
 
 /// Why `instance.pin` is not an output of a `kind`: IEC's IL may also
 /// store to a block's input before a bare `CAL` (`ST t0.IN` / `CAL t0`);

@@ -142,7 +142,7 @@ fn functions_take_the_current_result_first() {
 }
 
 fn errors(text: &str) -> Vec<(usize, String)> {
-    crate::softplc::said(Program::load(text))
+    crate::iec::said(Program::load(text))
 }
 
 #[test]
@@ -317,7 +317,7 @@ fn a_formatted_string_takes_its_text_as_a_literal_and_sends_it() {
 
 #[test]
 fn a_text_is_a_string_and_goes_only_where_one_is_taken() {
-    let said = |text: &str| crate::softplc::said(Program::load(text));
+    let said = |text: &str| crate::iec::said(Program::load(text));
     let head = "VAR\n  f : LD_FMTSTR;\n  n : DINT;\nEND_VAR\n";
     assert_eq!(
         said(&format!("{head}CAL f(IN := TRUE, FMT := 5)")),
@@ -378,7 +378,7 @@ fn strings_are_declared_moved_and_compared_as_iec_says() {
 
 #[test]
 fn a_string_is_refused_where_it_does_not_fit_saying_so() {
-    let said = |text: &str| crate::softplc::said(Program::load(text));
+    let said = |text: &str| crate::iec::said(Program::load(text));
     assert_eq!(
         said("VAR\n  s : STRING[20];\nEND_VAR\n"),
         [(
@@ -446,7 +446,7 @@ fn ldmicro_string_prints_into_its_destination_while_powered() {
     p.values[go] = Data::Bool(true);
     p.scan(10 * MS);
     assert_eq!(p.value("out"), Some(Data::text("[  7]")));
-    let said = |text: &str| crate::softplc::said(Program::load(text));
+    let said = |text: &str| crate::iec::said(Program::load(text));
     let head = "VAR\n  s : LD_STRING;\n  out : STRING;\nEND_VAR\n";
     assert_eq!(
         said(&format!("{head}CAL s(FMT := '%f')")),

@@ -9,8 +9,10 @@ use std::collections::HashMap;
 
 use super::{Errors, LoadError, Named, Program, Step};
 use crate::error::Located;
-use crate::softplc::il::Line;
-use crate::softplc::vars::{Direction, Kind, Variable};
+use crate::iec::il::Line;
+use crate::iec::vars::Direction;
+use crate::iec::vars::Kind;
+use crate::iec::vars::Variable;
 
 /// How deeply instances may hold instances (a block holding an instance
 /// of itself would never end).

@@ -5,7 +5,7 @@ use engine::machines::new_plc;
 use engine::plc::Plc;
 use engine::{MachineId, SimTime};
 
-use engine::ladder::plcopen::soft::to_il;
+use engine::formats::plcopen::soft::to_il;
 
 mod plcopen;
 mod vendor;

@@ -1,7 +1,8 @@
 //! Issue #43, round 3: il. The soft PLC's Instruction List loader, its
 //! literals and types (and issue #44's literals and block outputs).
 
-use engine::softplc::{Data, DataType, Program};
+use engine::iec::{Data, DataType};
+use engine::softplc::Program;
 
 const MS: i64 = 1_000_000;
 
@@ -562,7 +563,7 @@ fn a_plcopen_body_reads_a_blocks_output_by_name() {
     use engine::plc::Command;
     use engine::{MachineId, SimTime};
     let program =
-        engine::ladder::plcopen::soft::to_il(READS_CV, None).unwrap_or_else(|e| panic!("{e:?}"));
+        engine::formats::plcopen::soft::to_il(READS_CV, None).unwrap_or_else(|e| panic!("{e:?}"));
     assert!(program.text.contains("c0.CV"), "{}", program.text);
     let mut plc = engine::machines::new_plc(MachineId::SoftPlc);
     plc.load_text(&program.text)
@@ -581,7 +582,7 @@ fn a_plcopen_body_reads_a_blocks_output_by_name() {
 
 #[test]
 fn a_box_reading_a_blocks_output_is_exported_and_opened_again() {
-    use engine::ladder::plcopen::{export, import_for};
+    use engine::formats::plcopen::{export, import_for};
     use engine::MachineId;
     let ladder = counter_and_comparison();
     let xml = export(&ladder, "Main").unwrap_or_else(|e| panic!("{e:?}"));
@@ -595,5 +596,5 @@ fn a_box_reading_a_blocks_output_is_exported_and_opened_again() {
     };
     assert_eq!(logic(&back), logic(&ladder));
     // And the project as written runs it.
-    engine::ladder::plcopen::soft::to_il(&xml, None).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+    engine::formats::plcopen::soft::to_il(&xml, None).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
 }

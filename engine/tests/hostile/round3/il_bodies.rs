@@ -5,10 +5,10 @@
 //! uses the current result, RET in a program, a CAL over several lines.
 
 use engine::events::InputValue;
-use engine::ladder::plcopen::soft::to_il;
+use engine::formats::plcopen::soft::to_il;
+use engine::iec::{Data, DataType};
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
-use engine::softplc::{Data, DataType};
 use engine::{MachineId, SimTime};
 
 const BODIES: &str = include_str!("../fixtures/il-bodies.xml");

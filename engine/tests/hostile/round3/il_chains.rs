@@ -6,8 +6,9 @@
 //! chains here (just under the 100 000 lines of a program text) half
 //! an hour. Each test checks what the chain computes, never a time.
 
+use engine::iec::{Data, DataType};
 use engine::limits::MAX_PROGRAM_LINES;
-use engine::softplc::{Data, DataType, Program};
+use engine::softplc::Program;
 
 /// Lines of each chain: the program text stays within its limit.
 const N: usize = MAX_PROGRAM_LINES - 1_000;

@@ -3,7 +3,7 @@
 
 use std::process::Command;
 
-use engine::softplc::ld_printf::{Printf, PrintfError};
+use engine::runtime::ldmicro::printf::{Printf, PrintfError};
 
 use crate::common::Temp;
 
@@ -150,7 +150,7 @@ fn a_cycle_that_is_no_scan_period_is_refused_at_its_line() {
         ),
         ("10000001", "CYCLE= holds \"10000001\": no scan period"),
     ] {
-        let errors = engine::ldmicro::parse(&cycle_file(cycle)).expect_err(cycle);
+        let errors = engine::formats::ldmicro::parse(&cycle_file(cycle)).expect_err(cycle);
         assert_eq!(errors.len(), 1, "{cycle}: {errors:?}");
         assert_eq!(errors[0].line, 2, "{cycle}");
         let text = errors[0].error.to_string();
@@ -167,7 +167,7 @@ fn a_cycle_that_is_no_scan_period_is_refused_at_its_line() {
             5_000,
         ),
     ] {
-        let file = engine::ldmicro::parse(&cycle_file(cycle)).expect(cycle);
+        let file = engine::formats::ldmicro::parse(&cycle_file(cycle)).expect(cycle);
         assert_eq!(file.cycle_us, us, "{cycle}");
     }
 }
@@ -200,8 +200,8 @@ RUNG\n  CONTACTS msg 0\n  ADD Xa Xa 1\nEND\n";
 /// first: every one is now at its own line in LDmicro's terms.
 #[test]
 fn names_used_as_two_things_are_said_at_each_line_in_ldmicros_terms() {
-    let file = engine::ldmicro::parse(CLASHES).expect("reads");
-    let errors = engine::ldmicro::to_ladder(&file).expect_err("clashes");
+    let file = engine::formats::ldmicro::parse(CLASHES).expect("reads");
+    let errors = engine::formats::ldmicro::to_ladder(&file).expect_err("clashes");
     let said: Vec<(usize, String)> = errors
         .iter()
         .map(|e| (e.line, e.error.to_string()))
@@ -242,8 +242,8 @@ fn names_used_as_two_things_are_said_at_each_line_in_ldmicros_terms() {
 fn a_name_like_an_instance_no_longer_clashes_with_it() {
     let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  TON T1 100000\nEND\n\
         RUNG\n  MOVE T1_ld 4\nEND\n";
-    let file = engine::ldmicro::parse(text).expect("reads");
-    let ladder = engine::ldmicro::to_ladder(&file).expect("a ladder");
+    let file = engine::formats::ldmicro::parse(text).expect("reads");
+    let ladder = engine::formats::ldmicro::to_ladder(&file).expect("a ladder");
     let il = engine::ladder::compile::compile(
         &ladder,
         engine::MachineId::SoftPlc,
@@ -276,8 +276,8 @@ fn what_the_soft_plc_refuses_is_said_at_the_ldmicro_line() {
 #[test]
 fn a_bad_operand_is_said_as_its_elements() {
     let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  MOVE x 'AB'\nEND\n";
-    let file = engine::ldmicro::parse(text).expect("reads");
-    let errors = engine::ldmicro::to_ladder(&file).expect_err("refused");
+    let file = engine::formats::ldmicro::parse(text).expect("reads");
+    let errors = engine::formats::ldmicro::to_ladder(&file).expect_err("refused");
     assert_eq!(errors[0].line, 5);
     assert_eq!(
         errors[0].error.to_string(),
@@ -291,8 +291,8 @@ fn a_bad_operand_is_said_as_its_elements() {
 fn string_project(expect: &[&str]) -> String {
     let text = "LDmicro0.2\nCYCLE=10000\nPROGRAM\nRUNG\n  ADD n n 1\nEND\n\
         RUNG\n  STRING msg n 7 110 61 37 48 52 100 59\nEND\n";
-    let file = engine::ldmicro::parse(text).expect("reads");
-    let ladder = engine::ldmicro::to_ladder(&file).expect("a ladder");
+    let file = engine::formats::ldmicro::parse(text).expect("reads");
+    let ladder = engine::formats::ldmicro::to_ladder(&file).expect("a ladder");
     let mut project = engine::ladder::Project::new(engine::MachineId::SoftPlc, ladder);
     project.tests.push(engine::cases::TestCase {
         name: "count".into(),
@@ -391,8 +391,8 @@ fn text_expectations_read_as_iec_texts_and_refuse_what_they_cannot_mean() {
 fn every_error_of_a_file_is_said_at_once() {
     let text = "LDmicro0.2\nPROGRAM\nRUNG\n  CONTACTS Xa 0\n  PARALLEL\n    TIME2DELAY d 100\n    ADD x x 1\n  END\n  MOVE y 'AB'\nEND\n\
         RUNG\n  CONTACTS x 0\n  RANDOM r\nEND\n";
-    let file = engine::ldmicro::parse(text).expect("reads");
-    let errors = engine::ldmicro::to_ladder(&file).expect_err("refused");
+    let file = engine::formats::ldmicro::parse(text).expect("reads");
+    let errors = engine::formats::ldmicro::to_ladder(&file).expect_err("refused");
     let lines: Vec<usize> = errors.iter().map(|e| e.line).collect();
     assert_eq!(lines, vec![6, 9, 12, 13], "{errors:?}");
     assert!(errors[0].error.to_string().starts_with("TIME2DELAY"));

@@ -12,14 +12,14 @@
 //! used undeclared is declared with its box's kind.
 
 use super::{Compiler, Pin};
+use crate::iec::data::DataType;
+use crate::iec::functions::{Function, Operand};
+use crate::iec::pins;
+use crate::iec::pins::ldmicro::text_input;
+use crate::iec::{literal_type, Address};
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::grid::{LadderError, Pos};
-use crate::ladder::plcopen::soft::functions::{Function, Operand};
 use crate::ladder::variables::Variable;
-use crate::softplc::data::DataType;
-use crate::softplc::ld_blocks::text_input;
-use crate::softplc::pins;
-use crate::softplc::{literal_type, Address};
 
 impl Compiler {
     /// Declares the ladder's variables; their problems (rung 1, as the

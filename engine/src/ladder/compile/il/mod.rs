@@ -14,11 +14,11 @@ use std::collections::{BTreeSet, HashMap};
 
 use super::accumulator::one_line;
 use super::{is_pure, used_devices, Mapped};
+use crate::iec::data::DataType;
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{LadderError, Pos};
 use crate::ladder::net::{Net, RungLogic};
 use crate::ladder::variables::Variable;
-use crate::softplc::data::DataType;
 
 /// Where the power into a network comes from.
 #[derive(Clone, Debug, PartialEq)]
@@ -105,7 +105,7 @@ pub(crate) fn compile_mapped(
         return Err(errors);
     }
     let mut text = String::from("(* compiled by hashigo from a ladder *)\n");
-    text.push_str(&crate::softplc::listing::var_blocks(&c.vars, &c.retained));
+    text.push_str(&crate::iec::listing::var_blocks(&c.vars, &c.retained));
     let header = text.lines().count();
     for l in &c.lines {
         text.push_str(l);

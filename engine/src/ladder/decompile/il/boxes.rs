@@ -11,11 +11,11 @@
 //! `p` is the power held in a generated BOOL (`ST _pN` before it); with
 //! none, the box stands on the rail.
 
+use crate::iec::il::{Function, Line, Operand, Operator};
 use crate::ladder::block::{BlockCall, COMPARISONS};
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
-use crate::softplc::il::{Function, Line, Operand, Operator};
 
 use super::{bad, Walk};
 
@@ -65,8 +65,8 @@ impl Walk<'_> {
     /// word address, a literal other than TRUE / FALSE).
     fn word(&self, line: &Line) -> bool {
         match &line.operand {
-            Some(Operand::Literal(d)) => d.data_type() != crate::softplc::data::DataType::Bool,
-            Some(Operand::Address(a)) => a.size != crate::softplc::Size::Bit,
+            Some(Operand::Literal(d)) => d.data_type() != crate::iec::data::DataType::Bool,
+            Some(Operand::Address(a)) => a.size != crate::iec::Size::Bit,
             Some(Operand::Name(n)) => self.words.contains(&n.to_ascii_uppercase()),
             Some(Operand::Text(_) | Operand::Number(_)) => true,
             None => false,
@@ -125,7 +125,7 @@ impl Walk<'_> {
         // A function on the rail: … / LD TRUE.
         let Some(end) = (i..lines.len()).find(|&k| {
             lines[k].operator == Operator::Ld
-                && lines[k].operand == Some(Operand::Literal(crate::softplc::Data::Bool(true)))
+                && lines[k].operand == Some(Operand::Literal(crate::iec::Data::Bool(true)))
         }) else {
             return Ok(None);
         };

@@ -16,11 +16,12 @@ use std::collections::{HashMap, HashSet};
 
 use super::stack::Stack;
 use super::{contact, drawn, DecompileError, Part, StepError};
+use crate::iec::il::{Line, Operand, Operator};
+use crate::iec::vars::Kind;
+use crate::iec::vars::Variable;
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::{Ladder, Pos};
 use crate::ladder::net::Net;
-use crate::softplc::il::{Line, Operand, Operator};
-use crate::softplc::vars::{Kind, Variable};
 
 /// What a generated BOOL stands for.
 enum Stands {
@@ -51,16 +52,16 @@ type Step = Result<(), DecompileError>;
 pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, DecompileError> {
     let mut words: HashSet<String> = vars
         .iter()
-        .filter(|v| matches!(v.kind, Kind::Value { data_type, .. } if data_type != crate::softplc::data::DataType::Bool))
+        .filter(|v| matches!(v.kind, Kind::Value { data_type, .. } if data_type != crate::iec::data::DataType::Bool))
         .map(|v| v.name.to_ascii_uppercase())
         .collect();
     // A block's word outputs read as operands (`GT c0.CV 3`).
     for v in vars {
         if let Kind::Block(kind) = &v.kind {
-            let outputs = crate::softplc::pins::outputs(kind);
+            let outputs = crate::iec::pins::outputs(kind);
             for (pin, _) in outputs
                 .iter()
-                .filter(|(_, t)| *t != crate::softplc::data::DataType::Bool)
+                .filter(|(_, t)| *t != crate::iec::data::DataType::Bool)
             {
                 words.insert(format!("{}.{pin}", v.name.to_ascii_uppercase()));
             }
@@ -127,7 +128,7 @@ impl<'a> Walk<'a> {
         match (line.operator, &name, line.deferred) {
             (Operator::Ld, Some(n), false) => return self.load(step, n, line.negated),
             (Operator::Ld, None, false)
-                if line.operand == Some(Operand::Literal(crate::softplc::Data::Bool(true))) =>
+                if line.operand == Some(Operand::Literal(crate::iec::Data::Bool(true))) =>
             {
                 self.rail = true;
             }
@@ -259,7 +260,7 @@ impl<'a> Walk<'a> {
                 .map(|(_, v)| v)
         };
         // The power out: the block's first output (Q, QU, Q1).
-        let out_pin = crate::softplc::pins::outputs(kind)
+        let out_pin = crate::iec::pins::outputs(kind)
             .first()
             .map_or("Q", |(p, _)| *p);
         let q = line
@@ -269,7 +270,7 @@ impl<'a> Walk<'a> {
             .map(|(_, v)| v.clone())
             .ok_or_else(|| bad(step, "a call with no power out (Q =>) has no ladder form"))?;
         let from_power = |v: Option<&Operand>| match v {
-            Some(Operand::Literal(crate::softplc::Data::Bool(true))) => true,
+            Some(Operand::Literal(crate::iec::Data::Bool(true))) => true,
             Some(Operand::Name(n)) => self.power.as_deref() == Some(n.as_str()),
             _ => false,
         };
@@ -297,7 +298,7 @@ impl<'a> Walk<'a> {
                 falling: kind == "F_TRIG",
             }),
             "TON" | "TOF" | "TP" if from_power(input("IN")) && timer_shaped(line) => {
-                let Some(Operand::Literal(crate::softplc::Data::Time(ns))) = input("PT") else {
+                let Some(Operand::Literal(crate::iec::Data::Time(ns))) = input("PT") else {
                     return Err(bad(
                         step,
                         "a timer's PT other than a T# literal has no ladder form here",
@@ -314,8 +315,8 @@ impl<'a> Walk<'a> {
                     preset_ms: u32::try_from(ns / 1_000_000).unwrap_or(u32::MAX),
                 })
             }
-            kind if crate::softplc::vars::is_block_type(kind) => {
-                let pins = crate::softplc::pins::inputs(kind);
+            kind if crate::iec::pins::is_block_type(kind) => {
+                let pins = crate::iec::pins::inputs(kind);
                 let power_pin = pins.first().map_or("", |(p, _)| *p);
                 if !from_power(input(power_pin)) {
                     return Err(bad(step, &format!("CAL {block} has no ladder form yet")));
@@ -352,7 +353,7 @@ pub(super) fn declared(vars: &[Variable]) -> Vec<crate::ladder::Variable> {
                     } else {
                         init.to_string()
                     };
-                    if *data_type == crate::softplc::data::DataType::Bool
+                    if *data_type == crate::iec::data::DataType::Bool
                         && v.address.is_none()
                         && initial.is_empty()
                         && !v.retain

@@ -303,9 +303,9 @@ fn a_bit_machines_block_input_it_does_not_have_is_refused_at_its_line() {
     ]
     .concat();
     let xml = project(&vars, &body, "");
-    let map = engine::ladder::plcopen::VarMap::parse("c0,C00\nt0,T00\n").expect("a map");
+    let map = engine::formats::plcopen::VarMap::parse("c0,C00\nt0,T00\n").expect("a map");
     let errors = refused(
-        engine::ladder::plcopen::import_pou(&xml, Some(MachineId::Io86a), Some(&map), None),
+        engine::formats::plcopen::import_pou(&xml, Some(MachineId::Io86a), Some(&map), None),
         "misspelled inputs",
     );
     let said: Vec<String> = errors
@@ -351,10 +351,10 @@ fn every_reader_says_a_wire_from_an_output_a_block_lacks() {
     .concat();
     let xml = project(&vars, &body, "");
     let at = line_of(&xml, "<outVariable localId=\"4\"");
-    let map = engine::ladder::plcopen::VarMap::parse("t0,T00\n").expect("a map");
+    let map = engine::formats::plcopen::VarMap::parse("t0,T00\n").expect("a map");
     let said = |machine| -> Vec<String> {
         let errors = refused(
-            engine::ladder::plcopen::import_pou(&xml, Some(machine), Some(&map), None),
+            engine::formats::plcopen::import_pou(&xml, Some(machine), Some(&map), None),
             "a wire from QQ",
         );
         errors

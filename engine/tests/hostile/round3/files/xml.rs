@@ -2,7 +2,7 @@
 
 use std::time::{Duration, Instant};
 
-use engine::ladder::plcopen::{dom, import};
+use engine::formats::plcopen::{dom, import};
 
 use super::*;
 

@@ -1,0 +1,54 @@
+//! PLCopen TC6 XML, the exchange format of OpenPLC Editor and Beremiz:
+//! LD bodies in and out (docs/ladder.md, "PLCopen XML").
+//!
+//! - [`dom`]: the XML read into a small tree that keeps line numbers;
+//! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
+//! - [`export`](mod@export): rungs to a project file both tools open.
+
+mod address;
+mod blocks;
+mod body;
+mod compare;
+pub mod declare;
+pub mod dom;
+pub mod error;
+pub mod export;
+mod gates;
+pub mod import;
+mod joins;
+mod kinds;
+mod main_line;
+mod map_file;
+mod order;
+mod parts;
+mod placing;
+mod read;
+mod rungs;
+pub mod soft;
+mod soft_boxes;
+mod soft_index;
+mod soft_rungs;
+mod soft_vars;
+pub(crate) mod vendor;
+
+pub use declare::VarMap;
+pub use error::{Connection, ImportError, XmlError};
+pub use export::export;
+pub use import::{drawn_body, import, import_for, import_mapped, import_pou, pou_named, Imported};
+pub use soft_boxes::BoxProblem;
+
+/// The TC6 v2.01 namespace.
+pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";
+/// The TC6 v2.00 namespace (CODESYS V3 exports).
+pub const NS_V200: &str = "http://www.plcopen.org/xml/tc6_0200";
+/// The TC6 v1.0 namespace.
+pub const NS_V10: &str = "http://www.plcopen.org/xml/tc6.xsd";
+
+/// An IEC time literal for `ms` (`T#500ms`, `T#1s`).
+pub fn time_literal(ms: u32) -> String {
+    if ms.is_multiple_of(1000) && ms > 0 {
+        format!("T#{}s", ms / 1000)
+    } else {
+        format!("T#{ms}ms")
+    }
+}

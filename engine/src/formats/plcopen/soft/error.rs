@@ -1,0 +1,137 @@
+//! Why part of a PLCopen project does not run on the soft PLC, in the
+//! file's terms (each at its line, as `ImportError::Soft`).
+
+use std::fmt;
+
+/// Why part of a project does not run on the soft PLC.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SoftError {
+    /// A declaration the soft PLC cannot hold (name, why).
+    Declaration(String, String),
+    /// An element of a drawn body it does not run (its XML name).
+    Element(String),
+    /// An element without a `localId` (its XML name).
+    NoLocalId(String),
+    /// A `localId` used twice.
+    DuplicateId(String),
+    /// A connection to an element that is not there.
+    Missing(String),
+    /// An input that needs a connection and has none (what).
+    Unconnected(String),
+    /// Connectors that feed themselves (a name).
+    ConnectorLoop(String),
+    /// A loop of wires through a block whose output type is not known
+    /// yet (its type).
+    Feedback(String),
+    /// An expression that is no variable, address or literal.
+    Expression(String),
+    /// A name no declaration gives.
+    Undeclared(String),
+    /// A contact or coil on something that is not a BOOL variable.
+    NotABit(String),
+    /// A block instance declared as another type (instance, type).
+    Instance(String, String),
+    /// A function called with inputs it does not take (its type, why).
+    Function(String, crate::iec::functions::FunctionError),
+    /// A call of one of the project's own POUs.
+    ProjectBlock(String, String),
+    /// A block type the soft PLC does not have.
+    Block(String),
+    /// No program the tasks run has a drawn body: each POU and its
+    /// language.
+    NotDrawn(String),
+    /// The generated program does not load (the loader's words).
+    Load(String),
+    /// A block input the block does not have (the block, the pin, the
+    /// inputs it has).
+    NoInput(String, String, String),
+    /// A wire from a block output the block does not have (what the wire
+    /// feeds, the block, the pin, the outputs it has).
+    NoOutput(String, String, String, String),
+    /// An element fed by one already refused: never shown, the first
+    /// refusal says what is wrong (it was called a loop of wires).
+    Follows,
+    /// A vendor element that carries logic (why it is taken to).
+    VendorLogic(String),
+    /// An instance of the project's own function block that no variable
+    /// declares (instance, type).
+    UndeclaredInstance(String, String),
+}
+
+impl fmt::Display for SoftError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SoftError::Declaration(name, why) => write!(f, "variable {name}: {why}"),
+            SoftError::Element(e) => {
+                let what = match e.as_str() {
+                    "vendorElement" => " (an element of the tool that wrote the file)",
+                    "jump" | "label" | "return" => " (jumps are not run yet)",
+                    "actionBlock"
+                    | "step"
+                    | "transition"
+                    | "selectionDivergence"
+                    | "selectionConvergence"
+                    | "simultaneousDivergence"
+                    | "simultaneousConvergence"
+                    | "macroStep" => " (SFC is not run)",
+                    _ => "",
+                };
+                write!(f, "<{e}> does not run on the soft PLC{what}")
+            }
+            SoftError::NoLocalId(e) => write!(f, "<{e}> has no localId"),
+            SoftError::DuplicateId(id) => write!(f, "localId {id} is used twice"),
+            SoftError::Missing(id) => write!(f, "a connection to {id}, which is not drawn"),
+            SoftError::Unconnected(what) => write!(f, "{what} is not connected"),
+            SoftError::ConnectorLoop(name) => write!(f, "connector {name} feeds itself"),
+            SoftError::Feedback(ty) => write!(
+                f,
+                "{ty} block: a loop of wires through it whose type nothing gives: type a literal in the loop (INT#1) or break it with a variable"
+            ),
+            SoftError::Expression(x) => {
+                write!(f, "`{x}` is not a variable, an address or a literal")
+            }
+            SoftError::Undeclared(name) => write!(f, "`{name}` is not declared"),
+            SoftError::NotABit(name) => write!(f, "{name} is not a BOOL variable"),
+            SoftError::Instance(name, ty) => {
+                write!(f, "{name} is not declared as a {ty} instance")
+            }
+            SoftError::Function(ty, why) => write!(f, "{ty}: {why}"),
+            SoftError::ProjectBlock(name, how) => write!(
+                f,
+                "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD or written in IL"
+            ),
+            SoftError::Block(name) if name.eq_ignore_ascii_case("EXECUTE") => write!(
+                f,
+                "{name} is CODESYS's block of in-line ST: the soft PLC does not run ST"
+            ),
+            SoftError::Block(name) => write!(
+                f,
+                "{name} is not a standard block the soft PLC has (a vendor's or a library's block)"
+            ),
+            SoftError::NotDrawn(pous) => {
+                write!(
+                    f,
+                    "no program the tasks run is drawn in LD or FBD or written in IL: {pous}"
+                )
+            }
+            SoftError::Load(why) => f.write_str(why),
+            SoftError::NoInput(block, pin, has) => {
+                write!(f, "{block} has no input `{pin}` (its inputs: {has})")
+            }
+            SoftError::NoOutput(reader, block, pin, has) => write!(
+                f,
+                "{reader} is wired from {block}'s `{pin}`, an output the block does not have (its outputs: {has})"
+            ),
+            SoftError::VendorLogic(why) => {
+                f.write_str(&crate::formats::plcopen::vendor::logic_refused(why))
+            }
+            SoftError::Follows => f.write_str("fed by an element refused above"),
+            SoftError::UndeclaredInstance(name, ty) => write!(
+                f,
+                "{name} is not declared: declare it as a {ty} instance (`{name} : {ty};`) among the POU's variables"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SoftError {}

@@ -1,0 +1,324 @@
+//! PLCopen projects on the soft PLC as written (issue #30): no map, no
+//! lowering. Declared names stay names, located variables keep their
+//! addresses, and each drawn (LD or FBD) body of the programs the tasks
+//! run becomes Instruction List that runs its graph as drawn
+//! ([`emit`]): contacts, coils, every standard function and function
+//! block the soft PLC has, wired ORs, connectors, EN / ENO. What it does
+//! not run (SFC, ST or IL bodies, the project's own function blocks,
+//! vendor blocks) is refused at its line with the reason.
+
+mod declare;
+mod emit;
+pub mod error;
+mod formal;
+mod graph;
+mod il_body;
+mod infer;
+mod order;
+
+use super::dom::Node;
+use super::import::{choose_pous, drawn_body, language, project};
+use super::ImportError;
+use crate::error::Located;
+use crate::softplc::Program;
+pub use error::SoftError;
+use std::collections::HashMap;
+
+/// A project as the soft PLC's program text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SoftProgram {
+    /// The Instruction List, with its declarations.
+    pub text: String,
+    /// What was left out, each at its line (POUs no task runs).
+    pub warnings: Vec<Located<String>>,
+}
+
+type Errors = Vec<Located<ImportError>>;
+
+fn soft(errors: Vec<Located<SoftError>>) -> Errors {
+    errors
+        .into_iter()
+        .map(|e| Located::new(e.line, ImportError::Soft(e.error)))
+        .collect()
+}
+
+/// The programs the tasks run (or `pou` alone) as one soft PLC program
+/// that loads; every problem at its line of the file.
+pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
+    let root = project(text)?;
+    let mut pous = Vec::new();
+    root.descendants("pou", &mut pous);
+    let mut warnings = Vec::new();
+    let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
+    let own = own_types(&pous);
+    let mut declarations = declare::declarations(&root, &chosen, &own).map_err(soft)?;
+    let blocks = used_blocks(&pous, &declarations, &own).map_err(soft)?;
+    // A block the programs use is not skipped, whatever the tasks say.
+    warnings.retain(|w| !blocks.iter().any(|(p, _)| p.line == w.line));
+    let user: HashMap<String, declare::Interface> = blocks
+        .iter()
+        .map(|(p, d)| {
+            let name = p.attr("name").unwrap_or_default().to_ascii_uppercase();
+            (name, d.interface())
+        })
+        .collect();
+    let mut errors = Vec::new();
+    let mut sections = block_sections(blocks, &own, &user, text, &mut errors);
+    let mut out = emit::Output::default();
+    let mut drawn = 0;
+    // The labels of the programs' IL bodies, one section for them all.
+    let mut labels = std::collections::HashSet::new();
+    for (index, p) in chosen.iter().enumerate() {
+        if let Some(il) = il_body::il_body(p) {
+            drawn += 1;
+            let place = il_body::Place {
+                decl: &declarations,
+                out: &mut out,
+                labels: Some(&mut labels),
+            };
+            errors.extend(il_body::write(p, il, text, place));
+            continue;
+        }
+        if drawn_body(p).is_none() {
+            let what = format!("{} in {}", p.attr("name").unwrap_or_default(), language(p));
+            errors.push(Located::new(p.line, SoftError::NotDrawn(what)));
+            continue;
+        }
+        drawn += 1;
+        let em = emitter(
+            &mut declarations,
+            &mut out,
+            p,
+            sections.len() + index,
+            &own,
+            &user,
+        );
+        errors.extend(emit_body(em, p));
+    }
+    if drawn == 0 && errors.is_empty() {
+        errors.push(Located::new(root.line, SoftError::NotDrawn(String::new())));
+    }
+    if !errors.is_empty() {
+        return Err(soft(errors));
+    }
+    for (_, _, o) in &mut sections {
+        warnings.append(&mut o.warnings);
+    }
+    warnings.append(&mut out.warnings);
+    let text = Text::of(&sections, &declarations, &out, &root);
+    text.loads(root.line)?;
+    Ok(SoftProgram {
+        text: text.text,
+        warnings,
+    })
+}
+
+type Section<'a> = (&'a Node, declare::Declarations, emit::Output);
+
+/// The project's own function blocks' sections (from `source`), each
+/// body written as the soft PLC's IL; their problems into `errors`.
+fn block_sections<'a>(
+    blocks: Vec<(&'a Node, declare::Declarations)>,
+    own: &declare::OwnTypes,
+    user: &HashMap<String, declare::Interface>,
+    source: &str,
+    errors: &mut Vec<Located<SoftError>>,
+) -> Vec<Section<'a>> {
+    let mut sections = Vec::new();
+    for (index, (p, mut d)) in blocks.into_iter().enumerate() {
+        let mut out = emit::Output::default();
+        if let Some(il) = il_body::il_body(p) {
+            let place = il_body::Place {
+                decl: &d,
+                out: &mut out,
+                labels: None,
+            };
+            errors.extend(il_body::write(p, il, source, place));
+        } else {
+            let em = emitter(&mut d, &mut out, p, index, own, user);
+            errors.extend(emit_body(em, p));
+        }
+        sections.push((p, d, out));
+    }
+    sections
+}
+
+/// The project's own POUs, and which of them run as blocks.
+fn own_types(pous: &[&Node]) -> declare::OwnTypes {
+    declare::OwnTypes {
+        names: pous
+            .iter()
+            .filter_map(|p| {
+                let kind = match p.attr("pouType") {
+                    Some("functionBlock") => "function block",
+                    Some("function") => "function",
+                    _ => "program",
+                };
+                Some((
+                    p.attr("name")?.to_string(),
+                    format!("{kind} in {}", language(p)),
+                ))
+            })
+            .collect(),
+        blocks: pous
+            .iter()
+            .filter(|p| p.attr("pouType") == Some("functionBlock") && runs(p))
+            .filter_map(|p| p.attr("name").map(str::to_string))
+            .collect(),
+    }
+}
+
+/// Whether the soft PLC runs `pou`'s body: drawn (LD, FBD) or IL.
+fn runs(pou: &Node) -> bool {
+    drawn_body(pou).is_some() || il_body::il_body(pou).is_some()
+}
+
+/// `pou`'s drawn body emitted by `em`; its problems.
+fn emit_body(mut em: emit::Emitter, pou: &Node) -> Vec<Located<SoftError>> {
+    match drawn_body(pou).map(graph::read) {
+        Some(Ok(g)) => em.body(&g).err().unwrap_or_default(),
+        Some(Err(e)) => e,
+        None => Vec::new(),
+    }
+}
+
+fn emitter<'a>(
+    decl: &'a mut declare::Declarations,
+    out: &'a mut emit::Output,
+    pou: &Node,
+    index: usize,
+    own: &'a declare::OwnTypes,
+    user: &'a HashMap<String, declare::Interface>,
+) -> emit::Emitter<'a> {
+    emit::Emitter {
+        decl,
+        out,
+        pou: pou.attr("name").unwrap_or_default().to_string(),
+        index,
+        own_blocks: own,
+        user,
+        consumers: Default::default(),
+        failed: Default::default(),
+    }
+}
+
+/// The project's own function blocks the programs use (their instances'
+/// types, and the types of the instances those hold), each with its
+/// declarations, in the order first met.
+fn used_blocks<'a>(
+    pous: &[&'a Node],
+    program: &declare::Declarations,
+    own: &declare::OwnTypes,
+) -> Result<Vec<(&'a Node, declare::Declarations)>, Vec<Located<SoftError>>> {
+    let mut todo: Vec<String> = program.user_types();
+    let mut out: Vec<(&Node, declare::Declarations)> = Vec::new();
+    while let Some(t) = todo.pop() {
+        let seen = out
+            .iter()
+            .any(|(p, _)| p.attr("name").is_some_and(|n| n.eq_ignore_ascii_case(&t)));
+        if seen || out.len() > 1_000 {
+            continue;
+        }
+        let Some(p) = pous
+            .iter()
+            .find(|p| p.attr("name").is_some_and(|n| n.eq_ignore_ascii_case(&t)))
+        else {
+            continue;
+        };
+        let d = declare::block_declarations(p, own)?;
+        todo.extend(d.user_types());
+        out.push((p, d));
+    }
+    Ok(out)
+}
+
+/// The program text being written, and the file line of each line.
+#[derive(Default)]
+struct Text {
+    text: String,
+    origin: Vec<usize>,
+}
+
+impl Text {
+    /// The program's own function blocks' sections, then the program.
+    fn of(
+        sections: &[(&Node, declare::Declarations, emit::Output)],
+        program: &declare::Declarations,
+        out: &emit::Output,
+        root: &Node,
+    ) -> Text {
+        let mut text = Text::default();
+        text.push("(* from a PLCopen project by hashigo *)".into(), root.line);
+        for (p, d, o) in sections {
+            text.push(
+                format!("FUNCTION_BLOCK {}", p.attr("name").unwrap_or_default()),
+                p.line,
+            );
+            text.section(d, o, p.line);
+            text.push("END_FUNCTION_BLOCK".into(), p.line);
+        }
+        text.section(program, out, root.line);
+        text
+    }
+
+    /// Loads the text as a check: a problem is said at the file's line
+    /// that made it (`root`: the project's, where none did).
+    fn loads(&self, root: usize) -> Result<(), Errors> {
+        Program::load(&self.text).map(|_| ()).map_err(|problems| {
+            problems
+                .into_iter()
+                .map(|p| {
+                    let line = self
+                        .origin
+                        .get(p.line.wrapping_sub(1))
+                        .copied()
+                        .unwrap_or(root);
+                    Located::new(
+                        line,
+                        ImportError::Soft(SoftError::Load(p.error.to_string())),
+                    )
+                })
+                .collect()
+        })
+    }
+
+    fn push(&mut self, line: String, at: usize) {
+        self.text.push_str(&line);
+        self.text.push('\n');
+        self.origin.push(at);
+    }
+
+    /// A section's declarations (inputs, outputs, locals with the
+    /// generated ones, retained) and lines.
+    fn section(&mut self, d: &declare::Declarations, out: &emit::Output, at: usize) {
+        use crate::iec::vars::Direction;
+        let blocks = [
+            ("VAR_INPUT", Direction::Input, false),
+            ("VAR_OUTPUT", Direction::Output, false),
+            ("VAR", Direction::Local, false),
+            ("VAR_RETAIN", Direction::Local, true),
+        ];
+        for (header, direction, retain) in blocks {
+            let mut vars: Vec<(String, usize)> = d
+                .list
+                .iter()
+                .filter(|v| v.direction == direction && v.retain == retain && !v.line.is_empty())
+                .map(|v| (v.line.clone(), v.xml_line))
+                .collect();
+            if header == "VAR" {
+                vars.extend(out.vars.iter().cloned());
+            }
+            if vars.is_empty() {
+                continue;
+            }
+            self.push(header.into(), at);
+            for (line, from) in vars {
+                self.push(format!("  {line}"), from);
+            }
+            self.push("END_VAR".into(), at);
+        }
+        for (line, from) in &out.lines {
+            self.push(line.clone(), *from);
+        }
+    }
+}
