@@ -63,7 +63,7 @@ pub const EN: Classroom = Classroom {
     not_yet: "Not yet. What to look at:",
     no_hint: "this test does not pass yet",
     not_compiled: "Your ladder does not compile yet: see Listing & problems.",
-    hidden_count: "{n} tests check your answer (hidden by the author).",
+    hidden_count: "Tests that check your answer: {n} (hidden by the author).",
     send: "Send my answer",
     send_note: "Send this link to your teacher: it opens your ladder with its result.",
     edit_exercise: "Edit the exercise",

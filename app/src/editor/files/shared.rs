@@ -82,7 +82,13 @@ pub fn open_fragment(page: Ctx, ladders: Ladders, fragment: &str) {
         Ok(project) => {
             // Every machine has its editor in the page.
             page.machine.set(project.machine);
-            ladders.of(project.machine).show_shared(project);
+            let ctx = ladders.of(project.machine);
+            ctx.show_shared(project);
+            if !ctx.work.shared.get_untracked() {
+                // Taken as this machine's work (an exercise in a fresh
+                // profile): a reload must not open the link again.
+                clear_fragment();
+            }
         }
         Err(e) => {
             let texts = page.lang.get_untracked().texts();

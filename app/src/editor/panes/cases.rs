@@ -241,8 +241,11 @@ fn delete_case(ctx: LadderCtx, i: usize) {
 #[component]
 pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
     let c = move || ctx.page.lang.get().classroom();
+    // Memoised: editing the task must not rebuild the tools under the
+    // user's hands, only a switch between the two views.
+    let student = Memo::new(move |_| ctx.student());
     let hidden = move || {
-        ctx.student()
+        student.get()
             && ctx
                 .cases
                 .exercise
@@ -260,9 +263,9 @@ pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
             .replace("{n}", &ctx.cases.tests.with(Vec::len).to_string())
     };
     view! {
-        <section class="tests-pane" data-testid="tests" data-student=move || ctx.student().to_string()>
-            {move || if ctx.student() {
-                view! { <super::exercise::StudentView ctx /> }.into_any()
+        <section class="tests-pane" data-testid="tests" data-student=move || student.get().to_string()>
+            {move || if student.get() {
+                view! { <super::exercise::StudentView ctx check=Callback::new(move |()| run_all(ctx)) /> }.into_any()
             } else {
                 view! {
                     <TestsBar ctx />

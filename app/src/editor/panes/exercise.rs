@@ -158,10 +158,10 @@ fn TaskText(text: String) -> impl IntoView {
         .collect_view()
 }
 
-/// The student's view: the task, Check my answer, the result, the link
-/// to send back, and the author's way in.
+/// The student's view: the task, Check my answer (`check`: runs the
+/// cases), the result, the link to send back, and the author's way in.
 #[component]
-pub fn StudentView(ctx: LadderCtx) -> impl IntoView {
+pub fn StudentView(ctx: LadderCtx, check: Callback<()>) -> impl IntoView {
     let c = move || ctx.page.lang.get().classroom();
     let task = move || {
         let lang = ctx.page.lang.get().code();
@@ -188,7 +188,7 @@ pub fn StudentView(ctx: LadderCtx) -> impl IntoView {
             </Show>
             <div class="find-row">
                 <button type="button" class="primary" data-testid="exercise-check"
-                    on:click=move |_| crate::editor::panes::cases::run_all(ctx)>{move || c().check}</button>
+                    on:click=move |_| check.run(())>{move || c().check}</button>
                 <button type="button" data-testid="exercise-send" on:click=send>{move || c().send}</button>
                 <button type="button" class="quiet" data-testid="exercise-edit"
                     on:click=move |_| ctx.cases.authoring.set(true)>{move || c().edit_exercise}</button>

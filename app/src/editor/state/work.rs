@@ -66,17 +66,20 @@ impl LadderCtx {
         }
     }
 
-    /// Whether this machine's work here is empty: no project open, no
-    /// rung, no test (a fresh profile, or a ladder never drawn).
+    /// Whether this machine has no work of its own here: no project
+    /// open, no test, and no ladder drawn and saved (a fresh profile shows
+    /// the machine's default program, which nobody saved).
     fn no_own_work(&self) -> bool {
+        let drawn = self.with_editor(|e| {
+            e.ladder()
+                .rungs
+                .iter()
+                .any(|r| r.elements().next().is_some())
+        });
+        let saved = crate::storage::saved_string(&store::key(self.machine)).is_some();
         self.work.project.get_untracked().is_none()
             && self.cases.tests.with_untracked(Vec::is_empty)
-            && self.with_editor(|e| {
-                e.ladder()
-                    .rungs
-                    .iter()
-                    .all(|r| r.elements().next().is_none())
-            })
+            && !(drawn && saved)
     }
 
     /// The shared project becomes this machine's ladder without a word:
