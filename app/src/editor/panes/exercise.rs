@@ -178,6 +178,19 @@ pub fn StudentView(ctx: LadderCtx, check: Callback<()>) -> impl IntoView {
             Err(e) => ctx.panes.message.set(Some(e.to_string())),
         }
     };
+    let check_now = move |_| {
+        check.run(());
+        // The result is drawn under the buttons, which a short dock may
+        // hide: brought into view, the page moved no more than needed.
+        request_animation_frame(|| {
+            let found = document().query_selector("[data-testid=exercise-result]");
+            if let Ok(Some(result)) = found {
+                let options = web_sys::ScrollIntoViewOptions::new();
+                options.set_block(web_sys::ScrollLogicalPosition::Nearest);
+                result.scroll_into_view_with_scroll_into_view_options(&options);
+            }
+        });
+    };
     view! {
         <div class="exercise" data-testid="exercise-view">
             <Show when=move || !task().trim().is_empty()>
@@ -188,7 +201,7 @@ pub fn StudentView(ctx: LadderCtx, check: Callback<()>) -> impl IntoView {
             </Show>
             <div class="find-row">
                 <button type="button" class="primary" data-testid="exercise-check"
-                    on:click=move |_| check.run(())>{move || c().check}</button>
+                    on:click=check_now>{move || c().check}</button>
                 <button type="button" data-testid="exercise-send" on:click=send>{move || c().send}</button>
                 <button type="button" class="quiet" data-testid="exercise-edit"
                     on:click=move |_| ctx.cases.authoring.set(true)>{move || c().edit_exercise}</button>
