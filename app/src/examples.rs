@@ -21,6 +21,7 @@ pub fn open(machine: MachineId, id: &str, workspaces: Workspaces) {
     match ladder.ladder_of_text(example.text) {
         Ok(new) => {
             ladder.apply(Edit::Replace { ladder: new });
+            ladder.clean_slate();
             if machine == MachineId::MinasecU {
                 // The pane holds the example's own text: the same program.
                 ladder.adopt_text();

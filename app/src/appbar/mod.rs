@@ -119,7 +119,7 @@ fn FileMenu(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let machine = ctx.machine;
     view! {
-        <button type="button" data-testid="menu-new" on:click=move |_| { ctx.apply(engine::ladder::edit::Edit::NewLadder); }>
+        <button type="button" data-testid="menu-new" on:click=move |_| ctx.new_ladder()>
             {move || t().new_ladder}
         </button>
         <button type="button" data-testid="projects-open" on:click=move |_| ctx.panes.toggle(ctx.panes.projects_open)>

@@ -221,7 +221,7 @@ fn Toolbar(
             <button type="button" class="icon-button" data-testid="new-ladder" title=move || t().new_ladder
                 aria-label=move || t().new_ladder
                 on:click=move |_| {
-                    ctx.apply(Edit::NewLadder);
+                    ctx.new_ladder();
                     refocus.run(());
                 }><span aria-hidden="true">"+"</span><span class="wide-only" aria-hidden="true">{move || t().new_ladder}</span></button>
             <button type="button" class="icon-button" data-testid="undo" disabled=move || !ctx.drawing.can_undo.get()

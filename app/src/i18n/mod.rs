@@ -1,6 +1,7 @@
 //! The interface's two languages. Every visible string comes from here:
 //! one table, [`Texts`], in English ([`en`]) and Japanese ([`ja`]).
 
+pub mod classroom;
 mod en;
 mod ja;
 pub mod start;
@@ -57,6 +58,14 @@ impl Lang {
         match self {
             Lang::Ja => &start::JA,
             Lang::En => &start::EN,
+        }
+    }
+
+    /// The classroom's strings (exercises, writing tests; issue #49).
+    pub const fn classroom(self) -> &'static classroom::Classroom {
+        match self {
+            Lang::Ja => &classroom::JA,
+            Lang::En => &classroom::EN,
         }
     }
 }

@@ -35,6 +35,10 @@ pub struct TestCase {
     /// Expectations, one a line ([`Expectation`]).
     #[serde(default)]
     pub expect: Vec<String>,
+    /// The author's hint, shown to a student whose answer fails this
+    /// case (an exercise's words instead of the expectation's).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub hint: String,
 }
 
 /// How a case came out.

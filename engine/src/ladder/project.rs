@@ -12,12 +12,16 @@ use crate::limits::{
 };
 use crate::MachineId;
 
+mod exercise;
+pub use exercise::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
+
 /// The `format` field every project file carries.
 pub const FORMAT: &str = "hashigo-project";
 /// The newest project version this build reads. A project is written as
 /// version 1 unless it has the soft PLC's boxes or variables (version 2,
-/// issue #30), so that older Hashigos open every project they can.
-pub const VERSION: u32 = 2;
+/// issue #30) or an exercise's task, hidden tests or hints (version 3,
+/// issue #49), so that older Hashigos open every project they can.
+pub const VERSION: u32 = 3;
 
 /// A saved project.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -40,10 +44,16 @@ pub struct Project {
     /// Test cases that travel with the ladder (docs/tests.md).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub tests: Vec<crate::cases::TestCase>,
-    /// The tests are an exercise: a link opens with them shown and the
-    /// ladder as its author left it.
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub exercise: bool,
+    /// The tests are an exercise (its task, whether its tests are
+    /// shown): a link opens with it shown and the ladder as its author
+    /// left it. Older files say `"exercise": true`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "exercise::read",
+        serialize_with = "exercise::write"
+    )]
+    pub exercise: Option<Exercise>,
 }
 
 impl Project {
@@ -56,7 +66,7 @@ impl Project {
             settings: BTreeMap::new(),
             ladder,
             tests: Vec::new(),
-            exercise: false,
+            exercise: None,
         }
     }
 
@@ -125,9 +135,15 @@ impl Project {
         serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
     }
 
-    /// The oldest version that holds the project: 2 with the soft PLC's
-    /// boxes or variables, else 1.
+    /// The oldest version that holds the project: 3 with an exercise's
+    /// task, hidden tests or a case's hint; 2 with the soft PLC's boxes or
+    /// variables; else 1.
     pub fn needed_version(&self) -> u32 {
+        if self.exercise.as_ref().is_some_and(|e| !e.is_plain())
+            || self.tests.iter().any(|c| !c.hint.is_empty())
+        {
+            return 3;
+        }
         let words = !self.ladder.variables.is_empty()
             || self
                 .ladder

@@ -20,6 +20,7 @@ fn case(events: &str, expect: &[&str]) -> TestCase {
         name: "case".into(),
         events: events.into(),
         expect: expect.iter().map(|s| s.to_string()).collect(),
+        hint: String::new(),
     }
 }
 
@@ -191,13 +192,13 @@ fn hashigo_test_refuses_bad_input() {
 #[test]
 fn cases_and_the_exercise_flag_travel_in_share_links() {
     let mut project = Project::from_json(SEED).expect("seed");
-    project.exercise = true;
+    project.exercise = Some(Default::default());
     let link = share::encode(&project).expect("encodes");
     assert!(link.starts_with("2."), "{link:.10}");
     assert_eq!(share::decode(&link), Ok(project.clone()));
     // Without cases a link is what it always was.
     project.tests.clear();
-    project.exercise = false;
+    project.exercise = None;
     assert!(share::encode(&project).expect("encodes").starts_with("1."));
 }
 

@@ -25,6 +25,7 @@ fn with_cases(cases: &[(&str, &str, Vec<String>)]) -> String {
             name: name.to_string(),
             events: events.to_string(),
             expect: expect.clone(),
+            hint: String::new(),
         })
         .collect();
     project.to_json()

@@ -175,6 +175,7 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
                     ladder: opened.ladder,
                 });
             }
+            target.clean_slate();
             let scan = vec![("scan".to_string(), format!("{}us", opened.cycle_us))];
             let refused = target.apply_settings(scan);
             // Said in the soft PLC's editor, which the page now shows.
@@ -208,7 +209,7 @@ fn open_text(
         return;
     }
     let is_xml = start.starts_with('<');
-    let (target, ladder) = if is_xml {
+    let (target, ladder, cases) = if is_xml {
         // Another tool's project may need devices for its variables: the
         // import dialog (docs/ladder.md, "Declarations").
         crate::editor::import::open(ctx, pending, file, text);
@@ -218,7 +219,7 @@ fn open_text(
             Ok(p) => {
                 let target = ladders.map_or(ctx, |l| l.of(p.machine));
                 ctx.page.machine.set(p.machine);
-                (target, p.ladder)
+                (target, p.ladder, (p.tests, p.exercise))
             }
             Err(e) => {
                 ctx.panes
@@ -232,6 +233,9 @@ fn open_text(
     if target.ladder() != ladder {
         target.apply(Edit::Replace { ladder });
     }
+    // A project file brings its own tests (and exercise), on a clean slate.
+    target.show_cases(cases.0, cases.1);
+    target.save();
 }
 
 /// Offers the project (ladder, settings, tests) as a JSON file.

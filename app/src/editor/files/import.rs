@@ -67,6 +67,8 @@ pub fn attempt(
                 if ctx.ladder() != ladder {
                     ctx.apply(Edit::Replace { ladder });
                 }
+                // Another program: nothing said of the last one stays.
+                ctx.clean_slate();
                 shown.set(None);
                 closed();
             }

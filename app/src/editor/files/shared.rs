@@ -45,6 +45,35 @@ pub fn open_from_location(page: Ctx, ladders: Ladders) {
         return;
     };
     open_fragment(page, ladders, &fragment);
+    // A student's answer (`?answer`): checked at once for the teacher,
+    // from the ladder itself (the link carries no verdict to forge).
+    let answer = web_sys::window()
+        .and_then(|w| w.location().search().ok())
+        .is_some_and(|q| q.trim_start_matches('?').split('&').any(|p| p == "answer"));
+    if answer {
+        if let Ok(project) = share::decode(&fragment) {
+            let ctx = ladders.of(project.machine);
+            if ctx.cases.exercise.get_untracked().is_some() {
+                crate::editor::panes::cases::run_all(ctx);
+                let c = page.lang.get_untracked().classroom();
+                page.notice.set(Some(c.answer_of.to_string()));
+            }
+        }
+    }
+}
+
+/// The link a student sends back: the page with `?answer` and `fragment`
+/// (their ladder, the exercise and its tests), checked when opened.
+pub fn answer_url(fragment: &str) -> String {
+    let Some(window) = web_sys::window() else {
+        return format!("?answer#{fragment}");
+    };
+    let l = window.location();
+    format!(
+        "{}{}?answer#{fragment}",
+        l.origin().unwrap_or_default(),
+        l.pathname().unwrap_or_default()
+    )
 }
 
 /// Opens share text `fragment` (see [`open_from_location`]).
@@ -53,7 +82,13 @@ pub fn open_fragment(page: Ctx, ladders: Ladders, fragment: &str) {
         Ok(project) => {
             // Every machine has its editor in the page.
             page.machine.set(project.machine);
-            ladders.of(project.machine).show_shared(project);
+            let ctx = ladders.of(project.machine);
+            ctx.show_shared(project);
+            if !ctx.work.shared.get_untracked() {
+                // Taken as this machine's work (an exercise in a fresh
+                // profile): a reload must not open the link again.
+                clear_fragment();
+            }
         }
         Err(e) => {
             let texts = page.lang.get_untracked().texts();
@@ -88,14 +123,25 @@ pub fn project_of(ctx: LadderCtx) -> Project {
 #[component]
 pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let c = move || ctx.page.lang.get().classroom();
     let url = RwSignal::new(None::<String>);
+    // Whether the clipboard took the link: `None` while it is asked.
+    let copied = RwSignal::new(None::<bool>);
     let share = move |_| match share::encode(&project_of(ctx)) {
         Ok(fragment) => {
             let link = url_with(&fragment);
+            copied.set(None);
             if let Some(window) = web_sys::window() {
                 // The clipboard may be refused (permissions); the link
-                // stays in the field to copy by hand.
-                let _ = window.navigator().clipboard().write_text(&link);
+                // stays in the field to copy by hand, and the page says so.
+                use leptos::wasm_bindgen::{closure::Closure, JsValue};
+                let promise = window.navigator().clipboard().write_text(&link);
+                let ok = Closure::once(move |_: JsValue| copied.set(Some(true)));
+                let refused = Closure::once(move |_: JsValue| copied.set(Some(false)));
+                let _ = promise.then2(&ok, &refused);
+                // Owned by the promise from here (two small closures a click).
+                ok.forget();
+                refused.forget();
             }
             url.set(Some(link));
             ctx.panes.message.set(None);
@@ -118,6 +164,13 @@ pub fn ShareButton(ctx: LadderCtx) -> impl IntoView {
                     }
                 }
             />
+            <span class="share-copied" role="status" data-testid="share-copied" data-copied=move || copied.get().map(|c| c.to_string())>
+                {move || match copied.get() {
+                    Some(true) => c().copied,
+                    Some(false) => c().copy_by_hand,
+                    None => "",
+                }}
+            </span>
         </Show>
     }
 }

@@ -28,7 +28,8 @@ pub fn run_cases(
     };
     prepared
         .iter()
-        .map(|case| {
+        .zip(cases)
+        .map(|(case, source)| {
             let case = match case {
                 Ok(case) => case,
                 Err(e) => return CaseResult::Error(e.to_string()),
@@ -53,10 +54,44 @@ pub fn run_cases(
                     observed,
                     ..
                 }) => CaseResult::Fail(format!("{expectation}: {observed}")),
-                Err(e) => CaseResult::Error(e.to_string()),
+                Err(e) => match unused_device(machine, program, source, &e) {
+                    Some(device) => CaseResult::Unused(device),
+                    None => CaseResult::Error(e.to_string()),
+                },
             }
         })
         .collect()
+}
+
+/// The device a case could not find, when that is because the program
+/// does not use it yet: the soft PLC has only the devices its program
+/// declares or uses, so an empty ladder has no `%IX0.0`. Other machines
+/// have a fixed set of devices: a name they lack is the author's error.
+fn unused_device(
+    machine: MachineId,
+    program: &str,
+    case: &TestCase,
+    e: &engine::cases::CaseError,
+) -> Option<String> {
+    use engine::cases::CaseError;
+    if machine != MachineId::SoftPlc {
+        return None;
+    }
+    let device = match e {
+        CaseError::Event(at) => engine::events::parse_events(&case.events)
+            .ok()?
+            .into_iter()
+            .find(|ev| ev.line == at.line)?
+            .device
+            .clone(),
+        CaseError::Device(i, _) => engine::cases::Expectation::parse(case.expect.get(*i)?)
+            .ok()?
+            .device()
+            .to_string(),
+        _ => return None,
+    };
+    let unknown = e.to_string().contains("unknown device");
+    (unknown && !program.contains(device.as_str())).then_some(device)
 }
 
 /// Records the inputs a user changes while the machine runs: the devices
@@ -142,20 +177,28 @@ impl Recorder {
                     format!("{d} = {want} at {now}ms")
                 })
                 .collect(),
+            hint: String::new(),
         }
     }
 }
 
-/// Runs every case of `ctx`'s project and shows the results.
+/// Runs every case of `ctx`'s project and shows the results. A ladder
+/// that does not compile passes nothing: an exercise says so in its
+/// result (every case failed), the author's view in the message line.
 pub fn run_all(ctx: LadderCtx) {
+    let cases = ctx.cases.tests.get_untracked();
     let Some(listing) = ctx.drawing.listing.get_untracked() else {
+        if ctx.cases.exercise.with_untracked(Option::is_some) {
+            let failed = CaseResult::Error(String::new());
+            ctx.cases.results.set(vec![Some(failed); cases.len()]);
+            return;
+        }
         let t = ctx.page.lang.get_untracked().texts();
         ctx.panes
             .message
             .set(Some(t.tests_need_compile.to_string()));
         return;
     };
-    let cases = ctx.cases.tests.get_untracked();
     let results = run_cases(ctx.machine, &ctx.settings(), &listing.text, &cases);
     ctx.cases
         .results
@@ -192,22 +235,58 @@ fn delete_case(ctx: LadderCtx, i: usize) {
     ctx.save();
 }
 
-/// `[data-testid=tests]`.
+/// `[data-testid=tests]`: the author's tools, or an exercise's student
+/// view; then the cases (read-only for the student, not there when the
+/// author hid them).
 #[component]
 pub fn TestsPane(ctx: LadderCtx) -> impl IntoView {
-    let cases = move || (0..ctx.cases.tests.with(Vec::len)).collect::<Vec<_>>();
+    let c = move || ctx.page.lang.get().classroom();
+    // Memoised: editing the task must not rebuild the tools under the
+    // user's hands, only a switch between the two views.
+    let student = Memo::new(move |_| ctx.student());
+    let hidden = move || {
+        student.get()
+            && ctx
+                .cases
+                .exercise
+                .with(|e| e.as_ref().is_some_and(|e| e.hidden()))
+    };
+    let cases = move || {
+        if hidden() {
+            Vec::new()
+        } else {
+            (0..ctx.cases.tests.with(Vec::len)).collect::<Vec<_>>()
+        }
+    };
+    let count = move || {
+        c().hidden_count
+            .replace("{n}", &ctx.cases.tests.with(Vec::len).to_string())
+    };
     view! {
-        <section class="tests-pane" data-testid="tests">
-            <TestsBar ctx />
+        <section class="tests-pane" data-testid="tests" data-student=move || student.get().to_string()>
+            {move || if student.get() {
+                view! { <super::exercise::StudentView ctx check=Callback::new(move |()| run_all(ctx)) /> }.into_any()
+            } else {
+                view! {
+                    <TestsBar ctx />
+                    <Show when=move || ctx.cases.exercise.with(Option::is_some)>
+                        <super::exercise::ExerciseEditor ctx />
+                    </Show>
+                }.into_any()
+            }}
+            <Show when=hidden>
+                <p class="tests-hidden-note" data-testid="tests-hidden-note">{count}</p>
+            </Show>
             <For each=cases key=|i| *i children=move |i| view! { <CaseView ctx i /> } />
         </section>
     }
 }
 
-/// Run, add, record, the exercise flag and the summary.
+/// Run, add, record, the exercise flag, the guide and the summary.
 #[component]
 fn TestsBar(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let c = move || ctx.page.lang.get().classroom();
     let recording = RwSignal::new(ctx.recording());
     let record = move |_| {
         if ctx.recording() {
@@ -237,6 +316,14 @@ fn TestsBar(ctx: LadderCtx) -> impl IntoView {
             }
         })
     };
+    // Turned on, the author writes the task at once.
+    let toggle = move |_| {
+        let on = ctx.cases.exercise.with_untracked(Option::is_none);
+        ctx.cases.exercise.set(on.then(Default::default));
+        ctx.cases.authoring.set(on);
+        ctx.save();
+    };
+    let guide = move || format!("guide/{}.html#tests", ctx.page.lang.get().code());
     view! {
         <div class="find-row">
             <button type="button" data-testid="run-tests" on:click=move |_| run_all(ctx)>{move || t().run_tests}</button>
@@ -245,19 +332,23 @@ fn TestsBar(ctx: LadderCtx) -> impl IntoView {
                 {move || if recording.get() { t().record_stop } else { t().record_start }}
             </button>
             <label>
-                <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.cases.exercise.get()
-                    on:change=move |_| { ctx.cases.exercise.update(|e| *e = !*e); ctx.save(); } />
+                <input type="checkbox" data-testid="exercise" prop:checked=move || ctx.cases.exercise.with(Option::is_some)
+                    on:change=toggle />
                 {move || t().exercise}
             </label>
+            <a class="tests-guide" data-testid="tests-guide" href=guide target="_blank" rel="noopener">{move || c().guide}</a>
             <span data-testid="tests-summary">{summary}</span>
         </div>
     }
 }
 
-/// Case `i`: its name, timeline, expectations and last result.
+/// Case `i`: its name, timeline, expectations, hint and last result;
+/// read-only in a student's view.
 #[component]
 fn CaseView(ctx: LadderCtx, i: usize) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let c = move || ctx.page.lang.get().classroom();
+    let locked = move || ctx.student();
     let case = move || {
         ctx.cases
             .tests
@@ -266,16 +357,16 @@ fn CaseView(ctx: LadderCtx, i: usize) -> impl IntoView {
     let result = move || ctx.cases.results.with(|r| r.get(i).cloned().flatten());
     let hook = move || match result() {
         Some(CaseResult::Pass) => "pass",
-        Some(CaseResult::Fail(_)) => "fail",
+        Some(CaseResult::Fail(_) | CaseResult::Unused(_)) => "fail",
         Some(CaseResult::Error(_)) => "error",
         None => "",
     };
-    let said = move || match result() {
-        Some(CaseResult::Pass) => t().test_pass.to_string(),
-        Some(CaseResult::Fail(why)) => format!("{}: {why}", t().test_fail),
-        Some(CaseResult::Error(why)) => why,
-        None => String::new(),
-    };
+    let said = move || result().map(|r| said_of(ctx, &case(), r));
+    let (events_error, expect_error) = (
+        move || said().and_then(|s| s.1.then_some(s.0.clone())),
+        move || said().and_then(|s| s.2.then_some(s.0.clone())),
+    );
+    let general = move || said().and_then(|s| (!s.1 && !s.2).then_some(s.0));
     let expectations = |text: String| -> Vec<String> {
         text.lines()
             .map(str::trim)
@@ -285,23 +376,71 @@ fn CaseView(ctx: LadderCtx, i: usize) -> impl IntoView {
     };
     view! {
         <div class="test-case" data-testid=format!("test-case-{i}") data-result=hook>
-            <input class="test-name" data-testid="test-name" aria-label=move || t().case_name prop:value=move || case().name
-                on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.name = v); } />
-            <button type="button" data-testid="test-delete" on:click=move |_| delete_case(ctx, i)>
-                {move || t().delete_test}
-            </button>
+            <div class="test-head">
+                <input class="test-name" data-testid="test-name" aria-label=move || t().case_name prop:value=move || case().name
+                    prop:readOnly=locked on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.name = v); } />
+                <Show when=move || !locked()>
+                    <button type="button" data-testid="test-delete" on:click=move |_| delete_case(ctx, i)>
+                        {move || t().delete_test}
+                    </button>
+                </Show>
+            </div>
             <div class="test-fields">
-                <label>{move || t().timeline}
-                    <textarea data-testid="test-events" spellcheck="false" prop:value=move || case().events
+                <label class="test-field"><span>{move || t().timeline}</span>
+                    <textarea data-testid="test-events" spellcheck="false" rows="5" prop:value=move || case().events
+                        prop:readOnly=locked placeholder=move || c().events_placeholder
                         on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.events = v); } />
+                    <span class="test-error" role="alert">{events_error}</span>
                 </label>
-                <label>{move || t().expectations}
-                    <textarea data-testid="test-expect" spellcheck="false" prop:value=move || case().expect.join("\n")
+                <label class="test-field"><span>{move || t().expectations}</span>
+                    <textarea data-testid="test-expect" spellcheck="false" rows="5" prop:value=move || case().expect.join("\n")
+                        prop:readOnly=locked placeholder=move || c().expect_placeholder
                         on:change=move |e| { let v = expectations(event_target_value(&e)); edit_case(ctx, i, |c| c.expect = v); } />
+                    <span class="test-error" role="alert">{expect_error}</span>
                 </label>
             </div>
-            <div class="test-result" data-testid="test-result">{said}</div>
+            <Show when=move || !locked()>
+                <label class="test-field test-hint"><span>{move || c().hint}</span>
+                    <input data-testid="test-hint" prop:value=move || case().hint placeholder=move || c().hint_placeholder
+                        on:change=move |e| { let v = event_target_value(&e); edit_case(ctx, i, |c| c.hint = v); } />
+                </label>
+            </Show>
+            <div class="test-result" data-testid="test-result">{general}</div>
         </div>
+    }
+}
+
+/// What a case's result says, and whether it is about the timeline's box
+/// or the expectations' (shown under that box, naming its line). A
+/// student is told the case's hint, never the author's error.
+fn said_of(ctx: LadderCtx, case: &TestCase, result: CaseResult) -> (String, bool, bool) {
+    let lang = ctx.page.lang.get();
+    let (t, c) = (lang.texts(), lang.classroom());
+    match result {
+        CaseResult::Pass => (c.pass.to_string(), false, false),
+        CaseResult::Fail(why) => (format!("{}: {why}", t.test_fail), false, false),
+        CaseResult::Unused(device) => (
+            format!(
+                "{}: {}",
+                t.test_fail,
+                c.unused_device.replace("{device}", &device)
+            ),
+            false,
+            false,
+        ),
+        CaseResult::Error(_) if ctx.student() => {
+            let hint = if case.hint.is_empty() {
+                c.no_hint
+            } else {
+                case.hint.as_str()
+            };
+            (format!("{}: {hint}", t.test_fail), false, false)
+        }
+        CaseResult::Error(why) => {
+            let events = why.starts_with("events line");
+            let expect = why.starts_with("expectation ");
+            (why, events, expect)
+        }
     }
 }
 
@@ -378,12 +517,52 @@ mod tests {
     }
 
     #[test]
+    fn a_device_an_empty_soft_plc_ladder_lacks_is_a_failure_not_an_error() {
+        let program = compile(&Ladder::default(), MachineId::SoftPlc, Options::default())
+            .expect("an empty ladder compiles");
+        let case = |events: &str, expect: &str| TestCase {
+            name: "lights".into(),
+            events: events.into(),
+            expect: vec![expect.into()],
+            hint: String::new(),
+        };
+        let results = run_cases(
+            MachineId::SoftPlc,
+            &[],
+            &program,
+            &[
+                case("0ms,%IX0.0,1\n", "%QX0.0 = 1 at 100ms"),
+                case("", "%QX0.0 = 1 at 100ms"),
+            ],
+        );
+        assert_eq!(
+            results,
+            vec![
+                CaseResult::Unused("%IX0.0".into()),
+                CaseResult::Unused("%QX0.0".into())
+            ]
+        );
+        // On a machine with fixed devices a name it lacks is the author's.
+        let io = run_cases(
+            MachineId::Io86a,
+            &[],
+            "END\n",
+            &[case("0ms,X99,1\n", "Y00 = 1 at 1s")],
+        );
+        assert!(
+            matches!(&io[0], CaseResult::Error(e) if e.contains("X99")),
+            "{io:?}"
+        );
+    }
+
+    #[test]
     fn tests_past_the_work_limit_run_none_and_say_so() {
         let program = "LD X00\nOUT Y00\nEND\n";
         let long = |from: u32| TestCase {
             name: format!("from {from}"),
             events: String::new(),
             expect: vec![format!("Y00 stays 0 from {from}ms to 9000s")],
+            hint: String::new(),
         };
         // Each alone is within the limit; all of them together are not.
         let one = run_cases(MachineId::Io86a, &[], program, &[long(0)]);

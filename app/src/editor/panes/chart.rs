@@ -326,6 +326,20 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         ctx.drawing.revision.track();
         chart.redraw();
     });
+    // Another project on a clean slate: the chart's choices (devices,
+    // the scan clicked, the window) were the last project's.
+    Effect::new(move |first: Option<()>| {
+        ctx.work.slate.track();
+        if first.is_some() {
+            chart.devices.set(None);
+            chart.cursor.set(None);
+            chart.error.set(None);
+            chart.window.set(Window {
+                span: SPAN,
+                end: None,
+            });
+        }
+    });
     view! {
         <section class="chart-pane" data-testid="timing-chart">
             <h3>{move || t().chart}</h3>

@@ -4,6 +4,7 @@
 
 pub mod cases;
 pub mod chart;
+pub mod exercise;
 pub mod find;
 pub mod projects;
 pub mod side;

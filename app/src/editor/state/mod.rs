@@ -13,6 +13,7 @@
 //! - [`live`]: the running machine shown on the ladder, recording cases.
 
 mod actions;
+mod classroom;
 mod clock;
 mod live;
 mod rung_view;
@@ -196,6 +197,9 @@ pub struct Work {
     pub project: RwSignal<Option<u64>>,
     /// Where the project is saved, and what another tab did there.
     pub saving: super::autosave::Autosave,
+    /// Bumped at each clean slate (another project opened, imported or
+    /// begun): views with state of their own (the chart) start afresh.
+    pub slate: RwSignal<u64>,
 }
 
 /// The project's test cases (docs/tests.md).
@@ -203,8 +207,12 @@ pub struct Work {
 pub struct Cases {
     /// The cases.
     pub tests: RwSignal<Vec<TestCase>>,
-    /// The tests are an exercise: a link opens with them shown.
-    pub exercise: RwSignal<bool>,
+    /// The tests are an exercise (its task, whether they are hidden): a
+    /// link opens with it shown (docs/tests.md, "Exercises").
+    pub exercise: RwSignal<Option<engine::ladder::project::Exercise>>,
+    /// The author's view of an exercise: its task and tests editable.
+    /// Off, an exercise shows the student's view.
+    pub authoring: RwSignal<bool>,
     /// The last run's result of each case (by index), when run.
     pub results: RwSignal<Vec<Option<CaseResult>>>,
     /// Inputs being recorded into a new case, while recording.
@@ -232,6 +240,10 @@ pub enum CaseResult {
     Fail(String),
     /// The case could not run (a bad line, a device the machine lacks).
     Error(String),
+    /// The case names a device the ladder does not use yet (the soft
+    /// PLC has only the devices its program uses): the answer is not
+    /// there yet, which is a failure, not the author's error.
+    Unused(String),
 }
 
 impl LadderCtx {
@@ -240,9 +252,9 @@ impl LadderCtx {
         let (project, saved) = store::restore(page, machine);
         let (ladder, tests, exercise) = match saved {
             Some(p) => (Some(p.ladder), p.tests, p.exercise),
-            None => (None, Vec::new(), false),
+            None => (None, Vec::new(), None),
         };
-        if exercise && page.machine.get_untracked() == machine {
+        if exercise.is_some() && page.machine.get_untracked() == machine {
             // An exercise opens with its tests shown.
             page.docks.show(crate::docks::Tool::Tests);
         }
@@ -289,10 +301,12 @@ impl LadderCtx {
                 shared_with: StoredValue::new(SharedWith::default()),
                 project: RwSignal::new(project),
                 saving: super::autosave::Autosave::new(&store::slot(machine, project)),
+                slate: RwSignal::new(0),
             },
             cases: Cases {
                 tests: RwSignal::new(tests),
                 exercise: RwSignal::new(exercise),
+                authoring: RwSignal::new(false),
                 results: RwSignal::new(Vec::new()),
                 recorder: StoredValue::new(None),
             },

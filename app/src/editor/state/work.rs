@@ -3,6 +3,7 @@
 //! "Two tabs").
 
 use super::*;
+use engine::ladder::project::Exercise;
 
 /// What showing a shared project set aside: its settings (applied when
 /// kept), whether it replaced the ladder, and the cases it replaced.
@@ -11,7 +12,7 @@ pub(super) struct SharedWith {
     settings: Vec<(String, String)>,
     replaced: bool,
     own_tests: Vec<TestCase>,
-    own_exercise: bool,
+    own_exercise: Option<Exercise>,
 }
 
 impl LadderCtx {
@@ -39,11 +40,15 @@ impl LadderCtx {
         if self.work.shared.get_untracked() {
             self.leave_shared();
         }
+        // A fresh profile has no work of its own to go back to: an
+        // exercise opened there is simply its work (no banner to answer).
+        let adopt = project.exercise.is_some() && self.no_own_work();
         self.work.shared.set(true);
         let own_tests = self.cases.tests.get_untracked();
         let own_exercise = self.cases.exercise.get_untracked();
+        let exercise = project.exercise.is_some();
         self.show_cases(project.tests, project.exercise);
-        if project.exercise {
+        if exercise {
             self.page.docks.show(crate::docks::Tool::Tests);
         }
         let replaced = self.apply(Edit::Replace {
@@ -56,6 +61,37 @@ impl LadderCtx {
             own_tests,
             own_exercise,
         });
+        if adopt {
+            self.adopt_shared();
+        }
+    }
+
+    /// Whether this machine has no work of its own here: no project
+    /// open, no test, and no ladder drawn and saved (a fresh profile shows
+    /// the machine's default program, which nobody saved).
+    fn no_own_work(&self) -> bool {
+        let drawn = self.with_editor(|e| {
+            e.ladder()
+                .rungs
+                .iter()
+                .any(|r| r.elements().next().is_some())
+        });
+        let saved = crate::storage::saved_string(&store::key(self.machine)).is_some();
+        self.work.project.get_untracked().is_none()
+            && self.cases.tests.with_untracked(Vec::is_empty)
+            && !(drawn && saved)
+    }
+
+    /// The shared project becomes this machine's ladder without a word:
+    /// there was nothing to set aside.
+    fn adopt_shared(&self) {
+        self.work.shared.set(false);
+        let settings = self.work.shared_with.with_value(|w| w.settings.clone());
+        let refused = self.apply_settings(settings);
+        self.refresh(true);
+        if !refused.is_empty() {
+            self.page.notice.set(Some(refused.join(" ")));
+        }
     }
 
     /// "Keep it": the shared ladder becomes this machine's ladder and is
@@ -213,7 +249,7 @@ impl LadderCtx {
             .set(Some(format!("{} {name}", texts.conflict_kept)));
     }
 
-    /// The project as it stands: the ladder, its cases, the exercise flag.
+    /// The project as it stands: the ladder, its cases, the exercise.
     pub fn project_now(&self) -> engine::ladder::Project {
         let mut project = engine::ladder::Project::new(self.machine, self.ladder());
         project.tests = self.cases.tests.get_untracked();
@@ -228,10 +264,12 @@ impl LadderCtx {
         }
     }
 
-    /// The cases shown: `tests`, as an exercise or not, none run yet.
-    fn show_cases(&self, tests: Vec<TestCase>, exercise: bool) {
+    /// The cases shown: `tests`, as an exercise or not, on a clean slate
+    /// (an exercise in the student's view).
+    pub(crate) fn show_cases(&self, tests: Vec<TestCase>, exercise: Option<Exercise>) {
         self.cases.tests.set(tests);
         self.cases.exercise.set(exercise);
-        self.cases.results.set(Vec::new());
+        self.cases.authoring.set(false);
+        self.clean_slate();
     }
 }

@@ -5,6 +5,7 @@
 //! against what is left, inflation is capped, and the result is a
 //! [`Project`] or an error naming the byte where the data went wrong.
 
+mod exercise;
 mod words;
 
 use std::collections::BTreeMap;
@@ -28,6 +29,9 @@ pub const PREFIX_TESTS: &str = "2.";
 /// The prefix of a link with the soft PLC's boxes or variables: a
 /// version 2 link followed by the variables.
 pub const PREFIX_WORDS: &str = "3.";
+/// The prefix of a link with an exercise's task, hidden tests or a
+/// case's hint (issue #49): a version 3 link followed by them.
+pub const PREFIX_EXERCISE: &str = "4.";
 /// The most bytes a share text may inflate to.
 const MAX_INFLATED: usize = 1 << 20;
 /// Grid limits a decoded rung must respect (the editor's own).
@@ -107,7 +111,8 @@ impl std::error::Error for ShareError {}
 /// Encodes a project as share text (`1.` + base64url of deflated binary;
 /// a project with test cases, or marked as an exercise, is `2.`: the same
 /// binary followed by the exercise flag and the cases, so that links
-/// without tests stay what they were). A rung larger than a link holds is
+/// without tests stay what they were; `3.` adds the soft PLC's variables
+/// and `4.` an exercise's task, hidden flag and hints). A rung larger than a link holds is
 /// refused, so that no link is made that would not open.
 pub fn encode(project: &Project) -> Result<String, ShareError> {
     for (i, rung) in project.ladder.rungs.iter().enumerate() {
@@ -144,11 +149,12 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
             put_len(&mut w, l.col);
         }
     }
-    let words = words::needed(&project.ladder);
-    let prefix = if project.tests.is_empty() && !project.exercise && !words {
+    let with_exercise = exercise::needed(project);
+    let words = with_exercise || words::needed(&project.ladder);
+    let prefix = if project.tests.is_empty() && project.exercise.is_none() && !words {
         PREFIX
     } else {
-        w.push(u8::from(project.exercise));
+        w.push(u8::from(project.exercise.is_some()));
         put_len(&mut w, project.tests.len());
         for case in &project.tests {
             put_str(&mut w, &case.name);
@@ -158,7 +164,11 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
                 put_str(&mut w, line);
             }
         }
-        if words {
+        if with_exercise {
+            words::put_variables(&mut w, &project.ladder.variables);
+            exercise::put(&mut w, project);
+            PREFIX_EXERCISE
+        } else if words {
             words::put_variables(&mut w, &project.ladder.variables);
             PREFIX_WORDS
         } else {
@@ -177,12 +187,14 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if text.len() > crate::limits::MAX_SHARE_FRAGMENT {
         return Err(ShareError::TooLong(text.len()));
     }
-    let with_words = text.starts_with(PREFIX_WORDS);
+    let with_exercise = text.starts_with(PREFIX_EXERCISE);
+    let with_words = with_exercise || text.starts_with(PREFIX_WORDS);
     let with_tests = with_words || text.starts_with(PREFIX_TESTS);
     let Some(body) = text
         .strip_prefix(PREFIX)
         .or_else(|| text.strip_prefix(PREFIX_TESTS))
         .or_else(|| text.strip_prefix(PREFIX_WORDS))
+        .or_else(|| text.strip_prefix(PREFIX_EXERCISE))
     else {
         let version = text
             .split('.')
@@ -220,14 +232,17 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     );
     if with_tests {
         project.exercise = match r.byte()? {
-            0 => false,
-            1 => true,
+            0 => None,
+            1 => Some(super::project::Exercise::default()),
             _ => return Err(r.bad("the exercise flag is neither 0 nor 1")),
         };
         project.tests = r.cases()?;
     }
     if with_words {
         project.ladder.variables = r.variables()?;
+    }
+    if with_exercise {
+        r.exercise(&mut project)?;
     }
     if r.at != data.len() {
         return Err(r.bad("data after the last rung"));
@@ -442,6 +457,7 @@ impl Reader<'_> {
                 name,
                 events,
                 expect,
+                hint: String::new(),
             });
         }
         Ok(cases)

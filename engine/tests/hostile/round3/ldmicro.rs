@@ -298,6 +298,7 @@ fn string_project(expect: &[&str]) -> String {
         name: "count".into(),
         events: String::new(),
         expect: expect.iter().map(|e| e.to_string()).collect(),
+        hint: String::new(),
     });
     project.to_json()
 }

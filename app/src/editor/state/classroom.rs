@@ -1,0 +1,47 @@
+//! A clean slate per project (issue #49): what one project's work left on
+//! screen (the Tests pane's results, inputs held from the ladder, Why?,
+//! the chart's choices) does not stay when another is opened, imported
+//! or begun; and who sees an exercise how (the student's view, the
+//! author's).
+
+use super::*;
+use engine::plc::Command;
+
+impl LadderCtx {
+    /// Forgets what the last project's work left on screen: the tests'
+    /// results, the inputs held from the ladder (released on the
+    /// machine), the Why? explanation; views with state of their own
+    /// follow `work.slate`.
+    pub fn clean_slate(&self) {
+        self.cases.results.set(Vec::new());
+        let held = self.live.forced.get_untracked();
+        if !held.is_empty() {
+            self.operate(|plc| {
+                for (device, _) in &held {
+                    if let Ok(d) = plc.device(device) {
+                        // Released whatever it was: the machine may not
+                        // have it held any more, which is what is wanted.
+                        let _ = plc.apply(Command::ReleaseInput(d));
+                    }
+                }
+            });
+            self.live.forced.set(Vec::new());
+        }
+        self.why.shown.set(None);
+        self.work.slate.update(|n| *n += 1);
+    }
+
+    /// A new, empty ladder (File > New, the toolbar's +) on a clean
+    /// slate. The tests stay (New is one undo away, and the tests are not
+    /// in the ladder's undo): only what they said of the old ladder goes.
+    pub fn new_ladder(&self) {
+        self.apply(Edit::NewLadder);
+        self.clean_slate();
+    }
+
+    /// Whether the student's view of an exercise is shown: an exercise,
+    /// not being authored.
+    pub fn student(&self) -> bool {
+        self.cases.exercise.with(Option::is_some) && !self.cases.authoring.get()
+    }
+}
