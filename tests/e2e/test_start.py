@@ -239,6 +239,7 @@ def test_an_exercise_opens_from_the_start_screen(driver, base_url):
     el(driver, "start-exercise-0").click()
     wait(driver, lambda: el(driver, "dock-tab-tests", reveal=False).get_attribute("aria-selected") == "true",
          message="the exercise opens with its tests shown")
+    wait(driver, lambda: "X02" in el(driver, "exercise-task").text, message="its task is shown")
     assert not shown(driver, "start")
 
 
