@@ -205,6 +205,8 @@ def test_help_opens_the_guide_in_both_languages_and_a_pane_opens_its_section(dri
     wait(driver, lambda: guide_lang(driver) == "ja", message="the Japanese guide")
     wait(driver, lambda: section_in_view(driver, "tests"), message="still at the tests section")
     driver.save_screenshot(str(artifacts / "start-guide-ja.png"))
+    driver.find_element(By.TAG_NAME, "body").send_keys(Keys.ESCAPE)
+    wait(driver, lambda: not shown(driver, "guide"), message="Escape closes the guide")
 
 
 def test_after_one_visit_the_guide_opens_offline(driver, artifacts):

@@ -44,10 +44,20 @@ pub fn Guide() -> impl IntoView {
         Fetched::Text(text) => text,
         _ => String::new(),
     };
+    // Escape closes it wherever the focus is, but in a text field.
+    let escape = window_event_listener(leptos::ev::keydown, move |e| {
+        let in_field = e
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+            .is_some_and(|el| matches!(el.tag_name().as_str(), "INPUT" | "TEXTAREA" | "SELECT"));
+        if e.key() == "Escape" && !in_field && start.guide.with_untracked(Option::is_some) {
+            start.guide.set(None);
+        }
+    });
+    on_cleanup(move || escape.remove());
     view! {
         <Show when=move || start.guide.with(Option::is_some)>
-            <aside class="guide" data-testid="guide" aria-label=move || s().guide
-                on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Escape" { start.guide.set(None) }>
+            <aside class="guide" data-testid="guide" aria-label=move || s().guide>
                 <header class="guide-head">
                     <h2>{move || s().guide}</h2>
                     <button type="button" data-testid="guide-close" title=move || s().guide_close

@@ -175,11 +175,15 @@ fn on_submit(ctx: Ctx, e: &web_sys::SubmitEvent) {
     ctx.start.close();
 }
 
-/// Shows part `name` of the screen (`data-start-part`), hiding the others.
+/// Shows part `name` of the screen (`data-start-part`), hiding the
+/// others, and brings it into view (it is below the choices).
 fn show_part(root: &web_sys::Element, name: &str) {
     for_each(root, "[data-start-part]", |el| {
-        let hide = el.get_attribute("data-start-part").as_deref() != Some(name);
-        let _ = el.toggle_attribute_with_force("hidden", hide);
+        let shown = el.get_attribute("data-start-part").as_deref() == Some(name);
+        let _ = el.toggle_attribute_with_force("hidden", !shown);
+        if shown {
+            el.scroll_into_view();
+        }
     });
 }
 
