@@ -86,6 +86,10 @@ pub struct ImportReply {
     pub errors: Vec<String>,
     /// The imported ladder, its outputs aligned, when there are no errors.
     pub ladder: Option<Ladder>,
+    /// When the file does not import on the machine asked for but does on
+    /// another (the soft PLC runs most OpenPLC projects): that machine, so
+    /// the page can offer the switch (issue #49).
+    pub runs_on: Option<MachineId>,
 }
 
 /// Does what `request` asks.
@@ -177,30 +181,33 @@ fn import(
             reply.warnings = imported
                 .warnings
                 .iter()
-                .map(|w| format!("{file}:{}: {}", w.line, w.error))
+                .map(|w| format!("{file}:{}: {}", w.line, page_warning(&w.error)))
                 .collect();
             reply.ladder = Some(align_outputs(&imported.ladder, COLUMNS - 1));
         }
         Err(errors) => {
             reply.errors = errors
                 .iter()
-                .map(|e| format!("{file}:{}: {}", e.line, e.error))
+                .map(|e| format!("{file}:{}: {}", e.line, e.error.in_page()))
                 .collect();
-            if soft && root.is_ok() {
-                reply.errors.push(soft_note(file));
-            }
+            reply.runs_on = elsewhere(text, machine, pou);
         }
     }
     reply
 }
 
-/// What to do with a PLCopen project the page cannot draw on the soft
-/// PLC (the reasons above it, each at its line): its own reader may still
-/// run it as written.
-fn soft_note(file: &str) -> String {
-    format!(
-        "nothing was changed; the soft PLC may still run the project as written: hashigo run --machine soft-plc --program {file}"
-    )
+/// The machine that imports a file refused on `machine`: the soft PLC,
+/// which takes the project's own names and boxes, when it draws the file
+/// whole (no map: it needs none).
+fn elsewhere(text: &str, machine: MachineId, pou: Option<&str>) -> Option<MachineId> {
+    let soft = MachineId::SoftPlc;
+    (machine != soft && import_pou(text, Some(soft), None, pou).is_ok()).then_some(soft)
+}
+
+/// A warning in the page's words: the command line's advice (`--pou NAME
+/// imports it alone`) is the Program picker's job here.
+fn page_warning(warning: &str) -> &str {
+    warning.split(" (--pou ").next().unwrap_or(warning)
 }
 
 /// Reads a request envelope and returns the reply's, as JSON. A message
