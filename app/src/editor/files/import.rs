@@ -11,7 +11,9 @@ use engine::ladder::edit::Edit;
 use files_worker::{Reply, Request};
 use leptos::prelude::*;
 
-use crate::editor::LadderCtx;
+use engine::MachineId;
+
+use crate::editor::{LadderCtx, Ladders};
 
 /// A file waiting in the dialog.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -28,6 +30,9 @@ pub struct Pending {
     /// The last attempt's warnings and errors, each with its line.
     pub warnings: Vec<String>,
     pub errors: Vec<String>,
+    /// The machine that imports the file when this one refuses it: the
+    /// dialog offers the switch (`import-switch-machine`, issue #49).
+    pub runs_on: Option<MachineId>,
 }
 
 /// Tries `pending` as it stands (`first`: the file just opened, its
@@ -59,6 +64,7 @@ pub fn attempt(
         pending.rows = reply.rows;
         pending.warnings = reply.warnings;
         pending.errors = reply.errors;
+        pending.runs_on = reply.runs_on;
         let clean = pending.warnings.is_empty() && pending.rows.is_empty();
         match reply.ladder {
             // Shown first, so the user sees what was proposed.
@@ -86,8 +92,32 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
         rows: Vec::new(),
         warnings: Vec::new(),
         errors: Vec::new(),
+        runs_on: None,
     };
     attempt(ctx, shown, pending, true, || {});
+}
+
+/// The offered switch: the page shows `machine`'s editor and the file is
+/// opened there afresh (its own proposals, its own dialog if it needs
+/// one), as the user would by choosing the machine and opening the file
+/// again. Closes this dialog first: its errors were this machine's.
+fn switch_and_import(
+    ctx: LadderCtx,
+    shown: RwSignal<Option<Pending>>,
+    machine: MachineId,
+    ladders: Option<Ladders>,
+    on_close: Callback<()>,
+) {
+    let Some(p) = shown.get_untracked() else {
+        return;
+    };
+    shown.set(None);
+    let target = ladders.map_or(ctx, |l| l.of(machine));
+    ctx.page.machine.set(machine);
+    crate::storage::save_string(crate::storage::MACHINE_KEY, machine.name());
+    let file = p.file.clone();
+    open(target, target.panes.import, &file, &p.text);
+    on_close.run(());
 }
 
 /// The dialog.
@@ -99,6 +129,7 @@ pub fn ImportDialog(
     on_close: Callback<()>,
 ) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let ladders = use_context::<Ladders>();
     let apply = move |_| {
         if let Some(p) = shown.get_untracked() {
             attempt(ctx, shown, p, false, move || on_close.run(()));
@@ -131,13 +162,20 @@ pub fn ImportDialog(
                         <label>{t().import_pou} " "
                             <select data-testid="import-pou" on:change=move |e| {
                                 let v = event_target_value(&e);
-                                shown.update(|s| if let Some(s) = s { s.pou = (!v.is_empty()).then_some(v) });
+                                // What was said was the old Program's (issue #49).
+                                shown.update(|s| if let Some(s) = s {
+                                    s.pou = (!v.is_empty()).then_some(v);
+                                    s.errors.clear();
+                                    s.warnings.clear();
+                                    s.runs_on = None;
+                                });
                             }>
                                 <option value="">{t().import_pou_tasks}</option>
                                 {p.pous.iter().map(|n| view! { <option value=n.clone()>{n.clone()}</option> }).collect_view()}
                             </select>
                         </label>
                     })}
+                    {(!rows.is_empty()).then(|| view! {
                     <table class="import-map">
                         <thead><tr><th>{t().import_variable}</th><th>{t().import_device}</th></tr></thead>
                         <tbody>
@@ -154,10 +192,24 @@ pub fn ImportDialog(
                             }).collect_view()}
                         </tbody>
                     </table>
+                    })}
                     <ul class="import-said">
                         {p.errors.iter().map(|e| view! { <li class="error" data-testid="import-error">{e.clone()}</li> }).collect_view()}
                         {p.warnings.iter().map(|w| view! { <li class="warning" data-testid="import-warning">{w.clone()}</li> }).collect_view()}
                     </ul>
+                    {p.runs_on.map(|m| {
+                        let f = move || ctx.page.lang.get().files();
+                        let named = move |s: &str| s.replace("{machine}", crate::state::product_name(m));
+                        view! {
+                            <p class="import-switch" data-testid="import-switch">
+                                <span>{move || named(f().switch_offer)}</span> " "
+                                <button type="button" class="primary" data-testid="import-switch-machine"
+                                    on:click=move |_| switch_and_import(ctx, shown, m, ladders, on_close)>
+                                    {move || named(f().switch_button)}
+                                </button>
+                            </p>
+                        }
+                    })}
                     <button type="button" data-testid="import-apply" on:click=apply>{t().import_apply}</button>
                     <button type="button" data-testid="import-cancel" on:click=move |_| { shown.set(None); on_close.run(()); }>{t().cancel}</button>
                 </div>
