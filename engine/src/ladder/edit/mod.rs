@@ -20,7 +20,7 @@ mod entry_error;
 mod variables;
 
 pub use align::align_outputs;
-pub use block_entry::BOX_USAGE;
+pub use block_entry::{box_operands, BoxOperand, OperandRole, BOX_USAGE};
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
