@@ -14,6 +14,7 @@ mod block_entry;
 mod change;
 mod clip;
 mod command;
+mod declare_as;
 mod devices;
 mod entry;
 mod entry_error;
@@ -24,6 +25,7 @@ pub use block_entry::{box_operands, BoxOperand, OperandRole, BOX_USAGE};
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
+pub use declare_as::undeclared_in_box;
 pub use devices::{
     complete, complete_declared, device_names, find, replace_plan, xref, Found, ReplaceError, Use,
     UseRole,
