@@ -81,6 +81,12 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                     autocomplete="off"
                     spellcheck="false"
                     aria-invalid=move || invalid().to_string()
+                    placeholder=move || {
+                        let instruction = ctx.panes.entry.with(|e| e.as_ref().is_some_and(|e| e.kind == EntryKind::Instruction));
+                        // How a box is typed, where boxes are (issue #49).
+                        (instruction && ctx.machine == engine::MachineId::SoftPlc)
+                            .then(|| ctx.page.lang.get().files().box_usage)
+                    }
                     prop:value=text
                     on:input=move |e| set_text.run(event_target_value(&e))
                     on:keydown=move |e: web_sys::KeyboardEvent| match e.key().as_str() {
@@ -100,6 +106,8 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                 <div class="entry-error" role="alert" data-testid="device-error">
                     {move || ctx.panes.entry.with(|e| e.as_ref().and_then(|e| e.error.clone()))}
                 </div>
+                <super::box_fields::BoxFields ctx set_text
+                    commit=Callback::new(move |()| commit()) close=Callback::new(move |()| close()) />
                 <EntryOptions ctx set_text />
             </div>
         </Show>
