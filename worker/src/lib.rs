@@ -9,7 +9,9 @@
 //! request does is plain Rust ([`handle`]), tested natively.
 
 use engine::ladder::edit::{align_outputs, COLUMNS};
+use engine::ladder::plcopen::ImportError;
 use engine::ladder::plcopen::{self, declare, dom, drawn_body, import_pou, VarMap};
+use engine::ladder::target::ElementError;
 use engine::ladder::Ladder;
 use engine::MachineId;
 use serde::{Deserialize, Serialize};
@@ -84,12 +86,24 @@ pub struct ImportReply {
     pub warnings: Vec<String>,
     /// Why the file does not import, each at its line or at its row.
     pub errors: Vec<String>,
+    /// The same errors typed, one for each (issue #49): the page says
+    /// those it can in its own language.
+    pub said: Vec<Said>,
     /// The imported ladder, its outputs aligned, when there are no errors.
     pub ladder: Option<Ladder>,
     /// When the file does not import on the machine asked for but does on
     /// another (the soft PLC runs most OpenPLC projects): that machine, so
     /// the page can offer the switch (issue #49).
     pub runs_on: Option<MachineId>,
+}
+
+/// One import error as the page can say it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Said {
+    /// Where: `file:line`, or the table's `name → device`.
+    pub at: String,
+    /// The machine's typed refusal, when that is what it is.
+    pub cause: Option<ElementError>,
 }
 
 /// Does what `request` asks.
@@ -167,13 +181,14 @@ fn import(
     );
     if let Err(errors) = map.check(machine) {
         // Said at the table's row (the map's lines number its filled rows).
-        reply.errors = errors
-            .iter()
-            .filter_map(|e| {
-                let (name, device, _) = map.entries.iter().find(|(_, _, l)| *l == e.line)?;
-                Some(format!("{name} → {device}: {}", e.error))
-            })
-            .collect();
+        for e in &errors {
+            if let Some((name, device, _)) = map.entries.iter().find(|(_, _, l)| *l == e.line) {
+                let at = format!("{name} → {device}");
+                reply.errors.push(format!("{at}: {}", e.error));
+                let cause = Some(e.error.clone());
+                reply.said.push(Said { at, cause });
+            }
+        }
         return reply;
     }
     match import_pou(text, Some(machine), Some(&map), pou) {
@@ -186,10 +201,15 @@ fn import(
             reply.ladder = Some(align_outputs(&imported.ladder, COLUMNS - 1));
         }
         Err(errors) => {
-            reply.errors = errors
-                .iter()
-                .map(|e| format!("{file}:{}: {}", e.line, e.error.in_page()))
-                .collect();
+            for e in &errors {
+                let at = format!("{file}:{}", e.line);
+                reply.errors.push(format!("{at}: {}", e.error.in_page()));
+                let cause = match &e.error {
+                    ImportError::Element(why) => Some(why.clone()),
+                    _ => None,
+                };
+                reply.said.push(Said { at, cause });
+            }
             reply.runs_on = elsewhere(text, machine, pou);
         }
     }

@@ -228,6 +228,19 @@ fn a_file_refused_here_that_the_soft_plc_runs_names_the_soft_plc() {
         reply.errors
     );
     assert!(reply.errors.iter().all(|e| !e.contains("hashigo run")));
+    // Each error typed beside its words, the machine's refusal with its
+    // kind and arguments (the page says it in Japanese from them).
+    assert_eq!(reply.said.len(), reply.errors.len());
+    let lacks = reply.said.iter().find_map(|s| match &s.cause {
+        Some(engine::ladder::target::ElementError::Lacks { machine, what, .. }) => {
+            Some((*machine, what.clone(), s.at.clone()))
+        }
+        _ => None,
+    });
+    let (machine, what, at) = lacks.expect("a typed refusal");
+    assert_eq!(machine, MachineId::MinasecU);
+    assert!(what.contains("TON"), "{what}");
+    assert!(at.starts_with("t.xml:"), "{at}");
     // ... and there it imports whole.
     let soft = import_on(MachineId::SoftPlc, TIMER);
     assert!(soft.ladder.is_some(), "{:?}", soft.errors);

@@ -2,6 +2,7 @@
 //! one table, [`Texts`], in English ([`en`]) and Japanese ([`ja`]).
 
 mod en;
+pub mod engine;
 mod files;
 mod ja;
 

@@ -30,6 +30,8 @@ pub struct Pending {
     /// The last attempt's warnings and errors, each with its line.
     pub warnings: Vec<String>,
     pub errors: Vec<String>,
+    /// The errors typed (one for each), said in the page's language.
+    pub said: Vec<files_worker::Said>,
     /// The machine that imports the file when this one refuses it: the
     /// dialog offers the switch (`import-switch-machine`, issue #49).
     pub runs_on: Option<MachineId>,
@@ -65,6 +67,7 @@ pub fn attempt(
         pending.warnings = reply.warnings;
         pending.errors = reply.errors;
         pending.runs_on = reply.runs_on;
+        pending.said = reply.said;
         let clean = pending.warnings.is_empty() && pending.rows.is_empty();
         match reply.ladder {
             // Shown first, so the user sees what was proposed.
@@ -92,6 +95,7 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
         rows: Vec::new(),
         warnings: Vec::new(),
         errors: Vec::new(),
+        said: Vec::new(),
         runs_on: None,
     };
     attempt(ctx, shown, pending, true, || {});
@@ -135,17 +139,8 @@ pub fn ImportDialog(
             attempt(ctx, shown, p, false, move || on_close.run(()));
         }
     };
-    // It takes the focus when it opens (not when its table is edited).
     let node = NodeRef::<leptos::html::Div>::new();
-    Effect::new(move |was: Option<bool>| {
-        let now = shown.with(Option::is_some);
-        if now && was != Some(true) {
-            if let Some(n) = node.get() {
-                let _ = n.focus();
-            }
-        }
-        now
-    });
+    focus_when_shown(shown, node);
     view! {
         {move || shown.get().map(|p| {
             let rows = p.rows.clone();
@@ -166,6 +161,7 @@ pub fn ImportDialog(
                                 shown.update(|s| if let Some(s) = s {
                                     s.pou = (!v.is_empty()).then_some(v);
                                     s.errors.clear();
+                                    s.said.clear();
                                     s.warnings.clear();
                                     s.runs_on = None;
                                 });
@@ -193,27 +189,67 @@ pub fn ImportDialog(
                         </tbody>
                     </table>
                     })}
-                    <ul class="import-said">
-                        {p.errors.iter().map(|e| view! { <li class="error" data-testid="import-error">{e.clone()}</li> }).collect_view()}
-                        {p.warnings.iter().map(|w| view! { <li class="warning" data-testid="import-warning">{w.clone()}</li> }).collect_view()}
-                    </ul>
-                    {p.runs_on.map(|m| {
-                        let f = move || ctx.page.lang.get().files();
-                        let named = move |s: &str| s.replace("{machine}", crate::state::product_name(m));
-                        view! {
-                            <p class="import-switch" data-testid="import-switch">
-                                <span>{move || named(f().switch_offer)}</span> " "
-                                <button type="button" class="primary" data-testid="import-switch-machine"
-                                    on:click=move |_| switch_and_import(ctx, shown, m, ladders, on_close)>
-                                    {move || named(f().switch_button)}
-                                </button>
-                            </p>
-                        }
-                    })}
+                    {said(ctx, &p)}
+                    {p.runs_on.map(|m| switch_offer(ctx, shown, m, ladders, on_close))}
                     <button type="button" data-testid="import-apply" on:click=apply>{t().import_apply}</button>
                     <button type="button" data-testid="import-cancel" on:click=move |_| { shown.set(None); on_close.run(()); }>{t().cancel}</button>
                 </div>
             }
         })}
+    }
+}
+
+/// The dialog takes the focus when it opens (not when its table is
+/// edited).
+fn focus_when_shown(shown: RwSignal<Option<Pending>>, node: NodeRef<leptos::html::Div>) {
+    Effect::new(move |was: Option<bool>| {
+        let now = shown.with(Option::is_some);
+        if now && was != Some(true) {
+            if let Some(n) = node.get() {
+                let _ = n.focus();
+            }
+        }
+        now
+    });
+}
+
+/// The offer to open the file on machine `m`, which runs it.
+fn switch_offer(
+    ctx: LadderCtx,
+    shown: RwSignal<Option<Pending>>,
+    m: MachineId,
+    ladders: Option<Ladders>,
+    on_close: Callback<()>,
+) -> impl IntoView {
+    let f = move || ctx.page.lang.get().files();
+    let named = move |s: &str| s.replace("{machine}", crate::state::product_name(m));
+    view! {
+        <p class="import-switch" data-testid="import-switch">
+            <span>{move || named(f().switch_offer)}</span> " "
+            <button type="button" class="primary" data-testid="import-switch-machine"
+                on:click=move |_| switch_and_import(ctx, shown, m, ladders, on_close)>
+                {move || named(f().switch_button)}
+            </button>
+        </p>
+    }
+}
+
+/// The errors, in the page's language where they are typed, and the
+/// warnings.
+fn said(ctx: LadderCtx, p: &Pending) -> impl IntoView {
+    let errors = p.errors.iter().enumerate().map(|(i, e)| {
+        let (said, e) = (p.said.get(i).cloned(), e.clone());
+        let text =
+            move || crate::i18n::engine::import_error(ctx.page.lang.get(), said.as_ref(), &e);
+        view! { <li class="error" data-testid="import-error">{text}</li> }
+    });
+    let warnings = p.warnings.iter().map(|w| {
+        view! { <li class="warning" data-testid="import-warning">{w.clone()}</li> }
+    });
+    view! {
+        <ul class="import-said">
+            {errors.collect_view()}
+            {warnings.collect_view()}
+        </ul>
     }
 }

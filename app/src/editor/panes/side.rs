@@ -95,7 +95,10 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                                 <button type="button" class="problem" on:click=move |_| {
                                     ctx.move_to(at);
                                     on_pick.run(());
-                                }>{p.text.clone()}</button>
+                                }>{
+                                    let (en, ja) = (p.text.clone(), p.ja.clone());
+                                    move || if ctx.page.lang.get() == crate::i18n::Lang::Ja { ja.clone() } else { en.clone() }
+                                }</button>
                                 {declare}
                             </li>
                         }
