@@ -157,25 +157,20 @@ def test_japanese_mode_says_import_refusals_and_ladder_problems_in_japanese(driv
     assert "切り替えて" in el(driver, "import-switch-machine").text
     driver.save_screenshot(str(artifacts / "files-land-ja.png"))
     el(driver, "import-cancel").click()
-    # A ladder problem: IO86A's PLS opened on MINASEC-U, which has none.
-    Select(el(driver, "machine")).select_by_value("io86a")
-    focus_ladder(driver)
-    place(driver, Keys.F5, "X00")
-    keys(driver, Keys.F8)
-    keys(driver, "PLS Y00", Keys.ENTER)
-    wait(driver, lambda: driver.execute_script(
-        "return (localStorage.getItem('hashigo.ladder.io86a.v1') || '').includes('Y00')"))
-    raw = driver.execute_script("return localStorage.getItem('hashigo.ladder.io86a.v1')")
-    saved = json.loads(raw)
-    if "machine" in saved:
-        saved["machine"] = "minasec-u"
+    # A ladder problem: a saved MINASEC-U ladder with a PLS output, which
+    # MINASEC-U has not (as a ladder from another machine would have).
+    wire = {"type": "wire"}
+    row = [{"type": "contact", "kind": "no", "device": "X00"}] + [wire] * 8 + [
+        {"type": "pulse", "falling": False, "device": "Y00"}]
+    project = {"format": "hashigo-project", "version": 1, "machine": "minasec-u",
+               "ladder": {"rungs": [{"cells": [row]}]}}
     driver.execute_script(
         "localStorage.setItem('hashigo.ladder.minasec-u.v1', arguments[0]);"
-        "localStorage.setItem('hashigo.machine', 'minasec-u');", json.dumps(saved))
+        "localStorage.setItem('hashigo.machine', 'minasec-u');", json.dumps(project))
     driver.refresh()
     wait(driver, lambda: "PLS/PLF" in el(driver, "problems").text, message="the refusal listed")
     problems = el(driver, "problems").text
-    assert "ラング 1" in problems and "MINASEC-U には PLS/PLF 出力 がありません" in problems, problems
+    assert "ラング 1、行 1、列 10: MINASEC-U には PLS/PLF 出力 がありません" in problems, problems
     assert not ENGLISH.search(problems), problems
 
 

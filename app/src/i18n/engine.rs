@@ -6,6 +6,7 @@
 //! says are kept as written.
 
 use engine::ladder::block::BoxError;
+use engine::ladder::edit::EntryError;
 use engine::ladder::target::{capabilities, Drivable, ElementError, LackReason, Latch};
 use engine::ladder::LadderError;
 use engine::{io86a, minasec, MachineId};
@@ -156,7 +157,40 @@ fn what_ja(what: &str) -> String {
     if let Some(kind) = what.strip_suffix(" box") {
         return format!("{kind} ボックス");
     }
-    what.to_string()
+    // An element as `Element`'s Display names it: its kind in Japanese,
+    // its devices as written.
+    const KINDS: [(&str, &str); 10] = [
+        ("rising contact ", "立上り接点 "),
+        ("falling contact ", "立下り接点 "),
+        ("NC contact ", "b接点 "),
+        ("contact ", "a接点 "),
+        ("inverted coil ", "反転コイル "),
+        ("set coil ", "セットコイル "),
+        ("reset coil ", "リセットコイル "),
+        ("coil ", "コイル "),
+        ("timer ", "タイマコイル "),
+        ("counter ", "カウンタコイル "),
+    ];
+    KINDS
+        .iter()
+        .find_map(|(en, ja)| what.strip_prefix(en).map(|rest| format!("{ja}{rest}")))
+        .unwrap_or_else(|| what.to_string())
+}
+
+/// The device entry's refusal, in `lang`.
+pub fn entry_error(lang: Lang, e: &EntryError) -> String {
+    if lang == Lang::En {
+        return e.to_string();
+    }
+    match e {
+        EntryError::Empty => "デバイスか命令を入力してください".into(),
+        EntryError::UnknownWord(w) => format!(
+            "不明な命令 {w}: LD, LDI, LDP, LDF, OUT, SET, RST, PLS, PLF, MOV, CMP, INC, DEC, NOT, R_TRIG, F_TRIG, TON, TOF, TP のどれかです"
+        ),
+        EntryError::Usage(u) => format!("{u} の形で書いてください"),
+        EntryError::BadNumber(n) => format!("{n} は数ではありません"),
+        EntryError::Element(why) => element_ja(why),
+    }
 }
 
 fn lack_ja(why: LackReason) -> &'static str {
@@ -301,6 +335,27 @@ mod tests {
             "{ja}"
         );
         assert_eq!(ladder_error(Lang::En, &errors[0]), errors[0].to_string());
+    }
+
+    #[test]
+    fn an_entry_refusal_and_an_elements_kind_are_said_in_japanese() {
+        for e in [
+            EntryError::Empty,
+            EntryError::UnknownWord("FOO".into()),
+            EntryError::Usage("MOV K50 D00"),
+            EntryError::BadNumber("K1x".into()),
+            EntryError::Element(ElementError::ZeroTimer),
+        ] {
+            let ja = entry_error(Lang::Ja, &e);
+            assert!(ja.chars().any(|c| c > '\u{3000}'), "{e:?}: {ja}");
+            for word in ENGLISH {
+                assert!(!ja.contains(word), "{e:?}: {ja} says {word:?}");
+            }
+            assert_eq!(entry_error(Lang::En, &e), e.to_string());
+        }
+        assert_eq!(what_ja("timer T01 K2"), "タイマコイル T01 K2");
+        assert_eq!(what_ja("NC contact X01"), "b接点 X01");
+        assert_eq!(what_ja("CTU"), "CTU", "a name as written");
     }
 
     #[test]

@@ -47,7 +47,7 @@ pub fn attempt(
     shown: RwSignal<Option<Pending>>,
     mut pending: Pending,
     first: bool,
-    closed: impl FnOnce() + 'static,
+    closed: impl FnOnce(&[String]) + 'static,
 ) {
     let texts = ctx.page.lang.get_untracked().texts();
     let request = Request::Import {
@@ -77,7 +77,7 @@ pub fn attempt(
                     ctx.apply(Edit::Replace { ladder });
                 }
                 shown.set(None);
-                closed();
+                closed(&pending.warnings);
             }
             None => shown.set(Some(pending)),
         }
@@ -98,7 +98,7 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
         said: Vec::new(),
         runs_on: None,
     };
-    attempt(ctx, shown, pending, true, || {});
+    attempt(ctx, shown, pending, true, |_| {});
 }
 
 /// The offered switch: the page shows `machine`'s editor and the file is
@@ -119,9 +119,28 @@ fn switch_and_import(
     let target = ladders.map_or(ctx, |l| l.of(machine));
     ctx.page.machine.set(machine);
     crate::storage::save_string(crate::storage::MACHINE_KEY, machine.name());
-    let file = p.file.clone();
-    open(target, target.panes.import, &file, &p.text);
-    on_close.run(());
+    // Imported at once (the user chose to): what the soft PLC warns of is
+    // said in its message line, not in a second dialog.
+    let pending = Pending {
+        rows: Vec::new(),
+        warnings: Vec::new(),
+        errors: Vec::new(),
+        said: Vec::new(),
+        runs_on: None,
+        ..p
+    };
+    attempt(
+        target,
+        target.panes.import,
+        pending,
+        false,
+        move |warnings| {
+            if !warnings.is_empty() {
+                target.panes.message.set(Some(warnings.join("\n")));
+            }
+            on_close.run(());
+        },
+    );
 }
 
 /// The dialog.
@@ -136,7 +155,7 @@ pub fn ImportDialog(
     let ladders = use_context::<Ladders>();
     let apply = move |_| {
         if let Some(p) = shown.get_untracked() {
-            attempt(ctx, shown, p, false, move || on_close.run(()));
+            attempt(ctx, shown, p, false, move |_| on_close.run(()));
         }
     };
     let node = NodeRef::<leptos::html::Div>::new();
