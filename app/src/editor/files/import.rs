@@ -102,15 +102,14 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
 }
 
 /// The offered switch: the page shows `machine`'s editor and the file is
-/// opened there afresh (its own proposals, its own dialog if it needs
-/// one), as the user would by choosing the machine and opening the file
-/// again. Closes this dialog first: its errors were this machine's.
+/// imported there at once (the user chose to), its warnings said in that
+/// editor's message line. Closes this dialog first: its errors were this
+/// machine's.
 fn switch_and_import(
     ctx: LadderCtx,
     shown: RwSignal<Option<Pending>>,
     machine: MachineId,
     ladders: Option<Ladders>,
-    on_close: Callback<()>,
 ) {
     let Some(p) = shown.get_untracked() else {
         return;
@@ -129,6 +128,9 @@ fn switch_and_import(
         runs_on: None,
         ..p
     };
+    // Not the dialog's `on_close`: it gives the focus back to this
+    // machine's ladder, whose view (and the callback with it) the switch
+    // has disposed of by the time the worker answers.
     attempt(
         target,
         target.panes.import,
@@ -138,7 +140,6 @@ fn switch_and_import(
             if !warnings.is_empty() {
                 target.panes.message.set(Some(warnings.join("\n")));
             }
-            on_close.run(());
         },
     );
 }
@@ -209,7 +210,7 @@ pub fn ImportDialog(
                     </table>
                     })}
                     {said(ctx, &p)}
-                    {p.runs_on.map(|m| switch_offer(ctx, shown, m, ladders, on_close))}
+                    {p.runs_on.map(|m| switch_offer(ctx, shown, m, ladders))}
                     <button type="button" data-testid="import-apply" on:click=apply>{t().import_apply}</button>
                     <button type="button" data-testid="import-cancel" on:click=move |_| { shown.set(None); on_close.run(()); }>{t().cancel}</button>
                 </div>
@@ -238,7 +239,6 @@ fn switch_offer(
     shown: RwSignal<Option<Pending>>,
     m: MachineId,
     ladders: Option<Ladders>,
-    on_close: Callback<()>,
 ) -> impl IntoView {
     let f = move || ctx.page.lang.get().files();
     let named = move |s: &str| s.replace("{machine}", crate::state::product_name(m));
@@ -246,7 +246,7 @@ fn switch_offer(
         <p class="import-switch" data-testid="import-switch">
             <span>{move || named(f().switch_offer)}</span> " "
             <button type="button" class="primary" data-testid="import-switch-machine"
-                on:click=move |_| switch_and_import(ctx, shown, m, ladders, on_close)>
+                on:click=move |_| switch_and_import(ctx, shown, m, ladders)>
                 {move || named(f().switch_button)}
             </button>
         </p>
