@@ -8,8 +8,10 @@
 //! The page and the worker exchange [`Envelope`]s as JSON text; what each
 //! request does is plain Rust ([`handle`]), tested natively.
 
+use engine::formats::plcopen::ImportError;
 use engine::formats::plcopen::{self, declare, dom, drawn_body, import_pou, VarMap};
 use engine::ladder::edit::{align_outputs, COLUMNS};
+use engine::ladder::target::ElementError;
 use engine::ladder::Ladder;
 use engine::MachineId;
 use serde::{Deserialize, Serialize};
@@ -84,8 +86,24 @@ pub struct ImportReply {
     pub warnings: Vec<String>,
     /// Why the file does not import, each at its line or at its row.
     pub errors: Vec<String>,
+    /// The same errors typed, one for each (issue #49): the page says
+    /// those it can in its own language.
+    pub said: Vec<Said>,
     /// The imported ladder, its outputs aligned, when there are no errors.
     pub ladder: Option<Ladder>,
+    /// When the file does not import on the machine asked for but does on
+    /// another (the soft PLC runs most OpenPLC projects): that machine, so
+    /// the page can offer the switch (issue #49).
+    pub runs_on: Option<MachineId>,
+}
+
+/// One import error as the page can say it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Said {
+    /// Where: `file:line`, or the table's `name → device`.
+    pub at: String,
+    /// The machine's typed refusal, when that is what it is.
+    pub cause: Option<ElementError>,
 }
 
 /// Does what `request` asks.
@@ -163,13 +181,14 @@ fn import(
     );
     if let Err(errors) = map.check(machine) {
         // Said at the table's row (the map's lines number its filled rows).
-        reply.errors = errors
-            .iter()
-            .filter_map(|e| {
-                let (name, device, _) = map.entries.iter().find(|(_, _, l)| *l == e.line)?;
-                Some(format!("{name} → {device}: {}", e.error))
-            })
-            .collect();
+        for e in &errors {
+            if let Some((name, device, _)) = map.entries.iter().find(|(_, _, l)| *l == e.line) {
+                let at = format!("{name} → {device}");
+                reply.errors.push(format!("{at}: {}", e.error));
+                let cause = Some(e.error.clone());
+                reply.said.push(Said { at, cause });
+            }
+        }
         return reply;
     }
     match import_pou(text, Some(machine), Some(&map), pou) {
@@ -177,30 +196,38 @@ fn import(
             reply.warnings = imported
                 .warnings
                 .iter()
-                .map(|w| format!("{file}:{}: {}", w.line, w.error))
+                .map(|w| format!("{file}:{}: {}", w.line, page_warning(&w.error)))
                 .collect();
             reply.ladder = Some(align_outputs(&imported.ladder, COLUMNS - 1));
         }
         Err(errors) => {
-            reply.errors = errors
-                .iter()
-                .map(|e| format!("{file}:{}: {}", e.line, e.error))
-                .collect();
-            if soft && root.is_ok() {
-                reply.errors.push(soft_note(file));
+            for e in &errors {
+                let at = format!("{file}:{}", e.line);
+                reply.errors.push(format!("{at}: {}", e.error.in_page()));
+                let cause = match &e.error {
+                    ImportError::Element(why) => Some(why.clone()),
+                    _ => None,
+                };
+                reply.said.push(Said { at, cause });
             }
+            reply.runs_on = elsewhere(text, machine, pou);
         }
     }
     reply
 }
 
-/// What to do with a PLCopen project the page cannot draw on the soft
-/// PLC (the reasons above it, each at its line): its own reader may still
-/// run it as written.
-fn soft_note(file: &str) -> String {
-    format!(
-        "nothing was changed; the soft PLC may still run the project as written: hashigo run --machine soft-plc --program {file}"
-    )
+/// The machine that imports a file refused on `machine`: the soft PLC,
+/// which takes the project's own names and boxes, when it draws the file
+/// whole (no map: it needs none).
+fn elsewhere(text: &str, machine: MachineId, pou: Option<&str>) -> Option<MachineId> {
+    let soft = MachineId::SoftPlc;
+    (machine != soft && import_pou(text, Some(soft), None, pou).is_ok()).then_some(soft)
+}
+
+/// A warning in the page's words: the command line's advice (`--pou NAME
+/// imports it alone`) is the Program picker's job here.
+fn page_warning(warning: &str) -> &str {
+    warning.split(" (--pou ").next().unwrap_or(warning)
 }
 
 /// Reads a request envelope and returns the reply's, as JSON. A message

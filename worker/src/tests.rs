@@ -139,9 +139,17 @@ fn a_plcopen_project_on_the_soft_plc_needs_no_map_and_is_drawn_or_refused_whole(
     assert!(reply.ladder.is_none());
     assert!(reply.errors[0].starts_with("p.xml:"), "{:?}", reply.errors);
     assert!(reply.errors[0].contains("PID_X"), "{:?}", reply.errors);
-    let last = reply.errors.last().expect("a note");
-    assert!(last.contains("hashigo run --machine soft-plc"), "{last}");
     assert!(reply.errors.iter().all(|e| !e.contains("data register")));
+    // The page has no command line: no error advises one (issue #49).
+    assert!(
+        reply
+            .errors
+            .iter()
+            .all(|e| !e.contains("hashigo") && !e.contains("--")),
+        "{:?}",
+        reply.errors
+    );
+    assert_eq!(reply.runs_on, None, "already on the soft PLC");
 }
 
 #[test]
@@ -189,4 +197,77 @@ fn an_element_with_too_many_attributes_is_refused_at_its_line() {
             "named.xml:{line}: <x> has more than 256 attributes (docs/limits.md)"
         )]
     );
+}
+
+const TIMER: &str = include_str!("../../engine/tests/ladder/fixtures/openplc-timer.xml");
+
+fn import_on(machine: MachineId, text: &str) -> ImportReply {
+    match handle(Request::Import {
+        file: "t.xml".into(),
+        text: text.into(),
+        machine,
+        rows: None,
+        pou: None,
+    }) {
+        Reply::Import(reply) => reply,
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_file_refused_here_that_the_soft_plc_runs_names_the_soft_plc() {
+    // Issue #49: an OpenPLC timer project on MINASEC-U (no in-line TON)
+    // is refused at its line, and the reply says where it does run.
+    let reply = import_on(MachineId::MinasecU, TIMER);
+    assert!(reply.ladder.is_none(), "{reply:?}");
+    assert!(!reply.errors.is_empty());
+    assert_eq!(
+        reply.runs_on,
+        Some(MachineId::SoftPlc),
+        "{:?}",
+        reply.errors
+    );
+    assert!(reply.errors.iter().all(|e| !e.contains("hashigo run")));
+    // Each error typed beside its words, the machine's refusal with its
+    // kind and arguments (the page says it in Japanese from them).
+    assert_eq!(reply.said.len(), reply.errors.len());
+    let lacks = reply.said.iter().find_map(|s| match &s.cause {
+        Some(engine::ladder::target::ElementError::Lacks { machine, what, .. }) => {
+            Some((*machine, what.clone(), s.at.clone()))
+        }
+        _ => None,
+    });
+    let (machine, what, at) = lacks.expect("a typed refusal");
+    assert_eq!(machine, MachineId::MinasecU);
+    assert!(what.contains("TON"), "{what}");
+    assert!(at.starts_with("t.xml:"), "{at}");
+    // ... and there it imports whole.
+    let soft = import_on(MachineId::SoftPlc, TIMER);
+    assert!(soft.ladder.is_some(), "{:?}", soft.errors);
+    // A file no machine takes offers none.
+    let broken = TIMER.replace("typeName=\"TON\"", "typeName=\"PID_X\"");
+    assert_eq!(import_on(MachineId::MinasecU, &broken).runs_on, None);
+}
+
+#[test]
+fn a_page_warning_loses_the_command_lines_advice() {
+    assert_eq!(
+        page_warning("program Other skipped: no task runs it (--pou Other imports it alone)"),
+        "program Other skipped: no task runs it"
+    );
+    assert_eq!(page_warning("plain"), "plain");
+}
+
+#[test]
+fn import_errors_in_the_page_advise_the_program_picker_not_the_command_line() {
+    use engine::formats::plcopen::ImportError;
+    for e in [
+        ImportError::NoDrawnInPrograms("Main".into(), "Sub".into()),
+        ImportError::ProjectBlock("Sub".into(), "ST".into()),
+    ] {
+        assert!(e.to_string().contains("--pou"), "the CLI keeps its advice");
+        let page = e.in_page();
+        assert!(!page.contains("--"), "{page}");
+        assert!(page.contains("Program"), "{page}");
+    }
 }

@@ -29,16 +29,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
     let input = NodeRef::<leptos::html::Input>::new();
     let t = move || ctx.page.lang.get().texts();
     let open = move || ctx.panes.entry.with(Option::is_some);
-    // Focus the input each time the entry opens.
-    Effect::new(move |_| {
-        if open() {
-            if let Some(i) = input.get() {
-                let _ = i.focus();
-                let len = i.value().len() as u32;
-                let _ = i.set_selection_range(len, len);
-            }
-        }
-    });
+    focus_on_open(ctx, input);
     let title = move || {
         ctx.panes
             .entry
@@ -81,6 +72,7 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                     autocomplete="off"
                     spellcheck="false"
                     aria-invalid=move || invalid().to_string()
+                    placeholder=move || placeholder(ctx)
                     prop:value=text
                     on:input=move |e| set_text.run(event_target_value(&e))
                     on:keydown=move |e: web_sys::KeyboardEvent| match e.key().as_str() {
@@ -100,10 +92,36 @@ pub fn DeviceEntry(ctx: LadderCtx, on_close: Callback<()>) -> impl IntoView {
                 <div class="entry-error" role="alert" data-testid="device-error">
                     {move || ctx.panes.entry.with(|e| e.as_ref().and_then(|e| e.error.clone()))}
                 </div>
+                <super::box_fields::BoxFields ctx set_text
+                    commit=Callback::new(move |()| commit()) close=Callback::new(move |()| close()) />
                 <EntryOptions ctx set_text />
             </div>
         </Show>
     }
+}
+
+/// Focuses the input, its caret at the end, each time the entry opens.
+fn focus_on_open(ctx: LadderCtx, input: NodeRef<leptos::html::Input>) {
+    Effect::new(move |_| {
+        if ctx.panes.entry.with(Option::is_some) {
+            if let Some(i) = input.get() {
+                let _ = i.focus();
+                let len = i.value().len() as u32;
+                let _ = i.set_selection_range(len, len);
+            }
+        }
+    });
+}
+
+/// How a box is typed, where boxes are (issue #49): the soft PLC's
+/// instruction entry (F8).
+fn placeholder(ctx: LadderCtx) -> Option<&'static str> {
+    let instruction = ctx
+        .panes
+        .entry
+        .with(|e| e.as_ref().is_some_and(|e| e.kind == EntryKind::Instruction));
+    (instruction && ctx.machine == engine::MachineId::SoftPlc)
+        .then(|| ctx.page.lang.get().files().box_usage)
 }
 
 /// The entry's title: what it places, as a branch or not, on which rung.

@@ -11,6 +11,7 @@
 //! - [`files`]: share links, files, SVG / PNG, the autosave.
 
 pub mod bands;
+pub mod box_fields;
 pub mod cell_kind;
 pub mod clipboard;
 pub mod columns;

@@ -3,6 +3,8 @@
 
 pub mod classroom;
 mod en;
+pub mod engine;
+mod files;
 mod ja;
 pub mod start;
 

@@ -149,7 +149,7 @@ pub fn parse_word(text: &str) -> Result<Word, OperandError> {
 }
 
 /// Why an operand could not be parsed.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum OperandError {
     /// Not a device of the IO86A.
     UnknownDevice(String),

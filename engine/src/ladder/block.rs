@@ -300,7 +300,7 @@ pub fn is_variable(text: &str) -> bool {
 }
 
 /// Why a box is not one the soft PLC runs.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BoxError {
     /// No function or block of that kind.
     UnknownKind(String),

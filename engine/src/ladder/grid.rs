@@ -156,6 +156,10 @@ pub struct LadderError {
     pub kind: LadderErrorKind,
     /// What is wrong.
     pub message: String,
+    /// The typed reason, when the machine refused an element (issue #49:
+    /// the page says it in its own language from this; `message` is its
+    /// English; boxed, as it is seldom there).
+    pub cause: Option<Box<super::target::ElementError>>,
 }
 
 impl LadderError {
@@ -167,6 +171,7 @@ impl LadderError {
             pos: Some(pos),
             kind: LadderErrorKind::Device,
             message: message.into(),
+            cause: None,
         }
     }
 
@@ -178,6 +183,16 @@ impl LadderError {
             pos: None,
             kind: LadderErrorKind::Capacity,
             message: message.into(),
+            cause: None,
+        }
+    }
+
+    /// The machine's refusal of the element at `pos` of rung index
+    /// `rung`: its words and its typed reason.
+    pub fn refused(rung: usize, pos: Pos, cause: super::target::ElementError) -> LadderError {
+        LadderError {
+            cause: Some(Box::new(cause.clone())),
+            ..LadderError::at(rung, pos, cause.to_string())
         }
     }
 

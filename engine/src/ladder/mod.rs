@@ -18,6 +18,7 @@ pub mod edit;
 pub mod element;
 pub mod eval;
 pub mod grid;
+mod lack;
 pub mod live;
 pub mod net;
 pub mod project;
@@ -84,7 +85,7 @@ fn check_logic(
     let mut errors = Vec::new();
     let mut fix = |e: &mut Element, pos: Pos| match target::check_element(machine, e) {
         Ok(canonical) => *e = canonical,
-        Err(m) => errors.push(LadderError::at(index, pos, m.to_string())),
+        Err(m) => errors.push(LadderError::refused(index, pos, m)),
     };
     visit_leaves(&mut logic.condition, &mut fix);
     for side in &mut logic.sides {

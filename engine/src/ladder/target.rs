@@ -3,7 +3,10 @@
 
 use std::fmt;
 
+use serde::{Deserialize, Serialize};
+
 use super::element::{CoilKind, ContactKind, Element};
+pub use super::lack::{Drivable, LackReason, Latch};
 use crate::avr::parse_register_bit;
 use crate::error::shown;
 use crate::io86a::{isa::parse_bit as io86a_bit, isa::parse_word, Bit, Word};
@@ -115,7 +118,7 @@ enum Role {
 
 /// Why a machine cannot take an element as drawn: what the editor shows
 /// on the cell and the compiler reports at it.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum ElementError {
     /// The machine has no such element (`what` names it, `why` adds a
     /// reason or a hint, possibly empty).
@@ -125,7 +128,7 @@ pub enum ElementError {
         /// The element, as [`Element`]'s `Display` names it.
         what: String,
         /// The rest of the sentence: a reason or what to use instead.
-        why: &'static str,
+        why: LackReason,
     },
     /// An in-line timer with a set time of 0 ms.
     ZeroTimer,
@@ -151,12 +154,12 @@ pub enum ElementError {
         /// The device.
         device: String,
         /// What the element drives.
-        want: &'static str,
+        want: Drivable,
     },
     /// A set or reset coil on MINASEC-U's wired T0 / T1 / C0 / C0R.
     MinasecLatch {
         /// `set` or `reset`.
-        kind: &'static str,
+        kind: Latch,
         /// The device.
         device: String,
     },
@@ -214,7 +217,7 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
         Element::Wire => Ok(Element::Wire),
         Element::Contact { kind, device } => {
             if !capabilities(machine).contacts.contains(kind) {
-                return Err(lacks(machine, element, ": it has no edge contacts"));
+                return Err(lacks(machine, element, LackReason::NoEdgeContacts));
             }
             Ok(Element::Contact {
                 kind: *kind,
@@ -227,7 +230,7 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
         Element::Coil { kind, device } => check_coil(machine, *kind, device),
         Element::Pulse { falling, device } => {
             if !capabilities(machine).pulse_outputs {
-                return Err(lacks(machine, element, ""));
+                return Err(lacks(machine, element, LackReason::Plain));
             }
             Ok(Element::Pulse {
                 falling: *falling,
@@ -245,7 +248,7 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
                 return Err(ElementError::Lacks {
                     machine,
                     what: format!("box input {pin}"),
-                    why: ": a block's inputs wired as networks are the soft PLC's",
+                    why: LackReason::BoxInputsAreSoft,
                 });
             }
             if !crate::iec::is_identifier(pin) {
@@ -264,7 +267,7 @@ pub fn check_element(machine: MachineId, element: &Element) -> Result<Element, E
                 return Err(ElementError::Lacks {
                     machine,
                     what: format!("{} box", b.kind()),
-                    why: ": functions and blocks on words are the soft PLC's",
+                    why: LackReason::WordBoxesAreSoft,
                 });
             }
             b.check().map_err(ElementError::Block)?;
@@ -286,7 +289,7 @@ pub fn check_device(machine: MachineId, device: &str) -> Result<String, ElementE
     })
 }
 
-fn lacks(machine: MachineId, element: &Element, why: &'static str) -> ElementError {
+fn lacks(machine: MachineId, element: &Element, why: LackReason) -> ElementError {
     let what = match element {
         Element::Not | Element::Edge { .. } | Element::Timer { .. } => {
             format!("in-line {element} box")
@@ -303,9 +306,9 @@ fn lacks(machine: MachineId, element: &Element, why: &'static str) -> ElementErr
 fn check_inline_box(machine: MachineId, element: &Element) -> Result<Element, ElementError> {
     if !capabilities(machine).inline_boxes {
         let why = if machine == MachineId::ArduinoPlc {
-            " (the Arduino sketch has no timers)"
+            LackReason::ArduinoNoTimers
         } else {
-            ""
+            LackReason::Plain
         };
         return Err(lacks(machine, element, why));
     }
@@ -331,11 +334,9 @@ fn check_timer_counter_coil(
 ) -> Result<Element, ElementError> {
     if !capabilities(machine).timer_counter_coils {
         let hint = match machine {
-            MachineId::MinasecU => {
-                ": drive T0/T1 or C0 with a coil; their delay and set value are panel settings"
-            }
-            MachineId::AvrPlc | MachineId::SoftPlc => ": use an in-line TON/TOF/TP box",
-            _ => " (the Arduino sketch has no timers or counters)",
+            MachineId::MinasecU => LackReason::MinasecPanelTimers,
+            MachineId::AvrPlc | MachineId::SoftPlc => LackReason::UseInlineTimer,
+            _ => LackReason::ArduinoNoTimersOrCounters,
         };
         return Err(lacks(machine, element, hint));
     }
@@ -359,7 +360,7 @@ fn check_timer_counter_coil(
 
 fn check_data_box(machine: MachineId, element: &Element) -> Result<Element, ElementError> {
     if !capabilities(machine).data_boxes {
-        return Err(lacks(machine, element, ": it has no data registers"));
+        return Err(lacks(machine, element, LackReason::NoDataRegisters));
     }
     let word = |d: &str, role| canonical(machine, d, role);
     Ok(match element {
@@ -450,9 +451,9 @@ fn io86a_canonical(device: &str, role: Role) -> Result<String, ElementError> {
     );
     if !ok {
         let want = match role {
-            Role::Timer => "a timer T00-T31",
-            Role::Counter => "a counter C00-C07",
-            _ => "a Y, M or S device (C only with set/reset)",
+            Role::Timer => Drivable::Timer,
+            Role::Counter => Drivable::Counter,
+            _ => Drivable::Output,
         };
         return Err(ElementError::CannotDrive {
             device: b.to_string(),
@@ -477,8 +478,8 @@ fn io86a_coil(kind: CoilKind, device: &str) -> Result<(), ElementError> {
 fn minasec_coil(kind: CoilKind, device: &str) -> Result<(), ElementError> {
     let special = matches!(device, "T0" | "T1" | "C0" | "C0R");
     let latch = match kind {
-        CoilKind::Set => "set",
-        CoilKind::Reset if device != "C0" => "reset",
+        CoilKind::Set => Latch::Set,
+        CoilKind::Reset if device != "C0" => Latch::Reset,
         _ => return Ok(()),
     };
     if special {

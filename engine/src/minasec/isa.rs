@@ -232,7 +232,7 @@ pub enum Device {
 }
 
 /// Why an operand could not be parsed.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum OperandError {
     /// Not a MINASEC-U device name.
     UnknownDevice(String),

@@ -11,7 +11,9 @@ use engine::ladder::edit::Edit;
 use files_worker::{Reply, Request};
 use leptos::prelude::*;
 
-use crate::editor::LadderCtx;
+use engine::MachineId;
+
+use crate::editor::{LadderCtx, Ladders};
 
 /// A file waiting in the dialog.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -28,6 +30,11 @@ pub struct Pending {
     /// The last attempt's warnings and errors, each with its line.
     pub warnings: Vec<String>,
     pub errors: Vec<String>,
+    /// The errors typed (one for each), said in the page's language.
+    pub said: Vec<files_worker::Said>,
+    /// The machine that imports the file when this one refuses it: the
+    /// dialog offers the switch (`import-switch-machine`, issue #49).
+    pub runs_on: Option<MachineId>,
 }
 
 /// Tries `pending` as it stands (`first`: the file just opened, its
@@ -40,7 +47,7 @@ pub fn attempt(
     shown: RwSignal<Option<Pending>>,
     mut pending: Pending,
     first: bool,
-    closed: impl FnOnce() + 'static,
+    closed: impl FnOnce(&[String]) + 'static,
 ) {
     let texts = ctx.page.lang.get_untracked().texts();
     let request = Request::Import {
@@ -59,6 +66,8 @@ pub fn attempt(
         pending.rows = reply.rows;
         pending.warnings = reply.warnings;
         pending.errors = reply.errors;
+        pending.runs_on = reply.runs_on;
+        pending.said = reply.said;
         let clean = pending.warnings.is_empty() && pending.rows.is_empty();
         match reply.ladder {
             // Shown first, so the user sees what was proposed.
@@ -70,7 +79,7 @@ pub fn attempt(
                 // Another program: nothing said of the last one stays.
                 ctx.clean_slate();
                 shown.set(None);
-                closed();
+                closed(&pending.warnings);
             }
             None => shown.set(Some(pending)),
         }
@@ -88,8 +97,53 @@ pub fn open(ctx: LadderCtx, shown: RwSignal<Option<Pending>>, file: &str, text: 
         rows: Vec::new(),
         warnings: Vec::new(),
         errors: Vec::new(),
+        said: Vec::new(),
+        runs_on: None,
     };
-    attempt(ctx, shown, pending, true, || {});
+    attempt(ctx, shown, pending, true, |_| {});
+}
+
+/// The offered switch: the page shows `machine`'s editor and the file is
+/// imported there at once (the user chose to), its warnings said in that
+/// editor's message line. Closes this dialog first: its errors were this
+/// machine's.
+fn switch_and_import(
+    ctx: LadderCtx,
+    shown: RwSignal<Option<Pending>>,
+    machine: MachineId,
+    ladders: Option<Ladders>,
+) {
+    let Some(p) = shown.get_untracked() else {
+        return;
+    };
+    shown.set(None);
+    let target = ladders.map_or(ctx, |l| l.of(machine));
+    ctx.page.machine.set(machine);
+    crate::storage::save_string(crate::storage::MACHINE_KEY, machine.name());
+    // Imported at once (the user chose to): what the soft PLC warns of is
+    // said in its message line, not in a second dialog.
+    let pending = Pending {
+        rows: Vec::new(),
+        warnings: Vec::new(),
+        errors: Vec::new(),
+        said: Vec::new(),
+        runs_on: None,
+        ..p
+    };
+    // Not the dialog's `on_close`: it gives the focus back to this
+    // machine's ladder, whose view (and the callback with it) the switch
+    // has disposed of by the time the worker answers.
+    attempt(
+        target,
+        target.panes.import,
+        pending,
+        false,
+        move |warnings| {
+            if !warnings.is_empty() {
+                target.panes.message.set(Some(warnings.join("\n")));
+            }
+        },
+    );
 }
 
 /// The dialog.
@@ -101,22 +155,14 @@ pub fn ImportDialog(
     on_close: Callback<()>,
 ) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let ladders = use_context::<Ladders>();
     let apply = move |_| {
         if let Some(p) = shown.get_untracked() {
-            attempt(ctx, shown, p, false, move || on_close.run(()));
+            attempt(ctx, shown, p, false, move |_| on_close.run(()));
         }
     };
-    // It takes the focus when it opens (not when its table is edited).
     let node = NodeRef::<leptos::html::Div>::new();
-    Effect::new(move |was: Option<bool>| {
-        let now = shown.with(Option::is_some);
-        if now && was != Some(true) {
-            if let Some(n) = node.get() {
-                let _ = n.focus();
-            }
-        }
-        now
-    });
+    focus_when_shown(shown, node);
     view! {
         {move || shown.get().map(|p| {
             let rows = p.rows.clone();
@@ -133,13 +179,21 @@ pub fn ImportDialog(
                         <label>{t().import_pou} " "
                             <select data-testid="import-pou" on:change=move |e| {
                                 let v = event_target_value(&e);
-                                shown.update(|s| if let Some(s) = s { s.pou = (!v.is_empty()).then_some(v) });
+                                // What was said was the old Program's (issue #49).
+                                shown.update(|s| if let Some(s) = s {
+                                    s.pou = (!v.is_empty()).then_some(v);
+                                    s.errors.clear();
+                                    s.said.clear();
+                                    s.warnings.clear();
+                                    s.runs_on = None;
+                                });
                             }>
                                 <option value="">{t().import_pou_tasks}</option>
                                 {p.pous.iter().map(|n| view! { <option value=n.clone()>{n.clone()}</option> }).collect_view()}
                             </select>
                         </label>
                     })}
+                    {(!rows.is_empty()).then(|| view! {
                     <table class="import-map">
                         <thead><tr><th>{t().import_variable}</th><th>{t().import_device}</th></tr></thead>
                         <tbody>
@@ -156,14 +210,67 @@ pub fn ImportDialog(
                             }).collect_view()}
                         </tbody>
                     </table>
-                    <ul class="import-said">
-                        {p.errors.iter().map(|e| view! { <li class="error" data-testid="import-error">{e.clone()}</li> }).collect_view()}
-                        {p.warnings.iter().map(|w| view! { <li class="warning" data-testid="import-warning">{w.clone()}</li> }).collect_view()}
-                    </ul>
+                    })}
+                    {said(ctx, &p)}
+                    {p.runs_on.map(|m| switch_offer(ctx, shown, m, ladders))}
                     <button type="button" data-testid="import-apply" on:click=apply>{t().import_apply}</button>
                     <button type="button" data-testid="import-cancel" on:click=move |_| { shown.set(None); on_close.run(()); }>{t().cancel}</button>
                 </div>
             }
         })}
+    }
+}
+
+/// The dialog takes the focus when it opens (not when its table is
+/// edited).
+fn focus_when_shown(shown: RwSignal<Option<Pending>>, node: NodeRef<leptos::html::Div>) {
+    Effect::new(move |was: Option<bool>| {
+        let now = shown.with(Option::is_some);
+        if now && was != Some(true) {
+            if let Some(n) = node.get() {
+                let _ = n.focus();
+            }
+        }
+        now
+    });
+}
+
+/// The offer to open the file on machine `m`, which runs it.
+fn switch_offer(
+    ctx: LadderCtx,
+    shown: RwSignal<Option<Pending>>,
+    m: MachineId,
+    ladders: Option<Ladders>,
+) -> impl IntoView {
+    let f = move || ctx.page.lang.get().files();
+    let named = move |s: &str| s.replace("{machine}", crate::state::product_name(m));
+    view! {
+        <p class="import-switch" data-testid="import-switch">
+            <span>{move || named(f().switch_offer)}</span> " "
+            <button type="button" class="primary" data-testid="import-switch-machine"
+                on:click=move |_| switch_and_import(ctx, shown, m, ladders)>
+                {move || named(f().switch_button)}
+            </button>
+        </p>
+    }
+}
+
+/// The errors, in the page's language where they are typed, and the
+/// warnings.
+fn said(ctx: LadderCtx, p: &Pending) -> impl IntoView {
+    let errors = p.errors.iter().enumerate().map(|(i, e)| {
+        let (said, e) = (p.said.get(i).cloned(), e.clone());
+        let text =
+            move || crate::i18n::engine::import_error(ctx.page.lang.get(), said.as_ref(), &e);
+        view! { <li class="error" data-testid="import-error">{text}</li> }
+    });
+    let warnings = p.warnings.iter().map(|w| {
+        view! { <li class="warning" data-testid="import-warning">{w.clone()}</li> }
+    });
+    view! {
+        <ul class="import-said">
+            {errors.collect_view()}
+            {warnings.collect_view()}
+        </ul>
     }
 }

@@ -2,7 +2,10 @@
 //! (the selected rung's steps highlighted; a click on a step shows its
 //! rung) and the problems list (a click puts the cursor there).
 
-use engine::ladder::edit::Cursor;
+use engine::ladder::edit::{undeclared_in_box, Cursor, Edit, VariableEdit};
+use engine::ladder::grid::Pos;
+use engine::ladder::variables::Variable;
+use engine::MachineId;
 use leptos::prelude::*;
 
 use crate::editor::state::LadderCtx;
@@ -86,12 +89,17 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
                     key=|p| p.clone()
                     children=move |p| {
                         let at = Cursor::new(p.rung, p.pos.map_or(0, |p| p.row), p.pos.map_or(0, |p| p.col));
+                        let declare = p.pos.map(|pos| declare_buttons(ctx, p.rung, pos));
                         view! {
                             <li>
                                 <button type="button" class="problem" on:click=move |_| {
                                     ctx.move_to(at);
                                     on_pick.run(());
-                                }>{p.text.clone()}</button>
+                                }>{
+                                    let (en, ja) = (p.text.clone(), p.ja.clone());
+                                    move || if ctx.page.lang.get() == crate::i18n::Lang::Ja { ja.clone() } else { en.clone() }
+                                }</button>
+                                {declare}
                             </li>
                         }
                     }
@@ -100,4 +108,39 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
             </div>
         </section>
     }
+}
+
+/// "Declare NAME as TYPE" for each name the box at the problem's cell
+/// uses undeclared (issue #49): one click declares it in the Variables
+/// table with the type its use there needs.
+fn declare_buttons(ctx: LadderCtx, rung: usize, pos: Pos) -> impl IntoView {
+    let wanted = if ctx.machine == MachineId::SoftPlc {
+        undeclared_in_box(&ctx.ladder(), rung, pos)
+    } else {
+        Vec::new()
+    };
+    wanted
+        .into_iter()
+        .map(|(name, ty)| {
+            let label = {
+                let name = name.clone();
+                move || {
+                    let f = ctx.page.lang.get().files();
+                    f.declare_as
+                        .replace("{name}", &name)
+                        .replace("{type}", ty.name())
+                }
+            };
+            let declared = Variable::new(&name, ty.name());
+            view! {
+                <button type="button" class="declare-as" data-testid=format!("declare-as-{name}")
+                    on:click=move |_| {
+                        let edit = Edit::Variable(VariableEdit::Declare(declared.clone()));
+                        if let Err(why) = ctx.try_edit(edit) {
+                            ctx.panes.message.set(Some(why));
+                        }
+                    }>{label}</button>
+            }
+        })
+        .collect_view()
 }

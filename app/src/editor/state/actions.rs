@@ -172,7 +172,13 @@ impl LadderCtx {
         };
         let element = match parse_entry(self.machine, state.kind, &state.text) {
             Ok(e) => e,
-            Err(e) => return refuse(e.to_string()),
+            // In the page's language (issue #49).
+            Err(e) => {
+                return refuse(crate::i18n::engine::entry_error(
+                    self.page.lang.get_untracked(),
+                    &e,
+                ))
+            }
         };
         let edit = if state.branch {
             Edit::PlaceBranch {

@@ -435,6 +435,7 @@ impl LadderCtx {
                 rung: err.rung.saturating_sub(1),
                 pos: err.pos,
                 text: err.to_string(),
+                ja: crate::i18n::engine::ladder_error(crate::i18n::Lang::Ja, err),
             })
             .collect();
         self.repaint(&problems, out_col, &comments, listing.as_ref());

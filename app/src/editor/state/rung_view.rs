@@ -186,6 +186,9 @@ pub struct Problem {
     pub pos: Option<Pos>,
     /// `rung 2, row 1, column 3: …` (1-based, the engine's words).
     pub text: String,
+    /// The same in Japanese, from its typed reason when it has one
+    /// (`crate::i18n::engine`).
+    pub ja: String,
 }
 
 /// The device entry while it is open.

@@ -340,6 +340,24 @@ impl fmt::Display for ImportError {
 
 impl std::error::Error for ImportError {}
 
+impl ImportError {
+    /// The error as the page says it: the command line's advice (`--pou
+    /// NAME`) becomes the page's (its import dialog's Program picker),
+    /// since a page user has no command line (issue #49). The CLI says
+    /// [`fmt::Display`]'s words.
+    pub fn in_page(&self) -> String {
+        match self {
+            ImportError::NoDrawnInPrograms(run, ld) => format!(
+                "the programs the tasks run ({run}) have no LD or FBD body: Hashigo imports ladder (LD) and function block diagram (FBD) bodies; these POUs have one: {ld} (choose one under Program)"
+            ),
+            ImportError::ProjectBlock(name, language) => format!(
+                "block {name} calls the project's own {language} function block: Hashigo's ladders do not call function blocks (choose {name} under Program if it is LD or FBD)"
+            ),
+            other => other.to_string(),
+        }
+    }
+}
+
 impl From<XmlError> for ImportError {
     fn from(e: XmlError) -> Self {
         ImportError::Xml(e)

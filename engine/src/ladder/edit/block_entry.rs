@@ -14,6 +14,7 @@
 //! FX's MOV is an output); a comparison or a function block stands in the
 //! condition ([`Element::Block`]) and passes its power on.
 
+use crate::iec::data::DataType;
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::element::Element;
 
@@ -164,9 +165,98 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
     Ok(call)
 }
 
+/// What one operand of a box typed by its operands in order is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OperandRole {
+    /// A function block's instance (`c0` of `CTU c0 reset 10`).
+    Instance,
+    /// A data input (its pin).
+    Input,
+    /// Where a function's result goes (`OUT`; a comparison's is optional).
+    Result,
+}
+
+/// One operand of a box's kind, in the order [`parse_box`] reads them:
+/// the entry offers a field for each, labelled by its pin (issue #49).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BoxOperand {
+    /// What it is.
+    pub role: OperandRole,
+    /// The pin it wires (`""` for the instance).
+    pub pin: String,
+    /// The type its pin needs, when one type does (a counter's PV: INT;
+    /// a function's pins take several: `None`).
+    pub needs: Option<DataType>,
+}
+
+/// The operands a box of `kind` takes in order (`None`: no box has that
+/// name): `CTU` → instance, R, PV; `ADD` → IN1, IN2, OUT.
+pub fn box_operands(kind: &str) -> Option<Vec<BoxOperand>> {
+    let call = new_call(kind, "");
+    let shape = call.shape()?;
+    let operand = |role, pin: &str, needs| BoxOperand {
+        role,
+        pin: pin.to_string(),
+        needs,
+    };
+    let mut all = Vec::new();
+    if shape == Shape::FunctionBlock {
+        all.push(operand(OperandRole::Instance, "", None));
+    }
+    let typed = crate::iec::pins::inputs(&call.kind());
+    for pin in call.data_pins() {
+        let needs = typed.iter().find(|(p, _)| *p == pin).map(|(_, t)| *t);
+        all.push(operand(OperandRole::Input, &pin, needs));
+    }
+    if shape != Shape::FunctionBlock {
+        all.push(operand(OperandRole::Result, "OUT", None));
+    }
+    Some(all)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_boxs_operands_are_listed_in_the_order_they_are_typed() {
+        let pins = |kind: &str| -> Vec<(OperandRole, String, Option<DataType>)> {
+            box_operands(kind)
+                .expect("a box")
+                .into_iter()
+                .map(|o| (o.role, o.pin, o.needs))
+                .collect()
+        };
+        use OperandRole::*;
+        assert_eq!(
+            pins("ctu"),
+            [
+                (Instance, String::new(), None),
+                (Input, "R".into(), Some(DataType::Bool)),
+                (Input, "PV".into(), Some(DataType::Int)),
+            ]
+        );
+        assert_eq!(
+            pins("ADD"),
+            [
+                (Input, "IN1".into(), None),
+                (Input, "IN2".into(), None),
+                (Result, "OUT".into(), None)
+            ]
+        );
+        assert_eq!(pins("GT").len(), 3);
+        assert_eq!(box_operands("X00"), None);
+        // What the fields list is what the entry reads back.
+        let ctu = parse_box("CTU c0 reset 10").expect("reads");
+        let names: Vec<_> = ctu
+            .block()
+            .expect("a box")
+            .inputs
+            .iter()
+            .map(|(p, _)| p.clone())
+            .collect();
+        assert_eq!(names, ["R", "PV"]);
+    }
 
     fn call(e: &Element) -> &BlockCall {
         e.block().expect("a box")

@@ -14,16 +14,18 @@ mod block_entry;
 mod change;
 mod clip;
 mod command;
+mod declare_as;
 mod devices;
 mod entry;
 mod entry_error;
 mod variables;
 
 pub use align::align_outputs;
-pub use block_entry::BOX_USAGE;
+pub use block_entry::{box_operands, BoxOperand, OperandRole, BOX_USAGE};
 pub use change::{Change, Step};
 pub use clip::{Clip, ClipError, CLIP_HEADER};
 pub use command::{Edit, EditError};
+pub use declare_as::undeclared_in_box;
 pub use devices::{
     complete, complete_declared, device_names, find, replace_plan, xref, Found, ReplaceError, Use,
     UseRole,
