@@ -46,8 +46,12 @@ pub fn start() {
         return;
     }
     let ctx = page();
+    let start = start::Start::new();
     // Asked before anything is restored or opened (which may save).
-    ctx.start.open.set(start::first_visit());
+    start.open.set(start::first_visit(
+        editor::shared::location_fragment().is_none(),
+        nothing_saved(),
+    ));
     let workspaces = Workspaces::restore(ctx);
     editor::shared::open_from_location(ctx, workspaces.ladders);
     // A link pasted into the address bar of the open page.
@@ -58,12 +62,22 @@ pub fn start() {
     // It listens for the page's life.
     std::mem::forget(listener);
     listen_to_other_tabs(workspaces);
-    leptos::mount::mount_to_body(move || view! { <App ctx=ctx workspaces=workspaces /> });
+    leptos::mount::mount_to_body(
+        move || view! { <App ctx=ctx workspaces=workspaces start=start /> },
+    );
     remove_loading_screen();
     // After the first screen: its install fetches every file of the
     // release, which must not compete with the first screen's own.
     register_service_worker();
     start_loop(ctx, workspaces);
+}
+
+/// No machine's ladder and no project is saved in this profile.
+fn nothing_saved() -> bool {
+    engine::MachineId::ALL
+        .iter()
+        .all(|&m| storage::saved_string(&editor::files::store::key(m)).is_none())
+        && storage::saved_string(editor::projects::INDEX_KEY).is_none()
 }
 
 /// Another tab of the page saved (the `storage` event, which only other
@@ -170,9 +184,17 @@ pub fn page() -> Ctx {
 
 /// The page: header, notices, and the chosen machine's workspace.
 #[component]
-pub fn App(ctx: Ctx, workspaces: Workspaces) -> impl IntoView {
+pub fn App(ctx: Ctx, workspaces: Workspaces, start: start::Start) -> impl IntoView {
     provide_context(ctx);
+    provide_context(start);
     workspaces.provide();
+    // An example chosen on the start screen opens in its workspace.
+    Effect::new(move |_| {
+        if let Some((machine, id)) = start.example.get() {
+            untrack(|| examples::open(machine, &id, workspaces));
+            start.example.set(None);
+        }
+    });
     view! {
         <ErrorBoundary fallback=move |_| {
             view! { <div class="fatal" role="alert">{move || ctx.lang.get().texts().crashed}</div> }

@@ -48,8 +48,6 @@ pub struct Ctx {
     pub docks: crate::docks::Docks,
     /// How contacts are coloured (View menu; remembered).
     pub colouring: RwSignal<crate::editor::conduct::Colouring>,
-    /// The start screen, the guided first rung and the guide (issue #47).
-    pub start: crate::start::Start,
 }
 
 impl Ctx {
@@ -65,7 +63,6 @@ impl Ctx {
             colouring: RwSignal::new(crate::editor::conduct::Colouring::parse(
                 crate::storage::saved_string(crate::editor::conduct::COLOURING_KEY).as_deref(),
             )),
-            start: crate::start::Start::new(),
         }
     }
 

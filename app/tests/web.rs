@@ -60,7 +60,7 @@ fn mount_workspaces() -> (Ctx, Workspaces, Element) {
     let html: HtmlElement = container.clone().unchecked_into();
     let handle = leptos::mount::mount_to(
         html,
-        move || view! { <App ctx=ctx workspaces=workspaces /> },
+        move || view! { <App ctx=ctx workspaces=workspaces start=app::start::Start::new() /> },
     );
     handle.forget();
     (ctx, workspaces, container)

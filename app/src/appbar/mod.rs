@@ -208,7 +208,7 @@ fn ColouringToggle() -> impl IntoView {
 fn HelpMenu(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let s = move || ctx.page.lang.get().start();
-    let start = ctx.page.start;
+    let start = crate::start::Start::get();
     view! {
         <button type="button" data-testid="help-guide" on:click=move |_| start.open_guide("")>
             {move || s().guide}

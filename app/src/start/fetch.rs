@@ -5,6 +5,8 @@
 use std::collections::HashMap;
 
 use leptos::prelude::*;
+
+use crate::state::Ctx;
 use leptos::wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
@@ -107,4 +109,27 @@ pub fn ensure_style() {
     let _ = link.set_attribute("rel", "stylesheet");
     let _ = link.set_attribute("href", "start/start.css");
     let _ = head.append_child(&link);
+}
+
+/// "Loading…", or the failure with a retry, for a fetched file.
+#[component]
+pub fn FetchState(
+    fetched: RwSignal<Fetched>,
+    retry: impl Fn() + Copy + Send + Sync + 'static,
+) -> impl IntoView {
+    let ctx = Ctx::get();
+    let s = move || ctx.lang.get().start();
+    move || {
+        match fetched.get() {
+        Fetched::Loading => view! { <p class="muted" role="status">{s().loading}</p> }.into_any(),
+        Fetched::Failed(_) => view! {
+            <p class="fetch-failed" role="alert" data-testid="fetch-failed">
+                {s().fetch_failed} " "
+                <button type="button" data-testid="fetch-retry" on:click=move |_| retry()>{s().retry}</button>
+            </p>
+        }
+        .into_any(),
+        Fetched::Text(_) => ().into_any(),
+    }
+    }
 }

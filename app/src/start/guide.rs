@@ -6,8 +6,7 @@
 use leptos::prelude::*;
 use leptos::wasm_bindgen::JsCast;
 
-use super::fetch::Fetched;
-use super::screen::FetchState;
+use super::fetch::{FetchState, Fetched};
 use crate::docks::Tool;
 use crate::state::Ctx;
 
@@ -15,7 +14,7 @@ use crate::state::Ctx;
 #[component]
 pub fn Guide() -> impl IntoView {
     let ctx = Ctx::get();
-    let start = ctx.start;
+    let start = super::Start::get();
     let s = move || ctx.lang.get().start();
     let fetched = RwSignal::new(Fetched::Loading);
     let body = NodeRef::<leptos::html::Div>::new();
@@ -126,6 +125,6 @@ pub fn GuideLink(#[prop(into)] section: Signal<&'static str>) -> impl IntoView {
     view! {
         <button type="button" class="guide-link" data-testid="guide-link" data-section=move || section.get()
             title=move || s().guide_section aria-label=move || s().guide_section
-            on:click=move |_| ctx.start.open_guide(section.get())>"?"</button>
+            on:click=move |_| super::Start::get().open_guide(section.get())>"?"</button>
     }
 }

@@ -34,6 +34,9 @@ pub struct Start {
     pub tour: RwSignal<Option<Step>>,
     /// The guide shows, at this section (`""`: its top).
     pub guide: RwSignal<Option<String>>,
+    /// An example chosen on the start screen, for the page to open
+    /// (it holds the workspaces; the start screen does not).
+    pub example: RwSignal<Option<(engine::MachineId, String)>>,
     /// The static files fetched so far.
     pub files: fetch::Files,
 }
@@ -45,6 +48,7 @@ impl Start {
             open: RwSignal::new(false),
             tour: RwSignal::new(None),
             guide: RwSignal::new(None),
+            example: RwSignal::new(None),
             files: fetch::Files::new(),
         }
     }
@@ -53,6 +57,11 @@ impl Start {
     pub fn close(&self) {
         self.open.set(false);
         storage::save_string(START_KEY, "closed");
+    }
+
+    /// The one provided by [`crate::App`].
+    pub fn get() -> Start {
+        expect_context::<Start>()
     }
 
     /// Opens the guide at `section` (an id of web/guide/*.html).
@@ -68,16 +77,10 @@ impl Default for Start {
 }
 
 /// Whether this visit opens on the start screen: the bare page (no share
-/// link or exercise in the address), a start screen never used or
-/// dismissed, and no work saved in this profile.
-pub fn first_visit() -> bool {
-    let bare = crate::editor::shared::location_fragment().is_none();
-    let never_closed = storage::saved_string(START_KEY).is_none();
-    let no_work = engine::MachineId::ALL
-        .iter()
-        .all(|&m| storage::saved_string(&crate::editor::files::store::key(m)).is_none())
-        && storage::saved_string(crate::editor::projects::INDEX_KEY).is_none();
-    bare && never_closed && no_work
+/// link or exercise in the address: `bare`), a start screen never used or
+/// dismissed, and no work saved in this profile (`no_work`).
+pub fn first_visit(bare: bool, no_work: bool) -> bool {
+    bare && no_work && storage::saved_string(START_KEY).is_none()
 }
 
 /// The start screen and the guide stand under the app bar, whose height

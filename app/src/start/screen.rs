@@ -18,17 +18,16 @@
 use leptos::prelude::*;
 use leptos::wasm_bindgen::JsCast;
 
-use super::fetch::Fetched;
+use super::fetch::{FetchState, Fetched};
 use super::steps::Step;
 use crate::state::{Ctx, MachineKind};
 use crate::storage;
-use crate::workspaces::Workspaces;
 
 /// The start screen.
 #[component]
 pub fn StartScreen() -> impl IntoView {
     let ctx = Ctx::get();
-    let start = ctx.start;
+    let start = super::Start::get();
     let s = move || ctx.lang.get().start();
     let fetched = RwSignal::new(Fetched::Loading);
     let body = NodeRef::<leptos::html::Div>::new();
@@ -75,29 +74,6 @@ pub fn StartScreen() -> impl IntoView {
     }
 }
 
-/// "Loading…", or the failure with a retry, for a fetched file.
-#[component]
-pub fn FetchState(
-    fetched: RwSignal<Fetched>,
-    retry: impl Fn() + Copy + Send + Sync + 'static,
-) -> impl IntoView {
-    let ctx = Ctx::get();
-    let s = move || ctx.lang.get().start();
-    move || {
-        match fetched.get() {
-        Fetched::Loading => view! { <p class="muted" role="status">{s().loading}</p> }.into_any(),
-        Fetched::Failed(_) => view! {
-            <p class="fetch-failed" role="alert" data-testid="fetch-failed">
-                {s().fetch_failed} " "
-                <button type="button" data-testid="fetch-retry" on:click=move |_| retry()>{s().retry}</button>
-            </p>
-        }
-        .into_any(),
-        Fetched::Text(_) => ().into_any(),
-    }
-    }
-}
-
 /// The `data-start` of the control under a click, if any.
 fn chosen(e: &web_sys::Event) -> Option<(web_sys::Element, String)> {
     let target = e.target()?.dyn_into::<web_sys::Element>().ok()?;
@@ -107,11 +83,10 @@ fn chosen(e: &web_sys::Event) -> Option<(web_sys::Element, String)> {
 }
 
 fn on_click(ctx: Ctx, e: &web_sys::MouseEvent) {
-    let start = ctx.start;
+    let start = super::Start::get();
     let Some((control, what)) = chosen(e) else {
         return;
     };
-    let workspaces = expect_context::<Workspaces>();
     let part = |name: &str| {
         if let Some(root) = control.closest(".start-body").ok().flatten() {
             show_part(&root, name);
@@ -134,7 +109,8 @@ fn on_click(ctx: Ctx, e: &web_sys::MouseEvent) {
             if let Ok(kind) = MachineKind::parse(machine) {
                 ctx.machine.set(kind);
                 storage::save_string(storage::MACHINE_KEY, kind.name());
-                crate::examples::open(kind, id, workspaces);
+                // Opened by the page, which holds every workspace.
+                start.example.set(Some((kind, (*id).to_string())));
                 start.close();
             }
         }
@@ -170,9 +146,9 @@ fn on_submit(ctx: Ctx, e: &web_sys::SubmitEvent) {
     if fragment.is_empty() {
         return;
     }
-    let workspaces = expect_context::<Workspaces>();
-    crate::editor::shared::open_fragment(ctx, workspaces.ladders, fragment);
-    ctx.start.close();
+    let ladders = expect_context::<crate::editor::Ladders>();
+    crate::editor::shared::open_fragment(ctx, ladders, fragment);
+    super::Start::get().close();
 }
 
 /// Shows part `name` of the screen (`data-start-part`), hiding the

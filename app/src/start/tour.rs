@@ -10,15 +10,14 @@ use leptos::wasm_bindgen::JsCast;
 use super::steps::{self, Devices, Running, Step};
 use crate::editor::LadderCtx;
 use crate::state::Ctx;
-use crate::workspaces::Workspaces;
 
 /// The tour's card, while a tour runs.
 #[component]
 pub fn Tour() -> impl IntoView {
     let ctx = Ctx::get();
-    let start = ctx.start;
-    let workspaces = expect_context::<Workspaces>();
-    let ladder = move || workspaces.ladders.of(ctx.machine.get());
+    let start = super::Start::get();
+    let ladders = expect_context::<crate::editor::Ladders>();
+    let ladder = move || ladders.of(ctx.machine.get());
     // Each change of the drawing or of the running machine checks the step.
     Effect::new(move |_| {
         let Some(step) = start.tour.get() else {
@@ -57,7 +56,7 @@ pub fn Tour() -> impl IntoView {
 #[component]
 fn Card(step: Step, ladder: LadderCtx) -> impl IntoView {
     let ctx = ladder.page;
-    let start = ctx.start;
+    let start = super::Start::get();
     let s = move || ctx.lang.get().start();
     let devices = Devices::of(ladder.machine);
     let text = {
