@@ -424,16 +424,22 @@ def test_a_broken_link_changes_nothing(driver, base_url):
         assert saved_ladder(driver, "minasec-u") == own
 
 
-def test_an_io86a_link_opens_on_the_io86a(driver, base_url):
-    project = ROOT / "tests/e2e/artifacts/io86a-project.json"
+def one_rung_link(machine, contact, coil):
+    """The share fragment (from `hashigo share`) of a project on `machine`
+    with one rung: `contact` -> (`coil`)."""
+    project = ROOT / f"tests/e2e/artifacts/{machine}-project.json"
     project.parent.mkdir(exist_ok=True)
     project.write_text(json.dumps({
-        "format": "hashigo-project", "version": 1, "machine": "io86a",
-        "ladder": {"rungs": [{"cells": [[{"type": "contact", "kind": "no", "device": "X03"},
-                                         {"type": "coil", "kind": "normal", "device": "Y02"}]]}]},
+        "format": "hashigo-project", "version": 1, "machine": machine,
+        "ladder": {"rungs": [{"cells": [[{"type": "contact", "kind": "no", "device": contact},
+                                         {"type": "coil", "kind": "normal", "device": coil}]]}]},
     }))
-    fragment = subprocess.run([str(HASHIGO), "share", "--program", str(project)], check=True,
-                              capture_output=True, text=True).stdout.strip()
+    return subprocess.run([str(HASHIGO), "share", "--program", str(project)], check=True,
+                          capture_output=True, text=True).stdout.strip()
+
+
+def test_an_io86a_link_opens_on_the_io86a(driver, base_url):
+    fragment = one_rung_link("io86a", "X03", "Y02")
     open_fresh(driver, base_url)
     driver.get(f"{base_url}/#{fragment}")
     wait(driver, lambda: el(driver, "machine").get_attribute("value") == "io86a")

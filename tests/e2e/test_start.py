@@ -6,9 +6,6 @@ leaves the tour; Help opens the guide in English and Japanese, and after
 one visit it opens with the server gone. Screenshots of each step go to
 artifacts/start-*.png."""
 
-import json
-import subprocess
-
 import pytest
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
@@ -16,7 +13,7 @@ from selenium.webdriver.support.ui import Select
 
 from conftest import DistServer
 from test_app import el, on, wait
-from test_ladder import HASHIGO, keys, place
+from test_ladder import keys, one_rung_link, place
 from test_screens import screen_driver, tap_entry
 
 
@@ -65,14 +62,7 @@ def test_a_fresh_profile_opens_on_the_start_screen_a_share_link_does_not(driver,
     assert not shown(driver, "start")
 
     # Another fresh profile, opening a share link: no start screen.
-    project = tmp_path / "p.json"
-    project.write_text(json.dumps({
-        "format": "hashigo-project", "version": 1, "machine": "minasec-u",
-        "ladder": {"rungs": [{"cells": [[{"type": "contact", "kind": "no", "device": "X03"},
-                                         {"type": "coil", "kind": "normal", "device": "Y02"}]]}]},
-    }))
-    fragment = subprocess.run([str(HASHIGO), "share", "--program", str(project)], check=True,
-                              capture_output=True, text=True).stdout.strip()
+    fragment = one_rung_link("minasec-u", "X03", "Y02")
     other = screen_driver(tmp_path / "other", "laptop", first_visit=True)
     try:
         other.get(f"{base_url}/#{fragment}")
@@ -139,20 +129,13 @@ def follow_the_tour(driver, artifacts, name, touch):
     wait(driver, lambda: not shown(driver, "tour"))
 
 
-def test_the_tour_by_keys_at_1366x768_draws_a_self_hold_that_latches(base_url, artifacts, tmp_path):
-    driver = screen_driver(tmp_path, "laptop", first_visit=True)
+@pytest.mark.parametrize("name,touch", [("laptop", False), ("phone", True)])
+def test_the_tour_by_keys_at_1366x768_and_by_taps_on_a_phone_draws_a_self_hold_that_latches(
+        base_url, artifacts, tmp_path, name, touch):
+    driver = screen_driver(tmp_path, name, first_visit=True)
     try:
         driver.get(base_url)
-        follow_the_tour(driver, artifacts, "laptop", touch=False)
-    finally:
-        driver.quit()
-
-
-def test_the_tour_by_taps_on_a_phone_draws_a_self_hold_that_latches(base_url, artifacts, tmp_path):
-    driver = screen_driver(tmp_path, "phone", first_visit=True)
-    try:
-        driver.get(base_url)
-        follow_the_tour(driver, artifacts, "phone", touch=True)
+        follow_the_tour(driver, artifacts, name, touch)
     finally:
         driver.quit()
 
