@@ -522,15 +522,22 @@ def test_the_page_runs_under_a_csp_with_no_inline_script(driver, base_url):
     assert el(driver, "ladder")
 
 
-def test_after_the_first_visit_the_page_works_offline(driver, artifacts):
+def first_visit_kept_offline(driver):
+    """A server of its own for dist/, the page visited until the service
+    worker controls it; returns the server (stop it to be offline)."""
     from conftest import DistServer
 
     server = DistServer()
-    url = server.url
-    driver.get(url)
+    driver.get(server.url)
     wait(driver, lambda: el(driver, "ladder"))
     wait(driver, lambda: driver.execute_script("return navigator.serviceWorker.controller !== null"),
          timeout=30, message="the worker controls the page")
+    return server
+
+
+def test_after_the_first_visit_the_page_works_offline(driver, artifacts):
+    server = first_visit_kept_offline(driver)
+    url = server.url
     manifest = driver.execute_script("return document.querySelector('link[rel=manifest]').href")
     assert manifest.endswith("manifest.webmanifest")
     server.stop()

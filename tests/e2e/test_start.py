@@ -11,9 +11,8 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
-from conftest import DistServer
 from test_app import el, on, wait
-from test_ladder import keys, one_rung_link, place
+from test_ladder import first_visit_kept_offline, keys, one_rung_link, place
 from test_screens import screen_driver, tap_entry
 
 
@@ -193,12 +192,8 @@ def test_help_opens_the_guide_in_both_languages_and_a_pane_opens_its_section(dri
 
 
 def test_after_one_visit_the_guide_opens_offline(driver, artifacts):
-    server = DistServer()
+    server = first_visit_kept_offline(driver)
     url = server.url
-    driver.get(url)
-    wait(driver, lambda: el(driver, "ladder"))
-    wait(driver, lambda: driver.execute_script("return navigator.serviceWorker.controller !== null"),
-         timeout=30, message="the worker controls the page")
     el(driver, "help-guide").click()
     wait(driver, lambda: guide_lang(driver) == "en")
     Select(el(driver, "lang")).select_by_value("ja")

@@ -45,11 +45,10 @@ pub fn Guide() -> impl IntoView {
     };
     // Escape closes it wherever the focus is, but in a text field.
     let escape = window_event_listener(leptos::ev::keydown, move |e| {
-        let in_field = e
-            .target()
-            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
-            .is_some_and(|el| matches!(el.tag_name().as_str(), "INPUT" | "TEXTAREA" | "SELECT"));
-        if e.key() == "Escape" && !in_field && start.guide.with_untracked(Option::is_some) {
+        if e.key() == "Escape"
+            && !super::typed_in_a_field(&e)
+            && start.guide.with_untracked(Option::is_some)
+        {
             start.guide.set(None);
         }
     });

@@ -98,3 +98,12 @@ pub fn place_below_bar() {
         let _ = root.set_attribute("style", &format!("--start-top: {bottom:.0}px"));
     }
 }
+
+/// Whether a key went to a text field, where Escape cancels the field
+/// rather than leaving the tour or the guide.
+pub fn typed_in_a_field(e: &web_sys::KeyboardEvent) -> bool {
+    use leptos::wasm_bindgen::JsCast;
+    e.target()
+        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+        .is_some_and(|el| matches!(el.tag_name().as_str(), "INPUT" | "TEXTAREA" | "SELECT"))
+}

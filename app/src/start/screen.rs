@@ -31,12 +31,12 @@ pub fn StartScreen() -> impl IntoView {
     let s = move || ctx.lang.get().start();
     let fetched = RwSignal::new(Fetched::Loading);
     let body = NodeRef::<leptos::html::Div>::new();
+    let url = move || format!("start/{}.html", ctx.lang.get().code());
     Effect::new(move |_| {
         if start.open.get() {
             super::fetch::ensure_style();
             super::place_below_bar();
-            let url = format!("start/{}.html", ctx.lang.get().code());
-            start.files.load(&url, fetched);
+            start.files.load(&url(), fetched);
         }
     });
     // The fragment is in the page: mark the machine shown.
@@ -62,10 +62,7 @@ pub fn StartScreen() -> impl IntoView {
                 <button type="button" class="start-close" data-testid="start-close"
                     title=move || s().start_close aria-label=move || s().start_close
                     on:click=move |_| start.close()>"✕"</button>
-                <FetchState fetched retry=move || {
-                    let url = format!("start/{}.html", ctx.lang.get_untracked().code());
-                    start.files.load(&url, fetched);
-                } />
+                <FetchState fetched retry=move || start.files.load(&untrack(url), fetched) />
                 <div class="start-body" node_ref=body inner_html=html
                     on:click=move |e| on_click(ctx, &e)
                     on:submit=move |e| on_submit(ctx, &e)></div>

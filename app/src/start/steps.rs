@@ -2,7 +2,7 @@
 //! engine's ladder (tested natively): what the user has drawn, and what the
 //! running machine shows. The tour view only asks these.
 
-use engine::ladder::target::{capabilities, check_device};
+use engine::ladder::target::capabilities;
 use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Net};
 use engine::MachineId;
 
@@ -118,14 +118,16 @@ pub struct Running {
     pub out_on: bool,
 }
 
+/// Whether a drawn device is one the tour asks for. The editor keeps
+/// every device in the machine's own spelling (`target::check_element`),
+/// so names compare as text, case aside.
+fn same(drawn: &str, wanted: &str) -> bool {
+    drawn.eq_ignore_ascii_case(wanted)
+}
+
 /// Whether `step` is done, given the ladder as drawn and the machine.
 pub fn done(step: Step, machine: MachineId, ladder: &Ladder, now: Running) -> bool {
     let d = Devices::of(machine);
-    let same = |drawn: &str, wanted: &str| {
-        // The editor keeps the machine's spelling; compare as it would.
-        check_device(machine, drawn).is_ok_and(|n| n.eq_ignore_ascii_case(wanted))
-            || drawn.eq_ignore_ascii_case(wanted)
-    };
     let has = |want: &dyn Fn(&Element) -> bool| {
         ladder
             .rungs
@@ -160,7 +162,7 @@ pub fn under_start(machine: MachineId, ladder: &Ladder) -> Option<engine::ladder
             Element::Contact {
                 kind: ContactKind::No,
                 device,
-            } if device.eq_ignore_ascii_case(&d.start) => {
+            } if same(device, &d.start) => {
                 Some(engine::ladder::edit::Cursor::new(r, at.row + 1, at.col))
             }
             _ => None,
@@ -176,20 +178,19 @@ pub fn holds(machine: MachineId, ladder: &Ladder, d: &Devices) -> bool {
     let Ok(rungs) = ladder.logic(machine) else {
         return false;
     };
-    let is = |drawn: &str, wanted: &str| drawn.eq_ignore_ascii_case(wanted);
     rungs.iter().any(|rung| {
         let drives = rung.outputs.iter().any(|(e, _)| {
-            matches!(e, Element::Coil { kind: CoilKind::Normal, device } if is(device, &d.out))
+            matches!(e, Element::Coil { kind: CoilKind::Normal, device } if same(device, &d.out))
         });
         drives
             && (0..8u8).all(|bits| {
                 let (start, stop, out) = (bits & 1 != 0, bits & 2 != 0, bits & 4 != 0);
                 let value = |device: &str| {
-                    if is(device, &d.start) {
+                    if same(device, &d.start) {
                         Some(start)
-                    } else if is(device, &d.stop) {
+                    } else if same(device, &d.stop) {
                         Some(stop)
-                    } else if is(device, &d.out) {
+                    } else if same(device, &d.out) {
                         Some(out)
                     } else {
                         None

@@ -39,7 +39,10 @@ pub fn Tour() -> impl IntoView {
         }
     });
     let escape = window_event_listener(leptos::ev::keydown, move |e| {
-        if e.key() == "Escape" && start.tour.get_untracked().is_some() && !in_field(&e) {
+        if e.key() == "Escape"
+            && start.tour.get_untracked().is_some()
+            && !super::typed_in_a_field(&e)
+        {
             start.tour.set(None);
         }
     });
@@ -147,11 +150,4 @@ fn running(ladder: LadderCtx) -> Running {
         stop_on: on(&d.stop),
         out_on: on(&d.out),
     }
-}
-
-/// Whether a key went to a text field (Escape there cancels the field).
-fn in_field(e: &web_sys::KeyboardEvent) -> bool {
-    e.target()
-        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
-        .is_some_and(|el| matches!(el.tag_name().as_str(), "INPUT" | "TEXTAREA" | "SELECT"))
 }
