@@ -248,6 +248,16 @@ impl Plc for ArduinoPlc {
         SETTINGS
     }
 
+    /// Plants wire to the six input and six output pins.
+    fn terminals(&self) -> crate::plc::Terminals {
+        use crate::plc::Terminals;
+        Terminals {
+            inputs: Terminals::numbered(6, |i| format!("X{i:03}")),
+            outputs: Terminals::numbered(6, |i| format!("Y{i:03}")),
+            ..Terminals::default()
+        }
+    }
+
     /// One word a step, back to back.
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
         let t = steps.checked_mul(self.machine.step_time().as_nanos())?;

@@ -225,6 +225,14 @@ impl Plc for AvrPlc {
         SETTINGS
     }
 
+    /// No fixed terminals: a plant wires to the program's named bits.
+    fn terminals(&self) -> crate::plc::Terminals {
+        crate::plc::Terminals {
+            by_name: true,
+            ..crate::plc::Terminals::default()
+        }
+    }
+
     /// Whole scans of every record.
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
         plc::whole_scans(

@@ -482,6 +482,20 @@ impl Plc for Io86aPlc {
         SETTINGS
     }
 
+    /// Plants wire to X00-X07 and Y00-Y05; X04/X05 take an analog level
+    /// as 0-5 V (once set to analog mode, `X04=A:n1:n2`).
+    fn terminals(&self) -> crate::plc::Terminals {
+        use crate::plc::{AnalogScale, Terminals};
+        Terminals {
+            inputs: Terminals::numbered(8, |i| format!("X{i:02}")),
+            outputs: Terminals::numbered(6, |i| format!("Y{i:02}")),
+            analog: ["X04", "X05"]
+                .map(|n| (n.to_string(), AnalogScale::Millivolts(5000)))
+                .to_vec(),
+            by_name: false,
+        }
+    }
+
     /// Whole scans of every instruction (END included).
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
         plc::whole_scans(

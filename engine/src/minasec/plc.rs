@@ -315,6 +315,16 @@ impl Plc for MinasecPlc {
         SETTINGS
     }
 
+    /// Plants wire to the eight switches and lamps (no analog input).
+    fn terminals(&self) -> crate::plc::Terminals {
+        use crate::plc::Terminals;
+        Terminals {
+            inputs: Terminals::numbered(8, |i| format!("X{i:02}")),
+            outputs: Terminals::numbered(8, |i| format!("Y{i:02}")),
+            ..Terminals::default()
+        }
+    }
+
     /// One step is one clock: `steps` periods of the clock.
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
         let t = steps.checked_mul(self.machine.speed().period().as_nanos())?;

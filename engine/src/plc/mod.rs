@@ -13,12 +13,14 @@
 pub mod error;
 pub mod front;
 pub mod own;
+pub mod terminals;
 pub mod trace;
 pub mod value;
 
 pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
 pub use front::Front;
 pub use own::Own;
+pub use terminals::{AnalogScale, Terminals};
 pub use trace::{ScanTrace, TraceHistory, Tracer};
 pub use value::Value;
 
@@ -213,6 +215,12 @@ pub trait Plc {
 
     /// The settings this machine takes.
     fn settings(&self) -> &'static [SettingInfo];
+
+    /// The terminals a plant wires to by default (none, unless the
+    /// machine says).
+    fn terminals(&self) -> Terminals {
+        Terminals::default()
+    }
 
     /// For `hashigo bench`: the time by which at least `steps` steps have
     /// run from power-on when running flat out, and how many that is

@@ -423,6 +423,22 @@ impl Plc for SoftPlc {
         SETTINGS
     }
 
+    /// Plants wire to the board's `%IX0.0-%IX0.7` and `%QX0.0-%QX0.7`,
+    /// and an analog level to `%IW0-%IW7` as 0..1000 (tenths of a percent,
+    /// inside the board's 10-bit slider).
+    fn terminals(&self) -> crate::plc::Terminals {
+        use crate::plc::{AnalogScale, Terminals};
+        Terminals {
+            inputs: Terminals::numbered(8, |i| format!("%IX0.{i}")),
+            outputs: Terminals::numbered(8, |i| format!("%QX0.{i}")),
+            analog: Terminals::numbered(8, |i| format!("%IW{i}"))
+                .into_iter()
+                .map(|n| (n, AnalogScale::Word(1000)))
+                .collect(),
+            by_name: false,
+        }
+    }
+
     /// The serial port's terminal: nothing is shown on opening it.
     fn serial_open(&mut self) -> Result<String, PlcError> {
         Ok(String::new())

@@ -1,0 +1,82 @@
+//! The registry of plants: the one place that names every plant.
+
+use super::conveyor::{self, Conveyor};
+use super::tank::{self, Tank};
+use super::{Plant, PlantInfo};
+
+/// Every plant's description, in `hashigo plants` order.
+pub static ALL: [&PlantInfo; 2] = [&conveyor::INFO, &tank::INFO];
+
+/// One of the plants, as a value (so a machine with its plant can be
+/// copied for recording).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum AnyPlant {
+    /// The book's conveyor.
+    Conveyor(Conveyor),
+    /// The tank.
+    Tank(Tank),
+}
+
+impl AnyPlant {
+    /// A new plant called `name`, if there is one.
+    pub fn new(name: &str) -> Option<AnyPlant> {
+        match name {
+            "conveyor" => Some(AnyPlant::Conveyor(Conveyor::new())),
+            "tank" => Some(AnyPlant::Tank(Tank::new())),
+            _ => None,
+        }
+    }
+
+    /// The plants' names, for messages.
+    pub fn names() -> String {
+        ALL.map(|p| p.name).join(", ")
+    }
+
+    fn inner(&self) -> &dyn Plant {
+        match self {
+            AnyPlant::Conveyor(p) => p,
+            AnyPlant::Tank(p) => p,
+        }
+    }
+
+    fn inner_mut(&mut self) -> &mut dyn Plant {
+        match self {
+            AnyPlant::Conveyor(p) => p,
+            AnyPlant::Tank(p) => p,
+        }
+    }
+}
+
+impl Plant for AnyPlant {
+    fn info(&self) -> &'static PlantInfo {
+        self.inner().info()
+    }
+
+    fn params(&self) -> &[i64] {
+        self.inner().params()
+    }
+
+    fn set_param(&mut self, index: usize, value: i64) {
+        self.inner_mut().set_param(index, value);
+    }
+
+    fn check(&self) -> Result<(), String> {
+        self.inner().check()
+    }
+
+    fn reset(&mut self) {
+        self.inner_mut().reset();
+    }
+
+    fn step(&mut self, now_ms: i64, drive: &[i64], alarms: &mut Vec<String>) {
+        self.inner_mut().step(now_ms, drive, alarms);
+    }
+
+    fn sensor(&self, signal: usize) -> i64 {
+        self.inner().sensor(signal)
+    }
+
+    fn quantity(&self, index: usize) -> i64 {
+        self.inner().quantity(index)
+    }
+}

@@ -1,0 +1,153 @@
+//! Faults (`--fault`): a signal stuck at 0 or 1, or an actuator dead,
+//! each from a given time, so a teacher can hand out a faulty machine.
+
+use super::{Direction, Kind, PlantInfo};
+use crate::time::SimTime;
+
+/// What is wrong with a signal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FaultKind {
+    /// A sensor that reads this value, or an actuator that acts as if so
+    /// driven, whatever the PLC writes (a leaking valve: stuck 1).
+    Stuck(bool),
+    /// An actuator that no longer acts.
+    Dead,
+}
+
+/// One fault on one signal, from a time on.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Fault {
+    /// The signal, by index in the plant's signals.
+    pub signal: usize,
+    /// What is wrong.
+    pub kind: FaultKind,
+    /// From when (0: from power-on).
+    pub from: SimTime,
+}
+
+impl Fault {
+    /// Parses `SIGNAL stuck 0|1 [from TIME]` or `SIGNAL dead [from TIME]`
+    /// for the plant `plant`.
+    pub fn parse(text: &str, plant: &PlantInfo) -> Result<Fault, String> {
+        let words: Vec<&str> = text.split_whitespace().collect();
+        let usage = "expected SIGNAL stuck 0|1 [from TIME] or SIGNAL dead [from TIME]";
+        let Some((&name, rest)) = words.split_first() else {
+            return Err(usage.to_string());
+        };
+        let name = name
+            .strip_prefix(plant.name)
+            .and_then(|n| n.strip_prefix('.'))
+            .unwrap_or(name);
+        let signal = plant.signal(name).ok_or_else(|| {
+            format!(
+                "{} has no signal {} (its signals: {})",
+                plant.name,
+                crate::shown(name),
+                plant.signal_names()
+            )
+        })?;
+        let info = &plant.signals[signal];
+        let (kind, rest) = match rest {
+            ["stuck", "0", rest @ ..] => (FaultKind::Stuck(false), rest),
+            ["stuck", "1", rest @ ..] => (FaultKind::Stuck(true), rest),
+            ["dead", rest @ ..] => (FaultKind::Dead, rest),
+            _ => return Err(usage.to_string()),
+        };
+        let from = match rest {
+            [] => SimTime::ZERO,
+            ["from", time] => SimTime::parse(time).map_err(|e| format!("from {time}: {e}"))?,
+            _ => return Err(usage.to_string()),
+        };
+        if info.kind == Kind::Analog {
+            return Err(format!(
+                "{}.{} is analog: only bit signals take faults",
+                plant.name, info.name
+            ));
+        }
+        if kind == FaultKind::Dead && info.direction == Direction::In {
+            return Err(format!(
+                "{}.{} is a sensor: dead is for actuators (a sensor that reads nothing is stuck 0)",
+                plant.name, info.name
+            ));
+        }
+        Ok(Fault { signal, kind, from })
+    }
+}
+
+/// The fault acting on `signal` at `now`: of those begun, the one that
+/// began last (the later of two at the same time: the one given later).
+pub fn acting(faults: &[Fault], signal: usize, now: SimTime) -> Option<FaultKind> {
+    faults
+        .iter()
+        .filter(|f| f.signal == signal && f.from <= now)
+        .max_by_key(|f| f.from)
+        .map(|f| f.kind)
+}
+
+/// `value` as a fault leaves it.
+pub fn apply(kind: Option<FaultKind>, value: i64) -> i64 {
+    match kind {
+        None => value,
+        Some(FaultKind::Stuck(v)) => i64::from(v),
+        Some(FaultKind::Dead) => 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plant::conveyor::INFO;
+
+    #[test]
+    fn faults_parse_with_their_time_and_refuse_what_cannot_be() {
+        let f = Fault::parse("motor stuck 1 from 2s", &INFO).unwrap();
+        assert_eq!(f.signal, 2);
+        assert_eq!(f.kind, FaultKind::Stuck(true));
+        assert_eq!(f.from, SimTime::from_secs(2));
+        let f = Fault::parse("conveyor.infeed stuck 0", &INFO).unwrap();
+        assert_eq!((f.signal, f.from), (0, SimTime::ZERO));
+        assert!(Fault::parse("motor dead", &INFO).is_ok());
+        let e = Fault::parse("infeed dead", &INFO).unwrap_err();
+        assert!(e.contains("sensor"), "{e}");
+        let e = Fault::parse("belt stuck 1", &INFO).unwrap_err();
+        assert!(
+            e.contains("\"belt\"") && e.contains("infeed, outfeed, motor"),
+            "{e}"
+        );
+        assert!(Fault::parse("motor stuck 2", &INFO).is_err());
+        assert!(Fault::parse("motor stuck 1 from", &INFO).is_err());
+        assert!(Fault::parse("motor stuck 1 from soon", &INFO).is_err());
+        assert!(Fault::parse("", &INFO).is_err());
+        let tank = &crate::plant::tank::INFO;
+        assert!(Fault::parse("level stuck 1", tank)
+            .unwrap_err()
+            .contains("analog"));
+    }
+
+    #[test]
+    fn the_latest_begun_fault_acts() {
+        let faults = [
+            Fault {
+                signal: 2,
+                kind: FaultKind::Stuck(true),
+                from: SimTime::ZERO,
+            },
+            Fault {
+                signal: 2,
+                kind: FaultKind::Dead,
+                from: SimTime::from_secs(5),
+            },
+        ];
+        assert_eq!(
+            acting(&faults, 2, SimTime::from_secs(1)),
+            Some(FaultKind::Stuck(true))
+        );
+        assert_eq!(
+            acting(&faults, 2, SimTime::from_secs(5)),
+            Some(FaultKind::Dead)
+        );
+        assert_eq!(acting(&faults, 0, SimTime::from_secs(5)), None);
+        assert_eq!(apply(Some(FaultKind::Dead), 1), 0);
+        assert_eq!(apply(None, 1), 1);
+    }
+}
