@@ -39,11 +39,6 @@ impl Args {
         Ok(Args { pairs })
     }
 
-    /// No flags at all.
-    pub fn empty() -> Args {
-        Args { pairs: Vec::new() }
-    }
-
     /// The value of a flag given at most once.
     pub fn optional(&self, name: &str) -> Result<Option<&str>, String> {
         let mut found = self.pairs.iter().filter(|(n, _)| n == name);
@@ -66,5 +61,19 @@ impl Args {
             .iter()
             .filter(move |(n, _)| n == name)
             .map(|(_, v)| v.as_str())
+    }
+}
+
+impl Args {
+    /// These flags without the values of `flag` that `drop` picks (the
+    /// plant's `--set NAME.KEY=VALUE` taken out of the machine's).
+    pub fn without(&self, flag: &str, drop: impl Fn(&str) -> bool) -> Args {
+        let pairs = self
+            .pairs
+            .iter()
+            .filter(|(n, v)| n != flag || !drop(v))
+            .cloned()
+            .collect();
+        Args { pairs }
     }
 }

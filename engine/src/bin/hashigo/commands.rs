@@ -13,6 +13,7 @@ use engine::{MachineId, SimTime};
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};
+use crate::plant::PlantOptions;
 use crate::source::{self, apply_settings, load, machine_flag, one, Problems};
 
 /// `hashigo run`.
@@ -20,7 +21,8 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(
         rest,
         &[
-            "machine", "program", "format", "set", "input", "until", "every", "watch", "map", "pou",
+            "machine", "program", "format", "set", "input", "until", "every", "watch", "map",
+            "pou", "plant", "wiring", "fault",
         ],
     )
     .map_err(one)?;
@@ -89,7 +91,12 @@ fn run_with(
     if watch.is_empty() || watch.iter().any(String::is_empty) {
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
-    problems.extend(apply_settings(plc.as_mut(), args, defaults));
+    let plant = PlantOptions::read(args, &mut problems);
+    let machine_args = match &plant {
+        Some(p) => p.machine_args(args),
+        None => args.without("set", |_| false),
+    };
+    problems.extend(apply_settings(plc.as_mut(), &machine_args, defaults));
     let events = read_events(args, &mut problems);
     if args.optional("program") == Ok(Some("-")) && args.optional("input") == Ok(Some("-")) {
         problems.push(
@@ -118,9 +125,33 @@ fn run_with(
         Some((source, list)) => (source.name.as_str(), list.as_slice()),
         None => ("", &[][..]),
     };
+    let Some(plant) = plant else {
+        return print_run(plc.as_mut(), (source_name, event_list), schedule, &watch);
+    };
+    let mut planted = plant.attach(plc)?;
+    let problems = plant.set_params(&mut planted, args);
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    let result = print_run(&mut planted, (source_name, event_list), schedule, &watch);
+    if result.is_ok() {
+        for line in crate::plant::alarm_lines(&planted) {
+            eprintln!("{}", crate::printable(&line));
+        }
+    }
+    result
+}
+
+/// Runs `plc` and prints the CSV on standard output.
+fn print_run<P: Plc + ?Sized>(
+    plc: &mut P,
+    (source_name, event_list): (&str, &[engine::events::InputEvent]),
+    schedule: Schedule,
+    watch: &[String],
+) -> Result<(), Problems> {
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
-    headless::run(plc.as_mut(), event_list, schedule, &watch, &mut out).map_err(|errors| {
+    headless::run(plc, event_list, schedule, watch, &mut out).map_err(|errors| {
         errors
             .into_iter()
             .map(|e| match e {

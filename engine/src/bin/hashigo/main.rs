@@ -7,6 +7,7 @@ mod args;
 mod commands;
 mod input;
 mod map;
+mod plant;
 mod share;
 mod source;
 mod test;
@@ -18,17 +19,22 @@ const USAGE: &str = "\
 usage: hashigo <command> [options]
   run      --machine ID --program FILE [--set NAME=VALUE]... [--input EVENTS.csv]
            --until TIME [--every TIME] --watch DEV[,DEV...]
+           [--plant NAME [--wiring WIRING.csv] [--fault FAULT]... [--set NAME.KEY=VALUE]...]
+           (run, test and why take the plant options; alarms go to stderr)
   bench    --machine ID --program FILE --steps N
   asm      --machine ID --program FILE
   compile  [--machine ID] --program LADDER.json|LADDER.xml|LADDER.ld [--map MAP.csv] [--pou NAME]
   console  --machine io86a|arduino-plc [--program FILE] [--step TIME]
   share    --program FILE [--machine ID]      (prints the share link's fragment)
   unshare  FRAGMENT|URL                       (prints the project as JSON)
-  test     --program P.json [--machine ID] [--junit FILE]
+  test     --program P.json [--machine ID] [--junit FILE] [plant options]
   map      --machine ID --program FILE.xml [--map MAP.csv] [--pou NAME]  (proposes a --map file)
   why      --machine ID --program FILE [--input EVENTS.csv] [--set NAME=VALUE]...
            --at TIME --device DEV       (why DEV is on or off at the end of that scan)
-machines: minasec-u, io86a, avr-plc, arduino-plc";
+  plants   [--machine ID]             (the plants: signals, quantities, parameters, default wiring)
+faults:  'SIGNAL stuck 0|1 [from TIME]', 'SIGNAL dead [from TIME]'; watch NAME.SIGNAL, NAME.QUANTITY, NAME.alarms
+machines: minasec-u, io86a, avr-plc, arduino-plc, soft-plc
+plants: conveyor, tank";
 
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
@@ -49,6 +55,7 @@ fn main() -> ExitCode {
         "unshare" => share::unshare(rest),
         "why" => why::why(rest),
         "map" => map::map(rest),
+        "plants" => plant::plants(rest),
         "help" | "--help" | "-h" => {
             println!("{USAGE}");
             Ok(())

@@ -27,7 +27,18 @@ pub fn main(rest: &[String]) -> ExitCode {
 
 /// Whether every case passed; `Err` on bad input.
 fn test(rest: &[String]) -> Result<bool, Problems> {
-    let args = Args::parse(rest, &["machine", "program", "format", "junit"]).map_err(one)?;
+    let args = Args::parse(
+        rest,
+        &[
+            "machine", "program", "format", "junit", "plant", "wiring", "fault", "set",
+        ],
+    )
+    .map_err(one)?;
+    let mut problems = Vec::new();
+    let plant = crate::plant::PlantOptions::read(&args, &mut problems);
+    if !problems.is_empty() {
+        return Err(problems);
+    }
     let flag = machine_flag(&args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
@@ -53,12 +64,24 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
     let mut problems = Vec::new();
     for (case, ready) in project.tests.iter().zip(&prepared) {
         let mut plc = new_plc(machine);
-        let mut setup = apply_settings(plc.as_mut(), &Args::empty(), (&source.name, &settings));
+        let machine_args = match &plant {
+            Some(p) => p.machine_args(&args),
+            None => args.without("set", |_| false),
+        };
+        let mut setup = apply_settings(plc.as_mut(), &machine_args, (&source.name, &settings));
         if let Err(e) = plc.load_text(&text) {
             setup.push(format!("{} (compiled): {e}", source.name));
         }
         if !setup.is_empty() {
             return Err(setup);
+        }
+        if let Some(p) = &plant {
+            let mut planted = p.attach(plc)?;
+            let setup = p.set_params(&mut planted, &args);
+            if !setup.is_empty() {
+                return Err(setup);
+            }
+            plc = Box::new(planted);
         }
         match ready
             .as_ref()

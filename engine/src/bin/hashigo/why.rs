@@ -33,16 +33,30 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     let args = Args::parse(
         rest,
         &[
-            "machine", "program", "format", "set", "input", "at", "device", "map", "pou",
+            "machine", "program", "format", "set", "input", "at", "device", "map", "pou", "plant",
+            "wiring", "fault",
         ],
     )
     .map_err(one)?;
     let explained = Explained::load(&args)?;
     let mut plc = explained.plc;
     let (ladder, live) = (&explained.ladder, &explained.live);
+    let mut problems = Vec::new();
+    let plant = crate::plant::PlantOptions::read(&args, &mut problems);
+    let machine_args = match &plant {
+        Some(p) => p.machine_args(&args),
+        None => args.without("set", |_| false),
+    };
+    let defaults = (explained.name.as_str(), explained.settings.as_slice());
+    problems.extend(apply_settings(plc.as_mut(), &machine_args, defaults));
+    let mut wired = String::new();
+    if let Some(plant) = &plant {
+        let mut planted = plant.attach(plc)?;
+        problems.extend(plant.set_params(&mut planted, &args));
+        wired = crate::plant::wired_lines(&planted);
+        plc = Box::new(planted);
+    }
     let names = Names::new(ladder, explained.written.as_ref(), plc.as_ref());
-
-    let mut problems = apply_settings(plc.as_mut(), &args, (&explained.name, &explained.settings));
     let events = read_events(&args, &mut problems);
     let at = args
         .required("at")
@@ -79,7 +93,7 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
         .as_deref()
         .map(|text| (explained.name.as_str(), text));
     let out = report(ladder, live, plc.as_ref(), (&name, il), &changes);
-    print!("{out}");
+    print!("{out}{wired}");
     Ok(())
 }
 
