@@ -97,7 +97,14 @@ impl<M: Plc> Planted<M> {
         let info = plant.info();
         let entries = match wiring {
             Some(w) => w.to_vec(),
-            None => wiring::default_wiring(info, &machine).0,
+            // A default terminal the program does not have (the soft
+            // PLC knows only the addresses its program uses) is left
+            // unconnected.
+            None => {
+                let mut entries = wiring::default_wiring(info, &machine).0;
+                entries.retain(|e| machine.device(&e.device).is_ok());
+                entries
+            }
         };
         let wires = wiring::check(info, &machine, &entries)?;
         let n = info.signals.len();

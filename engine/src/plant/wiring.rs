@@ -198,7 +198,14 @@ fn check_one(
                 })?
         }
         (Direction::Out, _) => {
-            if !terminals.by_name && machine.check_input(device, InputValue::Int(0)).is_ok() {
+            let inputs = terminals
+                .inputs
+                .iter()
+                .chain(terminals.analog.iter().map(|(n, _)| n));
+            if inputs
+                .into_iter()
+                .any(|n| machine.device(n).ok() == Some(device))
+            {
                 return Err(format!(
                     "{full} is an actuator the PLC drives, and {} is an input",
                     e.device

@@ -1,1 +1,123 @@
+//! The plants' examples: the book's conveyor on MINASEC-U (an exercise
+//! with its task in English and Japanese), the same ladder on IO86A and
+//! the soft PLC, and the tank's level control on IO86A and the soft PLC.
 
+use engine::ladder::decompile::decompile_text;
+use engine::ladder::Project;
+use engine::MachineId;
+
+use super::common::{hashigo, text, Temp};
+
+const PROGRAMS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/programs");
+
+fn program(path: &str) -> String {
+    format!("{PROGRAMS}/{path}")
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = hashigo(args, "");
+    (
+        out.status.code().unwrap_or(-1),
+        text(&out.stdout),
+        text(&out.stderr),
+    )
+}
+
+#[test]
+fn each_reference_ladder_passes_its_tests_with_its_plant() {
+    for (path, plant) in [
+        ("minasec-u/conveyor.json", "conveyor"),
+        ("io86a/tank.json", "tank"),
+        ("soft-plc/tank.json", "tank"),
+    ] {
+        let (code, out, err) = run(&["test", "--program", &program(path), "--plant", plant]);
+        assert_eq!((code, err.as_str()), (0, ""), "{path}: {out}");
+        assert!(out.ends_with("3 passed, 0 failed\n"), "{path}: {out}");
+    }
+}
+
+#[test]
+fn the_conveyor_exercise_has_its_task_in_both_languages_and_fails_a_belt_started_at_once() {
+    let json = std::fs::read_to_string(program("minasec-u/conveyor.json")).unwrap();
+    let mut project = Project::from_json(&json).unwrap();
+    let task = &project.exercise.as_ref().expect("an exercise").task;
+    assert!(task.en.contains("one second later") && task.ja.contains("1秒後"));
+    project.ladder = decompile_text(MachineId::MinasecU, "LD X00\nOR Y00\nST Y00\n", 10).unwrap();
+    let tmp = Temp::new("plant-exercise");
+    let wrong = tmp.file("wrong.json", &project.to_json());
+    let (code, out, _) = run(&["test", "--program", &wrong, "--plant", "conveyor"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("fail waits one second before starting: conveyor.motor = 0 at 1000ms: conveyor.motor was 1"), "{out}");
+    assert!(out.contains("fail delivers parts for a minute: conveyor.alarms = 0 at 60000ms: conveyor.alarms was 1"), "{out}");
+}
+
+#[test]
+fn the_reference_conveyor_delivers_as_many_parts_on_each_machine() {
+    let delivered = |machine: &str, settings: &[&str]| {
+        let path = program(&format!("{machine}/conveyor.il"));
+        let args = [
+            &[
+                "run",
+                "--machine",
+                machine,
+                "--program",
+                &path,
+                "--plant",
+                "conveyor",
+            ][..],
+            settings,
+            &[
+                "--until",
+                "60s",
+                "--watch",
+                "conveyor.delivered,conveyor.alarms",
+            ],
+        ]
+        .concat();
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 0, "{machine}: {err}");
+        let last = out.lines().last().unwrap_or_default().to_string();
+        let fields: Vec<i64> = last.split(',').map(|f| f.parse().unwrap()).collect();
+        assert_eq!(fields[2], 0, "{machine}: no alarm");
+        fields[1]
+    };
+    let minasec = delivered("minasec-u", &["--set", "T1=1s"]);
+    assert!(minasec >= 8, "{minasec}");
+    for (machine, n) in [
+        ("io86a", delivered("io86a", &[])),
+        ("soft-plc", delivered("soft-plc", &[])),
+    ] {
+        assert!(
+            (n - minasec).abs() <= 1,
+            "{machine} delivered {n}, MINASEC-U {minasec}"
+        );
+    }
+}
+
+#[test]
+fn why_names_the_plant_signal_behind_an_input() {
+    let (code, out, err) = run(&[
+        "why",
+        "--machine",
+        "minasec-u",
+        "--program",
+        &program("minasec-u/conveyor.il"),
+        "--set",
+        "T1=1s",
+        "--plant",
+        "conveyor",
+        "--at",
+        "2s",
+        "--device",
+        "Y00",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("plant: X00 is conveyor.infeed (the PLC reads it)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("plant: Y00 drives conveyor.motor (the PLC drives it)"),
+        "{out}"
+    );
+}
