@@ -63,9 +63,9 @@ static QUANTITIES: [QuantityInfo; 3] = [
     },
     QuantityInfo {
         name: "on_belt",
-        description: "parts on the belt now",
+        description: "parts on the belt now (at most length / part + 1)",
         unit: "parts",
-        range: (0, 1000),
+        range: (0, 100_000 / 10 + 1),
     },
 ];
 
