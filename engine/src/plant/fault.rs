@@ -1,7 +1,7 @@
 //! Faults (`--fault`): a signal stuck at 0 or 1, or an actuator dead,
 //! each from a given time, so a teacher can hand out a faulty machine.
 
-use super::{Direction, Kind, PlantInfo};
+use super::{Direction, Kind, PlantError, PlantInfo};
 use crate::time::SimTime;
 
 /// What is wrong with a signal.
@@ -28,47 +28,32 @@ pub struct Fault {
 impl Fault {
     /// Parses `SIGNAL stuck 0|1 [from TIME]` or `SIGNAL dead [from TIME]`
     /// for the plant `plant`.
-    pub fn parse(text: &str, plant: &PlantInfo) -> Result<Fault, String> {
+    pub fn parse(text: &str, plant: &PlantInfo) -> Result<Fault, PlantError> {
         let words: Vec<&str> = text.split_whitespace().collect();
-        let usage = "expected SIGNAL stuck 0|1 [from TIME] or SIGNAL dead [from TIME]";
         let Some((&name, rest)) = words.split_first() else {
-            return Err(usage.to_string());
+            return Err(PlantError::FaultUsage);
         };
-        let name = name
-            .strip_prefix(plant.name)
-            .and_then(|n| n.strip_prefix('.'))
-            .unwrap_or(name);
-        let signal = plant.signal(name).ok_or_else(|| {
-            format!(
-                "{} has no signal {} (its signals: {})",
-                plant.name,
-                crate::shown(name),
-                plant.signal_names()
-            )
-        })?;
+        let signal = plant.signal_named(name)?;
         let info = &plant.signals[signal];
         let (kind, rest) = match rest {
             ["stuck", "0", rest @ ..] => (FaultKind::Stuck(false), rest),
             ["stuck", "1", rest @ ..] => (FaultKind::Stuck(true), rest),
             ["dead", rest @ ..] => (FaultKind::Dead, rest),
-            _ => return Err(usage.to_string()),
+            _ => return Err(PlantError::FaultUsage),
         };
         let from = match rest {
             [] => SimTime::ZERO,
-            ["from", time] => SimTime::parse(time).map_err(|e| format!("from {time}: {e}"))?,
-            _ => return Err(usage.to_string()),
+            ["from", time] => {
+                SimTime::parse(time).map_err(|e| PlantError::FaultTime(time.to_string(), e))?
+            }
+            _ => return Err(PlantError::FaultUsage),
         };
+        let full = format!("{}.{}", plant.name, info.name);
         if info.kind == Kind::Analog {
-            return Err(format!(
-                "{}.{} is analog: only bit signals take faults",
-                plant.name, info.name
-            ));
+            return Err(PlantError::AnalogFault(full));
         }
         if kind == FaultKind::Dead && info.direction == Direction::In {
-            return Err(format!(
-                "{}.{} is a sensor: dead is for actuators (a sensor that reads nothing is stuck 0)",
-                plant.name, info.name
-            ));
+            return Err(PlantError::DeadSensor(full));
         }
         Ok(Fault { signal, kind, from })
     }
@@ -107,9 +92,9 @@ mod tests {
         let f = Fault::parse("conveyor.infeed stuck 0", &INFO).unwrap();
         assert_eq!((f.signal, f.from), (0, SimTime::ZERO));
         assert!(Fault::parse("motor dead", &INFO).is_ok());
-        let e = Fault::parse("infeed dead", &INFO).unwrap_err();
+        let e = Fault::parse("infeed dead", &INFO).unwrap_err().to_string();
         assert!(e.contains("sensor"), "{e}");
-        let e = Fault::parse("belt stuck 1", &INFO).unwrap_err();
+        let e = Fault::parse("belt stuck 1", &INFO).unwrap_err().to_string();
         assert!(
             e.contains("\"belt\"") && e.contains("infeed, outfeed, motor"),
             "{e}"
@@ -119,9 +104,14 @@ mod tests {
         assert!(Fault::parse("motor stuck 1 from soon", &INFO).is_err());
         assert!(Fault::parse("", &INFO).is_err());
         let tank = &crate::plant::tank::INFO;
-        assert!(Fault::parse("level stuck 1", tank)
-            .unwrap_err()
-            .contains("analog"));
+        let e = Fault::parse("level stuck 1", tank).unwrap_err();
+        assert_eq!(e, PlantError::AnalogFault("tank.level".into()));
+        assert_eq!(
+            Fault::parse("motor stuck 1 from soon", &INFO)
+                .unwrap_err()
+                .to_string(),
+            "from \"soon\": ".to_string() + &SimTime::parse("soon").unwrap_err().to_string()
+        );
     }
 
     #[test]

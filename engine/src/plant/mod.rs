@@ -10,6 +10,7 @@
 pub mod any;
 mod boxed;
 pub mod conveyor;
+pub mod error;
 pub mod fault;
 mod planted;
 mod rng;
@@ -17,6 +18,7 @@ pub mod tank;
 pub mod wiring;
 
 pub use any::AnyPlant;
+pub use error::PlantError;
 pub use fault::{Fault, FaultKind};
 pub use planted::{Planted, PlantedError};
 pub use wiring::{Wire, WireEntry};
@@ -112,6 +114,20 @@ impl PlantInfo {
         self.signals.iter().position(|s| s.name == name)
     }
 
+    /// The signal called `name` (or `PLANT.name`), by index, or the error
+    /// naming the plant's signals.
+    pub fn signal_named(&self, name: &str) -> Result<usize, PlantError> {
+        let name = name
+            .strip_prefix(self.name)
+            .and_then(|n| n.strip_prefix('.'))
+            .unwrap_or(name);
+        self.signal(name).ok_or_else(|| PlantError::UnknownSignal {
+            plant: self.name,
+            name: name.to_string(),
+            known: self.signal_names(),
+        })
+    }
+
     /// The signals' names, for messages.
     pub fn signal_names(&self) -> String {
         let names: Vec<_> = self.signals.iter().map(|s| s.name).collect();
@@ -172,7 +188,7 @@ pub trait Plant {
 
 /// Parses a parameter's value: a whole number, or for an `ms` parameter
 /// a time (`1.5s`, `250ms`); checked against its range.
-pub fn parse_param(info: &ParamInfo, text: &str) -> Result<i64, String> {
+pub fn parse_param(info: &ParamInfo, text: &str) -> Result<i64, PlantError> {
     let text = text.trim();
     let value = if info.unit == "ms" {
         SimTime::parse(text)
@@ -182,13 +198,18 @@ pub fn parse_param(info: &ParamInfo, text: &str) -> Result<i64, String> {
         text.parse::<i64>().ok()
     };
     let range = format!("{}..{} {}", info.min, info.max, info.unit);
+    let range = range.trim_end().to_string();
     match value {
         Some(v) if (info.min..=info.max).contains(&v) => Ok(v),
-        Some(v) => Err(format!("{} = {v} is out of range ({range})", info.key)),
-        None => Err(format!(
-            "{} takes a whole number ({range}), not {}",
-            info.key,
-            crate::shown(text)
-        )),
+        Some(value) => Err(PlantError::OutOfRange {
+            key: info.key,
+            value,
+            range,
+        }),
+        None => Err(PlantError::NotANumber {
+            key: info.key,
+            text: text.to_string(),
+            range,
+        }),
     }
 }

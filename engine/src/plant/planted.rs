@@ -40,7 +40,7 @@ pub enum PlantedError {
         name: String,
     },
     /// A parameter refused.
-    Param(String),
+    Param(super::PlantError),
 }
 
 impl std::fmt::Display for PlantedError {
@@ -58,7 +58,7 @@ impl std::fmt::Display for PlantedError {
                 "the plant {plant} has no signal or quantity {} (hashigo plants lists them)",
                 shown(name)
             ),
-            PlantedError::Param(e) => f.write_str(e),
+            PlantedError::Param(e) => e.fmt(f),
         }
     }
 }
@@ -321,22 +321,21 @@ impl<M: Plc> Planted<M> {
     /// together must still make sense, or nothing changes.
     fn set_param(&mut self, key: &str, value: &str) -> Result<(), PlcError> {
         let info = self.plant.info();
-        let refuse = |e: String| PlcError::from(SettingError::own(PlantedError::Param(e)));
+        let refuse = |e| PlcError::from(SettingError::own(PlantedError::Param(e)));
         let Some(index) = info.params.iter().position(|p| p.key == key) else {
             let keys: Vec<_> = info.params.iter().map(|p| p.key).collect();
-            return Err(refuse(format!(
-                "{} has no parameter {} (its parameters: {})",
-                info.name,
-                shown(key),
-                keys.join(", ")
-            )));
+            return Err(refuse(super::PlantError::UnknownParam {
+                plant: info.name,
+                key: key.to_string(),
+                known: keys.join(", "),
+            }));
         };
         let v = super::parse_param(&info.params[index], value).map_err(refuse)?;
         let old = self.plant.params()[index];
         self.plant.set_param(index, v);
         if let Err(e) = self.plant.check() {
             self.plant.set_param(index, old);
-            return Err(refuse(e));
+            return Err(refuse(super::PlantError::Together(e)));
         }
         // The start level (and the schedule's seed) act at once.
         self.sense(self.machine.now());

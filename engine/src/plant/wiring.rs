@@ -147,19 +147,7 @@ fn check_one(
     terminals: &Terminals,
     e: &WireEntry,
 ) -> Result<Wire, String> {
-    let name = e
-        .signal
-        .strip_prefix(plant.name)
-        .and_then(|n| n.strip_prefix('.'))
-        .unwrap_or(&e.signal);
-    let signal = plant.signal(name).ok_or_else(|| {
-        format!(
-            "{} has no signal {} (its signals: {})",
-            plant.name,
-            shown(name),
-            plant.signal_names()
-        )
-    })?;
+    let signal = plant.signal_named(&e.signal).map_err(|e| e.to_string())?;
     let info = &plant.signals[signal];
     let full = format!("{}.{}", plant.name, info.name);
     let device = machine

@@ -92,10 +92,7 @@ fn run_with(
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
     let plant = PlantOptions::read(args, &mut problems);
-    let machine_args = match &plant {
-        Some(p) => p.machine_args(args),
-        None => args.without("set", |_| false),
-    };
+    let machine_args = PlantOptions::machine_args_of(plant.as_ref(), args);
     problems.extend(apply_settings(plc.as_mut(), &machine_args, defaults));
     let events = read_events(args, &mut problems);
     if args.optional("program") == Ok(Some("-")) && args.optional("input") == Ok(Some("-")) {

@@ -70,6 +70,27 @@ impl PlantOptions {
         })
     }
 
+    /// [`PlantOptions::read`] when nothing else is checked: its problems
+    /// as the error.
+    pub fn read_alone(args: &Args) -> Result<Option<PlantOptions>, Problems> {
+        let mut problems = Vec::new();
+        let plant = PlantOptions::read(args, &mut problems);
+        if problems.is_empty() {
+            Ok(plant)
+        } else {
+            Err(problems)
+        }
+    }
+
+    /// The flags with `plant`'s parameters taken out of `--set` (all
+    /// of `--set` without a plant).
+    pub fn machine_args_of(plant: Option<&PlantOptions>, args: &Args) -> Args {
+        match plant {
+            Some(p) => p.machine_args(args),
+            None => args.without("set", |_| false),
+        }
+    }
+
     /// The plant's name.
     pub fn name(&self) -> &'static str {
         self.plant.info().name

@@ -9,7 +9,9 @@ use engine::machines::new_plc;
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};
+use crate::plant::PlantOptions;
 use crate::source::{apply_settings, compile_project, machine_flag, one, read_project, Problems};
+use engine::plc::Plc;
 
 /// Runs the command; the exit code as cli.md gives it.
 pub fn main(rest: &[String]) -> ExitCode {
@@ -34,11 +36,7 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
         ],
     )
     .map_err(one)?;
-    let mut problems = Vec::new();
-    let plant = crate::plant::PlantOptions::read(&args, &mut problems);
-    if !problems.is_empty() {
-        return Err(problems);
-    }
+    let plant = PlantOptions::read_alone(&args)?;
     let flag = machine_flag(&args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
@@ -63,26 +61,13 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
     let mut results = Vec::new();
     let mut problems = Vec::new();
     for (case, ready) in project.tests.iter().zip(&prepared) {
-        let mut plc = new_plc(machine);
-        let machine_args = match &plant {
-            Some(p) => p.machine_args(&args),
-            None => args.without("set", |_| false),
-        };
-        let mut setup = apply_settings(plc.as_mut(), &machine_args, (&source.name, &settings));
-        if let Err(e) = plc.load_text(&text) {
-            setup.push(format!("{} (compiled): {e}", source.name));
-        }
-        if !setup.is_empty() {
-            return Err(setup);
-        }
-        if let Some(p) = &plant {
-            let mut planted = p.attach(plc)?;
-            let setup = p.set_params(&mut planted, &args);
-            if !setup.is_empty() {
-                return Err(setup);
-            }
-            plc = Box::new(planted);
-        }
+        let mut plc = fresh(
+            machine,
+            &text,
+            &args,
+            plant.as_ref(),
+            (&source.name, &settings),
+        )?;
         match ready
             .as_ref()
             .map_err(Clone::clone)
@@ -122,6 +107,34 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
     }
     println!("{} passed, {failed} failed", results.len() - failed);
     Ok(failed == 0)
+}
+
+/// A fresh machine for one case: the settings, the program, the plant.
+fn fresh(
+    machine: engine::MachineId,
+    text: &str,
+    args: &Args,
+    plant: Option<&PlantOptions>,
+    (name, settings): (&str, &crate::source::Settings),
+) -> Result<Box<dyn Plc>, Problems> {
+    let mut plc = new_plc(machine);
+    let machine_args = PlantOptions::machine_args_of(plant, args);
+    let mut setup = apply_settings(plc.as_mut(), &machine_args, (name, settings));
+    if let Err(e) = plc.load_text(text) {
+        setup.push(format!("{name} (compiled): {e}"));
+    }
+    if !setup.is_empty() {
+        return Err(setup);
+    }
+    let Some(p) = plant else {
+        return Ok(plc);
+    };
+    let mut planted = p.attach(plc)?;
+    let setup = p.set_params(&mut planted, args);
+    if !setup.is_empty() {
+        return Err(setup);
+    }
+    Ok(Box::new(planted))
 }
 
 /// A JUnit XML report: one suite, one test case per case.

@@ -20,6 +20,7 @@ use engine::{MachineId, SimTime};
 use crate::args::Args;
 use crate::commands::read_events;
 use crate::input::Format;
+use crate::plant::PlantOptions;
 use crate::source::{self, apply_settings, ladder_project, load, located, one, Problems};
 
 /// A watched device: its handle, its value, and when it last changed
@@ -42,11 +43,8 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     let mut plc = explained.plc;
     let (ladder, live) = (&explained.ladder, &explained.live);
     let mut problems = Vec::new();
-    let plant = crate::plant::PlantOptions::read(&args, &mut problems);
-    let machine_args = match &plant {
-        Some(p) => p.machine_args(&args),
-        None => args.without("set", |_| false),
-    };
+    let plant = PlantOptions::read(&args, &mut problems);
+    let machine_args = PlantOptions::machine_args_of(plant.as_ref(), &args);
     let defaults = (explained.name.as_str(), explained.settings.as_slice());
     problems.extend(apply_settings(plc.as_mut(), &machine_args, defaults));
     let mut wired = String::new();
