@@ -10,8 +10,8 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use engine::formats::plcopen::import;
+use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::Project;
 
 #[path = "../tests/hostile/gen.rs"]
 #[allow(dead_code)] // the bench uses some of the test generators

@@ -11,6 +11,8 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 use super::element::Element;
+use crate::error::shown;
+use crate::limits::MAX_MAP_ENTRIES;
 
 /// A cell's place in a rung, 0-based (errors print it 1-based).
 #[derive(
@@ -112,7 +114,7 @@ pub struct Ladder {
     #[serde(
         default,
         skip_serializing_if = "BTreeMap::is_empty",
-        deserialize_with = "super::project::each_name_once"
+        deserialize_with = "each_name_once"
     )]
     pub device_comments: BTreeMap<String, String>,
     /// The soft PLC's declared variables (issue #30); none for the
@@ -221,3 +223,45 @@ impl fmt::Display for LadderError {
 }
 
 impl std::error::Error for LadderError {}
+
+/// Reads a table of names (settings, device comments) refusing a name
+/// given twice: JSON readers disagree on which copy wins, so a project
+/// that says two things must not silently mean one of them. The error
+/// lands at the second copy's line.
+pub(crate) fn each_name_once<'de, D>(d: D) -> Result<BTreeMap<String, String>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+{
+    struct Names;
+    impl<'de> serde::de::Visitor<'de> for Names {
+        type Value = BTreeMap<String, String>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("an object of names and texts")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(
+            self,
+            mut map: A,
+        ) -> Result<Self::Value, A::Error> {
+            let mut names = BTreeMap::new();
+            // Checked as each name is read, so that the error lands at
+            // the second copy's line.
+            while let Some(name) = map.next_key::<String>()? {
+                if names.len() == MAX_MAP_ENTRIES {
+                    return Err(serde::de::Error::custom(format!(
+                        "more than {MAX_MAP_ENTRIES} names in one table (docs/limits.md)"
+                    )));
+                }
+                if names.contains_key(&name) {
+                    return Err(serde::de::Error::custom(format!(
+                        "{} is given twice",
+                        shown(&name)
+                    )));
+                }
+                let text = map.next_value::<String>()?;
+                names.insert(name, text);
+            }
+            Ok(names)
+        }
+    }
+    d.deserialize_map(Names)
+}

@@ -1,6 +1,6 @@
 //! Ladder diagrams: the model the editor draws, its logic, the reference
-//! evaluator, the compilers to each machine and back, and the file formats
-//! (docs/ladder.md).
+//! evaluator, and the compilers to each machine and back (docs/ladder.md);
+//! the files that hold a ladder are `crate::formats`.
 //!
 //! - [`element`], [`grid`]: cells, rungs, links, device comments;
 //! - [`block`]: the soft PLC's functions and blocks as boxes in a rung;
@@ -8,7 +8,6 @@
 //! - [`target`]: what each machine offers (palette and validation);
 //! - [`eval`]: power flow by the book, per element;
 //! - [`compile`], [`decompile`]: to and from each machine's mnemonic text;
-//! - [`project`], [`share`], [`plcopen`]: JSON projects, share URLs, PLCopen XML;
 //! - [`live`]: each element's power in the last scan, from the machine's trace.
 
 pub mod block;
@@ -21,8 +20,6 @@ pub mod grid;
 mod lack;
 pub mod live;
 pub mod net;
-pub mod project;
-pub mod share;
 pub mod target;
 pub mod variables;
 pub mod why;
@@ -31,7 +28,6 @@ pub use block::BlockCall;
 pub use element::{CoilKind, ContactKind, Element, TimerKind};
 pub use grid::{Ladder, LadderError, LadderErrorKind, Link, Pos, Rung};
 pub use net::{analyse, layout, try_layout, Net, NetError, RungLogic};
-pub use project::{Project, ProjectError};
 pub use variables::Variable;
 
 use crate::MachineId;

@@ -6,7 +6,7 @@
 mod common;
 
 use engine::cases::{run_case, CaseError, Expectation, Outcome, TestCase};
-use engine::ladder::{share, Project};
+use engine::formats::{share, Project};
 use engine::machines::new_plc;
 use engine::plc::Plc;
 use engine::MachineId;

@@ -1,10 +1,11 @@
 //! The device entry (F5–F8), the whole-ladder replace, and the listing's
 //! steps by rung.
 
+use engine::formats::Project;
 use engine::ladder::compile::{compile, compile_listing, Options};
 use engine::ladder::edit::{parse_entry, Edit, EditError, Editor, EntryError, EntryKind};
 use engine::ladder::TimerKind;
-use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Project, Rung};
+use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Rung};
 use engine::MachineId;
 
 use super::{nc, no};

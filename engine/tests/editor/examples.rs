@@ -79,7 +79,7 @@ fn outputs_move_to_the_output_column_and_the_logic_stays() {
             "/programs/minasec-u/seed-test.json"
         ))
         .expect("seed");
-        engine::ladder::Project::from_json(&text)
+        engine::formats::Project::from_json(&text)
             .expect("reads")
             .ladder
     };

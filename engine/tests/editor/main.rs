@@ -8,9 +8,10 @@ mod entry;
 mod examples;
 mod properties;
 
+use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::edit::{Clip, Cursor, Edit, EditError, Editor};
-use engine::ladder::{ContactKind, Element, Ladder, Link, Pos, Project};
+use engine::ladder::{ContactKind, Element, Ladder, Link, Pos};
 use engine::MachineId;
 
 pub fn no(d: &str) -> Element {

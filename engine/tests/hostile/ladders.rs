@@ -1,8 +1,9 @@
 //! Ladders from JSON projects: links, long rungs, many rungs, wiring
 //! messages, and the per-machine checks that once let wrong programs by.
 
+use engine::formats::{Project, ProjectError};
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::{LadderErrorKind, Project, ProjectError};
+use engine::ladder::LadderErrorKind;
 use engine::MachineId;
 
 use crate::gen::{coil, contact, project, rung, series_rung};

@@ -1,6 +1,6 @@
 //! Messages: what they say about times, versions and what they echo.
 
-use engine::ladder::{Project, ProjectError};
+use engine::formats::{Project, ProjectError};
 use engine::{shown, SimTime};
 
 const SEED: &str = include_str!("../../programs/minasec-u/seed-test.json");

@@ -5,8 +5,9 @@
 
 use engine::avr::asm::assemble;
 use engine::formats::plcopen::import;
+use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::{Element, Ladder, Link, Project, Rung};
+use engine::ladder::{Element, Ladder, Link, Rung};
 use engine::limits::MAX_NESTING;
 use engine::time::MAX_SIM_TIME;
 use engine::{MachineId, SimTime};

@@ -2,8 +2,8 @@
 //! tests, `why`, PLCopen element order, map files. Each test failed on the
 //! main branch before the fix it names.
 
-use engine::ladder::share;
-use engine::ladder::Project;
+use engine::formats::share;
+use engine::formats::Project;
 
 use crate::common::{hashigo, text, Temp};
 

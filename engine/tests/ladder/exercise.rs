@@ -2,9 +2,9 @@
 //! file and in `4.` links; older files (`"exercise": true`) and `2.`
 //! links made before them still open.
 
-use engine::ladder::project::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
-use engine::ladder::share::{decode, encode, ShareError};
-use engine::ladder::{Project, ProjectError};
+use engine::formats::project::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
+use engine::formats::share::{decode, encode, ShareError};
+use engine::formats::{Project, ProjectError};
 use engine::MachineId;
 
 /// A `2.` exercise link made by the `hashigo share` of commit 4f69933

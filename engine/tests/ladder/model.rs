@@ -1,12 +1,12 @@
 //! The grid model: wiring checks located at their cells, capability
 //! tables, the reference evaluator's per-element power, the project file.
 
+use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::eval::Reference;
 use engine::ladder::target::capabilities;
 use engine::ladder::{
-    analyse, CoilKind, ContactKind, Element, Ladder, LadderError, Link, Pos, Project, Rung,
-    TimerKind,
+    analyse, CoilKind, ContactKind, Element, Ladder, LadderError, Link, Pos, Rung, TimerKind,
 };
 use engine::MachineId;
 

@@ -2,9 +2,10 @@
 //! and imported programs running on the machines.
 
 use engine::formats::plcopen::{export, import};
+use engine::formats::Project;
 use engine::iec::literal::parse_time_literal;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::{Ladder, Project};
+use engine::ladder::Ladder;
 use engine::{avr, MachineId, SimTime};
 use proptest::prelude::*;
 

@@ -2,8 +2,9 @@
 //! arbitrary grids into the analysis, every compiler and the exporter.
 
 use engine::formats::plcopen::{export, import};
+use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Link, Pos, Project, Rung, TimerKind};
+use engine::ladder::{CoilKind, ContactKind, Element, Ladder, Link, Pos, Rung, TimerKind};
 use engine::MachineId;
 use proptest::prelude::*;
 

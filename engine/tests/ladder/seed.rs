@@ -1,9 +1,9 @@
 //! The seed's MINASEC-U test program drawn as a ladder compiles to a
 //! program that behaves like the seed's own listing.
 
+use engine::formats::Project;
 use engine::headless::{run_csv as run, Schedule};
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::Project;
 use engine::machines::MinasecPlc;
 use engine::minasec::Program;
 use engine::plc::{Command, Plc};

@@ -2,8 +2,9 @@
 
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use base64::Engine as _;
-use engine::ladder::share::{decode, encode, ShareError};
-use engine::ladder::{CoilKind, Element, Ladder, Pos, Project, Rung, TimerKind};
+use engine::formats::share::{decode, encode, ShareError};
+use engine::formats::Project;
+use engine::ladder::{CoilKind, Element, Ladder, Pos, Rung, TimerKind};
 use engine::MachineId;
 use proptest::prelude::*;
 

@@ -5,8 +5,9 @@
 //! with one scan period over the same inputs, the outputs compared.
 
 use engine::events::InputValue;
+use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::{Element, Ladder, Project};
+use engine::ladder::{Element, Ladder};
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};

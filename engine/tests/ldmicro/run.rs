@@ -450,7 +450,7 @@ fn a_shift_register_shifts_at_each_rise_and_a_table_looks_up() {
 
 #[test]
 fn a_share_link_and_a_project_keep_an_ldmicro_ladder() {
-    use engine::ladder::{share, Project};
+    use engine::formats::{share, Project};
     let text = program(
         "RUNG 1\n  CONTACTS Xa 0\n  TON Tw 30000\n  CTC Cc 4 0 \\\n  COIL Yq 0 0 1 0\nEND\nRUNG 2\n  OSR\n  MOVE n 0x10\nEND\n\
          RUNG 3\n  FORMATTED_STRING n 17 105 116 39 115 44 32 40 42 36 41 32 92 51 92 114 92 110\n  \

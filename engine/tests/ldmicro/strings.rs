@@ -180,8 +180,8 @@ fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
 
 #[test]
 fn a_string_ladder_travels_in_a_share_link_and_a_project_file() {
-    use engine::ladder::project::Project;
-    use engine::ladder::share;
+    use engine::formats::project::Project;
+    use engine::formats::share;
     let ladder = to_ladder(&parse(&program(COUNT)).expect("reads")).expect("lowers");
     let project = Project::new(engine::MachineId::SoftPlc, ladder);
     let link = share::encode(&project).expect("encodes");

@@ -4,8 +4,8 @@
 //! opened file is read by the engine, which names the line of a problem,
 //! and becomes the ladder (one undo away) only when it reads.
 
+use engine::formats::Project;
 use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
-use engine::ladder::Project;
 use engine::MachineId;
 use files_worker::{Reply, Request};
 use leptos::prelude::*;

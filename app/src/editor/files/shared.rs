@@ -6,8 +6,8 @@
 //! it), and opening a link never overwrites the autosaved ladder: saving
 //! waits for "Keep", which first sets the old ladder aside.
 
-use engine::ladder::share;
-use engine::ladder::Project;
+use engine::formats::share;
+use engine::formats::Project;
 use leptos::prelude::*;
 
 use crate::editor::{LadderCtx, Ladders};

@@ -2,7 +2,7 @@
 //! machine, written on every edit and read back on reload. A saved value
 //! that does not read is kept aside and reported, never dropped.
 
-use engine::ladder::Project;
+use engine::formats::Project;
 use engine::MachineId;
 use leptos::prelude::*;
 

@@ -4,7 +4,7 @@
 //! task in both languages, tests hidden or shown).
 
 use engine::cases::TestCase;
-use engine::ladder::project::{Exercise, TestsShown};
+use engine::formats::project::{Exercise, TestsShown};
 use leptos::prelude::*;
 
 use crate::editor::state::{CaseResult, LadderCtx};
@@ -173,7 +173,7 @@ pub fn StudentView(ctx: LadderCtx, check: Callback<()>) -> impl IntoView {
     let sent = RwSignal::new(None::<String>);
     let send = move |_| {
         let project = crate::editor::shared::project_of(ctx);
-        match engine::ladder::share::encode(&project) {
+        match engine::formats::share::encode(&project) {
             Ok(fragment) => sent.set(Some(crate::editor::shared::answer_url(&fragment))),
             Err(e) => ctx.panes.message.set(Some(e.to_string())),
         }

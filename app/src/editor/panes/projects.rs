@@ -4,7 +4,8 @@
 //! own default ladder (`hashigo.ladder.<machine>.v1`) or the project open
 //! in it, autosaved on every edit (docs/editor.md, "Projects").
 
-use engine::ladder::{Ladder, Project};
+use engine::formats::Project;
+use engine::ladder::Ladder;
 use engine::MachineId;
 use leptos::prelude::*;
 use serde::{Deserialize, Serialize};

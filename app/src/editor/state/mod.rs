@@ -209,7 +209,7 @@ pub struct Cases {
     pub tests: RwSignal<Vec<TestCase>>,
     /// The tests are an exercise (its task, whether they are hidden): a
     /// link opens with it shown (docs/tests.md, "Exercises").
-    pub exercise: RwSignal<Option<engine::ladder::project::Exercise>>,
+    pub exercise: RwSignal<Option<engine::formats::project::Exercise>>,
     /// The author's view of an exercise: its task and tests editable.
     /// Off, an exercise shows the student's view.
     pub authoring: RwSignal<bool>,

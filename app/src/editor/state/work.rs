@@ -3,7 +3,7 @@
 //! "Two tabs").
 
 use super::*;
-use engine::ladder::project::Exercise;
+use engine::formats::project::Exercise;
 
 /// What showing a shared project set aside: its settings (applied when
 /// kept), whether it replaced the ladder, and the cases it replaced.
@@ -36,7 +36,7 @@ impl LadderCtx {
     }
 
     /// Shows a shared project's ladder, unsaved, until it is kept or left.
-    pub fn show_shared(&self, project: engine::ladder::Project) {
+    pub fn show_shared(&self, project: engine::formats::Project) {
         if self.work.shared.get_untracked() {
             self.leave_shared();
         }
@@ -137,7 +137,7 @@ impl LadderCtx {
 
     /// Opens `ladder` as project `project` here (the ladder before is one
     /// undo away; it stays saved where it was).
-    pub fn open_project(&self, id: Option<u64>, project: engine::ladder::Project) {
+    pub fn open_project(&self, id: Option<u64>, project: engine::formats::Project) {
         self.set_project(id);
         self.show_cases(project.tests, project.exercise);
         if self.ladder() != project.ladder {
@@ -195,7 +195,7 @@ impl LadderCtx {
 
     /// Shows a project saved by another tab, as an edit not saved again.
     pub(super) fn show_saved(&self, json: &str) {
-        let Ok(project) = engine::ladder::Project::from_json(json) else {
+        let Ok(project) = engine::formats::Project::from_json(json) else {
             return;
         };
         if project.machine != self.machine {
@@ -250,8 +250,8 @@ impl LadderCtx {
     }
 
     /// The project as it stands: the ladder, its cases, the exercise.
-    pub fn project_now(&self) -> engine::ladder::Project {
-        let mut project = engine::ladder::Project::new(self.machine, self.ladder());
+    pub fn project_now(&self) -> engine::formats::Project {
+        let mut project = engine::formats::Project::new(self.machine, self.ladder());
         project.tests = self.cases.tests.get_untracked();
         project.exercise = self.cases.exercise.get_untracked();
         project

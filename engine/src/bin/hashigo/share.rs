@@ -1,7 +1,7 @@
 //! `hashigo share` and `hashigo unshare` (cli.md): a project as the page's
 //! link fragment and back, so scripts can make and check links.
 
-use engine::ladder::share;
+use engine::formats::share;
 
 use crate::args::Args;
 use crate::input::{Format, SourceFile};

@@ -3,9 +3,9 @@
 
 use engine::formats::plcopen;
 use engine::formats::plcopen::VarMap;
+use engine::formats::Project;
 use engine::ladder::compile::{compile as compile_ladder, Options};
 use engine::ladder::decompile::decompile_text;
-use engine::ladder::Project;
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc, PlcError};
 use engine::{MachineId, SimTime};

@@ -472,13 +472,13 @@ mod tests {
         assert!(xml.contains("_c0_R"), "the network's BOOL is in the export");
         let il = plcopen::soft::to_il(&xml, None).expect("the soft PLC reads it back");
         assert!(il.text.contains("_c0_R"));
-        let project = crate::ladder::Project::new(MachineId::SoftPlc, ladder.clone());
-        let link = crate::ladder::share::encode(&project).expect("encodes");
+        let project = crate::formats::Project::new(MachineId::SoftPlc, ladder.clone());
+        let link = crate::formats::share::encode(&project).expect("encodes");
         assert!(link.starts_with("3."), "{link}");
-        let back = crate::ladder::share::decode(&link).expect("decodes");
+        let back = crate::formats::share::decode(&link).expect("decodes");
         assert_eq!(back.ladder, ladder, "the box input comes back");
         let json = project.to_json();
-        let again = crate::ladder::Project::from_json(&json).expect("JSON reads back");
+        let again = crate::formats::Project::from_json(&json).expect("JSON reads back");
         assert_eq!(again.ladder, ladder);
     }
 

@@ -293,7 +293,7 @@ fn string_project(expect: &[&str]) -> String {
         RUNG\n  STRING msg n 7 110 61 37 48 52 100 59\nEND\n";
     let file = engine::formats::ldmicro::parse(text).expect("reads");
     let ladder = engine::formats::ldmicro::to_ladder(&file).expect("a ladder");
-    let mut project = engine::ladder::Project::new(engine::MachineId::SoftPlc, ladder);
+    let mut project = engine::formats::Project::new(engine::MachineId::SoftPlc, ladder);
     project.tests.push(engine::cases::TestCase {
         name: "count".into(),
         events: String::new(),

@@ -4,8 +4,8 @@
 //! which older Hashigos open.
 
 use super::{put_str, Reader, ShareError};
-use crate::ladder::project::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
-use crate::ladder::Project;
+use crate::formats::project::Project;
+use crate::formats::project::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
 
 /// Whether the project needs a version 4 link.
 pub(super) fn needed(project: &Project) -> bool {

@@ -5,11 +5,9 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use super::grid::Ladder;
 use crate::error::{shown, Located};
-use crate::limits::{
-    MAX_EXPECTATIONS, MAX_INPUT_BYTES, MAX_MAP_ENTRIES, MAX_RUNGS, MAX_TEST_CASES,
-};
+use crate::ladder::grid::Ladder;
+use crate::limits::{MAX_EXPECTATIONS, MAX_INPUT_BYTES, MAX_RUNGS, MAX_TEST_CASES};
 use crate::MachineId;
 
 mod exercise;
@@ -36,7 +34,7 @@ pub struct Project {
     #[serde(
         default,
         skip_serializing_if = "BTreeMap::is_empty",
-        deserialize_with = "each_name_once"
+        deserialize_with = "crate::ladder::grid::each_name_once"
     )]
     pub settings: BTreeMap<String, String>,
     /// The ladder.
@@ -215,48 +213,6 @@ impl std::fmt::Display for ProjectError {
 }
 
 impl std::error::Error for ProjectError {}
-
-/// Reads a table of names (settings, device comments) refusing a name
-/// given twice: JSON readers disagree on which copy wins, so a project
-/// that says two things must not silently mean one of them. The error
-/// lands at the second copy's line.
-pub(crate) fn each_name_once<'de, D>(d: D) -> Result<BTreeMap<String, String>, D::Error>
-where
-    D: serde::Deserializer<'de>,
-{
-    struct Names;
-    impl<'de> serde::de::Visitor<'de> for Names {
-        type Value = BTreeMap<String, String>;
-        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-            f.write_str("an object of names and texts")
-        }
-        fn visit_map<A: serde::de::MapAccess<'de>>(
-            self,
-            mut map: A,
-        ) -> Result<Self::Value, A::Error> {
-            let mut names = BTreeMap::new();
-            // Checked as each name is read, so that the error lands at
-            // the second copy's line.
-            while let Some(name) = map.next_key::<String>()? {
-                if names.len() == MAX_MAP_ENTRIES {
-                    return Err(serde::de::Error::custom(format!(
-                        "more than {MAX_MAP_ENTRIES} names in one table (docs/limits.md)"
-                    )));
-                }
-                if names.contains_key(&name) {
-                    return Err(serde::de::Error::custom(format!(
-                        "{} is given twice",
-                        shown(&name)
-                    )));
-                }
-                let text = map.next_value::<String>()?;
-                names.insert(name, text);
-            }
-            Ok(names)
-        }
-    }
-    d.deserialize_map(Names)
-}
 
 /// The 1-based line where `"key"` first appears in `text` (1 if nowhere):
 /// the place to point at for an error about that field.

@@ -16,9 +16,9 @@ use base64::Engine as _;
 use miniz_oxide::deflate::compress_to_vec;
 use miniz_oxide::inflate::decompress_to_vec_with_limit;
 
-use super::element::{CoilKind, ContactKind, Element, TimerKind};
-use super::grid::{Ladder, Link, Rung};
-use super::project::Project;
+use crate::formats::project::Project;
+use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
+use crate::ladder::grid::{Ladder, Link, Rung};
 use crate::limits::{MAX_EXPECTATIONS, MAX_MAP_ENTRIES, MAX_RUNGS, MAX_TEST_CASES};
 use crate::MachineId;
 
@@ -233,7 +233,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if with_tests {
         project.exercise = match r.byte()? {
             0 => None,
-            1 => Some(super::project::Exercise::default()),
+            1 => Some(crate::formats::project::Exercise::default()),
             _ => return Err(r.bad("the exercise flag is neither 0 nor 1")),
         };
         project.tests = r.cases()?;
