@@ -3,7 +3,7 @@
 //! the soft PLC, and the tank's level control on IO86A and the soft PLC.
 
 use engine::ladder::decompile::decompile_text;
-use engine::ladder::Project;
+use engine::formats::Project;
 use engine::MachineId;
 
 use super::common::{hashigo, text, Temp};
