@@ -11,15 +11,18 @@ use crate::limits::{MAX_EXPECTATIONS, MAX_INPUT_BYTES, MAX_RUNGS, MAX_TEST_CASES
 use crate::MachineId;
 
 mod exercise;
+mod plant;
 pub use exercise::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
+pub use plant::{PlantSetup, MAX_PLANT_LINES};
 
 /// The `format` field every project file carries.
 pub const FORMAT: &str = "hashigo-project";
 /// The newest project version this build reads. A project is written as
 /// version 1 unless it has the soft PLC's boxes or variables (version 2,
 /// issue #30) or an exercise's task, hidden tests or hints (version 3,
-/// issue #49), so that older Hashigos open every project they can.
-pub const VERSION: u32 = 3;
+/// issue #49) or a plant (version 4, issue #50), so that older Hashigos
+/// open every project they can.
+pub const VERSION: u32 = 4;
 
 /// A saved project.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -52,6 +55,10 @@ pub struct Project {
         serialize_with = "exercise::write"
     )]
     pub exercise: Option<Exercise>,
+    /// The plant the ladder controls, with its wiring, parameters and
+    /// faults (docs/plants.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plant: Option<PlantSetup>,
 }
 
 impl Project {
@@ -65,6 +72,7 @@ impl Project {
             ladder,
             tests: Vec::new(),
             exercise: None,
+            plant: None,
         }
     }
 
@@ -110,6 +118,13 @@ impl Project {
                 ProjectError::TooManyExpectations(shown(&case.name), case.expect.len()),
             );
         }
+        if let Some(plant) = project
+            .plant
+            .as_ref()
+            .filter(|p| p.lines() > MAX_PLANT_LINES)
+        {
+            return at("plant", ProjectError::TooManyPlantLines(plant.lines()));
+        }
         Ok(project)
     }
 
@@ -133,10 +148,13 @@ impl Project {
         serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
     }
 
-    /// The oldest version that holds the project: 3 with an exercise's
+    /// The oldest version that holds the project: 4 with a plant; 3 with an exercise's
     /// task, hidden tests or a case's hint; 2 with the soft PLC's boxes or
     /// variables; else 1.
     pub fn needed_version(&self) -> u32 {
+        if self.plant.is_some() {
+            return 4;
+        }
         if self.exercise.as_ref().is_some_and(|e| !e.is_plain())
             || self.tests.iter().any(|c| !c.hint.is_empty())
         {
@@ -175,6 +193,9 @@ pub enum ProjectError {
     TooManyCases(usize),
     /// A case (its name, shown) with more than [`MAX_EXPECTATIONS`].
     TooManyExpectations(String, usize),
+    /// A plant with more wiring lines, parameters or faults than
+    /// [`MAX_PLANT_LINES`] (how many).
+    TooManyPlantLines(usize),
 }
 
 impl std::fmt::Display for ProjectError {
@@ -207,6 +228,10 @@ impl std::fmt::Display for ProjectError {
             ProjectError::TooManyExpectations(name, n) => write!(
                 f,
                 "test {name} has {n} expectations, more than the {MAX_EXPECTATIONS} a case may have (docs/limits.md)"
+            ),
+            ProjectError::TooManyPlantLines(n) => write!(
+                f,
+                "the plant has {n} wiring lines, parameters or faults, more than the {MAX_PLANT_LINES} a project may have (docs/limits.md)"
             ),
         }
     }

@@ -2,8 +2,8 @@
 //! with its task in English and Japanese), the same ladder on IO86A and
 //! the soft PLC, and the tank's level control on IO86A and the soft PLC.
 
-use engine::ladder::decompile::decompile_text;
 use engine::formats::Project;
+use engine::ladder::decompile::decompile_text;
 use engine::MachineId;
 
 use super::common::{hashigo, text, Temp};

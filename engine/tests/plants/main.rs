@@ -7,5 +7,6 @@ mod common;
 
 mod cli;
 mod examples;
+mod project;
 mod properties;
 mod record;

@@ -31,11 +31,13 @@ pub fn run(rest: &[String]) -> Result<(), Problems> {
     match load(&args) {
         Ok(source) => {
             let defaults = (source.name.as_str(), source.settings.as_slice());
-            run_with(&args, source.plc, defaults, Vec::new())
+            let plant = source.project.as_ref().and_then(|p| p.plant.as_ref());
+            let held = plant.map(|p| (source.name.as_str(), p));
+            run_with(&args, source.plc, (defaults, held), Vec::new())
         }
         // Still check everything else, on the same machine with no program.
         Err(problems) => match flag {
-            Some(id) => run_with(&args, new_plc(id), ("", &[]), problems),
+            Some(id) => run_with(&args, new_plc(id), (("", &[]), None), problems),
             None => Err(problems),
         },
     }
@@ -68,12 +70,15 @@ pub fn read_events(
     }
 }
 
+/// A project's settings with its file's name, applied before `--set`.
+type Defaults<'a> = (&'a str, &'a [(String, String, usize)]);
+
 /// Checks the rest of `hashigo run`'s options against `plc` and runs it;
 /// `problems` already found are reported with any new ones.
 fn run_with(
     args: &Args,
     mut plc: Box<dyn Plc>,
-    defaults: (&str, &[(String, String, usize)]),
+    (defaults, held): (Defaults, crate::plant::Held),
     mut problems: Problems,
 ) -> Result<(), Problems> {
     let until = args
@@ -91,7 +96,7 @@ fn run_with(
     if watch.is_empty() || watch.iter().any(String::is_empty) {
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
-    let plant = PlantOptions::read(args, &mut problems);
+    let plant = PlantOptions::read(args, held, &mut problems);
     let machine_args = PlantOptions::machine_args_of(plant.as_ref(), args);
     problems.extend(apply_settings(plc.as_mut(), &machine_args, defaults));
     let events = read_events(args, &mut problems);

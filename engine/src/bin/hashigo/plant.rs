@@ -2,6 +2,7 @@
 //! `--plant`, `--wiring`, `--fault`, `--set NAME.KEY=VALUE`; and
 //! `hashigo plants`.
 
+use engine::formats::project::PlantSetup;
 use engine::machines::new_plc;
 use engine::plant::wiring::{self, WireEntry};
 use engine::plant::{any::ALL, AnyPlant, Fault, Plant, PlantInfo, Planted, ALARMS};
@@ -12,19 +13,35 @@ use crate::args::Args;
 use crate::input::SourceFile;
 use crate::source::{one, Problems};
 
-/// A plant as the options ask for it, checked against the plant.
+/// A project file's plant, with the file's name, when it holds one.
+pub type Held<'a> = Option<(&'a str, &'a PlantSetup)>;
+
+/// Where a wiring came from, for its errors.
+#[derive(Clone)]
+enum From {
+    /// A `--wiring` file: `FILE:LINE:`.
+    File(String),
+    /// A project's plant: `FILE: plant wiring entry N:`.
+    Project(String),
+}
+
+/// A plant as the options (or the project file) ask for it, checked
+/// against the plant.
 #[derive(Clone)]
 pub struct PlantOptions {
     plant: AnyPlant,
-    wiring: Option<(String, Vec<WireEntry>)>,
+    wiring: Option<(From, Vec<WireEntry>)>,
     faults: Vec<Fault>,
+    /// The project's parameters: `NAME.KEY`, value, where from.
+    params: Vec<(String, String, String)>,
 }
 
 impl PlantOptions {
-    /// `--plant`, `--wiring` and `--fault`; `None` without `--plant`
-    /// (then `--wiring` and `--fault` are problems). Problems go to
-    /// `problems`.
-    pub fn read(args: &Args, problems: &mut Problems) -> Option<PlantOptions> {
+    /// `--plant`, `--wiring` and `--fault`, over the plant the project
+    /// holds (`held`): `--plant` replaces it, `--wiring` replaces its
+    /// wiring, `--fault` adds to its faults. `None` without either (then
+    /// `--wiring` and `--fault` are problems). Problems go to `problems`.
+    pub fn read(args: &Args, held: Held, problems: &mut Problems) -> Option<PlantOptions> {
         let name = match args.optional("plant") {
             Ok(n) => n,
             Err(e) => {
@@ -32,49 +49,88 @@ impl PlantOptions {
                 return None;
             }
         };
-        let Some(name) = name else {
-            for flag in ["wiring", "fault"] {
-                if args.all(flag).next().is_some() {
-                    problems.push(format!("--{flag} needs --plant NAME"));
+        let (name, held, origin) = match (name, held) {
+            (Some(name), _) => (name, None, "--plant".to_string()),
+            (None, Some((file, setup))) => (
+                setup.name.as_str(),
+                Some((file, setup)),
+                format!("{file}: plant"),
+            ),
+            (None, None) => {
+                for flag in ["wiring", "fault"] {
+                    if args.all(flag).next().is_some() {
+                        problems.push(format!("--{flag} needs --plant NAME"));
+                    }
                 }
+                return None;
             }
-            return None;
         };
         let Some(plant) = AnyPlant::new(name.trim()) else {
             problems.push(format!(
-                "--plant: no plant {} (plants: {})",
+                "{origin}: no plant {} (plants: {})",
                 engine::shown(name),
                 AnyPlant::names()
             ));
             return None;
         };
-        let mut faults = Vec::new();
+        let mut options = PlantOptions {
+            plant,
+            wiring: None,
+            faults: Vec::new(),
+            params: Vec::new(),
+        };
+        if let Some((file, setup)) = held {
+            options.hold(file, setup, problems);
+        }
         for text in args.all("fault") {
-            match Fault::parse(text, plant.info()) {
-                Ok(f) => faults.push(f),
+            match Fault::parse(text, options.plant.info()) {
+                Ok(f) => options.faults.push(f),
                 Err(e) => problems.push(format!("--fault {}: {e}", engine::shown(text))),
             }
         }
-        let wiring = match args.optional("wiring") {
-            Ok(Some(path)) => read_wiring(path, problems),
-            Ok(None) => None,
-            Err(e) => {
-                problems.push(e);
-                None
+        match args.optional("wiring") {
+            Ok(Some(path)) => options.wiring = read_wiring(path, problems),
+            Ok(None) => {}
+            Err(e) => problems.push(e),
+        }
+        Some(options)
+    }
+
+    /// Takes the project's faults, parameters and wiring.
+    fn hold(&mut self, file: &str, setup: &PlantSetup, problems: &mut Problems) {
+        let name = self.name();
+        for text in &setup.faults {
+            match Fault::parse(text, self.plant.info()) {
+                Ok(f) => self.faults.push(f),
+                Err(e) => {
+                    problems.push(format!("{file}: plant fault {}: {e}", engine::shown(text)))
+                }
             }
-        };
-        Some(PlantOptions {
-            plant,
-            wiring,
-            faults,
-        })
+        }
+        for (key, value) in &setup.params {
+            let place = format!("{file}: plant parameter {}", engine::shown(key));
+            self.params
+                .push((format!("{name}.{key}"), value.clone(), place));
+        }
+        if let Some(pairs) = &setup.wiring {
+            let entries = pairs
+                .iter()
+                .enumerate()
+                .map(|(i, [signal, device])| WireEntry {
+                    signal: signal.clone(),
+                    device: device.clone(),
+                    line: i + 1,
+                })
+                .collect();
+            self.wiring = Some((From::Project(file.to_string()), entries));
+        }
     }
 
     /// [`PlantOptions::read`] when nothing else is checked: its problems
     /// as the error.
-    pub fn read_alone(args: &Args) -> Result<Option<PlantOptions>, Problems> {
+    pub fn read_alone(args: &Args, held: Held) -> Result<Option<PlantOptions>, Problems> {
         let mut problems = Vec::new();
-        let plant = PlantOptions::read(args, &mut problems);
+        let plant = PlantOptions::read(args, held, &mut problems);
         if problems.is_empty() {
             Ok(plant)
         } else {
@@ -104,7 +160,10 @@ impl PlantOptions {
             errors
                 .iter()
                 .map(|e| match &self.wiring {
-                    Some((file, _)) => format!("{file}:{}: {}", e.line, e.error),
+                    Some((From::File(file), _)) => format!("{file}:{}: {}", e.line, e.error),
+                    Some((From::Project(file), _)) => {
+                        format!("{file}: plant wiring entry {}: {}", e.line, e.error)
+                    }
                     None => format!(
                         "--plant {} (its default wiring on {}): {}",
                         self.name(),
@@ -129,6 +188,15 @@ impl PlantOptions {
     /// Sets this plant's `--set` parameters on `plc`.
     pub fn set_params(&self, plc: &mut dyn Plc, args: &Args) -> Problems {
         let mut problems = Vec::new();
+        for (name, value, place) in &self.params {
+            let command = Command::Setting {
+                name: name.clone(),
+                value: value.clone(),
+            };
+            if let Err(e) = plc.apply(command) {
+                problems.push(format!("{place}: {e}"));
+            }
+        }
         for setting in args.all("set").filter(|s| self.is_param(s)) {
             let Some((name, value)) = setting.split_once('=') else {
                 continue;
@@ -151,7 +219,7 @@ fn is_param_of(plant: &str, setting: &str) -> bool {
     name.strip_prefix(plant).is_some_and(|k| k.starts_with('.'))
 }
 
-fn read_wiring(path: &str, problems: &mut Problems) -> Option<(String, Vec<WireEntry>)> {
+fn read_wiring(path: &str, problems: &mut Problems) -> Option<(From, Vec<WireEntry>)> {
     let source = match SourceFile::read(path) {
         Ok(s) => s,
         Err(e) => {
@@ -160,7 +228,7 @@ fn read_wiring(path: &str, problems: &mut Problems) -> Option<(String, Vec<WireE
         }
     };
     match wiring::parse(&source.text) {
-        Ok(entries) => Some((source.name, entries)),
+        Ok(entries) => Some((From::File(source.name), entries)),
         Err(errors) => {
             problems.extend(
                 errors

@@ -27,16 +27,14 @@ pub fn main(rest: &[String]) -> ExitCode {
     }
 }
 
+/// The flags `hashigo test` takes: `--set` and the plant's besides cli.md's.
+const FLAGS: [&str; 8] = [
+    "machine", "program", "format", "junit", "plant", "wiring", "fault", "set",
+];
+
 /// Whether every case passed; `Err` on bad input.
 fn test(rest: &[String]) -> Result<bool, Problems> {
-    let args = Args::parse(
-        rest,
-        &[
-            "machine", "program", "format", "junit", "plant", "wiring", "fault", "set",
-        ],
-    )
-    .map_err(one)?;
-    let plant = PlantOptions::read_alone(&args)?;
+    let args = Args::parse(rest, &FLAGS).map_err(one)?;
     let flag = machine_flag(&args)?;
     let path = args.required("program").map_err(one)?;
     let format = Format::choose(args.optional("format").map_err(one)?, path).map_err(one)?;
@@ -53,6 +51,8 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
             source.name
         )));
     }
+    let held = project.plant.as_ref().map(|p| (source.name.as_str(), p));
+    let plant = PlantOptions::read_alone(&args, held)?;
     let text = compile_project(&args, &source, &project, &settings)?;
     // Every case is read and the work of all of them counted before any
     // runs (docs/limits.md).

@@ -43,7 +43,11 @@ pub fn why(rest: &[String]) -> Result<(), Problems> {
     let mut plc = explained.plc;
     let (ladder, live) = (&explained.ladder, &explained.live);
     let mut problems = Vec::new();
-    let plant = PlantOptions::read(&args, &mut problems);
+    let held = explained
+        .plant
+        .as_ref()
+        .map(|p| (explained.name.as_str(), p));
+    let plant = PlantOptions::read(&args, held, &mut problems);
     let machine_args = PlantOptions::machine_args_of(plant.as_ref(), &args);
     let defaults = (explained.name.as_str(), explained.settings.as_slice());
     problems.extend(apply_settings(plc.as_mut(), &machine_args, defaults));
@@ -107,6 +111,8 @@ struct Explained {
     /// The soft PLC's Instruction List as written, when that is the
     /// program: a variable its ladder does not show is found at its line.
     il: Option<String>,
+    /// The plant the project holds, if any.
+    plant: Option<engine::formats::project::PlantSetup>,
 }
 
 impl Explained {
@@ -118,6 +124,7 @@ impl Explained {
         } else {
             10
         };
+        let plant = source.project.as_ref().and_then(|p| p.plant.clone());
         let project = match source.project.take() {
             Some(project) => project,
             None => ladder_project(args, &source.file, source.format, Some(machine), scan_ms)?,
@@ -147,6 +154,7 @@ impl Explained {
         let il = (source.format == Format::Il && machine == MachineId::SoftPlc)
             .then(|| source.file.text.clone());
         Ok(Explained {
+            plant,
             il,
             ladder,
             live,

@@ -6,6 +6,7 @@
 //! [`Project`] or an error naming the byte where the data went wrong.
 
 mod exercise;
+mod plant;
 mod words;
 
 use std::collections::BTreeMap;
@@ -32,6 +33,9 @@ pub const PREFIX_WORDS: &str = "3.";
 /// The prefix of a link with an exercise's task, hidden tests or a
 /// case's hint (issue #49): a version 3 link followed by them.
 pub const PREFIX_EXERCISE: &str = "4.";
+/// The prefix of a link with a plant (issue #50): a version 4 link
+/// followed by it.
+pub const PREFIX_PLANT: &str = "5.";
 /// The most bytes a share text may inflate to.
 const MAX_INFLATED: usize = 1 << 20;
 /// Grid limits a decoded rung must respect (the editor's own).
@@ -112,7 +116,7 @@ impl std::error::Error for ShareError {}
 /// a project with test cases, or marked as an exercise, is `2.`: the same
 /// binary followed by the exercise flag and the cases, so that links
 /// without tests stay what they were; `3.` adds the soft PLC's variables
-/// and `4.` an exercise's task, hidden flag and hints). A rung larger than a link holds is
+/// `4.` an exercise's task, hidden flag and hints, `5.` a plant). A rung larger than a link holds is
 /// refused, so that no link is made that would not open.
 pub fn encode(project: &Project) -> Result<String, ShareError> {
     for (i, rung) in project.ladder.rungs.iter().enumerate() {
@@ -149,7 +153,8 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
             put_len(&mut w, l.col);
         }
     }
-    let with_exercise = exercise::needed(project);
+    let with_plant = project.plant.is_some();
+    let with_exercise = with_plant || exercise::needed(project);
     let words = with_exercise || words::needed(&project.ladder);
     let prefix = if project.tests.is_empty() && project.exercise.is_none() && !words {
         PREFIX
@@ -167,7 +172,12 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
         if with_exercise {
             words::put_variables(&mut w, &project.ladder.variables);
             exercise::put(&mut w, project);
-            PREFIX_EXERCISE
+            if with_plant {
+                plant::put(&mut w, project);
+                PREFIX_PLANT
+            } else {
+                PREFIX_EXERCISE
+            }
         } else if words {
             words::put_variables(&mut w, &project.ladder.variables);
             PREFIX_WORDS
@@ -187,7 +197,8 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if text.len() > crate::limits::MAX_SHARE_FRAGMENT {
         return Err(ShareError::TooLong(text.len()));
     }
-    let with_exercise = text.starts_with(PREFIX_EXERCISE);
+    let with_plant = text.starts_with(PREFIX_PLANT);
+    let with_exercise = with_plant || text.starts_with(PREFIX_EXERCISE);
     let with_words = with_exercise || text.starts_with(PREFIX_WORDS);
     let with_tests = with_words || text.starts_with(PREFIX_TESTS);
     let Some(body) = text
@@ -195,6 +206,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
         .or_else(|| text.strip_prefix(PREFIX_TESTS))
         .or_else(|| text.strip_prefix(PREFIX_WORDS))
         .or_else(|| text.strip_prefix(PREFIX_EXERCISE))
+        .or_else(|| text.strip_prefix(PREFIX_PLANT))
     else {
         let version = text
             .split('.')
@@ -243,6 +255,9 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     }
     if with_exercise {
         r.exercise(&mut project)?;
+    }
+    if with_plant {
+        project.plant = Some(r.plant()?);
     }
     if r.at != data.len() {
         return Err(r.bad("data after the last rung"));
