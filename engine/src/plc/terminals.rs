@@ -28,7 +28,7 @@ pub struct Terminals {
 }
 
 impl Terminals {
-    /// Terminals named `prefix` + `0..n` by `name(i)`.
+    /// `n` terminals, the `i`-th named `name(i)` (`X00`, `X01`, …).
     pub fn numbered(n: usize, name: impl Fn(usize) -> String) -> Vec<String> {
         (0..n).map(name).collect()
     }

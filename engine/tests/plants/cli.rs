@@ -315,3 +315,47 @@ fn the_tank_level_reaches_io86a_as_volts_once_its_input_is_analog() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(out.lines().last(), Some("1000,48,48,1,1,1"), "{out}");
 }
+
+#[test]
+fn the_avr_plc_wires_by_name_and_the_arduino_sketch_by_its_pins() {
+    let tmp = Temp::new("plant-avr");
+    // The infeed starts and holds the motor at once: the alarm and the
+    // running belt show the wiring works.
+    let asm = ".equ INFEED_R=4\n.equ INFEED_B=Bit0\n.equ MOTOR_R=5\n.equ MOTOR_B=Bit0\n.csg\n.db Load_A,INFEED_R,INFEED_B,0\n.db Or_A,MOTOR_R,MOTOR_B,0\n.db Coil_A,MOTOR_R,MOTOR_B,0\n.db End_PLC,0,0,0\n";
+    let program = tmp.file("at-once.asm", asm);
+    let (code, out, err) = run(&[
+        "run",
+        "--machine",
+        "avr-plc",
+        "--program",
+        &program,
+        "--plant",
+        "conveyor",
+        "--until",
+        "3s",
+        "--watch",
+        "INFEED,MOTOR,conveyor.motor,conveyor.alarms",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.lines().last(), Some("3000,0,1,1,1"), "{out}");
+    assert!(err.starts_with("alarm: "), "{err}");
+    let sketch = tmp.file(
+        "at-once.txt",
+        "0 LD X000\n1 OR Y000\n2 OUT Y000\n3 JUMP 0\n",
+    );
+    let (code, out, err) = run(&[
+        "run",
+        "--machine",
+        "arduino-plc",
+        "--program",
+        &sketch,
+        "--plant",
+        "conveyor",
+        "--until",
+        "3s",
+        "--watch",
+        "X000,Y000,conveyor.alarms",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.lines().last(), Some("3000,0,1,1"), "{out}");
+}
