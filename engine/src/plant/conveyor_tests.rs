@@ -107,3 +107,21 @@ fn a_part_longer_than_half_the_belt_is_refused() {
     c.set_param(PART, 150);
     assert!(c.check().is_ok());
 }
+
+#[test]
+fn a_part_still_on_the_landing_place_is_seen_so_the_belt_is_never_left_waiting() {
+    let mut c = Conveyor::new();
+    run(&mut c, 0, 2001, false);
+    // 150 mm on: the tail (at 150 mm) is past the landing place's middle
+    // but still on it, so no new part can land there.
+    run(&mut c, 2001, 600, true);
+    assert_eq!(c.parts.front().map(|lead| lead - c.um(PART)), Some(150_000));
+    assert_eq!(c.sensor(INFEED), 1, "a part on the landing place is seen");
+    let placed = c.quantity(0);
+    run(&mut c, 2601, 60_000, false);
+    assert_eq!(c.quantity(0), placed, "and no part lands on it");
+    // 50 mm more and the place is clear: the eye goes off, a part lands.
+    run(&mut c, 62_601, 200, true);
+    run(&mut c, 62_801, 10, false);
+    assert_eq!(c.quantity(0), placed + 1);
+}
