@@ -251,7 +251,11 @@ fn plant_options_refuse_what_they_cannot_take() {
         "--watch",
         "Y00",
     ];
-    let cases: [(&[&str], &str); 6] = [
+    let cases: [(&[&str], &str); 7] = [
+        (
+            &["--plant", "conveyor", "--wiring", "-", "--input", "-"],
+            "--wiring - and another option both read standard input",
+        ),
         (
             &["--plant", "silo"],
             "--plant: no plant \"silo\" (plants: conveyor, tank)",

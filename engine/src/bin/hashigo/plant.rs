@@ -88,7 +88,14 @@ impl PlantOptions {
                 Err(e) => problems.push(format!("--fault {}: {e}", engine::shown(text))),
             }
         }
+        let stdin_taken = ["program", "input"]
+            .iter()
+            .any(|f| args.optional(f) == Ok(Some("-")));
         match args.optional("wiring") {
+            Ok(Some("-")) if stdin_taken => problems.push(
+                "--wiring - and another option both read standard input: give the wiring as a file"
+                    .to_string(),
+            ),
             Ok(Some(path)) => options.wiring = read_wiring(path, problems),
             Ok(None) => {}
             Err(e) => problems.push(e),
