@@ -271,3 +271,22 @@ fn import_errors_in_the_page_advise_the_program_picker_not_the_command_line() {
         assert!(page.contains("Program"), "{page}");
     }
 }
+
+#[test]
+fn an_import_reads_the_file_once_whatever_it_is_asked() {
+    // Issue #48: the worker keeps the document it read and asks it for the
+    // programs, the proposed devices, the import and the machine that runs
+    // it instead, so each request parses the XML once.
+    let cases = [
+        (MachineId::Io86a, NAMED),       // proposed, then imported
+        (MachineId::MinasecU, TIMER),    // refused, then tried on the soft PLC
+        (MachineId::SoftPlc, TIMER),     // drawn as written
+        (MachineId::Io86a, "<project>"), // not even XML
+    ];
+    for (machine, text) in cases {
+        let before = engine::formats::plcopen::dom::parsed_count();
+        let reply = import_on(machine, text);
+        let parsed = engine::formats::plcopen::dom::parsed_count() - before;
+        assert_eq!(parsed, 1, "{machine:?}: {:?}", reply.errors);
+    }
+}

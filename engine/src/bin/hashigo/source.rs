@@ -153,8 +153,9 @@ pub fn soft_program(args: &Args, source: &SourceFile) -> Result<String, Problems
         )));
     }
     let pou = args.optional("pou").map_err(one)?;
-    let program =
-        plcopen::soft::to_il(&source.text, pou).map_err(|errors| source.located(&errors))?;
+    let program = plcopen::Document::read(&source.text)
+        .and_then(|document| document.soft_program(pou))
+        .map_err(|errors| source.located(&errors))?;
     for w in &program.warnings {
         eprintln!("warning: {}:{}: {}", source.name, w.line, w.error);
     }
@@ -249,13 +250,11 @@ pub fn read_project(
         // A bad device is the map's fault: said at the map's line.
         map.check(machine).map_err(|errors| file.located(&errors))?;
     }
-    let imported = plcopen::import_pou(
-        &source.text,
-        Some(machine),
-        map.map(|(_, m)| m),
-        xml.pou.as_deref(),
-    )
-    .map_err(|errors| source.located(&errors))?;
+    let imported = plcopen::Document::read(&source.text)
+        .and_then(|document| {
+            document.import(Some(machine), map.map(|(_, m)| m), xml.pou.as_deref())
+        })
+        .map_err(|errors| source.located(&errors))?;
     for w in &imported.warnings {
         eprintln!("warning: {}:{}: {}", source.name, w.line, w.error);
     }

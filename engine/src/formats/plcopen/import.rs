@@ -63,14 +63,24 @@ pub fn import_pou(
     map: Option<&VarMap>,
     pou: Option<&str>,
 ) -> Result<Imported, Errors> {
-    let root = project(text)?;
+    super::Document::read(text)?.import(machine, map, pou)
+}
+
+/// The project `root` (read by [`super::Document`]) as a ladder for
+/// `machine` through `map`: `pou` alone, or the programs the tasks run.
+pub(super) fn ladder_of(
+    root: &Node,
+    machine: Option<MachineId>,
+    map: Option<&VarMap>,
+    pou: Option<&str>,
+) -> Result<Imported, Errors> {
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
-    let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
-    let bodies = drawn_bodies(&root, &pous, &chosen)?;
+    let chosen = choose_pous(root, &pous, pou, &mut warnings)?;
+    let bodies = drawn_bodies(root, &pous, &chosen)?;
     let names = match machine {
-        Some(m) => declare::names(&root, m, map),
+        Some(m) => declare::names(root, m, map),
         None => Names::none(),
     };
     // Relays no variable uses: where a block's input is needed twice or
@@ -93,7 +103,7 @@ pub fn import_pou(
         })
         .collect();
     let mut ladder = Ladder {
-        variables: super::soft_vars::declared_for(machine, &root, &chosen)?,
+        variables: super::soft_vars::declared_for(machine, root, &chosen)?,
         ..Ladder::default()
     };
     let mut errors = Vec::new();
@@ -156,7 +166,6 @@ fn joined_sides(
         .collect()
 }
 
-/// The root is a PLCopen project in a namespace this reader knows.
 /// The file read as a PLCopen project (its root), or why not.
 pub(super) fn project(text: &str) -> Result<Node, Errors> {
     let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
@@ -164,6 +173,7 @@ pub(super) fn project(text: &str) -> Result<Node, Errors> {
     Ok(root)
 }
 
+/// The root is a PLCopen project in a namespace this reader knows.
 fn check_project(root: &Node) -> Result<(), Errors> {
     if root.name != "project" {
         return Err(vec![Located::new(

@@ -2,6 +2,8 @@
 //! LD bodies in and out (docs/ladder.md, "PLCopen XML").
 //!
 //! - [`dom`]: the XML read into a small tree that keeps line numbers;
+//! - [`Document`]: a file read once, then asked for its programs, a map
+//!   for a machine, its ladder or its soft PLC program;
 //! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
 //! - [`export`](mod@export): rungs to a project file both tools open.
 
@@ -10,6 +12,7 @@ mod blocks;
 mod body;
 mod compare;
 pub mod declare;
+mod document;
 pub mod dom;
 pub mod error;
 pub mod export;
@@ -32,6 +35,7 @@ mod soft_vars;
 pub(crate) mod vendor;
 
 pub use declare::VarMap;
+pub use document::Document;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
 pub use import::{drawn_body, import, import_for, import_mapped, import_pou, pou_named, Imported};

@@ -17,7 +17,7 @@ mod infer;
 mod order;
 
 use super::dom::Node;
-use super::import::{choose_pous, drawn_body, language, project};
+use super::import::{choose_pous, drawn_body, language};
 use super::ImportError;
 use crate::error::Located;
 use crate::softplc::Program;
@@ -45,13 +45,22 @@ fn soft(errors: Vec<Located<SoftError>>) -> Errors {
 /// The programs the tasks run (or `pou` alone) as one soft PLC program
 /// that loads; every problem at its line of the file.
 pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
-    let root = project(text)?;
+    super::Document::read(text)?.soft_program(pou)
+}
+
+/// [`to_il`] of the project `root` read from `text` (by
+/// [`super::Document`]): IL bodies are copied from the text as written.
+pub(in crate::formats::plcopen) fn il_of(
+    root: &Node,
+    text: &str,
+    pou: Option<&str>,
+) -> Result<SoftProgram, Errors> {
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
-    let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
+    let chosen = choose_pous(root, &pous, pou, &mut warnings)?;
     let own = own_types(&pous);
-    let mut declarations = declare::declarations(&root, &chosen, &own).map_err(soft)?;
+    let mut declarations = declare::declarations(root, &chosen, &own).map_err(soft)?;
     let blocks = used_blocks(&pous, &declarations, &own).map_err(soft)?;
     // A block the programs use is not skipped, whatever the tasks say.
     warnings.retain(|w| !blocks.iter().any(|(p, _)| p.line == w.line));
@@ -105,7 +114,7 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
         warnings.append(&mut o.warnings);
     }
     warnings.append(&mut out.warnings);
-    let text = Text::of(&sections, &declarations, &out, &root);
+    let text = Text::of(&sections, &declarations, &out, root);
     text.loads(root.line)?;
     Ok(SoftProgram {
         text: text.text,
