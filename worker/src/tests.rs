@@ -1,5 +1,5 @@
 use super::*;
-use engine::formats::plcopen::import_for;
+use engine::formats::plcopen::Document;
 use engine::ladder::edit::{align_outputs, COLUMNS};
 
 const NAMED: &str = include_str!("../../engine/tests/ladder/fixtures/openplc-named.xml");
@@ -71,7 +71,10 @@ fn an_exported_ladder_imports_back_as_drawn() {
     }) else {
         panic!("the imported ladder exports");
     };
-    let again = import_for(&xml, Some(MachineId::Io86a)).expect("its own export imports");
+    let again = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .map(|i| i.ladder)
+        .expect("its own export imports");
     // The drawing comes back; the variables' names stay with the file.
     assert_eq!(align_outputs(&again, COLUMNS - 1).rungs, ladder.rungs);
 }

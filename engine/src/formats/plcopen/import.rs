@@ -19,20 +19,6 @@ use crate::MachineId;
 
 use super::error::Errors;
 
-/// Reads the LD bodies of a PLCopen TC6 project (v2.01 or v1.0) into a
-/// ladder. Variables name the machine's devices (`X00`); the compiler
-/// checks them. Anything Hashigo cannot represent is an error at its line,
-/// never dropped.
-pub fn import(text: &str) -> Result<Ladder, Errors> {
-    import_for(text, None)
-}
-
-/// [`import`], also checking every element and device against `machine`
-/// so that an unknown device is reported at its line of the XML.
-pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Errors> {
-    import_mapped(text, machine, None).map(|i| i.ladder)
-}
-
 /// A file imported for a machine, with what is worth saying about it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Imported {
@@ -44,30 +30,12 @@ pub struct Imported {
     pub warnings: Vec<Located<String>>,
 }
 
-/// [`import_for`] reading the file's declarations (issue #18): located
-/// variables map by rule, others through `map` ([`VarMap`]); the
-/// variables' names become device comments.
-pub fn import_mapped(
-    text: &str,
-    machine: Option<MachineId>,
-    map: Option<&VarMap>,
-) -> Result<Imported, Errors> {
-    import_pou(text, machine, map, None)
-}
-
-/// [`import_mapped`] of one POU (`--pou NAME`), or, with `None`, of the
-/// programs the configuration's tasks run (`choose_pous`).
-pub fn import_pou(
-    text: &str,
-    machine: Option<MachineId>,
-    map: Option<&VarMap>,
-    pou: Option<&str>,
-) -> Result<Imported, Errors> {
-    super::Document::read(text)?.import(machine, map, pou)
-}
-
 /// The project `root` (read by [`super::Document`]) as a ladder for
-/// `machine` through `map`: `pou` alone, or the programs the tasks run.
+/// `machine` (`None`: unchecked), its variables through `map` (issue #18:
+/// located variables map by rule, the names become device comments):
+/// `pou` alone, or the programs the configuration's tasks run
+/// (`choose_pous`). Variables name the machine's devices (`X00`); anything
+/// Hashigo cannot represent is an error at its line, never dropped.
 pub(super) fn ladder_of(
     root: &Node,
     machine: Option<MachineId>,

@@ -38,7 +38,7 @@ pub use declare::VarMap;
 pub use document::Document;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
-pub use import::{drawn_body, import, import_for, import_mapped, import_pou, pou_named, Imported};
+pub use import::{drawn_body, pou_named, Imported};
 pub use soft_boxes::BoxProblem;
 
 /// The TC6 v2.01 namespace.

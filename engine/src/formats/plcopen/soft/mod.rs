@@ -42,14 +42,10 @@ fn soft(errors: Vec<Located<SoftError>>) -> Errors {
         .collect()
 }
 
-/// The programs the tasks run (or `pou` alone) as one soft PLC program
-/// that loads; every problem at its line of the file.
-pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
-    super::Document::read(text)?.soft_program(pou)
-}
-
-/// [`to_il`] of the project `root` read from `text` (by
-/// [`super::Document`]): IL bodies are copied from the text as written.
+/// The programs the tasks run (or `pou` alone) of the project `root`
+/// read from `text` (by [`super::Document`]) as one soft PLC program that
+/// loads; every problem at its line of the file. IL bodies are copied
+/// from the text as written.
 pub(in crate::formats::plcopen) fn il_of(
     root: &Node,
     text: &str,
