@@ -10,6 +10,7 @@
 
 use engine::formats::plcopen::ImportError;
 use engine::formats::plcopen::{self, Document, VarMap};
+use engine::formats::{self, FileError, Kind};
 use engine::ladder::edit::{align_outputs, COLUMNS};
 use engine::ladder::target::ElementError;
 use engine::ladder::Ladder;
@@ -131,16 +132,21 @@ pub fn handle(request: Request) -> Reply {
 /// An LDmicro file read and drawn for the soft PLC; every problem at its
 /// line.
 fn open_ld(file: &str, text: &str) -> Result<LdOpened, Vec<String>> {
-    let at = |errors: Vec<engine::Located<engine::formats::ldmicro::LdError>>| {
+    let at = |errors: Vec<engine::Located<FileError>>| {
         errors
             .iter()
             .map(|e| format!("{file}:{}: {}", e.line, e.error))
             .collect::<Vec<_>>()
     };
-    let parsed = engine::formats::ldmicro::parse(text).map_err(at)?;
-    let ladder = engine::formats::ldmicro::to_ladder(&parsed).map_err(at)?;
+    let document = formats::Document::open(Kind::LdMicro, text).map_err(at)?;
+    let opened = document
+        .import(MachineId::SoftPlc, None, None)
+        .map_err(at)?;
+    let formats::Document::LdMicro(parsed, _) = &document else {
+        return Err(vec![format!("{file}: not an LDmicro file")]);
+    };
     Ok(LdOpened {
-        ladder: align_outputs(&ladder, COLUMNS - 1),
+        ladder: align_outputs(&opened.project.ladder, COLUMNS - 1),
         cycle_us: parsed.cycle_us,
     })
 }

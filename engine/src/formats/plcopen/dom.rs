@@ -228,6 +228,11 @@ pub fn parsed_count() -> u64 {
 /// before they are built, so every walk over the tree is shallow.
 pub fn parse(text: &str) -> Result<Node, Located<XmlError>> {
     PARSED.with(|n| n.set(n.get().saturating_add(1)));
+    tree(text)
+}
+
+/// [`parse`]'s work, uncounted.
+fn tree(text: &str) -> Result<Node, Located<XmlError>> {
     if text.len() > MAX_INPUT_BYTES {
         return Err(Located::new(1, XmlError::TooLarge(text.len())));
     }
