@@ -71,7 +71,7 @@ pub(super) fn ladder_of(
         })
         .collect();
     let mut ladder = Ladder {
-        variables: super::soft_vars::declared_for(machine, root, &chosen)?,
+        variables: super::boxes::variables::declared_for(machine, root, &chosen)?,
         ..Ladder::default()
     };
     let mut errors = Vec::new();
@@ -103,8 +103,8 @@ pub(super) fn ladder_of(
     if !errors.is_empty() {
         return Err(errors);
     }
-    super::soft_vars::settle(&mut ladder.variables, &carriers, &temps, &names);
-    super::soft_vars::drop_edge_instances(&mut ladder);
+    super::boxes::variables::settle(&mut ladder.variables, &carriers, &temps, &names);
+    super::boxes::variables::drop_edge_instances(&mut ladder);
     name_devices(&mut ladder, &names, helpers, machine, &mut warnings);
     crate::sort::by_key(&mut warnings, |w| w.line);
     Ok(Imported {

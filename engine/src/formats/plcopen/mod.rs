@@ -10,6 +10,7 @@
 mod address;
 mod blocks;
 mod body;
+mod boxes;
 mod compare;
 pub mod declare;
 mod document;
@@ -28,18 +29,14 @@ mod placing;
 mod read;
 mod rungs;
 pub mod soft;
-mod soft_boxes;
-mod soft_index;
-mod soft_rungs;
-mod soft_vars;
 pub(crate) mod vendor;
 
+pub use boxes::BoxProblem;
 pub use declare::VarMap;
 pub use document::Document;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
 pub use import::{drawn_body, pou_named, Imported};
-pub use soft_boxes::BoxProblem;
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";
