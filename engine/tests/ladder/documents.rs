@@ -6,6 +6,8 @@ use engine::formats::{Document, FileError, Kind, Project};
 use engine::ladder::Ladder;
 use engine::MachineId;
 
+use crate::common::{hashigo, text, Temp};
+
 const NAMED: &str = include_str!("fixtures/openplc-named.xml");
 const TIMER: &str = include_str!("fixtures/openplc-timer.xml");
 
@@ -87,4 +89,26 @@ fn an_ldmicro_file_runs_on_the_soft_plc_only_with_its_cycle_as_the_scan() {
         matches!(broken[0].error, FileError::LdMicro(_)),
         "{broken:?}"
     );
+}
+
+#[test]
+fn hashigo_map_reads_the_file_as_compile_does() {
+    // `hashigo map` opens the file through the same document as compile:
+    // an XML file that is no PLCopen project is refused at its line, as
+    // compile refuses it, instead of a map with nothing in it.
+    let tmp = Temp::new("documents-map");
+    let path = tmp.file(
+        "other.xml",
+        "<?xml version=\"1.0\"?>\n<recipe>\n</recipe>\n",
+    );
+    for command in ["map", "compile"] {
+        let out = hashigo(&[command, "--machine", "io86a", "--program", &path], "");
+        assert_eq!(out.status.code(), Some(2), "{command}");
+        let said = text(&out.stderr);
+        assert!(
+            said.contains("other.xml:2: not a PLCopen project: the root element is <recipe>"),
+            "{command}: {said}"
+        );
+        assert!(text(&out.stdout).is_empty(), "{command}");
+    }
 }
