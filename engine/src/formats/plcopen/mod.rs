@@ -1,11 +1,17 @@
-//! PLCopen TC6 XML, the exchange format of OpenPLC Editor and Beremiz:
-//! LD bodies in and out (docs/ladder.md, "PLCopen XML").
+//! PLCopen TC6 XML, the exchange format of OpenPLC Editor, Beremiz and
+//! CODESYS: drawn (LD, FBD) and IL bodies in, LD out (docs/ladder.md,
+//! "PLCopen XML"), in phases:
 //!
-//! - [`dom`]: the XML read into a small tree that keeps line numbers;
-//! - [`Document`]: a file read once, then asked for its programs, a map
-//!   for a machine, its ladder or its soft PLC program;
-//! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
-//! - [`export`](mod@export): rungs to a project file both tools open.
+//! - text → document: [`dom`] (the XML as a small tree that keeps line
+//!   numbers), [`Document`] (checked as a project, read once, then asked
+//!   for its programs, a map for a machine, its ladder or its soft PLC
+//!   program);
+//! - document → model: [`import`](mod@import) (power rails, contacts,
+//!   coils and blocks to rungs for a machine, lowered for the bit
+//!   machines; `boxes/` draws blocks as the soft PLC's boxes) and
+//!   [`soft`] (the soft PLC's IL, run as drawn);
+//! - model → text: [`export`](mod@export) (rungs to a project file both
+//!   tools open).
 
 mod address;
 mod blocks;

@@ -2,10 +2,12 @@
 //! lowering. Declared names stay names, located variables keep their
 //! addresses, and each drawn (LD or FBD) body of the programs the tasks
 //! run becomes Instruction List that runs its graph as drawn
-//! ([`emit`]): contacts, coils, every standard function and function
-//! block the soft PLC has, wired ORs, connectors, EN / ENO. What it does
-//! not run (SFC, ST or IL bodies, the project's own function blocks,
-//! vendor blocks) is refused at its line with the reason.
+//! (`emit.rs`): contacts, coils, every standard function and function
+//! block the soft PLC has, wired ORs, connectors, EN / ENO. IL bodies are
+//! copied as written (`il_body.rs`), and the project's own function
+//! blocks become function blocks of the program. What it does not run
+//! (SFC or ST bodies, vendor blocks) is refused at its line with the
+//! reason.
 
 mod declare;
 mod emit;
