@@ -9,7 +9,7 @@
 //! Run with `cargo bench -p engine --bench ladder_input`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use engine::formats::plcopen::import;
+use engine::formats::plcopen::Document;
 use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
 
@@ -23,12 +23,22 @@ fn inputs(c: &mut Criterion) {
 
     let rungs = gen::plcopen_rungs(5_000, "X00", "Y00");
     group.bench_function("plcopen-5000-rungs", |b| {
-        b.iter(|| import(black_box(&rungs)).expect("imports"))
+        b.iter(|| {
+            Document::read(black_box(&rungs))
+                .and_then(|document| document.import(None, None, None))
+                .map(|i| i.ladder)
+                .expect("imports")
+        })
     });
 
     let rails = gen::plcopen_rails(50_000);
     group.bench_function("plcopen-50000-rails", |b| {
-        b.iter(|| import(black_box(&rails)).expect("imports"))
+        b.iter(|| {
+            Document::read(black_box(&rails))
+                .and_then(|document| document.import(None, None, None))
+                .map(|i| i.ladder)
+                .expect("imports")
+        })
     });
 
     let series = gen::project("avr-plc", &[gen::series_rung(20_000, "R0.0", "R1.0")]);

@@ -9,7 +9,8 @@
 //! request does is plain Rust ([`handle`]), tested natively.
 
 use engine::formats::plcopen::ImportError;
-use engine::formats::plcopen::{self, declare, dom, drawn_body, import_pou, VarMap};
+use engine::formats::plcopen::{self, Document, VarMap};
+use engine::formats::{self, FileError, Kind};
 use engine::ladder::edit::{align_outputs, COLUMNS};
 use engine::ladder::target::ElementError;
 use engine::ladder::Ladder;
@@ -131,21 +132,28 @@ pub fn handle(request: Request) -> Reply {
 /// An LDmicro file read and drawn for the soft PLC; every problem at its
 /// line.
 fn open_ld(file: &str, text: &str) -> Result<LdOpened, Vec<String>> {
-    let at = |errors: Vec<engine::Located<engine::formats::ldmicro::LdError>>| {
+    let at = |errors: Vec<engine::Located<FileError>>| {
         errors
             .iter()
             .map(|e| format!("{file}:{}: {}", e.line, e.error))
             .collect::<Vec<_>>()
     };
-    let parsed = engine::formats::ldmicro::parse(text).map_err(at)?;
-    let ladder = engine::formats::ldmicro::to_ladder(&parsed).map_err(at)?;
+    let document = formats::Document::open(Kind::LdMicro, text).map_err(at)?;
+    let opened = document
+        .import(MachineId::SoftPlc, None, None)
+        .map_err(at)?;
+    let formats::Document::LdMicro(parsed, _) = &document else {
+        return Err(vec![format!("{file}: not an LDmicro file")]);
+    };
     Ok(LdOpened {
-        ladder: align_outputs(&ladder, COLUMNS - 1),
+        ladder: align_outputs(&opened.project.ladder, COLUMNS - 1),
         cycle_us: parsed.cycle_us,
     })
 }
 
-/// One import attempt (see [`Request::Import`]).
+/// One import attempt (see [`Request::Import`]): the file is read once,
+/// and that one document is asked for its programs, the devices proposed,
+/// the ladder and, when refused here, whether the soft PLC runs it.
 fn import(
     file: &str,
     text: &str,
@@ -154,22 +162,16 @@ fn import(
     pou: Option<&str>,
 ) -> ImportReply {
     let mut reply = ImportReply::default();
-    let root = dom::parse(text);
-    if let Ok(root) = &root {
-        let mut found = Vec::new();
-        root.descendants("pou", &mut found);
-        reply.pous = found
-            .iter()
-            .filter(|p| drawn_body(p).is_some())
-            .filter_map(|p| p.attr("name").map(str::to_string))
-            .collect();
+    let document = Document::read(text);
+    if let Ok(document) = &document {
+        reply.pous = document.programs();
     }
     // The soft PLC takes the project's own names: nothing to map.
     let soft = machine == MachineId::SoftPlc;
-    reply.rows = match (rows, &root) {
+    reply.rows = match (rows, &document) {
         _ if soft => Vec::new(),
         (Some(rows), _) => rows,
-        (None, Ok(root)) => declare::propose(root, machine, None),
+        (None, Ok(document)) => document.propose(machine, None, None).unwrap_or_default(),
         (None, Err(_)) => Vec::new(),
     };
     let map = VarMap::from_pairs(
@@ -191,7 +193,11 @@ fn import(
         }
         return reply;
     }
-    match import_pou(text, Some(machine), Some(&map), pou) {
+    let imported = document
+        .as_ref()
+        .map_err(Clone::clone)
+        .and_then(|d| d.import(Some(machine), Some(&map), pou));
+    match imported {
         Ok(imported) => {
             reply.warnings = imported
                 .warnings
@@ -210,7 +216,7 @@ fn import(
                 };
                 reply.said.push(Said { at, cause });
             }
-            reply.runs_on = elsewhere(text, machine, pou);
+            reply.runs_on = document.ok().and_then(|d| elsewhere(&d, machine, pou));
         }
     }
     reply
@@ -219,9 +225,9 @@ fn import(
 /// The machine that imports a file refused on `machine`: the soft PLC,
 /// which takes the project's own names and boxes, when it draws the file
 /// whole (no map: it needs none).
-fn elsewhere(text: &str, machine: MachineId, pou: Option<&str>) -> Option<MachineId> {
+fn elsewhere(document: &Document, machine: MachineId, pou: Option<&str>) -> Option<MachineId> {
     let soft = MachineId::SoftPlc;
-    (machine != soft && import_pou(text, Some(soft), None, pou).is_ok()).then_some(soft)
+    (machine != soft && document.import(Some(soft), None, pou).is_ok()).then_some(soft)
 }
 
 /// A warning in the page's words: the command line's advice (`--pou NAME

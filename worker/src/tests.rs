@@ -1,5 +1,5 @@
 use super::*;
-use engine::formats::plcopen::import_for;
+use engine::formats::plcopen::Document;
 use engine::ladder::edit::{align_outputs, COLUMNS};
 
 const NAMED: &str = include_str!("../../engine/tests/ladder/fixtures/openplc-named.xml");
@@ -71,7 +71,10 @@ fn an_exported_ladder_imports_back_as_drawn() {
     }) else {
         panic!("the imported ladder exports");
     };
-    let again = import_for(&xml, Some(MachineId::Io86a)).expect("its own export imports");
+    let again = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .map(|i| i.ladder)
+        .expect("its own export imports");
     // The drawing comes back; the variables' names stay with the file.
     assert_eq!(align_outputs(&again, COLUMNS - 1).rungs, ladder.rungs);
 }
@@ -269,5 +272,24 @@ fn import_errors_in_the_page_advise_the_program_picker_not_the_command_line() {
         let page = e.in_page();
         assert!(!page.contains("--"), "{page}");
         assert!(page.contains("Program"), "{page}");
+    }
+}
+
+#[test]
+fn an_import_reads_the_file_once_whatever_it_is_asked() {
+    // Issue #48: the worker keeps the document it read and asks it for the
+    // programs, the proposed devices, the import and the machine that runs
+    // it instead, so each request parses the XML once.
+    let cases = [
+        (MachineId::Io86a, NAMED),       // proposed, then imported
+        (MachineId::MinasecU, TIMER),    // refused, then tried on the soft PLC
+        (MachineId::SoftPlc, TIMER),     // drawn as written
+        (MachineId::Io86a, "<project>"), // not even XML
+    ];
+    for (machine, text) in cases {
+        let before = engine::formats::plcopen::dom::parsed_count();
+        let reply = import_on(machine, text);
+        let parsed = engine::formats::plcopen::dom::parsed_count() - before;
+        assert_eq!(parsed, 1, "{machine:?}: {:?}", reply.errors);
     }
 }

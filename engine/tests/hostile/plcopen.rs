@@ -1,6 +1,6 @@
 //! PLCopen XML: depth, size, duplicate ids, booleans and edges.
 
-use engine::formats::plcopen::import;
+use engine::formats::plcopen::Document;
 use engine::ladder::{ContactKind, Element};
 
 use crate::gen::{plcopen_alternating, plcopen_rails, plcopen_rungs};
@@ -12,7 +12,10 @@ fn deep_nesting_is_refused_at_its_line() {
         "<a>".repeat(200_000),
         "</a>".repeat(200_000)
     );
-    let errors = import(&deep).expect_err("too deep");
+    let errors = Document::read(&deep)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("too deep");
     assert_eq!(errors.len(), 1);
     assert_eq!(errors[0].line, 2);
     assert!(
@@ -26,7 +29,10 @@ fn deep_nesting_is_refused_at_its_line() {
 
 #[test]
 fn five_thousand_rungs_on_one_rail_import() {
-    let ladder = import(&plcopen_rungs(5_000, "X00", "Y00")).expect("imports");
+    let ladder = Document::read(&plcopen_rungs(5_000, "X00", "Y00"))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 5_000);
     assert!(ladder
         .rungs
@@ -51,7 +57,10 @@ fn fifty_thousand_comments_over_five_thousand_rungs_import() {
         &format!("{comments}\n<leftPowerRail"),
         1,
     );
-    let ladder = import(&xml).expect("imports");
+    let ladder = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 5_000);
     assert_eq!(ladder.rungs[0].comment.lines().count(), 50_000);
     assert!(ladder.rungs[1..].iter().all(|r| r.comment.is_empty()));
@@ -59,13 +68,19 @@ fn fifty_thousand_comments_over_five_thousand_rungs_import() {
 
 #[test]
 fn fifty_thousand_rails_import() {
-    let ladder = import(&plcopen_rails(50_000)).expect("imports");
+    let ladder = Document::read(&plcopen_rails(50_000))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 1);
 }
 
 #[test]
 fn a_network_nested_past_the_limit_is_refused_not_drawn() {
-    let errors = import(&plcopen_alternating(6_000)).expect_err("too deep");
+    let errors = Document::read(&plcopen_alternating(6_000))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("too deep");
     assert!(
         errors[0]
             .error
@@ -74,7 +89,10 @@ fn a_network_nested_past_the_limit_is_refused_not_drawn() {
         "{errors:?}"
     );
     // Shallow alternation draws fine.
-    let ladder = import(&plcopen_alternating(40)).expect("imports");
+    let ladder = Document::read(&plcopen_alternating(40))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 1);
 }
 
@@ -94,7 +112,10 @@ fn a_local_id_used_twice_is_an_error() {
 <contact localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X01</variable></contact>
 <coil localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>Y00</variable></coil>"#,
     );
-    let errors = import(&xml).expect_err("duplicate");
+    let errors = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("duplicate");
     assert_eq!(errors[0].line, 4);
     assert!(
         errors[0]
@@ -112,7 +133,10 @@ fn negated_accepts_every_xml_boolean() {
             r#"<contact localId="2" negated="{value}"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X00</variable></contact>
 <coil localId="3" negated="{value}"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>Y00</variable></coil>"#
         ));
-        let ladder = import(&xml).expect(value);
+        let ladder = Document::read(&xml)
+            .and_then(|document| document.import(None, None, None))
+            .map(|i| i.ladder)
+            .expect(value);
         let cells = &ladder.rungs[0].cells[0];
         let kind = if nc { ContactKind::Nc } else { ContactKind::No };
         assert!(
@@ -132,7 +156,10 @@ fn negated_accepts_every_xml_boolean() {
     let xml = body(
         r#"<contact localId="2" negated="yes"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X00</variable></contact>"#,
     );
-    let errors = import(&xml).expect_err("not a boolean");
+    let errors = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("not a boolean");
     assert!(
         errors[0]
             .error
@@ -148,7 +175,10 @@ fn an_unknown_edge_is_called_what_it_is() {
         r#"<contact localId="2" edge="bogus"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X00</variable></contact>
 <coil localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>Y00</variable></coil>"#,
     );
-    let errors = import(&xml).expect_err("bogus edge");
+    let errors = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("bogus edge");
     assert_eq!(errors[0].line, 3);
     assert_eq!(
         errors[0].error,
@@ -163,10 +193,16 @@ fn an_unknown_edge_is_called_what_it_is() {
 #[test]
 fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
     // ANDs: each moves its inputs' networks, a search of the body.
-    let ladder = import(&crate::gen::plcopen_gates(300, "AND")).expect("imports");
+    let ladder = Document::read(&crate::gen::plcopen_gates(300, "AND"))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 300);
     let started = std::time::Instant::now();
-    let errors = import(&crate::gen::plcopen_gates(2_000, "AND")).expect_err("refused");
+    let errors = Document::read(&crate::gen::plcopen_gates(2_000, "AND"))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("refused");
     assert!(
         errors[0]
             .error
@@ -182,7 +218,10 @@ fn a_few_hundred_blocks_lower_and_thousands_are_refused_not_slow() {
 fn thousands_of_or_blocks_lower_in_one_pass() {
     // ORs are lowered with the joins of wires, all at once: linear.
     let started = std::time::Instant::now();
-    let ladder = import(&crate::gen::plcopen_gates(5_000, "OR")).expect("imports");
+    let ladder = Document::read(&crate::gen::plcopen_gates(5_000, "OR"))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 5_000);
     // Not a speed test: one search of the body per OR would take minutes.
     assert!(started.elapsed().as_secs() < 60);
@@ -190,7 +229,9 @@ fn thousands_of_or_blocks_lower_in_one_pass() {
 
 /// `xml` imported for IO86A, or a panic with its first errors.
 fn imported_for_io86a(xml: &str) -> engine::ladder::Ladder {
-    engine::formats::plcopen::import_for(xml, Some(engine::MachineId::Io86a))
+    engine::formats::plcopen::Document::read(xml)
+        .and_then(|document| document.import(Some(engine::MachineId::Io86a), None, None))
+        .map(|i| i.ladder)
         .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]))
 }
 
@@ -260,7 +301,10 @@ fn a_long_chain_of_connectors_is_refused_not_followed_to_the_end() {
         ));
         body(&e)
     };
-    let errors = import(&chain(5_000)).expect_err("too long");
+    let errors = Document::read(&chain(5_000))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("too long");
     assert!(
         errors[0]
             .error
@@ -269,7 +313,10 @@ fn a_long_chain_of_connectors_is_refused_not_followed_to_the_end() {
         "{errors:?}"
     );
     // A few in a row carry the rail's power to the coil.
-    let ladder = import(&chain(5)).expect("imports");
+    let ladder = Document::read(&chain(5))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     let text =
         engine::ladder::compile::compile(&ladder, engine::MachineId::Io86a, Default::default())
             .expect("compiles");
@@ -278,16 +325,21 @@ fn a_long_chain_of_connectors_is_refused_not_followed_to_the_end() {
 
 #[test]
 fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
-    use engine::formats::plcopen::soft::to_il;
     let started = std::time::Instant::now();
-    let rungs = to_il(&plcopen_rungs(5_000, "X00", "Y00"), None).expect("5 000 rungs");
+    let rungs = Document::read(&plcopen_rungs(5_000, "X00", "Y00"))
+        .and_then(|document| document.soft_program(None))
+        .expect("5 000 rungs");
     assert!(rungs.text.lines().count() > 5_000);
-    let ors = to_il(&crate::gen::plcopen_gates(5_000, "OR"), None).expect("5 000 ORs");
+    let ors = Document::read(&crate::gen::plcopen_gates(5_000, "OR"))
+        .and_then(|document| document.soft_program(None))
+        .expect("5 000 ORs");
     let mut plc = engine::machines::new_plc(engine::MachineId::SoftPlc);
     engine::plc::Plc::load_text(plc.as_mut(), &ors.text).expect("loads");
     for levels in [1, 50, 400] {
         // Nesting is only wiring here: nothing recurses on it.
-        to_il(&plcopen_alternating(levels), None).expect("any depth");
+        Document::read(&plcopen_alternating(levels))
+            .and_then(|document| document.soft_program(None))
+            .expect("any depth");
     }
     // Not a speed test: a search per element would take minutes.
     assert!(started.elapsed().as_secs() < 60);
@@ -296,7 +348,9 @@ fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
         r#"<connector localId="900" name="a"><position x="0" y="0"/><connectionPointIn><connection refLocalId="901"/></connectionPointIn></connector><continuation localId="901" name="a"><position x="0" y="0"/><connectionPointOut/></continuation><outVariable localId="902"><position x="0" y="0"/><connectionPointIn><connection refLocalId="901"/></connectionPointIn><expression>Y01</expression></outVariable><leftPowerRail"#,
         1,
     );
-    let errors = to_il(&looped, None).expect_err("a connector feeding itself");
+    let errors = Document::read(&looped)
+        .and_then(|document| document.soft_program(None))
+        .expect_err("a connector feeding itself");
     assert!(
         errors.iter().all(|e| e.line > 0) && !errors.is_empty(),
         "{errors:?}"
@@ -305,11 +359,12 @@ fn large_and_deep_projects_run_on_the_soft_plc_or_are_refused_at_a_line() {
 
 #[test]
 fn thousands_of_boxes_are_drawn_on_the_soft_plc_in_linear_work() {
-    use engine::formats::plcopen::import_for;
     let soft = Some(engine::MachineId::SoftPlc);
     let started = std::time::Instant::now();
     // Every counter's reset network joined to its own box.
-    let ladder = import_for(&crate::gen::plcopen_counters(3_000), soft)
+    let ladder = Document::read(&crate::gen::plcopen_counters(3_000))
+        .and_then(|document| document.import(soft, None, None))
+        .map(|i| i.ladder)
         .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
     assert_eq!(ladder.rungs.len(), 3_000);
     assert!(ladder.rungs.iter().all(|r| r
@@ -317,7 +372,9 @@ fn thousands_of_boxes_are_drawn_on_the_soft_plc_in_linear_work() {
         .any(|(_, e)| matches!(e, Element::BoxInput { .. }))));
     // A chain of 3 000 boxes, each into the next through a variable of
     // its own, typed from the first's INT operand, the writer first.
-    let ladder = import_for(&crate::gen::plcopen_box_chain(3_000), soft)
+    let ladder = Document::read(&crate::gen::plcopen_box_chain(3_000))
+        .and_then(|document| document.import(soft, None, None))
+        .map(|i| i.ladder)
         .unwrap_or_else(|e| panic!("{:?}", &e[..e.len().min(3)]));
     assert_eq!(ladder.rungs.len(), 3_000);
     let carried: Vec<_> = ladder

@@ -4,7 +4,7 @@
 //! hostile -- --ignored` runs thousands.
 
 use engine::avr::asm::assemble;
-use engine::formats::plcopen::import;
+use engine::formats::plcopen::Document;
 use engine::formats::Project;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::{Element, Ladder, Link, Rung};
@@ -103,7 +103,10 @@ fn check_time(t: &str) -> Result<(), TestCaseError> {
 }
 
 fn check_depth(levels: usize) -> Result<(), TestCaseError> {
-    match import(&plcopen_alternating(levels)) {
+    match Document::read(&plcopen_alternating(levels))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+    {
         Ok(ladder) => {
             prop_assert_eq!(ladder.rungs.len(), 1);
             prop_assert!(levels <= 2 * MAX_NESTING + 2, "{levels} levels imported");

@@ -3,7 +3,8 @@
 //! file does not use is a warning; real files from other tools, when the
 //! workplace's fixtures are present.
 
-use engine::formats::plcopen::{import_for, import_mapped, VarMap};
+use engine::formats::plcopen::Document;
+use engine::formats::plcopen::VarMap;
 use engine::MachineId;
 
 use crate::common::{hashigo, text, Temp};
@@ -16,7 +17,10 @@ const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/p
 
 #[test]
 fn located_variables_map_by_rule_and_the_rest_need_a_map() {
-    let errors = import_for(NAMED, Some(MachineId::Io86a)).expect_err("memo has no device");
+    let errors = Document::read(NAMED)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .map(|i| i.ladder)
+        .expect_err("memo has no device");
     assert_eq!(errors.len(), 1, "{errors:?}");
     let message = errors[0].error.to_string();
     assert!(
@@ -25,7 +29,9 @@ fn located_variables_map_by_rule_and_the_rest_need_a_map() {
     );
     assert!(message.contains("--map: memo,DEVICE"), "{message}");
     let map = VarMap::parse("memo,M05\nTON9,T09\n").expect("a map");
-    let imported = import_mapped(NAMED, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let imported = Document::read(NAMED)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect("imports");
     let devices: Vec<String> = imported
         .ladder
         .rungs
@@ -47,7 +53,10 @@ fn located_variables_map_by_rule_and_the_rest_need_a_map() {
     assert_eq!(comments.get("M05").map(String::as_str), Some("memo"));
     assert_eq!(imported.unused_map_entries, vec![("TON9".to_string(), 2)]);
     // No machine: the names stay as written (a plain import).
-    assert!(engine::formats::plcopen::import(NAMED).is_ok());
+    assert!(engine::formats::plcopen::Document::read(NAMED)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .is_ok());
 }
 
 #[test]
@@ -160,7 +169,9 @@ fn a_real_openplc_lab_imports_with_a_map() {
         return;
     };
     let map = VarMap::parse("I1,X00\nI2,X01\nQ1,Y00\nQ2,Y01\nQ3,Y02\n").expect("a map");
-    let imported = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let imported = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect("imports");
     let il = engine::ladder::compile::compile(
         &imported.ladder,
         MachineId::Io86a,
@@ -191,10 +202,11 @@ fn line_of(needle: &str) -> usize {
 
 #[test]
 fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
-    use engine::formats::plcopen::import_pou;
     // IO86A: the in-line TON becomes T00's coil and contact (TON0 mapped).
     let map = VarMap::parse("TON0,T00\n").expect("a map");
-    let io = import_mapped(TIMER, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let io = Document::read(TIMER)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect("imports");
     let il = engine::ladder::compile::compile(&io.ladder, MachineId::Io86a, Default::default())
         .expect("compiles");
     let steps: Vec<&str> = il.lines().filter(|l| !l.starts_with(';')).collect();
@@ -226,7 +238,10 @@ fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
         );
     }
     // Unmapped, TON0 is no IO86A timer: said at the block.
-    let errors = import_for(TIMER, Some(MachineId::Io86a)).expect_err("TON0 is no Tnn");
+    let errors = Document::read(TIMER)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .map(|i| i.ladder)
+        .expect_err("TON0 is no Tnn");
     assert_eq!(
         errors[0].line,
         line_of("<block localId=\"3\""),
@@ -234,7 +249,9 @@ fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
     );
     // The AVR PLC keeps the box in line; its bits come from the map.
     let map = VarMap::parse("start,R4.0\nlamp,R5.0\n").expect("a map");
-    let avr = import_mapped(TIMER, Some(MachineId::AvrPlc), Some(&map)).expect("imports");
+    let avr = Document::read(TIMER)
+        .and_then(|document| document.import(Some(MachineId::AvrPlc), Some(&map), None))
+        .expect("imports");
     let text = engine::ladder::compile::compile(&avr.ladder, MachineId::AvrPlc, Default::default())
         .expect("compiles");
     assert!(
@@ -242,16 +259,19 @@ fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
         "{text}"
     );
     // --pou takes the function block alone; a name the file lacks is said.
-    let helper = import_pou(
-        TIMER,
-        Some(MachineId::Io86a),
-        Some(&VarMap::parse("a,X01\nb,Y01\n").expect("map")),
-        Some("HELPER"),
-    )
-    .expect("imports");
+    let helper = Document::read(TIMER)
+        .and_then(|document| {
+            document.import(
+                Some(MachineId::Io86a),
+                Some(&VarMap::parse("a,X01\nb,Y01\n").expect("map")),
+                Some("HELPER"),
+            )
+        })
+        .expect("imports");
     assert_eq!(helper.ladder.rungs.len(), 1);
-    let none =
-        import_pou(TIMER, Some(MachineId::Io86a), None, Some("nope")).expect_err("no such POU");
+    let none = Document::read(TIMER)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, Some("nope")))
+        .expect_err("no such POU");
     assert!(
         none[0]
             .error
@@ -272,7 +292,9 @@ fn a_time_from_a_constant_initialised_variable_and_a_proposed_map() {
             <variable name="elapsed">"#,
         );
     let map = VarMap::parse("TON0,T00\n").expect("a map");
-    let io = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let io = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect("imports");
     let il = engine::ladder::compile::compile(&io.ladder, MachineId::Io86a, Default::default())
         .expect("compiles");
     assert!(
@@ -341,7 +363,9 @@ fn the_real_projects_that_compile_with_a_proposed_map() {
                 continue;
             };
             let map = VarMap::from_pairs(declare::propose(&root, machine, None));
-            let Ok(imported) = import_mapped(&xml, Some(machine), Some(&map)) else {
+            let Ok(imported) = Document::read(&xml)
+                .and_then(|document| document.import(Some(machine), Some(&map), None))
+            else {
                 continue;
             };
             let options = engine::ladder::compile::Options::default();
@@ -405,10 +429,13 @@ fn an_enable_pin_is_honoured_or_refused_and_initial_values_are_said() {
     };
     let map = VarMap::parse("TON0,T00\n").expect("a map");
     // From the rail: always enabled, as Hashigo's blocks are.
-    assert!(import_mapped(&with_en("1"), Some(MachineId::Io86a), Some(&map)).is_ok());
+    assert!(Document::read(&with_en("1"))
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .is_ok());
     // From a contact: refused at the block, never ignored.
-    let errors =
-        import_mapped(&with_en("2"), Some(MachineId::Io86a), Some(&map)).expect_err("EN wired");
+    let errors = Document::read(&with_en("2"))
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect_err("EN wired");
     assert!(
         errors[0].error.to_string().contains("its EN is wired"),
         "{errors:?}"
@@ -419,7 +446,9 @@ fn an_enable_pin_is_honoured_or_refused_and_initial_values_are_said() {
         r#"<variable name="latch" address="%MX0.2"><type><BOOL/></type><initialValue><simpleValue value="TRUE"/></initialValue></variable>"#,
     );
     let map = VarMap::parse("memo,M05\n").expect("a map");
-    let imported = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let imported = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect("imports");
     let said = crate::plcopen::said_warnings(&imported);
     assert_eq!(
         said,

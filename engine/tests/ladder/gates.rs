@@ -3,7 +3,8 @@
 //! table says.
 
 use engine::events::InputValue;
-use engine::formats::plcopen::{import_mapped, VarMap};
+use engine::formats::plcopen::Document;
+use engine::formats::plcopen::VarMap;
 use engine::ladder::compile::compile;
 use engine::machines::{AvrPlc, Io86aPlc};
 use engine::plc::{Command, Plc};
@@ -87,8 +88,9 @@ fn run(xml: &str, map: &str, inputs: &[(bool, bool)]) -> Vec<bool> {
 /// `xml` imported for IO86A with `map`, compiled and loaded, its input
 /// filter off (an input counts from the next scan); and the program text.
 pub(crate) fn io86a_loaded(xml: &str, map: &VarMap) -> Result<(Io86aPlc, String), String> {
-    let imported =
-        import_mapped(xml, Some(MachineId::Io86a), Some(map)).map_err(|e| format!("{e:?}"))?;
+    let imported = Document::read(xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(map), None))
+        .map_err(|e| format!("{e:?}"))?;
     let text = compile(&imported.ladder, MachineId::Io86a, Default::default())
         .map_err(|e| format!("{e:?}"))?;
     let mut m = Io86aPlc::new();
@@ -104,8 +106,9 @@ pub(crate) fn io86a_loaded(xml: &str, map: &VarMap) -> Result<(Io86aPlc, String)
 /// `xml` imported for the AVR PLC with `map`, compiled and loaded; and
 /// the program text.
 pub(crate) fn avr_loaded(xml: &str, map: &VarMap) -> Result<(AvrPlc, String), String> {
-    let imported =
-        import_mapped(xml, Some(MachineId::AvrPlc), Some(map)).map_err(|e| format!("{e:?}"))?;
+    let imported = Document::read(xml)
+        .and_then(|document| document.import(Some(MachineId::AvrPlc), Some(map), None))
+        .map_err(|e| format!("{e:?}"))?;
     let text = compile(&imported.ladder, MachineId::AvrPlc, Default::default())
         .map_err(|e| format!("{e:?}"))?;
     let mut m = AvrPlc::new();
@@ -164,7 +167,9 @@ fn sr_sets_and_holds_and_set_wins_rs_lets_reset_win() {
 #[test]
 fn what_does_not_fit_is_refused_with_the_reason() {
     let xml = gate("SR", "SR0", ["S1", "R"], "Q1");
-    let errors = import_mapped(&xml, Some(MachineId::Io86a), None).expect_err("no relay");
+    let errors = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .expect_err("no relay");
     assert!(
         errors[0]
             .error
@@ -185,7 +190,9 @@ fn an_input_that_also_feeds_more_is_carried_by_a_spare_relay() {
         seen,
         [(false, false), (true, false), (true, true), (true, true)]
     );
-    let imported = import_mapped(&shared, Some(MachineId::Io86a), None).expect("imports");
+    let imported = Document::read(&shared)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .expect("imports");
     assert_eq!(
         imported
             .ladder
@@ -232,7 +239,9 @@ fn fed_by_a_or_b(body: &str) -> String {
 fn a_box_io86a_lacks_in_line_is_its_input_contact_turned_or_a_relay() {
     let relays_said = |xml: &str| {
         let map = VarMap::default();
-        let imported = import_mapped(xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+        let imported = Document::read(xml)
+            .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+            .expect("imports");
         let said = imported.warnings.iter().map(|w| w.error.clone());
         said.filter(|w| w.contains(" holds ")).collect::<Vec<_>>()
     };
@@ -316,12 +325,15 @@ fn tof_and_tp_on_io86a_use_its_on_delay_timer_and_a_relay() {
     assert!(!q[8] && !q[9], "over while a is still on: {q:?}");
     assert!(q[11], "a new rise, a new pulse: {q:?}");
     // Mapped to a timer alone, a TOF is refused as before.
-    let errors = import_mapped(
-        &timer_block("TOF"),
-        Some(MachineId::Io86a),
-        Some(&VarMap::parse("TOF0,T01\n").expect("map")),
-    )
-    .expect_err("no relay");
+    let errors = Document::read(&timer_block("TOF"))
+        .and_then(|document| {
+            document.import(
+                Some(MachineId::Io86a),
+                Some(&VarMap::parse("TOF0,T01\n").expect("map")),
+                None,
+            )
+        })
+        .expect_err("no relay");
     assert!(errors[0].error.to_string().contains("TOF"), "{errors:?}");
 }
 
@@ -389,7 +401,9 @@ fn ctud_counting_up_gives_qu_and_qd_and_refuses_what_it_cannot_load() {
     // Its LD wired: IO86A's counters cannot be loaded.
     let loaded = counter("CTUD", "CU", "LD", ["QU", "QD"]);
     let map = VarMap::parse("CTUD0,C02\n").expect("map");
-    let errors = import_mapped(&loaded, Some(MachineId::Io86a), Some(&map)).expect_err("LD wired");
+    let errors = Document::read(&loaded)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect_err("LD wired");
     assert!(
         errors[0].error.to_string().contains("its LD is wired"),
         "{errors:?}"
@@ -447,12 +461,15 @@ fn comparisons_run_as_cmp_and_a_relay_each() {
         ]
     );
     // A word with no device is refused, naming the map entry to add.
-    let errors = import_mapped(
-        &xml,
-        Some(MachineId::Io86a),
-        Some(&VarMap::parse("CTU0,C00\n").expect("map")),
-    )
-    .expect_err("n unmapped");
+    let errors = Document::read(&xml)
+        .and_then(|document| {
+            document.import(
+                Some(MachineId::Io86a),
+                Some(&VarMap::parse("CTU0,C00\n").expect("map")),
+                None,
+            )
+        })
+        .expect_err("n unmapped");
     assert!(
         errors[0]
             .error
@@ -461,12 +478,15 @@ fn comparisons_run_as_cmp_and_a_relay_each() {
         "{errors:?}"
     );
     // On a machine without CMP: refused with the reason.
-    let errors = import_mapped(
-        &xml,
-        Some(MachineId::MinasecU),
-        Some(&VarMap::parse("n,C0\n").expect("map")),
-    )
-    .expect_err("no CMP");
+    let errors = Document::read(&xml)
+        .and_then(|document| {
+            document.import(
+                Some(MachineId::MinasecU),
+                Some(&VarMap::parse("n,C0\n").expect("map")),
+                None,
+            )
+        })
+        .expect_err("no CMP");
     assert!(
         errors
             .iter()
@@ -516,7 +536,9 @@ fn an_fbd_program_runs_as_its_blocks_say() {
         boxes("NOT", 5, 60, &[("IN", 2)], "Y01")
     );
     let map = VarMap::parse("").expect("a map");
-    let imported = import_mapped(&xml, Some(MachineId::Io86a), Some(&map)).expect("imports");
+    let imported = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect("imports");
     assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
     let (_, text) = io86a_loaded(&xml, &map).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(text.matches("X01").count(), 2, "{text}");
@@ -552,7 +574,9 @@ fn an_fbd_program_runs_as_its_blocks_say() {
             1,
         );
         assert_ne!(marked, xml);
-        let errors = import_mapped(&marked, Some(MachineId::Io86a), None).expect_err("marked pin");
+        let errors = Document::read(&marked)
+            .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+            .expect_err("marked pin");
         assert_eq!(errors[0].error.to_string(), format!("AND block: {why}"));
     }
     // A mark that is no XML boolean is refused as on a contact, not ignored.
@@ -561,7 +585,9 @@ fn an_fbd_program_runs_as_its_blocks_say() {
         r#"<variable formalParameter="IN2" negated="maybe">"#,
         1,
     );
-    let errors = import_mapped(&garbled, Some(MachineId::Io86a), None).expect_err("garbled pin");
+    let errors = Document::read(&garbled)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .expect_err("garbled pin");
     assert_eq!(
         errors[0].error.to_string(),
         r#"negated="maybe" is not a boolean: true, false, 1 or 0"#
@@ -571,7 +597,9 @@ fn an_fbd_program_runs_as_its_blocks_say() {
         "</FBD>",
         "<jump label=\"x\" localId=\"9\"><position x=\"1\" y=\"1\"/></jump>\n    </FBD>",
     );
-    let errors = import_mapped(&jump, Some(MachineId::Io86a), None).expect_err("jump");
+    let errors = Document::read(&jump)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+        .expect_err("jump");
     let line = 1 + jump[..jump.find("<jump").expect("added")]
         .matches('\n')
         .count();
@@ -625,7 +653,9 @@ fn a_continuation_carries_what_feeds_its_connector() {
         [(false, true), (false, true), (false, false), (true, false)]
     );
     let refused = |xml: &str| {
-        let errors = import_mapped(xml, Some(MachineId::Io86a), None).expect_err("refused");
+        let errors = Document::read(xml)
+            .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
+            .expect_err("refused");
         errors[0].error.to_string()
     };
     // No connector of that name; a connector fed by its own continuation.
@@ -732,8 +762,9 @@ fn a_comparison_of_more_inputs_compares_each_pair_in_turn() {
     assert_eq!(again, seen);
     let falling = xml.replace(cu, r#"<variable formalParameter="CU" edge="falling">"#);
     let map = VarMap::parse("CTU0,C00\nn,C00\n").expect("map");
-    let errors =
-        import_mapped(&falling, Some(MachineId::Io86a), Some(&map)).expect_err("falling CU");
+    let errors = Document::read(&falling)
+        .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+        .expect_err("falling CU");
     assert!(
         errors[0]
             .error
@@ -744,7 +775,9 @@ fn a_comparison_of_more_inputs_compares_each_pair_in_turn() {
     // NE takes two inputs only, and a BOOL is no number to compare.
     let refused = |xml: &str| {
         let map = VarMap::parse("CTU0,C00\nn,C00\n").expect("map");
-        let errors = import_mapped(xml, Some(MachineId::Io86a), Some(&map)).expect_err("refused");
+        let errors = Document::read(xml)
+            .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
+            .expect_err("refused");
         errors[0].error.to_string()
     };
     let ne = xml.replace(r#"typeName="GT""#, r#"typeName="NE""#);

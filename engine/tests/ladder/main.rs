@@ -6,6 +6,7 @@ mod common;
 mod declare;
 mod decompile;
 mod differential;
+mod documents;
 mod exercise;
 mod gates;
 mod model;

@@ -534,9 +534,9 @@ const MINASEC: Target = Target {
     coil: |c| format!("Y0{c}"),
     relay: |k| format!("M0{k}"),
     load: |xml, map| {
-        let imported =
-            engine::formats::plcopen::import_mapped(xml, Some(MachineId::MinasecU), Some(map))
-                .map_err(|e| format!("{e:?}"))?;
+        let imported = engine::formats::plcopen::Document::read(xml)
+            .and_then(|document| document.import(Some(MachineId::MinasecU), Some(map), None))
+            .map_err(|e| format!("{e:?}"))?;
         let text = engine::ladder::compile::compile(
             &imported.ladder,
             MachineId::MinasecU,

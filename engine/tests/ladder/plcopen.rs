@@ -1,7 +1,8 @@
 //! PLCopen TC6 XML: both namespaces, OpenPLC's dialect, round trips,
 //! and imported programs running on the machines.
 
-use engine::formats::plcopen::{export, import};
+use engine::formats::plcopen::export;
+use engine::formats::plcopen::Document;
 use engine::formats::Project;
 use engine::iec::literal::parse_time_literal;
 use engine::ladder::compile::{compile, Options};
@@ -18,7 +19,10 @@ const SEED_JSON: &str = include_str!("../../programs/minasec-u/seed-test.json");
 
 #[test]
 fn openplc_blink_runs_on_the_avr_plc() {
-    let ladder = import(BLINK).expect("imports");
+    let ladder = Document::read(BLINK)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     assert_eq!(ladder.rungs.len(), 3);
     assert_eq!(ladder.rungs[0].comment, "lamp := NOT lamp_off");
     let text = compile(&ladder, MachineId::AvrPlc, Options::default()).expect("compiles");
@@ -107,11 +111,20 @@ fn same_logic(a: &Ladder, b: &Ladder, machine: MachineId) -> Result<(), String> 
 #[test]
 fn the_seed_ladder_and_both_fixtures_round_trip() {
     let seed = Project::from_json(SEED_JSON).expect("seed").ladder;
-    let back = import(&export(&seed, "seed").expect("exports")).expect("imports back");
+    let back = Document::read(&export(&seed, "seed").expect("exports"))
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports back");
     same_logic(&seed, &back, MachineId::MinasecU).expect("seed round trip");
     for (fixture, machine) in [(BLINK, MachineId::AvrPlc), (BEREMIZ, MachineId::Io86a)] {
-        let ladder = import(fixture).expect("fixture");
-        let again = import(&export(&ladder, "x").expect("exports")).expect("imports back");
+        let ladder = Document::read(fixture)
+            .and_then(|document| document.import(None, None, None))
+            .map(|i| i.ladder)
+            .expect("fixture");
+        let again = Document::read(&export(&ladder, "x").expect("exports"))
+            .and_then(|document| document.import(None, None, None))
+            .map(|i| i.ladder)
+            .expect("imports back");
         same_logic(&ladder, &again, machine).expect("fixture round trip");
     }
 }
@@ -124,7 +137,7 @@ proptest! {
         let mut ladder = Ladder::from_logic(&rungs);
         ladder.rungs[0].comment = "first <rung> & \"quotes\"\nline two".into();
         let xml = export(&ladder, "random").map_err(|e| TestCaseError::fail(format!("{e:?}")))?;
-        let back = import(&xml).map_err(|e| TestCaseError::fail(format!("{e:?}\n{xml}")))?;
+        let back = Document::read(&xml).and_then(|document| document.import(None, None, None)).map(|i| i.ladder).map_err(|e| TestCaseError::fail(format!("{e:?}\n{xml}")))?;
         same_logic(&ladder, &back, MachineId::AvrPlc).map_err(|e| TestCaseError::fail(format!("{e}\n{xml}")))?;
     }
 }
@@ -140,7 +153,12 @@ pub(crate) fn said_warnings(imported: &engine::formats::plcopen::Imported) -> Ve
 
 #[test]
 fn bad_files_are_errors_at_their_lines() {
-    let err = |xml: &str| import(xml).expect_err("must fail");
+    let err = |xml: &str| {
+        Document::read(xml)
+            .and_then(|document| document.import(None, None, None))
+            .map(|i| i.ladder)
+            .expect_err("must fail")
+    };
     let e = err("<project xmlns=\"urn:other\"/>");
     assert!(e[0].error.to_string().contains("not PLCopen TC6"), "{e:?}");
     let e = err("<project>\n<types>\n</project>");
@@ -187,7 +205,9 @@ fn bad_files_are_errors_at_their_lines() {
         .position(|l| l.contains("localId=\"99\""))
         .expect("line")
         + 1;
-    let imported = engine::formats::plcopen::import_mapped(&dangling, None, None).expect("imports");
+    let imported = engine::formats::plcopen::Document::read(&dangling)
+        .and_then(|document| document.import(None, None, None))
+        .expect("imports");
     let said = said_warnings(&imported);
     assert_eq!(
         said,
@@ -195,7 +215,10 @@ fn bad_files_are_errors_at_their_lines() {
     );
     assert_eq!(
         imported.ladder,
-        import(BLINK).expect("the file without it"),
+        Document::read(BLINK)
+            .and_then(|document| document.import(None, None, None))
+            .map(|i| i.ladder)
+            .expect("the file without it"),
         "nothing else changes"
     );
     // A PLCopen variable that is not the machine's device: at its line.
@@ -268,7 +291,10 @@ fn what_is_not_ladder_is_named_with_its_language() {
         &(pou("plc_prg", "program", "<ST/>") + &pou("CounterLD", "functionBlock", ld)),
         "plc_prg",
     );
-    let e = import(&xml).expect_err("ST program");
+    let e = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("ST program");
     assert!(
         e[0].error
             .to_string()
@@ -277,7 +303,10 @@ fn what_is_not_ladder_is_named_with_its_language() {
     );
     // No LD anywhere: each POU's language said.
     let xml = project(&pou("seq", "program", "<SFC/>"), "seq");
-    let e = import(&xml).expect_err("SFC only");
+    let e = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("SFC only");
     assert!(e[0].error.to_string().contains("(seq in SFC)"), "{e:?}");
     // A block calling the project's own ST function block, at its line.
     let call = ld.replace(
@@ -288,7 +317,10 @@ fn what_is_not_ladder_is_named_with_its_language() {
         &(pou("main", "program", &call) + &pou("detect", "functionBlock", "<ST/>")),
         "main",
     );
-    let e = import(&xml).expect_err("a project block");
+    let e = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("a project block");
     assert_eq!(e[0].line, 2, "{e:?}");
     assert!(
         e[0].error
@@ -333,7 +365,10 @@ fn a_comment_goes_to_the_network_drawn_under_it_side_by_side_too() {
         network(200, 500, 60, "X01", "Y01"),
         network(300, 20, 260, "X02", "Y02"),
     );
-    let ladder = import(&xml).expect("imports");
+    let ladder = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     // Each rung named by its coil's device.
     let said: Vec<(String, &str)> = ladder
         .rungs

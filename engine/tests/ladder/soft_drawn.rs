@@ -4,8 +4,8 @@
 //! (the soft PLC's own PLCopen reader, [`to_il`], is the oracle).
 
 use engine::events::InputValue;
-use engine::formats::plcopen::soft::to_il;
-use engine::formats::plcopen::{export, import_for};
+use engine::formats::plcopen::export;
+use engine::formats::plcopen::Document;
 use engine::iec::Address;
 use engine::ladder::compile::{compile, Options};
 use engine::ladder::edit::align_outputs;
@@ -85,7 +85,9 @@ fn located(ladder: &Ladder, prefix: &str) -> Vec<String> {
 /// the reader in data-flow order, each breaking the loop at another
 /// block: the two may then differ for [`LOOP_SCANS`] scans, never more.
 fn same_behaviour(name: &str, xml: &str, ladder: &Ladder) -> usize {
-    let written = to_il(xml, None).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+    let written = Document::read(xml)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{name}: {e:?}"));
     let drawn = compile(ladder, MachineId::SoftPlc, Options::default())
         .unwrap_or_else(|e| panic!("{name}: {e:?}"));
     if std::env::var("SHOW").is_ok() {
@@ -148,8 +150,13 @@ fn the_real_projects_the_soft_plc_runs_are_drawn_and_run_the_same() {
     let mut drawn = Vec::new();
     for name in &names {
         let xml = std::fs::read_to_string(format!("{REAL}/{name}")).expect("readable");
-        let runs = to_il(&xml, None).is_ok();
-        match import_for(&xml, SOFT) {
+        let runs = Document::read(&xml)
+            .and_then(|document| document.soft_program(None))
+            .is_ok();
+        match Document::read(&xml)
+            .and_then(|document| document.import(SOFT, None, None))
+            .map(|i| i.ladder)
+        {
             Ok(ladder) => {
                 assert!(runs, "{name} drawn but not run as written");
                 let changes = same_behaviour(name, &xml, &ladder);
@@ -174,7 +181,10 @@ fn the_real_projects_the_soft_plc_runs_are_drawn_and_run_the_same() {
 
 #[test]
 fn our_word_project_is_drawn_with_its_boxes_and_runs_the_same() {
-    let ladder = import_for(WORDS, SOFT).unwrap_or_else(|e| panic!("{e:?}"));
+    let ladder = Document::read(WORDS)
+        .and_then(|document| document.import(SOFT, None, None))
+        .map(|i| i.ladder)
+        .unwrap_or_else(|e| panic!("{e:?}"));
     let kinds: Vec<String> = ladder
         .rungs
         .iter()
@@ -227,7 +237,10 @@ fn a_soft_plc_ladder_exported_and_opened_again_is_the_same_ladder() {
     ladders.push(("reset network".into(), counter_with_reset()));
     for (name, ladder) in ladders {
         let xml = export(&ladder, "Main").unwrap_or_else(|e| panic!("{name}: {e:?}"));
-        let back = import_for(&xml, SOFT).unwrap_or_else(|e| panic!("{name}: {e:?}\n{xml}"));
+        let back = Document::read(&xml)
+            .and_then(|document| document.import(SOFT, None, None))
+            .map(|i| i.ladder)
+            .unwrap_or_else(|e| panic!("{name}: {e:?}\n{xml}"));
         // Drawn with the outputs in the editor's last column, as the
         // page opens it.
         let logic = |l: &Ladder| {
@@ -285,7 +298,10 @@ fn a_box_input_network_read_back_from_the_il_is_drawn_under_its_box() {
 #[test]
 fn function_boxes_whose_en_is_open_stand_on_the_rail_and_always_run() {
     // MUL(level, 3) written to `big`: no contact before it.
-    let ladder = import_for(WORDS, SOFT).expect("drawn");
+    let ladder = Document::read(WORDS)
+        .and_then(|document| document.import(SOFT, None, None))
+        .map(|i| i.ladder)
+        .expect("drawn");
     let on_rail = ladder.rungs.iter().find(|r| {
         r.elements()
             .any(|(p, e)| p.col > 0 && e.block().is_some_and(|b| b.kind() == "SEL"))
@@ -334,7 +350,10 @@ fn an_exported_edge_comes_back_as_an_edge_and_a_named_trigger_as_its_box() {
     };
     let xml = export(&ladder, "Main").expect("exports");
     assert!(xml.contains("F_TRIG"), "exported as an F_TRIG");
-    let back = import_for(&xml, SOFT).expect("imports");
+    let back = Document::read(&xml)
+        .and_then(|document| document.import(SOFT, None, None))
+        .map(|i| i.ladder)
+        .expect("imports");
     let back_elements = elements(&back);
     assert!(
         back_elements.contains(&Element::Edge { falling: true }),

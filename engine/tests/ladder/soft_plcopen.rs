@@ -4,7 +4,7 @@
 //! behaviour; and a project of our own with word data.
 
 use engine::events::InputValue;
-use engine::formats::plcopen::soft::to_il;
+use engine::formats::plcopen::Document;
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
 use engine::{MachineId, SimTime};
@@ -21,7 +21,9 @@ fn real(name: &str) -> Option<String> {
 
 /// A project loaded on a new soft PLC.
 fn soft(xml: &str) -> Box<dyn Plc> {
-    let program = to_il(xml, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let program = Document::read(xml)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}"));
     let mut plc = new_plc(MachineId::SoftPlc);
     plc.load_text(&program.text).expect("loads");
     plc
@@ -80,7 +82,7 @@ fn fourteen_of_the_real_projects_run_and_the_rest_say_why() {
     let mut ran = Vec::new();
     for name in &names {
         let xml = real(name).expect("readable");
-        match to_il(&xml, None) {
+        match Document::read(&xml).and_then(|document| document.soft_program(None)) {
             Ok(program) => {
                 let mut plc = new_plc(MachineId::SoftPlc);
                 plc.load_text(&program.text)
@@ -240,7 +242,9 @@ const OWN_BLOCK: &str = include_str!("fixtures/soft-own-block.xml");
 
 #[test]
 fn the_projects_own_function_blocks_run_as_blocks() {
-    let program = to_il(OWN_BLOCK, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let program = Document::read(OWN_BLOCK)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}"));
     // The block is kept as a block: a section of its own, called twice.
     assert!(
         program.text.contains("FUNCTION_BLOCK Latch\nVAR_INPUT\n"),

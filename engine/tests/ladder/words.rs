@@ -237,7 +237,8 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
     // and read back onto the soft PLC as written.
     let xml = engine::formats::plcopen::export(&ladder, "words")
         .map_err(|e| TestCaseError::fail(format!("export: {e:?}")))?;
-    let again = engine::formats::plcopen::soft::to_il(&xml, None)
+    let again = engine::formats::plcopen::Document::read(&xml)
+        .and_then(|document| document.soft_program(None))
         .map_err(|e| TestCaseError::fail(format!("{e:?}\n{xml}")))?;
     // And the IL read back as a ladder, compiled again.
     let program =

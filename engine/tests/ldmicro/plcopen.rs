@@ -25,10 +25,13 @@ fn every_real_file_that_runs_goes_out_as_plcopen_and_runs_the_same() {
         let il = compile(&ladder, MachineId::SoftPlc, Options::default()).expect("compiles");
         let xml = engine::formats::plcopen::export(&ladder, "ld")
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
-        let again = engine::formats::plcopen::soft::to_il(&xml, None)
+        let again = engine::formats::plcopen::Document::read(&xml)
+            .and_then(|document| document.soft_program(None))
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
         // Opened in the page, the project is a ladder again.
-        let opened = engine::formats::plcopen::import_for(&xml, Some(MachineId::SoftPlc))
+        let opened = engine::formats::plcopen::Document::read(&xml)
+            .and_then(|document| document.import(Some(MachineId::SoftPlc), None, None))
+            .map(|i| i.ladder)
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));
         let redrawn = compile(&opened, MachineId::SoftPlc, Options::default())
             .unwrap_or_else(|e| panic!("{name}: {e:?}"));

@@ -160,17 +160,23 @@ fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
     let plain = to_ladder(&parse(&program(COUNT)).expect("reads")).expect("lowers");
     let xml_plain = engine::formats::plcopen::export(&plain, "count").expect("exports");
     let mut counted = engine::machines::new_plc(MachineId::SoftPlc);
-    let il_plain = engine::formats::plcopen::soft::to_il(&xml_plain, None).expect("imports");
+    let il_plain = engine::formats::plcopen::Document::read(&xml_plain)
+        .and_then(|document| document.soft_program(None))
+        .expect("imports");
     counted.load_text(&il_plain.text).expect("runs");
     counted.run_until(SimTime::from_millis(35));
     assert_eq!(read_text(counted.as_ref(), "hi"), string("Hi 100%"));
     assert_eq!(counted.read(counted.device("n").expect("n")).as_i64(), 3);
     // Opened as a ladder, the box keeps its text.
-    let opened =
-        engine::formats::plcopen::import_for(&xml, Some(MachineId::SoftPlc)).expect("opens");
+    let opened = engine::formats::plcopen::Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::SoftPlc), None, None))
+        .map(|i| i.ladder)
+        .expect("opens");
     let il_again = compile(&opened, MachineId::SoftPlc, Options::default()).expect("compiles");
     assert!(il_again.contains("FMT := 'n=%04d;'"), "{il_again}");
-    let from_xml = engine::formats::plcopen::soft::to_il(&xml, None).expect("imports");
+    let from_xml = engine::formats::plcopen::Document::read(&xml)
+        .and_then(|document| document.soft_program(None))
+        .expect("imports");
     let mut plc = engine::machines::new_plc(MachineId::SoftPlc);
     plc.load_text(&from_xml.text).expect("runs");
     set(plc.as_mut(), "Xa", 1);

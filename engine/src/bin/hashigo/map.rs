@@ -4,7 +4,7 @@
 //! entries of a `--map` given are kept first. The user edits it and passes
 //! it back as `--map` to compile, run, asm, share or why.
 
-use engine::formats::plcopen::{self, declare, dom};
+use engine::formats::plcopen::Document;
 use engine::MachineId;
 
 use crate::args::Args;
@@ -32,8 +32,7 @@ pub fn map(rest: &[String]) -> Result<(), Problems> {
         );
         return Ok(());
     }
-    let root = dom::parse(&source.text)
-        .map_err(|e| one(format!("{}:{}: {}", source.name, e.line, e.error)))?;
+    let document = Document::read(&source.text).map_err(|errors| source.located(&errors))?;
     let xml = XmlOptions::read(&args)?;
     let given = xml.map.as_ref().map(|(_, m)| m);
     let mut out = format!(
@@ -45,13 +44,11 @@ pub fn map(rest: &[String]) -> Result<(), Problems> {
         out.push_str(&format!("{name},{device}\n"));
     }
     // `--pou NAME`: what that POU uses only.
-    let scope = match args.optional("pou").map_err(one)? {
-        None => &root,
-        Some(wanted) => {
-            plcopen::pou_named(&root, wanted).map_err(|e| one(format!("{}: {e}", source.name)))?
-        }
-    };
-    for (name, device) in declare::propose_in(&root, scope, machine, given) {
+    let pou = args.optional("pou").map_err(one)?;
+    let proposed = document
+        .propose(machine, given, pou)
+        .map_err(|e| one(format!("{}: {e}", source.name)))?;
+    for (name, device) in proposed {
         out.push_str(&format!("{name},{device}\n"));
     }
     print!("{out}");

@@ -3,7 +3,7 @@
 
 use engine::formats::plcopen;
 use engine::formats::plcopen::VarMap;
-use engine::formats::Project;
+use engine::formats::{Document, Kind, Opened, Project};
 use engine::ladder::compile::{compile as compile_ladder, Options};
 use engine::ladder::decompile::decompile_text;
 use engine::machines::new_plc;
@@ -110,38 +110,6 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
     })
 }
 
-/// An LDmicro file as the soft PLC's project: its ladder, and its
-/// `CYCLE=` as the scan period (docs/ldmicro.md). LDmicro files run on
-/// the soft PLC; another `--machine` is refused.
-fn ldmicro_project(
-    source: &SourceFile,
-    flag: Option<MachineId>,
-) -> Result<(Project, Settings), Problems> {
-    if let Some(m) = flag.filter(|m| *m != MachineId::SoftPlc) {
-        return Err(one(format!(
-            "{}: LDmicro files run on the soft PLC (--machine soft-plc), not {}",
-            source.name,
-            m.name()
-        )));
-    }
-    let file = engine::formats::ldmicro::parse(&source.text).map_err(|e| source.located(&e))?;
-    let ladder = engine::formats::ldmicro::to_ladder(&file).map_err(|e| source.located(&e))?;
-    let mut project = Project::new(MachineId::SoftPlc, ladder);
-    let us = file.cycle_us;
-    let scan = if us % 1000 == 0 {
-        format!("{}ms", us / 1000)
-    } else {
-        format!("{us}us")
-    };
-    project.settings.insert("scan".into(), scan.clone());
-    let line = source
-        .text
-        .lines()
-        .position(|l| l.trim_start().starts_with("CYCLE="))
-        .map_or(1, |i| i + 1);
-    Ok((project, vec![("scan".into(), scan, line)]))
-}
-
 /// A PLCopen project as the soft PLC runs it: no map (names stay names,
 /// addresses stay addresses), its drawn bodies as Instruction List;
 /// errors at the file's lines.
@@ -153,8 +121,9 @@ pub fn soft_program(args: &Args, source: &SourceFile) -> Result<String, Problems
         )));
     }
     let pou = args.optional("pou").map_err(one)?;
-    let program =
-        plcopen::soft::to_il(&source.text, pou).map_err(|errors| source.located(&errors))?;
+    let program = plcopen::Document::read(&source.text)
+        .and_then(|document| document.soft_program(pou))
+        .map_err(|errors| source.located(&errors))?;
     for w in &program.warnings {
         eprintln!("warning: {}:{}: {}", source.name, w.line, w.error);
     }
@@ -181,20 +150,22 @@ pub fn compile_source(
     flag: Option<MachineId>,
 ) -> Result<(Project, String, Settings), Problems> {
     let xml = XmlOptions::read(args)?;
-    let (project, settings) = read_project(source, format, flag, &xml)?;
-    let text = compile_project(args, source, &project, &settings)?;
-    Ok((project, text, settings))
+    let (opened, document) = read_project(source, format, flag, &xml)?;
+    let text = compile_project(args, source, &document, &opened)?;
+    Ok((opened.project, text, opened.settings))
 }
 
-/// `project` (read from `source`) compiled for its machine.
+/// `opened` (imported from `document`, read from `source`) compiled for
+/// its machine.
 pub fn compile_project(
     args: &Args,
     source: &SourceFile,
-    project: &Project,
-    settings: &Settings,
+    document: &Document,
+    opened: &Opened,
 ) -> Result<String, Problems> {
+    let project = &opened.project;
     let avr_scan_ms = if project.machine == MachineId::AvrPlc {
-        avr_scan_ms(args, &source.name, settings)?
+        avr_scan_ms(args, &source.name, &opened.settings)?
     } else {
         10
     };
@@ -202,66 +173,66 @@ pub fn compile_project(
     compile_ladder(&project.ladder, project.machine, options).map_err(|errors| {
         // An LDmicro file's ladder is the program's own drawing: its
         // problems go at the file's lines, not at rungs it does not have.
-        if let Ok(file) = engine::formats::ldmicro::parse(&source.text) {
-            return source.located(&engine::formats::ldmicro::locate(&file, errors));
-        }
-        errors
+        let at_rungs: Problems = errors
             .iter()
             .map(|e| format!("{}: {e}", source.name))
-            .collect::<Vec<_>>()
+            .collect();
+        document
+            .locate(errors)
+            .map_or(at_rungs, |located| source.located(&located))
     })
 }
 
 /// The project a ladder file stands for (`--machine` wins over the one a
 /// `.json` project names; a PLCopen file names none), with its settings
-/// and the line of each. It is not compiled: a ladder with wiring errors
-/// is still a ladder to share.
+/// and the line of each, and the file as read. It is not compiled: a
+/// ladder with wiring errors is still a ladder to share.
 pub fn read_project(
     source: &SourceFile,
     format: Format,
     flag: Option<MachineId>,
     xml: &XmlOptions,
-) -> Result<(Project, Settings), Problems> {
-    if format == Format::Ld {
-        return ldmicro_project(source, flag);
+) -> Result<(Opened, Document), Problems> {
+    let kind = match format {
+        Format::Json => Kind::Project,
+        Format::Xml => Kind::PlcOpen,
+        Format::Ld => Kind::LdMicro,
+        Format::Il | Format::Asm => {
+            return Err(one(format!("{}: not a ladder file", source.name)));
+        }
+    };
+    if let Some(m) = flag.filter(|m| kind == Kind::LdMicro && *m != MachineId::SoftPlc) {
+        return Err(one(format!(
+            "{}: LDmicro files run on the soft PLC (--machine soft-plc), not {}",
+            source.name,
+            m.name()
+        )));
     }
-    if format == Format::Json {
-        let mut project = Project::from_json(&source.text).map_err(|e| source.located(&[e]))?;
-        project.machine = flag.unwrap_or(project.machine);
-        let settings = project
-            .settings
-            .iter()
-            .map(|(n, v)| {
-                let line = Project::setting_line(&source.text, n);
-                (n.clone(), v.clone(), line)
-            })
-            .collect();
-        return Ok((project, settings));
+    let map = xml.map.as_ref().filter(|_| kind == Kind::PlcOpen);
+    if kind == Kind::PlcOpen {
+        let machine = flag.ok_or_else(|| {
+            one(format!(
+                "{}: a PLCopen file does not name its machine: give --machine",
+                source.name
+            ))
+        })?;
+        if let Some((file, map)) = map {
+            // A bad device is the map's fault: said at the map's line.
+            map.check(machine).map_err(|errors| file.located(&errors))?;
+        }
     }
-    let machine = flag.ok_or_else(|| {
-        one(format!(
-            "{}: a PLCopen file does not name its machine: give --machine",
-            source.name
-        ))
-    })?;
-    let map = xml.map.as_ref();
-    if let Some((file, map)) = map {
-        // A bad device is the map's fault: said at the map's line.
-        map.check(machine).map_err(|errors| file.located(&errors))?;
-    }
-    let imported = plcopen::import_pou(
-        &source.text,
-        Some(machine),
-        map.map(|(_, m)| m),
-        xml.pou.as_deref(),
-    )
-    .map_err(|errors| source.located(&errors))?;
-    for w in &imported.warnings {
+    let document = Document::open(kind, &source.text).map_err(|e| source.located(&e))?;
+    // A PLCopen file has its --machine (above); the others name theirs.
+    let machine = flag.or(document.machine()).unwrap_or(MachineId::SoftPlc);
+    let opened = document
+        .import(machine, map.map(|(_, m)| m), xml.pou.as_deref())
+        .map_err(|errors| source.located(&errors))?;
+    for w in &opened.warnings {
         eprintln!("warning: {}:{}: {}", source.name, w.line, w.error);
     }
     if let Some((file, _)) = map {
         // Said next to errors, but they do not stop the import.
-        for (name, line) in &imported.unused_map_entries {
+        for (name, line) in &opened.unused_map_entries {
             eprintln!(
                 "warning: {}:{line}: {} is not a variable or block of {}",
                 file.name,
@@ -270,7 +241,7 @@ pub fn read_project(
             );
         }
     }
-    Ok((Project::new(machine, imported.ladder), Vec::new()))
+    Ok((opened, document))
 }
 
 /// How a PLCopen file is read: `--map` (its file and entries) and
@@ -314,7 +285,9 @@ pub fn ladder_project(
 ) -> Result<Project, Problems> {
     Ok(match format {
         Format::Json | Format::Xml | Format::Ld => {
-            read_project(source, format, flag, &XmlOptions::read(args)?)?.0
+            read_project(source, format, flag, &XmlOptions::read(args)?)?
+                .0
+                .project
         }
         Format::Il | Format::Asm => {
             let machine = match flag {

@@ -44,16 +44,17 @@ fn test(rest: &[String]) -> Result<bool, Problems> {
         )));
     }
     let source = SourceFile::read(path).map_err(one)?;
-    let (project, settings) = read_project(&source, format, flag, &Default::default())?;
-    if project.tests.is_empty() {
+    let (opened, document) = read_project(&source, format, flag, &Default::default())?;
+    if opened.project.tests.is_empty() {
         return Err(one(format!(
             "{}: the project has no test cases",
             source.name
         )));
     }
+    let text = compile_project(&args, &source, &document, &opened)?;
+    let (project, settings) = (opened.project, opened.settings);
     let held = project.plant.as_ref().map(|p| (source.name.as_str(), p));
     let plant = PlantOptions::read_alone(&args, held)?;
-    let text = compile_project(&args, &source, &project, &settings)?;
     // Every case is read and the work of all of them counted before any
     // runs (docs/limits.md).
     let prepared = prepare_all(&project.tests).map_err(|e| one(format!("{}: {e}", source.name)))?;

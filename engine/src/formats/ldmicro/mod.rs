@@ -1,7 +1,9 @@
 //! LDmicro's `.ld` ladder files (issue #32; docs/ldmicro.md): read in
-//! every form LDmicro 2.x and 4.x write.
+//! every form LDmicro 2.x and 4.x write, in phases: text → document
+//! ([`parse`](mod@parse) into an [`LdFile`]), document → model
+//! ([`to_ladder`]), model → text ([`export`](fn@export)).
 //!
-//! - [`file`]: the file as read — settings, the variable, I/O and pull-up
+//! - [`file`](mod@file): the file as read — settings, the variable, I/O and pull-up
 //!   lists, rungs of nested series and parallel groups;
 //! - [`element`]: one variant per kind of element line;
 //! - [`parse`](mod@parse): the reader, every problem at its line;

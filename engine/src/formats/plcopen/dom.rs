@@ -211,10 +211,28 @@ fn second_root(root: &Option<Node>, e: &BytesStart, line: usize) -> Result<(), L
     Err(Located::new(line, XmlError::SecondRoot(name)))
 }
 
+thread_local! {
+    /// How many texts [`parse`] has read on this thread.
+    static PARSED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// How many XML texts this thread has parsed so far: a file is read into
+/// a [`super::Document`] once and asked everything else, and the files
+/// worker's tests hold it to that by counting.
+pub fn parsed_count() -> u64 {
+    PARSED.with(std::cell::Cell::get)
+}
+
 /// Parses `text` into its root element; errors name their line. Nesting
 /// past [`MAX_XML_DEPTH`] and text past [`MAX_INPUT_BYTES`] are refused
 /// before they are built, so every walk over the tree is shallow.
 pub fn parse(text: &str) -> Result<Node, Located<XmlError>> {
+    PARSED.with(|n| n.set(n.get().saturating_add(1)));
+    tree(text)
+}
+
+/// [`parse`]'s work, uncounted.
+fn tree(text: &str) -> Result<Node, Located<XmlError>> {
     if text.len() > MAX_INPUT_BYTES {
         return Err(Located::new(1, XmlError::TooLarge(text.len())));
     }

@@ -19,20 +19,6 @@ use crate::MachineId;
 
 use super::error::Errors;
 
-/// Reads the LD bodies of a PLCopen TC6 project (v2.01 or v1.0) into a
-/// ladder. Variables name the machine's devices (`X00`); the compiler
-/// checks them. Anything Hashigo cannot represent is an error at its line,
-/// never dropped.
-pub fn import(text: &str) -> Result<Ladder, Errors> {
-    import_for(text, None)
-}
-
-/// [`import`], also checking every element and device against `machine`
-/// so that an unknown device is reported at its line of the XML.
-pub fn import_for(text: &str, machine: Option<MachineId>) -> Result<Ladder, Errors> {
-    import_mapped(text, machine, None).map(|i| i.ladder)
-}
-
 /// A file imported for a machine, with what is worth saying about it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Imported {
@@ -44,33 +30,25 @@ pub struct Imported {
     pub warnings: Vec<Located<String>>,
 }
 
-/// [`import_for`] reading the file's declarations (issue #18): located
-/// variables map by rule, others through `map` ([`VarMap`]); the
-/// variables' names become device comments.
-pub fn import_mapped(
-    text: &str,
-    machine: Option<MachineId>,
-    map: Option<&VarMap>,
-) -> Result<Imported, Errors> {
-    import_pou(text, machine, map, None)
-}
-
-/// [`import_mapped`] of one POU (`--pou NAME`), or, with `None`, of the
-/// programs the configuration's tasks run (`choose_pous`).
-pub fn import_pou(
-    text: &str,
+/// The project `root` (read by [`super::Document`]) as a ladder for
+/// `machine` (`None`: unchecked), its variables through `map` (issue #18:
+/// located variables map by rule, the names become device comments):
+/// `pou` alone, or the programs the configuration's tasks run
+/// (`choose_pous`). Variables name the machine's devices (`X00`); anything
+/// Hashigo cannot represent is an error at its line, never dropped.
+pub(super) fn ladder_of(
+    root: &Node,
     machine: Option<MachineId>,
     map: Option<&VarMap>,
     pou: Option<&str>,
 ) -> Result<Imported, Errors> {
-    let root = project(text)?;
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
-    let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
-    let bodies = drawn_bodies(&root, &pous, &chosen)?;
+    let chosen = choose_pous(root, &pous, pou, &mut warnings)?;
+    let bodies = drawn_bodies(root, &pous, &chosen)?;
     let names = match machine {
-        Some(m) => declare::names(&root, m, map),
+        Some(m) => declare::names(root, m, map),
         None => Names::none(),
     };
     // Relays no variable uses: where a block's input is needed twice or
@@ -93,7 +71,7 @@ pub fn import_pou(
         })
         .collect();
     let mut ladder = Ladder {
-        variables: super::soft_vars::declared_for(machine, &root, &chosen)?,
+        variables: super::boxes::variables::declared_for(machine, root, &chosen)?,
         ..Ladder::default()
     };
     let mut errors = Vec::new();
@@ -125,8 +103,8 @@ pub fn import_pou(
     if !errors.is_empty() {
         return Err(errors);
     }
-    super::soft_vars::settle(&mut ladder.variables, &carriers, &temps, &names);
-    super::soft_vars::drop_edge_instances(&mut ladder);
+    super::boxes::variables::settle(&mut ladder.variables, &carriers, &temps, &names);
+    super::boxes::variables::drop_edge_instances(&mut ladder);
     name_devices(&mut ladder, &names, helpers, machine, &mut warnings);
     crate::sort::by_key(&mut warnings, |w| w.line);
     Ok(Imported {
@@ -156,7 +134,6 @@ fn joined_sides(
         .collect()
 }
 
-/// The root is a PLCopen project in a namespace this reader knows.
 /// The file read as a PLCopen project (its root), or why not.
 pub(super) fn project(text: &str) -> Result<Node, Errors> {
     let root = dom::parse(text).map_err(|e| vec![Located::new(e.line, e.error.into())])?;
@@ -164,6 +141,7 @@ pub(super) fn project(text: &str) -> Result<Node, Errors> {
     Ok(root)
 }
 
+/// The root is a PLCopen project in a namespace this reader knows.
 fn check_project(root: &Node) -> Result<(), Errors> {
     if root.name != "project" {
         return Err(vec![Located::new(

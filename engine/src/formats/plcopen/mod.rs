@@ -1,15 +1,25 @@
-//! PLCopen TC6 XML, the exchange format of OpenPLC Editor and Beremiz:
-//! LD bodies in and out (docs/ladder.md, "PLCopen XML").
+//! PLCopen TC6 XML, the exchange format of OpenPLC Editor, Beremiz and
+//! CODESYS: drawn (LD, FBD) and IL bodies in, LD out (docs/ladder.md,
+//! "PLCopen XML"), in phases:
 //!
-//! - [`dom`]: the XML read into a small tree that keeps line numbers;
-//! - [`import`](mod@import): power rails, contacts, coils and blocks to rungs;
-//! - [`export`](mod@export): rungs to a project file both tools open.
+//! - text → document: [`dom`] (the XML as a small tree that keeps line
+//!   numbers), [`Document`] (checked as a project, read once, then asked
+//!   for its programs, a map for a machine, its ladder or its soft PLC
+//!   program);
+//! - document → model: [`import`](mod@import) (power rails, contacts,
+//!   coils and blocks to rungs for a machine, lowered for the bit
+//!   machines; `boxes/` draws blocks as the soft PLC's boxes) and
+//!   [`soft`] (the soft PLC's IL, run as drawn);
+//! - model → text: [`export`](mod@export) (rungs to a project file both
+//!   tools open).
 
 mod address;
 mod blocks;
 mod body;
+mod boxes;
 mod compare;
 pub mod declare;
+mod document;
 pub mod dom;
 pub mod error;
 pub mod export;
@@ -25,17 +35,14 @@ mod placing;
 mod read;
 mod rungs;
 pub mod soft;
-mod soft_boxes;
-mod soft_index;
-mod soft_rungs;
-mod soft_vars;
 pub(crate) mod vendor;
 
+pub use boxes::BoxProblem;
 pub use declare::VarMap;
+pub use document::Document;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
-pub use import::{drawn_body, import, import_for, import_mapped, import_pou, pou_named, Imported};
-pub use soft_boxes::BoxProblem;
+pub use import::{drawn_body, pou_named, Imported};
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";

@@ -251,7 +251,7 @@ impl Body {
             }
             // A soft PLC box whose power goes on to nothing: an output box.
             (Element::CounterCoil { .. } | Element::Block(_), true) => {
-                self.output(a, super::soft_boxes::as_output(e), *pos, line);
+                self.output(a, super::boxes::as_output(e), *pos, line);
                 return Ok(true);
             }
             (Element::CounterCoil { device, .. }, false) if env.timer_coils => {

@@ -470,7 +470,9 @@ mod tests {
         let ladder = counter("R", false);
         let xml = plcopen::export(&ladder, "main").expect("exports");
         assert!(xml.contains("_c0_R"), "the network's BOOL is in the export");
-        let il = plcopen::soft::to_il(&xml, None).expect("the soft PLC reads it back");
+        let il = plcopen::Document::read(&xml)
+            .and_then(|document| document.soft_program(None))
+            .expect("the soft PLC reads it back");
         assert!(il.text.contains("_c0_R"));
         let project = crate::formats::Project::new(MachineId::SoftPlc, ladder.clone());
         let link = crate::formats::share::encode(&project).expect("encodes");

@@ -1,11 +1,10 @@
 //! Issue #43, round 3: files — PLCopen projects, the XML reader and `why`
 //! (issue #44's CODESYS vendor elements too).
 
+use engine::formats::plcopen::Document;
 use engine::machines::new_plc;
 use engine::plc::Plc;
 use engine::{MachineId, SimTime};
-
-use engine::formats::plcopen::soft::to_il;
 
 mod plcopen;
 mod vendor;
@@ -122,7 +121,7 @@ fn line_of(xml: &str, needle: &str) -> usize {
 
 /// The soft PLC's errors for `xml`, each as `LINE: message`.
 fn soft_errors(xml: &str) -> Vec<String> {
-    match to_il(xml, None) {
+    match Document::read(xml).and_then(|document| document.soft_program(None)) {
         Ok(p) => panic!("runs:\n{}", p.text),
         Err(errors) => errors
             .iter()
@@ -152,7 +151,9 @@ const LATCH: &str = r#"<pou name="Latch" pouType="functionBlock">
 
 /// Runs `xml` on a new soft PLC.
 fn soft_plc(xml: &str) -> Box<dyn Plc> {
-    let program = to_il(xml, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let program = Document::read(xml)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}"));
     let mut plc = new_plc(MachineId::SoftPlc);
     plc.load_text(&program.text).expect("loads");
     plc

@@ -1,6 +1,7 @@
 //! Issue #43, round 3: il. The soft PLC's Instruction List loader, its
 //! literals and types (and issue #44's literals and block outputs).
 
+use engine::formats::plcopen::Document;
 use engine::iec::{Data, DataType};
 use engine::softplc::Program;
 
@@ -562,8 +563,9 @@ fn a_plcopen_body_reads_a_blocks_output_by_name() {
     use engine::events::InputValue;
     use engine::plc::Command;
     use engine::{MachineId, SimTime};
-    let program =
-        engine::formats::plcopen::soft::to_il(READS_CV, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let program = engine::formats::plcopen::Document::read(READS_CV)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}"));
     assert!(program.text.contains("c0.CV"), "{}", program.text);
     let mut plc = engine::machines::new_plc(MachineId::SoftPlc);
     plc.load_text(&program.text)
@@ -582,13 +584,15 @@ fn a_plcopen_body_reads_a_blocks_output_by_name() {
 
 #[test]
 fn a_box_reading_a_blocks_output_is_exported_and_opened_again() {
-    use engine::formats::plcopen::{export, import_for};
+    use engine::formats::plcopen::export;
     use engine::MachineId;
     let ladder = counter_and_comparison();
     let xml = export(&ladder, "Main").unwrap_or_else(|e| panic!("{e:?}"));
     assert!(xml.contains("<expression>c0.CV</expression>"), "{xml}");
-    let back =
-        import_for(&xml, Some(MachineId::SoftPlc)).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+    let back = Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::SoftPlc), None, None))
+        .map(|i| i.ladder)
+        .unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
     let logic = |l: &engine::ladder::Ladder| {
         engine::ladder::edit::align_outputs(l, 9)
             .logic(MachineId::SoftPlc)
@@ -596,5 +600,7 @@ fn a_box_reading_a_blocks_output_is_exported_and_opened_again() {
     };
     assert_eq!(logic(&back), logic(&ladder));
     // And the project as written runs it.
-    engine::formats::plcopen::soft::to_il(&xml, None).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+    engine::formats::plcopen::Document::read(&xml)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
 }

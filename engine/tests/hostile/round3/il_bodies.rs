@@ -5,7 +5,7 @@
 //! uses the current result, RET in a program, a CAL over several lines.
 
 use engine::events::InputValue;
-use engine::formats::plcopen::soft::to_il;
+use engine::formats::plcopen::Document;
 use engine::iec::{Data, DataType};
 use engine::machines::new_plc;
 use engine::plc::{Command, Plc};
@@ -26,7 +26,9 @@ fn read(plc: &dyn Plc, device: &str) -> i64 {
 
 #[test]
 fn a_plcopen_il_body_reads_the_outputs_of_the_blocks_it_calls() {
-    let program = to_il(BODIES, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let program = Document::read(BODIES)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}"));
     let mut plc = new_plc(MachineId::SoftPlc);
     plc.load_text(&program.text)
         .unwrap_or_else(|e| panic!("{e}\n{}", program.text));
@@ -61,7 +63,9 @@ fn a_plcopen_il_body_reads_the_outputs_of_the_blocks_it_calls() {
 
 #[test]
 fn an_il_bodys_names_and_labels_are_written_as_its_program_has_them() {
-    let program = to_il(BODIES, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let program = Document::read(BODIES)
+        .and_then(|document| document.soft_program(None))
+        .unwrap_or_else(|e| panic!("{e:?}"));
     let text = &program.text;
     // Both programs declare `n`: main's is main_n, in its body too.
     assert!(text.contains("LD main_n\nADD 1\nST main_n"), "{text}");
@@ -81,7 +85,9 @@ fn an_il_bodys_names_and_labels_are_written_as_its_program_has_them() {
 fn an_il_body_error_is_said_at_its_line_of_the_file() {
     let bad = BODIES.replace("LD d0.OUT", "ST t0.IN");
     let line = 1 + bad.lines().position(|l| l == "ST t0.IN").expect("the line");
-    let errors = to_il(&bad, None).expect_err("refused");
+    let errors = Document::read(&bad)
+        .and_then(|document| document.soft_program(None))
+        .expect_err("refused");
     let got: Vec<(usize, String)> = errors
         .iter()
         .map(|e| (e.line, e.error.to_string()))
@@ -255,7 +261,9 @@ fn a_section_word_in_an_il_body_is_refused_at_its_line() {
     // as the program's end: in a body they are said to be out of place.
     let bad = BODIES.replace("over:\nLD TRUE", "over:\nVAR_INPUT\nLD TRUE");
     let line = 1 + bad.lines().position(|l| l == "VAR_INPUT").expect("line");
-    let errors = to_il(&bad, None).expect_err("refused");
+    let errors = Document::read(&bad)
+        .and_then(|document| document.soft_program(None))
+        .expect_err("refused");
     let got: Vec<(usize, String)> = errors
         .iter()
         .map(|e| (e.line, e.error.to_string()))

@@ -2,10 +2,12 @@
 //! lowering. Declared names stay names, located variables keep their
 //! addresses, and each drawn (LD or FBD) body of the programs the tasks
 //! run becomes Instruction List that runs its graph as drawn
-//! ([`emit`]): contacts, coils, every standard function and function
-//! block the soft PLC has, wired ORs, connectors, EN / ENO. What it does
-//! not run (SFC, ST or IL bodies, the project's own function blocks,
-//! vendor blocks) is refused at its line with the reason.
+//! (`emit.rs`): contacts, coils, every standard function and function
+//! block the soft PLC has, wired ORs, connectors, EN / ENO. IL bodies are
+//! copied as written (`il_body.rs`), and the project's own function
+//! blocks become function blocks of the program. What it does not run
+//! (SFC or ST bodies, vendor blocks) is refused at its line with the
+//! reason.
 
 mod declare;
 mod emit;
@@ -17,7 +19,7 @@ mod infer;
 mod order;
 
 use super::dom::Node;
-use super::import::{choose_pous, drawn_body, language, project};
+use super::import::{choose_pous, drawn_body, language};
 use super::ImportError;
 use crate::error::Located;
 use crate::softplc::Program;
@@ -42,16 +44,21 @@ fn soft(errors: Vec<Located<SoftError>>) -> Errors {
         .collect()
 }
 
-/// The programs the tasks run (or `pou` alone) as one soft PLC program
-/// that loads; every problem at its line of the file.
-pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
-    let root = project(text)?;
+/// The programs the tasks run (or `pou` alone) of the project `root`
+/// read from `text` (by [`super::Document`]) as one soft PLC program that
+/// loads; every problem at its line of the file. IL bodies are copied
+/// from the text as written.
+pub(in crate::formats::plcopen) fn il_of(
+    root: &Node,
+    text: &str,
+    pou: Option<&str>,
+) -> Result<SoftProgram, Errors> {
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
     let mut warnings = Vec::new();
-    let chosen = choose_pous(&root, &pous, pou, &mut warnings)?;
+    let chosen = choose_pous(root, &pous, pou, &mut warnings)?;
     let own = own_types(&pous);
-    let mut declarations = declare::declarations(&root, &chosen, &own).map_err(soft)?;
+    let mut declarations = declare::declarations(root, &chosen, &own).map_err(soft)?;
     let blocks = used_blocks(&pous, &declarations, &own).map_err(soft)?;
     // A block the programs use is not skipped, whatever the tasks say.
     warnings.retain(|w| !blocks.iter().any(|(p, _)| p.line == w.line));
@@ -105,7 +112,7 @@ pub fn to_il(text: &str, pou: Option<&str>) -> Result<SoftProgram, Errors> {
         warnings.append(&mut o.warnings);
     }
     warnings.append(&mut out.warnings);
-    let text = Text::of(&sections, &declarations, &out, &root);
+    let text = Text::of(&sections, &declarations, &out, root);
     text.loads(root.line)?;
     Ok(SoftProgram {
         text: text.text,

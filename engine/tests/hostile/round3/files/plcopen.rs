@@ -102,11 +102,8 @@ fn an_own_blocks_input_it_does_not_have_is_refused_at_its_line() {
     );
     // Spelled right, it runs (the pins match in any case, as IEC's names do).
     let fixed = xml.replace("\"rest\"", "\"RESET\"");
-    assert!(
-        to_il(&fixed, None).is_ok(),
-        "{:?}",
-        to_il(&fixed, None).err()
-    );
+    let soft = Document::read(&fixed).and_then(|document| document.soft_program(None));
+    assert!(soft.is_ok(), "{:?}", soft.err());
 }
 
 /// Item 14: a wire from an output pin the block lacks was "a loop of
@@ -305,7 +302,8 @@ fn a_bit_machines_block_input_it_does_not_have_is_refused_at_its_line() {
     let xml = project(&vars, &body, "");
     let map = engine::formats::plcopen::VarMap::parse("c0,C00\nt0,T00\n").expect("a map");
     let errors = refused(
-        engine::formats::plcopen::import_pou(&xml, Some(MachineId::Io86a), Some(&map), None),
+        engine::formats::plcopen::Document::read(&xml)
+            .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None)),
         "misspelled inputs",
     );
     let said: Vec<String> = errors
@@ -354,7 +352,8 @@ fn every_reader_says_a_wire_from_an_output_a_block_lacks() {
     let map = engine::formats::plcopen::VarMap::parse("t0,T00\n").expect("a map");
     let said = |machine| -> Vec<String> {
         let errors = refused(
-            engine::formats::plcopen::import_pou(&xml, Some(machine), Some(&map), None),
+            engine::formats::plcopen::Document::read(&xml)
+                .and_then(|document| document.import(Some(machine), Some(&map), None)),
             "a wire from QQ",
         );
         errors

@@ -70,7 +70,8 @@ fn codesys_network_titles_and_attributes_run_on_the_soft_plc() {
 #[test]
 fn a_codesys_network_title_is_its_rungs_comment() {
     let xml = codesys(ATTRIBUTES);
-    let imported = engine::formats::plcopen::import_pou(&xml, Some(MachineId::Io86a), None, None)
+    let imported = engine::formats::plcopen::Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::Io86a), None, None))
         .unwrap_or_else(|e| panic!("{e:?}"));
     let comments: Vec<&str> = imported
         .ladder
@@ -101,7 +102,8 @@ fn a_vendor_element_carrying_logic_is_refused_at_its_line() {
         );
         assert!(said[0].contains("carries logic"), "{said:?}");
         let errors = refused(
-            engine::formats::plcopen::import_pou(&xml, Some(MachineId::Io86a), None, None),
+            engine::formats::plcopen::Document::read(&xml)
+                .and_then(|document| document.import(Some(MachineId::Io86a), None, None)),
             "refused",
         );
         assert_eq!(errors[0].line, at, "{errors:?}");
@@ -132,7 +134,8 @@ fn forty_codesys_network_titles_each_go_to_their_own_rung() {
     let xml = project(&vars, &body, "")
         .replace("<FBD>", "<LD>")
         .replace("</FBD>", "</LD>");
-    let imported = engine::formats::plcopen::import_pou(&xml, Some(MachineId::SoftPlc), None, None)
+    let imported = engine::formats::plcopen::Document::read(&xml)
+        .and_then(|document| document.import(Some(MachineId::SoftPlc), None, None))
         .unwrap_or_else(|e| panic!("{e:?}"));
     let comments: Vec<String> = imported
         .ladder

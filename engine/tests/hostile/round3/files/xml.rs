@@ -1,8 +1,9 @@
 //! The XML reader (item 9's second root, item 10's attributes).
 
+use engine::formats::plcopen::Document;
 use std::time::{Duration, Instant};
 
-use engine::formats::plcopen::{dom, import};
+use engine::formats::plcopen::dom;
 
 use super::*;
 
@@ -26,7 +27,10 @@ fn two_hundred_thousand_attributes_are_refused_at_their_line_at_once() {
         "<x> has more than 256 attributes (docs/limits.md)"
     );
     // The importers say it at the same line.
-    let errors = import(&xml).expect_err("refused");
+    let errors = Document::read(&xml)
+        .and_then(|document| document.import(None, None, None))
+        .map(|i| i.ladder)
+        .expect_err("refused");
     assert_eq!(errors[0].line, 3, "{errors:?}");
 }
 

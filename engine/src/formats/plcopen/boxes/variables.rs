@@ -4,9 +4,9 @@
 //! configurations, with its type, address, start value, retain and
 //! documentation.
 
-use super::dom::Node;
-use super::error::{Errors, ImportError};
 use crate::error::Located;
+use crate::formats::plcopen::dom::Node;
+use crate::formats::plcopen::error::{Errors, ImportError};
 use crate::ladder::variables::Variable;
 
 /// The interface sections whose variables a POU's body reads and writes
@@ -23,7 +23,7 @@ const SCOPES: [&str; 7] = [
 
 /// [`declared`] when the project is read for the soft PLC; nothing on
 /// the bit machines (their devices have no declarations).
-pub(super) fn declared_for(
+pub(in crate::formats::plcopen) fn declared_for(
     machine: Option<crate::MachineId>,
     root: &Node,
     chosen: &[&Node],
@@ -37,23 +37,23 @@ pub(super) fn declared_for(
 /// The ladder's variables once its bodies are read: without the BOOLs
 /// that carried box input networks now drawn under their boxes (a
 /// PLCopen export declares them), with those made to carry one box's
-/// output into another ([`super::soft_rungs::temp_variables`]).
-pub(super) fn settle(
+/// output into another ([`super::rungs::temp_variables`]).
+pub(in crate::formats::plcopen) fn settle(
     variables: &mut Vec<Variable>,
     carriers: &[String],
-    temps: &[super::body::Temp],
-    names: &super::declare::Names,
+    temps: &[crate::formats::plcopen::body::Temp],
+    names: &crate::formats::plcopen::declare::Names,
 ) {
     variables.retain(|v| {
         let plain = v.address.is_empty() && v.initial.is_empty() && v.comment.is_empty();
         !(plain && carriers.contains(&v.name.to_ascii_uppercase()))
     });
-    variables.extend(super::soft_rungs::temp_variables(temps, names));
+    variables.extend(super::rungs::temp_variables(temps, names));
 }
 
 /// Drops the R_TRIG / F_TRIG instances an export named (`R_TRIG3`) that
 /// nothing names any more: their boxes were drawn as in-line edges.
-pub(super) fn drop_edge_instances(ladder: &mut crate::ladder::Ladder) {
+pub(in crate::formats::plcopen) fn drop_edge_instances(ladder: &mut crate::ladder::Ladder) {
     let mut used = std::collections::HashSet::new();
     for rung in &ladder.rungs {
         for (_, element) in rung.elements() {
@@ -100,7 +100,10 @@ fn declared(root: &Node, chosen: &[&Node]) -> Result<Vec<Variable>, Errors> {
         let retain = section.attr("retain") == Some("true");
         for v in section.all("variable") {
             let (name, address) = (v.attr("name"), v.attr("address"));
-            if super::address::stands_for(name.unwrap_or_default(), address.unwrap_or_default()) {
+            if crate::formats::plcopen::address::stands_for(
+                name.unwrap_or_default(),
+                address.unwrap_or_default(),
+            ) {
                 // Drawn as the address itself.
                 continue;
             }

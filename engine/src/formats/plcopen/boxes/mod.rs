@@ -15,6 +15,15 @@
 //!   own (`_c0_QD`) and read by contacts.
 //! - A data pin wired straight to another block's output has no operand
 //!   to draw: refused at the block, asking for a variable between them.
+//!
+//! The folder is the soft PLC's ladder drawn from a PLCopen project:
+//! [`index`] (a body's first look), this file (blocks as boxes),
+//! [`rungs`] (boxes placed in rungs) and [`variables`] (the
+//! declarations as the ladder's variables).
+
+mod index;
+pub(super) mod rungs;
+pub(super) mod variables;
 
 use super::blocks::pin_of;
 use super::body::{Body, Temp, RAIL};

@@ -1,12 +1,12 @@
 //! The soft PLC's first look at a body (issue #31): which blocks are
 //! boxes and which Boolean gates, and what each box's neighbours take
-//! from it, noted before any element is read ([`super::soft_boxes`]).
+//! from it, noted before any element is read ([`super`]).
 
-use super::body::{BlockOut, Body};
-use super::declare::Names;
-use super::dom::Node;
-use super::parts::negated;
-use super::soft_boxes::boolean_input;
+use super::boolean_input;
+use crate::formats::plcopen::body::{BlockOut, Body};
+use crate::formats::plcopen::declare::Names;
+use crate::formats::plcopen::dom::Node;
+use crate::formats::plcopen::parts::negated;
 use crate::ladder::block::BlockCall;
 
 impl Body {
@@ -14,7 +14,7 @@ impl Body {
     /// elements around them: each block's type, the outVariables fed
     /// from a block's pin, and the block pins other elements take power
     /// from.
-    pub(super) fn index_soft(&mut self, id: &str, n: &Node) {
+    pub(in crate::formats::plcopen) fn index_soft(&mut self, id: &str, n: &Node) {
         if n.name == "inVariable" && is_negated(n) {
             self.negated_variables.insert(id.to_string());
         }
@@ -89,7 +89,7 @@ impl Body {
     }
 
     /// Whether the body is read for the soft PLC (its blocks are boxes).
-    pub(super) fn soft(&self) -> bool {
+    pub(in crate::formats::plcopen) fn soft(&self) -> bool {
         self.machine == Some(crate::MachineId::SoftPlc)
     }
 
@@ -97,7 +97,7 @@ impl Body {
     /// (AND, OR, XOR, NOT on power: lowered to contacts as on every
     /// machine) rather than a word function: no input of it reads a word
     /// variable or a number.
-    pub(super) fn is_gate(&self, n: &Node, ty: &str, names: &Names) -> bool {
+    pub(in crate::formats::plcopen) fn is_gate(&self, n: &Node, ty: &str, names: &Names) -> bool {
         if !matches!(ty, "AND" | "OR" | "XOR" | "NOT") {
             return false;
         }
@@ -120,7 +120,7 @@ impl Body {
             let bool_literal = ["TRUE", "FALSE", "BOOL#TRUE", "BOOL#FALSE"]
                 .iter()
                 .any(|b| b.eq_ignore_ascii_case(text));
-            let literal = !super::parts::is_variable_name(text);
+            let literal = !crate::formats::plcopen::parts::is_variable_name(text);
             !word && (!literal || bool_literal)
         })
     }

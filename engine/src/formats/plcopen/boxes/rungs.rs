@@ -5,8 +5,8 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use super::body::{Body, Temp, RAIL};
-use super::declare::Names;
+use crate::formats::plcopen::body::{Body, Temp, RAIL};
+use crate::formats::plcopen::declare::Names;
 use crate::iec::data::DataType;
 use crate::iec::pins;
 use crate::ladder::block::Shape;
@@ -23,7 +23,7 @@ impl Body {
     /// gives its output where it went (`timer_through_relay`). Every
     /// point learns up to two of the outputs' points it leads to, walking
     /// back from those (linear in the body's size).
-    pub(super) fn shared_boxes(&mut self) -> Vec<usize> {
+    pub(in crate::formats::plcopen) fn shared_boxes(&mut self) -> Vec<usize> {
         let mut back: Vec<Vec<usize>> = vec![Vec::new(); self.parent.len()];
         let mut boxes = Vec::new();
         for i in 0..self.edges.len() {
@@ -64,7 +64,7 @@ impl Body {
     /// always run), each a rung of its own fed by a wire from the rail,
     /// as the editor draws one.
     #[allow(clippy::type_complexity)] // the groups and graph being built, named at the call
-    pub(super) fn boxes_on_rail(
+    pub(in crate::formats::plcopen) fn boxes_on_rail(
         &mut self,
         groups: &mut BTreeMap<usize, Vec<(Element, Pos, usize)>>,
         (edges, lines): (&mut Vec<Edge>, &mut HashMap<Pos, usize>),
@@ -97,7 +97,7 @@ impl Body {
 /// literal, another such variable); an untyped number's DINT otherwise,
 /// which the soft PLC's check of the compiled ladder then holds to.
 /// Each is worked out once (a chain of boxes is linear work).
-pub(super) fn temp_variables(temps: &[Temp], names: &Names) -> Vec<Variable> {
+pub(in crate::formats::plcopen) fn temp_variables(temps: &[Temp], names: &Names) -> Vec<Variable> {
     let mut typing = Typing {
         temps,
         names,
