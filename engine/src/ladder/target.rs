@@ -135,9 +135,9 @@ pub enum ElementError {
     /// A timer or counter set value above K32767.
     PresetTooLarge(u16),
     /// A MINASEC-U device name that does not parse.
-    Minasec(crate::minasec::isa::OperandError),
+    Minasec(crate::operand::MinasecOperandError),
     /// A PLC-IO86A device name that does not parse.
-    Io86a(crate::io86a::isa::OperandError),
+    Io86a(crate::operand::Io86aOperandError),
     /// A device name the machine does not have.
     UnknownDevice {
         /// The machine.
