@@ -1,7 +1,8 @@
 //! The registry: the one place that names every machine. It sits above
-//! both the machine interface (`plc/`, which names none) and the machine
-//! folders, so adding a machine is its folder, one line in [`new_plc`] and
-//! its target table (docs/architecture.md, "Adding a machine").
+//! both the machine interface (`plc/`, which names none), the ladder
+//! (whose [`LadderTarget`] each machine folder implements) and the machine
+//! folders, so adding a machine is its folder, one arm in [`new_plc`] and
+//! one in [`MachineId::target`] (docs/architecture.md, "Adding a machine").
 
 pub use crate::arduino::ArduinoPlc;
 pub use crate::avr::AvrPlc;
@@ -9,6 +10,9 @@ pub use crate::io86a::Io86aPlc;
 pub use crate::minasec::MinasecPlc;
 pub use crate::softplc::SoftPlc;
 
+use crate::ladder::decompile::DecompileError;
+use crate::ladder::grid::Ladder;
+pub use crate::ladder::machine_target::LadderTarget;
 use crate::plc::Plc;
 use crate::MachineId;
 
@@ -21,5 +25,65 @@ pub fn new_plc(id: MachineId) -> Box<dyn Plc> {
         MachineId::AvrPlc => Box::new(AvrPlc::new()),
         MachineId::ArduinoPlc => Box::new(ArduinoPlc::new()),
         MachineId::SoftPlc => Box::new(SoftPlc::new()),
+    }
+}
+
+impl MachineId {
+    /// The machine's ladder target, from its folder: what it can draw,
+    /// its device rules, its compiler and decompiler, how it runs.
+    pub fn target(self) -> &'static dyn LadderTarget {
+        match self {
+            MachineId::MinasecU => &crate::minasec::target::MinasecTarget,
+            MachineId::Io86a => &crate::io86a::target::Io86aTarget,
+            MachineId::AvrPlc => &crate::avr::target::AvrTarget,
+            MachineId::ArduinoPlc => &crate::arduino::target::ArduinoTarget,
+            MachineId::SoftPlc => &crate::softplc::target::SoftTarget,
+        }
+    }
+}
+
+/// A program parsed for its machine.
+pub enum Source<'a> {
+    /// A MINASEC-U listing.
+    Minasec(&'a crate::minasec::Program),
+    /// An AVR PLC program and its scan period in ms (for timer presets).
+    Avr(&'a crate::avr::Program, u32),
+    /// An IO86A listing.
+    Io86a(&'a crate::io86a::Program),
+    /// An Arduino sketch program.
+    Arduino(&'a crate::arduino::Program),
+    /// A soft PLC program.
+    Soft(&'a dyn crate::iec::il::IlSource),
+}
+
+/// The program as a ladder, by its machine's decompiler.
+pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
+    match source {
+        Source::Minasec(p) => crate::minasec::decompile::decompile(p),
+        Source::Avr(p, scan_ms) => crate::avr::decompile::decompile(p, scan_ms),
+        Source::Io86a(p) => crate::io86a::decompile::decompile(p),
+        Source::Arduino(p) => crate::arduino::decompile::decompile(p),
+        Source::Soft(p) => crate::ladder::decompile::il_ladder(p),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_machine_hands_out_its_own_target() {
+        for id in MachineId::ALL {
+            assert_eq!(id.target().id(), id);
+        }
+    }
+
+    #[test]
+    fn only_the_avr_plc_runs_without_a_run_switch() {
+        let fixed: Vec<MachineId> = MachineId::ALL
+            .into_iter()
+            .filter(|m| !m.target().stoppable())
+            .collect();
+        assert_eq!(fixed, [MachineId::AvrPlc]);
     }
 }

@@ -11,6 +11,7 @@
 //! - [`terminal`]: the serial terminal's commands.
 
 pub mod asm;
+pub mod decompile;
 pub mod front;
 pub mod isa;
 pub mod link;
@@ -18,6 +19,7 @@ pub mod machine;
 pub mod peripherals;
 pub mod plc;
 mod scan;
+pub mod target;
 pub mod terminal;
 
 pub use asm::{AsmError, Program};

@@ -12,6 +12,7 @@ pub mod plc;
 pub mod pou;
 pub mod program;
 pub mod scan;
+pub mod target;
 
 pub use plc::SoftPlc;
 pub use program::{LoadError, Program};

@@ -442,11 +442,11 @@ impl Compiler {
             }
             out.push_str(".cseg\n");
         }
+        // Devices are checked (`R3.4`) before they get here.
         let bit = |d: &str| {
-            crate::avr::parse_register_bit(d).map_or_else(
-                || "0,0".to_string(),
-                |b| format!("{},Bit{}", b.register, b.bit),
-            )
+            d.strip_prefix('R')
+                .and_then(|rb| rb.split_once('.'))
+                .map_or_else(|| "0,0".to_string(), |(r, b)| format!("{r},Bit{b}"))
         };
         let mut lines = Vec::with_capacity(self.ops.len());
         // The next line's number (the header is written above).

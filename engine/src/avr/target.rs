@@ -1,0 +1,81 @@
+//! The AVR PLC as a ladder target: register bits R0.0-R31.7, in-line
+//! NOT / edge / TON-TOF-TP boxes counted in scans, compiled by the
+//! accumulator compiler; it has no RUN switch.
+
+use super::{parse_register_bit, Program};
+use crate::ladder::compile::{Mapped, Options};
+use crate::ladder::decompile::TextError;
+use crate::ladder::grid::{Ladder, LadderError};
+use crate::ladder::machine_target::LadderTarget;
+use crate::ladder::net::RungLogic;
+use crate::ladder::target::{Capabilities, ElementError, Role, ALL_COILS, ALL_CONTACTS};
+use crate::ladder::variables::Variable;
+use crate::plc::problems;
+use crate::MachineId;
+
+/// The AVR PLC's ladder target.
+pub struct AvrTarget;
+
+impl LadderTarget for AvrTarget {
+    fn id(&self) -> MachineId {
+        MachineId::AvrPlc
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities {
+            contacts: ALL_CONTACTS,
+            coils: ALL_COILS,
+            inline_boxes: true,
+            pulse_outputs: false,
+            timer_counter_coils: false,
+            data_boxes: false,
+            word_boxes: false,
+            devices: "R0.0-R31.7",
+            starter: ["R0.0", "R0.1", "R1.0"],
+        }
+    }
+
+    fn canonical(&self, device: &str, _role: Role) -> Result<String, ElementError> {
+        let device = device.trim();
+        parse_register_bit(device)
+            .map(|b| b.to_string())
+            .ok_or_else(|| ElementError::UnknownDevice {
+                machine: MachineId::AvrPlc,
+                device: device.to_string(),
+            })
+    }
+
+    fn devices_help(&self) -> &'static str {
+        "avr-plc ladders name bits R0.0-R31.7"
+    }
+
+    fn compile(
+        &self,
+        rungs: &[RungLogic],
+        _variables: &[Variable],
+        options: Options,
+    ) -> Result<Mapped, Vec<LadderError>> {
+        crate::ladder::compile::accumulator::compile_mapped(rungs, MachineId::AvrPlc, options)
+    }
+
+    fn decompile_text(&self, text: &str, options: Options) -> Result<Ladder, TextError> {
+        let scan_ms = options.avr_scan_ms;
+        let p = Program::parse(text, i64::from(scan_ms))
+            .map_err(|e| TextError::Program(problems(e)))?;
+        super::decompile::decompile(&p, scan_ms).map_err(TextError::Decompile)
+    }
+
+    /// Its steps are the `.db` lines of the assembler source.
+    fn is_step(&self, line: &str) -> bool {
+        line.trim().starts_with(".db")
+    }
+
+    fn scan_in_program(&self) -> bool {
+        true
+    }
+
+    /// It runs from power-up: no RUN switch.
+    fn stoppable(&self) -> bool {
+        false
+    }
+}

@@ -1,0 +1,82 @@
+//! The one object-safe trait a machine implements to be a ladder target:
+//! what it can draw, its device rules, compile and decompile, how its
+//! listing counts steps and how it runs. Each machine folder implements
+//! it in its own `target.rs`; the registry (`machines.rs`) hands a
+//! machine's out as `MachineId::target()`. This file names no machine.
+
+use super::compile::{Mapped, Options};
+use super::decompile::TextError;
+use super::element::CoilKind;
+use super::grid::{Ladder, LadderError};
+use super::net::RungLogic;
+use super::target::{Capabilities, ElementError, LackReason, Role};
+use super::variables::Variable;
+use crate::MachineId;
+
+/// One machine as a ladder target: everything the ladder, the editor and
+/// the file formats need to know of it. Object-safe: the registry hands
+/// each machine's out as a `&'static dyn LadderTarget`.
+pub trait LadderTarget: Sync {
+    /// The machine.
+    fn id(&self) -> MachineId;
+    /// What it can draw.
+    fn capabilities(&self) -> Capabilities;
+    /// `device` used as `role` in the machine's canonical spelling, or why
+    /// the machine has no such device.
+    fn canonical(&self, device: &str, role: Role) -> Result<String, ElementError>;
+    /// The machine's own rule for a coil of `kind` on a (canonical)
+    /// `device`, beyond the device being writable.
+    fn check_coil(&self, _kind: CoilKind, _device: &str) -> Result<(), ElementError> {
+        Ok(())
+    }
+    /// Why it has no in-line boxes (when it has none).
+    fn lacks_inline_boxes(&self) -> LackReason {
+        LackReason::Plain
+    }
+    /// Why it has no timer or counter coils (when it has none).
+    fn lacks_timer_counter_coils(&self) -> LackReason {
+        LackReason::UseInlineTimer
+    }
+    /// The largest timer or counter coil set value.
+    fn max_preset(&self) -> u16 {
+        u16::MAX
+    }
+    /// What follows "unknown device X: " in an error.
+    fn devices_help(&self) -> &'static str {
+        self.capabilities().devices
+    }
+    /// Compiles checked rung logic (with the ladder's declared
+    /// `variables`) to the machine's own text, with where each rung and
+    /// leaf went.
+    fn compile(
+        &self,
+        rungs: &[RungLogic],
+        variables: &[Variable],
+        options: Options,
+    ) -> Result<Mapped, Vec<LadderError>>;
+    /// A program in the machine's own text (compiled for `options`' scan
+    /// period where that matters) as a ladder.
+    fn decompile_text(&self, text: &str, options: Options) -> Result<Ladder, TextError>;
+    /// The 0-based line of its compiled `text` where steps begin.
+    fn code_start(&self, _text: &str) -> usize {
+        0
+    }
+    /// Whether a line of its compiled text is a step of the program.
+    fn is_step(&self, line: &str) -> bool {
+        let line = line.trim();
+        !line.is_empty() && !line.starts_with(';')
+    }
+    /// How many steps end every compiled program (an END marker).
+    fn end_steps(&self) -> usize {
+        1
+    }
+    /// Whether its compiled text depends on the scan period
+    /// ([`Options::avr_scan_ms`]): a timer preset counted in scans.
+    fn scan_in_program(&self) -> bool {
+        false
+    }
+    /// Whether the page can stop and start it (a RUN switch or command).
+    fn stoppable(&self) -> bool {
+        true
+    }
+}
