@@ -16,6 +16,10 @@ pub use crate::ladder::machine_target::LadderTarget;
 use crate::plc::Plc;
 use crate::MachineId;
 
+/// The machine that runs other tools' IEC projects as written (a PLCopen
+/// project's own program, an LDmicro file): the soft PLC.
+pub const IEC_MACHINE: MachineId = MachineId::SoftPlc;
+
 /// A new machine of kind `id`, powered on, with no program, ready to run
 /// (MINASEC-U's switch at RUN, the Arduino PLC enabled).
 pub fn new_plc(id: MachineId) -> Box<dyn Plc> {

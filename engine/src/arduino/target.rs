@@ -3,6 +3,7 @@
 
 use super::isa::{io_name, parse_io};
 use super::{Chip, Program};
+use crate::ladder::compile::stack::{self, Dialect};
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::ContactKind;
@@ -66,7 +67,7 @@ impl LadderTarget for ArduinoTarget {
         _variables: &[Variable],
         _options: Options,
     ) -> Result<Mapped, Vec<LadderError>> {
-        crate::ladder::compile::stack::compile_mapped(rungs, MachineId::ArduinoPlc)
+        stack::compile_mapped(rungs, self.id(), Dialect::Arduino)
     }
 
     fn decompile_text(&self, text: &str, _options: Options) -> Result<Ladder, TextError> {

@@ -3,6 +3,7 @@
 //! accumulator compiler; it has no RUN switch.
 
 use super::{parse_register_bit, Program};
+use crate::ladder::compile::accumulator::{self, Dialect};
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::grid::{Ladder, LadderError};
@@ -55,7 +56,7 @@ impl LadderTarget for AvrTarget {
         _variables: &[Variable],
         options: Options,
     ) -> Result<Mapped, Vec<LadderError>> {
-        crate::ladder::compile::accumulator::compile_mapped(rungs, MachineId::AvrPlc, options)
+        accumulator::compile_mapped(rungs, self.id(), Dialect::Avr, options)
     }
 
     fn decompile_text(&self, text: &str, options: Options) -> Result<Ladder, TextError> {

@@ -4,6 +4,7 @@
 
 use super::isa::{parse_bit, parse_word, K_MAX};
 use super::{Bit, Program, Word};
+use crate::ladder::compile::stack::{self, Dialect};
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::CoilKind;
@@ -56,7 +57,7 @@ impl LadderTarget for Io86aTarget {
         _variables: &[Variable],
         _options: Options,
     ) -> Result<Mapped, Vec<LadderError>> {
-        crate::ladder::compile::stack::compile_mapped(rungs, MachineId::Io86a)
+        stack::compile_mapped(rungs, self.id(), Dialect::Io86a)
     }
 
     fn decompile_text(&self, text: &str, _options: Options) -> Result<Ladder, TextError> {

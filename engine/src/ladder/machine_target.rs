@@ -2,7 +2,7 @@
 //! what it can draw, its device rules, compile and decompile, how its
 //! listing counts steps and how it runs. Each machine folder implements
 //! it in its own `target.rs`; the registry (`machines.rs`) hands a
-//! machine's out as `MachineId::target()`. This file names no machine.
+//! machine's out as a machine id's `target()`. This file names no machine.
 
 use super::compile::{Mapped, Options};
 use super::decompile::TextError;
@@ -78,5 +78,10 @@ pub trait LadderTarget: Sync {
     /// Whether the page can stop and start it (a RUN switch or command).
     fn stoppable(&self) -> bool {
         true
+    }
+    /// Whether it steps clock by clock (MINASEC-U's logic ICs): the page
+    /// offers a clock step and the view inside its CPU.
+    fn steps_clocks(&self) -> bool {
+        false
     }
 }

@@ -2,7 +2,7 @@
 //! devices play, and the checks of a drawn element against them. The
 //! machine's own rules come from its ladder target
 //! ([`super::machine_target::LadderTarget`], implemented in its folder and
-//! handed out by the registry's `MachineId::target()`), so this layer
+//! handed out by the registry as a machine id's `target()`), so this layer
 //! names no machine. The editor's palette, the validator and the
 //! compilers all ask the target.
 

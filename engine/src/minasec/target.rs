@@ -4,6 +4,7 @@
 
 use super::isa::Device;
 use super::{Address, Program};
+use crate::ladder::compile::accumulator::{self, Dialect};
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::CoilKind;
@@ -62,7 +63,7 @@ impl LadderTarget for MinasecTarget {
         _variables: &[Variable],
         options: Options,
     ) -> Result<Mapped, Vec<LadderError>> {
-        crate::ladder::compile::accumulator::compile_mapped(rungs, MachineId::MinasecU, options)
+        accumulator::compile_mapped(rungs, self.id(), Dialect::Minasec, options)
     }
 
     fn decompile_text(&self, text: &str, _options: Options) -> Result<Ladder, TextError> {
@@ -73,6 +74,10 @@ impl LadderTarget for MinasecTarget {
     /// Its listing has no END step: the program counter wraps.
     fn end_steps(&self) -> usize {
         0
+    }
+
+    fn steps_clocks(&self) -> bool {
+        true
     }
 }
 
