@@ -83,6 +83,16 @@ mod tests {
     }
 
     #[test]
+    fn share_codes_are_the_machines_own_and_distinct() {
+        let codes: Vec<u8> = MachineId::ALL
+            .into_iter()
+            .map(|m| m.target().share_code())
+            .collect();
+        // Links given out before the targets name the machines so.
+        assert_eq!(codes, [0, 1, 2, 3, 4]);
+    }
+
+    #[test]
     fn only_the_avr_plc_runs_without_a_run_switch() {
         let fixed: Vec<MachineId> = MachineId::ALL
             .into_iter()

@@ -23,6 +23,10 @@ impl LadderTarget for ArduinoTarget {
         MachineId::ArduinoPlc
     }
 
+    fn share_code(&self) -> u8 {
+        3
+    }
+
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             contacts: &[ContactKind::No, ContactKind::Nc],

@@ -22,6 +22,10 @@ impl LadderTarget for AvrTarget {
         MachineId::AvrPlc
     }
 
+    fn share_code(&self) -> u8 {
+        2
+    }
+
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             contacts: ALL_CONTACTS,

@@ -25,6 +25,10 @@ impl LadderTarget for Io86aTarget {
         MachineId::Io86a
     }
 
+    fn share_code(&self) -> u8 {
+        1
+    }
+
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             contacts: ALL_CONTACTS,

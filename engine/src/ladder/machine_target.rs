@@ -19,6 +19,9 @@ use crate::MachineId;
 pub trait LadderTarget: Sync {
     /// The machine.
     fn id(&self) -> MachineId;
+    /// Its byte in a share link (never reused: links already given out
+    /// name the machine by it).
+    fn share_code(&self) -> u8;
     /// What it can draw.
     fn capabilities(&self) -> Capabilities;
     /// `device` used as `role` in the machine's canonical spelling, or why

@@ -27,6 +27,10 @@ impl LadderTarget for MinasecTarget {
         MachineId::MinasecU
     }
 
+    fn share_code(&self) -> u8 {
+        0
+    }
+
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             contacts: ALL_CONTACTS,

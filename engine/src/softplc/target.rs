@@ -21,6 +21,10 @@ impl LadderTarget for SoftTarget {
         MachineId::SoftPlc
     }
 
+    fn share_code(&self) -> u8 {
+        4
+    }
+
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             contacts: ALL_CONTACTS,
