@@ -13,8 +13,22 @@ pub use crate::softplc::SoftPlc;
 use crate::ladder::decompile::DecompileError;
 use crate::ladder::grid::Ladder;
 pub use crate::ladder::machine_target::LadderTarget;
-use crate::plc::Plc;
+use crate::plc::example::{joined, total};
+use crate::plc::{Example, Plc};
 use crate::MachineId;
+
+/// Every machine's example programs, machine by machine (each folder's
+/// `examples.rs`, in [`MachineId::ALL`]'s order).
+pub const EXAMPLES: &[Example] =
+    &joined::<{ total(EXAMPLE_LISTS) }>(EXAMPLE_LISTS, crate::minasec::examples::EXAMPLES[0]);
+
+const EXAMPLE_LISTS: &[&[Example]] = &[
+    crate::minasec::examples::EXAMPLES,
+    crate::io86a::examples::EXAMPLES,
+    crate::avr::examples::EXAMPLES,
+    crate::arduino::examples::EXAMPLES,
+    crate::softplc::examples::EXAMPLES,
+];
 
 /// The machine that runs other tools' IEC projects as written (a PLCopen
 /// project's own program, an LDmicro file): the soft PLC.
@@ -90,6 +104,18 @@ mod tests {
             .collect();
         // Links given out before the targets name the machines so.
         assert_eq!(codes, [0, 1, 2, 3, 4]);
+    }
+
+    #[test]
+    fn the_examples_come_machine_by_machine_each_for_its_own() {
+        let order: Vec<MachineId> = EXAMPLES.iter().map(|e| e.machine).collect();
+        let mut sorted = order.clone();
+        sorted.sort_by_key(|m| MachineId::ALL.iter().position(|a| a == m));
+        assert_eq!(order, sorted);
+        assert_eq!(EXAMPLES.len(), 12);
+        assert!(crate::io86a::examples::EXAMPLES
+            .iter()
+            .all(|e| e.machine == MachineId::Io86a));
     }
 
     #[test]

@@ -7,6 +7,7 @@
 //! - [`monitor`]: the serial monitor's commands.
 
 pub mod decompile;
+pub mod examples;
 pub mod isa;
 pub mod machine;
 pub mod monitor;

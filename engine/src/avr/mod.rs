@@ -7,6 +7,7 @@
 
 pub mod asm;
 pub mod decompile;
+pub mod examples;
 pub mod machine;
 pub mod plc;
 pub mod program;

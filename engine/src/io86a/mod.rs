@@ -12,6 +12,7 @@
 
 pub mod asm;
 pub mod decompile;
+pub mod examples;
 pub mod front;
 pub mod isa;
 pub mod link;

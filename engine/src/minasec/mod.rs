@@ -12,6 +12,7 @@ pub mod control;
 pub mod counter;
 pub mod cpu;
 pub mod decompile;
+pub mod examples;
 mod fast;
 pub mod isa;
 pub mod machine;

@@ -7,6 +7,7 @@
 //! ([`program`]), the scan that runs it ([`scan`], [`machine`]) and its
 //! place behind `Plc` ([`plc`]); docs/soft-plc.md states its semantics.
 
+pub mod examples;
 pub mod machine;
 pub mod plc;
 pub mod pou;
