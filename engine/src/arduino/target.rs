@@ -23,6 +23,10 @@ impl LadderTarget for ArduinoTarget {
         MachineId::ArduinoPlc
     }
 
+    fn product_name(&self) -> &'static str {
+        "Arduino PLC"
+    }
+
     fn share_code(&self) -> u8 {
         3
     }

@@ -22,6 +22,10 @@ impl LadderTarget for AvrTarget {
         MachineId::AvrPlc
     }
 
+    fn product_name(&self) -> &'static str {
+        "AVR PLC"
+    }
+
     fn share_code(&self) -> u8 {
         2
     }

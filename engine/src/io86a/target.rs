@@ -25,6 +25,10 @@ impl LadderTarget for Io86aTarget {
         MachineId::Io86a
     }
 
+    fn product_name(&self) -> &'static str {
+        "PLC-IO86A"
+    }
+
     fn share_code(&self) -> u8 {
         1
     }

@@ -19,6 +19,8 @@ use crate::MachineId;
 pub trait LadderTarget: Sync {
     /// The machine.
     fn id(&self) -> MachineId;
+    /// Its product name, as its maker writes it (the page's labels).
+    fn product_name(&self) -> &'static str;
     /// Its byte in a share link (never reused: links already given out
     /// name the machine by it).
     fn share_code(&self) -> u8;

@@ -27,6 +27,10 @@ impl LadderTarget for MinasecTarget {
         MachineId::MinasecU
     }
 
+    fn product_name(&self) -> &'static str {
+        "MINASEC-U"
+    }
+
     fn share_code(&self) -> u8 {
         0
     }

@@ -21,6 +21,10 @@ impl LadderTarget for SoftTarget {
         MachineId::SoftPlc
     }
 
+    fn product_name(&self) -> &'static str {
+        "Soft PLC (IEC 61131-3)"
+    }
+
     fn share_code(&self) -> u8 {
         4
     }
