@@ -8,7 +8,7 @@ use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::ContactKind;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::LadderTarget;
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::{Capabilities, ElementError, LackReason, Role, ALL_COILS};
 use crate::ladder::variables::Variable;
@@ -67,6 +67,23 @@ impl LadderTarget for ArduinoTarget {
 
     fn devices_help(&self) -> &'static str {
         "arduino-plc has X000-X005 and Y000-Y005"
+    }
+
+    fn located_bit(&self, area: char, n: u32) -> Result<String, LocatedError> {
+        match area {
+            'I' => Ok(format!("X{n:03}")),
+            'Q' => Ok(format!("Y{n:03}")),
+            'M' => Err(LocatedError::NoRelays),
+            _ => Err(LocatedError::NotThere),
+        }
+    }
+
+    fn pools(&self) -> DevicePools {
+        DevicePools {
+            inputs: DevicePools::range("X", 3, 0..6),
+            outputs: DevicePools::range("Y", 3, 0..6),
+            ..DevicePools::default()
+        }
     }
 
     fn compile(

@@ -7,12 +7,18 @@ use crate::ladder::compile::accumulator::{self, Dialect};
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::LadderTarget;
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::{Capabilities, ElementError, Role, ALL_COILS, ALL_CONTACTS};
 use crate::ladder::variables::Variable;
 use crate::plc::problems;
 use crate::MachineId;
+
+/// The registers a located input, output or relay stands for (see
+/// `located_bit`).
+const INPUTS: std::ops::Range<u8> = 4..5;
+const OUTPUTS: std::ops::Range<u8> = 5..6;
+const RELAYS: std::ops::Range<u8> = 6..16;
 
 /// The AVR PLC's ladder target.
 pub struct AvrTarget;
@@ -56,6 +62,41 @@ impl LadderTarget for AvrTarget {
 
     fn devices_help(&self) -> &'static str {
         "avr-plc ladders name bits R0.0-R31.7"
+    }
+
+    /// It has no fixed inputs or outputs (any register bit may be
+    /// either); Hashigo follows the seed's own program, inputs in R4 and
+    /// coils in R5, relays after them, and leaves R16-R25 to the
+    /// compiler's temporaries: `%IX0.n` → R4.n, `%QX0.n` → R5.n,
+    /// `%MXb.n` → R(6+b).n up to R15.7.
+    fn located_bit(&self, area: char, n: u32) -> Result<String, LocatedError> {
+        let (registers, what) = match area {
+            'I' => (INPUTS, "inputs"),
+            'Q' => (OUTPUTS, "outputs"),
+            'M' => (RELAYS, "relays"),
+            _ => return Err(LocatedError::NotThere),
+        };
+        if n >= registers.len() as u32 * 8 {
+            let (first, last) = (registers.start, registers.end - 1);
+            return Err(LocatedError::Past { what, first, last });
+        }
+        Ok(format!("R{}.{}", registers.start as u32 + n / 8, n % 8))
+    }
+
+    /// [`Self::located_bit`]'s registers; timers are named in-line boxes
+    /// (an instance keeps its name), and there are no counters.
+    fn pools(&self) -> DevicePools {
+        let bits = |registers: std::ops::Range<u8>| -> Vec<String> {
+            registers
+                .flat_map(|r| (0..8).map(move |b| format!("R{r}.{b}")))
+                .collect()
+        };
+        DevicePools {
+            inputs: bits(INPUTS),
+            outputs: bits(OUTPUTS),
+            relays: bits(RELAYS),
+            ..DevicePools::default()
+        }
     }
 
     fn compile(

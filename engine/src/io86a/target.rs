@@ -9,7 +9,7 @@ use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::CoilKind;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::LadderTarget;
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::Drivable;
 use crate::ladder::target::{Capabilities, ElementError, Role, ALL_COILS, ALL_CONTACTS};
@@ -57,6 +57,36 @@ impl LadderTarget for Io86aTarget {
 
     fn max_preset(&self) -> u16 {
         K_MAX as u16
+    }
+
+    fn located_bit(&self, area: char, n: u32) -> Result<String, LocatedError> {
+        match area {
+            'I' => Ok(format!("X{n:02}")),
+            'Q' => Ok(format!("Y{n:02}")),
+            'M' => Ok(format!("M{n:02}")),
+            _ => Err(LocatedError::NotThere),
+        }
+    }
+
+    /// It reads X04 / X05 as analog words into D06 / D07.
+    fn located_word(&self, area: char, rest: &str) -> Option<String> {
+        match (area, rest) {
+            ('I', "W0") => Some("D06".to_string()),
+            ('I', "W1") => Some("D07".to_string()),
+            _ => None,
+        }
+    }
+
+    fn pools(&self) -> DevicePools {
+        let range = DevicePools::range;
+        DevicePools {
+            inputs: range("X", 2, 0..8),
+            outputs: range("Y", 2, 0..6),
+            // M56-M63 are the special relays.
+            relays: range("M", 2, 0..56),
+            timers: range("T", 2, 0..32),
+            counters: range("C", 2, 0..8),
+        }
     }
 
     fn compile(

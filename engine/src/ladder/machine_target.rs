@@ -13,6 +13,48 @@ use super::target::{Capabilities, ElementError, LackReason, Role};
 use super::variables::Variable;
 use crate::MachineId;
 
+/// A machine's devices by kind, in the order a PLCopen import proposes
+/// them for the names a project leaves unlocated.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct DevicePools {
+    /// Inputs.
+    pub inputs: Vec<String>,
+    /// Outputs.
+    pub outputs: Vec<String>,
+    /// Internal relays.
+    pub relays: Vec<String>,
+    /// Timers.
+    pub timers: Vec<String>,
+    /// Counters.
+    pub counters: Vec<String>,
+}
+
+impl DevicePools {
+    /// `prefix` and each of `ns` in `width` digits: `X00` … `X07`.
+    pub fn range(prefix: &str, width: usize, ns: std::ops::Range<u32>) -> Vec<String> {
+        ns.map(|n| format!("{prefix}{n:0width$}")).collect()
+    }
+}
+
+/// Why a located bit (`%IX0.3`) has no device on a machine, before its
+/// device rules are asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LocatedError {
+    /// The machine has no such area.
+    NotThere,
+    /// The machine has no internal relays (`%MX`).
+    NoRelays,
+    /// Past the registers the machine gives the area.
+    Past {
+        /// inputs, outputs or relays.
+        what: &'static str,
+        /// The first register.
+        first: u8,
+        /// The last register.
+        last: u8,
+    },
+}
+
 /// One machine as a ladder target: everything the ladder, the editor and
 /// the file formats need to know of it. Object-safe: the registry hands
 /// each machine's out as a `&'static dyn LadderTarget`.
@@ -79,6 +121,26 @@ pub trait LadderTarget: Sync {
     /// ([`Options::avr_scan_ms`]): a timer preset counted in scans.
     fn scan_in_program(&self) -> bool {
         false
+    }
+    /// The device a located bit stands for (`area` `I`, `Q` or `M`; bit
+    /// `n` = byte × 8 + bit), before its device rules check it.
+    fn located_bit(&self, _area: char, _n: u32) -> Result<String, LocatedError> {
+        Err(LocatedError::NotThere)
+    }
+    /// The device a located word stands for (`area` then the rest:
+    /// `I`, `W0`), if the machine reads one.
+    fn located_word(&self, _area: char, _rest: &str) -> Option<String> {
+        None
+    }
+    /// Its devices by kind, for an import's proposals (none: its
+    /// variables keep their names).
+    fn pools(&self) -> DevicePools {
+        DevicePools::default()
+    }
+    /// The bits an import may take to hold a network's power, highest
+    /// first (as `Vec::pop` gives them): its relays.
+    fn spare_bits(&self) -> Vec<String> {
+        self.pools().relays
     }
     /// Whether the page can stop and start it (a RUN switch or command).
     fn stoppable(&self) -> bool {

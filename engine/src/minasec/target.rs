@@ -9,7 +9,7 @@ use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::CoilKind;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::LadderTarget;
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::Latch;
 use crate::ladder::target::{
@@ -63,6 +63,27 @@ impl LadderTarget for MinasecTarget {
 
     fn lacks_timer_counter_coils(&self) -> LackReason {
         LackReason::MinasecPanelTimers
+    }
+
+    fn located_bit(&self, area: char, n: u32) -> Result<String, LocatedError> {
+        match area {
+            'I' => Ok(format!("X{n:02}")),
+            'Q' => Ok(format!("Y{n:02}")),
+            // Its relays are M00-M07 and M10-M13.
+            'M' => Ok(format!("M{}{}", n / 8, n % 8)),
+            _ => Err(LocatedError::NotThere),
+        }
+    }
+
+    fn pools(&self) -> DevicePools {
+        let range = DevicePools::range;
+        DevicePools {
+            inputs: range("X", 2, 0..8),
+            outputs: range("Y", 2, 0..8),
+            relays: [range("M", 2, 0..8), range("M1", 1, 0..4)].concat(),
+            timers: vec!["T0".into(), "T1".into()],
+            counters: vec!["C0".into()],
+        }
     }
 
     fn compile(

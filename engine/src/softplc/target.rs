@@ -59,6 +59,14 @@ impl LadderTarget for SoftTarget {
         "soft-plc ladders name bits as %IX0.0, %QX0.0, %MX0.0 or a variable name"
     }
 
+    /// Any name is a BOOL: helpers of its own, `_h0` popped first.
+    fn spare_bits(&self) -> Vec<String> {
+        (0..crate::limits::MAX_SOFT_HELPERS)
+            .rev()
+            .map(|n| format!("_h{n}"))
+            .collect()
+    }
+
     /// The IL, then what the soft PLC says of it when it loads it (a type
     /// that does not fit), each problem at its cell.
     fn compile(
