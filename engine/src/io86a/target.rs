@@ -77,6 +77,11 @@ impl LadderTarget for Io86aTarget {
         }
     }
 
+    /// M57 (ON) is always on.
+    fn always_on(&self) -> Option<&'static str> {
+        Some("M57")
+    }
+
     fn pools(&self) -> DevicePools {
         let range = DevicePools::range;
         DevicePools {

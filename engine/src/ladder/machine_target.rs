@@ -142,6 +142,11 @@ pub trait LadderTarget: Sync {
     fn spare_bits(&self) -> Vec<String> {
         self.pools().relays
     }
+    /// Its always-on relay, if it has one (IO86A's M57): what a PLCopen
+    /// import wires to the left rail where a gate or box needs power.
+    fn always_on(&self) -> Option<&'static str> {
+        None
+    }
     /// Whether the page can stop and start it (a RUN switch or command).
     fn stoppable(&self) -> bool {
         true

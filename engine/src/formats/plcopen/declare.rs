@@ -268,7 +268,7 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
         }
         // Hashigo's own export names a bare soft PLC address `IX0_0`.
         let address = v.attr("address").unwrap_or_default();
-        if machine == MachineId::SoftPlc && super::address::stands_for(name, address) {
+        if machine.target().capabilities().word_boxes && super::address::stands_for(name, address) {
             let device = Meaning::Device(address.trim().to_string(), None);
             let key = name.to_ascii_lowercase();
             names.by_name.insert(key, (name.to_string(), device));
@@ -414,7 +414,9 @@ fn propose_instances(
         }
         // IO86A's timers are on-delay: a TOF or TP also holds its output
         // in a relay (`T01+M20`).
-        if machine == MachineId::Io86a && matches!(ty, BlockKind::Tof | BlockKind::Tp) {
+        if machine.target().capabilities().timer_counter_coils
+            && matches!(ty, BlockKind::Tof | BlockKind::Tp)
+        {
             let timer = next(&pools.timers, taken);
             let relay = next(&pools.relays, taken);
             if let (Some(t), Some(m)) = (timer, relay) {
