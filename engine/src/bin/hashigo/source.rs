@@ -193,7 +193,7 @@ pub fn compile_project(
     project: &Project,
     settings: &Settings,
 ) -> Result<String, Problems> {
-    let avr_scan_ms = if project.machine == MachineId::AvrPlc {
+    let avr_scan_ms = if project.machine.target().scan_in_program() {
         avr_scan_ms(args, &source.name, settings)?
     } else {
         10
