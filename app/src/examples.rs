@@ -8,21 +8,19 @@ use crate::workspaces::Workspaces;
 
 /// Opens example `id` of `machine` as a ladder in its editor (the old
 /// ladder is one undo away; the text pane follows the ladder while it
-/// holds the ladder's listing). MINASEC-U's test program also goes to
-/// the board as before (`machines::minasec::examples`).
+/// holds the ladder's listing). A machine's own panel may take it too
+/// (MINASEC-U's board, `Workspaces::open_example_on_panel`).
 pub fn open(machine: MachineId, id: &str, workspaces: Workspaces) {
     let ladder = workspaces.ladders.of(machine);
     let Some(example) = engine::examples::examples_of(machine).find(|e| e.id == id) else {
         return;
     };
-    if machine == MachineId::MinasecU {
-        crate::machines::minasec::examples::open(workspaces.minasec, id);
-    }
+    let on_panel = workspaces.open_example_on_panel(machine, id);
     match ladder.ladder_of_text(example.text) {
         Ok(new) => {
             ladder.apply(Edit::Replace { ladder: new });
             ladder.clean_slate();
-            if machine == MachineId::MinasecU {
+            if on_panel {
                 // The pane holds the example's own text: the same program.
                 ladder.adopt_text();
             }

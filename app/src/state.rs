@@ -20,15 +20,10 @@ pub fn put<T: PartialEq + Send + Sync + 'static>(signal: RwSignal<T>, value: T) 
 /// `machine` select, storage and the CLI share their names).
 pub type MachineKind = engine::MachineId;
 
-/// A machine's product name, as its maker writes it.
+/// A machine's product name, as its maker writes it (its ladder target
+/// says it).
 pub fn product_name(kind: MachineKind) -> &'static str {
-    match kind {
-        MachineKind::MinasecU => "MINASEC-U",
-        MachineKind::Io86a => "PLC-IO86A",
-        MachineKind::ArduinoPlc => "Arduino PLC",
-        MachineKind::AvrPlc => "AVR PLC",
-        MachineKind::SoftPlc => "Soft PLC (IEC 61131-3)",
-    }
+    kind.target().product_name()
 }
 
 /// The page's own state, shared by every workspace; `Copy`, provided as

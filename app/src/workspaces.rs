@@ -177,6 +177,19 @@ impl Workspaces {
         .into_any()
     }
 
+    /// Opens example `id` on the machine's own panel too, if the panel
+    /// takes examples (MINASEC-U's board loads its test program as
+    /// before, `machines::minasec::examples`); whether it did.
+    pub fn open_example_on_panel(&self, kind: MachineKind, id: &str) -> bool {
+        match kind {
+            MachineKind::MinasecU => {
+                crate::machines::minasec::examples::open(self.minasec, id);
+                true
+            }
+            _ => false,
+        }
+    }
+
     /// The machine's own panel: its board, lamps and switches, consoles.
     fn panel_view(&self, kind: MachineKind) -> AnyView {
         match kind {

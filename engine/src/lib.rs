@@ -19,6 +19,7 @@ pub mod limits;
 pub mod machine_id;
 pub mod machines;
 pub mod minasec;
+pub mod operand;
 pub mod plant;
 pub mod plc;
 pub mod record;

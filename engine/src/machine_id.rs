@@ -35,8 +35,7 @@ impl MachineId {
     ];
 
     /// The four small PLCs of the seed documents: every machine but the
-    /// soft PLC (the page offers these until it has the soft PLC's
-    /// workspace, issue #31).
+    /// soft PLC.
     pub const KITS: [MachineId; 4] = [
         MachineId::MinasecU,
         MachineId::Io86a,

@@ -7,7 +7,6 @@
 //! clock (`clock.rs`) shows the machine's state, whatever started it.
 
 use engine::plc::Command;
-use engine::MachineId;
 use leptos::prelude::*;
 
 use crate::editor::LadderCtx;
@@ -29,7 +28,7 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
         move || ctx.live.monitor.get() && ctx.live.running.get() && !ctx.live.powered_off.get();
     let run = move |_| {
         if runs() {
-            if kind == MachineId::AvrPlc {
+            if !kind.target().stoppable() {
                 // No RUN switch: Stop is the power switch.
                 operate(&|plc| {
                     let _ = plc.apply(Command::PowerCycle);
@@ -82,7 +81,7 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
                 aria-label=move || t().step_instr on:click=move |_| step(1)>
                 <span aria-hidden="true">"↧"</span><span class="wide-only">{move || t().step_instr_short}</span>
             </button>
-            {(kind == MachineId::MinasecU).then(|| view! {
+            {kind.target().steps_clocks().then(|| view! {
                 <button type="button" class="icon-button" data-testid="step-clock" title=move || t().step_clock
                     aria-label=move || t().step_clock on:click=move |_| step(2)>
                     <span aria-hidden="true">"◷"</span><span class="wide-only">{move || t().step_clock_short}</span>

@@ -67,8 +67,8 @@ impl Tool {
     /// soft PLC's, the CPU view MINASEC-U's.
     pub fn on(self, machine: engine::MachineId) -> bool {
         match self {
-            Tool::Variables => machine == engine::MachineId::SoftPlc,
-            Tool::Cpu => machine == engine::MachineId::MinasecU,
+            Tool::Variables => machine.target().capabilities().word_boxes,
+            Tool::Cpu => machine.target().steps_clocks(),
             _ => true,
         }
     }

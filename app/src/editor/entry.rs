@@ -120,7 +120,7 @@ fn placeholder(ctx: LadderCtx) -> Option<&'static str> {
         .panes
         .entry
         .with(|e| e.as_ref().is_some_and(|e| e.kind == EntryKind::Instruction));
-    (instruction && ctx.machine == engine::MachineId::SoftPlc)
+    (instruction && ctx.machine.target().capabilities().word_boxes)
         .then(|| ctx.page.lang.get().files().box_usage)
 }
 

@@ -83,10 +83,7 @@ impl Needs {
             Needs::Pulses => (caps.pulse_outputs, ("PLS/PLF outputs", "PLS/PLF 出力")),
             Needs::DataBoxes => (caps.data_boxes, ("data boxes", "データ命令")),
             Needs::InlineBoxes(what) => (caps.inline_boxes, what),
-            Needs::WordBoxes => (
-                machine == MachineId::SoftPlc,
-                ("functions on words", "ワード命令"),
-            ),
+            Needs::WordBoxes => (caps.word_boxes, ("functions on words", "ワード命令")),
         };
         let what = said(what, lang);
         (!has).then(|| match lang {
@@ -202,7 +199,7 @@ pub fn items(machine: MachineId, lang: Lang) -> Vec<Item> {
     let caps = capabilities(machine);
     SPECS
         .iter()
-        .filter(|s| !matches!(s.needs, Needs::WordBoxes) || machine == MachineId::SoftPlc)
+        .filter(|s| !matches!(s.needs, Needs::WordBoxes) || caps.word_boxes)
         .map(|s| Item {
             id: s.id,
             symbol: s.symbol,

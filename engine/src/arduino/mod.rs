@@ -6,10 +6,13 @@
 //!   erased EEPROM as `JUMP 255`;
 //! - [`monitor`]: the serial monitor's commands.
 
+pub mod decompile;
+pub mod examples;
 pub mod isa;
 pub mod machine;
 pub mod monitor;
 pub mod plc;
+pub mod target;
 
 pub use isa::Program;
 pub use machine::{Chip, Machine, PopOrder};

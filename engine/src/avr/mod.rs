@@ -6,9 +6,12 @@
 //! - [`machine`]: the scan and the TON/TOF/TP timers.
 
 pub mod asm;
+pub mod decompile;
+pub mod examples;
 pub mod machine;
 pub mod plc;
 pub mod program;
+pub mod target;
 
 pub use machine::{scan_ms, Machine, TimerWord};
 pub use plc::{warnings, AvrPlc};

@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+pub use crate::operand::Io86aOperandError as OperandError;
+
 /// A bit device: what contacts read and coils drive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Bit {
@@ -145,32 +147,6 @@ pub fn parse_word(text: &str) -> Result<Word, OperandError> {
         Bit::T(n) => Ok(Word::T(n)),
         Bit::C(n) => Ok(Word::C(n)),
         _ => Err(OperandError::NotAWord(text.to_string())),
-    }
-}
-
-/// Why an operand could not be parsed.
-#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub enum OperandError {
-    /// Not a device of the IO86A.
-    UnknownDevice(String),
-    /// A `K` constant outside 0..=32767 or malformed.
-    BadConstant(String),
-    /// A bit device where a word (K, D, T, C) is needed.
-    NotAWord(String),
-}
-
-impl fmt::Display for OperandError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            OperandError::UnknownDevice(d) => write!(
-                f,
-                "unknown device {}: PLC-IO86A has X00-X07, Y00-Y05, M00-M63, S00-S07, T00-T31, C00-C07, D00-D07", crate::error::shown(d)
-            ),
-            OperandError::BadConstant(k) => write!(f, "bad constant {}: K0..K32767", crate::error::shown(k)),
-            OperandError::NotAWord(d) => {
-                write!(f, "{} is a bit: this operand is a word (K, D, T or C)", crate::error::shown(d))
-            }
-        }
     }
 }
 

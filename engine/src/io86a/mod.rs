@@ -11,6 +11,8 @@
 //! - [`terminal`]: the serial terminal's commands.
 
 pub mod asm;
+pub mod decompile;
+pub mod examples;
 pub mod front;
 pub mod isa;
 pub mod link;
@@ -18,6 +20,7 @@ pub mod machine;
 pub mod peripherals;
 pub mod plc;
 mod scan;
+pub mod target;
 pub mod terminal;
 
 pub use asm::{AsmError, Program};

@@ -19,6 +19,7 @@ pub mod eval;
 pub mod grid;
 mod lack;
 pub mod live;
+pub mod machine_target;
 pub mod net;
 pub mod target;
 pub mod variables;

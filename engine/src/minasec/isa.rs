@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+pub use crate::operand::MinasecOperandError as OperandError;
+
 /// The eight opcodes, numbered as their three bits.
 ///
 /// Bit 0 of the opcode means "invert"; bits 2-1 choose load / and / or /
@@ -229,30 +231,6 @@ pub enum Device {
     Counter,
     /// `C0R`: write sets the clear latch, read gives 0.
     CounterClear,
-}
-
-/// Why an operand could not be parsed.
-#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub enum OperandError {
-    /// Not a MINASEC-U device name.
-    UnknownDevice(String),
-    /// A `%binary` or `$hex` address that is malformed or above 31.
-    BadRawAddress(String),
-}
-
-impl fmt::Display for OperandError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            OperandError::UnknownDevice(d) => write!(
-                f,
-                "unknown device {}: MINASEC-U has X00-X07, Y00-Y07, M00-M07, M10-M13, T0, T1, C0, C0R", crate::error::shown(d)
-            ),
-            OperandError::BadRawAddress(d) => write!(
-                f,
-                "bad raw address {}: write %00000..%11111 or $00..$1F", crate::error::shown(d)
-            ),
-        }
-    }
 }
 
 /// One decoded step.

@@ -11,11 +11,14 @@ pub mod asm;
 pub mod control;
 pub mod counter;
 pub mod cpu;
+pub mod decompile;
+pub mod examples;
 mod fast;
 pub mod isa;
 pub mod machine;
 pub mod panel;
 pub mod plc;
+pub mod target;
 pub mod timer;
 
 pub use asm::{AsmError, Program, ProgrammingSheet};

@@ -11,6 +11,7 @@
 //! caller says how far to go.
 
 pub mod error;
+pub mod example;
 pub mod front;
 pub mod own;
 pub mod terminals;
@@ -18,6 +19,7 @@ pub mod trace;
 pub mod value;
 
 pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
+pub use example::Example;
 pub use front::Front;
 pub use own::Own;
 pub use terminals::{AnalogScale, Terminals};

@@ -7,11 +7,13 @@
 //! ([`program`]), the scan that runs it ([`scan`], [`machine`]) and its
 //! place behind `Plc` ([`plc`]); docs/soft-plc.md states its semantics.
 
+pub mod examples;
 pub mod machine;
 pub mod plc;
 pub mod pou;
 pub mod program;
 pub mod scan;
+pub mod target;
 
 pub use plc::SoftPlc;
 pub use program::{LoadError, Program};

@@ -1,8 +1,8 @@
 //! Programs back to ladders: the seeds' own listings.
 
 use engine::ladder::compile::{compile, Options};
-use engine::ladder::decompile::{decompile, Source};
 use engine::ladder::{analyse, Element, Ladder, Net};
+use engine::machines::{decompile, Source};
 use engine::{arduino, io86a, minasec, MachineId};
 
 /// Each rung as `condition -> outputs`, contacts written `X00` / `!X00`,

@@ -6,10 +6,10 @@
 
 use engine::events::InputValue;
 use engine::ladder::compile::{compile_logic, Options};
-use engine::ladder::decompile::{decompile, Source};
 use engine::ladder::eval::Reference;
 use engine::ladder::{Ladder, RungLogic};
 use engine::machines::new_plc;
+use engine::machines::{decompile, Source};
 use engine::plc::{Command, Plc};
 
 use crate::strategies::{case, pool, Pool};

@@ -243,9 +243,8 @@ fn check((rungs, timeline): &Case) -> Result<(), TestCaseError> {
     // And the IL read back as a ladder, compiled again.
     let program =
         engine::softplc::Program::load(&text).map_err(|e| TestCaseError::fail(format!("{e:?}")))?;
-    let back =
-        engine::ladder::decompile::decompile(engine::ladder::decompile::Source::Soft(&program))
-            .map_err(|e| TestCaseError::fail(format!("decompile: {e}\n{text}")))?;
+    let back = engine::machines::decompile(engine::machines::Source::Soft(&program))
+        .map_err(|e| TestCaseError::fail(format!("decompile: {e}\n{text}")))?;
     let recompiled = compile(&back, MachineId::SoftPlc, Options::default())
         .map_err(|e| TestCaseError::fail(format!("recompile: {e:?}\n{text}")))?;
     let mut third = new_plc(MachineId::SoftPlc);

@@ -138,7 +138,7 @@ fn a_text_c_would_read_another_argument_for_is_refused_at_its_line() {
 #[test]
 fn a_string_ladder_reads_back_from_its_il_and_its_plcopen_file() {
     use engine::ladder::compile::{compile, Options};
-    use engine::ladder::decompile::{decompile, Source};
+    use engine::machines::{decompile, Source};
     use engine::MachineId;
     // A coil after the box: the IL read-back needs a rung to end in one
     // (docs/ldmicro.md).

@@ -1,4 +1,4 @@
-//! Recording and time travel (issue #16) on all four machines: any
+//! Recording and time travel (issue #16) on all five machines: any
 //! recorded scan comes back exactly, and a machine resumed from one runs
 //! on exactly as the original did.
 

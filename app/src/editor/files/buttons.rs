@@ -6,7 +6,7 @@
 
 use engine::formats::Project;
 use engine::ladder::edit::{align_outputs, Edit, COLUMNS};
-use engine::MachineId;
+use engine::machines::IEC_MACHINE;
 use files_worker::{Reply, Request};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
@@ -168,8 +168,8 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
     let message = ctx.panes.message;
     crate::worker::ask_saying(message, texts, request, move |reply| match reply {
         Reply::OpenLd(Ok(opened)) => {
-            let target = ladders.map_or(ctx, |l| l.of(MachineId::SoftPlc));
-            ctx.page.machine.set(MachineId::SoftPlc);
+            let target = ladders.map_or(ctx, |l| l.of(IEC_MACHINE));
+            ctx.page.machine.set(IEC_MACHINE);
             if target.ladder() != opened.ladder {
                 target.apply(Edit::Replace {
                     ladder: opened.ladder,
@@ -287,7 +287,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 <input type="file" data-testid="open-file" accept=".json,.xml,.ld,application/json,text/xml" on:change=on_file />
             </label>
             <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>
-            <Show when=move || ctx.machine == MachineId::SoftPlc>
+            <Show when=move || ctx.machine == IEC_MACHINE>
                 <button type="button" data-testid="export-ld" on:click=move |_| export_ld(ctx)>"LDmicro"</button>
             </Show>
             <button type="button" data-testid="export-text" disabled=move || ctx.drawing.listing.with(Option::is_none) on:click=move |_| {

@@ -74,7 +74,9 @@ fn unused_device(
     e: &engine::cases::CaseError,
 ) -> Option<String> {
     use engine::cases::CaseError;
-    if machine != MachineId::SoftPlc {
+    // Only a machine whose program names its I/O (word boxes, variables:
+    // the soft PLC) can be told of a device its program never uses.
+    if !machine.target().capabilities().word_boxes {
         return None;
     }
     let device = match e {

@@ -5,7 +5,6 @@
 use engine::ladder::edit::{undeclared_in_box, Cursor, Edit, VariableEdit};
 use engine::ladder::grid::Pos;
 use engine::ladder::variables::Variable;
-use engine::MachineId;
 use leptos::prelude::*;
 
 use crate::editor::state::LadderCtx;
@@ -114,7 +113,7 @@ pub fn ProblemsPane(ctx: LadderCtx, on_pick: Callback<()>) -> impl IntoView {
 /// uses undeclared (issue #49): one click declares it in the Variables
 /// table with the type its use there needs.
 fn declare_buttons(ctx: LadderCtx, rung: usize, pos: Pos) -> impl IntoView {
-    let wanted = if ctx.machine == MachineId::SoftPlc {
+    let wanted = if ctx.machine.target().capabilities().word_boxes {
         undeclared_in_box(&ctx.ladder(), rung, pos)
     } else {
         Vec::new()

@@ -164,7 +164,7 @@ pub fn compile_project(
     opened: &Opened,
 ) -> Result<String, Problems> {
     let project = &opened.project;
-    let avr_scan_ms = if project.machine == MachineId::AvrPlc {
+    let avr_scan_ms = if project.machine.target().scan_in_program() {
         avr_scan_ms(args, &source.name, &opened.settings)?
     } else {
         10

@@ -14,12 +14,11 @@ use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::{Ladder, LadderError, Pos};
 use crate::ladder::net::{Net, RungLogic};
 use crate::ladder::BlockCall;
-use crate::MachineId;
 
 /// `ladder` as an `.ld` file whose scan is `cycle_us`; every element
 /// without an LDmicro form is an error at its cell.
 pub fn export(ladder: &Ladder, cycle_us: u64) -> Result<String, Vec<LadderError>> {
-    let logic = ladder.logic(MachineId::SoftPlc)?;
+    let logic = ladder.logic(crate::machines::IEC_MACHINE)?;
     // A name the reader gave an LDmicro name that is no IEC name goes
     // back as it was; an address goes as the variable declared at it.
     let mut names: HashMap<String, String> = HashMap::new();

@@ -4,6 +4,7 @@
 use std::fmt;
 
 use crate::ladder::element::Element;
+use crate::ladder::machine_target::LocatedError;
 use crate::ladder::target::{check_element, ElementError};
 use crate::MachineId;
 
@@ -71,12 +72,9 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, AddressError
     let area = chars.next().ok_or_else(bad)?;
     let rest = chars.as_str();
     // IO86A reads X04 / X05 as analog words into D06 / D07.
-    if machine == MachineId::Io86a && area == 'I' {
-        match rest {
-            "W0" => return Ok("D06".to_string()),
-            "W1" => return Ok("D07".to_string()),
-            _ => {}
-        }
+    let target = machine.target();
+    if let Some(device) = target.located_word(area, rest) {
+        return Ok(device);
     }
     let rest = match rest.chars().next() {
         Some('X') => &rest[1..],
@@ -92,52 +90,20 @@ pub fn located(machine: MachineId, address: &str) -> Result<String, AddressError
         return Err(bad());
     }
     let n = byte.saturating_mul(8).saturating_add(bit);
-    let device = match (machine, area) {
-        (MachineId::Io86a | MachineId::MinasecU, 'I') => format!("X{n:02}"),
-        (MachineId::Io86a | MachineId::MinasecU, 'Q') => format!("Y{n:02}"),
-        (MachineId::Io86a, 'M') => format!("M{n:02}"),
-        // MINASEC-U's relays are M00-M07 and M10-M13.
-        (MachineId::MinasecU, 'M') => format!("M{}{}", n / 8, n % 8),
-        (MachineId::ArduinoPlc, 'I') => format!("X{n:03}"),
-        (MachineId::ArduinoPlc, 'Q') => format!("Y{n:03}"),
-        (MachineId::ArduinoPlc, 'M') => return Err(AddressError::NoRelays),
-        (MachineId::AvrPlc, 'I' | 'Q' | 'M') => return avr_located(area, n, address),
-        _ => return Err(bad()),
-    };
-    check_element(machine, &Element::no(&device))
-        .map(|_| device)
-        .map_err(|e| AddressError::NotOnMachine(crate::shown(address), e))
-}
-
-/// The AVR PLC has no fixed inputs or outputs (any register bit may be
-/// either); Hashigo follows the seed's own program, inputs in R4 and
-/// coils in R5, relays after them, and leaves R16-R25 to the compiler's
-/// temporaries: `%IX0.n` → R4.n, `%QX0.n` → R5.n, `%MXb.n` → R(6+b).n
-/// up to R15.7.
-fn avr_located(area: char, n: u32, address: &str) -> Result<String, AddressError> {
-    let (registers, what) = match area {
-        'I' => (AVR_INPUTS, "inputs"),
-        'Q' => (AVR_OUTPUTS, "outputs"),
-        _ => (AVR_RELAYS, "relays"),
-    };
-    let bits = registers.len() as u32 * 8;
-    if n >= bits {
-        let (first, last) = (registers.start, registers.end - 1);
-        return Err(AddressError::PastAvr {
+    let device = target.located_bit(area, n).map_err(|e| match e {
+        LocatedError::NotThere => bad(),
+        LocatedError::NoRelays => AddressError::NoRelays,
+        LocatedError::Past { what, first, last } => AddressError::PastAvr {
             address: crate::shown(address),
             what,
             first,
             last,
-        });
-    }
-    Ok(format!("R{}.{}", registers.start as u32 + n / 8, n % 8))
+        },
+    })?;
+    check_element(machine, &Element::no(&device))
+        .map(|_| device)
+        .map_err(|e| AddressError::NotOnMachine(crate::shown(address), e))
 }
-
-/// The AVR PLC's registers for inputs, outputs and relays
-/// ([`avr_located`], and what `propose` hands out).
-pub(super) const AVR_INPUTS: std::ops::Range<u8> = 4..5;
-pub(super) const AVR_OUTPUTS: std::ops::Range<u8> = 5..6;
-pub(super) const AVR_RELAYS: std::ops::Range<u8> = 6..16;
 
 /// Whether variable `name` is what Hashigo's PLCopen export declares for
 /// a soft PLC ladder's bare `address` (`IX0_0` at `%IX0.0`): read back

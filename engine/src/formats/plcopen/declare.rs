@@ -11,11 +11,11 @@
 use std::collections::{HashMap, HashSet};
 
 pub use super::address::{located, AddressError};
-use super::address::{AVR_INPUTS, AVR_OUTPUTS, AVR_RELAYS};
 use super::dom::Node;
 use super::kinds::BlockKind;
 pub use super::map_file::{MapError, VarMap};
 use crate::ladder::element::Element;
+use crate::ladder::machine_target::DevicePools;
 use crate::ladder::target::check_element;
 use crate::MachineId;
 
@@ -190,15 +190,9 @@ impl Names {
     pub fn spare_relays(&self, machine: MachineId, also: &HashSet<String>) -> Vec<String> {
         let mut taken = self.taken();
         taken.extend(also.iter().map(|d| d.to_ascii_uppercase()));
-        let relays = match machine {
-            // Any name is a BOOL: helpers of its own, `_h0` popped first.
-            MachineId::SoftPlc => (0..crate::limits::MAX_SOFT_HELPERS)
-                .rev()
-                .map(|n| format!("_h{n}"))
-                .collect(),
-            _ => Pools::of(machine).relays,
-        };
-        relays
+        machine
+            .target()
+            .spare_bits()
             .into_iter()
             .filter(|r| !taken.contains(&r.to_ascii_uppercase()))
             .collect()
@@ -274,7 +268,7 @@ pub fn names(root: &Node, machine: MachineId, map: Option<&VarMap>) -> Names {
         }
         // Hashigo's own export names a bare soft PLC address `IX0_0`.
         let address = v.attr("address").unwrap_or_default();
-        if machine == MachineId::SoftPlc && super::address::stands_for(name, address) {
+        if machine.target().capabilities().word_boxes && super::address::stands_for(name, address) {
             let device = Meaning::Device(address.trim().to_string(), None);
             let key = name.to_ascii_lowercase();
             names.by_name.insert(key, (name.to_string(), device));
@@ -347,7 +341,7 @@ pub fn propose_in(
             .map(|(n, _)| n.to_ascii_uppercase()),
     );
     let instances = block_instances(scope);
-    let pools = Pools::of(machine);
+    let pools = machine.target().pools();
     let mut out: Vec<(String, String)> = Vec::new();
     // Declared BOOLs with no device (or an address the machine lacks),
     // then names the bodies use without declaring them.
@@ -410,7 +404,7 @@ fn propose_instances(
     names: &Names,
     machine: MachineId,
     instances: Vec<(String, BlockKind)>,
-    pools: &Pools,
+    pools: &DevicePools,
     taken: &mut HashSet<String>,
 ) -> Vec<(String, String)> {
     let mut out = Vec::new();
@@ -420,7 +414,9 @@ fn propose_instances(
         }
         // IO86A's timers are on-delay: a TOF or TP also holds its output
         // in a relay (`T01+M20`).
-        if machine == MachineId::Io86a && matches!(ty, BlockKind::Tof | BlockKind::Tp) {
+        if machine.target().capabilities().timer_counter_coils
+            && matches!(ty, BlockKind::Tof | BlockKind::Tp)
+        {
             let timer = next(&pools.timers, taken);
             let relay = next(&pools.relays, taken);
             if let (Some(t), Some(m)) = (timer, relay) {
@@ -487,72 +483,6 @@ fn block_instances(scope: &Node) -> Vec<(String, BlockKind)> {
         }
     }
     instances
-}
-
-/// A machine's devices by kind, in the order proposals take them.
-struct Pools {
-    inputs: Vec<String>,
-    outputs: Vec<String>,
-    relays: Vec<String>,
-    timers: Vec<String>,
-    counters: Vec<String>,
-}
-
-impl Pools {
-    fn none() -> Pools {
-        Pools {
-            inputs: Vec::new(),
-            outputs: Vec::new(),
-            relays: Vec::new(),
-            timers: Vec::new(),
-            counters: Vec::new(),
-        }
-    }
-
-    fn of(machine: MachineId) -> Pools {
-        let range = |prefix: &str, width: usize, ns: std::ops::Range<u32>| -> Vec<String> {
-            ns.map(|n| format!("{prefix}{n:0width$}")).collect()
-        };
-        match machine {
-            MachineId::Io86a => Pools {
-                inputs: range("X", 2, 0..8),
-                outputs: range("Y", 2, 0..6),
-                // M56-M63 are the special relays.
-                relays: range("M", 2, 0..56),
-                timers: range("T", 2, 0..32),
-                counters: range("C", 2, 0..8),
-            },
-            MachineId::MinasecU => Pools {
-                inputs: range("X", 2, 0..8),
-                outputs: range("Y", 2, 0..8),
-                relays: [range("M", 2, 0..8), range("M1", 1, 0..4)].concat(),
-                timers: vec!["T0".into(), "T1".into()],
-                counters: vec!["C0".into()],
-            },
-            MachineId::ArduinoPlc => Pools {
-                inputs: range("X", 3, 0..6),
-                outputs: range("Y", 3, 0..6),
-                ..Pools::none()
-            },
-            // Its variables keep their names: nothing to propose.
-            MachineId::SoftPlc => Pools::none(),
-            // [`avr_located`]'s registers; timers are named in-line boxes
-            // (an instance keeps its name), and there are no counters.
-            MachineId::AvrPlc => {
-                let bits = |registers: std::ops::Range<u8>| -> Vec<String> {
-                    registers
-                        .flat_map(|r| (0..8).map(move |b| format!("R{r}.{b}")))
-                        .collect()
-                };
-                Pools {
-                    inputs: bits(AVR_INPUTS),
-                    outputs: bits(AVR_OUTPUTS),
-                    relays: bits(AVR_RELAYS),
-                    ..Pools::none()
-                }
-            }
-        }
-    }
 }
 
 #[cfg(test)]

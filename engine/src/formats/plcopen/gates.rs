@@ -163,13 +163,13 @@ impl Body {
         flag: &str,
         on: bool,
     ) -> Result<(), LowerError> {
-        if self.machine != Some(MachineId::Io86a) {
+        let Some(always) = self.machine.and_then(|m| m.target().always_on()) else {
             return Err(LowerError::NoCompare);
-        }
+        };
         let rail = super::body::RAIL;
         let at = |k: usize| Pos::new(g.pos.row, g.pos.col.wrapping_sub(k));
         let cmp = self.fresh();
-        self.wire(rail, cmp, Net::Leaf(Element::no("M57"), at(3)), g.line);
+        self.wire(rail, cmp, Net::Leaf(Element::no(always), at(3)), g.line);
         let cmp_op = Element::Cmp {
             a: a.to_string(),
             b: b.to_string(),

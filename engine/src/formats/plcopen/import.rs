@@ -214,7 +214,7 @@ fn name_devices(
     }
     // No machine here keeps a power-up value for a bit device (the soft
     // PLC's variables keep theirs).
-    let bits_only = machine != Some(MachineId::SoftPlc);
+    let bits_only = !machine.is_some_and(|m| m.target().capabilities().word_boxes);
     for (name, device, value, line) in names.starting_on().into_iter().filter(|_| bits_only) {
         if used.contains(&device) {
             let machine = machine.map_or("the machine", MachineId::name);

@@ -121,7 +121,8 @@ impl Body {
         let mut moved = Vec::new();
         for (bus, outs) in &mut groups {
             crate::sort::by_key(outs, |(_, p, _)| *p);
-            if *bus == rail && machine == Some(MachineId::Io86a) {
+            let on = machine.and_then(|m| m.target().always_on());
+            if let (true, Some(on)) = (*bus == rail, on) {
                 // Always on: IO86A's M57 (ON) carries the rail to it.
                 let q = self.fresh();
                 let (_, p, line) = &outs[0];
@@ -130,7 +131,7 @@ impl Body {
                 edges.push(Edge {
                     from: rail,
                     to: q,
-                    net: Net::Leaf(Element::no("M57"), at),
+                    net: Net::Leaf(Element::no(on), at),
                 });
                 moved.push((*bus, q));
                 buses.push(q);
@@ -159,7 +160,7 @@ impl Body {
     ) -> Result<(Vec<Edge>, HashMap<Pos, usize>), Errors> {
         // IO86A's timers and counters are coils (`OUT T00 K19`) with
         // contacts: an in-line TON or CTU is split ([`Body::split_box`]).
-        let timer_coils = machine == Some(MachineId::Io86a);
+        let timer_coils = machine.is_some_and(|m| m.target().capabilities().timer_counter_coils);
         let consumed: HashSet<usize> = self
             .consumed
             .clone()

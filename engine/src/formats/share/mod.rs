@@ -223,13 +223,12 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     let data =
         decompress_to_vec_with_limit(&packed, MAX_INFLATED).map_err(|_| ShareError::Inflate)?;
     let mut r = Reader { data: &data, at: 0 };
-    let machine = match r.byte()? {
-        0 => MachineId::MinasecU,
-        1 => MachineId::Io86a,
-        2 => MachineId::AvrPlc,
-        3 => MachineId::ArduinoPlc,
-        4 => MachineId::SoftPlc,
-        _ => return Err(r.bad("unknown machine")),
+    let code = r.byte()?;
+    let Some(machine) = MachineId::ALL
+        .into_iter()
+        .find(|m| m.target().share_code() == code)
+    else {
+        return Err(r.bad("unknown machine"));
     };
     let settings = r.map("settings")?;
     let device_comments = r.map("device comments")?;
@@ -267,13 +266,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
 }
 
 fn machine_code(m: MachineId) -> u8 {
-    match m {
-        MachineId::MinasecU => 0,
-        MachineId::Io86a => 1,
-        MachineId::AvrPlc => 2,
-        MachineId::ArduinoPlc => 3,
-        MachineId::SoftPlc => 4,
-    }
+    m.target().share_code()
 }
 
 /// LEB128 unsigned.

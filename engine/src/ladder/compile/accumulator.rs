@@ -17,6 +17,18 @@ use crate::MachineId;
 /// MINASEC-U's program memory.
 const MINASEC_STEPS: usize = 256;
 
+/// Which accumulator machine's text a ladder compiles to (its target
+/// picks it): the two differ in temporaries, edges, latches and format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dialect {
+    /// MINASEC-U: M10-M13 for temporaries, edges from a relay's memory,
+    /// set / reset change the accumulator, 256 steps, its listing.
+    Minasec,
+    /// The AVR PLC: register bits for temporaries, its pulse instruction,
+    /// timers in scans, its assembler source.
+    Avr,
+}
+
 /// One accumulator operation; the bool is "inverted".
 #[derive(Clone, Debug, PartialEq, Eq)]
 enum Op {
@@ -34,6 +46,7 @@ enum Op {
 
 struct Compiler {
     machine: MachineId,
+    dialect: Dialect,
     /// The AVR PLC's scan period in ms: in-line timers count scans.
     scan_ms: u32,
     ops: Vec<Op>,
@@ -46,23 +59,17 @@ struct Compiler {
     sources: Vec<(usize, Pos, usize)>,
 }
 
-/// Compiles checked rung logic for MINASEC-U or the AVR PLC.
-pub fn compile(
-    rungs: &[RungLogic],
-    machine: MachineId,
-    options: Options,
-) -> Result<String, Vec<LadderError>> {
-    compile_mapped(rungs, machine, options).map(|m| m.text)
-}
-
-/// [`compile`], with the step each rung starts at and each leaf's line.
+/// Compiles checked rung logic for MINASEC-U or the AVR PLC (`machine`
+/// names it in messages), with the step each rung starts at and each
+/// leaf's line.
 pub(crate) fn compile_mapped(
     rungs: &[RungLogic],
     machine: MachineId,
+    dialect: Dialect,
     options: Options,
 ) -> Result<Mapped, Vec<LadderError>> {
-    let candidates = match machine {
-        MachineId::MinasecU => ["M10", "M11", "M12", "M13"]
+    let candidates = match dialect {
+        Dialect::Minasec => ["M10", "M11", "M12", "M13"]
             .into_iter()
             .map(String::from)
             .chain((0..8).map(|n| format!("M{n:02}")))
@@ -72,12 +79,13 @@ pub(crate) fn compile_mapped(
             .flat_map(|r| (0..8).map(move |b| format!("R{r}.{b}")))
             .collect(),
     };
-    let what = match machine {
-        MachineId::MinasecU => "M10-M13, then unused M00-M07",
+    let what = match dialect {
+        Dialect::Minasec => "M10-M13, then unused M00-M07",
         _ => "unused bits of R25 down to R16",
     };
     let mut c = Compiler {
         machine,
+        dialect,
         scan_ms: options.avr_scan_ms,
         ops: Vec::new(),
         temps: Temps::new(candidates, rungs, what),
@@ -96,7 +104,7 @@ pub(crate) fn compile_mapped(
                 None => LadderError::rung(i, m),
             });
         }
-        if machine == MachineId::MinasecU && c.steps() > MINASEC_STEPS && errors.is_empty() {
+        if dialect == Dialect::Minasec && c.steps() > MINASEC_STEPS && errors.is_empty() {
             errors.push(LadderError::rung(
                 i,
                 format!(
@@ -109,9 +117,9 @@ pub(crate) fn compile_mapped(
     if !errors.is_empty() {
         return Err(errors);
     }
-    let (text, op_lines) = match machine {
-        MachineId::MinasecU => c.minasec_text(),
-        _ => c.avr_text(options),
+    let (text, op_lines) = match dialect {
+        Dialect::Minasec => c.minasec_text(),
+        Dialect::Avr => c.avr_text(options),
     };
     let sources = c
         .sources
@@ -237,7 +245,7 @@ impl Compiler {
         let memory = self.temps.take_for_good()?; // last scan's state
         let t = self.temps.take()?;
         let falling = kind == ContactKind::Falling;
-        if self.machine == MachineId::MinasecU {
+        if self.dialect == Dialect::Minasec {
             self.ops.push(Op::Ld(device.to_string(), falling));
             self.ops.push(Op::And(memory.clone(), !falling));
             self.ops.push(Op::St(t.clone(), false));
@@ -341,7 +349,7 @@ impl Compiler {
     }
 
     fn outputs(&mut self, outputs: &[(Element, Pos)]) -> Result<(), (Pos, String)> {
-        let minasec = self.machine == MachineId::MinasecU;
+        let minasec = self.dialect == Dialect::Minasec;
         // MINASEC-U's set / reset change A; if another output follows, A
         // is kept in a temporary and reloaded.
         let changes_a = |e: &Element| {
@@ -442,11 +450,11 @@ impl Compiler {
             }
             out.push_str(".cseg\n");
         }
+        // Devices are checked (`R3.4`) before they get here.
         let bit = |d: &str| {
-            crate::avr::parse_register_bit(d).map_or_else(
-                || "0,0".to_string(),
-                |b| format!("{},Bit{}", b.register, b.bit),
-            )
+            d.strip_prefix('R')
+                .and_then(|rb| rb.split_once('.'))
+                .map_or_else(|| "0,0".to_string(), |(r, b)| format!("{r},Bit{b}"))
         };
         let mut lines = Vec::with_capacity(self.ops.len());
         // The next line's number (the header is written above).

@@ -4,7 +4,7 @@
 
 use std::ops::Range;
 
-use super::{accumulator, il, stack, Options};
+use super::Options;
 use crate::ladder::grid::{Ladder, LadderError};
 use crate::MachineId;
 
@@ -91,13 +91,8 @@ pub fn compile_listing(
 ) -> Result<Listing, Vec<LadderError>> {
     let logic = ladder.logic(machine)?;
     let indices = ladder.logic_indices();
-    let mapped = match machine {
-        MachineId::MinasecU | MachineId::AvrPlc => {
-            accumulator::compile_mapped(&logic, machine, options)?
-        }
-        MachineId::Io86a | MachineId::ArduinoPlc => stack::compile_mapped(&logic, machine)?,
-        MachineId::SoftPlc => il::compile_mapped(&logic, &ladder.variables)?,
-    };
+    let target = machine.target();
+    let mapped = target.compile(&logic, &ladder.variables, options)?;
     let mut sources: Vec<LeafSource> = Vec::new();
     for &(i, pos, line) in &mapped.sources {
         let rung = indices[i];
@@ -109,23 +104,16 @@ pub fn compile_listing(
     }
     let (text, starts) = (mapped.text, mapped.starts);
     // The soft PLC's steps follow its declarations.
-    let code = match machine {
-        MachineId::SoftPlc => text
-            .lines()
-            .position(|l| l.trim().eq_ignore_ascii_case("END_VAR"))
-            .map_or(0, |i| i + 1),
-        _ => 0,
-    };
+    let code = target.code_start(&text);
     let step_lines: Vec<usize> = text
         .lines()
         .enumerate()
         .skip(code)
-        .filter(|(_, l)| is_step(machine, l))
+        .filter(|(_, l)| target.is_step(l))
         .map(|(i, _)| i)
         .collect();
-    // Every machine but MINASEC-U and the soft PLC ends its program with
-    // one end marker.
-    let trailer = usize::from(!matches!(machine, MachineId::MinasecU | MachineId::SoftPlc));
+    // Most machines end their program with one end marker.
+    let trailer = target.end_steps();
     Ok(Listing {
         rung_steps: step_lines.len().saturating_sub(trailer),
         sources,
@@ -137,14 +125,4 @@ pub fn compile_listing(
         step_lines,
         text,
     })
-}
-
-/// Whether a line of compiled text is a step of the machine's program.
-fn is_step(machine: MachineId, line: &str) -> bool {
-    let line = line.trim();
-    match machine {
-        MachineId::AvrPlc => line.starts_with(".db"),
-        MachineId::SoftPlc => !line.is_empty() && !line.starts_with("(*"),
-        _ => !line.is_empty() && !line.starts_with(';'),
-    }
 }

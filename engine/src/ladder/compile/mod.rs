@@ -1,6 +1,9 @@
 //! Ladder → each machine's mnemonic text (the `.il` / `.asm` that
 //! `hashigo run` accepts back).
 //!
+//! Each machine's ladder target (`target.rs` in its folder) picks one of
+//! these compilers:
+//!
 //! - [`accumulator`]: MINASEC-U and the AVR PLC (one accumulator; partial
 //!   results go to temporary relays);
 //! - [`compile_listing`]: the same, with each rung's steps (for the editor);
@@ -8,7 +11,7 @@
 //! - `il`: the soft PLC (IEC Instruction List, deferred `AND(` … `)`).
 
 pub mod accumulator;
-mod il;
+pub(crate) mod il;
 mod listing;
 pub mod stack;
 
@@ -21,15 +24,16 @@ use super::grid::{Ladder, LadderError, Pos};
 use super::net::{Net, RungLogic};
 use crate::MachineId;
 
-/// A compiled program with where its rungs and leaves are.
-pub(crate) struct Mapped {
+/// A compiled program with where its rungs and leaves are (what a
+/// machine's ladder target's `compile` gives).
+pub struct Mapped {
     /// The program text.
-    pub(crate) text: String,
+    pub text: String,
     /// Each rung's first step.
-    pub(crate) starts: Vec<usize>,
+    pub starts: Vec<usize>,
     /// (rung among those given, leaf's cell, 0-based text line of the op
     /// reading or computing it), in emission order.
-    pub(crate) sources: Vec<(usize, Pos, usize)>,
+    pub sources: Vec<(usize, Pos, usize)>,
 }
 
 /// Settings a compiler needs beyond the ladder.
@@ -55,10 +59,10 @@ pub fn compile(
     options: Options,
 ) -> Result<String, Vec<LadderError>> {
     let logic = ladder.logic(machine)?;
-    if machine == MachineId::SoftPlc {
-        return il::compile_mapped(&logic, &ladder.variables).map(|m| m.text);
-    }
-    compile_logic(&logic, machine, options)
+    let mapped = machine
+        .target()
+        .compile(&logic, &ladder.variables, options)?;
+    Ok(mapped.text)
 }
 
 /// Compiles checked rung logic (from [`Ladder::logic`]).
@@ -67,11 +71,8 @@ pub fn compile_logic(
     machine: MachineId,
     options: Options,
 ) -> Result<String, Vec<LadderError>> {
-    match machine {
-        MachineId::MinasecU | MachineId::AvrPlc => accumulator::compile(rungs, machine, options),
-        MachineId::Io86a | MachineId::ArduinoPlc => stack::compile(rungs, machine),
-        MachineId::SoftPlc => il::compile_mapped(rungs, &[]).map(|m| m.text),
-    }
+    let mapped = machine.target().compile(rungs, &[], options)?;
+    Ok(mapped.text)
 }
 
 /// Free bit devices for temporaries, taken in order, never one the

@@ -29,17 +29,25 @@ struct Compiler {
     sources: Vec<(usize, Pos, usize)>,
 }
 
-/// Compiles checked rung logic for IO86A or the Arduino sketch.
-pub fn compile(rungs: &[RungLogic], machine: MachineId) -> Result<String, Vec<LadderError>> {
-    compile_mapped(rungs, machine).map(|m| m.text)
+/// Which block-stack machine's text a ladder compiles to (its target
+/// picks it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dialect {
+    /// PLC-IO86A: `OUT` keeps the result; relays M00-M55 for temporaries.
+    Io86a,
+    /// The Arduino sketch: `OUT` pops the result; no relays, 16-bit stack.
+    Arduino,
 }
 
-/// [`compile`], with the step each rung starts at and each leaf's line.
+/// Compiles checked rung logic for IO86A or the Arduino sketch (`machine`
+/// names it in messages), with the step each rung starts at and each
+/// leaf's line.
 pub(crate) fn compile_mapped(
     rungs: &[RungLogic],
     machine: MachineId,
+    dialect: Dialect,
 ) -> Result<Mapped, Vec<LadderError>> {
-    let arduino = machine == MachineId::ArduinoPlc;
+    let arduino = dialect == Dialect::Arduino;
     let candidates = if arduino {
         Vec::new()
     } else {

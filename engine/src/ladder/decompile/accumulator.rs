@@ -1,18 +1,18 @@
 //! The accumulator walk shared by MINASEC-U and the AVR PLC: `LD` starts
 //! a condition, `AND` / `OR` grow it, each store is an output of the rung.
 
-use super::{add_output, close_rung, contact, drawn, DecompileError, Part, StepError};
+use super::{add_output, close_rung, contact, Part, StepError};
 use crate::ladder::compile::negate;
-use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
-use crate::ladder::grid::{Ladder, Pos};
+use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::net::{Net, RungLogic};
 use crate::limits::MAX_NESTING;
-use crate::{avr, minasec};
 
-/// The accumulator walk shared by MINASEC-U and the AVR PLC.
+/// The accumulator walk shared by MINASEC-U and the AVR PLC (each
+/// machine's decompiler, in its folder, drives it step by step).
 #[derive(Default)]
-struct Acc {
-    rungs: Vec<RungLogic>,
+pub(crate) struct Acc {
+    /// The rungs read so far.
+    pub(crate) rungs: Vec<RungLogic>,
     a: Option<Part>,
     outputs: Vec<Element>,
     /// An output holding the accumulator's value: (device, inverted).
@@ -20,11 +20,11 @@ struct Acc {
 }
 
 impl Acc {
-    fn flush(&mut self) {
+    pub(crate) fn flush(&mut self) {
         close_rung(&mut self.rungs, self.a.take(), &mut self.outputs);
     }
 
-    fn load(&mut self, n: Net) {
+    pub(crate) fn load(&mut self, n: Net) {
         self.flush();
         self.anchor = None;
         self.a = Some(Part::of(n));
@@ -48,19 +48,19 @@ impl Acc {
         })
     }
 
-    fn and(&mut self, n: Net, step: usize) -> Result<(), StepError> {
+    pub(crate) fn and(&mut self, n: Net, step: usize) -> Result<(), StepError> {
         let a = self.current(step)?;
         self.a = Some(a.join(Part::of(n), true, step)?);
         Ok(())
     }
 
-    fn or(&mut self, n: Net, step: usize) -> Result<(), StepError> {
+    pub(crate) fn or(&mut self, n: Net, step: usize) -> Result<(), StepError> {
         let a = self.current(step)?;
         self.a = Some(a.join(Part::of(n), false, step)?);
         Ok(())
     }
 
-    fn output(
+    pub(crate) fn output(
         &mut self,
         e: Element,
         holds: Option<(String, bool)>,
@@ -71,104 +71,9 @@ impl Acc {
     }
 }
 
-pub(super) fn minasec_ladder(p: &minasec::Program) -> Result<Ladder, DecompileError> {
-    use minasec::isa::Device;
-    use minasec::Opcode;
-    let mut acc = Acc::default();
-    for (step, i) in p.instructions().enumerate() {
-        let d = i.address.to_string();
-        let plain = matches!(i.address.device(), Device::Output(_) | Device::Relay(_));
-        match i.opcode {
-            Opcode::Ld | Opcode::Ldi => acc.load(contact(d, i.opcode == Opcode::Ldi)),
-            Opcode::And | Opcode::Andi => acc.and(contact(d, i.opcode == Opcode::Andi), step)?,
-            Opcode::Or | Opcode::Ori => acc.or(contact(d, i.opcode == Opcode::Ori), step)?,
-            Opcode::St | Opcode::Sti => {
-                let inv = i.opcode == Opcode::Sti;
-                let kind = if inv {
-                    CoilKind::Inverted
-                } else {
-                    CoilKind::Normal
-                };
-                let holds = plain.then(|| (d.clone(), inv));
-                acc.output(Element::Coil { kind, device: d }, holds, step)?;
-            }
-        }
-    }
-    acc.flush();
-    let rungs = fold_temporaries(acc.rungs, &["M10", "M11", "M12", "M13"]);
-    drawn(&rungs)
-}
-
-pub(super) fn avr_ladder(p: &avr::Program, scan_ms: u32) -> Result<Ladder, DecompileError> {
-    use avr::Instruction as I;
-    let mut acc = Acc::default();
-    for (step, &i) in p.instructions().iter().enumerate() {
-        match i {
-            I::Load(b, inv) => acc.load(contact(b.to_string(), inv)),
-            I::And(b, inv) => acc.and(contact(b.to_string(), inv), step)?,
-            I::Or(b, inv) => acc.or(contact(b.to_string(), inv), step)?,
-            I::Coil(b, inv) => {
-                let kind = if inv {
-                    CoilKind::Inverted
-                } else {
-                    CoilKind::Normal
-                };
-                acc.output(
-                    Element::Coil {
-                        kind,
-                        device: b.to_string(),
-                    },
-                    Some((b.to_string(), inv)),
-                    step,
-                )?;
-            }
-            I::Set(b) | I::Reset(b) => {
-                let kind = if matches!(i, I::Set(_)) {
-                    CoilKind::Set
-                } else {
-                    CoilKind::Reset
-                };
-                acc.output(
-                    Element::Coil {
-                        kind,
-                        device: b.to_string(),
-                    },
-                    None,
-                    step,
-                )?;
-            }
-            I::Timer {
-                kind,
-                index,
-                preset,
-            } => {
-                let name = format!("Timer{index}");
-                let kind = match kind {
-                    avr::TimerKind::Ton => TimerKind::Ton,
-                    avr::TimerKind::Tof => TimerKind::Tof,
-                    avr::TimerKind::Tp => TimerKind::Tp,
-                };
-                let leaf = Element::Timer {
-                    kind,
-                    name,
-                    preset_ms: u32::from(preset) * scan_ms,
-                };
-                acc.and(Net::Leaf(leaf, Pos::new(0, 0)), step)?;
-            }
-            I::Not => acc.and(Net::Leaf(Element::Not, Pos::new(0, 0)), step)?,
-            I::Pulse(_, falling) => {
-                acc.and(Net::Leaf(Element::Edge { falling }, Pos::new(0, 0)), step)?
-            }
-            I::End => break,
-        }
-    }
-    acc.flush();
-    drawn(&acc.rungs)
-}
-
 /// Folds a temporary stored by one rung and read once by a later one back
 /// into the reader, when nothing in between changes what it was made of.
-fn fold_temporaries(mut rungs: Vec<RungLogic>, temps: &[&str]) -> Vec<RungLogic> {
+pub(crate) fn fold_temporaries(mut rungs: Vec<RungLogic>, temps: &[&str]) -> Vec<RungLogic> {
     let reads = |r: &RungLogic, d: &str| {
         r.condition
             .leaves()

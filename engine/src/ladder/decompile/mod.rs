@@ -10,20 +10,23 @@
 //!
 //! Block-stack machines (IO86A, Arduino sketch): `LD` opens a block, `ORB`
 //! / `ANB` join the top two, outputs close the rung.
+//!
+//! The walks are here; each machine's decompiler (`decompile.rs` in its
+//! folder) reads its own program with them, and its ladder target hands
+//! [`decompile_text`] the result. The soft PLC's IL (an IEC text) is read
+//! here ([`il_ladder`]).
 
 use std::fmt;
 
-mod accumulator;
+pub(crate) mod accumulator;
 mod il;
-mod stack;
+pub(crate) mod stack;
 
 use super::element::{ContactKind, Element};
 use super::grid::{Ladder, Pos};
 use super::net::{attach_sides, try_layout, Net, RungLogic, TooLarge};
 use crate::limits::MAX_NESTING;
-use crate::{arduino, avr, io86a, minasec, MachineId};
-use accumulator::{avr_ladder, minasec_ladder};
-use stack::{arduino_ladder, io86a_ladder};
+use crate::MachineId;
 
 /// Why a program has no ladder form, at its step (0-based, as listed).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -74,7 +77,7 @@ impl fmt::Display for DecompileError {
 impl std::error::Error for DecompileError {}
 
 /// The rungs drawn on grids, each refused past the rung size limit.
-fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
+pub(crate) fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
     let mut ladder = Ladder::default();
     // The soft PLC's box input networks, compiled as rungs of their own
     // on their carriers, drawn under their boxes again.
@@ -87,42 +90,6 @@ fn drawn(rungs: &[RungLogic]) -> Result<Ladder, DecompileError> {
         let rung =
             try_layout(logic).map_err(|size| DecompileError::Drawing { rung: i + 1, size })?;
         ladder.rungs.push(rung);
-    }
-    Ok(ladder)
-}
-
-/// A program parsed for its machine.
-pub enum Source<'a> {
-    /// A MINASEC-U listing.
-    Minasec(&'a minasec::Program),
-    /// An AVR PLC program and its scan period in ms (for timer presets).
-    Avr(&'a avr::Program, u32),
-    /// An IO86A listing.
-    Io86a(&'a io86a::Program),
-    /// An Arduino sketch program.
-    Arduino(&'a arduino::Program),
-    /// A soft PLC program.
-    Soft(&'a dyn crate::iec::il::IlSource),
-}
-
-/// The program as a ladder.
-pub fn decompile(source: Source<'_>) -> Result<Ladder, DecompileError> {
-    let mut ladder = match source {
-        Source::Minasec(p) => minasec_ladder(p)?,
-        Source::Avr(p, scan) => avr_ladder(p, scan)?,
-        Source::Io86a(p) => io86a_ladder(p)?,
-        Source::Arduino(p) => arduino_ladder(p)?,
-        Source::Soft(p) => {
-            let (vars, lines) = p.source();
-            let mut ladder = il::il_ladder(vars, lines)?;
-            ladder.variables = il::declared(vars);
-            ladder
-        }
-    };
-    if let Source::Avr(p, _) = source {
-        for (name, bit) in p.names() {
-            ladder.device_comments.insert(bit.to_string(), name.clone());
-        }
     }
     Ok(ladder)
 }
@@ -148,38 +115,24 @@ impl fmt::Display for TextError {
 impl std::error::Error for TextError {}
 
 /// A program in `machine`'s own text (the AVR's with `Scan` = `scan_ms`)
-/// as a ladder.
+/// as a ladder: the machine's target reads and decompiles it.
 pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<Ladder, TextError> {
-    use crate::plc::problems;
-    let ladder = match machine {
-        MachineId::MinasecU => {
-            let p = minasec::Program::parse(text).map_err(|e| TextError::Program(problems(e)))?;
-            decompile(Source::Minasec(&p))
-        }
-        MachineId::Io86a => {
-            let p = io86a::Program::parse(text).map_err(|e| TextError::Program(problems(e)))?;
-            decompile(Source::Io86a(&p))
-        }
-        MachineId::AvrPlc => {
-            let p = avr::Program::parse(text, i64::from(scan_ms))
-                .map_err(|e| TextError::Program(problems(e)))?;
-            decompile(Source::Avr(&p, scan_ms))
-        }
-        MachineId::ArduinoPlc => {
-            let p = arduino::Program::parse(text, arduino::Chip::Atmega328.capacity())
-                .map_err(|e| TextError::Program(problems(e)))?;
-            decompile(Source::Arduino(&p))
-        }
-        MachineId::SoftPlc => {
-            let p =
-                crate::softplc::Program::load(text).map_err(|e| TextError::Program(problems(e)))?;
-            decompile(Source::Soft(&p))
-        }
+    let options = crate::ladder::compile::Options {
+        avr_scan_ms: scan_ms,
     };
-    ladder.map_err(TextError::Decompile)
+    machine.target().decompile_text(text, options)
 }
 
-pub(super) fn contact(device: String, inverted: bool) -> Net {
+/// The soft PLC's IL (its declarations and lines) as a ladder with its
+/// declared variables.
+pub fn il_ladder(p: &dyn crate::iec::il::IlSource) -> Result<Ladder, DecompileError> {
+    let (vars, lines) = p.source();
+    let mut ladder = il::il_ladder(vars, lines)?;
+    ladder.variables = il::declared(vars);
+    Ok(ladder)
+}
+
+pub(crate) fn contact(device: String, inverted: bool) -> Net {
     let kind = if inverted {
         ContactKind::Nc
     } else {
@@ -191,19 +144,19 @@ pub(super) fn contact(device: String, inverted: bool) -> Net {
 /// A condition being built, with how deeply it nests, so that a program
 /// that nests blocks past [`MAX_NESTING`] is refused at the step that
 /// would (and no deeper network is ever built).
-pub(super) struct Part {
+pub(crate) struct Part {
     net: Net,
     depth: usize,
 }
 
 impl Part {
-    pub(super) fn of(net: Net) -> Part {
+    pub(crate) fn of(net: Net) -> Part {
         let depth = net.depth();
         Part { net, depth }
     }
 
     /// `self` and `b` in series (`and`) or in parallel.
-    fn join(self, b: Part, and: bool, step: usize) -> Result<Part, StepError> {
+    pub(crate) fn join(self, b: Part, and: bool, step: usize) -> Result<Part, StepError> {
         let merges = |p: &Part| match p.net {
             Net::Series(_) => and,
             Net::Parallel(_) => !and,
@@ -230,7 +183,11 @@ impl Part {
 
 /// Ends a rung: its condition drives the outputs collected (a condition
 /// with no output drives nothing and is dropped, as the machine ignores it).
-fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Part>, outputs: &mut Vec<Element>) {
+pub(crate) fn close_rung(
+    rungs: &mut Vec<RungLogic>,
+    condition: Option<Part>,
+    outputs: &mut Vec<Element>,
+) {
     if let Some(Part { net: condition, .. }) = condition {
         if !outputs.is_empty() {
             rungs.push(RungLogic {
@@ -246,7 +203,7 @@ fn close_rung(rungs: &mut Vec<RungLogic>, condition: Option<Part>, outputs: &mut
 
 /// Adds an output to the open rung; the first output that holds the
 /// rung's result becomes the anchor a continuation starts from.
-fn add_output<T>(
+pub(crate) fn add_output<T>(
     open: bool,
     outputs: &mut Vec<Element>,
     anchor: &mut Option<T>,

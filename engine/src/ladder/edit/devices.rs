@@ -10,10 +10,11 @@ use crate::ladder::target::capabilities;
 use crate::MachineId;
 
 /// Every device name `machine` has, in its own spelling, in the order its
-/// capability table lists them (`X00` … `X07`, `Y00` …). The soft PLC's
-/// I/O is whatever its program names: its board's 8 inputs and 8 outputs.
+/// capability table lists them (`X00` … `X07`, `Y00` …). A machine with
+/// word boxes (the soft PLC) has whatever I/O its program names: its
+/// board's 8 inputs and 8 outputs are listed.
 pub fn device_names(machine: MachineId) -> Vec<String> {
-    if machine == MachineId::SoftPlc {
+    if capabilities(machine).word_boxes {
         return ["%IX0.", "%QX0."]
             .iter()
             .flat_map(|area| (0..8).map(move |n| format!("{area}{n}")))

@@ -25,7 +25,8 @@ pub use super::entry_error::EntryError;
 /// the machine's spelling of its devices.
 pub fn parse_entry(machine: MachineId, kind: EntryKind, text: &str) -> Result<Element, EntryError> {
     let words: Vec<&str> = text.split_whitespace().collect();
-    if machine == MachineId::SoftPlc && words.len() > 1 && super::block_entry::is_box(text) {
+    let word_boxes = crate::ladder::target::capabilities(machine).word_boxes;
+    if word_boxes && words.len() > 1 && super::block_entry::is_box(text) {
         // A box; else (`AND %IX0.0`, `TON t1 500ms`) an instruction.
         let boxed = super::block_entry::parse_box(text)
             .and_then(|e| check_element(machine, &e).map_err(EntryError::Element));

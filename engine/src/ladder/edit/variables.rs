@@ -151,10 +151,14 @@ fn rename_in(element: &mut Element, old: &str, new: &str) {
 /// Refuses `after` where it has a problem at a cell that `before` did
 /// not: a use the change no longer fits.
 fn fits(before: &Ladder, after: &Ladder) -> Result<(), VariableEditError> {
+    // Variables are declared on the machines with word boxes (the soft
+    // PLC): a change must still fit there.
     let problems = |l: &Ladder| -> Vec<LadderError> {
-        compile(l, MachineId::SoftPlc, Options::default())
-            .err()
-            .unwrap_or_default()
+        MachineId::ALL
+            .into_iter()
+            .filter(|m| m.target().capabilities().word_boxes)
+            .flat_map(|m| compile(l, m, Options::default()).err().unwrap_or_default())
+            .collect()
     };
     let old = problems(before);
     match problems(after)

@@ -90,7 +90,8 @@ impl Body {
 
     /// Whether the body is read for the soft PLC (its blocks are boxes).
     pub(in crate::formats::plcopen) fn soft(&self) -> bool {
-        self.machine == Some(crate::MachineId::SoftPlc)
+        self.machine
+            .is_some_and(|m| m.target().capabilities().word_boxes)
     }
 
     /// Whether block `n` of type `ty` (upper case) is a Boolean gate

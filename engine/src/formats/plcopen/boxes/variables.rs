@@ -29,7 +29,7 @@ pub(in crate::formats::plcopen) fn declared_for(
     chosen: &[&Node],
 ) -> Result<Vec<Variable>, Errors> {
     match machine {
-        Some(crate::MachineId::SoftPlc) => declared(root, chosen),
+        Some(m) if m.target().capabilities().word_boxes => declared(root, chosen),
         _ => Ok(Vec::new()),
     }
 }

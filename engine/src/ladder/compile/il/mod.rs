@@ -53,10 +53,12 @@ struct Compiler {
 }
 
 /// Compiles checked rung logic for the soft PLC with the ladder's
-/// declared `variables`.
+/// declared `variables`; `load` says what the machine finds wrong in the
+/// text (each problem's 1-based line and message), for [`loads`].
 pub(crate) fn compile_mapped(
     rungs: &[RungLogic],
     variables: &[Variable],
+    load: &dyn Fn(&str) -> Vec<(usize, String)>,
 ) -> Result<Mapped, Vec<LadderError>> {
     let used = used_devices(rungs);
     let mut c = Compiler {
@@ -117,7 +119,7 @@ pub(crate) fn compile_mapped(
         .map(|(r, p, line)| (r, p, line + header))
         .collect();
     let first_lines: Vec<usize> = first_lines.into_iter().map(|l| l + header).collect();
-    loads(&text, &first_lines, &sources)?;
+    loads(load(&text), &first_lines, &sources)?;
     Ok(Mapped {
         text,
         starts,
@@ -130,21 +132,20 @@ pub(crate) fn compile_mapped(
 /// code holds its line: the first leaf of that line's rung at or after
 /// it (a box's source line follows its code), else the rung.
 fn loads(
-    text: &str,
+    errors: Vec<(usize, String)>,
     first_lines: &[usize],
     sources: &[(usize, Pos, usize)],
 ) -> Result<(), Vec<LadderError>> {
-    let Err(errors) = crate::softplc::Program::load(text) else {
+    if errors.is_empty() {
         return Ok(());
-    };
+    }
     Err(errors
         .into_iter()
-        .map(|e| {
-            let line = e.line.saturating_sub(1);
+        .map(|(line, message)| {
+            let line = line.saturating_sub(1);
             let rung = first_lines
                 .partition_point(|l| *l <= line)
                 .saturating_sub(1);
-            let message = e.error.to_string();
             match sources.iter().find(|(r, _, l)| *r == rung && *l >= line) {
                 Some((_, pos, _)) => LadderError::at(rung, *pos, message),
                 None => LadderError::rung(rung, message),
