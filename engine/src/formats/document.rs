@@ -10,6 +10,7 @@ use super::plcopen::{self, ImportError, VarMap};
 use super::project::{Project, ProjectError};
 use crate::error::Located;
 use crate::ladder::grid::LadderError;
+use crate::machines::IEC_MACHINE;
 use crate::MachineId;
 
 /// The files Hashigo opens as a ladder.
@@ -123,13 +124,13 @@ impl Document {
         match self {
             Document::Project(p, _) => Some(p.machine),
             Document::PlcOpen(_) => None,
-            Document::LdMicro(..) => Some(MachineId::SoftPlc),
+            Document::LdMicro(..) => Some(IEC_MACHINE),
         }
     }
 
     /// The only machine the file runs on, if it has one (LDmicro's).
     pub fn only_machine(&self) -> Option<MachineId> {
-        matches!(self, Document::LdMicro(..)).then_some(MachineId::SoftPlc)
+        matches!(self, Document::LdMicro(..)).then_some(IEC_MACHINE)
     }
 
     /// The programs one may import alone (a PLCopen file's drawn POUs);
@@ -189,8 +190,8 @@ impl Document {
                 })
             }
             Document::LdMicro(file, line) => {
-                if machine != MachineId::SoftPlc {
-                    let only = FileError::OnlyOn(MachineId::SoftPlc);
+                if machine != IEC_MACHINE {
+                    let only = FileError::OnlyOn(IEC_MACHINE);
                     return Err(vec![Located::new(1, only)]);
                 }
                 let ladder = ldmicro::to_ladder(file).map_err(|e| wrap(e, FileError::LdMicro))?;
