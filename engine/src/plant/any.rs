@@ -2,10 +2,11 @@
 
 use super::conveyor::{self, Conveyor};
 use super::tank::{self, Tank};
+use super::traffic::{self, Traffic};
 use super::{Plant, PlantInfo};
 
 /// Every plant's description, in `hashigo plants` order.
-pub static ALL: [&PlantInfo; 2] = [&conveyor::INFO, &tank::INFO];
+pub static ALL: [&PlantInfo; 3] = [&conveyor::INFO, &tank::INFO, &traffic::INFO];
 
 /// One of the plants, as a value (so a machine with its plant can be
 /// copied for recording).
@@ -15,6 +16,8 @@ pub enum AnyPlant {
     Conveyor(Conveyor),
     /// The tank.
     Tank(Tank),
+    /// The pedestrian crossing.
+    Traffic(Traffic),
 }
 
 impl AnyPlant {
@@ -23,6 +26,7 @@ impl AnyPlant {
         match name {
             "conveyor" => Some(AnyPlant::Conveyor(Conveyor::new())),
             "tank" => Some(AnyPlant::Tank(Tank::new())),
+            "traffic" => Some(AnyPlant::Traffic(Traffic::new())),
             _ => None,
         }
     }
@@ -36,6 +40,7 @@ impl AnyPlant {
         match self {
             AnyPlant::Conveyor(p) => p,
             AnyPlant::Tank(p) => p,
+            AnyPlant::Traffic(p) => p,
         }
     }
 
@@ -43,6 +48,7 @@ impl AnyPlant {
         match self {
             AnyPlant::Conveyor(p) => p,
             AnyPlant::Tank(p) => p,
+            AnyPlant::Traffic(p) => p,
         }
     }
 }

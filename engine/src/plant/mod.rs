@@ -15,6 +15,7 @@ pub mod fault;
 mod planted;
 mod rng;
 pub mod tank;
+pub mod traffic;
 pub mod wiring;
 
 pub use any::AnyPlant;
