@@ -1,12 +1,13 @@
 //! The registry of plants: the one place that names every plant.
 
 use super::conveyor::{self, Conveyor};
+use super::door::{self, Door};
 use super::tank::{self, Tank};
 use super::traffic::{self, Traffic};
 use super::{Plant, PlantInfo};
 
 /// Every plant's description, in `hashigo plants` order.
-pub static ALL: [&PlantInfo; 3] = [&conveyor::INFO, &tank::INFO, &traffic::INFO];
+pub static ALL: [&PlantInfo; 4] = [&conveyor::INFO, &tank::INFO, &traffic::INFO, &door::INFO];
 
 /// One of the plants, as a value (so a machine with its plant can be
 /// copied for recording).
@@ -18,6 +19,8 @@ pub enum AnyPlant {
     Tank(Tank),
     /// The pedestrian crossing.
     Traffic(Traffic),
+    /// The garage door.
+    Door(Door),
 }
 
 impl AnyPlant {
@@ -27,6 +30,7 @@ impl AnyPlant {
             "conveyor" => Some(AnyPlant::Conveyor(Conveyor::new())),
             "tank" => Some(AnyPlant::Tank(Tank::new())),
             "traffic" => Some(AnyPlant::Traffic(Traffic::new())),
+            "door" => Some(AnyPlant::Door(Door::new())),
             _ => None,
         }
     }
@@ -41,6 +45,7 @@ impl AnyPlant {
             AnyPlant::Conveyor(p) => p,
             AnyPlant::Tank(p) => p,
             AnyPlant::Traffic(p) => p,
+            AnyPlant::Door(p) => p,
         }
     }
 
@@ -49,6 +54,7 @@ impl AnyPlant {
             AnyPlant::Conveyor(p) => p,
             AnyPlant::Tank(p) => p,
             AnyPlant::Traffic(p) => p,
+            AnyPlant::Door(p) => p,
         }
     }
 }

@@ -10,6 +10,7 @@
 pub mod any;
 mod boxed;
 pub mod conveyor;
+pub mod door;
 pub mod error;
 pub mod fault;
 mod planted;

@@ -59,7 +59,8 @@ static QUANTITIES: [QuantityInfo; 3] = [
     },
     QuantityInfo {
         name: "waited_max",
-        description: "the longest wait so far, from a pedestrian's arrival to walk (waits still going count)",
+        description:
+            "the longest wait so far, from a pedestrian's arrival to walk (waits still going count)",
         unit: "ms",
         range: (0, i64::MAX),
     },
