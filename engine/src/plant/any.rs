@@ -2,12 +2,19 @@
 
 use super::conveyor::{self, Conveyor};
 use super::door::{self, Door};
+use super::sorter::{self, Sorter};
 use super::tank::{self, Tank};
 use super::traffic::{self, Traffic};
 use super::{Plant, PlantInfo};
 
 /// Every plant's description, in `hashigo plants` order.
-pub static ALL: [&PlantInfo; 4] = [&conveyor::INFO, &tank::INFO, &traffic::INFO, &door::INFO];
+pub static ALL: [&PlantInfo; 5] = [
+    &conveyor::INFO,
+    &tank::INFO,
+    &traffic::INFO,
+    &door::INFO,
+    &sorter::INFO,
+];
 
 /// One of the plants, as a value (so a machine with its plant can be
 /// copied for recording).
@@ -21,6 +28,8 @@ pub enum AnyPlant {
     Traffic(Traffic),
     /// The garage door.
     Door(Door),
+    /// The sorter.
+    Sorter(Sorter),
 }
 
 impl AnyPlant {
@@ -31,6 +40,7 @@ impl AnyPlant {
             "tank" => Some(AnyPlant::Tank(Tank::new())),
             "traffic" => Some(AnyPlant::Traffic(Traffic::new())),
             "door" => Some(AnyPlant::Door(Door::new())),
+            "sorter" => Some(AnyPlant::Sorter(Sorter::new())),
             _ => None,
         }
     }
@@ -46,6 +56,7 @@ impl AnyPlant {
             AnyPlant::Tank(p) => p,
             AnyPlant::Traffic(p) => p,
             AnyPlant::Door(p) => p,
+            AnyPlant::Sorter(p) => p,
         }
     }
 
@@ -55,6 +66,7 @@ impl AnyPlant {
             AnyPlant::Tank(p) => p,
             AnyPlant::Traffic(p) => p,
             AnyPlant::Door(p) => p,
+            AnyPlant::Sorter(p) => p,
         }
     }
 }

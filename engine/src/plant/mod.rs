@@ -15,6 +15,7 @@ pub mod error;
 pub mod fault;
 mod planted;
 mod rng;
+pub mod sorter;
 pub mod tank;
 pub mod traffic;
 pub mod wiring;
