@@ -2,18 +2,20 @@
 
 use super::conveyor::{self, Conveyor};
 use super::door::{self, Door};
+use super::room_light::{self, RoomLight};
 use super::sorter::{self, Sorter};
 use super::tank::{self, Tank};
 use super::traffic::{self, Traffic};
 use super::{Plant, PlantInfo};
 
 /// Every plant's description, in `hashigo plants` order.
-pub static ALL: [&PlantInfo; 5] = [
+pub static ALL: [&PlantInfo; 6] = [
     &conveyor::INFO,
     &tank::INFO,
     &traffic::INFO,
     &door::INFO,
     &sorter::INFO,
+    &room_light::INFO,
 ];
 
 /// One of the plants, as a value (so a machine with its plant can be
@@ -30,6 +32,8 @@ pub enum AnyPlant {
     Door(Door),
     /// The sorter.
     Sorter(Sorter),
+    /// The Arduino sketch's room light.
+    RoomLight(RoomLight),
 }
 
 impl AnyPlant {
@@ -41,6 +45,7 @@ impl AnyPlant {
             "traffic" => Some(AnyPlant::Traffic(Traffic::new())),
             "door" => Some(AnyPlant::Door(Door::new())),
             "sorter" => Some(AnyPlant::Sorter(Sorter::new())),
+            "room-light" => Some(AnyPlant::RoomLight(RoomLight::new())),
             _ => None,
         }
     }
@@ -57,6 +62,7 @@ impl AnyPlant {
             AnyPlant::Traffic(p) => p,
             AnyPlant::Door(p) => p,
             AnyPlant::Sorter(p) => p,
+            AnyPlant::RoomLight(p) => p,
         }
     }
 
@@ -67,6 +73,7 @@ impl AnyPlant {
             AnyPlant::Traffic(p) => p,
             AnyPlant::Door(p) => p,
             AnyPlant::Sorter(p) => p,
+            AnyPlant::RoomLight(p) => p,
         }
     }
 }

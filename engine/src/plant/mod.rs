@@ -15,6 +15,7 @@ pub mod error;
 pub mod fault;
 mod planted;
 mod rng;
+pub mod room_light;
 pub mod sorter;
 pub mod tank;
 pub mod traffic;
