@@ -29,6 +29,10 @@ fn each_reference_ladder_passes_its_tests_with_its_plant() {
         ("minasec-u/conveyor.json", "conveyor"),
         ("io86a/tank.json", "tank"),
         ("soft-plc/tank.json", "tank"),
+        ("minasec-u/traffic.json", "traffic"),
+        ("minasec-u/door.json", "door"),
+        ("minasec-u/sorter.json", "sorter"),
+        ("minasec-u/room-light.json", "room-light"),
     ] {
         let (code, out, err) = run(&["test", "--program", &program(path), "--plant", plant]);
         assert_eq!((code, err.as_str()), (0, ""), "{path}: {out}");
