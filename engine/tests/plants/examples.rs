@@ -33,11 +33,46 @@ fn each_reference_ladder_passes_its_tests_with_its_plant() {
         ("minasec-u/door.json", "door"),
         ("minasec-u/sorter.json", "sorter"),
         ("minasec-u/room-light.json", "room-light"),
+        // The project's own plant, with its fault (--plant would replace it).
+        ("minasec-u/sorter-fault.json", ""),
     ] {
-        let (code, out, err) = run(&["test", "--program", &program(path), "--plant", plant]);
+        let path_arg = program(path);
+        let mut args = vec!["test", "--program", &path_arg];
+        if !plant.is_empty() {
+            args.extend(["--plant", plant]);
+        }
+        let (code, out, err) = run(&args);
         assert_eq!((code, err.as_str()), (0, ""), "{path}: {out}");
         assert!(out.ends_with("3 passed, 0 failed\n"), "{path}: {out}");
     }
+}
+
+#[test]
+fn the_troubleshooting_sorter_holds_its_fault_and_fails_the_ladder_that_trusted_the_switch() {
+    let json = std::fs::read_to_string(program("minasec-u/sorter-fault.json")).unwrap();
+    let mut project = Project::from_json(&json).unwrap();
+    let task = &project.exercise.as_ref().expect("an exercise").task;
+    assert!(task.en.contains("find which device is broken") && task.ja.contains("故障"));
+    let sorter = std::fs::read_to_string(program("minasec-u/sorter.il")).unwrap();
+    project.ladder = decompile_text(MachineId::MinasecU, &sorter, 10).unwrap();
+    let tmp = Temp::new("plant-trouble");
+    let trusting = tmp.file("trusting.json", &project.to_json());
+    // No --plant: the project's own plant, with its fault.
+    let (code, out, _) = run(&["test", "--program", &trusting]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("pass the broken switch is found"), "{out}");
+    assert!(
+        out.contains("fail sorts for two minutes with no hit: sorter.right >= 20"),
+        "{out}"
+    );
+    // Without the fault the same ladder sorts: the fault is what breaks it.
+    project.plant.as_mut().expect("a plant").faults.clear();
+    let repaired = tmp.file("repaired.json", &project.to_json());
+    let (_, out, _) = run(&["test", "--program", &repaired]);
+    assert!(
+        out.contains("pass sorts for two minutes with no hit"),
+        "{out}"
+    );
 }
 
 #[test]
