@@ -130,3 +130,45 @@ fn a_dark_sensor_stuck_on_wastes_the_whole_day_and_analog_faults_are_refused() {
     assert_eq!(code, 2, "{err}");
     assert!(err.starts_with("error: ") && err.contains("light"), "{err}");
 }
+
+#[test]
+fn each_exercise_fails_a_plausible_wrong_ladder_by_what_the_machine_did() {
+    use engine::formats::Project;
+    use engine::ladder::decompile::decompile_text;
+    use engine::MachineId;
+    let tmp = super::common::Temp::new("plant-wrong");
+    for (plant, wrong, failed) in [
+        // Green always, walk latched by the button: the conflict.
+        (
+            "traffic",
+            "LDI C0R\nST Y02\nLD X00\nOR Y03\nST Y03\n",
+            "fail everyone crosses safely for five minutes: traffic.alarms = 0",
+        ),
+        // Opens on the remote and never stops at the top.
+        (
+            "door",
+            "LD X03\nOR Y00\nST Y00\n",
+            "fail no alarm in five minutes: door.alarms = 0",
+        ),
+        // Pushes every part, tall or short.
+        (
+            "sorter",
+            "LDI C0R\nST Y00\nLD X00\nOR Y01\nANDI X02\nST Y01\n",
+            "fail the pusher never hits a part: sorter.wrong = 0",
+        ),
+        // The lamp always on.
+        (
+            "room-light",
+            "LDI C0R\nST Y00\n",
+            "fail no light wasted, no dark room, for two days: room-light.lamp_on_ms <= 100",
+        ),
+    ] {
+        let path = format!("{PROGRAMS}/minasec-u/{plant}.json");
+        let mut project = Project::from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+        project.ladder = decompile_text(MachineId::MinasecU, wrong, 10).unwrap();
+        let file = tmp.file(&format!("{plant}.json"), &project.to_json());
+        let (code, out, _) = run(&["test", "--program", &file]);
+        assert_eq!(code, 1, "{plant}: {out}");
+        assert!(out.contains(failed), "{plant}: {out}");
+    }
+}
