@@ -172,3 +172,44 @@ fn each_exercise_fails_a_plausible_wrong_ladder_by_what_the_machine_did() {
         assert!(out.contains(failed), "{plant}: {out}");
     }
 }
+
+#[test]
+fn a_door_blocked_while_closing_opens_again_and_one_that_closes_on_raises_the_alarm() {
+    // The eye blocked at 75 s, while the reference door closes (71-81 s).
+    let blocked = [
+        "--plant",
+        "door",
+        "--set",
+        "door.eye_every=75s",
+        "--set",
+        "door.eye_spread=0",
+        "--set",
+        "door.seed=1",
+        "--until",
+        "90s",
+        "--watch",
+        "door.position,door.alarms",
+    ];
+    let door = format!("{PROGRAMS}/minasec-u/door.il");
+    let args = [
+        &["run", "--machine", "minasec-u", "--program", &door][..],
+        &blocked,
+    ]
+    .concat();
+    let (code, out, err) = run(&args);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert!(out.ends_with("\n90000,100,0\n"), "opened again: {out}");
+    let tmp = super::common::Temp::new("door-eye");
+    let blind = tmp.file("blind.il", "LD X03\nAND X01\nOR Y00\nANDI X00\nST Y00\nLD X03\nAND X00\nOR Y01\nANDI X01\nANDI Y00\nST Y01\n");
+    let args = [
+        &["run", "--machine", "minasec-u", "--program", &blind][..],
+        &blocked,
+    ]
+    .concat();
+    let (_, out, err) = run(&args);
+    assert!(out.ends_with("\n90000,0,1\n"), "closed on: {out}");
+    assert!(
+        err.contains("75200: door: the door closes while the photo-eye is blocked"),
+        "{err}"
+    );
+}
