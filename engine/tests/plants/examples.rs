@@ -1,6 +1,7 @@
 //! The plants' examples: the book's conveyor on MINASEC-U (an exercise
 //! with its task in English and Japanese), the same ladder on IO86A and
-//! the soft PLC, and the tank's level control on IO86A and the soft PLC.
+//! the soft PLC, the tank's level control on IO86A and the soft PLC, and
+//! the exercises of issue #51 (every project with a plant is run).
 
 use engine::formats::Project;
 use engine::ladder::decompile::decompile_text;
