@@ -1,11 +1,22 @@
 //! The registry of plants: the one place that names every plant.
 
 use super::conveyor::{self, Conveyor};
+use super::door::{self, Door};
+use super::room_light::{self, RoomLight};
+use super::sorter::{self, Sorter};
 use super::tank::{self, Tank};
+use super::traffic::{self, Traffic};
 use super::{Plant, PlantInfo};
 
 /// Every plant's description, in `hashigo plants` order.
-pub static ALL: [&PlantInfo; 2] = [&conveyor::INFO, &tank::INFO];
+pub static ALL: [&PlantInfo; 6] = [
+    &conveyor::INFO,
+    &tank::INFO,
+    &traffic::INFO,
+    &door::INFO,
+    &sorter::INFO,
+    &room_light::INFO,
+];
 
 /// One of the plants, as a value (so a machine with its plant can be
 /// copied for recording).
@@ -15,6 +26,14 @@ pub enum AnyPlant {
     Conveyor(Conveyor),
     /// The tank.
     Tank(Tank),
+    /// The pedestrian crossing.
+    Traffic(Traffic),
+    /// The garage door.
+    Door(Door),
+    /// The sorter.
+    Sorter(Sorter),
+    /// The Arduino sketch's room light.
+    RoomLight(RoomLight),
 }
 
 impl AnyPlant {
@@ -23,6 +42,10 @@ impl AnyPlant {
         match name {
             "conveyor" => Some(AnyPlant::Conveyor(Conveyor::new())),
             "tank" => Some(AnyPlant::Tank(Tank::new())),
+            "traffic" => Some(AnyPlant::Traffic(Traffic::new())),
+            "door" => Some(AnyPlant::Door(Door::new())),
+            "sorter" => Some(AnyPlant::Sorter(Sorter::new())),
+            "room-light" => Some(AnyPlant::RoomLight(RoomLight::new())),
             _ => None,
         }
     }
@@ -36,6 +59,10 @@ impl AnyPlant {
         match self {
             AnyPlant::Conveyor(p) => p,
             AnyPlant::Tank(p) => p,
+            AnyPlant::Traffic(p) => p,
+            AnyPlant::Door(p) => p,
+            AnyPlant::Sorter(p) => p,
+            AnyPlant::RoomLight(p) => p,
         }
     }
 
@@ -43,6 +70,10 @@ impl AnyPlant {
         match self {
             AnyPlant::Conveyor(p) => p,
             AnyPlant::Tank(p) => p,
+            AnyPlant::Traffic(p) => p,
+            AnyPlant::Door(p) => p,
+            AnyPlant::Sorter(p) => p,
+            AnyPlant::RoomLight(p) => p,
         }
     }
 }

@@ -10,11 +10,15 @@
 pub mod any;
 mod boxed;
 pub mod conveyor;
+pub mod door;
 pub mod error;
 pub mod fault;
 mod planted;
 mod rng;
+pub mod room_light;
+pub mod sorter;
 pub mod tank;
+pub mod traffic;
 pub mod wiring;
 
 pub use any::AnyPlant;

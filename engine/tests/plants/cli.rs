@@ -258,7 +258,7 @@ fn plant_options_refuse_what_they_cannot_take() {
         ),
         (
             &["--plant", "silo"],
-            "--plant: no plant \"silo\" (plants: conveyor, tank)",
+            "--plant: no plant \"silo\" (plants: conveyor, tank, traffic, door, sorter, room-light)",
         ),
         (&["--fault", "motor dead"], "--fault needs --plant NAME"),
         (

@@ -67,8 +67,24 @@ fn check(plant: &AnyPlant) {
             );
         }
     }
-    if info.name == "conveyor" {
-        assert_eq!(plant.quantity(0) - plant.quantity(1), plant.quantity(2));
+    match info.name {
+        "conveyor" => assert_eq!(plant.quantity(0) - plant.quantity(1), plant.quantity(2)),
+        // The door's limit switches follow its position.
+        "door" => {
+            let position = plant.quantity(0);
+            assert_eq!(plant.sensor(0), i64::from(position == 100), "top");
+            if position > 0 {
+                assert_eq!(plant.sensor(1), 0, "bottom at {position} %");
+            }
+        }
+        // One end switch at most, and never both.
+        "sorter" => assert!(plant.sensor(2) + plant.sensor(3) <= 1),
+        // The bit and the analog value of one sensor agree.
+        "room-light" => {
+            let light = plant.sensor(1);
+            assert_eq!(plant.sensor(0) == 1, light < plant.params()[2] * 1000);
+        }
+        _ => {}
     }
 }
 
@@ -91,5 +107,41 @@ proptest! {
         segments in prop::collection::vec((0u16..20_000, any::<u8>()), 1..40),
     ) {
         drive(AnyPlant::new("tank").unwrap(), &params, &segments);
+    }
+
+    #[test]
+    #[ignore = "simulated hours: run with --ignored"]
+    fn the_crossing_stays_in_range_under_random_outputs(
+        params in prop::collection::vec(any::<u64>(), 4),
+        segments in prop::collection::vec((0u16..20_000, any::<u8>()), 1..40),
+    ) {
+        drive(AnyPlant::new("traffic").unwrap(), &params, &segments);
+    }
+
+    #[test]
+    #[ignore = "simulated hours: run with --ignored"]
+    fn the_door_stays_in_range_under_random_outputs(
+        params in prop::collection::vec(any::<u64>(), 10),
+        segments in prop::collection::vec((0u16..20_000, any::<u8>()), 1..40),
+    ) {
+        drive(AnyPlant::new("door").unwrap(), &params, &segments);
+    }
+
+    #[test]
+    #[ignore = "simulated hours: run with --ignored"]
+    fn the_sorter_stays_in_range_under_random_outputs(
+        params in prop::collection::vec(any::<u64>(), 11),
+        segments in prop::collection::vec((0u16..20_000, any::<u8>()), 1..40),
+    ) {
+        drive(AnyPlant::new("sorter").unwrap(), &params, &segments);
+    }
+
+    #[test]
+    #[ignore = "simulated hours: run with --ignored"]
+    fn the_room_light_stays_in_range_under_random_outputs(
+        params in prop::collection::vec(any::<u64>(), 3),
+        segments in prop::collection::vec((0u16..20_000, any::<u8>()), 1..40),
+    ) {
+        drive(AnyPlant::new("room-light").unwrap(), &params, &segments);
     }
 }

@@ -34,7 +34,7 @@ usage: hashigo <command> [options]
   plants   [--machine ID]             (the plants: signals, quantities, parameters, default wiring)
 faults:  'SIGNAL stuck 0|1 [from TIME]', 'SIGNAL dead [from TIME]'; watch NAME.SIGNAL, NAME.QUANTITY, NAME.alarms
 machines: minasec-u, io86a, avr-plc, arduino-plc, soft-plc
-plants: conveyor, tank";
+plants: conveyor, tank, traffic, door, sorter, room-light";
 
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
