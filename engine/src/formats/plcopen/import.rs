@@ -9,6 +9,7 @@ use super::body::Body;
 use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::ImportError;
+use super::graph::Graph;
 use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::ladder::element::Element;
@@ -77,7 +78,7 @@ pub(super) fn ladder_of(
     let mut errors = Vec::new();
     let mut carriers: Vec<String> = Vec::new();
     for ld in bodies {
-        let read = Body::read(ld, &names, &own_blocks, machine).and_then(|mut b| {
+        let read = Body::read(&Graph::read(ld), &names, &own_blocks, machine).and_then(|mut b| {
             b.spares = std::mem::take(&mut spares);
             let rungs = b.rungs(machine, &mut warnings);
             spares = std::mem::take(&mut b.spares);

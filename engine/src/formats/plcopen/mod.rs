@@ -24,6 +24,7 @@ pub mod dom;
 pub mod error;
 pub mod export;
 mod gates;
+mod graph;
 pub mod import;
 mod joins;
 mod kinds;
