@@ -5,7 +5,9 @@
 //! - text → document: [`dom`] (the XML as a small tree that keeps line
 //!   numbers), [`Document`] (checked as a project, read once, then asked
 //!   for its programs, a map for a machine, its ladder or its soft PLC
-//!   program);
+//!   program), `graph` (each drawn body read once as a graph of
+//!   elements, wires and running order, which both pipelines below
+//!   consume);
 //! - document → model: [`import`](mod@import) (power rails, contacts,
 //!   coils and blocks to rungs for a machine, lowered for the bit
 //!   machines; `boxes/` draws blocks as the soft PLC's boxes) and

@@ -1,4 +1,5 @@
-//! Reading a body: each element of the XML becomes edges between
+//! Reading a body for the bit machines: each element of the body's
+//! [`Graph`] (read once, shared with the soft PLC) becomes edges between
 //! electrical points of the [`Body`] graph (a connection list joins the
 //! points it names), its blocks gates to lower later.
 

@@ -1,8 +1,8 @@
 //! PLCopen projects on the soft PLC as written (issue #30): no map, no
 //! lowering. Declared names stay names, located variables keep their
 //! addresses, and each drawn (LD or FBD) body of the programs the tasks
-//! run becomes Instruction List that runs its graph as drawn
-//! (`emit.rs`): contacts, coils, every standard function and function
+//! run becomes Instruction List that runs its graph (`super::graph`,
+//! the one both pipelines read) as drawn (`emit.rs`): contacts, coils, every standard function and function
 //! block the soft PLC has, wired ORs, connectors, EN / ENO. IL bodies are
 //! copied as written (`il_body.rs`), and the project's own function
 //! blocks become function blocks of the program. What it does not run
