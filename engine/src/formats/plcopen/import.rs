@@ -5,11 +5,11 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::body::Body;
 use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::ImportError;
 use super::graph::Graph;
+use super::lower::body::Body;
 use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::ladder::element::Element;
@@ -192,7 +192,7 @@ fn drawn_bodies<'a>(
 fn name_devices(
     ladder: &mut Ladder,
     names: &Names,
-    helpers: Vec<super::body::Helper>,
+    helpers: Vec<super::lower::body::Helper>,
     machine: Option<MachineId>,
     warnings: &mut Vec<Located<String>>,
 ) {
@@ -206,7 +206,7 @@ fn name_devices(
             ladder.device_comments.entry(device).or_insert(name);
         }
     }
-    for super::body::Helper { relay, what, line } in helpers {
+    for super::lower::body::Helper { relay, what, line } in helpers {
         warnings.push(Located::new(
             line,
             format!("{relay} holds {what} (a relay the file does not use)"),

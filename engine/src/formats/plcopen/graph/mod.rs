@@ -3,9 +3,9 @@
 //! comment, a vendor element, or one that cannot be an element), each
 //! element by its `localId` with what it is, where it is drawn, which
 //! outputs feed each of its inputs and its XML node, and the order the
-//! elements run in ([`order`]). Nothing is lowered or refused here: the
+//! elements run in ([`order()`]). Nothing is lowered or refused here: the
 //! soft PLC runs the graph as the file draws it (`soft/`), the bit
-//! machines lower it to rungs (`read.rs` and the files it calls), and
+//! machines lower it to rungs (`lower/`, then `rungs/`), and
 //! each says what it does not take in its own words.
 
 mod order;

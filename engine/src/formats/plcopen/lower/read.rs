@@ -7,14 +7,14 @@ use std::collections::HashMap;
 
 use super::blocks;
 use super::body::{Body, CommentBox, Gate, GateKind, Lined, PinRef, VariableBox, RAIL};
-use super::declare::Names;
-use super::dom::Node;
-use super::error::{Connection, Errors, ImportError};
-use super::graph::{Element as GraphElement, Graph, Item, Kind, Read};
-use super::kinds::BlockKind;
-use super::parts::*;
-use super::vendor::Vendor;
 use crate::error::Located;
+use crate::formats::plcopen::declare::Names;
+use crate::formats::plcopen::dom::Node;
+use crate::formats::plcopen::error::{Connection, Errors, ImportError};
+use crate::formats::plcopen::graph::{Element as GraphElement, Graph, Item, Kind, Read};
+use crate::formats::plcopen::kinds::BlockKind;
+use crate::formats::plcopen::parts::*;
+use crate::formats::plcopen::vendor::Vendor;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
@@ -25,7 +25,7 @@ impl Body {
     /// a first pass notes what joining needs (rails, connectors,
     /// variable boxes), a second reads each element into edges, outputs
     /// and gates.
-    pub(super) fn read(
+    pub(in crate::formats::plcopen) fn read(
         graph: &Graph,
         names: &Names,
         own_blocks: &HashMap<String, (String, String)>,
@@ -185,7 +185,11 @@ impl Body {
     }
 
     /// The point a `connectionPointIn` joins, or an error when it joins none.
-    pub(super) fn join(&mut self, cpi: Option<&Node>, what: &str) -> Result<usize, ImportError> {
+    pub(in crate::formats::plcopen) fn join(
+        &mut self,
+        cpi: Option<&Node>,
+        what: &str,
+    ) -> Result<usize, ImportError> {
         let fail = |problem| ImportError::Connection {
             what: what.to_string(),
             problem,
@@ -443,7 +447,7 @@ impl Body {
     /// `<comment>` is), settings are nothing, an unknown element without
     /// wires or data is skipped with a warning, one carrying logic is
     /// refused at its line.
-    pub(super) fn vendor_element(&mut self, n: &Node, vendor: &Vendor) {
+    pub(in crate::formats::plcopen) fn vendor_element(&mut self, n: &Node, vendor: &Vendor) {
         match vendor.clone() {
             Vendor::Title(text) => {
                 let (row, col) = position(n);
