@@ -126,6 +126,47 @@ fn a_local_id_used_twice_is_an_error() {
     );
 }
 
+/// One body graph for both pipelines (issue #48): an SFC step taking a
+/// localId, then a contact reusing it. The bit machines read both and
+/// refuse the id used again and the step; the soft PLC refuses the step
+/// alone (the contact after it is not the problem).
+#[test]
+fn both_pipelines_read_the_same_body_and_refuse_it_in_their_words() {
+    let xml = body(
+        r#"<step localId="2" name="S0"/>
+<contact localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>X00</variable></contact>
+<coil localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>Y00</variable></coil>"#,
+    );
+    let document = Document::read(&xml).expect("a project");
+    let bits = document
+        .import(None, None, None)
+        .map(|_| ())
+        .expect_err("refused");
+    let said: Vec<(usize, String)> = bits.iter().map(|e| (e.line, e.error.to_string())).collect();
+    assert!(
+        said.iter()
+            .any(|(l, e)| *l == 4 && e.contains("localId \"2\" is used again (first on line 3)")),
+        "{said:?}"
+    );
+    assert!(
+        said.iter().any(|(l, e)| *l == 3 && e.contains("step")),
+        "{said:?}"
+    );
+    let soft = document
+        .soft_program(None)
+        .map(|_| ())
+        .expect_err("refused");
+    let said: Vec<(usize, String)> = soft.iter().map(|e| (e.line, e.error.to_string())).collect();
+    assert_eq!(said.len(), 1, "{said:?}");
+    assert_eq!(said[0].0, 3);
+    assert!(
+        said[0]
+            .1
+            .contains("<step> does not run on the soft PLC (SFC is not run)"),
+        "{said:?}"
+    );
+}
+
 #[test]
 fn negated_accepts_every_xml_boolean() {
     for (value, nc) in [("true", true), ("1", true), ("false", false), ("0", false)] {

@@ -5,10 +5,11 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::body::Body;
 use super::declare::{self, Names, VarMap};
 use super::dom::{self, Node};
 use super::error::ImportError;
+use super::graph::Graph;
+use super::lower::body::Body;
 use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::ladder::element::Element;
@@ -77,7 +78,7 @@ pub(super) fn ladder_of(
     let mut errors = Vec::new();
     let mut carriers: Vec<String> = Vec::new();
     for ld in bodies {
-        let read = Body::read(ld, &names, &own_blocks, machine).and_then(|mut b| {
+        let read = Body::read(&Graph::read(ld), &names, &own_blocks, machine).and_then(|mut b| {
             b.spares = std::mem::take(&mut spares);
             let rungs = b.rungs(machine, &mut warnings);
             spares = std::mem::take(&mut b.spares);
@@ -191,7 +192,7 @@ fn drawn_bodies<'a>(
 fn name_devices(
     ladder: &mut Ladder,
     names: &Names,
-    helpers: Vec<super::body::Helper>,
+    helpers: Vec<super::lower::body::Helper>,
     machine: Option<MachineId>,
     warnings: &mut Vec<Located<String>>,
 ) {
@@ -205,7 +206,7 @@ fn name_devices(
             ladder.device_comments.entry(device).or_insert(name);
         }
     }
-    for super::body::Helper { relay, what, line } in helpers {
+    for super::lower::body::Helper { relay, what, line } in helpers {
         warnings.push(Located::new(
             line,
             format!("{relay} holds {what} (a relay the file does not use)"),

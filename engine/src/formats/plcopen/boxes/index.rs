@@ -3,9 +3,9 @@
 //! from it, noted before any element is read ([`super`]).
 
 use super::boolean_input;
-use crate::formats::plcopen::body::{BlockOut, Body};
 use crate::formats::plcopen::declare::Names;
 use crate::formats::plcopen::dom::Node;
+use crate::formats::plcopen::lower::body::{BlockOut, Body};
 use crate::formats::plcopen::parts::negated;
 use crate::ladder::block::BlockCall;
 

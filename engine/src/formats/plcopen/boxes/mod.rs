@@ -25,11 +25,11 @@ mod index;
 pub(super) mod rungs;
 pub(super) mod variables;
 
-use super::blocks::pin_of;
-use super::body::{Body, Temp, RAIL};
 use super::declare::Names;
 use super::dom::Node;
 use super::error::ImportError;
+use super::lower::blocks::pin_of;
+use super::lower::body::{Body, Temp, RAIL};
 use super::parts::SPLIT_PLACES;
 use crate::iec::data::DataType;
 use crate::iec::pins;

@@ -5,8 +5,8 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use crate::formats::plcopen::body::{Body, Temp, RAIL};
 use crate::formats::plcopen::declare::Names;
+use crate::formats::plcopen::lower::body::{Body, Temp, RAIL};
 use crate::iec::data::DataType;
 use crate::iec::pins;
 use crate::ladder::block::Shape;

@@ -41,7 +41,7 @@ pub(in crate::formats::plcopen) fn declared_for(
 pub(in crate::formats::plcopen) fn settle(
     variables: &mut Vec<Variable>,
     carriers: &[String],
-    temps: &[crate::formats::plcopen::body::Temp],
+    temps: &[crate::formats::plcopen::lower::body::Temp],
     names: &crate::formats::plcopen::declare::Names,
 ) {
     variables.retain(|v| {

@@ -11,11 +11,10 @@
 use std::collections::HashMap;
 
 use super::declare::{Declarations, Held, Interface};
-use super::graph::{Element, Graph, Kind, Source};
 use super::infer::output_type;
-use super::order::order;
 use super::SoftError;
 use crate::error::Located;
+use crate::formats::plcopen::graph::{order, Element, Graph, Kind, Source};
 use crate::iec::data::DataType;
 use crate::iec::functions::{Function, Operand};
 use crate::iec::is_identifier;
@@ -72,7 +71,6 @@ impl Emitter<'_> {
                 }
             }
         }
-        self.out.warnings.extend(g.warnings.iter().cloned());
         self.failed.clear();
         let known = super::infer::Known {
             operand: &|x| self.expression(x).ok().map(|o| o.ty),
@@ -401,7 +399,8 @@ impl Emitter<'_> {
                     .ok_or_else(|| SoftError::Feedback(type_name.clone()))?;
                 Operand::temp(format!("_{k}_n{}_{pin}", from.id), ty)
             }
-            Kind::RightRail | Kind::OutVariable(_) | Kind::Connector(_) => {
+            // An unknown element is refused before a body is emitted.
+            Kind::RightRail | Kind::OutVariable(_) | Kind::Connector(_) | Kind::Other(_) => {
                 return Err(SoftError::Missing(s.from.clone()));
             }
         })

@@ -5,8 +5,8 @@
 //! line, as the IL loader refuses an unknown `CAL` pin.
 
 use super::declare::Interface;
-use super::graph::Element;
 use super::SoftError;
+use crate::formats::plcopen::graph::Element;
 use crate::iec::data::DataType;
 use crate::iec::functions::Function;
 use crate::iec::pins::is_block_type;

@@ -8,8 +8,7 @@
 use std::collections::HashMap;
 
 use super::declare::Interface;
-use super::graph::{Element, Graph, Kind, Source};
-use super::order::order;
+use crate::formats::plcopen::graph::{order, Element, Graph, Kind, Source};
 use crate::iec::data::DataType;
 use crate::iec::functions::{Function, Operand};
 use crate::iec::pins::outputs as fb_outputs;

@@ -1,8 +1,8 @@
 //! PLCopen projects on the soft PLC as written (issue #30): no map, no
 //! lowering. Declared names stay names, located variables keep their
 //! addresses, and each drawn (LD or FBD) body of the programs the tasks
-//! run becomes Instruction List that runs its graph as drawn
-//! (`emit.rs`): contacts, coils, every standard function and function
+//! run becomes Instruction List that runs its graph (`super::graph`,
+//! the one both pipelines read) as drawn (`emit.rs`): contacts, coils, every standard function and function
 //! block the soft PLC has, wired ORs, connectors, EN / ENO. IL bodies are
 //! copied as written (`il_body.rs`), and the project's own function
 //! blocks become function blocks of the program. What it does not run
@@ -13,12 +13,11 @@ mod declare;
 mod emit;
 pub mod error;
 mod formal;
-mod graph;
 mod il_body;
 mod infer;
-mod order;
 
 use super::dom::Node;
+use super::graph::Graph;
 use super::import::{choose_pous, drawn_body, language};
 use super::ImportError;
 use crate::error::Located;
@@ -182,10 +181,62 @@ fn runs(pou: &Node) -> bool {
 
 /// `pou`'s drawn body emitted by `em`; its problems.
 fn emit_body(mut em: emit::Emitter, pou: &Node) -> Vec<Located<SoftError>> {
-    match drawn_body(pou).map(graph::read) {
-        Some(Ok(g)) => em.body(&g).err().unwrap_or_default(),
-        Some(Err(e)) => e,
-        None => Vec::new(),
+    let Some(body) = drawn_body(pou) else {
+        return Vec::new();
+    };
+    let g = Graph::read(body);
+    match runnable(&g) {
+        Ok(warnings) => {
+            em.out.warnings.extend(warnings);
+            em.body(&g).err().unwrap_or_default()
+        }
+        Err(e) => e,
+    }
+}
+
+/// Whether the soft PLC runs every child of body `g` (not SFC steps,
+/// jumps, actions, vendor logic; every element with a `localId` of its
+/// own): the warnings for the vendor elements it skips, or every
+/// refusal at its line.
+fn runnable(g: &Graph) -> Result<Vec<Located<String>>, Vec<Located<SoftError>>> {
+    use super::graph::{Kind, Read};
+    use super::vendor::Vendor;
+    let mut warnings = Vec::new();
+    let mut errors = Vec::new();
+    let other = |n: &Node| SoftError::Element(n.name.clone());
+    for item in &g.items {
+        let n = item.node;
+        let error = match &item.read {
+            Read::Comment | Read::Vendor(Vendor::Title(_) | Vendor::Cosmetic) => None,
+            Read::Vendor(Vendor::Unknown(what)) => {
+                let warning = format!("{what} skipped: a vendor's own element");
+                warnings.push(Located::new(n.line, warning));
+                None
+            }
+            Read::Vendor(Vendor::Logic(why)) => Some(SoftError::VendorLogic(why.clone())),
+            Read::Element(i) => match &g.elements[*i].kind {
+                Kind::Other(_) => Some(other(n)),
+                _ => None,
+            },
+            Read::NoLocalId { known: false } | Read::Duplicate { known: false, .. } => {
+                Some(other(n))
+            }
+            Read::NoLocalId { known: true } => Some(SoftError::NoLocalId(n.name.clone())),
+            Read::Duplicate { id, .. } => {
+                // An id first taken by an element refused already.
+                let first = g.by_id.get(id).map(|&i| &g.elements[i].kind);
+                match first {
+                    Some(Kind::Other(_)) => None,
+                    _ => Some(SoftError::DuplicateId(id.clone())),
+                }
+            }
+        };
+        errors.extend(error.map(|e| Located::new(n.line, e)));
+    }
+    if errors.is_empty() {
+        Ok(warnings)
+    } else {
+        Err(errors)
     }
 }
 

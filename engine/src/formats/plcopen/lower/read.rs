@@ -1,4 +1,5 @@
-//! Reading a body: each element of the XML becomes edges between
+//! Reading a body for the bit machines: each element of the body's
+//! [`Graph`] (read once, shared with the soft PLC) becomes edges between
 //! electrical points of the [`Body`] graph (a connection list joins the
 //! points it names), its blocks gates to lower later.
 
@@ -6,20 +7,26 @@ use std::collections::HashMap;
 
 use super::blocks;
 use super::body::{Body, CommentBox, Gate, GateKind, Lined, PinRef, VariableBox, RAIL};
-use super::declare::Names;
-use super::dom::Node;
-use super::error::{Connection, Errors, ImportError};
-use super::kinds::BlockKind;
-use super::parts::*;
 use crate::error::Located;
+use crate::formats::plcopen::declare::Names;
+use crate::formats::plcopen::dom::Node;
+use crate::formats::plcopen::error::{Connection, Errors, ImportError};
+use crate::formats::plcopen::graph::{Element as GraphElement, Graph, Item, Kind, Read};
+use crate::formats::plcopen::kinds::BlockKind;
+use crate::formats::plcopen::parts::*;
+use crate::formats::plcopen::vendor::Vendor;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
 use crate::MachineId;
 
 impl Body {
-    pub(super) fn read(
-        ld: &Node,
+    /// Lowers body `graph` (read once, [`Graph::read`]) for `machine`:
+    /// a first pass notes what joining needs (rails, connectors,
+    /// variable boxes), a second reads each element into edges, outputs
+    /// and gates.
+    pub(in crate::formats::plcopen) fn read(
+        graph: &Graph,
         names: &Names,
         own_blocks: &HashMap<String, (String, String)>,
         machine: Option<MachineId>,
@@ -29,49 +36,11 @@ impl Body {
             machine,
             ..Body::default()
         };
-        for n in &ld.children {
-            if n.name == "comment" {
-                let (y, x) = position(n);
-                b.comments.push(CommentBox {
-                    row: y,
-                    col: x,
-                    text: n.deep_text(),
-                    line: n.line,
-                });
-                continue;
-            }
-            if n.name == "vendorElement" {
-                b.vendor_element(n);
-                continue;
-            }
-            let Some(id) = n.attr("localId") else {
-                b.errors
-                    .push(Located::new(n.line, ImportError::NoLocalId(n.name.clone())));
-                continue;
-            };
-            if let Some(Lined { line: first, .. }) = b.kinds.get(id) {
-                b.errors.push(Located::new(
-                    n.line,
-                    ImportError::DuplicateLocalId {
-                        id: id.to_string(),
-                        first: *first,
-                    },
-                ));
-                continue;
-            }
-            b.kinds.insert(
-                id.to_string(),
-                Lined {
-                    value: n.name.clone(),
-                    line: n.line,
-                },
-            );
-            b.index(id, n, names);
-            if b.soft() {
-                b.index_soft(id, n);
-            }
+        for item in &graph.items {
+            b.first_pass(graph, item, names);
         }
-        for (seq, n) in ld.children.iter().enumerate() {
+        for (seq, item) in graph.items.iter().enumerate() {
+            let n = item.node;
             if let Err(m) = b.element(n, seq, names, own_blocks) {
                 b.errors.push(Located::new(n.line, m));
             }
@@ -83,15 +52,59 @@ impl Body {
         }
     }
 
+    /// Notes child `item` of the body: a comment box, a vendor element,
+    /// an element without a `localId` of its own (refused), or an
+    /// element's kind and what joining needs of it.
+    fn first_pass(&mut self, graph: &Graph, item: &Item, names: &Names) {
+        let n = item.node;
+        let e = match &item.read {
+            Read::Comment => {
+                let (y, x) = position(n);
+                self.comments.push(CommentBox {
+                    row: y,
+                    col: x,
+                    text: n.deep_text(),
+                    line: n.line,
+                });
+                return;
+            }
+            Read::Vendor(v) => return self.vendor_element(n, v),
+            Read::NoLocalId { .. } => {
+                let e = ImportError::NoLocalId(n.name.clone());
+                return self.errors.push(Located::new(n.line, e));
+            }
+            Read::Duplicate { id, first, .. } => {
+                let e = ImportError::DuplicateLocalId {
+                    id: id.clone(),
+                    first: *first,
+                };
+                return self.errors.push(Located::new(n.line, e));
+            }
+            Read::Element(i) => &graph.elements[*i],
+        };
+        self.kinds.insert(
+            e.id.clone(),
+            Lined {
+                value: n.name.clone(),
+                line: n.line,
+            },
+        );
+        self.index(e, names);
+        if self.soft() {
+            self.index_soft(&e.id, n);
+        }
+    }
+
     /// Notes what a first pass over the body must know before any element
     /// is joined: rails, connectors and continuations, blocks' EN wires,
     /// variable boxes (their contacts) and literals.
-    fn index(&mut self, id: &str, n: &Node, names: &Names) {
-        match n.name.as_str() {
-            "leftPowerRail" => {
+    fn index(&mut self, e: &GraphElement, names: &Names) {
+        let (id, n) = (e.id.as_str(), e.node);
+        match &e.kind {
+            Kind::LeftRail => {
                 self.rails.insert(id.to_string());
             }
-            "connector" => {
+            Kind::Connector(_) => {
                 let name = connector_name(n);
                 let input = n.child("connectionPointIn").cloned().unwrap_or_default();
                 if let Some(Lined { line: first, .. }) = self.connectors.get(&name) {
@@ -110,11 +123,11 @@ impl Body {
                     self.connectors.insert(name, input);
                 }
             }
-            "continuation" => {
+            Kind::Continuation(_) => {
                 let name = connector_name(n);
                 self.continuations.insert(id.to_string(), name);
             }
-            "block" => {
+            Kind::Block { .. } => {
                 let en = blocks::pin_of(n, "EN")
                     .and_then(|p| p.child("connectionPointIn"))
                     .map(|c| {
@@ -134,41 +147,49 @@ impl Body {
                 self.block_names
                     .insert(id.to_string(), type_and_instance(n));
             }
-            "inVariable" => {
-                let expr = n
-                    .child("expression")
-                    .map(|e| e.text.clone())
-                    .unwrap_or_default();
-                if is_variable_name(&expr) {
-                    let (y, x) = position(n);
-                    let at = place(y, x, self.kinds.len());
-                    // A bad `negated` is refused at its line by `element`.
-                    let contact = if negated(n).unwrap_or(false) {
-                        Element::nc
-                    } else {
-                        Element::no
-                    };
-                    let device = names.device(expr.trim()).map(|d| contact(&d));
-                    self.variables.insert(
-                        id.to_string(),
-                        VariableBox {
-                            contact: device,
-                            pos: at,
-                        },
-                    );
-                }
-                let literal = Lined {
-                    value: expr,
-                    line: n.line,
-                };
-                self.literals.insert(id.to_string(), literal);
-            }
+            Kind::InVariable(_) => self.index_variable(id, n, names),
             _ => {}
         }
     }
 
+    /// Notes variable box `n` (`id`): the contact of its device when it
+    /// names a variable, and its expression as a literal.
+    fn index_variable(&mut self, id: &str, n: &Node, names: &Names) {
+        let expr = n
+            .child("expression")
+            .map(|e| e.text.clone())
+            .unwrap_or_default();
+        if is_variable_name(&expr) {
+            let (y, x) = position(n);
+            let at = place(y, x, self.kinds.len());
+            // A bad `negated` is refused at its line by `element`.
+            let contact = if negated(n).unwrap_or(false) {
+                Element::nc
+            } else {
+                Element::no
+            };
+            let device = names.device(expr.trim()).map(|d| contact(&d));
+            self.variables.insert(
+                id.to_string(),
+                VariableBox {
+                    contact: device,
+                    pos: at,
+                },
+            );
+        }
+        let literal = Lined {
+            value: expr,
+            line: n.line,
+        };
+        self.literals.insert(id.to_string(), literal);
+    }
+
     /// The point a `connectionPointIn` joins, or an error when it joins none.
-    pub(super) fn join(&mut self, cpi: Option<&Node>, what: &str) -> Result<usize, ImportError> {
+    pub(in crate::formats::plcopen) fn join(
+        &mut self,
+        cpi: Option<&Node>,
+        what: &str,
+    ) -> Result<usize, ImportError> {
         let fail = |problem| ImportError::Connection {
             what: what.to_string(),
             problem,
@@ -426,9 +447,8 @@ impl Body {
     /// `<comment>` is), settings are nothing, an unknown element without
     /// wires or data is skipped with a warning, one carrying logic is
     /// refused at its line.
-    pub(super) fn vendor_element(&mut self, n: &Node) {
-        use super::vendor::{classify, Vendor};
-        match classify(n) {
+    pub(in crate::formats::plcopen) fn vendor_element(&mut self, n: &Node, vendor: &Vendor) {
+        match vendor.clone() {
             Vendor::Title(text) => {
                 let (row, col) = position(n);
                 self.comments.push(CommentBox {

@@ -5,12 +5,12 @@
 //! honoured or refused; an unknown block named as such.
 
 use super::body::{Body, Gate, GateKind, PinRef};
-use super::compare::compare_flag;
-use super::declare::Names;
-use super::dom::Node;
-use super::error::ImportError;
-use super::kinds::BlockKind;
-use super::parts::{coil, edge, negated, timer_coil};
+use crate::formats::plcopen::compare::compare_flag;
+use crate::formats::plcopen::declare::Names;
+use crate::formats::plcopen::dom::Node;
+use crate::formats::plcopen::error::ImportError;
+use crate::formats::plcopen::kinds::BlockKind;
+use crate::formats::plcopen::parts::{coil, edge, negated, timer_coil};
 use crate::iec::literal::parse_time_literal;
 use crate::ladder::element::{CoilKind, Element, TimerKind};
 use crate::ladder::grid::Pos;
@@ -72,7 +72,7 @@ fn counter_preset(expr: &str, names: &Names, what: &str) -> Result<u16, ImportEr
 }
 
 /// A block's input pin `name`.
-pub(super) fn pin_of<'a>(n: &'a Node, name: &str) -> Option<&'a Node> {
+pub(in crate::formats::plcopen) fn pin_of<'a>(n: &'a Node, name: &str) -> Option<&'a Node> {
     n.child("inputVariables")?
         .all("variable")
         .find(|v| v.attr("formalParameter") == Some(name))
@@ -83,7 +83,7 @@ pub(super) fn pin_of<'a>(n: &'a Node, name: &str) -> Option<&'a Node> {
 /// without it): a NOT, R_TRIG or F_TRIG block in front says the same.
 /// A rising mark on a counter's CU or CD is what the counter does.
 /// A mark that is no XML boolean or edge is refused, as on a contact.
-pub(super) fn plain_pins(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
+pub(in crate::formats::plcopen) fn plain_pins(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
     known_inputs(n, ty)?;
     let pins = ["inputVariables", "outputVariables"]
         .into_iter()
@@ -174,7 +174,11 @@ impl Body {
     /// Whether EN connections `refs` always carry power: from the rail, a
     /// literal TRUE, or another block's ENO whose own EN always does
     /// (OpenPLC Editor chains EN to ENO); `depth` bounds the chain.
-    pub(super) fn always_enabled(&self, refs: &[PinRef], depth: usize) -> bool {
+    pub(in crate::formats::plcopen) fn always_enabled(
+        &self,
+        refs: &[PinRef],
+        depth: usize,
+    ) -> bool {
         depth < 64
             && refs.iter().all(|PinRef { id: r, pin }| {
                 self.rails.contains(r)
@@ -246,7 +250,7 @@ impl Body {
         Ok(())
     }
 
-    pub(super) fn block(
+    pub(in crate::formats::plcopen) fn block(
         &mut self,
         n: &Node,
         id: &str,
@@ -402,7 +406,7 @@ impl Body {
     }
 
     /// The literal (or variable) box feeding pin `name`: its text.
-    pub(super) fn pin_literal(
+    pub(in crate::formats::plcopen) fn pin_literal(
         &self,
         n: &Node,
         name: &'static str,

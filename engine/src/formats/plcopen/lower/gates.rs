@@ -26,9 +26,9 @@
 use std::collections::HashMap;
 
 use super::body::{Body, CompareCopy, ElementEdge, Gate, GateKind, Helper};
-use super::error::LowerError;
-use super::parts::{invert, rising, turned};
 use crate::error::Located;
+use crate::formats::plcopen::error::LowerError;
+use crate::formats::plcopen::parts::{invert, rising, turned};
 use crate::ladder::element::{CoilKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
@@ -40,7 +40,9 @@ impl Body {
     /// Lowers every gate, or says why one cannot be: the ORs first (OR
     /// blocks and wires joined at an input, [`Body::lower_joins`]), so
     /// each other block sees the whole network feeding its inputs.
-    pub(super) fn lower_gates(&mut self) -> Result<(), Vec<Located<super::ImportError>>> {
+    pub(in crate::formats::plcopen) fn lower_gates(
+        &mut self,
+    ) -> Result<(), Vec<Located<crate::formats::plcopen::ImportError>>> {
         let (joins, gates): (Vec<Gate>, Vec<Gate>) = std::mem::take(&mut self.gates)
             .into_iter()
             .partition(|g| g.kind == GateKind::Or);
@@ -50,12 +52,18 @@ impl Body {
         for g in self.in_flow_order(gates) {
             if self.gate_work > MAX_GATE_WORK {
                 let why = LowerError::TooMuchWork;
-                errors.push(Located::new(g.line, super::ImportError::Lower(g.what, why)));
+                errors.push(Located::new(
+                    g.line,
+                    crate::formats::plcopen::ImportError::Lower(g.what, why),
+                ));
                 break;
             }
             if let Err(why) = self.lower(&g) {
                 let what = g.what.clone();
-                errors.push(Located::new(g.line, super::ImportError::Lower(what, why)));
+                errors.push(Located::new(
+                    g.line,
+                    crate::formats::plcopen::ImportError::Lower(what, why),
+                ));
             }
         }
         if errors.is_empty() {
@@ -279,7 +287,11 @@ impl Body {
     }
 
     /// A spare relay for `what`, noted among the helpers.
-    pub(super) fn spare_relay(&mut self, what: &str, line: usize) -> Result<String, LowerError> {
+    pub(in crate::formats::plcopen) fn spare_relay(
+        &mut self,
+        what: &str,
+        line: usize,
+    ) -> Result<String, LowerError> {
         let relay = self.spares.pop().ok_or(LowerError::NoRelay)?;
         self.helpers.push(Helper {
             relay: relay.clone(),
@@ -337,14 +349,19 @@ impl Body {
 
     /// A spare relay that holds the power at point `p` (a coil on it, its
     /// rung run before its readers: [`Body::helpers`]), and its contact.
-    pub(super) fn relay_for(&mut self, p: usize, g: &Gate, at: Pos) -> Result<Element, LowerError> {
+    pub(in crate::formats::plcopen) fn relay_for(
+        &mut self,
+        p: usize,
+        g: &Gate,
+        at: Pos,
+    ) -> Result<Element, LowerError> {
         let relay = self.hold_in_relay(p, &format!("{}'s input", g.what), g.line, at)?;
         Ok(Element::no(&relay))
     }
 
     /// A spare relay that holds the power at `p` (`what` it is, for the
     /// device comment): its name.
-    pub(super) fn hold_in_relay(
+    pub(in crate::formats::plcopen) fn hold_in_relay(
         &mut self,
         p: usize,
         what: &str,
@@ -410,7 +427,7 @@ impl Body {
     }
 
     /// A new point.
-    pub(super) fn fresh(&mut self) -> usize {
+    pub(in crate::formats::plcopen) fn fresh(&mut self) -> usize {
         let p = self.parent.len();
         self.parent.push(p);
         p
@@ -449,11 +466,11 @@ impl Body {
     /// for into the one contact from the rail feeding it, when that is
     /// all that feeds it and nothing else takes its power (NOT a: the NC
     /// contact of a; R_TRIG a: a's rising contact): the same power,
-    /// without the spare relay [`super::import`]'s graph would otherwise
+    /// without the spare relay [`crate::formats::plcopen::import`]'s graph would otherwise
     /// hold the box's input in. One pass over the edges in the flow of
     /// power (a box after a folded one folds too: NOT NOT a is a's NO
     /// contact).
-    pub(super) fn fold_boxes_into_contacts(&mut self, machine: MachineId) {
+    pub(in crate::formats::plcopen) fn fold_boxes_into_contacts(&mut self, machine: MachineId) {
         if capabilities(machine).inline_boxes {
             return;
         }

@@ -5,8 +5,8 @@
 
 use std::collections::BTreeMap;
 
-use super::body::{Body, CommentBox, CompareCopy};
-use super::parts::drawn_x;
+use crate::formats::plcopen::lower::body::{Body, CommentBox, CompareCopy};
+use crate::formats::plcopen::parts::drawn_x;
 use crate::ladder::element::{CoilKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::RungLogic;

@@ -3,10 +3,13 @@
 //! the left rail and that point; helpers' rungs run before their readers,
 //! comments go to the rung below them.
 
+mod order;
+mod placing;
+
 use std::collections::{BTreeMap, HashMap, HashSet};
 
-use super::body::{Body, ElementEdge, RAIL};
 use super::error::{Errors, ImportError};
+use super::lower::body::{Body, ElementEdge, RAIL};
 use super::main_line::{off_main_line, Link};
 use super::parts::*;
 use crate::error::Located;

@@ -4,13 +4,13 @@
 
 use std::collections::BTreeSet;
 
-use super::graph::{Element, Graph, Kind, Source};
+use super::{Element, Graph, Kind, Source};
 
 /// The elements that run, each after the elements feeding it (through
 /// connectors too), else top to bottom and left to right; an element in
 /// a loop of wires runs when nothing else can, reading what the loop's
 /// other elements left in the last scan.
-pub(super) fn order(g: &Graph) -> Vec<usize> {
+pub(in crate::formats::plcopen) fn order(g: &Graph) -> Vec<usize> {
     let runs = |e: &Element| {
         matches!(
             e.kind,

@@ -1,17 +1,25 @@
-//! A drawn (LD or FBD) body read as a graph: each element by its
-//! `localId`, with what it is, where it is drawn and which outputs feed
-//! each of its inputs. Nothing is lowered: the soft PLC runs the graph
-//! as the file draws it.
+//! A drawn (LD or FBD) body read once as a graph, for every pipeline:
+//! each child of the body in document order ([`Item`]: an element, a
+//! comment, a vendor element, or one that cannot be an element), each
+//! element by its `localId` with what it is, where it is drawn, which
+//! outputs feed each of its inputs and its XML node, and the order the
+//! elements run in ([`order()`]). Nothing is lowered or refused here: the
+//! soft PLC runs the graph as the file draws it (`soft/`), the bit
+//! machines lower it to rungs (`lower/`, then `rungs/`), and
+//! each says what it does not take in its own words.
+
+mod order;
 
 use std::collections::HashMap;
 
-use super::SoftError;
-use crate::error::Located;
-use crate::formats::plcopen::dom::Node;
+pub(super) use order::order;
+
+use super::dom::Node;
+use super::vendor::{classify, Vendor};
 
 /// What an element is.
 #[derive(Clone, Debug, PartialEq)]
-pub(super) enum Kind {
+pub(in crate::formats::plcopen) enum Kind {
     LeftRail,
     RightRail,
     Contact {
@@ -36,19 +44,24 @@ pub(super) enum Kind {
     InOutVariable(String),
     Connector(String),
     Continuation(String),
+    /// An element no reader here knows (its XML name): SFC steps,
+    /// jumps, actions; each pipeline refuses it in its own words.
+    Other(String),
 }
 
 /// Where one input takes its value: an element's output (its pin, for a
 /// block with several).
 #[derive(Clone, Debug, PartialEq)]
-pub(super) struct Source {
+pub(in crate::formats::plcopen) struct Source {
     pub from: String,
     pub pin: Option<String>,
 }
 
 /// One element of the body.
 #[derive(Clone, Debug)]
-pub(super) struct Element {
+pub(in crate::formats::plcopen) struct Element<'a> {
+    /// Its XML node, for what a pipeline reads beyond the graph.
+    pub node: &'a Node,
     pub id: String,
     pub kind: Kind,
     pub line: usize,
@@ -64,7 +77,7 @@ pub(super) struct Element {
     pub modifiers: Vec<(String, bool, Option<bool>)>,
 }
 
-impl Element {
+impl Element<'_> {
     /// The element in words, with its input `pin` when there is one
     /// (`TON block T1's PT`).
     pub fn describe(&self, pin: &str) -> String {
@@ -96,18 +109,44 @@ impl Element {
     }
 }
 
-/// The body's elements in document order, and each one's place by id.
-pub(super) struct Graph {
-    pub elements: Vec<Element>,
-    pub by_id: HashMap<String, usize>,
-    /// Connector name (lower-case) → the connector's place.
-    pub connectors: HashMap<String, usize>,
-    /// Vendor elements skipped (neither wired nor holding data), each at
-    /// its line.
-    pub warnings: Vec<Located<String>>,
+/// What one child of the body is read as.
+#[derive(Clone, Debug)]
+pub(in crate::formats::plcopen) enum Read {
+    /// An element: its place in [`Graph::elements`].
+    Element(usize),
+    /// A `<comment>` box: it does not run.
+    Comment,
+    /// A tool's own element, sorted by what it does.
+    Vendor(Vendor),
+    /// An element without a `localId` (`known`: of a kind [`Kind`]
+    /// names).
+    NoLocalId { known: bool },
+    /// An element whose `localId` an earlier one has, at line `first`.
+    Duplicate {
+        id: String,
+        first: usize,
+        known: bool,
+    },
 }
 
-type Errors = Vec<Located<SoftError>>;
+/// One child of the body, in document order: its node and what it is.
+#[derive(Clone, Debug)]
+pub(in crate::formats::plcopen) struct Item<'a> {
+    pub node: &'a Node,
+    pub read: Read,
+}
+
+/// A body read once: its elements, each one's place by id, its
+/// connectors, and every child in document order.
+pub(in crate::formats::plcopen) struct Graph<'a> {
+    /// The elements, in document order.
+    pub elements: Vec<Element<'a>>,
+    pub by_id: HashMap<String, usize>,
+    /// Connector name (lower-case) → the (last) connector's place.
+    pub connectors: HashMap<String, usize>,
+    /// Every child of the body, in document order.
+    pub items: Vec<Item<'a>>,
+}
 
 fn flag(n: &Node, name: &str) -> bool {
     n.attr(name) == Some("true")
@@ -149,47 +188,38 @@ type Parts = (
     Vec<(String, bool, Option<bool>)>,
 );
 
-/// Reads `body` (an `<LD>` or `<FBD>`); refuses, at its line, what the
-/// soft PLC does not run (SFC steps, jumps, actions in a drawn body).
-pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
-    let mut g = Graph {
-        elements: Vec::new(),
-        by_id: HashMap::new(),
-        connectors: HashMap::new(),
-        warnings: Vec::new(),
-    };
-    let mut errors = Vec::new();
-    for n in &body.children {
-        if n.name == "vendorElement" {
-            use crate::formats::plcopen::vendor::{classify, Vendor};
-            // Titles and settings do not run; IL has no rung comments.
-            match classify(n) {
-                Vendor::Title(_) | Vendor::Cosmetic => {}
-                Vendor::Unknown(what) => g.warnings.push(Located::new(
-                    n.line,
-                    format!("{what} skipped: a vendor's own element"),
-                )),
-                Vendor::Logic(why) => {
-                    errors.push(Located::new(n.line, SoftError::VendorLogic(why)))
-                }
-            }
-            continue;
+impl<'a> Graph<'a> {
+    /// Reads `body` (an `<LD>` or `<FBD>`), every child of it.
+    pub(in crate::formats::plcopen) fn read(body: &'a Node) -> Graph<'a> {
+        let mut g = Graph {
+            elements: Vec::new(),
+            by_id: HashMap::new(),
+            connectors: HashMap::new(),
+            items: Vec::new(),
+        };
+        for n in &body.children {
+            let read = g.child(n);
+            g.items.push(Item { node: n, read });
         }
-        let (kind, inputs, outputs, modifiers) = match parts(n) {
-            Ok(Some(parts)) => parts,
-            Ok(None) => continue,
-            Err(e) => {
-                errors.push(Located::new(n.line, e));
-                continue;
-            }
-        };
+        g
+    }
+
+    /// Reads child `n` of the body: an element is added to the graph.
+    fn child(&mut self, n: &'a Node) -> Read {
+        match n.name.as_str() {
+            "comment" => return Read::Comment,
+            "vendorElement" => return Read::Vendor(classify(n)),
+            _ => {}
+        }
+        let (kind, inputs, outputs, modifiers) = parts(n);
+        let known = !matches!(kind, Kind::Other(_));
         let Some(id) = n.attr("localId") else {
-            errors.push(Located::new(n.line, SoftError::NoLocalId(n.name.clone())));
-            continue;
+            return Read::NoLocalId { known };
         };
-        if g.by_id.contains_key(id) {
-            errors.push(Located::new(n.line, SoftError::DuplicateId(id.to_string())));
-            continue;
+        if let Some(&first) = self.by_id.get(id) {
+            let first = self.elements[first].line;
+            let id = id.to_string();
+            return Read::Duplicate { id, first, known };
         }
         let position = n.child("position");
         let coord = |a: &str| {
@@ -198,12 +228,13 @@ pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
                 .and_then(|v| v.parse::<f64>().ok())
                 .map_or(0, |v| v as i64)
         };
+        let at = self.elements.len();
         if let Kind::Connector(name) = &kind {
-            g.connectors
-                .insert(name.to_ascii_lowercase(), g.elements.len());
+            self.connectors.insert(name.to_ascii_lowercase(), at);
         }
-        g.by_id.insert(id.to_string(), g.elements.len());
-        g.elements.push(Element {
+        self.by_id.insert(id.to_string(), at);
+        self.elements.push(Element {
+            node: n,
             id: id.to_string(),
             kind,
             line: n.line,
@@ -213,21 +244,16 @@ pub(super) fn read(body: &Node) -> Result<Graph, Errors> {
             outputs,
             modifiers,
         });
-    }
-    if errors.is_empty() {
-        Ok(g)
-    } else {
-        Err(errors)
+        Read::Element(at)
     }
 }
 
-/// Element `n` read (`None`: a comment, which does not run).
-fn parts(n: &Node) -> Result<Option<Parts>, SoftError> {
+/// Element `n` read (not a comment or a vendor element).
+fn parts(n: &Node) -> Parts {
     let single = || vec![(String::new(), sources(n.child("connectionPointIn")))];
     let name = |attr: &str| n.attr(attr).unwrap_or_default().to_string();
     let (kind, inputs) = match n.name.as_str() {
-        "comment" => return Ok(None),
-        "block" => return Ok(Some(block(n))),
+        "block" => return block(n),
         "leftPowerRail" => (Kind::LeftRail, Vec::new()),
         "rightPowerRail" => (Kind::RightRail, Vec::new()),
         "contact" => (
@@ -256,9 +282,9 @@ fn parts(n: &Node) -> Result<Option<Parts>, SoftError> {
         "inOutVariable" => (Kind::InOutVariable(text_of(n, "expression")), single()),
         "connector" => (Kind::Connector(name("name")), single()),
         "continuation" => (Kind::Continuation(name("name")), Vec::new()),
-        other => return Err(SoftError::Element(other.to_string())),
+        other => (Kind::Other(other.to_string()), Vec::new()),
     };
-    Ok(Some((kind, inputs, Vec::new(), Vec::new())))
+    (kind, inputs, Vec::new(), Vec::new())
 }
 
 /// A `<block>`: its type and instance, its input pins with their
@@ -302,3 +328,6 @@ fn block(n: &Node) -> Parts {
         modifiers,
     )
 }
+
+#[cfg(test)]
+mod tests;

@@ -35,7 +35,7 @@ impl Body {
     /// file writes them in. Gates in a loop of feedback keep file order
     /// after the rest. Linear in the body's size (Kahn's algorithm over
     /// the points).
-    pub(super) fn in_flow_order(&mut self, gates: Vec<Gate>) -> Vec<Gate> {
+    pub(in crate::formats::plcopen) fn in_flow_order(&mut self, gates: Vec<Gate>) -> Vec<Gate> {
         let mut arrows = Vec::new();
         for g in &gates {
             let (inputs, outputs) = g.points();
@@ -64,7 +64,10 @@ impl Body {
     /// Each point's place in the flow of power from the rail (a point
     /// comes after every point with an edge, or one of `more` arrows, into
     /// it); points on a loop have none. Kahn's algorithm: linear.
-    pub(super) fn flow_ranks(&mut self, more: Vec<(usize, usize)>) -> HashMap<usize, usize> {
+    pub(in crate::formats::plcopen) fn flow_ranks(
+        &mut self,
+        more: Vec<(usize, usize)>,
+    ) -> HashMap<usize, usize> {
         self.gate_work += self.edges.len() + more.len();
         let mut next: HashMap<usize, Vec<usize>> = HashMap::new();
         let mut pending: HashMap<usize, usize> = HashMap::new();
@@ -108,7 +111,10 @@ impl Body {
     /// contact carries it instead (one relay per wire). Linear: the
     /// takers are counted once, and each join's wires are compared by a
     /// number given to each distinct set.
-    pub(super) fn lower_joins(&mut self, joins: Vec<Gate>) -> Vec<Located<super::ImportError>> {
+    pub(in crate::formats::plcopen) fn lower_joins(
+        &mut self,
+        joins: Vec<Gate>,
+    ) -> Vec<Located<crate::formats::plcopen::ImportError>> {
         let takers = self.takers();
         let wires = self.join_wires(&joins);
         // Each wire: how many joins take it, and whether they differ.
@@ -153,7 +159,10 @@ impl Body {
                         Ok(c) => relayed.entry(p).or_insert(c).clone(),
                         Err(why) => {
                             let what = g.what.clone();
-                            errors.push(Located::new(g.line, super::ImportError::Lower(what, why)));
+                            errors.push(Located::new(
+                                g.line,
+                                crate::formats::plcopen::ImportError::Lower(what, why),
+                            ));
                             continue;
                         }
                     },
@@ -221,7 +230,7 @@ impl Body {
     }
 
     /// How many elements take power from each point (joined points).
-    pub(super) fn takers(&mut self) -> HashMap<usize, usize> {
+    pub(in crate::formats::plcopen) fn takers(&mut self) -> HashMap<usize, usize> {
         self.gate_work += self.consumed.len();
         let mut count = HashMap::new();
         for p in self.consumed.clone() {
