@@ -21,6 +21,7 @@ pub mod grid;
 mod lack;
 pub mod live;
 pub mod net;
+pub mod problem;
 pub mod project;
 pub mod share;
 pub mod target;
