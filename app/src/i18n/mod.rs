@@ -4,6 +4,7 @@
 pub mod classroom;
 mod en;
 pub mod engine;
+pub mod errors;
 mod files;
 mod ja;
 pub mod start;

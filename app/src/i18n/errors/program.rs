@@ -1,0 +1,98 @@
+//! The soft PLC's program text errors (declarations, IL, function
+//! blocks) in Japanese. Keywords and names are kept as written.
+
+use engine::iec::il::IlError;
+use engine::iec::VarError;
+use engine::softplc::pou::PouError;
+use engine::softplc::LoadError;
+
+use super::edit::{address_ja, literal_ja};
+
+/// Why a soft PLC program does not load, in Japanese. A type or call
+/// problem the engine says only in words keeps them (not yet typed).
+pub fn load_ja(e: &LoadError) -> String {
+    match e {
+        LoadError::Var(e) => var_ja(e),
+        LoadError::Il(e) => il_ja(e),
+        LoadError::Undeclared(n) => format!("`{n}` は宣言されていません"),
+        LoadError::UntypedAddress(a) => format!("{a}: ソフトPLCにはバイト型がありません"),
+        LoadError::NoLabel(l) => format!("ラベル `{l}` の行がありません"),
+        LoadError::Type(why) | LoadError::Call(why) => why.clone(),
+        LoadError::UnknownResult => {
+            "ここでは現在値がわかりません (ラベルやジャンプの後): LD で始めてください".into()
+        }
+        LoadError::Unbalanced => "`(` と `)` が対になっていません".into(),
+        LoadError::Unclosed => "この `(` が `)` で閉じられていません".into(),
+        LoadError::Pou(e) => pou_ja(e),
+    }
+}
+
+/// A declaration refused, in Japanese.
+pub fn var_ja(e: &VarError) -> String {
+    use engine::iec::data::STRING_CAPACITY;
+    match e {
+        VarError::Syntax(l) => {
+            format!("`{l}` は宣言ではありません (名前 [AT %アドレス] : 型 [:= 値];)")
+        }
+        VarError::BadName(n) => {
+            format!("`{n}` は名前ではありません (英字か _ で始め、英数字と _ で書きます)")
+        }
+        VarError::Duplicate { name, first } => {
+            format!("`{name}` が 2 回宣言されています (最初は {first} 行目)")
+        }
+        VarError::UnknownType(t) => format!("不明な型 `{t}`"),
+        VarError::StringLength(t) => format!(
+            "`{t}`: STRING は長さなしで書きます (どの STRING も最大 {STRING_CAPACITY} 文字です)"
+        ),
+        VarError::Address(e) => address_ja(e),
+        VarError::Literal(e) => literal_ja(e),
+        VarError::BlockWithValue(n) => {
+            format!("`{n}` はファンクションブロックです: アドレスも値も持ちません")
+        }
+        VarError::Unbalanced(w) => format!("`{w}` の対がありません"),
+    }
+}
+
+/// A line that is not IL, in Japanese.
+pub fn il_ja(e: &IlError) -> String {
+    match e {
+        IlError::UnknownOperator(o) => format!("不明な命令 `{o}`"),
+        IlError::BadModifier(o) => format!("`{o}`: この命令にその修飾子はありません"),
+        IlError::LabelAlone => "ラベルの行には命令も書いてください".into(),
+        IlError::NoOperand(w) => format!("`{w}` はオペランドを取りません"),
+        IlError::NeedsLabel(w) => format!("`{w}` にはラベルが必要です"),
+        IlError::NeedsOperand(w) => format!("`{w}` にはオペランドが必要です"),
+        IlError::OperandCount(w, n) => {
+            format!("`{w}` は現在値の後に {n} 個のオペランドを取ります")
+        }
+        IlError::BadName(n) => format!("`{n}` は名前ではありません"),
+        IlError::Address(e) => address_ja(e),
+        IlError::Literal(e) => literal_ja(e),
+        IlError::BadCall(c) => {
+            format!("`{c}`: 呼び出しは CAL 名前(入力 := 値, 出力 => 変数) と書きます")
+        }
+        IlError::OpenComment => "コメント `(*` が `*)` で閉じられていません".into(),
+        IlError::DuplicateLabel { label, first } => {
+            format!("ラベル `{label}` が 2 回使われています (最初は {first} 行目)")
+        }
+        IlError::SecondProgram(first) => format!(
+            "2 つ目の PROGRAM です: 1 つのテキストには 1 つのプログラムです (最初は {first} 行目)"
+        ),
+        IlError::TwiceGiven(p) => format!("入力 `{p}` が 2 回与えられています"),
+        IlError::EmptyParameter => {
+            "空のパラメータがあります: 名前 := 値 か 名前 => 変数 と書きます".into()
+        }
+    }
+}
+
+fn pou_ja(e: &PouError) -> String {
+    match e {
+        PouError::BadName(n) => format!("`{n}` はファンクションブロックの名前ではありません"),
+        PouError::Nested => "FUNCTION_BLOCK の中に別の FUNCTION_BLOCK があります".into(),
+        PouError::NoStart => "FUNCTION_BLOCK のない END_FUNCTION_BLOCK です".into(),
+        PouError::NeverEnded(n) => format!("FUNCTION_BLOCK {n} に END_FUNCTION_BLOCK がありません"),
+        PouError::Duplicate { name, first } => {
+            format!("ファンクションブロック {name} が 2 回定義されています (最初は {first} 行目)")
+        }
+    }
+}
