@@ -271,3 +271,16 @@ fn import_errors_in_the_page_advise_the_program_picker_not_the_command_line() {
         assert!(page.contains("Program"), "{page}");
     }
 }
+
+#[test]
+fn a_broken_file_is_said_in_japanese_too_at_its_line() {
+    let reply = import_request("<project>\n<a>\n</project>\n", None);
+    let said = reply.said.first().expect("an error");
+    assert!(said.at.starts_with("named.xml:"), "{said:?}");
+    assert!(said.cause.is_none());
+    assert_eq!(
+        said.ja.as_deref(),
+        Some("XML の形が正しくありません"),
+        "{reply:?}"
+    );
+}

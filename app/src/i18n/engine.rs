@@ -53,10 +53,17 @@ pub fn import_error(lang: Lang, said: Option<&files_worker::Said>, english: &str
             Some(files_worker::Said {
                 at,
                 cause: Some(why),
+                ..
             }),
         ) => {
             format!("{at}: {}", element_ja(why))
         }
+        (
+            Lang::Ja,
+            Some(files_worker::Said {
+                at, ja: Some(ja), ..
+            }),
+        ) => format!("{at}: {ja}"),
         _ => english.to_string(),
     }
 }
@@ -362,6 +369,7 @@ mod tests {
     #[test]
     fn an_import_error_with_its_cause_is_said_in_japanese() {
         let said = files_worker::Said {
+            ja: None,
             at: "lab4.xml:67".into(),
             cause: Some(ElementError::Lacks {
                 machine: MachineId::MinasecU,
