@@ -7,6 +7,7 @@ pub mod engine;
 pub mod errors;
 mod files;
 mod ja;
+pub mod keymap;
 pub mod start;
 
 use en::EN;
@@ -61,6 +62,14 @@ impl Lang {
         match self {
             Lang::Ja => &start::JA,
             Lang::En => &start::EN,
+        }
+    }
+
+    /// The key map's and the menus' key names (issue #49).
+    pub const fn keys(self) -> &'static keymap::KeyTexts {
+        match self {
+            Lang::Ja => &keymap::JA,
+            Lang::En => &keymap::EN,
         }
     }
 
