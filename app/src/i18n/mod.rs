@@ -9,6 +9,7 @@ mod files;
 mod ja;
 pub mod keymap;
 pub mod start;
+pub mod words;
 
 use en::EN;
 use ja::JA;
@@ -70,6 +71,14 @@ impl Lang {
         match self {
             Lang::Ja => &keymap::JA,
             Lang::En => &keymap::EN,
+        }
+    }
+
+    /// Words the page's code said in English (issue #49).
+    pub const fn words(self) -> &'static words::Words {
+        match self {
+            Lang::Ja => &words::JA,
+            Lang::En => &words::EN,
         }
     }
 

@@ -55,7 +55,7 @@ pub(super) fn clip_ja(e: &ClipError) -> String {
     }
 }
 
-fn replace_ja(e: &ReplaceError) -> String {
+pub(super) fn replace_ja(e: &ReplaceError) -> String {
     match e {
         ReplaceError::Empty => "デバイスか範囲 (M00-M07 など) を入力してください".into(),
         ReplaceError::Range(spec) => {

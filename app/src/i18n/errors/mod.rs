@@ -14,7 +14,7 @@ mod program;
 mod tests;
 
 use engine::cases::{CaseError, Observed};
-use engine::ladder::edit::{ClipError, EditError};
+use engine::ladder::edit::{ClipError, EditError, ReplaceError};
 use engine::ladder::problem::RungProblem;
 use engine::plc::PlcError;
 use engine::softplc::LoadError;
@@ -36,6 +36,14 @@ pub fn clip_error(lang: Lang, e: &ClipError) -> String {
     match lang {
         Lang::En => e.to_string(),
         Lang::Ja => edit::clip_ja(e),
+    }
+}
+
+/// Why a batch replace's names make no plan.
+pub fn replace_error(lang: Lang, e: &ReplaceError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => edit::replace_ja(e),
     }
 }
 
