@@ -495,6 +495,9 @@ impl LadderCtx {
         comments: &BTreeMap<String, String>,
         listing: Option<&Listing>,
     ) {
+        // A cell's tooltip says its problem in the page's language of the
+        // moment (issue #49).
+        let ja = self.page.lang.get_untracked() == crate::i18n::Lang::Ja;
         let data: Vec<RungData> = self.drawing.editor.with_value(|e| {
             e.ladder()
                 .rungs
@@ -504,7 +507,7 @@ impl LadderCtx {
                     let errors: Vec<(Option<Pos>, String)> = problems
                         .iter()
                         .filter(|p| p.rung == i)
-                        .map(|p| (p.pos, p.text.clone()))
+                        .map(|p| (p.pos, if ja { &p.ja } else { &p.text }.clone()))
                         .collect();
                     rung_data(rung, out_col, &errors, comments)
                 })
