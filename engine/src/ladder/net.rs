@@ -233,7 +233,12 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
             NetError::TooDeep(p) => (p, LadderErrorKind::Limit),
             NetError::NoPath => (outputs[0].1, LadderErrorKind::Wiring),
         };
-        vec![grid.err(pos, kind, RungProblem::Net(e))]
+        let problem = match e {
+            NetError::NotSeriesParallel(_) => RungProblem::NotSeriesParallel,
+            NetError::TooDeep(_) => RungProblem::TooDeep,
+            NetError::NoPath => RungProblem::NoPath,
+        };
+        vec![grid.err(pos, kind, problem)]
     })?;
     Ok(Some(RungLogic {
         condition,

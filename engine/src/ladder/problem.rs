@@ -4,7 +4,7 @@
 
 use std::fmt;
 
-use crate::limits::MAX_RUNG_CELLS;
+use crate::limits::{MAX_NESTING, MAX_RUNG_CELLS};
 
 /// Why a rung does not make a circuit (a [`super::LadderError`]'s typed
 /// reason, beside its English message).
@@ -52,8 +52,10 @@ pub enum RungProblem {
     InputLinkedAbove(String, String),
     /// A box input with no network left of it.
     InputWithoutNetwork,
-    /// A network that does not reduce (a bridge, too deep, no path).
-    Net(super::net::NetError),
+    /// A bridge between branches (or a loop): not series-parallel.
+    NotSeriesParallel,
+    /// Series and parallel blocks nested deeper than [`MAX_NESTING`].
+    TooDeep,
 }
 
 impl fmt::Display for RungProblem {
@@ -111,7 +113,13 @@ impl fmt::Display for RungProblem {
                 "this link joins {kind}'s {pin} network to the rows above: keep it to its rows"
             ),
             P::InputWithoutNetwork => f.write_str("this input has no network"),
-            P::Net(e) => e.fmt(f),
+            P::NotSeriesParallel => f.write_str(
+                "this network is not series-parallel (a bridge between branches): redraw it as series and parallel blocks",
+            ),
+            P::TooDeep => write!(
+                f,
+                "series and parallel blocks nest more than {MAX_NESTING} deep here (docs/limits.md)"
+            ),
         }
     }
 }
@@ -142,5 +150,21 @@ mod tests {
             errors[0].to_string(),
             format!("rung 3: {}", RungProblem::NoOutput)
         );
+    }
+
+    #[test]
+    fn a_network_problem_says_the_networks_own_words() {
+        use crate::ladder::net::NetError;
+        let at = Pos::new(1, 2);
+        for (problem, net) in [
+            (
+                RungProblem::NotSeriesParallel,
+                NetError::NotSeriesParallel(at),
+            ),
+            (RungProblem::TooDeep, NetError::TooDeep(at)),
+            (RungProblem::NoPath, NetError::NoPath),
+        ] {
+            assert_eq!(problem.to_string(), net.to_string());
+        }
     }
 }

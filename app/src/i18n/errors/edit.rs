@@ -4,7 +4,6 @@ use engine::iec::{AddressError, LiteralError};
 use engine::ladder::edit::{
     ClipError, EditError, ReplaceError, VariableEditError, MAX_COLUMNS, MAX_ROWS,
 };
-use engine::ladder::net::NetError;
 use engine::ladder::problem::RungProblem;
 use engine::ladder::variables::VariableError;
 use engine::limits::{MAX_INPUT_BYTES, MAX_NESTING, MAX_RUNG_CELLS};
@@ -186,19 +185,10 @@ pub fn rung_problem_ja(p: &RungProblem) -> String {
             "この縦線が {kind} の {pin} の回路を上の行につないでいます: その行の中だけにしてください"
         ),
         P::InputWithoutNetwork => "この入力には回路がありません".into(),
-        P::Net(e) => net_ja(e),
-    }
-}
-
-fn net_ja(e: &NetError) -> String {
-    match e {
-        NetError::NotSeriesParallel(_) => {
+        P::NotSeriesParallel => {
             "この回路は直列・並列になっていません (分岐の間のブリッジ): 直列と並列のブロックで描き直してください"
                 .into()
         }
-        NetError::TooDeep(_) => {
-            format!("直列と並列のブロックの入れ子が {MAX_NESTING} 段を超えています")
-        }
-        NetError::NoPath => "左の母線からこの出力へ接点の経路がありません".into(),
+        P::TooDeep => format!("直列と並列のブロックの入れ子が {MAX_NESTING} 段を超えています"),
     }
 }

@@ -8,7 +8,6 @@ use engine::iec::data::DataType;
 use engine::iec::il::IlError;
 use engine::iec::{AddressError, LiteralError, VarError};
 use engine::ladder::edit::{ClipError, Cursor, ReplaceError, VariableEditError};
-use engine::ladder::net::NetError;
 use engine::ladder::target::ElementError;
 use engine::ladder::variables::VariableError;
 use engine::ladder::Pos;
@@ -156,9 +155,8 @@ fn every_wiring_problem_is_said_in_japanese() {
         P::InputTwice(s(), s()),
         P::InputLinkedAbove(s(), s()),
         P::InputWithoutNetwork,
-        P::Net(NetError::NotSeriesParallel(Pos::new(0, 0))),
-        P::Net(NetError::TooDeep(Pos::new(0, 0))),
-        P::Net(NetError::NoPath),
+        P::NotSeriesParallel,
+        P::TooDeep,
     ];
     for p in &all {
         is_japanese(&format!("{p:?}"), &rung_problem(Lang::Ja, p));
