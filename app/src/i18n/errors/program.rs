@@ -9,7 +9,8 @@ use engine::softplc::LoadError;
 use super::edit::{address_ja, literal_ja};
 
 /// Why a soft PLC program does not load, in Japanese. A type or call
-/// problem the engine says only in words keeps them (not yet typed).
+/// problem the engine says only in words keeps them (the rarer ones:
+/// not yet typed).
 pub fn load_ja(e: &LoadError) -> String {
     match e {
         LoadError::Var(e) => var_ja(e),
@@ -24,6 +25,24 @@ pub fn load_ja(e: &LoadError) -> String {
         LoadError::Unbalanced => "`(` と `)` が対になっていません".into(),
         LoadError::Unclosed => "この `(` が `)` で閉じられていません".into(),
         LoadError::Pou(e) => pou_ja(e),
+        LoadError::Mix(a, b) => format!(
+            "{} と {} は混ぜられません: 一方を変換してください (*_TO_*)",
+            a.name(),
+            b.name()
+        ),
+        LoadError::NotBits(op, t) => {
+            format!(
+                "{op} には BOOL かビット列が必要です ({} は使えません)",
+                t.name()
+            )
+        }
+        LoadError::NotFor(t) => format!("この演算は {} には使えません", t.name()),
+        LoadError::NeedsBool(op) => format!("{op} には BOOL の現在値が必要です"),
+        LoadError::NoPin { block, pin, output } => {
+            let side = if *output { "出力" } else { "入力" };
+            format!("{block} に{side} `{pin}` はありません")
+        }
+        LoadError::NotAnInstance(n) => format!("`{n}` はブロックのインスタンスではありません"),
     }
 }
 

@@ -394,6 +394,21 @@ fn every_typed_program_error_is_said_in_japanese() {
             LoadError::UnknownResult,
             LoadError::Unbalanced,
             LoadError::Unclosed,
+            LoadError::Mix(DataType::Int, DataType::Real),
+            LoadError::NotBits("LDN".into(), DataType::Real),
+            LoadError::NotFor(DataType::String),
+            LoadError::NeedsBool("JMPC"),
+            LoadError::NoPin {
+                block: "TON".into(),
+                pin: "XX".into(),
+                output: false,
+            },
+            LoadError::NoPin {
+                block: "TON".into(),
+                pin: "XX".into(),
+                output: true,
+            },
+            LoadError::NotAnInstance(s()),
         ]);
     for e in all {
         is_japanese(&format!("{e:?}"), &load_error(Lang::Ja, &e));
