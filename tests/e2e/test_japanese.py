@@ -43,6 +43,11 @@ def japanese(text):
     return text
 
 
+def problems(driver):
+    """The problems listed, the Listing & problems tab shown."""
+    return [p.text for p in el(driver, "problems").find_elements(By.CSS_SELECTOR, ".problem")]
+
+
 def test_the_rule_finds_english_and_lets_names_be():
     assert english_run("rung 1: the rung has no output") == "the rung has"
     assert english_run("Y00 = 1 at 100ms: Y00 は 100ms に 0 でした") is None
@@ -68,18 +73,18 @@ def test_placement_and_wiring_errors_are_japanese(driver, base_url, artifacts):
     # A contact with no coil: the rung has no output, in the problems.
     wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
     place(driver, Keys.F5, "X00")
-    problem = wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="problems"] .problem'))
-    said = japanese(problem[0].text)
+    said = japanese(wait(driver, lambda: problems(driver))[0])
     assert said.startswith("ラング 1: ラングに出力がありません"), said
-    # A contact after a coil: placed, then a placement problem at its cell.
+    # A contact on the free row, joined to nothing: dangling, at its cell.
     place(driver, Keys.F7, "Y00")
-    el(driver, "cell-0-0-1").click()
+    el(driver, "cell-0-1-2").click()
     place(driver, Keys.F5, "X01")
-    keys(driver, Keys.END)
-    wait(driver, lambda: el(driver, "problems").text.strip() != "")
+    said = wait(driver, lambda: problems(driver))
+    assert said[0].startswith("ラング 1、行 2、列 3: 浮いています"), said
+    assert "浮いています" in el(driver, "cell-0-1-2").get_attribute("title")
+    for p in said:
+        japanese(p)
     driver.save_screenshot(str(artifacts / "japanese-problems-1366.png"))
-    for p in driver.find_elements(By.CSS_SELECTOR, '[data-testid="problems"] .problem'):
-        japanese(p.text)
 
 
 def test_a_soft_plc_program_error_is_japanese(driver, base_url):
@@ -124,6 +129,11 @@ def test_a_failed_test_and_a_test_error_are_japanese(driver, base_url, artifacts
     driver.set_window_size(1366, 768)
     said = japanese(failing_test(driver, base_url))
     assert "Y00 は 100ms に 0 でした" in said, said
+    # A new case is named in the page's language.
+    name = el(driver, "test-case-0").find_element(By.CSS_SELECTOR, '[data-testid="test-name"]')
+    assert name.get_attribute("value") == "ケース 1"
+    driver.execute_script(
+        "document.querySelector('[data-testid=test-result]').scrollIntoView({block: 'center'})")
     driver.save_screenshot(str(artifacts / "japanese-test-fail-1366.png"))
     # A device the machine lacks: the case cannot run, said in Japanese.
     expect = el(driver, "test-case-0").find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]')
@@ -143,8 +153,8 @@ def test_the_english_page_keeps_the_engines_words(driver, base_url):
     el(driver, "new-ladder").click()
     focus_ladder(driver)
     place(driver, Keys.F5, "X00")
-    problem = wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="problems"] .problem'))
-    assert problem[0].text == "rung 1: the rung has no output: end it with a coil or an output box"
+    said = wait(driver, lambda: problems(driver))
+    assert said[0] == "rung 1: the rung has no output: end it with a coil or an output box", said
 
 
 def test_a_failed_test_in_japanese_on_a_phone(tmp_path, base_url, artifacts):

@@ -12,6 +12,8 @@ pub struct Words {
     pub true_false_number: &'static str,
     /// A device's uses (cross reference): as a contact, a coil, in a box.
     pub use_roles: [&'static str; 3],
+    /// A new test case's name and a recorded one's, before `{n}`.
+    pub case_names: [&'static str; 2],
 }
 
 /// English.
@@ -20,6 +22,7 @@ pub const EN: Words = Words {
     row_col: "row {row}, column {col}",
     true_false_number: "TRUE, FALSE or a number",
     use_roles: ["contact", "coil", "box"],
+    case_names: ["case {n}", "recorded {n}"],
 };
 
 /// 日本語.
@@ -28,6 +31,7 @@ pub const JA: Words = Words {
     row_col: "行 {row}、列 {col}",
     true_false_number: "TRUE、FALSE または数を入力してください",
     use_roles: ["接点", "コイル", "ボックス"],
+    case_names: ["ケース {n}", "記録 {n}"],
 };
 
 impl Words {

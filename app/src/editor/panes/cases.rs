@@ -304,7 +304,8 @@ fn TestsBar(ctx: LadderCtx) -> impl IntoView {
     let add = move |_| {
         let n = ctx.cases.tests.with_untracked(Vec::len) + 1;
         let case = TestCase {
-            name: format!("case {n}"),
+            name: ctx.page.lang.get_untracked().words().case_names[0]
+                .replace("{n}", &n.to_string()),
             ..TestCase::default()
         };
         ctx.cases.tests.update(|v| v.push(case));
