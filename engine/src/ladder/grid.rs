@@ -161,8 +161,8 @@ pub struct LadderError {
     /// English; boxed, as it is seldom there).
     pub cause: Option<Box<super::target::ElementError>>,
     /// The typed reason of a wiring or placement problem (issue #49, as
-    /// `cause`: the page's language from the kind).
-    pub problem: Option<super::problem::RungProblem>,
+    /// `cause`: the page's language from the kind; boxed, as `cause`).
+    pub problem: Option<Box<super::problem::RungProblem>>,
 }
 
 impl LadderError {
@@ -216,7 +216,7 @@ impl LadderError {
         };
         LadderError {
             kind,
-            problem: Some(problem),
+            problem: Some(Box::new(problem)),
             ..plain
         }
     }

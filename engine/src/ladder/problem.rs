@@ -136,7 +136,11 @@ mod tests {
         rung.set(Pos::new(0, 2), Some(Element::no("X00")));
         let errors = analyse(&rung, 0).expect_err("a contact after the coil");
         let e = &errors[0];
-        assert_eq!(e.problem, Some(RungProblem::AfterOutput), "{e:?}");
+        assert_eq!(
+            e.problem.as_deref(),
+            Some(&RungProblem::AfterOutput),
+            "{e:?}"
+        );
         assert_eq!(e.kind, LadderErrorKind::Placement);
         assert_eq!(
             e.message,
@@ -145,7 +149,7 @@ mod tests {
         let mut empty_out = Rung::default();
         empty_out.set(Pos::new(0, 0), Some(Element::no("X00")));
         let errors = analyse(&empty_out, 2).expect_err("no output");
-        assert_eq!(errors[0].problem, Some(RungProblem::NoOutput));
+        assert_eq!(errors[0].problem.as_deref(), Some(&RungProblem::NoOutput));
         assert_eq!(
             errors[0].to_string(),
             format!("rung 3: {}", RungProblem::NoOutput)
