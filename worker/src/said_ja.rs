@@ -75,6 +75,33 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
         E::ProjectBlock(name, language) => format!(
             "ブロック {name} はプロジェクト自身の {language} ファンクションブロックを呼んでいます: Hashigo のラダーはファンクションブロックを呼びません (LD か FBD ならプログラムで {name} を選んでください)"
         ),
+        E::PinNotConnected(..)
+        | E::PinNotLiteral(..)
+        | E::BadTimeLiteral(..)
+        | E::BadCounterPreset(..)
+        | E::CounterQWired(_)
+        | E::TimerName(_)
+        | E::TimerUnits { .. }
+        | E::TimerTooLong(..) => return blocks_ja(e),
+        E::OnRail(el) => {
+            format!("{el} が左の母線に直接つながっています: 前に接点を置いてください")
+        }
+        E::NoPath(el) => format!("左の母線から {el} への経路がありません"),
+        E::Net(_) => return blocks_ja(e),
+        E::Element(_)
+        | E::Gate(..)
+        | E::VendorLogic(_)
+        | E::Soft(_)
+        | E::SoftBox(..)
+        | E::SoftVariable(_) => return None,
+    })
+}
+
+/// A block's pins, a timer's or a counter's problem, or a network's, in
+/// Japanese (the kinds [`import_ja`] gives here).
+fn blocks_ja(e: &ImportError) -> Option<String> {
+    use ImportError as E;
+    Some(match e {
         E::PinNotConnected(what, pin) => format!("{what}: 入力 {pin} がつながっていません"),
         E::PinNotLiteral(what, pin) => {
             format!("{what}: 入力 {pin} はリテラル (inVariable) から与えてください")
@@ -97,21 +124,12 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
             "TON {name}: {ms} ms は {name} の単位 {base} ms の整数倍ではありません"
         ),
         E::TimerTooLong(name, ms) => format!("TON {name}: {ms} ms は長すぎます"),
-        E::OnRail(el) => {
-            format!("{el} が左の母線に直接つながっています: 前に接点を置いてください")
-        }
-        E::NoPath(el) => format!("左の母線から {el} への経路がありません"),
         E::Net(NetError::NotSeriesParallel(_)) => {
             "この回路は直列・並列になっていません: Hashigo のラダーは直列と並列のブロックです".into()
         }
         E::Net(NetError::TooDeep(_)) => "直列と並列のブロックの入れ子が深すぎます".into(),
         E::Net(NetError::NoPath) => "左の母線から出力への接点の経路がありません".into(),
-        E::Element(_)
-        | E::Gate(..)
-        | E::VendorLogic(_)
-        | E::Soft(_)
-        | E::SoftBox(..)
-        | E::SoftVariable(_) => return None,
+        _ => return None,
     })
 }
 
@@ -288,6 +306,19 @@ mod tests {
             E::Net(NetError::TooDeep(Pos::new(0, 0))),
             E::Net(NetError::NoPath),
         ];
+        all.extend(nested());
+        for e in &all {
+            let ja = import_ja(e).unwrap_or_else(|| panic!("{e:?} has its Japanese"));
+            assert!(ja.chars().any(|c| c > '\u{3000}'), "{e:?}: {ja}");
+            assert!(!english(&ja), "{e:?}: {ja}");
+        }
+    }
+
+    /// One of each XML, lowering and connection problem.
+    fn nested() -> Vec<ImportError> {
+        use ImportError as E;
+        let s = || "X".to_string();
+        let mut all = Vec::new();
         let xml = [
             XmlError::TooLarge(9),
             XmlError::NotWellFormed("unexpected end of input".into()),
@@ -332,10 +363,6 @@ mod tests {
             what: "contact X".into(),
             problem,
         }));
-        for e in &all {
-            let ja = import_ja(e).unwrap_or_else(|| panic!("{e:?} has its Japanese"));
-            assert!(ja.chars().any(|c| c > '\u{3000}'), "{e:?}: {ja}");
-            assert!(!english(&ja), "{e:?}: {ja}");
-        }
+        all
     }
 }

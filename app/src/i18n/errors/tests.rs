@@ -227,7 +227,7 @@ fn devices() -> Vec<DeviceError> {
 }
 
 #[test]
-fn every_test_error_and_observation_is_said_in_japanese() {
+fn every_test_error_is_said_in_japanese() {
     let mut expects: Vec<ExpectError> = vec![
         ExpectError::Form(s()),
         ExpectError::Value(s()),
@@ -292,6 +292,10 @@ fn every_test_error_and_observation_is_said_in_japanese() {
         is_japanese(&format!("{e:?}"), &case_error(Lang::Ja, e));
         assert_eq!(case_error(Lang::En, e), e.to_string());
     }
+}
+
+#[test]
+fn every_observation_of_a_failed_expectation_is_said_in_japanese() {
     let at = SimTime::from_millis(5);
     let observed = [
         Observed::Was {
