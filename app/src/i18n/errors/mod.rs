@@ -79,6 +79,14 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     }
 }
 
+/// Why a line of MINASEC-U's program text is refused.
+pub fn minasec_asm(lang: Lang, e: &engine::minasec::AsmError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => program::minasec_asm_ja(e),
+    }
+}
+
 /// Why a soft PLC program does not load.
 pub fn load_error(lang: Lang, e: &LoadError) -> String {
     match lang {

@@ -427,3 +427,37 @@ fn a_soft_plc_program_error_is_said_in_japanese_from_the_loader() {
     let ja = load_error(Lang::Ja, &errors[0].error);
     assert_eq!(ja, "`LD` にはオペランドが必要です");
 }
+
+#[test]
+fn every_minasec_program_text_error_is_said_in_japanese() {
+    use engine::minasec::isa::{Opcode, OperandError};
+    use engine::minasec::AsmError as A;
+    let all = [
+        A::TooManyLines(9),
+        A::BadStepNumber(s()),
+        A::StepOutOfOrder {
+            found: 3,
+            expected: 4,
+        },
+        A::MissingOpcode,
+        A::UnknownOpcode(s()),
+        A::MissingOperand(Opcode::Ld),
+        A::Operand(OperandError::UnknownDevice(s())),
+        A::Operand(OperandError::BadRawAddress(s())),
+        A::Unexpected(s()),
+        A::BinaryMismatch {
+            written: "1".into(),
+            expected: "0".into(),
+        },
+        A::TooManySteps(300),
+    ];
+    for e in &all {
+        is_japanese(&format!("{e:?}"), &minasec_asm(Lang::Ja, e));
+        assert_eq!(minasec_asm(Lang::En, e), e.to_string());
+    }
+    let errors = engine::minasec::Program::parse("LD X00\nFOO X01\n").expect_err("FOO");
+    assert_eq!(
+        minasec_asm(Lang::Ja, &errors[0].error),
+        "不明な命令 \"FOO\": MINASEC-U の命令は LD LDI AND ANDI OR ORI ST STI です"
+    );
+}
