@@ -170,3 +170,13 @@ def test_a_failed_test_in_japanese_on_a_phone(tmp_path, base_url, artifacts):
         driver.save_screenshot(str(artifacts / "japanese-test-fail-phone.png"))
     finally:
         driver.quit()
+
+
+def test_a_minasec_program_text_error_is_japanese(driver, base_url):
+    open_fresh(driver, base_url, lang="ja")
+    el(driver, "program-text").send_keys("LD X00\nLD X09\nFOO Y00\n")
+    errors = wait(driver, lambda: el(driver, "program-error"))
+    wait(driver, lambda: "X09" in errors.text and "FOO" in errors.text)
+    for line in errors.text.splitlines():
+        japanese(line)
+    assert "不明な命令 \"FOO\"" in errors.text, errors.text
