@@ -105,6 +105,9 @@ pub struct Said {
     pub at: String,
     /// The machine's typed refusal, when that is what it is.
     pub cause: Option<ElementError>,
+    /// Any other reason in Japanese, made here from its kind (issue #49).
+    #[serde(default)]
+    pub ja: Option<String>,
 }
 
 /// Does what `request` asks.
@@ -188,7 +191,11 @@ fn import(
                 let at = format!("{name} → {device}");
                 reply.errors.push(format!("{at}: {}", e.error));
                 let cause = Some(e.error.clone());
-                reply.said.push(Said { at, cause });
+                reply.said.push(Said {
+                    at,
+                    cause,
+                    ja: None,
+                });
             }
         }
         return reply;
@@ -214,7 +221,8 @@ fn import(
                     ImportError::Element(why) => Some(why.clone()),
                     _ => None,
                 };
-                reply.said.push(Said { at, cause });
+                let ja = said_ja::import_ja(&e.error);
+                reply.said.push(Said { at, cause, ja });
             }
             reply.runs_on = document.ok().and_then(|d| elsewhere(&d, machine, pou));
         }
@@ -247,5 +255,6 @@ pub fn answer(message: &str) -> Option<String> {
     .ok()
 }
 
+mod said_ja;
 #[cfg(test)]
 mod tests;

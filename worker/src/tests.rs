@@ -293,3 +293,16 @@ fn an_import_reads_the_file_once_whatever_it_is_asked() {
         assert_eq!(parsed, 1, "{machine:?}: {:?}", reply.errors);
     }
 }
+
+#[test]
+fn a_broken_file_is_said_in_japanese_too_at_its_line() {
+    let reply = import_request("<project>\n<a>\n</project>\n", None);
+    let said = reply.said.first().expect("an error");
+    assert!(said.at.starts_with("named.xml:"), "{said:?}");
+    assert!(said.cause.is_none());
+    assert_eq!(
+        said.ja.as_deref(),
+        Some("XML の形が正しくありません"),
+        "{reply:?}"
+    );
+}

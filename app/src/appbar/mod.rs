@@ -164,7 +164,7 @@ fn ViewMenu(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.lang.get().texts();
     view! {
         <button type="button" data-testid="view-zoom-in"
-            on:click=move |_| crate::editor::zoom::step(ladder, true)>{move || format!("{} (Ctrl+wheel)", t().zoom_in)}</button>
+            on:click=move |_| crate::editor::zoom::step(ladder, true)>{move || format!("{} ({})", t().zoom_in, ctx.lang.get().keys().ctrl_wheel)}</button>
         <button type="button" data-testid="view-zoom-out"
             on:click=move |_| crate::editor::zoom::step(ladder, false)>{move || t().zoom_out}</button>
         <button type="button" data-testid="view-zoom-100"

@@ -173,37 +173,6 @@ pub fn moved(ladder: &Ladder, out_col: usize, at: Cursor, mv: Move) -> Cursor {
     c
 }
 
-/// The key map as the `?` overlay shows it: (keys, what they do).
-pub const KEY_MAP: &[(&str, &str)] = &[
-    (
-        "← → ↑ ↓, Home/End, PgUp/PgDn, Ctrl+Home/End",
-        "move the cursor",
-    ),
-    ("Shift + arrows", "select cells (across rungs: whole rungs)"),
-    ("W", "why is the cell under the cursor on or off"),
-    ("F5 / F6 (c / Shift+C)", "normally open / closed contact"),
-    ("Shift+F5 / Shift+F6", "the contact as an OR branch"),
-    ("F7 (l)", "output coil in the output column"),
-    (
-        "F8 (s, r, o, f, m)",
-        "instruction: SET Y00, RST C0, OUT T00 K10, MOV K50 D00, LDP X00, TON t 500ms",
-    ),
-    ("F9 (-) / Shift+F9 (|)", "horizontal wire / vertical link"),
-    ("Ctrl+F9 / Ctrl+F10", "delete the wire / the link"),
-    ("Delete, Enter", "clear the cell, edit the cell"),
-    (
-        "Insert / Shift+Insert, Ctrl+Delete",
-        "rung above / below, delete the rung",
-    ),
-    ("Alt+↑ / Alt+↓", "move the rung"),
-    ("Ctrl+Z / Ctrl+Y (Ctrl+Shift+Z)", "undo / redo"),
-    (
-        "Ctrl+C / Ctrl+X / Ctrl+V",
-        "copy / cut / paste (between tabs too)",
-    ),
-    ("Ctrl+F, ?", "find and replace, this key map"),
-];
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -134,7 +134,10 @@ pub fn drive_from_ladder(ctx: LadderCtx, device: &str, pulse: bool) {
         };
         let on = engine::events::InputValue::Int(1);
         if let Err(e) = plc.check_input(d, on) {
-            refused = Some(e.to_string());
+            refused = Some(crate::i18n::errors::plc_error(
+                ctx.page.lang.get_untracked(),
+                &e,
+            ));
             return;
         }
         if pulse {

@@ -117,7 +117,7 @@ pub fn LadderEditor(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl In
                         grid::focus(grid);
                     }>
                     <table>
-                        {keys::KEY_MAP.iter().map(|(k, what)| view! {
+                        {move || ctx.page.lang.get().keys().key_map.iter().map(|(k, what)| view! {
                             <tr><th>{*k}</th><td>{*what}</td></tr>
                         }).collect_view()}
                     </table>

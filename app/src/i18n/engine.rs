@@ -36,10 +36,11 @@ pub fn ladder_error(lang: Lang, e: &LadderError) -> String {
         ),
         None => format!("ラング {}", e.rung),
     };
-    let why = e
-        .cause
-        .as_ref()
-        .map_or_else(|| e.message.clone(), |c| element_ja(c));
+    let why = match (&e.cause, &e.problem) {
+        (Some(c), _) => element_ja(c),
+        (None, Some(p)) => super::errors::rung_problem_ja(p),
+        (None, None) => e.message.clone(),
+    };
     format!("{at}: {why}")
 }
 
@@ -52,17 +53,24 @@ pub fn import_error(lang: Lang, said: Option<&files_worker::Said>, english: &str
             Some(files_worker::Said {
                 at,
                 cause: Some(why),
+                ..
             }),
         ) => {
             format!("{at}: {}", element_ja(why))
         }
+        (
+            Lang::Ja,
+            Some(files_worker::Said {
+                at, ja: Some(ja), ..
+            }),
+        ) => format!("{at}: {ja}"),
         _ => english.to_string(),
     }
 }
 
 /// A machine as the page names it in Japanese (its maker's product name;
 /// kept here so the strings do not depend on the page's state).
-fn machine_ja(m: MachineId) -> &'static str {
+pub(super) fn machine_ja(m: MachineId) -> &'static str {
     match m {
         MachineId::MinasecU => "MINASEC-U",
         MachineId::Io86a => "PLC-IO86A",
@@ -72,7 +80,7 @@ fn machine_ja(m: MachineId) -> &'static str {
     }
 }
 
-fn element_ja(e: &ElementError) -> String {
+pub(super) fn element_ja(e: &ElementError) -> String {
     use ElementError as E;
     match e {
         E::Lacks { machine, what, why } => format!(
@@ -361,6 +369,7 @@ mod tests {
     #[test]
     fn an_import_error_with_its_cause_is_said_in_japanese() {
         let said = files_worker::Said {
+            ja: None,
             at: "lab4.xml:67".into(),
             cause: Some(ElementError::Lacks {
                 machine: MachineId::MinasecU,

@@ -4,9 +4,12 @@
 pub mod classroom;
 mod en;
 pub mod engine;
+pub mod errors;
 mod files;
 mod ja;
+pub mod keymap;
 pub mod start;
+pub mod words;
 
 use en::EN;
 use ja::JA;
@@ -60,6 +63,22 @@ impl Lang {
         match self {
             Lang::Ja => &start::JA,
             Lang::En => &start::EN,
+        }
+    }
+
+    /// The key map's and the menus' key names (issue #49).
+    pub const fn keys(self) -> &'static keymap::KeyTexts {
+        match self {
+            Lang::Ja => &keymap::JA,
+            Lang::En => &keymap::EN,
+        }
+    }
+
+    /// Words the page's code said in English (issue #49).
+    pub const fn words(self) -> &'static words::Words {
+        match self {
+            Lang::Ja => &words::JA,
+            Lang::En => &words::EN,
         }
     }
 

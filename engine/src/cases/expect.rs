@@ -114,16 +114,18 @@ impl Want {
 
     /// Why `value` is of another kind than this (a number met where a
     /// text is wanted, or a text where a number is), said for `device`.
-    pub fn kind_of(&self, device: &str, value: &Value) -> Option<String> {
+    pub fn kind_of(&self, device: &str, value: &Value) -> Option<super::Observed> {
+        use super::Observed;
         match (self, value) {
             (Want::Text(_), Value::Text(_)) => None,
-            (Want::Text(_), v) => Some(format!(
-                "{device} is a number ({v}), not a text: compare it with a number"
-            )),
-            (Want::Number(_), Value::Text(_)) => Some(format!(
-                "{device} is a text ({}): compare it with a text in quotes ('…')",
-                value.watched()
-            )),
+            (Want::Text(_), v) => Some(Observed::NumberNotText {
+                device: device.to_string(),
+                value: v.to_string(),
+            }),
+            (Want::Number(_), Value::Text(_)) => Some(Observed::TextNotNumber {
+                device: device.to_string(),
+                value: value.watched(),
+            }),
             (Want::Number(_), _) => None,
         }
     }

@@ -4,6 +4,7 @@
 //! same cases.
 
 mod expect;
+mod observed;
 mod schedule;
 
 use std::fmt;
@@ -11,6 +12,7 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 pub use expect::{Compare, ExpectError, Expectation, Want};
+pub use observed::{EdgeSeen, Observed};
 
 use crate::error::Located;
 use crate::events::{parse_events, EventError};
@@ -54,6 +56,8 @@ pub enum Outcome {
         expectation: String,
         /// What was seen instead.
         observed: String,
+        /// The same, typed (the page says it in its own language).
+        seen: Observed,
     },
 }
 
@@ -100,7 +104,7 @@ struct Watch {
     expectation: Expectation,
     device: Device,
     /// The first instant it failed at, and what was seen.
-    failed: Option<String>,
+    failed: Option<Observed>,
     /// Edges: the value at the span's first and latest samples, whether
     /// it ever changed, when it first moved the other way, and whether the
     /// edge was seen.
@@ -164,15 +168,15 @@ impl Watch {
             }
         };
         if !holds {
-            self.failed = Some(format!(
-                "{} was {} at {t}ms",
-                self.expectation.device(),
-                value.watched()
-            ));
+            self.failed = Some(Observed::Was {
+                device: self.expectation.device().to_string(),
+                value: value.watched(),
+                at: t,
+            });
         }
     }
 
-    fn verdict(&self) -> Option<String> {
+    fn verdict(&self) -> Option<Observed> {
         if let Some(f) = &self.failed {
             return Some(f.clone());
         }
@@ -186,19 +190,22 @@ impl Watch {
             self.first.clone().unwrap_or(Value::Int(0)),
             self.last.clone().unwrap_or(Value::Int(0)),
         );
-        let verb = if *falling { "fall" } else { "rise" };
-        let device = self.expectation.device();
         // Say what was seen: a device that did the opposite is not one
         // that stayed put.
-        let seen = match self.opposite {
-            _ if !self.changed => format!("it stayed {first}"),
-            Some(t) => format!(
-                "it went from {first} to {last}, {} at {t}ms",
-                if *falling { "rising" } else { "falling" }
-            ),
-            None => format!("it went from {first} to {last}"),
+        let seen = if self.changed {
+            EdgeSeen::Went {
+                first: first.to_string(),
+                last: last.to_string(),
+                opposite: self.opposite,
+            }
+        } else {
+            EdgeSeen::Stayed(first.to_string())
         };
-        Some(format!("{device} did not {verb} ({seen})"))
+        Some(Observed::NoEdge {
+            device: self.expectation.device().to_string(),
+            falling: *falling,
+            seen,
+        })
     }
 }
 
@@ -310,10 +317,11 @@ pub fn run_prepared(plc: &mut dyn Plc, case: &Prepared) -> Result<Outcome, CaseE
         .iter()
         .zip(&case.expectations)
         .find_map(|(w, (index, _))| {
-            w.verdict().map(|observed| Outcome::Fail {
+            w.verdict().map(|seen| Outcome::Fail {
                 index: *index,
                 expectation: w.expectation.to_string(),
-                observed,
+                observed: seen.to_string(),
+                seen,
             })
         })
         .unwrap_or(Outcome::Pass))

@@ -226,8 +226,17 @@ pub enum IlError {
     UnknownOperator(String),
     /// A modifier the operator does not take (`STC`, `LD(` …).
     BadModifier(String),
-    /// An operand where none goes, or none where one must.
-    Operand(String),
+    /// A label alone on its line.
+    LabelAlone,
+    /// An operand given to an operator (as written) that takes none.
+    NoOperand(String),
+    /// A jump (as written) without a label.
+    NeedsLabel(String),
+    /// An operator (as written) without its operand.
+    NeedsOperand(String),
+    /// A function (as written) with another number of operands than it
+    /// takes (how many it takes after the current result).
+    OperandCount(String, usize),
     BadName(String),
     Address(AddressError),
     Literal(LiteralError),
@@ -253,7 +262,13 @@ impl fmt::Display for IlError {
         match self {
             IlError::UnknownOperator(o) => write!(f, "unknown operator `{o}`"),
             IlError::BadModifier(o) => write!(f, "`{o}`: this operator takes no such modifier"),
-            IlError::Operand(why) => f.write_str(why),
+            IlError::LabelAlone => f.write_str("a label needs an instruction on its line"),
+            IlError::NoOperand(w) => write!(f, "`{w}` takes no operand"),
+            IlError::NeedsLabel(w) => write!(f, "`{w}` needs a label"),
+            IlError::NeedsOperand(w) => write!(f, "`{w}` needs an operand"),
+            IlError::OperandCount(w, n) => {
+                write!(f, "`{w}` takes {n} operand(s) after the current result")
+            }
             IlError::BadName(n) => write!(f, "`{n}` is not a name"),
             IlError::Address(e) => e.fmt(f),
             IlError::Literal(e) => e.fmt(f),
@@ -362,9 +377,7 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
         _ => (None, code),
     };
     if code.is_empty() {
-        return Err(IlError::Operand(
-            "a label needs an instruction on its line".into(),
-        ));
+        return Err(IlError::LabelAlone);
     }
     let (word, rest) = match code.find(|c: char| c.is_whitespace() || c == '(') {
         Some(at) => (&code[..at], code[at..].trim()),
@@ -387,7 +400,7 @@ fn line(code: &str, number: usize) -> Result<Line, IlError> {
         return if rest.is_empty() {
             Ok(out)
         } else {
-            Err(IlError::Operand("`)` takes no operand".into()))
+            Err(IlError::NoOperand(")".into()))
         };
     }
     if let Some(function) = Function::named(word) {
@@ -443,10 +456,7 @@ fn function_line(
     if out.args.len() == function.operands() {
         Ok(out)
     } else {
-        Err(IlError::Operand(format!(
-            "`{word}` takes {} operand(s) after the current result",
-            function.operands()
-        )))
+        Err(IlError::OperandCount(word.into(), function.operands()))
     }
 }
 
@@ -456,19 +466,19 @@ fn operands(word: &str, rest: &str, out: &mut Line) -> Result<(), IlError> {
     match out.operator {
         Operator::Not | Operator::Ret => {
             if !rest.is_empty() {
-                return Err(IlError::Operand(format!("`{word}` takes no operand")));
+                return Err(IlError::NoOperand(word.into()));
             }
         }
         Operator::Cal => call(rest, out)?,
         Operator::Jmp => {
             if !is_identifier(rest) {
-                return Err(IlError::Operand(format!("`{word}` needs a label")));
+                return Err(IlError::NeedsLabel(word.into()));
             }
             out.operand = Some(Operand::Name(rest.to_string()));
         }
         _ if rest.is_empty() && out.deferred => {}
         _ if rest.is_empty() => {
-            return Err(IlError::Operand(format!("`{word}` needs an operand")));
+            return Err(IlError::NeedsOperand(word.into()));
         }
         _ => out.operand = Some(operand(rest)?),
     }

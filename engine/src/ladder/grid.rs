@@ -162,6 +162,9 @@ pub struct LadderError {
     /// the page says it in its own language from this; `message` is its
     /// English; boxed, as it is seldom there).
     pub cause: Option<Box<super::target::ElementError>>,
+    /// The typed reason of a wiring or placement problem (issue #49, as
+    /// `cause`: the page's language from the kind; boxed, as `cause`).
+    pub problem: Option<Box<super::problem::RungProblem>>,
 }
 
 impl LadderError {
@@ -174,6 +177,7 @@ impl LadderError {
             kind: LadderErrorKind::Device,
             message: message.into(),
             cause: None,
+            problem: None,
         }
     }
 
@@ -186,6 +190,7 @@ impl LadderError {
             kind: LadderErrorKind::Capacity,
             message: message.into(),
             cause: None,
+            problem: None,
         }
     }
 
@@ -195,6 +200,26 @@ impl LadderError {
         LadderError {
             cause: Some(Box::new(cause.clone())),
             ..LadderError::at(rung, pos, cause.to_string())
+        }
+    }
+
+    /// A wiring or placement problem of rung index `rung` (at `pos`, when
+    /// it has a cell): its English and its kind.
+    pub fn wiring(
+        rung: usize,
+        pos: Option<Pos>,
+        kind: LadderErrorKind,
+        problem: super::problem::RungProblem,
+    ) -> LadderError {
+        let message = problem.to_string();
+        let plain = match pos {
+            Some(p) => LadderError::at(rung, p, message),
+            None => LadderError::rung(rung, message),
+        };
+        LadderError {
+            kind,
+            problem: Some(Box::new(problem)),
+            ..plain
         }
     }
 

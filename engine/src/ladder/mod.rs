@@ -21,6 +21,7 @@ mod lack;
 pub mod live;
 pub mod machine_target;
 pub mod net;
+pub mod problem;
 pub mod target;
 pub mod variables;
 pub mod why;

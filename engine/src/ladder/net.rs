@@ -18,6 +18,7 @@ pub use sides::{attach_sides, carrier, Side};
 
 use super::element::Element;
 use super::grid::{LadderError, LadderErrorKind, Pos, Rung};
+use super::problem::RungProblem;
 use crate::limits::{MAX_NESTING, MAX_RUNG_CELLS};
 
 /// A series-parallel network; leaves keep the cell they came from.
@@ -232,7 +233,12 @@ pub fn analyse(rung: &Rung, index: usize) -> Result<Option<RungLogic>, Vec<Ladde
             NetError::TooDeep(p) => (p, LadderErrorKind::Limit),
             NetError::NoPath => (outputs[0].1, LadderErrorKind::Wiring),
         };
-        vec![grid.err(pos, kind, &e.to_string())]
+        let problem = match e {
+            NetError::NotSeriesParallel(_) => RungProblem::NotSeriesParallel,
+            NetError::TooDeep(_) => RungProblem::TooDeep,
+            NetError::NoPath => RungProblem::NoPath,
+        };
+        vec![grid.err(pos, kind, problem)]
     })?;
     Ok(Some(RungLogic {
         condition,
@@ -255,13 +261,12 @@ impl<'a> Grid<'a> {
     fn new(rung: &'a Rung, index: usize) -> Result<Grid<'a>, Vec<LadderError>> {
         let (rows, width) = (rung.cells.len(), rung.width());
         if (rows as u128) * (width as u128 + 1) > MAX_RUNG_CELLS as u128 {
-            return Err(vec![LadderError::rung(
+            return Err(vec![LadderError::wiring(
                 index,
-                format!(
-                    "the rung spans {rows} rows and {width} columns, more than the {MAX_RUNG_CELLS} cells a rung may have (docs/limits.md)"
-                ),
-            )
-            .kind(LadderErrorKind::Limit)]);
+                None,
+                LadderErrorKind::Limit,
+                RungProblem::TooLarge { rows, width },
+            )]);
         }
         Ok(Grid {
             rung,
@@ -271,8 +276,8 @@ impl<'a> Grid<'a> {
         })
     }
 
-    fn err(&self, pos: Pos, kind: LadderErrorKind, message: &str) -> LadderError {
-        LadderError::at(self.index, pos, message).kind(kind)
+    fn err(&self, pos: Pos, kind: LadderErrorKind, problem: RungProblem) -> LadderError {
+        LadderError::wiring(self.index, Some(pos), kind, problem)
     }
 
     /// The electrical point at the left edge of column `b` in row `r`
@@ -291,26 +296,19 @@ impl<'a> Grid<'a> {
             .map(|(p, e)| (e.clone(), p))
             .collect();
         let Some(out_col) = outputs.iter().map(|(_, p)| p.col).max() else {
-            return Err(vec![LadderError::rung(
+            return Err(vec![LadderError::wiring(
                 self.index,
-                "the rung has no output: end it with a coil or an output box",
-            )
-            .kind(LadderErrorKind::NoOutput)]);
+                None,
+                LadderErrorKind::NoOutput,
+                RungProblem::NoOutput,
+            )]);
         };
         let mut errors = Vec::new();
         for (p, e) in self.rung.elements() {
             if e.is_output() && p.col != out_col {
-                errors.push(self.err(
-                    p,
-                    LadderErrorKind::Placement,
-                    "outputs must line up in the rung's last column: move this one right",
-                ));
+                errors.push(self.err(p, LadderErrorKind::Placement, RungProblem::OutputNotLast));
             } else if !e.is_output() && p.col >= out_col {
-                errors.push(self.err(
-                    p,
-                    LadderErrorKind::Placement,
-                    "nothing may follow an output: coils and output boxes end the rung",
-                ));
+                errors.push(self.err(p, LadderErrorKind::Placement, RungProblem::AfterOutput));
             }
         }
         if errors.is_empty() {
@@ -337,7 +335,7 @@ impl<'a> Grid<'a> {
                 _ => errors.push(self.err(
                     Pos::new(link.row, link.col),
                     LadderErrorKind::Wiring,
-                    "a vertical link reaches past the rung's last row or column",
+                    RungProblem::LinkPastRung,
                 )),
             }
         }
@@ -366,11 +364,7 @@ impl<'a> Grid<'a> {
         let mut errors = Vec::new();
         for (_, p) in &outputs[1..] {
             if uf.find(self.node(p.row, out_col)) != bus {
-                errors.push(self.err(
-                    *p,
-                    LadderErrorKind::Wiring,
-                    "this output is not joined to the first output's condition: give it its own rung or link it",
-                ));
+                errors.push(self.err(*p, LadderErrorKind::Wiring, RungProblem::OutputNotJoined));
             }
         }
         let mut edges = Vec::new();
@@ -384,11 +378,7 @@ impl<'a> Grid<'a> {
                 uf.find(self.node(p.row, p.col + 1)),
             );
             if a == b {
-                errors.push(self.err(
-                    p,
-                    LadderErrorKind::Wiring,
-                    "short circuit: a wire joins both sides of this element",
-                ));
+                errors.push(self.err(p, LadderErrorKind::Wiring, RungProblem::ShortCircuit));
                 shorted = true;
                 continue;
             }
@@ -410,7 +400,7 @@ impl<'a> Grid<'a> {
             errors.push(self.err(
                 outputs[0].1,
                 LadderErrorKind::Wiring,
-                "the output is wired straight to the left rail: put a contact before it",
+                RungProblem::OutputOnRail,
             ));
         }
         if errors.is_empty() {
@@ -440,25 +430,17 @@ impl<'a> Grid<'a> {
                 errors.push(self.err(
                     e.net.first_pos(),
                     LadderErrorKind::Dangling,
-                    "dangling: this element is not on a path from the left rail to the outputs",
+                    RungProblem::Dangling,
                 ));
             }
         }
         for (p, e) in self.rung.elements() {
             if matches!(e, Element::Wire) && !useful(uf.find(self.node(p.row, p.col))) {
-                errors.push(self.err(
-                    p,
-                    LadderErrorKind::Dangling,
-                    "dangling wire: it does not join the left rail to the outputs",
-                ));
+                errors.push(self.err(p, LadderErrorKind::Dangling, RungProblem::DanglingWire));
             }
         }
         if !useful(bus) && errors.is_empty() {
-            errors.push(self.err(
-                outputs[0].1,
-                LadderErrorKind::Wiring,
-                "no path of contacts joins the left rail to this output",
-            ));
+            errors.push(self.err(outputs[0].1, LadderErrorKind::Wiring, RungProblem::NoPath));
         }
         if errors.is_empty() {
             Ok(())

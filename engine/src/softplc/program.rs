@@ -96,6 +96,23 @@ pub enum LoadError {
     Unclosed,
     /// The function blocks' sections do not pair.
     Pou(super::pou::PouError),
+    /// Two types where one is needed (convert one, `*_TO_*`).
+    Mix(DataType, DataType),
+    /// An inversion (the operator, as written) of a type that has no bits.
+    NotBits(String, DataType),
+    /// An operation that does not apply to the type.
+    NotFor(DataType),
+    /// A conditional instruction (CALC, JMPC, RETC) after a non-BOOL.
+    NeedsBool(&'static str),
+    /// A block (its type) without that parameter (as written): an
+    /// output when `output`, else an input.
+    NoPin {
+        block: String,
+        pin: String,
+        output: bool,
+    },
+    /// A CAL of a name that is not a block instance.
+    NotAnInstance(String),
 }
 
 impl fmt::Display for LoadError {
@@ -115,6 +132,22 @@ impl fmt::Display for LoadError {
             LoadError::Unbalanced => f.write_str("`(` and `)` do not pair"),
             LoadError::Unclosed => f.write_str("this `(` is never closed with `)`"),
             LoadError::Pou(e) => e.fmt(f),
+            LoadError::Mix(a, b) => write!(
+                f,
+                "{} and {} do not mix: convert one (*_TO_*)",
+                a.name(),
+                b.name()
+            ),
+            LoadError::NotBits(op, t) => {
+                write!(f, "{op} needs a BOOL or a bit string, not {}", t.name())
+            }
+            LoadError::NotFor(t) => write!(f, "this operation does not apply to {}", t.name()),
+            LoadError::NeedsBool(op) => write!(f, "{op} needs a BOOL current result"),
+            LoadError::NoPin { block, pin, output } => {
+                let side = if *output { "output" } else { "input" };
+                write!(f, "{block} has no {side} `{pin}`")
+            }
+            LoadError::NotAnInstance(n) => write!(f, "`{n}` is not a block instance"),
         }
     }
 }
@@ -409,7 +442,7 @@ impl Program {
             }
             Operator::Ret => {
                 if line.condition.is_some() && need_cr(flow.cr)? != DataType::Bool {
-                    return Err(LoadError::Type("RETC needs a BOOL current result".into()));
+                    return Err(LoadError::NeedsBool("RETC"));
                 }
                 Step::Ret(line.condition)
             }

@@ -53,7 +53,12 @@ fn an_expectation_at_an_event_time_sees_the_event() {
         Outcome::Fail {
             index: 0,
             expectation: "Y00 = 1 at 4.999ms".into(),
-            observed: "Y00 was 0 at 4.999ms".into()
+            observed: "Y00 was 0 at 4.999ms".into(),
+            seen: engine::cases::Observed::Was {
+                device: "Y00".into(),
+                value: "0".into(),
+                at: engine::SimTime::parse("4.999ms").expect("a time"),
+            },
         }
     );
 }

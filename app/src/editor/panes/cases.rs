@@ -12,6 +12,7 @@ use engine::{MachineId, SimTime};
 use leptos::prelude::*;
 
 use crate::editor::state::{CaseResult, LadderCtx};
+use crate::i18n::errors::{self, Both};
 
 /// Runs `cases` on `machine`, each on a fresh machine with `settings`
 /// applied and `program` loaded.
@@ -24,7 +25,10 @@ pub fn run_cases(
     // The work of all the cases is counted before any runs (docs/limits.md).
     let prepared = match prepare_all(cases) {
         Ok(prepared) => prepared,
-        Err(e) => return vec![CaseResult::Error(e.to_string()); cases.len()],
+        Err(e) => {
+            let said = Both::new(|lang| errors::case_error(lang, &e));
+            return vec![CaseResult::Error(said); cases.len()];
+        }
     };
     prepared
         .iter()
@@ -32,7 +36,7 @@ pub fn run_cases(
         .map(|(case, source)| {
             let case = match case {
                 Ok(case) => case,
-                Err(e) => return CaseResult::Error(e.to_string()),
+                Err(e) => return CaseResult::Error(Both::new(|l| errors::case_error(l, e))),
             };
             let mut plc = new_plc(machine);
             for (name, value) in settings {
@@ -41,22 +45,23 @@ pub fn run_cases(
                     value: value.clone(),
                 };
                 if let Err(e) = plc.apply(setting) {
-                    return CaseResult::Error(format!("{name}={value}: {e}"));
+                    let said = |l| format!("{name}={value}: {}", errors::plc_error(l, &e));
+                    return CaseResult::Error(Both::new(said));
                 }
             }
             if let Err(e) = plc.load_text(program) {
-                return CaseResult::Error(e.to_string());
+                return CaseResult::Error(Both::new(|l| errors::plc_error(l, &e)));
             }
             match run_prepared(plc.as_mut(), case) {
                 Ok(Outcome::Pass) => CaseResult::Pass,
                 Ok(Outcome::Fail {
-                    expectation,
-                    observed,
-                    ..
-                }) => CaseResult::Fail(format!("{expectation}: {observed}")),
+                    expectation, seen, ..
+                }) => CaseResult::Fail(Both::new(|l| {
+                    format!("{expectation}: {}", errors::observed(l, &seen))
+                })),
                 Err(e) => match unused_device(machine, program, source, &e) {
                     Some(device) => CaseResult::Unused(device),
-                    None => CaseResult::Error(e.to_string()),
+                    None => CaseResult::Error(Both::new(|l| errors::case_error(l, &e))),
                 },
             }
         })
@@ -191,7 +196,7 @@ pub fn run_all(ctx: LadderCtx) {
     let cases = ctx.cases.tests.get_untracked();
     let Some(listing) = ctx.drawing.listing.get_untracked() else {
         if ctx.cases.exercise.with_untracked(Option::is_some) {
-            let failed = CaseResult::Error(String::new());
+            let failed = CaseResult::Error(Both::default());
             ctx.cases.results.set(vec![Some(failed); cases.len()]);
             return;
         }
@@ -301,7 +306,8 @@ fn TestsBar(ctx: LadderCtx) -> impl IntoView {
     let add = move |_| {
         let n = ctx.cases.tests.with_untracked(Vec::len) + 1;
         let case = TestCase {
-            name: format!("case {n}"),
+            name: ctx.page.lang.get_untracked().words().case_names[0]
+                .replace("{n}", &n.to_string()),
             ..TestCase::default()
         };
         ctx.cases.tests.update(|v| v.push(case));
@@ -420,7 +426,10 @@ fn said_of(ctx: LadderCtx, case: &TestCase, result: CaseResult) -> (String, bool
     let (t, c) = (lang.texts(), lang.classroom());
     match result {
         CaseResult::Pass => (c.pass.to_string(), false, false),
-        CaseResult::Fail(why) => (format!("{}: {why}", t.test_fail), false, false),
+        CaseResult::Fail(why) => {
+            let why = why.in_lang(lang);
+            (format!("{}: {why}", t.test_fail), false, false)
+        }
         CaseResult::Unused(device) => (
             format!(
                 "{}: {}",
@@ -439,9 +448,10 @@ fn said_of(ctx: LadderCtx, case: &TestCase, result: CaseResult) -> (String, bool
             (format!("{}: {hint}", t.test_fail), false, false)
         }
         CaseResult::Error(why) => {
-            let events = why.starts_with("events line");
-            let expect = why.starts_with("expectation ");
-            (why, events, expect)
+            // Which box it is about, from the engine's words.
+            let events = why.en.starts_with("events line");
+            let expect = why.en.starts_with("expectation ");
+            (why.in_lang(lang).to_string(), events, expect)
         }
     }
 }
@@ -512,10 +522,11 @@ mod tests {
         wrong.expect = vec!["Y00 = 1 at 1200ms".into()];
         let results = run_cases(MachineId::Io86a, &[], &program, &[held, wrong]);
         assert_eq!(results[0], CaseResult::Pass);
-        assert_eq!(
-            results[1],
-            CaseResult::Fail("Y00 = 1 at 1200ms: Y00 was 0 at 1200ms".into())
-        );
+        let failed = Both {
+            en: "Y00 = 1 at 1200ms: Y00 was 0 at 1200ms".into(),
+            ja: "Y00 = 1 at 1200ms: Y00 は 1200ms に 0 でした".into(),
+        };
+        assert_eq!(results[1], CaseResult::Fail(failed), "in both languages");
     }
 
     #[test]
@@ -552,7 +563,7 @@ mod tests {
             &[case("0ms,X99,1\n", "Y00 = 1 at 1s")],
         );
         assert!(
-            matches!(&io[0], CaseResult::Error(e) if e.contains("X99")),
+            matches!(&io[0], CaseResult::Error(e) if e.en.contains("X99")),
             "{io:?}"
         );
     }
@@ -574,7 +585,7 @@ mod tests {
         assert_eq!(results.len(), 20);
         assert!(results.iter().all(|r| matches!(
             r,
-            CaseResult::Error(e) if e.contains("more than 100000000 samples")
+            CaseResult::Error(e) if e.en.contains("more than 100000000 samples")
         )));
     }
 }

@@ -224,7 +224,11 @@ impl Chart {
                 self.devices.set(Some(list));
                 self.adding.set(String::new());
             }
-            Err(e) => self.error.set(Some(e.to_string())),
+            Err(e) => {
+                let lang = self.ctx.page.lang.get_untracked();
+                self.error
+                    .set(Some(crate::i18n::errors::plc_error(lang, &e)));
+            }
         }
     }
 

@@ -67,7 +67,7 @@ fn FoundList(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) ->
             {move || found().into_iter().map(|f| {
                 let at = Cursor::new(f.rung, f.pos.map_or(0, |p| p.row), f.pos.map_or(0, |p| p.col));
                 let what = match f.pos {
-                    Some(p) => format!("{} {}, row {}, column {}", t().rung, f.rung + 1, p.row + 1, p.col + 1),
+                    Some(p) => ctx.page.lang.get().words().cell(f.rung + 1, p.row + 1, p.col + 1),
                     None => format!("{} {} ({})", t().rung, f.rung + 1, t().rung_comment),
                 };
                 view! { <li><button type="button" on:click=move |_| pick.run(at)>{what}</button></li> }
@@ -102,10 +102,11 @@ fn XrefTable(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) ->
         <table class="xref" data-testid="xref">
             <tbody>
                 {move || uses().into_iter().map(|(u, step)| {
+                    let words = ctx.page.lang.get().words();
                     let role = match u.role {
-                        UseRole::Contact => "contact",
-                        UseRole::Coil => "coil",
-                        UseRole::Box => "box",
+                        UseRole::Contact => words.use_roles[0],
+                        UseRole::Coil => words.use_roles[1],
+                        UseRole::Box => words.use_roles[2],
                     };
                     let at = Cursor::new(u.rung, u.pos.row, u.pos.col);
                     view! {
@@ -114,7 +115,7 @@ fn XrefTable(ctx: LadderCtx, query: RwSignal<String>, pick: Callback<Cursor>) ->
                             <td>{format!("{} {}", t().rung, u.rung + 1)}</td>
                             <td>{step.map(|s| format!("{} {s}", t().step))}</td>
                             <td><button type="button" on:click=move |_| pick.run(at)>
-                                {format!("row {}, column {}", u.pos.row + 1, u.pos.col + 1)}
+                                {words.row_col(u.pos.row + 1, u.pos.col + 1)}
                             </button></td>
                         </tr>
                     }
@@ -162,10 +163,14 @@ fn ReplaceBox(ctx: LadderCtx) -> impl IntoView {
         </div>
         <ul class="replace-preview" data-testid="replace-preview">
             {move || match plan() {
-                Ok(list) => list.into_iter().map(|(rung, pos, was, will)| view! {
-                    <li>{format!("{} {}, row {}, column {}: {was} → {will}", t().rung, rung + 1, pos.row + 1, pos.col + 1)}</li>
+                Ok(list) => list.into_iter().map(|(rung, pos, was, will)| {
+                    let at = ctx.page.lang.get().words().cell(rung + 1, pos.row + 1, pos.col + 1);
+                    view! { <li>{format!("{at}: {was} → {will}")}</li> }
                 }).collect_view().into_any(),
-                Err(why) => view! { <li class="error">{why.to_string()}</li> }.into_any(),
+                Err(why) => {
+                    let said = crate::i18n::errors::replace_error(ctx.page.lang.get(), &why);
+                    view! { <li class="error">{said}</li> }.into_any()
+                }
             }}
         </ul>
     }

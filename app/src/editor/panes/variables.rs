@@ -196,7 +196,11 @@ fn ValueCell(ctx: LadderCtx, name: String, text: bool) -> impl IntoView {
     let set_value = move || {
         let text = to_set.get_untracked();
         let Some(value) = typed_value(&text) else {
-            refused.set(Some(format!("{text:?}: TRUE, FALSE or a number")));
+            let lang = ctx.page.lang.get_untracked();
+            refused.set(Some(format!(
+                "{text:?}: {}",
+                lang.words().true_false_number
+            )));
             return;
         };
         let mut said = None;
@@ -204,7 +208,8 @@ fn ValueCell(ctx: LadderCtx, name: String, text: bool) -> impl IntoView {
             let done = plc
                 .device(&name)
                 .and_then(|d| plc.apply(Command::SetInput(d, value)));
-            said = done.err().map(|e| e.to_string());
+            let lang = ctx.page.lang.get_untracked();
+            said = done.err().map(|e| crate::i18n::errors::plc_error(lang, &e));
         });
         refused.set(said);
     };

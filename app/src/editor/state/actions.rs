@@ -2,6 +2,7 @@
 //! clipboard.
 
 use super::*;
+use crate::i18n::errors;
 
 impl LadderCtx {
     /// Puts the cursor on a cell (a click, a problem, a find result).
@@ -196,7 +197,7 @@ impl LadderCtx {
                 self.panes.entry.set(None);
                 true
             }
-            Err(e) => refuse(e.to_string()),
+            Err(e) => refuse(errors::edit_error(self.page.lang.get_untracked(), &e)),
         }
     }
 
@@ -229,7 +230,8 @@ impl LadderCtx {
                 Some(text)
             }
             Err(e) => {
-                self.panes.message.set(Some(e.to_string()));
+                let said = errors::edit_error(self.page.lang.get_untracked(), &e);
+                self.panes.message.set(Some(said));
                 None
             }
         }
@@ -251,7 +253,8 @@ impl LadderCtx {
         let clip = match Clip::from_text(&text) {
             Ok(c) => c,
             Err(e) => {
-                self.panes.message.set(Some(e.to_string()));
+                let said = errors::clip_error(self.page.lang.get_untracked(), &e);
+                self.panes.message.set(Some(said));
                 return;
             }
         };
@@ -261,7 +264,8 @@ impl LadderCtx {
                 self.apply(Edit::Paste { at, clip });
             }
             Err(errors) => {
-                let all: Vec<String> = errors.iter().map(ToString::to_string).collect();
+                let lang = self.page.lang.get_untracked();
+                let all: Vec<String> = errors.iter().map(|e| errors::clip_error(lang, e)).collect();
                 self.panes.message.set(Some(all.join("; ")));
             }
         }

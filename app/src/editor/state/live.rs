@@ -102,7 +102,8 @@ impl LadderCtx {
         };
         self.cases.recorder.set_value(None);
         let n = self.cases.tests.with_untracked(Vec::len) + 1;
-        let case = rec.finish(plc, &format!("recorded {n}"));
+        let named = self.page.lang.get_untracked().words().case_names[1];
+        let case = rec.finish(plc, &named.replace("{n}", &n.to_string()));
         self.cases.tests.update(|t| t.push(case));
         self.cases.results.update(|r| r.push(None));
         self.save();

@@ -237,9 +237,9 @@ pub enum CaseResult {
     /// Every expectation held.
     Pass,
     /// The first expectation that did not, and what was seen.
-    Fail(String),
+    Fail(crate::i18n::errors::Both),
     /// The case could not run (a bad line, a device the machine lacks).
-    Error(String),
+    Error(crate::i18n::errors::Both),
     /// The case names a device the ladder does not use yet (the soft
     /// PLC has only the devices its program uses): the answer is not
     /// there yet, which is a failure, not the author's error.
@@ -351,7 +351,10 @@ impl LadderCtx {
     /// Applies an edit; a refusal is returned (for a pane that shows
     /// it itself) and changes nothing.
     pub fn try_edit(&self, edit: Edit) -> Result<(), String> {
-        let done = self.try_apply(edit).map_err(|e| e.to_string());
+        let lang = self.page.lang.get_untracked();
+        let done = self
+            .try_apply(edit)
+            .map_err(|e| crate::i18n::errors::edit_error(lang, &e));
         if done.is_ok() {
             self.drawing.anchor.set(None);
         }
@@ -366,7 +369,9 @@ impl LadderCtx {
                 true
             }
             Err(e) => {
-                self.panes.message.set(Some(e.to_string()));
+                let lang = self.page.lang.get_untracked();
+                let said = crate::i18n::errors::edit_error(lang, &e);
+                self.panes.message.set(Some(said));
                 false
             }
         }
@@ -490,6 +495,9 @@ impl LadderCtx {
         comments: &BTreeMap<String, String>,
         listing: Option<&Listing>,
     ) {
+        // A cell's tooltip says its problem in the page's language of the
+        // moment (issue #49).
+        let ja = self.page.lang.get_untracked() == crate::i18n::Lang::Ja;
         let data: Vec<RungData> = self.drawing.editor.with_value(|e| {
             e.ladder()
                 .rungs
@@ -499,7 +507,7 @@ impl LadderCtx {
                     let errors: Vec<(Option<Pos>, String)> = problems
                         .iter()
                         .filter(|p| p.rung == i)
-                        .map(|p| (p.pos, p.text.clone()))
+                        .map(|p| (p.pos, if ja { &p.ja } else { &p.text }.clone()))
                         .collect();
                     rung_data(rung, out_col, &errors, comments)
                 })

@@ -15,9 +15,15 @@ pub fn ProgramPane() -> impl IntoView {
     let board = MinasecCtx::get();
     let t = move || ctx.lang.get().texts();
     let parsed = Memo::new(move |_| Parsed::of(&board.text.get()));
-    let errors = Memo::new(move |_| match parsed.get() {
-        Parsed::Good(_) => Vec::new(),
-        Parsed::Bad(errors) => errors,
+    let errors = Memo::new(move |_| {
+        let lang = ctx.lang.get();
+        match parsed.get() {
+            Parsed::Good(_) => Vec::new(),
+            Parsed::Bad(errors) => errors
+                .iter()
+                .map(|(line, e)| (*line, crate::i18n::errors::minasec_asm(lang, e)))
+                .collect(),
+        }
     });
     let up_to_date = move || {
         board

@@ -108,8 +108,9 @@ impl PanelSignals {
 pub enum Parsed {
     /// A program, ready to load.
     Good(Box<Program>),
-    /// Located errors: (line, message).
-    Bad(Vec<(usize, String)>),
+    /// Located errors: (line, why), said in the page's language when
+    /// shown (issue #49).
+    Bad(Vec<(usize, engine::minasec::AsmError)>),
 }
 
 impl Parsed {
@@ -117,12 +118,7 @@ impl Parsed {
     pub fn of(text: &str) -> Parsed {
         match Program::parse(text) {
             Ok(program) => Parsed::Good(Box::new(program)),
-            Err(errors) => Parsed::Bad(
-                errors
-                    .into_iter()
-                    .map(|e| (e.line, e.error.to_string()))
-                    .collect(),
-            ),
+            Err(errors) => Parsed::Bad(errors.into_iter().map(|e| (e.line, e.error)).collect()),
         }
     }
 }

@@ -455,15 +455,18 @@ pub fn SoftPanel(soft: SoftCtx) -> impl IntoView {
 /// The soft PLC's program text (the tools dock's Program tab).
 #[component]
 pub fn SoftProgram(soft: SoftCtx) -> impl IntoView {
-    let errors = Memo::new(
-        move |_| match engine::softplc::Program::load(&soft.text.get()) {
+    let ctx = Ctx::get();
+    // In the page's language (issue #49).
+    let errors = Memo::new(move |_| {
+        let lang = ctx.lang.get();
+        match engine::softplc::Program::load(&soft.text.get()) {
             Ok(_) => Vec::new(),
             Err(e) => e
                 .iter()
-                .map(|e| (e.line, e.error.to_string()))
+                .map(|e| (e.line, crate::i18n::errors::load_error(lang, &e.error)))
                 .collect::<Vec<_>>(),
-        },
-    );
+        }
+    });
     view! {
         <TextProgramPane
                     as_ladder=true

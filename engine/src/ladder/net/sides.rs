@@ -17,6 +17,7 @@ use crate::iec::pins;
 use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::{LadderError, LadderErrorKind, Link, Pos, Rung};
+use crate::ladder::problem::RungProblem;
 
 use super::Net;
 
@@ -177,8 +178,13 @@ pub(super) fn split(
     }
 }
 
-fn at(index: usize, pos: Pos, message: String) -> Vec<LadderError> {
-    vec![LadderError::at(index, pos, message).kind(LadderErrorKind::Wiring)]
+fn at(index: usize, pos: Pos, problem: RungProblem) -> Vec<LadderError> {
+    vec![LadderError::wiring(
+        index,
+        Some(pos),
+        LadderErrorKind::Wiring,
+        problem,
+    )]
 }
 
 /// The box above the input at `pos`, in its column (other inputs of it
@@ -204,15 +210,11 @@ fn side(
     pin: &str,
 ) -> Result<Side, Vec<LadderError>> {
     let Some(box_row) = box_above(rung, pos) else {
-        return Err(at(
-            index,
-            pos,
-            format!("input {pin} stands below its box, in the box's column"),
-        ));
+        return Err(at(index, pos, RungProblem::InputInBoxColumn(pin.into())));
     };
     let box_pos = Pos::new(box_row, pos.col);
     let Some(call) = rung.get(box_pos).and_then(Element::block).cloned() else {
-        return Err(at(index, pos, format!("input {pin} has no box above it")));
+        return Err(at(index, pos, RungProblem::InputWithoutBox(pin.into())));
     };
     let kind = call.kind();
     let takes: Vec<&str> = pins::inputs(&kind)
@@ -222,16 +224,11 @@ fn side(
         .map(|(p, _)| *p)
         .collect();
     let Some(pin) = takes.iter().find(|p| p.eq_ignore_ascii_case(pin)) else {
-        let list = if takes.is_empty() {
-            "none".to_string()
-        } else {
-            takes.join(", ")
-        };
         let why = match call.shape() {
             Some(Shape::FunctionBlock) => {
-                format!("{kind} has no Boolean input {pin} to wire here (it takes {list})")
+                RungProblem::NoBoolInput(kind.to_string(), pin.into(), takes.join(", "))
             }
-            _ => format!("{kind} is a function: its inputs are operands, not networks"),
+            _ => RungProblem::FunctionInput(kind.to_string()),
         };
         return Err(at(index, pos, why));
     };
@@ -239,7 +236,7 @@ fn side(
         return Err(at(
             index,
             pos,
-            format!("{kind}'s {pin} is given twice: as an operand and as this network"),
+            RungProblem::InputTwice(kind.to_string(), pin.to_string()),
         ));
     }
     let rows = side_rows(rung, pos);
@@ -252,9 +249,7 @@ fn side(
         return Err(at(
             index,
             cell,
-            format!(
-                "this link joins {kind}'s {pin} network to the rows above: keep it to its rows"
-            ),
+            RungProblem::InputLinkedAbove(kind.to_string(), pin.to_string()),
         ));
     }
     let variable = carrier(&call.instance, pin);
@@ -320,7 +315,7 @@ fn read_side(
     let back = |p: Pos| Pos::new(p.row + top, p.col);
     match super::analyse(&own, index) {
         Ok(Some(logic)) => Ok(shifted(logic.condition, &back)),
-        Ok(None) => Err(at(index, pos, "this input has no network".into())),
+        Ok(None) => Err(at(index, pos, RungProblem::InputWithoutNetwork)),
         Err(errors) => Err(errors
             .into_iter()
             .map(|mut e| {

@@ -20,7 +20,7 @@ impl Program {
         cr: &mut Option<DataType>,
     ) -> Result<Step, LoadError> {
         if line.condition.is_some() && *cr != Some(DataType::Bool) {
-            return Err(LoadError::Type("CALC needs a BOOL current result".into()));
+            return Err(LoadError::NeedsBool("CALC"));
         }
         let Some(Operand::Name(name)) = &line.operand else {
             return Err(LoadError::Call("CAL needs a block instance".into()));
@@ -28,7 +28,7 @@ impl Program {
         let block = match self.by_name.get(&name.to_ascii_uppercase()) {
             Some(&Named::Block(block)) => block,
             Some(&Named::User(u)) => return self.call_user(line, u),
-            _ => return Err(LoadError::Call(format!("`{name}` is not a block instance"))),
+            _ => return Err(LoadError::NotAnInstance(name.clone())),
         };
         let kind = self.block_names[block].1.clone();
         let mut ins = Vec::new();
@@ -37,14 +37,13 @@ impl Program {
                 self.fix_text(block, &kind, pin, value)?;
                 continue;
             }
-            let (i, want) = find_pin(&inputs(&kind), pin)
-                .ok_or_else(|| LoadError::Call(format!("{kind} has no input `{pin}`")))?;
+            let (i, want) =
+                find_pin(&inputs(&kind), pin).ok_or_else(|| no_pin(&kind, pin, false))?;
             ins.push((i, self.given(&kind, pin, value, want)?));
         }
         let mut outs = Vec::new();
         for (pin, target) in &line.outputs {
-            let (i, t) = find_pin(&outputs(&kind), pin)
-                .ok_or_else(|| LoadError::Call(format!("{kind} has no output `{pin}`")))?;
+            let (i, t) = find_pin(&outputs(&kind), pin).ok_or_else(|| no_pin(&kind, pin, true))?;
             outs.push((i, self.taken(&kind, pin, target, t)?));
         }
         Ok(Step::Cal {
@@ -107,14 +106,14 @@ impl Program {
         let mut inputs = Vec::new();
         for (pin, value) in &line.inputs {
             let slot = find(&self.instances[u].inputs, pin)
-                .ok_or_else(|| LoadError::Call(format!("{type_name} has no input `{pin}`")))?;
+                .ok_or_else(|| no_pin(&type_name, pin, false))?;
             let want = self.values[slot].data_type();
             inputs.push((slot, self.given(&type_name, pin, value, want)?));
         }
         let mut outputs = Vec::new();
         for (pin, target) in &line.outputs {
             let from = find(&self.instances[u].outputs, pin)
-                .ok_or_else(|| LoadError::Call(format!("{type_name} has no output `{pin}`")))?;
+                .ok_or_else(|| no_pin(&type_name, pin, true))?;
             let t = self.values[from].data_type();
             outputs.push((self.taken(&type_name, pin, target, t)?, from));
         }
@@ -212,5 +211,14 @@ impl Program {
             }
         }
         out
+    }
+}
+
+/// A block without parameter `pin` (an output when `output`).
+fn no_pin(block: &str, pin: &str, output: bool) -> LoadError {
+    LoadError::NoPin {
+        block: block.to_string(),
+        pin: pin.to_string(),
+        output,
     }
 }

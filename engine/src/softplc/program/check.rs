@@ -16,10 +16,7 @@ pub(super) fn need_cr(cr: Option<DataType>) -> Result<DataType, LoadError> {
 /// string can, a REAL, TIME or STRING cannot.
 pub(super) fn invertible(op: &str, t: DataType) -> Result<(), LoadError> {
     if t.bits().is_none() && t != DataType::Bool {
-        return Err(LoadError::Type(format!(
-            "{op} needs a BOOL or a bit string, not {}",
-            t.name()
-        )));
+        return Err(LoadError::NotBits(op.to_string(), t));
     }
     Ok(())
 }
@@ -31,7 +28,7 @@ pub(super) fn jump(
     cr: &mut Option<DataType>,
 ) -> Result<Step, LoadError> {
     if line.condition.is_some() && need_cr(*cr)? != DataType::Bool {
-        return Err(LoadError::Type("JMPC needs a BOOL current result".into()));
+        return Err(LoadError::NeedsBool("JMPC"));
     }
     let Some(Operand::Name(label)) = &line.operand else {
         return Err(LoadError::NoLabel(String::new()));
@@ -64,11 +61,7 @@ pub(super) fn describe(o: &Operand) -> String {
 /// it does not apply.
 pub(super) fn binary_type(op: Binary, a: DataType, b: DataType) -> Result<DataType, LoadError> {
     if a != b {
-        return Err(LoadError::Type(format!(
-            "{} and {} do not mix: convert one (*_TO_*)",
-            a.name(),
-            b.name()
-        )));
+        return Err(LoadError::Mix(a, b));
     }
     let fits = match op {
         Binary::Logic(..) => a == DataType::Bool || a.bits().is_some(),
@@ -78,10 +71,7 @@ pub(super) fn binary_type(op: Binary, a: DataType, b: DataType) -> Result<DataTy
         Binary::Cmp(_) => true,
     };
     if !fits {
-        return Err(LoadError::Type(format!(
-            "this operation does not apply to {}",
-            a.name()
-        )));
+        return Err(LoadError::NotFor(a));
     }
     Ok(if matches!(op, Binary::Cmp(_)) {
         DataType::Bool

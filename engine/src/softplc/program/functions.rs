@@ -45,11 +45,7 @@ impl Program {
                 let t = self.join(flow, line, &placed, &mut args)?;
                 for a in &args {
                     if self.type_of(a) != t {
-                        return wrong(format!(
-                            "{} and {} do not mix: convert one (*_TO_*)",
-                            t.name(),
-                            self.type_of(a).name()
-                        ));
+                        return Err(LoadError::Mix(t, self.type_of(a)));
                     }
                 }
             }

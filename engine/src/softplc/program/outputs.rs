@@ -19,7 +19,11 @@ fn no_output(kind: &str, instance: &str, pin: &str, input: bool) -> LoadError {
             "`{instance}.{pin}`: {pin} is an input of {kind}; the soft PLC gives a block's inputs in its CAL (CAL {instance}({pin} := …)) and reads only its outputs"
         ));
     }
-    LoadError::Call(format!("{kind} has no output `{pin}`"))
+    LoadError::NoPin {
+        block: kind.to_string(),
+        pin: pin.to_string(),
+        output: true,
+    }
 }
 
 impl Program {
