@@ -12,7 +12,7 @@ pub use crate::softplc::SoftPlc;
 
 use crate::ladder::decompile::DecompileError;
 use crate::ladder::grid::Ladder;
-pub use crate::ladder::machine_target::LadderTarget;
+pub use crate::ladder::machine_target::{LadderTarget, MachineCompiler};
 use crate::plc::example::{joined, total};
 use crate::plc::{Example, Plc};
 use crate::MachineId;
@@ -50,6 +50,18 @@ impl MachineId {
     /// The machine's ladder target, from its folder: what it can draw,
     /// its device rules, its compiler and decompiler, how it runs.
     pub fn target(self) -> &'static dyn LadderTarget {
+        match self {
+            MachineId::MinasecU => &crate::minasec::target::MinasecTarget,
+            MachineId::Io86a => &crate::io86a::target::Io86aTarget,
+            MachineId::AvrPlc => &crate::avr::target::AvrTarget,
+            MachineId::ArduinoPlc => &crate::arduino::target::ArduinoTarget,
+            MachineId::SoftPlc => &crate::softplc::target::SoftTarget,
+        }
+    }
+
+    /// The machine's compiler and decompiler (the other half of its
+    /// target, apart so that asking a capability links no compiler).
+    pub fn compiler(self) -> &'static dyn MachineCompiler {
         match self {
             MachineId::MinasecU => &crate::minasec::target::MinasecTarget,
             MachineId::Io86a => &crate::io86a::target::Io86aTarget,

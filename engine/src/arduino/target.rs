@@ -8,7 +8,7 @@ use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::ContactKind;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError, MachineCompiler};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::{Capabilities, ElementError, LackReason, Role, ALL_COILS};
 use crate::ladder::variables::Variable;
@@ -85,7 +85,9 @@ impl LadderTarget for ArduinoTarget {
             ..DevicePools::default()
         }
     }
+}
 
+impl MachineCompiler for ArduinoTarget {
     fn compile(
         &self,
         rungs: &[RungLogic],

@@ -7,7 +7,7 @@ use crate::ladder::compile::accumulator::{self, Dialect};
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError, MachineCompiler};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::{Capabilities, ElementError, Role, ALL_COILS, ALL_CONTACTS};
 use crate::ladder::variables::Variable;
@@ -99,6 +99,17 @@ impl LadderTarget for AvrTarget {
         }
     }
 
+    fn scan_in_program(&self) -> bool {
+        true
+    }
+
+    /// It runs from power-up: no RUN switch.
+    fn stoppable(&self) -> bool {
+        false
+    }
+}
+
+impl MachineCompiler for AvrTarget {
     fn compile(
         &self,
         rungs: &[RungLogic],
@@ -118,14 +129,5 @@ impl LadderTarget for AvrTarget {
     /// Its steps are the `.db` lines of the assembler source.
     fn is_step(&self, line: &str) -> bool {
         line.trim().starts_with(".db")
-    }
-
-    fn scan_in_program(&self) -> bool {
-        true
-    }
-
-    /// It runs from power-up: no RUN switch.
-    fn stoppable(&self) -> bool {
-        false
     }
 }

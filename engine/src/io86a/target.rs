@@ -9,7 +9,7 @@ use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::CoilKind;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError, MachineCompiler};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::Drivable;
 use crate::ladder::target::{Capabilities, ElementError, Role, ALL_COILS, ALL_CONTACTS};
@@ -93,7 +93,9 @@ impl LadderTarget for Io86aTarget {
             counters: range("C", 2, 0..8),
         }
     }
+}
 
+impl MachineCompiler for Io86aTarget {
     fn compile(
         &self,
         rungs: &[RungLogic],

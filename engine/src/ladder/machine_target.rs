@@ -92,31 +92,6 @@ pub trait LadderTarget: Sync {
     fn devices_help(&self) -> &'static str {
         self.capabilities().devices
     }
-    /// Compiles checked rung logic (with the ladder's declared
-    /// `variables`) to the machine's own text, with where each rung and
-    /// leaf went.
-    fn compile(
-        &self,
-        rungs: &[RungLogic],
-        variables: &[Variable],
-        options: Options,
-    ) -> Result<Mapped, Vec<LadderError>>;
-    /// A program in the machine's own text (compiled for `options`' scan
-    /// period where that matters) as a ladder.
-    fn decompile_text(&self, text: &str, options: Options) -> Result<Ladder, TextError>;
-    /// The 0-based line of its compiled `text` where steps begin.
-    fn code_start(&self, _text: &str) -> usize {
-        0
-    }
-    /// Whether a line of its compiled text is a step of the program.
-    fn is_step(&self, line: &str) -> bool {
-        let line = line.trim();
-        !line.is_empty() && !line.starts_with(';')
-    }
-    /// How many steps end every compiled program (an END marker).
-    fn end_steps(&self) -> usize {
-        1
-    }
     /// Whether its compiled text depends on the scan period
     /// ([`Options::avr_scan_ms`]): a timer preset counted in scans.
     fn scan_in_program(&self) -> bool {
@@ -155,5 +130,38 @@ pub trait LadderTarget: Sync {
     /// offers a clock step and the view inside its CPU.
     fn steps_clocks(&self) -> bool {
         false
+    }
+}
+
+/// The half of a machine's ladder target that turns a ladder into its
+/// program and back: kept apart from [`LadderTarget`] because a trait
+/// object links every method of every machine, and the files worker and
+/// the page's capability questions need none of the compilers (issue
+/// #48: the worker grew 78 KB of gzip when they were one trait).
+pub trait MachineCompiler: Sync {
+    /// Compiles checked rung logic (with the ladder's declared
+    /// `variables`) to the machine's own text, with where each rung and
+    /// leaf went.
+    fn compile(
+        &self,
+        rungs: &[RungLogic],
+        variables: &[Variable],
+        options: Options,
+    ) -> Result<Mapped, Vec<LadderError>>;
+    /// A program in the machine's own text (compiled for `options`' scan
+    /// period where that matters) as a ladder.
+    fn decompile_text(&self, text: &str, options: Options) -> Result<Ladder, TextError>;
+    /// The 0-based line of its compiled `text` where steps begin.
+    fn code_start(&self, _text: &str) -> usize {
+        0
+    }
+    /// Whether a line of its compiled text is a step of the program.
+    fn is_step(&self, line: &str) -> bool {
+        let line = line.trim();
+        !line.is_empty() && !line.starts_with(';')
+    }
+    /// How many steps end every compiled program (an END marker).
+    fn end_steps(&self) -> usize {
+        1
     }
 }

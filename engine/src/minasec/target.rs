@@ -9,7 +9,7 @@ use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::element::CoilKind;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError};
+use crate::ladder::machine_target::{DevicePools, LadderTarget, LocatedError, MachineCompiler};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::Latch;
 use crate::ladder::target::{
@@ -86,6 +86,12 @@ impl LadderTarget for MinasecTarget {
         }
     }
 
+    fn steps_clocks(&self) -> bool {
+        true
+    }
+}
+
+impl MachineCompiler for MinasecTarget {
     fn compile(
         &self,
         rungs: &[RungLogic],
@@ -103,10 +109,6 @@ impl LadderTarget for MinasecTarget {
     /// Its listing has no END step: the program counter wraps.
     fn end_steps(&self) -> usize {
         0
-    }
-
-    fn steps_clocks(&self) -> bool {
-        true
     }
 }
 

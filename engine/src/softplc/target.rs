@@ -6,7 +6,7 @@ use super::Program;
 use crate::ladder::compile::{Mapped, Options};
 use crate::ladder::decompile::TextError;
 use crate::ladder::grid::{Ladder, LadderError};
-use crate::ladder::machine_target::LadderTarget;
+use crate::ladder::machine_target::{LadderTarget, MachineCompiler};
 use crate::ladder::net::RungLogic;
 use crate::ladder::target::{Capabilities, ElementError, Role, ALL_COILS, ALL_CONTACTS};
 use crate::ladder::variables::Variable;
@@ -66,7 +66,9 @@ impl LadderTarget for SoftTarget {
             .map(|n| format!("_h{n}"))
             .collect()
     }
+}
 
+impl MachineCompiler for SoftTarget {
     /// The IL, then what the soft PLC says of it when it loads it (a type
     /// that does not fit), each problem at its cell.
     fn compile(

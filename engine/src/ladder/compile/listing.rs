@@ -91,7 +91,7 @@ pub fn compile_listing(
 ) -> Result<Listing, Vec<LadderError>> {
     let logic = ladder.logic(machine)?;
     let indices = ladder.logic_indices();
-    let target = machine.target();
+    let target = machine.compiler();
     let mapped = target.compile(&logic, &ladder.variables, options)?;
     let mut sources: Vec<LeafSource> = Vec::new();
     for &(i, pos, line) in &mapped.sources {

@@ -60,7 +60,7 @@ pub fn compile(
 ) -> Result<String, Vec<LadderError>> {
     let logic = ladder.logic(machine)?;
     let mapped = machine
-        .target()
+        .compiler()
         .compile(&logic, &ladder.variables, options)?;
     Ok(mapped.text)
 }
@@ -71,7 +71,7 @@ pub fn compile_logic(
     machine: MachineId,
     options: Options,
 ) -> Result<String, Vec<LadderError>> {
-    let mapped = machine.target().compile(rungs, &[], options)?;
+    let mapped = machine.compiler().compile(rungs, &[], options)?;
     Ok(mapped.text)
 }
 

@@ -120,7 +120,7 @@ pub fn decompile_text(machine: MachineId, text: &str, scan_ms: u32) -> Result<La
     let options = crate::ladder::compile::Options {
         avr_scan_ms: scan_ms,
     };
-    machine.target().decompile_text(text, options)
+    machine.compiler().decompile_text(text, options)
 }
 
 /// The soft PLC's IL (its declarations and lines) as a ladder with its
