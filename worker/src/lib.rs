@@ -256,5 +256,6 @@ pub fn answer(message: &str) -> Option<String> {
 }
 
 mod said_ja;
+mod said_soft_ja;
 #[cfg(test)]
 mod tests;

@@ -306,3 +306,20 @@ fn a_broken_file_is_said_in_japanese_too_at_its_line() {
         "{reply:?}"
     );
 }
+
+#[test]
+fn a_soft_plc_refusal_is_said_in_japanese_too_at_its_line() {
+    // Issue #49: a block the soft PLC does not have (a vendor's) gets its
+    // Japanese with the reply, not only the engine's English.
+    let text = TIMER.replace("typeName=\"TON\"", "typeName=\"VENDOR_FB\"");
+    let reply = import_on(MachineId::SoftPlc, &text);
+    assert!(reply.ladder.is_none(), "{reply:?}");
+    let said = reply.said.first().expect("an error");
+    assert!(said.at.starts_with("t.xml:"), "{said:?}");
+    let ja = said.ja.as_deref().unwrap_or_default();
+    assert!(ja.contains("VENDOR_FB"), "{reply:?}");
+    assert!(
+        ja.contains("ソフトPLCの関数でもブロックでもありません"),
+        "{reply:?}"
+    );
+}
