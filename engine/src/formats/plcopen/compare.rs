@@ -9,6 +9,7 @@ use super::error::ImportError;
 use super::kinds::BlockKind;
 use super::parts::is_variable_name;
 use crate::error::Located;
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::iec::Comparison;
 use crate::ladder::grid::Pos;
 
@@ -109,19 +110,22 @@ impl Body {
                 let input = if operand.0 == "D06" { "X04" } else { "X05" };
                 self.warnings.push(Located::new(
                     n.line,
-                    format!(
-                        "{expr} is {}, {input}'s analog value: set {input}'s analog range ({input}A:n1:n2) so that it counts in the file's units",
-                        operand.0
-                    ),
+                    ImportWarning::AnalogRange {
+                        expr: expr.clone(),
+                        register: operand.0.clone(),
+                        input: input.to_string(),
+                    },
                 ));
             }
             if operand.1 {
                 self.warnings.push(Located::new(
                     n.line,
-                    format!(
-                        "{what}'s {pin} is {}, the value {expr} is declared with (nothing in the program writes it)",
-                        operand.0
-                    ),
+                    ImportWarning::DeclaredValue {
+                        what: what.to_string(),
+                        pin,
+                        register: operand.0.clone(),
+                        expr: expr.clone(),
+                    },
                 ));
             }
             operands.push(operand.0);
