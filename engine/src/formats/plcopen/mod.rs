@@ -24,6 +24,7 @@ mod document;
 pub mod dom;
 pub mod error;
 pub mod export;
+pub mod gate_why;
 mod graph;
 pub mod import;
 mod kinds;
