@@ -267,6 +267,7 @@ pub fn answer(message: &str) -> Option<String> {
     .ok()
 }
 
+mod said_gate_ja;
 mod said_ja;
 mod said_soft_ja;
 mod said_warning_ja;

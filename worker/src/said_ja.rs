@@ -17,7 +17,7 @@ use engine::shown;
 use crate::said_soft_ja::{box_ja, soft_ja, vendor_logic_ja};
 
 /// `e` in Japanese, or `None` for a kind said elsewhere (a machine's
-/// refusal, typed) or not yet typed in the engine (a gate's reason, a
+/// refusal, typed) or not yet typed in the engine (a
 /// soft PLC declaration's or loader's reason, a box's own refusal, a
 /// variable's: English, as the engine says them).
 pub fn import_ja(e: &ImportError) -> Option<String> {
@@ -93,7 +93,8 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
         E::VendorLogic(_) => vendor_logic_ja(),
         E::Soft(e) => return soft_ja(e),
         E::SoftBox(what, problem) => return box_ja(what, problem),
-        E::Element(_) | E::Gate(..) | E::SoftVariable(_) => return None,
+        E::Gate(what, why) => crate::said_gate_ja::gate_ja(what, why),
+        E::Element(_) | E::SoftVariable(_) => return None,
     })
 }
 

@@ -175,6 +175,30 @@ pub(crate) mod tests {
         all.push(ImportError::VendorLogic(
             "it is wired into the network".into(),
         ));
+        all.extend(every_gate());
         all
+    }
+
+    /// One of each reason a gate is refused for.
+    fn every_gate() -> Vec<ImportError> {
+        use engine::formats::plcopen::gate_why::{GateWhy as G, OperandWhy as O};
+        let s = || "X".to_string();
+        let gates = [
+            G::NeedsRelay(s()),
+            G::Negated(s()),
+            G::Edge(s(), "rising"),
+            G::NoInput(s(), s()),
+            G::EnableWired,
+            G::NeedsTwo,
+            G::CounterWired("CD"),
+            G::Inputs(1, "GT".into(), false),
+            G::Inputs(3, "NE".into(), true),
+            G::InputsOrder(s()),
+            G::Operand("IN1", s(), O::NotNumber),
+            G::Operand("IN1", s(), O::Declared("BOOL".into())),
+            G::Operand("IN1", s(), O::NoWord(s())),
+        ];
+        let gate = |why| ImportError::Gate("SR block X".into(), why);
+        gates.into_iter().map(gate).collect()
     }
 }

@@ -6,8 +6,7 @@ use std::fmt;
 
 /// The input pins of a comparison Hashigo reads, in order (IEC extends
 /// GT, GE, EQ, LE and LT to more inputs).
-pub(in crate::formats::plcopen) const COMPARED: [&str; 8] =
-    ["IN1", "IN2", "IN3", "IN4", "IN5", "IN6", "IN7", "IN8"];
+pub const COMPARED: [&str; 8] = ["IN1", "IN2", "IN3", "IN4", "IN5", "IN6", "IN7", "IN8"];
 
 /// The reason of an [`super::ImportError::Gate`].
 #[derive(Clone, Debug, PartialEq, Eq)]
