@@ -10,6 +10,7 @@
 mod cases;
 mod edit;
 mod program;
+mod share;
 #[cfg(test)]
 mod tests;
 
@@ -22,6 +23,14 @@ use engine::softplc::LoadError;
 use super::Lang;
 
 pub(super) use edit::rung_problem_ja;
+
+/// Why a share link does not open.
+pub fn share_error(lang: Lang, e: &engine::formats::share::ShareError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => share::share_ja(e),
+    }
+}
 
 /// An edit's refusal (placing, wiring, pasting, replacing, a variable).
 pub fn edit_error(lang: Lang, e: &EditError) -> String {

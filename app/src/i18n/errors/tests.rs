@@ -461,3 +461,46 @@ fn every_minasec_program_text_error_is_said_in_japanese() {
         "不明な命令 \"FOO\": MINASEC-U の命令は LD LDI AND ANDI OR ORI ST STI です"
     );
 }
+
+#[test]
+fn every_share_link_error_is_said_in_japanese() {
+    use engine::formats::share::ShareError;
+    let mut all = vec![
+        ShareError::Version(s()),
+        ShareError::Base64,
+        ShareError::Inflate,
+        ShareError::TooLong(9),
+        ShareError::RungTooLarge {
+            rung: 1,
+            rows: 2,
+            columns: 3,
+        },
+        ShareError::Data {
+            at: 4,
+            what: "a bad element tag",
+        },
+    ];
+    for what in [
+        "rungs",
+        "links in one rung",
+        "test cases",
+        "expectations in one test case",
+        "plant wiring lines",
+        "plant faults",
+        "plant parameters",
+        "pins of one box",
+        "variables",
+        "settings",
+        "device comments",
+    ] {
+        all.push(ShareError::TooMany {
+            what,
+            count: 9,
+            limit: 1,
+        });
+    }
+    for e in &all {
+        is_japanese(&format!("{e:?}"), &share_error(Lang::Ja, e));
+        assert_eq!(share_error(Lang::En, e), e.to_string());
+    }
+}
