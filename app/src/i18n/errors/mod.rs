@@ -24,6 +24,18 @@ use super::Lang;
 
 pub(super) use edit::rung_problem_ja;
 
+/// Why a break condition was refused.
+pub fn condition_error(lang: Lang, e: &engine::record::ConditionError) -> String {
+    use engine::record::ConditionError as C;
+    match (lang, e) {
+        (Lang::En, _) => e.to_string(),
+        (Lang::Ja, C::Form(text)) => format!(
+            "`{text}`: DEVICE rises|falls|on|off|changes か DEVICE = N (!=, <, <=, >, >= も) と書いてください。例: `Y01 rises`, `C0.v = 5`"
+        ),
+        (Lang::Ja, C::Device(e)) => cases::plc_ja(e),
+    }
+}
+
 /// Why a share link does not open.
 pub fn share_error(lang: Lang, e: &engine::formats::share::ShareError) -> String {
     match lang {

@@ -504,3 +504,20 @@ fn every_share_link_error_is_said_in_japanese() {
         assert_eq!(share_error(Lang::En, e), e.to_string());
     }
 }
+
+#[test]
+fn a_break_condition_refused_is_said_in_japanese() {
+    use engine::record::{Condition, ConditionError};
+    let machine = engine::io86a::plc::Io86aPlc::new();
+    let refused = |text: &str| match Condition::parse(text, &machine) {
+        Err(e) => e,
+        Ok(_) => panic!("{text} is refused"),
+    };
+    let form = refused("Y01 jumps");
+    let device = refused("Q99 rises");
+    assert!(matches!(device, ConditionError::Device(_)), "{device:?}");
+    for e in [&form, &device] {
+        is_japanese(&format!("{e:?}"), &condition_error(Lang::Ja, e));
+        assert_eq!(condition_error(Lang::En, e), e.to_string());
+    }
+}
