@@ -9,6 +9,7 @@
 
 mod cases;
 mod edit;
+mod io86a;
 mod program;
 mod share;
 #[cfg(test)]
@@ -97,6 +98,14 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     match lang {
         Lang::En => e.to_string(),
         Lang::Ja => cases::plc_ja(e),
+    }
+}
+
+/// Why a line of IO86A's program text is refused.
+pub fn io86a_asm(lang: Lang, e: &engine::io86a::AsmError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => io86a::io86a_asm_ja(e),
     }
 }
 

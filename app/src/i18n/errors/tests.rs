@@ -521,3 +521,41 @@ fn a_break_condition_refused_is_said_in_japanese() {
         assert_eq!(condition_error(Lang::En, e), e.to_string());
     }
 }
+
+#[test]
+fn every_io86a_program_text_error_is_said_in_japanese() {
+    use engine::io86a::asm::AsmError as A;
+    use engine::io86a::isa::{parse_bit, Bit};
+    let bit = Bit::X(0);
+    let all = [
+        A::TooManyLines(9),
+        A::StepNumber {
+            found: s(),
+            expected: 2,
+        },
+        A::MissingInstruction,
+        A::UnknownMnemonic(s()),
+        A::MissingOperand("OUT", 1),
+        A::MissingOperand("MOV", 2),
+        A::Unexpected(s()),
+        A::StrayOperand(s()),
+        A::Operand(parse_bit("Q9").expect_err("no Q")),
+        A::OutputToInput("OUT", bit),
+        A::SystemRelay("OUT", bit),
+        A::NotAllowed("PLS", bit),
+        A::BadPreset(s()),
+        A::NotARegister("MOV", s()),
+        A::NoBlockToJoin("ORB"),
+        A::NoRung,
+        A::TooManySteps(600),
+    ];
+    for e in &all {
+        is_japanese(&format!("{e:?}"), &io86a_asm(Lang::Ja, e));
+        assert_eq!(io86a_asm(Lang::En, e), e.to_string());
+    }
+    let errors = engine::io86a::Program::parse("1 LD X00\n2 FOO X01\n").expect_err("FOO");
+    assert!(
+        io86a_asm(Lang::Ja, &errors[0].error).starts_with("不明な命令 \"FOO\""),
+        "{errors:?}"
+    );
+}
