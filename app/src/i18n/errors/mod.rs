@@ -7,6 +7,7 @@
 //! until it has its Japanese. Device names, mnemonics, keywords and what
 //! a file or a user wrote are kept as written.
 
+mod avr;
 mod cases;
 mod edit;
 mod io86a;
@@ -98,6 +99,14 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     match lang {
         Lang::En => e.to_string(),
         Lang::Ja => cases::plc_ja(e),
+    }
+}
+
+/// Why a line of the AVR PLC's program text is refused.
+pub fn avr_program(lang: Lang, e: &engine::avr::ProgramError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => avr::avr_program_ja(e),
     }
 }
 

@@ -559,3 +559,38 @@ fn every_io86a_program_text_error_is_said_in_japanese() {
         "{errors:?}"
     );
 }
+
+#[test]
+fn every_avr_program_text_error_is_said_in_japanese() {
+    use engine::avr::asm::AsmError as A;
+    use engine::avr::ProgramError as P;
+    let asm = [
+        A::TooManyLines(9),
+        A::UnknownDirective(s()),
+        A::EquSyntax,
+        A::Redefined(s(), 1),
+        A::UnknownSymbol(s()),
+        A::Expression(s()),
+        A::DivisionByZero(s()),
+        A::Overflow(s()),
+        A::TooDeep(s()),
+        A::Range(s(), 300),
+        A::ByteOutsideDseg,
+        A::DbInDseg,
+    ];
+    let mut all: Vec<P> = asm.into_iter().map(P::Asm).collect();
+    all.extend([
+        P::UnknownCode(20),
+        P::Register(40),
+        P::Pattern(3),
+        P::TimerAddress(5),
+        P::NoTimerTop,
+        P::NotOperand,
+        P::ShortRecord(3),
+        P::NoEnd,
+    ]);
+    for e in &all {
+        is_japanese(&format!("{e:?}"), &avr_program(Lang::Ja, e));
+        assert_eq!(avr_program(Lang::En, e), e.to_string());
+    }
+}
