@@ -7,6 +7,7 @@
 //! until it has its Japanese. Device names, mnemonics, keywords and what
 //! a file or a user wrote are kept as written.
 
+mod arduino;
 mod avr;
 mod cases;
 mod edit;
@@ -99,6 +100,14 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     match lang {
         Lang::En => e.to_string(),
         Lang::Ja => cases::plc_ja(e),
+    }
+}
+
+/// Why a line of the Arduino PLC's listing is refused.
+pub fn arduino_asm(lang: Lang, e: &engine::arduino::isa::AsmError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => arduino::arduino_asm_ja(e),
     }
 }
 

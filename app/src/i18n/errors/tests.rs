@@ -594,3 +594,30 @@ fn every_avr_program_text_error_is_said_in_japanese() {
         assert_eq!(avr_program(Lang::En, e), e.to_string());
     }
 }
+
+#[test]
+fn every_arduino_program_text_error_is_said_in_japanese() {
+    use engine::arduino::isa::AsmError as A;
+    let all = [
+        A::TooManyLines(9),
+        A::UnknownMnemonic(s()),
+        A::MissingOperand("LD"),
+        A::BadOperand(s()),
+        A::OutToInput(s()),
+        A::BadStep(s()),
+        A::Unexpected(s()),
+        A::MissingMnemonic,
+        A::StepOrder {
+            found: s(),
+            next: 2,
+        },
+        A::TooManySteps {
+            step: 300,
+            capacity: 256,
+        },
+    ];
+    for e in &all {
+        is_japanese(&format!("{e:?}"), &arduino_asm(Lang::Ja, e));
+        assert_eq!(arduino_asm(Lang::En, e), e.to_string());
+    }
+}
