@@ -103,6 +103,19 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     }
 }
 
+/// Why Load as ladder could not read a program text: its lines' errors
+/// in the page's language; a program with no ladder form as the engine
+/// says it (its words only).
+pub fn text_error(lang: Lang, e: &engine::ladder::decompile::TextError) -> String {
+    use engine::ladder::decompile::TextError;
+    match (lang, e) {
+        (Lang::Ja, TextError::Program(problems)) => {
+            cases::plc_ja(&PlcError::Program(problems.clone()))
+        }
+        _ => e.to_string(),
+    }
+}
+
 /// Why a line of the Arduino PLC's listing is refused.
 pub fn arduino_asm(lang: Lang, e: &engine::arduino::isa::AsmError) -> String {
     match lang {

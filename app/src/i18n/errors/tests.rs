@@ -621,3 +621,23 @@ fn every_arduino_program_text_error_is_said_in_japanese() {
         assert_eq!(arduino_asm(Lang::En, e), e.to_string());
     }
 }
+
+#[test]
+fn load_as_ladder_says_each_machines_text_errors_in_japanese() {
+    use engine::ladder::decompile::decompile_text;
+    for (machine, text) in [
+        (MachineId::Io86a, "1 LD X00\n2 FOO X01\n"),
+        (MachineId::MinasecU, "LD X00\nFOO X01\n"),
+        (MachineId::ArduinoPlc, "0 LD X000\n1 FOO\n"),
+        (MachineId::AvrPlc, ".foo\n"),
+    ] {
+        let e = decompile_text(machine, text, 10).expect_err("FOO");
+        let ja = text_error(Lang::Ja, &e);
+        assert!(
+            ja.starts_with("2 行目: ") || ja.starts_with("1 行目: "),
+            "{machine}: {ja}"
+        );
+        is_japanese(&format!("{machine}: {e}"), &ja);
+        assert_eq!(text_error(Lang::En, &e), e.to_string());
+    }
+}
