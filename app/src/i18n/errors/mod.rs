@@ -16,6 +16,8 @@ mod program;
 mod share;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_text;
 
 use engine::cases::{CaseError, Observed};
 use engine::ladder::edit::{ClipError, EditError, ReplaceError};
