@@ -180,3 +180,16 @@ def test_a_minasec_program_text_error_is_japanese(driver, base_url):
     for line in errors.text.splitlines():
         japanese(line)
     assert "不明な命令 \"FOO\"" in errors.text, errors.text
+
+
+def test_an_io86a_program_text_error_is_japanese(driver, base_url):
+    open_fresh(driver, base_url, lang="ja")
+    Select(el(driver, "machine")).select_by_value("io86a")
+    text = el(driver, "io86a-program-text")
+    text.clear()
+    text.send_keys("1 LD X00\n2 FOO Y00\n3 OUT T00\n")
+    errors = wait(driver, lambda: el(driver, "io86a-program-error"))
+    wait(driver, lambda: "FOO" in errors.text and "K10" in errors.text)
+    for line in errors.text.splitlines():
+        japanese(line)
+    assert "不明な命令 \"FOO\"" in errors.text, errors.text

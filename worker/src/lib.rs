@@ -85,6 +85,10 @@ pub struct ImportReply {
     pub rows: Vec<(String, String)>,
     /// What was dropped or skipped, each with `file:line`.
     pub warnings: Vec<String>,
+    /// The same warnings typed, one for each (issue #49): the page says
+    /// them in its own language.
+    #[serde(default)]
+    pub warnings_said: Vec<Said>,
     /// Why the file does not import, each at its line or at its row.
     pub errors: Vec<String>,
     /// The same errors typed, one for each (issue #49): the page says
@@ -206,11 +210,19 @@ fn import(
         .and_then(|d| d.import(Some(machine), Some(&map), pou));
     match imported {
         Ok(imported) => {
-            reply.warnings = imported
-                .warnings
-                .iter()
-                .map(|w| format!("{file}:{}: {}", w.line, page_warning(&w.error)))
-                .collect();
+            for w in &imported.warnings {
+                let at = format!("{file}:{}", w.line);
+                let english = w.error.to_string();
+                reply
+                    .warnings
+                    .push(format!("{at}: {}", page_warning(&english)));
+                let ja = Some(said_warning_ja::warning_ja(&w.error));
+                reply.warnings_said.push(Said {
+                    at,
+                    cause: None,
+                    ja,
+                });
+            }
             reply.ladder = Some(align_outputs(&imported.ladder, COLUMNS - 1));
         }
         Err(errors) => {
@@ -255,6 +267,9 @@ pub fn answer(message: &str) -> Option<String> {
     .ok()
 }
 
+mod said_gate_ja;
 mod said_ja;
+mod said_soft_ja;
+mod said_warning_ja;
 #[cfg(test)]
 mod tests;

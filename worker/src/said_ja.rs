@@ -14,10 +14,12 @@ use engine::ladder::net::NetError;
 use engine::limits::{MAX_CONNECTOR_CHAIN, MAX_GATE_WORK, MAX_RUNGS, MAX_RUNG_CELLS};
 use engine::shown;
 
+use crate::said_soft_ja::{box_ja, soft_ja, vendor_logic_ja};
+
 /// `e` in Japanese, or `None` for a kind said elsewhere (a machine's
-/// refusal, typed) or not yet typed in the engine (a gate's reason, the
-/// soft PLC's project problems, vendor elements: English, as the engine
-/// says them).
+/// refusal, typed) or not yet typed in the engine (a
+/// soft PLC declaration's or loader's reason, a box's own refusal, a
+/// variable's: English, as the engine says them).
 pub fn import_ja(e: &ImportError) -> Option<String> {
     use ImportError as E;
     Some(match e {
@@ -88,12 +90,11 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
         }
         E::NoPath(el) => format!("左の母線から {el} への経路がありません"),
         E::Net(_) => return blocks_ja(e),
-        E::Element(_)
-        | E::Gate(..)
-        | E::VendorLogic(_)
-        | E::Soft(_)
-        | E::SoftBox(..)
-        | E::SoftVariable(_) => return None,
+        E::VendorLogic(_) => vendor_logic_ja(),
+        E::Soft(e) => return soft_ja(e),
+        E::SoftBox(what, problem) => return box_ja(what, problem),
+        E::Gate(what, why) => crate::said_gate_ja::gate_ja(what, why),
+        E::Element(_) | E::SoftVariable(_) => return None,
     })
 }
 
@@ -307,6 +308,7 @@ mod tests {
             E::Net(NetError::NoPath),
         ];
         all.extend(nested());
+        all.extend(crate::said_soft_ja::tests::every_soft());
         for e in &all {
             let ja = import_ja(e).unwrap_or_else(|| panic!("{e:?} has its Japanese"));
             assert!(ja.chars().any(|c| c > '\u{3000}'), "{e:?}: {ja}");

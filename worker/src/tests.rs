@@ -306,3 +306,33 @@ fn a_broken_file_is_said_in_japanese_too_at_its_line() {
         "{reply:?}"
     );
 }
+
+#[test]
+fn a_soft_plc_refusal_is_said_in_japanese_too_at_its_line() {
+    // Issue #49: a block the soft PLC does not have (a vendor's) gets its
+    // Japanese with the reply, not only the engine's English.
+    let text = TIMER.replace("typeName=\"TON\"", "typeName=\"VENDOR_FB\"");
+    let reply = import_on(MachineId::SoftPlc, &text);
+    assert!(reply.ladder.is_none(), "{reply:?}");
+    let said = reply.said.first().expect("an error");
+    assert!(said.at.starts_with("t.xml:"), "{said:?}");
+    let ja = said.ja.as_deref().unwrap_or_default();
+    assert!(ja.contains("VENDOR_FB"), "{reply:?}");
+    assert!(
+        ja.contains("ソフトPLCの関数でもブロックでもありません"),
+        "{reply:?}"
+    );
+}
+
+#[test]
+fn import_warnings_are_said_in_japanese_too_at_their_lines() {
+    // Issue #49: each warning has its Japanese, at the same place.
+    let reply = import_on(MachineId::SoftPlc, TIMER);
+    assert!(!reply.warnings.is_empty(), "{reply:?}");
+    assert_eq!(reply.warnings_said.len(), reply.warnings.len(), "{reply:?}");
+    for (english, said) in reply.warnings.iter().zip(&reply.warnings_said) {
+        assert!(english.starts_with(&format!("{}: ", said.at)), "{said:?}");
+        let ja = said.ja.as_deref().unwrap_or_default();
+        assert!(ja.chars().any(|c| c > '\u{3000}'), "{english}: {ja:?}");
+    }
+}

@@ -150,7 +150,10 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
         let text = s.break_text.get_untracked();
         let result = travel(ctx, |tr| tr.set_break(&text));
         let error = match result {
-            Some(Err(e)) => Some(e.to_string()),
+            Some(Err(e)) => Some(crate::i18n::errors::condition_error(
+                ctx.page.lang.get_untracked(),
+                &e,
+            )),
             _ => None,
         };
         s.break_error.set(error);

@@ -243,8 +243,10 @@ fn ProgramPane(ard: ArduinoCtx) -> impl IntoView {
         Program::parse(&ard.text.get(), Chip::Atmega328.capacity())
             .map(|p| engine::arduino::warnings(p.words()).contains(&Warning::RunsIntoErasedEeprom))
             .map_err(|e| {
+                // In the page's language, again when it changes (issue #49).
+                let lang = ctx.lang.get();
                 e.iter()
-                    .map(|e| (e.line, e.error.to_string()))
+                    .map(|e| (e.line, crate::i18n::errors::arduino_asm(lang, &e.error)))
                     .collect::<Vec<_>>()
             })
     });

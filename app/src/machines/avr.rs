@@ -192,8 +192,10 @@ pub fn AvrProgram(avr: AvrCtx) -> impl IntoView {
         Program::parse(&avr.text.get(), scan())
             .map(|p| engine::avr::warnings(&p).contains(&Warning::TofOnAtPowerUp))
             .map_err(|e| {
+                // In the page's language, again when it changes (issue #49).
+                let lang = ctx.lang.get();
                 e.iter()
-                    .map(|e| (e.line, e.error.to_string()))
+                    .map(|e| (e.line, crate::i18n::errors::avr_program(lang, &e.error)))
                     .collect::<Vec<_>>()
             })
     });

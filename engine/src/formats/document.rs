@@ -184,7 +184,11 @@ impl Document {
                     .import(Some(machine), map, pou)
                     .map_err(|e| wrap(e, FileError::PlcOpen))?;
                 Ok(Opened {
-                    warnings: imported.warnings,
+                    warnings: imported
+                        .warnings
+                        .into_iter()
+                        .map(|w| Located::new(w.line, w.error.to_string()))
+                        .collect(),
                     unused_map_entries: imported.unused_map_entries,
                     ..opened(Project::new(machine, imported.ladder), Vec::new())
                 })

@@ -43,8 +43,8 @@ enum Cmp {
 pub enum ConditionError {
     /// Not `DEVICE rises|falls|on|off|changes` or `DEVICE OP NUMBER`.
     Form(String),
-    /// The machine has no such device.
-    Device(String),
+    /// The machine has no such device (its refusal).
+    Device(crate::plc::PlcError),
 }
 
 impl fmt::Display for ConditionError {
@@ -55,7 +55,7 @@ impl fmt::Display for ConditionError {
                 "`{text}`: write DEVICE rises|falls|on|off|changes, or DEVICE = N \
                  (also !=, <, <=, >, >=), e.g. `Y01 rises`, `C0.v = 5`"
             ),
-            ConditionError::Device(message) => f.write_str(message),
+            ConditionError::Device(e) => e.fmt(f),
         }
     }
 }
@@ -95,9 +95,7 @@ impl Condition {
             }
             _ => return Err(form()),
         };
-        let device = machine
-            .device(name)
-            .map_err(|e| ConditionError::Device(e.to_string()))?;
+        let device = machine.device(name).map_err(ConditionError::Device)?;
         Ok(Condition {
             name: name.to_string(),
             text: text.trim().to_string(),

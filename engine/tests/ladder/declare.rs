@@ -218,7 +218,7 @@ fn the_program_a_task_runs_imports_with_its_timer_on_each_machine() {
     let said: Vec<(usize, String)> = io
         .warnings
         .iter()
-        .map(|w| (w.line, w.error.clone()))
+        .map(|w| (w.line, w.error.to_string()))
         .collect();
     let expected = [
         (

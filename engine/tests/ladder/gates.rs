@@ -206,7 +206,7 @@ fn an_input_that_also_feeds_more_is_carried_by_a_spare_relay() {
         imported
             .warnings
             .iter()
-            .any(|w| w.error.contains("M55 holds OR block's input")),
+            .any(|w| w.error.to_string().contains("M55 holds OR block's input")),
         "{:?}",
         imported.warnings
     );
@@ -242,7 +242,7 @@ fn a_box_io86a_lacks_in_line_is_its_input_contact_turned_or_a_relay() {
         let imported = Document::read(xml)
             .and_then(|document| document.import(Some(MachineId::Io86a), Some(&map), None))
             .expect("imports");
-        let said = imported.warnings.iter().map(|w| w.error.clone());
+        let said = imported.warnings.iter().map(|w| w.error.to_string());
         said.filter(|w| w.contains(" holds ")).collect::<Vec<_>>()
     };
     // NOT a, R_TRIG a: a's NC and rising contacts, no relay.

@@ -64,7 +64,12 @@ pub fn attempt(
         };
         pending.pous = reply.pous;
         pending.rows = reply.rows;
-        pending.warnings = reply.warnings;
+        // Said in the page's language of the moment they came (issue #49).
+        let lang = ctx.page.lang.get_untracked();
+        let said = |(i, w): (usize, &String)| {
+            crate::i18n::engine::import_error(lang, reply.warnings_said.get(i), w)
+        };
+        pending.warnings = reply.warnings.iter().enumerate().map(said).collect();
         pending.errors = reply.errors;
         pending.runs_on = reply.runs_on;
         pending.said = reply.said;

@@ -91,9 +91,10 @@ pub fn open_fragment(page: Ctx, ladders: Ladders, fragment: &str) {
             }
         }
         Err(e) => {
-            let texts = page.lang.get_untracked().texts();
+            let lang = page.lang.get_untracked();
+            let why = crate::i18n::errors::share_error(lang, &e);
             page.notice
-                .set(Some(format!("{} {e}", texts.shared_broken)));
+                .set(Some(format!("{} {why}", lang.texts().shared_broken)));
         }
     }
 }

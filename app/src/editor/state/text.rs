@@ -39,7 +39,7 @@ impl LadderCtx {
     pub fn ladder_of_text(&self, text: &str) -> Result<Ladder, String> {
         let scan = self.text.options.get_untracked().avr_scan_ms;
         let ladder = engine::ladder::decompile::decompile_text(self.machine, text, scan)
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| crate::i18n::errors::text_error(self.page.lang.get_untracked(), &e))?;
         Ok(align_outputs(&ladder, COLUMNS - 1))
     }
 

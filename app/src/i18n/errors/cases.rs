@@ -159,6 +159,9 @@ fn own_ja(e: &Own) -> String {
     if let Some(e) = e.get::<engine::softplc::LoadError>() {
         return load_ja(e);
     }
+    if let Some(said) = asm_ja(e) {
+        return said;
+    }
     let element = if let Some(e) = e.get::<minasec::isa::OperandError>() {
         engine::ladder::target::ElementError::Minasec(e.clone())
     } else if let Some(e) = e.get::<io86a::isa::OperandError>() {
@@ -167,6 +170,21 @@ fn own_ja(e: &Own) -> String {
         return e.to_string();
     };
     super::super::engine::element_ja(&element)
+}
+
+/// A machine's program text error (its assembler's), in Japanese.
+fn asm_ja(e: &Own) -> Option<String> {
+    if let Some(e) = e.get::<minasec::AsmError>() {
+        return Some(super::program::minasec_asm_ja(e));
+    }
+    if let Some(e) = e.get::<io86a::asm::AsmError>() {
+        return Some(super::io86a::io86a_asm_ja(e));
+    }
+    if let Some(e) = e.get::<engine::arduino::isa::AsmError>() {
+        return Some(super::arduino::arduino_asm_ja(e));
+    }
+    let e = e.get::<engine::avr::ProgramError>()?;
+    Some(super::avr::avr_program_ja(e))
 }
 
 fn soft_device_ja(e: &SoftDeviceError) -> String {

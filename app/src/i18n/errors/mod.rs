@@ -7,11 +7,17 @@
 //! until it has its Japanese. Device names, mnemonics, keywords and what
 //! a file or a user wrote are kept as written.
 
+mod arduino;
+mod avr;
 mod cases;
 mod edit;
+mod io86a;
 mod program;
+mod share;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_text;
 
 use engine::cases::{CaseError, Observed};
 use engine::ladder::edit::{ClipError, EditError, ReplaceError};
@@ -22,6 +28,26 @@ use engine::softplc::LoadError;
 use super::Lang;
 
 pub(super) use edit::rung_problem_ja;
+
+/// Why a break condition was refused.
+pub fn condition_error(lang: Lang, e: &engine::record::ConditionError) -> String {
+    use engine::record::ConditionError as C;
+    match (lang, e) {
+        (Lang::En, _) => e.to_string(),
+        (Lang::Ja, C::Form(text)) => format!(
+            "`{text}`: DEVICE rises|falls|on|off|changes か DEVICE = N (!=, <, <=, >, >= も) と書いてください。例: `Y01 rises`, `C0.v = 5`"
+        ),
+        (Lang::Ja, C::Device(e)) => cases::plc_ja(e),
+    }
+}
+
+/// Why a share link does not open.
+pub fn share_error(lang: Lang, e: &engine::formats::share::ShareError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => share::share_ja(e),
+    }
+}
 
 /// An edit's refusal (placing, wiring, pasting, replacing, a variable).
 pub fn edit_error(lang: Lang, e: &EditError) -> String {
@@ -76,6 +102,43 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     match lang {
         Lang::En => e.to_string(),
         Lang::Ja => cases::plc_ja(e),
+    }
+}
+
+/// Why Load as ladder could not read a program text: its lines' errors
+/// in the page's language; a program with no ladder form as the engine
+/// says it (its words only).
+pub fn text_error(lang: Lang, e: &engine::ladder::decompile::TextError) -> String {
+    use engine::ladder::decompile::TextError;
+    match (lang, e) {
+        (Lang::Ja, TextError::Program(problems)) => {
+            cases::plc_ja(&PlcError::Program(problems.clone()))
+        }
+        _ => e.to_string(),
+    }
+}
+
+/// Why a line of the Arduino PLC's listing is refused.
+pub fn arduino_asm(lang: Lang, e: &engine::arduino::isa::AsmError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => arduino::arduino_asm_ja(e),
+    }
+}
+
+/// Why a line of the AVR PLC's program text is refused.
+pub fn avr_program(lang: Lang, e: &engine::avr::ProgramError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => avr::avr_program_ja(e),
+    }
+}
+
+/// Why a line of IO86A's program text is refused.
+pub fn io86a_asm(lang: Lang, e: &engine::io86a::AsmError) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => io86a::io86a_asm_ja(e),
     }
 }
 

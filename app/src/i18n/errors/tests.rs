@@ -17,12 +17,12 @@ use engine::softplc::pou::PouError;
 use engine::time::TimeError;
 use engine::{Located, MachineId, SimTime};
 
-fn s() -> String {
+pub(super) fn s() -> String {
     "X".to_string()
 }
 
 /// Japanese, and no run of English words (`what` names the kind).
-fn is_japanese(what: &str, ja: &str) {
+pub(super) fn is_japanese(what: &str, ja: &str) {
     assert!(ja.chars().any(|c| c > '\u{3000}'), "{what}: {ja}");
     assert_eq!(english_run(ja), None, "{what}: {ja}");
 }

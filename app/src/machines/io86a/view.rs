@@ -347,12 +347,14 @@ fn ProgramPane(device: usize) -> impl IntoView {
     let ctx = Ctx::get();
     let t = move || ctx.lang.get().texts();
     let text = io.texts[device];
+    // Said in the page's language, and again when it changes (issue #49).
     let errors = Memo::new(move |_| match Program::parse(&text.get()) {
         Ok(_) => Vec::new(),
-        Err(errors) => errors
-            .iter()
-            .map(|e| (e.line, e.error.to_string()))
-            .collect(),
+        Err(errors) => {
+            let lang = ctx.lang.get();
+            let said = |e: &engine::Located<_>| crate::i18n::errors::io86a_asm(lang, &e.error);
+            errors.iter().map(|e| (e.line, said(e))).collect()
+        }
     });
     view! {
         <TextProgramPane

@@ -9,12 +9,10 @@ use super::error::ImportError;
 use super::kinds::BlockKind;
 use super::parts::is_variable_name;
 use crate::error::Located;
+use crate::formats::plcopen::gate_why::{GateWhy, OperandWhy, COMPARED};
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::iec::Comparison;
 use crate::ladder::grid::Pos;
-
-/// The input pins of a comparison Hashigo reads, in order (IEC extends
-/// GT, GE, EQ, LE and LT to more inputs).
-const COMPARED: [&str; 8] = ["IN1", "IN2", "IN3", "IN4", "IN5", "IN6", "IN7", "IN8"];
 
 /// The blocks Hashigo has a ladder form for, and the comparisons
 /// ([`compare_flag`]): checked before anything else about a block, so
@@ -100,28 +98,28 @@ impl Body {
         for pin in COMPARED.into_iter().take(count) {
             let expr = self.pin_literal(n, pin, what)?;
             let operand = self.word_operand(&expr, names).map_err(|why| {
-                ImportError::Gate(
-                    what.to_string(),
-                    format!("{pin} {}: {why}", crate::shown(&expr)),
-                )
+                ImportError::Gate(what.to_string(), GateWhy::Operand(pin, expr.clone(), why))
             })?;
             if matches!(operand.0.as_str(), "D06" | "D07") && expr != operand.0 {
                 let input = if operand.0 == "D06" { "X04" } else { "X05" };
                 self.warnings.push(Located::new(
                     n.line,
-                    format!(
-                        "{expr} is {}, {input}'s analog value: set {input}'s analog range ({input}A:n1:n2) so that it counts in the file's units",
-                        operand.0
-                    ),
+                    ImportWarning::AnalogRange {
+                        expr: expr.clone(),
+                        register: operand.0.clone(),
+                        input: input.to_string(),
+                    },
                 ));
             }
             if operand.1 {
                 self.warnings.push(Located::new(
                     n.line,
-                    format!(
-                        "{what}'s {pin} is {}, the value {expr} is declared with (nothing in the program writes it)",
-                        operand.0
-                    ),
+                    ImportWarning::DeclaredValue {
+                        what: what.to_string(),
+                        pin,
+                        register: operand.0.clone(),
+                        expr: expr.clone(),
+                    },
                 ));
             }
             operands.push(operand.0);
@@ -132,7 +130,7 @@ impl Body {
     /// A comparison's operand as IO86A names it, and whether it is a
     /// variable's declared value: a whole number `K…`; a variable mapped
     /// or located to a word (`D06`); else a variable's initial value.
-    fn word_operand(&self, expr: &str, names: &Names) -> Result<(String, bool), String> {
+    fn word_operand(&self, expr: &str, names: &Names) -> Result<(String, bool), OperandWhy> {
         let constant = |text: &str| -> Option<String> {
             // `INT#5`, `5`
             let digits = text.rsplit('#').next().unwrap_or(text).trim();
@@ -146,13 +144,11 @@ impl Body {
             return Ok((k, false));
         }
         if !is_variable_name(expr) {
-            return Err("is not a whole number 0..32767 or a variable".into());
+            return Err(OperandWhy::NotNumber);
         }
         if let Some(ty) = names.declared_type(expr).filter(|t| *t == "BOOL") {
             // IEC compares values of one type; CMP compares words.
-            return Err(format!(
-                "is declared {ty}: a comparison takes numbers (IEC compares values of one type)"
-            ));
+            return Err(OperandWhy::Declared(ty.to_string()));
         }
         if let Ok(device) = names.device(expr) {
             if device.starts_with(['D', 'T', 'C']) && !device.contains('+') {
@@ -162,10 +158,7 @@ impl Body {
         if let Some(k) = names.initial(expr).and_then(constant) {
             return Ok((k, true));
         }
-        Err(format!(
-            "is no word: map it to a data register (--map {},D00)",
-            expr.trim()
-        ))
+        Err(OperandWhy::NoWord(expr.to_string()))
     }
 }
 
@@ -183,21 +176,16 @@ fn compare_pins(n: &Node, ty: BlockKind, what: &str) -> Result<usize, ImportErro
         })
         .unwrap_or_default();
     let ne = ty == BlockKind::Compare(Comparison::Ne);
-    let takes = if ne { "two" } else { "two or more" };
     if pins.len() < 2 || (ne && pins.len() != 2) {
         return Err(ImportError::Gate(
             what.to_string(),
-            format!("it has {} inputs: {ty} compares {takes}", pins.len()),
+            GateWhy::Inputs(pins.len(), ty.to_string(), ne),
         ));
     }
     if pins.len() > COMPARED.len() || pins.iter().zip(COMPARED).any(|(p, c)| *p != c) {
         return Err(ImportError::Gate(
             what.to_string(),
-            format!(
-                "its inputs are {}: Hashigo reads IN1, IN2, … up to IN{}, in order",
-                pins.join(", "),
-                COMPARED.len()
-            ),
+            GateWhy::InputsOrder(pins.join(", ")),
         ));
     }
     Ok(pins.len())

@@ -135,7 +135,7 @@ pub enum ImportError {
     /// A declared variable with no device (the declarations' words).
     Variable(super::declare::NameError),
     /// A boolean block that cannot be lowered (the block, why).
-    Gate(String, String),
+    Gate(String, super::gate_why::GateWhy),
     /// A block that could not be lowered (`AND block`, why).
     Lower(String, LowerError),
     /// `--pou` names no POU of the file (the name, the file's POUs).

@@ -12,6 +12,7 @@ use super::graph::Graph;
 use super::lower::body::Body;
 use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Ladder;
 use crate::ladder::net::{attach_sides, try_layout, RungLogic};
@@ -28,7 +29,7 @@ pub struct Imported {
     /// Map entries the file does not use: (name, line of the map).
     pub unused_map_entries: Vec<(String, usize)>,
     /// What was dropped or skipped, at its line of the file.
-    pub warnings: Vec<Located<String>>,
+    pub warnings: Vec<Located<ImportWarning>>,
 }
 
 /// The project `root` (read by [`super::Document`]) as a ladder for
@@ -194,7 +195,7 @@ fn name_devices(
     names: &Names,
     helpers: Vec<super::lower::body::Helper>,
     machine: Option<MachineId>,
-    warnings: &mut Vec<Located<String>>,
+    warnings: &mut Vec<Located<ImportWarning>>,
 ) {
     let used: std::collections::BTreeSet<String> = ladder
         .rungs
@@ -209,7 +210,7 @@ fn name_devices(
     for super::lower::body::Helper { relay, what, line } in helpers {
         warnings.push(Located::new(
             line,
-            format!("{relay} holds {what} (a relay the file does not use)"),
+            ImportWarning::Helper(relay.clone(), what.clone()),
         ));
         ladder.device_comments.entry(relay).or_insert(what);
     }
@@ -218,12 +219,15 @@ fn name_devices(
     let bits_only = !machine.is_some_and(|m| m.target().capabilities().word_boxes);
     for (name, device, value, line) in names.starting_on().into_iter().filter(|_| bits_only) {
         if used.contains(&device) {
-            let machine = machine.map_or("the machine", MachineId::name);
+            let machine = machine.map_or("the machine", MachineId::name).to_string();
             warnings.push(Located::new(
                 line,
-                format!(
-                    "{name} starts at {value} in the file, but {machine} starts {device} off at power-up"
-                ),
+                ImportWarning::StartsOff {
+                    name,
+                    value,
+                    machine,
+                    device,
+                },
             ));
         }
     }
@@ -303,7 +307,7 @@ pub(super) fn choose_pous<'a>(
     root: &Node,
     pous: &[&'a Node],
     only: Option<&str>,
-    warnings: &mut Vec<Located<String>>,
+    warnings: &mut Vec<Located<ImportWarning>>,
 ) -> Result<Vec<&'a Node>, Errors> {
     let name = |p: &Node| p.attr("name").unwrap_or_default().to_ascii_lowercase();
     if let Some(only) = only {
@@ -337,10 +341,9 @@ pub(super) fn choose_pous<'a>(
             let kind = p.attr("pouType").unwrap_or("POU");
             warnings.push(Located::new(
                 p.line,
-                format!(
-                    "{kind} {} skipped: no task runs it (--pou {} imports it alone)",
-                    p.attr("name").unwrap_or_default(),
-                    p.attr("name").unwrap_or_default()
+                ImportWarning::NoTask(
+                    kind.to_string(),
+                    p.attr("name").unwrap_or_default().to_string(),
                 ),
             ));
         }

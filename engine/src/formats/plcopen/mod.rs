@@ -24,6 +24,7 @@ mod document;
 pub mod dom;
 pub mod error;
 pub mod export;
+pub mod gate_why;
 mod graph;
 pub mod import;
 mod kinds;
@@ -34,6 +35,7 @@ mod parts;
 mod rungs;
 pub mod soft;
 pub(crate) mod vendor;
+pub mod warning;
 
 // The body's points under the old path, for the machine rules read
 // beside the reader (`compare.rs`), which another change is moving.
@@ -44,6 +46,7 @@ pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
 pub use import::{drawn_body, pou_named, Imported};
 use lower::body;
+pub use warning::ImportWarning;
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";

@@ -9,6 +9,7 @@ use crate::formats::plcopen::compare::compare_flag;
 use crate::formats::plcopen::declare::Names;
 use crate::formats::plcopen::dom::Node;
 use crate::formats::plcopen::error::ImportError;
+use crate::formats::plcopen::gate_why::GateWhy;
 use crate::formats::plcopen::kinds::BlockKind;
 use crate::formats::plcopen::parts::{coil, edge, negated, timer_coil};
 use crate::iec::literal::parse_time_literal;
@@ -27,7 +28,7 @@ fn gate_kind(ty: BlockKind, relay: &str, written: &str) -> Result<Option<GateKin
             if relay == written {
                 return Err(ImportError::Gate(
                     format!("{ty} block {written}"),
-                    format!("its state needs a relay: map it (--map {written},M10)"),
+                    GateWhy::NeedsRelay(written.to_string()),
                 ));
             }
             GateKind::Flip {
@@ -96,15 +97,12 @@ pub(in crate::formats::plcopen) fn plain_pins(n: &Node, ty: BlockKind) -> Result
         let counts_rises = matches!(name, "CU" | "CD");
         let edge = edge(pin)?.filter(|e| !(counts_rises && *e == "rising"));
         let negated = negated(pin)?;
-        let mark = match (negated, edge) {
-            (true, _) => "negated: put a NOT block on it instead".to_string(),
-            (false, Some(e)) => format!("marked {e}: put an R_TRIG or F_TRIG block on it instead"),
+        let why = match (negated, edge) {
+            (true, _) => GateWhy::Negated(name.to_string()),
+            (false, Some(e)) => GateWhy::Edge(name.to_string(), e),
             (false, None) => continue,
         };
-        return Err(ImportError::Gate(
-            format!("{ty} block"),
-            format!("its pin {name} is {mark}"),
-        ));
+        return Err(ImportError::Gate(format!("{ty} block"), why));
     }
     Ok(())
 }
@@ -131,10 +129,9 @@ fn known_inputs(n: &Node, ty: BlockKind) -> Result<(), ImportError> {
             let instance = n.attr("instanceName").unwrap_or_default();
             return Err(ImportError::Gate(
                 format!("{ty} block {instance}").trim_end().to_string(),
-                format!(
-                    "it has no input `{}` (its inputs: {})",
-                    crate::error::shown(name).trim_matches('"'),
-                    list.join(", ")
+                GateWhy::NoInput(
+                    crate::error::shown(name).trim_matches('"').to_string(),
+                    list.join(", "),
                 ),
             ));
         }
@@ -167,7 +164,7 @@ impl Body {
         }
         Err(ImportError::Gate(
             format!("{ty} block {instance}").trim().to_string(),
-            "its EN is wired: Hashigo's blocks always run; connect EN to the left rail or leave it open".into(),
+            GateWhy::EnableWired,
         ))
     }
 
@@ -231,7 +228,7 @@ impl Body {
             inputs.push(p);
         }
         if inputs.len() < 2 {
-            return Err(ImportError::Gate(what, "it needs two inputs".into()));
+            return Err(ImportError::Gate(what, GateWhy::NeedsTwo));
         }
         let out_pin = if matches!(kind, GateKind::Flip { .. }) {
             "Q1"
@@ -446,10 +443,7 @@ impl Body {
         } else {
             for pin in ["CD", "LD"] {
                 if self.power_pin(n, pin, &what)?.is_some() {
-                    return Err(ImportError::Gate(
-                        what,
-                        format!("its {pin} is wired: the machine's counters count up only and cannot be loaded; Hashigo takes a CTUD whose CD and LD are unused"),
-                    ));
+                    return Err(ImportError::Gate(what, GateWhy::CounterWired(pin)));
                 }
             }
             (

@@ -10,6 +10,7 @@ use std::collections::{HashMap, HashSet};
 use crate::error::Located;
 use crate::formats::plcopen::dom::Node;
 use crate::formats::plcopen::error::Errors;
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
@@ -83,7 +84,7 @@ pub(in crate::formats::plcopen) struct Body {
     pub(in crate::formats::plcopen) chained: HashSet<(String, String)>,
     pub(in crate::formats::plcopen) temps: Vec<Temp>,
     /// What is worth saying but does not stop the import.
-    pub(in crate::formats::plcopen) warnings: Vec<Located<String>>,
+    pub(in crate::formats::plcopen) warnings: Vec<Located<ImportWarning>>,
     pub(in crate::formats::plcopen) errors: Errors,
 }
 

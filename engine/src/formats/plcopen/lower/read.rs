@@ -15,6 +15,7 @@ use crate::formats::plcopen::graph::{Element as GraphElement, Graph, Item, Kind,
 use crate::formats::plcopen::kinds::BlockKind;
 use crate::formats::plcopen::parts::*;
 use crate::formats::plcopen::vendor::Vendor;
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
@@ -417,10 +418,7 @@ impl Body {
         if block && matches!(pin.as_str(), "ET" | "CV") {
             self.warnings.push(Located::new(
                 n.line,
-                format!(
-                    "the block's {pin} feeds only the variable {}: dropped (Hashigo's ladders carry no word outputs)",
-                    crate::shown(&expr)
-                ),
+                ImportWarning::WordOutputDropped(pin, expr),
             ));
             return Ok(());
         }
@@ -461,7 +459,7 @@ impl Body {
             Vendor::Cosmetic => {}
             Vendor::Unknown(what) => self.warnings.push(Located::new(
                 n.line,
-                format!("{what} skipped: a vendor's own element"),
+                ImportWarning::VendorSkipped(what.clone()),
             )),
             Vendor::Logic(why) => self
                 .errors

@@ -13,6 +13,7 @@ use super::lower::body::{Body, ElementEdge, RAIL};
 use super::main_line::{off_main_line, Link};
 use super::parts::*;
 use crate::error::Located;
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::ladder::element::{CoilKind, ContactKind, Element, TimerKind};
 use crate::ladder::grid::Pos;
 use crate::ladder::net::{reduce_all, Edge, Net, NetError, RungLogic};
@@ -35,7 +36,7 @@ impl Body {
     pub(super) fn rungs(
         &mut self,
         machine: Option<MachineId>,
-        warnings: &mut Vec<Located<String>>,
+        warnings: &mut Vec<Located<ImportWarning>>,
     ) -> Result<Vec<(RungLogic, usize)>, Errors> {
         warnings.append(&mut self.warnings);
         self.machine = machine;
@@ -455,7 +456,7 @@ fn unused(
     edges: &[Edge],
     rungs: &[(Pos, RungLogic, usize)],
     lines: &HashMap<Pos, usize>,
-) -> Vec<Located<String>> {
+) -> Vec<Located<ImportWarning>> {
     let used: HashSet<Pos> = rungs
         .iter()
         .flat_map(|(_, r, _)| r.condition.leaves().into_iter().map(|(_, p)| p))
@@ -465,7 +466,7 @@ fn unused(
         .filter_map(|e| match &e.net {
             Net::Leaf(leaf, p) if !used.contains(p) => Some(Located::new(
                 lines.get(p).copied().unwrap_or(1),
-                format!("{leaf} leads to no coil: dropped"),
+                ImportWarning::LeadsNowhere(leaf.to_string()),
             )),
             _ => None,
         })

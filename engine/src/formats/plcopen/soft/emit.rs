@@ -15,6 +15,7 @@ use super::infer::output_type;
 use super::SoftError;
 use crate::error::Located;
 use crate::formats::plcopen::graph::{order, Element, Graph, Kind, Source};
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::iec::data::DataType;
 use crate::iec::functions::{Function, Operand};
 use crate::iec::is_identifier;
@@ -30,7 +31,7 @@ pub(super) struct Output {
     /// IL lines with the file line each comes from.
     pub lines: Vec<(String, usize)>,
     /// What was taken on trust, each at its line.
-    pub warnings: Vec<Located<String>>,
+    pub warnings: Vec<Located<ImportWarning>>,
     /// Each generated variable's type.
     pub(super) types: HashMap<String, DataType>,
 }
@@ -208,10 +209,9 @@ impl Emitter<'_> {
             Err(SoftError::Undeclared(name)) => {
                 self.out.vars.push((format!("{name} : BOOL;"), at));
                 self.decl.declare(&name, Held::Value(DataType::Bool));
-                self.out.warnings.push(Located::new(
-                    at,
-                    format!("{name} is not declared: taken as a BOOL variable"),
-                ));
+                self.out
+                    .warnings
+                    .push(Located::new(at, ImportWarning::TakenAsBool(name.clone())));
                 Operand::temp(name, DataType::Bool)
             }
             other => other?,

@@ -21,6 +21,7 @@ use super::graph::Graph;
 use super::import::{choose_pous, drawn_body, language};
 use super::ImportError;
 use crate::error::Located;
+use crate::formats::plcopen::warning::ImportWarning;
 use crate::softplc::Program;
 pub use error::SoftError;
 use std::collections::HashMap;
@@ -31,7 +32,7 @@ pub struct SoftProgram {
     /// The Instruction List, with its declarations.
     pub text: String,
     /// What was left out, each at its line (POUs no task runs).
-    pub warnings: Vec<Located<String>>,
+    pub warnings: Vec<Located<ImportWarning>>,
 }
 
 type Errors = Vec<Located<ImportError>>;
@@ -198,7 +199,7 @@ fn emit_body(mut em: emit::Emitter, pou: &Node) -> Vec<Located<SoftError>> {
 /// jumps, actions, vendor logic; every element with a `localId` of its
 /// own): the warnings for the vendor elements it skips, or every
 /// refusal at its line.
-fn runnable(g: &Graph) -> Result<Vec<Located<String>>, Vec<Located<SoftError>>> {
+fn runnable(g: &Graph) -> Result<Vec<Located<ImportWarning>>, Vec<Located<SoftError>>> {
     use super::graph::{Kind, Read};
     use super::vendor::Vendor;
     let mut warnings = Vec::new();
@@ -209,7 +210,7 @@ fn runnable(g: &Graph) -> Result<Vec<Located<String>>, Vec<Located<SoftError>>> 
         let error = match &item.read {
             Read::Comment | Read::Vendor(Vendor::Title(_) | Vendor::Cosmetic) => None,
             Read::Vendor(Vendor::Unknown(what)) => {
-                let warning = format!("{what} skipped: a vendor's own element");
+                let warning = ImportWarning::VendorSkipped(what.clone());
                 warnings.push(Located::new(n.line, warning));
                 None
             }
