@@ -959,3 +959,30 @@ def test_the_key_map_takes_the_focus_and_closes_on_escape(driver, base_url):
     keys(driver, Keys.ESCAPE)
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="keymap"]'))
     assert driver.switch_to.active_element.get_attribute("data-testid") == "ladder"
+
+
+def test_a_projects_plant_is_kept_when_the_page_saves_it(driver, base_url, tmp_path):
+    # Issue #50: a project may hold a plant (made on the command line);
+    # the page does not show plants yet (issue #52) but must not drop one
+    # when it keeps the project.
+    project = json.loads((ROOT / "engine/programs/minasec-u/conveyor.json").read_text())
+    del project["exercise"]
+    project["plant"] = {"name": "conveyor", "params": {"interval": "5000"},
+                        "faults": ["outfeed stuck 0 from 30s"]}
+    path = tmp_path / "plant.json"
+    path.write_text(json.dumps(project))
+    fragment = subprocess.run([str(HASHIGO), "share", "--program", str(path)], check=True,
+                              capture_output=True, text=True).stdout.strip()
+    assert fragment.startswith("5."), fragment
+    wanted = json.loads(subprocess.run([str(HASHIGO), "unshare", fragment], check=True,
+                                       capture_output=True, text=True).stdout)["plant"]
+    open_fresh(driver, base_url)
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "shared-banner"), message="the banner")
+    el(driver, "shared-keep").click()
+    wait(driver, lambda: driver.execute_script("return localStorage.getItem('hashigo.projects.v1')"))
+    index = json.loads(driver.execute_script("return localStorage.getItem('hashigo.projects.v1')"))
+    [entry] = index["projects"]
+    kept = json.loads(driver.execute_script("return localStorage.getItem(arguments[0])",
+                                            f"hashigo.project.{entry['id']}.v1"))
+    assert kept.get("plant") == wanted, kept.get("plant")

@@ -14,6 +14,7 @@ use engine::formats::{self, FileError, Kind};
 use engine::ladder::edit::{align_outputs, COLUMNS};
 use engine::ladder::target::ElementError;
 use engine::ladder::Ladder;
+use engine::machines::IEC_MACHINE;
 use engine::MachineId;
 use serde::{Deserialize, Serialize};
 
@@ -146,9 +147,7 @@ fn open_ld(file: &str, text: &str) -> Result<LdOpened, Vec<String>> {
             .collect::<Vec<_>>()
     };
     let document = formats::Document::open(Kind::LdMicro, text).map_err(at)?;
-    let opened = document
-        .import(MachineId::SoftPlc, None, None)
-        .map_err(at)?;
+    let opened = document.import(IEC_MACHINE, None, None).map_err(at)?;
     let formats::Document::LdMicro(parsed, _) = &document else {
         return Err(vec![format!("{file}: not an LDmicro file")]);
     };
@@ -174,7 +173,7 @@ fn import(
         reply.pous = document.programs();
     }
     // The soft PLC takes the project's own names: nothing to map.
-    let soft = machine == MachineId::SoftPlc;
+    let soft = machine == IEC_MACHINE;
     reply.rows = match (rows, &document) {
         _ if soft => Vec::new(),
         (Some(rows), _) => rows,
@@ -246,7 +245,7 @@ fn import(
 /// which takes the project's own names and boxes, when it draws the file
 /// whole (no map: it needs none).
 fn elsewhere(document: &Document, machine: MachineId, pou: Option<&str>) -> Option<MachineId> {
-    let soft = MachineId::SoftPlc;
+    let soft = IEC_MACHINE;
     (machine != soft && document.import(Some(soft), None, pou).is_ok()).then_some(soft)
 }
 

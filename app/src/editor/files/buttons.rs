@@ -219,7 +219,7 @@ fn open_text(
             Ok(p) => {
                 let target = ladders.map_or(ctx, |l| l.of(p.machine));
                 ctx.page.machine.set(p.machine);
-                (target, p.ladder, (p.tests, p.exercise))
+                (target, p.ladder, (p.tests, p.exercise, p.plant))
             }
             Err(e) => {
                 ctx.panes
@@ -234,7 +234,7 @@ fn open_text(
         target.apply(Edit::Replace { ladder });
     }
     // A project file brings its own tests (and exercise), on a clean slate.
-    target.show_cases(cases.0, cases.1);
+    target.show_cases(cases.0, cases.1, cases.2);
     target.save();
 }
 

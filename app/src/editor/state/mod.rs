@@ -213,6 +213,9 @@ pub struct Cases {
     /// The author's view of an exercise: its task and tests editable.
     /// Off, an exercise shows the student's view.
     pub authoring: RwSignal<bool>,
+    /// The project's plant, its wiring, parameters and faults: kept and
+    /// saved with the project, not yet shown (issue #52).
+    pub plant: RwSignal<Option<engine::formats::project::PlantSetup>>,
     /// The last run's result of each case (by index), when run.
     pub results: RwSignal<Vec<Option<CaseResult>>>,
     /// Inputs being recorded into a new case, while recording.
@@ -250,9 +253,9 @@ impl LadderCtx {
     /// An editor for `machine` on `page`, restored from its autosave.
     pub fn restore(page: Ctx, machine: MachineId) -> LadderCtx {
         let (project, saved) = store::restore(page, machine);
-        let (ladder, tests, exercise) = match saved {
-            Some(p) => (Some(p.ladder), p.tests, p.exercise),
-            None => (None, Vec::new(), None),
+        let (ladder, tests, exercise, plant) = match saved {
+            Some(p) => (Some(p.ladder), p.tests, p.exercise, p.plant),
+            None => (None, Vec::new(), None, None),
         };
         if exercise.is_some() && page.machine.get_untracked() == machine {
             // An exercise opens with its tests shown.
@@ -306,6 +309,7 @@ impl LadderCtx {
             cases: Cases {
                 tests: RwSignal::new(tests),
                 exercise: RwSignal::new(exercise),
+                plant: RwSignal::new(plant),
                 authoring: RwSignal::new(false),
                 results: RwSignal::new(Vec::new()),
                 recorder: StoredValue::new(None),

@@ -3,7 +3,7 @@
 //! "Two tabs").
 
 use super::*;
-use engine::formats::project::Exercise;
+use engine::formats::project::{Exercise, PlantSetup};
 
 /// What showing a shared project set aside: its settings (applied when
 /// kept), whether it replaced the ladder, and the cases it replaced.
@@ -13,6 +13,7 @@ pub(super) struct SharedWith {
     replaced: bool,
     own_tests: Vec<TestCase>,
     own_exercise: Option<Exercise>,
+    own_plant: Option<PlantSetup>,
 }
 
 impl LadderCtx {
@@ -46,8 +47,9 @@ impl LadderCtx {
         self.work.shared.set(true);
         let own_tests = self.cases.tests.get_untracked();
         let own_exercise = self.cases.exercise.get_untracked();
+        let own_plant = self.cases.plant.get_untracked();
         let exercise = project.exercise.is_some();
-        self.show_cases(project.tests, project.exercise);
+        self.show_cases(project.tests, project.exercise, project.plant);
         if exercise {
             self.page.docks.show(crate::docks::Tool::Tests);
         }
@@ -60,6 +62,7 @@ impl LadderCtx {
             replaced,
             own_tests,
             own_exercise,
+            own_plant,
         });
         if adopt {
             self.adopt_shared();
@@ -139,7 +142,7 @@ impl LadderCtx {
     /// undo away; it stays saved where it was).
     pub fn open_project(&self, id: Option<u64>, project: engine::formats::Project) {
         self.set_project(id);
-        self.show_cases(project.tests, project.exercise);
+        self.show_cases(project.tests, project.exercise, project.plant);
         if self.ladder() != project.ladder {
             self.apply(Edit::Replace {
                 ladder: project.ladder,
@@ -155,7 +158,7 @@ impl LadderCtx {
             return;
         }
         let with = self.work.shared_with.get_value();
-        self.show_cases(with.own_tests, with.own_exercise);
+        self.show_cases(with.own_tests, with.own_exercise, with.own_plant);
         if with.replaced {
             self.drawing.editor.update_value(|e| {
                 e.undo();
@@ -201,7 +204,7 @@ impl LadderCtx {
         if project.machine != self.machine {
             return;
         }
-        self.show_cases(project.tests, project.exercise);
+        self.show_cases(project.tests, project.exercise, project.plant);
         let replaced = self
             .drawing
             .editor
@@ -254,6 +257,9 @@ impl LadderCtx {
         let mut project = engine::formats::Project::new(self.machine, self.ladder());
         project.tests = self.cases.tests.get_untracked();
         project.exercise = self.cases.exercise.get_untracked();
+        // The page does not show plants yet (issue #52) but keeps a
+        // project's: saving it again must not drop it.
+        project.plant = self.cases.plant.get_untracked();
         project
     }
 
@@ -266,7 +272,13 @@ impl LadderCtx {
 
     /// The cases shown: `tests`, as an exercise or not, on a clean slate
     /// (an exercise in the student's view).
-    pub(crate) fn show_cases(&self, tests: Vec<TestCase>, exercise: Option<Exercise>) {
+    pub(crate) fn show_cases(
+        &self,
+        tests: Vec<TestCase>,
+        exercise: Option<Exercise>,
+        plant: Option<PlantSetup>,
+    ) {
+        self.cases.plant.set(plant);
         self.cases.tests.set(tests);
         self.cases.exercise.set(exercise);
         self.cases.authoring.set(false);
