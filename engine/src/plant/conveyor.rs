@@ -187,8 +187,9 @@ impl Conveyor {
     }
 
     fn schedule_after(&mut self, now_ms: i64) {
-        let wait = self.params[INTERVAL] + self.rng.up_to(self.params[SPREAD]);
-        self.next_arrival = now_ms.saturating_add(wait);
+        self.next_arrival = self
+            .rng
+            .after(now_ms, self.params[INTERVAL], self.params[SPREAD]);
     }
 }
 

@@ -258,13 +258,13 @@ impl Plant for Door {
         let (up, down) = (on(UP), on(DOWN));
         if now_ms >= self.next_press {
             self.pressed_until = now_ms + self.params[PRESS];
-            let wait = self.params[REMOTE_EVERY] + self.rng.up_to(self.params[REMOTE_SPREAD]);
-            self.next_press = now_ms.saturating_add(wait);
+            let (every, spread) = (self.params[REMOTE_EVERY], self.params[REMOTE_SPREAD]);
+            self.next_press = self.rng.after(now_ms, every, spread);
         }
         if now_ms >= self.next_block {
             self.blocked_until = now_ms + self.params[BLOCKED];
-            let wait = self.params[EYE_EVERY] + self.rng.up_to(self.params[EYE_SPREAD]);
-            self.next_block = now_ms.saturating_add(wait);
+            let (every, spread) = (self.params[EYE_EVERY], self.params[EYE_SPREAD]);
+            self.next_block = self.rng.after(now_ms, every, spread);
         }
         self.alarms(up, down, alarms);
         // Up and down at once: the two contactors fight, the door stays.

@@ -26,6 +26,12 @@ impl Rng {
         let span = u64::try_from(max).unwrap_or(0).saturating_add(1);
         i64::try_from(self.next() % span).unwrap_or(0)
     }
+
+    /// When the next of a seeded series comes: `every` ms after `now_ms`
+    /// and a random `0..=spread` more (every plant's arrivals and presses).
+    pub(crate) fn after(&mut self, now_ms: i64, every: i64, spread: i64) -> i64 {
+        now_ms.saturating_add(every + self.up_to(spread))
+    }
 }
 
 #[cfg(test)]

@@ -297,8 +297,9 @@ impl Sorter {
             tall,
             held: false,
         });
-        let wait = self.params[INTERVAL] + self.rng.up_to(self.params[SPREAD]);
-        self.next_arrival = now_ms.saturating_add(wait);
+        self.next_arrival = self
+            .rng
+            .after(now_ms, self.params[INTERVAL], self.params[SPREAD]);
     }
 }
 

@@ -206,8 +206,9 @@ impl Plant for Traffic {
             if self.waiting.len() < MAX_WAITING {
                 self.waiting.push_back(now_ms);
             }
-            let wait = self.params[INTERVAL] + self.rng.up_to(self.params[SPREAD]);
-            self.next_arrival = now_ms.saturating_add(wait);
+            self.next_arrival = self
+                .rng
+                .after(now_ms, self.params[INTERVAL], self.params[SPREAD]);
         }
         if let Some(&first) = self.waiting.front() {
             self.waited_max = self.waited_max.max(now_ms - first);
