@@ -269,6 +269,7 @@ pub fn answer(message: &str) -> Option<String> {
 mod said_gate_ja;
 mod said_ja;
 mod said_soft_ja;
+pub use said_soft_ja::box_error_ja;
 mod said_warning_ja;
 #[cfg(test)]
 mod tests;

@@ -93,9 +93,9 @@ pub fn box_ja(what: &str, problem: &BoxProblem) -> Option<String> {
     Some(format!("{what}: {why}"))
 }
 
-/// The box's own refusal, in the words the page uses for a box drawn
-/// on it (`app/src/i18n/engine.rs`, which the worker cannot reach).
-fn box_error_ja(e: &BoxError) -> String {
+/// A box's own refusal in Japanese: the worker says it for a box in a
+/// file, the page (`app/src/i18n/engine.rs`) for a box drawn on it.
+pub fn box_error_ja(e: &BoxError) -> String {
     match e {
         BoxError::UnknownKind(k) => format!("{k} はソフトPLCの関数でもブロックでもありません"),
         BoxError::NoInstance(k) => format!("{k} ボックスにはインスタンス名が必要です (TON0)"),

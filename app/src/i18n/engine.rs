@@ -5,7 +5,6 @@
 //! until it has its Japanese. Device names, mnemonics and what a file
 //! says are kept as written.
 
-use engine::ladder::block::BoxError;
 use engine::ladder::edit::EntryError;
 use engine::ladder::target::{capabilities, Drivable, ElementError, LackReason, Latch};
 use engine::ladder::LadderError;
@@ -142,7 +141,7 @@ pub(super) fn element_ja(e: &ElementError) -> String {
         E::Io86aCounterCoil(d) => format!(
             "通常のコイルではカウンタ {d} を駆動できません: 設定値付きのカウンタコイル (OUT {d} K10) かセット/リセットコイルを使ってください"
         ),
-        E::Block(why) => box_ja(why),
+        E::Block(why) => files_worker::box_error_ja(why),
     }
 }
 
@@ -219,23 +218,6 @@ fn lack_ja(why: LackReason) -> &'static str {
     }
 }
 
-fn box_ja(e: &BoxError) -> String {
-    match e {
-        BoxError::UnknownKind(k) => format!("{k} はソフトPLCの関数でもブロックでもありません"),
-        BoxError::NoInstance(k) => format!("{k} ボックスにはインスタンス名が必要です (TON0)"),
-        BoxError::FunctionInstance(k) => format!("{k} は関数です: インスタンスはありません"),
-        BoxError::NoSuchInput(k, pin, takes) => {
-            format!("{k} に入力 {pin} はありません (入力: {takes})")
-        }
-        BoxError::BadOperand(t) => format!("`{t}` は変数でもアドレスでもリテラルでもありません"),
-        BoxError::NotWired(k, pin) => format!("{k} の {pin} がつながっていません"),
-        BoxError::NoSuchOutput(k, pin) => format!("{k} に出力 {pin} はありません"),
-        BoxError::NotAVariable(k, pin, t) => {
-            format!("{k} の {pin} の書き込み先 {t:?} は変数かアドレスにしてください")
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -243,6 +225,7 @@ mod tests {
     /// One of each kind (the match above has no `_`: a new kind must be
     /// added there, and here).
     fn every_kind() -> Vec<ElementError> {
+        use engine::ladder::block::BoxError;
         use ElementError as E;
         let s = || "X".to_string();
         let mut all = vec![
