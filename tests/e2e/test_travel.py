@@ -207,17 +207,20 @@ def test_seeking_any_recorded_scan_is_quick(driver, base_url):
     wait(driver, lambda: count(driver) not in (None, "", "0", "1", "2"), timeout=60, message="a few counts")
     el(driver, "pause").click()
     last = int(el(driver, "timeline").get_attribute("max"))
-    # The best of three rounds: a round's tail is the shared machine's
-    # hiccups as much as the page's (docs/performance.md).
+    # Three rounds over the same 60 scans, each scan's seek time the best
+    # of its three: the machine's hiccups (a 2-core machine shared with
+    # builds) only ever add time, so a scan's fastest seek is the page's
+    # own cost and its p95 is the figure. Consecutive seeks go to
+    # different scans, so no round finds its scan already shown.
     rounds = []
     for _ in range(3):
         times = driver.execute_async_script(SEEK_ROUND, last)
         assert isinstance(times, list), times
-        times.sort()
-        rounds.append((times[int(len(times) * 0.95) - 1], times))
-        if rounds[-1][0] <= 16.0:
-            break
-    p95, times = min(rounds)
-    record_figures({"seek_ms": {"p50": round(statistics.median(times), 2), "p95": round(p95, 2),
-                                "scans_recorded": last, "samples": len(times), "rounds": len(rounds)}})
-    assert p95 <= 16.0, rounds
+        rounds.append(times)
+    best = sorted(min(each) for each in zip(*rounds))
+    p95 = best[int(len(best) * 0.95) - 1]
+    first = sorted(rounds[0])
+    record_figures({"seek_ms": {"p50": round(statistics.median(best), 2), "p95": round(p95, 2),
+                                "first_round_p95": round(first[int(len(first) * 0.95) - 1], 2),
+                                "scans_recorded": last, "samples": len(best), "rounds": len(rounds)}})
+    assert p95 <= 16.0, (best, rounds)

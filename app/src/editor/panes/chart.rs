@@ -196,12 +196,36 @@ impl Chart {
                 self.data.set(fresh);
             }
         }
-        if let Some(plot) = self.plot.get_untracked() {
-            let w = plot.get_bounding_client_rect().width().round();
-            if w > 0.0 && self.shown.get_untracked() != w {
-                self.shown.set(w);
+    }
+
+    /// Follows the plot's width on the page with a `ResizeObserver`, not
+    /// by measuring at each redraw: a measure in the middle of a seek's
+    /// updates forced a layout there (half of a seek's time in the page).
+    fn watch_width(self) {
+        use leptos::wasm_bindgen::{closure::Closure, JsCast};
+        let Some(plot) = self.plot.get_untracked() else {
+            return;
+        };
+        let shown = self.shown;
+        let resized = Closure::<dyn Fn(js_sys::Array)>::new(move |entries: js_sys::Array| {
+            let Ok(entry) = entries.get(0).dyn_into::<web_sys::ResizeObserverEntry>() else {
+                return;
+            };
+            let w = entry.content_rect().width().round();
+            if w > 0.0 && shown.get_untracked() != w {
+                shown.set(w);
             }
-        }
+        });
+        let Ok(observer) = web_sys::ResizeObserver::new(resized.as_ref().unchecked_ref()) else {
+            return;
+        };
+        observer.observe(&plot);
+        let resized = send_wrapper::SendWrapper::new(resized);
+        let observer = send_wrapper::SendWrapper::new(observer);
+        on_cleanup(move || {
+            observer.disconnect();
+            drop(resized);
+        });
     }
 
     /// Adds the device typed, when the machine has it.
@@ -329,6 +353,11 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         ctx.travel.chart_tick.track();
         ctx.drawing.revision.track();
         chart.redraw();
+    });
+    Effect::new(move |_| {
+        if chart.plot.get().is_some() {
+            chart.watch_width();
+        }
     });
     // Another project on a clean slate: the chart's choices (devices,
     // the scan clicked, the window) were the last project's.
