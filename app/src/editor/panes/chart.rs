@@ -314,6 +314,15 @@ impl Chart {
         self.ctx.travel.shown.get().or(self.cursor.get())
     }
 
+    /// Row `row`'s value at the scan shown or clicked.
+    fn value_at(self, row: usize) -> Option<i64> {
+        let at = self.at();
+        self.data.with(|d| {
+            let i = d.index_of(at)?;
+            d.rows.get(row)?.1.get(i).copied().flatten()
+        })
+    }
+
     fn height(self) -> usize {
         self.data.with(|d| d.rows.len().max(1) * ROW)
     }
@@ -409,19 +418,18 @@ fn ChartTools(chart: Chart) -> impl IntoView {
 }
 
 /// Each row's device, once: its name, its value at the scan shown or
-/// clicked, and a button that takes it off.
+/// clicked, and a button that takes it off. The rows follow the data; a
+/// seek changes only each value's text.
 #[component]
 fn ChartNames(chart: Chart) -> impl IntoView {
     let t = move || chart.ctx.page.lang.get().texts();
     view! {
         <div class="chart-names">
             {move || {
-                let at = chart.at();
                 chart.data.with(|d| {
-                    let i = d.index_of(at);
-                    d.rows.iter().map(|(name, values)| {
+                    d.rows.iter().enumerate().map(|(row, (name, _))| {
                         let gone = name.clone();
-                        let v = i.and_then(|i| values.get(i).copied().flatten()).map(|v| v.to_string());
+                        let v = move || chart.value_at(row).map(|v| v.to_string());
                         view! {
                             <div class="chart-name" style=format!("height: {ROW}px")>
                                 <span>{name.clone()}</span>
@@ -505,32 +513,38 @@ fn ChartMarks(chart: Chart) -> impl IntoView {
 }
 
 /// The words' values: written in each band wide enough on the page, and
-/// at the cursor always.
+/// at the cursor always. The bands' texts follow the data and the plot's
+/// width only, so a seek redraws just the cursor's.
 #[component]
 fn ChartTexts(chart: Chart) -> impl IntoView {
     let pct = |col: usize| col as f64 * 100.0 / WIDTH as f64;
-    move || {
+    let written = move || {
         let px_per_col = chart.shown.get() / WIDTH as f64;
-        let at = chart.at();
         chart.data.with(|d| {
-            let cursor = d.index_of(at).filter(|&i| i < d.times.len());
-            let n = d.times.len().max(1);
             d.rows.iter().enumerate().filter(|(_, (_, v))| !is_bits(v)).map(|(i, (name, values))| {
                 let top = i * ROW;
-                let written = bands::bands(values, WIDTH).into_iter().filter_map(|b| {
+                bands::bands(values, WIDTH).into_iter().filter_map(|b| {
                     let text = bands::band_text(&b, px_per_col)?;
                     let style = format!("left: {:.3}%; width: {:.3}%; top: {top}px; height: {ROW}px",
                         pct(b.from), pct(b.to - b.from));
                     Some(view! { <span class="chart-band-text" data-row=name.clone() style=style>{text}</span> })
-                }).collect_view();
-                let here = cursor.and_then(|c| Some((c, values.get(c).copied().flatten()?))).map(|(c, v)| {
-                    let style = format!("left: {:.3}%; top: {top}px; height: {ROW}px", pct(c * WIDTH / n));
-                    view! { <span class="chart-at" data-testid=format!("chart-at-{name}") style=style>{v.to_string()}</span> }
-                });
-                (written, here)
+                }).collect_view()
             }).collect_view()
         })
-    }
+    };
+    let here = move || {
+        let at = chart.at();
+        chart.data.with(|d| {
+            let cursor = d.index_of(at).filter(|&i| i < d.times.len())?;
+            let n = d.times.len().max(1);
+            Some(d.rows.iter().enumerate().filter(|(_, (_, v))| !is_bits(v)).filter_map(|(i, (name, values))| {
+                let v = values.get(cursor).copied().flatten()?;
+                let style = format!("left: {:.3}%; top: {}px; height: {ROW}px", pct(cursor * WIDTH / n), i * ROW);
+                Some(view! { <span class="chart-at" data-testid=format!("chart-at-{name}") style=style>{v.to_string()}</span> })
+            }).collect_view())
+        })
+    };
+    (written, here)
 }
 
 /// The time axis, labelled: the scans and simulated times at both ends.
