@@ -198,3 +198,34 @@ def test_the_menus_hold_the_files_and_the_palette_finds_a_part(driver, base_url)
     el(driver, "palette-search").send_keys("counter")
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, '[data-testid="palette-no"]'))
     assert el(driver, "palette-ctu").is_displayed()
+
+
+def row_tops(driver, selector):
+    return driver.execute_script(
+        "return [...document.querySelectorAll(arguments[0])].map(e => Math.round(e.getBoundingClientRect().top))",
+        selector)
+
+
+@pytest.mark.parametrize("lang", ["en", "ja"])
+def test_on_a_laptop_the_app_bar_is_one_row_and_box_names_one_line(driver, base_url, lang):
+    """At 1366x768 the app bar keeps one row in both languages (Japanese
+    labels are wider), on the machine with the longest name too; the
+    palette's box names ([R_TRIG]) keep one line in its column."""
+    driver.set_window_size(1366, 768)
+    open_fresh(driver, base_url, lang)
+    for machine in ["minasec-u", "soft-plc"]:
+        Select(el(driver, "machine")).select_by_value(machine)
+        wait(driver, lambda: el(driver, "share", reveal=False).is_displayed())
+        bar = ["[data-testid='run']", "[data-testid='pause']", "[data-testid='speed']",
+               "[data-testid='sim-time']", "[data-testid='share']", "[data-testid='machine']"]
+        mids = driver.execute_script(
+            "return arguments[0].map(s => { const r = document.querySelector(s).getBoundingClientRect();"
+            " return Math.round(r.top + r.height / 2); })", bar)
+        assert max(mids) - min(mids) <= 6, (machine, lang, dict(zip(bar, mids)))
+        # The lines each name's text takes (its line boxes' distinct tops).
+        lines = driver.execute_script(
+            "return [...document.querySelectorAll('.palette-item')].filter(e => e.textContent.includes('TRIG'))"
+            ".map(e => { const r = document.createRange(); r.selectNodeContents(e);"
+            " return [e.textContent, new Set([...r.getClientRects()].map(x => Math.round(x.top))).size]; })")
+        assert lines, "the palette has the edge boxes"
+        assert all(n == 1 for _, n in lines), (machine, lines)
