@@ -196,35 +196,17 @@ impl Chart {
                 self.data.set(fresh);
             }
         }
-    }
-
-    /// Follows the plot's width on the page with a `ResizeObserver`, not
-    /// by measuring at each redraw: a measure in the middle of a seek's
-    /// updates forced a layout there (half of a seek's time in the page).
-    fn watch_width(self) {
-        use leptos::wasm_bindgen::{closure::Closure, JsCast};
-        let Some(plot) = self.plot.get_untracked() else {
-            return;
-        };
-        let shown = self.shown;
-        let resized = Closure::<dyn Fn(js_sys::Array)>::new(move |entries: js_sys::Array| {
-            let Ok(entry) = entries.get(0).dyn_into::<web_sys::ResizeObserverEntry>() else {
-                return;
-            };
-            let w = entry.content_rect().width().round();
-            if w > 0.0 && shown.get_untracked() != w {
-                shown.set(w);
+        // Measured in the next frame, when the browser lays the page out
+        // anyway: measured here, in the middle of a seek's updates, it
+        // forced a layout of its own (half of a seek's time in the page).
+        let (plot, shown) = (self.plot, self.shown);
+        request_animation_frame(move || {
+            if let Some(plot) = plot.get_untracked() {
+                let w = plot.get_bounding_client_rect().width().round();
+                if w > 0.0 && shown.get_untracked() != w {
+                    shown.set(w);
+                }
             }
-        });
-        let Ok(observer) = web_sys::ResizeObserver::new(resized.as_ref().unchecked_ref()) else {
-            return;
-        };
-        observer.observe(&plot);
-        let resized = send_wrapper::SendWrapper::new(resized);
-        let observer = send_wrapper::SendWrapper::new(observer);
-        on_cleanup(move || {
-            observer.disconnect();
-            drop(resized);
         });
     }
 
@@ -362,11 +344,6 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         ctx.travel.chart_tick.track();
         ctx.drawing.revision.track();
         chart.redraw();
-    });
-    Effect::new(move |_| {
-        if chart.plot.get().is_some() {
-            chart.watch_width();
-        }
     });
     // Another project on a clean slate: the chart's choices (devices,
     // the scan clicked, the window) were the last project's.
