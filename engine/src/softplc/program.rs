@@ -573,3 +573,5 @@ impl crate::iec::il::IlSource for Program {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_english;
