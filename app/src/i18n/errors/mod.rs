@@ -18,6 +18,8 @@ mod share;
 mod tests;
 #[cfg(test)]
 mod tests_text;
+#[cfg(test)]
+mod tests_why;
 
 use engine::cases::{CaseError, Observed};
 use engine::ladder::edit::{ClipError, EditError, ReplaceError};

@@ -413,7 +413,8 @@ fn every_typed_program_error_is_said_in_japanese() {
                 output: true,
             },
             LoadError::NotAnInstance(s()),
-        ]);
+        ])
+        .chain(super::tests_why::types_and_calls());
     for e in all {
         is_japanese(&format!("{e:?}"), &load_error(Lang::Ja, &e));
         assert_eq!(load_error(Lang::En, &e), e.to_string());
@@ -426,6 +427,20 @@ fn a_soft_plc_program_error_is_said_in_japanese_from_the_loader() {
         .expect_err("LD needs an operand");
     let ja = load_error(Lang::Ja, &errors[0].error);
     assert_eq!(ja, "`LD` にはオペランドが必要です");
+    // A SEL whose two values are of two types: a kind, not the English.
+    let errors = engine::softplc::Program::load(
+        "VAR\n  b : BOOL;\n  i : INT;\n  r : REAL;\nEND_VAR\nLD b\nSEL i, r\nST i\n",
+    )
+    .expect_err("SEL of an INT and a REAL");
+    assert_eq!((errors[0].line, errors.len()), (7, 1));
+    assert_eq!(
+        load_error(Lang::Ja, &errors[0].error),
+        "SEL の 2 つの値は同じ型にしてください"
+    );
+    assert_eq!(
+        load_error(Lang::En, &errors[0].error),
+        "SEL's two values have one type"
+    );
 }
 
 #[test]

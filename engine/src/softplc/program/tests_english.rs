@@ -184,3 +184,20 @@ fn the_own_blocks_limits_are_said_as_before() {
         "h64: the instances of the program's own blocks would hold more than 200000 variables (docs/limits.md)"
     );
 }
+
+#[test]
+fn the_kinds_no_short_text_reaches_are_said_as_before() {
+    use super::CallWhy;
+    assert_eq!(
+        CallWhy::BodySteps.to_string(),
+        "the blocks' bodies need more than 2000000 steps for their instances (docs/limits.md)"
+    );
+    assert_eq!(
+        CallWhy::NotVariable("x".into()).to_string(),
+        "`x` is not a variable"
+    );
+    assert_eq!(
+        CallWhy::NeedsInstance.to_string(),
+        "CAL needs a block instance"
+    );
+}
