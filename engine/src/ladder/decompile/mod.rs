@@ -223,3 +223,5 @@ pub(crate) fn add_output<T>(
     outputs.push(e);
     Ok(())
 }
+#[cfg(test)]
+mod tests_english;
