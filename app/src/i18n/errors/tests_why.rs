@@ -1,8 +1,9 @@
 //! One of each type and call problem the soft PLC's loader gives (its
 //! kinds with their arguments, issue #49), for the walk of every program
-//! error said in Japanese.
+//! error said in Japanese; every step with no ladder form said so.
 
-use super::tests::s;
+use super::tests::{is_japanese, s};
+use super::*;
 use engine::iec::data::DataType;
 use engine::iec::LiteralError;
 use engine::softplc::LoadError;
@@ -112,4 +113,58 @@ pub(super) fn types_and_calls() -> Vec<LoadError> {
         .map(LoadError::Type)
         .chain(calls.into_iter().map(LoadError::Call))
         .collect()
+}
+
+#[test]
+fn every_step_with_no_ladder_form_is_said_in_japanese() {
+    use engine::ladder::decompile::{DecompileError, StepError, StepWhy as S, TextError};
+    use engine::ladder::net::TooLarge;
+    let whys = [
+        S::AfterOutputs,
+        S::UsedAgain,
+        S::NoLoad,
+        S::TwoBlocks,
+        S::TooDeep,
+        S::OutputFirst,
+        S::Labels,
+        S::NoOpen,
+        S::Line("ADD 1".into()),
+        S::BoxWithoutOutput,
+        S::ParallelBox,
+        S::NoPowerOut,
+        S::EdgeOnLiteral,
+        S::TimerPreset,
+        S::Call("t0".into()),
+        S::NoLabel,
+        S::NoBoxReads,
+        S::Jump(3),
+        S::Word(0xBEEF),
+        S::RegisterValue,
+        S::SecondDevice,
+    ];
+    let all = whys
+        .into_iter()
+        .map(|why| DecompileError::Step(StepError { step: 2, why }))
+        .chain([DecompileError::Drawing {
+            rung: 1,
+            size: TooLarge {
+                rows: 9,
+                columns: 9,
+            },
+        }]);
+    for e in all.map(TextError::Decompile) {
+        is_japanese(&format!("{e:?}"), &text_error(Lang::Ja, &e));
+        assert_eq!(text_error(Lang::En, &e), e.to_string());
+    }
+    // A real one: the soft PLC's ADD has no ladder form.
+    let e = engine::ladder::decompile::decompile_text(
+        engine::MachineId::SoftPlc,
+        "VAR\n  i : INT;\nEND_VAR\nLD i\nADD 1\nST i",
+        10,
+    )
+    .expect_err("no ladder form");
+    assert_eq!(
+        text_error(Lang::Ja, &e),
+        "ステップ 1: `ADD 1` はまだラダーにできません"
+    );
 }

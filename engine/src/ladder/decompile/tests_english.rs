@@ -41,3 +41,32 @@ fn the_steps_with_no_ladder_form_are_said_as_before() {
         "step 0: an output with no LD before it"
     );
 }
+
+#[test]
+fn the_kinds_no_short_text_here_reaches_are_said_as_before() {
+    use super::StepWhy as S;
+    let said = [
+        (
+            S::Jump(3),
+            "JUMP 3 has no ladder form: only a final JUMP 0 (or END)",
+        ),
+        (S::Word(0xBEEF), "word BEEF is no instruction"),
+        (
+            S::RegisterValue,
+            "a set value from a data register has no ladder form here: use a K constant",
+        ),
+        (
+            S::SecondDevice,
+            "SETS / RSTS drive a second device: they have no ladder form here",
+        ),
+        (
+            S::TooDeep,
+            "blocks nest more than 100 deep here: a ladder cannot draw it (docs/limits.md)",
+        ),
+        (S::TwoBlocks, "ORB / ANB needs two blocks"),
+        (S::NoLoad, "no LD before this step"),
+    ];
+    for (why, english) in said {
+        assert_eq!(why.to_string(), english);
+    }
+}
