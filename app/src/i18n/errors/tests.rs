@@ -413,8 +413,7 @@ fn every_typed_program_error_is_said_in_japanese() {
                 output: true,
             },
             LoadError::NotAnInstance(s()),
-        ])
-        .chain(super::tests_why::types_and_calls());
+        ]);
     for e in all {
         is_japanese(&format!("{e:?}"), &load_error(Lang::Ja, &e));
         assert_eq!(load_error(Lang::En, &e), e.to_string());

@@ -8,8 +8,16 @@ use engine::iec::data::DataType;
 use engine::iec::LiteralError;
 use engine::softplc::LoadError;
 
+#[test]
+fn every_type_and_call_problem_is_said_in_japanese() {
+    for e in types_and_calls() {
+        is_japanese(&format!("{e:?}"), &load_error(Lang::Ja, &e));
+        assert_eq!(load_error(Lang::En, &e), e.to_string());
+    }
+}
+
 /// One of each type and call problem the loader gives.
-pub(super) fn types_and_calls() -> Vec<LoadError> {
+fn types_and_calls() -> Vec<LoadError> {
     use engine::runtime::ldmicro::format::FormatError as F;
     use engine::runtime::ldmicro::printf::PrintfError as P;
     use engine::softplc::program::{CallWhy as C, TypeWhy as T};
