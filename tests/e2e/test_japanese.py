@@ -211,3 +211,16 @@ def test_an_io86a_program_text_error_is_japanese(driver, base_url):
     for line in errors.text.splitlines():
         japanese(line)
     assert "不明な命令 \"FOO\"" in errors.text, errors.text
+
+
+def test_a_program_with_no_ladder_form_is_japanese(driver, base_url):
+    """Load as ladder of IO86A's SETS: the step with no ladder form is a
+    kind (StepWhy), said in Japanese, and nothing changes."""
+    on(driver, base_url, "io86a")
+    text = el(driver, "io86a-program-text")
+    text.clear()
+    text.send_keys("LD X00\nSETS Y00\nEND\n")
+    el(driver, "load-as-ladder").click()
+    said = wait(driver, lambda: el(driver, "edit-message").text.strip())
+    japanese(said)
+    assert "SETS / RSTS は 2 つ目のデバイスを駆動します" in said, said

@@ -175,4 +175,15 @@ fn every_step_with_no_ladder_form_is_said_in_japanese() {
         text_error(Lang::Ja, &e),
         "ステップ 1: `ADD 1` はまだラダーにできません"
     );
+    // (tests/e2e/test_japanese.py loads this one as a ladder.)
+    let e = engine::ladder::decompile::decompile_text(
+        engine::MachineId::Io86a,
+        "LD X00\nSETS Y00\nEND\n",
+        10,
+    )
+    .expect_err("no ladder form");
+    assert_eq!(
+        text_error(Lang::Ja, &e),
+        "ステップ 1: SETS / RSTS は 2 つ目のデバイスを駆動します: ここではラダーにできません"
+    );
 }
