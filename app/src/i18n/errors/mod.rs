@@ -14,6 +14,7 @@ mod decompile;
 mod edit;
 mod io86a;
 mod program;
+mod settings;
 mod share;
 #[cfg(test)]
 mod tests;

@@ -187,3 +187,39 @@ fn every_step_with_no_ladder_form_is_said_in_japanese() {
         "ステップ 1: SETS / RSTS は 2 つ目のデバイスを駆動します: ここではラダーにできません"
     );
 }
+
+#[test]
+fn every_boards_own_setting_refusal_is_said_in_japanese() {
+    use engine::io86a::peripherals::SettingError as Io;
+    use engine::minasec::{SettingError as Mi, TimerId};
+    use engine::plc::{Own, SettingError};
+    let own = [
+        Own::new(Mi::DelayOutOfRange {
+            timer: TimerId::T0,
+            delay: engine::SimTime::from_millis(50),
+        }),
+        Own::new(Mi::PresetOutOfRange(120)),
+        Own::new(Mi::NoSuchInput(9)),
+        Own::new(Mi::BadClock(s())),
+        Own::new(Io::Unknown(s())),
+        Own::new(Io::Analog(s())),
+        Own::new(Io::CustomCode(s())),
+        Own::new(Io::Filter(s())),
+    ];
+    for e in own.map(|o| PlcError::Setting(SettingError::Own(o))) {
+        is_japanese(&format!("{e:?}"), &plc_error(Lang::Ja, &e));
+        assert_eq!(plc_error(Lang::En, &e), e.to_string());
+    }
+    // A real one: MINASEC-U's counter set above 99.
+    let mut plc = engine::machines::new_plc(engine::MachineId::MinasecU);
+    let e = plc
+        .apply(engine::plc::Command::Setting {
+            name: "C0".into(),
+            value: "120".into(),
+        })
+        .expect_err("0..99");
+    assert_eq!(
+        plc_error(Lang::Ja, &e),
+        "カウンタの設定値 120 は範囲外です: 0..99 (BCD 2 桁)"
+    );
+}
