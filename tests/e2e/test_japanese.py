@@ -100,6 +100,24 @@ def test_a_soft_plc_program_error_is_japanese(driver, base_url):
     assert "不明な命令 `FOO`" in said, said
 
 
+def test_a_soft_plc_type_problem_is_japanese(driver, base_url):
+    """A SEL of two types and a shift of a REAL: the loader's kinds
+    (TypeWhy), said in Japanese, not its English words."""
+    on(driver, base_url, "soft-plc")
+    text = el(driver, "soft-program-text")
+    text.clear()
+    text.send_keys(
+        "PROGRAM p\nVAR\n  b : BOOL;\n  i : INT;\n  r : REAL;\nEND_VAR\n"
+        "  LD b\n  SEL i, r\n  ST i\n  LD r\n  SHL 1\n  ST r\nEND_PROGRAM\n")
+    wait(driver, lambda: "SEL" in el(driver, "soft-program-error").text)
+    said = el(driver, "soft-program-error").text
+    for line in said.splitlines():
+        japanese(line)
+    assert "SEL の 2 つの値は同じ型にしてください" in said, said
+    assert "SHL, SHR, ROL, ROR は整数を整数ぶんシフトします" in said, said
+    assert "SEL's two values" not in said, said
+
+
 def test_a_plcopen_import_error_is_japanese(driver, base_url, tmp_path):
     path = tmp_path / "broken.xml"
     path.write_text("<project>\n<a>\n</project>\n")
@@ -193,3 +211,16 @@ def test_an_io86a_program_text_error_is_japanese(driver, base_url):
     for line in errors.text.splitlines():
         japanese(line)
     assert "不明な命令 \"FOO\"" in errors.text, errors.text
+
+
+def test_a_program_with_no_ladder_form_is_japanese(driver, base_url):
+    """Load as ladder of IO86A's SETS: the step with no ladder form is a
+    kind (StepWhy), said in Japanese, and nothing changes."""
+    on(driver, base_url, "io86a")
+    text = el(driver, "io86a-program-text")
+    text.clear()
+    text.send_keys("LD X00\nSETS Y00\nEND\n")
+    el(driver, "load-as-ladder").click()
+    said = wait(driver, lambda: el(driver, "edit-message").text.strip())
+    japanese(said)
+    assert "SETS / RSTS は 2 つ目のデバイスを駆動します" in said, said

@@ -267,7 +267,9 @@ pub fn answer(message: &str) -> Option<String> {
 }
 
 mod said_gate_ja;
+pub mod said_iec_ja;
 mod said_ja;
+pub mod said_program_ja;
 mod said_soft_ja;
 pub use said_soft_ja::box_error_ja;
 mod said_warning_ja;

@@ -17,9 +17,7 @@ use engine::shown;
 use crate::said_soft_ja::{box_ja, soft_ja, vendor_logic_ja};
 
 /// `e` in Japanese, or `None` for a kind said elsewhere (a machine's
-/// refusal, typed) or not yet typed in the engine (a
-/// soft PLC declaration's or loader's reason, a box's own refusal, a
-/// variable's: English, as the engine says them).
+/// refusal of an element, typed: [`crate::Said::cause`]).
 pub fn import_ja(e: &ImportError) -> Option<String> {
     use ImportError as E;
     Some(match e {
@@ -94,7 +92,8 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
         E::Soft(e) => return soft_ja(e),
         E::SoftBox(what, problem) => return box_ja(what, problem),
         E::Gate(what, why) => crate::said_gate_ja::gate_ja(what, why),
-        E::Element(_) | E::SoftVariable(_) => return None,
+        E::SoftVariable(e) => format!("変数 {}", crate::said_iec_ja::variable_ja(e)),
+        E::Element(_) => return None,
     })
 }
 

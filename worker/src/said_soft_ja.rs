@@ -3,17 +3,20 @@
 //! that carries logic. Names and element names of the file are kept as
 //! written.
 
-use engine::formats::plcopen::soft::error::SoftError;
+use engine::formats::plcopen::soft::error::{DeclarationWhy, SoftError};
 use engine::formats::plcopen::BoxProblem;
 use engine::iec::functions::FunctionError;
 use engine::ladder::block::BoxError;
 
-/// `e` in Japanese, or `None` where the engine gives its reason in words
-/// only (a declaration's, the generated program's loader's).
+/// `e` in Japanese.
 pub fn soft_ja(e: &SoftError) -> Option<String> {
     use SoftError as S;
     Some(match e {
-        S::Declaration(..) | S::Load(_) => return None,
+        S::Declaration(name, why) => format!("変数 {name}: {}", declaration_ja(why)),
+        S::Load(e) => crate::said_program_ja::load_ja(e),
+        S::BodySection(word) => format!(
+            "IL 本体に `{word}` があります: 本体には命令だけを書きます (変数は POU のインタフェースです)"
+        ),
         S::Element(el) => element_ja(el),
         S::NoLocalId(el) => format!("<{el}> に localId がありません"),
         S::DuplicateId(id) => format!("localId {id} が 2 回使われています"),
@@ -55,6 +58,23 @@ pub fn soft_ja(e: &SoftError) -> Option<String> {
             "{name} は宣言されていません: POU の変数に {ty} のインスタンスとして宣言してください (`{name} : {ty};`)"
         ),
     })
+}
+
+/// Why a declaration does not run on the soft PLC, in Japanese.
+fn declaration_ja(why: &DeclarationWhy) -> String {
+    use crate::said_iec_ja::{address_ja, literal_ja};
+    match why {
+        DeclarationWhy::NotIecName => {
+            "IEC の名前ではありません (英字か _ で始め、英数字と _ で書きます)".into()
+        }
+        DeclarationWhy::NoType => "型がありません".into(),
+        DeclarationWhy::UnknownType(t) => format!("型 {t} はソフトPLCにありません"),
+        DeclarationWhy::Address(e) => address_ja(e),
+        DeclarationWhy::Initial(e) => literal_ja(e),
+        DeclarationWhy::Section(scope) => {
+            format!("ファンクションブロックの {scope} にはまだ対応していません")
+        }
+    }
 }
 
 /// An element the soft PLC does not run, with why when the kind says.
@@ -120,10 +140,14 @@ pub fn vendor_logic_ja() -> String {
 
 #[cfg(test)]
 pub(crate) mod tests {
-    use engine::formats::plcopen::soft::error::SoftError;
+    use engine::formats::plcopen::soft::error::{DeclarationWhy as D, SoftError};
     use engine::formats::plcopen::{BoxProblem, ImportError};
     use engine::iec::functions::FunctionError;
+    use engine::iec::{AddressError, LiteralError};
     use engine::ladder::block::BoxError;
+    use engine::ladder::variables::VariableError;
+    use engine::softplc::program::{CallWhy, TypeWhy};
+    use engine::softplc::LoadError;
 
     /// One of each soft PLC refusal [`super::soft_ja`] says, as the
     /// import gives it.
@@ -155,6 +179,16 @@ pub(crate) mod tests {
             SoftError::Follows,
             SoftError::VendorLogic("it is wired into the network".into()),
             SoftError::UndeclaredInstance(s(), s()),
+            SoftError::BodySection("VAR_INPUT".into()),
+            SoftError::Load(LoadError::Type(TypeWhy::SelectOneType)),
+            SoftError::Load(LoadError::Call(CallWhy::BodySteps)),
+            SoftError::Load(LoadError::Undeclared(s())),
+            SoftError::Declaration(s(), D::NotIecName),
+            SoftError::Declaration(s(), D::NoType),
+            SoftError::Declaration(s(), D::UnknownType("BYTE".into())),
+            SoftError::Declaration(s(), D::Address(AddressError::NoArea(s()))),
+            SoftError::Declaration(s(), D::Initial(LiteralError::BadNumber(s()))),
+            SoftError::Declaration(String::new(), D::Section("inOutVars".into())),
         ];
         let mut all: Vec<ImportError> = soft.into_iter().map(ImportError::Soft).collect();
         let boxes = [
@@ -176,6 +210,14 @@ pub(crate) mod tests {
             "it is wired into the network".into(),
         ));
         all.extend(every_gate());
+        let variables = [
+            VariableError::BadName(s()),
+            VariableError::Address(s(), AddressError::BitOutOfRange(s())),
+            VariableError::Initial(s(), LiteralError::Empty),
+            VariableError::BlockWithValue(s(), "TON".into()),
+            VariableError::UnknownType(s(), s()),
+        ];
+        all.extend(variables.into_iter().map(ImportError::SoftVariable));
         all
     }
 

@@ -336,3 +336,19 @@ fn import_warnings_are_said_in_japanese_too_at_their_lines() {
         assert!(ja.chars().any(|c| c > '\u{3000}'), "{english}: {ja:?}");
     }
 }
+
+#[test]
+fn a_soft_plc_declaration_refused_is_said_in_japanese_too_at_its_line() {
+    // Issue #49: the declaration's reason is a kind (an address refused
+    // here), said in Japanese, not the engine's English words.
+    let text = TIMER.replace(r#"address="%QX0.0""#, r#"address="%QX0.9""#);
+    let reply = import_on(MachineId::SoftPlc, &text);
+    assert!(reply.ladder.is_none(), "{reply:?}");
+    let said = reply.said.first().expect("an error");
+    assert_eq!(said.at, "t.xml:52", "{said:?}");
+    assert_eq!(
+        said.ja.as_deref(),
+        Some("変数 lamp: `%QX0.9`: ビット番号は 0-7 です"),
+        "{reply:?}"
+    );
+}

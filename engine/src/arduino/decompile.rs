@@ -4,7 +4,7 @@
 use super::isa::{io_name, Op, ERASED};
 use super::Program;
 use crate::ladder::decompile::stack::Stack;
-use crate::ladder::decompile::{contact, drawn, DecompileError, StepError};
+use crate::ladder::decompile::{contact, drawn, DecompileError, StepError, StepWhy};
 use crate::ladder::element::Element;
 use crate::ladder::grid::Ladder;
 
@@ -44,15 +44,13 @@ pub fn decompile(p: &Program) -> Result<Ladder, DecompileError> {
             Some(Op::Jump) => {
                 return Err(DecompileError::Step(StepError {
                     step,
-                    message: format!(
-                        "JUMP {operand} has no ladder form: only a final JUMP 0 (or END)"
-                    ),
+                    why: StepWhy::Jump(operand),
                 }))
             }
             None => {
                 return Err(DecompileError::Step(StepError {
                     step,
-                    message: format!("word {w:04X} is no instruction"),
+                    why: StepWhy::Word(w),
                 }))
             }
         }

@@ -3,7 +3,7 @@
 
 use super::{Bit, Instruction as I, Program, Word};
 use crate::ladder::decompile::stack::Stack;
-use crate::ladder::decompile::{contact, drawn, DecompileError, StepError};
+use crate::ladder::decompile::{contact, drawn, DecompileError, StepError, StepWhy};
 use crate::ladder::element::{CoilKind, Element};
 use crate::ladder::grid::Ladder;
 
@@ -46,7 +46,7 @@ pub fn decompile(p: &Program) -> Result<Ladder, DecompileError> {
                 let Word::K(k) = w else {
                     return Err(DecompileError::Step(StepError {
                         step,
-                        message: "a set value from a data register has no ladder form here: use a K constant".into(),
+                        why: StepWhy::RegisterValue,
                     }));
                 };
                 let preset = u16::try_from(k).unwrap_or(0);
@@ -96,8 +96,7 @@ pub fn decompile(p: &Program) -> Result<Ladder, DecompileError> {
             I::Sets(_) | I::Rsts(_) => {
                 return Err(DecompileError::Step(StepError {
                     step,
-                    message: "SETS / RSTS drive a second device: they have no ladder form here"
-                        .into(),
+                    why: StepWhy::SecondDevice,
                 }))
             }
             I::End => break,

@@ -64,9 +64,9 @@ impl ClockSpeed {
 }
 
 /// The slowest oscillator `clock=<Hz>` accepts.
-const MIN_HZ: f64 = 0.001;
+pub const MIN_HZ: f64 = 0.001;
 /// The fastest: a 2 ns period still gives each clock phase a nanosecond.
-const MAX_HZ: f64 = 500e6;
+pub const MAX_HZ: f64 = 500e6;
 
 /// Which on-delay timer a potentiometer sets.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

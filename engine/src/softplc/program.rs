@@ -81,12 +81,12 @@ pub enum LoadError {
     UntypedAddress(String),
     /// A JMP to a label no line has.
     NoLabel(String),
-    /// The instruction needs a current result of a type it does not have
-    /// (or one not known here: after a label or a jump, start with LD).
-    Type(String),
-    /// CAL of something that is not a block instance, or a parameter it
-    /// does not have.
-    Call(String),
+    /// The instruction needs a current result or an operand of a type
+    /// it does not have.
+    Type(TypeWhy),
+    /// A call that does not fit: what is called, its texts, the
+    /// program's own blocks' limits.
+    Call(CallWhy),
     /// An instruction that needs the current result where it is not
     /// known (after a label or a jump).
     UnknownResult,
@@ -125,7 +125,8 @@ impl fmt::Display for LoadError {
                 write!(f, "{a}: the soft PLC has no byte type")
             }
             LoadError::NoLabel(l) => write!(f, "no line has the label `{l}`"),
-            LoadError::Type(why) | LoadError::Call(why) => f.write_str(why),
+            LoadError::Type(why) => why.fmt(f),
+            LoadError::Call(why) => why.fmt(f),
             LoadError::UnknownResult => f.write_str(
                 "the current result is not known here (after a label or a jump): start with LD",
             ),
@@ -353,7 +354,7 @@ impl Program {
             Operand::Number(v) => Ok(Program::number(*v)),
             Operand::Text(t) => string_value(t)
                 .map(Src::Const)
-                .map_err(|e| LoadError::Type(e.to_string())),
+                .map_err(|e| LoadError::Type(TypeWhy::Text(e))),
             // `instance.output`: only a block's outputs are read so (the
             // front ends' `c0.count` names reach inside; IL does not).
             Operand::Name(n) if n.contains('.') => match n.split_once('.') {
@@ -362,9 +363,7 @@ impl Program {
             },
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
-                Some(_) => Err(LoadError::Type(format!(
-                    "`{n}` is a block instance, not a value: read one of its outputs (`{n}.Q`)"
-                ))),
+                Some(_) => Err(LoadError::Type(TypeWhy::BlockAsValue(n.clone()))),
                 None => Err(LoadError::Undeclared(n.clone())),
             },
             Operand::Address(a) => {
@@ -458,20 +457,18 @@ impl Program {
     fn store(&mut self, line: &Line, flow: &mut Flow) -> Result<Step, LoadError> {
         need_cr(flow.cr)?;
         let Some(Src::Slot(slot)) = self.operand(line)? else {
-            return Err(LoadError::Type(
-                "a value is stored in a variable, not a literal".into(),
-            ));
+            return Err(LoadError::Type(TypeWhy::StoreLiteral));
         };
         let what = line.operand.as_ref().map_or(String::new(), describe);
         self.writable(slot, &what)?;
         let target = self.values[slot].data_type();
         let bool_only = line.operator != Operator::St;
         if bool_only && target != DataType::Bool {
-            return Err(LoadError::Type(format!(
-                "{} sets or resets a BOOL: {what} is {}",
-                line.operator.mnemonic(),
-                target.name()
-            )));
+            return Err(LoadError::Type(TypeWhy::SetBool {
+                op: line.operator.mnemonic(),
+                what,
+                is: target,
+            }));
         }
         self.settle(flow, target);
         let t = need_cr(flow.cr)?;
@@ -479,11 +476,11 @@ impl Program {
             invertible("STN", t)?;
         }
         if target != t {
-            return Err(LoadError::Type(format!(
-                "the current result is {}, {what} needs {}",
-                t.name(),
-                target.name()
-            )));
+            return Err(LoadError::Type(TypeWhy::Store {
+                current: t,
+                what,
+                needs: target,
+            }));
         }
         Ok(match line.operator {
             Operator::St => Step::St(slot, line.negated),
@@ -545,6 +542,10 @@ mod lines;
 mod outputs;
 mod said;
 mod user;
+mod why;
+
+pub use user::{MAX_BLOCK_NESTING, MAX_BODY_STEPS, MAX_INSTANCES, MAX_INSTANCE_VARIABLES};
+pub use why::{CallWhy, TypeWhy};
 
 /// A section's declarations and IL lines (`blocks`: the types the
 /// text's own function blocks give).
@@ -573,3 +574,5 @@ impl crate::iec::il::IlSource for Program {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_english;

@@ -162,6 +162,12 @@ fn own_ja(e: &Own) -> String {
     if let Some(said) = asm_ja(e) {
         return said;
     }
+    if let Some(e) = e.get::<minasec::SettingError>() {
+        return super::settings::minasec_setting_ja(e);
+    }
+    if let Some(e) = e.get::<io86a::peripherals::SettingError>() {
+        return super::settings::io86a_setting_ja(e);
+    }
     let element = if let Some(e) = e.get::<minasec::isa::OperandError>() {
         engine::ladder::target::ElementError::Minasec(e.clone())
     } else if let Some(e) = e.get::<io86a::isa::OperandError>() {

@@ -1,14 +1,13 @@
 //! The editor's refusals and a rung's wiring problems in Japanese.
 
-use engine::iec::{AddressError, LiteralError};
 use engine::ladder::edit::{
     ClipError, EditError, ReplaceError, VariableEditError, MAX_COLUMNS, MAX_ROWS,
 };
 use engine::ladder::problem::RungProblem;
-use engine::ladder::variables::VariableError;
 use engine::limits::{MAX_INPUT_BYTES, MAX_NESTING, MAX_RUNG_CELLS};
 
 use super::super::engine::element_ja;
+use files_worker::said_iec_ja::variable_ja;
 
 /// An edit's refusal in Japanese.
 pub fn edit_ja(e: &EditError) -> String {
@@ -74,69 +73,6 @@ fn variable_edit_ja(e: &VariableEditError) -> String {
         VariableEditError::UseNoLongerFits(e) => format!(
             "使っている箇所に合わなくなります: {}",
             super::super::engine::ladder_error(super::super::Lang::Ja, e)
-        ),
-    }
-}
-
-/// A soft PLC ladder's declaration refused, in Japanese.
-pub fn variable_ja(e: &VariableError) -> String {
-    match e {
-        VariableError::BadName(n) => {
-            format!("`{n}` は名前ではありません (英字か _ で始め、英数字と _ で書きます)")
-        }
-        VariableError::Address(n, e) => format!("{n}: {}", address_ja(e)),
-        VariableError::Initial(n, e) => format!("{n}: {}", literal_ja(e)),
-        VariableError::BlockWithValue(n, t) => {
-            format!("{n} は {t} です: アドレスも値も持ちません")
-        }
-        VariableError::UnknownType(n, t) => format!("{n}: 不明な型 `{t}`"),
-    }
-}
-
-/// An IEC address refused, in Japanese.
-pub fn address_ja(e: &AddressError) -> String {
-    match e {
-        AddressError::NoArea(a) => {
-            format!("`{a}` はアドレスではありません (%I, %Q, %M: %IX0.0, %QW2 など)")
-        }
-        AddressError::BadSize(a) => {
-            format!("`{a}`: %I, %Q, %M の後のサイズは X, B, W, D, L のどれかです")
-        }
-        AddressError::BadNumber(a) => {
-            format!("`{a}`: ビットは バイト.ビット (%IX0.1)、ワードは数 1 つ (%QW2) で書きます")
-        }
-        AddressError::BitOutOfRange(a) => format!("`{a}`: ビット番号は 0-7 です"),
-        AddressError::WrongType { address, data_type } => {
-            format!("{} 型は {address} に置けません", data_type.name())
-        }
-    }
-}
-
-/// An IEC literal refused, in Japanese.
-pub fn literal_ja(e: &LiteralError) -> String {
-    use engine::iec::data::STRING_CAPACITY;
-    match e {
-        LiteralError::Empty => "値がありません".into(),
-        LiteralError::UnknownType(t) => format!("不明な型 `{t}`"),
-        LiteralError::BadNumber(t) => format!("`{t}` は数ではありません"),
-        LiteralError::OutOfRange { text, data_type } => {
-            format!("`{text}` は {} の範囲外です", data_type.name())
-        }
-        LiteralError::BadTime(t) => {
-            format!("`{t}` は時間ではありません (T#500ms, T#1h2m3.5s など)")
-        }
-        LiteralError::WrongType { text, expected } => {
-            format!("`{text}` は {} の値ではありません", expected.name())
-        }
-        LiteralError::BadText(t) => format!(
-            "`{t}` は文字列ではありません: ' で囲み、' は $'、$ は $$ と書きます"
-        ),
-        LiteralError::TooLong(n) => format!(
-            "STRING は最大 {STRING_CAPACITY} 文字です: この文字列は {n} 文字です"
-        ),
-        LiteralError::WideChar(c) => format!(
-            "`{c}` (U+{:04X}) は 1 バイトの文字ではありません: STRING は U+0000 … U+00FF を持ちます",
-            u32::from(*c)
         ),
     }
 }

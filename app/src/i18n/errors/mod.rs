@@ -10,14 +10,18 @@
 mod arduino;
 mod avr;
 mod cases;
+mod decompile;
 mod edit;
 mod io86a;
 mod program;
+mod settings;
 mod share;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod tests_text;
+#[cfg(test)]
+mod tests_why;
 
 use engine::cases::{CaseError, Observed};
 use engine::ladder::edit::{ClipError, EditError, ReplaceError};
@@ -105,16 +109,16 @@ pub fn plc_error(lang: Lang, e: &PlcError) -> String {
     }
 }
 
-/// Why Load as ladder could not read a program text: its lines' errors
-/// in the page's language; a program with no ladder form as the engine
-/// says it (its words only).
+/// Why Load as ladder could not read a program text: its lines' errors,
+/// or the step with no ladder form, in the page's language.
 pub fn text_error(lang: Lang, e: &engine::ladder::decompile::TextError) -> String {
     use engine::ladder::decompile::TextError;
     match (lang, e) {
         (Lang::Ja, TextError::Program(problems)) => {
             cases::plc_ja(&PlcError::Program(problems.clone()))
         }
-        _ => e.to_string(),
+        (Lang::Ja, TextError::Decompile(e)) => decompile::decompile_ja(e),
+        (Lang::En, _) => e.to_string(),
     }
 }
 

@@ -426,6 +426,28 @@ fn a_soft_plc_program_error_is_said_in_japanese_from_the_loader() {
         .expect_err("LD needs an operand");
     let ja = load_error(Lang::Ja, &errors[0].error);
     assert_eq!(ja, "`LD` にはオペランドが必要です");
+    // A SEL whose two values are of two types: a kind, not the English.
+    // (tests/e2e/test_japanese.py types this text.)
+    let errors = engine::softplc::Program::load(
+        "PROGRAM p\nVAR\n  b : BOOL;\n  i : INT;\n  r : REAL;\nEND_VAR\n  LD b\n  SEL i, r\n  ST i\n  LD r\n  SHL 1\n  ST r\nEND_PROGRAM\n",
+    )
+    .expect_err("SEL of an INT and a REAL, a shift of a REAL");
+    let said: Vec<(usize, String)> = errors
+        .iter()
+        .map(|e| (e.line, load_error(Lang::Ja, &e.error)))
+        .collect();
+    assert!(
+        said.contains(&(8, "SEL の 2 つの値は同じ型にしてください".into())),
+        "{said:?}"
+    );
+    assert!(
+        said.contains(&(11, "SHL, SHR, ROL, ROR は整数を整数ぶんシフトします".into())),
+        "{said:?}"
+    );
+    assert_eq!(
+        load_error(Lang::En, &errors[0].error),
+        "SEL's two values have one type"
+    );
 }
 
 #[test]

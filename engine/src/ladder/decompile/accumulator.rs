@@ -1,7 +1,7 @@
 //! The accumulator walk shared by MINASEC-U and the AVR PLC: `LD` starts
 //! a condition, `AND` / `OR` grow it, each store is an output of the rung.
 
-use super::{add_output, close_rung, contact, Part, StepError};
+use super::{add_output, close_rung, contact, Part, StepError, StepWhy};
 use crate::ladder::compile::negate;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::net::{Net, RungLogic};
@@ -36,7 +36,7 @@ impl Acc {
             let Some((d, inv)) = self.anchor.clone() else {
                 return Err(StepError {
                     step,
-                    message: "the result is used again after outputs none of which holds it: store it in a relay first".into(),
+                    why: StepWhy::UsedAgain,
                 });
             };
             self.flush();
@@ -44,7 +44,7 @@ impl Acc {
         }
         self.a.take().ok_or(StepError {
             step,
-            message: "no LD before this step".into(),
+            why: StepWhy::NoLoad,
         })
     }
 

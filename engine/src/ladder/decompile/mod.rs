@@ -21,6 +21,9 @@ use std::fmt;
 pub(crate) mod accumulator;
 mod il;
 pub(crate) mod stack;
+mod step_why;
+
+pub use step_why::StepWhy;
 
 use super::element::{ContactKind, Element};
 use super::grid::{Ladder, Pos};
@@ -33,13 +36,13 @@ use crate::MachineId;
 pub struct StepError {
     /// The step.
     pub step: usize,
-    /// What cannot be drawn.
-    pub message: String,
+    /// Why it cannot be drawn.
+    pub why: StepWhy,
 }
 
 impl fmt::Display for StepError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "step {}: {}", self.step, self.message)
+        write!(f, "step {}: {}", self.step, self.why)
     }
 }
 
@@ -167,9 +170,7 @@ impl Part {
         if depth > MAX_NESTING {
             return Err(StepError {
                 step,
-                message: format!(
-                    "blocks nest more than {MAX_NESTING} deep here: a ladder cannot draw it (docs/limits.md)"
-                ),
+                why: StepWhy::TooDeep,
             });
         }
         let net = if and {
@@ -214,7 +215,7 @@ pub(crate) fn add_output<T>(
     if !open {
         return Err(StepError {
             step,
-            message: "an output with no LD before it".into(),
+            why: StepWhy::OutputFirst,
         });
     }
     if anchor.is_none() {
@@ -223,3 +224,5 @@ pub(crate) fn add_output<T>(
     outputs.push(e);
     Ok(())
 }
+#[cfg(test)]
+mod tests_english;

@@ -1,7 +1,7 @@
 //! The block-stack walk shared by IO86A and the Arduino sketch: `LD`
 //! opens a block, `ORB` / `ANB` join the top two, outputs close the rung.
 
-use super::{add_output, close_rung, contact, Part, StepError};
+use super::{add_output, close_rung, contact, Part, StepError, StepWhy};
 use crate::ladder::element::Element;
 use crate::ladder::net::{Net, RungLogic};
 
@@ -49,7 +49,7 @@ impl Stack {
             let Some(d) = self.anchor.clone() else {
                 return Err(StepError {
                     step,
-                    message: "the rung goes on after outputs none of which holds its result".into(),
+                    why: StepWhy::AfterOutputs,
                 });
             };
             self.flush();
@@ -57,7 +57,7 @@ impl Stack {
         }
         let cur = self.cur.take().ok_or(StepError {
             step,
-            message: "no LD before this step".into(),
+            why: StepWhy::NoLoad,
         })?;
         self.cur = Some(cur.join(Part::of(n), and, step)?);
         Ok(())
@@ -67,7 +67,7 @@ impl Stack {
         let (Some(a), Some(b)) = (self.blocks.pop(), self.cur.take()) else {
             return Err(StepError {
                 step,
-                message: "ORB / ANB needs two blocks".into(),
+                why: StepWhy::TwoBlocks,
             });
         };
         self.cur = Some(a.join(b, and, step)?);

@@ -2,7 +2,7 @@
 //! name, typed), or of an instance of the program's own blocks.
 
 use super::check::find_pin;
-use super::{LoadError, Named, Program, Src, Step};
+use super::{CallWhy, LoadError, Named, Program, Src, Step, TypeWhy};
 use crate::iec::data::{Data, DataType};
 use crate::iec::il::{Line, Operand};
 use crate::iec::pins::ldmicro::text_input;
@@ -23,7 +23,7 @@ impl Program {
             return Err(LoadError::NeedsBool("CALC"));
         }
         let Some(Operand::Name(name)) = &line.operand else {
-            return Err(LoadError::Call("CAL needs a block instance".into()));
+            return Err(LoadError::Call(CallWhy::NeedsInstance));
         };
         let block = match self.by_name.get(&name.to_ascii_uppercase()) {
             Some(&Named::Block(block)) => block,
@@ -65,12 +65,20 @@ impl Program {
         value: &Operand,
     ) -> Result<(), LoadError> {
         let Operand::Text(text) = value else {
-            return Err(LoadError::Type(format!("{kind}'s {pin} is a text: '…'")));
+            return Err(LoadError::Type(TypeWhy::TextInput {
+                block: kind.to_string(),
+                pin: pin.to_string(),
+            }));
         };
-        let wrong = |e: &dyn std::fmt::Display| LoadError::Call(format!("{pin}: {e}"));
+        let pin_ = pin.to_string();
         let instance = &mut self.blocks[block];
         let before = if kind == "LD_STRING" {
-            let printf = Printf::parse(text).map_err(|e| wrong(&e))?;
+            let printf = Printf::parse(text).map_err(|error| {
+                LoadError::Call(CallWhy::Printf {
+                    pin: pin_.clone(),
+                    error,
+                })
+            })?;
             let before = instance
                 .printing
                 .as_ref()
@@ -80,16 +88,21 @@ impl Program {
                 .get_or_insert_with(|| Box::new(Printing::new(printf)));
             before
         } else {
-            let format = Format::parse(text).map_err(|e| wrong(&e))?;
+            let format = Format::parse(text).map_err(|error| {
+                LoadError::Call(CallWhy::Format {
+                    pin: pin_.clone(),
+                    error,
+                })
+            })?;
             let before = instance.format.as_ref().map(|f| f.text().to_string());
             instance.format.get_or_insert_with(|| Arc::new(format));
             before
         };
         match before {
-            Some(b) if b != *text => Err(LoadError::Call(format!(
-                "{} already has another text: one {pin} for each instance",
-                self.block_names[block].0
-            ))),
+            Some(b) if b != *text => Err(LoadError::Call(CallWhy::TextTwice {
+                instance: self.block_names[block].0.clone(),
+                pin: pin_,
+            })),
             _ => Ok(()),
         }
     }
@@ -136,10 +149,11 @@ impl Program {
     ) -> Result<Src, LoadError> {
         let src = self.fitted(value, want, 0)?;
         if self.type_of(&src) != want {
-            return Err(LoadError::Type(format!(
-                "{owner}'s {pin} is a {}",
-                want.name()
-            )));
+            return Err(LoadError::Type(TypeWhy::Pin {
+                block: owner.to_string(),
+                pin: pin.to_string(),
+                is: want,
+            }));
         }
         Ok(src)
     }
@@ -154,14 +168,15 @@ impl Program {
         t: DataType,
     ) -> Result<usize, LoadError> {
         let Src::Slot(slot) = self.slot(&Operand::Name(target.to_string()))? else {
-            return Err(LoadError::Call(format!("`{target}` is not a variable")));
+            return Err(LoadError::Call(CallWhy::NotVariable(target.to_string())));
         };
         self.writable(slot, target)?;
         if self.values[slot].data_type() != t {
-            return Err(LoadError::Type(format!(
-                "{owner}'s {pin} is a {}",
-                t.name()
-            )));
+            return Err(LoadError::Type(TypeWhy::Pin {
+                block: owner.to_string(),
+                pin: pin.to_string(),
+                is: t,
+            }));
         }
         Ok(slot)
     }

@@ -4,7 +4,7 @@
 
 use super::check::need_cr;
 use super::flex::Flow;
-use super::{LoadError, Program, Step};
+use super::{LoadError, Program, Step, TypeWhy};
 use crate::iec::data::DataType;
 use crate::iec::il::{Function, Line, Operand};
 
@@ -28,17 +28,17 @@ impl Program {
             .enumerate()
             .map(|(i, a)| (Some(i), a))
             .collect();
-        let wrong = |why: String| Err(LoadError::Type(why));
+        let wrong = |why: TypeWhy| Err(LoadError::Type(why));
         match f {
             Function::Neg if matches!(t, DataType::Bool | DataType::String) => {
-                return wrong("NEG needs a number".into())
+                return wrong(TypeWhy::NegNumber)
             }
             // The result is the current result's type: its untyped
             // literals stay untyped.
             Function::Neg | Function::Move => {}
             Function::Shl | Function::Shr | Function::Rol | Function::Ror => {
                 if t.bits().is_none() || self.type_of(&args[0]).bits().is_none() {
-                    return wrong("SHL, SHR, ROL and ROR shift an integer by an integer".into());
+                    return wrong(TypeWhy::ShiftIntegers);
                 }
             }
             Function::Min | Function::Max | Function::Limit => {
@@ -52,18 +52,12 @@ impl Program {
             Function::Sel => self.select(flow, line, &placed, &mut args)?,
             Function::Convert { from, to } => {
                 if from == DataType::String || to == DataType::String {
-                    return wrong(
-                        "conversions to and from STRING do not run on the soft PLC yet".into(),
-                    );
+                    return wrong(TypeWhy::StringConversion);
                 }
                 self.settle(flow, from);
                 let t = need_cr(flow.cr)?;
                 if from != t {
-                    return wrong(format!(
-                        "the current result is {}, not {}",
-                        t.name(),
-                        from.name()
-                    ));
+                    return wrong(TypeWhy::Convert { current: t, from });
                 }
                 flow.flex.clear();
                 flow.cr = Some(to);
@@ -82,15 +76,13 @@ impl Program {
         args: &mut [super::Src],
     ) -> Result<(), LoadError> {
         if need_cr(flow.cr)? != DataType::Bool || !flow.flex.is_empty() {
-            return Err(LoadError::Type(
-                "SEL's first input (the current result) is a BOOL".into(),
-            ));
+            return Err(LoadError::Type(TypeWhy::SelectBool));
         }
         let mut own = Flow::default();
         let t = self.join(&mut own, line, placed, args)?;
         flow.late.append(&mut own.late);
         if args.iter().any(|a| self.type_of(a) != t) {
-            return Err(LoadError::Type("SEL's two values have one type".into()));
+            return Err(LoadError::Type(TypeWhy::SelectOneType));
         }
         flow.cr = Some(t);
         flow.flex = own.flex;

@@ -15,7 +15,7 @@ use std::collections::HashMap;
 
 use super::flex::{becomes, Flex, Flow, Pending};
 use super::said::{self, Said};
-use super::{Errors, LoadError, Program, Step};
+use super::{Errors, LoadError, Program, Step, TypeWhy};
 use crate::error::Located;
 use crate::iec::data::DataType;
 use crate::iec::il::{Line, Operator};
@@ -228,13 +228,12 @@ impl Program {
         if way.cr == Some(t) {
             return Ok(());
         }
-        let here = way.cr.map_or("not known", DataType::name);
-        Err(LoadError::Type(format!(
-            "line {}, after the label `{}`, uses the current result as {}; this jump brings {here}: make them one type or start there with LD",
-            passed.at,
-            passed.label,
-            t.name()
-        )))
+        Err(LoadError::Type(TypeWhy::JumpBrings {
+            line: passed.at,
+            label: passed.label.clone(),
+            used: t,
+            brings: way.cr,
+        }))
     }
 
     /// The current result at a label, from what `came` there; why the
@@ -259,11 +258,10 @@ impl Program {
         let untyped = came.iter().find(|w| !w.flex.is_empty() && !becomes(t));
         let other = typed.find(|&u| u != t).or(untyped.and_then(|w| w.cr));
         if let Some(u) = other {
-            return Some(LoadError::Type(format!(
-                "the current result reaches the label `{label}` as {} and as {}: make them one type (*_TO_*) or start with LD",
-                t.name(),
-                u.name()
-            )));
+            return Some(LoadError::Type(TypeWhy::LabelTypes {
+                label: label.to_string(),
+                types: (t, u),
+            }));
         }
         for w in came.into_iter().filter(|w| !w.flex.is_empty()) {
             let mut f = Flow {

@@ -6,7 +6,7 @@
 //! Outputs are read, never written.
 
 use super::check::find_pin;
-use super::{LoadError, Named, Program, Src, Step};
+use super::{CallWhy, LoadError, Named, Program, Src, Step, TypeWhy};
 use crate::iec::pins::{inputs, outputs};
 use crate::runtime::instance::Instance;
 
@@ -15,9 +15,11 @@ use crate::runtime::instance::Instance;
 /// the soft PLC gives inputs in the CAL, which says so.
 fn no_output(kind: &str, instance: &str, pin: &str, input: bool) -> LoadError {
     if input {
-        return LoadError::Call(format!(
-            "`{instance}.{pin}`: {pin} is an input of {kind}; the soft PLC gives a block's inputs in its CAL (CAL {instance}({pin} := …)) and reads only its outputs"
-        ));
+        return LoadError::Call(CallWhy::InputRead {
+            instance: instance.to_string(),
+            pin: pin.to_string(),
+            block: kind.to_string(),
+        });
     }
     LoadError::NoPin {
         block: kind.to_string(),
@@ -59,9 +61,10 @@ impl Program {
                         no_output(ty, instance, pin, input)
                     })
             }
-            Some(Named::Slot(_)) => Err(LoadError::Type(format!(
-                "`{instance}` is not a block instance: `{instance}.{pin}` reads a block's output"
-            ))),
+            Some(Named::Slot(_)) => Err(LoadError::Type(TypeWhy::NotInstance {
+                name: instance.to_string(),
+                pin: pin.to_string(),
+            })),
             None => Err(LoadError::Undeclared(instance.to_string())),
         }
     }
@@ -75,9 +78,7 @@ impl Program {
                 .any(|u| u.outputs.iter().any(|&(_, s)| s == slot))
         };
         if (what.contains('.') && own()) || self.shadows.iter().any(|s| s.2 == slot) {
-            return Err(LoadError::Type(format!(
-                "`{what}` is a block's output: it is read, not written"
-            )));
+            return Err(LoadError::Type(TypeWhy::ReadOnly(what.to_string())));
         }
         Ok(())
     }

@@ -7,7 +7,7 @@
 
 use std::collections::HashMap;
 
-use super::{Errors, LoadError, Named, Program, Step};
+use super::{CallWhy, Errors, LoadError, Named, Program, Step};
 use crate::error::Located;
 use crate::iec::il::Line;
 use crate::iec::vars::Direction;
@@ -16,19 +16,19 @@ use crate::iec::vars::Variable;
 
 /// How deeply instances may hold instances (a block holding an instance
 /// of itself would never end).
-pub(crate) const MAX_BLOCK_NESTING: usize = 8;
+pub const MAX_BLOCK_NESTING: usize = 8;
 
 /// Most instances of the program's own blocks, and most steps their
 /// bodies may add in all (each instance has its own copy): a text that
 /// nests ten instances eight deep is refused, not built.
-pub(crate) const MAX_INSTANCES: usize = 10_000;
-pub(crate) const MAX_BODY_STEPS: usize = 2_000_000;
+pub const MAX_INSTANCES: usize = 10_000;
+pub const MAX_BODY_STEPS: usize = 2_000_000;
 
 /// Most variables (values and block instances) the instances of the
 /// program's own blocks may hold in all: counted before any is made, so
 /// a short text of nested instances is refused, not built until memory
 /// runs out.
-pub(crate) const MAX_INSTANCE_VARIABLES: u64 = 200_000;
+pub const MAX_INSTANCE_VARIABLES: u64 = 200_000;
 
 /// One of the program's own function blocks as read.
 #[derive(Clone, Debug, PartialEq)]
@@ -85,15 +85,13 @@ impl Program {
         depth: usize,
     ) -> Result<usize, LoadError> {
         if self.instances.len() >= MAX_INSTANCES {
-            return Err(LoadError::Call(format!(
-                "{shown}: more than {MAX_INSTANCES} instances of the program's own blocks (docs/limits.md)"
-            )));
+            return Err(LoadError::Call(CallWhy::Instances(shown.to_string())));
         }
         if depth >= MAX_BLOCK_NESTING {
-            return Err(LoadError::Call(format!(
-                "{shown}: function blocks hold instances more than {MAX_BLOCK_NESTING} deep (does {} hold itself?)",
-                self.user_types[ty].name
-            )));
+            return Err(LoadError::Call(CallWhy::Nesting {
+                name: shown.to_string(),
+                holds: Some(self.user_types[ty].name.clone()),
+            }));
         }
         let vars = self.user_types[ty].vars.clone();
         let outer = std::mem::take(&mut self.by_name);
@@ -132,12 +130,7 @@ impl Program {
         for u in 0..self.instances.len() {
             if self.steps.len() - program > MAX_BODY_STEPS {
                 let t = &self.user_types[self.instances[u].ty];
-                errors.push(Located::new(
-                    t.line,
-                    LoadError::Call(format!(
-                        "the blocks' bodies need more than {MAX_BODY_STEPS} steps for their instances (docs/limits.md)"
-                    )),
-                ));
+                errors.push(Located::new(t.line, LoadError::Call(CallWhy::BodySteps)));
                 return;
             }
             self.entries.push(self.steps.len());
@@ -173,27 +166,22 @@ impl Program {
             if size.height > MAX_BLOCK_NESTING {
                 return Err(Located::new(
                     *line,
-                    LoadError::Call(format!(
-                        "{}: function blocks hold instances more than {MAX_BLOCK_NESTING} deep",
-                        v.name
-                    )),
+                    LoadError::Call(CallWhy::Nesting {
+                        name: v.name.clone(),
+                        holds: None,
+                    }),
                 ));
             }
             variables = variables.saturating_add(size.variables);
             instances = instances.saturating_add(size.instances);
             let over = if instances > MAX_INSTANCES as u64 {
-                format!("more than {MAX_INSTANCES} instances of the program's own blocks")
+                CallWhy::Instances(v.name.clone())
             } else if variables > MAX_INSTANCE_VARIABLES {
-                format!(
-                    "the instances of the program's own blocks would hold more than {MAX_INSTANCE_VARIABLES} variables"
-                )
+                CallWhy::Variables(v.name.clone())
             } else {
                 continue;
             };
-            return Err(Located::new(
-                *line,
-                LoadError::Call(format!("{}: {over} (docs/limits.md)", v.name)),
-            ));
+            return Err(Located::new(*line, LoadError::Call(over)));
         }
         Ok(())
     }
@@ -225,10 +213,10 @@ impl Program {
             if inside.contains(&inner) {
                 return Err(Located::new(
                     line,
-                    LoadError::Call(format!(
-                        "{}: function blocks hold instances more than {MAX_BLOCK_NESTING} deep (does {} hold itself?)",
-                        v.name, self.user_types[inner].name
-                    )),
+                    LoadError::Call(CallWhy::Nesting {
+                        name: v.name.clone(),
+                        holds: Some(self.user_types[inner].name.clone()),
+                    }),
                 ));
             }
             let s = self.size(inner, sizes, inside)?;

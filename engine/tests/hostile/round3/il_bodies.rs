@@ -272,3 +272,65 @@ fn a_section_word_in_an_il_body_is_refused_at_its_line() {
     assert_eq!(got[0].0, line, "{got:?}");
     assert!(got[0].1.starts_with("`VAR_INPUT` in an IL body"), "{got:?}");
 }
+
+/// Each error of `BODIES` with `from` replaced by `to`, in English.
+fn project_refused(from: &str, to: &str) -> Vec<String> {
+    assert!(BODIES.contains(from), "{from}");
+    let bad = BODIES.replacen(from, to, 1);
+    Document::read(&bad)
+        .and_then(|document| document.soft_program(None))
+        .expect_err("refused")
+        .iter()
+        .map(|e| e.error.to_string())
+        .collect()
+}
+
+#[test]
+fn a_projects_declarations_and_generated_program_are_refused_as_before() {
+    // The command line's English, exactly: the reasons are kinds now
+    // (issue #49), said in Japanese by the page.
+    let late = r#"<variable name="late" address="%QX0.1"><type><BOOL/></type></variable>"#;
+    let cases = [
+        (
+            r#"<variable name="1late" address="%QX0.1"><type><BOOL/></type></variable>"#,
+            "variable 1late: not an IEC name".to_string(),
+        ),
+        (
+            r#"<variable name="late" address="%QX0.1"></variable>"#,
+            "variable late: no type".to_string(),
+        ),
+        (
+            r#"<variable name="late" address="%QX0.1"><type><BYTE/></type></variable>"#,
+            "variable late: type BYTE is not one the soft PLC has (docs/soft-plc.md)".to_string(),
+        ),
+        (
+            r#"<variable name="late" address="%QZ0"><type><BOOL/></type></variable>"#,
+            format!(
+                "variable late: {}",
+                engine::iec::address::Address::parse("%QZ0").expect_err("no area")
+            ),
+        ),
+        (
+            r#"<variable name="late"><type><BOOL/></type><initialValue><simpleValue value="7"/></initialValue></variable>"#,
+            format!(
+                "variable late: {}",
+                engine::iec::parse_literal("7", Some(DataType::Bool)).expect_err("no BOOL")
+            ),
+        ),
+    ];
+    for (to, english) in cases {
+        let got = project_refused(late, to);
+        assert!(got.contains(&english), "{to}: {got:?}");
+    }
+    let got = project_refused(
+        "<outputVars>",
+        r#"<inOutVars><variable name="io"><type><INT/></type></variable></inOutVars><outputVars>"#,
+    );
+    assert!(
+        got.contains(&"variable : inOutVars in a function block is not supported yet".to_string()),
+        "{got:?}"
+    );
+    // The generated program refused by the loader: its words.
+    let got = project_refused("LD TRUE\nST late", "LD TRUE\nST n");
+    assert_eq!(got, ["the current result is BOOL, n needs INT"]);
+}

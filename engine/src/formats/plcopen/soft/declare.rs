@@ -8,6 +8,7 @@
 
 use std::collections::HashMap;
 
+use super::error::DeclarationWhy;
 use super::SoftError;
 use crate::error::Located;
 use crate::formats::plcopen::dom::Node;
@@ -261,7 +262,7 @@ fn declare(
     let at = |e: SoftError| Located::new(v.line, e);
     let name = v.attr("name").unwrap_or_default().to_string();
     if !crate::iec::is_identifier(&name) {
-        return Err(at(SoftError::Declaration(name, "not an IEC name".into())));
+        return Err(at(SoftError::Declaration(name, DeclarationWhy::NotIecName)));
     }
     let (held, type_name) = held(v, &name, own).map_err(at)?;
     let Some(soft_name) = soft_name(out, &name, scope, pou) else {
@@ -270,8 +271,12 @@ fn declare(
     let mut line = soft_name.clone();
     let address = match v.attr("address") {
         Some(text) => {
-            let a = Address::parse(text)
-                .map_err(|e| at(SoftError::Declaration(name.clone(), e.to_string())))?;
+            let a = Address::parse(text).map_err(|e| {
+                at(SoftError::Declaration(
+                    name.clone(),
+                    DeclarationWhy::Address(e),
+                ))
+            })?;
             line.push_str(&format!(" AT {a}"));
             Some(a)
         }
@@ -283,8 +288,12 @@ fn declare(
         .and_then(|i| i.child("simpleValue"))
         .and_then(|s| s.attr("value"));
     if let (Some(value), Held::Value(t)) = (initial, &held) {
-        let d = parse_literal(value, Some(*t))
-            .map_err(|e| at(SoftError::Declaration(name.clone(), e.to_string())))?;
+        let d = parse_literal(value, Some(*t)).map_err(|e| {
+            at(SoftError::Declaration(
+                name.clone(),
+                DeclarationWhy::Initial(e),
+            ))
+        })?;
         line.push_str(&format!(" := {d}"));
     }
     line.push(';');
@@ -312,7 +321,7 @@ fn held(v: &Node, name: &str, own: &OwnTypes) -> Result<(Held, String), SoftErro
     let ty = v
         .child("type")
         .and_then(|t| t.children.first())
-        .ok_or_else(|| SoftError::Declaration(name.to_string(), "no type".into()))?;
+        .ok_or_else(|| SoftError::Declaration(name.to_string(), DeclarationWhy::NoType))?;
     let written = match ty.name.as_str() {
         "derived" => ty.attr("name").unwrap_or_default(),
         other => other,
@@ -339,7 +348,7 @@ fn held(v: &Node, name: &str, own: &OwnTypes) -> Result<(Held, String), SoftErro
     } else {
         return Err(SoftError::Declaration(
             name.to_string(),
-            format!("type {type_name} is not one the soft PLC has (docs/soft-plc.md)"),
+            DeclarationWhy::UnknownType(type_name),
         ));
     };
     Ok((held, type_name))
@@ -385,7 +394,7 @@ pub(super) fn block_declarations(pou: &Node, own: &OwnTypes) -> Result<Declarati
             "outputVars" => Direction::Output,
             "localVars" | "tempVars" => Direction::Local,
             "inOutVars" | "externalVars" => {
-                let why = format!("{} in a function block is not supported yet", scope.name);
+                let why = DeclarationWhy::Section(scope.name.clone());
                 errors.push(Located::new(
                     scope.line,
                     SoftError::Declaration(String::new(), why),

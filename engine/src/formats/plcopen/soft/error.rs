@@ -3,11 +3,13 @@
 
 use std::fmt;
 
+use crate::iec::{AddressError, LiteralError};
+
 /// Why part of a project does not run on the soft PLC.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SoftError {
     /// A declaration the soft PLC cannot hold (name, why).
-    Declaration(String, String),
+    Declaration(String, DeclarationWhy),
     /// An element of a drawn body it does not run (its XML name).
     Element(String),
     /// An element without a `localId` (its XML name).
@@ -40,8 +42,10 @@ pub enum SoftError {
     /// No program the tasks run has a drawn body: each POU and its
     /// language.
     NotDrawn(String),
-    /// The generated program does not load (the loader's words).
-    Load(String),
+    /// The generated program does not load (the loader's reason).
+    Load(crate::softplc::LoadError),
+    /// A section's word (`VAR_INPUT`, `END_PROGRAM` …) in an IL body.
+    BodySection(String),
     /// A block input the block does not have (the block, the pin, the
     /// inputs it has).
     NoInput(String, String, String),
@@ -114,7 +118,11 @@ impl fmt::Display for SoftError {
                     "no program the tasks run is drawn in LD or FBD or written in IL: {pous}"
                 )
             }
-            SoftError::Load(why) => f.write_str(why),
+            SoftError::Load(why) => why.fmt(f),
+            SoftError::BodySection(word) => write!(
+                f,
+                "`{word}` in an IL body: the body holds instructions alone, its variables are the POU's interface"
+            ),
             SoftError::NoInput(block, pin, has) => {
                 write!(f, "{block} has no input `{pin}` (its inputs: {has})")
             }
@@ -135,3 +143,38 @@ impl fmt::Display for SoftError {
 }
 
 impl std::error::Error for SoftError {}
+
+/// Why the soft PLC cannot hold a declaration.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DeclarationWhy {
+    /// Its name is no IEC name.
+    NotIecName,
+    /// It has no type.
+    NoType,
+    /// A type the soft PLC has not (its name, upper case).
+    UnknownType(String),
+    /// Its address refused.
+    Address(AddressError),
+    /// Its initial value refused.
+    Initial(LiteralError),
+    /// Variables of a kind a function block cannot have yet (the
+    /// section's XML name: `inOutVars`, `externalVars`).
+    Section(String),
+}
+
+impl fmt::Display for DeclarationWhy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DeclarationWhy::NotIecName => f.write_str("not an IEC name"),
+            DeclarationWhy::NoType => f.write_str("no type"),
+            DeclarationWhy::UnknownType(t) => {
+                write!(f, "type {t} is not one the soft PLC has (docs/soft-plc.md)")
+            }
+            DeclarationWhy::Address(e) => e.fmt(f),
+            DeclarationWhy::Initial(e) => e.fmt(f),
+            DeclarationWhy::Section(scope) => {
+                write!(f, "{scope} in a function block is not supported yet")
+            }
+        }
+    }
+}

@@ -75,9 +75,7 @@ pub(super) fn write(
         last = at;
         let (line, code) = words.rewrite(raw, &mut comment);
         if let Some(word) = section_word(&code) {
-            errors.push(Located::new(at, SoftError::Load(format!(
-                "`{word}` in an IL body: the body holds instructions alone, its variables are the POU's interface"
-            ))));
+            errors.push(Located::new(at, SoftError::BodySection(word.to_string())));
             continue;
         }
         let depth = paren_depth(&code);

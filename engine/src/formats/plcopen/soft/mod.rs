@@ -332,10 +332,7 @@ impl Text {
                         .get(p.line.wrapping_sub(1))
                         .copied()
                         .unwrap_or(root);
-                    Located::new(
-                        line,
-                        ImportError::Soft(SoftError::Load(p.error.to_string())),
-                    )
+                    Located::new(line, ImportError::Soft(SoftError::Load(p.error)))
                 })
                 .collect()
         })

@@ -17,7 +17,7 @@ use crate::ladder::element::Element;
 use crate::ladder::grid::Pos;
 use crate::ladder::net::Net;
 
-use super::{bad, Walk};
+use super::{bad, StepWhy, Walk};
 
 /// The operator's IEC name when it is a binary operator a function box
 /// folds (`ADD`), or a comparison (`GT`).
@@ -89,10 +89,10 @@ impl Walk<'_> {
                 let label = text(&jump.operand).unwrap_or_default();
                 let end = (i + 2..lines.len())
                     .find(|&k| lines[k].label.as_deref() == Some(label.as_str()))
-                    .ok_or_else(|| bad(i + 1, "a jump to no label"))?;
+                    .ok_or_else(|| bad(i + 1, StepWhy::NoLabel))?;
                 let call = self
                     .function(i + 2, end)
-                    .ok_or_else(|| bad(i + 2, "no box reads so"))?;
+                    .ok_or_else(|| bad(i + 2, StepWhy::NoBoxReads))?;
                 return Ok(Some(self.place(call, end + 1, Some(p.clone()))?));
             }
         }

@@ -15,7 +15,7 @@ mod boxes;
 use std::collections::{HashMap, HashSet};
 
 use super::stack::Stack;
-use super::{contact, drawn, DecompileError, Part, StepError};
+use super::{contact, drawn, DecompileError, Part, StepError, StepWhy};
 use crate::iec::il::{Line, Operand, Operator};
 use crate::iec::vars::Kind;
 use crate::iec::vars::Variable;
@@ -89,11 +89,8 @@ pub(super) fn il_ladder(vars: &[Variable], lines: &[Line]) -> Result<Ladder, Dec
     drawn(&w.s.rungs)
 }
 
-fn bad(step: usize, message: &str) -> DecompileError {
-    DecompileError::Step(StepError {
-        step,
-        message: message.to_string(),
-    })
+fn bad(step: usize, why: StepWhy) -> DecompileError {
+    DecompileError::Step(StepError { step, why })
 }
 
 impl<'a> Walk<'a> {
@@ -119,10 +116,7 @@ impl<'a> Walk<'a> {
             _ => None,
         };
         if line.label.is_some() || line.condition.is_some() {
-            return Err(bad(
-                step,
-                "labels and conditional operators have no ladder form",
-            ));
+            return Err(bad(step, StepWhy::Labels));
         }
         let was_rail = std::mem::take(&mut self.rail);
         match (line.operator, &name, line.deferred) {
@@ -141,7 +135,7 @@ impl<'a> Walk<'a> {
                     .s
                     .cur
                     .take()
-                    .ok_or_else(|| bad(step, "no LD before this step"))?;
+                    .ok_or_else(|| bad(step, StepWhy::NoLoad))?;
                 self.s.blocks.push(cur);
                 if let Some(n) = &name {
                     self.s.cur = Some(Part::of(self.leaf(n, line.negated)));
@@ -152,7 +146,7 @@ impl<'a> Walk<'a> {
                 let and = self
                     .pending
                     .pop()
-                    .ok_or_else(|| bad(step, "`)` with no `(`"))?;
+                    .ok_or_else(|| bad(step, StepWhy::NoOpen))?;
                 self.s.join(and, step)?;
             }
             (Operator::Not, _, _) if was_rail => {
@@ -180,7 +174,7 @@ impl<'a> Walk<'a> {
                 self.s.output(coil, holds, step)?;
             }
             (Operator::Cal, Some(block), _) => self.call(step, line, block)?,
-            _ => return Err(bad(step, &format!("`{line}` has no ladder form yet"))),
+            _ => return Err(bad(step, StepWhy::Line(line.to_string()))),
         }
         Ok(step + 1)
     }
@@ -200,10 +194,7 @@ impl<'a> Walk<'a> {
     /// the ladder would lose them, and with them what they compute.
     fn no_box_lost(&self, step: usize) -> Result<(), DecompileError> {
         if self.s.boxes_without_output() {
-            return Err(bad(
-                step,
-                "a rung before this step ends with a box and no output: a ladder cannot draw it so (end the rung with LD of its power, as the compiler writes an output box, or with a coil)",
-            ));
+            return Err(bad(step, StepWhy::BoxWithoutOutput));
         }
         Ok(())
     }
@@ -213,10 +204,7 @@ impl<'a> Walk<'a> {
     /// is loaded again after it). The index of the next line.
     fn load(&mut self, step: usize, n: &str, negated: bool) -> Result<usize, DecompileError> {
         if self.power.as_deref() == Some(n) {
-            return Err(bad(
-                step,
-                "a box in a parallel branch has no ladder form here",
-            ));
+            return Err(bad(step, StepWhy::ParallelBox));
         }
         match self.stands.get(n) {
             Some(Stands::Boxed(e)) => {
@@ -268,7 +256,7 @@ impl<'a> Walk<'a> {
             .iter()
             .find(|(p, _)| p.eq_ignore_ascii_case(out_pin))
             .map(|(_, v)| v.clone())
-            .ok_or_else(|| bad(step, "a call with no power out (Q =>) has no ladder form"))?;
+            .ok_or_else(|| bad(step, StepWhy::NoPowerOut))?;
         let from_power = |v: Option<&Operand>| match v {
             Some(Operand::Literal(crate::iec::Data::Bool(true))) => true,
             Some(Operand::Name(n)) => self.power.as_deref() == Some(n.as_str()),
@@ -277,7 +265,7 @@ impl<'a> Walk<'a> {
         let stands = match kind {
             "R_TRIG" | "F_TRIG" if !from_power(input("CLK")) => {
                 let Some(clk @ (Operand::Name(_) | Operand::Address(_))) = input("CLK") else {
-                    return Err(bad(step, "an edge on a literal has no ladder form"));
+                    return Err(bad(step, StepWhy::EdgeOnLiteral));
                 };
                 let edge = if kind == "R_TRIG" {
                     ContactKind::Rising
@@ -299,10 +287,7 @@ impl<'a> Walk<'a> {
             }),
             "TON" | "TOF" | "TP" if from_power(input("IN")) && timer_shaped(line) => {
                 let Some(Operand::Literal(crate::iec::Data::Time(ns))) = input("PT") else {
-                    return Err(bad(
-                        step,
-                        "a timer's PT other than a T# literal has no ladder form here",
-                    ));
+                    return Err(bad(step, StepWhy::TimerPreset));
                 };
                 let kind = match kind {
                     "TON" => TimerKind::Ton,
@@ -319,13 +304,13 @@ impl<'a> Walk<'a> {
                 let pins = crate::iec::pins::inputs(kind);
                 let power_pin = pins.first().map_or("", |(p, _)| *p);
                 if !from_power(input(power_pin)) {
-                    return Err(bad(step, &format!("CAL {block} has no ladder form yet")));
+                    return Err(bad(step, StepWhy::Call(block.to_string())));
                 }
                 Stands::Boxed(Element::Block(boxes::called(
                     kind, block, line, power_pin, &q,
                 )))
             }
-            _ => return Err(bad(step, &format!("CAL {block} has no ladder form yet"))),
+            _ => return Err(bad(step, StepWhy::Call(block.to_string()))),
         };
         self.stands.insert(q, stands);
         Ok(())
