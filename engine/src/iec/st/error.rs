@@ -1,0 +1,105 @@
+//! Why a Structured Text source is refused: one flat list of kinds, each
+//! shown in plain English after the line and column it is found at.
+
+use std::fmt;
+
+use super::ast::Span;
+use crate::iec::literal::LiteralError;
+
+/// The deepest nesting of parentheses, calls and statements the parser
+/// follows; deeper text is refused rather than risk the stack.
+pub const MAX_DEPTH: usize = 64;
+
+/// A refusal and where it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StError {
+    /// Where the problem starts.
+    pub span: Span,
+    /// What it is.
+    pub kind: StErrorKind,
+}
+
+/// What is wrong with a Structured Text source.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StErrorKind {
+    /// A character no token starts with.
+    UnexpectedChar(char),
+    /// A `(*` comment never closed.
+    UnclosedComment,
+    /// A `'…'` string never closed on its line.
+    UnclosedString,
+    /// A literal that is not one (the text and why).
+    BadLiteral(String, LiteralError),
+    /// A typed literal whose type prefix is not a type a literal can
+    /// have (`FOO#1`).
+    BadLiteralType(String),
+    /// Something else was needed here: what, after what, and the token
+    /// found instead.
+    Expected {
+        /// What was needed (`THEN`, `an expression`).
+        what: &'static str,
+        /// Where, in words (`after the IF condition`).
+        context: &'static str,
+        /// The token found, as written (or `the end of the text`).
+        found: String,
+    },
+    /// A feature Hashigo's Structured Text leaves out (named).
+    Unsupported(&'static str),
+    /// A keyword used where a name is needed.
+    ReservedWord(String),
+    /// Nesting deeper than [`MAX_DEPTH`].
+    TooDeep,
+    /// An array bound or a repeat count that is not an integer literal,
+    /// or a range whose low bound is above its high one.
+    BadBound(String),
+    /// A positional argument after a named one.
+    PositionalAfterNamed,
+}
+
+impl fmt::Display for StError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "line {}, column {}: {}",
+            self.span.line, self.span.column, self.kind
+        )
+    }
+}
+
+impl fmt::Display for StErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            StErrorKind::UnexpectedChar(c) => write!(f, "unexpected character '{c}'"),
+            StErrorKind::UnclosedComment => write!(f, "this (* comment is never closed with *)"),
+            StErrorKind::UnclosedString => write!(f, "this string is not closed on its line"),
+            StErrorKind::BadLiteral(text, why) => write!(f, "bad literal `{text}`: {why}"),
+            StErrorKind::BadLiteralType(t) => {
+                write!(f, "`{t}#` is not a type a literal can have")
+            }
+            StErrorKind::Expected {
+                what,
+                context,
+                found,
+            } => write!(f, "expected {what} {context}, found {found}"),
+            StErrorKind::Unsupported(what) => {
+                write!(f, "{what} not supported by Hashigo's Structured Text")
+            }
+            StErrorKind::ReservedWord(w) => {
+                write!(f, "`{w}` is a keyword and cannot be used as a name")
+            }
+            StErrorKind::TooDeep => write!(
+                f,
+                "nested more than {MAX_DEPTH} levels deep (parentheses, calls or statements)"
+            ),
+            StErrorKind::BadBound(t) => {
+                write!(f, "`{t}` is not a whole number bound or count here")
+            }
+            StErrorKind::PositionalAfterNamed => write!(
+                f,
+                "a positional argument cannot follow a named one (name every argument or none)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for StError {}
