@@ -22,7 +22,8 @@ fn the_standard_table_loosest_to_tightest() {
         ("a + b * c", "(a + (b * c))"),
         ("a - b MOD c", "(a - (b MOD c))"),
         ("a * b ** c", "(a * (b ** c))"),
-        // The unary operators bind tighter than `**` in the 3rd edition.
+        // The unary operators bind tighter than `**`: the grammar reads
+        // `power_expression ::= unary_expression {'**' unary_expression}`.
         ("-2 ** 2", "((-2) ** 2)"),
         ("NOT a = b", "((NOT a) = b)"),
         ("NOT a AND b", "((NOT a) AND b)"),

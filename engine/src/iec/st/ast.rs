@@ -465,7 +465,7 @@ pub enum BinaryOp {
 
 impl BinaryOp {
     /// How tightly it binds: `OR` 1 … `**` 8 (the unary operators bind
-    /// tighter still, 9, as in the 3rd edition's table).
+    /// tighter still, 9, as the standard's grammar has it).
     pub const fn precedence(self) -> u8 {
         match self {
             BinaryOp::Or => 1,

@@ -1,4 +1,4 @@
-//! Expressions, with the standard's precedence (3rd edition, table 71),
+//! Expressions, with the standard's precedence (its grammar, B.3.1),
 //! loosest first: `OR`; `XOR`; `AND`/`&`; `=` `<>`; `<` `>` `<=` `>=`;
 //! `+` `-`; `*` `/` `MOD`; `**`; the unary `-` `+` `NOT`; then calls,
 //! variables, literals and parentheses. Operators of one level apply
