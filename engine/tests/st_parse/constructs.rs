@@ -167,7 +167,7 @@ fn calls_formal_positional_and_outputs() {
     assert_eq!(parse_body("f();").map(|s| s.len()), Ok(1));
 }
 
-const POUS: &str = "
+pub const POUS: &str = "
 TYPE
     Point : STRUCT
         x, y : INT;
@@ -195,7 +195,7 @@ function_block Counter
     VAR_IN_OUT total : DINT; END_VAR
     VAR edge : R_TRIG; p : Point := (x := 1, y := -2); END_VAR
     VAR_TEMP t : LWORD; END_VAR
-    VAR CONSTANT step : USINT := 1; END_VAR
+    VAR CONSTANT step : UDINT := 1; END_VAR
     edge(CLK := up);
     IF edge.Q THEN count := count + step; total := total + 1; END_IF;
 END_FUNCTION_BLOCK
@@ -208,9 +208,11 @@ PROGRAM Main
         v : ARRAY [-2..2] OF SINT := [5(1)];
         b : BYTE := 16#0F;
         s : STRING;
+        n : UDINT;
+        u : USINT := 1;
     END_VAR
     VAR_EXTERNAL g_run : BOOL; END_VAR
-    c(up := start, count => grid[1, 0]);
+    c(up := start, count => n);
     g_run := c.count > 10;
 END_PROGRAM
 ";

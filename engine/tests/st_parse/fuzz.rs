@@ -1,7 +1,7 @@
 //! No input makes the parser panic: random token soup, and random
 //! mutations (a token dropped, doubled or swapped) of valid programs.
 
-use engine::iec::st::{parse_body, parse_source, print_source};
+use engine::iec::st::{check_source, parse_body, parse_source, print_source};
 use proptest::prelude::*;
 
 const WORDS: [&str; 58] = [
@@ -90,7 +90,9 @@ proptest! {
     fn token_soup_never_panics(picks in prop::collection::vec(0..WORDS.len(), 0..60)) {
         let text: Vec<&str> = picks.iter().map(|&i| WORDS[i]).collect();
         let text = text.join(" ");
-        let _ = parse_source(&text);
+        if let Ok(tree) = parse_source(&text) {
+            let _ = check_source(&tree);
+        }
         let _ = parse_body(&text);
     }
 
@@ -111,6 +113,7 @@ proptest! {
         }
         let text = w.join(" ");
         if let Ok(tree) = parse_source(&text) {
+            let _ = check_source(&tree);
             // Whatever parses also prints to text that parses.
             let printed = print_source(&tree);
             prop_assert!(parse_source(&printed).is_ok(), "{}\n{}", text, printed);

@@ -4,6 +4,7 @@
 //! column, printing and parsing again gives the same tree, and no input
 //! makes the parser panic.
 
+mod check;
 mod constructs;
 mod fixtures;
 mod fuzz;

@@ -54,6 +54,53 @@ pub enum StErrorKind {
     BadBound(String),
     /// A positional argument after a named one.
     PositionalAfterNamed,
+    /// A name no declaration in scope gives.
+    UnknownName(String),
+    /// A type name that is neither elementary, declared nor a block.
+    UnknownType(String),
+    /// A name declared twice in one scope.
+    DuplicateName(String),
+    /// `x.m` where `x`'s type (given) has no member `m`.
+    NoMember {
+        /// The member asked for.
+        member: String,
+        /// The type of what it is asked of.
+        of: String,
+    },
+    /// `x[i]` where `x` is no array (`dims` 0), or with another number
+    /// of indices than its dimensions.
+    BadIndex {
+        /// The variable indexed.
+        name: String,
+        /// Its dimensions (0: not an array).
+        dims: usize,
+        /// The indices written.
+        given: usize,
+    },
+    /// A value of one type where another is needed: where, the type
+    /// needed and the type found.
+    Mismatch {
+        /// Where, in words (`the IF condition`).
+        place: &'static str,
+        /// What is needed.
+        want: String,
+        /// What was found.
+        found: String,
+    },
+    /// `EXIT` outside any loop.
+    ExitOutsideLoop,
+    /// A constant (or a block's input from outside) assigned.
+    ReadOnly(String),
+    /// A call of something that is neither a function nor a block
+    /// instance.
+    NotCallable(String),
+    /// A call's argument the callee has no input or output of.
+    NoSuchArg {
+        /// The callee.
+        callee: String,
+        /// The argument's name.
+        arg: String,
+    },
 }
 
 impl fmt::Display for StError {
@@ -98,6 +145,34 @@ impl fmt::Display for StErrorKind {
                 f,
                 "a positional argument cannot follow a named one (name every argument or none)"
             ),
+            StErrorKind::UnknownName(n) => write!(f, "`{n}` is not declared"),
+            StErrorKind::UnknownType(n) => write!(
+                f,
+                "`{n}` is not a type (an elementary type, a TYPE, a function block)"
+            ),
+            StErrorKind::DuplicateName(n) => write!(f, "`{n}` is declared twice"),
+            StErrorKind::NoMember { member, of } => write!(f, "{of} has no member `{member}`"),
+            StErrorKind::BadIndex { name, dims: 0, .. } => write!(f, "`{name}` is not an array"),
+            StErrorKind::BadIndex { name, dims, given } => {
+                write!(
+                    f,
+                    "`{name}` has {dims} dimension(s); {given} index(es) given"
+                )
+            }
+            StErrorKind::Mismatch { place, want, found } => {
+                write!(f, "{place} must be {want}, not {found}")
+            }
+            StErrorKind::ExitOutsideLoop => write!(f, "EXIT is only allowed inside a loop"),
+            StErrorKind::ReadOnly(n) => write!(f, "`{n}` is a constant and cannot be assigned"),
+            StErrorKind::NotCallable(n) => {
+                write!(
+                    f,
+                    "`{n}` is neither a function nor a function block instance"
+                )
+            }
+            StErrorKind::NoSuchArg { callee, arg } => {
+                write!(f, "`{callee}` has no input or output `{arg}`")
+            }
         }
     }
 }

@@ -8,6 +8,7 @@
 //! types (docs/soft-plc.md, "Structured Text").
 
 pub mod ast;
+mod check;
 mod decl;
 pub mod error;
 mod expr;
@@ -17,8 +18,11 @@ pub mod print;
 mod stmt;
 #[cfg(test)]
 mod tests;
+mod types;
+mod typing;
 
 pub use ast::Source;
+pub use check::check_source;
 pub use error::{StError, StErrorKind};
 pub use print::print_source;
 
