@@ -1,6 +1,7 @@
 //! Structured Text (IEC 61131-3, 3rd edition): its lexer, a hand-written
 //! recursive-descent parser and the syntax tree it builds ([`ast`]),
-//! with a printer back to text ([`print`]). This is the front end only:
+//! with a printer back to text ([`print`]) and a checker of names and
+//! types ([`check_source`]). This is the front end only:
 //! nothing here runs a program yet. Left out, and refused at their line
 //! and column: references and pointers (`REF_TO`, `REF()`, `^`), the
 //! object-oriented extensions (`METHOD`, `INTERFACE`, `EXTENDS`,
