@@ -45,6 +45,8 @@ fn literals() {
         ("T#1s200ms", Literal::Time(1_200_000_000)),
         ("TIME#1h2m", Literal::Time(3_720_000_000_000)),
         ("t#500ms", Literal::Time(500_000_000)),
+        ("T#-1s", Literal::Time(-1_000_000_000)),
+        ("T#1h_2m", Literal::Time(3_720_000_000_000)),
         ("'it$'s $$5$N'", Literal::String("it's $5\n".into())),
         ("'$41$42'", Literal::String("AB".into())),
         ("''", Literal::String(String::new())),
@@ -287,6 +289,6 @@ fn everything_round_trips() {
          IF a THEN b := 1.0E20 * LREAL#-2.5; ELSIF c THEN RETURN; ELSE EXIT; END_IF;
          FOR i := 0 TO 3 BY -1 DO a[i] := (1 - 2) - (3 - 4) ** 2 ** (1 + 1); END_FOR;
          WHILE NOT done DO REPEAT ; UNTIL TRUE END_REPEAT; END_WHILE;
-         t(IN := T#1d2h3m4s5ms6us7ns, NOT Q => y, ET => e); s := 'a$'(*$N';",
+         t(IN := T#1d2h3m4s5ms6us7ns, PT := T#-2m, NOT Q => y, ET => e); s := 'a$'(*$N';",
     );
 }

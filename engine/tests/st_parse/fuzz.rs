@@ -133,3 +133,36 @@ fn valid_programs_parse_and_round_trip() {
         super::round_trip(v);
     }
 }
+
+/// A random expression's text, parenthesised at random.
+fn expression() -> impl Strategy<Value = String> {
+    let leaf = prop::sample::select(vec![
+        "a", "b", "1", "2.5", "TRUE", "INT#-3", "T#1s", "f(x)", "a[1].m",
+    ])
+    .prop_map(str::to_string);
+    leaf.prop_recursive(5, 40, 2, |inner| {
+        let ops = prop::sample::select(vec![
+            "OR", "XOR", "AND", "&", "=", "<>", "<", ">", "<=", ">=", "+", "-", "*", "/", "MOD",
+            "**",
+        ]);
+        prop_oneof![
+            (inner.clone(), ops, inner.clone()).prop_map(|(a, op, b)| format!("{a} {op} {b}")),
+            (prop::sample::select(vec!["-", "NOT ", "+"]), inner.clone())
+                .prop_map(|(op, x)| format!("{op}{x}")),
+            inner.prop_map(|x| format!("({x})")),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Printing keeps the grouping: the printed expression parses to the
+    /// same tree, however the original was parenthesised.
+    #[test]
+    fn expressions_round_trip(text in expression()) {
+        if engine::iec::st::parse_expr(&text).is_ok() {
+            super::round_trip_body(&format!("x := {text};"));
+        }
+    }
+}

@@ -123,8 +123,17 @@ fn mistakes_say_what_was_expected_and_found() {
         ),
         (
             "x := INT#40000;",
-            "line 1, column 6: bad literal `INT#40000`",
+            "line 1, column 6: `INT#40000` is out of range for INT (-32768 … 32767)",
         ),
+        (
+            "x := SINT#-129;",
+            "line 1, column 6: `SINT#-129` is out of range for SINT (-128 … 127)",
+        ),
+        (
+            "x := %IX0.9;",
+            "line 1, column 6: `%IX0.9`: a bit number is 0-7",
+        ),
+        ("x := %Z1;", "line 1, column 6: `%Z1` is not an address"),
         (
             "x := FOO#1;",
             "line 1, column 6: `FOO#` is not a type a literal can have",

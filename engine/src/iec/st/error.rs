@@ -3,7 +3,8 @@
 
 use std::fmt;
 
-use super::ast::Span;
+use super::ast::{Elementary, Span};
+use crate::iec::address::AddressError;
 use crate::iec::literal::LiteralError;
 
 /// The deepest nesting of parentheses, calls and statements the parser
@@ -30,6 +31,10 @@ pub enum StErrorKind {
     UnclosedString,
     /// A literal that is not one (the text and why).
     BadLiteral(String, LiteralError),
+    /// A typed literal outside its type's range (the text and the type).
+    LiteralOutOfRange(String, Elementary),
+    /// A direct address (`%IX0.0`) that is not one.
+    BadAddress(AddressError),
     /// A typed literal whose type prefix is not a type a literal can
     /// have (`FOO#1`).
     BadLiteralType(String),
@@ -120,6 +125,13 @@ impl fmt::Display for StErrorKind {
             StErrorKind::UnclosedComment => write!(f, "this (* comment is never closed with *)"),
             StErrorKind::UnclosedString => write!(f, "this string is not closed on its line"),
             StErrorKind::BadLiteral(text, why) => write!(f, "bad literal `{text}`: {why}"),
+            StErrorKind::LiteralOutOfRange(text, t) => match t.range() {
+                Some((lo, hi)) => {
+                    write!(f, "`{text}` is out of range for {} ({lo} … {hi})", t.name())
+                }
+                None => write!(f, "`{text}` is not a {} value", t.name()),
+            },
+            StErrorKind::BadAddress(e) => write!(f, "{e}"),
             StErrorKind::BadLiteralType(t) => {
                 write!(f, "`{t}#` is not a type a literal can have")
             }

@@ -4,6 +4,7 @@
 
 use super::ast::{Elementary, Literal, Span};
 use super::error::{StError, StErrorKind};
+use crate::iec::address::Address;
 use crate::iec::data::Data;
 use crate::iec::literal::{parse_literal, parse_text, untyped_integer, LiteralError};
 
@@ -233,8 +234,12 @@ impl Lexer {
             '\'' => return self.string(span).map(Tok::Literal),
             '%' => {
                 self.bump();
-                let rest = self.eat_while(|c| c.is_ascii_alphanumeric() || c == '.' || c == '*');
-                return Ok(Tok::Direct(format!("%{rest}")));
+                let rest = self.eat_while(|c| c.is_ascii_alphanumeric() || c == '.');
+                let text = format!("%{rest}");
+                return match Address::parse(&text) {
+                    Ok(_) => Ok(Tok::Direct(text)),
+                    Err(e) => Err(err(span, StErrorKind::BadAddress(e))),
+                };
             }
             '"' => {
                 return Err(err(
@@ -351,8 +356,14 @@ impl Lexer {
             return self.string(span);
         }
         if matches!(upper.as_str(), "T" | "TIME") {
+            let sign = if self.peek(0) == Some('-') {
+                self.bump();
+                "-"
+            } else {
+                ""
+            };
             let body = self.eat_while(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
-            let text = format!("T#{body}");
+            let text = format!("T#{sign}{body}");
             return match parse_literal(&text, None) {
                 Ok(Data::Time(ns)) => Ok(Literal::Time(ns)),
                 Ok(_) => Err(err(
@@ -450,7 +461,10 @@ fn typed_value(
             let v = v * i128::from(sign);
             match ty.range() {
                 Some((lo, hi)) if v >= lo && v <= hi => Ok(Literal::Integer(v, Some(ty))),
-                _ => Err(wrong(LiteralError::BadNumber(text.to_string()))),
+                _ => Err(err(
+                    span,
+                    StErrorKind::LiteralOutOfRange(text.to_string(), ty),
+                )),
             }
         }
         _ => Err(wrong(LiteralError::BadNumber(text.to_string()))),
