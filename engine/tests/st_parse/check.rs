@@ -59,6 +59,18 @@ fn names_and_types_are_refused_at_their_place() {
 }
 
 #[test]
+fn direct_addresses_have_their_size_type() {
+    let text = program(
+        "a : INT; b : BOOL;",
+        "a := %IW0; b := %IX0.1;\na := %IX0.0;",
+    );
+    assert_eq!(
+        refusals(&text),
+        ["line 6, column 6: the value assigned must be INT, not BOOL"]
+    );
+}
+
+#[test]
 fn constants_are_not_written() {
     let text = "PROGRAM p VAR CONSTANT k : INT := 3; END_VAR\nk := 4;\nEND_PROGRAM";
     assert_eq!(

@@ -108,7 +108,7 @@ pub struct Decls {
 }
 
 /// The elementary type an engine `DataType` names.
-fn elem_of(name: &str) -> Ty {
+pub(super) fn elem_of(name: &str) -> Ty {
     match Elementary::from_name(name) {
         Some(e) => Ty::Elem(e),
         None if name.eq_ignore_ascii_case("STRING") => Ty::Str,

@@ -5,7 +5,8 @@ use super::ast::{
 };
 use super::check::{Checker, Scope};
 use super::error::StErrorKind;
-use super::types::Ty;
+use super::types::{elem_of, Ty};
+use crate::iec::address::Address;
 use crate::iec::functions::Function;
 
 /// Standard functions the soft PLC will have beside
@@ -101,7 +102,13 @@ impl Checker {
     pub(super) fn variable(&mut self, scope: &Scope, v: &Variable) -> (Ty, bool) {
         let (mut ty, constant) = match scope.get(&v.base.name.to_ascii_uppercase()) {
             Some(var) => (var.ty.clone(), var.constant),
-            None if v.base.name.starts_with('%') => (Ty::Unknown, false),
+            // A direct address has its size's type (%IX0.0 a BOOL).
+            None if v.base.name.starts_with('%') => {
+                let ty = Address::parse(&v.base.name)
+                    .ok()
+                    .and_then(|a| a.default_type());
+                (ty.map_or(Ty::Unknown, |t| elem_of(t.name())), false)
+            }
             None => {
                 self.refuse(v.base.span, StErrorKind::UnknownName(v.base.name.clone()));
                 return (Ty::Unknown, false);
