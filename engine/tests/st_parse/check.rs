@@ -71,11 +71,16 @@ fn direct_addresses_have_their_size_type() {
 }
 
 #[test]
-fn constants_are_not_written() {
+fn constants_and_outputs_are_not_written() {
     let text = "PROGRAM p VAR CONSTANT k : INT := 3; END_VAR\nk := 4;\nEND_PROGRAM";
     assert_eq!(
         refusals(text),
-        ["line 2, column 1: `k` is a constant and cannot be assigned"]
+        ["line 2, column 1: `k` cannot be assigned (a constant, or a block's output, which only the block writes)"]
+    );
+    let outputs = program("t : TON; b : BOOL;", "t.IN := TRUE; b := t.Q;\nt.Q := b;");
+    assert_eq!(
+        refusals(&outputs),
+        ["line 6, column 1: `t.Q` cannot be assigned (a constant, or a block's output, which only the block writes)"]
     );
 }
 

@@ -262,12 +262,10 @@ impl Checker {
         let bool_ty = Ty::Elem(super::ast::Elementary::Bool);
         match &s.kind {
             StmtKind::Assign { target, value } => {
-                let (ty, constant) = self.variable(scope, target);
-                if constant {
-                    self.refuse(
-                        target.base.span,
-                        StErrorKind::ReadOnly(target.base.name.clone()),
-                    );
+                let (ty, read_only) = self.variable(scope, target);
+                if read_only {
+                    let name = super::print::var_text(target);
+                    self.refuse(target.base.span, StErrorKind::ReadOnly(name));
                 }
                 self.expect(scope, value, &ty, "the value assigned");
             }

@@ -94,7 +94,7 @@ pub enum StErrorKind {
     },
     /// `EXIT` outside any loop.
     ExitOutsideLoop,
-    /// A constant (or a block's input from outside) assigned.
+    /// A constant, or a block instance's output, assigned (as written).
     ReadOnly(String),
     /// A call of something that is neither a function nor a block
     /// instance.
@@ -175,7 +175,10 @@ impl fmt::Display for StErrorKind {
                 write!(f, "{place} must be {want}, not {found}")
             }
             StErrorKind::ExitOutsideLoop => write!(f, "EXIT is only allowed inside a loop"),
-            StErrorKind::ReadOnly(n) => write!(f, "`{n}` is a constant and cannot be assigned"),
+            StErrorKind::ReadOnly(n) => write!(
+                f,
+                "`{n}` cannot be assigned (a constant, or a block's output, which only the block writes)"
+            ),
             StErrorKind::NotCallable(n) => {
                 write!(
                     f,

@@ -253,7 +253,7 @@ fn call_text(callee: &str, args: &[Arg]) -> String {
     format!("{callee}({})", args.join(", "))
 }
 
-fn var_text(v: &Variable) -> String {
+pub(super) fn var_text(v: &Variable) -> String {
     let mut s = v.base.name.clone();
     for step in &v.path {
         match step {

@@ -98,9 +98,10 @@ impl Checker {
         t
     }
 
-    /// A variable's type and whether it is a constant.
+    /// A variable's type and whether it is read-only (a constant, or a
+    /// block instance's output).
     pub(super) fn variable(&mut self, scope: &Scope, v: &Variable) -> (Ty, bool) {
-        let (mut ty, constant) = match scope.get(&v.base.name.to_ascii_uppercase()) {
+        let (mut ty, mut read_only) = match scope.get(&v.base.name.to_ascii_uppercase()) {
             Some(var) => (var.ty.clone(), var.constant),
             // A direct address has its size's type (%IX0.0 a BOOL).
             None if v.base.name.starts_with('%') => {
@@ -119,7 +120,11 @@ impl Checker {
                 Selector::Index(ix) => self.index(scope, v, &ty, ix),
                 Selector::Member(m) => match self.decls.members(&ty) {
                     Some(ms) => match ms.iter().find(|(n, _, _)| n.eq_ignore_ascii_case(&m.name)) {
-                        Some((_, t, _)) => t.clone(),
+                        Some((_, t, out)) => {
+                            // A block's output is its own to write.
+                            read_only |= *out && matches!(ty, Ty::Block(_));
+                            t.clone()
+                        }
                         None => {
                             let of = ty.describe();
                             self.refuse(
@@ -147,7 +152,7 @@ impl Checker {
                 },
             };
         }
-        (ty, constant)
+        (ty, read_only)
     }
 
     fn index(&mut self, scope: &Scope, v: &Variable, ty: &Ty, ix: &[Expr]) -> Ty {
