@@ -171,6 +171,15 @@ fn mistakes_say_what_was_expected_and_found() {
 }
 
 #[test]
+fn a_long_token_is_cut_in_the_message() {
+    let long = format!("x := 1 '{}';", "a".repeat(1000));
+    assert_eq!(
+        body_error(&long),
+        "line 1, column 8: expected ';' after the statement, found ''aaaaaaaaaaaaaaaaaaa…'"
+    );
+}
+
+#[test]
 fn deep_nesting_is_refused_not_a_stack_overflow() {
     let deep = format!("x := {}1{};", "(".repeat(10_000), ")".repeat(10_000));
     assert!(body_error(&deep).contains("nested more than"));

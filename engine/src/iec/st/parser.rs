@@ -84,6 +84,12 @@ impl Parser {
         let t = self.look(0);
         let found = match t.tok {
             Tok::Eof => "the end of the text".to_string(),
+            // A long token (a string, a comment-like run) is cut: the
+            // column already says where it is.
+            _ if t.text.chars().count() > 24 => {
+                let head: String = t.text.chars().take(20).collect();
+                format!("'{head}…'")
+            }
             _ => format!("'{}'", t.text),
         };
         StError {
