@@ -3,8 +3,8 @@
 //! structures, other names for a type) and the initial values.
 
 use super::ast::{
-    ArrayInit, Elementary, Init, Item, Literal, Pou, PouKind, Source, TypeDecl, TypeDef, TypeRef,
-    VarBlock, VarDecl, VarKind,
+    ArrayInit, Elementary, Init, Item, Literal, Pou, PouKind, Source, Span, TypeDecl, TypeDef,
+    TypeRef, VarBlock, VarDecl, VarKind,
 };
 use super::error::{StError, StErrorKind};
 use super::lexer::Tok;
@@ -190,11 +190,12 @@ impl Parser {
         } else {
             return Ok(TypeRef::String(None));
         };
+        let span = self.span();
         let n = self.bound()?;
         let n = u32::try_from(n)
             .ok()
             .filter(|n| *n > 0)
-            .ok_or_else(|| self.bad_bound(n))?;
+            .ok_or_else(|| Self::bad_bound(span, n))?;
         self.expect_sym(close, "the closing bracket", "after the STRING's length")?;
         Ok(TypeRef::String(Some(n)))
     }
@@ -203,11 +204,13 @@ impl Parser {
         self.expect_sym("[", "'['", "after ARRAY")?;
         let mut dims = Vec::new();
         loop {
+            let span = self.span();
             let low = self.bound()?;
             self.expect_sym("..", "'..'", "between an array's bounds")?;
             let high = self.bound()?;
             if high < low {
-                return Err(self.bad_bound(high));
+                let kind = StErrorKind::EmptyRange(low, high);
+                return Err(StError { span, kind });
             }
             dims.push((low, high));
             if self.eat_sym("]") {
@@ -237,9 +240,9 @@ impl Parser {
         }
     }
 
-    fn bad_bound(&self, n: i128) -> StError {
+    fn bad_bound(span: Span, n: i128) -> StError {
         StError {
-            span: self.span(),
+            span,
             kind: StErrorKind::BadBound(n.to_string()),
         }
     }
@@ -276,8 +279,9 @@ impl Parser {
             let repeat = matches!(self.peek(), Tok::Literal(Literal::Integer(..)))
                 && matches!(self.look(1).tok, Tok::Sym("("));
             if repeat {
+                let span = self.span();
                 let n = self.bound()?;
-                let n = u32::try_from(n).map_err(|_| self.bad_bound(n))?;
+                let n = u32::try_from(n).map_err(|_| Self::bad_bound(span, n))?;
                 self.advance();
                 let value = if self.at_sym(")") {
                     None

@@ -54,9 +54,10 @@ pub enum StErrorKind {
     ReservedWord(String),
     /// Nesting deeper than [`MAX_DEPTH`].
     TooDeep,
-    /// An array bound or a repeat count that is not an integer literal,
-    /// or a range whose low bound is above its high one.
+    /// A STRING's length below 1 or a negative repeat count.
     BadBound(String),
+    /// An array's dimension whose low bound is above its high one.
+    EmptyRange(i128, i128),
     /// A positional argument after a named one.
     PositionalAfterNamed,
     /// A name no declaration in scope gives.
@@ -150,9 +151,14 @@ impl fmt::Display for StErrorKind {
                 f,
                 "nested more than {MAX_DEPTH} levels deep (parentheses, calls or statements)"
             ),
-            StErrorKind::BadBound(t) => {
-                write!(f, "`{t}` is not a whole number bound or count here")
-            }
+            StErrorKind::BadBound(t) => write!(
+                f,
+                "`{t}` cannot be a length or a count (a STRING's length is 1 or more, a repeat count 0 or more)"
+            ),
+            StErrorKind::EmptyRange(low, high) => write!(
+                f,
+                "the range {low}..{high} is empty: its low bound is above its high one"
+            ),
             StErrorKind::PositionalAfterNamed => write!(
                 f,
                 "a positional argument cannot follow a named one (name every argument or none)"
