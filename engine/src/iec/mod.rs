@@ -7,7 +7,7 @@
 //! syntax: `VAR … END_VAR` declarations ([`vars`]), Instruction List
 //! lines ([`il`]) and both written back ([`listing`]). It names no
 //! machine and no file format: the ladder, the soft PLC, the file formats
-//! and the coming Structured Text all build on it.
+//! and Structured Text ([`st`], its front end so far) all build on it.
 
 pub mod address;
 pub(crate) mod comments;
@@ -19,6 +19,7 @@ pub mod il;
 pub mod listing;
 pub mod literal;
 pub mod pins;
+pub mod st;
 pub mod vars;
 
 pub use address::{Address, AddressError, Area, Size};
