@@ -100,7 +100,7 @@ def test_japanese_mode_names_cells_palette_and_lamps_in_japanese(driver, base_ur
     Select(el(driver, "example")).select_by_value("seed-test")
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-device") == "X00")
     label = el(driver, "cell-0-0-0").get_attribute("aria-label")
-    assert label.startswith("ラング1 1行 1列: a接点 X00"), label
+    assert label.startswith("回路1 1行 1列: a接点 X00"), label
     assert el(driver, "palette-no").get_attribute("title").startswith("a接点")
     assert "データ命令がありません" in el(driver, "palette-mov").get_attribute("title")
     assert el(driver, "lamp-Y00").get_attribute("aria-label").endswith("消灯")

@@ -176,7 +176,7 @@ def test_japanese_mode_says_import_refusals_and_ladder_problems_in_japanese(driv
     driver.refresh()
     wait(driver, lambda: "PLS/PLF" in el(driver, "problems").text, message="the refusal listed")
     problems = el(driver, "problems").text
-    assert "ラング 1、行 1、列 10: MINASEC-U には PLS/PLF 出力 がありません" in problems, problems
+    assert "回路 1、行 1、列 10: MINASEC-U には PLS/PLF 出力 がありません" in problems, problems
     assert not ENGLISH.search(problems), problems
 
 

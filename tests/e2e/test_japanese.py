@@ -74,13 +74,13 @@ def test_placement_and_wiring_errors_are_japanese(driver, base_url, artifacts):
     wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
     place(driver, Keys.F5, "X00")
     said = japanese(wait(driver, lambda: problems(driver))[0])
-    assert said.startswith("ラング 1: ラングに出力がありません"), said
+    assert said.startswith("回路 1: 回路に出力がありません"), said
     # A contact on the free row, joined to nothing: dangling, at its cell.
     place(driver, Keys.F7, "Y00")
     el(driver, "cell-0-1-2").click()
     place(driver, Keys.F5, "X01")
     said = wait(driver, lambda: problems(driver))
-    assert said[0].startswith("ラング 1、行 2、列 3: 浮いています"), said
+    assert said[0].startswith("回路 1、行 2、列 3: 浮いています"), said
     assert "浮いています" in el(driver, "cell-0-1-2").get_attribute("title")
     for p in said:
         japanese(p)

@@ -29,9 +29,9 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
         E::NoDrawnBody(pous) => format!(
             "LD か FBD の本体を持つ POU がありません ({pous}): Hashigo が読み込むのはラダー (LD) とファンクションブロック図 (FBD) です"
         ),
-        E::TooManyRungs => format!("ラングが {MAX_RUNGS} を超えています"),
+        E::TooManyRungs => format!("回路が {MAX_RUNGS} を超えています"),
         E::Drawing(t) => format!(
-            "このラングはラダーにすると {} 行 {} 列になり、上限 {MAX_RUNG_CELLS} セルを超えます",
+            "この回路はラダーにすると {} 行 {} 列になり、上限 {MAX_RUNG_CELLS} セルを超えます",
             t.rows, t.columns
         ),
         E::NoLocalId(el) => format!("<{el}> に localId がありません"),

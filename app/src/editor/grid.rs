@@ -290,7 +290,7 @@ fn label_of(
         let rung = number.get() + 1;
         match lang {
             Lang::En => format!("rung {rung}, row {row}, column {col}: {words}{state}"),
-            Lang::Ja => format!("ラング{rung} {row}行 {col}列: {words}{state}"),
+            Lang::Ja => format!("回路{rung} {row}行 {col}列: {words}{state}"),
         }
     }
 }

@@ -212,6 +212,15 @@ fn soft_box(e: &Element) -> Option<CellData> {
     }
 }
 
+/// An element in words in `lang`, as its cell says it (`coil Y00`,
+/// `コイル Y00`); in English the engine's own words.
+pub fn element_words(e: &Element, lang: Lang) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Ja => cell_words(&drawn(e), lang),
+    }
+}
+
 /// A cell's words for screen readers in `lang`: what it is, and its
 /// device's comment.
 pub fn cell_words(c: &CellData, lang: Lang) -> String {
@@ -579,5 +588,59 @@ mod words_tests {
         );
         assert_eq!(live_words(Some(false), None, Lang::Ja), ", オフ");
         assert_eq!(live_words(None, Some(false), Lang::En), "");
+    }
+}
+
+#[cfg(test)]
+mod element_words_tests {
+    use super::*;
+
+    /// Why? names each deciding cell in the page's language: in Japanese
+    /// no English word of its kind (`coil`, `contact`) is left.
+    #[test]
+    fn an_element_is_named_in_japanese_as_its_cell_says_it() {
+        let elements = [
+            Element::Contact {
+                kind: ContactKind::No,
+                device: "X00".into(),
+            },
+            Element::Contact {
+                kind: ContactKind::Nc,
+                device: "X01".into(),
+            },
+            Element::Contact {
+                kind: ContactKind::Rising,
+                device: "X02".into(),
+            },
+            Element::Coil {
+                kind: CoilKind::Normal,
+                device: "Y00".into(),
+            },
+            Element::Coil {
+                kind: CoilKind::Set,
+                device: "Y01".into(),
+            },
+            Element::TimerCoil {
+                device: "T0".into(),
+                preset: 10,
+            },
+            Element::CounterCoil {
+                device: "C0".into(),
+                preset: 3,
+            },
+        ];
+        for e in &elements {
+            let en = element_words(e, Lang::En);
+            assert_eq!(en, e.to_string());
+            let ja = element_words(e, Lang::Ja);
+            let english: Vec<&str> = ja
+                .split(|c: char| !c.is_ascii_alphabetic())
+                .filter(|w| w.len() > 1 && w.chars().all(|c| c.is_ascii_lowercase()))
+                .collect();
+            assert!(english.is_empty(), "{en} in Japanese: {ja}");
+            let device = en.rsplit(' ').next().unwrap_or_default();
+            assert!(ja.contains(device), "{ja} names {device}");
+        }
+        assert_eq!(element_words(&elements[3], Lang::Ja), "コイル Y00");
     }
 }

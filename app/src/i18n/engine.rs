@@ -28,12 +28,12 @@ pub fn ladder_error(lang: Lang, e: &LadderError) -> String {
     }
     let at = match e.pos {
         Some(p) => format!(
-            "ラング {}、行 {}、列 {}",
+            "回路 {}、行 {}、列 {}",
             e.rung,
             p.row as u128 + 1,
             p.col as u128 + 1
         ),
-        None => format!("ラング {}", e.rung),
+        None => format!("回路 {}", e.rung),
     };
     let why = match (&e.cause, &e.problem) {
         (Some(c), _) => element_ja(c),
@@ -320,7 +320,7 @@ mod tests {
             .logic(MachineId::MinasecU)
             .expect_err("no PLS on MINASEC-U");
         let ja = ladder_error(Lang::Ja, &errors[0]);
-        assert!(ja.starts_with("ラング 1、行 1、列 "), "{ja}");
+        assert!(ja.starts_with("回路 1、行 1、列 "), "{ja}");
         assert!(
             ja.contains("MINASEC-U には PLS/PLF 出力 がありません"),
             "{ja}"

@@ -199,7 +199,7 @@ pub static JA: Texts = Texts {
     why_all: "次のすべてが変わって初めて変わる:",
     why_changed: "変化したスキャン",
     why_unchanged: "記録中は変化なし",
-    why_driven_by: "駆動するラング",
+    why_driven_by: "駆動する回路",
     why_input: "入力 (外部から)",
     why_none: "実行中のラダーの接点かコイルにカーソルを置いて「なぜ?」(W)。",
     chart: "タイミングチャート",

@@ -52,7 +52,7 @@ pub const JA: KeyTexts = KeyTexts {
             "← → ↑ ↓, Home/End, PgUp/PgDn, Ctrl+Home/End",
             "カーソルの移動",
         ),
-        ("Shift + 矢印", "セルの選択 (ラングをまたぐとラング単位)"),
+        ("Shift + 矢印", "セルの選択 (回路をまたぐと回路単位)"),
         ("W", "カーソルのセルがオン・オフの理由"),
         ("F5 / F6 (c / Shift+C)", "a接点 / b接点"),
         ("Shift+F5 / Shift+F6", "OR 分岐の接点"),
@@ -66,9 +66,9 @@ pub const JA: KeyTexts = KeyTexts {
         ("Delete, Enter", "セルを消す、セルを編集する"),
         (
             "Insert / Shift+Insert, Ctrl+Delete",
-            "上 / 下にラングを挿入、ラングの削除",
+            "上 / 下に回路を挿入、回路の削除",
         ),
-        ("Alt+↑ / Alt+↓", "ラングの移動"),
+        ("Alt+↑ / Alt+↓", "回路の移動"),
         ("Ctrl+Z / Ctrl+Y (Ctrl+Shift+Z)", "元に戻す / やり直す"),
         (
             "Ctrl+C / Ctrl+X / Ctrl+V",

@@ -27,7 +27,7 @@ pub const EN: Words = Words {
 
 /// 日本語.
 pub const JA: Words = Words {
-    cell_at: "ラング {rung}、行 {row}、列 {col}",
+    cell_at: "回路 {rung}、行 {row}、列 {col}",
     row_col: "行 {row}、列 {col}",
     true_false_number: "TRUE、FALSE または数を入力してください",
     use_roles: ["接点", "コイル", "ボックス"],
@@ -58,7 +58,7 @@ mod tests {
     #[test]
     fn a_cells_place_is_said_in_each_language() {
         assert_eq!(EN.cell(1, 2, 3), "rung 1, row 2, column 3");
-        assert_eq!(JA.cell(1, 2, 3), "ラング 1、行 2、列 3");
+        assert_eq!(JA.cell(1, 2, 3), "回路 1、行 2、列 3");
         assert_eq!(JA.row_col(2, 3), "行 2、列 3");
         assert_eq!(EN.row_col(2, 3), "row 2, column 3");
         assert_eq!(crate::i18n::errors::english_run(JA.true_false_number), None);

@@ -10,7 +10,9 @@ use engine::ladder::why::{causes, drivers};
 use engine::record::Mark;
 use leptos::prelude::*;
 
+use crate::editor::model::element_words;
 use crate::editor::LadderCtx;
+use crate::i18n::Lang;
 use engine::ladder::edit::Cursor;
 
 /// One explanation as the page shows it.
@@ -19,8 +21,9 @@ pub struct WhyView {
     /// The rung (0-based) and cell asked about.
     pub rung: usize,
     pub target: Pos,
-    /// What the cell is (`coil Y00`).
+    /// What the cell is (`coil Y00`), and in Japanese.
     pub what: String,
+    pub what_ja: String,
     /// Whether power reaches it.
     pub powered: bool,
     /// Whether only all causes together would change it.
@@ -39,6 +42,7 @@ pub struct CauseView {
     pub pos: Pos,
     /// The element (`NC contact X01`).
     pub what: String,
+    pub what_ja: String,
     /// Its device and the device's value, if it reads one.
     pub device: Option<(String, engine::plc::Value)>,
     /// The scan the device last changed, if recorded.
@@ -161,7 +165,8 @@ fn explain_at(ctx: LadderCtx, at: Cursor) -> Option<WhyView> {
                 });
                 CauseView {
                     pos: c.pos,
-                    what: c.element.to_string(),
+                    what: element_words(&c.element, Lang::En),
+                    what_ja: element_words(&c.element, Lang::Ja),
                     device,
                     changed: None,
                     drivers,
@@ -169,13 +174,14 @@ fn explain_at(ctx: LadderCtx, at: Cursor) -> Option<WhyView> {
                 }
             })
             .collect();
-        let what = ladder.rungs[at.rung]
-            .get(target)
-            .map_or_else(String::new, ToString::to_string);
+        let element = ladder.rungs[at.rung].get(target);
+        let what = element.map_or_else(String::new, |e| element_words(e, Lang::En));
+        let what_ja = element.map_or_else(String::new, |e| element_words(e, Lang::Ja));
         found = Some(WhyView {
             rung: at.rung,
             target,
             what,
+            what_ja,
             powered: why.powered,
             together: why.together,
             scan,
@@ -243,9 +249,10 @@ pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
             {move || match ctx.why.shown.get() {
                 None => view! { <p class="why-none">{t().why_none}</p> }.into_any(),
                 Some(w) => {
+                    let what = if ctx.page.lang.get() == Lang::Ja { &w.what_ja } else { &w.what };
                     let head = format!(
                         "{} {} ({} {}{})",
-                        w.what,
+                        what,
                         if w.powered { t().why_on } else { t().why_off },
                         t().rung,
                         w.rung + 1,
@@ -275,7 +282,7 @@ fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
         <li data-testid="why-cause" data-device=device>
             <button type="button" class="why-cell"
                 on:click=move |_| ctx.move_to(Cursor::new(ctx.why.shown.get_untracked().map_or(0, |w| w.rung), pos.row, pos.col))>
-                {c.what.clone()}
+                {move || if ctx.page.lang.get() == Lang::Ja { c.what_ja.clone() } else { c.what.clone() }}
             </button>
             {state}
             {(!c.values.is_empty()).then(|| view! {

@@ -10,7 +10,7 @@ pub fn decompile_ja(e: &DecompileError) -> String {
     match e {
         DecompileError::Step(e) => format!("ステップ {}: {}", e.step, step_ja(&e.why)),
         DecompileError::Drawing { rung, size } => format!(
-            "ラング {rung}: このラングはラダーにすると {} 行 {} 列になり、上限 {MAX_RUNG_CELLS} セルを超えます",
+            "回路 {rung}: この回路はラダーにすると {} 行 {} 列になり、上限 {MAX_RUNG_CELLS} セルを超えます",
             size.rows, size.columns
         ),
     }
@@ -21,7 +21,7 @@ fn step_ja(why: &StepWhy) -> String {
     use StepWhy as S;
     match why {
         S::AfterOutputs => {
-            "出力の後にラングが続きますが、どの出力もその結果を持っていません".into()
+            "出力の後に回路が続きますが、どの出力もその結果を持っていません".into()
         }
         S::UsedAgain => {
             "出力の後に結果をまた使いますが、どの出力もそれを持っていません: 先に内部リレーに格納してください".into()
@@ -36,7 +36,7 @@ fn step_ja(why: &StepWhy) -> String {
         S::NoOpen => "`(` のない `)` です".into(),
         S::Line(line) => format!("`{line}` はまだラダーにできません"),
         S::BoxWithoutOutput => {
-            "このステップの前のラングがボックスで終わり、出力がありません: ラダーにはそう描けません (コンパイラが出力ボックスを書くように電源の LD で終えるか、コイルで終えてください)".into()
+            "このステップの前の回路がボックスで終わり、出力がありません: ラダーにはそう描けません (コンパイラが出力ボックスを書くように電源の LD で終えるか、コイルで終えてください)".into()
         }
         S::ParallelBox => "並列の枝にあるボックスは、ここではラダーにできません".into(),
         S::NoPowerOut => "電源の出力 (Q =>) のない呼び出しはラダーにできません".into(),

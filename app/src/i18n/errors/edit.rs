@@ -12,9 +12,9 @@ use files_worker::said_iec_ja::variable_ja;
 /// An edit's refusal in Japanese.
 pub fn edit_ja(e: &EditError) -> String {
     match e {
-        EditError::NoSuchRung(r) => format!("ラング {} はありません", r + 1),
+        EditError::NoSuchRung(r) => format!("回路 {} はありません", r + 1),
         EditError::OutsideGrid(c) => format!(
-            "行 {}、列 {} は枠の外です: ラングは最大 {MAX_ROWS} 行 {MAX_COLUMNS} 列です",
+            "行 {}、列 {} は枠の外です: 回路は最大 {MAX_ROWS} 行 {MAX_COLUMNS} 列です",
             c.row + 1,
             c.col + 1
         ),
@@ -24,7 +24,7 @@ pub fn edit_ja(e: &EditError) -> String {
         EditError::BranchNotContact => "OR 分岐にできるのは接点だけです".into(),
         EditError::NothingToDo => "ここには変えるものがありません".into(),
         EditError::BlockAcrossRungs => {
-            "セルの範囲は 1 つのラングの中だけです: ラングごと選んでください".into()
+            "セルの範囲は 1 つの回路の中だけです: 回路ごと選んでください".into()
         }
         EditError::Clip(e) => clip_ja(e),
         EditError::Replace(e) => replace_ja(e),
@@ -41,7 +41,7 @@ pub(super) fn clip_ja(e: &ClipError) -> String {
             format!("クリップボードの文字列がラダーの上限 {MAX_INPUT_BYTES} バイトを超えています")
         }
         ClipError::Element { rung, pos, error } => format!(
-            "コピーしたラング {}、行 {}、列 {}: {}",
+            "コピーした回路 {}、行 {}、列 {}: {}",
             rung + 1,
             pos.row + 1,
             pos.col + 1,
@@ -81,16 +81,16 @@ fn variable_edit_ja(e: &VariableEditError) -> String {
 pub fn rung_problem_ja(p: &RungProblem) -> String {
     use RungProblem as P;
     match p {
-        P::NoOutput => "ラングに出力がありません: コイルか出力ボックスで終えてください".into(),
+        P::NoOutput => "回路に出力がありません: コイルか出力ボックスで終えてください".into(),
         P::OutputNotLast => {
-            "出力はラングの最後の列にそろえます: この出力を右へ動かしてください".into()
+            "出力は回路の最後の列にそろえます: この出力を右へ動かしてください".into()
         }
         P::AfterOutput => {
-            "出力の後には何も置けません: コイルと出力ボックスがラングの終わりです".into()
+            "出力の後には何も置けません: コイルと出力ボックスが回路の終わりです".into()
         }
-        P::LinkPastRung => "縦線がラングの最後の行か列を越えています".into(),
+        P::LinkPastRung => "縦線が回路の最後の行か列を越えています".into(),
         P::OutputNotJoined => {
-            "この出力は最初の出力の条件につながっていません: 別のラングにするか線でつないでください"
+            "この出力は最初の出力の条件につながっていません: 別の回路にするか線でつないでください"
                 .into()
         }
         P::ShortCircuit => "短絡: 線がこの要素の両側をつないでいます".into(),
@@ -101,7 +101,7 @@ pub fn rung_problem_ja(p: &RungProblem) -> String {
         P::DanglingWire => "浮いた線: 左の母線と出力をつないでいません".into(),
         P::NoPath => "左の母線からこの出力へ接点の経路がありません".into(),
         P::TooLarge { rows, width } => format!(
-            "ラングが {rows} 行 {width} 列あり、1 ラングの上限 {MAX_RUNG_CELLS} セルを超えています"
+            "回路が {rows} 行 {width} 列あり、1 回路の上限 {MAX_RUNG_CELLS} セルを超えています"
         ),
         P::InputInBoxColumn(pin) => {
             format!("入力 {pin} がボックスの真下 (ボックスの列) にあります")

@@ -41,7 +41,7 @@ pub fn io86a_asm_ja(e: &AsmError) -> String {
         A::NoBlockToJoin(m) => {
             format!("{m} には LD か LDI で始まるブロックが 2 つ必要です")
         }
-        A::NoRung => "このラングを始める LD か LDI がありません".into(),
+        A::NoRung => "この回路を始める LD か LDI がありません".into(),
         A::TooManySteps(n) => {
             format!("ステップが多すぎます: {n} (PLC-IO86A は {MAX_STEPS} まで)")
         }

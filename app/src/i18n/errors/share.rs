@@ -23,7 +23,7 @@ pub fn share_ja(e: &ShareError) -> String {
             rows,
             columns,
         } => format!(
-            "ラング {rung} は {rows} 行 {columns} 列あります: 共有リンクに入るラングは 64 × 64 セルまでです"
+            "回路 {rung} は {rows} 行 {columns} 列あります: 共有リンクに入る回路は 64 × 64 セルまでです"
         ),
         ShareError::TooMany { what, count, limit } => format!(
             "この共有リンクには{}が {count} 個あり、プロジェクトの上限 {limit} 個を超えています",
@@ -38,8 +38,8 @@ pub fn share_ja(e: &ShareError) -> String {
 /// What a link counts, as the engine names it (`Reader::count`).
 fn counted_ja(what: &str) -> &'static str {
     match what {
-        "rungs" => "ラング",
-        "links in one rung" => "1 つのラングのつながり",
+        "rungs" => "回路",
+        "links in one rung" => "1 つの回路のつながり",
         "test cases" => "テストケース",
         "expectations in one test case" => "1 つのテストケースの期待値",
         "plant wiring lines" => "プラントの配線",

@@ -35,7 +35,7 @@ fn the_english_rule_finds_a_sentence_and_lets_names_and_mnemonics_be() {
     );
     assert_eq!(english_run("Y00 was 0 at 4ms"), None, "words apart");
     assert_eq!(english_run("CAL TON0(IN := %IX0.0, PT := T#5s)"), None);
-    assert_eq!(english_run("ラング 1: ST count"), None);
+    assert_eq!(english_run("回路 1: ST count"), None);
     assert!(english_run("Unknown device: name a variable").is_some());
 }
 
@@ -176,7 +176,7 @@ fn a_problem_in_the_listing_is_said_in_japanese_at_its_place() {
     };
     let errors = ladder.logic(MachineId::MinasecU).expect_err("misplaced");
     let ja = crate::i18n::engine::ladder_error(Lang::Ja, &errors[0]);
-    assert!(ja.starts_with("ラング 1、行 1、列 3: 出力の後には"), "{ja}");
+    assert!(ja.starts_with("回路 1、行 1、列 3: 出力の後には"), "{ja}");
     is_japanese("the problem", &ja);
 }
 
