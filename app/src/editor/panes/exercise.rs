@@ -171,6 +171,14 @@ pub fn StudentView(ctx: LadderCtx, check: Callback<()>) -> impl IntoView {
             .unwrap_or_default()
     };
     let sent = RwSignal::new(None::<String>);
+    // A link made before an edit holds the ladder as it was: taken away
+    // at the edit, so the student never sends an answer they changed.
+    Effect::new(move |first: Option<()>| {
+        ctx.drawing.revision.track();
+        if first.is_some() {
+            sent.set(None);
+        }
+    });
     let send = move |_| {
         let project = crate::editor::shared::project_of(ctx);
         match engine::formats::share::encode(&project) {
