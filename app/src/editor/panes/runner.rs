@@ -31,7 +31,9 @@ pub fn run_all(ctx: LadderCtx) {
         return;
     };
     let (machine, settings) = (ctx.machine, ctx.settings());
-    leptos::task::spawn_local(async move {
+    // wasm-bindgen's own spawner: a teacher's `?answer` link runs the
+    // cases while the page starts, before Leptos' executor is set up.
+    wasm_bindgen_futures::spawn_local(async move {
         match run_cases_part(machine, settings, listing.text, cases).await {
             Ok(results) => ctx
                 .cases
