@@ -11,6 +11,7 @@ for_tests=yes
 
 TRUNK_VERSION=0.21.14
 WASM_BINDGEN_VERSION=0.2.130 # must equal the wasm-bindgen pin in app/Cargo.toml
+WASM_SPLIT_VERSION=0.2.4 # wasm_split_cli_support: splits the page's wasm (scripts/split-wasm.py)
 WASM_PACK_VERSION=0.15.1
 BINARYEN_VERSION=132.0.0
 AXE_VERSION=4.11.0
@@ -40,6 +41,12 @@ if ! has_version wasm-bindgen "$WASM_BINDGEN_VERSION"; then
   say "installing wasm-bindgen-cli $WASM_BINDGEN_VERSION"
   # Not --locked: the crate's own lock file names a version crates.io lacks.
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
+fi
+
+# wasm-split-cli has no --version: cargo's list of installed crates says.
+if ! cargo install --list | grep -qF "wasm_split_cli_support v$WASM_SPLIT_VERSION:"; then
+  say "installing wasm-split-cli $WASM_SPLIT_VERSION"
+  cargo install --locked wasm_split_cli_support --version "$WASM_SPLIT_VERSION" --features build-binary
 fi
 
 if ! has_version wasm-opt "version $BINARYEN_VERSION" && ! has_version wasm-opt "version ${BINARYEN_VERSION%%.*}"; then

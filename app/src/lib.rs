@@ -10,6 +10,7 @@ pub mod editor;
 pub mod examples;
 pub mod i18n;
 pub mod machines;
+pub mod parts;
 pub mod sim;
 pub mod start;
 pub mod state;

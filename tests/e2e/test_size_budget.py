@@ -63,3 +63,28 @@ def test_the_build_is_precompressed():
         if p.suffix in (".wasm", ".js", ".css", ".html"):
             for ext in (".gz", ".br"):
                 assert p.with_name(p.name + ext).exists(), f"{p.name}{ext}"
+
+
+def test_the_first_screen_fetches_no_wasm_beyond_its_budget(driver, base_url):
+    """Every wasm a fresh profile fetches before the app is ready (the
+    `hashigo-ready` mark) counts against the first screen's row (issue
+    #53): a part fetched at start would show here, not only in the
+    file's own row."""
+    from test_app import open_fresh, wait
+
+    open_fresh(driver, base_url)
+    wait(driver, lambda: driver.execute_script("return performance.getEntriesByName('hashigo-ready').length > 0"))
+    fetched = driver.execute_script(
+        """const ready = performance.getEntriesByName('hashigo-ready')[0].startTime;
+        return performance.getEntriesByType('resource')
+          .filter(e => e.startTime <= ready)
+          .map(e => new URL(e.name).pathname)
+          .filter(p => p.endsWith('.wasm'));""")
+    assert fetched, "the first screen fetched no wasm?"
+    size = sum(sent(DIST / p.lstrip("/")) for p in set(fetched))
+    row = [r for r in budget_rows() if r[0].startswith("the page's wasm, which the first screen needs")]
+    assert len(row) == 1, "the first screen's row is missing from the table"
+    part, _, budget = row[0]
+    print(f"before ready: {sorted(set(fetched))}: {size / 1000:.1f} KB gzip (budget {budget // 1000} KB)")
+    assert size <= budget, f"{part}: {size / 1000:.1f} KB gzip > {budget // 1000} KB"
+    assert not [p for p in fetched if "split_" in p], f"a part was fetched before the app was ready: {fetched}"

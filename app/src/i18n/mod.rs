@@ -8,6 +8,7 @@ pub mod errors;
 mod files;
 mod ja;
 pub mod keymap;
+pub mod parts;
 pub mod start;
 pub mod words;
 
@@ -79,6 +80,14 @@ impl Lang {
         match self {
             Lang::Ja => &words::JA,
             Lang::En => &words::EN,
+        }
+    }
+
+    /// The strings of the parts fetched on first use (issue #53).
+    pub const fn parts(self) -> &'static parts::PartsTexts {
+        match self {
+            Lang::Ja => &parts::JA,
+            Lang::En => &parts::EN,
         }
     }
 

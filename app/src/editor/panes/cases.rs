@@ -4,102 +4,14 @@
 //! changes while the machine runs; the exercise flag that makes a share
 //! link open with the tests shown.
 
-use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
+use engine::cases::TestCase;
 use engine::ladder::Ladder;
-use engine::machines::new_plc;
-use engine::plc::{Command, Device, Plc};
-use engine::{MachineId, SimTime};
+use engine::plc::{Device, Plc};
+use engine::SimTime;
 use leptos::prelude::*;
 
+pub use super::runner::run_all;
 use crate::editor::state::{CaseResult, LadderCtx};
-use crate::i18n::errors::{self, Both};
-
-/// Runs `cases` on `machine`, each on a fresh machine with `settings`
-/// applied and `program` loaded.
-pub fn run_cases(
-    machine: MachineId,
-    settings: &[(String, String)],
-    program: &str,
-    cases: &[TestCase],
-) -> Vec<CaseResult> {
-    // The work of all the cases is counted before any runs (docs/limits.md).
-    let prepared = match prepare_all(cases) {
-        Ok(prepared) => prepared,
-        Err(e) => {
-            let said = Both::new(|lang| errors::case_error(lang, &e));
-            return vec![CaseResult::Error(said); cases.len()];
-        }
-    };
-    prepared
-        .iter()
-        .zip(cases)
-        .map(|(case, source)| {
-            let case = match case {
-                Ok(case) => case,
-                Err(e) => return CaseResult::Error(Both::new(|l| errors::case_error(l, e))),
-            };
-            let mut plc = new_plc(machine);
-            for (name, value) in settings {
-                let setting = Command::Setting {
-                    name: name.clone(),
-                    value: value.clone(),
-                };
-                if let Err(e) = plc.apply(setting) {
-                    let said = |l| format!("{name}={value}: {}", errors::plc_error(l, &e));
-                    return CaseResult::Error(Both::new(said));
-                }
-            }
-            if let Err(e) = plc.load_text(program) {
-                return CaseResult::Error(Both::new(|l| errors::plc_error(l, &e)));
-            }
-            match run_prepared(plc.as_mut(), case) {
-                Ok(Outcome::Pass) => CaseResult::Pass,
-                Ok(Outcome::Fail {
-                    expectation, seen, ..
-                }) => CaseResult::Fail(Both::new(|l| {
-                    format!("{expectation}: {}", errors::observed(l, &seen))
-                })),
-                Err(e) => match unused_device(machine, program, source, &e) {
-                    Some(device) => CaseResult::Unused(device),
-                    None => CaseResult::Error(Both::new(|l| errors::case_error(l, &e))),
-                },
-            }
-        })
-        .collect()
-}
-
-/// The device a case could not find, when that is because the program
-/// does not use it yet: the soft PLC has only the devices its program
-/// declares or uses, so an empty ladder has no `%IX0.0`. Other machines
-/// have a fixed set of devices: a name they lack is the author's error.
-fn unused_device(
-    machine: MachineId,
-    program: &str,
-    case: &TestCase,
-    e: &engine::cases::CaseError,
-) -> Option<String> {
-    use engine::cases::CaseError;
-    // Only a machine whose program names its I/O (word boxes, variables:
-    // the soft PLC) can be told of a device its program never uses.
-    if !machine.target().capabilities().word_boxes {
-        return None;
-    }
-    let device = match e {
-        CaseError::Event(at) => engine::events::parse_events(&case.events)
-            .ok()?
-            .into_iter()
-            .find(|ev| ev.line == at.line)?
-            .device
-            .clone(),
-        CaseError::Device(i, _) => engine::cases::Expectation::parse(case.expect.get(*i)?)
-            .ok()?
-            .device()
-            .to_string(),
-        _ => return None,
-    };
-    let unknown = e.to_string().contains("unknown device");
-    (unknown && !program.contains(device.as_str())).then_some(device)
-}
 
 /// Records the inputs a user changes while the machine runs: the devices
 /// the ladder's contacts read and no output writes, read each frame, each
@@ -187,29 +99,6 @@ impl Recorder {
             hint: String::new(),
         }
     }
-}
-
-/// Runs every case of `ctx`'s project and shows the results. A ladder
-/// that does not compile passes nothing: an exercise says so in its
-/// result (every case failed), the author's view in the message line.
-pub fn run_all(ctx: LadderCtx) {
-    let cases = ctx.cases.tests.get_untracked();
-    let Some(listing) = ctx.drawing.listing.get_untracked() else {
-        if ctx.cases.exercise.with_untracked(Option::is_some) {
-            let failed = CaseResult::Error(Both::default());
-            ctx.cases.results.set(vec![Some(failed); cases.len()]);
-            return;
-        }
-        let t = ctx.page.lang.get_untracked().texts();
-        ctx.panes
-            .message
-            .set(Some(t.tests_need_compile.to_string()));
-        return;
-    };
-    let results = run_cases(ctx.machine, &ctx.settings(), &listing.text, &cases);
-    ctx.cases
-        .results
-        .set(results.into_iter().map(Some).collect());
 }
 
 /// Changes case `i` (its result is forgotten) and saves.
@@ -459,9 +348,14 @@ fn said_of(ctx: LadderCtx, case: &TestCase, result: CaseResult) -> (String, bool
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::editor::panes::runner::run_cases;
+    use crate::i18n::errors::Both;
     use engine::events::InputValue;
     use engine::ladder::compile::{compile, Options};
     use engine::ladder::{Element, Rung};
+    use engine::machines::new_plc;
+    use engine::plc::Command;
+    use engine::MachineId;
 
     fn self_hold() -> Ladder {
         Ladder {

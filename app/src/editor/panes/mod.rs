@@ -7,6 +7,7 @@ pub mod chart;
 pub mod exercise;
 pub mod find;
 pub mod projects;
+pub mod runner;
 pub mod side;
 pub mod variables;
 pub mod why;

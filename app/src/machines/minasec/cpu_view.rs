@@ -7,6 +7,7 @@
 use engine::minasec::cpu::{Block, CpuView, EdgeLevels, Phase};
 use engine::minasec::{Command, Machine, Mode};
 use leptos::prelude::*;
+use leptos::wasm_split::wasm_split;
 
 use super::MinasecCtx;
 use crate::i18n::Lang;
@@ -205,10 +206,16 @@ pub fn CpuPanel() -> impl IntoView {
                 {move || said(("Inside the CPU", "CPU の中"), lang())}
             </button>
             <Show when=move || cpu.open.get()>
-                <CpuDiagram />
+                {crate::parts::part("cpu-part", ctx.lang.into(), cpu_diagram)}
             </Show>
         </section>
     }
+}
+
+/// The diagram is a part of its own (issue #53): most visits never open it.
+#[wasm_split(cpu_view, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn cpu_diagram() -> Result<crate::parts::Draw, crate::parts::PartMissing> {
+    Ok(|| view! { <CpuDiagram /> }.into_any())
 }
 
 #[component]

@@ -1,0 +1,148 @@
+//! Running the Tests pane's cases from the page (issue #17): the case
+//! runner itself is a part fetched when the cases first run (issue #53,
+//! docs/performance.md "Parts"), so this asks for it and shows what came.
+
+use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
+use engine::machines::new_plc;
+use engine::plc::Command;
+use engine::MachineId;
+use leptos::prelude::*;
+use leptos::wasm_split::wasm_split;
+
+use crate::editor::state::{CaseResult, LadderCtx};
+use crate::i18n::errors::{self, Both};
+use crate::parts::PartMissing;
+
+/// Runs every case of `ctx`'s project and shows the results. A ladder
+/// that does not compile passes nothing: an exercise says so in its
+/// result (every case failed), the author's view in the message line.
+pub fn run_all(ctx: LadderCtx) {
+    let cases = ctx.cases.tests.get_untracked();
+    let Some(listing) = ctx.drawing.listing.get_untracked() else {
+        if ctx.cases.exercise.with_untracked(Option::is_some) {
+            let failed = CaseResult::Error(Both::default());
+            ctx.cases.results.set(vec![Some(failed); cases.len()]);
+            return;
+        }
+        let t = ctx.page.lang.get_untracked().texts();
+        ctx.panes
+            .message
+            .set(Some(t.tests_need_compile.to_string()));
+        return;
+    };
+    let (machine, settings) = (ctx.machine, ctx.settings());
+    // wasm-bindgen's own spawner: a teacher's `?answer` link runs the
+    // cases while the page starts, before Leptos' executor is set up.
+    wasm_bindgen_futures::spawn_local(async move {
+        match run_cases_part(machine, settings, listing.text, cases).await {
+            Ok(results) => ctx
+                .cases
+                .results
+                .set(results.into_iter().map(Some).collect()),
+            // Where Run was pressed; pressing it again retries the fetch.
+            Err(PartMissing) => {
+                let said = ctx.page.lang.get_untracked().parts().missing;
+                ctx.panes.message.set(Some(said.to_string()));
+            }
+        }
+    });
+}
+
+/// The case runner is a part of its own (issue #53): it is fetched when
+/// the cases are first run.
+#[wasm_split(tests_runner, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn run_cases_part(
+    machine: MachineId,
+    settings: Vec<(String, String)>,
+    program: String,
+    cases: Vec<TestCase>,
+) -> Result<Vec<CaseResult>, PartMissing> {
+    Ok(run_cases(machine, &settings, &program, &cases))
+}
+
+/// Runs `cases` on `machine`, each on a fresh machine with `settings`
+/// applied and `program` loaded.
+pub fn run_cases(
+    machine: MachineId,
+    settings: &[(String, String)],
+    program: &str,
+    cases: &[TestCase],
+) -> Vec<CaseResult> {
+    // The work of all the cases is counted before any runs (docs/limits.md).
+    let prepared = match prepare_all(cases) {
+        Ok(prepared) => prepared,
+        Err(e) => {
+            let said = Both::new(|lang| errors::case_error(lang, &e));
+            return vec![CaseResult::Error(said); cases.len()];
+        }
+    };
+    prepared
+        .iter()
+        .zip(cases)
+        .map(|(case, source)| {
+            let case = match case {
+                Ok(case) => case,
+                Err(e) => return CaseResult::Error(Both::new(|l| errors::case_error(l, e))),
+            };
+            let mut plc = new_plc(machine);
+            for (name, value) in settings {
+                let setting = Command::Setting {
+                    name: name.clone(),
+                    value: value.clone(),
+                };
+                if let Err(e) = plc.apply(setting) {
+                    let said = |l| format!("{name}={value}: {}", errors::plc_error(l, &e));
+                    return CaseResult::Error(Both::new(said));
+                }
+            }
+            if let Err(e) = plc.load_text(program) {
+                return CaseResult::Error(Both::new(|l| errors::plc_error(l, &e)));
+            }
+            match run_prepared(plc.as_mut(), case) {
+                Ok(Outcome::Pass) => CaseResult::Pass,
+                Ok(Outcome::Fail {
+                    expectation, seen, ..
+                }) => CaseResult::Fail(Both::new(|l| {
+                    format!("{expectation}: {}", errors::observed(l, &seen))
+                })),
+                Err(e) => match unused_device(machine, program, source, &e) {
+                    Some(device) => CaseResult::Unused(device),
+                    None => CaseResult::Error(Both::new(|l| errors::case_error(l, &e))),
+                },
+            }
+        })
+        .collect()
+}
+
+/// The device a case could not find, when that is because the program
+/// does not use it yet: the soft PLC has only the devices its program
+/// declares or uses, so an empty ladder has no `%IX0.0`. Other machines
+/// have a fixed set of devices: a name they lack is the author's error.
+fn unused_device(
+    machine: MachineId,
+    program: &str,
+    case: &TestCase,
+    e: &engine::cases::CaseError,
+) -> Option<String> {
+    use engine::cases::CaseError;
+    // Only a machine whose program names its I/O (word boxes, variables:
+    // the soft PLC) can be told of a device its program never uses.
+    if !machine.target().capabilities().word_boxes {
+        return None;
+    }
+    let device = match e {
+        CaseError::Event(at) => engine::events::parse_events(&case.events)
+            .ok()?
+            .into_iter()
+            .find(|ev| ev.line == at.line)?
+            .device
+            .clone(),
+        CaseError::Device(i, _) => engine::cases::Expectation::parse(case.expect.get(*i)?)
+            .ok()?
+            .device()
+            .to_string(),
+        _ => return None,
+    };
+    let unknown = e.to_string().contains("unknown device");
+    (unknown && !program.contains(device.as_str())).then_some(device)
+}

@@ -1,0 +1,82 @@
+//! Parts of the page fetched on first use (issue #53): each function
+//! marked `#[wasm_split(<part>, …, fallible)]` lands in the wasm of
+//! `<part>`, which the build cuts off the page's wasm
+//! (scripts/split-wasm.py, docs/performance.md "Parts"); calling it
+//! fetches that part first. A view part answers with the function that
+//! draws it ([`Draw`]), which [`part`] calls once the part is there.
+
+use std::future::Future;
+
+use leptos::prelude::*;
+use leptos::wasm_split::SplitLoaderError;
+
+use crate::i18n::Lang;
+
+/// A part that could not be fetched (offline on a first visit, a server
+/// gone): the caller says so where it was asked for and offers to retry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PartMissing;
+
+impl From<SplitLoaderError> for PartMissing {
+    fn from(_: SplitLoaderError) -> Self {
+        PartMissing
+    }
+}
+
+/// Draws a view held in a part; a plain function pointer, so that it
+/// crosses from the part to the page as a table index.
+pub type Draw = fn() -> AnyView;
+
+/// Where a part's view stands.
+#[derive(Debug, Clone, Copy)]
+enum Stage {
+    Loading,
+    Missing,
+    Ready(Draw),
+}
+
+/// The place of a view held in a part: "Loading…" while it is fetched,
+/// then the view; if it cannot be fetched, says so with a retry button
+/// (nothing else on the page changes, so nothing the user made is lost).
+/// `testid` names the place for the end-to-end tests; `lang` is the
+/// page's language.
+pub fn part<F, Fut>(testid: &'static str, lang: Signal<Lang>, load: F) -> impl IntoView
+where
+    F: Fn() -> Fut + Copy + Send + Sync + 'static,
+    Fut: Future<Output = Result<Draw, PartMissing>> + 'static,
+{
+    let stage = RwSignal::new(Stage::Loading);
+    let fetch = move || {
+        stage.set(Stage::Loading);
+        leptos::task::spawn_local(async move {
+            let next = match load().await {
+                Ok(draw) => Stage::Ready(draw),
+                Err(PartMissing) => Stage::Missing,
+            };
+            // The place may be gone by now (its tab closed): nothing to show.
+            let _ = stage.try_set(next);
+        });
+    };
+    fetch();
+    move || {
+        let texts = lang.get().parts();
+        match stage.get() {
+            Stage::Ready(draw) => draw(),
+            Stage::Loading => view! {
+                <p class="part-state" role="status" data-testid=format!("{testid}-loading")>
+                    {texts.loading}
+                </p>
+            }
+            .into_any(),
+            Stage::Missing => view! {
+                <div class="part-state" role="alert" data-testid=format!("{testid}-missing")>
+                    <p>{texts.missing}</p>
+                    <button type="button" data-testid=format!("{testid}-retry") on:click=move |_| fetch()>
+                        {texts.retry}
+                    </button>
+                </div>
+            }
+            .into_any(),
+        }
+    }
+}

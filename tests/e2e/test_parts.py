@@ -1,0 +1,69 @@
+"""End-to-end: the parts of the page fetched on first use (issue #53,
+docs/performance.md "Parts"). A part that cannot be fetched says so where
+it was asked for and offers to retry, with the user's work untouched; a
+part never opened online opens offline after the first visit (the
+service worker keeps every part)."""
+
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+
+from test_app import el, open_fresh, wait
+from test_ladder import first_visit_kept_offline, focus_ladder, place
+
+
+def block(driver, patterns):
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.setBlockedURLs", {"urls": patterns})
+
+
+def test_a_part_that_cannot_be_fetched_says_so_and_offers_to_retry(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    listing = el(driver, "il-listing").text
+    block(driver, ["*split_cpu_view*"])
+    try:
+        el(driver, "cpu-view-open").click()
+        wait(driver, lambda: el(driver, "cpu-part-missing", reveal=False), message="the CPU view says it is missing")
+        assert "could not be fetched" in el(driver, "cpu-part-missing").text
+        # Nothing else changed: the ladder is as it was.
+        assert "ST   Y00" in listing
+        assert el(driver, "il-listing").text == listing
+    finally:
+        block(driver, [])
+    el(driver, "cpu-part-retry").click()
+    wait(driver, lambda: el(driver, "cpu-view").is_displayed(), message="the retry fetches the part")
+
+
+def test_a_part_never_opened_online_opens_offline(driver):
+    server = first_visit_kept_offline(driver)
+    url = server.url
+    server.stop()
+    driver.get(url)
+    wait(driver, lambda: el(driver, "ladder"), message="the page loads with the server gone")
+    el(driver, "cpu-view-open").click()
+    wait(driver, lambda: el(driver, "cpu-view").is_displayed(), message="the CPU view opens offline")
+
+
+def test_running_the_tests_when_their_part_cannot_be_fetched_says_so(driver, base_url):
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "tests-open").click()
+    wait(driver, lambda: el(driver, "add-test")).click()
+    case = wait(driver, lambda: el(driver, "test-case-0"))
+    case.find_element(By.CSS_SELECTOR, '[data-testid="test-events"]').send_keys("0.1s,X00,1\n")
+    case.find_element(By.CSS_SELECTOR, '[data-testid="test-expect"]').send_keys("Y00 = 1 at 0.2s")
+    block(driver, ["*split_tests_runner*"])
+    try:
+        el(driver, "run-tests").click()
+        wait(driver, lambda: "could not be fetched" in el(driver, "edit-message", reveal=False).text,
+             message="the message line says the runner is missing")
+        assert el(driver, "test-case-0").get_attribute("data-result") in (None, "")
+    finally:
+        block(driver, [])
+    # Run again is the retry; the case the user wrote is still there.
+    el(driver, "run-tests").click()
+    wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "pass")
