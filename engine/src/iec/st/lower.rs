@@ -1,0 +1,474 @@
+//! Structured Text lowered to the soft PLC's Instruction List: a checked
+//! source becomes IL text (one `PROGRAM`, its own `FUNCTION_BLOCK`s),
+//! which the soft PLC loads as it loads any IL, so ST runs through the
+//! one scan, at IL's speed, with its I/O, tracing and recording, and an
+//! endless loop is cut as IL's backward jumps are. Every IL line keeps the
+//! ST place it comes from ([`Lowered::spans`]), so what the IL loader
+//! refuses is said at the ST line and column. Control flow becomes
+//! labels and jumps (`JMPC`/`JMPCN`), an expression nested operations
+//! (`ADD(` … `)`). What does not fit IL yet is refused at its place
+//! ([`StErrorKind::NotYet`]).
+
+use super::ast::{
+    BinaryOp, CaseArm, CaseLabel, Expr, ExprKind, Item, Pou, PouKind, Source, Span, Stmt, StmtKind,
+    UnaryOp, VarBlock, VarKind,
+};
+use super::error::{StError, StErrorKind};
+use super::types::at;
+
+/// A source as IL text, each IL line with the ST place it comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lowered {
+    /// The IL text.
+    pub text: String,
+    /// `spans[n]`: where IL line `n + 1` comes from in the ST text.
+    pub spans: Vec<Span>,
+}
+
+impl Lowered {
+    /// The ST place of a 1-based IL line (the last line's for one past
+    /// the end).
+    pub fn place(&self, il_line: usize) -> Span {
+        let i = il_line
+            .saturating_sub(1)
+            .min(self.spans.len().saturating_sub(1));
+        self.spans.get(i).copied().unwrap_or_default()
+    }
+}
+
+/// Lowers a checked source (see [`super::check_source`]) to IL: its
+/// function blocks, then its one `PROGRAM`.
+pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
+    let mut l = Lower::default();
+    let mut program: Option<&Pou> = None;
+    for item in &source.items {
+        match item {
+            Item::Pou(p) => match p.kind {
+                PouKind::FunctionBlock => l.pou(p, "FUNCTION_BLOCK"),
+                PouKind::Program if program.is_some() => {
+                    l.not_yet(p.span, "a second PROGRAM in one file")
+                }
+                PouKind::Program => program = Some(p),
+                PouKind::Function(_) => l.not_yet(p.span, "a FUNCTION of the program's own"),
+            },
+            Item::Types(ts) => {
+                let span = ts.first().map(|t| t.name.span).unwrap_or_default();
+                l.not_yet(span, "a TYPE declaration")
+            }
+            Item::Globals(b) => l.not_yet(b.span, "VAR_GLOBAL"),
+        }
+    }
+    match program {
+        Some(p) => l.pou(p, "PROGRAM"),
+        None => l.errors.push(at(
+            Span { line: 1, column: 1 },
+            StErrorKind::NotYet("a file without a PROGRAM".to_string()),
+        )),
+    }
+    if !l.errors.is_empty() {
+        l.errors.sort_by_key(|e| (e.span.line, e.span.column));
+        return Err(l.errors);
+    }
+    let mut text = String::new();
+    let mut spans = Vec::new();
+    for (line, span) in l.lines {
+        text.push_str(&line);
+        text.push('\n');
+        spans.push(span);
+    }
+    Ok(Lowered { text, spans })
+}
+
+#[derive(Default)]
+struct Lower {
+    lines: Vec<(String, Span)>,
+    errors: Vec<StError>,
+    labels: usize,
+    /// The end label of each enclosing loop, innermost last (`EXIT`).
+    exits: Vec<String>,
+}
+
+impl Lower {
+    fn emit(&mut self, text: impl Into<String>, span: Span) {
+        self.lines.push((text.into(), span));
+    }
+
+    fn not_yet(&mut self, span: Span, what: impl Into<String>) {
+        self.errors.push(at(span, StErrorKind::NotYet(what.into())));
+    }
+
+    /// A fresh label (IL labels are their own names: no variable's).
+    fn label(&mut self) -> String {
+        self.labels += 1;
+        format!("st_{}", self.labels)
+    }
+
+    fn place(&mut self, label: &str, span: Span) {
+        self.emit(format!("{label}:"), span);
+    }
+
+    fn pou(&mut self, p: &Pou, keyword: &str) {
+        self.emit(format!("{keyword} {}", p.name.name), p.span);
+        for b in &p.vars {
+            self.block(b);
+        }
+        self.stmts(&p.body);
+        self.emit(format!("END_{keyword}"), p.span);
+    }
+
+    fn block(&mut self, b: &VarBlock) {
+        let keyword = match (b.kind, b.retain) {
+            (VarKind::Local, true) => "VAR_RETAIN",
+            (VarKind::Local, false) => "VAR",
+            (VarKind::Temp, _) => "VAR_TEMP",
+            (VarKind::Input, _) => "VAR_INPUT",
+            (VarKind::Output, _) => "VAR_OUTPUT",
+            (other, _) => return self.not_yet(b.span, other.keyword()),
+        };
+        self.emit(keyword, b.span);
+        for d in &b.decls {
+            if matches!(d.ty, super::ast::TypeRef::Array { .. }) {
+                self.not_yet(d.span, "an ARRAY variable");
+                continue;
+            }
+            let ty = super::print::type_text(&d.ty);
+            let at = d
+                .location
+                .as_ref()
+                .map(|a| format!(" AT {a}"))
+                .unwrap_or_default();
+            let init = d
+                .init
+                .as_ref()
+                .map(|i| format!(" := {}", super::print::init_text(i)))
+                .unwrap_or_default();
+            for n in &d.names {
+                self.emit(format!("  {}{at} : {ty}{init};", n.name), n.span);
+            }
+        }
+        self.emit("END_VAR", b.span);
+    }
+
+    fn stmts(&mut self, stmts: &[Stmt]) {
+        for s in stmts {
+            self.stmt(s);
+        }
+    }
+
+    fn stmt(&mut self, s: &Stmt) {
+        let span = s.span;
+        match &s.kind {
+            StmtKind::Assign { target, value } => {
+                if !target.path.is_empty() {
+                    return self.not_yet(span, "an assignment to a member or element");
+                }
+                self.expr(value);
+                self.emit(format!("ST {}", target.base.name), span);
+            }
+            StmtKind::Call(call) => self.block_call(call, span),
+            StmtKind::If {
+                branches,
+                otherwise,
+            } => self.if_stmt(branches, otherwise.as_deref(), span),
+            StmtKind::Case {
+                selector,
+                arms,
+                otherwise,
+            } => self.case(selector, arms, otherwise.as_deref(), span),
+            StmtKind::For {
+                var,
+                from,
+                to,
+                by,
+                body,
+            } => self.for_loop(&var.name, (from, to, by.as_ref()), body, span),
+            StmtKind::While { cond, body } => {
+                let (top, end) = (self.label(), self.label());
+                self.place(&top, span);
+                self.expr(cond);
+                self.emit(format!("JMPCN {end}"), span);
+                self.in_loop(&end, body);
+                self.emit(format!("JMP {top}"), span);
+                self.place(&end, span);
+            }
+            StmtKind::Repeat { body, until } => {
+                let (top, end) = (self.label(), self.label());
+                self.place(&top, span);
+                self.in_loop(&end, body);
+                self.expr(until);
+                self.emit(format!("JMPCN {top}"), until.span);
+                self.place(&end, span);
+            }
+            StmtKind::Exit => match self.exits.last().cloned() {
+                Some(end) => self.emit(format!("JMP {end}"), span),
+                None => self.errors.push(at(span, StErrorKind::ExitOutsideLoop)),
+            },
+            StmtKind::Return => self.emit("RET", span),
+            StmtKind::Empty => {}
+        }
+    }
+
+    fn in_loop(&mut self, end: &str, body: &[Stmt]) {
+        self.exits.push(end.to_string());
+        self.stmts(body);
+        self.exits.pop();
+    }
+
+    fn if_stmt(&mut self, branches: &[(Expr, Vec<Stmt>)], otherwise: Option<&[Stmt]>, span: Span) {
+        let end = self.label();
+        for (cond, body) in branches {
+            let next = self.label();
+            self.expr(cond);
+            self.emit(format!("JMPCN {next}"), cond.span);
+            self.stmts(body);
+            self.emit(format!("JMP {end}"), span);
+            self.place(&next, span);
+        }
+        self.stmts(otherwise.unwrap_or_default());
+        self.place(&end, span);
+    }
+
+    /// Each label tested in order (the selector read again for each:
+    /// only a function could make that differ, and none has effects);
+    /// the first arm that matches runs.
+    fn case(&mut self, sel: &Expr, arms: &[CaseArm], otherwise: Option<&[Stmt]>, span: Span) {
+        let (other, end) = (self.label(), self.label());
+        let targets: Vec<String> = arms.iter().map(|_| self.label()).collect();
+        for (arm, target) in arms.iter().zip(&targets) {
+            for l in &arm.labels {
+                self.expr(sel);
+                match l {
+                    CaseLabel::Value(v) => self.operand("EQ", v),
+                    CaseLabel::Range(lo, hi) => {
+                        self.operand("GE", lo);
+                        self.emit("AND(", span);
+                        self.expr(sel);
+                        self.operand("LE", hi);
+                        self.emit(")", span);
+                    }
+                }
+                self.emit(format!("JMPC {target}"), span);
+            }
+        }
+        self.emit(format!("JMP {other}"), span);
+        for (arm, target) in arms.iter().zip(&targets) {
+            self.place(target, span);
+            self.stmts(&arm.body);
+            self.emit(format!("JMP {end}"), span);
+        }
+        self.place(&other, span);
+        self.stmts(otherwise.unwrap_or_default());
+        self.place(&end, span);
+    }
+
+    /// `FOR v := a TO b BY c`: the end and step read at each pass (as
+    /// CODESYS does); the loop ends when `v` passes the end in the step's
+    /// direction (a step of 0 never ends, and is cut as an endless loop).
+    fn for_loop(
+        &mut self,
+        v: &str,
+        (from, to, by): (&Expr, &Expr, Option<&Expr>),
+        body: &[Stmt],
+        span: Span,
+    ) {
+        let (top, end, down, run) = (self.label(), self.label(), self.label(), self.label());
+        self.expr(from);
+        self.emit(format!("ST {v}"), span);
+        self.place(&top, span);
+        match by.map(step_sign) {
+            None | Some(Some(false)) => self.past(v, "GT", to, &end, span),
+            Some(Some(true)) => self.past(v, "LT", to, &end, span),
+            Some(None) => {
+                if let Some(step) = by {
+                    self.expr(step);
+                }
+                self.emit("LT 0", span);
+                self.emit(format!("JMPC {down}"), span);
+                self.past(v, "GT", to, &end, span);
+                self.emit(format!("JMP {run}"), span);
+                self.place(&down, span);
+                self.past(v, "LT", to, &end, span);
+                self.place(&run, span);
+            }
+        }
+        self.in_loop(&end, body);
+        self.emit(format!("LD {v}"), span);
+        match by {
+            Some(step) => self.operand("ADD", step),
+            None => self.emit("ADD 1", span),
+        }
+        self.emit(format!("ST {v}"), span);
+        self.emit(format!("JMP {top}"), span);
+        self.place(&end, span);
+    }
+
+    fn past(&mut self, v: &str, cmp: &str, to: &Expr, end: &str, span: Span) {
+        self.emit(format!("LD {v}"), span);
+        self.operand(cmp, to);
+        self.emit(format!("JMPC {end}"), span);
+    }
+
+    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL.
+    fn block_call(&mut self, call: &super::ast::Call, span: Span) {
+        use super::ast::Arg;
+        let mut args = Vec::new();
+        for a in &call.args {
+            match a {
+                Arg::Input(name, e) => match simple(e) {
+                    Some(t) => args.push(format!("{} := {t}", name.name)),
+                    None => self.not_yet(
+                        e.span,
+                        "an expression as a block's input (assign it to a variable first)",
+                    ),
+                },
+                Arg::Output {
+                    name,
+                    negated: false,
+                    target,
+                } if target.path.is_empty() => {
+                    args.push(format!("{} => {}", name.name, target.base.name))
+                }
+                Arg::Output { name, .. } => {
+                    self.not_yet(name.span, "a negated output or one to a member")
+                }
+                Arg::Positional(e) => self.not_yet(e.span, "a block's input by position"),
+            }
+        }
+        self.emit(
+            format!("CAL {}({})", call.callee.name, args.join(", ")),
+            span,
+        );
+    }
+
+    /// Leaves `e`'s value as the current result.
+    fn expr(&mut self, e: &Expr) {
+        if let Some(t) = simple(e) {
+            return self.emit(format!("LD {t}"), e.span);
+        }
+        match &e.kind {
+            ExprKind::Unary(UnaryOp::Plus, x) => self.expr(x),
+            ExprKind::Unary(UnaryOp::Neg, x) => {
+                self.expr(x);
+                self.emit("NEG", e.span);
+            }
+            ExprKind::Unary(UnaryOp::Not, x) => {
+                self.expr(x);
+                self.emit("NOT", e.span);
+            }
+            ExprKind::Binary(BinaryOp::Pow, ..) => self.not_yet(e.span, "`**`"),
+            ExprKind::Binary(op, a, b) => {
+                self.expr(a);
+                self.operand(il_op(*op), b);
+            }
+            ExprKind::Call(call) => self.function(call, e.span),
+            ExprKind::Variable(_) => self.not_yet(e.span, "an array element"),
+            ExprKind::Literal(_) => {}
+        }
+    }
+
+    /// `OP b`, or `OP(` … `)` around `b`'s instructions.
+    fn operand(&mut self, op: &str, b: &Expr) {
+        match simple(b) {
+            Some(t) => self.emit(format!("{op} {t}"), b.span),
+            None => {
+                self.emit(format!("{op}("), b.span);
+                self.expr(b);
+                self.emit(")", b.span);
+            }
+        }
+    }
+
+    /// A standard function IL has: its first argument the current
+    /// result, the others operands.
+    fn function(&mut self, call: &super::ast::Call, span: Span) {
+        use super::ast::Arg;
+        if crate::iec::il::Function::named(&call.callee.name).is_none() {
+            let what = format!("the function {}", call.callee.name.to_ascii_uppercase());
+            return self.not_yet(call.callee.span, what);
+        }
+        let values: Vec<&Expr> = call
+            .args
+            .iter()
+            .filter_map(|a| match a {
+                Arg::Positional(e) | Arg::Input(_, e) => Some(e),
+                Arg::Output { .. } => None,
+            })
+            .collect();
+        let Some((first, rest)) = values.split_first() else {
+            return self.not_yet(span, "a function called without inputs");
+        };
+        self.expr(first);
+        let mut ops = Vec::new();
+        for e in rest {
+            match simple(e) {
+                Some(t) => ops.push(t),
+                None => self.not_yet(
+                    e.span,
+                    "an expression as a function's second or later input (assign it to a variable first)",
+                ),
+            }
+        }
+        let name = call.callee.name.to_ascii_uppercase();
+        self.emit(
+            format!("{name} {}", ops.join(", ")).trim_end().to_string(),
+            span,
+        );
+    }
+}
+
+/// An IL operand for `e`, when it is one: a literal, a variable, a
+/// block's output.
+fn simple(e: &Expr) -> Option<String> {
+    use super::ast::{Literal, Selector};
+    match &e.kind {
+        ExprKind::Literal(l) => Some(super::print::literal_text(l)),
+        // A negative number is one operand (`-1`, `INT#-5`), not `NEG`.
+        ExprKind::Unary(UnaryOp::Neg, x) => match &x.kind {
+            ExprKind::Literal(Literal::Integer(v, t)) => {
+                Some(super::print::literal_text(&Literal::Integer(-v, *t)))
+            }
+            ExprKind::Literal(Literal::Real(v, t)) => {
+                Some(super::print::literal_text(&Literal::Real(-v, *t)))
+            }
+            _ => None,
+        },
+        ExprKind::Variable(v) => match v.path.as_slice() {
+            [] => Some(v.base.name.clone()),
+            [Selector::Member(m)] => Some(format!("{}.{}", v.base.name, m.name)),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// Whether a FOR step is known negative (`Some(true)`), known not
+/// negative (`Some(false)`) or known only when it runs.
+fn step_sign(e: &Expr) -> Option<bool> {
+    use super::ast::Literal;
+    match &e.kind {
+        ExprKind::Literal(Literal::Integer(v, _)) => Some(*v < 0),
+        ExprKind::Unary(UnaryOp::Neg, x) => step_sign(x).map(|neg| !neg),
+        ExprKind::Unary(UnaryOp::Plus, x) => step_sign(x),
+        _ => None,
+    }
+}
+
+fn il_op(op: BinaryOp) -> &'static str {
+    match op {
+        BinaryOp::Pow => "EXPT",
+        BinaryOp::Mul => "MUL",
+        BinaryOp::Div => "DIV",
+        BinaryOp::Mod => "MOD",
+        BinaryOp::Add => "ADD",
+        BinaryOp::Sub => "SUB",
+        BinaryOp::Lt => "LT",
+        BinaryOp::Gt => "GT",
+        BinaryOp::Le => "LE",
+        BinaryOp::Ge => "GE",
+        BinaryOp::Eq => "EQ",
+        BinaryOp::Ne => "NE",
+        BinaryOp::And => "AND",
+        BinaryOp::Xor => "XOR",
+        BinaryOp::Or => "OR",
+    }
+}
