@@ -34,25 +34,38 @@ fn from_st(e: StError) -> StLoadError {
     }
 }
 
+/// A Structured Text source as the Instruction List the soft PLC runs
+/// (what `hashigo run` loads for a `.st` file), checked to load: every
+/// refusal at its ST line and column.
+pub fn st_to_il(text: &str) -> Result<String, Vec<StLoadError>> {
+    let (_, il) = load(text)?;
+    Ok(il)
+}
+
 impl Program {
     /// Loads a Structured Text source: its one `PROGRAM` and its own
     /// `FUNCTION_BLOCK`s. Every refusal at its line and column.
     pub fn load_st(text: &str) -> Result<Program, Vec<StLoadError>> {
-        let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
-        check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
-        let lowered =
-            lower_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
-        Program::load(&lowered.text).map_err(|es| {
-            es.into_iter()
-                .map(|e| {
-                    let span = lowered.place(e.line);
-                    StLoadError {
-                        line: span.line as usize,
-                        column: span.column as usize,
-                        message: e.error.to_string(),
-                    }
-                })
-                .collect()
-        })
+        load(text).map(|(p, _)| p)
     }
+}
+
+fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
+    let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
+    check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
+    let lowered =
+        lower_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
+    let program = Program::load(&lowered.text).map_err(|es| {
+        es.into_iter()
+            .map(|e| {
+                let span = lowered.place(e.line);
+                StLoadError {
+                    line: span.line as usize,
+                    column: span.column as usize,
+                    message: e.error.to_string(),
+                }
+            })
+            .collect::<Vec<_>>()
+    })?;
+    Ok((program, lowered.text))
 }

@@ -3,6 +3,10 @@
 //! IEC 61131-3's rules by hand.
 
 mod blocks;
+#[path = "../common/mod.rs"]
+mod files;
+
+mod cli;
 mod common;
 mod control;
 mod expressions;
