@@ -10,4 +10,6 @@ mod cli;
 mod common;
 mod control;
 mod expressions;
+mod property;
 mod refusals;
+mod speed;

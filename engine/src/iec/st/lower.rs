@@ -90,7 +90,16 @@ struct Lower {
 
 impl Lower {
     fn emit(&mut self, text: impl Into<String>, span: Span) {
-        self.lines.push((text.into(), span));
+        let text = text.into();
+        // `ST x` leaves x's value the current result: a `LD x` right after
+        // it (one statement reading what the last wrote) is left out, as a
+        // hand-written IL would.
+        if let (Some(t), Some((last, _))) = (text.strip_prefix("LD "), self.lines.last()) {
+            if last.strip_prefix("ST ") == Some(t) {
+                return;
+            }
+        }
+        self.lines.push((text, span));
     }
 
     fn not_yet(&mut self, span: Span, what: impl Into<String>) {
@@ -345,6 +354,9 @@ impl Lower {
         if let Some(t) = simple(e) {
             return self.emit(format!("LD {t}"), e.span);
         }
+        if let Some(t) = negated(e) {
+            return self.emit(format!("LDN {t}"), e.span);
+        }
         match &e.kind {
             ExprKind::Unary(UnaryOp::Plus, x) => self.expr(x),
             ExprKind::Unary(UnaryOp::Neg, x) => {
@@ -368,11 +380,25 @@ impl Lower {
 
     /// `OP b`, or `OP(` … `)` around `b`'s instructions.
     fn operand(&mut self, op: &str, b: &Expr) {
+        // `a AND NOT b` is IL's one `ANDN b`, as a hand-written IL has it.
+        if let (true, Some(t)) = (matches!(op, "AND" | "OR" | "XOR"), negated(b)) {
+            return self.emit(format!("{op}N {t}"), b.span);
+        }
         match simple(b) {
             Some(t) => self.emit(format!("{op} {t}"), b.span),
             None => {
+                let open = self.lines.len();
                 self.emit(format!("{op}("), b.span);
                 self.expr(b);
+                // `OP(` / `LD x` is IL's one `OP( x`.
+                if let Some(t) = self
+                    .lines
+                    .get(open + 1)
+                    .and_then(|(l, _)| l.strip_prefix("LD "))
+                {
+                    self.lines[open].0 = format!("{op}( {t}");
+                    self.lines.remove(open + 1);
+                }
                 self.emit(")", b.span);
             }
         }
@@ -437,6 +463,15 @@ fn simple(e: &Expr) -> Option<String> {
             [Selector::Member(m)] => Some(format!("{}.{}", v.base.name, m.name)),
             _ => None,
         },
+        _ => None,
+    }
+}
+
+/// The operand under `NOT`, when `e` is `NOT operand` of a BOOL or bit
+/// string (a variable: `LDN x`, `ANDN x` invert it, as `NOT` does).
+fn negated(e: &Expr) -> Option<String> {
+    match &e.kind {
+        ExprKind::Unary(UnaryOp::Not, x) if matches!(x.kind, ExprKind::Variable(_)) => simple(x),
         _ => None,
     }
 }
