@@ -69,3 +69,39 @@ fn an_endless_loop_is_cut_as_il_is() {
     let n: i64 = shown(&p, "n").parse().unwrap();
     assert!(n > 1000, "it ran until cut: {n}");
 }
+
+#[test]
+fn exit_leaves_the_innermost_loop_only() {
+    let p = run_once(
+        "i, j, n : INT;",
+        "FOR i := 1 TO 3 DO\n  FOR j := 1 TO 10 DO\n    IF j > i THEN EXIT; END_IF;\n    n := n + 1;\n  END_FOR;\nEND_FOR;",
+    );
+    // 1 + 2 + 3 inner passes.
+    assert_eq!(shown(&p, "n"), "6");
+    assert_eq!(shown(&p, "i"), "4");
+}
+
+#[test]
+fn return_in_a_block_ends_its_call_only() {
+    let mut p = load(
+        "FUNCTION_BLOCK Half\nVAR_INPUT x : INT; END_VAR\nVAR_OUTPUT y : INT; END_VAR\ny := 0;\nIF x < 0 THEN RETURN; END_IF;\ny := x / 2;\nEND_FUNCTION_BLOCK\nPROGRAM t\nVAR h : Half; a, b : INT; after : BOOL; END_VAR\nh(x := -4);\na := h.y;\nh(x := 9);\nb := h.y;\nafter := TRUE;\nEND_PROGRAM\n",
+    );
+    p.scan(0);
+    assert_eq!(shown(&p, "a"), "0");
+    assert_eq!(shown(&p, "b"), "4");
+    assert_eq!(shown(&p, "after"), "TRUE");
+}
+
+#[test]
+fn negative_literals_and_an_empty_program() {
+    let p = run_once(
+        "a : INT := 10; b, c : INT; d : DINT;",
+        "b := a - -3;\nc := -a * -2 + INT#-5;\nd := -DINT#7 - 1;",
+    );
+    assert_eq!(shown(&p, "b"), "13");
+    assert_eq!(shown(&p, "c"), "15");
+    assert_eq!(shown(&p, "d"), "-8");
+    let mut p = load("PROGRAM t\nVAR n : INT := 3; END_VAR\nEND_PROGRAM\n");
+    p.scan(0);
+    assert_eq!(shown(&p, "n"), "3");
+}
