@@ -74,3 +74,23 @@ fn a_function_block_declared_after_the_program_runs() {
     p.scan(MS);
     assert_eq!(shown(&p, "o"), "FALSE");
 }
+
+#[test]
+fn own_functions_are_called_in_expressions() {
+    let mut p = load(
+        "FUNCTION Square : DINT\nVAR_INPUT x : DINT; END_VAR\nSquare := x * x;\nEND_FUNCTION\n\
+         FUNCTION Clamp : DINT\nVAR_INPUT v, hi : DINT; END_VAR\nClamp := v;\nIF v > hi THEN Clamp := hi; END_IF;\nEND_FUNCTION\n\
+         PROGRAM t\nVAR a : DINT := 3; r, s, c : DINT; i : DINT; END_VAR\n\
+         r := Square(a) + Square(x := 4) * 2;\n\
+         c := Clamp(Square(a), 5);\n\
+         FOR i := 1 TO Square(2) DO s := s + Clamp(v := i, hi := 2); END_FOR;\n\
+         END_PROGRAM\n",
+    );
+    p.scan(0);
+    // 9 + 16 × 2.
+    assert_eq!(shown(&p, "r"), "41");
+    assert_eq!(shown(&p, "c"), "5");
+    // 1 + 2 + 2 + 2.
+    assert_eq!(shown(&p, "s"), "7");
+    assert_eq!(shown(&p, "i"), "5");
+}

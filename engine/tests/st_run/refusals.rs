@@ -19,9 +19,12 @@ fn what_does_not_run_yet_says_so_at_its_place() {
         e[0].contains("`**` does not run on the soft PLC yet"),
         "{e:?}"
     );
-    let e = refusals("FUNCTION f : INT\nf := 1;\nEND_FUNCTION\nPROGRAM t\nEND_PROGRAM\n");
+    let e = refusals(
+        "FUNCTION f : INT\nVAR_INPUT x : INT; END_VAR\nf := x;\nEND_FUNCTION\nPROGRAM t\nVAR n : INT; END_VAR\nn := f(n + 1);\nEND_PROGRAM\n",
+    );
+    assert_eq!(e.len(), 1, "{e:?}");
     assert!(
-        e[0].starts_with("1:1:") && e[0].contains("FUNCTION"),
+        e[0].starts_with("7:8:") && e[0].contains("function's input"),
         "{e:?}"
     );
     let e = refusals("FUNCTION_BLOCK b\nEND_FUNCTION_BLOCK\n");
@@ -40,4 +43,12 @@ fn the_il_loaders_refusal_is_at_the_st_declaration() {
 fn a_syntax_error_is_at_its_place() {
     let e = refusals("PROGRAM t\nVAR n : INT; END_VAR\nIF n THEN\nEND_PROGRAM\n");
     assert!(e[0].starts_with("3:") || e[0].starts_with("4:"), "{e:?}");
+}
+
+#[test]
+fn an_own_function_in_a_case_label_is_refused() {
+    let e = refusals(
+        "FUNCTION f : INT\nVAR_INPUT x : INT; END_VAR\nf := x;\nEND_FUNCTION\nPROGRAM t\nVAR n : INT; END_VAR\nCASE n OF\n  1: n := 2;\nEND_CASE;\nCASE n OF f(n): n := 1; END_CASE;\nEND_PROGRAM\n",
+    );
+    assert!(e.iter().any(|m| m.starts_with("10:")), "{e:?}");
 }

@@ -39,7 +39,10 @@ impl Lowered {
 /// Lowers a checked source (see [`super::check_source`]) to IL: its
 /// function blocks, then its one `PROGRAM`.
 pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
-    let mut l = Lower::default();
+    let mut l = Lower {
+        functions: signatures(source),
+        ..Lower::default()
+    };
     let mut program: Option<&Pou> = None;
     for item in &source.items {
         match item {
@@ -49,7 +52,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
                     l.not_yet(p.span, "a second PROGRAM in one file")
                 }
                 PouKind::Program => program = Some(p),
-                PouKind::Function(_) => l.not_yet(p.span, "a FUNCTION of the program's own"),
+                PouKind::Function(ref ty) => l.function_pou(p, ty),
             },
             Item::Types(ts) => {
                 let span = ts.first().map(|t| t.name.span).unwrap_or_default();
@@ -79,17 +82,49 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
     Ok(Lowered { text, spans })
 }
 
+/// Each own function's inputs in order, by upper-case name.
+fn signatures(source: &Source) -> std::collections::HashMap<String, Vec<String>> {
+    let mut out = std::collections::HashMap::new();
+    for item in &source.items {
+        if let Item::Pou(
+            p @ Pou {
+                kind: PouKind::Function(_),
+                ..
+            },
+        ) = item
+        {
+            let inputs = p
+                .vars
+                .iter()
+                .filter(|b| b.kind == super::ast::VarKind::Input)
+                .flat_map(|b| &b.decls)
+                .flat_map(|d| &d.names)
+                .map(|n| n.name.clone())
+                .collect();
+            out.insert(p.name.name.to_ascii_uppercase(), inputs);
+        }
+    }
+    out
+}
+
 #[derive(Default)]
-struct Lower {
-    lines: Vec<(String, Span)>,
-    errors: Vec<StError>,
+pub(super) struct Lower {
+    pub(super) lines: Vec<(String, Span)>,
+    pub(super) errors: Vec<StError>,
     labels: usize,
     /// The end label of each enclosing loop, innermost last (`EXIT`).
     exits: Vec<String>,
+    /// The program's own functions (upper-case) and their inputs in order.
+    pub(super) functions: std::collections::HashMap<String, Vec<String>>,
+    /// Own-function calls already made (by their place): the operand that
+    /// reads their result.
+    pub(super) hoisted: std::collections::HashMap<(u32, u32), String>,
+    /// The hidden instances the POU being lowered calls its functions by.
+    pub(super) hidden: Vec<(String, String)>,
 }
 
 impl Lower {
-    fn emit(&mut self, text: impl Into<String>, span: Span) {
+    pub(super) fn emit(&mut self, text: impl Into<String>, span: Span) {
         let text = text.into();
         // `ST x` leaves x's value the current result: a `LD x` right after
         // it (one statement reading what the last wrote) is left out, as a
@@ -102,7 +137,7 @@ impl Lower {
         self.lines.push((text, span));
     }
 
-    fn not_yet(&mut self, span: Span, what: impl Into<String>) {
+    pub(super) fn not_yet(&mut self, span: Span, what: impl Into<String>) {
         self.errors.push(at(span, StErrorKind::NotYet(what.into())));
     }
 
@@ -116,16 +151,16 @@ impl Lower {
         self.emit(format!("{label}:"), span);
     }
 
-    fn pou(&mut self, p: &Pou, keyword: &str) {
+    pub(super) fn pou(&mut self, p: &Pou, keyword: &str) {
         self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);
         }
-        self.stmts(&p.body);
+        self.body(p);
         self.emit(format!("END_{keyword}"), p.span);
     }
 
-    fn block(&mut self, b: &VarBlock) {
+    pub(super) fn block(&mut self, b: &VarBlock) {
         let keyword = match (b.kind, b.retain) {
             (VarKind::Local, true) => "VAR_RETAIN",
             (VarKind::Local, false) => "VAR",
@@ -158,7 +193,7 @@ impl Lower {
         self.emit("END_VAR", b.span);
     }
 
-    fn stmts(&mut self, stmts: &[Stmt]) {
+    pub(super) fn stmts(&mut self, stmts: &[Stmt]) {
         for s in stmts {
             self.stmt(s);
         }
@@ -171,7 +206,7 @@ impl Lower {
                 if !target.path.is_empty() {
                     return self.not_yet(span, "an assignment to a member or element");
                 }
-                self.expr(value);
+                self.value(value);
                 self.emit(format!("ST {}", target.base.name), span);
             }
             StmtKind::Call(call) => self.block_call(call, span),
@@ -194,7 +229,7 @@ impl Lower {
             StmtKind::While { cond, body } => {
                 let (top, end) = (self.label(), self.label());
                 self.place(&top, span);
-                self.expr(cond);
+                self.value(cond);
                 self.emit(format!("JMPCN {end}"), span);
                 self.in_loop(&end, body);
                 self.emit(format!("JMP {top}"), span);
@@ -204,7 +239,7 @@ impl Lower {
                 let (top, end) = (self.label(), self.label());
                 self.place(&top, span);
                 self.in_loop(&end, body);
-                self.expr(until);
+                self.value(until);
                 self.emit(format!("JMPCN {top}"), until.span);
                 self.place(&end, span);
             }
@@ -227,7 +262,7 @@ impl Lower {
         let end = self.label();
         for (cond, body) in branches {
             let next = self.label();
-            self.expr(cond);
+            self.value(cond);
             self.emit(format!("JMPCN {next}"), cond.span);
             self.stmts(body);
             self.emit(format!("JMP {end}"), span);
@@ -281,7 +316,7 @@ impl Lower {
         span: Span,
     ) {
         let (top, end, down, run) = (self.label(), self.label(), self.label(), self.label());
-        self.expr(from);
+        self.value(from);
         self.emit(format!("ST {v}"), span);
         self.place(&top, span);
         match by.map(step_sign) {
@@ -289,7 +324,7 @@ impl Lower {
             Some(Some(true)) => self.past(v, "LT", to, &end, span),
             Some(None) => {
                 if let Some(step) = by {
-                    self.expr(step);
+                    self.value(step);
                 }
                 self.emit("LT 0", span);
                 self.emit(format!("JMPC {down}"), span);
@@ -303,7 +338,10 @@ impl Lower {
         self.in_loop(&end, body);
         self.emit(format!("LD {v}"), span);
         match by {
-            Some(step) => self.operand("ADD", step),
+            Some(step) => {
+                self.hoist(step);
+                self.operand("ADD", step)
+            }
             None => self.emit("ADD 1", span),
         }
         self.emit(format!("ST {v}"), span);
@@ -312,6 +350,7 @@ impl Lower {
     }
 
     fn past(&mut self, v: &str, cmp: &str, to: &Expr, end: &str, span: Span) {
+        self.hoist(to);
         self.emit(format!("LD {v}"), span);
         self.operand(cmp, to);
         self.emit(format!("JMPC {end}"), span);
@@ -323,7 +362,7 @@ impl Lower {
         let mut args = Vec::new();
         for a in &call.args {
             match a {
-                Arg::Input(name, e) => match simple(e) {
+                Arg::Input(name, e) => match self.simple(e) {
                     Some(t) => args.push(format!("{} := {t}", name.name)),
                     None => self.not_yet(
                         e.span,
@@ -349,9 +388,16 @@ impl Lower {
         );
     }
 
+    /// Leaves `e`'s value as the current result, its own-function calls
+    /// made first.
+    fn value(&mut self, e: &Expr) {
+        self.hoist(e);
+        self.expr(e);
+    }
+
     /// Leaves `e`'s value as the current result.
     fn expr(&mut self, e: &Expr) {
-        if let Some(t) = simple(e) {
+        if let Some(t) = self.simple(e) {
             return self.emit(format!("LD {t}"), e.span);
         }
         if let Some(t) = negated(e) {
@@ -384,7 +430,7 @@ impl Lower {
         if let (true, Some(t)) = (matches!(op, "AND" | "OR" | "XOR"), negated(b)) {
             return self.emit(format!("{op}N {t}"), b.span);
         }
-        match simple(b) {
+        match self.simple(b) {
             Some(t) => self.emit(format!("{op} {t}"), b.span),
             None => {
                 let open = self.lines.len();
@@ -408,6 +454,17 @@ impl Lower {
     /// result, the others operands.
     fn function(&mut self, call: &super::ast::Call, span: Span) {
         use super::ast::Arg;
+        if self
+            .functions
+            .contains_key(&call.callee.name.to_ascii_uppercase())
+        {
+            // An own function's call not made: its refusal is said, or
+            // it stands where no call is made first (a CASE label).
+            if self.errors.is_empty() {
+                self.not_yet(span, "a call of the program's own function here");
+            }
+            return;
+        }
         if crate::iec::il::Function::named(&call.callee.name).is_none() {
             let what = format!("the function {}", call.callee.name.to_ascii_uppercase());
             return self.not_yet(call.callee.span, what);
@@ -426,7 +483,7 @@ impl Lower {
         self.expr(first);
         let mut ops = Vec::new();
         for e in rest {
-            match simple(e) {
+            match self.simple(e) {
                 Some(t) => ops.push(t),
                 None => self.not_yet(
                     e.span,
@@ -444,7 +501,7 @@ impl Lower {
 
 /// An IL operand for `e`, when it is one: a literal, a variable, a
 /// block's output.
-fn simple(e: &Expr) -> Option<String> {
+pub(super) fn simple(e: &Expr) -> Option<String> {
     use super::ast::{Literal, Selector};
     match &e.kind {
         ExprKind::Literal(l) => Some(super::print::literal_text(l)),

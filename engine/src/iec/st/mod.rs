@@ -15,6 +15,7 @@ pub mod error;
 mod expr;
 mod lexer;
 pub mod lower;
+mod lower_call;
 mod parser;
 pub mod print;
 mod stmt;

@@ -1,0 +1,114 @@
+//! The program's own FUNCTIONs, lowered: each becomes an IL function
+//! block whose one output bears the function's name (its result), and
+//! each call in an expression a `CAL` of a hidden instance made just
+//! before the statement's expression is computed, the call then read as
+//! the instance's output (`st_f3.Square`). IL has no call inside an
+//! expression; this keeps the expression one run of operations.
+
+use super::ast::{Arg, Expr, ExprKind, Pou, Selector, TypeRef};
+use super::lower::{simple, Lower};
+
+impl Lower {
+    /// A FUNCTION as a function block: its inputs and locals as written,
+    /// its result an output of its own name. Its locals keep their values
+    /// between calls (IEC starts them afresh): a function that reads a
+    /// local before writing it sees the last call's value.
+    pub(super) fn function_pou(&mut self, p: &Pou, result: &TypeRef) {
+        self.emit(format!("FUNCTION_BLOCK {}", p.name.name), p.span);
+        for b in &p.vars {
+            self.block(b);
+        }
+        let ty = super::print::type_text(result);
+        self.emit("VAR_OUTPUT", p.span);
+        self.emit(format!("  {} : {ty};", p.name.name), p.name.span);
+        self.emit("END_VAR", p.span);
+        self.body(p);
+        self.emit("END_FUNCTION_BLOCK", p.span);
+    }
+
+    /// A POU's statements, then (before them) the hidden instances its
+    /// function calls need.
+    pub(super) fn body(&mut self, p: &Pou) {
+        let at = self.lines.len();
+        self.hidden.clear();
+        self.stmts(&p.body);
+        if self.hidden.is_empty() {
+            return;
+        }
+        let mut block = vec![("VAR".to_string(), p.span)];
+        for (name, ty) in std::mem::take(&mut self.hidden) {
+            block.push((format!("  {name} : {ty};"), p.span));
+        }
+        block.push(("END_VAR".to_string(), p.span));
+        self.lines.splice(at..at, block);
+    }
+
+    /// An IL operand for `e`: [`simple`]'s, or a call already made.
+    pub(super) fn simple(&self, e: &Expr) -> Option<String> {
+        if let ExprKind::Call(_) = e.kind {
+            return self.hoisted.get(&(e.span.line, e.span.column)).cloned();
+        }
+        simple(e)
+    }
+
+    /// Makes the calls of own functions in `e`, innermost first.
+    pub(super) fn hoist(&mut self, e: &Expr) {
+        match &e.kind {
+            ExprKind::Unary(_, x) => self.hoist(x),
+            ExprKind::Binary(_, a, b) => {
+                self.hoist(a);
+                self.hoist(b);
+            }
+            ExprKind::Variable(v) => {
+                for s in &v.path {
+                    if let Selector::Index(ix) = s {
+                        ix.iter().for_each(|i| self.hoist(i));
+                    }
+                }
+            }
+            ExprKind::Call(call) => {
+                for a in &call.args {
+                    if let Arg::Positional(x) | Arg::Input(_, x) = a {
+                        self.hoist(x);
+                    }
+                }
+                let upper = call.callee.name.to_ascii_uppercase();
+                if let Some(inputs) = self.functions.get(&upper).cloned() {
+                    self.call_function(call, &inputs, e);
+                }
+            }
+            ExprKind::Literal(_) => {}
+        }
+    }
+
+    fn call_function(&mut self, call: &super::ast::Call, inputs: &[String], e: &Expr) {
+        let mut args = Vec::new();
+        for (i, a) in call.args.iter().enumerate() {
+            let (name, x) = match a {
+                Arg::Positional(x) => match inputs.get(i) {
+                    Some(n) => (n.clone(), x),
+                    None => return self.not_yet(x.span, "an argument past the function's inputs"),
+                },
+                Arg::Input(n, x) => (n.name.clone(), x),
+                Arg::Output { name, .. } => {
+                    return self.not_yet(name.span, "an output of a function call")
+                }
+            };
+            match self.simple(x) {
+                Some(t) => args.push(format!("{name} := {t}")),
+                None => {
+                    return self.not_yet(
+                        x.span,
+                        "an expression as a function's input (assign it to a variable first)",
+                    )
+                }
+            }
+        }
+        let instance = format!("st_f{}", self.hidden.len() + 1);
+        self.hidden
+            .push((instance.clone(), call.callee.name.clone()));
+        self.emit(format!("CAL {instance}({})", args.join(", ")), e.span);
+        let read = format!("{instance}.{}", call.callee.name);
+        self.hoisted.insert((e.span.line, e.span.column), read);
+    }
+}
