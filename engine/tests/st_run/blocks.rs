@@ -94,3 +94,30 @@ fn own_functions_are_called_in_expressions() {
     assert_eq!(shown(&p, "s"), "7");
     assert_eq!(shown(&p, "i"), "5");
 }
+
+#[test]
+fn expressions_as_inputs_of_blocks_and_own_functions() {
+    let mut p = load(
+        "FUNCTION Twice : INT\nVAR_INPUT x : INT; END_VAR\nTwice := x * 2;\nEND_FUNCTION\n\
+         PROGRAM t\nVAR a AT %IX0.0 : BOOL; b : BOOL := TRUE; t0 : TON; c0 : CTU; n, k : INT; q, full : BOOL; END_VAR\n\
+         t0(IN := a AND b, PT := T#10ms + T#20ms);\nq := t0.Q;\n\
+         c0(CU := NOT q AND a, PV := Twice(n + 1) + 1, Q => full);\nk := c0.CV;\n\
+         n := Twice(Twice(k) - 1);\n\
+         END_PROGRAM\n",
+    );
+    p.scan(0);
+    // n = Twice(Twice(0) - 1) = -2.
+    assert_eq!(shown(&p, "n"), "-2");
+    let a = engine::iec::address::Address::parse("%IX0.0").expect("address");
+    assert!(p.set_input(a, engine::iec::data::Data::Bool(true)));
+    p.scan(MS);
+    // CU rose: CV 1; n = Twice(2 - 1) = 2.
+    assert_eq!(shown(&p, "k"), "1");
+    assert_eq!(shown(&p, "n"), "2");
+    p.scan(20 * MS);
+    assert_eq!(shown(&p, "q"), "FALSE", "20 ms of 30");
+    p.scan(31 * MS);
+    assert_eq!(shown(&p, "q"), "TRUE", "PT is 10 ms + 20 ms");
+    // PV = Twice(n + 1) + 1 = 7 while n = 2: CV 1 is not there.
+    assert_eq!(shown(&p, "full"), "FALSE");
+}

@@ -39,8 +39,10 @@ impl Lowered {
 /// Lowers a checked source (see [`super::check_source`]) to IL: its
 /// function blocks, then its one `PROGRAM`.
 pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
+    let (functions, blocks) = signatures(source);
     let mut l = Lower {
-        functions: signatures(source),
+        functions,
+        blocks,
         ..Lower::default()
     };
     let mut program: Option<&Pou> = None;
@@ -82,29 +84,33 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
     Ok(Lowered { text, spans })
 }
 
-/// Each own function's inputs in order, by upper-case name.
-fn signatures(source: &Source) -> std::collections::HashMap<String, Vec<String>> {
-    let mut out = std::collections::HashMap::new();
+/// Each own function's and block's inputs in order (name, type as
+/// written), by upper-case name: functions first, blocks second.
+type Pins = std::collections::HashMap<String, Vec<(String, String)>>;
+
+fn signatures(source: &Source) -> (Pins, Pins) {
+    let (mut functions, mut blocks) = (Pins::new(), Pins::new());
     for item in &source.items {
-        if let Item::Pou(
-            p @ Pou {
-                kind: PouKind::Function(_),
-                ..
-            },
-        ) = item
-        {
-            let inputs = p
-                .vars
-                .iter()
-                .filter(|b| b.kind == super::ast::VarKind::Input)
-                .flat_map(|b| &b.decls)
-                .flat_map(|d| &d.names)
-                .map(|n| n.name.clone())
-                .collect();
-            out.insert(p.name.name.to_ascii_uppercase(), inputs);
-        }
+        let Item::Pou(p) = item else { continue };
+        let inputs = p
+            .vars
+            .iter()
+            .filter(|b| b.kind == VarKind::Input)
+            .flat_map(|b| &b.decls)
+            .flat_map(|d| {
+                d.names
+                    .iter()
+                    .map(|n| (n.name.clone(), super::print::type_text(&d.ty)))
+            })
+            .collect();
+        let name = p.name.name.to_ascii_uppercase();
+        match p.kind {
+            PouKind::Function(_) => functions.insert(name, inputs),
+            PouKind::FunctionBlock => blocks.insert(name, inputs),
+            PouKind::Program => None,
+        };
     }
-    out
+    (functions, blocks)
 }
 
 #[derive(Default)]
@@ -114,8 +120,13 @@ pub(super) struct Lower {
     labels: usize,
     /// The end label of each enclosing loop, innermost last (`EXIT`).
     exits: Vec<String>,
-    /// The program's own functions (upper-case) and their inputs in order.
-    pub(super) functions: std::collections::HashMap<String, Vec<String>>,
+    /// The program's own functions and blocks (upper-case) and their
+    /// inputs in order.
+    pub(super) functions: Pins,
+    pub(super) blocks: Pins,
+    /// The block instances the POU being lowered declares: upper-case
+    /// name to type.
+    pub(super) instances: std::collections::HashMap<String, String>,
     /// Own-function calls already made (by their place): the operand that
     /// reads their result.
     pub(super) hoisted: std::collections::HashMap<(u32, u32), String>,
@@ -362,13 +373,14 @@ impl Lower {
         let mut args = Vec::new();
         for a in &call.args {
             match a {
-                Arg::Input(name, e) => match self.simple(e) {
-                    Some(t) => args.push(format!("{} := {t}", name.name)),
-                    None => self.not_yet(
-                        e.span,
-                        "an expression as a block's input (assign it to a variable first)",
-                    ),
-                },
+                Arg::Input(name, e) => {
+                    let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
+                    let ty = ty.cloned().unwrap_or_default();
+                    match self.input(&ty, &name.name, e, false) {
+                        Some(t) => args.push(format!("{} := {t}", name.name)),
+                        None => self.not_yet(e.span, "this block's input as an expression"),
+                    }
+                }
                 Arg::Output {
                     name,
                     negated: false,
@@ -390,13 +402,13 @@ impl Lower {
 
     /// Leaves `e`'s value as the current result, its own-function calls
     /// made first.
-    fn value(&mut self, e: &Expr) {
+    pub(super) fn value(&mut self, e: &Expr) {
         self.hoist(e);
         self.expr(e);
     }
 
     /// Leaves `e`'s value as the current result.
-    fn expr(&mut self, e: &Expr) {
+    pub(super) fn expr(&mut self, e: &Expr) {
         if let Some(t) = self.simple(e) {
             return self.emit(format!("LD {t}"), e.span);
         }

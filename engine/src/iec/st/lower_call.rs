@@ -31,6 +31,19 @@ impl Lower {
     pub(super) fn body(&mut self, p: &Pou) {
         let at = self.lines.len();
         self.hidden.clear();
+        self.instances = p
+            .vars
+            .iter()
+            .flat_map(|b| &b.decls)
+            .filter_map(|d| match &d.ty {
+                TypeRef::Named(t) => Some(d.names.iter().map(|n| {
+                    let ty = t.name.to_ascii_uppercase();
+                    (n.name.to_ascii_uppercase(), ty)
+                })),
+                _ => None,
+            })
+            .flatten()
+            .collect();
         self.stmts(&p.body);
         if self.hidden.is_empty() {
             return;
@@ -81,12 +94,42 @@ impl Lower {
         }
     }
 
-    fn call_function(&mut self, call: &super::ast::Call, inputs: &[String], e: &Expr) {
+    /// An operand giving input `pin` of a block or function of type
+    /// `ty` the value of `e`: `e` itself when it is one, else a hidden
+    /// variable of the pin's type that `e` is stored to first; `None`
+    /// when the pin's type is not known. `made`: `e`'s own-function calls
+    /// are made already (a function's arguments are, before its call).
+    pub(super) fn input(&mut self, ty: &str, pin: &str, e: &Expr, made: bool) -> Option<String> {
+        if let Some(t) = self.simple(e) {
+            return Some(t);
+        }
+        let own = self.blocks.get(ty).or_else(|| self.functions.get(ty));
+        let pin_ty = match own {
+            Some(pins) => pins
+                .iter()
+                .find(|(n, _)| n.eq_ignore_ascii_case(pin))
+                .map(|(_, t)| t.clone()),
+            None => crate::iec::pins::inputs(ty)
+                .into_iter()
+                .find(|(n, _)| n.eq_ignore_ascii_case(pin))
+                .map(|(_, t)| t.name().to_string()),
+        }?;
+        let temp = format!("st_t{}", self.hidden.len() + 1);
+        self.hidden.push((temp.clone(), pin_ty));
+        if !made {
+            self.hoist(e);
+        }
+        self.expr(e);
+        self.emit(format!("ST {temp}"), e.span);
+        Some(temp)
+    }
+
+    fn call_function(&mut self, call: &super::ast::Call, inputs: &[(String, String)], e: &Expr) {
         let mut args = Vec::new();
         for (i, a) in call.args.iter().enumerate() {
             let (name, x) = match a {
                 Arg::Positional(x) => match inputs.get(i) {
-                    Some(n) => (n.clone(), x),
+                    Some((n, _)) => (n.clone(), x),
                     None => return self.not_yet(x.span, "an argument past the function's inputs"),
                 },
                 Arg::Input(n, x) => (n.name.clone(), x),
@@ -94,14 +137,10 @@ impl Lower {
                     return self.not_yet(name.span, "an output of a function call")
                 }
             };
-            match self.simple(x) {
+            let ty = call.callee.name.to_ascii_uppercase();
+            match self.input(&ty, &name, x, true) {
                 Some(t) => args.push(format!("{name} := {t}")),
-                None => {
-                    return self.not_yet(
-                        x.span,
-                        "an expression as a function's input (assign it to a variable first)",
-                    )
-                }
+                None => return self.not_yet(x.span, "this function's input as an expression"),
             }
         }
         let instance = format!("st_f{}", self.hidden.len() + 1);
