@@ -121,3 +121,13 @@ fn expressions_as_inputs_of_blocks_and_own_functions() {
     // PV = Twice(n + 1) + 1 = 7 while n = 2: CV 1 is not there.
     assert_eq!(shown(&p, "full"), "FALSE");
 }
+
+#[test]
+fn hidden_variables_take_no_declared_name() {
+    let mut p = load(
+        "PROGRAM t\nVAR a : BOOL := TRUE; st_t1 : BOOL := TRUE; st_t2 : INT := 7; t0 : TON; q : BOOL; END_VAR\nt0(IN := a AND st_t1, PT := T#0s);\nq := t0.Q;\nEND_PROGRAM\n",
+    );
+    p.scan(0);
+    assert_eq!(shown(&p, "q"), "TRUE");
+    assert_eq!(shown(&p, "st_t2"), "7");
+}

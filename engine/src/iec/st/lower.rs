@@ -43,6 +43,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
     let mut l = Lower {
         functions,
         blocks,
+        taken: declared(source),
         ..Lower::default()
     };
     let mut program: Option<&Pou> = None;
@@ -88,6 +89,18 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
 /// written), by upper-case name: functions first, blocks second.
 type Pins = std::collections::HashMap<String, Vec<(String, String)>>;
 
+fn declared(source: &Source) -> std::collections::HashSet<String> {
+    let pous = source.items.iter().filter_map(|i| match i {
+        Item::Pou(p) => Some(p),
+        _ => None,
+    });
+    pous.flat_map(|p| &p.vars)
+        .flat_map(|b| &b.decls)
+        .flat_map(|d| &d.names)
+        .map(|n| n.name.to_ascii_uppercase())
+        .collect()
+}
+
 fn signatures(source: &Source) -> (Pins, Pins) {
     let (mut functions, mut blocks) = (Pins::new(), Pins::new());
     for item in &source.items {
@@ -132,6 +145,9 @@ pub(super) struct Lower {
     pub(super) hoisted: std::collections::HashMap<(u32, u32), String>,
     /// The hidden instances the POU being lowered calls its functions by.
     pub(super) hidden: Vec<(String, String)>,
+    /// Every name the source declares (upper-case): a hidden name is
+    /// none of them.
+    pub(super) taken: std::collections::HashSet<String>,
 }
 
 impl Lower {

@@ -64,6 +64,18 @@ impl Lower {
         simple(e)
     }
 
+    /// A hidden variable's name: `prefix` and a number, no declared name.
+    fn fresh(&mut self, prefix: &str) -> String {
+        let mut n = self.hidden.len() + 1;
+        loop {
+            let name = format!("{prefix}{n}");
+            if self.taken.insert(name.to_ascii_uppercase()) {
+                return name;
+            }
+            n += 1;
+        }
+    }
+
     /// Makes the calls of own functions in `e`, innermost first.
     pub(super) fn hoist(&mut self, e: &Expr) {
         match &e.kind {
@@ -114,7 +126,7 @@ impl Lower {
                 .find(|(n, _)| n.eq_ignore_ascii_case(pin))
                 .map(|(_, t)| t.name().to_string()),
         }?;
-        let temp = format!("st_t{}", self.hidden.len() + 1);
+        let temp = self.fresh("st_t");
         self.hidden.push((temp.clone(), pin_ty));
         if !made {
             self.hoist(e);
@@ -143,7 +155,7 @@ impl Lower {
                 None => return self.not_yet(x.span, "this function's input as an expression"),
             }
         }
-        let instance = format!("st_f{}", self.hidden.len() + 1);
+        let instance = self.fresh("st_f");
         self.hidden
             .push((instance.clone(), call.callee.name.clone()));
         self.emit(format!("CAL {instance}({})", args.join(", ")), e.span);
