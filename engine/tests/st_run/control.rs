@@ -105,3 +105,12 @@ fn negative_literals_and_an_empty_program() {
     p.scan(0);
     assert_eq!(shown(&p, "n"), "3");
 }
+
+#[test]
+fn a_case_on_an_own_functions_result() {
+    let mut p = load(
+        "FUNCTION Next : INT\nVAR_INPUT x : INT; END_VAR\nVAR_OUTPUT calls : INT; END_VAR\nNext := x + 1;\nEND_FUNCTION\nPROGRAM t\nVAR n : INT := 4; r : INT; END_VAR\nCASE Next(n) OF\n  1..4: r := 1;\n  5: r := 5;\nELSE r := 9;\nEND_CASE;\nEND_PROGRAM\n",
+    );
+    p.scan(0);
+    assert_eq!(shown(&p, "r"), "5");
+}

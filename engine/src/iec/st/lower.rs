@@ -305,6 +305,7 @@ impl Lower {
     fn case(&mut self, sel: &Expr, arms: &[CaseArm], otherwise: Option<&[Stmt]>, span: Span) {
         let (other, end) = (self.label(), self.label());
         let targets: Vec<String> = arms.iter().map(|_| self.label()).collect();
+        self.hoist(sel);
         for (arm, target) in arms.iter().zip(&targets) {
             for l in &arm.labels {
                 self.expr(sel);
