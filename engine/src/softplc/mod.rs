@@ -13,6 +13,7 @@ pub mod plc;
 pub mod pou;
 pub mod program;
 pub mod scan;
+pub mod st;
 pub mod target;
 
 pub use plc::SoftPlc;

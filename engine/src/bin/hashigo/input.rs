@@ -74,6 +74,8 @@ pub enum Format {
     Xml,
     /// An LDmicro file (`.ld`): runs on the soft PLC.
     Ld,
+    /// Structured Text (`.st`): runs on the soft PLC.
+    St,
 }
 
 impl Format {
@@ -87,8 +89,9 @@ impl Format {
                 "json" => Ok(Format::Json),
                 "xml" => Ok(Format::Xml),
                 "ld" => Ok(Format::Ld),
+                "st" => Ok(Format::St),
                 other => Err(format!(
-                    "unknown --format {}: il, asm, json, xml or ld",
+                    "unknown --format {}: il, asm, json, xml, ld or st",
                     engine::shown(other)
                 )),
             };
@@ -102,6 +105,8 @@ impl Format {
             Format::Xml
         } else if lower.ends_with(".ld") {
             Format::Ld
+        } else if lower.ends_with(".st") {
+            Format::St
         } else {
             Format::Il
         })

@@ -19,6 +19,7 @@ const USAGE: &str = "\
 usage: hashigo <command> [options]
   run      --machine ID --program FILE [--set NAME=VALUE]... [--input EVENTS.csv]
            --until TIME [--every TIME] --watch DEV[,DEV...]
+           (a .st file, Structured Text, runs on soft-plc: --machine may be left out)
            [--plant NAME [--wiring WIRING.csv] [--fault FAULT]... [--set NAME.KEY=VALUE]...]
            (run, test and why take the plant options; alarms go to stderr)
   bench    --machine ID --program FILE --steps N

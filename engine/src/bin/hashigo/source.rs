@@ -72,6 +72,12 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
             }
             (machine, None, Vec::new(), None)
         }
+        Format::St => (
+            MachineId::SoftPlc,
+            Some(st_program(&source, flag)?),
+            Vec::new(),
+            None,
+        ),
         Format::Xml if flag == Some(MachineId::SoftPlc) => {
             let text = soft_program(args, &source)?;
             (MachineId::SoftPlc, Some(text), Vec::new(), None)
@@ -107,6 +113,24 @@ pub fn load(args: &Args) -> Result<Source, Problems> {
         file: source,
         format,
         project,
+    })
+}
+
+/// A Structured Text file as the soft PLC runs it (its Instruction
+/// List); errors at the file's line and column.
+fn st_program(source: &SourceFile, flag: Option<MachineId>) -> Result<String, Problems> {
+    if let Some(m) = flag.filter(|m| *m != MachineId::SoftPlc) {
+        return Err(one(format!(
+            "{}: Structured Text runs on the soft PLC (--machine soft-plc), not {}",
+            source.name,
+            m.name()
+        )));
+    }
+    engine::softplc::st::st_to_il(&source.text).map_err(|errors| {
+        errors
+            .iter()
+            .map(|e| format!("{}:{e}", source.name))
+            .collect()
     })
 }
 
@@ -197,7 +221,7 @@ pub fn read_project(
         Format::Json => Kind::Project,
         Format::Xml => Kind::PlcOpen,
         Format::Ld => Kind::LdMicro,
-        Format::Il | Format::Asm => {
+        Format::Il | Format::Asm | Format::St => {
             return Err(one(format!("{}: not a ladder file", source.name)));
         }
     };
@@ -289,18 +313,27 @@ pub fn ladder_project(
                 .0
                 .project
         }
-        Format::Il | Format::Asm => {
-            let machine = match flag {
-                Some(m) => m,
-                None => MachineId::parse(args.required("machine").map_err(one)?)
-                    .map_err(|e| one(e.to_string()))?,
+        Format::Il | Format::Asm | Format::St => {
+            // Structured Text becomes a ladder through its IL (its
+            // problems, if any, named at the compiled text's lines).
+            let (machine, text, name) = if format == Format::St {
+                let il = st_program(source, flag)?;
+                let name = format!("{} (compiled)", source.name);
+                (MachineId::SoftPlc, il, name)
+            } else {
+                let machine = match flag {
+                    Some(m) => m,
+                    None => MachineId::parse(args.required("machine").map_err(one)?)
+                        .map_err(|e| one(e.to_string()))?,
+                };
+                (machine, source.text.clone(), source.name.clone())
             };
-            let ladder = decompile_text(machine, &source.text, scan_ms).map_err(|e| match e {
+            let ladder = decompile_text(machine, &text, scan_ms).map_err(|e| match e {
                 engine::ladder::decompile::TextError::Program(problems) => problems
                     .iter()
-                    .map(|p| format!("{}:{}: {}", source.name, p.line, p.error))
+                    .map(|p| format!("{name}:{}: {}", p.line, p.error))
                     .collect(),
-                other => one(format!("{}: {other}", source.name)),
+                other => one(format!("{name}: {other}")),
             })?;
             Project::new(machine, ladder)
         }

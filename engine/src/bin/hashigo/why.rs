@@ -145,7 +145,7 @@ impl Explained {
                 .collect::<Vec<_>>()
         })?;
         let origin = match source.format {
-            Format::Il | Format::Asm => format!("{} (as its ladder)", source.name),
+            Format::Il | Format::Asm | Format::St => format!("{} (as its ladder)", source.name),
             Format::Json | Format::Xml | Format::Ld => format!("{} (compiled)", source.name),
         };
         let mut plc = new_plc(machine);

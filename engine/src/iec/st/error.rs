@@ -50,6 +50,9 @@ pub enum StErrorKind {
     },
     /// A feature Hashigo's Structured Text leaves out (named).
     Unsupported(&'static str),
+    /// Something that parses and checks but does not run on the soft
+    /// PLC yet (named).
+    NotYet(String),
     /// A keyword used where a name is needed.
     ReservedWord(String),
     /// Nesting deeper than [`MAX_DEPTH`].
@@ -141,6 +144,9 @@ impl fmt::Display for StErrorKind {
                 context,
                 found,
             } => write!(f, "expected {what} {context}, found {found}"),
+            StErrorKind::NotYet(what) => {
+                write!(f, "{what} does not run on the soft PLC yet")
+            }
             StErrorKind::Unsupported(what) => {
                 write!(f, "{what} not supported by Hashigo's Structured Text")
             }

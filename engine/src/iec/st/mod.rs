@@ -1,8 +1,8 @@
 //! Structured Text (IEC 61131-3, 3rd edition): its lexer, a hand-written
 //! recursive-descent parser and the syntax tree it builds ([`ast`]),
 //! with a printer back to text ([`print`]) and a checker of names and
-//! types ([`check_source`]). This is the front end only:
-//! nothing here runs a program yet. Left out, and refused at their line
+//! types ([`check_source`]), and its lowering to the soft PLC's
+//! Instruction List ([`lower_source`]), which is how ST runs. Left out, and refused at their line
 //! and column: references and pointers (`REF_TO`, `REF()`, `^`), the
 //! object-oriented extensions (`METHOD`, `INTERFACE`, `EXTENDS`,
 //! `IMPLEMENTS`…), `WSTRING`, pragmas `{…}`, enumerated and subrange
@@ -14,6 +14,8 @@ mod decl;
 pub mod error;
 mod expr;
 mod lexer;
+pub mod lower;
+mod lower_call;
 mod parser;
 pub mod print;
 mod stmt;
@@ -25,6 +27,7 @@ mod typing;
 pub use ast::Source;
 pub use check::check_source;
 pub use error::{StError, StErrorKind};
+pub use lower::{lower_source, Lowered};
 pub use print::print_source;
 
 use ast::Stmt;

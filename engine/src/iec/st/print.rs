@@ -112,7 +112,7 @@ pub fn type_text(ty: &TypeRef) -> String {
     }
 }
 
-fn init_text(init: &Init) -> String {
+pub(super) fn init_text(init: &Init) -> String {
     match init {
         Init::Expr(e) => expr_text(e),
         Init::Array(items) => {

@@ -1,0 +1,71 @@
+//! Structured Text on the soft PLC: a `.st` text read, checked and
+//! lowered to IL (`iec::st::lower`), then loaded as IL is, so it runs
+//! through the one scan. What the IL loader refuses is said at the ST
+//! line and column the IL line comes from.
+
+use std::fmt;
+
+use super::Program;
+use crate::iec::st::{check_source, lower_source, parse_source, StError};
+
+/// Why a Structured Text program does not load: where (1-based line and
+/// column of the ST text) and what.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StLoadError {
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column, in characters.
+    pub column: usize,
+    /// The reason.
+    pub message: String,
+}
+
+impl fmt::Display for StLoadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}", self.line, self.column, self.message)
+    }
+}
+
+fn from_st(e: StError) -> StLoadError {
+    StLoadError {
+        line: e.span.line as usize,
+        column: e.span.column as usize,
+        message: e.kind.to_string(),
+    }
+}
+
+/// A Structured Text source as the Instruction List the soft PLC runs
+/// (what `hashigo run` loads for a `.st` file), checked to load: every
+/// refusal at its ST line and column.
+pub fn st_to_il(text: &str) -> Result<String, Vec<StLoadError>> {
+    let (_, il) = load(text)?;
+    Ok(il)
+}
+
+impl Program {
+    /// Loads a Structured Text source: its one `PROGRAM` and its own
+    /// `FUNCTION_BLOCK`s. Every refusal at its line and column.
+    pub fn load_st(text: &str) -> Result<Program, Vec<StLoadError>> {
+        load(text).map(|(p, _)| p)
+    }
+}
+
+fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
+    let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
+    check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
+    let lowered =
+        lower_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
+    let program = Program::load(&lowered.text).map_err(|es| {
+        es.into_iter()
+            .map(|e| {
+                let span = lowered.place(e.line);
+                StLoadError {
+                    line: span.line as usize,
+                    column: span.column as usize,
+                    message: e.error.to_string(),
+                }
+            })
+            .collect::<Vec<_>>()
+    })?;
+    Ok((program, lowered.text))
+}

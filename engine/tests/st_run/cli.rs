@@ -1,0 +1,90 @@
+//! `hashigo run` with a `.st` file (../shared/spec/cli.md): the soft PLC
+//! without `--machine`, events on located inputs, `NAME.MEMBER` watched,
+//! errors at file:line:column.
+
+use crate::files::{hashigo, text, Temp};
+
+const BLINK: &str = "PROGRAM blink
+VAR
+  start AT %IX0.0 : BOOL;
+  lamp AT %QX0.0 : BOOL;
+  t0 : TON;
+  n : INT;
+END_VAR
+t0(IN := start, PT := T#100ms);
+lamp := t0.Q;
+IF lamp THEN n := n + 1; END_IF;
+END_PROGRAM
+";
+
+#[test]
+fn a_st_file_runs_on_the_soft_plc_with_events() {
+    let dir = Temp::new("st-run-cli");
+    let program = dir.file("blink.st", BLINK);
+    let events = dir.file("ev.csv", "50ms,%IX0.0,1\n");
+    let out = hashigo(
+        &[
+            "run",
+            "--program",
+            &program,
+            "--input",
+            &events,
+            "--until",
+            "200ms",
+            "--every",
+            "50ms",
+            "--watch",
+            "start,%QX0.0,n,t0.Q",
+        ],
+        "",
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    // Scans every 10 ms: IN from 50 ms, Q at 150 ms, n counts its scans.
+    assert_eq!(
+        text(&out.stdout),
+        "time_ms,start,%QX0.0,n,t0.Q\n0,0,0,0,0\n50,1,0,0,0\n100,1,0,0,0\n150,1,1,1,1\n200,1,1,6,1\n"
+    );
+}
+
+#[test]
+fn a_st_files_errors_are_at_file_line_column() {
+    let dir = Temp::new("st-run-cli-bad");
+    let program = dir.file(
+        "bad.st",
+        "PROGRAM p\nVAR n : INT; END_VAR\nn := TRUE;\nEND_PROGRAM\n",
+    );
+    let out = hashigo(
+        &[
+            "run",
+            "--program",
+            &program,
+            "--until",
+            "10ms",
+            "--watch",
+            "n",
+        ],
+        "",
+    );
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("bad.st:3:6: the value assigned must be INT, not BOOL"),
+        "{err}"
+    );
+    let out = hashigo(
+        &[
+            "run",
+            "--machine",
+            "io86a",
+            "--program",
+            &program,
+            "--until",
+            "10ms",
+            "--watch",
+            "n",
+        ],
+        "",
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("Structured Text runs on the soft PLC"));
+}
