@@ -20,6 +20,7 @@ pub fn open(machine: MachineId, id: &str, workspaces: Workspaces) {
         Ok(new) => {
             ladder.apply(Edit::Replace { ladder: new });
             ladder.clean_slate();
+            ladder.titled(example.title_en, example.title_ja);
             if on_panel {
                 // The pane holds the example's own text: the same program.
                 ladder.adopt_text();

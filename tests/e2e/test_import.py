@@ -46,9 +46,14 @@ def test_a_project_with_named_variables_imports_through_the_mapping_table(driver
     got = devices(driver)
     for d in ["X00", "X01", "M02", "Y00", "M05"]:
         assert d in got, (d, got)
+    # The app bar names the file opened.
+    assert el(driver, "app-project").text == NAMED.name
     # One undo away from the ladder before.
     el(driver, "undo").click()
     wait(driver, lambda: devices(driver) == before)
+    # New ladder: untitled again.
+    el(driver, "new-ladder").click()
+    wait(driver, lambda: el(driver, "app-project").text == "Untitled")
 
 
 FBD = ROOT / "engine/tests/ladder/fixtures/openplc-fbd.xml"

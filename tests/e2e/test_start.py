@@ -51,6 +51,8 @@ def test_a_fresh_profile_opens_on_the_start_screen_a_share_link_does_not(driver,
     wait(driver, lambda: not shown(driver, "start"), message="an example chosen closes the start screen")
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-device="T00"]'),
          message="the example opens")
+    # The app bar names what is open, not "Untitled".
+    assert el(driver, "app-project").text == "Manual: timer OUT T00 K19"
     # Closed for good: not on the next visit; Help brings it back.
     driver.refresh()
     wait(driver, lambda: el(driver, "ladder"))

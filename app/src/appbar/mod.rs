@@ -109,6 +109,14 @@ fn project_name(ladder: LadderCtx) -> String {
                 .map(|p| p.name.clone())
         })
     })
+    .or_else(|| {
+        let ja = ladder.page.lang.get() == crate::i18n::Lang::Ja;
+        ladder
+            .work
+            .title
+            .get()
+            .map(|(en, j)| if ja { j } else { en })
+    })
     .unwrap_or_else(|| t.project_untitled.to_string())
 }
 

@@ -140,6 +140,7 @@ pub static EN: Texts = Texts {
     storage_blocked: "The browser's storage is blocked: your changes are only in this page. Save the project file to keep them.",
     save_json: "Save",
     open_file: "Open…",
+    export_as: "Export as",
     export_text: "Program text",
     print: "Print",
     projects: "Projects",

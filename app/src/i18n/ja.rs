@@ -139,6 +139,7 @@ pub static JA: Texts = Texts {
     storage_blocked: "ブラウザーの保存領域が使えません。変更はこのページにしかありません。プロジェクトファイルを保存してください。",
     save_json: "保存",
     open_file: "開く…",
+    export_as: "書き出し",
     export_text: "プログラム",
     print: "印刷",
     projects: "プロジェクト",

@@ -248,6 +248,8 @@ pub struct Texts {
     pub storage_blocked: &'static str,
     pub save_json: &'static str,
     pub open_file: &'static str,
+    /// The File menu's heading over the exports (PLCopen, SVG, print …).
+    pub export_as: &'static str,
     pub export_text: &'static str,
     pub print: &'static str,
     pub projects: &'static str,

@@ -11,9 +11,11 @@ use files_worker::{Reply, Request};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::{JsCast, JsValue};
+use leptos::wasm_split::wasm_split;
 
 use crate::editor::model::RungData;
 use crate::editor::{picture, LadderCtx, Ladders};
+use crate::parts::PartMissing;
 
 /// Offers `content` as a download named `name`.
 pub fn download(name: &str, mime: &str, content: &str) {
@@ -56,12 +58,29 @@ fn drawings(ctx: LadderCtx) -> Vec<(usize, Option<usize>, RungData)> {
         .collect()
 }
 
-/// The ladder as SVG text.
-pub fn svg_of(ctx: LadderCtx) -> String {
-    let rungs = drawings(ctx);
+/// The ladder's picture is a part of its own (issue #53): drawn only
+/// when a picture is first exported.
+#[wasm_split(pictures, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn svg_part(rungs: Vec<(usize, Option<usize>, RungData)>) -> Result<String, PartMissing> {
     let refs: Vec<(usize, Option<usize>, &RungData)> =
         rungs.iter().map(|(n, s, d)| (*n, *s, d)).collect();
-    picture::svg(&refs)
+    Ok(picture::svg(&refs))
+}
+
+/// Calls `then` with the ladder as SVG text once its part is there; if
+/// the part cannot be fetched, says so in the message line (pressing the
+/// export again retries).
+fn with_svg(ctx: LadderCtx, then: impl FnOnce(String) + 'static) {
+    let rungs = drawings(ctx);
+    wasm_bindgen_futures::spawn_local(async move {
+        match svg_part(rungs).await {
+            Ok(svg) => then(svg),
+            Err(PartMissing) => {
+                let said = ctx.page.lang.get_untracked().parts().missing;
+                ctx.panes.message.set(Some(said.to_string()));
+            }
+        }
+    });
 }
 
 /// Downloads the ladder as PLCopen XML, written by the files worker
@@ -121,8 +140,7 @@ fn name(ctx: LadderCtx, ext: &str) -> String {
 }
 
 /// The ladder as PNG: the SVG drawn on a canvas by the browser.
-fn export_png(ctx: LadderCtx) {
-    let svg = svg_of(ctx);
+fn export_png(ctx: LadderCtx, svg: String) {
     let Some(document) = web_sys::window().and_then(|w| w.document()) else {
         return;
     };
@@ -166,6 +184,7 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
         text: text.to_string(),
     };
     let message = ctx.panes.message;
+    let file = file.to_string();
     crate::worker::ask_saying(message, texts, request, move |reply| match reply {
         Reply::OpenLd(Ok(opened)) => {
             let target = ladders.map_or(ctx, |l| l.of(IEC_MACHINE));
@@ -176,6 +195,7 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
                 });
             }
             target.clean_slate();
+            target.titled(&file, &file);
             let scan = vec![("scan".to_string(), format!("{}us", opened.cycle_us))];
             let refused = target.apply_settings(scan);
             // Said in the soft PLC's editor, which the page now shows.
@@ -286,6 +306,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 {move || t().open_file}
                 <input type="file" data-testid="open-file" accept=".json,.xml,.ld,application/json,text/xml" on:change=on_file />
             </label>
+            <span class="menu-heading" data-testid="export-heading">{move || t().export_as}</span>
             <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>
             <Show when=move || ctx.machine == IEC_MACHINE>
                 <button type="button" data-testid="export-ld" on:click=move |_| export_ld(ctx)>"LDmicro"</button>
@@ -296,9 +317,9 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 }
             }>{move || t().export_text}</button>
             <button type="button" data-testid="export-svg" on:click=move |_| {
-                download(&name(ctx, "svg"), "image/svg+xml", &svg_of(ctx));
+                with_svg(ctx, move |svg| download(&name(ctx, "svg"), "image/svg+xml", &svg));
             }>"SVG"</button>
-            <button type="button" data-testid="export-png" on:click=move |_| export_png(ctx)>"PNG"</button>
+            <button type="button" data-testid="export-png" on:click=move |_| with_svg(ctx, move |svg| export_png(ctx, svg))>"PNG"</button>
             <button type="button" data-testid="print" on:click=|_| {
                 if let Some(w) = web_sys::window() {
                     let _ = w.print();

@@ -83,6 +83,7 @@ pub fn attempt(
                 }
                 // Another program: nothing said of the last one stays.
                 ctx.clean_slate();
+                ctx.titled(&pending.file, &pending.file);
                 shown.set(None);
                 closed(&pending.warnings);
             }

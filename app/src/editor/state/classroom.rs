@@ -28,7 +28,14 @@ impl LadderCtx {
             self.live.forced.set(Vec::new());
         }
         self.why.shown.set(None);
+        self.work.title.set(None);
         self.work.slate.update(|n| *n += 1);
+    }
+
+    /// The app bar's title for what was just opened here (a file's name,
+    /// an example's title in each language), after its clean slate.
+    pub fn titled(&self, en: &str, ja: &str) {
+        self.work.title.set(Some((en.to_string(), ja.to_string())));
     }
 
     /// A new, empty ladder (File > New, the toolbar's +) on a clean

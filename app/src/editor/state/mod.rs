@@ -200,6 +200,10 @@ pub struct Work {
     /// Bumped at each clean slate (another project opened, imported or
     /// begun): views with state of their own (the chart) start afresh.
     pub slate: RwSignal<u64>,
+    /// What the ladder shown came from, when it is not a saved project:
+    /// the file opened or the example (English, Japanese), for the app
+    /// bar's title; `None` after New and on a clean slate.
+    pub title: RwSignal<Option<(String, String)>>,
 }
 
 /// The project's test cases (docs/tests.md).
@@ -305,6 +309,7 @@ impl LadderCtx {
                 project: RwSignal::new(project),
                 saving: super::autosave::Autosave::new(&store::slot(machine, project)),
                 slate: RwSignal::new(0),
+                title: RwSignal::new(None),
             },
             cases: Cases {
                 tests: RwSignal::new(tests),
