@@ -12,6 +12,26 @@ use leptos::wasm_split::SplitLoaderError;
 
 use crate::i18n::Lang;
 
+/// Declares `fn $name` as held in part `$part`: with the feature `split`
+/// (the page's Trunk build, which splits the wasm) a
+/// `#[wasm_split($part, …, fallible)]` function, fetched at its first
+/// call; without it (native tests, the wasm-bindgen tests, which run one
+/// unsplit wasm that has no parts' loader to import) a plain `async fn`.
+/// Either way an `async fn` returning `Result<_, PartMissing>`.
+macro_rules! part_fn {
+    ($part:ident, $(#[$meta:meta])* fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $body:block) => {
+        $(#[$meta])*
+        #[cfg(feature = "split")]
+        #[::leptos::wasm_split::wasm_split($part, wasm_split_path = ::leptos::wasm_split, fallible)]
+        fn $name($($arg: $ty),*) -> $ret $body
+
+        $(#[$meta])*
+        #[cfg(not(feature = "split"))]
+        async fn $name($($arg: $ty),*) -> $ret $body
+    };
+}
+pub(crate) use part_fn;
+
 /// A part that could not be fetched (offline on a first visit, a server
 /// gone): the caller says so where it was asked for and offers to retry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -11,7 +11,6 @@ use files_worker::{Reply, Request};
 use leptos::prelude::*;
 use leptos::wasm_bindgen::closure::Closure;
 use leptos::wasm_bindgen::{JsCast, JsValue};
-use leptos::wasm_split::wasm_split;
 
 use crate::editor::model::RungData;
 use crate::editor::{picture, LadderCtx, Ladders};
@@ -58,14 +57,16 @@ fn drawings(ctx: LadderCtx) -> Vec<(usize, Option<usize>, RungData)> {
         .collect()
 }
 
-/// The ladder's picture is a part of its own (issue #53): drawn only
-/// when a picture is first exported.
-#[wasm_split(pictures, wasm_split_path = ::leptos::wasm_split, fallible)]
-fn svg_part(rungs: Vec<(usize, Option<usize>, RungData)>) -> Result<String, PartMissing> {
-    let refs: Vec<(usize, Option<usize>, &RungData)> =
-        rungs.iter().map(|(n, s, d)| (*n, *s, d)).collect();
-    Ok(picture::svg(&refs))
-}
+crate::parts::part_fn!(
+    pictures,
+    /// The ladder's picture is a part of its own (issue #53): drawn only
+    /// when a picture is first exported.
+    fn svg_part(rungs: Vec<(usize, Option<usize>, RungData)>) -> Result<String, PartMissing> {
+        let refs: Vec<(usize, Option<usize>, &RungData)> =
+            rungs.iter().map(|(n, s, d)| (*n, *s, d)).collect();
+        Ok(picture::svg(&refs))
+    }
+);
 
 /// Calls `then` with the ladder as SVG text once its part is there; if
 /// the part cannot be fetched, says so in the message line (pressing the

@@ -7,7 +7,6 @@ use engine::machines::new_plc;
 use engine::plc::Command;
 use engine::MachineId;
 use leptos::prelude::*;
-use leptos::wasm_split::wasm_split;
 
 use crate::editor::state::{CaseResult, LadderCtx};
 use crate::i18n::errors::{self, Both};
@@ -48,17 +47,19 @@ pub fn run_all(ctx: LadderCtx) {
     });
 }
 
-/// The case runner is a part of its own (issue #53): it is fetched when
-/// the cases are first run.
-#[wasm_split(tests_runner, wasm_split_path = ::leptos::wasm_split, fallible)]
-fn run_cases_part(
-    machine: MachineId,
-    settings: Vec<(String, String)>,
-    program: String,
-    cases: Vec<TestCase>,
-) -> Result<Vec<CaseResult>, PartMissing> {
-    Ok(run_cases(machine, &settings, &program, &cases))
-}
+crate::parts::part_fn!(
+    tests_runner,
+    /// The case runner is a part of its own (issue #53): it is fetched when
+    /// the cases are first run.
+    fn run_cases_part(
+        machine: MachineId,
+        settings: Vec<(String, String)>,
+        program: String,
+        cases: Vec<TestCase>,
+    ) -> Result<Vec<CaseResult>, PartMissing> {
+        Ok(run_cases(machine, &settings, &program, &cases))
+    }
+);
 
 /// Runs `cases` on `machine`, each on a fresh machine with `settings`
 /// applied and `program` loaded.

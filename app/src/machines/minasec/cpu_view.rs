@@ -7,7 +7,6 @@
 use engine::minasec::cpu::{Block, CpuView, EdgeLevels, Phase};
 use engine::minasec::{Command, Machine, Mode};
 use leptos::prelude::*;
-use leptos::wasm_split::wasm_split;
 
 use super::MinasecCtx;
 use crate::i18n::Lang;
@@ -212,11 +211,13 @@ pub fn CpuPanel() -> impl IntoView {
     }
 }
 
-/// The diagram is a part of its own (issue #53): most visits never open it.
-#[wasm_split(cpu_view, wasm_split_path = ::leptos::wasm_split, fallible)]
-fn cpu_diagram() -> Result<crate::parts::Draw, crate::parts::PartMissing> {
-    Ok(|| view! { <CpuDiagram /> }.into_any())
-}
+crate::parts::part_fn!(
+    cpu_view,
+    /// The diagram is a part of its own (issue #53): most visits never open it.
+    fn cpu_diagram() -> Result<crate::parts::Draw, crate::parts::PartMissing> {
+        Ok(|| view! { <CpuDiagram /> }.into_any())
+    }
+);
 
 #[component]
 fn CpuDiagram() -> impl IntoView {
