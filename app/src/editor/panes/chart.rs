@@ -199,12 +199,14 @@ impl Chart {
         // Measured in the next frame, when the browser lays the page out
         // anyway: measured here, in the middle of a seek's updates, it
         // forced a layout of its own (half of a seek's time in the page).
+        // The chart may be gone by then (another machine shown): its
+        // signals are read with `try_`, never to panic.
         let (plot, shown) = (self.plot, self.shown);
         request_animation_frame(move || {
-            if let Some(plot) = plot.get_untracked() {
+            if let Some(plot) = plot.try_get_untracked().flatten() {
                 let w = plot.get_bounding_client_rect().width().round();
-                if w > 0.0 && shown.get_untracked() != w {
-                    shown.set(w);
+                if w > 0.0 && shown.try_get_untracked().is_some_and(|s| s != w) {
+                    shown.try_set(w);
                 }
             }
         });
