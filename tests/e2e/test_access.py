@@ -46,6 +46,8 @@ def test_no_critical_or_serious_finding_on_any_workspace(driver, base_url, machi
         # The view inside its CPU, an edge stepped (blocks lit).
         el(driver, "mode-halt").click()
         el(driver, "cpu-view-open").click()
+        # The diagram is a part fetched at the first opening (issue #53).
+        wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="cpu-step-edge"]'))
         el(driver, "cpu-step-edge").click()
         wait(driver, lambda: el(driver, "cpu-phase").get_attribute("data-value") == "rising")
     # A case in the Tests pane, so its fields are checked too.

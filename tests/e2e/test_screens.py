@@ -319,6 +319,9 @@ def test_the_cpu_view_on_every_screen(screen, base_url, artifacts):
     opener = el(driver, "cpu-view-open")
     driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", opener)
     opener.click()
+    # The diagram is a part fetched at the first opening (issue #53).
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="cpu-step-edge"]'),
+         message="the CPU view's part loaded")
     for testid in ["cpu-step-edge", "cpu-block-pc", "cpu-block-counter", "cpu-strip"]:
         driver.execute_script(f"document.querySelector('[data-testid={testid}]').scrollIntoView({{block: 'center'}})")
         wait(driver, lambda: on_screen(driver, testid), message=f"{testid} on screen")
