@@ -10,7 +10,13 @@ use crate::workspaces::Workspaces;
 /// ladder is one undo away; the text pane follows the ladder while it
 /// holds the ladder's listing). A machine's own panel may take it too
 /// (MINASEC-U's board, `Workspaces::open_example_on_panel`).
+/// A machine that is not there yet is fetched first (its part).
 pub fn open(machine: MachineId, id: &str, workspaces: Workspaces) {
+    let id = id.to_string();
+    workspaces.when_ready(machine, move || open_now(machine, &id, workspaces));
+}
+
+fn open_now(machine: MachineId, id: &str, workspaces: Workspaces) {
     let ladder = workspaces.ladders.of(machine);
     let Some(example) = engine::examples::examples_of(machine).find(|e| e.id == id) else {
         return;

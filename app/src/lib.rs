@@ -38,6 +38,8 @@ pub fn start() {
         console_error_panic_hook::hook(info);
         show_crash();
     }));
+    // The first screen's machine; the others register with their parts.
+    engine::machines::register(engine::machines::MachineKit::MINASEC);
     let search = web_sys::window()
         .and_then(|w| w.location().search().ok())
         .unwrap_or_default();
@@ -189,6 +191,8 @@ pub fn App(ctx: Ctx, workspaces: Workspaces, start: start::Start) -> impl IntoVi
     provide_context(ctx);
     provide_context(start);
     workspaces.provide();
+    // The machine shown arrives with its part (issue #53) if not there.
+    Effect::new(move |_| workspaces.arrive(ctx.machine.get()));
     // An example chosen on the start screen opens in its workspace.
     Effect::new(move |_| {
         if let Some((machine, id)) = start.example.get() {

@@ -19,15 +19,15 @@ use crate::i18n::Lang;
 /// unsplit wasm that has no parts' loader to import) a plain `async fn`.
 /// Either way an `async fn` returning `Result<_, PartMissing>`.
 macro_rules! part_fn {
-    ($part:ident, $(#[$meta:meta])* fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $body:block) => {
+    ($part:ident, $(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty $body:block) => {
         $(#[$meta])*
         #[cfg(feature = "split")]
         #[::leptos::wasm_split::wasm_split($part, wasm_split_path = ::leptos::wasm_split, fallible)]
-        fn $name($($arg: $ty),*) -> $ret $body
+        $vis fn $name($($arg: $ty),*) -> $ret $body
 
         $(#[$meta])*
         #[cfg(not(feature = "split"))]
-        async fn $name($($arg: $ty),*) -> $ret $body
+        $vis async fn $name($($arg: $ty),*) -> $ret $body
     };
 }
 pub(crate) use part_fn;

@@ -1,64 +1,48 @@
-//! The five machines' workspaces, listed in this one place: adding a
-//! machine means a context here, its view here, and its frame here.
+//! The five machines' workspaces, listed in this one place: MINASEC-U's
+//! here, the others' each arriving with its part (`machines::arrival`:
+//! adding a machine means its part there and its arm in `fetch`).
 
 use leptos::prelude::*;
 
 use engine::MachineId;
 
-use std::rc::Rc;
-
 use crate::docks::Tool;
-use crate::editor::machine::MachineLink;
 use crate::editor::{LadderCtx, LadderEditor, Ladders, Program};
+use crate::machines;
+use crate::machines::arrival::{self, Arrival, MachineWorkspace};
 use crate::machines::minasec::board::Board;
 use crate::machines::minasec::program::ProgramPane;
 use crate::machines::minasec::MinasecCtx;
-use crate::machines::{self, arduino, avr, io86a, soft};
 use crate::sim::Pace;
 use crate::state::{Ctx, MachineKind};
 use crate::workbench::docks::{BottomDock, RightDock, Split, Splitter};
 
-/// Every workspace's context; `Copy`.
+/// Every workspace's context; `Copy`. MINASEC-U, the first screen's
+/// machine, is always there; the others arrive with their parts
+/// ([`crate::machines::arrival`]).
 #[derive(Clone, Copy)]
 pub struct Workspaces {
     pub minasec: MinasecCtx,
-    pub io86a: io86a::Io86aCtx,
-    pub arduino: arduino::ArduinoCtx,
-    pub avr: avr::AvrCtx,
-    pub soft: soft::SoftCtx,
+    /// Each machine's part, in [`MachineId::ALL`]'s order (MINASEC-U's
+    /// stays `NotAsked`: it has none).
+    arrivals: [RwSignal<Arrival, LocalStorage>; MachineId::ALL.len()],
     /// Each machine's ladder editor.
     pub ladders: Ladders,
     /// The named projects.
     pub projects: crate::editor::projects::Projects,
+    page: Ctx,
 }
 
 impl Workspaces {
-    /// Every workspace on `page`, each restored from its autosave.
+    /// Every workspace on `page`, each ladder restored from its autosave;
+    /// MINASEC-U's workspace too, connected to its ladder editor.
     pub fn restore(page: Ctx) -> Workspaces {
-        let minasec = MinasecCtx::restore(page);
-        let io86a = io86a::Io86aCtx::new();
-        let arduino = arduino::ArduinoCtx::restore(page);
-        let avr = avr::AvrCtx::restore(page);
-        let soft = soft::SoftCtx::restore(page);
-        Workspaces::around(page, minasec, io86a, arduino, avr, soft)
+        Workspaces::around(page, MinasecCtx::restore(page))
     }
 
-    /// The workspaces of these machines, each with its ladder editor
-    /// connected to its program pane.
-    pub fn around(
-        page: Ctx,
-        minasec: MinasecCtx,
-        io86a: io86a::Io86aCtx,
-        arduino: arduino::ArduinoCtx,
-        avr: avr::AvrCtx,
-        soft: soft::SoftCtx,
-    ) -> Workspaces {
+    /// The workspaces of `page` around this MINASEC-U workspace.
+    pub fn around(page: Ctx, minasec: MinasecCtx) -> Workspaces {
         let ladders = Ladders::new(|machine| LadderCtx::restore(page, machine));
-        let wire = |machine, link: Rc<dyn MachineLink>, program: Program| {
-            let ladder = ladders.of(machine);
-            ladder.attach(link);
-            ladder.connect(program);
-        };
         let minasec_program = Program {
             text: minasec.text,
             load: Callback::new(move |()| {
@@ -69,60 +53,67 @@ impl Workspaces {
             settings: Callback::new(move |()| minasec.project_settings()),
             apply_settings: Callback::new(move |settings| minasec.apply_project_settings(settings)),
         };
-        wire(
-            MachineId::MinasecU,
-            machines::link(minasec.sim, move || minasec.refresh()),
-            minasec_program,
-        );
-        wire(
-            MachineId::Io86a,
-            machines::link(io86a.sim, move || io86a.refresh()),
-            machines::text_program(io86a.texts[0], move || io86a.load(0), move || io86a.save()),
-        );
-        wire(
-            MachineId::ArduinoPlc,
-            machines::link(arduino.sim, move || arduino.refresh()),
-            machines::text_program(arduino.text, move || arduino.load(), move || arduino.save()),
-        );
-        // The AVR compiler's scan period before its program pane is read.
-        ladders
-            .of(MachineId::AvrPlc)
-            .text
-            .options
-            .update(|o| o.avr_scan_ms = avr::scan_ms_default());
-        wire(
-            MachineId::AvrPlc,
-            machines::link(avr.sim, move || avr.refresh()),
-            machines::text_program(avr.text, move || avr.load(), move || avr.save()),
-        );
-        let mut soft_program =
-            machines::text_program(soft.text, move || soft.load(), move || soft.save());
-        soft_program.settings = Callback::new(move |()| soft.project_settings());
-        soft_program.apply_settings =
-            Callback::new(move |settings| soft.apply_project_settings(settings));
-        wire(
-            MachineId::SoftPlc,
-            machines::link(soft.sim, move || soft.refresh()),
-            soft_program,
-        );
+        let ladder = ladders.of(MachineId::MinasecU);
+        ladder.attach(machines::link(minasec.sim, move || minasec.refresh()));
+        ladder.connect(minasec_program);
         Workspaces {
             minasec,
-            io86a,
-            arduino,
-            avr,
-            soft,
+            arrivals: MachineId::ALL.map(|_| RwSignal::new_local(Arrival::NotAsked)),
             ladders,
             projects: crate::editor::projects::Projects::restore(page),
+            page,
         }
+    }
+
+    fn arrival(&self, kind: MachineId) -> RwSignal<Arrival, LocalStorage> {
+        self.arrivals[Self::index(kind)]
+    }
+
+    fn index(kind: MachineId) -> usize {
+        let index = MachineId::ALL.iter().position(|m| *m == kind);
+        // ALL lists every machine: the position is always found.
+        index.unwrap_or_default()
+    }
+
+    /// Machine `kind`'s workspace, once its part is there (never
+    /// MINASEC-U's, which is [`Workspaces::minasec`]).
+    pub fn workspace(&self, kind: MachineId) -> Option<arrival::Shared> {
+        match self.arrival(kind).get_untracked() {
+            Arrival::Ready(workspace) => Some(workspace),
+            _ => None,
+        }
+    }
+
+    /// Fetches machine `kind`'s part unless it is there or on its way
+    /// (again after a failed fetch).
+    pub fn arrive(&self, kind: MachineId) {
+        let slot = self.arrival(kind);
+        let asked = slot.with_untracked(|a| !matches!(a, Arrival::NotAsked | Arrival::Missing));
+        if kind == MachineId::MinasecU || asked {
+            return;
+        }
+        slot.set(Arrival::Loading);
+        let (page, ladder) = (self.page, self.ladders.of(kind));
+        leptos::task::spawn_local(async move {
+            let next = match arrival::fetch(kind, page, ladder).await {
+                Ok(workspace) => Arrival::Ready(workspace),
+                // What waits for it (`when_ready`) waits for a retry.
+                Err(_) => Arrival::Missing,
+            };
+            let _ = slot.try_set(next);
+        });
+    }
+
+    /// Runs `then` once machine `kind` is there: now, or when its part
+    /// has arrived (never, if it cannot be fetched and no retry brings it).
+    pub fn when_ready(&self, kind: MachineId, then: impl FnOnce() + 'static) {
+        self.ladders.of(kind).when_attached(then);
+        self.arrive(kind);
     }
 
     /// Provides every workspace's context to the components below.
     pub fn provide(&self) {
         provide_context(self.minasec);
-        provide_context(self.io86a);
-        provide_context(self.arduino);
-        provide_context(self.avr);
-        provide_context(self.soft);
         provide_context(self.ladders);
         provide_context(self.projects);
         provide_context(*self);
@@ -194,12 +185,7 @@ impl Workspaces {
     fn panel_view(&self, kind: MachineKind) -> AnyView {
         match kind {
             MachineKind::MinasecU => view! { <div class="workspace"><Board /></div> }.into_any(),
-            MachineKind::Io86a => view! { <io86a::view::Io86aPanel io=self.io86a /> }.into_any(),
-            MachineKind::ArduinoPlc => {
-                view! { <arduino::ArduinoPanel ard=self.arduino /> }.into_any()
-            }
-            MachineKind::AvrPlc => view! { <avr::AvrPanel avr=self.avr /> }.into_any(),
-            MachineKind::SoftPlc => view! { <soft::SoftPanel soft=self.soft /> }.into_any(),
+            _ => self.arrived(kind, "machine-panel", |w| w.panel()),
         }
     }
 
@@ -207,12 +193,25 @@ impl Workspaces {
     fn program_view(&self, kind: MachineKind) -> AnyView {
         match kind {
             MachineKind::MinasecU => view! { <ProgramPane /> }.into_any(),
-            MachineKind::Io86a => view! { <io86a::view::Io86aProgram io=self.io86a /> }.into_any(),
-            MachineKind::ArduinoPlc => {
-                view! { <arduino::ArduinoProgram ard=self.arduino /> }.into_any()
-            }
-            MachineKind::AvrPlc => view! { <avr::AvrProgram avr=self.avr /> }.into_any(),
-            MachineKind::SoftPlc => view! { <soft::SoftProgram soft=self.soft /> }.into_any(),
+            _ => self.arrived(kind, "machine-program", |w| w.program()),
         }
+    }
+
+    /// What `show` draws of machine `kind` once its part is there; until
+    /// then where it stands (loading, or missing with a retry).
+    fn arrived(
+        &self,
+        kind: MachineKind,
+        testid: &'static str,
+        show: fn(&dyn MachineWorkspace) -> AnyView,
+    ) -> AnyView {
+        let slot = self.arrival(kind);
+        let lang = self.page.lang;
+        let me = *self;
+        (move || match slot.get() {
+            Arrival::Ready(workspace) => show(&*workspace),
+            other => arrival::waiting(testid, lang.into(), other, move || me.arrive(kind)),
+        })
+        .into_any()
     }
 }

@@ -26,14 +26,8 @@ fn document() -> web_sys::Document {
 /// Mounts a fresh workspace (no frame loop: tests advance time themselves)
 /// into its own container and returns the context and the container.
 fn mount() -> (Ctx, MinasecCtx, Element) {
-    let (ctx, board, _io, container) = mount_both();
-    (ctx, board, container)
-}
-
-/// Like [`mount`], also returning the IO86A workspace's context.
-fn mount_both() -> (Ctx, MinasecCtx, app::machines::io86a::Io86aCtx, Element) {
     let (ctx, workspaces, container) = mount_workspaces();
-    (ctx, workspaces.minasec, workspaces.io86a, container)
+    (ctx, workspaces.minasec, container)
 }
 
 /// Mounts every workspace; returns them all.
@@ -52,10 +46,6 @@ fn mount_workspaces() -> (Ctx, Workspaces, Element) {
                 engine::minasec::Machine::new(),
             )),
         ),
-        app::machines::io86a::Io86aCtx::new(),
-        app::machines::arduino::ArduinoCtx::restore(ctx),
-        app::machines::avr::AvrCtx::restore(ctx),
-        app::machines::soft::SoftCtx::restore(ctx),
     );
     let html: HtmlElement = container.clone().unchecked_into();
     let handle = leptos::mount::mount_to(
@@ -320,9 +310,17 @@ async fn the_seven_segment_display_shows_the_count() {
 
 #[wasm_bindgen_test]
 async fn the_io86a_workspace_runs_its_terminal() {
-    let (ctx, _board, io, c) = mount_both();
+    let (ctx, workspaces, c) = mount_workspaces();
     ctx.machine.set(app::state::MachineKind::Io86a);
     settle().await;
+    // Its workspace arrived when it was shown (issue #53).
+    let shown = workspaces
+        .workspace(engine::MachineId::Io86a)
+        .expect("the IO86A workspace is there once shown");
+    let io = *shown
+        .as_any()
+        .downcast_ref::<app::machines::io86a::Io86aCtx>()
+        .expect("the IO86A workspace's context");
     io.type_line("^C");
     io.type_line("NA");
     for line in ["LD M57", "OUT Y05", "END", "Q", "R"] {

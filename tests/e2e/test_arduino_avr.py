@@ -111,6 +111,10 @@ def test_arduino_and_avr_saves_are_checked_and_migrated(driver, base_url):
         "; taken over\n0 LD X001\n1 OUT Y001\n2 END\n",
     )
     driver.refresh()
+    # Reported when the AVR PLC's workspace is restored: when it is first
+    # shown (it arrives with its part, issue #53).
+    assert not driver.find_elements("css selector", "[data-testid=notice]")
+    Select(el(driver, "machine")).select_by_value("avr-plc")
     notice = wait(driver, lambda: el(driver, "notice"))
     match = re.search(r"(hashigo\.avr-plc\.v2\.corrupt\.\d+)", notice.text)
     assert match, notice.text

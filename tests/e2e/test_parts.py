@@ -7,7 +7,7 @@ service worker keeps every part)."""
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
-from test_app import el, open_fresh, wait
+from test_app import el, on, open_fresh, wait
 from test_ladder import first_visit_kept_offline, focus_ladder, place
 
 
@@ -67,3 +67,42 @@ def test_running_the_tests_when_their_part_cannot_be_fetched_says_so(driver, bas
     # Run again is the retry; the case the user wrote is still there.
     el(driver, "run-tests").click()
     wait(driver, lambda: el(driver, "test-case-0").get_attribute("data-result") == "pass")
+
+
+def test_a_machine_whose_part_cannot_be_fetched_keeps_its_ladder_and_retries(driver, base_url):
+    """Each machine but the first screen's arrives with its part: the
+    soft PLC's blocked, its ladder is still drawn and edited, its panel
+    says the part is missing, and Run pressed meanwhile runs once the
+    retry has brought it."""
+    from selenium.webdriver.support.ui import Select
+    open_fresh(driver, base_url)
+    block(driver, ["*split_soft_plc*"])
+    try:
+        Select(el(driver, "machine")).select_by_value("soft-plc")
+        wait(driver, lambda: el(driver, "machine-panel-missing", reveal=False),
+             message="the panel says the soft PLC could not be fetched")
+        assert "could not be fetched" in el(driver, "machine-panel-missing").text
+        focus_ladder(driver)
+        place(driver, Keys.F5, "%IX0.0")
+        place(driver, Keys.F7, "%QX0.0")
+        el(driver, "run").click()
+    finally:
+        block(driver, [])
+    el(driver, "machine-panel-retry").click()
+    wait(driver, lambda: el(driver, "soft-board"), message="the retry brings the soft PLC")
+    # The ladder drawn meanwhile compiles and runs on it (Run waited).
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="the lamp follows the input")
+
+
+def test_every_machine_opens_offline_after_one_visit(driver):
+    from selenium.webdriver.support.ui import Select
+    server = first_visit_kept_offline(driver)
+    url = server.url
+    server.stop()
+    driver.get(url)
+    wait(driver, lambda: el(driver, "ladder"), message="the page loads with the server gone")
+    for machine, board in [("io86a", "io86a-terminal"), ("avr-plc", "avr-program-text"),
+                           ("arduino-plc", "arduino-monitor"), ("soft-plc", "soft-board")]:
+        Select(el(driver, "machine")).select_by_value(machine)
+        wait(driver, lambda: el(driver, board), message=f"{machine} opens offline")

@@ -14,7 +14,15 @@ use super::LadderCtx;
 /// Run: writes the drawing to the machine and starts it (RUN, simulated
 /// time going); whether it could (else the problems are said). Write to
 /// PLC is the same action.
+/// A machine still on its way (its part, issue #53) runs the drawing
+/// when it arrives.
 pub fn run_drawing(ctx: LadderCtx) -> bool {
+    if !ctx.attached() {
+        ctx.when_attached(move || {
+            run_drawing(ctx);
+        });
+        return true;
+    }
     let t = ctx.page.lang.get_untracked().texts();
     if !ctx.write_drawing() {
         ctx.panes.message.set(Some(t.run_needs_compile.to_string()));

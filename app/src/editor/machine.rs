@@ -67,6 +67,31 @@ impl LadderCtx {
         self.live.link.set_value(Some(link));
     }
 
+    /// Whether the editor's machine is there (attached).
+    pub fn attached(&self) -> bool {
+        self.live.link.with_value(Option::is_some)
+    }
+
+    /// Runs `then` once the machine is attached: now, or when it arrives
+    /// with its part (issue #53; `machines::arrival::wire`).
+    pub fn when_attached(&self, then: impl FnOnce() + 'static) {
+        if self.attached() {
+            then();
+        } else {
+            self.live
+                .on_arrival
+                .update_value(|w| w.push(Box::new(then)));
+        }
+    }
+
+    /// Runs what waited for the machine ([`LadderCtx::when_attached`]).
+    pub fn arrived(&self) {
+        let waiting = self.live.on_arrival.try_update_value(std::mem::take);
+        for then in waiting.unwrap_or_default() {
+            then();
+        }
+    }
+
     fn link(&self) -> Option<std::rc::Rc<dyn MachineLink>> {
         self.live.link.with_value(Clone::clone)
     }

@@ -268,3 +268,36 @@ fn ProgramPane(ard: ArduinoCtx) -> impl IntoView {
                 />
     }
 }
+
+crate::parts::part_fn!(
+    arduino_plc,
+    /// The Arduino PLC arrives as a part of its own (issue #53): its
+    /// engine, its compiler and its panel, fetched when it is first shown.
+    pub(crate) fn arrive(
+        page: Ctx,
+        ladder: crate::editor::LadderCtx,
+    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+        engine::machines::register(engine::machines::MachineKit::ARDUINO);
+        let ard = ArduinoCtx::restore(page);
+        crate::machines::arrival::wire(
+            ladder,
+            crate::machines::link(ard.sim, move || ard.refresh()),
+            crate::machines::text_program(ard.text, move || ard.load(), move || ard.save()),
+        );
+        Ok(std::rc::Rc::new(ard))
+    }
+);
+
+impl crate::machines::arrival::MachineWorkspace for ArduinoCtx {
+    fn panel(&self) -> AnyView {
+        view! { <ArduinoPanel ard=*self /> }.into_any()
+    }
+
+    fn program(&self) -> AnyView {
+        view! { <ArduinoProgram ard=*self /> }.into_any()
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}

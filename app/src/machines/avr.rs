@@ -258,3 +258,41 @@ fn BitRow(avr: AvrCtx, b: NamedBit) -> impl IntoView {
         </tr>
     }
 }
+
+crate::parts::part_fn!(
+    avr_plc,
+    /// The AVR PLC arrives as a part of its own (issue #53): its engine,
+    /// its compiler and its panel, fetched when it is first shown.
+    pub(crate) fn arrive(
+        page: Ctx,
+        ladder: crate::editor::LadderCtx,
+    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+        engine::machines::register(engine::machines::MachineKit::AVR);
+        let avr = AvrCtx::restore(page);
+        // The compiler's scan period before the program pane is read.
+        ladder
+            .text
+            .options
+            .update(|o| o.avr_scan_ms = scan_ms_default());
+        crate::machines::arrival::wire(
+            ladder,
+            crate::machines::link(avr.sim, move || avr.refresh()),
+            crate::machines::text_program(avr.text, move || avr.load(), move || avr.save()),
+        );
+        Ok(std::rc::Rc::new(avr))
+    }
+);
+
+impl crate::machines::arrival::MachineWorkspace for AvrCtx {
+    fn panel(&self) -> AnyView {
+        view! { <AvrPanel avr=*self /> }.into_any()
+    }
+
+    fn program(&self) -> AnyView {
+        view! { <AvrProgram avr=*self /> }.into_any()
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}

@@ -54,7 +54,8 @@ pub fn open_from_location(page: Ctx, ladders: Ladders) {
         if let Ok(project) = share::decode(&fragment) {
             let ctx = ladders.of(project.machine);
             if ctx.cases.exercise.get_untracked().is_some() {
-                crate::editor::panes::cases::run_all(ctx);
+                // Its machine may still be on its way (its part).
+                ctx.when_attached(move || crate::editor::panes::cases::run_all(ctx));
                 let c = page.lang.get_untracked().classroom();
                 page.notice.set(Some(c.answer_of.to_string()));
             }

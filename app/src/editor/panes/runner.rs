@@ -3,7 +3,7 @@
 //! docs/performance.md "Parts"), so this asks for it and shows what came.
 
 use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
-use engine::machines::new_plc;
+use engine::machines::try_new_plc;
 use engine::plc::Command;
 use engine::MachineId;
 use leptos::prelude::*;
@@ -85,7 +85,10 @@ pub fn run_cases(
                 Ok(case) => case,
                 Err(e) => return CaseResult::Error(Both::new(|l| errors::case_error(l, e))),
             };
-            let mut plc = new_plc(machine);
+            // The shown machine, whose part is there (else: fetch it again).
+            let Some(mut plc) = try_new_plc(machine) else {
+                return CaseResult::Error(Both::new(|l| l.parts().missing.to_string()));
+            };
             for (name, value) in settings {
                 let setting = Command::Setting {
                     name: name.clone(),

@@ -47,6 +47,9 @@ pub struct Live {
     /// The machine the ladder runs on (attached with its workspace).
     pub(crate) link:
         StoredValue<Option<std::rc::Rc<dyn crate::editor::machine::MachineLink>>, LocalStorage>,
+    /// What waits for the machine to arrive with its part (issue #53):
+    /// run when it is attached ([`LadderCtx::when_attached`]).
+    pub(crate) on_arrival: StoredValue<Vec<Box<dyn FnOnce()>>, LocalStorage>,
 }
 
 impl Live {
@@ -69,6 +72,7 @@ impl Live {
             running: RwSignal::new(false),
             forced: RwSignal::new(Vec::new()),
             link: StoredValue::new_local(None),
+            on_arrival: StoredValue::new_local(Vec::new()),
         }
     }
 }

@@ -175,6 +175,13 @@ pub struct TextLink {
     synced: StoredValue<Option<String>>,
     /// The compiler's settings (the AVR scan period).
     pub options: RwSignal<Options>,
+    /// Settings a project or file brought before the machine arrived with
+    /// its part (issue #53): applied when its program pane connects.
+    queued: StoredValue<Vec<(String, String)>>,
+    /// Nothing was saved for this editor and nothing opened or edited in
+    /// it since: when its program pane connects (its machine arrived), the
+    /// ladder starts from the pane's program.
+    fresh: StoredValue<bool>,
 }
 
 /// This page's clipboard, for when the system's is not offered.
@@ -298,6 +305,8 @@ impl LadderCtx {
                 pane: StoredValue::new(None),
                 synced: StoredValue::new(None),
                 options: RwSignal::new(Options::default()),
+                queued: StoredValue::new(Vec::new()),
+                fresh: StoredValue::new(ladder.is_none()),
             },
             clip: Clipboard {
                 text: StoredValue::new(None),
@@ -425,6 +434,9 @@ impl LadderCtx {
 
     fn refresh_as(&self, change: Change) {
         let edited = change != Change::Shown;
+        if edited {
+            self.text.fresh.set_value(false);
+        }
         let options = self.text.options.get_untracked();
         let (listing, errors, out_col, comments, cursor, undo, redo, variables) =
             self.drawing.editor.with_value(|e| {

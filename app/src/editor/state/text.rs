@@ -10,12 +10,23 @@ impl LadderCtx {
     /// saved ladder starts from the pane's program when it decompiles.
     pub fn connect(&self, program: Program) {
         self.text.pane.set_value(Some(program));
+        let queued = self
+            .text
+            .queued
+            .try_update_value(std::mem::take)
+            .unwrap_or_default();
+        if !queued.is_empty() {
+            let refused = program.apply_settings.run(queued);
+            if !refused.is_empty() {
+                self.panes.message.set(Some(refused.join("\n")));
+            }
+        }
         let text = program.text.get_untracked();
         let empty = self
             .drawing
             .editor
             .with_value(|e| e.ladder().rungs.is_empty());
-        if empty && !text.trim().is_empty() {
+        if empty && self.text.fresh.get_value() && !text.trim().is_empty() {
             let scan = self.text.options.get_untracked().avr_scan_ms;
             if let Ok(ladder) = engine::ladder::decompile::decompile_text(self.machine, &text, scan)
             {

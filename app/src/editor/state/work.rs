@@ -27,13 +27,16 @@ impl LadderCtx {
     }
 
     /// Applies settings to the machine as a project brings them; the
-    /// refusals, each named.
+    /// refusals, each named. A machine not there yet (its part on its
+    /// way) takes them when it arrives, and its refusals are said then.
     pub fn apply_settings(&self, settings: Vec<(String, String)>) -> Vec<String> {
-        self.text
-            .pane
-            .get_value()
-            .map(|p| p.apply_settings.run(settings))
-            .unwrap_or_default()
+        match self.text.pane.get_value() {
+            Some(p) => p.apply_settings.run(settings),
+            None => {
+                self.text.queued.update_value(|q| q.extend(settings));
+                Vec::new()
+            }
+        }
     }
 
     /// Shows a shared project's ladder, unsaved, until it is kept or left.
@@ -45,6 +48,8 @@ impl LadderCtx {
         // exercise opened there is simply its work (no banner to answer).
         let adopt = project.exercise.is_some() && self.no_own_work();
         self.work.shared.set(true);
+        // The link's ladder, even an empty one, is what the editor shows.
+        self.text.fresh.set_value(false);
         let own_tests = self.cases.tests.get_untracked();
         let own_exercise = self.cases.exercise.get_untracked();
         let own_plant = self.cases.plant.get_untracked();

@@ -210,3 +210,41 @@ impl Default for Io86aCtx {
         Io86aCtx::new()
     }
 }
+
+crate::parts::part_fn!(
+    io86a,
+    /// PLC-IO86A arrives as a part of its own (issue #53): its engine,
+    /// its compiler and its panels, fetched when it is first shown.
+    pub(crate) fn arrive(
+        _page: crate::state::Ctx,
+        ladder: crate::editor::LadderCtx,
+    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+        engine::machines::register(engine::machines::MachineKit::IO86A);
+        let io = Io86aCtx::new();
+        crate::machines::arrival::wire(
+            ladder,
+            crate::machines::link(io.sim, move || io.refresh()),
+            crate::machines::text_program(io.texts[0], move || io.load(0), move || io.save()),
+        );
+        Ok(std::rc::Rc::new(io))
+    }
+);
+
+impl crate::machines::arrival::MachineWorkspace for Io86aCtx {
+    fn panel(&self) -> leptos::prelude::AnyView {
+        use leptos::prelude::*;
+        // Its views below find it as a context.
+        provide_context(*self);
+        view! { <view::Io86aPanel io=*self /> }.into_any()
+    }
+
+    fn program(&self) -> leptos::prelude::AnyView {
+        use leptos::prelude::*;
+        provide_context(*self);
+        view! { <view::Io86aProgram io=*self /> }.into_any()
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}

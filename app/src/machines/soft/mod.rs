@@ -520,3 +520,42 @@ mod tests {
         assert_eq!(hook("%IW0"), "IW0");
     }
 }
+
+crate::parts::part_fn!(
+    soft_plc,
+    /// The soft PLC arrives as a part of its own (issue #53): its engine
+    /// (IEC, IL, LDmicro's blocks), its compiler and its panel, fetched
+    /// when it is first shown.
+    pub(crate) fn arrive(
+        page: Ctx,
+        ladder: crate::editor::LadderCtx,
+    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+        engine::machines::register(engine::machines::MachineKit::SOFT);
+        let soft = SoftCtx::restore(page);
+        let mut program =
+            crate::machines::text_program(soft.text, move || soft.load(), move || soft.save());
+        program.settings = Callback::new(move |()| soft.project_settings());
+        program.apply_settings =
+            Callback::new(move |settings| soft.apply_project_settings(settings));
+        crate::machines::arrival::wire(
+            ladder,
+            crate::machines::link(soft.sim, move || soft.refresh()),
+            program,
+        );
+        Ok(std::rc::Rc::new(soft))
+    }
+);
+
+impl crate::machines::arrival::MachineWorkspace for SoftCtx {
+    fn panel(&self) -> AnyView {
+        view! { <SoftPanel soft=*self /> }.into_any()
+    }
+
+    fn program(&self) -> AnyView {
+        view! { <SoftProgram soft=*self /> }.into_any()
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
