@@ -96,3 +96,36 @@ def test_when_the_files_worker_cannot_load_the_page_says_so(driver):
         wait(driver, lambda: el(driver, "import-dialog"), message="the import goes on once it loads")
     finally:
         server.stop()
+
+
+def test_each_other_machine_arrives_over_the_slow_link(driver):
+    """Issue #53: each machine but the first screen's is a part fetched
+    when first shown. Over the slow link, from a fresh profile, the time
+    from choosing it to its panel drawn goes to figures.json (recorded,
+    not asserted, as above); what is asserted is that it arrives and that
+    the first screen fetched none of them."""
+    import time
+    from selenium.webdriver.support.ui import Select
+    server = DistServer(["--brotli", "--gzip"])
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.emulateNetworkConditions", SLOW_LINK)
+    arrivals = {}
+    try:
+        driver.get(server.url)
+        wait(driver, lambda: driver.execute_script(
+            "return performance.getEntriesByName('hashigo-ready').length > 0"), timeout=60,
+            message="the app marks itself ready")
+        fetched = driver.execute_script(
+            "return performance.getEntriesByType('resource').map((r) => r.name)")
+        assert not [f for f in fetched if "split_" in f], fetched
+        for machine, board in [("io86a", "io86a-terminal"), ("avr-plc", "avr-program-text"),
+                               ("arduino-plc", "arduino-monitor"), ("soft-plc", "soft-board")]:
+            start = time.monotonic()
+            Select(el(driver, "machine")).select_by_value(machine)
+            wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, f'[data-testid="{board}"]'),
+                 timeout=30, message=f"{machine} arrives")
+            arrivals[machine] = round((time.monotonic() - start) * 1000)
+    finally:
+        server.stop()
+    record_figures({"machine_arrival_slow_link_ms": arrivals})
+    print(arrivals)

@@ -106,3 +106,27 @@ def test_every_machine_opens_offline_after_one_visit(driver):
                            ("arduino-plc", "arduino-monitor"), ("soft-plc", "soft-board")]:
         Select(el(driver, "machine")).select_by_value(machine)
         wait(driver, lambda: el(driver, board), message=f"{machine} opens offline")
+
+
+def test_a_share_link_made_while_its_codec_cannot_be_fetched_says_so(driver, base_url):
+    """The share links' codec is a part: Share says where it was pressed
+    that it could not be fetched, and pressing it again makes the link."""
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    block(driver, ["*split_share_codec*"])
+    try:
+        el(driver, "share").click()
+        wait(driver, lambda: "could not be fetched" in el(driver, "edit-message", reveal=False).text,
+             message="the message line says the codec is missing")
+        assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="share-url"]')
+    finally:
+        block(driver, [])
+    el(driver, "share").click()
+    link = wait(driver, lambda: el(driver, "share-url").get_attribute("value"))
+    assert "#" in link
+    # The link opens the ladder in a fresh profile (the codec fetched there too).
+    open_fresh(driver, base_url)
+    driver.get(link)
+    wait(driver, lambda: el(driver, "shared-banner"), message="the shared ladder is shown")

@@ -180,11 +180,19 @@ pub fn StudentView(ctx: LadderCtx, check: Callback<()>) -> impl IntoView {
         }
     });
     let send = move |_| {
-        let project = crate::editor::shared::project_of(ctx);
-        match engine::formats::share::encode(&project) {
-            Ok(fragment) => sent.set(Some(crate::editor::shared::answer_url(&fragment))),
-            Err(e) => ctx.panes.message.set(Some(e.to_string())),
-        }
+        use crate::editor::shared;
+        let project = shared::project_of(ctx);
+        let said = move |e| {
+            let lang = ctx.page.lang.get_untracked();
+            ctx.panes.message.set(Some(shared::codec_failed(lang, e)));
+        };
+        wasm_bindgen_futures::spawn_local(async move {
+            match shared::encode(project).await {
+                Ok(Ok(fragment)) => sent.set(Some(shared::answer_url(&fragment))),
+                Ok(Err(e)) => said(Ok(e)),
+                Err(missing) => said(Err(missing)),
+            }
+        });
     };
     let check_now = move |_| {
         check.run(());
