@@ -89,7 +89,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
 /// written), by upper-case name: functions first, blocks second.
 type Pins = std::collections::HashMap<String, Vec<(String, String)>>;
 
-fn declared(source: &Source) -> std::collections::HashSet<String> {
+pub(super) fn declared(source: &Source) -> std::collections::HashSet<String> {
     let pous = source.items.iter().filter_map(|i| match i {
         Item::Pou(p) => Some(p),
         _ => None,
@@ -101,7 +101,7 @@ fn declared(source: &Source) -> std::collections::HashSet<String> {
         .collect()
 }
 
-fn signatures(source: &Source) -> (Pins, Pins) {
+pub(super) fn signatures(source: &Source) -> (Pins, Pins) {
     let (mut functions, mut blocks) = (Pins::new(), Pins::new());
     for item in &source.items {
         let Item::Pou(p) = item else { continue };
@@ -148,6 +148,8 @@ pub(super) struct Lower {
     /// Every name the source declares (upper-case): a hidden name is
     /// none of them.
     pub(super) taken: std::collections::HashSet<String>,
+    /// Starts every label and hidden name (a host's bodies share names).
+    pub(super) tag: String,
 }
 
 impl Lower {
@@ -171,7 +173,7 @@ impl Lower {
     /// A fresh label (IL labels are their own names: no variable's).
     fn label(&mut self) -> String {
         self.labels += 1;
-        format!("st_{}", self.labels)
+        format!("{}st_{}", self.tag, self.labels)
     }
 
     fn place(&mut self, label: &str, span: Span) {

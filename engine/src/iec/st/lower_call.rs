@@ -30,6 +30,21 @@ impl Lower {
     /// function calls need.
     pub(super) fn body(&mut self, p: &Pou) {
         let at = self.lines.len();
+        let hidden = self.body_alone(p);
+        if hidden.is_empty() {
+            return;
+        }
+        let mut block = vec![("VAR".to_string(), p.span)];
+        for (name, ty) in hidden {
+            block.push((format!("  {name} : {ty};"), p.span));
+        }
+        block.push(("END_VAR".to_string(), p.span));
+        self.lines.splice(at..at, block);
+    }
+
+    /// A POU's statements; the hidden instances (name, type) its
+    /// function calls need.
+    pub(super) fn body_alone(&mut self, p: &Pou) -> Vec<(String, String)> {
         self.hidden.clear();
         self.instances = p
             .vars
@@ -45,15 +60,7 @@ impl Lower {
             .flatten()
             .collect();
         self.stmts(&p.body);
-        if self.hidden.is_empty() {
-            return;
-        }
-        let mut block = vec![("VAR".to_string(), p.span)];
-        for (name, ty) in std::mem::take(&mut self.hidden) {
-            block.push((format!("  {name} : {ty};"), p.span));
-        }
-        block.push(("END_VAR".to_string(), p.span));
-        self.lines.splice(at..at, block);
+        std::mem::take(&mut self.hidden)
     }
 
     /// An IL operand for `e`: [`simple`]'s, or a call already made.
@@ -68,7 +75,7 @@ impl Lower {
     fn fresh(&mut self, prefix: &str) -> String {
         let mut n = self.hidden.len() + 1;
         loop {
-            let name = format!("{prefix}{n}");
+            let name = format!("{}{prefix}{n}", self.tag);
             if self.taken.insert(name.to_ascii_uppercase()) {
                 return name;
             }

@@ -15,6 +15,7 @@ pub mod error;
 mod expr;
 mod lexer;
 pub mod lower;
+mod lower_body;
 mod lower_call;
 mod parser;
 pub mod print;
@@ -28,6 +29,7 @@ pub use ast::Source;
 pub use check::check_source;
 pub use error::{StError, StErrorKind};
 pub use lower::{lower_source, Lowered};
+pub use lower_body::{lower_body, LoweredBody};
 pub use print::print_source;
 
 use ast::Stmt;
