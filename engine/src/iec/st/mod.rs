@@ -28,6 +28,7 @@ mod typing;
 pub use ast::Source;
 pub use check::check_source;
 pub use error::{StError, StErrorKind};
+pub use lexer::KEYWORDS;
 pub use lower::{lower_source, Lowered};
 pub use lower_body::{lower_body, LoweredBody};
 pub use print::print_source;

@@ -118,38 +118,26 @@ impl Checker {
         for step in &v.path {
             ty = match step {
                 Selector::Index(ix) => self.index(scope, v, &ty, ix),
-                Selector::Member(m) => match self.decls.members(&ty) {
-                    Some(ms) => match ms.iter().find(|(n, _, _)| n.eq_ignore_ascii_case(&m.name)) {
+                Selector::Member(m) => {
+                    let members = self.decls.members(&ty);
+                    let found = members
+                        .as_ref()
+                        .and_then(|ms| ms.iter().find(|(n, ..)| n.eq_ignore_ascii_case(&m.name)));
+                    match found {
                         Some((_, t, out)) => {
                             // A block's output is its own to write.
                             read_only |= *out && matches!(ty, Ty::Block(_));
                             t.clone()
                         }
+                        // An unknown type was refused already.
+                        None if ty == Ty::Unknown => Ty::Unknown,
                         None => {
-                            let of = ty.describe();
-                            self.refuse(
-                                m.span,
-                                StErrorKind::NoMember {
-                                    member: m.name.clone(),
-                                    of,
-                                },
-                            );
+                            let (member, of) = (m.name.clone(), ty.describe());
+                            self.refuse(m.span, StErrorKind::NoMember { member, of });
                             Ty::Unknown
                         }
-                    },
-                    None if ty == Ty::Unknown => Ty::Unknown,
-                    None => {
-                        let of = ty.describe();
-                        self.refuse(
-                            m.span,
-                            StErrorKind::NoMember {
-                                member: m.name.clone(),
-                                of,
-                            },
-                        );
-                        Ty::Unknown
                     }
-                },
+                }
             };
         }
         (ty, read_only)
