@@ -255,6 +255,38 @@ impl Data {
         }
     }
 
+    /// ABS: the magnitude, wrapped as NEG's (`-32768` stays `-32768` as
+    /// an INT); an unsigned integer is its own.
+    pub fn abs(&self) -> Option<Data> {
+        match *self {
+            Data::Int(t, _) => Some(Data::integer(t, self.int()?.abs())),
+            Data::Real(r) => Some(Data::Real(r.abs())),
+            _ => None,
+        }
+    }
+
+    /// A REAL's value.
+    pub fn real(&self) -> Option<f32> {
+        match *self {
+            Data::Real(r) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// EXPT: a REAL to the power of a REAL or of an integer (an integer
+    /// power multiplies, exactly as far as a REAL holds it).
+    pub fn expt(&self, power: &Data) -> Option<Data> {
+        let base = self.real()?;
+        Some(Data::Real(match *power {
+            Data::Real(p) => base.powf(p),
+            Data::Int(..) => {
+                let p = power.int()?.clamp(i32::MIN.into(), i32::MAX.into());
+                base.powi(p as i32)
+            }
+            _ => return None,
+        }))
+    }
+
     /// AND, OR, XOR of two values of one type: BOOL, or an integer's bits
     /// in its width (`None` for other types, or types that differ).
     #[inline]

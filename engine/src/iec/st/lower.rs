@@ -444,7 +444,7 @@ impl Lower {
                 self.expr(x);
                 self.emit("NOT", e.span);
             }
-            ExprKind::Binary(BinaryOp::Pow, ..) => self.not_yet(e.span, "`**`"),
+            ExprKind::Binary(BinaryOp::Pow, a, b) => self.power(a, b),
             ExprKind::Binary(op, a, b) => {
                 self.expr(a);
                 self.operand(il_op(*op), b);

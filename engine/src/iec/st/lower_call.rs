@@ -63,6 +63,19 @@ impl Lower {
         std::mem::take(&mut self.hidden)
     }
 
+    /// `a ** b`: IL's EXPT of `a`, its power a variable or a literal (an
+    /// expression's type is not known to the lowering yet).
+    pub(super) fn power(&mut self, a: &Expr, b: &Expr) {
+        self.expr(a);
+        match self.simple(b) {
+            Some(t) => self.emit(format!("EXPT {t}"), b.span),
+            None => self.not_yet(
+                b.span,
+                "an expression as `**`'s power (assign it to a variable first)",
+            ),
+        }
+    }
+
     /// An IL operand for `e`: [`simple`]'s, or a call already made.
     pub(super) fn simple(&self, e: &Expr) -> Option<String> {
         if let ExprKind::Call(_) = e.kind {

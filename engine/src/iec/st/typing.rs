@@ -67,9 +67,33 @@ impl Checker {
             }
             ExprKind::Binary(op, a, b) => {
                 let (ta, tb) = (self.expr(scope, a), self.expr(scope, b));
+                if *op == BinaryOp::Pow {
+                    return self.power(&ta, &tb, (a.span, b.span));
+                }
                 self.binary(*op, &ta, &tb, b.span)
             }
         }
+    }
+
+    /// `a ** b`, IEC's EXPT: a REAL base (ANY_REAL), a power of any
+    /// number type, the base's type (an untyped integer base is taken as
+    /// a real literal).
+    fn power(&mut self, a: &Ty, b: &Ty, (sa, sb): (Span, Span)) -> Ty {
+        use Elementary::{Lreal, Real};
+        let base = match a {
+            Ty::Elem(Real | Lreal) | Ty::AnyReal | Ty::Unknown => a.clone(),
+            Ty::AnyInt => Ty::AnyReal,
+            _ => {
+                let want = "a REAL (EXPT's base: convert an integer, INT_TO_REAL)";
+                self.mismatch(sa, "`**`'s base", want, a);
+                return Ty::Unknown;
+            }
+        };
+        if !b.is_number() || *b == Ty::Elem(Elementary::Time) {
+            self.mismatch(sb, "`**`'s power", "a number", b);
+            return Ty::Unknown;
+        }
+        base
     }
 
     fn binary(&mut self, op: BinaryOp, a: &Ty, b: &Ty, span: Span) -> Ty {
