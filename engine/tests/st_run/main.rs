@@ -10,6 +10,7 @@ mod cli;
 mod common;
 mod control;
 mod expressions;
+mod inout;
 mod numeric;
 mod property;
 mod refusals;

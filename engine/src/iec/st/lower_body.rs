@@ -28,6 +28,7 @@ pub fn lower_body(source: &Source, pou: &str, tag: &str) -> Result<LoweredBody, 
     (l.functions, l.blocks) = (functions, blocks);
     l.taken = declared(source);
     l.tag = tag.to_string();
+    l.know_in_outs(source);
     let found = source.items.iter().find_map(|i| match i {
         Item::Pou(p) if p.name.name.eq_ignore_ascii_case(pou) => Some(p),
         _ => None,

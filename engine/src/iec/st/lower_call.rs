@@ -22,7 +22,7 @@ impl Lower {
         self.emit("VAR_OUTPUT", p.span);
         self.emit(format!("  {} : {ty};", p.name.name), p.name.span);
         self.emit("END_VAR", p.span);
-        self.body(p);
+        self.body_with_io(p);
         self.emit("END_FUNCTION_BLOCK", p.span);
     }
 
@@ -170,6 +170,10 @@ impl Lower {
                 }
             };
             let ty = call.callee.name.to_ascii_uppercase();
+            if let Some(pair) = self.in_out(&ty, &name, x) {
+                args.extend(pair);
+                continue;
+            }
             match self.input(&ty, &name, x, true) {
                 Some(t) => args.push(format!("{name} := {t}")),
                 None => return self.not_yet(x.span, "this function's input as an expression"),
