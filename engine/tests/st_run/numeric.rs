@@ -68,7 +68,7 @@ fn numeric_functions_refuse_what_they_do_not_take() {
         refusals("PROGRAM t\nVAR b : BOOL; r : REAL; END_VAR\n  r := SQRT(INT#4);\nEND_PROGRAM\n");
     assert!(
         e.iter()
-            .any(|m| m.starts_with("3:") && m.contains("SQRT takes a REAL")),
+            .any(|m| m.starts_with("3:") && m.contains("does not apply to INT")),
         "{e:?}"
     );
     let e = refusals(
@@ -106,8 +106,5 @@ ST m
     assert_eq!(shown(&p, "m"), "4");
     let e = engine::softplc::Program::load("VAR\nn : INT;\nEND_VAR\nLD n\nSQRT\nST n\n")
         .expect_err("SQRT of an INT");
-    assert!(
-        e[0].to_string().contains("SQRT takes a REAL, not INT"),
-        "{e:?}"
-    );
+    assert!(e[0].to_string().contains("does not apply to INT"), "{e:?}");
 }

@@ -73,19 +73,13 @@ impl Program {
     /// ABS (an integer or a REAL, which it leaves), SQRT (a REAL), TRUNC
     /// (a REAL, leaving a DINT), EXPT (a REAL, to a REAL or integer
     /// power, leaving a REAL); untyped literals taken as the function
-    /// needs.
+    /// needs. Another type: "this operation does not apply to INT".
     fn numeric(
         &mut self,
         f: Function,
         flow: &mut Flow,
         args: &mut [super::Src],
     ) -> Result<(), LoadError> {
-        let (name, takes) = match f {
-            Function::Abs => ("ABS", "an integer or a REAL"),
-            Function::Sqrt => ("SQRT", "a REAL"),
-            Function::Trunc => ("TRUNC", "a REAL"),
-            _ => ("EXPT", "a REAL base (convert an integer: INT_TO_REAL)"),
-        };
         if f != Function::Abs {
             self.settle(flow, DataType::Real);
         }
@@ -95,13 +89,12 @@ impl Program {
             _ => t == DataType::Real,
         };
         if !fits {
-            return Err(LoadError::Type(TypeWhy::Function { name, takes, is: t }));
+            return Err(LoadError::NotFor(t));
         }
         if let (Function::Expt, Some(power)) = (f, args.first_mut()) {
             let p = self.type_of(power);
             if p.bits().is_none() && p != DataType::Real {
-                let takes = "a REAL or integer power";
-                return Err(LoadError::Type(TypeWhy::Function { name, takes, is: p }));
+                return Err(LoadError::NotFor(p));
             }
         }
         if f == Function::Trunc {
@@ -122,13 +115,8 @@ impl Program {
     ) -> Result<(), LoadError> {
         self.settle(flow, DataType::Dint);
         let k = need_cr(flow.cr)?;
-        if k.bits().is_none() || k == DataType::Bool {
-            let takes = "an integer K (the current result)";
-            return Err(LoadError::Type(TypeWhy::Function {
-                name: "MUX",
-                takes,
-                is: k,
-            }));
+        if k.bits().is_none() {
+            return Err(LoadError::NotFor(k));
         }
         let mut own = Flow::default();
         let t = self.join(&mut own, line, placed, args)?;

@@ -18,15 +18,6 @@ use crate::softplc::program::user::{
 pub enum TypeWhy {
     /// NEG of a BOOL or a STRING.
     NegNumber,
-    /// A standard function given a type it does not take.
-    Function {
-        /// The function.
-        name: &'static str,
-        /// What it takes, in words.
-        takes: &'static str,
-        /// What it was given.
-        is: DataType,
-    },
     /// A shift or rotation of something that is no integer.
     ShiftIntegers,
     /// A conversion to or from STRING.
@@ -172,9 +163,6 @@ impl fmt::Display for TypeWhy {
         use TypeWhy as T;
         match self {
             T::NegNumber => f.write_str("NEG needs a number"),
-            T::Function { name, takes, is } => {
-                write!(f, "{name} takes {takes}, not {}", is.name())
-            }
             T::ShiftIntegers => {
                 f.write_str("SHL, SHR, ROL and ROR shift an integer by an integer")
             }
