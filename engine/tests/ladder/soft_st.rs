@@ -157,3 +157,17 @@ fn beremiz_counter_st_and_counter_il_run_alone() {
         assert_eq!(get(plc.as_ref(), "OUT"), 17, "{pou}");
     }
 }
+
+#[test]
+fn bottle_refiller_is_refused_for_its_c_pragmas_alone_at_their_lines() {
+    let Some(xml) = real("bottle-refiller.xml") else {
+        return;
+    };
+    let errors = refused(&xml);
+    assert_eq!(errors.len(), 3, "{errors:?}");
+    for (line, why) in &errors {
+        assert!(why.contains("pragma"), "{errors:?}");
+        let text = xml.lines().nth(line - 1).unwrap_or_default();
+        assert!(text.trim_start().starts_with('{'), "line {line}: {text}");
+    }
+}

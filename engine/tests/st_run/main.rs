@@ -14,4 +14,5 @@ mod inout;
 mod numeric;
 mod property;
 mod refusals;
+mod small_types;
 mod speed;
