@@ -171,3 +171,42 @@ fn bottle_refiller_is_refused_for_its_c_pragmas_alone_at_their_lines() {
         assert!(text.trim_start().starts_with('{'), "line {line}: {text}");
     }
 }
+
+/// A program in ST named `name`, counting `n` (of type `ty`) up by
+/// `step` while `a AND b` (an expression as a block's input: a hidden
+/// variable).
+fn counting_program(name: &str, ty: &str, step: i64) -> String {
+    format!(
+        r#"<pou name="{name}" pouType="program"><interface><localVars>
+<variable name="a"><type><BOOL/></type><initialValue><simpleValue value="TRUE"/></initialValue></variable>
+<variable name="b"><type><BOOL/></type><initialValue><simpleValue value="TRUE"/></initialValue></variable>
+<variable name="n"><type><{ty}/></type></variable>
+<variable name="t"><type><derived name="TON"/></type></variable>
+</localVars></interface><body><ST><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml"><![CDATA[t(IN := a AND b, PT := T#0ms);
+IF t.Q THEN
+  n := n + {ty}#{step};
+END_IF;]]></xhtml:p></ST></body></pou>"#
+    )
+}
+
+#[test]
+fn two_st_programs_with_the_same_names_keep_their_own() {
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>
+{}
+{}
+</pous></types><instances><configurations><configuration name="c"><resource name="r">
+<task name="t" priority="0" interval="T#10ms"><pouInstance name="i1" typeName="one"/><pouInstance name="i2" typeName="two"/></task>
+</resource></configuration></configurations></instances></project>"#,
+        counting_program("one", "INT", 1),
+        counting_program("two", "DINT", 10)
+    );
+    let mut plc = soft(&xml, None);
+    plc.run_until(SimTime::from_millis(50));
+    let k = plc.scans() as i64;
+    // The second program's `n`, a DINT, is renamed two_n; its body is
+    // read with its own `n`, not the first program's INT.
+    assert_eq!(get(plc.as_ref(), "n"), k);
+    assert_eq!(get(plc.as_ref(), "two_n"), 10 * k);
+}

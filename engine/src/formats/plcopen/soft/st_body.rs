@@ -115,8 +115,23 @@ fn source_of(scope: &Scope, text: &str) -> (String, usize) {
         out.push_str("END_FUNCTION_BLOCK\n");
     }
     out.push_str(&format!("PROGRAM {}\nVAR\n", scope.pou));
+    // The POU's renamed variables under the names its body writes (the
+    // IL's words are renamed back on the way out); the other programs'
+    // variables of those names are not this POU's.
+    let renamed = scope.decl.renamings(scope.pou);
     for d in scope.decl.list.iter().filter(|d| !d.line.is_empty()) {
-        out.push_str(&format!("  {}\n", d.line));
+        let lower = d.name.to_ascii_lowercase();
+        if renamed.iter().any(|(file, _)| *file == lower) {
+            continue;
+        }
+        let line = match renamed
+            .iter()
+            .find(|(_, soft)| soft.eq_ignore_ascii_case(&d.name))
+        {
+            Some((file, _)) => d.line.replacen(&d.name, file, 1),
+            None => d.line.clone(),
+        };
+        out.push_str(&format!("  {line}\n"));
     }
     out.push_str("END_VAR\n");
     let body_line = out.lines().count() + 1;
