@@ -146,10 +146,7 @@ impl fmt::Display for StErrorKind {
                 context,
                 found,
             } => write!(f, "expected {what} {context}, found {found}"),
-            StErrorKind::InOutArgument(pin) => write!(
-                f,
-                "the VAR_IN_OUT {pin} takes a variable, which the call reads and writes"
-            ),
+            StErrorKind::InOutArgument(pin) => write!(f, "the VAR_IN_OUT {pin} takes a variable"),
             StErrorKind::NotYet(what) => {
                 write!(f, "{what} does not run on the soft PLC yet")
             }
