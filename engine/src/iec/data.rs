@@ -16,14 +16,18 @@ pub const STRING_CAPACITY: usize = 254;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum DataType {
     Bool,
+    Sint,
     Int,
     Dint,
     Lint,
+    Usint,
     Uint,
     Udint,
     Ulint,
+    Byte,
     Word,
     Dword,
+    Lword,
     Real,
     /// A duration, held in nanoseconds, printed in milliseconds.
     Time,
@@ -33,16 +37,20 @@ pub enum DataType {
 
 impl DataType {
     /// Every type, in the order docs/soft-plc.md lists them.
-    pub const ALL: [DataType; 12] = [
+    pub const ALL: [DataType; 16] = [
         DataType::Bool,
+        DataType::Sint,
         DataType::Int,
         DataType::Dint,
         DataType::Lint,
+        DataType::Usint,
         DataType::Uint,
         DataType::Udint,
         DataType::Ulint,
+        DataType::Byte,
         DataType::Word,
         DataType::Dword,
+        DataType::Lword,
         DataType::Real,
         DataType::Time,
         DataType::String,
@@ -52,14 +60,18 @@ impl DataType {
     pub const fn name(self) -> &'static str {
         match self {
             DataType::Bool => "BOOL",
+            DataType::Sint => "SINT",
             DataType::Int => "INT",
             DataType::Dint => "DINT",
             DataType::Lint => "LINT",
+            DataType::Usint => "USINT",
             DataType::Uint => "UINT",
             DataType::Udint => "UDINT",
             DataType::Ulint => "ULINT",
+            DataType::Byte => "BYTE",
             DataType::Word => "WORD",
             DataType::Dword => "DWORD",
+            DataType::Lword => "LWORD",
             DataType::Real => "REAL",
             DataType::Time => "TIME",
             DataType::String => "STRING",
@@ -77,9 +89,10 @@ impl DataType {
     /// STRING).
     pub const fn bits(self) -> Option<u32> {
         match self {
+            DataType::Sint | DataType::Usint | DataType::Byte => Some(8),
             DataType::Int | DataType::Uint | DataType::Word => Some(16),
             DataType::Dint | DataType::Udint | DataType::Dword => Some(32),
-            DataType::Lint | DataType::Ulint => Some(64),
+            DataType::Lint | DataType::Ulint | DataType::Lword => Some(64),
             DataType::Bool | DataType::Real | DataType::Time | DataType::String => None,
         }
     }
@@ -98,7 +111,10 @@ impl DataType {
 
     /// Whether an integer of this type is signed.
     pub const fn is_signed(self) -> bool {
-        matches!(self, DataType::Int | DataType::Dint | DataType::Lint)
+        matches!(
+            self,
+            DataType::Sint | DataType::Int | DataType::Dint | DataType::Lint
+        )
     }
 
     /// The value a variable of this type starts at without an initial value.
@@ -253,6 +269,38 @@ impl Data {
             Data::Time(ns) => Some(Data::Time(ns.wrapping_neg())),
             Data::Bool(_) | Data::Text(_) => None,
         }
+    }
+
+    /// ABS: the magnitude, wrapped as NEG's (`-32768` stays `-32768` as
+    /// an INT); an unsigned integer is its own.
+    pub fn abs(&self) -> Option<Data> {
+        match *self {
+            Data::Int(t, _) => Some(Data::integer(t, self.int()?.abs())),
+            Data::Real(r) => Some(Data::Real(r.abs())),
+            _ => None,
+        }
+    }
+
+    /// A REAL's value.
+    pub fn real(&self) -> Option<f32> {
+        match *self {
+            Data::Real(r) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// EXPT: a REAL to the power of a REAL or of an integer (an integer
+    /// power multiplies, exactly as far as a REAL holds it).
+    pub fn expt(&self, power: &Data) -> Option<Data> {
+        let base = self.real()?;
+        Some(Data::Real(match *power {
+            Data::Real(p) => base.powf(p),
+            Data::Int(..) => {
+                let p = power.int()?.clamp(i32::MIN.into(), i32::MAX.into());
+                base.powi(p as i32)
+            }
+            _ => return None,
+        }))
     }
 
     /// AND, OR, XOR of two values of one type: BOOL, or an integer's bits

@@ -74,6 +74,16 @@ pub enum Function {
     Max,
     Limit,
     Sel,
+    /// ABS of an integer or a REAL.
+    Abs,
+    /// SQRT of a REAL.
+    Sqrt,
+    /// TRUNC: a REAL toward zero, as a DINT.
+    Trunc,
+    /// EXPT: a REAL to the power of its operand (a REAL or an integer).
+    Expt,
+    /// MUX: the current result (K) picks one of the operands.
+    Mux,
     /// `FROM_TO_TO`.
     Convert {
         from: DataType,
@@ -96,6 +106,11 @@ impl Function {
             "MAX" => Function::Max,
             "LIMIT" => Function::Limit,
             "SEL" => Function::Sel,
+            "ABS" => Function::Abs,
+            "SQRT" => Function::Sqrt,
+            "TRUNC" => Function::Trunc,
+            "EXPT" => Function::Expt,
+            "MUX" => Function::Mux,
             _ => {
                 let (from, to) = upper.split_once("_TO_")?;
                 Function::Convert {
@@ -106,13 +121,22 @@ impl Function {
         })
     }
 
-    /// How many operands the line gives it.
+    /// How many operands the line gives it (MUX: at least this many).
     pub const fn operands(self) -> usize {
         match self {
             Function::Neg | Function::Move | Function::Convert { .. } => 0,
+            Function::Abs | Function::Sqrt | Function::Trunc => 0,
             Function::Shl | Function::Shr | Function::Rol | Function::Ror => 1,
-            Function::Min | Function::Max => 1,
+            Function::Min | Function::Max | Function::Expt | Function::Mux => 1,
             Function::Limit | Function::Sel => 2,
+        }
+    }
+
+    /// Whether a line may give it `n` operands.
+    pub const fn takes(self, n: usize) -> bool {
+        match self {
+            Function::Mux => n >= 1,
+            _ => n == self.operands(),
         }
     }
 }
@@ -453,7 +477,7 @@ fn function_line(
             .map(|a| operand(a.trim()))
             .collect::<Result<_, _>>()?
     };
-    if out.args.len() == function.operands() {
+    if function.takes(out.args.len()) {
         Ok(out)
     } else {
         Err(IlError::OperandCount(word.into(), function.operands()))

@@ -68,6 +68,11 @@ impl Function {
             Function::Max => "MAX".into(),
             Function::Limit => "LIMIT".into(),
             Function::Sel => "SEL".into(),
+            Function::Abs => "ABS".into(),
+            Function::Sqrt => "SQRT".into(),
+            Function::Trunc => "TRUNC".into(),
+            Function::Expt => "EXPT".into(),
+            Function::Mux => "MUX".into(),
             Function::Convert { from, to } => format!("{}_TO_{}", from.name(), to.name()),
         }
     }

@@ -349,6 +349,13 @@ fn give_back(
 /// most two: read without allocating).
 #[inline(always)]
 fn call_function(values: &[Data], f: Function, cr: &Data, args: &[Src]) -> Data {
+    if f == Function::Mux {
+        // Any number of inputs: only the one K picks is read. K outside
+        // 0 … n-1 takes the nearest input (decided; IEC calls it an error).
+        let last = args.len().saturating_sub(1) as i128;
+        let k = cr.int().unwrap_or(0).clamp(0, last) as usize;
+        return args.get(k).map_or_else(|| cr.clone(), |a| read(values, a));
+    }
     let mut operands = [Data::Bool(false), Data::Bool(false)];
     for (v, a) in operands.iter_mut().zip(args) {
         *v = read(values, a);
@@ -447,6 +454,15 @@ fn function(f: Function, cr: &Data, args: &[Data]) -> Data {
             _ => None,
         },
         Function::Convert { to, .. } => Some(cr.convert(to)),
+        Function::Abs => cr.abs(),
+        Function::Sqrt => cr.real().map(|r| Data::Real(r.sqrt())),
+        // Toward zero, saturating at DINT's limits (NaN gives 0).
+        Function::Trunc => cr
+            .real()
+            .map(|r| Data::integer(DataType::Dint, (r as i32).into())),
+        Function::Expt => args.first().and_then(|e| cr.expt(e)),
+        // Read by `call_function`, which sees all its inputs.
+        Function::Mux => None,
     };
     result.unwrap_or_else(|| cr.clone())
 }

@@ -18,6 +18,7 @@ mod share;
 mod soft_drawn;
 mod soft_plcopen;
 mod soft_seeds;
+mod soft_st;
 mod source_map;
 mod strategies;
 mod why;

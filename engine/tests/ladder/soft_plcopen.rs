@@ -46,22 +46,19 @@ fn at(plc: &mut dyn Plc, ms: u64, device: &str) -> i64 {
 }
 
 /// Each project that does not run, and what it is told.
-const REFUSED: [(&str, &str); 7] = [
+const REFUSED: [(&str, &str); 6] = [
     (
         "beremiz-first-steps.xml",
-        "CounterST is the project's own function block in ST",
+        "CounterSFC is the project's own function block in SFC",
     ),
     (
         "beremiz-traffic-light.xml",
         "the project's own function block in SFC",
     ),
     (
+        // Only its C pragmas, in its three ST bodies (see soft_st.rs).
         "bottle-refiller.xml",
-        "the project's own function block in ST",
-    ),
-    (
-        "codesys-execute.xml",
-        "EXECUTE is CODESYS's block of in-line ST",
+        "a pragma `{…}` not supported by Hashigo's Structured Text",
     ),
     (
         "openplc-ex-blink-p1am.xml",
@@ -75,7 +72,7 @@ const REFUSED: [(&str, &str); 7] = [
 ];
 
 #[test]
-fn fourteen_of_the_real_projects_run_and_the_rest_say_why() {
+fn fifteen_of_the_real_projects_run_and_the_rest_say_why() {
     let Some(names) = crate::common::fixture_names(REAL, ".xml") else {
         return;
     };
@@ -103,7 +100,7 @@ fn fourteen_of_the_real_projects_run_and_the_rest_say_why() {
         }
     }
     assert!(
-        ran.len() >= 14,
+        ran.len() >= 15,
         "{} of {} run: {ran:?}",
         ran.len(),
         names.len()

@@ -19,7 +19,8 @@ const USAGE: &str = "\
 usage: hashigo <command> [options]
   run      --machine ID --program FILE [--set NAME=VALUE]... [--input EVENTS.csv]
            --until TIME [--every TIME] --watch DEV[,DEV...]
-           (a .st file, Structured Text, runs on soft-plc: --machine may be left out)
+           (a .st file, Structured Text, runs on soft-plc: --machine may be left out;
+            a PLCopen .xml on soft-plc runs its LD, FBD, IL and ST bodies as written)
            [--plant NAME [--wiring WIRING.csv] [--fault FAULT]... [--set NAME.KEY=VALUE]...]
            (run, test and why take the plant options; alarms go to stderr)
   bench    --machine ID --program FILE --steps N

@@ -53,6 +53,8 @@ pub enum StErrorKind {
     /// Something that parses and checks but does not run on the soft
     /// PLC yet (named).
     NotYet(String),
+    /// A VAR_IN_OUT given an expression, not a variable (the pin).
+    InOutArgument(String),
     /// A keyword used where a name is needed.
     ReservedWord(String),
     /// Nesting deeper than [`MAX_DEPTH`].
@@ -144,6 +146,7 @@ impl fmt::Display for StErrorKind {
                 context,
                 found,
             } => write!(f, "expected {what} {context}, found {found}"),
+            StErrorKind::InOutArgument(pin) => write!(f, "the VAR_IN_OUT {pin} takes a variable"),
             StErrorKind::NotYet(what) => {
                 write!(f, "{what} does not run on the soft PLC yet")
             }

@@ -36,8 +36,8 @@ pub struct Token {
     pub text: String,
 }
 
-/// The words the language reserves.
-const KEYWORDS: [&str; 48] = [
+/// The words the language reserves (what a keyword token may be).
+pub const KEYWORDS: [&str; 48] = [
     "IF",
     "THEN",
     "ELSIF",

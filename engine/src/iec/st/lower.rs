@@ -11,7 +11,7 @@
 
 use super::ast::{
     BinaryOp, CaseArm, CaseLabel, Expr, ExprKind, Item, Pou, PouKind, Source, Span, Stmt, StmtKind,
-    UnaryOp, VarBlock, VarKind,
+    UnaryOp, VarKind,
 };
 use super::error::{StError, StErrorKind};
 use super::types::at;
@@ -46,6 +46,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         taken: declared(source),
         ..Lower::default()
     };
+    l.know_in_outs(source);
     let mut program: Option<&Pou> = None;
     for item in &source.items {
         match item {
@@ -89,7 +90,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
 /// written), by upper-case name: functions first, blocks second.
 type Pins = std::collections::HashMap<String, Vec<(String, String)>>;
 
-fn declared(source: &Source) -> std::collections::HashSet<String> {
+pub(super) fn declared(source: &Source) -> std::collections::HashSet<String> {
     let pous = source.items.iter().filter_map(|i| match i {
         Item::Pou(p) => Some(p),
         _ => None,
@@ -101,14 +102,14 @@ fn declared(source: &Source) -> std::collections::HashSet<String> {
         .collect()
 }
 
-fn signatures(source: &Source) -> (Pins, Pins) {
+pub(super) fn signatures(source: &Source) -> (Pins, Pins) {
     let (mut functions, mut blocks) = (Pins::new(), Pins::new());
     for item in &source.items {
         let Item::Pou(p) = item else { continue };
         let inputs = p
             .vars
             .iter()
-            .filter(|b| b.kind == VarKind::Input)
+            .filter(|b| matches!(b.kind, VarKind::Input | VarKind::InOut))
             .flat_map(|b| &b.decls)
             .flat_map(|d| {
                 d.names
@@ -148,6 +149,12 @@ pub(super) struct Lower {
     /// Every name the source declares (upper-case): a hidden name is
     /// none of them.
     pub(super) taken: std::collections::HashSet<String>,
+    /// Starts every label and hidden name (a host's bodies share names).
+    pub(super) tag: String,
+    /// Each own block's and function's VAR_IN_OUT: (POU, pin), upper-case.
+    pub(super) inouts: std::collections::HashSet<(String, String)>,
+    /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).
+    pub(super) ret: Option<String>,
 }
 
 impl Lower {
@@ -169,12 +176,12 @@ impl Lower {
     }
 
     /// A fresh label (IL labels are their own names: no variable's).
-    fn label(&mut self) -> String {
+    pub(super) fn label(&mut self) -> String {
         self.labels += 1;
-        format!("st_{}", self.labels)
+        format!("{}st_{}", self.tag, self.labels)
     }
 
-    fn place(&mut self, label: &str, span: Span) {
+    pub(super) fn place(&mut self, label: &str, span: Span) {
         self.emit(format!("{label}:"), span);
     }
 
@@ -183,41 +190,8 @@ impl Lower {
         for b in &p.vars {
             self.block(b);
         }
-        self.body(p);
+        self.body_with_io(p);
         self.emit(format!("END_{keyword}"), p.span);
-    }
-
-    pub(super) fn block(&mut self, b: &VarBlock) {
-        let keyword = match (b.kind, b.retain) {
-            (VarKind::Local, true) => "VAR_RETAIN",
-            (VarKind::Local, false) => "VAR",
-            (VarKind::Temp, _) => "VAR_TEMP",
-            (VarKind::Input, _) => "VAR_INPUT",
-            (VarKind::Output, _) => "VAR_OUTPUT",
-            (other, _) => return self.not_yet(b.span, other.keyword()),
-        };
-        self.emit(keyword, b.span);
-        for d in &b.decls {
-            if matches!(d.ty, super::ast::TypeRef::Array { .. }) {
-                self.not_yet(d.span, "an ARRAY variable");
-                continue;
-            }
-            let ty = super::print::type_text(&d.ty);
-            let at = d
-                .location
-                .as_ref()
-                .map(|a| format!(" AT {a}"))
-                .unwrap_or_default();
-            let init = d
-                .init
-                .as_ref()
-                .map(|i| format!(" := {}", super::print::init_text(i)))
-                .unwrap_or_default();
-            for n in &d.names {
-                self.emit(format!("  {}{at} : {ty}{init};", n.name), n.span);
-            }
-        }
-        self.emit("END_VAR", b.span);
     }
 
     pub(super) fn stmts(&mut self, stmts: &[Stmt]) {
@@ -274,7 +248,7 @@ impl Lower {
                 Some(end) => self.emit(format!("JMP {end}"), span),
                 None => self.errors.push(at(span, StErrorKind::ExitOutsideLoop)),
             },
-            StmtKind::Return => self.emit("RET", span),
+            StmtKind::Return => self.return_stmt(span),
             StmtKind::Empty => {}
         }
     }
@@ -384,39 +358,6 @@ impl Lower {
         self.emit(format!("JMPC {end}"), span);
     }
 
-    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL.
-    fn block_call(&mut self, call: &super::ast::Call, span: Span) {
-        use super::ast::Arg;
-        let mut args = Vec::new();
-        for a in &call.args {
-            match a {
-                Arg::Input(name, e) => {
-                    let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
-                    let ty = ty.cloned().unwrap_or_default();
-                    match self.input(&ty, &name.name, e, false) {
-                        Some(t) => args.push(format!("{} := {t}", name.name)),
-                        None => self.not_yet(e.span, "this block's input as an expression"),
-                    }
-                }
-                Arg::Output {
-                    name,
-                    negated: false,
-                    target,
-                } if target.path.is_empty() => {
-                    args.push(format!("{} => {}", name.name, target.base.name))
-                }
-                Arg::Output { name, .. } => {
-                    self.not_yet(name.span, "a negated output or one to a member")
-                }
-                Arg::Positional(e) => self.not_yet(e.span, "a block's input by position"),
-            }
-        }
-        self.emit(
-            format!("CAL {}({})", call.callee.name, args.join(", ")),
-            span,
-        );
-    }
-
     /// Leaves `e`'s value as the current result, its own-function calls
     /// made first.
     pub(super) fn value(&mut self, e: &Expr) {
@@ -442,7 +383,7 @@ impl Lower {
                 self.expr(x);
                 self.emit("NOT", e.span);
             }
-            ExprKind::Binary(BinaryOp::Pow, ..) => self.not_yet(e.span, "`**`"),
+            ExprKind::Binary(BinaryOp::Pow, a, b) => self.power(a, b),
             ExprKind::Binary(op, a, b) => {
                 self.expr(a);
                 self.operand(il_op(*op), b);

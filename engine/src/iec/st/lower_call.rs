@@ -22,7 +22,7 @@ impl Lower {
         self.emit("VAR_OUTPUT", p.span);
         self.emit(format!("  {} : {ty};", p.name.name), p.name.span);
         self.emit("END_VAR", p.span);
-        self.body(p);
+        self.body_with_io(p);
         self.emit("END_FUNCTION_BLOCK", p.span);
     }
 
@@ -30,6 +30,21 @@ impl Lower {
     /// function calls need.
     pub(super) fn body(&mut self, p: &Pou) {
         let at = self.lines.len();
+        let hidden = self.body_alone(p);
+        if hidden.is_empty() {
+            return;
+        }
+        let mut block = vec![("VAR".to_string(), p.span)];
+        for (name, ty) in hidden {
+            block.push((format!("  {name} : {ty};"), p.span));
+        }
+        block.push(("END_VAR".to_string(), p.span));
+        self.lines.splice(at..at, block);
+    }
+
+    /// A POU's statements; the hidden instances (name, type) its
+    /// function calls need.
+    pub(super) fn body_alone(&mut self, p: &Pou) -> Vec<(String, String)> {
         self.hidden.clear();
         self.instances = p
             .vars
@@ -45,15 +60,20 @@ impl Lower {
             .flatten()
             .collect();
         self.stmts(&p.body);
-        if self.hidden.is_empty() {
-            return;
+        std::mem::take(&mut self.hidden)
+    }
+
+    /// `a ** b`: IL's EXPT of `a`, its power a variable or a literal (an
+    /// expression's type is not known to the lowering yet).
+    pub(super) fn power(&mut self, a: &Expr, b: &Expr) {
+        self.expr(a);
+        match self.simple(b) {
+            Some(t) => self.emit(format!("EXPT {t}"), b.span),
+            None => self.not_yet(
+                b.span,
+                "an expression as `**`'s power (assign it to a variable first)",
+            ),
         }
-        let mut block = vec![("VAR".to_string(), p.span)];
-        for (name, ty) in std::mem::take(&mut self.hidden) {
-            block.push((format!("  {name} : {ty};"), p.span));
-        }
-        block.push(("END_VAR".to_string(), p.span));
-        self.lines.splice(at..at, block);
     }
 
     /// An IL operand for `e`: [`simple`]'s, or a call already made.
@@ -68,7 +88,7 @@ impl Lower {
     fn fresh(&mut self, prefix: &str) -> String {
         let mut n = self.hidden.len() + 1;
         loop {
-            let name = format!("{prefix}{n}");
+            let name = format!("{}{prefix}{n}", self.tag);
             if self.taken.insert(name.to_ascii_uppercase()) {
                 return name;
             }
@@ -150,6 +170,10 @@ impl Lower {
                 }
             };
             let ty = call.callee.name.to_ascii_uppercase();
+            if let Some(pair) = self.in_out(&ty, &name, x) {
+                args.extend(pair);
+                continue;
+            }
             match self.input(&ty, &name, x, true) {
                 Some(t) => args.push(format!("{name} := {t}")),
                 None => return self.not_yet(x.span, "this function's input as an expression"),

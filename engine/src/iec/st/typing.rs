@@ -67,9 +67,33 @@ impl Checker {
             }
             ExprKind::Binary(op, a, b) => {
                 let (ta, tb) = (self.expr(scope, a), self.expr(scope, b));
+                if *op == BinaryOp::Pow {
+                    return self.power(&ta, &tb, (a.span, b.span));
+                }
                 self.binary(*op, &ta, &tb, b.span)
             }
         }
+    }
+
+    /// `a ** b`, IEC's EXPT: a REAL base (ANY_REAL), a power of any
+    /// number type, the base's type (an untyped integer base is taken as
+    /// a real literal).
+    fn power(&mut self, a: &Ty, b: &Ty, (sa, sb): (Span, Span)) -> Ty {
+        use Elementary::{Lreal, Real};
+        let base = match a {
+            Ty::Elem(Real | Lreal) | Ty::AnyReal | Ty::Unknown => a.clone(),
+            Ty::AnyInt => Ty::AnyReal,
+            _ => {
+                let want = "a REAL (EXPT's base: convert an integer, INT_TO_REAL)";
+                self.mismatch(sa, "`**`'s base", want, a);
+                return Ty::Unknown;
+            }
+        };
+        if !b.is_number() || *b == Ty::Elem(Elementary::Time) {
+            self.mismatch(sb, "`**`'s power", "a number", b);
+            return Ty::Unknown;
+        }
+        base
     }
 
     fn binary(&mut self, op: BinaryOp, a: &Ty, b: &Ty, span: Span) -> Ty {
@@ -118,38 +142,26 @@ impl Checker {
         for step in &v.path {
             ty = match step {
                 Selector::Index(ix) => self.index(scope, v, &ty, ix),
-                Selector::Member(m) => match self.decls.members(&ty) {
-                    Some(ms) => match ms.iter().find(|(n, _, _)| n.eq_ignore_ascii_case(&m.name)) {
+                Selector::Member(m) => {
+                    let members = self.decls.members(&ty);
+                    let found = members
+                        .as_ref()
+                        .and_then(|ms| ms.iter().find(|(n, ..)| n.eq_ignore_ascii_case(&m.name)));
+                    match found {
                         Some((_, t, out)) => {
                             // A block's output is its own to write.
                             read_only |= *out && matches!(ty, Ty::Block(_));
                             t.clone()
                         }
+                        // An unknown type was refused already.
+                        None if ty == Ty::Unknown => Ty::Unknown,
                         None => {
-                            let of = ty.describe();
-                            self.refuse(
-                                m.span,
-                                StErrorKind::NoMember {
-                                    member: m.name.clone(),
-                                    of,
-                                },
-                            );
+                            let (member, of) = (m.name.clone(), ty.describe());
+                            self.refuse(m.span, StErrorKind::NoMember { member, of });
                             Ty::Unknown
                         }
-                    },
-                    None if ty == Ty::Unknown => Ty::Unknown,
-                    None => {
-                        let of = ty.describe();
-                        self.refuse(
-                            m.span,
-                            StErrorKind::NoMember {
-                                member: m.name.clone(),
-                                of,
-                            },
-                        );
-                        Ty::Unknown
                     }
-                },
+                }
             };
         }
         (ty, read_only)

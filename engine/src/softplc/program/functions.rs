@@ -50,6 +50,10 @@ impl Program {
                 }
             }
             Function::Sel => self.select(flow, line, &placed, &mut args)?,
+            Function::Mux => self.mux(flow, line, &placed, &mut args)?,
+            Function::Abs | Function::Sqrt | Function::Trunc | Function::Expt => {
+                self.numeric(f, flow, &mut args)?
+            }
             Function::Convert { from, to } => {
                 if from == DataType::String || to == DataType::String {
                     return wrong(TypeWhy::StringConversion);
@@ -64,6 +68,65 @@ impl Program {
             }
         }
         Ok(Step::Func(f, args))
+    }
+
+    /// ABS (an integer or a REAL, which it leaves), SQRT (a REAL), TRUNC
+    /// (a REAL, leaving a DINT), EXPT (a REAL, to a REAL or integer
+    /// power, leaving a REAL); untyped literals taken as the function
+    /// needs. Another type: "this operation does not apply to INT".
+    fn numeric(
+        &mut self,
+        f: Function,
+        flow: &mut Flow,
+        args: &mut [super::Src],
+    ) -> Result<(), LoadError> {
+        if f != Function::Abs {
+            self.settle(flow, DataType::Real);
+        }
+        let t = need_cr(flow.cr)?;
+        let fits = match f {
+            Function::Abs => t.bits().is_some() || t == DataType::Real,
+            _ => t == DataType::Real,
+        };
+        if !fits {
+            return Err(LoadError::NotFor(t));
+        }
+        if let (Function::Expt, Some(power)) = (f, args.first_mut()) {
+            let p = self.type_of(power);
+            if p.bits().is_none() && p != DataType::Real {
+                return Err(LoadError::NotFor(p));
+            }
+        }
+        if f == Function::Trunc {
+            flow.flex.clear();
+            flow.cr = Some(DataType::Dint);
+        }
+        Ok(())
+    }
+
+    /// MUX: the current result (K) an integer, its inputs of one type
+    /// (untyped literals joined between them), which it leaves.
+    fn mux(
+        &mut self,
+        flow: &mut Flow,
+        line: &Line,
+        placed: &[(Option<usize>, &Operand)],
+        args: &mut [super::Src],
+    ) -> Result<(), LoadError> {
+        self.settle(flow, DataType::Dint);
+        let k = need_cr(flow.cr)?;
+        if k.bits().is_none() {
+            return Err(LoadError::NotFor(k));
+        }
+        let mut own = Flow::default();
+        let t = self.join(&mut own, line, placed, args)?;
+        flow.late.append(&mut own.late);
+        if let Some(other) = args.iter().map(|a| self.type_of(a)).find(|&a| a != t) {
+            return Err(LoadError::Mix(t, other));
+        }
+        flow.cr = Some(t);
+        flow.flex = own.flex;
+        Ok(())
     }
 
     /// SEL: the current result (G) a BOOL, its two values of one type

@@ -93,6 +93,16 @@ impl Declarations {
             .unwrap_or_else(|| name.to_string())
     }
 
+    /// POU `pou`'s renamings: each name as the file writes it (lower-case)
+    /// with the soft PLC's name for it.
+    pub fn renamings(&self, pou: &str) -> Vec<(String, String)> {
+        let m = self.renamed.get(&pou.to_ascii_lowercase());
+        m.into_iter()
+            .flatten()
+            .map(|(f, s)| (f.clone(), s.clone()))
+            .collect()
+    }
+
     /// `instance.pin` of POU `pou`, an output of a block instance read
     /// by name as the IL reads it (`TON0.ET`, `CTU0.CV`): its soft PLC
     /// name and type (`user`: the project's own blocks' interfaces).

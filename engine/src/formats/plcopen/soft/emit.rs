@@ -34,6 +34,8 @@ pub(super) struct Output {
     pub warnings: Vec<Located<ImportWarning>>,
     /// Each generated variable's type.
     pub(super) types: HashMap<String, DataType>,
+    /// Problems each at a line of its own (an EXECUTE block's ST).
+    pub(super) errors: Vec<Located<SoftError>>,
 }
 
 /// Emits one body.
@@ -166,7 +168,7 @@ impl Emitter<'_> {
                 let value = value.at(target.ty);
                 // Fed by a block whose EN is off: the variable keeps its
                 // value (target := SEL(EN, target, value)).
-                match self.guard(g, e) {
+                match super::infer::guard(g, e, self.index) {
                     Some(en) => {
                         self.emit(format!("LD {en}"), e.line);
                         self.emit(format!("SEL {}, {}", target.text, value.text), e.line);
@@ -182,23 +184,6 @@ impl Emitter<'_> {
             _ => {}
         }
         Ok(())
-    }
-
-    /// The EN of the block feeding output variable `e`, when it has one
-    /// wired (its `_n<id>_EN` copy).
-    fn guard(&self, g: &Graph, e: &Element) -> Option<String> {
-        let [s] = e.inputs.first()?.1.as_slice() else {
-            return None;
-        };
-        let from = &g.elements[*g.by_id.get(&s.from)?];
-        if !matches!(from.kind, Kind::Block { .. }) || s.pin.as_deref() == Some("ENO") {
-            return None;
-        }
-        let wired = from
-            .inputs
-            .iter()
-            .any(|(p, s)| p.eq_ignore_ascii_case("EN") && !s.is_empty());
-        wired.then(|| format!("_{}_n{}_EN", self.index, from.id))
     }
 
     /// A contact's or coil's variable: a BOOL. A name the file never
@@ -384,7 +369,7 @@ impl Emitter<'_> {
                 let pin = s
                     .pin
                     .clone()
-                    .or_else(|| from.outputs.iter().find(|p| *p != "ENO").cloned())
+                    .or_else(|| super::infer::unnamed_output(from))
                     .unwrap_or_else(|| "OUT".into());
                 let user = self.user.get(&type_name.to_ascii_uppercase());
                 super::formal::check_output(from, type_name, &pin, user)?;
@@ -408,6 +393,9 @@ impl Emitter<'_> {
 
     fn block(&mut self, g: &Graph, e: &Element, type_name: &str, instance: &str) -> Result<()> {
         let upper = type_name.to_ascii_uppercase();
+        if upper == "EXECUTE" {
+            return self.execute(g, e);
+        }
         if is_block_type(&upper) {
             return self.function_block(g, e, &upper, instance);
         }
@@ -430,7 +418,7 @@ impl Emitter<'_> {
     }
 
     /// Jumps over what follows while EN is off; gives EN.
-    fn enable(&mut self, g: &Graph, e: &Element) -> Result<Option<Operand>> {
+    pub(super) fn enable(&mut self, g: &Graph, e: &Element) -> Result<Option<Operand>> {
         let en = self.input(g, e, "EN")?;
         let wired = e
             .inputs
@@ -448,7 +436,7 @@ impl Emitter<'_> {
     }
 
     /// After the block: the label EN jumps to, and ENO.
-    fn enabled(&mut self, e: &Element, en: Option<Operand>) {
+    pub(super) fn enabled(&mut self, e: &Element, en: Option<Operand>) {
         let eno = e.outputs.iter().any(|p| p.eq_ignore_ascii_case("ENO"));
         match en {
             Some(en) => {

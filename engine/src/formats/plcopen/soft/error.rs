@@ -60,6 +60,9 @@ pub enum SoftError {
     /// An instance of the project's own function block that no variable
     /// declares (instance, type).
     UndeclaredInstance(String, String),
+    /// A Structured Text body's or EXECUTE block's problem: its column
+    /// in the ST line, and why.
+    St(usize, String),
 }
 
 impl fmt::Display for SoftError {
@@ -102,11 +105,11 @@ impl fmt::Display for SoftError {
             SoftError::Function(ty, why) => write!(f, "{ty}: {why}"),
             SoftError::ProjectBlock(name, how) => write!(
                 f,
-                "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD or written in IL"
+                "{name} is the project's own {how}: the soft PLC runs the project's function blocks drawn in LD or FBD or written in IL or ST"
             ),
             SoftError::Block(name) if name.eq_ignore_ascii_case("EXECUTE") => write!(
                 f,
-                "{name} is CODESYS's block of in-line ST: the soft PLC does not run ST"
+                "{name} is CODESYS's block of in-line ST, and this one holds none (no STCode)"
             ),
             SoftError::Block(name) => write!(
                 f,
@@ -115,7 +118,7 @@ impl fmt::Display for SoftError {
             SoftError::NotDrawn(pous) => {
                 write!(
                     f,
-                    "no program the tasks run is drawn in LD or FBD or written in IL: {pous}"
+                    "no program the tasks run is drawn in LD or FBD or written in IL or ST: {pous}"
                 )
             }
             SoftError::Load(why) => why.fmt(f),
@@ -134,6 +137,7 @@ impl fmt::Display for SoftError {
                 f.write_str(&crate::formats::plcopen::vendor::logic_refused(why))
             }
             SoftError::Follows => f.write_str("fed by an element refused above"),
+            SoftError::St(column, why) => write!(f, "ST, column {column}: {why}"),
             SoftError::UndeclaredInstance(name, ty) => write!(
                 f,
                 "{name} is not declared: declare it as a {ty} instance (`{name} : {ty};`) among the POU's variables"

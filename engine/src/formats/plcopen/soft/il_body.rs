@@ -47,15 +47,29 @@ pub(super) fn write(
     source: &str,
     place: Place,
 ) -> Vec<Located<SoftError>> {
-    let mut errors = Vec::new();
-    let name = pou.attr("name").unwrap_or_default();
     let text = text_node.text.as_str();
     let first = first_line(text, text_node.line, source);
+    let lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (l.to_string(), first + i));
+    write_lines(pou.attr("name").unwrap_or_default(), lines.collect(), place)
+}
+
+/// Writes IL `lines` of POU `name`'s body, each with its file line, as
+/// [`write`] does.
+pub(super) fn write_lines(
+    name: &str,
+    lines: Vec<(String, usize)>,
+    place: Place,
+) -> Vec<Located<SoftError>> {
+    let mut errors = Vec::new();
+    let first = lines.first().map_or(0, |&(_, at)| at);
     // A program's labels, and the end its RETs jump to, unique in the
     // programs' section.
     let mut renamed_labels = HashMap::new();
     let end = place.labels.map(|used| {
-        for label in text.lines().filter_map(label_of) {
+        for label in lines.iter().filter_map(|(l, _)| label_of(l)) {
             renamed_labels.insert(label.to_ascii_uppercase(), unique(label, name, used));
         }
         unique(&format!("{name}_end"), name, used)
@@ -70,8 +84,8 @@ pub(super) fn write(
     let mut comment = false;
     let mut call: Option<(String, usize, i64)> = None;
     let mut last = first;
-    for (i, raw) in text.lines().enumerate() {
-        let at = first + i;
+    for (raw, at) in &lines {
+        let at = *at;
         last = at;
         let (line, code) = words.rewrite(raw, &mut comment);
         if let Some(word) = section_word(&code) {
@@ -141,7 +155,7 @@ fn unique(label: &str, pou: &str, used: &mut HashSet<String>) -> String {
 
 /// The file line of the text's first line: the text is trimmed, so the
 /// line of the file from `from` on that holds its first line.
-fn first_line(text: &str, from: usize, source: &str) -> usize {
+pub(super) fn first_line(text: &str, from: usize, source: &str) -> usize {
     let Some(head) = text.lines().next().map(str::trim).filter(|h| !h.is_empty()) else {
         return from;
     };

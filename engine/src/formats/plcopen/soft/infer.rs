@@ -30,6 +30,30 @@ pub(super) fn output_type(type_name: &str, pin: &str) -> Option<DataType> {
         .map(|(_, t)| *t)
 }
 
+/// The EN of the block feeding output variable `e`, when it has one
+/// wired (its `_n<id>_EN` copy).
+pub(super) fn guard(g: &Graph, e: &Element, index: usize) -> Option<String> {
+    let [s] = e.inputs.first()?.1.as_slice() else {
+        return None;
+    };
+    let from = &g.elements[*g.by_id.get(&s.from)?];
+    if !matches!(from.kind, Kind::Block { .. }) || s.pin.as_deref() == Some("ENO") {
+        return None;
+    }
+    let wired = from
+        .inputs
+        .iter()
+        .any(|(p, s)| p.eq_ignore_ascii_case("EN") && !s.is_empty());
+    wired.then(|| format!("_{}_n{}_EN", index, from.id))
+}
+
+/// The output a wire from block `e` that names no pin reads: the first
+/// that is not ENO, or ENO when it has no other (CODESYS's EXECUTE).
+pub(super) fn unnamed_output(e: &Element) -> Option<String> {
+    let mut pins = e.outputs.iter();
+    pins.find(|p| *p != "ENO").or(e.outputs.first()).cloned()
+}
+
 /// A function's output pin as the file names it (`OUT` when it names
 /// none).
 pub(super) fn function_output(e: &Element) -> String {

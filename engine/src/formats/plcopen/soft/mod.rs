@@ -12,9 +12,11 @@
 mod declare;
 mod emit;
 pub mod error;
+mod execute;
 mod formal;
 mod il_body;
 mod infer;
+mod st_body;
 
 use super::dom::Node;
 use super::graph::Graph;
@@ -86,6 +88,16 @@ pub(in crate::formats::plcopen) fn il_of(
             errors.extend(il_body::write(p, il, text, place));
             continue;
         }
+        if let Some(st) = st_body::st_body(p) {
+            drawn += 1;
+            let place = il_body::Place {
+                decl: &declarations,
+                out: &mut out,
+                labels: Some(&mut labels),
+            };
+            errors.extend(st_body::write(p, st, text, place, &user));
+            continue;
+        }
         if drawn_body(p).is_none() {
             let what = format!("{} in {}", p.attr("name").unwrap_or_default(), language(p));
             errors.push(Located::new(p.line, SoftError::NotDrawn(what)));
@@ -141,6 +153,13 @@ fn block_sections<'a>(
                 labels: None,
             };
             errors.extend(il_body::write(p, il, source, place));
+        } else if let Some(st) = st_body::st_body(p) {
+            let place = il_body::Place {
+                decl: &d,
+                out: &mut out,
+                labels: None,
+            };
+            errors.extend(st_body::write(p, st, source, place, user));
         } else {
             let em = emitter(&mut d, &mut out, p, index, own, user);
             errors.extend(emit_body(em, p));
@@ -175,9 +194,9 @@ fn own_types(pous: &[&Node]) -> declare::OwnTypes {
     }
 }
 
-/// Whether the soft PLC runs `pou`'s body: drawn (LD, FBD) or IL.
+/// Whether the soft PLC runs `pou`'s body: drawn (LD, FBD), IL or ST.
 fn runs(pou: &Node) -> bool {
-    drawn_body(pou).is_some() || il_body::il_body(pou).is_some()
+    drawn_body(pou).is_some() || il_body::il_body(pou).is_some() || st_body::st_body(pou).is_some()
 }
 
 /// `pou`'s drawn body emitted by `em`; its problems.
@@ -189,7 +208,11 @@ fn emit_body(mut em: emit::Emitter, pou: &Node) -> Vec<Located<SoftError>> {
     match runnable(&g) {
         Ok(warnings) => {
             em.out.warnings.extend(warnings);
-            em.body(&g).err().unwrap_or_default()
+            let mut errors = em.body(&g).err().unwrap_or_default();
+            // An EXECUTE block's ST problems, each at its own line.
+            errors.append(&mut em.out.errors);
+            errors.sort_by_key(|e| e.line);
+            errors
         }
         Err(e) => e,
     }

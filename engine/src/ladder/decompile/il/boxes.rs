@@ -234,6 +234,17 @@ impl Walk<'_> {
         let arg = |k: usize| op.args.get(k).map(Operand::to_string);
         let pins: Vec<(&str, String)> = match f {
             Function::Neg | Function::Move | Function::Convert { .. } => vec![("IN", a)],
+            Function::Abs | Function::Sqrt | Function::Trunc => vec![("IN", a)],
+            Function::Expt => vec![("IN1", a), ("IN2", arg(0)?)],
+            // MUX's inputs are as many as the line gives.
+            Function::Mux => {
+                let mut pins = vec![("K", a)];
+                let names = ["IN0", "IN1", "IN2", "IN3", "IN4", "IN5", "IN6", "IN7"];
+                for (k, name) in names.iter().enumerate().take(op.args.len()) {
+                    pins.push((name, arg(k)?));
+                }
+                pins
+            }
             Function::Shl | Function::Shr | Function::Rol | Function::Ror => {
                 vec![("IN", a), ("N", arg(0)?)]
             }

@@ -1,0 +1,173 @@
+//! A POU's variables and a block's call, lowered, with VAR_IN_OUT: IL
+//! has no reference, so an in-out parameter is **copied in and out**: the
+//! block takes it as an input and gives it back as a hidden output
+//! (`st_io_x`), written when its body ends (a `RETURN` too), and each call
+//! passes the variable both ways (`CAL b(x := v, st_io_x => v)`). What
+//! the body computes is what IEC's reference gives, unless the block
+//! also reaches the same variable another way (a global) within the call.
+
+use super::ast::{Arg, Expr, ExprKind, Item, Pou, PouKind, Source, Span, VarBlock, VarKind};
+use super::error::StErrorKind;
+use super::lower::{simple, Lower};
+use super::types::at;
+
+/// The hidden output an in-out parameter `pin` is copied out by.
+pub(super) fn io_pin(pin: &str) -> String {
+    format!("st_io_{pin}")
+}
+
+fn in_out_names(p: &Pou) -> Vec<String> {
+    p.vars
+        .iter()
+        .filter(|b| b.kind == VarKind::InOut)
+        .flat_map(|b| &b.decls)
+        .flat_map(|d| d.names.iter().map(|n| n.name.clone()))
+        .collect()
+}
+
+impl Lower {
+    /// Learns every own POU's VAR_IN_OUT parameters (`inouts`).
+    pub(super) fn know_in_outs(&mut self, source: &Source) {
+        for item in &source.items {
+            let Item::Pou(p) = item else { continue };
+            for n in in_out_names(p) {
+                let key = (p.name.name.to_ascii_uppercase(), n.to_ascii_uppercase());
+                self.inouts.insert(key);
+            }
+        }
+    }
+
+    /// A POU's variable block as the IL's.
+    pub(super) fn block(&mut self, b: &VarBlock) {
+        let keyword = match (b.kind, b.retain) {
+            (VarKind::Local, true) => "VAR_RETAIN",
+            (VarKind::Local, false) => "VAR",
+            (VarKind::Temp, _) => "VAR_TEMP",
+            (VarKind::Input, _) => "VAR_INPUT",
+            (VarKind::Output, _) => "VAR_OUTPUT",
+            // Copied in as an input, out as a hidden output (`io_pin`).
+            (VarKind::InOut, _) => "VAR_INPUT",
+            (other, _) => return self.not_yet(b.span, other.keyword()),
+        };
+        self.emit(keyword, b.span);
+        for d in &b.decls {
+            if matches!(d.ty, super::ast::TypeRef::Array { .. }) {
+                self.not_yet(d.span, "an ARRAY variable");
+                continue;
+            }
+            let ty = super::print::type_text(&d.ty);
+            let at = d
+                .location
+                .as_ref()
+                .map(|a| format!(" AT {a}"))
+                .unwrap_or_default();
+            let init = d
+                .init
+                .as_ref()
+                .map(|i| format!(" := {}", super::print::init_text(i)))
+                .unwrap_or_default();
+            for n in &d.names {
+                self.emit(format!("  {}{at} : {ty}{init};", n.name), n.span);
+            }
+        }
+        self.emit("END_VAR", b.span);
+        if b.kind == VarKind::InOut {
+            self.emit("VAR_OUTPUT", b.span);
+            for d in &b.decls {
+                let ty = super::print::type_text(&d.ty);
+                for n in &d.names {
+                    self.emit(format!("  {} : {ty};", io_pin(&n.name)), n.span);
+                }
+            }
+            self.emit("END_VAR", b.span);
+        }
+    }
+
+    /// A POU's body, then its in-out parameters copied out (where its
+    /// `RETURN`s go too).
+    pub(super) fn body_with_io(&mut self, p: &Pou) {
+        let names = in_out_names(p);
+        if names.is_empty() {
+            return self.body(p);
+        }
+        if p.kind == PouKind::Program {
+            // No caller gives a program its variable.
+            let at = p.vars.iter().find(|b| b.kind == VarKind::InOut);
+            self.not_yet(at.map_or(p.span, |b| b.span), "VAR_IN_OUT in a PROGRAM");
+        }
+        let end = self.label();
+        self.ret = Some(end.clone());
+        self.body(p);
+        self.ret = None;
+        self.place(&end, p.span);
+        for n in names {
+            self.emit(format!("LD {n}"), p.span);
+            self.emit(format!("ST {}", io_pin(&n)), p.span);
+        }
+    }
+
+    /// `RETURN`: the end of the scan or call, or the copy-out first.
+    pub(super) fn return_stmt(&mut self, span: Span) {
+        match self.ret.clone() {
+            Some(end) => self.emit(format!("JMP {end}"), span),
+            None => self.emit("RET", span),
+        }
+    }
+
+    /// The arguments for `pin := e` when `pin` is an in-out parameter of
+    /// own POU `callee` (upper-case): the variable both ways. `None` when
+    /// it is not one.
+    pub(super) fn in_out(&mut self, callee: &str, pin: &str, e: &Expr) -> Option<Vec<String>> {
+        let key = (callee.to_ascii_uppercase(), pin.to_ascii_uppercase());
+        if !self.inouts.contains(&key) {
+            return None;
+        }
+        match (&e.kind, simple(e)) {
+            (ExprKind::Variable(_), Some(v)) => Some(vec![
+                format!("{pin} := {v}"),
+                format!("{} => {v}", io_pin(pin)),
+            ]),
+            _ => {
+                let kind = StErrorKind::InOutArgument(pin.to_string());
+                self.errors.push(at(e.span, kind));
+                Some(Vec::new())
+            }
+        }
+    }
+
+    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL.
+    pub(super) fn block_call(&mut self, call: &super::ast::Call, span: Span) {
+        let mut args = Vec::new();
+        for a in &call.args {
+            match a {
+                Arg::Input(name, e) => {
+                    let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
+                    let ty = ty.cloned().unwrap_or_default();
+                    if let Some(pair) = self.in_out(&ty, &name.name, e) {
+                        args.extend(pair);
+                        continue;
+                    }
+                    match self.input(&ty, &name.name, e, false) {
+                        Some(t) => args.push(format!("{} := {t}", name.name)),
+                        None => self.not_yet(e.span, "this block's input as an expression"),
+                    }
+                }
+                Arg::Output {
+                    name,
+                    negated: false,
+                    target,
+                } if target.path.is_empty() => {
+                    args.push(format!("{} => {}", name.name, target.base.name))
+                }
+                Arg::Output { name, .. } => {
+                    self.not_yet(name.span, "a negated output or one to a member")
+                }
+                Arg::Positional(e) => self.not_yet(e.span, "a block's input by position"),
+            }
+        }
+        self.emit(
+            format!("CAL {}({})", call.callee.name, args.join(", ")),
+            span,
+        );
+    }
+}
