@@ -1,0 +1,296 @@
+//! The plant dock (issue #52, docs/plants.md "In the page"): a simulated
+//! machine for the ladder to control, coupled to the running machine.
+//!
+//! Only this thin shell is in the first screen: the dock's tab, the
+//! plant select, the [`Rig`] interface the frame loop calls and what it
+//! publishes ([`Shown`]). The plants' engine, the coupling and the
+//! drawing are a part (`plants`) fetched when a plant is first chosen:
+//! [`plant_kit`] hands back function pointers ([`Kit`]) and the rig it
+//! builds is a boxed trait object made inside the part, so that nothing
+//! the first screen reaches names a plant's code.
+
+mod draw;
+mod rig;
+mod wiring;
+
+use engine::formats::project::PlantSetup;
+use engine::plc::Plc;
+use engine::SimTime;
+use leptos::prelude::*;
+
+use crate::editor::LadderCtx;
+use crate::parts::{Draw, PartMissing};
+use crate::state::Ctx;
+
+/// The plants the select offers, in the engine's order.
+pub const PLANTS: [&str; 6] = [
+    "conveyor",
+    "tank",
+    "traffic",
+    "door",
+    "sorter",
+    "room-light",
+];
+
+/// A plant coupled to a machine, as the frame loop drives it: the
+/// machine runs to each plant step, the plant moves, its sensors are
+/// written to the machine's inputs. Built inside the `plants` part.
+pub trait Rig {
+    /// The setup it was built from (a new setup builds a new rig).
+    fn setup(&self) -> &PlantSetup;
+    /// Advances the machine and the plant by `dt` of simulated time.
+    fn advance(&mut self, machine: &mut dyn Plc, dt: SimTime);
+    /// What the dock draws, now.
+    fn show(&self, machine: &dyn Plc) -> Shown;
+    /// Unwires: the inputs the plant drove are released.
+    fn detach(&mut self, machine: &mut dyn Plc);
+}
+
+/// Where a machine's plant is kept: none, or the rig coupled to it.
+pub type RigSlot = Option<Box<dyn Rig>>;
+
+/// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
+pub type Refusals = Vec<(usize, String)>;
+
+/// Couples a setup's plant to a machine, or refuses.
+pub type Build = fn(&PlantSetup, &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals>;
+
+/// One signal as the dock draws it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SignalShown {
+    /// Its name (`infeed`).
+    pub name: &'static str,
+    /// An actuator (the PLC drives it); else a sensor.
+    pub output: bool,
+    /// An analog signal (0..=100 000 is 0–100 %).
+    pub analog: bool,
+    /// Its value: what the PLC reads, or what acts on the plant.
+    pub value: i64,
+    /// The device it is wired to, if any.
+    pub device: Option<String>,
+}
+
+/// What the plant dock draws, published by the rig once per frame.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Shown {
+    /// The plant's engine name.
+    pub plant: &'static str,
+    /// Whether the machine runs (the plant stands still when not).
+    pub running: bool,
+    /// Its signals.
+    pub signals: Vec<SignalShown>,
+    /// Its quantities, by name.
+    pub quantities: Vec<(&'static str, i64)>,
+    /// The latest alarms: the machine's time in ms, the message.
+    pub alarms: Vec<(i64, String)>,
+    /// The plant's own figure: the conveyor's belt and part lengths and
+    /// its parts' leading edges (µm); the tank's level (thousandths of
+    /// a percent); empty for the others.
+    pub figure: Vec<i64>,
+}
+
+/// What the `plants` part hands back: plain function pointers into it.
+#[derive(Clone, Copy)]
+pub struct Kit {
+    /// Couples a plant to the machine, or refuses (each refusal at its
+    /// wiring row, 1-based; 0: not a row's).
+    pub build: Build,
+    /// The dock's drawing (the figure, signals, alarms, wiring).
+    pub draw: Draw,
+    /// The machine's default wiring for a plant: `SIGNAL`, `DEVICE` rows.
+    pub default_wiring: fn(&str, &dyn Plc) -> Vec<[String; 2]>,
+}
+
+/// The plant dock's state, page-wide (one workspace shows at a time).
+#[derive(Clone, Copy)]
+pub struct Plants {
+    /// The part's functions, once fetched.
+    pub kit: RwSignal<Option<Kit>>,
+    /// The part could not be fetched.
+    pub missing: RwSignal<bool>,
+    /// What the shown workspace's rig last published.
+    pub shown: RwSignal<Option<Shown>>,
+    /// Refusals of the chosen setup (wiring row, message).
+    pub refusals: RwSignal<Refusals>,
+}
+
+impl Plants {
+    /// No plant yet.
+    pub fn new() -> Plants {
+        Plants {
+            kit: RwSignal::new(None),
+            missing: RwSignal::new(false),
+            shown: RwSignal::new(None),
+            refusals: RwSignal::new(Vec::new()),
+        }
+    }
+
+    /// The dock's state from the context.
+    pub fn get() -> Plants {
+        expect_context::<Plants>()
+    }
+
+    /// After a frame of `ladder`'s machine: publishes what its rig shows
+    /// (only when it changed, so a still plant redraws nothing).
+    pub fn publish(&self, ladder: LadderCtx) {
+        let mut out = None;
+        ladder.with_rig(|machine, rig| {
+            if let Some(rig) = rig {
+                out = Some(rig.show(machine));
+            }
+        });
+        if let Some(shown) = out {
+            if self.shown.with_untracked(|s| s.as_ref() != Some(&shown)) {
+                self.shown.set(Some(shown));
+            }
+        }
+    }
+
+    /// Couples `setup`'s plant to `ladder`'s machine (none: uncouples),
+    /// fetching the part first; the rig in place is kept when it was
+    /// built from the same setup.
+    fn couple(&self, ladder: LadderCtx, setup: Option<PlantSetup>) {
+        let Some(setup) = setup else {
+            ladder.with_rig(|machine, rig| {
+                if let Some(mut old) = rig.take() {
+                    old.detach(machine);
+                }
+            });
+            self.shown.set(None);
+            self.refusals.set(Vec::new());
+            return;
+        };
+        let Some(kit) = self.kit.get_untracked() else {
+            self.fetch();
+            return;
+        };
+        let mut refused = Vec::new();
+        ladder.with_rig(|machine, rig| {
+            if rig.as_ref().is_some_and(|r| r.setup() == &setup) {
+                return;
+            }
+            if let Some(mut old) = rig.take() {
+                old.detach(machine);
+            }
+            match (kit.build)(&setup, machine) {
+                Ok(new) => *rig = Some(new),
+                Err(e) => refused = e,
+            }
+        });
+        self.refusals.set(refused);
+        self.publish(ladder);
+    }
+
+    /// Fetches the part (once; again after a failure).
+    fn fetch(&self) {
+        let plants = *self;
+        plants.missing.set(false);
+        leptos::task::spawn_local(async move {
+            match plant_kit().await {
+                Ok(kit) => {
+                    let _ = plants.kit.try_set(Some(kit));
+                }
+                Err(PartMissing) => {
+                    let _ = plants.missing.try_set(true);
+                }
+            }
+        });
+    }
+}
+
+impl Default for Plants {
+    fn default() -> Self {
+        Plants::new()
+    }
+}
+
+crate::parts::part_fn!(
+    plants,
+    /// The plants' engine, coupling and drawing: a part of its own
+    /// (issue #52), fetched when a plant is first chosen.
+    fn plant_kit() -> Result<Kit, PartMissing> {
+        Ok(Kit {
+            build: rig::build,
+            draw: draw::draw,
+            default_wiring: wiring::default_rows,
+        })
+    }
+);
+
+/// The plant dock: the select, then the plant as the part draws it.
+#[component]
+pub fn PlantDock(ladder: LadderCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let plants = Plants::get();
+    let setup = ladder.cases.plant;
+    // Couples the plant whenever the setup changes or the part arrives
+    // (and when this workspace is shown again).
+    Effect::new(move || {
+        let chosen = setup.get();
+        plants.kit.track();
+        plants.couple(ladder, chosen);
+    });
+    let t = move || ctx.lang.get().plant();
+    let chosen = move || setup.with(|s| s.as_ref().map(|s| s.name.clone()).unwrap_or_default());
+    let choose = move |name: String| {
+        let next = PLANTS.contains(&name.as_str()).then(|| PlantSetup {
+            name,
+            ..PlantSetup::default()
+        });
+        setup.set(next);
+        ladder.save();
+    };
+    let options = move || {
+        PLANTS
+            .iter()
+            .map(|&name| {
+                view! {
+                    <option value=name selected=move || chosen() == name>
+                        {move || t().plant_name(name)}
+                    </option>
+                }
+            })
+            .collect_view()
+    };
+    let body = move || {
+        if setup.with(Option::is_none) {
+            return view! { <p class="plant-idle">{move || t().idle}</p> }.into_any();
+        }
+        if plants.missing.get() {
+            let texts = ctx.lang.get().parts();
+            return view! {
+                <div class="part-state" role="alert" data-testid="plant-part-missing">
+                    <p>{texts.missing}</p>
+                    <button type="button" data-testid="plant-part-retry"
+                        on:click=move |_| plants.fetch()>{texts.retry}</button>
+                </div>
+            }
+            .into_any();
+        }
+        match plants.kit.get() {
+            Some(kit) => (kit.draw)(),
+            None => view! {
+                <p class="part-state" role="status" data-testid="plant-part-loading">
+                    {move || ctx.lang.get().parts().loading}
+                </p>
+            }
+            .into_any(),
+        }
+    };
+    view! {
+        <section class="plant-dock" data-testid="plant">
+            <label class="plant-choose">
+                <span>{move || t().choose}</span>
+                <select data-testid="plant-select"
+                    on:change=move |e| choose(event_target_value(&e))>
+                    <option value="" selected=move || chosen().is_empty()>{move || t().none}</option>
+                    {options}
+                </select>
+            </label>
+            {body}
+        </section>
+    }
+}
+
+#[cfg(test)]
+mod tests;
