@@ -7,7 +7,7 @@ use engine::plc::Plc;
 use engine::record::Recorded;
 use engine::SimTime;
 
-use crate::plant::RigSlot;
+use crate::rig::RigSlot;
 
 /// How fast simulated time runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -10,7 +10,7 @@ use engine::record::{Recorded, TimeTravel};
 use leptos::prelude::*;
 
 use super::LadderCtx;
-use crate::plant::RigSlot;
+use crate::rig::RigSlot;
 use crate::sim::{Pace, Simulator};
 
 /// One machine as the editor and the frame loop drive it.

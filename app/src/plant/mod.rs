@@ -15,8 +15,9 @@ mod wiring;
 
 use engine::formats::project::PlantSetup;
 use engine::plc::Plc;
-use engine::SimTime;
 use leptos::prelude::*;
+
+pub use crate::rig::{Build, Refusals, Rig, RigSlot, Shown, SignalShown};
 
 use crate::editor::LadderCtx;
 use crate::parts::{Draw, PartMissing};
@@ -31,63 +32,6 @@ pub const PLANTS: [&str; 6] = [
     "sorter",
     "room-light",
 ];
-
-/// A plant coupled to a machine, as the frame loop drives it: the
-/// machine runs to each plant step, the plant moves, its sensors are
-/// written to the machine's inputs. Built inside the `plants` part.
-pub trait Rig {
-    /// The setup it was built from (a new setup builds a new rig).
-    fn setup(&self) -> &PlantSetup;
-    /// Advances the machine and the plant by `dt` of simulated time.
-    fn advance(&mut self, machine: &mut dyn Plc, dt: SimTime);
-    /// What the dock draws, now.
-    fn show(&self, machine: &dyn Plc) -> Shown;
-    /// Unwires: the inputs the plant drove are released.
-    fn detach(&mut self, machine: &mut dyn Plc);
-}
-
-/// Where a machine's plant is kept: none, or the rig coupled to it.
-pub type RigSlot = Option<Box<dyn Rig>>;
-
-/// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
-pub type Refusals = Vec<(usize, String)>;
-
-/// Couples a setup's plant to a machine, or refuses.
-pub type Build = fn(&PlantSetup, &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals>;
-
-/// One signal as the dock draws it.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SignalShown {
-    /// Its name (`infeed`).
-    pub name: &'static str,
-    /// An actuator (the PLC drives it); else a sensor.
-    pub output: bool,
-    /// An analog signal (0..=100 000 is 0–100 %).
-    pub analog: bool,
-    /// Its value: what the PLC reads, or what acts on the plant.
-    pub value: i64,
-    /// The device it is wired to, if any.
-    pub device: Option<String>,
-}
-
-/// What the plant dock draws, published by the rig once per frame.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Shown {
-    /// The plant's engine name.
-    pub plant: &'static str,
-    /// Whether the machine runs (the plant stands still when not).
-    pub running: bool,
-    /// Its signals.
-    pub signals: Vec<SignalShown>,
-    /// Its quantities, by name.
-    pub quantities: Vec<(&'static str, i64)>,
-    /// The latest alarms: the machine's time in ms, the message.
-    pub alarms: Vec<(i64, String)>,
-    /// The plant's own figure: the conveyor's belt and part lengths and
-    /// its parts' leading edges (µm); the tank's level (thousandths of
-    /// a percent); empty for the others.
-    pub figure: Vec<i64>,
-}
 
 /// What the `plants` part hands back: plain function pointers into it.
 #[derive(Clone, Copy)]

@@ -48,7 +48,10 @@ fn the_books_ladder_runs_the_belt_and_parts_are_delivered() {
     assert!(quantity(&shown, "delivered") >= 8, "{shown:?}");
     // The sensors reached the machine's inputs through the default wiring.
     let devices: Vec<_> = shown.signals.iter().map(|s| s.device.clone()).collect();
-    assert_eq!(devices, [Some("X00".into()), Some("X01".into()), Some("Y00".into())]);
+    assert_eq!(
+        devices,
+        [Some("X00".into()), Some("X01".into()), Some("Y00".into())]
+    );
     assert!(shown.alarms.is_empty(), "{:?}", shown.alarms);
 }
 
@@ -65,7 +68,10 @@ fn a_ladder_that_keeps_fill_on_raises_the_overflow_alarm_with_its_time() {
     }
     let shown = rig.show(&m);
     let (at, message) = shown.alarms.first().expect("an overflow alarm");
-    assert!(message.contains("overflow") || message.contains("full"), "{message}");
+    assert!(
+        message.contains("overflow") || message.contains("full"),
+        "{message}"
+    );
     // 50 % at the start, +8 %/s in, -2 %/s drawn: full at about 8.3 s.
     assert!((8_000..9_000).contains(at), "{at}");
     assert_eq!(shown.figure.first(), Some(&100_000));
@@ -90,7 +96,10 @@ fn the_default_rows_name_every_signal_and_leave_the_analog_one_open() {
     let m = minasec(CONVEYOR);
     let rows = super::wiring::default_rows("tank", &m);
     let rows: Vec<String> = rows.iter().map(|[s, d]| format!("{s},{d}")).collect();
-    assert_eq!(rows, ["low,X00", "high,X01", "level,", "fill,Y00", "drain,Y01"]);
+    assert_eq!(
+        rows,
+        ["low,X00", "high,X01", "level,", "fill,Y00", "drain,Y01"]
+    );
 }
 
 #[test]

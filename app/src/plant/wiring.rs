@@ -64,57 +64,10 @@ pub(super) fn WiringTable(ladder: LadderCtx) -> impl IntoView {
         });
         ladder.save();
     };
-    let refusal = move |row: usize| {
-        plants.refusals.with(|r| {
-            r.iter()
-                .filter(|(at, _)| *at == row + 1)
-                .map(|(_, m)| m.clone())
-                .collect::<Vec<_>>()
-                .join("; ")
-        })
-    };
-    let direction = move |name: &str| {
-        let plant = setup.with(|s| s.as_ref().map(|s| s.name.clone()));
-        let out = ALL
-            .iter()
-            .find(|p| Some(p.name) == plant.as_deref())
-            .and_then(|p| p.signals.iter().find(|s| s.name == name))
-            .is_some_and(|s| s.direction == Direction::Out);
-        if out {
-            t().direction_out
-        } else {
-            t().direction_in
-        }
-    };
     let body = move || {
         let n = rows.with(Vec::len);
         (0..n)
-            .map(|i| {
-                let cell = move |c: usize| {
-                    rows.with(|r| r.get(i).map(|r| r[c].clone()).unwrap_or_default())
-                };
-                let signal = cell(0);
-                let kind = direction(&signal);
-                let refused = move || !refusal(i).is_empty();
-                view! {
-                    <tr data-testid=format!("wiring-row-{signal}") class:refused=refused>
-                        <th scope="row">{signal.clone()}<small>{" "}{kind}</small></th>
-                        <td>
-                            <input type="text" data-testid=format!("wiring-device-{signal}")
-                                aria-label=format!("{signal}: {}", t().device)
-                                aria-invalid=move || refused().to_string()
-                                prop:value=move || cell(1)
-                                on:change=move |e| {
-                                    let v = event_target_value(&e);
-                                    rows.update(|r| if let Some(r) = r.get_mut(i) { r[1] = v; });
-                                } />
-                            <span class="wiring-refusal" role="alert"
-                                data-testid=format!("wiring-refusal-{signal}")
-                                hidden=move || !refused()>{move || refusal(i)}</span>
-                        </td>
-                    </tr>
-                }
-            })
+            .map(|i| view! { <WiringRow setup rows i /> })
             .collect_view()
     };
     view! {
@@ -136,5 +89,71 @@ pub(super) fn WiringTable(ladder: LadderCtx) -> impl IntoView {
                     on:click=move |_| apply(None)>{move || t().default_wiring}</button>
             </div>
         </section>
+    }
+}
+
+/// The refusals said at wiring row `row` (0-based), joined.
+fn refusal_at(plants: Plants, row: usize) -> String {
+    plants.refusals.with(|r| {
+        r.iter()
+            .filter(|(at, _)| *at == row + 1)
+            .map(|(_, m)| m.clone())
+            .collect::<Vec<_>>()
+            .join("; ")
+    })
+}
+
+/// Whether `name` is an actuator of plant `plant`.
+fn is_output(plant: Option<&str>, name: &str) -> bool {
+    ALL.iter()
+        .find(|p| Some(p.name) == plant)
+        .and_then(|p| p.signals.iter().find(|s| s.name == name))
+        .is_some_and(|s| s.direction == Direction::Out)
+}
+
+/// Row `i` of the wiring table: the signal, its device, its refusal.
+#[component]
+fn WiringRow(
+    setup: RwSignal<Option<PlantSetup>>,
+    rows: RwSignal<Vec<[String; 2]>>,
+    i: usize,
+) -> impl IntoView {
+    let ctx = Ctx::get();
+    let plants = Plants::get();
+    let t = move || ctx.lang.get().plant();
+    let cell = move |c: usize| rows.with(|r| r.get(i).map(|r| r[c].clone()).unwrap_or_default());
+    let signal = cell(0);
+    let plant = setup.with_untracked(|s| s.as_ref().map(|s| s.name.clone()));
+    let out = is_output(plant.as_deref(), &signal);
+    let kind = move || {
+        if out {
+            t().direction_out
+        } else {
+            t().direction_in
+        }
+    };
+    let refusal = move || refusal_at(plants, i);
+    let refused = move || !refusal().is_empty();
+    let label = {
+        let signal = signal.clone();
+        move || format!("{signal}: {}", t().device)
+    };
+    view! {
+        <tr data-testid=format!("wiring-row-{signal}") class:refused=refused>
+            <th scope="row">{signal.clone()}<small>{" "}{kind}</small></th>
+            <td>
+                <input type="text" data-testid=format!("wiring-device-{signal}")
+                    aria-label=label
+                    aria-invalid=move || refused().to_string()
+                    prop:value=move || cell(1)
+                    on:change=move |e| {
+                        let v = event_target_value(&e);
+                        rows.update(|r| if let Some(r) = r.get_mut(i) { r[1] = v; });
+                    } />
+                <span class="wiring-refusal" role="alert"
+                    data-testid=format!("wiring-refusal-{signal}")
+                    hidden=move || !refused()>{refusal}</span>
+            </td>
+        </tr>
     }
 }
