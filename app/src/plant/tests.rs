@@ -133,3 +133,37 @@ fn the_plant_stands_still_while_paused_or_stopped() {
     assert_eq!(quantity(&stopped, "placed"), quantity(&running, "placed"));
     assert!(!stopped.running);
 }
+
+#[test]
+fn the_tests_runner_grades_the_books_conveyor_with_its_plant() {
+    use crate::editor::panes::runner::{run_cases, run_cases_with};
+    use crate::editor::state::CaseResult;
+    use engine::formats::Project;
+    let project = Project::from_json(include_str!(
+        "../../../engine/programs/minasec-u/conveyor.json"
+    ))
+    .unwrap();
+    let settings: Vec<_> = project.settings.clone().into_iter().collect();
+    let plant = project.plant.clone();
+    assert!(plant.is_some());
+    let results = run_cases_with(
+        engine::MachineId::MinasecU,
+        &settings,
+        CONVEYOR,
+        &project.tests,
+        plant.as_ref(),
+    );
+    assert!(!results.is_empty());
+    assert!(
+        results.iter().all(|r| matches!(r, CaseResult::Pass)),
+        "{results:?}"
+    );
+    // Without the plant the cases cannot name its quantities.
+    let without = run_cases(
+        engine::MachineId::MinasecU,
+        &settings,
+        CONVEYOR,
+        &project.tests,
+    );
+    assert!(without.iter().any(|r| !matches!(r, CaseResult::Pass)));
+}
