@@ -12,8 +12,10 @@ import pytest
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
+from selenium.webdriver.common.keys import Keys
+
 from test_app import el, open_fresh, severe_console_messages, wait
-from test_ladder import HASHIGO, ROOT
+from test_ladder import HASHIGO, ROOT, focus_ladder, keys, place
 
 CONVEYOR = ROOT / "engine" / "programs" / "minasec-u" / "conveyor.json"
 
@@ -112,6 +114,46 @@ def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(drive
     wait(driver, lambda: not el(driver, "wiring-refusal-level").is_displayed(),
          message="the default wiring is taken")
     assert el(driver, "wiring-device-level").get_attribute("value") == ""
+
+
+@pytest.mark.first_visit
+def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(driver, base_url):
+    from test_classroom import result
+    from test_start import shown
+
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-exercise"))
+    el(driver, "start-exercise").click()
+    wait(driver, lambda: shown(driver, "start-exercise-2"))
+    el(driver, "start-exercise-2").click()
+    wait(driver, lambda: "conveyor" in el(driver, "exercise-task").text, message="its task is shown")
+    # The exercise brings its plant, coupled on MINASEC-U.
+    assert el(driver, "machine").get_attribute("value") == "minasec-u"
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-conveyor"]'),
+         message="the conveyor is drawn")
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "T1")
+    place(driver, Keys.F5, "M00")
+    place(driver, Keys.F6, "X01")
+    place(driver, Keys.F7, "M01")
+    place(driver, Keys.F5, "X01")
+    place(driver, Keys.F7, "M00")
+    place(driver, Keys.F5, "T1")
+    place(driver, Keys.F6, "M01")
+    place(driver, Keys.F7, "Y00")
+    keys(driver, Keys.ARROW_UP)
+    place(driver, Keys.F5, "Y00", shift=True)
+    assert el(driver, "problems").text.strip() == "No problems."
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 2, timeout=40,
+         message="parts ride and are delivered")
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="exercise-result"]'))
+    wait(driver, lambda: result(driver)[0] == result(driver)[1], timeout=40,
+         message="Check my answer passes")
+    assert severe_console_messages(driver) == []
 
 
 @pytest.mark.parametrize("name", ["laptop", "phone"])
