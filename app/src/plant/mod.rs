@@ -14,7 +14,6 @@ mod rig;
 mod wiring;
 
 use engine::formats::project::PlantSetup;
-use engine::plc::Plc;
 use leptos::prelude::*;
 
 pub use crate::rig::{Build, Refusals, Rig, RigSlot, Shown, SignalShown};
@@ -41,8 +40,6 @@ pub struct Kit {
     pub build: Build,
     /// The dock's drawing (the figure, signals, alarms, wiring).
     pub draw: Draw,
-    /// The machine's default wiring for a plant: `SIGNAL`, `DEVICE` rows.
-    pub default_wiring: fn(&str, &dyn Plc) -> Vec<[String; 2]>,
 }
 
 /// The plant dock's state, page-wide (one workspace shows at a time).
@@ -50,8 +47,6 @@ pub struct Kit {
 pub struct Plants {
     /// The part's functions, once fetched.
     pub kit: RwSignal<Option<Kit>>,
-    /// The part could not be fetched.
-    pub missing: RwSignal<bool>,
     /// What the shown workspace's rig last published.
     pub shown: RwSignal<Option<Shown>>,
     /// Refusals of the chosen setup (wiring row, message).
@@ -63,7 +58,6 @@ impl Plants {
     pub fn new() -> Plants {
         Plants {
             kit: RwSignal::new(None),
-            missing: RwSignal::new(false),
             shown: RwSignal::new(None),
             refusals: RwSignal::new(Vec::new()),
         }
@@ -104,8 +98,8 @@ impl Plants {
             self.refusals.set(Vec::new());
             return;
         };
+        // The part's place in the dock fetches it; coupled when it comes.
         let Some(kit) = self.kit.get_untracked() else {
-            self.fetch();
             return;
         };
         let mut refused = Vec::new();
@@ -124,22 +118,6 @@ impl Plants {
         self.refusals.set(refused);
         self.publish(ladder);
     }
-
-    /// Fetches the part (once; again after a failure).
-    fn fetch(&self) {
-        let plants = *self;
-        plants.missing.set(false);
-        leptos::task::spawn_local(async move {
-            match plant_kit().await {
-                Ok(kit) => {
-                    let _ = plants.kit.try_set(Some(kit));
-                }
-                Err(PartMissing) => {
-                    let _ = plants.missing.try_set(true);
-                }
-            }
-        });
-    }
 }
 
 impl Default for Plants {
@@ -156,7 +134,6 @@ crate::parts::part_fn!(
         Ok(Kit {
             build: rig::build,
             draw: draw::draw,
-            default_wiring: wiring::default_rows,
         })
     }
 );
@@ -196,30 +173,21 @@ pub fn PlantDock(ladder: LadderCtx) -> impl IntoView {
             })
             .collect_view()
     };
+    // The part's place, made again only when a plant comes or goes (a
+    // new wiring redraws from the same part).
+    let chosen_any = Memo::new(move |_| setup.with(Option::is_some));
     let body = move || {
-        if setup.with(Option::is_none) {
+        if !chosen_any.get() {
             return view! { <p class="plant-idle">{move || t().idle}</p> }.into_any();
         }
-        if plants.missing.get() {
-            let texts = ctx.lang.get().parts();
-            return view! {
-                <div class="part-state" role="alert" data-testid="plant-part-missing">
-                    <p>{texts.missing}</p>
-                    <button type="button" data-testid="plant-part-retry"
-                        on:click=move |_| plants.fetch()>{texts.retry}</button>
-                </div>
-            }
-            .into_any();
-        }
-        match plants.kit.get() {
-            Some(kit) => (kit.draw)(),
-            None => view! {
-                <p class="part-state" role="status" data-testid="plant-part-loading">
-                    {move || ctx.lang.get().parts().loading}
-                </p>
-            }
-            .into_any(),
-        }
+        // The part's loader says "Loading…" and offers a retry if the
+        // fetch fails; the kit it brings also couples the plant.
+        let load = move || async move {
+            let kit = plant_kit().await?;
+            let _ = plants.kit.try_set(Some(kit));
+            Ok(kit.draw)
+        };
+        crate::parts::part("plant-part", ctx.lang.into(), load).into_any()
     };
     view! {
         <section class="plant-dock" data-testid="plant">
