@@ -175,6 +175,11 @@ def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
         driver.save_screenshot(str(artifacts / f"plant-conveyor-{name}.png"))
         choose(driver, "tank")
         wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-tank"]'))
+        wait(driver, lambda: quantity(driver, "level") > 55, timeout=30, message="the level rises")
+        el(driver, "pause").click()
+        # The figure says the level as the quantity does (whole percent).
+        level = quantity(driver, "level")
+        assert el(driver, "plant-level").text == f"{level} %"
         driver.save_screenshot(str(artifacts / f"plant-tank-{name}.png"))
     finally:
         driver.quit()

@@ -163,7 +163,9 @@ fn conveyor(s: &Shown, t: &'static PlantTexts) -> impl IntoView {
 /// The tank: its level rising and falling, the valves above and below,
 /// the switches at their heights.
 fn tank(s: &Shown, t: &'static PlantTexts) -> impl IntoView {
-    let level = s.figure.first().copied().unwrap_or(0) as f64 / 1000.0;
+    let fine = s.figure.first().copied().unwrap_or(0);
+    let percent = percent_said(fine);
+    let level = fine as f64 / 1000.0;
     let (low, high) = match s.figure.as_slice() {
         [_, l, h, ..] => (*l as f64, *h as f64),
         _ => (20.0, 80.0),
@@ -173,7 +175,7 @@ fn tank(s: &Shown, t: &'static PlantTexts) -> impl IntoView {
     let overflowing = full && on(s, "fill");
     view! {
         <svg class="plant-svg plant-tank-svg" viewBox="0 0 360 160" role="img" data-testid="plant-tank"
-            aria-label=format!("{}: {} {:.0} %", t.plant_name("tank"), t.level, level)>
+            aria-label=format!("{}: {} {percent}", t.plant_name("tank"), t.level)>
             <rect class="plant-vessel" x="120" y="20" width="120" height="120" />
             <rect class="plant-liquid" class:overflow=overflowing x="121" y=y_of(level)
                 width="118" height=level * 1.2 />
@@ -194,9 +196,15 @@ fn tank(s: &Shown, t: &'static PlantTexts) -> impl IntoView {
                 <text x="258" y=y_of(low) + 4.0>{label(s, "low", t)}</text>
             </g>
             <text class="plant-count" x="112" y=y_of(level) + 4.0 text-anchor="end"
-                data-testid="plant-level">{format!("{:.0} %", level)}</text>
+                data-testid="plant-level">{percent.clone()}</text>
         </svg>
     }
+}
+
+/// A level in thousandths of a percent, said in whole percent as the
+/// quantity `level` is (truncated, so the two never disagree).
+pub(super) fn percent_said(thousandths: i64) -> String {
+    format!("{} %", thousandths / 1000)
 }
 
 /// Any other plant, simply: a lamp per signal, labelled with its device.

@@ -167,3 +167,11 @@ fn the_tests_runner_grades_the_books_conveyor_with_its_plant() {
     );
     assert!(without.iter().any(|r| !matches!(r, CaseResult::Pass)));
 }
+
+#[test]
+fn the_tanks_figure_says_its_level_as_the_quantity_does() {
+    // 66.6 % is the quantity `level` 66: the figure said 67 (rounded).
+    assert_eq!(super::draw::percent_said(66_600), "66 %");
+    assert_eq!(super::draw::percent_said(100_000), "100 %");
+    assert_eq!(super::draw::percent_said(999), "0 %");
+}
