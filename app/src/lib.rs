@@ -11,6 +11,8 @@ pub mod examples;
 pub mod i18n;
 pub mod machines;
 pub mod parts;
+pub mod plant;
+pub mod rig;
 pub mod sim;
 pub mod start;
 pub mod state;

@@ -7,6 +7,8 @@ use engine::plc::Plc;
 use engine::record::Recorded;
 use engine::SimTime;
 
+use crate::rig::RigSlot;
+
 /// How fast simulated time runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Speed {
@@ -73,6 +75,9 @@ pub struct Pace {
 pub struct Simulator<M> {
     machine: Recorded<M>,
     budget: FrameBudget,
+    /// The plant coupled to the machine (issue #52): when there is one,
+    /// it advances the machine step by step with itself.
+    rig: RigSlot,
 }
 
 /// `Speed::Max`'s share of a frame. The rest of the frame (the live
@@ -114,6 +119,7 @@ impl<M: Plc + Clone> Simulator<M> {
         Simulator {
             machine: Recorded::new(machine),
             budget: FrameBudget::new(),
+            rig: None,
         }
     }
 
@@ -125,6 +131,19 @@ impl<M: Plc + Clone> Simulator<M> {
     /// The machine, to operate it.
     pub fn machine_mut(&mut self) -> &mut Recorded<M> {
         &mut self.machine
+    }
+
+    /// The machine and the plant coupled to it, to couple or uncouple.
+    pub fn machine_and_rig(&mut self) -> (&mut Recorded<M>, &mut RigSlot) {
+        (&mut self.machine, &mut self.rig)
+    }
+
+    /// Advances the machine by `dt`, with its plant if it has one.
+    fn tick(&mut self, dt: SimTime) {
+        match self.rig.as_mut() {
+            Some(rig) => rig.advance(&mut self.machine, dt),
+            None => self.machine.tick(dt),
+        }
     }
 
     /// Advances for one animation frame that came `wall_ms` after the
@@ -142,7 +161,7 @@ impl<M: Plc + Clone> Simulator<M> {
         match pace.speed {
             Speed::Times(factor) => {
                 let nanos = wall_ms * 1e6 * f64::from(factor);
-                self.machine.tick(SimTime::from_nanos(nanos as u64));
+                self.tick(SimTime::from_nanos(nanos as u64));
             }
             Speed::Max => {
                 self.budget.learn(wall_ms);
@@ -154,7 +173,7 @@ impl<M: Plc + Clone> Simulator<M> {
                 let start = now_ms();
                 let mut last_end = start;
                 loop {
-                    self.machine.tick(MAX_SPEED_SLICE);
+                    self.tick(MAX_SPEED_SLICE);
                     let end = now_ms();
                     let next_end = end + (end - last_end);
                     last_end = end;

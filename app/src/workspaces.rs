@@ -30,6 +30,8 @@ pub struct Workspaces {
     pub ladders: Ladders,
     /// The named projects.
     pub projects: crate::editor::projects::Projects,
+    /// The plant dock's state (issue #52).
+    pub plants: crate::plant::Plants,
     page: Ctx,
 }
 
@@ -61,6 +63,7 @@ impl Workspaces {
             arrivals: MachineId::ALL.map(|_| RwSignal::new_local(Arrival::NotAsked)),
             ladders,
             projects: crate::editor::projects::Projects::restore(page),
+            plants: crate::plant::Plants::new(),
             page,
         }
     }
@@ -116,13 +119,16 @@ impl Workspaces {
         provide_context(self.minasec);
         provide_context(self.ladders);
         provide_context(self.projects);
+        provide_context(self.plants);
         provide_context(*self);
     }
 
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall
     /// time at `pace`, then its signals refreshed. The others rest.
     pub fn frame(&self, kind: MachineKind, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
-        self.ladders.of(kind).frame(pace, wall_ms, now_ms);
+        let ladder = self.ladders.of(kind);
+        ladder.frame(pace, wall_ms, now_ms);
+        self.plants.publish(ladder);
     }
 
     /// The workbench for `kind`: the ladder editor in the centre with the
@@ -134,6 +140,10 @@ impl Workspaces {
         let grid = NodeRef::<leptos::html::Div>::new();
         let mut tools = crate::editor::tools(ladder, grid);
         tools.push((Tool::Program, self.program_view(kind)));
+        tools.push((
+            Tool::Plant,
+            view! { <crate::plant::PlantDock ladder /> }.into_any(),
+        ));
         if Tool::Cpu.on(kind) {
             tools.push((
                 Tool::Cpu,

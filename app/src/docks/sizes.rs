@@ -23,13 +23,15 @@ pub enum Tool {
     Program,
     /// MINASEC-U's view inside its CPU.
     Cpu,
+    /// The plant the ladder controls (issue #52).
+    Plant,
     /// On a phone only: the machine's whole panel, in the sheet.
     Panel,
 }
 
 impl Tool {
     /// Every tool, in tab order.
-    pub const ALL: [Tool; 10] = [
+    pub const ALL: [Tool; 11] = [
         Tool::Watch,
         Tool::Chart,
         Tool::Tests,
@@ -39,6 +41,7 @@ impl Tool {
         Tool::Variables,
         Tool::Program,
         Tool::Cpu,
+        Tool::Plant,
         Tool::Panel,
     ];
 
@@ -54,6 +57,7 @@ impl Tool {
             Tool::Variables => "variables",
             Tool::Program => "program",
             Tool::Cpu => "cpu",
+            Tool::Plant => "plant",
             Tool::Panel => "panel",
         }
     }

@@ -10,6 +10,7 @@ use engine::record::{Recorded, TimeTravel};
 use leptos::prelude::*;
 
 use super::LadderCtx;
+use crate::rig::RigSlot;
 use crate::sim::{Pace, Simulator};
 
 /// One machine as the editor and the frame loop drive it.
@@ -24,6 +25,8 @@ pub trait MachineLink {
     fn advance(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64);
     /// Copies its front panel into the panel's signals.
     fn refresh_panel(&self);
+    /// Runs `f` on the machine and the plant coupled to it (issue #52).
+    fn rig(&self, f: &mut dyn FnMut(&mut dyn Plc, &mut RigSlot));
 }
 
 /// A machine's simulator and its panel's refresh: the one implementation
@@ -58,6 +61,13 @@ where
 
     fn refresh_panel(&self) {
         self.refresh.run(());
+    }
+
+    fn rig(&self, f: &mut dyn FnMut(&mut dyn Plc, &mut RigSlot)) {
+        self.sim.update_value(|s| {
+            let (machine, rig) = s.machine_and_rig();
+            f(machine, rig);
+        });
     }
 }
 
@@ -122,6 +132,20 @@ impl LadderCtx {
             }
         });
         out
+    }
+
+    /// Runs `f` on the machine and the plant coupled to it (nothing
+    /// without a machine).
+    pub fn with_rig(&self, f: impl FnOnce(&mut dyn Plc, &mut RigSlot)) {
+        let Some(link) = self.link() else {
+            return;
+        };
+        let mut f = Some(f);
+        link.rig(&mut |machine, rig| {
+            if let Some(f) = f.take() {
+                f(machine, rig);
+            }
+        });
     }
 
     /// Reads the machine; `None` without a machine.

@@ -9,6 +9,7 @@ mod files;
 mod ja;
 pub mod keymap;
 pub mod parts;
+pub mod plant;
 pub mod start;
 pub mod words;
 
@@ -88,6 +89,14 @@ impl Lang {
         match self {
             Lang::Ja => &parts::JA,
             Lang::En => &parts::EN,
+        }
+    }
+
+    /// The plant dock's strings (issue #52).
+    pub const fn plant(self) -> &'static plant::PlantTexts {
+        match self {
+            Lang::Ja => &plant::JA,
+            Lang::En => &plant::EN,
         }
     }
 

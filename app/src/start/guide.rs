@@ -112,6 +112,7 @@ pub fn section_of(tool: Tool, machine: engine::MachineId) -> &'static str {
         Tool::Variables => "variables",
         Tool::Program => "program",
         Tool::Cpu => "cpu",
+        Tool::Plant => "plant",
         Tool::Panel => machine.name(),
     }
 }

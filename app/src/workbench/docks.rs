@@ -30,7 +30,7 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
                     aria-controls=format!("dock-panel-{}", tool.hook())
                     aria-selected=move || (shown() && open()).to_string()
                     on:click=move |_| docks.toggle(tool)>
-                    {move || tool_name(tool, t())}
+                    {move || tool_name(tool, ctx.lang.get())}
                 </button>
             }
         })
@@ -79,7 +79,8 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
 }
 
 /// A tool's name on its tab.
-pub fn tool_name(tool: Tool, t: &'static crate::i18n::Texts) -> &'static str {
+pub fn tool_name(tool: Tool, lang: crate::i18n::Lang) -> &'static str {
+    let t = lang.texts();
     match tool {
         Tool::Watch => t.watch,
         Tool::Chart => t.chart,
@@ -90,6 +91,7 @@ pub fn tool_name(tool: Tool, t: &'static crate::i18n::Texts) -> &'static str {
         Tool::Variables => t.variables,
         Tool::Program => t.program_tab,
         Tool::Cpu => t.cpu_tab,
+        Tool::Plant => lang.plant().tab,
         Tool::Panel => t.panel_tab,
     }
 }

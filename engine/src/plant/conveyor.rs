@@ -176,6 +176,17 @@ impl Conveyor {
         c
     }
 
+    /// Where each part on the belt is: its leading edge in µm from the
+    /// infeed (the one furthest along first), for drawing the belt.
+    pub fn part_leads(&self) -> impl Iterator<Item = i64> + '_ {
+        self.parts.iter().copied()
+    }
+
+    /// The belt's length and a part's length, in µm, for drawing.
+    pub fn lengths_um(&self) -> (i64, i64) {
+        (self.um(LENGTH), self.um(PART))
+    }
+
     fn um(&self, param: usize) -> i64 {
         self.params[param] * UM_PER_MM
     }

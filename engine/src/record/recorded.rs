@@ -7,7 +7,8 @@ use super::{Break, Condition, Mark, Recording, DEFAULT_BUDGET};
 use crate::clock::PeriodicClock;
 use crate::events::InputValue;
 use crate::plc::{
-    Command, Device, Front, Plc, PlcError, ScanTrace, SettingInfo, TraceHistory, Value, Warning,
+    Command, Device, Front, Plc, PlcError, ScanTrace, SettingInfo, Terminals, TraceHistory, Value,
+    Warning,
 };
 use crate::time::SimTime;
 use crate::MachineId;
@@ -272,6 +273,11 @@ impl<M: Plc + Clone> Plc for Recorded<M> {
 
     fn time_for_steps(&self, steps: u64) -> Option<(SimTime, u64)> {
         self.live.time_for_steps(steps)
+    }
+
+    /// The machine's own: the page wires a plant to its recorded machine.
+    fn terminals(&self) -> Terminals {
+        self.live.terminals()
     }
 
     fn serial_open(&mut self) -> Result<String, PlcError> {

@@ -64,3 +64,19 @@ fn a_recording_replays_the_plant_exactly() {
     assert!(counts.windows(2).all(|w| w[0] <= w[1]));
     assert_eq!(*counts.last().unwrap(), live_end[1]);
 }
+
+#[test]
+fn a_recorded_machine_names_its_terminals_for_the_default_wiring() {
+    // The page wires a plant to its recorded machine (issue #52): the
+    // recording must pass the machine's terminals on, or the default
+    // wiring is empty.
+    let recorded = Recorded::new(MinasecPlc::new());
+    let info = &engine::plant::conveyor::INFO;
+    let (wired, left) = engine::plant::wiring::default_wiring(info, &recorded);
+    let pairs: Vec<_> = wired
+        .iter()
+        .map(|w| format!("{},{}", w.signal, w.device))
+        .collect();
+    assert_eq!(pairs, ["infeed,X00", "outfeed,X01", "motor,Y00"]);
+    assert!(left.is_empty());
+}

@@ -3,8 +3,10 @@
 //! docs/performance.md "Parts"), so this asks for it and shows what came.
 
 use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
+use engine::formats::project::PlantSetup;
 use engine::machines::try_new_plc;
-use engine::plc::Command;
+use engine::plant::{AnyPlant, Fault, Plant, Planted, WireEntry};
+use engine::plc::{Command, Plc};
 use engine::MachineId;
 use leptos::prelude::*;
 
@@ -30,10 +32,11 @@ pub fn run_all(ctx: LadderCtx) {
         return;
     };
     let (machine, settings) = (ctx.machine, ctx.settings());
+    let plant = ctx.cases.plant.get_untracked();
     // wasm-bindgen's own spawner: a teacher's `?answer` link runs the
     // cases while the page starts, before Leptos' executor is set up.
     wasm_bindgen_futures::spawn_local(async move {
-        match run_cases_part(machine, settings, listing.text, cases).await {
+        match run_cases_part(machine, settings, listing.text, cases, plant).await {
             Ok(results) => ctx
                 .cases
                 .results
@@ -56,8 +59,15 @@ crate::parts::part_fn!(
         settings: Vec<(String, String)>,
         program: String,
         cases: Vec<TestCase>,
+        plant: Option<PlantSetup>,
     ) -> Result<Vec<CaseResult>, PartMissing> {
-        Ok(run_cases(machine, &settings, &program, &cases))
+        Ok(run_cases_with(
+            machine,
+            &settings,
+            &program,
+            &cases,
+            plant.as_ref(),
+        ))
     }
 );
 
@@ -68,6 +78,19 @@ pub fn run_cases(
     settings: &[(String, String)],
     program: &str,
     cases: &[TestCase],
+) -> Vec<CaseResult> {
+    run_cases_with(machine, settings, program, cases, None)
+}
+
+/// [`run_cases`] with the project's plant, if it has one, attached to
+/// each case's machine (issue #52): the cases grade what the plant did
+/// (`conveyor.delivered >= 8 at 60s`).
+pub fn run_cases_with(
+    machine: MachineId,
+    settings: &[(String, String)],
+    program: &str,
+    cases: &[TestCase],
+    plant: Option<&PlantSetup>,
 ) -> Vec<CaseResult> {
     // The work of all the cases is counted before any runs (docs/limits.md).
     let prepared = match prepare_all(cases) {
@@ -102,6 +125,13 @@ pub fn run_cases(
             if let Err(e) = plc.load_text(program) {
                 return CaseResult::Error(Both::new(|l| errors::plc_error(l, &e)));
             }
+            let mut plc = match plant {
+                Some(setup) => match planted(plc, setup) {
+                    Ok(plc) => plc,
+                    Err(e) => return CaseResult::Error(Both::new(|_| e.clone())),
+                },
+                None => plc,
+            };
             match run_prepared(plc.as_mut(), case) {
                 Ok(Outcome::Pass) => CaseResult::Pass,
                 Ok(Outcome::Fail {
@@ -116,6 +146,52 @@ pub fn run_cases(
             }
         })
         .collect()
+}
+
+/// `plc` with `setup`'s plant attached: its wiring, faults and
+/// parameters, or what is wrong with them (the engine's words).
+fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, String> {
+    let plant = AnyPlant::new(&setup.name).ok_or_else(|| {
+        format!(
+            "no plant {} (the plants: {})",
+            setup.name,
+            AnyPlant::names()
+        )
+    })?;
+    let info = plant.info();
+    let faults = setup
+        .faults
+        .iter()
+        .map(|f| Fault::parse(f, info).map_err(|e| format!("{f}: {e}")))
+        .collect::<Result<Vec<_>, _>>()?;
+    let entries: Option<Vec<WireEntry>> = setup.wiring.as_ref().map(|rows| {
+        rows.iter()
+            .enumerate()
+            .map(|(i, [signal, device])| WireEntry {
+                signal: signal.clone(),
+                device: device.clone(),
+                line: i + 1,
+            })
+            .collect()
+    });
+    let mut planted = Planted::new(plc, plant, entries.as_deref(), faults).map_err(|errors| {
+        let said: Vec<_> = errors
+            .iter()
+            .map(|e| format!("plant wiring entry {}: {}", e.line, e.error))
+            .collect();
+        said.join("; ")
+    })?;
+    for (key, value) in &setup.params {
+        let name = format!("{}.{key}", setup.name);
+        let setting = Command::Setting {
+            name: name.clone(),
+            value: value.clone(),
+        };
+        planted
+            .apply(setting)
+            .map_err(|e| format!("{name}={value}: {e}"))?;
+    }
+    Ok(Box::new(planted))
 }
 
 /// The device a case could not find, when that is because the program

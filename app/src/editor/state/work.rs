@@ -262,8 +262,7 @@ impl LadderCtx {
         let mut project = engine::formats::Project::new(self.machine, self.ladder());
         project.tests = self.cases.tests.get_untracked();
         project.exercise = self.cases.exercise.get_untracked();
-        // The page does not show plants yet (issue #52) but keeps a
-        // project's: saving it again must not drop it.
+        // The plant dock's choice (issue #52), kept with the project.
         project.plant = self.cases.plant.get_untracked();
         project
     }

@@ -1,0 +1,254 @@
+//! The coupling of a plant to the page's machine (part `plants`): the
+//! same stepping as the engine's `Planted` (docs/plants.md "How a plant
+//! runs"), on the page's recorded machine, which the simulator owns: the
+//! machine runs to the end of each 1 ms plant step, the plant moves
+//! driven by the outputs as the machine last wrote them, and its sensors
+//! that changed are written to the machine's inputs (recorded commands,
+//! so time travel replays the machine as it ran).
+
+use engine::error::Located;
+use engine::events::InputValue;
+use engine::formats::project::PlantSetup;
+use engine::plant::wiring::{self, Wire, WireEntry};
+use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, STEP};
+use engine::plc::{tick_end, Command, Plc};
+use engine::SimTime;
+
+use super::{Refusals, Rig, Shown, SignalShown};
+
+/// The alarms the dock keeps (the latest).
+const ALARMS_KEPT: usize = 20;
+
+/// A plant wired to the page's machine.
+pub(super) struct PlantRig {
+    setup: PlantSetup,
+    plant: AnyPlant,
+    wires: Vec<Wire>,
+    faults: Vec<Fault>,
+    /// The plant's start on the machine's clock.
+    origin: SimTime,
+    /// The end of the next plant step.
+    next_step: SimTime,
+    /// Per signal: what the PLC reads (`in`), what acts on the plant (`out`).
+    values: Vec<i64>,
+    /// Per signal: the input value last written to the machine.
+    written: Vec<Option<InputValue>>,
+    /// The latest alarms: the machine's time in ms, the message.
+    alarms: Vec<(i64, String)>,
+    raised: Vec<String>,
+}
+
+/// Couples `setup`'s plant to `machine`, or the refusals, each at its
+/// wiring row (1-based; 0: the plant, its parameters or faults).
+pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals> {
+    let one = |e: String| vec![(0, e)];
+    let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
+        one(format!(
+            "no plant {} (the plants: {})",
+            setup.name,
+            AnyPlant::names()
+        ))
+    })?;
+    let info = plant.info();
+    for (key, value) in &setup.params {
+        let index = info
+            .params
+            .iter()
+            .position(|p| p.key == key)
+            .ok_or_else(|| one(format!("{} has no parameter {key}", info.name)))?;
+        let v = engine::plant::parse_param(&info.params[index], value)
+            .map_err(|e| one(e.to_string()))?;
+        plant.set_param(index, v);
+    }
+    plant.check().map_err(one)?;
+    let faults = setup
+        .faults
+        .iter()
+        .map(|f| Fault::parse(f, info).map_err(|e| one(e.to_string())))
+        .collect::<Result<Vec<_>, _>>()?;
+    let entries: Vec<WireEntry> = match &setup.wiring {
+        Some(rows) => rows
+            .iter()
+            .enumerate()
+            .filter(|(_, [signal, device])| !(signal.trim().is_empty() && device.trim().is_empty()))
+            .map(|(i, [signal, device])| WireEntry {
+                signal: signal.trim().to_string(),
+                device: device.trim().to_string(),
+                line: i + 1,
+            })
+            .collect(),
+        None => {
+            let mut entries = wiring::default_wiring(info, machine).0;
+            entries.retain(|e| machine.device(&e.device).is_ok());
+            entries
+        }
+    };
+    let wires = wiring::check(info, machine, &entries)
+        .map_err(|errors| errors.into_iter().map(located).collect::<Vec<_>>())?;
+    let n = info.signals.len();
+    let now = machine.now();
+    let mut rig = PlantRig {
+        setup: setup.clone(),
+        plant,
+        wires,
+        faults,
+        origin: now,
+        next_step: now.saturating_add(STEP),
+        values: vec![0; n],
+        written: vec![None; n],
+        alarms: Vec::new(),
+        raised: Vec::new(),
+    };
+    rig.sense(machine, now);
+    Ok(Box::new(rig))
+}
+
+fn located(e: Located<String>) -> (usize, String) {
+    (e.line, e.error)
+}
+
+impl PlantRig {
+    /// One plant step ending at `at`: driven by the outputs as the
+    /// machine left them, then its sensors written.
+    fn step(&mut self, machine: &mut dyn Plc, at: SimTime) {
+        let info = self.plant.info();
+        for (s, signal) in info.signals.iter().enumerate() {
+            if signal.direction == Direction::Out {
+                let driven = self
+                    .wires
+                    .iter()
+                    .find(|w| w.signal == s)
+                    .map_or(0, |w| i64::from(machine.read(w.device).is_on()));
+                self.values[s] = fault::apply(fault::acting(&self.faults, s, at), driven);
+            }
+        }
+        let now_ms = ms(at) - ms(self.origin);
+        self.plant.step(now_ms, &self.values, &mut self.raised);
+        for message in self.raised.drain(..) {
+            if self.alarms.len() == ALARMS_KEPT {
+                self.alarms.remove(0);
+            }
+            self.alarms.push((ms(at), message));
+        }
+        self.sense(machine, at);
+    }
+
+    /// Reads the sensors at `at` (after faults) and writes those that
+    /// changed to the machine's inputs.
+    fn sense(&mut self, machine: &mut dyn Plc, at: SimTime) {
+        let info = self.plant.info();
+        for (s, signal) in info.signals.iter().enumerate() {
+            if signal.direction != Direction::In {
+                continue;
+            }
+            let value = fault::apply(fault::acting(&self.faults, s, at), self.plant.sensor(s));
+            self.values[s] = value;
+            let Some(w) = self.wires.iter().find(|w| w.signal == s) else {
+                continue;
+            };
+            let input = match w.scale {
+                Some(scale) => wiring::scaled(scale, value),
+                None => InputValue::Int(value),
+            };
+            // Checked when wired: the input takes it.
+            if self.written[s] != Some(input)
+                && machine.apply(Command::SetInput(w.device, input)).is_ok()
+            {
+                self.written[s] = Some(input);
+            }
+        }
+    }
+}
+
+/// A time in whole milliseconds.
+fn ms(t: SimTime) -> i64 {
+    i64::try_from(t.as_nanos() / 1_000_000).unwrap_or(i64::MAX)
+}
+
+impl Rig for PlantRig {
+    fn setup(&self) -> &PlantSetup {
+        &self.setup
+    }
+
+    fn advance(&mut self, machine: &mut dyn Plc, dt: SimTime) {
+        let end = tick_end(machine.now(), dt);
+        // The machine went back in time (resumed from a past scan): the
+        // plant goes on from there as it is.
+        if self.next_step > machine.now().saturating_add(STEP) {
+            self.next_step = machine.now().saturating_add(STEP);
+        }
+        while self.next_step <= end {
+            let at = self.next_step;
+            machine.run_until(at);
+            if machine.now() < at {
+                // Stopped short: a break condition held.
+                return;
+            }
+            self.step(machine, at);
+            self.next_step = at.saturating_add(STEP);
+        }
+        machine.run_until(end);
+    }
+
+    fn show(&self, machine: &dyn Plc) -> Shown {
+        let info = self.plant.info();
+        let signals = info
+            .signals
+            .iter()
+            .enumerate()
+            .map(|(s, signal)| SignalShown {
+                name: signal.name,
+                output: signal.direction == Direction::Out,
+                analog: signal.kind == Kind::Analog,
+                value: self.values[s],
+                device: self
+                    .wires
+                    .iter()
+                    .find(|w| w.signal == s)
+                    .map(|w| w.name.clone()),
+            })
+            .collect();
+        let quantities = info
+            .quantities
+            .iter()
+            .enumerate()
+            .map(|(q, quantity)| (quantity.name, self.plant.quantity(q)))
+            .collect();
+        Shown {
+            plant: info.name,
+            running: machine.running(),
+            signals,
+            quantities,
+            alarms: self.alarms.clone(),
+            figure: figure(&self.plant),
+        }
+    }
+
+    fn detach(&mut self, machine: &mut dyn Plc) {
+        for w in &self.wires {
+            if self.plant.info().signals[w.signal].direction == Direction::In {
+                let _ = machine.apply(Command::ReleaseInput(w.device));
+            }
+        }
+    }
+}
+
+/// The plant's own figure for the drawing ([`Shown::figure`]).
+fn figure(plant: &AnyPlant) -> Vec<i64> {
+    match plant {
+        AnyPlant::Conveyor(c) => {
+            let (length, part) = c.lengths_um();
+            [length, part].into_iter().chain(c.part_leads()).collect()
+        }
+        AnyPlant::Tank(t) => {
+            let info = t.info();
+            let level = info.signal("level").map_or(0, |s| t.sensor(s));
+            let param = |key: &str| {
+                let i = info.params.iter().position(|p| p.key == key);
+                i.and_then(|i| t.params().get(i).copied()).unwrap_or(0)
+            };
+            vec![level, param("low_at"), param("high_at")]
+        }
+        _ => Vec::new(),
+    }
+}

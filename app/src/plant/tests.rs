@@ -1,0 +1,177 @@
+//! The plant coupled to a page's machine (issue #52), natively: the
+//! conveyor delivers under the book's ladder, the tank's overflow is an
+//! alarm with its time, refusals land at their wiring row, and the plant
+//! stands still while the machine does.
+
+use engine::formats::project::PlantSetup;
+use engine::machines::MinasecPlc;
+use engine::plc::{Command, Plc};
+use engine::record::Recorded;
+use engine::SimTime;
+
+use super::rig;
+use crate::sim::{Pace, Simulator, Speed};
+
+const CONVEYOR: &str = include_str!("../../../engine/programs/minasec-u/conveyor.il");
+
+fn setup(name: &str) -> PlantSetup {
+    PlantSetup {
+        name: name.to_string(),
+        ..PlantSetup::default()
+    }
+}
+
+fn minasec(program: &str) -> Recorded<MinasecPlc> {
+    let mut m = Recorded::new(MinasecPlc::new());
+    m.load_text(program).unwrap();
+    let t1 = Command::Setting {
+        name: "T1".into(),
+        value: "1s".into(),
+    };
+    m.apply(t1).unwrap();
+    m
+}
+
+fn quantity(shown: &super::Shown, name: &str) -> i64 {
+    shown.quantities.iter().find(|(n, _)| *n == name).unwrap().1
+}
+
+#[test]
+fn the_books_ladder_runs_the_belt_and_parts_are_delivered() {
+    let mut m = minasec(CONVEYOR);
+    let mut rig = rig::build(&setup("conveyor"), &mut m).unwrap();
+    for _ in 0..600 {
+        rig.advance(&mut m, SimTime::from_millis(100));
+    }
+    let shown = rig.show(&m);
+    assert_eq!(m.now(), SimTime::from_secs(60));
+    assert!(quantity(&shown, "delivered") >= 8, "{shown:?}");
+    // The sensors reached the machine's inputs through the default wiring.
+    let devices: Vec<_> = shown.signals.iter().map(|s| s.device.clone()).collect();
+    assert_eq!(
+        devices,
+        [Some("X00".into()), Some("X01".into()), Some("Y00".into())]
+    );
+    assert!(shown.alarms.is_empty(), "{:?}", shown.alarms);
+}
+
+#[test]
+fn a_ladder_that_keeps_fill_on_raises_the_overflow_alarm_with_its_time() {
+    // fill is the tank's first actuator: Y00 by default.
+    let mut m = minasec("000 LDI X07\n001 ST Y00\n");
+    let mut rig = rig::build(&setup("tank"), &mut m).unwrap();
+    rig.advance(&mut m, SimTime::from_secs(5));
+    let shown = rig.show(&m);
+    assert!(shown.alarms.is_empty(), "{:?}", shown.alarms);
+    for _ in 0..5 {
+        rig.advance(&mut m, SimTime::from_secs(10));
+    }
+    let shown = rig.show(&m);
+    let (at, message) = shown.alarms.first().expect("an overflow alarm");
+    assert!(
+        message.contains("overflow") || message.contains("full"),
+        "{message}"
+    );
+    // 50 % at the start, +8 %/s in, -2 %/s drawn: full at about 8.3 s.
+    assert!((8_000..9_000).contains(at), "{at}");
+    assert_eq!(shown.figure.first(), Some(&100_000));
+}
+
+#[test]
+fn an_analog_signal_on_minasec_u_is_refused_at_its_row() {
+    let mut m = minasec(CONVEYOR);
+    let mut s = setup("tank");
+    s.wiring = Some(vec![
+        ["fill".into(), "Y00".into()],
+        ["level".into(), "X04".into()],
+    ]);
+    let refused = rig::build(&s, &mut m).err().expect("refused");
+    assert_eq!(refused.len(), 1, "{refused:?}");
+    assert_eq!(refused[0].0, 2);
+    assert!(refused[0].1.contains("analog"), "{}", refused[0].1);
+}
+
+#[test]
+fn the_default_rows_name_every_signal_and_leave_the_analog_one_open() {
+    let m = minasec(CONVEYOR);
+    let rows = super::wiring::default_rows("tank", &m);
+    let rows: Vec<String> = rows.iter().map(|[s, d]| format!("{s},{d}")).collect();
+    assert_eq!(
+        rows,
+        ["low,X00", "high,X01", "level,", "fill,Y00", "drain,Y01"]
+    );
+}
+
+#[test]
+fn the_plant_stands_still_while_paused_or_stopped() {
+    let mut sim = Simulator::new(MinasecPlc::new());
+    let (m, slot) = sim.machine_and_rig();
+    m.load_text(CONVEYOR).unwrap();
+    *slot = Some(rig::build(&setup("conveyor"), m).unwrap());
+    let pace = |paused| Pace {
+        speed: Speed::Times(100),
+        paused,
+    };
+    let shown = |sim: &mut Simulator<MinasecPlc>| {
+        let (m, slot) = sim.machine_and_rig();
+        slot.as_ref().unwrap().show(m)
+    };
+    for _ in 0..30 {
+        sim.frame(pace(false), 16.0, || 0.0);
+    }
+    let running = shown(&mut sim);
+    assert!(quantity(&running, "placed") >= 1, "{running:?}");
+    for _ in 0..30 {
+        sim.frame(pace(true), 16.0, || 0.0);
+    }
+    assert_eq!(shown(&mut sim), running);
+    sim.machine_mut().apply(Command::Run(false)).unwrap();
+    for _ in 0..30 {
+        sim.frame(pace(false), 16.0, || 0.0);
+    }
+    let stopped = shown(&mut sim);
+    assert_eq!(quantity(&stopped, "placed"), quantity(&running, "placed"));
+    assert!(!stopped.running);
+}
+
+#[test]
+fn the_tests_runner_grades_the_books_conveyor_with_its_plant() {
+    use crate::editor::panes::runner::{run_cases, run_cases_with};
+    use crate::editor::state::CaseResult;
+    use engine::formats::Project;
+    let project = Project::from_json(include_str!(
+        "../../../engine/programs/minasec-u/conveyor.json"
+    ))
+    .unwrap();
+    let settings: Vec<_> = project.settings.clone().into_iter().collect();
+    let plant = project.plant.clone();
+    assert!(plant.is_some());
+    let results = run_cases_with(
+        engine::MachineId::MinasecU,
+        &settings,
+        CONVEYOR,
+        &project.tests,
+        plant.as_ref(),
+    );
+    assert!(!results.is_empty());
+    assert!(
+        results.iter().all(|r| matches!(r, CaseResult::Pass)),
+        "{results:?}"
+    );
+    // Without the plant the cases cannot name its quantities.
+    let without = run_cases(
+        engine::MachineId::MinasecU,
+        &settings,
+        CONVEYOR,
+        &project.tests,
+    );
+    assert!(without.iter().any(|r| !matches!(r, CaseResult::Pass)));
+}
+
+#[test]
+fn the_tanks_figure_says_its_level_as_the_quantity_does() {
+    // 66.6 % is the quantity `level` 66: the figure said 67 (rounded).
+    assert_eq!(super::draw::percent_said(66_600), "66 %");
+    assert_eq!(super::draw::percent_said(100_000), "100 %");
+    assert_eq!(super::draw::percent_said(999), "0 %");
+}

@@ -1,0 +1,67 @@
+//! What the frame loop knows of a plant (issue #52): the [`Rig`]
+//! interface it calls and what a rig publishes for drawing ([`Shown`]).
+//! A leaf of the page's modules (only the engine below it), so that the
+//! simulator, the editor and the plant dock all reach it without a
+//! circle; the rigs themselves are built in the `plants` part
+//! (`crate::plant`).
+
+use engine::formats::project::PlantSetup;
+use engine::plc::Plc;
+use engine::SimTime;
+
+/// A plant coupled to a machine, as the frame loop drives it: the
+/// machine runs to each plant step, the plant moves, its sensors are
+/// written to the machine's inputs. Built inside the `plants` part.
+pub trait Rig {
+    /// The setup it was built from (a new setup builds a new rig).
+    fn setup(&self) -> &PlantSetup;
+    /// Advances the machine and the plant by `dt` of simulated time.
+    fn advance(&mut self, machine: &mut dyn Plc, dt: SimTime);
+    /// What the dock draws, now.
+    fn show(&self, machine: &dyn Plc) -> Shown;
+    /// Unwires: the inputs the plant drove are released.
+    fn detach(&mut self, machine: &mut dyn Plc);
+}
+
+/// Where a machine's plant is kept: none, or the rig coupled to it.
+pub type RigSlot = Option<Box<dyn Rig>>;
+
+/// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
+pub type Refusals = Vec<(usize, String)>;
+
+/// Couples a setup's plant to a machine, or refuses.
+pub type Build = fn(&PlantSetup, &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals>;
+
+/// One signal as the dock draws it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SignalShown {
+    /// Its name (`infeed`).
+    pub name: &'static str,
+    /// An actuator (the PLC drives it); else a sensor.
+    pub output: bool,
+    /// An analog signal (0..=100 000 is 0–100 %).
+    pub analog: bool,
+    /// Its value: what the PLC reads, or what acts on the plant.
+    pub value: i64,
+    /// The device it is wired to, if any.
+    pub device: Option<String>,
+}
+
+/// What the plant dock draws, published by the rig once per frame.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Shown {
+    /// The plant's engine name.
+    pub plant: &'static str,
+    /// Whether the machine runs (the plant stands still when not).
+    pub running: bool,
+    /// Its signals.
+    pub signals: Vec<SignalShown>,
+    /// Its quantities, by name.
+    pub quantities: Vec<(&'static str, i64)>,
+    /// The latest alarms: the machine's time in ms, the message.
+    pub alarms: Vec<(i64, String)>,
+    /// The plant's own figure: the conveyor's belt and part lengths and
+    /// its parts' leading edges (µm); the tank's level (thousandths of
+    /// a percent); empty for the others.
+    pub figure: Vec<i64>,
+}

@@ -1,0 +1,185 @@
+"""End-to-end: plants in the page (issue #52). The conveyor chosen on
+MINASEC-U under the book's ladder delivers parts (the count rises); a
+ladder that keeps the tank's fill valve open raises the overflow alarm,
+said in plant-alarm with its time; the wiring table refuses an analog
+signal on MINASEC-U at its row. Screenshots on a laptop and a phone."""
+
+import json
+import re
+import subprocess
+
+import pytest
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import Select
+
+from selenium.webdriver.common.keys import Keys
+
+from test_app import el, open_fresh, severe_console_messages, wait
+from test_ladder import HASHIGO, ROOT, focus_ladder, keys, place
+
+CONVEYOR = ROOT / "engine" / "programs" / "minasec-u" / "conveyor.json"
+
+
+def link_of(project, tmp_path):
+    """The share fragment of `project` (a dict), from `hashigo share`."""
+    path = tmp_path / "project.json"
+    path.write_text(json.dumps(project))
+    return subprocess.run([str(HASHIGO), "share", "--program", str(path)], check=True,
+                          capture_output=True, text=True).stdout.strip()
+
+
+def books_conveyor_without_its_plant():
+    project = json.loads(CONVEYOR.read_text())
+    project.pop("plant")
+    return project
+
+
+def fill_always():
+    """One rung: X07 normally closed -> Y00 (the tank's fill by default)."""
+    return {"format": "hashigo-project", "version": 1, "machine": "minasec-u",
+            "ladder": {"rungs": [{"cells": [[{"type": "contact", "kind": "nc", "device": "X07"},
+                                             {"type": "coil", "kind": "normal", "device": "Y00"}]]}]}}
+
+
+def choose(driver, plant):
+    Select(el(driver, "plant-select")).select_by_value(plant)
+    # The plants are a part fetched at the first choice.
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="wiring"]'),
+         message="the plants' part arrives")
+
+
+def quantity(driver, name):
+    return int(el(driver, f"plant-q-{name}").find_element(By.TAG_NAME, "output").text)
+
+
+def open_link(driver, base_url, fragment):
+    open_fresh(driver, base_url)
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "cell-0-0-0", reveal=False), message="the ladder opens")
+
+
+def test_the_books_ladder_runs_the_conveyor_and_parts_are_delivered(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    assert el(driver, "plant-conveyor")
+    labels = el(driver, "plant-conveyor").text
+    assert "infeed X00" in labels and "outfeed X01" in labels and "motor Y00" in labels, labels
+    # Stopped: the plant stands still.
+    assert quantity(driver, "placed") == 0
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 1, timeout=30,
+         message="a part is delivered")
+    first = quantity(driver, "delivered")
+    wait(driver, lambda: quantity(driver, "delivered") > first, timeout=30,
+         message="the count rises")
+    assert "delivered" in el(driver, "plant-delivered").text
+    # The motor lamp follows Y00, the belt's guard was kept: no alarm.
+    assert el(driver, "plant-alarm").text == "No alarm."
+    assert severe_console_messages(driver) == []
+
+
+def test_a_ladder_that_keeps_fill_on_raises_the_tanks_overflow_alarm(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(fill_always(), tmp_path))
+    choose(driver, "tank")
+    alarm = el(driver, "plant-alarm")
+    assert alarm.get_attribute("role") == "status"
+    assert alarm.get_attribute("aria-live") == "polite"
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: "overflow" in el(driver, "plant-alarm").text, timeout=30,
+         message="the overflow alarm is said")
+    text = el(driver, "plant-alarm").text
+    # Said with the simulated time it began at (the machine's clock).
+    assert re.fullmatch(r"Alarm at \d+\.\d{3} s: overflow: .*", text), text
+    assert el(driver, "plant-level").text == "100 %"
+
+
+def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(fill_always(), tmp_path))
+    choose(driver, "tank")
+    # By default the level is not wired: MINASEC-U has no analog input.
+    level = el(driver, "wiring-device-level")
+    assert level.get_attribute("value") == ""
+    level.send_keys("X04")
+    driver.execute_script("arguments[0].dispatchEvent(new Event('change', {bubbles: true}))", level)
+    el(driver, "wiring-apply").click()
+    refusal = el(driver, "wiring-refusal-level")
+    wait(driver, lambda: refusal.is_displayed(), message="refused at its row")
+    assert "analog" in refusal.text, refusal.text
+    assert el(driver, "wiring-device-level").get_attribute("aria-invalid") == "true"
+    # The other rows are not refused; the machine's default is one click away.
+    assert not el(driver, "wiring-refusal-fill").is_displayed()
+    el(driver, "wiring-default").click()
+    wait(driver, lambda: not el(driver, "wiring-refusal-level").is_displayed(),
+         message="the default wiring is taken")
+    assert el(driver, "wiring-device-level").get_attribute("value") == ""
+
+
+@pytest.mark.first_visit
+def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(driver, base_url):
+    from test_classroom import result
+    from test_start import shown
+
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-exercise"))
+    el(driver, "start-exercise").click()
+    wait(driver, lambda: shown(driver, "start-exercise-2"))
+    el(driver, "start-exercise-2").click()
+    wait(driver, lambda: "conveyor" in el(driver, "exercise-task").text, message="its task is shown")
+    # The exercise brings its plant, coupled on MINASEC-U.
+    assert el(driver, "machine").get_attribute("value") == "minasec-u"
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-conveyor"]'),
+         message="the conveyor is drawn")
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "T1")
+    place(driver, Keys.F5, "M00")
+    place(driver, Keys.F6, "X01")
+    place(driver, Keys.F7, "M01")
+    place(driver, Keys.F5, "X01")
+    place(driver, Keys.F7, "M00")
+    place(driver, Keys.F5, "T1")
+    place(driver, Keys.F6, "M01")
+    place(driver, Keys.F7, "Y00")
+    keys(driver, Keys.ARROW_UP)
+    place(driver, Keys.F5, "Y00", shift=True)
+    assert el(driver, "problems").text.strip() == "No problems."
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 2, timeout=40,
+         message="parts ride and are delivered")
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="exercise-result"]'))
+    wait(driver, lambda: result(driver)[0] == result(driver)[1], timeout=40,
+         message="Check my answer passes")
+    assert severe_console_messages(driver) == []
+
+
+@pytest.mark.parametrize("name", ["laptop", "phone"])
+def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
+    from test_screens import no_sideways_overflow, screen_driver
+
+    fragment = link_of(books_conveyor_without_its_plant(), tmp_path)
+    driver = screen_driver(tmp_path, name)
+    try:
+        open_link(driver, base_url, fragment)
+        choose(driver, "conveyor")
+        Select(el(driver, "speed")).select_by_value("10")
+        el(driver, "run").click()
+        wait(driver, lambda: quantity(driver, "placed") >= 1, timeout=30)
+        el(driver, "plant-conveyor")
+        driver.execute_script(
+            "document.querySelector('[data-testid=plant-conveyor]').scrollIntoView({block: 'center'})")
+        assert no_sideways_overflow(driver)
+        driver.save_screenshot(str(artifacts / f"plant-conveyor-{name}.png"))
+        choose(driver, "tank")
+        wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-tank"]'))
+        wait(driver, lambda: quantity(driver, "level") > 55, timeout=30, message="the level rises")
+        el(driver, "pause").click()
+        # The figure says the level as the quantity does (whole percent).
+        level = quantity(driver, "level")
+        assert el(driver, "plant-level").text == f"{level} %"
+        driver.save_screenshot(str(artifacts / f"plant-tank-{name}.png"))
+    finally:
+        driver.quit()
