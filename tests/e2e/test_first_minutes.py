@@ -8,9 +8,12 @@ artifacts/first-minutes-*.png."""
 
 import time
 
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 from test_app import el, open_fresh, wait
+from test_ladder import focus_ladder, keys, place
 
 MACHINES = ["minasec-u", "io86a", "arduino-plc", "avr-plc", "soft-plc"]
 
@@ -47,3 +50,20 @@ def test_every_machine_stands_stopped_until_run_then_keeps_the_walls_time(driver
         held = clock(driver)[1]
         time.sleep(0.4)
         assert clock(driver)[1] == held, f"{machine}: time stands still when stopped"
+
+
+def test_deleting_an_or_branchs_contact_leaves_no_stub(driver, base_url):
+    open_fresh(driver, base_url)
+    el(driver, "new-ladder").click()
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "cell-0-0-0").click()
+    keys(driver, Keys.DOWN)
+    place(driver, Keys.F5, "X01", shift=True)
+    links = "[data-testid=ladder] [class*=link-]"
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, links), message="the branch's link drawn")
+    el(driver, "cell-0-1-0").click()
+    keys(driver, Keys.DELETE)
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, links), message="no link left hanging")
+    assert el(driver, "cell-0-0-9").get_attribute("data-device") == "Y00", "the rest stays"
