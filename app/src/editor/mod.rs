@@ -147,7 +147,7 @@ pub fn tools(
         ),
         (Tool::Chart, view! { <chart::TimingChart ctx /> }.into_any()),
         (Tool::Tests, view! { <cases::TestsPane ctx /> }.into_any()),
-        (Tool::Why, view! { <why::WhyPanel ctx /> }.into_any()),
+        (Tool::Why, view! { <why::WhyPanel ctx on_back=refocus /> }.into_any()),
         (
             Tool::Listing,
             view! {
