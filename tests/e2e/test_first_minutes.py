@@ -67,3 +67,45 @@ def test_deleting_an_or_branchs_contact_leaves_no_stub(driver, base_url):
     keys(driver, Keys.DELETE)
     wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, links), message="no link left hanging")
     assert el(driver, "cell-0-0-9").get_attribute("data-device") == "Y00", "the rest stays"
+
+
+def test_w_opens_the_why_pane_and_focuses_it(driver, base_url):
+    open_fresh(driver, base_url)
+    el(driver, "new-ladder").click()
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    el(driver, "run").click()
+    el(driver, "dock-tab-watch").click()
+    el(driver, "cell-0-0-9").click()
+    keys(driver, "w")
+    wait(driver, lambda: el(driver, "dock-tab-why", reveal=False).get_attribute("aria-selected") == "true",
+         message="the Why? tab shown")
+    head = wait(driver, lambda: el(driver, "why-head", reveal=False))
+    assert head.is_displayed() and "Y00" in head.text, head.text
+    wait(driver, lambda: driver.execute_script(
+        "return document.querySelector('[data-testid=why-panel]').contains(document.activeElement)"),
+        message="the answer takes the focus")
+    # Escape: back to the ladder, where the cursor was.
+    keys(driver, Keys.ESCAPE)
+    wait(driver, lambda: driver.switch_to.active_element.get_attribute("data-testid") == "ladder")
+
+
+def test_the_phones_toolbar_has_no_two_look_alike_buttons(tmp_path, base_url, artifacts):
+    from test_screens import screen_driver
+
+    driver = screen_driver(tmp_path, "phone")
+    try:
+        open_fresh(driver, base_url)
+        shown = driver.execute_script(
+            "return [...document.querySelectorAll('.ladder-toolbar button')]"
+            ".filter(b => b.getClientRects().length)"
+            ".map(b => [b.dataset.testid, b.innerText.trim(), b.title || '', !!b.querySelector('svg')])")
+        faces = [(face, svg) for _, face, _, svg in shown]
+        looks = [f"{face}|{svg}" for face, svg in faces]
+        assert len(set(looks)) == len(looks), shown
+        icons = [b for b in shown if b[3] or len(b[1]) <= 2]
+        assert all(title for _, _, title, _ in icons), f"each icon names itself on hover: {icons}"
+        el(driver, "new-ladder").screenshot(str(artifacts / "first-minutes-new-ladder.png"))
+    finally:
+        driver.quit()
