@@ -109,3 +109,29 @@ def test_the_phones_toolbar_has_no_two_look_alike_buttons(tmp_path, base_url, ar
         el(driver, "new-ladder").screenshot(str(artifacts / "first-minutes-new-ladder.png"))
     finally:
         driver.quit()
+
+
+def test_on_a_phone_an_exercises_tests_leave_the_ladder_and_its_strip_usable(tmp_path, base_url, artifacts):
+    from test_screens import on_screen, screen_driver
+
+    driver = screen_driver(tmp_path, "phone", first_visit=True)
+    try:
+        driver.get(base_url)
+        wait(driver, lambda: el(driver, "start-exercise").is_displayed())
+        el(driver, "start-exercise").click()
+        wait(driver, lambda: el(driver, "start-exercise-0").is_displayed())
+        el(driver, "start-exercise-0").click()
+        wait(driver, lambda: el(driver, "exercise-task", reveal=False).is_displayed(),
+             message="the exercise opens with its task in the Tests tab")
+        # The Tests tab's name whole, not under the "?" beside the tabs.
+        wait(driver, lambda: driver.execute_script(
+            "const t = document.querySelector('[data-testid=dock-tab-tests]').getBoundingClientRect();"
+            "const s = t && document.querySelector('.dock-tabs').getBoundingClientRect();"
+            "return t.left >= s.left - 1 && t.right <= s.right + 1;"), message="the Tests tab whole")
+        # The palette, the ladder and the strip of its inputs on screen,
+        # above the sheet, without anything moved by hand.
+        for testid in ["palette", "ladder", "io-strip"]:
+            wait(driver, lambda: on_screen(driver, testid), message=f"{testid} on screen")
+        driver.save_screenshot(str(artifacts / "first-minutes-phone-exercise.png"))
+    finally:
+        driver.quit()
