@@ -135,3 +135,43 @@ def test_on_a_phone_an_exercises_tests_leave_the_ladder_and_its_strip_usable(tmp
         driver.save_screenshot(str(artifacts / "first-minutes-phone-exercise.png"))
     finally:
         driver.quit()
+
+
+def axis_scans(driver):
+    import re
+    return [int(n) for n in re.findall(r"scan (\d+)", el(driver, "chart-axis", reveal=False).text)]
+
+
+def test_the_timing_chart_opens_on_what_was_recorded_and_follows_it(driver, base_url, artifacts):
+    from test_ladder import seed_running
+
+    driver.set_window_size(1366, 768)
+    seed_running(driver, base_url, "1")
+    el(driver, "input-X00").click()
+    wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="started")
+    el(driver, "input-X00").click()
+    time.sleep(3)
+    el(driver, "dock-tab-chart").click()
+    # Seconds of the run in view, T0's pulses among them: not flat traces
+    # of the last moment.
+    t0 = wait(driver, lambda: el(driver, "chart-row-T0", reveal=False))
+    wait(driver, lambda: int(t0.get_attribute("data-rises")) >= 2, message="T0's pulses in view")
+    # All that was recorded (a few seconds' scans), from its first scan.
+    first = int(el(driver, "timeline").get_attribute("min"))
+    assert axis_scans(driver)[0] <= first + 1, (first, axis_scans(driver))
+    shown = driver.execute_script(
+        "const body = document.querySelector('[data-testid=dock-bottom] .dock-body').getBoundingClientRect();"
+        "return [...document.querySelectorAll('.chart-name')].filter(r => {"
+        "  const b = r.getBoundingClientRect(); return b.height > 0 && b.bottom <= body.bottom + 1; }).length;")
+    assert shown >= 4, f"rows in view in the dock at 1366x768: {shown}"
+    driver.save_screenshot(str(artifacts / "first-minutes-chart.png"))
+    # It follows the newest scan while running.
+    newest = axis_scans(driver)[-1]
+    wait(driver, lambda: axis_scans(driver)[-1] > newest, message="the view follows the run")
+    # A scan travelled to, before the view, is brought into it.
+    el(driver, "pause").click()
+    driver.execute_script(
+        "const s = arguments[0]; s.value = String(arguments[1]);"
+        "s.dispatchEvent(new Event('input', {bubbles: true}));", el(driver, "timeline"), first + 5)
+    wait(driver, lambda: axis_scans(driver)[0] <= first + 5 <= axis_scans(driver)[-1],
+         message=f"scan {first + 5} in view: {axis_scans(driver)}")
