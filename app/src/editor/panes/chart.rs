@@ -125,6 +125,9 @@ struct Chart {
     /// a band is wide enough to write its value in.
     shown: RwSignal<f64>,
     plot: NodeRef<leptos::html::Div>,
+    /// What was last read (scans, devices, the drawing's revision): a
+    /// redraw that would read the same skips the reading.
+    read: StoredValue<Option<(Mark, Mark, Vec<String>, u64)>>,
 }
 
 impl Chart {
@@ -139,6 +142,7 @@ impl Chart {
             data: RwSignal::new(ChartData::default()),
             shown: RwSignal::new(WIDTH as f64),
             plot: NodeRef::new(),
+            read: StoredValue::new(None),
         }
     }
 
@@ -157,12 +161,16 @@ impl Chart {
             .devices
             .get()
             .unwrap_or_else(|| default_devices(self.ctx));
-        // Travelling: the scan shown is brought into view.
-        self.ctx.travel.shown.track();
+        let revision = self.ctx.drawing.revision.get_untracked();
         let fresh = self.ctx.recorded(|tr| {
             let (first, last) = tr.marks();
             let wide = w.span.unwrap_or_else(|| span::auto_span((first, last)));
             let (from, end) = span::in_view(w, wide, (first, last), tr.shown());
+            let key = (from, end, names.clone(), revision);
+            if self.read.with_value(|r| r.as_ref() == Some(&key)) {
+                return None;
+            }
+            self.read.set_value(Some(key));
             let rows = names
                 .iter()
                 .map(|n| {
@@ -175,13 +183,13 @@ impl Chart {
                     (n.clone(), values)
                 })
                 .collect();
-            ChartData {
+            Some(ChartData {
                 from,
                 times: tr.times(from, end),
                 rows,
-            }
+            })
         });
-        if let Some(fresh) = fresh {
+        if let Some(fresh) = fresh.flatten() {
             if self.data.with_untracked(|d| *d != fresh) {
                 self.data.set(fresh);
             }
@@ -348,6 +356,19 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         ctx.travel.chart_tick.track();
         ctx.drawing.revision.track();
         chart.redraw();
+    });
+    // A scan travelled to outside the view brings the view to it (a seek
+    // within it only moves the cursor: nothing is read again).
+    Effect::new(move |_| {
+        let Some(at) = ctx.travel.shown.get() else {
+            return;
+        };
+        let out = chart
+            .data
+            .with_untracked(|d| d.index_of(Some(at)).is_none_or(|i| i >= d.times.len()));
+        if out {
+            chart.redraw();
+        }
     });
     // Another project on a clean slate: the chart's choices (devices,
     // the scan clicked, the window) were the last project's.
