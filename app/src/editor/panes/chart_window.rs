@@ -13,7 +13,7 @@ use engine::record::Mark;
 
 /// The most scans shown until the user zooms (a fast machine records a
 /// million scans in a minute; every redraw reads those in view).
-pub const AUTO_MAX_SCANS: u64 = 10_000;
+pub const AUTO_MAX_SCANS: u64 = 5_000;
 /// The fewest scans in view.
 pub const MIN_SPAN: u64 = 8;
 
