@@ -127,7 +127,7 @@ struct Chart {
     plot: NodeRef<leptos::html::Div>,
     /// What was last read (scans, devices, the drawing's revision): a
     /// redraw that would read the same skips the reading.
-    read: StoredValue<Option<(Mark, Mark, Vec<String>, u64)>>,
+    read: StoredValue<Option<span::Read>>,
 }
 
 impl Chart {

@@ -14,6 +14,10 @@ use engine::record::Mark;
 /// The most scans shown until the user zooms (a fast machine records a
 /// million scans in a minute; every redraw reads those in view).
 pub const AUTO_MAX_SCANS: u64 = 5_000;
+/// What a chart read: the scans `from..=end`, its devices, the drawing's
+/// revision.
+pub type Read = (Mark, Mark, Vec<String>, u64);
+
 /// The fewest scans in view.
 pub const MIN_SPAN: u64 = 8;
 
