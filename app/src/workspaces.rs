@@ -58,6 +58,9 @@ impl Workspaces {
         let ladder = ladders.of(MachineId::MinasecU);
         ladder.attach(machines::link(minasec.sim, move || minasec.refresh()));
         ladder.connect(minasec_program);
+        // Every machine powers up in STOP: time stands still until Run
+        // (the others as they arrive, `arrival::wire`).
+        ladder.stop_at_power_up();
         Workspaces {
             minasec,
             arrivals: MachineId::ALL.map(|_| RwSignal::new_local(Arrival::NotAsked)),

@@ -22,6 +22,9 @@ def replace_program(driver, prefix, text):
 
 def test_arduino_self_hold_monitor_and_quirk(driver, base_url):
     choose(driver, base_url, "arduino-plc", "arduino-monitor")
+    # Stopped until started: the sketch's own program, loaded and run from
+    # its pane (Run would write the drawing).
+    el(driver, "arduino-program-load").click()
     el(driver, "arduino-input-X000").click()
     wait(driver, lambda: on(driver, "arduino-lamp-Y000"), message="start")
     el(driver, "arduino-input-X000").click()
@@ -58,6 +61,9 @@ def test_arduino_warns_about_running_into_erased_eeprom(driver, base_url):
 
 def test_avr_named_bits_and_the_tof_warning(driver, base_url):
     choose(driver, base_url, "avr-plc", "avr-program-text")
+    # Powered off until started: the program's own named bits, loaded
+    # from its pane (Run would write the drawing, named by addresses).
+    el(driver, "avr-program-load").click()
     for name in ["INPUT1", "INPUT2"]:
         el(driver, f"avr-input-{name}").click()
     wait(driver, lambda: on(driver, "avr-lamp-COIL1") and on(driver, "avr-lamp-COIL2"))
@@ -123,6 +129,7 @@ def test_arduino_and_avr_saves_are_checked_and_migrated(driver, base_url):
     Select(el(driver, "machine")).select_by_value("arduino-plc")
     area = wait(driver, lambda: el(driver, "arduino-program-text"))
     assert "taken over" in area.get_attribute("value")
+    el(driver, "arduino-program-load").click()
     el(driver, "arduino-input-X001").click()
     wait(driver, lambda: on(driver, "arduino-lamp-Y001"), message="the taken-over program runs")
     # Edits are saved in the checked form.

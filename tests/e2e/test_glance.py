@@ -134,11 +134,16 @@ def test_the_chart_writes_a_counters_value_in_its_band(driver, base_url):
     el(driver, "chart-add").send_keys("C0.v", Keys.ENTER)
     wait(driver, lambda: el(driver, "chart-row-C0.v"))
     assert el(driver, "chart-row-C0.v").get_attribute("data-shape") == "bands"
-    texts = lambda: [int(t.text) for t in driver.find_elements(
-        By.CSS_SELECTOR, '.chart-band-text[data-row="C0.v"]') if re.fullmatch(r"\d+", t.text)]
+    # Read in one go: the chart shows all that was recorded and rewrites
+    # its bands as the run goes on.
+    texts = lambda: [int(t) for t in driver.execute_script(
+        "return [...document.querySelectorAll('.chart-band-text[data-row=\"C0.v\"]')].map(e => e.textContent)")
+        if re.fullmatch(r"\d+", t)]
     wait(driver, lambda: any(v > 0 for v in texts()), timeout=30, message="a count written in its band")
     values = texts()
-    assert values == sorted(values), f"a counter counts up: {values}"
+    # It counts up, back to 0 only at its reset (C0R), which the whole
+    # recording in view may show.
+    assert all(b > a or b <= 1 for a, b in zip(values, values[1:])), f"a counter counts up: {values}"
     # The bits are steps, not bands.
     assert el(driver, "chart-row-Y00").get_attribute("data-shape") == "bits"
     axis = el(driver, "chart-axis").text

@@ -25,6 +25,9 @@ def type_at_terminal(driver, line):
 def test_the_manuals_blink_runs_and_the_choice_is_remembered(driver, base_url):
     open_io86a(driver, base_url)
     assert "LDI T01" in el(driver, "io86a-program-text").get_attribute("value")
+    # Stopped until Run (docs/app.md, "Stopped until Run").
+    assert el(driver, "sim-time").get_attribute("data-state") == "stopped"
+    el(driver, "run").click()
     seen = set()
 
     def toggled():

@@ -106,15 +106,12 @@ def test_a_rung_in_view_run_and_driven_from_one_screen(screen, base_url, artifac
     if not touch:
         assert not page_scrolls(driver), "the page itself does not scroll"
 
-    # Stopped (MINASEC-U, the Arduino and the soft PLC open stopped; the
-    # IO86A and the AVR PLC run their own program from power-up, as the
-    # devices do): simulated time stands still.
-    # Stopped (MINASEC-U opens halted; the IO86A and the AVR PLC run their
-    # own program from power-up, as the devices do): time stands still.
+    # Every machine stands stopped until Run (the AVR PLC powered off):
+    # simulated time stands still.
+    assert el(driver, "sim-time").get_attribute("data-state") == "stopped", "stopped until Run"
     before = clock_ms(driver)
     time.sleep(0.3)
-    if el(driver, "sim-time").get_attribute("data-state") == "stopped":
-        assert clock_ms(driver) == before, "no time passes while stopped"
+    assert clock_ms(driver) == before, "no time passes while stopped"
     assert el(driver, "run").get_attribute("aria-pressed") == "false", "Run writes the drawing"
 
     el(driver, "run").click()

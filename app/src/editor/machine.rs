@@ -102,6 +102,33 @@ impl LadderCtx {
         }
     }
 
+    /// Power-up in STOP: nothing runs and simulated time stands still
+    /// until Run (docs/app.md, "Stopped until Run"). A machine with a
+    /// RUN switch is switched to STOP; the AVR PLC, which has none, stays
+    /// powered off.
+    pub fn stop_at_power_up(&self) {
+        if self.machine.target().stoppable() {
+            self.operate(|plc| {
+                let _ = plc.apply(engine::plc::Command::Run(false));
+            });
+        } else {
+            self.live.powered_off.set(true);
+        }
+        self.live.monitor.set(false);
+    }
+
+    /// The program pane's own Load: the program loaded is started, as the
+    /// IO86A's and the Arduino's loads always did (a download to the
+    /// PLC, then RUN); the AVR PLC is powered on.
+    pub fn run_loaded(&self) {
+        self.live.powered_off.set(false);
+        if self.machine.target().stoppable() {
+            self.operate(|plc| {
+                let _ = plc.apply(engine::plc::Command::Run(true));
+            });
+        }
+    }
+
     fn link(&self) -> Option<std::rc::Rc<dyn MachineLink>> {
         self.live.link.with_value(Clone::clone)
     }

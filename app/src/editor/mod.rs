@@ -139,7 +139,8 @@ pub fn tools(
 ) -> Vec<(crate::docks::Tool, AnyView)> {
     use crate::docks::Tool;
     let refocus = Callback::new(move |()| grid::focus(grid));
-    let mut tools = vec![
+    let mut tools =
+        vec![
         (
             Tool::Watch,
             view! { <div class="dock-pair"><live::WatchTable ctx /><live::ForceList ctx /></div> }
@@ -147,7 +148,7 @@ pub fn tools(
         ),
         (Tool::Chart, view! { <chart::TimingChart ctx /> }.into_any()),
         (Tool::Tests, view! { <cases::TestsPane ctx /> }.into_any()),
-        (Tool::Why, view! { <why::WhyPanel ctx /> }.into_any()),
+        (Tool::Why, view! { <why::WhyPanel ctx on_back=refocus /> }.into_any()),
         (
             Tool::Listing,
             view! {
@@ -224,7 +225,13 @@ fn Toolbar(
                 on:click=move |_| {
                     ctx.new_ladder();
                     refocus.run(());
-                }><span aria-hidden="true">"+"</span><span class="wide-only" aria-hidden="true">{move || t().new_ladder}</span></button>
+                }>
+                // A blank sheet, not "+": the zoom bar's "+" sat beside it on
+                // a phone, where the labels are hidden.
+                <svg class="icon" viewBox="0 0 16 16" aria-hidden="true">
+                    <path d="M3.5 1.5h6l3 3v10h-9z M9.5 1.5v3h3" fill="none" stroke="currentColor" stroke-width="1.4" stroke-linejoin="round" />
+                </svg>
+                <span class="wide-only" aria-hidden="true">{move || t().new_ladder}</span></button>
             <button type="button" class="icon-button" data-testid="undo" disabled=move || !ctx.drawing.can_undo.get()
                 title=move || format!("{} (Ctrl+Z)", t().undo) aria-label=move || t().undo
                 on:click=move |_| { ctx.undo(); refocus.run(()); }>"↶"</button>

@@ -62,9 +62,9 @@ pub fn ZoomBar(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl IntoVie
     let t = move || ctx.page.lang.get().texts();
     view! {
         <span class="zoom-bar" role="group" aria-label=move || t().zoom>
-            <button type="button" data-testid="zoom-out" aria-label=move || t().zoom_out on:click=move |_| step(ctx, false)>"−"</button>
+            <button type="button" data-testid="zoom-out" title=move || t().zoom_out aria-label=move || t().zoom_out on:click=move |_| step(ctx, false)>"−"</button>
             <span class="zoom-at" data-testid="zoom-at">{move || format!("{:.0} %", ctx.panes.zoom.get() * 100.0)}</span>
-            <button type="button" data-testid="zoom-in" aria-label=move || t().zoom_in on:click=move |_| step(ctx, true)>"+"</button>
+            <button type="button" data-testid="zoom-in" title=move || t().zoom_in aria-label=move || t().zoom_in on:click=move |_| step(ctx, true)>"+"</button>
             <button type="button" data-testid="zoom-fit" on:click=move |_| fit_width(ctx, grid)>{move || t().zoom_fit}</button>
             <button type="button" data-testid="zoom-100" on:click=move |_| ctx.panes.zoom.set(1.0)>"100 %"</button>
         </span>

@@ -50,6 +50,8 @@ pub fn wire(ladder: LadderCtx, link: Rc<dyn MachineLink>, program: Program) {
     ladder.refresh(false);
     ladder.attach(link);
     ladder.connect(program);
+    // It powers up in STOP, as every machine does, until Run.
+    ladder.stop_at_power_up();
     ladder.arrived();
 }
 

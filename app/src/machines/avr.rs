@@ -199,6 +199,8 @@ pub fn AvrProgram(avr: AvrCtx) -> impl IntoView {
                     .collect::<Vec<_>>()
             })
     });
+    // The pane's Load starts the program loaded (the ladder's machine).
+    let ladder = use_context::<crate::editor::LadderCtx>();
     view! {
         <TextProgramPane
             as_ladder=true
@@ -209,7 +211,11 @@ pub fn AvrProgram(avr: AvrCtx) -> impl IntoView {
                 storage::save_to(KEY, &storage::SavedText { program });
             })
             on_load=Callback::new(move |()| {
-                avr.load();
+                if avr.load() {
+                            if let Some(ladder) = ladder {
+                                ladder.run_loaded();
+                            }
+                        }
             })
             warning=Signal::derive(move || {
                 (parsed.get() == Ok(true)).then(|| t().warn_tof.to_string())

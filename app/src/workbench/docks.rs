@@ -48,6 +48,19 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
             }
         })
         .collect_view();
+    // The tab shown is brought into its strip's view (on a phone the
+    // strip scrolls sideways and cut "Tests" under the "?"), and the
+    // phone's sheet leaves the ladder and its strip above it.
+    Effect::new(move |_| {
+        let tool = docks.tool.get();
+        let up = docks.sheet.get() && open();
+        request_animation_frame(move || {
+            show_tab(tool);
+            if up && tool != Tool::Panel {
+                ladder_above_sheet();
+            }
+        });
+    });
     view! {
         <section class="dock dock-bottom" data-testid="dock-bottom"
             data-open=move || open().to_string()
@@ -75,6 +88,66 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
             </div>
             <div class="dock-body">{panels}</div>
         </section>
+    }
+}
+
+/// Scrolls the tab strip (not the page) so that `tool`'s tab is whole.
+fn show_tab(tool: Tool) {
+    let doc = document();
+    let Some(tab) = doc.get_element_by_id(&format!("dock-tab-{}", tool.hook())) else {
+        return;
+    };
+    let Some(strip) = tab.parent_element() else {
+        return;
+    };
+    let (t, s) = (
+        tab.get_bounding_client_rect(),
+        strip.get_bounding_client_rect(),
+    );
+    let by = if t.right() > s.right() {
+        t.right() - s.right()
+    } else if t.left() < s.left() {
+        t.left() - s.left()
+    } else {
+        return;
+    };
+    strip.set_scroll_left(strip.scroll_left() + by.round() as i32);
+}
+
+/// On a phone, with a tool up in the bottom sheet: the page scrolls (as
+/// little as it must, never past the ladder's top) so that the ladder and
+/// the strip of its inputs end above the sheet (docs/app.md, "Every
+/// screen").
+fn ladder_above_sheet() {
+    let doc = document();
+    let rect = |selector: &str| {
+        doc.query_selector(selector)
+            .ok()
+            .flatten()
+            .map(|e| e.get_bounding_client_rect())
+    };
+    let (Some(ladder), Some(sheet)) = (
+        rect("[data-testid=ladder]"),
+        rect(".dock-bottom[data-sheet=true] .dock-body"),
+    ) else {
+        return;
+    };
+    // Only where the sheet lies over the page (a phone): elsewhere the
+    // dock is in the page's flow, under the ladder.
+    let over = doc
+        .query_selector(".dock-bottom")
+        .ok()
+        .flatten()
+        .and_then(|d| window().get_computed_style(&d).ok().flatten())
+        .and_then(|s| s.get_property_value("position").ok())
+        .is_some_and(|p| p == "fixed");
+    if !over || sheet.height() <= 0.0 || ladder.bottom() <= sheet.top() {
+        return;
+    }
+    let strip = rect("[data-testid=io-strip]").map_or(0.0, |s| s.height());
+    let by = (ladder.bottom() + strip - sheet.top()).min(ladder.top());
+    if by > 0.0 {
+        window().scroll_by_with_x_and_y(0.0, by);
     }
 }
 

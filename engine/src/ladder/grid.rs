@@ -90,6 +90,34 @@ impl Rung {
         row[pos.col] = element;
     }
 
+    /// Removes the vertical links left hanging at the edges of the cell
+    /// `pos` once it was emptied: a link whose end at a point on this
+    /// row meets no element and no other link leads nowhere (an OR
+    /// branch's contact deleted left its links drawn as a stub). The
+    /// link's other end is looked at in turn, so a branch's links go
+    /// together; links elsewhere, drawn by hand ahead of their contacts,
+    /// stay.
+    pub fn remove_stubs_around(&mut self, pos: Pos) {
+        let mut points = vec![(pos.row, pos.col), (pos.row, pos.col + 1)];
+        while let Some((row, edge)) = points.pop() {
+            // The left rail is not a stub: every row meets it.
+            let meets_a_cell = edge == 0
+                || self.get(Pos::new(row, edge - 1)).is_some()
+                || self.get(Pos::new(row, edge)).is_some();
+            if meets_a_cell {
+                continue;
+            }
+            let at_point = |l: &Link| l.col == edge && (l.row == row || l.row + 1 == row);
+            let mut here = self.links.iter().filter(|l| at_point(l));
+            let (Some(&only), None) = (here.next(), here.next()) else {
+                continue;
+            };
+            self.links.retain(|l| *l != only);
+            let other = if only.row == row { row + 1 } else { only.row };
+            points.push((other, edge));
+        }
+    }
+
     /// Whether the rung holds nothing at all.
     pub fn is_empty(&self) -> bool {
         self.cells.iter().flatten().all(Option::is_none) && self.links.is_empty()

@@ -411,3 +411,96 @@ fn the_seed_program_drawn_edit_by_edit_compiles_like_the_seed_ladder() {
     let theirs = compile(&seed.ladder, MachineId::MinasecU, Options::default()).expect("compiles");
     assert_eq!(ours, theirs);
 }
+
+#[test]
+fn deleting_an_or_branchs_contact_takes_its_links_along() {
+    // X00 and, below it, X01 in an OR branch; a second branch under X02
+    // at column 1 whose links stay while it keeps its contact.
+    let mut e = Editor::default();
+    for (edit, what) in [
+        (
+            Edit::Place {
+                at: at(0, 0, 0),
+                element: no("X00"),
+            },
+            "X00",
+        ),
+        (
+            Edit::PlaceBranch {
+                at: at(0, 1, 0),
+                element: no("X01"),
+            },
+            "X01",
+        ),
+        (
+            Edit::Place {
+                at: at(0, 0, 1),
+                element: no("X02"),
+            },
+            "X02",
+        ),
+        (
+            Edit::PlaceBranch {
+                at: at(0, 1, 1),
+                element: nc("X03"),
+            },
+            "X03",
+        ),
+    ] {
+        e.apply(edit).unwrap_or_else(|err| panic!("{what}: {err}"));
+    }
+    let both = [Link { row: 0, col: 1 }, Link { row: 0, col: 2 }];
+    assert_eq!(e.ladder().rungs[0].links, both);
+    // X01 deleted: its right-hand link (col 1) still meets X03's left
+    // edge, so both stay.
+    let e = applies(e, Edit::Clear { at: at(0, 1, 0) });
+    assert_eq!(e.ladder().rungs[0].links, both, "col 1 still joins X03");
+    // X03 deleted too: nothing on the lower row, no stubs left.
+    let e = applies(e, Edit::Clear { at: at(0, 1, 1) });
+    assert_eq!(
+        e.ladder().rungs[0].links,
+        [],
+        "no stub left hanging: {:?}",
+        e.ladder().rungs[0]
+    );
+    // The same by a block cleared, in one undoable step.
+    let mut e = Editor::default();
+    for edit in [
+        Edit::Place {
+            at: at(0, 0, 0),
+            element: no("X00"),
+        },
+        Edit::PlaceBranch {
+            at: at(0, 1, 0),
+            element: no("X01"),
+        },
+    ] {
+        e.apply(edit).expect("drawn");
+    }
+    let e = applies(
+        e,
+        Edit::ClearBlock {
+            from: at(0, 1, 0),
+            to: at(0, 1, 0),
+        },
+    );
+    assert_eq!(e.ladder().rungs[0].links, []);
+    // A link drawn by hand with nothing yet below is the user's: a Clear
+    // elsewhere leaves it.
+    let mut e = Editor::default();
+    for edit in [
+        Edit::Place {
+            at: at(0, 0, 0),
+            element: no("X00"),
+        },
+        Edit::Place {
+            at: at(0, 0, 2),
+            element: no("X05"),
+        },
+        Edit::ToggleLink { at: at(0, 0, 1) },
+    ] {
+        e.apply(edit).expect("drawn");
+    }
+    let e = applies(e, Edit::Clear { at: at(0, 0, 2) });
+    assert_eq!(e.ladder().rungs[0].links, [Link { row: 0, col: 1 }]);
+}

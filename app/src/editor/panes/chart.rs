@@ -11,23 +11,14 @@ use engine::record::Mark;
 use engine::SimTime;
 use leptos::prelude::*;
 
+use super::chart_window::{self as span, Window};
 use crate::editor::{bands, LadderCtx};
 
 /// The chart's width in pixels (one column per pixel).
 const WIDTH: usize = 600;
-/// Each device's row height in pixels (a name button fits beside it).
-const ROW: usize = 30;
-/// Scans in view when following, at first.
-const SPAN: u64 = 600;
-
-/// Which scans are in view.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Window {
-    /// How many scans wide.
-    span: u64,
-    /// The last scan in view; `None` follows the newest.
-    end: Option<Mark>,
-}
+/// Each device's row height in pixels (a name button fits beside it;
+/// a short dock shows more rows than at 30).
+const ROW: usize = 24;
 
 /// What is drawn: the scans in view, each device's values, their times.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -134,6 +125,9 @@ struct Chart {
     /// a band is wide enough to write its value in.
     shown: RwSignal<f64>,
     plot: NodeRef<leptos::html::Div>,
+    /// What was last read (scans, devices, the drawing's revision): a
+    /// redraw that would read the same skips the reading.
+    read: StoredValue<Option<span::Read>>,
 }
 
 impl Chart {
@@ -141,16 +135,14 @@ impl Chart {
         Chart {
             ctx,
             devices: RwSignal::new(None),
-            window: RwSignal::new(Window {
-                span: SPAN,
-                end: None,
-            }),
+            window: RwSignal::new(Window::FOLLOW),
             cursor: RwSignal::new(None),
             adding: RwSignal::new(String::new()),
             error: RwSignal::new(None),
             data: RwSignal::new(ChartData::default()),
             shown: RwSignal::new(WIDTH as f64),
             plot: NodeRef::new(),
+            read: StoredValue::new(None),
         }
     }
 
@@ -169,10 +161,22 @@ impl Chart {
             .devices
             .get()
             .unwrap_or_else(|| default_devices(self.ctx));
+        let revision = self.ctx.drawing.revision.get_untracked();
+        // The view goes to a scan travelled to only while the chart is in
+        // sight: hidden, it is not read again at every seek.
+        let docks = self.ctx.page.docks;
+        let seen =
+            docks.tool.get() == crate::docks::Tool::Chart && docks.sizes.with(|s| s.bottom_open);
         let fresh = self.ctx.recorded(|tr| {
             let (first, last) = tr.marks();
-            let end = w.end.unwrap_or(last).clamp(first, last);
-            let from = end.saturating_sub(w.span.saturating_sub(1)).max(first);
+            let wide = w.span.unwrap_or_else(|| span::auto_span((first, last)));
+            let at = tr.shown().filter(|_| seen);
+            let (from, end) = span::in_view(w, wide, (first, last), at);
+            let key = (from, end, names.clone(), revision);
+            if self.read.with_value(|r| r.as_ref() == Some(&key)) {
+                return None;
+            }
+            self.read.set_value(Some(key));
             let rows = names
                 .iter()
                 .map(|n| {
@@ -185,13 +189,13 @@ impl Chart {
                     (n.clone(), values)
                 })
                 .collect();
-            ChartData {
+            Some(ChartData {
                 from,
                 times: tr.times(from, end),
                 rows,
-            }
+            })
         });
-        if let Some(fresh) = fresh {
+        if let Some(fresh) = fresh.flatten() {
             if self.data.with_untracked(|d| *d != fresh) {
                 self.data.set(fresh);
             }
@@ -246,17 +250,29 @@ impl Chart {
         self.devices.set(Some(list));
     }
 
+    /// The scans in view now (the automatic span's, until a zoom).
+    fn wide(self) -> u64 {
+        self.window.get_untracked().span.unwrap_or_else(|| {
+            self.data
+                .with_untracked(|d| d.times.len() as u64)
+                .max(span::MIN_SPAN)
+        })
+    }
+
     fn zoom(self, factor: f64) {
+        let wide = self.wide();
         self.window.update(|w| {
-            let span = (w.span as f64 * factor).round() as u64;
-            w.span = span.clamp(8, 1_000_000);
+            let span = (wide as f64 * factor).round() as u64;
+            w.span = Some(span.clamp(span::MIN_SPAN, 1_000_000));
         });
     }
 
     fn pan(self, dir: i64) {
         let (first, last) = self.ctx.travel.marks.get_untracked();
+        let wide = self.wide();
         self.window.update(|w| {
-            let end = w.end.unwrap_or(last) as i64 + dir * (w.span as i64 / 2);
+            w.span = Some(wide);
+            let end = w.end.unwrap_or(last) as i64 + dir * (wide as i64 / 2);
             let end = (end.max(first as i64) as u64).min(last);
             w.end = Some(end);
         });
@@ -347,6 +363,19 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
         ctx.drawing.revision.track();
         chart.redraw();
     });
+    // A scan travelled to outside the view brings the view to it (a seek
+    // within it only moves the cursor: nothing is read again).
+    Effect::new(move |_| {
+        let Some(at) = ctx.travel.shown.get() else {
+            return;
+        };
+        let out = chart
+            .data
+            .with_untracked(|d| d.index_of(Some(at)).is_none_or(|i| i >= d.times.len()));
+        if out {
+            chart.redraw();
+        }
+    });
     // Another project on a clean slate: the chart's choices (devices,
     // the scan clicked, the window) were the last project's.
     Effect::new(move |first: Option<()>| {
@@ -355,15 +384,14 @@ pub fn TimingChart(ctx: LadderCtx) -> impl IntoView {
             chart.devices.set(None);
             chart.cursor.set(None);
             chart.error.set(None);
-            chart.window.set(Window {
-                span: SPAN,
-                end: None,
-            });
+            chart.window.set(Window::FOLLOW);
         }
     });
     view! {
         <section class="chart-pane" data-testid="timing-chart">
-            <h3>{move || t().chart}</h3>
+            // Its dock tab names it: the heading is for screen readers, the
+            // rows get the height.
+            <h3 class="sr-only">{move || t().chart}</h3>
             <ChartTools chart />
             <p class="chart-error" role="alert">{move || chart.error.get()}</p>
             <div class="chart-body">
@@ -405,13 +433,14 @@ fn ChartNames(chart: Chart) -> impl IntoView {
     view! {
         <div class="chart-names">
             {move || {
+                let pins = span::pin_names(&chart.ctx.ladder());
                 chart.data.with(|d| {
                     d.rows.iter().enumerate().map(|(row, (name, _))| {
                         let gone = name.clone();
                         let v = move || chart.value_at(row).map(|v| v.to_string());
                         view! {
                             <div class="chart-name" style=format!("height: {ROW}px")>
-                                <span>{name.clone()}</span>
+                                <span>{span::row_name(&pins, name)}</span>
                                 <span class="chart-value" data-testid=format!("chart-value-{name}")>{v}</span>
                                 <button type="button" aria-label=format!("{} {name}", t().delete_test)
                                     on:click=move |_| chart.remove(&gone)>"×"</button>

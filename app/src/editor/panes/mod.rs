@@ -4,6 +4,7 @@
 
 pub mod cases;
 pub mod chart;
+mod chart_window;
 pub mod exercise;
 pub mod find;
 pub mod projects;

@@ -226,22 +226,39 @@ fn outputs(ladder: &engine::ladder::Ladder, device: &str) -> Vec<(usize, Pos)> {
 }
 
 /// The Why? button and the explanation: `[data-testid=why-panel]`.
+/// `on_back` gives the ladder the focus back (Escape).
 #[component]
-pub fn WhyPanel(ctx: LadderCtx) -> impl IntoView {
+pub fn WhyPanel(ctx: LadderCtx, on_back: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
+    let pane = NodeRef::<leptos::html::Section>::new();
     let ask = move || {
         ctx.why.shown.set(explain(ctx));
         ctx.why.stale.set(false);
     };
-    // The W key asks through the editor's action, seen here.
+    // The W key asks through the editor's action, seen here: the answer
+    // is shown in its tab (it only outlined the cell when another tab was
+    // up) and takes the focus once drawn, so it is read out; Escape goes
+    // back to the ladder.
     Effect::new(move |first: Option<()>| {
         ctx.why.request.track();
         if first.is_some() {
             ask();
+            ctx.page.docks.show(crate::docks::Tool::Why);
+            request_animation_frame(move || {
+                if let Some(p) = pane.get_untracked() {
+                    let _ = p.focus();
+                }
+            });
         }
     });
+    let back = move |e: leptos::ev::KeyboardEvent| {
+        if e.key() == "Escape" {
+            e.prevent_default();
+            on_back.run(());
+        }
+    };
     view! {
-        <section class="why-pane" data-testid="why-panel"
+        <section class="why-pane" data-testid="why-panel" tabindex="-1" node_ref=pane on:keydown=back
             data-stale=move || if ctx.why.stale.get() { "1" } else { "0" }>
             <h3>
                 <button type="button" data-testid="why" on:click=move |_| ask()>{move || t().why}</button>

@@ -467,6 +467,8 @@ pub fn SoftProgram(soft: SoftCtx) -> impl IntoView {
                 .collect::<Vec<_>>(),
         }
     });
+    // The pane's Load starts the program loaded (the ladder's machine).
+    let ladder = use_context::<crate::editor::LadderCtx>();
     view! {
         <TextProgramPane
                     as_ladder=true
@@ -477,7 +479,11 @@ pub fn SoftProgram(soft: SoftCtx) -> impl IntoView {
                         storage::save_to(KEY, &storage::SavedText { program });
                     })
                     on_load=Callback::new(move |()| {
-                        soft.load();
+                        if soft.load() {
+                            if let Some(ladder) = ladder {
+                                ladder.run_loaded();
+                            }
+                        }
                     })
                     tall=true
                 />

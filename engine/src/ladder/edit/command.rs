@@ -329,6 +329,7 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
                 return Err(EditError::NothingToDo);
             }
             rung.set(pos, None);
+            rung.remove_stubs_around(pos);
             plan.set(at.rung, rung)?;
             at
         }
@@ -339,6 +340,7 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
                 return Err(EditError::NothingToDo);
             }
             rung.set(pos, None);
+            rung.remove_stubs_around(pos);
             plan.set(at.rung, rung)?;
             at
         }
@@ -351,6 +353,7 @@ pub(super) fn plan(editor: &Editor, edit: Edit) -> Result<Change, EditError> {
                 for col in from.col.min(to.col)..=from.col.max(to.col) {
                     if rung.get(Pos::new(row, col)).is_some() {
                         rung.set(Pos::new(row, col), None);
+                        rung.remove_stubs_around(Pos::new(row, col));
                     }
                 }
             }
