@@ -276,10 +276,10 @@ crate::parts::part_fn!(
     pub(crate) fn arrive(
         page: Ctx,
         ladder: crate::editor::LadderCtx,
-    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+    ) -> Result<crate::machines::workspace::Shared, crate::parts::PartMissing> {
         engine::machines::register(engine::machines::MachineKit::ARDUINO);
         let ard = ArduinoCtx::restore(page);
-        crate::machines::arrival::wire(
+        crate::machines::workspace::wire(
             ladder,
             crate::machines::link(ard.sim, move || ard.refresh()),
             crate::machines::text_program(ard.text, move || ard.load(), move || ard.save()),
@@ -288,7 +288,7 @@ crate::parts::part_fn!(
     }
 );
 
-impl crate::machines::arrival::MachineWorkspace for ArduinoCtx {
+impl crate::machines::workspace::MachineWorkspace for ArduinoCtx {
     fn panel(&self) -> AnyView {
         view! { <ArduinoPanel ard=*self /> }.into_any()
     }

@@ -272,7 +272,7 @@ crate::parts::part_fn!(
     pub(crate) fn arrive(
         page: Ctx,
         ladder: crate::editor::LadderCtx,
-    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+    ) -> Result<crate::machines::workspace::Shared, crate::parts::PartMissing> {
         engine::machines::register(engine::machines::MachineKit::AVR);
         let avr = AvrCtx::restore(page);
         // The compiler's scan period before the program pane is read.
@@ -280,7 +280,7 @@ crate::parts::part_fn!(
             .text
             .options
             .update(|o| o.avr_scan_ms = scan_ms_default());
-        crate::machines::arrival::wire(
+        crate::machines::workspace::wire(
             ladder,
             crate::machines::link(avr.sim, move || avr.refresh()),
             crate::machines::text_program(avr.text, move || avr.load(), move || avr.save()),
@@ -289,7 +289,7 @@ crate::parts::part_fn!(
     }
 );
 
-impl crate::machines::arrival::MachineWorkspace for AvrCtx {
+impl crate::machines::workspace::MachineWorkspace for AvrCtx {
     fn panel(&self) -> AnyView {
         view! { <AvrPanel avr=*self /> }.into_any()
     }

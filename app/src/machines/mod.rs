@@ -6,6 +6,7 @@ pub mod avr;
 pub mod io86a;
 pub mod minasec;
 pub mod soft;
+pub mod workspace;
 
 use std::rc::Rc;
 

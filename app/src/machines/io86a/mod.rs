@@ -218,10 +218,10 @@ crate::parts::part_fn!(
     pub(crate) fn arrive(
         _page: crate::state::Ctx,
         ladder: crate::editor::LadderCtx,
-    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+    ) -> Result<crate::machines::workspace::Shared, crate::parts::PartMissing> {
         engine::machines::register(engine::machines::MachineKit::IO86A);
         let io = Io86aCtx::new();
-        crate::machines::arrival::wire(
+        crate::machines::workspace::wire(
             ladder,
             crate::machines::link(io.sim, move || io.refresh()),
             crate::machines::text_program(io.texts[0], move || io.load(0), move || io.save()),
@@ -230,7 +230,7 @@ crate::parts::part_fn!(
     }
 );
 
-impl crate::machines::arrival::MachineWorkspace for Io86aCtx {
+impl crate::machines::workspace::MachineWorkspace for Io86aCtx {
     fn panel(&self) -> leptos::prelude::AnyView {
         use leptos::prelude::*;
         // Its views below find it as a context.

@@ -535,7 +535,7 @@ crate::parts::part_fn!(
     pub(crate) fn arrive(
         page: Ctx,
         ladder: crate::editor::LadderCtx,
-    ) -> Result<crate::machines::arrival::Shared, crate::parts::PartMissing> {
+    ) -> Result<crate::machines::workspace::Shared, crate::parts::PartMissing> {
         engine::machines::register(engine::machines::MachineKit::SOFT);
         let soft = SoftCtx::restore(page);
         let mut program =
@@ -543,7 +543,7 @@ crate::parts::part_fn!(
         program.settings = Callback::new(move |()| soft.project_settings());
         program.apply_settings =
             Callback::new(move |settings| soft.apply_project_settings(settings));
-        crate::machines::arrival::wire(
+        crate::machines::workspace::wire(
             ladder,
             crate::machines::link(soft.sim, move || soft.refresh()),
             program,
@@ -552,7 +552,7 @@ crate::parts::part_fn!(
     }
 );
 
-impl crate::machines::arrival::MachineWorkspace for SoftCtx {
+impl crate::machines::workspace::MachineWorkspace for SoftCtx {
     fn panel(&self) -> AnyView {
         view! { <SoftPanel soft=*self /> }.into_any()
     }
