@@ -40,10 +40,25 @@ if (panel) {
 
 
 def el(driver, testid, reveal=True):
-    found = driver.find_element(By.CSS_SELECTOR, f'[data-testid="{testid}"]')
+    """The element with `testid`, revealed as a user would reach it (a
+    closed menu opened, its dock tab shown). A control held in a part of
+    the page (issue #53: a machine, the share codec, the CPU view)
+    appears once its part has arrived: looked for again for a while."""
+    selector = f'[data-testid="{testid}"]'
+    deadline = time.monotonic() + PART_GRACE_S
+    while True:
+        found = driver.find_elements(By.CSS_SELECTOR, selector)
+        if found or time.monotonic() > deadline:
+            break
+        time.sleep(0.05)
+    found = found[0] if found else driver.find_element(By.CSS_SELECTOR, selector)
     if reveal:
         driver.execute_script(REVEAL, found)
     return found
+
+
+# How long `el` looks again for a control its part may still bring.
+PART_GRACE_S = 3.0
 
 
 def wait(driver, condition, timeout=20, message=""):
