@@ -78,25 +78,40 @@ where
         });
     };
     fetch();
-    move || {
-        let texts = lang.get().parts();
-        match stage.get() {
-            Stage::Ready(draw) => draw(),
-            Stage::Loading => view! {
-                <p class="part-state" role="status" data-testid=format!("{testid}-loading")>
-                    {texts.loading}
-                </p>
-            }
-            .into_any(),
-            Stage::Missing => view! {
-                <div class="part-state" role="alert" data-testid=format!("{testid}-missing")>
-                    <p>{texts.missing}</p>
-                    <button type="button" data-testid=format!("{testid}-retry") on:click=move |_| fetch()>
-                        {texts.retry}
-                    </button>
-                </div>
-            }
-            .into_any(),
+    move || match stage.get() {
+        Stage::Ready(draw) => draw(),
+        Stage::Loading => not_there(testid, lang.get(), false, fetch),
+        Stage::Missing => not_there(testid, lang.get(), true, fetch),
+    }
+}
+
+/// The place of something a part brings while the part is not there, in
+/// `lang`: "Loading…" (`<testid>-loading`), or when it could not be
+/// fetched (`missing`) says so with a button that calls `retry`
+/// (`<testid>-missing`, `<testid>-retry`).
+pub fn not_there(
+    testid: &'static str,
+    lang: Lang,
+    missing: bool,
+    retry: impl Fn() + Copy + Send + Sync + 'static,
+) -> AnyView {
+    let texts = lang.parts();
+    if missing {
+        view! {
+            <div class="part-state" role="alert" data-testid=format!("{testid}-missing")>
+                <p>{texts.missing}</p>
+                <button type="button" data-testid=format!("{testid}-retry") on:click=move |_| retry()>
+                    {texts.retry}
+                </button>
+            </div>
         }
+        .into_any()
+    } else {
+        view! {
+            <p class="part-state" role="status" data-testid=format!("{testid}-loading")>
+                {texts.loading}
+            </p>
+        }
+        .into_any()
     }
 }

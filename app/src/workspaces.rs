@@ -59,7 +59,7 @@ impl Workspaces {
         ladder.attach(machines::link(minasec.sim, move || minasec.refresh()));
         ladder.connect(minasec_program);
         // Every machine powers up in STOP: time stands still until Run
-        // (the others as they arrive, `arrival::wire`).
+        // (the others as they arrive, `workspace::wire`).
         ladder.stop_at_power_up();
         Workspaces {
             minasec,
@@ -223,7 +223,10 @@ impl Workspaces {
         let me = *self;
         (move || match slot.get() {
             Arrival::Ready(workspace) => show(&*workspace),
-            other => arrival::waiting(testid, lang.into(), other, move || me.arrive(kind)),
+            other => {
+                let missing = matches!(other, Arrival::Missing);
+                crate::parts::not_there(testid, lang.get(), missing, move || me.arrive(kind))
+            }
         })
         .into_any()
     }

@@ -5,7 +5,6 @@
 //! kept and edited as any other, compiled once the machine is there.
 
 use engine::MachineId;
-use leptos::prelude::*;
 
 pub use super::workspace::{Arrival, MachineWorkspace, Shared};
 use crate::editor::LadderCtx;
@@ -22,33 +21,5 @@ pub async fn fetch(kind: MachineId, page: Ctx, ladder: LadderCtx) -> Result<Shar
         MachineId::AvrPlc => avr::arrive(page, ladder).await,
         MachineId::ArduinoPlc => arduino::arrive(page, ladder).await,
         MachineId::SoftPlc => soft::arrive(page, ladder).await,
-    }
-}
-
-/// The machine's part's place in a dock while it is not there:
-/// "Loading…", or that it could not be fetched with a retry button.
-pub fn waiting(
-    testid: &'static str,
-    lang: Signal<crate::i18n::Lang>,
-    arrival: Arrival,
-    retry: impl Fn() + Copy + Send + Sync + 'static,
-) -> AnyView {
-    let texts = lang.get_untracked().parts();
-    match arrival {
-        Arrival::Missing => view! {
-            <div class="part-state" role="alert" data-testid=format!("{testid}-missing")>
-                <p>{texts.missing}</p>
-                <button type="button" data-testid=format!("{testid}-retry") on:click=move |_| retry()>
-                    {texts.retry}
-                </button>
-            </div>
-        }
-        .into_any(),
-        _ => view! {
-            <p class="part-state" role="status" data-testid=format!("{testid}-loading")>
-                {texts.loading}
-            </p>
-        }
-        .into_any(),
     }
 }
