@@ -72,13 +72,7 @@ impl Workspaces {
     }
 
     fn arrival(&self, kind: MachineId) -> RwSignal<Arrival, LocalStorage> {
-        self.arrivals[Self::index(kind)]
-    }
-
-    fn index(kind: MachineId) -> usize {
-        let index = MachineId::ALL.iter().position(|m| *m == kind);
-        // ALL lists every machine: the position is always found.
-        index.unwrap_or_default()
+        self.arrivals[kind.index()]
     }
 
     /// Machine `kind`'s workspace, once its part is there (never

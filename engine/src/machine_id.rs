@@ -34,6 +34,16 @@ impl MachineId {
         MachineId::SoftPlc,
     ];
 
+    /// The machine's place in [`MachineId::ALL`] (for tables kept per
+    /// machine in that order).
+    pub fn index(self) -> usize {
+        // ALL lists every machine: the position is always found.
+        MachineId::ALL
+            .iter()
+            .position(|&m| m == self)
+            .unwrap_or_default()
+    }
+
     /// The four small PLCs of the seed documents: every machine but the
     /// soft PLC.
     pub const KITS: [MachineId; 4] = [

@@ -1,8 +1,8 @@
 //! The registry: the one place that names every machine. It sits above
 //! both the machine interface (`plc/`, which names none), the ladder
 //! (whose [`LadderTarget`] each machine folder implements) and the machine
-//! folders, so adding a machine is its folder, one arm in [`new_plc`] and
-//! one in [`MachineId::target`] (docs/architecture.md, "Adding a machine").
+//! folders, so adding a machine is its folder, its [`MachineKit`] and one
+//! arm in [`MachineId::target`] (docs/architecture.md, "Adding a machine").
 
 pub use crate::arduino::ArduinoPlc;
 pub use crate::avr::AvrPlc;
@@ -149,8 +149,7 @@ mod registry {
     static KITS: [OnceLock<MachineKit>; 5] = [const { OnceLock::new() }; 5];
 
     fn slot(id: MachineId) -> &'static OnceLock<MachineKit> {
-        let i = MachineId::ALL.iter().position(|&m| m == id).unwrap_or(0);
-        &KITS[i]
+        &KITS[id.index()]
     }
 
     pub fn register(kit: MachineKit) {
@@ -245,6 +244,13 @@ mod tests {
     fn each_machine_hands_out_its_own_target() {
         for id in MachineId::ALL {
             assert_eq!(id.target().id(), id);
+        }
+    }
+
+    #[test]
+    fn a_machines_index_is_its_place_in_all() {
+        for (i, id) in MachineId::ALL.into_iter().enumerate() {
+            assert_eq!(id.index(), i, "{}", id.name());
         }
     }
 

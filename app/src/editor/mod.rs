@@ -57,9 +57,7 @@ impl Ladders {
 
     /// The editor of `machine` (every machine has one).
     pub fn of(&self, machine: MachineId) -> LadderCtx {
-        let index = MachineId::ALL.iter().position(|m| *m == machine);
-        // ALL lists every machine: the position is always found.
-        self.all[index.unwrap_or_default()]
+        self.all[machine.index()]
     }
 }
 
