@@ -220,10 +220,18 @@ pub fn App(ctx: Ctx, workspaces: Workspaces, start: start::Start) -> impl IntoVi
             </Show>
             // On a phone the tour's card stands in the page's flow, above
             // the ladder; elsewhere it floats beside it.
-            <start::tour::Tour />
+            // The start screen, the tour and the guide are parts, fetched
+            // when they first show (issue #53); each fetches its words too.
+            <Show when=move || start.tour.with(Option::is_some)>
+                {parts::part("tour-part", ctx.lang.into(), start::tour::part)}
+            </Show>
             {move || workspaces.view(ctx.machine.get())}
-            <start::screen::StartScreen />
-            <start::guide::Guide />
+            <Show when=move || start.open.get()>
+                {parts::part("start-part", ctx.lang.into(), start::screen::part)}
+            </Show>
+            <Show when=move || start.guide.with(Option::is_some)>
+                {parts::part("guide-part", ctx.lang.into(), start::guide::part)}
+            </Show>
         </ErrorBoundary>
     }
 }

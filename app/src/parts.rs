@@ -47,12 +47,16 @@ impl From<SplitLoaderError> for PartMissing {
 /// crosses from the part to the page as a table index.
 pub type Draw = fn() -> AnyView;
 
+/// Draws a view held in a part from what the page gives it (a dock
+/// pane's context): a plain function pointer, as [`Draw`].
+pub type DrawFor<A> = fn(A) -> AnyView;
+
 /// Where a part's view stands.
 #[derive(Debug, Clone, Copy)]
-enum Stage {
+enum Stage<D> {
     Loading,
     Missing,
-    Ready(Draw),
+    Ready(D),
 }
 
 /// The place of a view held in a part: "Loading…" while it is fetched,
@@ -64,6 +68,37 @@ pub fn part<F, Fut>(testid: &'static str, lang: Signal<Lang>, load: F) -> impl I
 where
     F: Fn() -> Fut + Copy + Send + Sync + 'static,
     Fut: Future<Output = Result<Draw, PartMissing>> + 'static,
+{
+    place(testid, lang, load, |draw: Draw| draw())
+}
+
+/// [`part`] for a view drawn from `arg` (a pane's context and callbacks).
+pub fn part_for<A, F, Fut>(
+    testid: &'static str,
+    lang: Signal<Lang>,
+    arg: A,
+    load: F,
+) -> impl IntoView
+where
+    A: Copy + Send + Sync + 'static,
+    F: Fn() -> Fut + Copy + Send + Sync + 'static,
+    Fut: Future<Output = Result<DrawFor<A>, PartMissing>> + 'static,
+{
+    place(testid, lang, load, move |draw: DrawFor<A>| draw(arg))
+}
+
+/// What [`part`] and [`part_for`] share: fetches with `load`, then shows
+/// what it gave with `show`.
+fn place<D, F, Fut>(
+    testid: &'static str,
+    lang: Signal<Lang>,
+    load: F,
+    show: impl Fn(D) -> AnyView + Send + Sync + 'static,
+) -> impl IntoView
+where
+    D: Copy + Send + Sync + 'static,
+    F: Fn() -> Fut + Copy + Send + Sync + 'static,
+    Fut: Future<Output = Result<D, PartMissing>> + 'static,
 {
     let stage = RwSignal::new(Stage::Loading);
     let fetch = move || {
@@ -78,10 +113,11 @@ where
         });
     };
     fetch();
+    let retry = Callback::new(move |()| fetch());
     move || match stage.get() {
-        Stage::Ready(draw) => draw(),
-        Stage::Loading => not_there(testid, lang.get(), false, fetch),
-        Stage::Missing => not_there(testid, lang.get(), true, fetch),
+        Stage::Ready(draw) => show(draw),
+        Stage::Loading => not_there(testid, lang.get(), false, retry),
+        Stage::Missing => not_there(testid, lang.get(), true, retry),
     }
 }
 
@@ -89,18 +125,13 @@ where
 /// `lang`: "Loading…" (`<testid>-loading`), or when it could not be
 /// fetched (`missing`) says so with a button that calls `retry`
 /// (`<testid>-missing`, `<testid>-retry`).
-pub fn not_there(
-    testid: &'static str,
-    lang: Lang,
-    missing: bool,
-    retry: impl Fn() + Copy + Send + Sync + 'static,
-) -> AnyView {
+pub fn not_there(testid: &'static str, lang: Lang, missing: bool, retry: Callback<()>) -> AnyView {
     let texts = lang.parts();
     if missing {
         view! {
             <div class="part-state" role="alert" data-testid=format!("{testid}-missing")>
                 <p>{texts.missing}</p>
-                <button type="button" data-testid=format!("{testid}-retry") on:click=move |_| retry()>
+                <button type="button" data-testid=format!("{testid}-retry") on:click=move |_| retry.run(())>
                     {texts.retry}
                 </button>
             </div>

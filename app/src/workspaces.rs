@@ -215,11 +215,12 @@ impl Workspaces {
         let slot = self.arrival(kind);
         let lang = self.page.lang;
         let me = *self;
+        let retry = Callback::new(move |()| me.arrive(kind));
         (move || match slot.get() {
             Arrival::Ready(workspace) => show(&*workspace),
             other => {
                 let missing = matches!(other, Arrival::Missing);
-                crate::parts::not_there(testid, lang.get(), missing, move || me.arrive(kind))
+                crate::parts::not_there(testid, lang.get(), missing, retry)
             }
         })
         .into_any()

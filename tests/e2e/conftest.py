@@ -57,6 +57,58 @@ class DistServer:
         self.process.wait(timeout=10)
 
 
+class GzipOnTheFlyServer:
+    """dist/ served as a static host that compresses each response on the
+    fly with gzip at level 6 and has no brotli (issue #53's second host):
+    the build's precompressed .gz and .br are not used."""
+
+    TYPES = {".wasm": "application/wasm", ".js": "text/javascript", ".mjs": "text/javascript",
+             ".css": "text/css", ".html": "text/html; charset=utf-8", ".json": "application/json",
+             ".svg": "image/svg+xml", ".webmanifest": "application/manifest+json",
+             ".png": "image/png", ".ico": "image/x-icon"}
+
+    def __init__(self):
+        import gzip
+        import http.server
+        import threading
+
+        assert (DIST / "index.html").exists(), "run trunk build --release first"
+        types = self.TYPES
+
+        class Handler(http.server.BaseHTTPRequestHandler):
+            def do_GET(self):
+                path = self.path.split("?", 1)[0].split("#", 1)[0]
+                file = (DIST / path.lstrip("/")).resolve()
+                if path.endswith("/"):
+                    file = file / "index.html"
+                if DIST.resolve() not in file.parents or not file.is_file():
+                    self.send_error(404)
+                    return
+                body = file.read_bytes()
+                headers = {"Content-Type": types.get(file.suffix, "application/octet-stream"),
+                           "Cache-Control": "no-cache"}
+                if "gzip" in self.headers.get("Accept-Encoding", "") and file.suffix != ".png":
+                    body = gzip.compress(body, compresslevel=6)
+                    headers["Content-Encoding"] = "gzip"
+                self.send_response(200)
+                for k, v in headers.items():
+                    self.send_header(k, v)
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def log_message(self, *args):
+                pass
+
+        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", free_port()), Handler)
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}"
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+
+    def stop(self):
+        self.server.shutdown()
+        self.server.server_close()
+
+
 @pytest.fixture(scope="session")
 def base_url():
     server = DistServer()

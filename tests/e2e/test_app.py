@@ -39,12 +39,38 @@ if (panel) {
 """
 
 
+# Draws the menus and tools' panes not drawn yet (`data-lazy-menu`,
+# `data-lazy-pane`: their controls are a part, drawn and fetched when the
+# menu first opens or the tab is first shown), as a user looking for a
+# control would open them; a menu is closed again and the tab shown
+# before is shown again.
+DRAW_LAZY_PANES = """
+const menus = [...document.querySelectorAll('[data-lazy-menu]')].map(e => e.dataset.lazyMenu);
+for (const id of menus) {
+  const b = document.querySelector('[data-testid="menu-' + id + '"]');
+  if (b) { b.click(); b.click(); }
+}
+const lazy = [...document.querySelectorAll('[data-lazy-pane]')].map(e => e.dataset.lazyPane);
+if (!lazy.length) return menus.length > 0;
+const shown = document.querySelector('[role=tab][aria-selected=true][data-testid^="dock-tab-"]');
+for (const hook of lazy) {
+  const tab = document.querySelector('[data-testid="dock-tab-' + hook + '"]');
+  if (tab) tab.click();
+}
+if (shown) shown.click();
+return true;
+"""
+
+
 def el(driver, testid, reveal=True):
     """The element with `testid`, revealed as a user would reach it (a
-    closed menu opened, its dock tab shown). A control held in a part of
-    the page (issue #53: a machine, the share codec, the CPU view)
-    appears once its part has arrived: looked for again for a while."""
+    closed menu opened, its dock tab shown: a pane not drawn yet is drawn
+    by showing its tab). A control held in a part of the page (issue #53:
+    a machine, a pane, the share codec, the CPU view) appears once its
+    part has arrived: looked for again for a while."""
     selector = f'[data-testid="{testid}"]'
+    if not driver.find_elements(By.CSS_SELECTOR, selector):
+        driver.execute_script(DRAW_LAZY_PANES)
     deadline = time.monotonic() + PART_GRACE_S
     while True:
         found = driver.find_elements(By.CSS_SELECTOR, selector)
@@ -54,6 +80,17 @@ def el(driver, testid, reveal=True):
     found = found[0] if found else driver.find_element(By.CSS_SELECTOR, selector)
     if reveal:
         driver.execute_script(REVEAL, found)
+    return found
+
+
+def drawn(driver, testid):
+    """The elements with `testid` now (maybe none), the menus and panes
+    not drawn yet drawn first: for a wait on a control a pane holds (a
+    pane is a part drawn when its tab is first shown, issue #53)."""
+    selector = f'[data-testid="{testid}"]'
+    found = driver.find_elements(By.CSS_SELECTOR, selector)
+    if not found and driver.execute_script(DRAW_LAZY_PANES):
+        found = driver.find_elements(By.CSS_SELECTOR, selector)
     return found
 
 

@@ -3,7 +3,7 @@ the soft PLC, run from its board; a bad file said at its line."""
 
 from selenium.webdriver.common.by import By
 
-from test_app import el, on, open_fresh, severe_console_messages, wait
+from test_app import drawn, el, on, open_fresh, severe_console_messages, wait
 
 # Written for these tests (LDmicro's own files are not committed): a
 # counter of Xa's rises to 3 lights Yq, Xr resets it; a 0.1 file at a
@@ -46,7 +46,7 @@ def test_an_ld_file_opens_on_the_soft_plc_and_runs_from_its_board(driver, base_u
     el(driver, "open-file").send_keys(str(path))
     wait(driver, lambda: el(driver, "machine").get_attribute("value") == "soft-plc",
          message="the page switches to the soft PLC")
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-Cparts"]'),
+    wait(driver, lambda: drawn(driver, "var-Cparts"),
          message="the file's names in the variables pane")
     assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
     boxes = [b.text for b in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="box"]')]
@@ -108,7 +108,7 @@ def declare_dint(driver, name):
     el(driver, "var-new-type").clear()
     el(driver, "var-new-type").send_keys("DINT")
     el(driver, "var-add").click()
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, f'[data-testid="var-{name}"]'))
+    wait(driver, lambda: drawn(driver, f"var-{name}"))
 
 
 def test_ldmicros_timer_is_in_the_soft_plcs_palette_and_counts_scans(driver, base_url):
@@ -168,7 +168,7 @@ def test_an_ld_files_uart_talks_through_the_serial_monitor(driver, base_url, tmp
     path = tmp_path / "echo.ld"
     path.write_text(ECHO)
     el(driver, "open-file").send_keys(str(path))
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-count"]'))
+    wait(driver, lambda: drawn(driver, "var-count"))
     assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
     el(driver, "run").click()
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-monitor"]'),
@@ -227,7 +227,7 @@ def test_the_serial_count_example_talks_in_the_monitor(driver, base_url):
     Select(el(driver, "machine")).select_by_value("soft-plc")
     wait(driver, lambda: el(driver, "soft-board"))
     Select(el(driver, "example")).select_by_value("serial-count")
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-count"]'))
+    wait(driver, lambda: drawn(driver, "var-count"))
     el(driver, "run").click()
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="soft-monitor"]'))
     switch = el(driver, "soft-input-IX0-0")
@@ -292,7 +292,7 @@ def open_ld(driver, tmp_path, file_name, text, variable):
     path = tmp_path / file_name
     path.write_text(text)
     el(driver, "open-file").send_keys(str(path))
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, f'[data-testid="var-{variable}"]'),
+    wait(driver, lambda: drawn(driver, f"var-{variable}"),
          message="the file's names in the variables pane")
 
 

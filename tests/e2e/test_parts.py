@@ -130,3 +130,28 @@ def test_a_share_link_made_while_its_codec_cannot_be_fetched_says_so(driver, bas
     open_fresh(driver, base_url)
     driver.get(link)
     wait(driver, lambda: el(driver, "shared-banner"), message="the shared ladder is shown")
+
+
+def test_a_tools_pane_is_fetched_when_its_tab_is_first_shown(driver, base_url):
+    """The tools' panes the first screen does not show (the chart, Tests,
+    Why?, the listing, Find, Projects, the import dialog) are parts: the
+    first screen fetches none; the chart's tab, its part blocked, says so
+    in the pane and retries, with the ladder untouched."""
+    open_fresh(driver, base_url)
+    focus_ladder(driver)
+    place(driver, Keys.F5, "X00")
+    place(driver, Keys.F7, "Y00")
+    fetched = driver.execute_script(
+        "return performance.getEntriesByType('resource').map(e => e.name).filter(n => n.includes('split_pane_'))")
+    assert fetched == [], f"the first screen fetched panes: {fetched}"
+    assert driver.find_elements(By.CSS_SELECTOR, '[data-lazy-pane="chart"]'), "the chart is not drawn before its tab"
+    block(driver, ["*split_pane_chart*"])
+    try:
+        driver.find_element(By.CSS_SELECTOR, '[data-testid="dock-tab-chart"]').click()
+        wait(driver, lambda: el(driver, "chart-part-missing", reveal=False), message="the chart's tab says it is missing")
+        assert "could not be fetched" in el(driver, "chart-part-missing", reveal=False).text
+    finally:
+        block(driver, [])
+    el(driver, "chart-part-retry").click()
+    wait(driver, lambda: el(driver, "timing-chart").is_displayed(), message="the retry draws the chart")
+    assert "ST   Y00" in el(driver, "il-listing").text

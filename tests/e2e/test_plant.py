@@ -14,7 +14,7 @@ from selenium.webdriver.support.ui import Select
 
 from selenium.webdriver.common.keys import Keys
 
-from test_app import el, open_fresh, severe_console_messages, wait
+from test_app import drawn, el, open_fresh, severe_console_messages, wait
 from test_ladder import HASHIGO, ROOT, focus_ladder, keys, place
 
 CONVEYOR = ROOT / "engine" / "programs" / "minasec-u" / "conveyor.json"
@@ -150,7 +150,7 @@ def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(
     wait(driver, lambda: quantity(driver, "delivered") >= 2, timeout=40,
          message="parts ride and are delivered")
     el(driver, "exercise-check").click()
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="exercise-result"]'))
+    wait(driver, lambda: drawn(driver, "exercise-result"))
     wait(driver, lambda: result(driver)[0] == result(driver)[1], timeout=40,
          message="Check my answer passes")
     assert severe_console_messages(driver) == []

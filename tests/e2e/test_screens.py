@@ -12,7 +12,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
 from conftest import as_returning_user
-from test_app import el, on, open_fresh, wait
+from test_app import drawn, el, on, open_fresh, wait
 from test_ladder import focus_ladder, place
 
 SCREENS = {
@@ -297,7 +297,7 @@ def test_the_soft_plc_on_every_screen(screen, base_url, artifacts):
 
     show(driver, touch, "ladder")
     Select(el(driver, "example")).select_by_value("parts")
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-parts"]'))
+    wait(driver, lambda: drawn(driver, "var-parts"))
     show(driver, touch, "panel")
     for testid in ["soft-analog-IW0", "soft-gauge-QW0", "var-level"]:
         el(driver, testid)  # its dock tab (the variables) or the phone's Panel sheet shown

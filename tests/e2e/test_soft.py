@@ -8,7 +8,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
-from test_app import el, on, open_fresh, severe_console_messages, wait
+from test_app import drawn, el, on, open_fresh, severe_console_messages, wait
 from test_ladder import HASHIGO, focus_ladder, keys, place, saved_ladder
 from test_import import ROOT
 
@@ -275,7 +275,7 @@ def test_a_soft_plc_ladder_goes_out_as_json_plcopen_text_and_pictures(driver, ba
     path = tmp_path / "parts.xml"
     path.write_text(xml)
     el(driver, "open-file").send_keys(str(path))
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-parts"]'),
+    wait(driver, lambda: drawn(driver, "var-parts"),
          message="the project's variables in the pane")
     assert steps(el(driver, "il-listing").text) == before
     assert el(driver, "problems").text.strip() == "No problems."
@@ -291,7 +291,7 @@ def test_a_plcopen_project_with_word_blocks_opens_drawn_and_runs(driver, base_ur
     the project's variables, and runs: the boxes show their values."""
     choose_soft(driver, base_url)
     el(driver, "open-file").send_keys(str(WORDS))
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="var-big"]'),
+    wait(driver, lambda: drawn(driver, "var-big"),
          message="the project's variables")
     assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
     kinds = [b.text for b in driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="box"]')]

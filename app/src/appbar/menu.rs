@@ -1,7 +1,8 @@
 //! A menu of the app bar (File, Edit, View, Help; on a phone all of them
 //! behind one button): a button that opens a panel of the controls the
-//! toolbar once showed in a row. The panel stays in the page while closed
-//! (hidden), so a file input in it keeps its chosen file. Escape, a click
+//! toolbar once showed in a row. The panel's controls are drawn when it
+//! first opens (they are a part, issue #53), then stay in the page while
+//! closed (hidden), so a file input in it keeps its chosen file. Escape, a click
 //! outside, a button chosen inside or a choice made in a field closes it.
 
 use leptos::prelude::*;
@@ -10,8 +11,11 @@ use crate::state::Ctx;
 
 /// A menu: `menu-<id>` opens `data-menu-panel="<id>"`.
 #[component]
-pub fn Menu(id: &'static str, label: Signal<&'static str>, children: Children) -> impl IntoView {
+pub fn Menu(id: &'static str, label: Signal<&'static str>, children: ChildrenFn) -> impl IntoView {
     let open = RwSignal::new(false);
+    // Set by the first opening (in the click itself, so that a menu
+    // opened and closed at once is drawn too).
+    let drawn = RwSignal::new(false);
     let node = NodeRef::<leptos::html::Div>::new();
     // A click anywhere outside the menu closes it.
     let outside = window_event_listener(leptos::ev::pointerdown, move |e| {
@@ -40,7 +44,12 @@ pub fn Menu(id: &'static str, label: Signal<&'static str>, children: Children) -
             <button type="button" class="menu-button" data-testid=format!("menu-{id}")
                 aria-haspopup="true" aria-expanded=move || open.get().to_string()
                 aria-controls=format!("menu-panel-{id}")
-                on:click=move |_| open.update(|o| *o = !*o)>
+                on:click=move |_| {
+                    open.update(|o| *o = !*o);
+                    if !drawn.get_untracked() {
+                        drawn.set(true);
+                    }
+                }>
                 {move || label.get()}
             </button>
             <div class="menu-panel" id=format!("menu-panel-{id}") data-menu-panel=id
@@ -70,7 +79,13 @@ pub fn Menu(id: &'static str, label: Signal<&'static str>, children: Children) -
                         open.set(false);
                     }
                 }>
-                {children()}
+                // Until first opened, a mark names the menu (the end-to-end
+                // tests' `el()` opens such menus to look for a control).
+                {move || if drawn.get() {
+                    children().into_any()
+                } else {
+                    view! { <div hidden data-lazy-menu=id></div> }.into_any()
+                }}
             </div>
         </div>
     }

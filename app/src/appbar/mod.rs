@@ -74,16 +74,16 @@ pub fn AppBar() -> impl IntoView {
                     }
                 }>
                 <Menu id="file" label=label(|t| t.menu_file)>
-                    {move || view! { <FileMenu ctx=ladder() /> }}
+                    {move || crate::parts::part_for("menu-file-part", ctx.lang.into(), ladder(), file_menu)}
                 </Menu>
                 <Menu id="edit" label=label(|t| t.menu_edit)>
-                    {move || view! { <EditMenu ctx=ladder() /> }}
+                    {move || crate::parts::part_for("menu-edit-part", ctx.lang.into(), ladder(), edit_menu)}
                 </Menu>
                 <Menu id="view" label=label(|t| t.menu_view)>
-                    {move || view! { <ViewMenu ctx=ladder() /> }}
+                    {move || crate::parts::part_for("menu-view-part", ctx.lang.into(), ladder(), view_menu)}
                 </Menu>
                 <Menu id="help" label=label(|t| t.menu_help)>
-                    {move || view! { <HelpMenu ctx=ladder() /> }}
+                    {move || crate::parts::part_for("menu-help-part", ctx.lang.into(), ladder(), help_menu)}
                 </Menu>
             </nav>
             <MachineSelect />
@@ -337,3 +337,36 @@ pub fn set_document_lang(lang: Lang) {
         let _ = root.set_attribute("lang", lang.code());
     }
 }
+
+crate::parts::part_fn!(
+    menus,
+    /// The File menu's controls, a part with the other menus' (issue
+    /// #53): fetched when a menu first opens.
+    fn file_menu() -> Result<crate::parts::DrawFor<LadderCtx>, crate::parts::PartMissing> {
+        Ok(|ctx| view! { <FileMenu ctx /> }.into_any())
+    }
+);
+
+crate::parts::part_fn!(
+    menus,
+    /// The Edit menu's controls (part `menus`).
+    fn edit_menu() -> Result<crate::parts::DrawFor<LadderCtx>, crate::parts::PartMissing> {
+        Ok(|ctx| view! { <EditMenu ctx /> }.into_any())
+    }
+);
+
+crate::parts::part_fn!(
+    menus,
+    /// The View menu's controls (part `menus`).
+    fn view_menu() -> Result<crate::parts::DrawFor<LadderCtx>, crate::parts::PartMissing> {
+        Ok(|ctx| view! { <ViewMenu ctx /> }.into_any())
+    }
+);
+
+crate::parts::part_fn!(
+    menus,
+    /// The Help menu's controls (part `menus`).
+    fn help_menu() -> Result<crate::parts::DrawFor<LadderCtx>, crate::parts::PartMissing> {
+        Ok(|ctx| view! { <HelpMenu ctx /> }.into_any())
+    }
+);

@@ -28,6 +28,11 @@ pub struct Docks {
     pub sizes: RwSignal<Sizes>,
     /// On a phone: the bottom sheet is up.
     pub sheet: RwSignal<bool>,
+    /// The tools shown at least once with the dock open, whose panes are
+    /// drawn (a pane held in a part is fetched then, issue #53). Set in
+    /// the same call that shows a tool, so that tabs chosen one after the
+    /// other in one go each count.
+    pub drawn: RwSignal<Vec<Tool>>,
 }
 
 impl Docks {
@@ -39,6 +44,11 @@ impl Docks {
             .unwrap_or_default();
         Docks {
             tool: RwSignal::new(sizes.tool),
+            drawn: RwSignal::new(if sizes.bottom_open {
+                vec![sizes.tool]
+            } else {
+                Vec::new()
+            }),
             sizes: RwSignal::new(sizes),
             sheet: RwSignal::new(false),
         }
@@ -53,7 +63,17 @@ impl Docks {
             s.tool = tool;
             s.bottom_open = true;
         });
+        self.mark_drawn();
         self.save();
+    }
+
+    /// Counts the tool shown as drawn when the dock is open.
+    fn mark_drawn(&self) {
+        let tool = self.tool.get_untracked();
+        let open = self.sizes.with_untracked(|s| s.bottom_open);
+        if open && !self.drawn.with_untracked(|d| d.contains(&tool)) {
+            self.drawn.update(|d| d.push(tool));
+        }
     }
 
     /// Shows `tool`, or closes the dock when it already shows it.
@@ -74,6 +94,7 @@ impl Docks {
     /// remembers them.
     pub fn resize(&self, f: impl FnOnce(&mut Sizes)) {
         self.sizes.update(f);
+        self.mark_drawn();
         self.save();
     }
 
@@ -81,4 +102,25 @@ impl Docks {
     pub fn save(&self) {
         storage::save_string(KEY, &self.sizes.with_untracked(Sizes::to_text));
     }
+}
+
+/// A tool's panel drawn only once its tab is first shown with the dock
+/// open, then kept (issue #53): a pane held in a part is fetched then,
+/// not by the first screen. `draw` makes the panel.
+pub fn when_first_shown(
+    docks: Docks,
+    tool: Tool,
+    draw: impl Fn() -> AnyView + Send + Sync + 'static,
+) -> AnyView {
+    let seen = Memo::new(move |_| docks.drawn.with(|d| d.contains(&tool)));
+    // Until then a mark says which tab draws it (the end-to-end tests'
+    // `el()` shows such tabs when it looks for a control not drawn yet).
+    (move || {
+        if seen.get() {
+            draw()
+        } else {
+            view! { <div hidden data-lazy-pane=tool.hook()></div> }.into_any()
+        }
+    })
+    .into_any()
 }

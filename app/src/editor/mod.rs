@@ -87,15 +87,17 @@ pub fn LadderEditor(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl In
             <Toolbar ctx grid refocus />
             <Show when=move || ctx.panes.projects_open.get()>
                 <Drawer open=ctx.panes.projects_open refocus label=Signal::derive(move || t().projects.to_string())>
-                    <projects::ProjectsPane ctx />
+                    {crate::parts::part_for("projects-part", ctx.page.lang.into(), ctx, panes::parts::projects)}
                 </Drawer>
             </Show>
             <Show when=move || ctx.panes.find_open.get()>
                 <Drawer open=ctx.panes.find_open refocus label=Signal::derive(move || t().find.to_string())>
-                    <find::FindPane ctx on_pick=refocus />
+                    {crate::parts::part_for("find-part", ctx.page.lang.into(), (ctx, refocus), panes::parts::find)}
                 </Drawer>
             </Show>
-            <import::ImportDialog ctx shown=ctx.panes.import on_close=refocus />
+            <Show when=move || ctx.panes.import.with(Option::is_some)>
+                {crate::parts::part_for("import-part", ctx.page.lang.into(), (ctx, ctx.panes.import, refocus), import::dialog)}
+            </Show>
             <travel::TravelBar ctx />
             <entry::DeviceEntry ctx on_close=refocus />
             <div class="edit-message" role="alert" data-testid="edit-message">
@@ -137,35 +139,67 @@ pub fn tools(
 ) -> Vec<(crate::docks::Tool, AnyView)> {
     use crate::docks::Tool;
     let refocus = Callback::new(move |()| grid::focus(grid));
-    let mut tools =
-        vec![
+    let mut tools = vec![
         (
             Tool::Watch,
             view! { <div class="dock-pair"><live::WatchTable ctx /><live::ForceList ctx /></div> }
                 .into_any(),
         ),
-        (Tool::Chart, view! { <chart::TimingChart ctx /> }.into_any()),
-        (Tool::Tests, view! { <cases::TestsPane ctx /> }.into_any()),
-        (Tool::Why, view! { <why::WhyPanel ctx on_back=refocus /> }.into_any()),
+        (
+            Tool::Chart,
+            pane_part(Tool::Chart, "chart-part", ctx, panes::parts::chart),
+        ),
+        (
+            Tool::Tests,
+            pane_part(Tool::Tests, "tests-part", ctx, panes::parts::tests),
+        ),
+        (
+            Tool::Why,
+            pane_part(Tool::Why, "why-part", (ctx, refocus), panes::parts::why),
+        ),
         (
             Tool::Listing,
-            view! {
-                <div class="dock-pair">
-                    <side::ListingPane ctx on_pick=refocus />
-                    <side::ProblemsPane ctx on_pick=refocus />
-                </div>
-            }
-            .into_any(),
+            pane_part(
+                Tool::Listing,
+                "listing-part",
+                (ctx, refocus),
+                panes::parts::listing,
+            ),
         ),
     ];
+    why::answer_requests(ctx);
     tools.push((Tool::Comments, view! { <CommentBar ctx /> }.into_any()));
     if Tool::Variables.on(ctx.machine) {
         tools.push((
             Tool::Variables,
-            view! { <variables::VariablesPane ctx /> }.into_any(),
+            pane_part(
+                Tool::Variables,
+                "variables-part",
+                ctx,
+                panes::parts::variables,
+            ),
         ));
     }
     tools
+}
+
+/// A tool's pane held in a part (`load`, its part function): drawn, and
+/// fetched, when its tab is first shown; `testid` names its place while
+/// it is fetched.
+fn pane_part<A, F, Fut>(tool: crate::docks::Tool, testid: &'static str, arg: A, load: F) -> AnyView
+where
+    A: Copy + Send + Sync + 'static,
+    F: Fn() -> Fut + Copy + Send + Sync + 'static,
+    Fut: std::future::Future<Output = Result<crate::parts::DrawFor<A>, crate::parts::PartMissing>>
+        + 'static,
+{
+    let (lang, docks) = (
+        crate::state::Ctx::get().lang,
+        crate::state::Ctx::get().docks,
+    );
+    crate::docks::when_first_shown(docks, tool, move || {
+        crate::parts::part_for(testid, lang.into(), arg, load).into_any()
+    })
 }
 
 /// A pane opened under the toolbar (Projects, Find), where the

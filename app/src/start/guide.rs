@@ -128,3 +128,12 @@ pub fn GuideLink(#[prop(into)] section: Signal<&'static str>) -> impl IntoView {
             on:click=move |_| super::Start::get().open_guide(section.get())>"?"</button>
     }
 }
+
+crate::parts::part_fn!(
+    start_guide,
+    /// The guide's panel is a part of its own (issue #53): fetched when it first
+    /// shows, not by the first screen.
+    pub(crate) fn part() -> Result<crate::parts::Draw, crate::parts::PartMissing> {
+        Ok(|| view! { <Guide /> }.into_any())
+    }
+);

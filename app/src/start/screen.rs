@@ -113,7 +113,12 @@ fn on_click(ctx: Ctx, e: &web_sys::MouseEvent) {
         }
         ["open"] => {
             start.close();
-            click_testid("open-file");
+            // The File menu's controls are drawn when it first opens (a
+            // part, issue #53): opened, it shows where Open lives, and its
+            // file input is asked once drawn (within the click's
+            // activation, which lets a script open a file chooser).
+            click_testid("menu-file");
+            click_when_drawn("open-file", 60);
         }
         // A link to an exercise: the address's fragment opens it.
         ["exercise-open"] => start.close(),
@@ -201,3 +206,33 @@ fn click_testid(testid: &str) {
         el.click();
     }
 }
+
+/// Clicks the element with `testid` once it is in the page, looking
+/// again every 50 ms at most `tries` times.
+fn click_when_drawn(testid: &'static str, tries: u32) {
+    let there = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| {
+            d.query_selector(&format!("[data-testid='{testid}']"))
+                .ok()
+                .flatten()
+        })
+        .is_some();
+    if there {
+        click_testid(testid);
+    } else if tries > 0 {
+        set_timeout(
+            move || click_when_drawn(testid, tries - 1),
+            std::time::Duration::from_millis(50),
+        );
+    }
+}
+
+crate::parts::part_fn!(
+    start_screen,
+    /// The start screen is a part of its own (issue #53): fetched when it first
+    /// shows, not by the first screen.
+    pub(crate) fn part() -> Result<crate::parts::Draw, crate::parts::PartMissing> {
+        Ok(|| view! { <StartScreen /> }.into_any())
+    }
+);

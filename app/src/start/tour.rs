@@ -151,3 +151,12 @@ fn running(ladder: LadderCtx) -> Running {
         out_on: on(&d.out),
     }
 }
+
+crate::parts::part_fn!(
+    start_tour,
+    /// The guided first rung is a part of its own (issue #53): fetched when it first
+    /// shows, not by the first screen.
+    pub(crate) fn part() -> Result<crate::parts::Draw, crate::parts::PartMissing> {
+        Ok(|| view! { <Tour /> }.into_any())
+    }
+);

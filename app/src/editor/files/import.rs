@@ -280,3 +280,16 @@ fn said(ctx: LadderCtx, p: &Pending) -> impl IntoView {
         </ul>
     }
 }
+
+/// What the dialog is drawn from: the editor, the file shown, and what
+/// gives the focus back when it closes.
+type DialogArgs = (LadderCtx, RwSignal<Option<Pending>>, Callback<()>);
+
+crate::parts::part_fn!(
+    pane_import,
+    /// The import dialog is a part of its own (issue #53): fetched when a
+    /// file first opens, not by the first screen.
+    pub(crate) fn dialog() -> Result<crate::parts::DrawFor<DialogArgs>, crate::parts::PartMissing> {
+        Ok(|(ctx, shown, on_close)| view! { <ImportDialog ctx shown on_close /> }.into_any())
+    }
+);

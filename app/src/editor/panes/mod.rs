@@ -7,6 +7,7 @@ pub mod chart;
 mod chart_window;
 pub mod exercise;
 pub mod find;
+pub mod parts;
 pub mod projects;
 pub mod runner;
 pub mod side;

@@ -80,6 +80,9 @@ pub struct WhyState {
     pub stale: RwSignal<bool>,
     /// Bumped by the W key: explain the cell under the cursor.
     pub request: RwSignal<u64>,
+    /// The last request the pane took the focus for (the pane is a part,
+    /// drawn after the request that first showed it).
+    pub focused: StoredValue<u64>,
 }
 
 impl WhyState {
@@ -89,6 +92,7 @@ impl WhyState {
             shown: RwSignal::new(None),
             stale: RwSignal::new(false),
             request: RwSignal::new(0),
+            focused: StoredValue::new(0),
         }
     }
 }
@@ -225,25 +229,39 @@ fn outputs(ladder: &engine::ladder::Ladder, device: &str) -> Vec<(usize, Pos)> {
         .collect()
 }
 
+/// Explains the cell under the cursor, as the Why? button does.
+fn ask(ctx: LadderCtx) {
+    ctx.why.shown.set(explain(ctx));
+    ctx.why.stale.set(false);
+}
+
+/// The W key asks through the editor's action, seen here, outside the
+/// pane (a part drawn when first shown): the answer is shown in its tab
+/// (it only outlined the cell when another tab was up).
+pub fn answer_requests(ctx: LadderCtx) {
+    Effect::new(move |first: Option<()>| {
+        ctx.why.request.track();
+        if first.is_some() {
+            ask(ctx);
+            ctx.page.docks.show(crate::docks::Tool::Why);
+        }
+    });
+}
+
 /// The Why? button and the explanation: `[data-testid=why-panel]`.
 /// `on_back` gives the ladder the focus back (Escape).
 #[component]
 pub fn WhyPanel(ctx: LadderCtx, on_back: Callback<()>) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let pane = NodeRef::<leptos::html::Section>::new();
-    let ask = move || {
-        ctx.why.shown.set(explain(ctx));
-        ctx.why.stale.set(false);
-    };
-    // The W key asks through the editor's action, seen here: the answer
-    // is shown in its tab (it only outlined the cell when another tab was
-    // up) and takes the focus once drawn, so it is read out; Escape goes
-    // back to the ladder.
-    Effect::new(move |first: Option<()>| {
-        ctx.why.request.track();
-        if first.is_some() {
-            ask();
-            ctx.page.docks.show(crate::docks::Tool::Why);
+    let ask = move || ask(ctx);
+    // A W key's answer ([`answer_requests`]) takes the focus once drawn,
+    // so it is read out (also when this pane was drawn for it); Escape
+    // goes back to the ladder.
+    Effect::new(move |_| {
+        let request = ctx.why.request.get();
+        if request != ctx.why.focused.get_value() {
+            ctx.why.focused.set_value(request);
             request_animation_frame(move || {
                 if let Some(p) = pane.get_untracked() {
                     let _ = p.focus();
