@@ -26,14 +26,7 @@ fn PlantView() -> impl IntoView {
     let ladder = expect_context::<LadderCtx>();
     let t = move || ctx.lang.get().plant();
     let shown = plants.shown;
-    let figure = move || {
-        shown.with(|s| match s {
-            Some(s) if s.plant == "conveyor" => conveyor(s, t()).into_any(),
-            Some(s) if s.plant == "tank" => tank(s, t()).into_any(),
-            Some(s) => lamps(s, t()).into_any(),
-            None => ().into_any(),
-        })
-    };
+    let figure = move || shown.with(|s| figure_of(s.as_ref(), t()));
     let standing = move || shown.with(|s| s.as_ref().is_some_and(|s| !s.running));
     let quantities = move || {
         shown.with(|s| {
@@ -60,6 +53,48 @@ fn PlantView() -> impl IntoView {
             <WiringTable ladder />
         </div>
     }
+}
+
+/// The plant's own drawing: the conveyor's belt, the tank, or a lamp per
+/// signal for the others.
+fn figure_of(s: Option<&Shown>, t: &'static PlantTexts) -> AnyView {
+    match s {
+        Some(s) if s.plant == "conveyor" => conveyor(s, t).into_any(),
+        Some(s) if s.plant == "tank" => tank(s, t).into_any(),
+        Some(s) => lamps(s, t).into_any(),
+        None => ().into_any(),
+    }
+}
+
+/// The plant above the ladder on a phone ([`super::Kit::above`]): the
+/// drawing and the latest alarm, compact, without the table. The alarm is
+/// not a live region here: the dock's says it once.
+pub(super) fn above() -> AnyView {
+    let ctx = Ctx::get();
+    let shown = Plants::get().shown;
+    let t = move || ctx.lang.get().plant();
+    let figure = move || shown.with(|s| figure_of(s.as_ref(), t()));
+    let alarm = move || {
+        shown.with(|s| {
+            s.as_ref()
+                .and_then(|s| s.alarms.last())
+                .map(|(at, message)| {
+                    format!(
+                        "{} {}: {}",
+                        t().alarm_at,
+                        seconds(*at),
+                        (t().alarm)(message)
+                    )
+                })
+        })
+    };
+    view! {
+        <div class="plant-above-figure">
+            {figure}
+            <p class="plant-alarm raised" hidden=move || alarm().is_none()>{alarm}</p>
+        </div>
+    }
+    .into_any()
 }
 
 /// The latest alarm, with its simulated time; a live region, so a screen
