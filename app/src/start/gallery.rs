@@ -106,7 +106,7 @@ fn the_start_screens_list_every_machine_and_example_in_both_languages() {
 /// grades it: the plant and its project in `engine/programs/`.
 const PLANT_EXERCISES: [(&str, &str); 6] = [
     ("conveyor", "minasec-u/conveyor.json"),
-    ("tank", "io86a/tank.json"),
+    ("tank", "minasec-u/tank.json"),
     ("traffic", "minasec-u/traffic.json"),
     ("door", "minasec-u/door.json"),
     ("sorter", "minasec-u/sorter.json"),
