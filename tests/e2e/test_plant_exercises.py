@@ -1,6 +1,6 @@
 """End-to-end: an exercise per plant (issue #52). Each plant's exercise
 opens from the start screen's exercises with its plant coupled on its
-machine (the tank's on PLC-IO86A, the others on MINASEC-U), and from the
+machine (MINASEC-U: their bit inputs and outputs suffice), and from the
 gallery's plants; the room light drawn by keys passes Check my answer; the
 plant dock with a plant chosen passes axe; on a phone the plant is drawn
 above the ladder, on a tablet and a laptop only in the tools dock
@@ -17,7 +17,7 @@ from test_ladder import focus_ladder, place
 # Each plant, its exercise's machine and a signal its drawing shows.
 PLANTS = [
     ("conveyor", "minasec-u", "infeed"),
-    ("tank", "io86a", "low"),
+    ("tank", "minasec-u", "low"),
     ("traffic", "minasec-u", "button"),
     ("door", "minasec-u", "top"),
     ("sorter", "minasec-u", "part"),
