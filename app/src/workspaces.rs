@@ -164,6 +164,7 @@ impl Workspaces {
                 data-right-open=move || docks.sizes.with(|s| s.right_open).to_string()
                 data-bottom-open=move || docks.sizes.with(|s| s.bottom_open).to_string()>
                 <main class="bench-centre" id="ladder-area">
+                    <crate::plant::PlantAbove ladder />
                     <LadderEditor ctx=ladder grid />
                     <Splitter split=Split::Bottom />
                     <BottomDock machine=kind panels=tools />

@@ -224,3 +224,31 @@ def test_a_program_with_no_ladder_form_is_japanese(driver, base_url):
     said = wait(driver, lambda: el(driver, "edit-message").text.strip())
     japanese(said)
     assert "SETS / RSTS は 2 つ目のデバイスを駆動します" in said, said
+
+
+def test_the_plant_dock_in_japanese_says_no_english_sentence(driver, base_url, tmp_path, artifacts):
+    """The plants (issue #52): their names, signals, quantities and alarms
+    in Japanese; the wiring table keeps the engine's signal names (what
+    wiring files and tests write) beside the Japanese words."""
+    from test_plant import choose, fill_always, link_of
+
+    fragment = link_of(fill_always(), tmp_path)
+    open_fresh(driver, base_url, lang="ja")
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "cell-0-0-0", reveal=False), message="the ladder opens")
+    choose(driver, "tank")
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: "raised" in el(driver, "plant-alarm").get_attribute("class"), timeout=30,
+         message="the overflow alarm")
+    alarm = japanese(el(driver, "plant-alarm").text)
+    assert alarm.startswith("警報 ") and "あふれ" in alarm, alarm
+    assert "給水弁" in el(driver, "plant-sig-fill").text
+    for line in el(driver, "plant").text.splitlines():
+        assert english_run(line) is None, line
+    driver.save_screenshot(str(artifacts / "japanese-plant-tank-1366.png"))
+    # A plant drawn as its signals' lamps.
+    choose(driver, "door")
+    wait(driver, lambda: "リモコン" in el(driver, "plant-sig-remote").text)
+    for line in el(driver, "plant").text.splitlines():
+        assert english_run(line) is None, line

@@ -26,23 +26,16 @@ fn PlantView() -> impl IntoView {
     let ladder = expect_context::<LadderCtx>();
     let t = move || ctx.lang.get().plant();
     let shown = plants.shown;
-    let figure = move || {
-        shown.with(|s| match s {
-            Some(s) if s.plant == "conveyor" => conveyor(s, t()).into_any(),
-            Some(s) if s.plant == "tank" => tank(s, t()).into_any(),
-            Some(s) => lamps(s).into_any(),
-            None => ().into_any(),
-        })
-    };
+    let figure = move || shown.with(|s| figure_of(s.as_ref(), t()));
     let standing = move || shown.with(|s| s.as_ref().is_some_and(|s| !s.running));
     let quantities = move || {
         shown.with(|s| {
             s.iter()
-                .flat_map(|s| s.quantities.iter())
-                .map(|(name, value)| {
+                .flat_map(|s| s.quantities.iter().map(|q| (s.plant, q)))
+                .map(|(plant, (name, value))| {
                     view! {
                         <li data-testid=format!("plant-q-{name}")>
-                            <span>{*name}</span>" "<output>{*value}</output>
+                            <span>{t().said(plant, name)}</span>" "<output>{*value}</output>
                         </li>
                     }
                 })
@@ -62,6 +55,48 @@ fn PlantView() -> impl IntoView {
     }
 }
 
+/// The plant's own drawing: the conveyor's belt, the tank, or a lamp per
+/// signal for the others.
+fn figure_of(s: Option<&Shown>, t: &'static PlantTexts) -> AnyView {
+    match s {
+        Some(s) if s.plant == "conveyor" => conveyor(s, t).into_any(),
+        Some(s) if s.plant == "tank" => tank(s, t).into_any(),
+        Some(s) => lamps(s, t).into_any(),
+        None => ().into_any(),
+    }
+}
+
+/// The plant above the ladder on a phone ([`super::Kit::above`]): the
+/// drawing and the latest alarm, compact, without the table. The alarm is
+/// not a live region here: the dock's says it once.
+pub(super) fn above() -> AnyView {
+    let ctx = Ctx::get();
+    let shown = Plants::get().shown;
+    let t = move || ctx.lang.get().plant();
+    let figure = move || shown.with(|s| figure_of(s.as_ref(), t()));
+    let alarm = move || {
+        shown.with(|s| {
+            s.as_ref()
+                .and_then(|s| s.alarms.last())
+                .map(|(at, message)| {
+                    format!(
+                        "{} {}: {}",
+                        t().alarm_at,
+                        seconds(*at),
+                        (t().alarm)(message)
+                    )
+                })
+        })
+    };
+    view! {
+        <div class="plant-above-figure">
+            {figure}
+            <p class="plant-alarm raised" hidden=move || alarm().is_none()>{alarm}</p>
+        </div>
+    }
+    .into_any()
+}
+
 /// The latest alarm, with its simulated time; a live region, so a screen
 /// reader says each new one.
 #[component]
@@ -73,7 +108,14 @@ fn Alarm() -> impl IntoView {
         plants
             .shown
             .with(|s| match s.as_ref().and_then(|s| s.alarms.last()) {
-                Some((at, message)) => format!("{} {}: {message}", t().alarm_at, seconds(*at)),
+                Some((at, message)) => {
+                    format!(
+                        "{} {}: {}",
+                        t().alarm_at,
+                        seconds(*at),
+                        (t().alarm)(message)
+                    )
+                }
                 None => t().no_alarm.to_string(),
             })
     };
@@ -98,10 +140,11 @@ fn signal<'a>(s: &'a Shown, name: &str) -> Option<&'a SignalShown> {
     s.signals.iter().find(|x| x.name == name)
 }
 
-/// A sensor's or actuator's label: its name and its device.
+/// A sensor's or actuator's label: its name in words and its device.
 fn label(s: &Shown, name: &str, t: &PlantTexts) -> String {
     let device = signal(s, name).and_then(|x| x.device.clone());
-    format!("{name} {}", device.as_deref().unwrap_or(t.unwired))
+    let said = t.said(s.plant, name);
+    format!("{said} {}", device.as_deref().unwrap_or(t.unwired))
 }
 
 fn on(s: &Shown, name: &str) -> bool {
@@ -208,7 +251,7 @@ pub(super) fn percent_said(thousandths: i64) -> String {
 }
 
 /// Any other plant, simply: a lamp per signal, labelled with its device.
-fn lamps(s: &Shown) -> impl IntoView {
+fn lamps(s: &Shown, t: &'static PlantTexts) -> impl IntoView {
     let lamp = |x: &SignalShown| {
         let device = x.device.clone().unwrap_or_else(|| "—".to_string());
         let value = if x.analog {
@@ -220,7 +263,7 @@ fn lamps(s: &Shown) -> impl IntoView {
             <li class=if x.output { "plant-actuator" } else { "plant-sensor" } class:on=x.value != 0
                 data-testid=format!("plant-sig-{}", x.name)>
                 <span class="plant-lamp" aria-hidden="true"></span>
-                <span>{x.name}</span>" "<small>{device}</small>" "{value}
+                <span>{t.said(s.plant, x.name)}</span>" "<small>{device}</small>" "{value}
             </li>
         }
     };

@@ -13,6 +13,9 @@ mod draw;
 mod rig;
 mod wiring;
 
+mod above;
+pub use above::PlantAbove;
+
 use engine::formats::project::PlantSetup;
 use leptos::prelude::*;
 
@@ -40,6 +43,8 @@ pub struct Kit {
     pub build: Build,
     /// The dock's drawing (the figure, signals, alarms, wiring).
     pub draw: Draw,
+    /// The figure alone, above the ladder on a phone.
+    pub above: Draw,
 }
 
 /// The plant dock's state, page-wide (one workspace shows at a time).
@@ -134,6 +139,7 @@ crate::parts::part_fn!(
         Ok(Kit {
             build: rig::build,
             draw: draw::draw,
+            above: draw::above,
         })
     }
 );

@@ -134,13 +134,22 @@ fn WiringRow(
     };
     let refusal = move || refusal_at(plants, i);
     let refused = move || !refusal().is_empty();
+    // The engine's name is what wiring files and tests write; the words
+    // follow it where the language has its own.
+    let said = {
+        let (signal, plant) = (signal.clone(), plant.clone().unwrap_or_default());
+        move || {
+            let said = t().said(&plant, &signal);
+            (said != signal).then(|| format!(" {said}"))
+        }
+    };
     let label = {
         let signal = signal.clone();
         move || format!("{signal}: {}", t().device)
     };
     view! {
         <tr data-testid=format!("wiring-row-{signal}") class:refused=refused>
-            <th scope="row">{signal.clone()}<small>{" "}{kind}</small></th>
+            <th scope="row">{signal.clone()}{said}<small>{" "}{kind}</small></th>
             <td>
                 <input type="text" data-testid=format!("wiring-device-{signal}")
                     aria-label=label

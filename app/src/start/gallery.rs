@@ -101,3 +101,54 @@ fn the_start_screens_list_every_machine_and_example_in_both_languages() {
         }
     }
 }
+
+/// Each plant's exercise (issue #52), as engine/tests/plants/exercises.rs
+/// grades it: the plant and its project in `engine/programs/`.
+const PLANT_EXERCISES: [(&str, &str); 6] = [
+    ("conveyor", "minasec-u/conveyor.json"),
+    ("tank", "minasec-u/tank.json"),
+    ("traffic", "minasec-u/traffic.json"),
+    ("door", "minasec-u/door.json"),
+    ("sorter", "minasec-u/sorter.json"),
+    ("room-light", "minasec-u/room-light.json"),
+];
+
+/// The share links of `page` marked `data-plant="<plant>"`, in order.
+fn plant_links<'a>(page: &'a str, plant: &str) -> Vec<&'a str> {
+    let mark = format!("data-plant=\"{plant}\"");
+    page.split("<a href=\"./#")
+        .skip(1)
+        .filter(|a| a.split('>').next().is_some_and(|tag| tag.contains(&mark)))
+        .filter_map(|a| a.split('"').next())
+        .collect()
+}
+
+#[test]
+fn each_plants_exercise_is_offered_twice_as_its_project_with_an_empty_ladder() {
+    use engine::formats::{share, Project};
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    for lang in ["en", "ja"] {
+        let page = std::fs::read_to_string(root.join(format!("web/start/{lang}.html")))
+            .expect("the start screen's file");
+        for (plant, path) in PLANT_EXERCISES {
+            let json = std::fs::read_to_string(root.join("engine/programs").join(path))
+                .expect("the exercise's project");
+            let mut project = Project::from_json(&json).expect("the project reads");
+            // The student starts from no rungs; all else is the project's.
+            project.ladder = Default::default();
+            let links = plant_links(&page, plant);
+            // In the exercises' list and in the gallery's plants.
+            assert_eq!(links.len(), 2, "{lang}: {plant}");
+            for link in links {
+                let mut opened = share::decode(link).expect("the link decodes");
+                // A link names no file version: the codec's own.
+                opened.version = project.version;
+                assert_eq!(opened, project, "{lang}: {plant}: remake the link");
+            }
+            let card = format!("data-testid=\"start-plant-{plant}\"");
+            assert!(page.contains(&card), "{lang}: {card}");
+            let picture = format!("start/img/plant-{plant}.svg");
+            assert!(page.contains(&picture), "{lang}: {picture}");
+        }
+    }
+}

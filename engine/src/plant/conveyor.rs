@@ -8,6 +8,7 @@
 
 use std::collections::VecDeque;
 
+use super::alarm::AlarmKind;
 use super::rng::Rng;
 use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
 
@@ -249,9 +250,7 @@ impl Plant for Conveyor {
             let guard = self.params[GUARD];
             if let Some(since) = self.last_arrival.map(|t| now_ms - t) {
                 if since < guard {
-                    alarms.push(format!(
-                        "the belt started {since} ms after a part arrived at the infeed (less than {guard} ms: dangerous)"
-                    ));
+                    alarms.push(AlarmKind::BeltTooSoon { since, guard }.to_string());
                 }
             }
         }

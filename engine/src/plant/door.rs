@@ -7,6 +7,7 @@
 //! The position is kept in units of [`FULL`] (0 closed ..= [`FULL`]
 //! open), fine enough that any travel time moves it evenly.
 
+use super::alarm::AlarmKind;
 use super::rng::Rng;
 use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
 
@@ -198,22 +199,13 @@ impl Door {
             eye: self.eye_ms > grace,
         };
         if now.both && !self.on.both {
-            alarms.push("the motor is driven up and down at once".to_string());
+            alarms.push(AlarmKind::BothWays.to_string());
         }
         if now.limit && !self.on.limit {
-            let (way, limit) = if up {
-                ("up", "top")
-            } else {
-                ("down", "bottom")
-            };
-            alarms.push(format!(
-                "the motor drives {way} against the {limit} limit switch for more than {grace} ms"
-            ));
+            alarms.push(AlarmKind::AgainstLimit { up, grace }.to_string());
         }
         if now.eye && !self.on.eye {
-            alarms.push(format!(
-                "the door closes while the photo-eye is blocked, for more than {grace} ms"
-            ));
+            alarms.push(AlarmKind::ClosingOnEye { grace }.to_string());
         }
         self.on = now;
     }

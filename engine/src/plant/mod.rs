@@ -7,6 +7,7 @@
 //! machine through the one [`crate::plc::Plc`] interface; the plants name
 //! no machine: a machine's terminals come from [`crate::plc::Plc::terminals`].
 
+pub mod alarm;
 pub mod any;
 mod boxed;
 pub mod conveyor;

@@ -11,6 +11,7 @@
 
 use std::collections::VecDeque;
 
+use super::alarm::AlarmKind;
 use super::rng::Rng;
 use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
 
@@ -268,10 +269,7 @@ impl Sorter {
                     kept.push_back(p);
                 }
             } else {
-                alarms.push(format!(
-                    "the pusher hit a {} part mid-stroke (it was not fully in front of the face)",
-                    if p.tall { "tall" } else { "short" }
-                ));
+                alarms.push(AlarmKind::PusherHit { tall: p.tall }.to_string());
                 self.wrong += 1;
             }
         }

@@ -4,6 +4,7 @@
 //!
 //! The level is kept in thousandths of a percent (0..=[`ANALOG_FULL`]).
 
+use super::alarm::AlarmKind;
 use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo, ANALOG_FULL};
 
 /// Signal indexes.
@@ -206,7 +207,7 @@ impl Plant for Tank {
         let wanted = self.level + inflow - outflow;
         let over = wanted > ANALOG_FULL && inflow > 0;
         if over && !self.overflowing {
-            alarms.push("overflow: the fill valve is open and the tank is full".to_string());
+            alarms.push(AlarmKind::Overflow.to_string());
         }
         self.overflowing = over;
         if over {

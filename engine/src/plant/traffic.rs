@@ -7,6 +7,7 @@
 
 use std::collections::VecDeque;
 
+use super::alarm::AlarmKind;
 use super::rng::Rng;
 use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
 
@@ -193,10 +194,8 @@ impl Plant for Traffic {
         let cars_go = on(CAR_GREEN) || on(CAR_YELLOW);
         let conflict = cars_go && on(WALK);
         if conflict && !self.conflict {
-            let light = if on(CAR_GREEN) { "green" } else { "yellow" };
-            alarms.push(format!(
-                "cars have {light} while pedestrians have walk: danger on the crossing"
-            ));
+            let green = on(CAR_GREEN);
+            alarms.push(AlarmKind::CarsOnWalk { green }.to_string());
         }
         self.conflict = conflict;
         if now_ms >= self.next_arrival {

@@ -7,6 +7,7 @@ mod common;
 
 mod cli;
 mod examples;
+mod exercises;
 mod four;
 mod project;
 mod properties;
