@@ -11,7 +11,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
-from test_app import el, severe_console_messages, wait
+from test_app import drawn, el, severe_console_messages, wait
 from test_ladder import focus_ladder, place
 
 # Each plant, its exercise's machine and a signal its drawing shows.
@@ -87,7 +87,7 @@ def test_the_room_light_exercise_drawn_by_keys_passes_check_my_answer(driver, ba
     coupled(driver, "room-light", "minasec-u", "dark")
     # The empty ladder the student starts from does not pass.
     el(driver, "exercise-check").click()
-    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="exercise-result"]'))
+    wait(driver, lambda: drawn(driver, "exercise-result"))
     wait(driver, lambda: result(driver)[1] not in (None, "0"), timeout=40)
     assert result(driver)[0] != result(driver)[1], result(driver)
     # The reference answer: the lamp on while the sensor says dark.
