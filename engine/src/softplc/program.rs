@@ -188,6 +188,8 @@ pub struct Program {
     /// The standard blocks' outputs read as operands: (block, output,
     /// the slot each call writes it to).
     pub(super) shadows: Vec<(usize, usize, usize)>,
+    /// A Structured Text program's place (line, column) of each step.
+    pub(super) st_places: Vec<(u32, u32)>,
 }
 
 /// What a declared name is.
@@ -231,6 +233,7 @@ impl Program {
             entries: Vec::new(),
             uart: crate::runtime::uart::Uart::default(),
             shadows: Vec::new(),
+            st_places: Vec::new(),
         };
         for b in &sections.blocks {
             let (vars, lines) = read(&b.text, &types)?;

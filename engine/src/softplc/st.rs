@@ -48,6 +48,29 @@ impl Program {
     pub fn load_st(text: &str) -> Result<Program, Vec<StLoadError>> {
         load(text).map(|(p, _)| p)
     }
+
+    /// The ST line and column (1-based) step `step` comes from, for a
+    /// program loaded from Structured Text (`None` for IL, or a step no
+    /// ST statement wrote: the return between the program and its
+    /// blocks' bodies). The page shows values beside lines, stops at
+    /// breakpoints and steps by statement with it.
+    pub fn source_line(&self, step: usize) -> Option<(u32, u32)> {
+        self.st_places.get(step).copied().filter(|&(l, _)| l > 0)
+    }
+
+    /// The IL line of each step (0 for a step no line wrote), as the
+    /// loader compiled them: the program's lines, a return when it has
+    /// block instances, then each instance's body and its return.
+    fn step_lines(&self) -> Vec<usize> {
+        let mut out: Vec<usize> = self.lines.iter().map(|l| l.line).collect();
+        for (u, &entry) in self.entries.iter().enumerate() {
+            out.resize(entry, 0);
+            let ty = self.instances[u].ty;
+            out.extend(self.user_types[ty].lines.iter().map(|l| l.line));
+        }
+        out.resize(self.steps.len(), 0);
+        out
+    }
 }
 
 fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
@@ -55,7 +78,7 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
     check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
     let lowered =
         lower_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
-    let program = Program::load(&lowered.text).map_err(|es| {
+    let mut program = Program::load(&lowered.text).map_err(|es| {
         es.into_iter()
             .map(|e| {
                 let span = lowered.place(e.line);
@@ -67,5 +90,16 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
             })
             .collect::<Vec<_>>()
     })?;
+    program.st_places = program
+        .step_lines()
+        .into_iter()
+        .map(|il| match il {
+            0 => (0, 0),
+            il => {
+                let span = lowered.place(il);
+                (span.line, span.column)
+            }
+        })
+        .collect();
     Ok((program, lowered.text))
 }

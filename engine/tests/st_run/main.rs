@@ -12,6 +12,7 @@ mod control;
 mod expressions;
 mod inout;
 mod numeric;
+mod places;
 mod property;
 mod refusals;
 mod small_types;
