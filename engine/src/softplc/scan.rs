@@ -183,7 +183,11 @@ impl Program {
     pub fn slot_of(&self, name_or_address: &str) -> Option<usize> {
         match Address::parse(name_or_address) {
             Ok(a) => self.by_address.get(&a).copied(),
-            Err(_) => match self.by_name.get(&name_or_address.to_ascii_uppercase()) {
+            // `a[1, 2]` as `A[1,2]`: an element's name has no spaces.
+            Err(_) => match self
+                .by_name
+                .get(&name_or_address.replace(' ', "").to_ascii_uppercase())
+            {
                 Some(Named::Slot(s)) => Some(*s),
                 _ => None,
             },

@@ -8,6 +8,7 @@ mod files;
 
 mod cli;
 mod common;
+mod composite;
 mod control;
 mod expressions;
 mod inout;

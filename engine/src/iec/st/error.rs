@@ -88,6 +88,9 @@ pub enum StErrorKind {
         /// The indices written.
         given: usize,
     },
+    /// An element at a constant index outside its array's bounds (the
+    /// element as written, upper-case).
+    IndexOutOfRange(String),
     /// A value of one type where another is needed: where, the type
     /// needed and the type found.
     Mismatch {
@@ -186,6 +189,7 @@ impl fmt::Display for StErrorKind {
                     "`{name}` has {dims} dimension(s); {given} index(es) given"
                 )
             }
+            StErrorKind::IndexOutOfRange(e) => write!(f, "`{e}` is outside the array's bounds"),
             StErrorKind::Mismatch { place, want, found } => {
                 write!(f, "{place} must be {want}, not {found}")
             }

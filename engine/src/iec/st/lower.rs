@@ -23,6 +23,9 @@ pub struct Lowered {
     pub text: String,
     /// `spans[n]`: where IL line `n + 1` comes from in the ST text.
     pub spans: Vec<Span>,
+    /// The program's STRUCT members and ARRAY elements as written
+    /// (`a[1, 2]`, `s.m`) and the hidden IL variable each is.
+    pub aliases: Vec<(String, String)>,
 }
 
 impl Lowered {
@@ -47,6 +50,16 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         ..Lower::default()
     };
     l.know_in_outs(source);
+    l.types = source
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Types(ts) => Some(ts),
+            _ => None,
+        })
+        .flatten()
+        .map(|t| (t.name.name.to_ascii_uppercase(), t.def.clone()))
+        .collect();
     let mut program: Option<&Pou> = None;
     for item in &source.items {
         match item {
@@ -58,15 +71,16 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
                 PouKind::Program => program = Some(p),
                 PouKind::Function(ref ty) => l.function_pou(p, ty),
             },
-            Item::Types(ts) => {
-                let span = ts.first().map(|t| t.name.span).unwrap_or_default();
-                l.not_yet(span, "a TYPE declaration")
-            }
+            // Known before any POU (`l.types`): flattened where used.
+            Item::Types(_) => {}
             Item::Globals(b) => l.not_yet(b.span, "VAR_GLOBAL"),
         }
     }
     match program {
-        Some(p) => l.pou(p, "PROGRAM"),
+        Some(p) => {
+            l.pou(p, "PROGRAM");
+            l.aliases = l.shown.clone();
+        }
         None => l.errors.push(at(
             Span { line: 1, column: 1 },
             StErrorKind::NotYet("a file without a PROGRAM".to_string()),
@@ -83,7 +97,12 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         text.push('\n');
         spans.push(span);
     }
-    Ok(Lowered { text, spans })
+    let aliases = l.aliases;
+    Ok(Lowered {
+        text,
+        spans,
+        aliases,
+    })
 }
 
 /// Each own function's and block's inputs in order (name, type as
@@ -155,6 +174,17 @@ pub(super) struct Lower {
     pub(super) inouts: std::collections::HashSet<(String, String)>,
     /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).
     pub(super) ret: Option<String>,
+    /// The source's `TYPE`s, by upper-case name.
+    pub(super) types: std::collections::HashMap<String, super::ast::TypeDef>,
+    /// The POU being lowered's flattened values: key (`A[1].M`) to
+    /// hidden variable; its flattened variables (upper-case); each value
+    /// as written with its hidden variable.
+    pub(super) flat: std::collections::HashMap<String, String>,
+    pub(super) flat_bases: std::collections::HashSet<String>,
+    pub(super) shown: Vec<(String, String)>,
+    pub(super) leaf_count: usize,
+    /// The program's `shown`, for [`Lowered::aliases`].
+    aliases: Vec<(String, String)>,
 }
 
 impl Lower {
@@ -186,6 +216,9 @@ impl Lower {
     }
 
     pub(super) fn pou(&mut self, p: &Pou, keyword: &str) {
+        self.flat.clear();
+        self.flat_bases.clear();
+        self.shown.clear();
         self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);
@@ -204,6 +237,9 @@ impl Lower {
         let span = s.span;
         match &s.kind {
             StmtKind::Assign { target, value } => {
+                if self.is_flat(target) {
+                    return self.flat_assign(target, value, span);
+                }
                 if !target.path.is_empty() {
                     return self.not_yet(span, "an assignment to a member or element");
                 }
@@ -370,7 +406,7 @@ impl Lower {
         if let Some(t) = self.simple(e) {
             return self.emit(format!("LD {t}"), e.span);
         }
-        if let Some(t) = negated(e) {
+        if let Some(t) = self.negated(e) {
             return self.emit(format!("LDN {t}"), e.span);
         }
         match &e.kind {
@@ -389,6 +425,7 @@ impl Lower {
                 self.operand(il_op(*op), b);
             }
             ExprKind::Call(call) => self.function(call, e.span),
+            ExprKind::Variable(v) if self.is_flat(v) => self.refuse_flat(v, e.span),
             ExprKind::Variable(_) => self.not_yet(e.span, "an array element"),
             ExprKind::Literal(_) => {}
         }
@@ -397,7 +434,7 @@ impl Lower {
     /// `OP b`, or `OP(` … `)` around `b`'s instructions.
     fn operand(&mut self, op: &str, b: &Expr) {
         // `a AND NOT b` is IL's one `ANDN b`, as a hand-written IL has it.
-        if let (true, Some(t)) = (matches!(op, "AND" | "OR" | "XOR"), negated(b)) {
+        if let (true, Some(t)) = (matches!(op, "AND" | "OR" | "XOR"), self.negated(b)) {
             return self.emit(format!("{op}N {t}"), b.span);
         }
         match self.simple(b) {
@@ -496,10 +533,14 @@ pub(super) fn simple(e: &Expr) -> Option<String> {
 
 /// The operand under `NOT`, when `e` is `NOT operand` of a BOOL or bit
 /// string (a variable: `LDN x`, `ANDN x` invert it, as `NOT` does).
-fn negated(e: &Expr) -> Option<String> {
-    match &e.kind {
-        ExprKind::Unary(UnaryOp::Not, x) if matches!(x.kind, ExprKind::Variable(_)) => simple(x),
-        _ => None,
+impl Lower {
+    fn negated(&self, e: &Expr) -> Option<String> {
+        match &e.kind {
+            ExprKind::Unary(UnaryOp::Not, x) if matches!(x.kind, ExprKind::Variable(_)) => {
+                self.simple(x)
+            }
+            _ => None,
+        }
     }
 }
 

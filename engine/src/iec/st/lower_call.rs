@@ -81,6 +81,11 @@ impl Lower {
         if let ExprKind::Call(_) = e.kind {
             return self.hoisted.get(&(e.span.line, e.span.column)).cloned();
         }
+        if let ExprKind::Variable(v) = &e.kind {
+            if self.is_flat(v) {
+                return self.leaf(v);
+            }
+        }
         simple(e)
     }
 

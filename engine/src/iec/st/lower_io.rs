@@ -8,7 +8,7 @@
 
 use super::ast::{Arg, Expr, ExprKind, Item, Pou, PouKind, Source, Span, VarBlock, VarKind};
 use super::error::StErrorKind;
-use super::lower::{simple, Lower};
+use super::lower::Lower;
 use super::types::at;
 
 /// The hidden output an in-out parameter `pin` is copied out by.
@@ -51,21 +51,17 @@ impl Lower {
         };
         self.emit(keyword, b.span);
         for d in &b.decls {
-            if matches!(d.ty, super::ast::TypeRef::Array { .. }) {
-                self.not_yet(d.span, "an ARRAY variable");
+            let local = matches!(b.kind, VarKind::Local | VarKind::Temp);
+            if self.flat_decl(d, local) {
                 continue;
             }
-            let ty = super::print::type_text(&d.ty);
+            let (ty, init) = self.plain(d);
             let at = d
                 .location
                 .as_ref()
                 .map(|a| format!(" AT {a}"))
                 .unwrap_or_default();
-            let init = d
-                .init
-                .as_ref()
-                .map(|i| format!(" := {}", super::print::init_text(i)))
-                .unwrap_or_default();
+            let init = init.map(|i| format!(" := {i}")).unwrap_or_default();
             for n in &d.names {
                 self.emit(format!("  {}{at} : {ty}{init};", n.name), n.span);
             }
@@ -122,7 +118,7 @@ impl Lower {
         if !self.inouts.contains(&key) {
             return None;
         }
-        match (&e.kind, simple(e)) {
+        match (&e.kind, self.simple(e)) {
             (ExprKind::Variable(_), Some(v)) => Some(vec![
                 format!("{pin} := {v}"),
                 format!("{} => {v}", io_pin(pin)),

@@ -1,0 +1,346 @@
+//! STRUCT and ARRAY variables lowered by **flattening**: each elementary
+//! value inside one (`s.m`, `a[2]`, `arr[1].m[2]`) becomes a hidden IL
+//! variable of its own (`st_v3`), declared in order, with its initial
+//! value from the declaration, the `TYPE`'s default or the member's; an
+//! element or member written with constant indices is that variable. A
+//! program's are also named as written for the front ends (`--watch
+//! a[2]`, `s.m`: [`super::lower::Lowered::aliases`]). An index computed
+//! at run time does not run yet (refused at its place); a constant one
+//! outside the array is refused at load, naming the range.
+
+use super::ast::{
+    ArrayInit, Expr, ExprKind, Init, Literal, Selector, Span, TypeDef, TypeRef, UnaryOp, VarDecl,
+    Variable,
+};
+use super::error::StErrorKind;
+use super::lower::Lower;
+use super::types::at;
+
+/// The most elementary values one flattened variable may hold.
+const MAX_LEAVES: usize = 4096;
+
+/// One elementary value inside a variable: its path as written
+/// (`a[1,2].m`), its IL type and its initial value's IL text.
+struct Leaf {
+    path: String,
+    ty: String,
+    init: Option<String>,
+}
+
+/// Why a variable's leaves were not listed.
+enum Stop {
+    /// Its type is no STRUCT, ARRAY or alias of one: declared as it is.
+    NotComposite,
+    /// More than [`MAX_LEAVES`] values.
+    TooBig,
+}
+
+/// The key a path is found by: upper-case, no spaces.
+pub(super) fn key(path: &str) -> String {
+    path.chars()
+        .filter(|c| !c.is_whitespace())
+        .collect::<String>()
+        .to_ascii_uppercase()
+}
+
+impl Lower {
+    /// The `TYPE` declared as `name` (any case).
+    fn type_def(&self, name: &str) -> Option<&TypeDef> {
+        self.types.get(&name.to_ascii_uppercase())
+    }
+
+    /// Whether `ty` holds more than one value (a STRUCT, an ARRAY, or an
+    /// alias of one), so a variable of it is flattened.
+    fn composite(&self, ty: &TypeRef, depth: usize) -> bool {
+        match ty {
+            TypeRef::Array { .. } => true,
+            TypeRef::Named(n) if depth < 32 => match self.type_def(&n.name) {
+                Some(TypeDef::Struct(_)) => true,
+                Some(TypeDef::Alias(t, _)) => self.composite(t, depth + 1),
+                None => false,
+            },
+            _ => false,
+        }
+    }
+
+    /// `ty` with its aliases followed to an elementary or block type,
+    /// with the alias's default value when the declaration gives none.
+    fn resolved<'a>(
+        &'a self,
+        ty: &'a TypeRef,
+        init: Option<&'a Init>,
+    ) -> (&'a TypeRef, Option<&'a Init>) {
+        let (mut ty, mut init) = (ty, init);
+        for _ in 0..32 {
+            match ty {
+                TypeRef::Named(n) => match self.type_def(&n.name) {
+                    Some(TypeDef::Alias(t, d)) => {
+                        init = init.or(d.as_ref());
+                        ty = t;
+                    }
+                    _ => break,
+                },
+                _ => break,
+            }
+        }
+        (ty, init)
+    }
+
+    /// Declares `d`'s names (in a `VAR` or `VAR_TEMP`, `local`): a
+    /// STRUCT or ARRAY one as its leaves, each a hidden variable;
+    /// `false` when `d` is no composite (declared as written).
+    pub(super) fn flat_decl(&mut self, d: &VarDecl, local: bool) -> bool {
+        if !self.composite(&d.ty, 0) {
+            return false;
+        }
+        if !local {
+            self.not_yet(d.span, "a STRUCT or ARRAY as a block's input or output");
+            return true;
+        }
+        for n in &d.names {
+            let mut leaves = Vec::new();
+            match self.leaves(&d.ty, d.init.as_ref(), n.name.clone(), &mut leaves, 0) {
+                Ok(()) => {}
+                Err(Stop::TooBig) => {
+                    let what = format!("a variable of more than {MAX_LEAVES} values");
+                    self.not_yet(n.span, what);
+                    continue;
+                }
+                Err(Stop::NotComposite) => continue,
+            }
+            for leaf in leaves {
+                let hidden = self.fresh_leaf();
+                let init = leaf.init.map(|i| format!(" := {i}")).unwrap_or_default();
+                self.emit(format!("  {hidden} : {}{init};", leaf.ty), n.span);
+                self.flat.insert(key(&leaf.path), hidden.clone());
+                self.shown.push((leaf.path, hidden));
+            }
+            self.flat_bases.insert(n.name.to_ascii_uppercase());
+        }
+        true
+    }
+
+    /// `d`'s type and initial value as IL text, an alias (`TYPE Count :
+    /// DINT := 3`) followed to its type and default.
+    pub(super) fn plain(&self, d: &VarDecl) -> (String, Option<String>) {
+        let (ty, init) = self.resolved(&d.ty, d.init.as_ref());
+        let init = init.map(super::print::init_text);
+        (super::print::type_text(ty), init)
+    }
+
+    /// A hidden leaf's name: none the source declares.
+    fn fresh_leaf(&mut self) -> String {
+        loop {
+            self.leaf_count += 1;
+            let name = format!("{}st_v{}", self.tag, self.leaf_count);
+            if self.taken.insert(name.to_ascii_uppercase()) {
+                return name;
+            }
+        }
+    }
+
+    /// The leaves of a value of `ty` at `path`, in order.
+    fn leaves(
+        &self,
+        ty: &TypeRef,
+        init: Option<&Init>,
+        path: String,
+        out: &mut Vec<Leaf>,
+        depth: usize,
+    ) -> Result<(), Stop> {
+        if out.len() > MAX_LEAVES {
+            return Err(Stop::TooBig);
+        }
+        let (ty, init) = self.resolved(ty, init);
+        match ty {
+            TypeRef::Array { dims, of } => self.array_leaves(dims, of, init, &path, out, depth),
+            TypeRef::Named(n) => match self.type_def(&n.name) {
+                Some(TypeDef::Struct(members)) if depth < 32 => {
+                    let given = match init {
+                        Some(Init::Struct(fields)) => fields.as_slice(),
+                        _ => &[],
+                    };
+                    for m in members {
+                        for name in &m.names {
+                            let own = given
+                                .iter()
+                                .find(|(f, _)| f.name.eq_ignore_ascii_case(&name.name))
+                                .map(|(_, v)| v)
+                                .or(m.init.as_ref());
+                            let p = format!("{path}.{}", name.name);
+                            self.leaves(&m.ty, own, p, out, depth + 1)?;
+                        }
+                    }
+                    Ok(())
+                }
+                _ => Err(Stop::NotComposite),
+            },
+            elementary => {
+                let init = match init {
+                    Some(i @ Init::Expr(_)) => Some(super::print::init_text(i)),
+                    _ => None,
+                };
+                let ty = super::print::type_text(elementary);
+                out.push(Leaf { path, ty, init });
+                Ok(())
+            }
+        }
+    }
+
+    fn array_leaves(
+        &self,
+        dims: &[(i128, i128)],
+        of: &TypeRef,
+        init: Option<&Init>,
+        path: &str,
+        out: &mut Vec<Leaf>,
+        depth: usize,
+    ) -> Result<(), Stop> {
+        let count = dims.iter().try_fold(1usize, |n, (lo, hi)| {
+            let len = usize::try_from(hi - lo + 1).ok()?;
+            n.checked_mul(len).filter(|&n| n <= MAX_LEAVES)
+        });
+        let count = count.ok_or(Stop::TooBig)?;
+        let mut values: Vec<Option<&Init>> = Vec::new();
+        if let Some(Init::Array(items)) = init {
+            for item in items {
+                match item {
+                    ArrayInit::One(v) => values.push(Some(v)),
+                    ArrayInit::Repeat(n, v) => {
+                        let n = (*n as usize).min(count.saturating_sub(values.len()));
+                        values.extend(std::iter::repeat_n(v.as_ref(), n));
+                    }
+                }
+            }
+        }
+        for k in 0..count {
+            let (mut rest, mut index) = (k, Vec::new());
+            for (lo, hi) in dims.iter().rev() {
+                let len = usize::try_from(hi - lo + 1).unwrap_or(1).max(1);
+                index.push(lo + (rest % len) as i128);
+                rest /= len;
+            }
+            index.reverse();
+            let shown: Vec<String> = index.iter().map(i128::to_string).collect();
+            let p = format!("{path}[{}]", shown.join(", "));
+            let v = values.get(k).copied().flatten();
+            self.leaves(of, v, p, out, depth + 1)?;
+        }
+        Ok(())
+    }
+
+    /// The key of `v` as written with constant indices (`A[1,2].M`);
+    /// `None` when an index is computed at run time.
+    fn path_key(v: &Variable) -> Option<String> {
+        let mut k = v.base.name.to_ascii_uppercase();
+        for s in &v.path {
+            match s {
+                Selector::Member(m) => {
+                    k.push('.');
+                    k.push_str(&m.name.to_ascii_uppercase());
+                }
+                Selector::Index(ix) => {
+                    let parts: Option<Vec<String>> = ix
+                        .iter()
+                        .map(|e| constant(e).map(|c| c.to_string()))
+                        .collect();
+                    k.push('[');
+                    k.push_str(&parts?.join(","));
+                    k.push(']');
+                }
+            }
+        }
+        Some(k)
+    }
+
+    /// The hidden variable `v` names, when it is one value inside a
+    /// flattened variable.
+    pub(super) fn leaf(&self, v: &Variable) -> Option<String> {
+        if !self.flat_bases.contains(&v.base.name.to_ascii_uppercase()) {
+            return None;
+        }
+        self.flat.get(&Self::path_key(v)?).cloned()
+    }
+
+    /// Whether `v` reaches into (or is) a flattened variable.
+    pub(super) fn is_flat(&self, v: &Variable) -> bool {
+        self.flat_bases.contains(&v.base.name.to_ascii_uppercase())
+    }
+
+    /// Why `v`, inside a flattened variable, is no one value: an index
+    /// computed at run time, one outside its array, or a whole STRUCT
+    /// or ARRAY where one value is needed.
+    pub(super) fn refuse_flat(&mut self, v: &Variable, span: Span) {
+        let Some(k) = Self::path_key(v) else {
+            return self.not_yet(span, "an array element at an index computed at run time");
+        };
+        let inside = self.flat.keys().any(|f| {
+            f.strip_prefix(k.as_str())
+                .is_some_and(|rest| rest.starts_with(['.', '[']))
+        });
+        if inside {
+            self.not_yet(span, "a whole STRUCT or ARRAY here (name one value of it)");
+        } else {
+            self.errors.push(at(span, StErrorKind::IndexOutOfRange(k)));
+        }
+    }
+
+    /// `target := value` where either reaches into a flattened variable:
+    /// one value, or a whole STRUCT or ARRAY copied value by value from
+    /// one of the same type.
+    pub(super) fn flat_assign(&mut self, target: &Variable, value: &Expr, span: Span) {
+        if let Some(t) = self.leaf(target) {
+            self.value(value);
+            return self.emit(format!("ST {t}"), span);
+        }
+        let pairs = match (&value.kind, Self::path_key(target)) {
+            (ExprKind::Variable(src), Some(to)) if self.is_flat(src) => {
+                Self::path_key(src).map(|from| self.copies(&from, &to))
+            }
+            _ => None,
+        };
+        match pairs {
+            Some(pairs) if !pairs.is_empty() => {
+                for (from, to) in pairs {
+                    self.emit(format!("LD {from}"), span);
+                    self.emit(format!("ST {to}"), span);
+                }
+            }
+            _ => self.refuse_flat(target, span),
+        }
+    }
+
+    /// The (source, target) leaves of a copy from path `from` to `to`
+    /// (keys), matched by what follows each; empty when they differ.
+    fn copies(&self, from: &str, to: &str) -> Vec<(String, String)> {
+        let under = |base: &str| -> Vec<(String, String)> {
+            let mut v: Vec<(String, String)> = self
+                .flat
+                .iter()
+                .filter_map(|(k, h)| {
+                    let rest = k.strip_prefix(base)?;
+                    rest.starts_with(['.', '['])
+                        .then(|| (rest.to_string(), h.clone()))
+                })
+                .collect();
+            v.sort();
+            v
+        };
+        let (a, b) = (under(from), under(to));
+        let same = a.len() == b.len() && a.iter().zip(&b).all(|(x, y)| x.0 == y.0);
+        if !same {
+            return Vec::new();
+        }
+        a.into_iter().zip(b).map(|(x, y)| (x.1, y.1)).collect()
+    }
+}
+
+/// An index's value when it is a whole-number literal (maybe negated).
+fn constant(e: &Expr) -> Option<i128> {
+    match &e.kind {
+        ExprKind::Literal(Literal::Integer(v, _)) => Some(*v),
+        ExprKind::Unary(UnaryOp::Neg, x) => constant(x).map(|v| -v),
+        ExprKind::Unary(UnaryOp::Plus, x) => constant(x),
+        _ => None,
+    }
+}
