@@ -141,18 +141,14 @@ impl fmt::Display for StErrorKind {
                 None => write!(f, "`{text}` is not a {} value", t.name()),
             },
             StErrorKind::BadAddress(e) => write!(f, "{e}"),
-            StErrorKind::BadLiteralType(t) => {
-                write!(f, "`{t}#` is not a type a literal can have")
-            }
+            StErrorKind::BadLiteralType(t) => write!(f, "`{t}#` is not a type a literal can have"),
             StErrorKind::Expected {
                 what,
                 context,
                 found,
             } => write!(f, "expected {what} {context}, found {found}"),
             StErrorKind::InOutArgument(pin) => write!(f, "the VAR_IN_OUT {pin} takes a variable"),
-            StErrorKind::NotYet(what) => {
-                write!(f, "{what} does not run on the soft PLC yet")
-            }
+            StErrorKind::NotYet(what) => write!(f, "{what} does not run on the soft PLC yet"),
             StErrorKind::Unsupported(what) => {
                 write!(f, "{what} not supported by Hashigo's Structured Text")
             }
