@@ -89,13 +89,79 @@ fn a_constant_index_outside_the_array_is_refused_at_its_place() {
 }
 
 #[test]
-fn an_index_computed_at_run_time_does_not_run_yet() {
+fn an_index_that_is_an_expression_does_not_run_yet() {
     let e = refusals(
-        "PROGRAM t\nVAR\n  a : ARRAY [1..3] OF INT;\n  i, r : INT;\nEND_VAR\nr := a[i];\nEND_PROGRAM\n",
+        "PROGRAM t\nVAR\n  a : ARRAY [1..3] OF INT;\n  i, r : INT;\nEND_VAR\nr := a[i + 1];\nEND_PROGRAM\n",
     );
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(
-        e[0].starts_with("6:6:") && e[0].contains("computed"),
+        e[0].starts_with("6:6:") && e[0].contains("expression"),
         "{e:?}"
     );
+}
+
+#[test]
+fn run_time_indices_read_and_write_elements() {
+    let mut p = load(
+        "PROGRAM t\nVAR\n  a : ARRAY [1..5] OF INT := [1, 2, 3, 4, 5];\n  b : ARRAY [1..5] OF INT;\n  i, j, s : INT;\nEND_VAR\n\
+         s := 0;\nFOR i := 1 TO 5 DO\n  s := s + a[i];\n  j := 6 - i;\n  b[j] := a[i] * 10;\nEND_FOR;\nEND_PROGRAM\n",
+    );
+    p.scan(0);
+    // 1 + 2 + 3 + 4 + 5; b is a reversed and times ten.
+    assert_eq!(shown(&p, "s"), "15");
+    let b: Vec<String> = (1..=5).map(|k| shown(&p, &format!("b[{k}]"))).collect();
+    assert_eq!(b, ["50", "40", "30", "20", "10"]);
+    assert_eq!(p.fault(), None);
+}
+
+#[test]
+fn run_time_indices_reach_into_arrays_of_structs() {
+    let mut p = load(
+        "TYPE\n  S : STRUCT\n    on : BOOL;\n    m : ARRAY [0..2] OF DINT;\n  END_STRUCT;\nEND_TYPE\n\
+         PROGRAM t\nVAR\n  arr : ARRAY [-1..1] OF S;\n  i, j : INT;\n  r : DINT;\nEND_VAR\n\
+         FOR i := -1 TO 1 DO\n  FOR j := 0 TO 2 DO\n    arr[i].m[j] := INT_TO_DINT(i * 10 + j);\n  END_FOR;\n  arr[i].on := i > 0;\nEND_FOR;\n\
+         i := 0; j := 2;\nr := arr[i].m[j] + arr[1].m[0];\nEND_PROGRAM\n",
+    );
+    p.scan(0);
+    assert_eq!(shown(&p, "arr[-1].m[2]"), "-8");
+    assert_eq!(shown(&p, "arr[1].m[1]"), "11");
+    assert_eq!(shown(&p, "arr[1].on"), "TRUE");
+    assert_eq!(shown(&p, "arr[0].on"), "FALSE");
+    // arr[0].m[2] = 2, arr[1].m[0] = 10.
+    assert_eq!(shown(&p, "r"), "12");
+}
+
+#[test]
+fn an_index_outside_its_array_at_run_time_stops_the_scan_at_its_line() {
+    let mut p = load(
+        "PROGRAM t\nVAR\n  a : ARRAY [1..3] OF INT;\n  i, before, after : INT;\nEND_VAR\n\
+         before := before + 1;\na[i] := 7;\nafter := after + 1;\nEND_PROGRAM\n",
+    );
+    // i is 0: below the array's 1..3.
+    p.scan(0);
+    let step = p.fault().expect("a fault");
+    assert_eq!(p.source_line(step).map(|(l, _)| l), Some(7));
+    assert_eq!(shown(&p, "before"), "1");
+    assert_eq!(shown(&p, "after"), "0");
+    // Each scan runs again from the start and stops there again.
+    p.scan(0);
+    assert_eq!(shown(&p, "before"), "2");
+    assert!(p.fault().is_some());
+}
+
+#[test]
+fn the_element_operand_in_il_is_checked_at_load() {
+    use engine::softplc::Program;
+    let vars = "VAR\n  a0 : INT;\n  a1 : INT;\n  f : BOOL;\n  i : INT;\nEND_VAR\n";
+    let mut p = Program::load(&format!("{vars}LD 1\nST i\nLD 5\nST a0[i:0:2:1]\n"))
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    p.scan(0);
+    assert_eq!(shown(&p, "a1"), "5");
+    // Reaching f (a BOOL) from a0 (an INT), or elsewhere than LD/ST.
+    let bad = |text: &str| match Program::load(&format!("{vars}{text}")) {
+        Ok(_) => panic!("loaded {text}"),
+        Err(e) => e[0].to_string(),
+    };
+    assert!(bad("LD a0[i:0:3:1]\n").contains("one type"));
+    assert!(bad("LD 1\nADD a0[i:0:2:1]\n").contains("element operand"));
 }

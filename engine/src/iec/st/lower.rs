@@ -183,6 +183,10 @@ pub(super) struct Lower {
     pub(super) flat_bases: std::collections::HashSet<String>,
     pub(super) shown: Vec<(String, String)>,
     pub(super) leaf_count: usize,
+    /// Each hidden leaf's place among the POU's leaves, and each
+    /// flattened variable's type (upper-case).
+    pub(super) order: std::collections::HashMap<String, usize>,
+    pub(super) flat_types: std::collections::HashMap<String, super::ast::TypeRef>,
     /// The program's `shown`, for [`Lowered::aliases`].
     aliases: Vec<(String, String)>,
 }
@@ -219,6 +223,8 @@ impl Lower {
         self.flat.clear();
         self.flat_bases.clear();
         self.shown.clear();
+        self.order.clear();
+        self.flat_types.clear();
         self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);
@@ -425,7 +431,7 @@ impl Lower {
                 self.operand(il_op(*op), b);
             }
             ExprKind::Call(call) => self.function(call, e.span),
-            ExprKind::Variable(v) if self.is_flat(v) => self.refuse_flat(v, e.span),
+            ExprKind::Variable(v) if self.is_flat(v) => self.flat_load(v, e.span),
             ExprKind::Variable(_) => self.not_yet(e.span, "an array element"),
             ExprKind::Literal(_) => {}
         }
@@ -443,11 +449,13 @@ impl Lower {
                 let open = self.lines.len();
                 self.emit(format!("{op}("), b.span);
                 self.expr(b);
-                // `OP(` / `LD x` is IL's one `OP( x`.
+                // `OP(` / `LD x` is IL's one `OP( x` (not an element:
+                // only LD and ST take one).
                 if let Some(t) = self
                     .lines
                     .get(open + 1)
                     .and_then(|(l, _)| l.strip_prefix("LD "))
+                    .filter(|t| !t.contains('['))
                 {
                     self.lines[open].0 = format!("{op}( {t}");
                     self.lines.remove(open + 1);

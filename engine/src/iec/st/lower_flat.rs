@@ -113,9 +113,12 @@ impl Lower {
                 let init = leaf.init.map(|i| format!(" := {i}")).unwrap_or_default();
                 self.emit(format!("  {hidden} : {}{init};", leaf.ty), n.span);
                 self.flat.insert(key(&leaf.path), hidden.clone());
+                self.order.insert(hidden.clone(), self.shown.len());
                 self.shown.push((leaf.path, hidden));
             }
             self.flat_bases.insert(n.name.to_ascii_uppercase());
+            self.flat_types
+                .insert(n.name.to_ascii_uppercase(), d.ty.clone());
         }
         true
     }
@@ -262,6 +265,80 @@ impl Lower {
         self.flat.get(&Self::path_key(v)?).cloned()
     }
 
+    /// `v` read: its leaf, or the element operand of a run-time index.
+    pub(super) fn flat_load(&mut self, v: &Variable, span: Span) {
+        match self.leaf(v).or_else(|| self.element(v)) {
+            Some(op) => self.emit(format!("LD {op}"), span),
+            None => self.refuse_flat(v, span),
+        }
+    }
+
+    /// The IL element operand (`st_v1[i:1:3:2]`) of `v` when an index of
+    /// it is a variable known only at run time: the first element it can
+    /// reach, and each such index with its dimension's low bound, length
+    /// and the slots from one index to the next.
+    pub(super) fn element(&self, v: &Variable) -> Option<String> {
+        let base = v.base.name.to_ascii_uppercase();
+        let mut ty = self.flat_types.get(&base)?;
+        let mut parts = vec![base];
+        // (index variable, low, length, the part it is in)
+        let mut runtime: Vec<(String, i128, i128, usize)> = Vec::new();
+        for s in &v.path {
+            ty = self.resolved(ty, None).0;
+            match (s, ty) {
+                (Selector::Member(m), TypeRef::Named(n)) => {
+                    let Some(TypeDef::Struct(ms)) = self.type_def(&n.name) else {
+                        return None;
+                    };
+                    let d = ms
+                        .iter()
+                        .find(|d| d.names.iter().any(|x| x.name.eq_ignore_ascii_case(&m.name)))?;
+                    ty = &d.ty;
+                    parts.push(format!(".{}", m.name.to_ascii_uppercase()));
+                }
+                (Selector::Index(ix), TypeRef::Array { dims, of }) if ix.len() == dims.len() => {
+                    parts.push("[".into());
+                    for (k, (e, (lo, hi))) in ix.iter().zip(dims).enumerate() {
+                        if k > 0 {
+                            parts.push(",".into());
+                        }
+                        match (constant(e), &e.kind) {
+                            (Some(c), _) => parts.push(c.to_string()),
+                            (None, ExprKind::Variable(_)) => {
+                                let name =
+                                    self.simple(e).filter(|n| crate::iec::is_identifier(n))?;
+                                runtime.push((name, *lo, hi - lo + 1, parts.len()));
+                                parts.push(lo.to_string());
+                            }
+                            _ => return None,
+                        }
+                    }
+                    parts.push("]".into());
+                    ty = of;
+                }
+                _ => return None,
+            }
+        }
+        if runtime.is_empty() {
+            return None;
+        }
+        let first = self.flat.get(&parts.concat())?;
+        let at = |h: &String| self.order.get(h).copied();
+        let mut dims = Vec::new();
+        for (name, lo, len, part) in runtime {
+            let stride = if len > 1 {
+                let mut next = parts.clone();
+                next[part] = (lo + 1).to_string();
+                let h = self.flat.get(&next.concat())?;
+                at(h)? - at(first)?
+            } else {
+                0
+            };
+            dims.push(format!("{name}:{lo}:{len}:{stride}"));
+        }
+        Some(format!("{first}[{}]", dims.join(",")))
+    }
+
     /// Whether `v` reaches into (or is) a flattened variable.
     pub(super) fn is_flat(&self, v: &Variable) -> bool {
         self.flat_bases.contains(&v.base.name.to_ascii_uppercase())
@@ -272,7 +349,8 @@ impl Lower {
     /// or ARRAY where one value is needed.
     pub(super) fn refuse_flat(&mut self, v: &Variable, span: Span) {
         let Some(k) = Self::path_key(v) else {
-            return self.not_yet(span, "an array element at an index computed at run time");
+            let what = "an index that is an expression (compute it into a variable first)";
+            return self.not_yet(span, what);
         };
         let inside = self.flat.keys().any(|f| {
             f.strip_prefix(k.as_str())
@@ -289,7 +367,7 @@ impl Lower {
     /// one value, or a whole STRUCT or ARRAY copied value by value from
     /// one of the same type.
     pub(super) fn flat_assign(&mut self, target: &Variable, value: &Expr, span: Span) {
-        if let Some(t) = self.leaf(target) {
+        if let Some(t) = self.leaf(target).or_else(|| self.element(target)) {
             self.value(value);
             return self.emit(format!("ST {t}"), span);
         }
