@@ -259,6 +259,13 @@ impl Program {
                     let slot = self.values.len();
                     self.values.push(init);
                     self.by_name.insert(upper, Named::Slot(slot));
+                    // An ST member's or element's name as written
+                    // (`(* st: a[1, 2] *)`, `iec::st::lower_flat`).
+                    if let Some(st) = v.comment.strip_prefix("st: ") {
+                        let alias = st.replace(' ', "");
+                        self.by_name
+                            .insert(alias.to_ascii_uppercase(), Named::Slot(slot));
+                    }
                     self.names.push((shown, slot));
                     if v.retain {
                         self.retained.push(slot);

@@ -90,14 +90,6 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
             })
             .collect::<Vec<_>>()
     })?;
-    // The program's STRUCT members and ARRAY elements by the names the
-    // source writes (`--watch a[1, 2]`, `s.m`), beside their hidden slots.
-    for (shown, hidden) in &lowered.aliases {
-        if let Some(&named) = program.by_name.get(&hidden.to_ascii_uppercase()) {
-            let key: String = shown.chars().filter(|c| !c.is_whitespace()).collect();
-            program.by_name.insert(key.to_ascii_uppercase(), named);
-        }
-    }
     program.st_places = program
         .step_lines()
         .into_iter()

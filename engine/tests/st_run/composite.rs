@@ -165,3 +165,21 @@ fn the_element_operand_in_il_is_checked_at_load() {
     assert!(bad("LD a0[i:0:3:1]\n").contains("one type"));
     assert!(bad("LD 1\nADD a0[i:0:2:1]\n").contains("element operand"));
 }
+
+#[test]
+fn a_blocks_own_arrays_keep_their_state_and_names() {
+    let mut p = load(
+        "FUNCTION_BLOCK Ring\nVAR_INPUT x : INT; END_VAR\nVAR_OUTPUT sum : INT; END_VAR\n\
+         VAR\n  buf : ARRAY [0..2] OF INT;\n  k, n : INT;\nEND_VAR\n\
+         buf[k] := x;\nk := (k + 1) MOD 3;\nsum := 0;\nFOR n := 0 TO 2 DO sum := sum + buf[n]; END_FOR;\n\
+         END_FUNCTION_BLOCK\n\
+         PROGRAM t\nVAR\n  r : Ring;\n  v, total : INT;\nEND_VAR\nv := v + 1;\nr(x := v, sum => total);\nEND_PROGRAM\n",
+    );
+    // Scans give 1, 2, 3, 4: the ring keeps the last three.
+    for _ in 0..4 {
+        p.scan(0);
+    }
+    assert_eq!(shown(&p, "total"), "9");
+    assert_eq!(shown(&p, "r.buf[0]"), "4");
+    assert_eq!(shown(&p, "r.buf[2]"), "3");
+}

@@ -23,9 +23,6 @@ pub struct Lowered {
     pub text: String,
     /// `spans[n]`: where IL line `n + 1` comes from in the ST text.
     pub spans: Vec<Span>,
-    /// The program's STRUCT members and ARRAY elements as written
-    /// (`a[1, 2]`, `s.m`) and the hidden IL variable each is.
-    pub aliases: Vec<(String, String)>,
 }
 
 impl Lowered {
@@ -77,10 +74,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         }
     }
     match program {
-        Some(p) => {
-            l.pou(p, "PROGRAM");
-            l.aliases = l.shown.clone();
-        }
+        Some(p) => l.pou(p, "PROGRAM"),
         None => l.errors.push(at(
             Span { line: 1, column: 1 },
             StErrorKind::NotYet("a file without a PROGRAM".to_string()),
@@ -97,12 +91,7 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         text.push('\n');
         spans.push(span);
     }
-    let aliases = l.aliases;
-    Ok(Lowered {
-        text,
-        spans,
-        aliases,
-    })
+    Ok(Lowered { text, spans })
 }
 
 /// Each own function's and block's inputs in order (name, type as
@@ -177,18 +166,16 @@ pub(super) struct Lower {
     /// The source's `TYPE`s, by upper-case name.
     pub(super) types: std::collections::HashMap<String, super::ast::TypeDef>,
     /// The POU being lowered's flattened values: key (`A[1].M`) to
-    /// hidden variable; its flattened variables (upper-case); each value
-    /// as written with its hidden variable.
+    /// hidden variable; its flattened variables (upper-case); the hidden
+    /// variables in order.
     pub(super) flat: std::collections::HashMap<String, String>,
     pub(super) flat_bases: std::collections::HashSet<String>,
-    pub(super) shown: Vec<(String, String)>,
+    pub(super) shown: Vec<String>,
     pub(super) leaf_count: usize,
     /// Each hidden leaf's place among the POU's leaves, and each
     /// flattened variable's type (upper-case).
     pub(super) order: std::collections::HashMap<String, usize>,
     pub(super) flat_types: std::collections::HashMap<String, super::ast::TypeRef>,
-    /// The program's `shown`, for [`Lowered::aliases`].
-    aliases: Vec<(String, String)>,
 }
 
 impl Lower {

@@ -2,11 +2,13 @@
 //! value inside one (`s.m`, `a[2]`, `arr[1].m[2]`) becomes a hidden IL
 //! variable of its own (`st_v3`), declared in order, with its initial
 //! value from the declaration, the `TYPE`'s default or the member's; an
-//! element or member written with constant indices is that variable. A
-//! program's are also named as written for the front ends (`--watch
-//! a[2]`, `s.m`: [`super::lower::Lowered::aliases`]). An index computed
-//! at run time does not run yet (refused at its place); a constant one
-//! outside the array is refused at load, naming the range.
+//! element or member written with constant indices is that variable.
+//! Each is also named as written for the front ends (`--watch a[2]`,
+//! `s.m`): its declaration's comment says the name (`(* st: a[2] *)`),
+//! which the soft PLC's loader takes as another name of it. An index
+//! that is an integer variable is the soft PLC's element operand
+//! ([`Lower::element`]); a constant one outside the array is refused at
+//! load, naming the element.
 
 use super::ast::{
     ArrayInit, Expr, ExprKind, Init, Literal, Selector, Span, TypeDef, TypeRef, UnaryOp, VarDecl,
@@ -111,10 +113,13 @@ impl Lower {
             for leaf in leaves {
                 let hidden = self.fresh_leaf();
                 let init = leaf.init.map(|i| format!(" := {i}")).unwrap_or_default();
-                self.emit(format!("  {hidden} : {}{init};", leaf.ty), n.span);
+                // The name as written rides in the IL (`st: a[1, 2]`),
+                // so a front end loading this IL text finds it.
+                let decl = format!("  {hidden} : {}{init}; (* st: {} *)", leaf.ty, leaf.path);
+                self.emit(decl, n.span);
                 self.flat.insert(key(&leaf.path), hidden.clone());
                 self.order.insert(hidden.clone(), self.shown.len());
-                self.shown.push((leaf.path, hidden));
+                self.shown.push(hidden);
             }
             self.flat_bases.insert(n.name.to_ascii_uppercase());
             self.flat_types
