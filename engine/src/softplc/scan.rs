@@ -419,9 +419,9 @@ fn peek<'a>(values: &'a [Data], src: &'a Src) -> &'a Data {
 }
 
 /// An element's LD or ST: the bit it read, or `None` when an index is
-/// outside its array (the scan stops there). Not inlined: the scan's
-/// other steps keep their code as it was (callgrind: 2 % more
-/// instructions a step on bench-256 when it was).
+/// outside its array (the scan stops there). Not inlined: inlined, the
+/// scan's other steps cost 2.3 % more instructions (callgrind,
+/// bench-256); out of line, 0.9 % (docs/performance.md).
 #[inline(never)]
 fn element(values: &mut [Data], step: &Step, cr: &mut Data) -> Option<bool> {
     match step {

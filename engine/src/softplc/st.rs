@@ -5,8 +5,8 @@
 
 use std::fmt;
 
-use super::Program;
-use crate::iec::st::{check_source, lower_source, parse_source, StError};
+use super::{LoadError, Program};
+use crate::iec::st::{check_source, lower_source, parse_source, StError, StErrorKind};
 
 /// Why a Structured Text program does not load: where (1-based line and
 /// column of the ST text) and what.
@@ -18,6 +18,19 @@ pub struct StLoadError {
     pub column: usize,
     /// The reason.
     pub message: String,
+    /// The reason as a value, for a front end that says it in another
+    /// language.
+    pub why: StWhy,
+}
+
+/// Why a Structured Text program does not load: the ST checker's or
+/// lowering's reason, or the IL loader's at the ST place.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum StWhy {
+    /// Read, checked or lowered.
+    St(StErrorKind),
+    /// The lowered IL refused by the soft PLC's loader.
+    Load(LoadError),
 }
 
 impl fmt::Display for StLoadError {
@@ -31,6 +44,7 @@ fn from_st(e: StError) -> StLoadError {
         line: e.span.line as usize,
         column: e.span.column as usize,
         message: e.kind.to_string(),
+        why: StWhy::St(e.kind),
     }
 }
 
@@ -86,6 +100,7 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
                     line: span.line as usize,
                     column: span.column as usize,
                     message: e.error.to_string(),
+                    why: StWhy::Load(e.error),
                 }
             })
             .collect::<Vec<_>>()

@@ -12,7 +12,7 @@ use crate::iec::literal::LiteralError;
 pub const MAX_DEPTH: usize = 64;
 
 /// A refusal and where it is.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct StError {
     /// Where the problem starts.
     pub span: Span,
@@ -21,7 +21,7 @@ pub struct StError {
 }
 
 /// What is wrong with a Structured Text source.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum StErrorKind {
     /// A character no token starts with.
     UnexpectedChar(char),
