@@ -3,6 +3,7 @@
 //! IEC 61131-3's rules by hand.
 
 mod blocks;
+mod call_args;
 #[path = "../common/mod.rs"]
 mod files;
 

@@ -131,39 +131,74 @@ impl Lower {
         }
     }
 
-    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL.
+    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL; an
+    /// input by position goes to the block's inputs in order, an output
+    /// negated (`NOT Q => y`) is read inverted after the call.
     pub(super) fn block_call(&mut self, call: &super::ast::Call, span: Span) {
-        let mut args = Vec::new();
+        let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
+        let ty = ty.cloned().unwrap_or_default();
+        let (mut args, mut after, mut position) = (Vec::new(), Vec::new(), 0);
         for a in &call.args {
             match a {
-                Arg::Input(name, e) => {
-                    let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
-                    let ty = ty.cloned().unwrap_or_default();
-                    if let Some(pair) = self.in_out(&ty, &name.name, e) {
-                        args.extend(pair);
-                        continue;
+                Arg::Input(name, e) => self.block_input(&ty, &name.name, e, &mut args),
+                Arg::Positional(e) => {
+                    match self.pin_at(&ty, position) {
+                        Some(pin) => self.block_input(&ty, &pin, e, &mut args),
+                        None => self.not_yet(e.span, "a block's input by position"),
                     }
-                    match self.input(&ty, &name.name, e, false) {
-                        Some(t) => args.push(format!("{} := {t}", name.name)),
-                        None => self.not_yet(e.span, "this block's input as an expression"),
-                    }
+                    position += 1;
                 }
                 Arg::Output {
                     name,
-                    negated: false,
+                    negated,
                     target,
-                } if target.path.is_empty() => {
-                    args.push(format!("{} => {}", name.name, target.base.name))
+                } => {
+                    let to = match self.leaf(target) {
+                        Some(leaf) => leaf,
+                        None if target.path.is_empty() => target.base.name.clone(),
+                        None => {
+                            self.not_yet(name.span, "a negated output or one to a member");
+                            continue;
+                        }
+                    };
+                    if *negated {
+                        after.push((format!("{}.{}", call.callee.name, name.name), to));
+                    } else {
+                        args.push(format!("{} => {to}", name.name));
+                    }
                 }
-                Arg::Output { name, .. } => {
-                    self.not_yet(name.span, "a negated output or one to a member")
-                }
-                Arg::Positional(e) => self.not_yet(e.span, "a block's input by position"),
             }
         }
         self.emit(
             format!("CAL {}({})", call.callee.name, args.join(", ")),
             span,
         );
+        for (output, to) in after {
+            self.emit(format!("LDN {output}"), span);
+            self.emit(format!("ST {to}"), span);
+        }
+    }
+
+    /// `pin := e` of a call of a block of type `ty` (upper-case).
+    fn block_input(&mut self, ty: &str, pin: &str, e: &Expr, args: &mut Vec<String>) {
+        if let Some(pair) = self.in_out(ty, pin, e) {
+            return args.extend(pair);
+        }
+        match self.input(ty, pin, e, false) {
+            Some(t) => args.push(format!("{pin} := {t}")),
+            None => self.not_yet(e.span, "this block's input as an expression"),
+        }
+    }
+
+    /// The name of the `k`th input of a block of type `ty`: the
+    /// program's own block's in their order, a standard block's as the
+    /// standard lists them (`TON`: IN, PT).
+    fn pin_at(&self, ty: &str, k: usize) -> Option<String> {
+        match self.blocks.get(&ty.to_ascii_uppercase()) {
+            Some(pins) => pins.get(k).map(|(n, _)| n.clone()),
+            None => crate::iec::pins::inputs(&ty.to_ascii_uppercase())
+                .get(k)
+                .map(|(n, _)| n.to_string()),
+        }
     }
 }
