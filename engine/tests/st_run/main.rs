@@ -12,6 +12,7 @@ mod common;
 mod composite;
 mod control;
 mod expressions;
+mod globals;
 mod inout;
 mod numeric;
 mod places;

@@ -70,7 +70,8 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
             },
             // Known before any POU (`l.types`): flattened where used.
             Item::Types(_) => {}
-            Item::Globals(b) => l.not_yet(b.span, "VAR_GLOBAL"),
+            // Declared in the PROGRAM (`pou`), which every call starts from.
+            Item::Globals(b) => l.globals.push(b.clone()),
         }
     }
     match program {
@@ -163,6 +164,10 @@ pub(super) struct Lower {
     pub(super) inouts: std::collections::HashSet<(String, String)>,
     /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).
     pub(super) ret: Option<String>,
+    /// Whether the POU being lowered is the PROGRAM.
+    pub(super) in_program: bool,
+    /// The source's `VAR_GLOBAL` blocks, declared in its PROGRAM.
+    pub(super) globals: Vec<super::ast::VarBlock>,
     /// The source's `TYPE`s, by upper-case name.
     pub(super) types: std::collections::HashMap<String, super::ast::TypeDef>,
     /// The POU being lowered's flattened values: key (`A[1].M`) to
@@ -212,9 +217,13 @@ impl Lower {
         self.shown.clear();
         self.order.clear();
         self.flat_types.clear();
+        self.in_program = p.kind == PouKind::Program;
         self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);
+        }
+        if p.kind == PouKind::Program {
+            self.global_blocks(p);
         }
         self.body_with_io(p);
         self.emit(format!("END_{keyword}"), p.span);

@@ -47,6 +47,8 @@ impl Lower {
             (VarKind::Output, _) => "VAR_OUTPUT",
             // Copied in as an input, out as a hidden output (`io_pin`).
             (VarKind::InOut, _) => "VAR_INPUT",
+            // The PROGRAM declares the globals it reaches (`global_blocks`).
+            (VarKind::External, _) if self.in_program => return,
             (other, _) => return self.not_yet(b.span, other.keyword()),
         };
         self.emit(keyword, b.span);
@@ -76,6 +78,31 @@ impl Lower {
                 }
             }
             self.emit("END_VAR", b.span);
+        }
+    }
+
+    /// The source's `VAR_GLOBAL`s declared as the PROGRAM `p`'s own
+    /// variables (`RETAIN` kept), but a name `p` declares itself, which
+    /// shadows the global there.
+    pub(super) fn global_blocks(&mut self, p: &Pou) {
+        let own: std::collections::HashSet<String> = p
+            .vars
+            .iter()
+            .filter(|b| b.kind != VarKind::External)
+            .flat_map(|b| &b.decls)
+            .flat_map(|d| &d.names)
+            .map(|n| n.name.to_ascii_uppercase())
+            .collect();
+        for g in std::mem::take(&mut self.globals) {
+            let mut local = g.clone();
+            local.kind = VarKind::Local;
+            for d in &mut local.decls {
+                d.names
+                    .retain(|n| !own.contains(&n.name.to_ascii_uppercase()));
+            }
+            local.decls.retain(|d| !d.names.is_empty());
+            self.block(&local);
+            self.globals.push(g);
         }
     }
 
