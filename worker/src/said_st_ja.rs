@@ -250,7 +250,7 @@ mod tests {
     #[test]
     fn st_refusals_are_said_in_japanese() {
         let e = engine::softplc::Program::load_st(
-            "PROGRAM t\nVAR a : ARRAY [1..3] OF INT; i, r : INT; END_VAR\nr := a[4];\nr := a[i + 1];\nEND_PROGRAM\n",
+            "PROGRAM t\nVAR a : ARRAY [1..3] OF INT; i, r : INT; END_VAR\nr := a[4];\nr := a[ABS(i)];\nEND_PROGRAM\n",
         )
         .expect_err("refused");
         let said: Vec<String> = e.iter().map(st_load_ja).collect();

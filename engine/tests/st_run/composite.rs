@@ -89,15 +89,27 @@ fn a_constant_index_outside_the_array_is_refused_at_its_place() {
 }
 
 #[test]
-fn an_index_that_is_an_expression_does_not_run_yet() {
+fn an_index_with_a_call_does_not_run_yet() {
     let e = refusals(
-        "PROGRAM t\nVAR\n  a : ARRAY [1..3] OF INT;\n  i, r : INT;\nEND_VAR\nr := a[i + 1];\nEND_PROGRAM\n",
+        "PROGRAM t\nVAR\n  a : ARRAY [1..3] OF INT;\n  i, r : INT;\nEND_VAR\nr := a[ABS(i)];\nEND_PROGRAM\n",
     );
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(
         e[0].starts_with("6:6:") && e[0].contains("expression"),
         "{e:?}"
     );
+}
+
+#[test]
+fn an_index_expression_is_computed_first() {
+    let mut p = load(
+        "PROGRAM t\nVAR\n  a : ARRAY [0..4] OF DINT := [10, 11, 12, 13, 14];\n  b : ARRAY [0..4] OF DINT;\n  i : SINT := 1;\n  r : DINT;\nEND_VAR\n\
+         r := a[i + 1] + a[i * 3];\nb[4 - i] := a[i - 1];\nEND_PROGRAM\n",
+    );
+    p.scan(0);
+    // a[2] + a[3] = 12 + 13; b[3] := a[0].
+    assert_eq!(shown(&p, "r"), "25");
+    assert_eq!(shown(&p, "b[3]"), "10");
 }
 
 #[test]

@@ -164,6 +164,11 @@ pub(super) struct Lower {
     pub(super) inouts: std::collections::HashSet<(String, String)>,
     /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).
     pub(super) ret: Option<String>,
+    /// Index expressions computed into hidden variables, by place.
+    pub(super) indexed: std::collections::HashMap<(u32, u32), String>,
+    /// The POU's (and, in the PROGRAM, the globals') elementary
+    /// variables' IL types, by upper-case name.
+    pub(super) scalars: std::collections::HashMap<String, String>,
     /// Whether the POU being lowered is the PROGRAM.
     pub(super) in_program: bool,
     /// The source's `VAR_GLOBAL` blocks, declared in its PROGRAM.
@@ -218,6 +223,7 @@ impl Lower {
         self.order.clear();
         self.flat_types.clear();
         self.in_program = p.kind == PouKind::Program;
+        self.know_scalars(p);
         self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);

@@ -136,6 +136,25 @@ impl Lower {
         (super::print::type_text(ty), init)
     }
 
+    /// The IL types of `p`'s elementary variables (and, in the PROGRAM,
+    /// the globals'), for `index_type`.
+    pub(super) fn know_scalars(&mut self, p: &super::ast::Pou) {
+        self.scalars.clear();
+        self.indexed.clear();
+        let globals = self.globals.clone();
+        let own = globals.iter().filter(|_| self.in_program).chain(&p.vars);
+        let decls: Vec<VarDecl> = own.flat_map(|b| b.decls.iter().cloned()).collect();
+        for d in &decls {
+            if self.composite(&d.ty, 0) {
+                continue;
+            }
+            let (ty, _) = self.plain(d);
+            for n in &d.names {
+                self.scalars.insert(n.name.to_ascii_uppercase(), ty.clone());
+            }
+        }
+    }
+
     /// A hidden leaf's name: none the source declares.
     fn fresh_leaf(&mut self) -> String {
         loop {
@@ -307,9 +326,14 @@ impl Lower {
                         if k > 0 {
                             parts.push(",".into());
                         }
-                        match (constant(e), &e.kind) {
-                            (Some(c), _) => parts.push(c.to_string()),
-                            (None, ExprKind::Variable(_)) => {
+                        let temp = self.indexed.get(&(e.span.line, e.span.column));
+                        match (constant(e), &e.kind, temp) {
+                            (Some(c), _, _) => parts.push(c.to_string()),
+                            (None, _, Some(t)) => {
+                                runtime.push((t.clone(), *lo, hi - lo + 1, parts.len()));
+                                parts.push(lo.to_string());
+                            }
+                            (None, ExprKind::Variable(_), None) => {
                                 let name =
                                     self.simple(e).filter(|n| crate::iec::is_identifier(n))?;
                                 runtime.push((name, *lo, hi - lo + 1, parts.len()));
@@ -344,6 +368,46 @@ impl Lower {
         Some(format!("{first}[{}]", dims.join(",")))
     }
 
+    /// The own-function calls in `v`'s indices made, then each index of
+    /// a flattened variable that is an expression (`a[i + 1]`) computed
+    /// into a hidden variable of its type (`indexed`), before the
+    /// statement that reads or writes the element.
+    pub(super) fn hoist_indices(&mut self, v: &Variable) {
+        for s in &v.path {
+            let Selector::Index(ix) = s else { continue };
+            for e in ix {
+                self.hoist(e);
+                let plain = constant(e).is_some() || self.simple(e).is_some();
+                if plain || !self.is_flat(v) {
+                    continue;
+                }
+                let Some(ty) = self.index_type(e) else {
+                    continue;
+                };
+                let temp = self.fresh("st_i");
+                self.hidden.push((temp.clone(), ty));
+                self.expr(e);
+                self.emit(format!("ST {temp}"), e.span);
+                self.indexed.insert((e.span.line, e.span.column), temp);
+            }
+        }
+    }
+
+    /// An integer index expression's type: any plain variable's in it
+    /// (the checker allows one type per operation and no conversion but
+    /// a call's, so every variable in a call-free expression has the
+    /// expression's type); `None` with a call or no variable.
+    fn index_type(&self, e: &Expr) -> Option<String> {
+        match &e.kind {
+            ExprKind::Variable(v) if v.path.is_empty() => {
+                self.scalars.get(&v.base.name.to_ascii_uppercase()).cloned()
+            }
+            ExprKind::Unary(_, x) => self.index_type(x),
+            ExprKind::Binary(_, a, b) => self.index_type(a).or_else(|| self.index_type(b)),
+            _ => None,
+        }
+    }
+
     /// Whether `v` reaches into (or is) a flattened variable.
     pub(super) fn is_flat(&self, v: &Variable) -> bool {
         self.flat_bases.contains(&v.base.name.to_ascii_uppercase())
@@ -372,6 +436,7 @@ impl Lower {
     /// one value, or a whole STRUCT or ARRAY copied value by value from
     /// one of the same type.
     pub(super) fn flat_assign(&mut self, target: &Variable, value: &Expr, span: Span) {
+        self.hoist_indices(target);
         if let Some(t) = self.leaf(target).or_else(|| self.element(target)) {
             self.value(value);
             return self.emit(format!("ST {t}"), span);
