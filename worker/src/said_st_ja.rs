@@ -203,6 +203,10 @@ const PHRASES: &[(&str, &str)] = &[
         "ここでの STRUCT や ARRAY 全体 (その値の 1 つを指定してください)",
     ),
     (
+        "a variable of more than 4096 values",
+        "4096 個を超える値を持つ変数",
+    ),
+    (
         "an index that is an expression (compute it into a variable first)",
         "式である添字 (先に変数に計算してください)",
     ),

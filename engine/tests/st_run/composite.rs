@@ -195,3 +195,13 @@ fn a_blocks_own_arrays_keep_their_state_and_names() {
     assert_eq!(shown(&p, "r.buf[0]"), "4");
     assert_eq!(shown(&p, "r.buf[2]"), "3");
 }
+
+#[test]
+fn an_array_of_more_than_4096_values_is_refused_at_its_name() {
+    let e = refusals("PROGRAM t\nVAR\n  big : ARRAY [1..5000] OF INT;\nEND_VAR\nEND_PROGRAM\n");
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert!(e[0].starts_with("3:3:") && e[0].contains("4096"), "{e:?}");
+    // 64 × 64 is 4096 values: it runs.
+    let p = load("PROGRAM t\nVAR\n  m : ARRAY [1..64, 1..64] OF BOOL;\nEND_VAR\nEND_PROGRAM\n");
+    assert_eq!(shown(&p, "m[64, 64]"), "FALSE");
+}
