@@ -271,6 +271,7 @@ pub mod said_iec_ja;
 mod said_ja;
 pub mod said_program_ja;
 mod said_soft_ja;
+pub mod said_st_ja;
 pub use said_soft_ja::box_error_ja;
 mod said_warning_ja;
 #[cfg(test)]

@@ -45,6 +45,9 @@ pub fn load_ja(e: &LoadError) -> String {
             format!("{block} に{side} `{pin}` はありません")
         }
         LoadError::NotAnInstance(n) => format!("`{n}` はブロックのインスタンスではありません"),
+        LoadError::BadElement(e) => format!(
+            "`{e}`: 要素オペランドは LD と ST だけが取り、添字は整数の変数、要素はすべて宣言済みで同じ型でなければなりません"
+        ),
     }
 }
 

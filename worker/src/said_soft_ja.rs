@@ -54,8 +54,7 @@ pub fn soft_ja(e: &SoftError) -> Option<String> {
         ),
         S::VendorLogic(_) => vendor_logic_ja(),
         S::Follows => "上で拒否された要素からつながっています".into(),
-        // The ST checker's reason stays English until ST reaches the page.
-        S::St(column, why) => format!("ST の {column} 桁目: {why}"),
+        S::St(column, why) => format!("ST の {column} 桁目: {}", crate::said_st_ja::st_ja(why)),
         S::UndeclaredInstance(name, ty) => format!(
             "{name} は宣言されていません: POU の変数に {ty} のインスタンスとして宣言してください (`{name} : {ty};`)"
         ),

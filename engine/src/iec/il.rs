@@ -537,11 +537,33 @@ fn operand(text: &str) -> Result<Operand, IlError> {
     let output = text
         .split_once('.')
         .is_some_and(|(instance, pin)| is_identifier(instance) && is_identifier(pin));
-    if is_identifier(text) || output {
+    if is_identifier(text) || output || is_element(text) {
         Ok(Operand::Name(text.to_string()))
     } else {
         Err(IlError::BadName(text.to_string()))
     }
+}
+
+/// Whether `text` is the soft PLC's element operand, Structured Text's
+/// array element at a run-time index (`st_v1[i:1:3:2,j:0:2:1]`: the
+/// first element, then each index variable with its low bound, length
+/// and stride, as [`crate::softplc`] documents).
+pub fn is_element(text: &str) -> bool {
+    let Some((name, rest)) = text.split_once('[') else {
+        return false;
+    };
+    let Some(dims) = rest.strip_suffix(']') else {
+        return false;
+    };
+    is_identifier(name)
+        && dims.split(',').all(|d| {
+            let parts: Vec<&str> = d.split(':').collect();
+            matches!(parts.as_slice(), [index, low, len, stride]
+                if is_identifier(index)
+                    && low.parse::<i64>().is_ok()
+                    && len.parse::<u32>().is_ok()
+                    && stride.parse::<u32>().is_ok())
+        })
 }
 
 /// An Instruction List program as it was written: its declarations and

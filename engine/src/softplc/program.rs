@@ -3,7 +3,6 @@
 //! at load (nothing is checked while it runs), and its scan.
 
 use std::collections::HashMap;
-use std::fmt;
 
 use crate::error::Located;
 use crate::iec::address::{Address, Area};
@@ -14,6 +13,7 @@ use crate::iec::vars::{parse_vars_at, Kind, VarError, Variable};
 use crate::iec::Comparison;
 use crate::runtime::instance::Instance;
 use check::{binary_type, describe, invertible, jump, need_cr};
+use element::is_element_line;
 use flex::{Flex, Flow, Open, Pending};
 
 /// Instructions one scan may run before it is cut short (a backward JMP
@@ -51,6 +51,9 @@ pub(super) enum Step {
     /// A standard function of the current result and its operands.
     Func(Function, Vec<Src>),
     Jmp(Option<bool>, usize),
+    /// LD, ST of an element at a run-time index ([`element`]).
+    LdAt(Box<element::Element>, bool),
+    StAt(Box<element::Element>),
     Ret(Option<bool>),
     Cal {
         when: Option<bool>,
@@ -113,44 +116,9 @@ pub enum LoadError {
     },
     /// A CAL of a name that is not a block instance.
     NotAnInstance(String),
-}
-
-impl fmt::Display for LoadError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            LoadError::Var(e) => e.fmt(f),
-            LoadError::Il(e) => e.fmt(f),
-            LoadError::Undeclared(n) => write!(f, "`{n}` is not declared"),
-            LoadError::UntypedAddress(a) => {
-                write!(f, "{a}: the soft PLC has no byte type")
-            }
-            LoadError::NoLabel(l) => write!(f, "no line has the label `{l}`"),
-            LoadError::Type(why) => why.fmt(f),
-            LoadError::Call(why) => why.fmt(f),
-            LoadError::UnknownResult => f.write_str(
-                "the current result is not known here (after a label or a jump): start with LD",
-            ),
-            LoadError::Unbalanced => f.write_str("`(` and `)` do not pair"),
-            LoadError::Unclosed => f.write_str("this `(` is never closed with `)`"),
-            LoadError::Pou(e) => e.fmt(f),
-            LoadError::Mix(a, b) => write!(
-                f,
-                "{} and {} do not mix: convert one (*_TO_*)",
-                a.name(),
-                b.name()
-            ),
-            LoadError::NotBits(op, t) => {
-                write!(f, "{op} needs a BOOL or a bit string, not {}", t.name())
-            }
-            LoadError::NotFor(t) => write!(f, "this operation does not apply to {}", t.name()),
-            LoadError::NeedsBool(op) => write!(f, "{op} needs a BOOL current result"),
-            LoadError::NoPin { block, pin, output } => {
-                let side = if *output { "output" } else { "input" };
-                write!(f, "{block} has no {side} `{pin}`")
-            }
-            LoadError::NotAnInstance(n) => write!(f, "`{n}` is not a block instance"),
-        }
-    }
+    /// An element operand (`a[i:1:3:1]`) that does not fit: elsewhere
+    /// than LD or ST, or reaching slots of other types.
+    BadElement(String),
 }
 
 impl std::error::Error for LoadError {}
@@ -169,6 +137,8 @@ pub struct Program {
     pub(super) block_names: Vec<(String, String)>,
     pub(super) steps: Vec<Step>,
     pub(super) overran: bool,
+    /// The step an index outside its array stopped the last scan at.
+    pub(super) fault: Option<usize>,
     /// The slots declared in VAR_RETAIN.
     pub(super) retained: Vec<usize>,
     /// The text as read, for the listing.
@@ -188,6 +158,8 @@ pub struct Program {
     /// The standard blocks' outputs read as operands: (block, output,
     /// the slot each call writes it to).
     pub(super) shadows: Vec<(usize, usize, usize)>,
+    /// A Structured Text program's place (line, column) of each step.
+    pub(super) st_places: Vec<(u32, u32)>,
 }
 
 /// What a declared name is.
@@ -221,6 +193,7 @@ impl Program {
             block_names: Vec::new(),
             steps: Vec::new(),
             overran: false,
+            fault: None,
             retained: Vec::new(),
             vars: Vec::new(),
             lines: Vec::new(),
@@ -231,6 +204,7 @@ impl Program {
             entries: Vec::new(),
             uart: crate::runtime::uart::Uart::default(),
             shadows: Vec::new(),
+            st_places: Vec::new(),
         };
         for b in &sections.blocks {
             let (vars, lines) = read(&b.text, &types)?;
@@ -285,6 +259,13 @@ impl Program {
                     let slot = self.values.len();
                     self.values.push(init);
                     self.by_name.insert(upper, Named::Slot(slot));
+                    // An ST member's or element's name as written
+                    // (`(* st: a[1, 2] *)`, `iec::st::lower_flat`).
+                    if let Some(st) = v.comment.strip_prefix("st: ") {
+                        let alias = st.replace(' ', "");
+                        self.by_name
+                            .insert(alias.to_ascii_uppercase(), Named::Slot(slot));
+                    }
                     self.names.push((shown, slot));
                     if v.retain {
                         self.retained.push(slot);
@@ -361,6 +342,7 @@ impl Program {
                 Some((instance, pin)) => self.output_slot(instance, pin),
                 None => Err(LoadError::Undeclared(n.clone())),
             },
+            Operand::Name(n) if n.contains('[') => Err(LoadError::BadElement(n.clone())),
             Operand::Name(n) => match self.by_name.get(&n.to_ascii_uppercase()) {
                 Some(Named::Slot(s)) => Ok(Src::Slot(*s)),
                 Some(_) => Err(LoadError::Type(TypeWhy::BlockAsValue(n.clone()))),
@@ -416,6 +398,9 @@ impl Program {
         flow: &mut Flow,
     ) -> Result<Step, LoadError> {
         let step = match line.operator {
+            Operator::Ld | Operator::St if is_element_line(line) => {
+                self.element_step(line, flow)?
+            }
             Operator::Ld => {
                 let src = self.operand(line)?.ok_or(LoadError::Unbalanced)?;
                 let t = self.type_of(&src);
@@ -536,11 +521,13 @@ impl Program {
 
 mod calls;
 mod check;
+mod element;
 mod flex;
 mod functions;
 mod lines;
 mod outputs;
 mod said;
+mod shown;
 mod user;
 mod why;
 

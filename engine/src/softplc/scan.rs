@@ -75,6 +75,7 @@ impl Program {
         cursor.frames.clear();
         cursor.ran = 0;
         self.overran = false;
+        self.fault = None;
         self.uart.begin_scan();
     }
 
@@ -88,6 +89,7 @@ impl Program {
             values,
             blocks,
             overran,
+            fault,
             entries,
             uart,
             ..
@@ -98,8 +100,7 @@ impl Program {
         cursor.ran += 1;
         if cursor.ran > STEPS_PER_SCAN {
             *overran = true;
-            cursor.pc = steps.len();
-            return false;
+            return stop(&mut None, 0, cursor, steps.len());
         }
         let number = cursor.pc;
         cursor.pc += 1;
@@ -112,6 +113,10 @@ impl Program {
                 *cr = negate(v.clone(), *neg);
             }
             Step::St(slot, neg) => values[*slot] = negate(cr.clone(), *neg),
+            Step::LdAt(..) | Step::StAt(_) => match element(values, step, cr) {
+                Some(bit) => read_bit = bit,
+                None => return stop(fault, number, cursor, steps.len()),
+            },
             Step::Set(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(true),
             Step::Reset(slot) if *cr == Data::Bool(true) => values[*slot] = Data::Bool(false),
             Step::Set(_) | Step::Reset(_) => {}
@@ -183,7 +188,11 @@ impl Program {
     pub fn slot_of(&self, name_or_address: &str) -> Option<usize> {
         match Address::parse(name_or_address) {
             Ok(a) => self.by_address.get(&a).copied(),
-            Err(_) => match self.by_name.get(&name_or_address.to_ascii_uppercase()) {
+            // `a[1, 2]` as `A[1,2]`: an element's name has no spaces.
+            Err(_) => match self
+                .by_name
+                .get(&name_or_address.replace(' ', "").to_ascii_uppercase())
+            {
                 Some(Named::Slot(s)) => Some(*s),
                 _ => None,
             },
@@ -268,6 +277,12 @@ impl Program {
     /// The addresses the program uses, in their order of first use.
     pub fn io(&self) -> impl Iterator<Item = Address> + '_ {
         self.addresses.iter().map(|&(a, _)| a)
+    }
+
+    /// The step whose array index was outside its array in the last
+    /// scan, which stopped there (`source_line` names its ST line).
+    pub fn fault(&self) -> Option<usize> {
+        self.fault
     }
 
     /// Whether the last scan was cut short at [`STEPS_PER_SCAN`].
@@ -401,6 +416,36 @@ fn peek<'a>(values: &'a [Data], src: &'a Src) -> &'a Data {
         Src::Slot(s) => &values[*s],
         Src::Const(d) => d,
     }
+}
+
+/// An element's LD or ST: the bit it read, or `None` when an index is
+/// outside its array (the scan stops there). Not inlined: inlined, the
+/// scan's other steps cost 2.3 % more instructions (callgrind,
+/// bench-256); out of line, 0.9 % (docs/performance.md).
+#[inline(never)]
+fn element(values: &mut [Data], step: &Step, cr: &mut Data) -> Option<bool> {
+    match step {
+        Step::LdAt(at, neg) => {
+            let v = &values[at.slot(values)?];
+            *cr = negate(v.clone(), *neg);
+            Some(v.is_on())
+        }
+        Step::StAt(at) => {
+            let s = at.slot(values)?;
+            values[s] = cr.clone();
+            Some(false)
+        }
+        _ => Some(false),
+    }
+}
+
+/// The scan stopped at step `number` (`fault`: an index outside its
+/// array; cut at [`STEPS_PER_SCAN`], the caller's flag says).
+#[cold]
+fn stop(fault: &mut Option<usize>, number: usize, cursor: &mut Cursor, end: usize) -> bool {
+    *fault = Some(number);
+    cursor.pc = end;
+    false
 }
 
 /// A copy of what `src` holds.

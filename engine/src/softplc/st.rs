@@ -5,8 +5,8 @@
 
 use std::fmt;
 
-use super::Program;
-use crate::iec::st::{check_source, lower_source, parse_source, StError};
+use super::{LoadError, Program};
+use crate::iec::st::{check_source, lower_source, parse_source, StError, StErrorKind};
 
 /// Why a Structured Text program does not load: where (1-based line and
 /// column of the ST text) and what.
@@ -18,6 +18,19 @@ pub struct StLoadError {
     pub column: usize,
     /// The reason.
     pub message: String,
+    /// The reason as a value, for a front end that says it in another
+    /// language.
+    pub why: StWhy,
+}
+
+/// Why a Structured Text program does not load: the ST checker's or
+/// lowering's reason, or the IL loader's at the ST place.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum StWhy {
+    /// Read, checked or lowered.
+    St(StErrorKind),
+    /// The lowered IL refused by the soft PLC's loader.
+    Load(LoadError),
 }
 
 impl fmt::Display for StLoadError {
@@ -31,6 +44,7 @@ fn from_st(e: StError) -> StLoadError {
         line: e.span.line as usize,
         column: e.span.column as usize,
         message: e.kind.to_string(),
+        why: StWhy::St(e.kind),
     }
 }
 
@@ -48,6 +62,29 @@ impl Program {
     pub fn load_st(text: &str) -> Result<Program, Vec<StLoadError>> {
         load(text).map(|(p, _)| p)
     }
+
+    /// The ST line and column (1-based) step `step` comes from, for a
+    /// program loaded from Structured Text (`None` for IL, or a step no
+    /// ST statement wrote: the return between the program and its
+    /// blocks' bodies). The page shows values beside lines, stops at
+    /// breakpoints and steps by statement with it.
+    pub fn source_line(&self, step: usize) -> Option<(u32, u32)> {
+        self.st_places.get(step).copied().filter(|&(l, _)| l > 0)
+    }
+
+    /// The IL line of each step (0 for a step no line wrote), as the
+    /// loader compiled them: the program's lines, a return when it has
+    /// block instances, then each instance's body and its return.
+    fn step_lines(&self) -> Vec<usize> {
+        let mut out: Vec<usize> = self.lines.iter().map(|l| l.line).collect();
+        for (u, &entry) in self.entries.iter().enumerate() {
+            out.resize(entry, 0);
+            let ty = self.instances[u].ty;
+            out.extend(self.user_types[ty].lines.iter().map(|l| l.line));
+        }
+        out.resize(self.steps.len(), 0);
+        out
+    }
 }
 
 fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
@@ -55,7 +92,7 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
     check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
     let lowered =
         lower_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
-    let program = Program::load(&lowered.text).map_err(|es| {
+    let mut program = Program::load(&lowered.text).map_err(|es| {
         es.into_iter()
             .map(|e| {
                 let span = lowered.place(e.line);
@@ -63,9 +100,21 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
                     line: span.line as usize,
                     column: span.column as usize,
                     message: e.error.to_string(),
+                    why: StWhy::Load(e.error),
                 }
             })
             .collect::<Vec<_>>()
     })?;
+    program.st_places = program
+        .step_lines()
+        .into_iter()
+        .map(|il| match il {
+            0 => (0, 0),
+            il => {
+                let span = lowered.place(il);
+                (span.line, span.column)
+            }
+        })
+        .collect();
     Ok((program, lowered.text))
 }

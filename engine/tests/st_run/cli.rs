@@ -88,3 +88,28 @@ fn a_st_files_errors_are_at_file_line_column() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("Structured Text runs on the soft PLC"));
 }
+
+#[test]
+fn array_elements_and_members_are_watched_as_written() {
+    let dir = Temp::new("st-run-cli-arrays");
+    let program = dir.file(
+        "arr.st",
+        "TYPE Pt : STRUCT x : INT; END_STRUCT; END_TYPE\nPROGRAM p\nVAR\n  m : ARRAY [1..2, 0..1] OF INT := [1, 2, 3, 4];\n  s : Pt;\nEND_VAR\ns.x := m[2, 1] + 1;\nEND_PROGRAM\n",
+    );
+    let watch = ["--watch", "m[2,1],m[1, 0]", "--watch", "s.x"];
+    let mut args = vec!["run", "--program", &program, "--until", "10ms"];
+    args.extend(watch);
+    let out = hashigo(&args, "");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    // The header keeps each name as given; m[2, 1] is 4, s.x 5.
+    let stdout = text(&out.stdout);
+    let first = stdout.lines().nth(1).unwrap_or_default().to_string();
+    assert!(
+        stdout.starts_with("time_ms,m[2,1],m[1, 0],s.x\n"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.lines().last().is_some_and(|l| l.ends_with(",4,1,5")),
+        "{stdout} {first}"
+    );
+}

@@ -3,15 +3,19 @@
 //! IEC 61131-3's rules by hand.
 
 mod blocks;
+mod call_args;
 #[path = "../common/mod.rs"]
 mod files;
 
 mod cli;
 mod common;
+mod composite;
 mod control;
 mod expressions;
+mod globals;
 mod inout;
 mod numeric;
+mod places;
 mod property;
 mod refusals;
 mod small_types;

@@ -88,11 +88,7 @@ fn run_with(
         t.map(|t| SimTime::parse(t).map_err(|e| format!("--every: {e}")))
             .transpose()
     });
-    let watch: Vec<String> = args
-        .all("watch")
-        .flat_map(|w| w.split(','))
-        .map(|w| w.trim().to_string())
-        .collect();
+    let watch: Vec<String> = args.all("watch").flat_map(split_devices).collect();
     if watch.is_empty() || watch.iter().any(String::is_empty) {
         problems.push("--watch needs device names, e.g. --watch Y00,Y01,C0.v".to_string());
     }
@@ -296,4 +292,25 @@ pub fn compile(rest: &[String]) -> Result<(), Problems> {
     }
     print!("{text}");
     Ok(())
+}
+
+/// `--watch`'s comma-separated names, a comma inside `[…]` kept (an ST
+/// array element `m[1,2]`).
+fn split_devices(list: &str) -> Vec<String> {
+    let (mut out, mut depth, mut name) = (Vec::new(), 0usize, String::new());
+    for c in list.chars() {
+        match c {
+            '[' => depth += 1,
+            ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                out.push(name.trim().to_string());
+                name.clear();
+                continue;
+            }
+            _ => {}
+        }
+        name.push(c);
+    }
+    out.push(name.trim().to_string());
+    out
 }

@@ -20,7 +20,8 @@ usage: hashigo <command> [options]
   run      --machine ID --program FILE [--set NAME=VALUE]... [--input EVENTS.csv]
            --until TIME [--every TIME] --watch DEV[,DEV...]
            (a .st file, Structured Text, runs on soft-plc: --machine may be left out;
-            a PLCopen .xml on soft-plc runs its LD, FBD, IL and ST bodies as written)
+            a PLCopen .xml on soft-plc runs its LD, FBD, IL and ST bodies as written;
+            ST's members and array elements are watched as NAME.MEMBER, NAME[I,J])
            [--plant NAME [--wiring WIRING.csv] [--fault FAULT]... [--set NAME.KEY=VALUE]...]
            (run, test and why take the plant options; alarms go to stderr)
   bench    --machine ID --program FILE --steps N

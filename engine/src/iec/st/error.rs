@@ -12,7 +12,7 @@ use crate::iec::literal::LiteralError;
 pub const MAX_DEPTH: usize = 64;
 
 /// A refusal and where it is.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct StError {
     /// Where the problem starts.
     pub span: Span,
@@ -21,7 +21,7 @@ pub struct StError {
 }
 
 /// What is wrong with a Structured Text source.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum StErrorKind {
     /// A character no token starts with.
     UnexpectedChar(char),
@@ -88,6 +88,9 @@ pub enum StErrorKind {
         /// The indices written.
         given: usize,
     },
+    /// An element at a constant index outside its array's bounds (the
+    /// element as written, upper-case).
+    IndexOutOfRange(String),
     /// A value of one type where another is needed: where, the type
     /// needed and the type found.
     Mismatch {
@@ -138,18 +141,14 @@ impl fmt::Display for StErrorKind {
                 None => write!(f, "`{text}` is not a {} value", t.name()),
             },
             StErrorKind::BadAddress(e) => write!(f, "{e}"),
-            StErrorKind::BadLiteralType(t) => {
-                write!(f, "`{t}#` is not a type a literal can have")
-            }
+            StErrorKind::BadLiteralType(t) => write!(f, "`{t}#` is not a type a literal can have"),
             StErrorKind::Expected {
                 what,
                 context,
                 found,
             } => write!(f, "expected {what} {context}, found {found}"),
             StErrorKind::InOutArgument(pin) => write!(f, "the VAR_IN_OUT {pin} takes a variable"),
-            StErrorKind::NotYet(what) => {
-                write!(f, "{what} does not run on the soft PLC yet")
-            }
+            StErrorKind::NotYet(what) => write!(f, "{what} does not run on the soft PLC yet"),
             StErrorKind::Unsupported(what) => {
                 write!(f, "{what} not supported by Hashigo's Structured Text")
             }
@@ -186,6 +185,7 @@ impl fmt::Display for StErrorKind {
                     "`{name}` has {dims} dimension(s); {given} index(es) given"
                 )
             }
+            StErrorKind::IndexOutOfRange(e) => write!(f, "`{e}` is outside the array's bounds"),
             StErrorKind::Mismatch { place, want, found } => {
                 write!(f, "{place} must be {want}, not {found}")
             }

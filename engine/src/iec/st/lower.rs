@@ -47,6 +47,16 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         ..Lower::default()
     };
     l.know_in_outs(source);
+    l.types = source
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Types(ts) => Some(ts),
+            _ => None,
+        })
+        .flatten()
+        .map(|t| (t.name.name.to_ascii_uppercase(), t.def.clone()))
+        .collect();
     let mut program: Option<&Pou> = None;
     for item in &source.items {
         match item {
@@ -58,11 +68,10 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
                 PouKind::Program => program = Some(p),
                 PouKind::Function(ref ty) => l.function_pou(p, ty),
             },
-            Item::Types(ts) => {
-                let span = ts.first().map(|t| t.name.span).unwrap_or_default();
-                l.not_yet(span, "a TYPE declaration")
-            }
-            Item::Globals(b) => l.not_yet(b.span, "VAR_GLOBAL"),
+            // Known before any POU (`l.types`): flattened where used.
+            Item::Types(_) => {}
+            // Declared in the PROGRAM (`pou`), which every call starts from.
+            Item::Globals(b) => l.globals.push(b.clone()),
         }
     }
     match program {
@@ -155,6 +164,28 @@ pub(super) struct Lower {
     pub(super) inouts: std::collections::HashSet<(String, String)>,
     /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).
     pub(super) ret: Option<String>,
+    /// Index expressions computed into hidden variables, by place.
+    pub(super) indexed: std::collections::HashMap<(u32, u32), String>,
+    /// The POU's (and, in the PROGRAM, the globals') elementary
+    /// variables' IL types, by upper-case name.
+    pub(super) scalars: std::collections::HashMap<String, String>,
+    /// Whether the POU being lowered is the PROGRAM.
+    pub(super) in_program: bool,
+    /// The source's `VAR_GLOBAL` blocks, declared in its PROGRAM.
+    pub(super) globals: Vec<super::ast::VarBlock>,
+    /// The source's `TYPE`s, by upper-case name.
+    pub(super) types: std::collections::HashMap<String, super::ast::TypeDef>,
+    /// The POU being lowered's flattened values: key (`A[1].M`) to
+    /// hidden variable; its flattened variables (upper-case); the hidden
+    /// variables in order.
+    pub(super) flat: std::collections::HashMap<String, String>,
+    pub(super) flat_bases: std::collections::HashSet<String>,
+    pub(super) shown: Vec<String>,
+    pub(super) leaf_count: usize,
+    /// Each hidden leaf's place among the POU's leaves, and each
+    /// flattened variable's type (upper-case).
+    pub(super) order: std::collections::HashMap<String, usize>,
+    pub(super) flat_types: std::collections::HashMap<String, super::ast::TypeRef>,
 }
 
 impl Lower {
@@ -186,9 +217,19 @@ impl Lower {
     }
 
     pub(super) fn pou(&mut self, p: &Pou, keyword: &str) {
+        self.flat.clear();
+        self.flat_bases.clear();
+        self.shown.clear();
+        self.order.clear();
+        self.flat_types.clear();
+        self.in_program = p.kind == PouKind::Program;
+        self.know_scalars(p);
         self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);
+        }
+        if p.kind == PouKind::Program {
+            self.global_blocks(p);
         }
         self.body_with_io(p);
         self.emit(format!("END_{keyword}"), p.span);
@@ -204,6 +245,9 @@ impl Lower {
         let span = s.span;
         match &s.kind {
             StmtKind::Assign { target, value } => {
+                if self.is_flat(target) {
+                    return self.flat_assign(target, value, span);
+                }
                 if !target.path.is_empty() {
                     return self.not_yet(span, "an assignment to a member or element");
                 }
@@ -370,7 +414,7 @@ impl Lower {
         if let Some(t) = self.simple(e) {
             return self.emit(format!("LD {t}"), e.span);
         }
-        if let Some(t) = negated(e) {
+        if let Some(t) = self.negated(e) {
             return self.emit(format!("LDN {t}"), e.span);
         }
         match &e.kind {
@@ -389,6 +433,7 @@ impl Lower {
                 self.operand(il_op(*op), b);
             }
             ExprKind::Call(call) => self.function(call, e.span),
+            ExprKind::Variable(v) if self.is_flat(v) => self.flat_load(v, e.span),
             ExprKind::Variable(_) => self.not_yet(e.span, "an array element"),
             ExprKind::Literal(_) => {}
         }
@@ -397,7 +442,7 @@ impl Lower {
     /// `OP b`, or `OP(` … `)` around `b`'s instructions.
     fn operand(&mut self, op: &str, b: &Expr) {
         // `a AND NOT b` is IL's one `ANDN b`, as a hand-written IL has it.
-        if let (true, Some(t)) = (matches!(op, "AND" | "OR" | "XOR"), negated(b)) {
+        if let (true, Some(t)) = (matches!(op, "AND" | "OR" | "XOR"), self.negated(b)) {
             return self.emit(format!("{op}N {t}"), b.span);
         }
         match self.simple(b) {
@@ -406,11 +451,13 @@ impl Lower {
                 let open = self.lines.len();
                 self.emit(format!("{op}("), b.span);
                 self.expr(b);
-                // `OP(` / `LD x` is IL's one `OP( x`.
+                // `OP(` / `LD x` is IL's one `OP( x` (not an element:
+                // only LD and ST take one).
                 if let Some(t) = self
                     .lines
                     .get(open + 1)
                     .and_then(|(l, _)| l.strip_prefix("LD "))
+                    .filter(|t| !t.contains('['))
                 {
                     self.lines[open].0 = format!("{op}( {t}");
                     self.lines.remove(open + 1);
@@ -496,10 +543,14 @@ pub(super) fn simple(e: &Expr) -> Option<String> {
 
 /// The operand under `NOT`, when `e` is `NOT operand` of a BOOL or bit
 /// string (a variable: `LDN x`, `ANDN x` invert it, as `NOT` does).
-fn negated(e: &Expr) -> Option<String> {
-    match &e.kind {
-        ExprKind::Unary(UnaryOp::Not, x) if matches!(x.kind, ExprKind::Variable(_)) => simple(x),
-        _ => None,
+impl Lower {
+    fn negated(&self, e: &Expr) -> Option<String> {
+        match &e.kind {
+            ExprKind::Unary(UnaryOp::Not, x) if matches!(x.kind, ExprKind::Variable(_)) => {
+                self.simple(x)
+            }
+            _ => None,
+        }
     }
 }
 

@@ -5,7 +5,7 @@
 //! the instance's output (`st_f3.Square`). IL has no call inside an
 //! expression; this keeps the expression one run of operations.
 
-use super::ast::{Arg, Expr, ExprKind, Pou, Selector, TypeRef};
+use super::ast::{Arg, Expr, ExprKind, Pou, TypeRef};
 use super::lower::{simple, Lower};
 
 impl Lower {
@@ -81,11 +81,16 @@ impl Lower {
         if let ExprKind::Call(_) = e.kind {
             return self.hoisted.get(&(e.span.line, e.span.column)).cloned();
         }
+        if let ExprKind::Variable(v) = &e.kind {
+            if self.is_flat(v) {
+                return self.leaf(v);
+            }
+        }
         simple(e)
     }
 
     /// A hidden variable's name: `prefix` and a number, no declared name.
-    fn fresh(&mut self, prefix: &str) -> String {
+    pub(super) fn fresh(&mut self, prefix: &str) -> String {
         let mut n = self.hidden.len() + 1;
         loop {
             let name = format!("{}{prefix}{n}", self.tag);
@@ -104,13 +109,7 @@ impl Lower {
                 self.hoist(a);
                 self.hoist(b);
             }
-            ExprKind::Variable(v) => {
-                for s in &v.path {
-                    if let Selector::Index(ix) = s {
-                        ix.iter().for_each(|i| self.hoist(i));
-                    }
-                }
-            }
+            ExprKind::Variable(v) => self.hoist_indices(v),
             ExprKind::Call(call) => {
                 for a in &call.args {
                     if let Arg::Positional(x) | Arg::Input(_, x) = a {

@@ -8,7 +8,7 @@
 
 use super::ast::{Arg, Expr, ExprKind, Item, Pou, PouKind, Source, Span, VarBlock, VarKind};
 use super::error::StErrorKind;
-use super::lower::{simple, Lower};
+use super::lower::Lower;
 use super::types::at;
 
 /// The hidden output an in-out parameter `pin` is copied out by.
@@ -47,25 +47,23 @@ impl Lower {
             (VarKind::Output, _) => "VAR_OUTPUT",
             // Copied in as an input, out as a hidden output (`io_pin`).
             (VarKind::InOut, _) => "VAR_INPUT",
+            // The PROGRAM declares the globals it reaches (`global_blocks`).
+            (VarKind::External, _) if self.in_program => return,
             (other, _) => return self.not_yet(b.span, other.keyword()),
         };
         self.emit(keyword, b.span);
         for d in &b.decls {
-            if matches!(d.ty, super::ast::TypeRef::Array { .. }) {
-                self.not_yet(d.span, "an ARRAY variable");
+            let local = matches!(b.kind, VarKind::Local | VarKind::Temp);
+            if self.flat_decl(d, local) {
                 continue;
             }
-            let ty = super::print::type_text(&d.ty);
+            let (ty, init) = self.plain(d);
             let at = d
                 .location
                 .as_ref()
                 .map(|a| format!(" AT {a}"))
                 .unwrap_or_default();
-            let init = d
-                .init
-                .as_ref()
-                .map(|i| format!(" := {}", super::print::init_text(i)))
-                .unwrap_or_default();
+            let init = init.map(|i| format!(" := {i}")).unwrap_or_default();
             for n in &d.names {
                 self.emit(format!("  {}{at} : {ty}{init};", n.name), n.span);
             }
@@ -80,6 +78,31 @@ impl Lower {
                 }
             }
             self.emit("END_VAR", b.span);
+        }
+    }
+
+    /// The source's `VAR_GLOBAL`s declared as the PROGRAM `p`'s own
+    /// variables (`RETAIN` kept), but a name `p` declares itself, which
+    /// shadows the global there.
+    pub(super) fn global_blocks(&mut self, p: &Pou) {
+        let own: std::collections::HashSet<String> = p
+            .vars
+            .iter()
+            .filter(|b| b.kind != VarKind::External)
+            .flat_map(|b| &b.decls)
+            .flat_map(|d| &d.names)
+            .map(|n| n.name.to_ascii_uppercase())
+            .collect();
+        for g in std::mem::take(&mut self.globals) {
+            let mut local = g.clone();
+            local.kind = VarKind::Local;
+            for d in &mut local.decls {
+                d.names
+                    .retain(|n| !own.contains(&n.name.to_ascii_uppercase()));
+            }
+            local.decls.retain(|d| !d.names.is_empty());
+            self.block(&local);
+            self.globals.push(g);
         }
     }
 
@@ -122,7 +145,7 @@ impl Lower {
         if !self.inouts.contains(&key) {
             return None;
         }
-        match (&e.kind, simple(e)) {
+        match (&e.kind, self.simple(e)) {
             (ExprKind::Variable(_), Some(v)) => Some(vec![
                 format!("{pin} := {v}"),
                 format!("{} => {v}", io_pin(pin)),
@@ -135,39 +158,74 @@ impl Lower {
         }
     }
 
-    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL.
+    /// `t0(IN := x, PT := T#1s, Q => y)`: a block instance's CAL; an
+    /// input by position goes to the block's inputs in order, an output
+    /// negated (`NOT Q => y`) is read inverted after the call.
     pub(super) fn block_call(&mut self, call: &super::ast::Call, span: Span) {
-        let mut args = Vec::new();
+        let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
+        let ty = ty.cloned().unwrap_or_default();
+        let (mut args, mut after, mut position) = (Vec::new(), Vec::new(), 0);
         for a in &call.args {
             match a {
-                Arg::Input(name, e) => {
-                    let ty = self.instances.get(&call.callee.name.to_ascii_uppercase());
-                    let ty = ty.cloned().unwrap_or_default();
-                    if let Some(pair) = self.in_out(&ty, &name.name, e) {
-                        args.extend(pair);
-                        continue;
+                Arg::Input(name, e) => self.block_input(&ty, &name.name, e, &mut args),
+                Arg::Positional(e) => {
+                    match self.pin_at(&ty, position) {
+                        Some(pin) => self.block_input(&ty, &pin, e, &mut args),
+                        None => self.not_yet(e.span, "a block's input by position"),
                     }
-                    match self.input(&ty, &name.name, e, false) {
-                        Some(t) => args.push(format!("{} := {t}", name.name)),
-                        None => self.not_yet(e.span, "this block's input as an expression"),
-                    }
+                    position += 1;
                 }
                 Arg::Output {
                     name,
-                    negated: false,
+                    negated,
                     target,
-                } if target.path.is_empty() => {
-                    args.push(format!("{} => {}", name.name, target.base.name))
+                } => {
+                    let to = match self.leaf(target) {
+                        Some(leaf) => leaf,
+                        None if target.path.is_empty() => target.base.name.clone(),
+                        None => {
+                            self.not_yet(name.span, "a negated output or one to a member");
+                            continue;
+                        }
+                    };
+                    if *negated {
+                        after.push((format!("{}.{}", call.callee.name, name.name), to));
+                    } else {
+                        args.push(format!("{} => {to}", name.name));
+                    }
                 }
-                Arg::Output { name, .. } => {
-                    self.not_yet(name.span, "a negated output or one to a member")
-                }
-                Arg::Positional(e) => self.not_yet(e.span, "a block's input by position"),
             }
         }
         self.emit(
             format!("CAL {}({})", call.callee.name, args.join(", ")),
             span,
         );
+        for (output, to) in after {
+            self.emit(format!("LDN {output}"), span);
+            self.emit(format!("ST {to}"), span);
+        }
+    }
+
+    /// `pin := e` of a call of a block of type `ty` (upper-case).
+    fn block_input(&mut self, ty: &str, pin: &str, e: &Expr, args: &mut Vec<String>) {
+        if let Some(pair) = self.in_out(ty, pin, e) {
+            return args.extend(pair);
+        }
+        match self.input(ty, pin, e, false) {
+            Some(t) => args.push(format!("{pin} := {t}")),
+            None => self.not_yet(e.span, "this block's input as an expression"),
+        }
+    }
+
+    /// The name of the `k`th input of a block of type `ty`: the
+    /// program's own block's in their order, a standard block's as the
+    /// standard lists them (`TON`: IN, PT).
+    fn pin_at(&self, ty: &str, k: usize) -> Option<String> {
+        match self.blocks.get(&ty.to_ascii_uppercase()) {
+            Some(pins) => pins.get(k).map(|(n, _)| n.clone()),
+            None => crate::iec::pins::inputs(&ty.to_ascii_uppercase())
+                .get(k)
+                .map(|(n, _)| n.to_string()),
+        }
     }
 }

@@ -17,6 +17,7 @@ mod lexer;
 pub mod lower;
 mod lower_body;
 mod lower_call;
+mod lower_flat;
 mod lower_io;
 mod parser;
 pub mod print;

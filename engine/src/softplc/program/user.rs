@@ -62,7 +62,7 @@ fn block_of(v: &Variable) -> Option<&str> {
 /// One instance: its type, its names, its inputs' and outputs' slots.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct UserInstance {
-    pub(super) ty: usize,
+    pub(in crate::softplc) ty: usize,
     scope: HashMap<String, Named>,
     pub(super) inputs: Vec<(String, usize)>,
     pub(super) outputs: Vec<(String, usize)>,

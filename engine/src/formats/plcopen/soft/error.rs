@@ -62,7 +62,7 @@ pub enum SoftError {
     UndeclaredInstance(String, String),
     /// A Structured Text body's or EXECUTE block's problem: its column
     /// in the ST line, and why.
-    St(usize, String),
+    St(usize, crate::iec::st::StErrorKind),
 }
 
 impl fmt::Display for SoftError {

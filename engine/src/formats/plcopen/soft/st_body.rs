@@ -75,7 +75,7 @@ pub(super) fn lower(
     let located = |es: Vec<StError>| -> Vec<Located<SoftError>> {
         es.into_iter()
             .map(|e| {
-                let why = SoftError::St(e.span.column as usize, e.kind.to_string());
+                let why = SoftError::St(e.span.column as usize, e.kind);
                 Located::new(file_line(e.span.line), why)
             })
             .collect()
