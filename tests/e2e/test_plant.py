@@ -156,6 +156,45 @@ def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(
     assert severe_console_messages(driver) == []
 
 
+@pytest.mark.first_visit
+def test_a_hidden_fault_fails_the_right_ladder_until_the_student_names_it(driver, base_url):
+    from test_classroom import result
+    from test_start import shown
+
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-exercise"))
+    el(driver, "start-exercise").click()
+    wait(driver, lambda: shown(driver, "start-exercise-3"))
+    el(driver, "start-exercise-3").click()
+    wait(driver, lambda: "Troubleshooting" in el(driver, "exercise-task").text, message="its task")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-conveyor"]'),
+         message="the conveyor is drawn")
+    # The fault is hidden from the student: the Faults section says none.
+    faults = el(driver, "plant-faults")
+    assert "infeed" not in faults.text, faults.text
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-fault-add"]')
+    # The right ladder misbehaves: parts are placed, the belt never runs.
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "placed") >= 1, timeout=40, message="a part is placed")
+    assert quantity(driver, "delivered") == 0
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="exercise-result"]'))
+    wait(driver, lambda: result(driver)[1] == "3", timeout=40, message="the fault is graded too")
+    assert result(driver)[0] != result(driver)[1]
+    assert "The broken device" in el(driver, "exercise-result").text
+    # A wrong name does not pass; the right one repairs it for the cases.
+    Select(el(driver, "fault-report-signal")).select_by_value("outfeed")
+    Select(el(driver, "fault-report-kind")).select_by_value("stuck 0")
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: result(driver)[1] == "3" and result(driver)[0] != "3", timeout=40)
+    Select(el(driver, "fault-report-signal")).select_by_value("infeed")
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: result(driver) == ("3", "3"), timeout=40,
+         message="Check my answer passes once the fault is named")
+    assert severe_console_messages(driver) == []
+
+
 @pytest.mark.parametrize("name", ["laptop", "phone"])
 def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
     from test_screens import no_sideways_overflow, screen_driver

@@ -8,6 +8,7 @@
 
 use leptos::prelude::*;
 
+use super::faults::Faults;
 use super::wiring::WiringTable;
 use super::{Plants, Shown, SignalShown};
 use crate::editor::LadderCtx;
@@ -58,6 +59,7 @@ fn PlantView() -> impl IntoView {
                 <Alarm />
             </div>
             <WiringTable ladder />
+            <Faults ladder />
         </div>
     }
 }

@@ -10,6 +10,7 @@
 //! the first screen reaches names a plant's code.
 
 mod draw;
+mod faults;
 mod rig;
 mod wiring;
 
@@ -204,5 +205,7 @@ pub fn PlantDock(ladder: LadderCtx) -> impl IntoView {
     }
 }
 
+#[cfg(test)]
+mod faults_tests;
 #[cfg(test)]
 mod tests;

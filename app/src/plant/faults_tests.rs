@@ -1,0 +1,97 @@
+//! Faults in the page (issue #52): the author's form writes what the
+//! engine reads, refuses what it refuses, and a troubleshooting
+//! exercise's hidden fault fails the correct ladder until the student
+//! names it (then it is repaired for the cases).
+
+use engine::formats::project::PlantSetup;
+use engine::formats::Project;
+
+use super::faults::{add_fault, fault_text};
+use crate::editor::panes::runner::{repaired, run_cases_with};
+use crate::editor::state::CaseResult;
+
+const TROUBLE: &str = include_str!("../../../engine/programs/minasec-u/conveyor-fault.json");
+const CONVEYOR: &str = include_str!("../../../engine/programs/minasec-u/conveyor.il");
+
+#[test]
+fn the_form_writes_a_fault_as_the_engine_reads_it_or_says_why_not() {
+    assert_eq!(
+        fault_text("motor", "dead", "20", false),
+        "motor dead from 20s"
+    );
+    assert_eq!(
+        fault_text("infeed", "stuck 0", " ", true),
+        "infeed stuck 0 hidden"
+    );
+    assert_eq!(
+        fault_text("infeed", "stuck 1", "1.5", false),
+        "infeed stuck 1 from 1.5s"
+    );
+    assert_eq!(
+        fault_text("motor", "dead", "500ms", false),
+        "motor dead from 500ms"
+    );
+    let mut setup = PlantSetup {
+        name: "conveyor".into(),
+        ..PlantSetup::default()
+    };
+    add_fault(&mut setup, fault_text("motor", "dead", "2", true)).unwrap();
+    assert_eq!(setup.faults, vec!["motor dead from 2s hidden".to_string()]);
+    let e = add_fault(&mut setup, fault_text("infeed", "dead", "", false)).unwrap_err();
+    assert!(e.contains("infeed dead") && e.contains("sensor"), "{e}");
+    let e = add_fault(&mut setup, fault_text("motor", "stuck 1", "soon", false)).unwrap_err();
+    assert!(e.contains("soon"), "{e}");
+    // Refused: the setup is left as it was.
+    assert_eq!(setup.faults.len(), 1);
+}
+
+fn grade(named: Option<&str>) -> (Vec<CaseResult>, Option<bool>) {
+    let project = Project::from_json(TROUBLE).unwrap();
+    let settings: Vec<_> = project.settings.clone().into_iter().collect();
+    let (plant, right) = repaired(project.plant.clone().unwrap(), named);
+    let results = run_cases_with(
+        engine::MachineId::MinasecU,
+        &settings,
+        CONVEYOR,
+        &project.tests,
+        Some(&plant),
+    );
+    (results, right)
+}
+
+#[test]
+fn a_hidden_fault_fails_the_right_ladder_until_it_is_named() {
+    let all_pass = |r: &[CaseResult]| r.iter().all(|r| matches!(r, CaseResult::Pass));
+    let (results, right) = grade(None);
+    assert_eq!(right, Some(false));
+    assert!(!all_pass(&results), "{results:?}");
+    // The wrong signal, or the right signal with the wrong kind: not it.
+    for wrong in [
+        "outfeed stuck 0",
+        "infeed stuck 1",
+        "motor dead",
+        "infeed",
+        "nonsense",
+    ] {
+        let (results, right) = grade(Some(wrong));
+        assert_eq!(right, Some(false), "{wrong}");
+        assert!(!all_pass(&results), "{wrong}: {results:?}");
+    }
+    // Named (with the plant's name, as the engine allows): repaired.
+    for named in ["infeed stuck 0", "conveyor.infeed stuck 0"] {
+        let (results, right) = grade(Some(named));
+        assert_eq!(right, Some(true), "{named}");
+        assert!(all_pass(&results), "{named}: {results:?}");
+    }
+}
+
+#[test]
+fn a_fault_not_hidden_is_not_graded_nor_repaired() {
+    let setup = PlantSetup {
+        name: "conveyor".into(),
+        faults: vec!["infeed stuck 0".into()],
+        ..PlantSetup::default()
+    };
+    let (after, right) = repaired(setup.clone(), Some("infeed stuck 0"));
+    assert_eq!((after, right), (setup, None));
+}
