@@ -79,6 +79,29 @@ def test_the_books_ladder_runs_the_conveyor_and_parts_are_delivered(driver, base
     assert severe_console_messages(driver) == []
 
 
+def part_places(driver):
+    parts = el(driver, "plant-conveyor").find_elements(By.CSS_SELECTOR, "rect.plant-part")
+    return [float(p.get_attribute("x")) for p in parts]
+
+
+def test_manual_mode_moves_the_belt_with_the_machine_stopped(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    el(driver, "plant-manual").click()
+    # The plant's own clock places a part; the motor off, it stays.
+    wait(driver, lambda: part_places(driver), timeout=20, message="a part is placed by hand time")
+    before = part_places(driver)[0]
+    assert "on" in el(driver, "plant-sig-infeed").get_attribute("class").split()
+    el(driver, "plant-hand-motor").click()
+    assert el(driver, "plant-hand-motor").get_attribute("aria-pressed") == "true"
+    wait(driver, lambda: part_places(driver) and part_places(driver)[0] > before + 20, timeout=20,
+         message="the belt moves by hand")
+    # Run gives the plant back to the machine, where it stands.
+    el(driver, "run").click()
+    wait(driver, lambda: not el(driver, "plant-manual").is_selected(), message="manual mode ends at Run")
+    assert severe_console_messages(driver) == []
+
+
 def test_a_ladder_that_keeps_fill_on_raises_the_tanks_overflow_alarm(driver, base_url, tmp_path):
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")

@@ -9,6 +9,7 @@
 use leptos::prelude::*;
 
 use super::faults::Faults;
+use super::manual::Manual;
 use super::wiring::WiringTable;
 use super::{Plants, Shown, SignalShown};
 use crate::editor::LadderCtx;
@@ -35,7 +36,8 @@ fn PlantView() -> impl IntoView {
             None => ().into_any(),
         })
     };
-    let standing = move || shown.with(|s| s.as_ref().is_some_and(|s| !s.running));
+    let standing =
+        move || !plants.manual.get() && shown.with(|s| s.as_ref().is_some_and(|s| !s.running));
     let quantities = move || {
         shown.with(|s| {
             s.iter()
@@ -59,6 +61,7 @@ fn PlantView() -> impl IntoView {
                 <Alarm />
             </div>
             <WiringTable ladder />
+            <Manual ladder />
             <Faults ladder />
         </div>
     }

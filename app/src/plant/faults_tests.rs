@@ -95,3 +95,43 @@ fn a_fault_not_hidden_is_not_graded_nor_repaired() {
     let (after, right) = repaired(setup.clone(), Some("infeed stuck 0"));
     assert_eq!((after, right), (setup, None));
 }
+
+#[test]
+fn by_hand_the_belt_moves_with_the_machine_stopped_and_run_keeps_it() {
+    use super::rig;
+    use engine::machines::MinasecPlc;
+    use engine::plc::Plc;
+    use engine::record::Recorded;
+    use engine::SimTime;
+    let mut m = Recorded::new(MinasecPlc::new());
+    m.load_text(CONVEYOR).unwrap();
+    let setup = PlantSetup {
+        name: "conveyor".into(),
+        ..PlantSetup::default()
+    };
+    let mut rig = rig::build(&setup, &mut m).unwrap();
+    let leads = |rig: &dyn super::Rig, m: &dyn Plc| rig.show(m).figure[2..].to_vec();
+    // Parts arrive on the plant's own clock; the motor off: they stay.
+    rig.jog(&mut m, &[false, false, false], 3000);
+    let placed = leads(rig.as_ref(), &m);
+    assert!(!placed.is_empty(), "a part was placed");
+    rig.jog(&mut m, &[false, false, false], 500);
+    assert_eq!(leads(rig.as_ref(), &m), placed);
+    // The motor (the third signal) on by hand: the belt moves, the
+    // machine's time does not, the infeed eye reached its input.
+    rig.jog(&mut m, &[false, false, true], 500);
+    let moved = leads(rig.as_ref(), &m);
+    assert!(moved[0] > placed[0], "{placed:?} -> {moved:?}");
+    assert_eq!(m.now(), SimTime::ZERO);
+    let shown = rig.show(&m);
+    assert_eq!(shown.signals[2].value, 1, "the motor shown on");
+    // Run: the plant goes on from where it stood (the ladder holds the
+    // motor off until T1, so the parts stay where the hand left them).
+    rig.advance(&mut m, SimTime::from_millis(10));
+    assert_eq!(leads(rig.as_ref(), &m)[0], moved[0]);
+    assert_eq!(
+        rig.show(&m).signals[2].value,
+        0,
+        "the machine drives it again"
+    );
+}

@@ -11,6 +11,7 @@
 
 mod draw;
 mod faults;
+mod manual;
 mod rig;
 mod wiring;
 
@@ -52,6 +53,8 @@ pub struct Plants {
     pub shown: RwSignal<Option<Shown>>,
     /// Refusals of the chosen setup (wiring row, message).
     pub refusals: RwSignal<Refusals>,
+    /// Manual mode: the user drives the actuators, the machine stopped.
+    pub manual: RwSignal<bool>,
 }
 
 impl Plants {
@@ -61,6 +64,7 @@ impl Plants {
             kit: RwSignal::new(None),
             shown: RwSignal::new(None),
             refusals: RwSignal::new(Vec::new()),
+            manual: RwSignal::new(false),
         }
     }
 

@@ -27,6 +27,9 @@ pub(super) struct PlantRig {
     faults: Vec<Fault>,
     /// The plant's start on the machine's clock.
     origin: SimTime,
+    /// The milliseconds the plant moved by hand (manual mode): its own
+    /// clock is the machine's since `origin` plus these.
+    jogged: i64,
     /// The end of the next plant step.
     next_step: SimTime,
     /// Per signal: what the PLC reads (`in`), what acts on the plant (`out`).
@@ -93,6 +96,7 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
         wires,
         faults,
         origin: now,
+        jogged: 0,
         next_step: now.saturating_add(STEP),
         values: vec![0; n],
         written: vec![None; n],
@@ -109,20 +113,29 @@ fn located(e: Located<String>) -> (usize, String) {
 
 impl PlantRig {
     /// One plant step ending at `at`: driven by the outputs as the
-    /// machine left them, then its sensors written.
-    fn step(&mut self, machine: &mut dyn Plc, at: SimTime) {
+    /// machine left them (or by `hand`, in manual mode), then its
+    /// sensors written.
+    fn step(&mut self, machine: &mut dyn Plc, at: SimTime, hand: Option<&[bool]>) {
         let info = self.plant.info();
         for (s, signal) in info.signals.iter().enumerate() {
             if signal.direction == Direction::Out {
-                let driven = self
-                    .wires
-                    .iter()
-                    .find(|w| w.signal == s)
-                    .map_or(0, |w| i64::from(machine.read(w.device).is_on()));
+                let driven = match hand {
+                    // By hand an analog actuator is full on or off.
+                    Some(hand) => match (hand.get(s).copied().unwrap_or(false), signal.kind) {
+                        (false, _) => 0,
+                        (true, Kind::Analog) => 100_000,
+                        (true, _) => 1,
+                    },
+                    None => self
+                        .wires
+                        .iter()
+                        .find(|w| w.signal == s)
+                        .map_or(0, |w| i64::from(machine.read(w.device).is_on())),
+                };
                 self.values[s] = fault::apply(fault::acting(&self.faults, s, at), driven);
             }
         }
-        let now_ms = ms(at) - ms(self.origin);
+        let now_ms = ms(at) - ms(self.origin) + self.jogged;
         self.plant.step(now_ms, &self.values, &mut self.raised);
         for message in self.raised.drain(..) {
             if self.alarms.len() == ALARMS_KEPT {
@@ -184,10 +197,19 @@ impl Rig for PlantRig {
                 // Stopped short: a break condition held.
                 return;
             }
-            self.step(machine, at);
+            self.step(machine, at, None);
             self.next_step = at.saturating_add(STEP);
         }
         machine.run_until(end);
+    }
+
+    fn jog(&mut self, machine: &mut dyn Plc, hand: &[bool], ms: u32) {
+        // The faults act as at the machine's time, which stands still.
+        let at = machine.now();
+        for _ in 0..ms {
+            self.jogged += 1;
+            self.step(machine, at, Some(hand));
+        }
     }
 
     fn show(&self, machine: &dyn Plc) -> Shown {
