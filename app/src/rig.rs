@@ -24,6 +24,9 @@ pub trait Rig {
     fn jog(&mut self, machine: &mut dyn Plc, hand: &[bool], ms: u32);
     /// What the dock draws, now.
     fn show(&self, machine: &dyn Plc) -> Shown;
+    /// What the dock draws while time travel shows the scan that ended
+    /// at `at`: the plant as it was then.
+    fn show_at(&self, at: SimTime) -> Shown;
     /// Unwires: the inputs the plant drove are released.
     fn detach(&mut self, machine: &mut dyn Plc);
 }

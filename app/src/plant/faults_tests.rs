@@ -135,3 +135,38 @@ fn by_hand_the_belt_moves_with_the_machine_stopped_and_run_keeps_it() {
         "the machine drives it again"
     );
 }
+
+#[test]
+fn the_plant_at_a_past_scan_is_as_it_was_then() {
+    use super::rig;
+    use engine::machines::MinasecPlc;
+    use engine::plc::{Command, Plc};
+    use engine::record::Recorded;
+    use engine::SimTime;
+    let mut m = Recorded::new(MinasecPlc::new());
+    m.load_text(CONVEYOR).unwrap();
+    let t1 = Command::Setting {
+        name: "T1".into(),
+        value: "1s".into(),
+    };
+    m.apply(t1).unwrap();
+    let setup = PlantSetup {
+        name: "conveyor".into(),
+        ..PlantSetup::default()
+    };
+    let mut rig = rig::build(&setup, &mut m).unwrap();
+    let mut then = Vec::new();
+    for i in 1..=900 {
+        rig.advance(&mut m, SimTime::from_millis(100));
+        if i % 97 == 0 {
+            let mut shown = rig.show(&m);
+            shown.running = false;
+            then.push((m.now(), shown));
+        }
+    }
+    let delivered = |s: &super::Shown| s.quantities.iter().find(|q| q.0 == "delivered").unwrap().1;
+    assert!(delivered(&rig.show(&m)) > delivered(&then[0].1));
+    for (at, shown) in &then {
+        assert_eq!(&rig.show_at(*at), shown, "at {at:?}");
+    }
+}

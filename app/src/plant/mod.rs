@@ -11,6 +11,7 @@
 
 mod draw;
 mod faults;
+mod history;
 mod manual;
 mod rig;
 mod wiring;
@@ -76,10 +77,17 @@ impl Plants {
     /// After a frame of `ladder`'s machine: publishes what its rig shows
     /// (only when it changed, so a still plant redraws nothing).
     pub fn publish(&self, ladder: LadderCtx) {
+        // Travelling: the shown scan's time (the plant as it was then).
+        let past = ladder
+            .recorded(|t| t.shown().map(|_| t.plc().now()))
+            .flatten();
         let mut out = None;
         ladder.with_rig(|machine, rig| {
             if let Some(rig) = rig {
-                out = Some(rig.show(machine));
+                out = Some(match past {
+                    Some(at) => rig.show_at(at),
+                    None => rig.show(machine),
+                });
             }
         });
         if let Some(shown) = out {
