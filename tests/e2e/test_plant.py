@@ -102,6 +102,34 @@ def test_manual_mode_moves_the_belt_with_the_machine_stopped(driver, base_url, t
     assert severe_console_messages(driver) == []
 
 
+def seek(driver, mark):
+    driver.execute_script("""
+        const slider = document.querySelector('[data-testid="timeline"]');
+        slider.value = String(arguments[0]);
+        slider.dispatchEvent(new Event('input', {bubbles: true}));""", mark)
+
+
+def test_time_travel_shows_the_plant_at_an_earlier_scan(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 2, timeout=40, message="parts delivered")
+    el(driver, "pause").click()
+    now = quantity(driver, "delivered")
+    places = part_places(driver)
+    last = int(el(driver, "timeline").get_attribute("max"))
+    # An early scan: nothing delivered yet, the parts elsewhere.
+    seek(driver, last // 20)
+    wait(driver, lambda: quantity(driver, "delivered") < now, message="the plant as it was")
+    assert part_places(driver) != places
+    # Back to the last scan: the plant as it stood when paused.
+    seek(driver, last)
+    wait(driver, lambda: quantity(driver, "delivered") == now, message="the plant at the last scan")
+    assert part_places(driver) == places
+    assert severe_console_messages(driver) == []
+
+
 def test_a_ladder_that_keeps_fill_on_raises_the_tanks_overflow_alarm(driver, base_url, tmp_path):
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")
