@@ -94,7 +94,8 @@ pub(super) fn Faults(ladder: LadderCtx) -> impl IntoView {
             .enumerate()
             .filter(|(_, f)| !(as_student && fault::is_hidden(f)))
             .collect();
-        if shown.is_empty() {
+        // A student whose plant hides a fault is not told "no fault".
+        if shown.is_empty() && !(as_student && hides()) {
             return view! { <li class="plant-fault-none">{move || t().no_faults}</li> }.into_any();
         }
         shown

@@ -64,6 +64,26 @@ pub(super) fn Manual(ladder: LadderCtx) -> impl IntoView {
         stop();
         plants.manual.set(false);
     });
+    view! {
+        <section class="plant-manual" aria-label=move || t().manual>
+            <label>
+                <input type="checkbox" role="switch" data-testid="plant-manual"
+                    prop:checked=move || plants.manual.get() disabled=running
+                    on:change=move |e| plants.manual.set(event_target_checked(&e)) />
+                {move || t().manual}
+            </label>
+            <Show when=move || plants.manual.get()>
+                <p class="plant-manual-note">{move || t().manual_note}</p>
+                <Toggles hand />
+            </Show>
+        </section>
+    }
+}
+
+/// A toggle per actuator of the plant, pressed while driven on by hand.
+#[component]
+fn Toggles(hand: RwSignal<Vec<bool>>) -> impl IntoView {
+    let plants = Plants::get();
     let toggles = move || {
         let signals = plants
             .shown
@@ -89,18 +109,5 @@ pub(super) fn Manual(ladder: LadderCtx) -> impl IntoView {
             })
             .collect_view()
     };
-    view! {
-        <section class="plant-manual" aria-label=move || t().manual>
-            <label>
-                <input type="checkbox" role="switch" data-testid="plant-manual"
-                    prop:checked=move || plants.manual.get() disabled=running
-                    on:change=move |e| plants.manual.set(event_target_checked(&e)) />
-                {move || t().manual}
-            </label>
-            <Show when=move || plants.manual.get()>
-                <p class="plant-manual-note">{move || t().manual_note}</p>
-                <div class="plant-hands">{toggles}</div>
-            </Show>
-        </section>
-    }
+    view! { <div class="plant-hands">{toggles}</div> }
 }
