@@ -208,7 +208,7 @@ def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(
 
 
 @pytest.mark.first_visit
-def test_a_hidden_fault_fails_the_right_ladder_until_the_student_names_it(driver, base_url):
+def test_a_hidden_fault_fails_the_right_ladder_until_the_student_names_it(driver, base_url, artifacts):
     from test_classroom import result
     from test_start import shown
 
@@ -241,6 +241,9 @@ def test_a_hidden_fault_fails_the_right_ladder_until_the_student_names_it(driver
     el(driver, "exercise-check").click()
     wait(driver, lambda: result(driver)[1] == "3" and result(driver)[0] != "3", timeout=40)
     Select(el(driver, "fault-report-signal")).select_by_value("infeed")
+    driver.execute_script(
+        "document.querySelector('[data-testid=fault-report]').scrollIntoView({block: 'center'})")
+    driver.save_screenshot(str(artifacts / "plant-fault-report.png"))
     el(driver, "exercise-check").click()
     wait(driver, lambda: result(driver) == ("3", "3"), timeout=40,
          message="Check my answer passes once the fault is named")
@@ -264,6 +267,12 @@ def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
             "document.querySelector('[data-testid=plant-conveyor]').scrollIntoView({block: 'center'})")
         assert no_sideways_overflow(driver)
         driver.save_screenshot(str(artifacts / f"plant-conveyor-{name}.png"))
+        # The Faults section and manual mode's switch, under the figure.
+        el(driver, "plant-faults")
+        driver.execute_script(
+            "document.querySelector('[data-testid=plant-faults]').scrollIntoView({block: 'center'})")
+        assert no_sideways_overflow(driver)
+        driver.save_screenshot(str(artifacts / f"plant-faults-{name}.png"))
         choose(driver, "tank")
         wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-tank"]'))
         wait(driver, lambda: quantity(driver, "level") > 55, timeout=30, message="the level rises")
