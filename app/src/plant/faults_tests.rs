@@ -170,3 +170,42 @@ fn the_plant_at_a_past_scan_is_as_it_was_then() {
         assert_eq!(&rig.show_at(*at), shown, "at {at:?}");
     }
 }
+
+#[test]
+fn resuming_from_a_past_scan_puts_the_plant_back_as_it_was_there() {
+    use super::rig;
+    use engine::machines::MinasecPlc;
+    use engine::plc::{Command, Plc};
+    use engine::record::{Recorded, TimeTravel};
+    use engine::SimTime;
+    let mut m = Recorded::new(MinasecPlc::new());
+    m.load_text(CONVEYOR).unwrap();
+    let t1 = Command::Setting {
+        name: "T1".into(),
+        value: "1s".into(),
+    };
+    m.apply(t1).unwrap();
+    let setup = PlantSetup {
+        name: "conveyor".into(),
+        ..PlantSetup::default()
+    };
+    let mut rig = rig::build(&setup, &mut m).unwrap();
+    for _ in 0..300 {
+        rig.advance(&mut m, SimTime::from_millis(100));
+    }
+    let (_, last) = TimeTravel::marks(&m);
+    assert!(m.show(last / 3));
+    let at = TimeTravel::plc(&m).now();
+    let then = rig.show_at(at);
+    assert!(m.resume_here());
+    assert_eq!(m.now(), at);
+    rig.advance(&mut m, SimTime::ZERO);
+    let mut now = rig.show(&m);
+    now.running = false;
+    assert_eq!(now.figure, then.figure);
+    assert_eq!(now.quantities, then.quantities);
+    assert!(now
+        .alarms
+        .iter()
+        .all(|(t, _)| *t <= at.as_nanos() as i64 / 1_000_000));
+}
