@@ -123,10 +123,12 @@ def test_time_travel_shows_the_plant_at_an_earlier_scan(driver, base_url, tmp_pa
     seek(driver, last // 20)
     wait(driver, lambda: quantity(driver, "delivered") < now, message="the plant as it was")
     assert part_places(driver) != places
-    # Back to the last scan: the plant as it stood when paused.
+    # Back to the last scan: the plant as it stood when paused (the
+    # paused machine may stand a few ms past its last whole scan).
     seek(driver, last)
     wait(driver, lambda: quantity(driver, "delivered") == now, message="the plant at the last scan")
-    assert part_places(driver) == places
+    back = part_places(driver)
+    assert len(back) == len(places) and all(abs(a - b) < 2 for a, b in zip(back, places)), (back, places)
     assert severe_console_messages(driver) == []
 
 
