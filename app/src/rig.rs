@@ -17,8 +17,16 @@ pub trait Rig {
     fn setup(&self) -> &PlantSetup;
     /// Advances the machine and the plant by `dt` of simulated time.
     fn advance(&mut self, machine: &mut dyn Plc, dt: SimTime);
+    /// Manual mode, with the machine stopped: the plant moves `ms`
+    /// milliseconds of its own clock, its actuators driven by `hand`
+    /// (per signal, on or off) instead of the machine's outputs; its
+    /// sensors are still written to the machine's inputs.
+    fn jog(&mut self, machine: &mut dyn Plc, hand: &[bool], ms: u32);
     /// What the dock draws, now.
     fn show(&self, machine: &dyn Plc) -> Shown;
+    /// What the dock draws while time travel shows the scan that ended
+    /// at `at`: the plant as it was then.
+    fn show_at(&self, at: SimTime) -> Shown;
     /// Unwires: the inputs the plant drove are released.
     fn detach(&mut self, machine: &mut dyn Plc);
 }

@@ -79,6 +79,59 @@ def test_the_books_ladder_runs_the_conveyor_and_parts_are_delivered(driver, base
     assert severe_console_messages(driver) == []
 
 
+def part_places(driver):
+    parts = el(driver, "plant-conveyor").find_elements(By.CSS_SELECTOR, "rect.plant-part")
+    return [float(p.get_attribute("x")) for p in parts]
+
+
+def test_manual_mode_moves_the_belt_with_the_machine_stopped(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    el(driver, "plant-manual").click()
+    # The plant's own clock places a part; the motor off, it stays.
+    wait(driver, lambda: part_places(driver), timeout=20, message="a part is placed by hand time")
+    before = part_places(driver)[0]
+    assert "on" in el(driver, "plant-sig-infeed").get_attribute("class").split()
+    el(driver, "plant-hand-motor").click()
+    assert el(driver, "plant-hand-motor").get_attribute("aria-pressed") == "true"
+    wait(driver, lambda: part_places(driver) and part_places(driver)[0] > before + 20, timeout=20,
+         message="the belt moves by hand")
+    # Run gives the plant back to the machine, where it stands.
+    el(driver, "run").click()
+    wait(driver, lambda: not el(driver, "plant-manual").is_selected(), message="manual mode ends at Run")
+    assert severe_console_messages(driver) == []
+
+
+def seek(driver, mark):
+    driver.execute_script("""
+        const slider = document.querySelector('[data-testid="timeline"]');
+        slider.value = String(arguments[0]);
+        slider.dispatchEvent(new Event('input', {bubbles: true}));""", mark)
+
+
+def test_time_travel_shows_the_plant_at_an_earlier_scan(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 2, timeout=40, message="parts delivered")
+    el(driver, "pause").click()
+    now = quantity(driver, "delivered")
+    places = part_places(driver)
+    last = int(el(driver, "timeline").get_attribute("max"))
+    # An early scan: nothing delivered yet, the parts elsewhere.
+    seek(driver, last // 20)
+    wait(driver, lambda: quantity(driver, "delivered") < now, message="the plant as it was")
+    assert part_places(driver) != places
+    # Back to the last scan: the plant as it stood when paused (the
+    # paused machine may stand a few ms past its last whole scan).
+    seek(driver, last)
+    wait(driver, lambda: quantity(driver, "delivered") == now, message="the plant at the last scan")
+    back = part_places(driver)
+    assert len(back) == len(places) and all(abs(a - b) < 2 for a, b in zip(back, places)), (back, places)
+    assert severe_console_messages(driver) == []
+
+
 def test_a_ladder_that_keeps_fill_on_raises_the_tanks_overflow_alarm(driver, base_url, tmp_path):
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")
@@ -156,6 +209,49 @@ def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(
     assert severe_console_messages(driver) == []
 
 
+@pytest.mark.first_visit
+def test_a_hidden_fault_fails_the_right_ladder_until_the_student_names_it(driver, base_url, artifacts):
+    from test_classroom import result
+    from test_start import shown
+
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-exercise"))
+    el(driver, "start-exercise").click()
+    wait(driver, lambda: shown(driver, "start-exercise-8"))
+    el(driver, "start-exercise-8").click()
+    wait(driver, lambda: "Troubleshooting" in el(driver, "exercise-task").text, message="its task")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-conveyor"]'),
+         message="the conveyor is drawn")
+    # The fault is hidden from the student: the Faults section says none.
+    listed = el(driver, "plant-faults").find_elements(By.CSS_SELECTOR, "ul li")
+    assert listed == [], [li.text for li in listed]
+    assert "Which fault?" in el(driver, "fault-report").text
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-fault-add"]')
+    # The right ladder misbehaves: parts are placed, the belt never runs.
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "placed") >= 1, timeout=40, message="a part is placed")
+    assert quantity(driver, "delivered") == 0
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="exercise-result"]'))
+    wait(driver, lambda: result(driver)[1] == "3", timeout=40, message="the fault is graded too")
+    assert result(driver)[0] != result(driver)[1]
+    assert "The broken device" in el(driver, "exercise-result").text
+    # A wrong name does not pass; the right one repairs it for the cases.
+    Select(el(driver, "fault-report-signal")).select_by_value("outfeed")
+    Select(el(driver, "fault-report-kind")).select_by_value("stuck 0")
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: result(driver)[1] == "3" and result(driver)[0] != "3", timeout=40)
+    Select(el(driver, "fault-report-signal")).select_by_value("infeed")
+    driver.execute_script(
+        "document.querySelector('[data-testid=fault-report]').scrollIntoView({block: 'center'})")
+    driver.save_screenshot(str(artifacts / "plant-fault-report.png"))
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: result(driver) == ("3", "3"), timeout=40,
+         message="Check my answer passes once the fault is named")
+    assert severe_console_messages(driver) == []
+
+
 @pytest.mark.parametrize("name", ["laptop", "phone"])
 def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
     from test_screens import no_sideways_overflow, screen_driver
@@ -173,6 +269,12 @@ def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
             "document.querySelector('[data-testid=plant-conveyor]').scrollIntoView({block: 'center'})")
         assert no_sideways_overflow(driver)
         driver.save_screenshot(str(artifacts / f"plant-conveyor-{name}.png"))
+        # The Faults section and manual mode's switch, under the figure.
+        el(driver, "plant-faults")
+        driver.execute_script(
+            "document.querySelector('[data-testid=plant-faults]').scrollIntoView({block: 'center'})")
+        assert no_sideways_overflow(driver)
+        driver.save_screenshot(str(artifacts / f"plant-faults-{name}.png"))
         choose(driver, "tank")
         wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-tank"]'))
         wait(driver, lambda: quantity(driver, "level") > 55, timeout=30, message="the level rises")

@@ -10,6 +10,7 @@ mod ja;
 pub mod keymap;
 pub mod parts;
 pub mod plant;
+pub mod plant_faults;
 pub mod start;
 pub mod words;
 
@@ -97,6 +98,14 @@ impl Lang {
         match self {
             Lang::Ja => &plant::JA,
             Lang::En => &plant::EN,
+        }
+    }
+
+    /// The plant's faults, fault report and manual mode (issue #52).
+    pub const fn plant_faults(self) -> &'static plant_faults::PlantFaults {
+        match self {
+            Lang::Ja => &plant_faults::JA,
+            Lang::En => &plant_faults::EN,
         }
     }
 

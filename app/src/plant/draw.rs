@@ -8,6 +8,8 @@
 
 use leptos::prelude::*;
 
+use super::faults::Faults;
+use super::manual::Manual;
 use super::wiring::WiringTable;
 use super::{Plants, Shown, SignalShown};
 use crate::editor::LadderCtx;
@@ -27,7 +29,8 @@ fn PlantView() -> impl IntoView {
     let t = move || ctx.lang.get().plant();
     let shown = plants.shown;
     let figure = move || shown.with(|s| figure_of(s.as_ref(), t()));
-    let standing = move || shown.with(|s| s.as_ref().is_some_and(|s| !s.running));
+    let standing =
+        move || !plants.manual.get() && shown.with(|s| s.as_ref().is_some_and(|s| !s.running));
     let quantities = move || {
         shown.with(|s| {
             s.iter()
@@ -51,6 +54,8 @@ fn PlantView() -> impl IntoView {
                 <Alarm />
             </div>
             <WiringTable ladder />
+            <Manual ladder />
+            <Faults ladder />
         </div>
     }
 }

@@ -10,6 +10,9 @@
 //! the first screen reaches names a plant's code.
 
 mod draw;
+mod faults;
+mod history;
+mod manual;
 mod rig;
 mod wiring;
 
@@ -56,6 +59,8 @@ pub struct Plants {
     pub shown: RwSignal<Option<Shown>>,
     /// Refusals of the chosen setup (wiring row, message).
     pub refusals: RwSignal<Refusals>,
+    /// Manual mode: the user drives the actuators, the machine stopped.
+    pub manual: RwSignal<bool>,
 }
 
 impl Plants {
@@ -65,6 +70,7 @@ impl Plants {
             kit: RwSignal::new(None),
             shown: RwSignal::new(None),
             refusals: RwSignal::new(Vec::new()),
+            manual: RwSignal::new(false),
         }
     }
 
@@ -76,10 +82,17 @@ impl Plants {
     /// After a frame of `ladder`'s machine: publishes what its rig shows
     /// (only when it changed, so a still plant redraws nothing).
     pub fn publish(&self, ladder: LadderCtx) {
+        // Travelling: the shown scan's time (the plant as it was then).
+        let past = ladder
+            .recorded(|t| t.shown().map(|_| t.plc().now()))
+            .flatten();
         let mut out = None;
         ladder.with_rig(|machine, rig| {
             if let Some(rig) = rig {
-                out = Some(rig.show(machine));
+                out = Some(match past {
+                    Some(at) => rig.show_at(at),
+                    None => rig.show(machine),
+                });
             }
         });
         if let Some(shown) = out {
@@ -210,5 +223,7 @@ pub fn PlantDock(ladder: LadderCtx) -> impl IntoView {
     }
 }
 
+#[cfg(test)]
+mod faults_tests;
 #[cfg(test)]
 mod tests;

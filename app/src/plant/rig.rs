@@ -14,6 +14,7 @@ use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, STEP};
 use engine::plc::{tick_end, Command, Plc};
 use engine::SimTime;
 
+use super::history::History;
 use super::{Refusals, Rig, Shown, SignalShown};
 
 /// The alarms the dock keeps (the latest).
@@ -27,6 +28,11 @@ pub(super) struct PlantRig {
     faults: Vec<Fault>,
     /// The plant's start on the machine's clock.
     origin: SimTime,
+    /// The milliseconds the plant moved by hand (manual mode): its own
+    /// clock is the machine's since `origin` plus these.
+    jogged: i64,
+    /// Its past, for time travel.
+    history: History,
     /// The end of the next plant step.
     next_step: SimTime,
     /// Per signal: what the PLC reads (`in`), what acts on the plant (`out`).
@@ -93,6 +99,8 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
         wires,
         faults,
         origin: now,
+        jogged: 0,
+        history: History::default(),
         next_step: now.saturating_add(STEP),
         values: vec![0; n],
         written: vec![None; n],
@@ -100,6 +108,7 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
         raised: Vec::new(),
     };
     rig.sense(machine, now);
+    rig.history.step(now, 0, &rig.plant, true);
     Ok(Box::new(rig))
 }
 
@@ -109,20 +118,34 @@ fn located(e: Located<String>) -> (usize, String) {
 
 impl PlantRig {
     /// One plant step ending at `at`: driven by the outputs as the
-    /// machine left them, then its sensors written.
-    fn step(&mut self, machine: &mut dyn Plc, at: SimTime) {
+    /// machine left them (or by `hand`, in manual mode), then its
+    /// sensors written.
+    fn step(&mut self, machine: &mut dyn Plc, at: SimTime, hand: Option<&[bool]>) {
         let info = self.plant.info();
         for (s, signal) in info.signals.iter().enumerate() {
             if signal.direction == Direction::Out {
-                let driven = self
-                    .wires
-                    .iter()
-                    .find(|w| w.signal == s)
-                    .map_or(0, |w| i64::from(machine.read(w.device).is_on()));
+                let driven = match hand {
+                    // By hand an analog actuator is full on or off.
+                    Some(hand) => match (hand.get(s).copied().unwrap_or(false), signal.kind) {
+                        (false, _) => 0,
+                        (true, Kind::Analog) => 100_000,
+                        (true, _) => 1,
+                    },
+                    None => self
+                        .wires
+                        .iter()
+                        .find(|w| w.signal == s)
+                        .map_or(0, |w| i64::from(machine.read(w.device).is_on())),
+                };
                 self.values[s] = fault::apply(fault::acting(&self.faults, s, at), driven);
             }
         }
-        let now_ms = ms(at) - ms(self.origin);
+        let now_ms = ms(at) - ms(self.origin) + self.jogged;
+        let outputs: Vec<usize> = (info.signals.iter().enumerate())
+            .filter(|(_, s)| s.direction == Direction::Out)
+            .map(|(i, _)| i)
+            .collect();
+        self.history.drive(at, &self.values, &outputs);
         self.plant.step(now_ms, &self.values, &mut self.raised);
         for message in self.raised.drain(..) {
             if self.alarms.len() == ALARMS_KEPT {
@@ -131,6 +154,60 @@ impl PlantRig {
             self.alarms.push((ms(at), message));
         }
         self.sense(machine, at);
+        self.history.step(at, now_ms, &self.plant, false);
+    }
+
+    /// Back to the plant as it was at `at` (the machine resumed from a
+    /// past scan): what came after is forgotten.
+    fn rewind(&mut self, at: SimTime) {
+        if let Some((plant, clock, _)) = self.history.at(at) {
+            self.plant = plant;
+            self.jogged = clock - (ms(at) - ms(self.origin));
+            self.history.cut(at);
+            self.alarms.retain(|(t, _)| *t <= ms(at));
+            // Written again from the plant as it was.
+            self.written.iter_mut().for_each(|w| *w = None);
+        }
+    }
+
+    /// What the dock draws of `plant` with the values `values`.
+    fn shown_of(&self, plant: &AnyPlant, values: &[i64], running: bool, upto: i64) -> Shown {
+        let info = plant.info();
+        let signals = info
+            .signals
+            .iter()
+            .enumerate()
+            .map(|(s, signal)| SignalShown {
+                name: signal.name,
+                output: signal.direction == Direction::Out,
+                analog: signal.kind == Kind::Analog,
+                value: values.get(s).copied().unwrap_or(0),
+                device: self
+                    .wires
+                    .iter()
+                    .find(|w| w.signal == s)
+                    .map(|w| w.name.clone()),
+            })
+            .collect();
+        let quantities = info
+            .quantities
+            .iter()
+            .enumerate()
+            .map(|(q, quantity)| (quantity.name, plant.quantity(q)))
+            .collect();
+        Shown {
+            plant: info.name,
+            running,
+            signals,
+            quantities,
+            alarms: self
+                .alarms
+                .iter()
+                .filter(|(t, _)| *t <= upto)
+                .cloned()
+                .collect(),
+            figure: figure(plant),
+        }
     }
 
     /// Reads the sensors at `at` (after faults) and writes those that
@@ -175,6 +252,7 @@ impl Rig for PlantRig {
         // The machine went back in time (resumed from a past scan): the
         // plant goes on from there as it is.
         if self.next_step > machine.now().saturating_add(STEP) {
+            self.rewind(machine.now());
             self.next_step = machine.now().saturating_add(STEP);
         }
         while self.next_step <= end {
@@ -184,44 +262,40 @@ impl Rig for PlantRig {
                 // Stopped short: a break condition held.
                 return;
             }
-            self.step(machine, at);
+            self.step(machine, at, None);
             self.next_step = at.saturating_add(STEP);
         }
         machine.run_until(end);
     }
 
-    fn show(&self, machine: &dyn Plc) -> Shown {
-        let info = self.plant.info();
-        let signals = info
-            .signals
-            .iter()
-            .enumerate()
-            .map(|(s, signal)| SignalShown {
-                name: signal.name,
-                output: signal.direction == Direction::Out,
-                analog: signal.kind == Kind::Analog,
-                value: self.values[s],
-                device: self
-                    .wires
-                    .iter()
-                    .find(|w| w.signal == s)
-                    .map(|w| w.name.clone()),
-            })
-            .collect();
-        let quantities = info
-            .quantities
-            .iter()
-            .enumerate()
-            .map(|(q, quantity)| (quantity.name, self.plant.quantity(q)))
-            .collect();
-        Shown {
-            plant: info.name,
-            running: machine.running(),
-            signals,
-            quantities,
-            alarms: self.alarms.clone(),
-            figure: figure(&self.plant),
+    fn jog(&mut self, machine: &mut dyn Plc, hand: &[bool], span: u32) {
+        // The faults act as at the machine's time, which stands still.
+        let at = machine.now();
+        for _ in 0..span {
+            self.jogged += 1;
+            self.step(machine, at, Some(hand));
         }
+        let clock = ms(at) - ms(self.origin) + self.jogged;
+        self.history.step(at, clock, &self.plant, true);
+    }
+
+    fn show(&self, machine: &dyn Plc) -> Shown {
+        self.shown_of(&self.plant, &self.values, machine.running(), i64::MAX)
+    }
+
+    fn show_at(&self, at: SimTime) -> Shown {
+        let Some((plant, _, mut values)) = self.history.at(at) else {
+            return self.shown_of(&self.plant, &self.values, false, ms(at));
+        };
+        // The outputs as they drove it then; the sensors as they read.
+        for (s, signal) in plant.info().signals.iter().enumerate() {
+            if signal.direction == Direction::In {
+                if let Some(v) = values.get_mut(s) {
+                    *v = fault::apply(fault::acting(&self.faults, s, at), plant.sensor(s));
+                }
+            }
+        }
+        self.shown_of(&plant, &values, false, ms(at))
     }
 
     fn detach(&mut self, machine: &mut dyn Plc) {

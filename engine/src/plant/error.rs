@@ -66,7 +66,7 @@ impl fmt::Display for PlantError {
                 shown(name)
             ),
             PlantError::FaultUsage => {
-                f.write_str("expected SIGNAL stuck 0|1 [from TIME] or SIGNAL dead [from TIME]")
+                f.write_str("expected SIGNAL stuck 0|1 [from TIME] [hidden] or SIGNAL dead [from TIME] [hidden]")
             }
             PlantError::FaultTime(time, e) => write!(f, "from {}: {e}", shown(time)),
             PlantError::AnalogFault(s) => write!(f, "{s} is analog: only bit signals take faults"),

@@ -1,5 +1,7 @@
 //! Faults (`--fault`): a signal stuck at 0 or 1, or an actuator dead,
 //! each from a given time, so a teacher can hand out a faulty machine.
+//! A fault may end in `hidden`: it acts the same, and the page does not
+//! show it to a student in an exercise, whose task is to find it.
 
 use super::{Direction, Kind, PlantError, PlantInfo};
 use crate::time::SimTime;
@@ -23,13 +25,19 @@ pub struct Fault {
     pub kind: FaultKind,
     /// From when (0: from power-on).
     pub from: SimTime,
+    /// Not shown to a student in an exercise (the text ends in `hidden`).
+    pub hidden: bool,
 }
 
 impl Fault {
-    /// Parses `SIGNAL stuck 0|1 [from TIME]` or `SIGNAL dead [from TIME]`
-    /// for the plant `plant`.
+    /// Parses `SIGNAL stuck 0|1 [from TIME] [hidden]` or `SIGNAL dead
+    /// [from TIME] [hidden]` for the plant `plant`.
     pub fn parse(text: &str, plant: &PlantInfo) -> Result<Fault, PlantError> {
-        let words: Vec<&str> = text.split_whitespace().collect();
+        let mut words: Vec<&str> = text.split_whitespace().collect();
+        let hidden = words.last() == Some(&"hidden");
+        if hidden {
+            words.pop();
+        }
         let Some((&name, rest)) = words.split_first() else {
             return Err(PlantError::FaultUsage);
         };
@@ -55,8 +63,26 @@ impl Fault {
         if kind == FaultKind::Dead && info.direction == Direction::In {
             return Err(PlantError::DeadSensor(full));
         }
-        Ok(Fault { signal, kind, from })
+        Ok(Fault {
+            signal,
+            kind,
+            from,
+            hidden,
+        })
     }
+
+    /// Whether `named` (a fault as [`Fault::parse`] reads it, its time
+    /// and `hidden` aside) names this fault: the same signal, the same
+    /// kind. A student's answer in an exercise names a hidden fault so.
+    pub fn is_named(&self, named: &Fault) -> bool {
+        self.signal == named.signal && self.kind == named.kind
+    }
+}
+
+/// Whether a fault's text ends in `hidden` (checked without the plant,
+/// so the page's first screen knows an exercise hides a fault).
+pub fn is_hidden(text: &str) -> bool {
+    text.split_whitespace().last() == Some("hidden")
 }
 
 /// The fault acting on `signal` at `now`: of those begun, the one that
@@ -115,17 +141,33 @@ mod tests {
     }
 
     #[test]
+    fn a_fault_ending_in_hidden_acts_the_same_and_is_marked() {
+        let f = Fault::parse("infeed stuck 0 from 5s hidden", &INFO).unwrap();
+        assert_eq!(
+            (f.signal, f.kind, f.from, f.hidden),
+            (0, FaultKind::Stuck(false), SimTime::from_secs(5), true)
+        );
+        assert!(!Fault::parse("infeed stuck 0", &INFO).unwrap().hidden);
+        assert!(Fault::parse("motor dead hidden", &INFO).unwrap().hidden);
+        assert!(Fault::parse("hidden", &INFO).is_err());
+        assert!(Fault::parse("motor hidden dead", &INFO).is_err());
+        assert!(is_hidden("motor dead hidden") && !is_hidden("motor dead"));
+    }
+
+    #[test]
     fn the_latest_begun_fault_acts() {
         let faults = [
             Fault {
                 signal: 2,
                 kind: FaultKind::Stuck(true),
                 from: SimTime::ZERO,
+                hidden: false,
             },
             Fault {
                 signal: 2,
                 kind: FaultKind::Dead,
                 from: SimTime::from_secs(5),
+                hidden: false,
             },
         ];
         assert_eq!(
@@ -137,6 +179,8 @@ mod tests {
             Some(FaultKind::Dead)
         );
         assert_eq!(acting(&faults, 0, SimTime::from_secs(5)), None);
+        assert!(faults[1].is_named(&Fault::parse("motor dead", &INFO).unwrap()));
+        assert!(!faults[1].is_named(&Fault::parse("motor stuck 1", &INFO).unwrap()));
         assert_eq!(apply(Some(FaultKind::Dead), 1), 0);
         assert_eq!(apply(None, 1), 1);
     }

@@ -5,7 +5,7 @@
 use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
 use engine::formats::project::PlantSetup;
 use engine::machines::try_new_plc;
-use engine::plant::{AnyPlant, Fault, Plant, Planted, WireEntry};
+use engine::plant::{fault, AnyPlant, Fault, Plant, Planted, WireEntry};
 use engine::plc::{Command, Plc};
 use engine::MachineId;
 use leptos::prelude::*;
@@ -33,14 +33,17 @@ pub fn run_all(ctx: LadderCtx) {
     };
     let (machine, settings) = (ctx.machine, ctx.settings());
     let plant = ctx.cases.plant.get_untracked();
+    let named = ctx.cases.report.with_untracked(|r| r.0.clone());
     // wasm-bindgen's own spawner: a teacher's `?answer` link runs the
     // cases while the page starts, before Leptos' executor is set up.
     wasm_bindgen_futures::spawn_local(async move {
-        match run_cases_part(machine, settings, listing.text, cases, plant).await {
-            Ok(results) => ctx
-                .cases
-                .results
-                .set(results.into_iter().map(Some).collect()),
+        match run_cases_part(machine, settings, listing.text, cases, plant, named).await {
+            Ok((results, right)) => {
+                ctx.cases.report.update(|r| r.1 = right);
+                ctx.cases
+                    .results
+                    .set(results.into_iter().map(Some).collect());
+            }
             // Where Run was pressed; pressing it again retries the fetch.
             Err(PartMissing) => {
                 let said = ctx.page.lang.get_untracked().parts().missing;
@@ -53,23 +56,51 @@ pub fn run_all(ctx: LadderCtx) {
 crate::parts::part_fn!(
     tests_runner,
     /// The case runner is a part of its own (issue #53): it is fetched when
-    /// the cases are first run.
+    /// the cases are first run. Where the plant hides a fault, also
+    /// whether `named` names it (then repaired for the cases).
     fn run_cases_part(
         machine: MachineId,
         settings: Vec<(String, String)>,
         program: String,
         cases: Vec<TestCase>,
         plant: Option<PlantSetup>,
-    ) -> Result<Vec<CaseResult>, PartMissing> {
-        Ok(run_cases_with(
-            machine,
-            &settings,
-            &program,
-            &cases,
-            plant.as_ref(),
-        ))
+        named: Option<String>,
+    ) -> Result<(Vec<CaseResult>, Option<bool>), PartMissing> {
+        let (plant, right) = match plant {
+            Some(setup) => {
+                let (setup, right) = repaired(setup, named.as_deref());
+                (Some(setup), right)
+            }
+            None => (None, None),
+        };
+        let results = run_cases_with(machine, &settings, &program, &cases, plant.as_ref());
+        Ok((results, right))
     }
 );
+
+/// `setup` with the hidden faults that `named` names taken away (the
+/// student found and so repaired them), and whether it named one; `None`
+/// when `setup` hides no fault (docs/plants.md "In the page": a
+/// troubleshooting exercise). A fault the engine refuses stays, to be
+/// said when the cases attach the plant.
+pub fn repaired(mut setup: PlantSetup, named: Option<&str>) -> (PlantSetup, Option<bool>) {
+    if !setup.faults.iter().any(|f| fault::is_hidden(f)) {
+        return (setup, None);
+    }
+    let Some(info) = AnyPlant::new(&setup.name).map(|p| p.info()) else {
+        return (setup, Some(false));
+    };
+    let Some(named) = named.and_then(|n| Fault::parse(n, info).ok()) else {
+        return (setup, Some(false));
+    };
+    let before = setup.faults.len();
+    setup.faults.retain(|text| {
+        let found = Fault::parse(text, info).is_ok_and(|f| f.hidden && f.is_named(&named));
+        !found
+    });
+    let right = setup.faults.len() < before;
+    (setup, Some(right))
+}
 
 /// Runs `cases` on `machine`, each on a fresh machine with `settings`
 /// applied and `program` loaded.

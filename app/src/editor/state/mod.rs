@@ -229,6 +229,9 @@ pub struct Cases {
     pub plant: RwSignal<Option<engine::formats::project::PlantSetup>>,
     /// The last run's result of each case (by index), when run.
     pub results: RwSignal<Vec<Option<CaseResult>>>,
+    /// The fault a student names where the plant hides one
+    /// (`fault-report`), and whether the last check found it right.
+    pub report: RwSignal<(Option<String>, Option<bool>)>,
     /// Inputs being recorded into a new case, while recording.
     recorder: StoredValue<Option<super::cases::Recorder>>,
 }
@@ -326,6 +329,7 @@ impl LadderCtx {
                 plant: RwSignal::new(plant),
                 authoring: RwSignal::new(false),
                 results: RwSignal::new(Vec::new()),
+                report: RwSignal::new((None, None)),
                 recorder: StoredValue::new(None),
             },
             live: Live::new(),
