@@ -6,7 +6,7 @@
 use std::fmt;
 
 use super::Program;
-use crate::iec::st::{check_source, lower_source, parse_source, StError};
+use crate::iec::st::{check_source, lower_source, parse_source, Lowered, StError};
 
 /// Why a Structured Text program does not load: where (1-based line and
 /// column of the ST text) and what.
@@ -38,8 +38,34 @@ fn from_st(e: StError) -> StLoadError {
 /// (what `hashigo run` loads for a `.st` file), checked to load: every
 /// refusal at its ST line and column.
 pub fn st_to_il(text: &str) -> Result<String, Vec<StLoadError>> {
-    let (_, il) = load(text)?;
-    Ok(il)
+    let (_, lowered) = load(text)?;
+    Ok(lowered.text)
+}
+
+/// A Structured Text program as the page runs it (issue #55): the IL it
+/// loads as, and where each of that program's steps comes from in the ST
+/// text, for breakpoints and the current line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StRun {
+    /// The IL text (loads to the same program as the ST text).
+    pub il: String,
+    /// `lines[step]`: the 1-based ST line the step comes from (`None`
+    /// for the steps the loader adds).
+    pub lines: Vec<Option<usize>>,
+}
+
+/// [`st_to_il`] with each step's ST line.
+pub fn st_run(text: &str) -> Result<StRun, Vec<StLoadError>> {
+    let (program, lowered) = load(text)?;
+    let lines = program
+        .step_lines()
+        .into_iter()
+        .map(|l| l.map(|il| lowered.place(il).line as usize))
+        .collect();
+    Ok(StRun {
+        il: lowered.text,
+        lines,
+    })
 }
 
 impl Program {
@@ -50,7 +76,7 @@ impl Program {
     }
 }
 
-fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
+fn load(text: &str) -> Result<(Program, Lowered), Vec<StLoadError>> {
     let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
     check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
     let lowered =
@@ -67,5 +93,5 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
             })
             .collect::<Vec<_>>()
     })?;
-    Ok((program, lowered.text))
+    Ok((program, lowered))
 }

@@ -11,6 +11,7 @@ mod common;
 mod control;
 mod expressions;
 mod inout;
+mod lines;
 mod numeric;
 mod property;
 mod refusals;
