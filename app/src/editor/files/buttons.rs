@@ -215,8 +215,31 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
     });
 }
 
+/// A Structured Text file opened (issue #55): the page shows the soft
+/// PLC, whose program pane takes the text in ST once its part is there
+/// (the ladder stays as it was).
+fn open_st(spaces: crate::workspaces::Workspaces, ctx: LadderCtx, file: &str, text: &str) {
+    let (file, text) = (file.to_string(), text.to_string());
+    let page = ctx.page;
+    page.machine.set(IEC_MACHINE);
+    crate::storage::save_string(crate::storage::MACHINE_KEY, IEC_MACHINE.name());
+    spaces.when_ready(IEC_MACHINE, move || {
+        // After the arrival is recorded (it runs what waited first).
+        set_timeout(
+            move || {
+                if let Some(w) = spaces.workspace(IEC_MACHINE) {
+                    if w.open_text(&file, &text) {
+                        page.docks.show(crate::docks::Tool::Program);
+                    }
+                }
+            },
+            std::time::Duration::ZERO,
+        );
+    });
+}
+
 /// Reads an opened file: a project (`.json`), PLCopen XML or an LDmicro
-/// `.ld` file. A project for another machine opens on that machine.
+/// `.ld` file (a `.st` file is [`open_st`]'s). A project for another machine opens on that machine.
 fn open_text(
     ctx: LadderCtx,
     ladders: Option<Ladders>,
@@ -270,6 +293,7 @@ pub fn save_project_file(ctx: LadderCtx) {
 pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
+    let spaces = use_context::<crate::workspaces::Workspaces>();
     let pending = ctx.panes.import;
     let on_file = move |e: web_sys::Event| {
         let Some(input) = e
@@ -293,7 +317,12 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 .ok()
                 .and_then(|v| v.as_string())
                 .unwrap_or_default();
-            open_text(ctx, ladders, pending, &name, &text);
+            match spaces {
+                Some(spaces) if name.to_ascii_lowercase().ends_with(".st") => {
+                    open_st(spaces, ctx, &name, &text);
+                }
+                _ => open_text(ctx, ladders, pending, &name, &text),
+            }
         });
         reader.set_onload(Some(onload.unchecked_ref()));
         let _ = reader.read_as_text(&file);
@@ -305,7 +334,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
             </button>
             <label class="file-open">
                 {move || t().open_file}
-                <input type="file" data-testid="open-file" accept=".json,.xml,.ld,application/json,text/xml" on:change=on_file />
+                <input type="file" data-testid="open-file" accept=".json,.xml,.ld,.st,application/json,text/xml" on:change=on_file />
             </label>
             <span class="menu-heading" data-testid="export-heading">{move || t().export_as}</span>
             <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>
