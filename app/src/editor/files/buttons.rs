@@ -215,31 +215,13 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
     });
 }
 
-/// A Structured Text file opened (issue #55): the page shows the soft
-/// PLC, whose program pane takes the text in ST once its part is there
-/// (the ladder stays as it was).
-fn open_st(spaces: crate::workspaces::Workspaces, ctx: LadderCtx, file: &str, text: &str) {
-    let (file, text) = (file.to_string(), text.to_string());
-    let page = ctx.page;
-    page.machine.set(IEC_MACHINE);
-    crate::storage::save_string(crate::storage::MACHINE_KEY, IEC_MACHINE.name());
-    spaces.when_ready(IEC_MACHINE, move || {
-        // After the arrival is recorded (it runs what waited first).
-        set_timeout(
-            move || {
-                if let Some(w) = spaces.workspace(IEC_MACHINE) {
-                    if w.open_text(&file, &text) {
-                        page.docks.show(crate::docks::Tool::Program);
-                    }
-                }
-            },
-            std::time::Duration::ZERO,
-        );
-    });
-}
+/// Opens a Structured Text file (issue #55) on the soft PLC: given by the
+/// workspaces, which reach its part (`Workspaces::open_st`): (file, text).
+#[derive(Clone, Copy)]
+pub struct OpenSt(pub Callback<(String, String)>);
 
 /// Reads an opened file: a project (`.json`), PLCopen XML or an LDmicro
-/// `.ld` file (a `.st` file is [`open_st`]'s). A project for another machine opens on that machine.
+/// `.ld` file (a `.st` file is [`OpenSt`]'s). A project for another machine opens on that machine.
 fn open_text(
     ctx: LadderCtx,
     ladders: Option<Ladders>,
@@ -293,7 +275,7 @@ pub fn save_project_file(ctx: LadderCtx) {
 pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
-    let spaces = use_context::<crate::workspaces::Workspaces>();
+    let open_st = use_context::<OpenSt>();
     let pending = ctx.panes.import;
     let on_file = move |e: web_sys::Event| {
         let Some(input) = e
@@ -317,9 +299,9 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 .ok()
                 .and_then(|v| v.as_string())
                 .unwrap_or_default();
-            match spaces {
-                Some(spaces) if name.to_ascii_lowercase().ends_with(".st") => {
-                    open_st(spaces, ctx, &name, &text);
+            match open_st {
+                Some(OpenSt(open)) if name.to_ascii_lowercase().ends_with(".st") => {
+                    open.run((name, text));
                 }
                 _ => open_text(ctx, ladders, pending, &name, &text),
             }
