@@ -404,7 +404,11 @@ mod tests {
         let mut s = Simulator::new(SoftPlc::new());
         s.machine_mut().load_text(&run.il).expect("loads");
         s.machine_mut().apply(Command::Run(true)).expect("runs");
-        let at_line_4: Vec<bool> = run.lines.iter().map(|l| *l == Some(4)).collect();
+        // Before line 4's first step (as `machines::soft::st::stop_steps`).
+        let lines = run.lines.clone();
+        let at_line_4: Vec<bool> = (0..lines.len())
+            .map(|p| lines[p] == Some(4) && (p == 0 || lines[p - 1] != lines[p]))
+            .collect();
         s.set_stop(Some(Box::new(move |m: &SoftPlc| {
             m.machine()
                 .scan_position()

@@ -19,7 +19,7 @@ use crate::state::{put, Ctx};
 use crate::storage;
 
 mod rows;
-mod st;
+pub mod st;
 mod st_complete;
 mod st_lex;
 mod st_pane;

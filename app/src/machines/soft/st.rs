@@ -153,12 +153,9 @@ impl StState {
     /// line (none set: they run whole scans).
     fn install_stop(&self, sim: Sim) {
         let breakpoints = self.breakpoints.get_untracked();
-        let stops: Vec<bool> = self.lines.with_value(|lines| {
-            lines
-                .iter()
-                .map(|l| l.is_some_and(|l| breakpoints.contains(&l)))
-                .collect()
-        });
+        let stops = self
+            .lines
+            .with_value(|lines| stop_steps(lines, &breakpoints));
         let stop: Option<crate::sim::StopAt<SoftPlc>> = stops.contains(&true).then(|| {
             Box::new(move |m: &SoftPlc| {
                 m.machine()
@@ -241,11 +238,37 @@ impl StState {
     }
 }
 
+/// The steps a scan stops before: the first step of each breakpoint's
+/// line (a line lowers to several steps; the scan stops once, before
+/// the line runs, not before each of its steps).
+pub fn stop_steps(lines: &[Option<usize>], breakpoints: &BTreeSet<usize>) -> Vec<bool> {
+    lines
+        .iter()
+        .enumerate()
+        .map(|(p, l)| {
+            let first = p == 0 || lines[p - 1] != *l;
+            first && l.is_some_and(|l| breakpoints.contains(&l))
+        })
+        .collect()
+}
+
 /// A value as ST writes it (a bit as TRUE/FALSE).
 fn shown(v: &Value) -> String {
     match v {
         Value::Bit(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
         Value::Text(t) => format!("'{t}'"),
         v => v.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_scan_stops_before_a_breakpoints_line_once() {
+        let lines = [Some(7), Some(7), Some(8), Some(8), Some(8), Some(9), None];
+        let stops = stop_steps(&lines, &BTreeSet::from([8, 9]));
+        assert_eq!(stops, [false, false, true, false, false, true, false]);
     }
 }
