@@ -78,7 +78,21 @@ pub struct Simulator<M> {
     /// The plant coupled to the machine (issue #52): when there is one,
     /// it advances the machine step by step with itself.
     rig: RigSlot,
+    /// Where a running scan stops by itself (issue #55: a Structured
+    /// Text breakpoint): while set, frames run the machine instruction by
+    /// instruction and ask it after each.
+    stop: Option<StopAt<M>>,
+    /// A frame stopped at `stop` since the last [`Simulator::take_stopped`].
+    stopped: bool,
 }
+
+/// Asked of the machine after each instruction: `None` while no scan is
+/// under way, else whether the scan stops before its next instruction.
+pub type StopAt<M> = Box<dyn Fn(&M) -> Option<bool>>;
+
+/// The most instructions one frame steps through while a stop is set: a
+/// long scan goes on in the next frame rather than freezing the page.
+const MAX_STEPS_PER_FRAME: usize = 200_000;
 
 /// `Speed::Max`'s share of a frame. The rest of the frame (the live
 /// ladder's changes, layout, paint) costs what the drawing and the device
@@ -120,6 +134,49 @@ impl<M: Plc + Clone> Simulator<M> {
             machine: Recorded::new(machine),
             budget: FrameBudget::new(),
             rig: None,
+            stop: None,
+            stopped: false,
+        }
+    }
+
+    /// Sets where running scans stop by themselves (`None`: nowhere,
+    /// frames run whole scans again).
+    pub fn set_stop(&mut self, stop: Option<StopAt<M>>) {
+        self.stop = stop;
+    }
+
+    /// Whether a frame stopped at the stop set, since the last call.
+    pub fn take_stopped(&mut self) -> bool {
+        std::mem::take(&mut self.stopped)
+    }
+
+    /// Runs `dt` instruction by instruction, stopping before the
+    /// instruction `stop` names. The instruction it stood before runs
+    /// first: a scan resumed at a breakpoint goes on past it.
+    fn step_through(&mut self, dt: SimTime) {
+        let Some(stop) = self.stop.as_ref() else {
+            return;
+        };
+        let end = self.machine.now() + dt;
+        for _ in 0..MAX_STEPS_PER_FRAME {
+            if stop(self.machine.shown_machine()).is_none() {
+                // Between scans: the next one starts only within `dt`.
+                match self.machine.next_scan_end() {
+                    Some(t) if t <= end => {}
+                    _ => {
+                        let now = self.machine.now();
+                        if end > now {
+                            self.machine.tick(end - now);
+                        }
+                        return;
+                    }
+                }
+            }
+            self.machine.step_instruction();
+            if stop(self.machine.shown_machine()) == Some(true) {
+                self.stopped = true;
+                return;
+            }
         }
     }
 
@@ -158,6 +215,14 @@ impl<M: Plc + Clone> Simulator<M> {
             return;
         }
         let wall_ms = wall_ms.min(CATCH_UP_CAP_MS);
+        if self.stop.is_some() && self.rig.is_none() {
+            let nanos = match pace.speed {
+                Speed::Times(factor) => wall_ms * 1e6 * f64::from(factor),
+                Speed::Max => MAX_SPEED_SLICE.0 as f64,
+            };
+            self.step_through(SimTime::from_nanos(nanos as u64));
+            return;
+        }
         match pace.speed {
             Speed::Times(factor) => {
                 let nanos = wall_ms * 1e6 * f64::from(factor);
@@ -328,5 +393,61 @@ mod tests {
             assert_eq!(Speed::from_code(&speed.code()), Some(speed));
         }
         assert_eq!(Speed::from_code("fast"), None);
+    }
+
+    #[test]
+    fn a_stop_set_halts_a_frame_before_the_step_it_names_and_resumes_past_it() {
+        use engine::machines::SoftPlc;
+        use engine::plc::{Command, Plc, Value};
+        let text = "PROGRAM p\nVAR a : INT; b : INT; END_VAR\na := a + 1;\nb := a;\nEND_PROGRAM\n";
+        let run = engine::softplc::st::st_run(text).expect("loads");
+        let mut s = Simulator::new(SoftPlc::new());
+        s.machine_mut().load_text(&run.il).expect("loads");
+        s.machine_mut().apply(Command::Run(true)).expect("runs");
+        // Before line 4's first step (as `machines::soft::st::stop_steps`).
+        let lines = run.lines.clone();
+        let at_line_4: Vec<bool> = (0..lines.len())
+            .map(|p| lines[p] == Some(4) && (p == 0 || lines[p - 1] != lines[p]))
+            .collect();
+        s.set_stop(Some(Box::new(move |m: &SoftPlc| {
+            m.machine()
+                .scan_position()
+                .map(|p| at_line_4.get(p).copied().unwrap_or(false))
+        })));
+        let pace = Pace {
+            speed: Speed::Times(1),
+            paused: false,
+        };
+        // Mid-scan: the program's values now, not the last scan's image.
+        let read = |s: &Simulator<SoftPlc>, name: &str| {
+            let program = s.machine().shown_machine().machine().program();
+            program.value(name).expect(name).to_value()
+        };
+        let line_now = |s: &Simulator<SoftPlc>| {
+            let p = s.machine().shown_machine().machine().scan_position();
+            p.and_then(|p| run.lines[p])
+        };
+        s.frame(pace, 16.0, || 0.0);
+        assert!(s.take_stopped());
+        assert!(!s.take_stopped(), "said once");
+        assert_eq!(line_now(&s), Some(4));
+        assert_eq!(
+            (read(&s, "a"), read(&s, "b")),
+            (Value::Int(1), Value::Int(0))
+        );
+        // The next frame runs on past the line it stood before, to the
+        // same line in the next scan.
+        s.frame(pace, 16.0, || 0.0);
+        assert!(s.take_stopped());
+        assert_eq!(
+            (read(&s, "a"), read(&s, "b")),
+            (Value::Int(2), Value::Int(1))
+        );
+        // No stop: whole scans again, none left under way.
+        s.set_stop(None);
+        s.frame(pace, 100.0, || 0.0);
+        assert!(!s.take_stopped());
+        assert_eq!(line_now(&s), None);
+        assert_eq!(read(&s, "b"), read(&s, "a"));
     }
 }

@@ -118,6 +118,33 @@ impl Workspaces {
         provide_context(self.projects);
         provide_context(self.plants);
         provide_context(*self);
+        let spaces = *self;
+        provide_context(crate::editor::files::OpenSt(Callback::new(
+            move |(file, text): (String, String)| spaces.open_st(file, text),
+        )));
+    }
+
+    /// A Structured Text file opened (issue #55): the page shows the soft
+    /// PLC, whose program pane takes the text in ST once its part is there
+    /// (the ladder stays as it was).
+    fn open_st(&self, file: String, text: String) {
+        let kind = engine::machines::IEC_MACHINE;
+        let (spaces, page) = (*self, self.page);
+        page.machine.set(kind);
+        crate::storage::save_string(crate::storage::MACHINE_KEY, kind.name());
+        self.when_ready(kind, move || {
+            // After the arrival is recorded (what waited runs first).
+            set_timeout(
+                move || {
+                    if let Some(w) = spaces.workspace(kind) {
+                        if w.open_text(&file, &text) {
+                            page.docks.show(Tool::Program);
+                        }
+                    }
+                },
+                std::time::Duration::ZERO,
+            );
+        });
     }
 
     /// One animation frame for the workspace of `kind`: `wall_ms` of wall

@@ -11,6 +11,7 @@ pub mod keymap;
 pub mod parts;
 pub mod plant;
 pub mod plant_faults;
+pub mod st;
 pub mod start;
 pub mod words;
 
@@ -114,6 +115,14 @@ impl Lang {
         match self {
             Lang::Ja => &classroom::JA,
             Lang::En => &classroom::EN,
+        }
+    }
+
+    /// The Structured Text pane's strings (issue #55).
+    pub const fn st(self) -> &'static st::St {
+        match self {
+            Lang::Ja => &st::JA,
+            Lang::En => &st::EN,
         }
     }
 }

@@ -18,6 +18,12 @@ pub trait MachineWorkspace {
     fn program(&self) -> AnyView;
     /// Its own context (the component tests reach a machine's state so).
     fn as_any(&self) -> &dyn std::any::Any;
+    /// Opens a program text of the machine's own language (a `.st` file
+    /// on the soft PLC, issue #55) in its program pane; false where the
+    /// machine takes none. The code stays in the machine's part.
+    fn open_text(&self, _file: &str, _text: &str) -> bool {
+        false
+    }
 }
 
 /// A machine's workspace, shared by the views that show it.

@@ -56,6 +56,27 @@ pub fn st_to_il(text: &str) -> Result<String, Vec<StLoadError>> {
     Ok(il)
 }
 
+/// A Structured Text program as the page runs it (issue #55): the IL it
+/// loads as, and where each of that program's steps comes from in the ST
+/// text, for breakpoints and the current line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StRun {
+    /// The IL text (loads to the same program as the ST text).
+    pub il: String,
+    /// `lines[step]`: the 1-based ST line the step comes from (`None`
+    /// for the steps the loader adds).
+    pub lines: Vec<Option<usize>>,
+}
+
+/// [`st_to_il`] with each step's ST line ([`Program::source_line`]).
+pub fn st_run(text: &str) -> Result<StRun, Vec<StLoadError>> {
+    let (program, il) = load(text)?;
+    let lines = (0..program.len())
+        .map(|step| program.source_line(step).map(|(line, _)| line as usize))
+        .collect();
+    Ok(StRun { il, lines })
+}
+
 impl Program {
     /// Loads a Structured Text source: its one `PROGRAM` and its own
     /// `FUNCTION_BLOCK`s. Every refusal at its line and column.
@@ -70,20 +91,6 @@ impl Program {
     /// breakpoints and steps by statement with it.
     pub fn source_line(&self, step: usize) -> Option<(u32, u32)> {
         self.st_places.get(step).copied().filter(|&(l, _)| l > 0)
-    }
-
-    /// The IL line of each step (0 for a step no line wrote), as the
-    /// loader compiled them: the program's lines, a return when it has
-    /// block instances, then each instance's body and its return.
-    fn step_lines(&self) -> Vec<usize> {
-        let mut out: Vec<usize> = self.lines.iter().map(|l| l.line).collect();
-        for (u, &entry) in self.entries.iter().enumerate() {
-            out.resize(entry, 0);
-            let ty = self.instances[u].ty;
-            out.extend(self.user_types[ty].lines.iter().map(|l| l.line));
-        }
-        out.resize(self.steps.len(), 0);
-        out
     }
 }
 
@@ -109,8 +116,8 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
         .step_lines()
         .into_iter()
         .map(|il| match il {
-            0 => (0, 0),
-            il => {
+            None | Some(0) => (0, 0),
+            Some(il) => {
                 let span = lowered.place(il);
                 (span.line, span.column)
             }

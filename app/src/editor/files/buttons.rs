@@ -215,8 +215,13 @@ fn open_ld(ctx: LadderCtx, ladders: Option<Ladders>, file: &str, text: &str) {
     });
 }
 
+/// Opens a Structured Text file (issue #55) on the soft PLC: given by the
+/// workspaces, which reach its part (`Workspaces::open_st`): (file, text).
+#[derive(Clone, Copy)]
+pub struct OpenSt(pub Callback<(String, String)>);
+
 /// Reads an opened file: a project (`.json`), PLCopen XML or an LDmicro
-/// `.ld` file. A project for another machine opens on that machine.
+/// `.ld` file (a `.st` file is [`OpenSt`]'s). A project for another machine opens on that machine.
 fn open_text(
     ctx: LadderCtx,
     ladders: Option<Ladders>,
@@ -270,6 +275,7 @@ pub fn save_project_file(ctx: LadderCtx) {
 pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let ladders = use_context::<Ladders>();
+    let open_st = use_context::<OpenSt>();
     let pending = ctx.panes.import;
     let on_file = move |e: web_sys::Event| {
         let Some(input) = e
@@ -293,7 +299,12 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
                 .ok()
                 .and_then(|v| v.as_string())
                 .unwrap_or_default();
-            open_text(ctx, ladders, pending, &name, &text);
+            match open_st {
+                Some(OpenSt(open)) if name.to_ascii_lowercase().ends_with(".st") => {
+                    open.run((name, text));
+                }
+                _ => open_text(ctx, ladders, pending, &name, &text),
+            }
         });
         reader.set_onload(Some(onload.unchecked_ref()));
         let _ = reader.read_as_text(&file);
@@ -305,7 +316,7 @@ pub fn FileButtons(ctx: LadderCtx) -> impl IntoView {
             </button>
             <label class="file-open">
                 {move || t().open_file}
-                <input type="file" data-testid="open-file" accept=".json,.xml,.ld,application/json,text/xml" on:change=on_file />
+                <input type="file" data-testid="open-file" accept=".json,.xml,.ld,.st,application/json,text/xml" on:change=on_file />
             </label>
             <span class="menu-heading" data-testid="export-heading">{move || t().export_as}</span>
             <button type="button" data-testid="export-plcopen" on:click=move |_| export_plcopen(ctx)>"PLCopen"</button>

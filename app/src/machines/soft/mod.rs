@@ -14,17 +14,21 @@ use engine::plc::{Command, Device, Plc};
 use leptos::prelude::*;
 
 use crate::chrome::console::ConsolePane;
-use crate::chrome::text_program::TextProgramPane;
 use crate::sim::Simulator;
 use crate::state::{put, Ctx};
 use crate::storage;
 
 mod rows;
+pub mod st;
+mod st_complete;
+mod st_lex;
+mod st_pane;
 use rows::{Digits, GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
+use st_pane::SoftProgram;
 
 /// Where the workspace's program is saved (`SavedText`); nothing was
 /// ever saved under the legacy key.
-const KEY: &str = "hashigo.soft-plc.v1";
+pub(super) const KEY: &str = "hashigo.soft-plc.v1";
 const LEGACY_KEY: &str = "hashigo.soft-plc.v0";
 /// Where the scan period is saved (as the engine's setting reads it,
 /// `5000us`); absent for the default 10 ms.
@@ -137,6 +141,8 @@ pub struct SoftCtx {
     console_seen: StoredValue<u64>,
     /// The cyclic task's period in µs (an LDmicro file's `CYCLE=`).
     pub scan_us: RwSignal<u64>,
+    /// The Structured Text pane and program (issue #55).
+    pub st: st::StState,
 }
 
 impl SoftCtx {
@@ -153,6 +159,7 @@ impl SoftCtx {
             console: RwSignal::new(String::new()),
             console_seen: StoredValue::new(0),
             scan_us: RwSignal::new(DEFAULT_SCAN_US),
+            st: st::StState::restore(page),
         };
         if let Some(saved) = storage::saved_string(SCAN_KEY) {
             if let Err(e) = ctx.set_scan(&saved) {
@@ -249,6 +256,7 @@ impl SoftCtx {
             }
             self.console_seen.set_value(total);
         });
+        self.st.refresh(self.sim);
     }
 
     /// Types `line` at the serial port (an empty line: the Enter key); a
@@ -270,14 +278,19 @@ impl SoftCtx {
         storage::save_to(KEY, &storage::SavedText { program });
     }
 
-    /// Loads the pane's program (from power-up); false if it has errors.
-    /// The board follows its I/O; what the board drives stays driven.
+    /// Loads the pane's program (from power-up), in the pane's language;
+    /// false if it has errors. The board follows its I/O; what the board
+    /// drives stays driven.
     pub fn load(&self) -> bool {
-        let text = self.text.get_untracked();
-        let loaded = self
-            .sim
-            .try_update_value(|s| s.machine_mut().load_text(&text))
-            .is_some_and(|r| r.is_ok());
+        let loaded = if self.st.on.get_untracked() {
+            self.st.load(self.sim)
+        } else {
+            let text = self.text.get_untracked();
+            self.st.forget(self.sim);
+            self.sim
+                .try_update_value(|s| s.machine_mut().load_text(&text))
+                .is_some_and(|r| r.is_ok())
+        };
         if loaded {
             self.rebuild();
         }
@@ -452,44 +465,6 @@ pub fn SoftPanel(soft: SoftCtx) -> impl IntoView {
     }
 }
 
-/// The soft PLC's program text (the tools dock's Program tab).
-#[component]
-pub fn SoftProgram(soft: SoftCtx) -> impl IntoView {
-    let ctx = Ctx::get();
-    // In the page's language (issue #49).
-    let errors = Memo::new(move |_| {
-        let lang = ctx.lang.get();
-        match engine::softplc::Program::load(&soft.text.get()) {
-            Ok(_) => Vec::new(),
-            Err(e) => e
-                .iter()
-                .map(|e| (e.line, crate::i18n::errors::load_error(lang, &e.error)))
-                .collect::<Vec<_>>(),
-        }
-    });
-    // The pane's Load starts the program loaded (the ladder's machine).
-    let ladder = use_context::<crate::editor::LadderCtx>();
-    view! {
-        <TextProgramPane
-                    as_ladder=true
-                    prefix="soft-"
-                    text=soft.text
-                    errors=Signal::derive(move || errors.get())
-                    on_edit=Callback::new(|program: String| {
-                        storage::save_to(KEY, &storage::SavedText { program });
-                    })
-                    on_load=Callback::new(move |()| {
-                        if soft.load() {
-                            if let Some(ladder) = ladder {
-                                ladder.run_loaded();
-                            }
-                        }
-                    })
-                    tall=true
-                />
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -563,5 +538,12 @@ impl crate::machines::workspace::MachineWorkspace for SoftCtx {
 
     fn as_any(&self) -> &dyn std::any::Any {
         self
+    }
+
+    /// A `.st` file: its text in the program pane, in ST, not loaded
+    /// until Load or Run (as a text typed there).
+    fn open_text(&self, _file: &str, text: &str) -> bool {
+        self.st.open(text, self.sim);
+        true
     }
 }

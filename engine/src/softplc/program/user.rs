@@ -69,6 +69,22 @@ pub(crate) struct UserInstance {
 }
 
 impl Program {
+    /// The text line each step was read from, in step order (`None` for
+    /// the steps the loader adds: the program's end before its blocks'
+    /// bodies, each body's return). The page maps a step to its source
+    /// line so (a Structured Text line through its IL, issue #55).
+    pub fn step_lines(&self) -> Vec<Option<usize>> {
+        let mut out: Vec<Option<usize>> = self.lines.iter().map(|l| Some(l.line)).collect();
+        for (entry, instance) in self.entries.iter().zip(&self.instances) {
+            out.resize(*entry, None);
+            if let Some(t) = self.user_types.get(instance.ty) {
+                out.extend(t.lines.iter().map(|l| Some(l.line)));
+            }
+        }
+        out.resize(self.steps.len(), None);
+        out
+    }
+
     /// The program's own block type named `name` (any case).
     pub(super) fn user_type(&self, name: &str) -> Option<usize> {
         self.user_types

@@ -1,0 +1,59 @@
+//! The Structured Text pane's words (issue #55). A table of its own,
+//! reached through [`super::Lang::st`], so that parallel work does not
+//! collide in the big [`super::Texts`] table.
+
+/// The ST pane's strings.
+pub struct St {
+    /// The program pane's language choice.
+    pub language: &'static str,
+    pub il: &'static str,
+    pub st: &'static str,
+    /// Runs to the next statement's line.
+    pub step_statement: &'static str,
+    /// A gutter's button: `{line}`.
+    pub breakpoint_at: &'static str,
+    /// The status while paused at a line: `{line}`.
+    pub paused_at: &'static str,
+    /// The status when a breakpoint stopped the scan: `{line}`.
+    pub stopped_at: &'static str,
+    /// The completion list's name.
+    pub completions: &'static str,
+    /// A completion's kind.
+    pub variable: &'static str,
+    pub block: &'static str,
+    pub keyword: &'static str,
+    /// Under the editor: how to reach completion and breakpoints.
+    pub hint: &'static str,
+}
+
+/// In English.
+pub const EN: St = St {
+    language: "Language",
+    il: "IL (Instruction List)",
+    st: "ST (Structured Text)",
+    step_statement: "Step statement",
+    breakpoint_at: "Breakpoint on line {line}",
+    paused_at: "Paused before line {line}",
+    stopped_at: "Breakpoint: stopped before line {line}",
+    completions: "Completions",
+    variable: "variable",
+    block: "block",
+    keyword: "keyword",
+    hint: "Ctrl+Space completes a name; click a line number to set a breakpoint.",
+};
+
+/// 日本語.
+pub const JA: St = St {
+    language: "言語",
+    il: "IL（命令リスト）",
+    st: "ST（ストラクチャードテキスト）",
+    step_statement: "文ステップ",
+    breakpoint_at: "{line} 行目のブレークポイント",
+    paused_at: "{line} 行目の前で一時停止中",
+    stopped_at: "ブレークポイント：{line} 行目の前で停止",
+    completions: "入力候補",
+    variable: "変数",
+    block: "ブロック",
+    keyword: "キーワード",
+    hint: "Ctrl+Space で名前を補完、行番号をクリックでブレークポイントを設定します。",
+};

@@ -1,0 +1,151 @@
+"""End-to-end: Structured Text in the soft PLC's workspace (issue #55): a
+`.st` file opened and run with each line's values beside it, an error at
+its line as the user types, a breakpoint that pauses the scan before its
+line and Step statement moving the marked line; the editor on a laptop
+and a phone, axe clean."""
+
+import time
+
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+
+from test_access import violations
+from test_app import el, open_fresh, severe_console_messages, wait
+from test_glance import close_menu
+from test_screens import screen_driver
+
+PROGRAM = """PROGRAM counter
+VAR
+  count : INT;
+  lamp : BOOL;
+  total : INT;
+END_VAR
+count := count + 1; (* one more each scan *)
+lamp := count > 5;
+total := total + count;
+END_PROGRAM
+"""
+
+
+def classes(driver, testid):
+    return (el(driver, testid, reveal=False).get_attribute("class") or "").split()
+
+
+def open_st(driver, base_url, tmp_path, name="counter.st"):
+    open_fresh(driver, base_url)
+    path = tmp_path / name
+    path.write_text(PROGRAM)
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: el(driver, "machine", reveal=False).get_attribute("value") == "soft-plc",
+         message="the page switches to the soft PLC")
+    close_menu(driver)
+    area = wait(driver, lambda: el(driver, "soft-st-text"))
+    wait(driver, lambda: "count := count + 1;" in area.get_attribute("value"), message="the ST text")
+    wait(driver, lambda: el(driver, "soft-program-error").text.strip() == "no errors",
+         message=el(driver, "soft-program-error", reveal=False).text)
+    return area
+
+
+def value_beside(driver, line):
+    """The values beside `line`, scrolled into view first: only the lines
+    shown are read."""
+    found = el(driver, f"st-value-{line}", reveal=False)
+    driver.execute_script("arguments[0].scrollIntoView({block: 'nearest'})", found)
+    return found.text
+
+
+def count_beside(driver, line):
+    text = value_beside(driver, line)
+    assert text.startswith("count = "), text
+    return int(text.split()[2])
+
+
+def test_an_st_file_opened_runs_with_its_values_beside_the_lines(driver, base_url, tmp_path, artifacts):
+    open_st(driver, base_url, tmp_path)
+    assert el(driver, "soft-language").get_attribute("value") == "st"
+    el(driver, "soft-program-load").click()
+    wait(driver, lambda: value_beside(driver, 7).startswith("count = "), message="line 7's value")
+    first = count_beside(driver, 7)
+    wait(driver, lambda: count_beside(driver, 7) > first + 3, message="live, as it runs")
+    wait(driver, lambda: "lamp = TRUE" in value_beside(driver, 8), message="line 8's names")
+    assert value_beside(driver, 1) == "", "the POU's name is no variable"
+    wait(driver, lambda: value_beside(driver, 3).startswith("count = "), message="a declaration's too")
+    # Coloured: the keywords and the comment.
+    code = el(driver, "st-editor")
+    kinds = [e.text for e in code.find_elements(By.CSS_SELECTOR, ".st-kw")]
+    assert "PROGRAM" in kinds and "END_VAR" in kinds, kinds
+    assert code.find_elements(By.CSS_SELECTOR, ".st-comment")
+    # Kept over a reload, in ST.
+    driver.refresh()
+    area = wait(driver, lambda: el(driver, "soft-st-text"))
+    assert "total := total + count;" in area.get_attribute("value")
+    driver.save_screenshot(str(artifacts / "st-running.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_an_error_is_shown_at_its_line_as_the_user_types(driver, base_url, tmp_path):
+    area = open_st(driver, base_url, tmp_path)
+    area.click()
+    area.send_keys(Keys.CONTROL, Keys.HOME)
+    for _ in range(6):
+        area.send_keys(Keys.DOWN)
+    area.send_keys("y := 1;", Keys.ENTER)
+    wait(driver, lambda: "st-error" in classes(driver, "st-line-7"), message="line 7 marked")
+    errors = el(driver, "soft-program-error").text
+    assert "7:" in errors and "y" in errors, errors
+    assert el(driver, "soft-program-load").get_attribute("disabled")
+    # Nothing typed is lost or replaced.
+    assert "y := 1;\ncount := count + 1;" in area.get_attribute("value")
+    # Completion: a declared name from its first letters, on a line of its own.
+    area.send_keys(Keys.ENTER, Keys.UP, "to")
+    wait(driver, lambda: "total" in el(driver, "st-completions", reveal=False).text)
+    area.send_keys(Keys.ENTER)
+    assert "y := 1;\ntotal\ncount := count + 1;" in area.get_attribute("value"), area.get_attribute("value")
+
+
+def test_a_breakpoint_pauses_before_its_line_and_step_moves_the_marked_line(driver, base_url, tmp_path):
+    open_st(driver, base_url, tmp_path)
+    el(driver, "soft-program-load").click()
+    wait(driver, lambda: count_beside(driver, 7) > 2, message="running")
+    el(driver, "st-line-8").click()
+    assert "st-breakpoint" in classes(driver, "st-line-8")
+    wait(driver, lambda: "st-current-line" in classes(driver, "st-line-8"), message="stopped at line 8")
+    assert "8" in el(driver, "st-status").text
+    assert el(driver, "pause").get_attribute("aria-pressed") == "true", "the page paused"
+    stopped = count_beside(driver, 7)
+    time.sleep(0.5)
+    assert count_beside(driver, 7) == stopped, "the scan stands still"
+    el(driver, "st-step").click()
+    wait(driver, lambda: "st-current-line" in classes(driver, "st-line-9"), message="on to line 9")
+    assert "st-current-line" not in classes(driver, "st-line-8")
+    assert count_beside(driver, 7) == stopped, "line 7 did not run again"
+    el(driver, "st-step").click()
+    wait(driver, lambda: not driver.find_elements(By.CSS_SELECTOR, ".st-line.st-current-line"),
+         message="the scan ended")
+    el(driver, "st-step").click()
+    wait(driver, lambda: "st-current-line" in classes(driver, "st-line-8"), message="the next scan's line 8")
+    assert count_beside(driver, 7) == stopped + 1
+    # Resumed: it runs on to the breakpoint in the next scan.
+    el(driver, "pause").click()
+    wait(driver, lambda: count_beside(driver, 7) == stopped + 2, message="next scan's stop")
+    assert severe_console_messages(driver) == []
+
+
+def test_the_st_editor_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts):
+    for screen in ["laptop", "phone"]:
+        drv = screen_driver(tmp_path / screen, screen)
+        try:
+            open_st(drv, base_url, tmp_path, f"{screen}.st")
+            el(drv, "soft-program-load").click()
+            wait(drv, lambda: value_beside(drv, 7).startswith("count = "))
+            el(drv, "st-line-8").click()
+            wait(drv, lambda: "st-current-line" in classes(drv, "st-line-8"))
+            el(drv, "st-step").click()
+            wait(drv, lambda: "st-current-line" in classes(drv, "st-line-9"))
+            el(drv, "st-editor")
+            drv.save_screenshot(str(artifacts / f"st-{screen}.png"))
+            # The editor's own findings (the page's others are its parts' own).
+            found = [v for v in violations(drv) if any("st-" in n for n in v["nodes"])]
+            assert found == [], found
+        finally:
+            drv.quit()
