@@ -39,43 +39,69 @@ if (panel) {
 """
 
 
-# Draws the menus and tools' panes not drawn yet (`data-lazy-menu`,
-# `data-lazy-pane`: their controls are a part, drawn and fetched when the
-# menu first opens or the tab is first shown), as a user looking for a
-# control would open them; a menu is closed again and the tab shown
-# before is shown again.
-DRAW_LAZY_PANES = """
+# The menus not drawn yet (`data-lazy-menu`: their controls are a part,
+# drawn and fetched at a menu's first opening), opened and closed again
+# as a user looking for a control would.
+DRAW_LAZY_MENUS = """
 const menus = [...document.querySelectorAll('[data-lazy-menu]')].map(e => e.dataset.lazyMenu);
 for (const id of menus) {
   const b = document.querySelector('[data-testid="menu-' + id + '"]');
   if (b) { b.click(); b.click(); }
 }
+return menus.length > 0;
+"""
+
+# The tools' panes not drawn yet (`data-lazy-pane`: a pane held in a part
+# is drawn, and fetched, when its tab is first shown), their tabs shown
+# as a user looking for a control would; then the dock as it was: the
+# tool shown before, and closed again if it was (on a phone: its sheet
+# down, as the collapse button leaves it).
+DRAW_LAZY_PANES = """
 const lazy = [...document.querySelectorAll('[data-lazy-pane]')].map(e => e.dataset.lazyPane);
-if (!lazy.length) return menus.length > 0;
-const shown = document.querySelector('[role=tab][aria-selected=true][data-testid^="dock-tab-"]');
-for (const hook of lazy) {
-  const tab = document.querySelector('[data-testid="dock-tab-' + hook + '"]');
-  if (tab) tab.click();
+if (!lazy.length) return false;
+const dock = document.querySelector('[data-testid="dock-bottom"]');
+const was = {open: dock.dataset.open === 'true', sheet: dock.dataset.sheet === 'true', tool: dock.dataset.tool};
+const phone = getComputedStyle(dock).position === 'fixed';
+const tab = (hook) => document.querySelector('[data-testid="dock-tab-' + hook + '"]');
+for (const hook of lazy) { const t = tab(hook); if (t) t.click(); }
+const back = tab(was.tool);
+if (back) back.click();
+if (phone ? !(was.open && was.sheet) : !was.open) {
+  const collapse = document.querySelector('[data-testid="dock-bottom-toggle"]');
+  if (collapse && dock.dataset.open === 'true') collapse.click();
 }
-if (shown) shown.click();
 return true;
 """
 
 
+def draw_lazy(driver, selector):
+    """Draws what may hold `selector`: the menus not drawn yet, then if
+    it is still not there the panes. Whether anything was drawn."""
+    if driver.execute_script(DRAW_LAZY_MENUS) and driver.find_elements(By.CSS_SELECTOR, selector):
+        return True
+    return bool(driver.execute_script(DRAW_LAZY_PANES))
+
+
 def el(driver, testid, reveal=True):
     """The element with `testid`, revealed as a user would reach it (a
-    closed menu opened, its dock tab shown: a pane not drawn yet is drawn
-    by showing its tab). A control held in a part of the page (issue #53:
-    a machine, a pane, the share codec, the CPU view) appears once its
-    part has arrived: looked for again for a while."""
+    closed menu opened, its dock tab shown: a menu or pane not drawn yet
+    is drawn by opening it, when the control has not come by itself
+    within half a second). A control held in a part of the page (issue
+    #53: a machine, a pane, a menu, the share codec, the CPU view)
+    appears once its part has arrived: looked for again for a while."""
     selector = f'[data-testid="{testid}"]'
-    if not driver.find_elements(By.CSS_SELECTOR, selector):
-        driver.execute_script(DRAW_LAZY_PANES)
-    deadline = time.monotonic() + PART_GRACE_S
+    start = time.monotonic()
+    deadline = start + PART_GRACE_S
+    drew = False
     while True:
         found = driver.find_elements(By.CSS_SELECTOR, selector)
-        if found or time.monotonic() > deadline:
+        now = time.monotonic()
+        if found or now > deadline:
             break
+        if not drew and now > start + LAZY_AFTER_S:
+            drew = True
+            if draw_lazy(driver, selector):
+                deadline = now + PART_GRACE_S
         time.sleep(0.05)
     found = found[0] if found else driver.find_element(By.CSS_SELECTOR, selector)
     if reveal:
@@ -89,10 +115,14 @@ def drawn(driver, testid):
     pane is a part drawn when its tab is first shown, issue #53)."""
     selector = f'[data-testid="{testid}"]'
     found = driver.find_elements(By.CSS_SELECTOR, selector)
-    if not found and driver.execute_script(DRAW_LAZY_PANES):
+    if not found and draw_lazy(driver, selector):
         found = driver.find_elements(By.CSS_SELECTOR, selector)
     return found
 
+
+# How long `el` waits for a control to come by itself before it opens the
+# menus and panes not drawn yet.
+LAZY_AFTER_S = 0.5
 
 # How long `el` looks again for a control its part may still bring.
 PART_GRACE_S = 3.0

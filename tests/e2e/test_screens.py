@@ -63,7 +63,8 @@ def on_screen(driver, testid):
     """Its centre is inside the window and it is what is drawn there (not
     clipped by a scrolling box, not under something else)."""
     return driver.execute_script(
-        "const e = document.querySelector(arguments[0]); const b = e.getBoundingClientRect();"
+        "const e = document.querySelector(arguments[0]); if (!e) return false;"
+        "const b = e.getBoundingClientRect();"
         "const x = b.x + b.width / 2, y = b.y + b.height / 2;"
         "if (x < 0 || y < 0 || x >= innerWidth || y >= innerHeight) return false;"
         "const top = document.elementFromPoint(x, y); if (!top || !(top === e || e.contains(top))) return false;"
