@@ -44,10 +44,12 @@ if (panel) {
 # as a user looking for a control would.
 DRAW_LAZY_MENUS = """
 const menus = [...document.querySelectorAll('[data-lazy-menu]')].map(e => e.dataset.lazyMenu);
+const focused = document.activeElement;
 for (const id of menus) {
   const b = document.querySelector('[data-testid="menu-' + id + '"]');
   if (b) { b.click(); b.click(); }
 }
+if (menus.length && focused && focused.focus) focused.focus();
 return menus.length > 0;
 """
 
@@ -59,6 +61,7 @@ return menus.length > 0;
 DRAW_LAZY_PANES = """
 const lazy = [...document.querySelectorAll('[data-lazy-pane]')].map(e => e.dataset.lazyPane);
 if (!lazy.length) return false;
+const focused = document.activeElement;
 const dock = document.querySelector('[data-testid="dock-bottom"]');
 const was = {open: dock.dataset.open === 'true', sheet: dock.dataset.sheet === 'true', tool: dock.dataset.tool};
 const phone = getComputedStyle(dock).position === 'fixed';
@@ -70,6 +73,7 @@ if (phone ? !(was.open && was.sheet) : !was.open) {
   const collapse = document.querySelector('[data-testid="dock-bottom-toggle"]');
   if (collapse && dock.dataset.open === 'true') collapse.click();
 }
+if (focused && focused.focus) focused.focus();
 return true;
 """
 
