@@ -57,6 +57,44 @@ pub fn start() {
         editor::shared::location_fragment().is_none(),
         nothing_saved(),
     ));
+    // A returning visit's saved ladders are read first (their reader is
+    // a part, issue #53); a first visit has none and starts at once.
+    let saved = editor::files::store::saved_texts();
+    if saved.is_empty() {
+        begin(ctx, start);
+    } else {
+        leptos::task::spawn_local(read_then_begin(ctx, start, saved));
+    }
+}
+
+/// Reads the saved ladders `saved`, then starts the page. While their
+/// reader cannot be fetched the loading screen stays (it says what to
+/// do after a while) and it is asked again: starting without them would
+/// let the autosave write over them.
+async fn read_then_begin(ctx: Ctx, start: start::Start, saved: Vec<(String, String)>) {
+    while editor::files::reading::read_saved(saved.clone())
+        .await
+        .is_err()
+    {
+        sleep_ms(2_000).await;
+    }
+    begin(ctx, start);
+}
+
+/// Resolves after `ms` milliseconds.
+async fn sleep_ms(ms: i32) {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if let Some(window) = web_sys::window() {
+            let _ = window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, ms);
+        }
+    });
+    // A promise that only resolves.
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+
+/// Starts the page once what it restores is read: the workspaces, the
+/// app mounted, the simulation loop.
+fn begin(ctx: Ctx, start: start::Start) {
     let workspaces = Workspaces::restore(ctx);
     editor::shared::open_from_location(ctx, workspaces.ladders);
     // A link pasted into the address bar of the open page.

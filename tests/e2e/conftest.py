@@ -60,7 +60,8 @@ class DistServer:
 class GzipOnTheFlyServer:
     """dist/ served as a static host that compresses each response on the
     fly with gzip at level 6 and has no brotli (issue #53's second host):
-    the build's precompressed .gz and .br are not used."""
+    the build's precompressed .gz and .br are not used. Like nginx's gzip
+    it streams what it has compressed so far."""
 
     TYPES = {".wasm": "application/wasm", ".js": "text/javascript", ".mjs": "text/javascript",
              ".css": "text/css", ".html": "text/html; charset=utf-8", ".json": "application/json",
@@ -68,9 +69,9 @@ class GzipOnTheFlyServer:
              ".png": "image/png", ".ico": "image/x-icon"}
 
     def __init__(self):
-        import gzip
         import http.server
         import threading
+        import zlib
 
         assert (DIST / "index.html").exists(), "run trunk build --release first"
         types = self.TYPES
@@ -87,15 +88,27 @@ class GzipOnTheFlyServer:
                 body = file.read_bytes()
                 headers = {"Content-Type": types.get(file.suffix, "application/octet-stream"),
                            "Cache-Control": "no-cache"}
-                if "gzip" in self.headers.get("Accept-Encoding", "") and file.suffix != ".png":
-                    body = gzip.compress(body, compresslevel=6)
+                squeeze = "gzip" in self.headers.get("Accept-Encoding", "") and file.suffix != ".png"
+                if squeeze:
                     headers["Content-Encoding"] = "gzip"
+                else:
+                    headers["Content-Length"] = str(len(body))
                 self.send_response(200)
                 for k, v in headers.items():
                     self.send_header(k, v)
-                self.send_header("Content-Length", str(len(body)))
                 self.end_headers()
-                self.wfile.write(body)
+                if not squeeze:
+                    self.wfile.write(body)
+                    return
+                # Sent as it is compressed, as nginx's gzip sends it (no
+                # Content-Length; the response ends when the connection
+                # closes): the first bytes leave at once, not after the
+                # whole file has been compressed.
+                squeezer = zlib.compressobj(6, zlib.DEFLATED, 16 + zlib.MAX_WBITS)
+                for at in range(0, len(body), 16 * 1024):
+                    self.wfile.write(squeezer.compress(body[at:at + 16 * 1024]))
+                    self.wfile.flush()
+                self.wfile.write(squeezer.flush())
 
             def log_message(self, *args):
                 pass

@@ -132,3 +132,34 @@ def test_each_other_machine_arrives_over_the_slow_link(driver):
         server.stop()
     record_figures({"machine_arrival_slow_link_ms": arrivals})
     print(arrivals)
+
+
+def test_a_returning_visit_reads_its_saved_ladder_before_it_starts(driver, base_url):
+    """The readers of a project's JSON are a part (issue #53): a visit
+    with nothing saved never fetches them; a returning visit fetches them
+    before the app is ready (the loading screen up meanwhile) and opens
+    on its saved ladder."""
+    from selenium.webdriver.support.ui import Select
+
+    def reader_fetched():
+        return [p for p in driver.execute_script(
+            "return performance.getEntriesByType('resource').map(r => new URL(r.name).pathname)")
+            if "split_reading" in p]
+
+    open_fresh(driver, base_url)
+    assert not reader_fetched(), "nothing saved: nothing to read"
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R")
+    wait(driver, lambda: driver.execute_script(
+        "return (localStorage.getItem('hashigo.ladder.minasec-u.v1') || '').includes('C0R')"),
+        message="the ladder autosaved")
+    driver.refresh()
+    wait(driver, lambda: driver.execute_script(
+        "return performance.getEntriesByName('hashigo-ready').length > 0"), message="ready")
+    read = driver.execute_script("""
+        const ready = performance.getEntriesByName('hashigo-ready')[0].startTime;
+        const part = performance.getEntriesByType('resource')
+            .find(r => r.name.includes('split_reading'));
+        return part ? [part.responseEnd, ready] : null;""")
+    assert read and read[0] <= read[1], f"the reader arrived before the app was ready: {read}"
+    assert el(driver, "cell-4-0-9").get_attribute("data-device") == "C0R", "the saved ladder is back"

@@ -837,8 +837,11 @@ def test_inputs_driven_from_the_ladder_and_the_stepped_element(driver, base_url)
     el(driver, "step-instr").click()
     wait(driver, lambda: el(driver, "step-at").text.startswith("step 0"))
     wait(driver, lambda: "stepped" in el(driver, "cell-0-0-0").get_attribute("class"))
-    current = driver.find_elements(By.CSS_SELECTOR, ".listing .line.current")
-    assert [c.get_attribute("data-step") for c in current] == ["0"]
+    # The listing (its pane drawn when first shown) lights that step.
+    el(driver, "il-listing")
+    wait(driver, lambda: [c.get_attribute("data-step")
+                          for c in driver.find_elements(By.CSS_SELECTOR, ".listing .line.current")] == ["0"],
+         message="the stepped instruction lit in the listing")
 
 
 def live_scan(driver):

@@ -33,6 +33,10 @@ pub struct Docks {
     /// the same call that shows a tool, so that tabs chosen one after the
     /// other in one go each count.
     pub drawn: RwSignal<Vec<Tool>>,
+    /// Notified when a pane held in a part has arrived and drawn: its
+    /// size changes then (a phone's sheet grows to its height), and
+    /// what is laid out around it follows.
+    pub arrived: Trigger,
 }
 
 impl Docks {
@@ -51,6 +55,7 @@ impl Docks {
             }),
             sizes: RwSignal::new(sizes),
             sheet: RwSignal::new(false),
+            arrived: Trigger::new(),
         }
     }
 

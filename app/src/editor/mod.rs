@@ -193,10 +193,15 @@ where
     Fut: std::future::Future<Output = Result<crate::parts::DrawFor<A>, crate::parts::PartMissing>>
         + 'static,
 {
-    let (lang, docks) = (
-        crate::state::Ctx::get().lang,
-        crate::state::Ctx::get().docks,
-    );
+    let ctx = crate::state::Ctx::get();
+    let (lang, docks) = (ctx.lang, ctx.docks);
+    // Its arrival is told to the docks (a phone's sheet grows then: the
+    // ladder is kept above it).
+    let load = move || async move {
+        let part = load().await;
+        docks.arrived.notify();
+        part
+    };
     crate::docks::when_first_shown(docks, tool, move || {
         crate::parts::part_for(testid, lang.into(), arg, load).into_any()
     })

@@ -67,17 +67,20 @@ pub fn restore_from<T: DeserializeOwned + Checked>(key: &str) -> Restored<T> {
     };
     match read_saved::<T>(&raw) {
         Some(saved) => Restored::Saved(saved),
-        None => {
-            // Keep the unreadable value under a key of its own, so the next
-            // autosave cannot overwrite it.
-            let kept_as = format!("{key}.corrupt.{}", js_sys::Date::now() as u64);
-            if store.set(&kept_as, &raw).is_err() {
-                return Restored::Unavailable;
-            }
-            store.remove(key);
-            Restored::Corrupt { kept_as }
-        }
+        None => keep_aside(key, &raw),
     }
+}
+
+/// Keeps the unreadable value `raw` saved under `key` under a key of its
+/// own, so that the next autosave cannot overwrite it.
+pub fn keep_aside<T>(key: &str, raw: &str) -> Restored<T> {
+    let store = backend();
+    let kept_as = format!("{key}.corrupt.{}", js_sys::Date::now() as u64);
+    if store.set(&kept_as, raw).is_err() {
+        return Restored::Unavailable;
+    }
+    store.remove(key);
+    Restored::Corrupt { kept_as }
 }
 
 /// A saved value read back: `None` when it does not parse or does not

@@ -54,6 +54,8 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
     Effect::new(move |_| {
         let tool = docks.tool.get();
         let up = docks.sheet.get() && open();
+        // Again when a pane's part arrives: the sheet has its height then.
+        docks.arrived.track();
         request_animation_frame(move || {
             show_tab(tool);
             if up && tool != Tool::Panel {

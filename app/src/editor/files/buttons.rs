@@ -234,33 +234,34 @@ fn open_text(
         open_ld(ctx, ladders, file, text);
         return;
     }
-    let is_xml = start.starts_with('<');
-    let (target, ladder, cases) = if is_xml {
+    if start.starts_with('<') {
         // Another tool's project may need devices for its variables: the
         // import dialog (docs/ladder.md, "Declarations").
         crate::editor::import::open(ctx, pending, file, text);
         return;
-    } else {
-        match Project::from_json(text) {
-            Ok(p) => {
-                let target = ladders.map_or(ctx, |l| l.of(p.machine));
-                ctx.page.machine.set(p.machine);
-                (target, p.ladder, (p.tests, p.exercise, p.plant))
-            }
-            Err(e) => {
-                ctx.panes
-                    .message
-                    .set(Some(format!("{file}:{}: {}", e.line, e.error)));
-                return;
-            }
+    }
+    let (file, text) = (file.to_string(), text.to_string());
+    wasm_bindgen_futures::spawn_local(async move {
+        let said = |e: String| ctx.panes.message.set(Some(e));
+        match super::reading::project(text).await {
+            Ok(Ok(p)) => open_project(ctx, ladders, p),
+            Ok(Err(e)) => said(format!("{file}:{}: {}", e.line, e.error)),
+            Err(PartMissing) => said(ctx.page.lang.get_untracked().parts().missing.to_string()),
         }
-    };
-    let ladder = align_outputs(&ladder, COLUMNS - 1);
+    });
+}
+
+/// Opens a project file's `p` in its machine's editor: its ladder as an
+/// edit (one undo brings back what was there), its tests (and
+/// exercise, plant) on a clean slate.
+fn open_project(ctx: LadderCtx, ladders: Option<Ladders>, p: Project) {
+    let target = ladders.map_or(ctx, |l| l.of(p.machine));
+    ctx.page.machine.set(p.machine);
+    let ladder = align_outputs(&p.ladder, COLUMNS - 1);
     if target.ladder() != ladder {
         target.apply(Edit::Replace { ladder });
     }
-    // A project file brings its own tests (and exercise), on a clean slate.
-    target.show_cases(cases.0, cases.1, cases.2);
+    target.show_cases(p.tests, p.exercise, p.plant);
     target.save();
 }
 

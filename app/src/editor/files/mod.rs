@@ -6,6 +6,7 @@ pub mod autosave;
 pub mod buttons;
 pub mod import;
 pub mod picture;
+pub mod reading;
 pub mod shared;
 pub mod store;
 

@@ -7,31 +7,11 @@ use engine::MachineId;
 use leptos::prelude::*;
 
 use crate::state::Ctx;
-use crate::storage::{self, Checked, Restored};
+use crate::storage::{self, Restored};
 
 /// Where `machine`'s ladder is saved.
 pub fn key(machine: MachineId) -> String {
     format!("hashigo.ladder.{}.v1", machine.name())
-}
-
-/// A project as saved: read through the engine's own reader, so a saved
-/// value is held to what a project file is held to.
-#[derive(Clone, Debug)]
-struct Saved(Project);
-
-impl<'de> serde::Deserialize<'de> for Saved {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Saved, D::Error> {
-        let value = serde_json::Value::deserialize(d)?;
-        Project::from_json(&value.to_string())
-            .map(Saved)
-            .map_err(|e| serde::de::Error::custom(e.to_string()))
-    }
-}
-
-impl Checked for Saved {
-    fn problem(&self) -> Option<&'static str> {
-        None
-    }
 }
 
 /// Where the id of the project open in `machine`'s editor is kept.
@@ -56,10 +36,10 @@ pub fn remember_open(machine: MachineId, project: Option<u64>) {
 /// The project open in `machine`'s editor when the page was left (if it
 /// is still there) and the ladder to edit: that project's, else the
 /// machine's own. A saved value that does not read (or is for another
-/// machine) is kept aside and reported.
+/// machine) is kept aside and reported. The texts were read before the
+/// page started ([`saved_texts`], `reading::read_saved`).
 pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Project>) {
-    let open = storage::saved_string(&open_key(machine)).and_then(|s| s.parse::<u64>().ok());
-    if let Some(id) = open {
+    if let Some(id) = open_project(machine) {
         if let Some(ladder) = restore_from(page, machine, &crate::editor::projects::key_of(id)) {
             return (Some(id), Some(ladder));
         }
@@ -67,9 +47,36 @@ pub fn restore(page: Ctx, machine: MachineId) -> (Option<u64>, Option<Project>) 
     (None, restore_from(page, machine, &key(machine)))
 }
 
+/// The id of the project open in `machine`'s editor when the page was left.
+fn open_project(machine: MachineId) -> Option<u64> {
+    storage::saved_string(&open_key(machine)).and_then(|s| s.parse::<u64>().ok())
+}
+
+/// Every saved text [`restore`] may read (key, text): what is read
+/// before the page starts.
+pub fn saved_texts() -> Vec<(String, String)> {
+    MachineId::ALL
+        .iter()
+        .flat_map(|&m| {
+            let project = open_project(m).map(crate::editor::projects::key_of);
+            project.into_iter().chain(std::iter::once(key(m)))
+        })
+        .filter_map(|key| storage::saved_string(&key).map(|text| (key, text)))
+        .collect()
+}
+
 fn restore_from(page: Ctx, machine: MachineId, key: &str) -> Option<Project> {
-    match storage::restore_from::<Saved>(key) {
-        Restored::Saved(Saved(project)) if project.machine == machine => Some(project),
+    let restored = match super::reading::take(key) {
+        Some(Some(project)) => Restored::Saved(project),
+        Some(None) => match storage::saved_string(key) {
+            Some(raw) => storage::keep_aside(key, &raw),
+            None => Restored::Nothing,
+        },
+        // Not read before the page started: nothing was saved there.
+        None => Restored::Nothing,
+    };
+    match restored {
+        Restored::Saved(project) if project.machine == machine => Some(project),
         Restored::Saved(_) => None,
         Restored::Corrupt { kept_as } => {
             let texts = page.lang.get_untracked().texts();

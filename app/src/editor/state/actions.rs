@@ -250,14 +250,24 @@ impl LadderCtx {
         let Some(text) = text.or_else(|| self.clip.text.get_value()) else {
             return;
         };
-        let clip = match Clip::from_text(&text) {
-            Ok(c) => c,
-            Err(e) => {
-                let said = errors::clip_error(self.page.lang.get_untracked(), &e);
-                self.panes.message.set(Some(said));
-                return;
+        // Read by a part (issue #53), then pasted where the cursor is.
+        let ctx = *self;
+        wasm_bindgen_futures::spawn_local(async move {
+            let lang = ctx.page.lang.get_untracked();
+            match crate::editor::files::reading::clip(text).await {
+                Ok(Ok(clip)) => ctx.paste_clip(clip),
+                Ok(Err(e)) => ctx.panes.message.set(Some(errors::clip_error(lang, &e))),
+                Err(_) => ctx
+                    .panes
+                    .message
+                    .set(Some(lang.parts().missing.to_string())),
             }
-        };
+        });
+    }
+
+    /// Pastes cells read from the clipboard at the cursor; what the
+    /// machine lacks is refused, all of it.
+    fn paste_clip(&self, clip: Clip) {
         match clip.for_machine(self.machine) {
             Ok(clip) => {
                 let at = self.drawing.cursor.get_untracked();

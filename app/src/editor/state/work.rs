@@ -201,11 +201,19 @@ impl LadderCtx {
         }
     }
 
-    /// Shows a project saved by another tab, as an edit not saved again.
+    /// Shows a project saved by another tab, as an edit not saved again
+    /// (once read: the reader is a part, issue #53).
     pub(super) fn show_saved(&self, json: &str) {
-        let Ok(project) = engine::formats::Project::from_json(json) else {
-            return;
-        };
+        let (ctx, json) = (*self, json.to_string());
+        wasm_bindgen_futures::spawn_local(async move {
+            if let Ok(Ok(project)) = crate::editor::files::reading::project(json).await {
+                ctx.show_read(project);
+            }
+        });
+    }
+
+    /// [`Self::show_saved`] once read.
+    fn show_read(&self, project: engine::formats::Project) {
         if project.machine != self.machine {
             return;
         }
