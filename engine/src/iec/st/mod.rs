@@ -9,6 +9,7 @@
 //! types (docs/soft-plc.md, "Structured Text").
 
 pub mod ast;
+mod body_text;
 mod check;
 mod decl;
 pub mod error;
@@ -28,6 +29,7 @@ mod types;
 mod typing;
 
 pub use ast::Source;
+pub use body_text::body_texts;
 pub use check::check_source;
 pub use error::{StError, StErrorKind};
 pub use lexer::KEYWORDS;

@@ -1,0 +1,240 @@
+//! PLCopen export keeps Structured Text (issue #54): an ST source written
+//! as a project (`export_st`) reads back (`Document::st_text`) to the
+//! same bodies and runs the same on the soft PLC; the workplace's real
+//! projects with ST bodies when present (never committed).
+
+use engine::events::InputValue;
+use engine::formats::plcopen::{export_st, Document};
+use engine::iec::st::ast::Item;
+use engine::iec::st::{lower_source, parse_body, parse_source, print_body};
+use engine::machines::new_plc;
+use engine::plc::{Command, Plc};
+use engine::{MachineId, SimTime};
+
+const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/fixtures/plcopen");
+
+/// Our own project: a program with located I/O, a retained global, a
+/// constant, a TON, and a function block of its own with state, every
+/// body with comments (which the export keeps).
+const OWN: &str = r#"
+VAR_GLOBAL RETAIN
+    total : DINT := 100;
+END_VAR
+
+FUNCTION_BLOCK Stepper
+    VAR_INPUT
+        go : BOOL;
+        top : INT := 4;
+    END_VAR
+    VAR_OUTPUT
+        n : INT;
+        full : BOOL;
+    END_VAR
+    (* counts the scans `go` is on, up to `top` *)
+    IF go AND n < top THEN
+        n := n + 1; // one a scan
+    END_IF;
+    full := n >= top;
+END_FUNCTION_BLOCK
+
+PROGRAM main
+    VAR
+        start AT %IX0.0 : BOOL;
+        lamp AT %QX0.0 : BOOL;
+        s0 : Stepper;
+        t0 : TON;
+        seen : INT;
+    END_VAR
+    VAR CONSTANT
+        PERIOD : TIME := T#30ms;
+    END_VAR
+    s0(go := start, top := 4);
+    t0(IN := s0.full, PT := PERIOD);
+    lamp := t0.Q;
+    IF s0.full THEN
+        total := total + 1; (* a string with ]]> in it stays: *)
+        seen := s0.n;
+    END_IF;
+END_PROGRAM
+"#;
+
+fn plc_of(il: &str) -> Box<dyn Plc> {
+    let mut plc = new_plc(MachineId::SoftPlc);
+    plc.load_text(il).unwrap_or_else(|e| panic!("{e}\n{il}"));
+    plc
+}
+
+/// The `.st` source as the soft PLC runs it.
+fn from_st(source: &str) -> Box<dyn Plc> {
+    let parsed = parse_source(source).expect("parses");
+    plc_of(&lower_source(&parsed).expect("lowers").text)
+}
+
+/// A PLCopen project as the soft PLC runs it (`pou` alone, or all).
+fn from_xml(xml: &str, pou: Option<&str>) -> Box<dyn Plc> {
+    let program = Document::read(xml)
+        .and_then(|d| d.soft_program(pou))
+        .unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+    plc_of(&program.text)
+}
+
+fn get(plc: &dyn Plc, device: &str) -> i64 {
+    plc.read(plc.device(device).expect(device)).as_i64()
+}
+
+fn set(plc: &mut dyn Plc, device: &str, v: i64) {
+    let d = plc.device(device).expect(device);
+    plc.apply(Command::SetInput(d, InputValue::Int(v)))
+        .expect("input");
+}
+
+/// Each POU's name and its body printed from its parse tree.
+fn bodies(source: &str) -> Vec<(String, String)> {
+    let parsed = parse_source(source).unwrap_or_else(|e| panic!("{e}\n{source}"));
+    parsed
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Pou(p) => Some((p.name.name.clone(), print_body(&p.body))),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Runs `a` and `b` side by side, `start` on from 50 ms to 150 ms,
+/// comparing `watch` at every scan.
+fn same_runs(mut a: Box<dyn Plc>, mut b: Box<dyn Plc>, start: &str, watch: &[&str]) -> usize {
+    let mut changed = 0;
+    let mut last = Vec::new();
+    for ms in (0..300).step_by(10) {
+        let on = i64::from((50..150).contains(&ms));
+        set(a.as_mut(), start, on);
+        set(b.as_mut(), start, on);
+        a.run_until(SimTime::from_millis(ms));
+        b.run_until(SimTime::from_millis(ms));
+        let now: Vec<i64> = watch.iter().map(|w| get(a.as_ref(), w)).collect();
+        let theirs: Vec<i64> = watch.iter().map(|w| get(b.as_ref(), w)).collect();
+        assert_eq!(now, theirs, "{watch:?} at {ms} ms");
+        if now != last {
+            changed += 1;
+            last = now;
+        }
+    }
+    changed
+}
+
+#[test]
+fn an_st_project_exported_reads_back_to_the_same_bodies_and_runs_the_same() {
+    let xml = export_st(OWN, "own").unwrap_or_else(|e| panic!("{e:?}"));
+    let document = Document::read(&xml).unwrap_or_else(|e| panic!("{e:?}\n{xml}"));
+    let back = document.st_text();
+    assert_eq!(bodies(&back), bodies(OWN), "{back}");
+    // The bodies as written: comments kept, as the file carries them.
+    assert!(xml.contains("(* counts the scans `go` is on, up to `top` *)"));
+    assert!(xml.contains("n := n + 1; // one a scan"));
+    assert!(xml.contains("with ]]]]><![CDATA[> in it"), "{xml}");
+    assert!(back.contains("with ]]> in it"), "{back}");
+    // The interface and the globals come back as declared.
+    let declared = |s: &str| print_source_of(s);
+    assert_eq!(declared(&back), declared(OWN), "{back}");
+    // Runs the same, scan for scan: the program counts 4 scans of
+    // start, then the TON's 30 ms light the lamp; total counts on.
+    let watch = ["lamp", "seen", "total", "s0.n", "s0.full"];
+    let changes = same_runs(from_st(OWN), from_xml(&xml, None), "start", &watch);
+    assert!(changes >= 4, "{changes} changes: the run must do something");
+}
+
+/// A source printed from its parse tree with every body left out: its
+/// types, globals and interfaces.
+fn print_source_of(source: &str) -> String {
+    let mut parsed = parse_source(source).expect("parses");
+    for item in &mut parsed.items {
+        if let Item::Pou(p) = item {
+            p.body.clear();
+        }
+    }
+    engine::iec::st::print_source(&parsed)
+}
+
+#[test]
+fn a_project_written_back_is_read_again_to_the_same_text() {
+    let once = Document::read(&export_st(OWN, "own").expect("exports"))
+        .expect("reads")
+        .st_text();
+    let twice = Document::read(&export_st(&once, "own").expect("exports"))
+        .expect("reads")
+        .st_text();
+    assert_eq!(once, twice);
+}
+
+#[test]
+fn a_source_that_does_not_check_is_refused_at_its_place_and_nothing_written() {
+    let bad = "PROGRAM p\nVAR\n  a : INT;\nEND_VAR\n  a := b;\nEND_PROGRAM\n";
+    let errors = export_st(bad, "bad").expect_err("refused");
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert_eq!((errors[0].span.line, errors[0].span.column), (5, 8));
+    assert!(errors[0].to_string().contains("`b` is not declared"));
+    let syntax = export_st("PROGRAM p\n  a := ;\nEND_PROGRAM\n", "bad").expect_err("refused");
+    assert_eq!(syntax[0].span.line, 2);
+}
+
+#[test]
+fn arrays_structures_and_their_initial_values_are_written_as_plcopen_has_them() {
+    let source = "TYPE\n    Pair : STRUCT\n        a : INT := 1;\n        b : BOOL;\n    END_STRUCT;\nEND_TYPE\n\
+PROGRAM p\nVAR\n    xs : ARRAY [1..4] OF INT := [7, 2(3), 1()];\n    p0 : Pair := (a := 9);\n    ps : ARRAY [0..2] OF Pair := [3()];\nEND_VAR\n    xs[1] := p0.a;\nEND_PROGRAM\n";
+    let xml = export_st(source, "arrays").unwrap_or_else(|e| panic!("{e:?}"));
+    assert!(xml.contains(
+        "<array><dimension lower=\"1\" upper=\"4\"/><baseType><INT/></baseType></array>"
+    ));
+    assert!(xml.contains("<value repetitionValue=\"2\"><simpleValue value=\"3\"/></value>"));
+    // `1()` (one default) of an INT: PLCopen has no empty value, so 0.
+    assert!(xml.contains("<value repetitionValue=\"1\"><simpleValue value=\"0\"/></value>"));
+    assert!(xml.contains(
+        "<structValue><value member=\"a\"><simpleValue value=\"9\"/></value></structValue>"
+    ));
+    assert!(xml.contains("<value repetitionValue=\"3\"><structValue/></value>"));
+    let back = Document::read(&xml).expect("reads").st_text();
+    assert_eq!(bodies(&back), bodies(source));
+    assert!(
+        back.contains("xs : ARRAY [1..4] OF INT := [7, 2(3), 1(0)];"),
+        "{back}"
+    );
+    assert!(
+        back.contains("ps : ARRAY [0..2] OF Pair := [3()];"),
+        "{back}"
+    );
+    assert!(back.contains("a : INT := 1;"), "{back}");
+}
+
+#[test]
+fn beremiz_first_steps_st_written_back_reads_and_runs_the_same() {
+    let Ok(xml) = std::fs::read_to_string(format!("{REAL}/beremiz-first-steps.xml")) else {
+        return;
+    };
+    let text = Document::read(&xml).expect("reads").st_text();
+    // Its ST POUs: the function AverageVal and the block CounterST.
+    let names: Vec<String> = bodies(&text).into_iter().map(|(n, _)| n).collect();
+    assert_eq!(names, ["AverageVal", "CounterST"], "{text}");
+    let out = export_st(&text, "first-steps").unwrap_or_else(|e| panic!("{e:?}\n{text}"));
+    let back = Document::read(&out).expect("reads").st_text();
+    assert_eq!(back, text);
+    // Each body as Beremiz wrote it, character for character.
+    for (name, _) in bodies(&text) {
+        let written = |x: &str| -> String {
+            let at = x.find(&format!("<pou name=\"{name}\"")).expect(&name);
+            let body = &x[at..];
+            let body = &body[body.find("<ST>").expect("ST body")..];
+            let from = body.find("<![CDATA[").expect("CDATA") + 9;
+            let to = body.find("]]>").expect("CDATA end");
+            body[from..to].trim().to_string()
+        };
+        assert_eq!(written(&out), written(&xml), "{name}");
+        assert!(parse_body(&written(&out)).is_ok());
+    }
+    // CounterST alone runs the same in both (its ResetCounterValue the
+    // configuration's global, kept).
+    let a = from_xml(&xml, Some("CounterST"));
+    let b = from_xml(&out, Some("CounterST"));
+    let changes = same_runs(a, b, "Reset", &["OUT"]);
+    assert!(changes >= 4, "{changes}");
+}
