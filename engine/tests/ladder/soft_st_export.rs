@@ -238,3 +238,130 @@ fn beremiz_first_steps_st_written_back_reads_and_runs_the_same() {
     let changes = same_runs(a, b, "Reset", &["OUT"]);
     assert!(changes >= 4, "{changes}");
 }
+
+/// A project with two functions of its own, one in ST and one in IL,
+/// and a program in ST calling both (issue #54).
+const FUNCTIONS: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <types>
+    <pous>
+      <pou name="Twice" pouType="function">
+        <interface>
+          <returnType><INT/></returnType>
+          <inputVars><variable name="x"><type><INT/></type></variable></inputVars>
+        </interface>
+        <body><ST><xhtml:p><![CDATA[Twice := x * 2;]]></xhtml:p></ST></body>
+      </pou>
+      <pou name="Plus" pouType="function">
+        <interface>
+          <returnType><INT/></returnType>
+          <inputVars>
+            <variable name="a"><type><INT/></type></variable>
+            <variable name="b"><type><INT/></type></variable>
+          </inputVars>
+        </interface>
+        <body><IL><xhtml:p><![CDATA[LD a
+ADD b
+ST Plus]]></xhtml:p></IL></body>
+      </pou>
+      <pou name="main" pouType="program">
+        <interface>
+          <localVars>
+            <variable name="n"><type><INT/></type></variable>
+            <variable name="r"><type><INT/></type></variable>
+            <variable name="s"><type><INT/></type></variable>
+          </localVars>
+        </interface>
+        <body><ST><xhtml:p><![CDATA[n := n + 1;
+r := Twice(n) + Plus(n, 10);
+s := Plus(b := Twice(x := r), a := 1);]]></xhtml:p></ST></body>
+      </pou>
+    </pous>
+  </types>
+  <instances><configurations/></instances>
+</project>
+"#;
+
+#[test]
+fn the_projects_own_functions_in_st_and_il_run_when_called_from_st() {
+    let mut plc = from_xml(FUNCTIONS, None);
+    for scan in 1..=5_i64 {
+        plc.run_until(SimTime::from_millis(10 * scan as u64));
+        let n = get(plc.as_ref(), "n");
+        // Twice(n) = 2n, Plus(n, 10) = n + 10: r = 3n + 10; s = 2r + 1.
+        assert_eq!(n, plc.scans() as i64);
+        assert_eq!(get(plc.as_ref(), "r"), 3 * n + 10, "scan {n}");
+        assert_eq!(get(plc.as_ref(), "s"), 2 * (3 * n + 10) + 1, "scan {n}");
+    }
+}
+
+/// The functions above called from IL (the current result the first
+/// input; a formal list) and from a drawn FBD block (its `OUT`).
+fn callers() -> String {
+    let programs = r#"<pou name="il" pouType="program">
+        <interface><localVars>
+          <variable name="k"><type><INT/></type></variable>
+          <variable name="p"><type><INT/></type></variable>
+          <variable name="q"><type><INT/></type></variable>
+          <variable name="w"><type><INT/></type></variable>
+        </localVars></interface>
+        <body><IL><xhtml:p><![CDATA[LD k
+ADD 1
+ST k
+Twice (* the current result, k, as x *)
+ST p
+LD 5
+Plus k
+ST q
+again: Plus(a := p, b := q)
+ST w]]></xhtml:p></IL></body>
+      </pou>
+      <pou name="fbd" pouType="program">
+        <interface><localVars>
+          <variable name="m"><type><INT/></type><initialValue><simpleValue value="21"/></initialValue></variable>
+          <variable name="d"><type><INT/></type></variable>
+        </localVars></interface>
+        <body><FBD>
+          <inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>m</expression></inVariable>
+          <block localId="2" typeName="Twice"><position x="100" y="0"/><inputVariables><variable formalParameter="x"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+          <outVariable localId="3"><position x="200" y="0"/><connectionPointIn><connection refLocalId="2" formalParameter="OUT"/></connectionPointIn><expression>d</expression></outVariable>
+        </FBD></body>
+      </pou>
+    </pous>"#;
+    let at = FUNCTIONS.find("<pou name=\"main\"").expect("main");
+    let end = FUNCTIONS.find("</pous>").expect("pous") + "</pous>".len();
+    format!("{}{programs}{}", &FUNCTIONS[..at], &FUNCTIONS[end..])
+}
+
+#[test]
+fn the_projects_own_functions_run_when_called_from_il_and_from_a_drawn_block() {
+    let xml = callers();
+    let mut plc = from_xml(&xml, None);
+    for scan in 1..=4_i64 {
+        plc.run_until(SimTime::from_millis(10 * scan as u64));
+        let k = get(plc.as_ref(), "k");
+        assert_eq!(k, plc.scans() as i64);
+        // IEC's IL: `Twice` takes the current result (k) as x; `Plus k`
+        // after `LD 5` is Plus(5, k); the formal call leaves it out.
+        assert_eq!(get(plc.as_ref(), "p"), 2 * k, "scan {k}");
+        assert_eq!(get(plc.as_ref(), "q"), 5 + k, "scan {k}");
+        assert_eq!(get(plc.as_ref(), "w"), 2 * k + 5 + k, "scan {k}");
+        assert_eq!(get(plc.as_ref(), "d"), 42, "Twice(21) drawn");
+    }
+    // Too many operands for the function: refused at its line.
+    let bad = xml.replace("Plus k\n", "Plus k, 3\n");
+    let errors = Document::read(&bad)
+        .and_then(|d| d.soft_program(None))
+        .expect_err("refused");
+    let line = bad
+        .lines()
+        .position(|l| l.starts_with("Plus k, 3"))
+        .expect("line")
+        + 1;
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert_eq!(errors[0].line, line);
+    assert_eq!(
+        errors[0].error.to_string(),
+        "Plus: it does not take 3 inputs"
+    );
+}

@@ -11,10 +11,12 @@
 
 mod declare;
 mod emit;
+mod emit_fn;
 pub mod error;
 mod execute;
 mod formal;
 mod il_body;
+mod il_call;
 mod infer;
 mod st_body;
 
@@ -68,7 +70,9 @@ pub(in crate::formats::plcopen) fn il_of(
         .iter()
         .map(|(p, d)| {
             let name = p.attr("name").unwrap_or_default().to_ascii_uppercase();
-            (name, d.interface())
+            let mut interface = d.interface();
+            interface.function = p.attr("pouType") == Some("function");
+            (name, interface)
         })
         .collect();
     let mut errors = Vec::new();
@@ -84,6 +88,7 @@ pub(in crate::formats::plcopen) fn il_of(
                 decl: &declarations,
                 out: &mut out,
                 labels: Some(&mut labels),
+                user: Some(&user),
             };
             errors.extend(il_body::write(p, il, text, place));
             continue;
@@ -94,6 +99,7 @@ pub(in crate::formats::plcopen) fn il_of(
                 decl: &declarations,
                 out: &mut out,
                 labels: Some(&mut labels),
+                user: Some(&user),
             };
             errors.extend(st_body::write(p, st, text, place, &user));
             continue;
@@ -151,6 +157,7 @@ fn block_sections<'a>(
                 decl: &d,
                 out: &mut out,
                 labels: None,
+                user: Some(user),
             };
             errors.extend(il_body::write(p, il, source, place));
         } else if let Some(st) = st_body::st_body(p) {
@@ -158,6 +165,7 @@ fn block_sections<'a>(
                 decl: &d,
                 out: &mut out,
                 labels: None,
+                user: Some(user),
             };
             errors.extend(st_body::write(p, st, source, place, user));
         } else {
@@ -189,6 +197,12 @@ fn own_types(pous: &[&Node]) -> declare::OwnTypes {
         blocks: pous
             .iter()
             .filter(|p| p.attr("pouType") == Some("functionBlock") && runs(p))
+            .filter_map(|p| p.attr("name").map(str::to_string))
+            .collect(),
+        functions: pous
+            .iter()
+            .filter(|p| p.attr("pouType") == Some("function"))
+            .filter(|p| il_body::il_body(p).is_some() || st_body::st_body(p).is_some())
             .filter_map(|p| p.attr("name").map(str::to_string))
             .collect(),
     }
@@ -292,7 +306,10 @@ fn used_blocks<'a>(
     program: &declare::Declarations,
     own: &declare::OwnTypes,
 ) -> Result<Vec<(&'a Node, declare::Declarations)>, Vec<Located<SoftError>>> {
+    // The functions in ST or IL run as blocks, called by hidden
+    // instances: each is a section whether called or not.
     let mut todo: Vec<String> = program.user_types();
+    todo.extend(own.functions.iter().rev().cloned());
     let mut out: Vec<(&Node, declare::Declarations)> = Vec::new();
     while let Some(t) = todo.pop() {
         let seen = out
