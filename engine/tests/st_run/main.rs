@@ -14,6 +14,7 @@ mod control;
 mod expressions;
 mod globals;
 mod inout;
+mod later_inputs;
 mod lines;
 mod numeric;
 mod places;

@@ -17,7 +17,10 @@ fn what_does_not_run_yet_says_so_at_its_place() {
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(e[0].starts_with("3:14:"), "{e:?}");
     assert!(e[0].contains("does not run on the soft PLC yet"), "{e:?}");
-    let e = refusals("PROGRAM t\nVAR n : INT; END_VAR\nn := MAX(n, n + 1);\nEND_PROGRAM\n");
+    // Untyped literals alone beside SEL's selector: no type to hold them.
+    let e = refusals(
+        "PROGRAM t\nVAR n : INT; g : BOOL; END_VAR\nn := SEL(g, 1 + 1, 2);\nEND_PROGRAM\n",
+    );
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(
         e[0].starts_with("3:13:") && e[0].contains("function's second or later input"),

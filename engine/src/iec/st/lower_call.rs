@@ -119,6 +119,8 @@ impl Lower {
                 let upper = call.callee.name.to_ascii_uppercase();
                 if let Some(inputs) = self.functions.get(&upper).cloned() {
                     self.call_function(call, &inputs, e);
+                } else {
+                    self.hoist_std_args(call);
                 }
             }
             ExprKind::Literal(_) => {}

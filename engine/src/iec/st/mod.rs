@@ -16,6 +16,7 @@ pub mod error;
 mod expr;
 mod lexer;
 pub mod lower;
+mod lower_args;
 mod lower_body;
 mod lower_call;
 mod lower_flat;
