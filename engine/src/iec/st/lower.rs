@@ -160,6 +160,9 @@ pub(super) struct Lower {
     pub(super) taken: std::collections::HashSet<String>,
     /// Starts every label and hidden name (a host's bodies share names).
     pub(super) tag: String,
+    /// Each own block's and function's VAR_EXTERNALs (by upper-case
+    /// POU): each name, and whether it is copied back out.
+    pub(super) externals: std::collections::HashMap<String, Vec<(String, bool)>>,
     /// Each own block's and function's VAR_IN_OUT: (POU, pin), upper-case.
     pub(super) inouts: std::collections::HashSet<(String, String)>,
     /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).

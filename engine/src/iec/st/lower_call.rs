@@ -180,6 +180,7 @@ impl Lower {
                 None => return self.not_yet(x.span, "this function's input as an expression"),
             }
         }
+        args.extend(self.external_args(&call.callee.name));
         let instance = self.fresh("st_f");
         self.hidden
             .push((instance.clone(), call.callee.name.clone()));
