@@ -16,6 +16,7 @@ mod globals;
 mod inout;
 mod later_inputs;
 mod lines;
+mod lreal;
 mod numeric;
 mod places;
 mod property;

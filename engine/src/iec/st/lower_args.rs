@@ -59,13 +59,14 @@ impl Lower {
     }
 
     /// `e`'s IL type, when its operands tell it.
-    fn expr_type(&self, e: &Expr) -> Option<String> {
+    pub(super) fn expr_type(&self, e: &Expr) -> Option<String> {
         let named = |t: &str| Some(t.to_string());
         match &e.kind {
             ExprKind::Literal(l) => match l {
                 Literal::Bool(_) => named("BOOL"),
                 Literal::Integer(_, t) => t.map(|t| t.name().to_string()),
-                Literal::Real(_, t) => named(t.map_or("REAL", |t| t.name())),
+                // An untyped real fits REAL and LREAL: no type of its own.
+                Literal::Real(_, t) => t.map(|t| t.name().to_string()),
                 Literal::Time(_) => named("TIME"),
                 Literal::String(_) => named("STRING"),
             },

@@ -59,7 +59,8 @@ impl Lower {
             })
             .flatten()
             .collect();
-        self.stmts(&p.body);
+        let body = self.lreal_literals(&p.body);
+        self.stmts(&body);
         std::mem::take(&mut self.hidden)
     }
 
