@@ -365,3 +365,24 @@ fn the_projects_own_functions_run_when_called_from_il_and_from_a_drawn_block() {
         "Plus: it does not take 3 inputs"
     );
 }
+
+#[test]
+fn an_own_function_no_body_calls_is_left_out_so_it_cannot_refuse_the_project() {
+    // `Unused` calls LEN, which the soft PLC has not: were it taken in,
+    // the project would be refused for it.
+    let unused = r#"<pou name="Unused" pouType="function">
+        <interface><returnType><INT/></returnType></interface>
+        <body><ST><xhtml:p><![CDATA[Unused := LEN('abc');]]></xhtml:p></ST></body>
+      </pou>
+      <pou name="main""#;
+    let xml = FUNCTIONS.replacen("<pou name=\"main\"", unused, 1);
+    let mut plc = from_xml(&xml, None);
+    plc.run_until(SimTime::from_millis(10));
+    assert_eq!(get(plc.as_ref(), "r"), 3 + 10);
+    // Called, it is refused at its line, saying what it lacks.
+    let called = xml.replace("n := n + 1;", "n := n + Unused();");
+    let errors = Document::read(&called)
+        .and_then(|d| d.soft_program(None))
+        .expect_err("refused");
+    assert!(errors[0].error.to_string().contains("LEN"), "{errors:?}");
+}

@@ -204,8 +204,36 @@ fn own_types(pous: &[&Node]) -> declare::OwnTypes {
             .filter(|p| p.attr("pouType") == Some("function"))
             .filter(|p| il_body::il_body(p).is_some() || st_body::st_body(p).is_some())
             .filter_map(|p| p.attr("name").map(str::to_string))
+            .filter(|name| called(name, pous))
             .collect(),
     }
+}
+
+/// Whether another POU's body may call function `name`: a drawn block
+/// of its type, or its name as a word of an ST or IL text (a comment's
+/// mention too: a function taken in for nothing costs nothing). One no
+/// body names is left out, so that an unused function the soft PLC
+/// cannot run does not refuse the project.
+fn called(name: &str, pous: &[&Node]) -> bool {
+    let word = |text: &str| {
+        text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .any(|w| w.eq_ignore_ascii_case(name))
+    };
+    pous.iter()
+        .filter(|p| p.attr("name").is_none_or(|n| !n.eq_ignore_ascii_case(name)))
+        .any(|p| {
+            let mut blocks = Vec::new();
+            p.descendants("block", &mut blocks);
+            let drawn = blocks.iter().any(|b| {
+                b.attr("typeName")
+                    .is_some_and(|t| t.eq_ignore_ascii_case(name))
+            });
+            let text = il_body::il_body(p).or_else(|| st_body::st_body(p));
+            // CODESYS's EXECUTE blocks hold ST in drawn bodies.
+            let mut codes = Vec::new();
+            p.descendants("STCode", &mut codes);
+            drawn || text.is_some_and(|t| word(&t.text)) || codes.iter().any(|c| word(&c.text))
+        })
 }
 
 /// Whether the soft PLC runs `pou`'s body: drawn (LD, FBD), IL or ST.
