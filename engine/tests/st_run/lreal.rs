@@ -91,3 +91,16 @@ fn an_lreal_sits_at_a_long_word_as_a_real_at_a_double_word() {
     assert_eq!(shown(&p, "m"), "4.5");
     assert_eq!(shown(&p, "%ML0"), "4.5");
 }
+
+#[test]
+fn lreal_members_and_elements_take_untyped_real_literals() {
+    let p = load(
+        "TYPE P : STRUCT v : LREAL; END_STRUCT; END_TYPE\nPROGRAM t\nVAR\n  xs : ARRAY [1..2] OF LREAL;\n  p : P;\n  i : INT := 2;\n  y : LREAL;\nEND_VAR\nxs[1] := 2.5;\nxs[i] := xs[1] * 2.0;\np.v := 0.1;\ny := p.v + xs[i] + 1.0;\nEND_PROGRAM\n",
+    );
+    let mut p = p;
+    p.scan(0);
+    assert_eq!(shown(&p, "xs[2]"), "5");
+    // 0.1 + 5.0 + 1.0 in binary64 is 6.1 exactly as printed.
+    assert_eq!(shown(&p, "y"), "6.1");
+    assert_eq!(shown(&p, "p.v"), "0.1");
+}

@@ -70,6 +70,7 @@ impl Lower {
                 Literal::Time(_) => named("TIME"),
                 Literal::String(_) => named("STRING"),
             },
+            ExprKind::Variable(v) if self.is_flat(v) => self.flat_type(v),
             ExprKind::Variable(v) => {
                 let base = v.base.name.to_ascii_uppercase();
                 match v.path.as_slice() {

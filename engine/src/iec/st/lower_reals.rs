@@ -8,11 +8,38 @@
 use super::ast::{
     Arg, BinaryOp, Call, Elementary, Expr, ExprKind, Literal, Selector, Stmt, StmtKind,
 };
+use super::ast::{TypeDef, TypeRef, Variable};
 use super::lower::Lower;
 
 const LREAL: &str = "LREAL";
 
 impl Lower {
+    /// The elementary type of a member or element of a flattened STRUCT
+    /// or ARRAY (`xs[i]`, `p.v`), whatever its indices.
+    pub(super) fn flat_type(&self, v: &Variable) -> Option<String> {
+        let mut ty = self.flat_types.get(&v.base.name.to_ascii_uppercase())?;
+        for s in &v.path {
+            ty = self.resolved(ty, None).0;
+            ty = match (s, ty) {
+                (Selector::Member(m), TypeRef::Named(n)) => {
+                    let Some(TypeDef::Struct(ms)) = self.type_def(&n.name) else {
+                        return None;
+                    };
+                    let named = |d: &&super::ast::VarDecl| {
+                        d.names.iter().any(|x| x.name.eq_ignore_ascii_case(&m.name))
+                    };
+                    &ms.iter().find(named)?.ty
+                }
+                (Selector::Index(_), TypeRef::Array { of, .. }) => of,
+                _ => return None,
+            };
+        }
+        match self.resolved(ty, None).0 {
+            TypeRef::Elementary(t) => Some(t.name().to_string()),
+            _ => None,
+        }
+    }
+
     /// `stmts` with every untyped real literal in an LREAL place typed.
     pub(super) fn lreal_literals(&self, stmts: &[Stmt]) -> Vec<Stmt> {
         let mut out = stmts.to_vec();
