@@ -386,3 +386,32 @@ fn an_own_function_no_body_calls_is_left_out_so_it_cannot_refuse_the_project() {
         .expect_err("refused");
     assert!(errors[0].error.to_string().contains("LEN"), "{errors:?}");
 }
+
+#[test]
+fn every_real_projects_st_is_written_back_to_the_same_text_or_refused_at_its_place() {
+    let Some(names) = crate::common::fixture_names(REAL, ".xml") else {
+        return;
+    };
+    let mut written = Vec::new();
+    for name in &names {
+        let xml = std::fs::read_to_string(format!("{REAL}/{name}")).expect("readable");
+        let Ok(document) = Document::read(&xml) else {
+            continue;
+        };
+        let text = document.st_text();
+        match export_st(&text, name) {
+            Ok(out) => {
+                let back = Document::read(&out).expect("reads").st_text();
+                assert_eq!(back, text, "{name}");
+                written.push(name.clone());
+            }
+            // Refused (no ST POU, or bottle-refiller's pragmas): each
+            // problem at a line of the text.
+            Err(errors) => assert!(errors.iter().all(|e| e.span.line >= 1), "{name}"),
+        }
+    }
+    assert!(
+        written.iter().any(|n| n == "beremiz-first-steps.xml"),
+        "{written:?}"
+    );
+}
