@@ -166,8 +166,8 @@ const PHRASES: &[(&str, &str)] = &[
     ),
     ("a function called without inputs", "入力なしで呼ばれた関数"),
     (
-        "an expression as a function's second or later input (assign it to a variable first)",
-        "関数の 2 番目以降の入力としての式 (先に変数に代入してください)",
+        "an expression of no known type as a function's second or later input (assign it to a variable first)",
+        "関数の 2 番目以降の入力としての型の分からない式 (先に変数に代入してください)",
     ),
     (
         "an expression as `**`'s power (assign it to a variable first)",

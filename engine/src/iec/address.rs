@@ -153,7 +153,7 @@ impl Address {
             Size::Byte => false,
             Size::Word => matches!(t, Int | Uint | Word),
             Size::Double => matches!(t, Dint | Udint | Dword | Real | Time),
-            Size::Long => matches!(t, Lint | Ulint | Lword),
+            Size::Long => matches!(t, Lint | Ulint | Lword | Lreal),
         }
     }
 

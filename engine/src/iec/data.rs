@@ -29,6 +29,8 @@ pub enum DataType {
     Dword,
     Lword,
     Real,
+    /// A 64-bit real (IEC's LREAL, issue #54).
+    Lreal,
     /// A duration, held in nanoseconds, printed in milliseconds.
     Time,
     /// A text of up to [`STRING_CAPACITY`] characters.
@@ -37,7 +39,7 @@ pub enum DataType {
 
 impl DataType {
     /// Every type, in the order docs/soft-plc.md lists them.
-    pub const ALL: [DataType; 16] = [
+    pub const ALL: [DataType; 17] = [
         DataType::Bool,
         DataType::Sint,
         DataType::Int,
@@ -52,6 +54,7 @@ impl DataType {
         DataType::Dword,
         DataType::Lword,
         DataType::Real,
+        DataType::Lreal,
         DataType::Time,
         DataType::String,
     ];
@@ -73,6 +76,7 @@ impl DataType {
             DataType::Dword => "DWORD",
             DataType::Lword => "LWORD",
             DataType::Real => "REAL",
+            DataType::Lreal => "LREAL",
             DataType::Time => "TIME",
             DataType::String => "STRING",
         }
@@ -93,7 +97,11 @@ impl DataType {
             DataType::Int | DataType::Uint | DataType::Word => Some(16),
             DataType::Dint | DataType::Udint | DataType::Dword => Some(32),
             DataType::Lint | DataType::Ulint | DataType::Lword => Some(64),
-            DataType::Bool | DataType::Real | DataType::Time | DataType::String => None,
+            DataType::Bool
+            | DataType::Real
+            | DataType::Lreal
+            | DataType::Time
+            | DataType::String => None,
         }
     }
 
@@ -122,6 +130,7 @@ impl DataType {
         match self {
             DataType::Bool => Data::Bool(false),
             DataType::Real => Data::Real(0.0),
+            DataType::Lreal => Data::Lreal(0.0),
             DataType::Time => Data::Time(0),
             DataType::String => Data::Text(Arc::default()),
             _ => Data::Int(self, 0),
@@ -137,6 +146,8 @@ pub enum Data {
     /// `i64`, sign-extended for a signed type (always in range).
     Int(DataType, i64),
     Real(f32),
+    /// An LREAL.
+    Lreal(f64),
     /// Nanoseconds.
     Time(i64),
     /// A STRING (at most [`STRING_CAPACITY`] characters): shared, so moving it
@@ -184,6 +195,7 @@ impl Data {
             Data::Bool(_) => DataType::Bool,
             Data::Int(t, _) => *t,
             Data::Real(_) => DataType::Real,
+            Data::Lreal(_) => DataType::Lreal,
             Data::Time(_) => DataType::Time,
             Data::Text(_) => DataType::String,
         }
@@ -199,6 +211,7 @@ impl Data {
             // Through its shortest decimal: 0.1 stays 0.1, not the
             // f32's 0.10000000149011612.
             Data::Real(r) => Value::Real(r.to_string().parse().unwrap_or(f64::from(r))),
+            Data::Lreal(r) => Value::Real(r),
             Data::Time(ns) => Value::Int(ns / 1_000_000),
             Data::Text(ref t) => Value::Text(Arc::clone(t)),
         }
@@ -212,6 +225,7 @@ impl Data {
             Data::Bool(b) => b,
             Data::Int(_, v) | Data::Time(v) => v != 0,
             Data::Real(r) => r != 0.0,
+            Data::Lreal(r) => r != 0.0,
             Data::Text(_) => false,
         }
     }
@@ -252,6 +266,13 @@ impl Data {
                 Arith::Div => a / b,
                 Arith::Mod => return None,
             })),
+            (&Data::Lreal(a), &Data::Lreal(b)) => Some(Data::Lreal(match op {
+                Arith::Add => a + b,
+                Arith::Sub => a - b,
+                Arith::Mul => a * b,
+                Arith::Div => a / b,
+                Arith::Mod => return None,
+            })),
             (&Data::Time(a), &Data::Time(b)) => match op {
                 Arith::Add => Some(Data::Time(a.wrapping_add(b))),
                 Arith::Sub => Some(Data::Time(a.wrapping_sub(b))),
@@ -266,6 +287,7 @@ impl Data {
         match *self {
             Data::Int(t, _) => Some(Data::integer(t, -self.int()?)),
             Data::Real(r) => Some(Data::Real(-r)),
+            Data::Lreal(r) => Some(Data::Lreal(-r)),
             Data::Time(ns) => Some(Data::Time(ns.wrapping_neg())),
             Data::Bool(_) | Data::Text(_) => None,
         }
@@ -277,6 +299,7 @@ impl Data {
         match *self {
             Data::Int(t, _) => Some(Data::integer(t, self.int()?.abs())),
             Data::Real(r) => Some(Data::Real(r.abs())),
+            Data::Lreal(r) => Some(Data::Lreal(r.abs())),
             _ => None,
         }
     }
@@ -289,12 +312,24 @@ impl Data {
         }
     }
 
-    /// EXPT: a REAL to the power of a REAL or of an integer (an integer
-    /// power multiplies, exactly as far as a REAL holds it).
+    /// EXPT: a REAL (or LREAL) to the power of a real or of an integer
+    /// (an integer power multiplies, exactly as far as the type holds it).
     pub fn expt(&self, power: &Data) -> Option<Data> {
+        if let Data::Lreal(base) = *self {
+            return Some(Data::Lreal(match *power {
+                Data::Real(p) => base.powf(f64::from(p)),
+                Data::Lreal(p) => base.powf(p),
+                Data::Int(..) => {
+                    let p = power.int()?.clamp(i32::MIN.into(), i32::MAX.into());
+                    base.powi(p as i32)
+                }
+                _ => return None,
+            }));
+        }
         let base = self.real()?;
         Some(Data::Real(match *power {
             Data::Real(p) => base.powf(p),
+            Data::Lreal(p) => base.powf(p as f32),
             Data::Int(..) => {
                 let p = power.int()?.clamp(i32::MIN.into(), i32::MAX.into());
                 base.powi(p as i32)
@@ -378,6 +413,7 @@ impl Data {
             (Data::Bool(a), Data::Bool(b)) => Some(a.cmp(b)),
             (Data::Int(t, _), Data::Int(u, _)) if t == u => Some(self.int()?.cmp(&other.int()?)),
             (Data::Real(a), Data::Real(b)) => a.partial_cmp(b),
+            (Data::Lreal(a), Data::Lreal(b)) => a.partial_cmp(b),
             (Data::Time(a), Data::Time(b)) => Some(a.cmp(b)),
             (Data::Text(a), Data::Text(b)) => Some(a.as_bytes().cmp(b.as_bytes())),
             _ => None,
@@ -395,25 +431,39 @@ impl Data {
             // A text is no number: the type's zero (the compiler refuses
             // a conversion of a STRING before a program runs).
             Data::Text(_) => return to.zero(),
-            Data::Real(r) => {
-                return match to {
-                    DataType::Real => self.clone(),
-                    DataType::Bool => Data::Bool(r != 0.0),
-                    DataType::Time => Data::Time((f64::from(r) * 1e6).round() as i64),
-                    _ => Data::integer(to, saturate(to, r)),
-                };
-            }
+            Data::Real(r) => return Data::Lreal(f64::from(r)).convert_real(to),
+            Data::Lreal(_) => return self.convert_real(to),
             Data::Time(ns) => i128::from(ns / 1_000_000),
         };
         match to {
             DataType::Bool => Data::Bool(whole != 0),
             DataType::Real => Data::Real(whole as f32),
+            DataType::Lreal => Data::Lreal(whole as f64),
             DataType::String => to.zero(),
             DataType::Time => Data::Time(match *self {
                 Data::Time(ns) => ns,
                 _ => (whole as i64).wrapping_mul(1_000_000),
             }),
             _ => Data::integer(to, whole),
+        }
+    }
+}
+
+impl Data {
+    /// A real (REAL or LREAL, as this LREAL: a REAL widens exactly)
+    /// converted to `to`: to a REAL the nearest f32, to an integer
+    /// rounded (halves away from zero) and saturated, to TIME from ms.
+    fn convert_real(&self, to: DataType) -> Data {
+        let Data::Lreal(r) = *self else {
+            return self.clone();
+        };
+        match to {
+            DataType::Real => Data::Real(r as f32),
+            DataType::Lreal => Data::Lreal(r),
+            DataType::Bool => Data::Bool(r != 0.0),
+            DataType::Time => Data::Time((r * 1e6).round() as i64),
+            DataType::String => to.zero(),
+            _ => Data::integer(to, saturate(to, r)),
         }
     }
 }
@@ -468,8 +518,8 @@ pub fn select(g: bool, in0: &Data, in1: &Data) -> Data {
     }
 }
 
-/// A REAL rounded and held within integer type `t`'s range.
-fn saturate(t: DataType, r: f32) -> i128 {
+/// A real rounded and held within integer type `t`'s range.
+fn saturate(t: DataType, r: f64) -> i128 {
     let Some((lo, hi)) = t.range() else {
         return 0;
     };
@@ -477,7 +527,7 @@ fn saturate(t: DataType, r: f32) -> i128 {
         return 0;
     }
     // `as` saturates at i128's range, far beyond every type's.
-    (f64::from(r).round() as i128).clamp(lo, hi)
+    (r.round() as i128).clamp(lo, hi)
 }
 
 /// The bitwise blocks on two operands.

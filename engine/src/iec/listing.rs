@@ -16,15 +16,8 @@ impl fmt::Display for Data {
             Data::Bool(b) => f.write_str(if b { "TRUE" } else { "FALSE" }),
             Data::Text(ref t) => f.write_str(&crate::iec::literal::text_literal(t)),
             Data::Int(t, _) => write!(f, "{}#{}", t.name(), self.to_value()),
-            Data::Real(r) => {
-                // Debug is the shortest text that reads back exactly;
-                // IEC wants a point before any exponent.
-                let text = format!("{r:?}");
-                match text.split_once('e') {
-                    Some((m, e)) if !m.contains('.') => write!(f, "REAL#{m}.0E{e}"),
-                    _ => write!(f, "REAL#{}", text.replace('e', "E")),
-                }
-            }
+            Data::Real(r) => real_literal(f, "REAL", &format!("{r:?}")),
+            Data::Lreal(r) => real_literal(f, "LREAL", &format!("{r:?}")),
             Data::Time(ns) => {
                 let (n, unit) = if ns % 1_000_000 == 0 {
                     (ns / 1_000_000, "ms")
@@ -36,6 +29,15 @@ impl fmt::Display for Data {
                 write!(f, "T#{n}{unit}")
             }
         }
+    }
+}
+
+/// `REAL#…` / `LREAL#…` of a real's Debug text, which is the shortest
+/// that reads back exactly; IEC wants a point before any exponent.
+fn real_literal(f: &mut fmt::Formatter<'_>, ty: &str, text: &str) -> fmt::Result {
+    match text.split_once('e') {
+        Some((m, e)) if !m.contains('.') => write!(f, "{ty}#{m}.0E{e}"),
+        _ => write!(f, "{ty}#{}", text.replace('e', "E")),
     }
 }
 

@@ -124,6 +124,9 @@ pub fn parse_literal(text: &str, expected: Option<DataType>) -> Result<Data, Lit
         Some(DataType::Real) => {
             Data::Real(real(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?)
         }
+        Some(DataType::Lreal) => {
+            Data::Lreal(real64(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?)
+        }
         Some(int_type) => {
             let v = integer(body).ok_or_else(|| LiteralError::BadNumber(text.into()))?;
             in_range(int_type, v).ok_or_else(|| LiteralError::OutOfRange {
@@ -251,6 +254,15 @@ fn integer(s: &str) -> Option<i128> {
 /// A decimal number: digits with an optional fraction and exponent
 /// (`1.5`, `-0.25`, `1.0E3`, `2`), `_` between digits.
 fn real(s: &str) -> Option<f32> {
+    real64(s)
+        .map(|r| r as f32)
+        .filter(|r| r.is_finite())
+        // The f32 nearest the text itself, not the f64's rounded again.
+        .and_then(|_| s.replace('_', "").parse::<f32>().ok())
+}
+
+/// An LREAL's digits (`1.5`, `2.5E-3`, `1_000.0`), finite.
+fn real64(s: &str) -> Option<f64> {
     if !underscores_between_digits(s) {
         return None;
     }
@@ -261,7 +273,7 @@ fn real(s: &str) -> Option<f32> {
             .all(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-'))
         && clean.chars().any(|c| c.is_ascii_digit());
     valid
-        .then(|| clean.parse::<f32>().ok())
+        .then(|| clean.parse::<f64>().ok())
         .flatten()
         .filter(|r| r.is_finite())
 }

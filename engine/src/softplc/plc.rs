@@ -81,7 +81,7 @@ impl std::error::Error for SoftDeviceError {}
 fn takes(t: DataType) -> &'static str {
     match t {
         DataType::Bool => "0 or 1",
-        DataType::Real => "a number such as 2.5",
+        DataType::Real | DataType::Lreal => "a number such as 2.5",
         DataType::Time => "milliseconds",
         DataType::String => "nothing: the program writes its STRINGs",
         _ => "an integer in its range",
@@ -96,6 +96,11 @@ fn data_for(t: DataType, value: InputValue) -> Option<Data> {
         (DataType::Real, InputValue::Real(x)) => {
             let r = x.get() as f32;
             r.is_finite().then_some(Data::Real(r))
+        }
+        (DataType::Lreal, InputValue::Int(n)) => Some(Data::Lreal(n as f64)),
+        (DataType::Lreal, InputValue::Real(x)) => {
+            let r = x.get();
+            r.is_finite().then_some(Data::Lreal(r))
         }
         (DataType::Time, InputValue::Int(ms)) => ms.checked_mul(1_000_000).map(Data::Time),
         (t, InputValue::Int(n)) if t.bits().is_some() => in_range(t, i128::from(n)),
@@ -246,6 +251,7 @@ fn encode(d: &Data, texts: &mut Texts) -> [u8; WIDTH] {
         Data::Bool(b) => i64::from(b),
         Data::Int(_, v) | Data::Time(v) => v,
         Data::Real(r) => i64::from(r.to_bits()),
+        Data::Lreal(r) => r.to_bits() as i64,
         Data::Text(ref t) => i64::from(texts.number(t)),
     };
     bits.to_le_bytes()
@@ -257,6 +263,7 @@ fn decode(t: DataType, bytes: [u8; WIDTH], texts: &Texts) -> Data {
     match t {
         DataType::Bool => Data::Bool(bits != 0),
         DataType::Real => Data::Real(f32::from_bits(bits as u32)),
+        DataType::Lreal => Data::Lreal(f64::from_bits(bits as u64)),
         DataType::Time => Data::Time(bits),
         DataType::String => usize::try_from(bits)
             .ok()

@@ -500,11 +500,17 @@ fn function(f: Function, cr: &Data, args: &[Data]) -> Data {
         },
         Function::Convert { to, .. } => Some(cr.convert(to)),
         Function::Abs => cr.abs(),
-        Function::Sqrt => cr.real().map(|r| Data::Real(r.sqrt())),
+        Function::Sqrt => match *cr {
+            Data::Lreal(r) => Some(Data::Lreal(r.sqrt())),
+            _ => cr.real().map(|r| Data::Real(r.sqrt())),
+        },
         // Toward zero, saturating at DINT's limits (NaN gives 0).
-        Function::Trunc => cr
-            .real()
-            .map(|r| Data::integer(DataType::Dint, (r as i32).into())),
+        Function::Trunc => match *cr {
+            Data::Lreal(r) => Some(Data::integer(DataType::Dint, (r as i32).into())),
+            _ => cr
+                .real()
+                .map(|r| Data::integer(DataType::Dint, (r as i32).into())),
+        },
         Function::Expt => args.first().and_then(|e| cr.expt(e)),
         // Read by `call_function`, which sees all its inputs.
         Function::Mux => None,

@@ -19,6 +19,7 @@ mod soft_drawn;
 mod soft_plcopen;
 mod soft_seeds;
 mod soft_st;
+mod soft_st_export;
 mod source_map;
 mod strategies;
 mod why;

@@ -113,3 +113,33 @@ fn array_elements_and_members_are_watched_as_written() {
         "{stdout} {first}"
     );
 }
+
+#[test]
+fn watch_prints_an_lreal_to_its_last_digit_and_events_set_one() {
+    let dir = Temp::new("st-run-lreal");
+    let program = dir.file(
+        "l.st",
+        "PROGRAM t\nVAR\n  a : LREAL := 0.1;\n  c : LREAL;\n  k : LREAL;\nEND_VAR\nc := a + 0.2;\nEND_PROGRAM\n",
+    );
+    // An event writes an LREAL at once, from its decimal text.
+    let events = dir.file("ev.csv", "5ms,k,0.123456789012\n");
+    let out = hashigo(
+        &[
+            "run",
+            "--program",
+            &program,
+            "--input",
+            &events,
+            "--until",
+            "20ms",
+            "--watch",
+            "c,k",
+        ],
+        "",
+    );
+    // binary64: 0.1 + 0.2 = 0.30000000000000004.
+    assert_eq!(
+        text(&out.stdout),
+        "time_ms,c,k\n0,0.0,0.0\n20,0.30000000000000004,0.123456789012\n"
+    );
+}

@@ -44,6 +44,7 @@ fn show(d: &Data) -> String {
         Data::Bool(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
         Data::Int(_, v) => v.to_string(),
         Data::Real(r) => r.to_string(),
+        Data::Lreal(r) => r.to_string(),
         Data::Time(ns) => format!("{}ms", ns / 1_000_000),
         Data::Text(t) => t.to_string(),
     }

@@ -17,7 +17,10 @@ fn what_does_not_run_yet_says_so_at_its_place() {
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(e[0].starts_with("3:14:"), "{e:?}");
     assert!(e[0].contains("does not run on the soft PLC yet"), "{e:?}");
-    let e = refusals("PROGRAM t\nVAR n : INT; END_VAR\nn := MAX(n, n + 1);\nEND_PROGRAM\n");
+    // Untyped literals alone beside SEL's selector: no type to hold them.
+    let e = refusals(
+        "PROGRAM t\nVAR n : INT; g : BOOL; END_VAR\nn := SEL(g, 1 + 1, 2);\nEND_PROGRAM\n",
+    );
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(
         e[0].starts_with("3:13:") && e[0].contains("function's second or later input"),
@@ -29,8 +32,10 @@ fn what_does_not_run_yet_says_so_at_its_place() {
 
 #[test]
 fn the_il_loaders_refusal_is_at_the_st_declaration() {
-    // LREAL parses and checks; the soft PLC has no LREAL yet.
-    let e = refusals("PROGRAM t\nVAR\n  n : INT;\n  s : LREAL;\nEND_VAR\nn := 1;\nEND_PROGRAM\n");
+    // A byte address parses and checks; the soft PLC has none.
+    let e = refusals(
+        "PROGRAM t\nVAR\n  n : INT;\n  s AT %IB0 : BYTE;\nEND_VAR\nn := 1;\nEND_PROGRAM\n",
+    );
     assert_eq!(e.len(), 1, "{e:?}");
     assert!(e[0].starts_with("4:3:"), "{e:?}");
 }

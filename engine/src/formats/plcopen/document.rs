@@ -72,6 +72,13 @@ impl Document {
         import::ladder_of(&self.root, machine, map, pou)
     }
 
+    /// The project's Structured Text as one `.st` text: its types, the
+    /// configuration's globals and its ST POUs ([`super::st_source`]),
+    /// what [`super::export_st`] writes back as a project.
+    pub fn st_text(&self) -> String {
+        super::st_source(&self.root)
+    }
+
     /// The project as the soft PLC's program text, run as drawn with no
     /// map: `pou` alone or the programs the tasks run.
     pub fn soft_program(&self, pou: Option<&str>) -> Result<SoftProgram, Errors> {

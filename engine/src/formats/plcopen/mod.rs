@@ -24,6 +24,7 @@ mod document;
 pub mod dom;
 pub mod error;
 pub mod export;
+pub mod export_st;
 pub mod gate_why;
 mod graph;
 pub mod import;
@@ -34,6 +35,7 @@ mod map_file;
 mod parts;
 mod rungs;
 pub mod soft;
+pub mod st_source;
 pub(crate) mod vendor;
 pub mod warning;
 
@@ -44,8 +46,10 @@ pub use declare::VarMap;
 pub use document::Document;
 pub use error::{Connection, ImportError, XmlError};
 pub use export::export;
+pub use export_st::export_st;
 pub use import::{drawn_body, pou_named, Imported};
 use lower::body;
+pub use st_source::st_source;
 pub use warning::ImportWarning;
 
 /// The TC6 v2.01 namespace.

@@ -160,10 +160,16 @@ pub(super) struct Lower {
     pub(super) taken: std::collections::HashSet<String>,
     /// Starts every label and hidden name (a host's bodies share names).
     pub(super) tag: String,
+    /// Each own block's and function's VAR_EXTERNALs (by upper-case
+    /// POU): each name, and whether it is copied back out.
+    pub(super) externals: std::collections::HashMap<String, Vec<(String, bool)>>,
     /// Each own block's and function's VAR_IN_OUT: (POU, pin), upper-case.
     pub(super) inouts: std::collections::HashSet<(String, String)>,
     /// Where `RETURN` goes in a POU with VAR_IN_OUT (its copy-out).
     pub(super) ret: Option<String>,
+    /// A standard function's later inputs computed into hidden
+    /// variables, by place (`lower_args`).
+    pub(super) std_args: std::collections::HashMap<(u32, u32), String>,
     /// Index expressions computed into hidden variables, by place.
     pub(super) indexed: std::collections::HashMap<(u32, u32), String>,
     /// The POU's (and, in the PROGRAM, the globals') elementary
@@ -500,11 +506,11 @@ impl Lower {
         self.expr(first);
         let mut ops = Vec::new();
         for e in rest {
-            match self.simple(e) {
+            match self.simple(e).or_else(|| self.made_arg(e)) {
                 Some(t) => ops.push(t),
                 None => self.not_yet(
                     e.span,
-                    "an expression as a function's second or later input (assign it to a variable first)",
+                    "an expression of no known type as a function's second or later input (assign it to a variable first)",
                 ),
             }
         }

@@ -59,7 +59,8 @@ impl Lower {
             })
             .flatten()
             .collect();
-        self.stmts(&p.body);
+        let body = self.lreal_literals(&p.body);
+        self.stmts(&body);
         std::mem::take(&mut self.hidden)
     }
 
@@ -119,6 +120,8 @@ impl Lower {
                 let upper = call.callee.name.to_ascii_uppercase();
                 if let Some(inputs) = self.functions.get(&upper).cloned() {
                     self.call_function(call, &inputs, e);
+                } else {
+                    self.hoist_std_args(call);
                 }
             }
             ExprKind::Literal(_) => {}
@@ -178,6 +181,7 @@ impl Lower {
                 None => return self.not_yet(x.span, "this function's input as an expression"),
             }
         }
+        args.extend(self.external_args(&call.callee.name));
         let instance = self.fresh("st_f");
         self.hidden
             .push((instance.clone(), call.callee.name.clone()));

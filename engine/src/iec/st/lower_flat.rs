@@ -47,7 +47,7 @@ pub(super) fn key(path: &str) -> String {
 
 impl Lower {
     /// The `TYPE` declared as `name` (any case).
-    fn type_def(&self, name: &str) -> Option<&TypeDef> {
+    pub(super) fn type_def(&self, name: &str) -> Option<&TypeDef> {
         self.types.get(&name.to_ascii_uppercase())
     }
 
@@ -67,7 +67,7 @@ impl Lower {
 
     /// `ty` with its aliases followed to an elementary or block type,
     /// with the alias's default value when the declaration gives none.
-    fn resolved<'a>(
+    pub(super) fn resolved<'a>(
         &'a self,
         ty: &'a TypeRef,
         init: Option<&'a Init>,

@@ -19,9 +19,29 @@ pub(super) fn io_pin(pin: &str) -> String {
 fn in_out_names(p: &Pou) -> Vec<String> {
     p.vars
         .iter()
-        .filter(|b| b.kind == VarKind::InOut)
+        .filter(|b| b.kind == VarKind::InOut || copied_external(p, b))
         .flat_map(|b| &b.decls)
         .flat_map(|d| d.names.iter().map(|n| n.name.clone()))
+        .collect()
+}
+
+/// Whether `b` is a block's or function's VAR_EXTERNAL that is copied
+/// out as an in-out parameter is (not a CONSTANT one: only read).
+fn copied_external(p: &Pou, b: &VarBlock) -> bool {
+    b.kind == VarKind::External && !b.constant && p.kind != PouKind::Program
+}
+
+/// A block's or function's VAR_EXTERNAL names, each with whether it is
+/// copied back out.
+fn external_names(p: &Pou) -> Vec<(String, bool)> {
+    if p.kind == PouKind::Program {
+        return Vec::new();
+    }
+    p.vars
+        .iter()
+        .filter(|b| b.kind == VarKind::External)
+        .flat_map(|b| b.decls.iter().map(move |d| (d, !b.constant)))
+        .flat_map(|(d, out)| d.names.iter().map(move |n| (n.name.clone(), out)))
         .collect()
 }
 
@@ -30,9 +50,18 @@ impl Lower {
     pub(super) fn know_in_outs(&mut self, source: &Source) {
         for item in &source.items {
             let Item::Pou(p) = item else { continue };
+            let externals = external_names(p);
             for n in in_out_names(p) {
+                // A VAR_EXTERNAL is no argument a call gives.
+                if externals.iter().any(|(e, _)| *e == n) {
+                    continue;
+                }
                 let key = (p.name.name.to_ascii_uppercase(), n.to_ascii_uppercase());
                 self.inouts.insert(key);
+            }
+            if !externals.is_empty() {
+                self.externals
+                    .insert(p.name.name.to_ascii_uppercase(), externals);
             }
         }
     }
@@ -49,6 +78,8 @@ impl Lower {
             (VarKind::InOut, _) => "VAR_INPUT",
             // The PROGRAM declares the globals it reaches (`global_blocks`).
             (VarKind::External, _) if self.in_program => return,
+            // A block's: the global copied in, and out as an in-out is.
+            (VarKind::External, _) => "VAR_INPUT",
             (other, _) => return self.not_yet(b.span, other.keyword()),
         };
         self.emit(keyword, b.span);
@@ -69,7 +100,8 @@ impl Lower {
             }
         }
         self.emit("END_VAR", b.span);
-        if b.kind == VarKind::InOut {
+        let external = b.kind == VarKind::External && !b.constant;
+        if b.kind == VarKind::InOut || external {
             self.emit("VAR_OUTPUT", b.span);
             for d in &b.decls {
                 let ty = super::print::type_text(&d.ty);
@@ -113,7 +145,7 @@ impl Lower {
         if names.is_empty() {
             return self.body(p);
         }
-        if p.kind == PouKind::Program {
+        if p.kind == PouKind::Program && p.vars.iter().any(|b| b.kind == VarKind::InOut) {
             // No caller gives a program its variable.
             let at = p.vars.iter().find(|b| b.kind == VarKind::InOut);
             self.not_yet(at.map_or(p.span, |b| b.span), "VAR_IN_OUT in a PROGRAM");
@@ -196,6 +228,7 @@ impl Lower {
                 }
             }
         }
+        args.extend(self.external_args(&ty));
         self.emit(
             format!("CAL {}({})", call.callee.name, args.join(", ")),
             span,
@@ -204,6 +237,22 @@ impl Lower {
             self.emit(format!("LDN {output}"), span);
             self.emit(format!("ST {to}"), span);
         }
+    }
+
+    /// The globals a call of own POU `ty` passes both ways, for its
+    /// VAR_EXTERNALs (`g := g, st_io_g => g`; a CONSTANT one only in),
+    /// under the caller's name for them (the PROGRAM's global, or the
+    /// calling block's own VAR_EXTERNAL).
+    pub(super) fn external_args(&self, ty: &str) -> Vec<String> {
+        let names = self.externals.get(&ty.to_ascii_uppercase());
+        let mut args = Vec::new();
+        for (n, out) in names.into_iter().flatten() {
+            args.push(format!("{n} := {n}"));
+            if *out {
+                args.push(format!("{} => {n}", io_pin(n)));
+            }
+        }
+        args
     }
 
     /// `pin := e` of a call of a block of type `ty` (upper-case).

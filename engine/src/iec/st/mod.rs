@@ -9,16 +9,19 @@
 //! types (docs/soft-plc.md, "Structured Text").
 
 pub mod ast;
+mod body_text;
 mod check;
 mod decl;
 pub mod error;
 mod expr;
 mod lexer;
 pub mod lower;
+mod lower_args;
 mod lower_body;
 mod lower_call;
 mod lower_flat;
 mod lower_io;
+mod lower_reals;
 mod parser;
 pub mod print;
 mod stmt;
@@ -28,6 +31,7 @@ mod types;
 mod typing;
 
 pub use ast::Source;
+pub use body_text::body_texts;
 pub use check::check_source;
 pub use error::{StError, StErrorKind};
 pub use lexer::KEYWORDS;

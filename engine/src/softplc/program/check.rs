@@ -67,7 +67,7 @@ pub(super) fn binary_type(op: Binary, a: DataType, b: DataType) -> Result<DataTy
         Binary::Logic(..) => a == DataType::Bool || a.bits().is_some(),
         Binary::Arith(Arith::Add | Arith::Sub) => !matches!(a, DataType::Bool | DataType::String),
         Binary::Arith(Arith::Mod) => a.bits().is_some(),
-        Binary::Arith(_) => a.bits().is_some() || a == DataType::Real,
+        Binary::Arith(_) => a.bits().is_some() || matches!(a, DataType::Real | DataType::Lreal),
         Binary::Cmp(_) => true,
     };
     if !fits {

@@ -158,6 +158,9 @@ fn as_type(v: i128, t: DataType, line: usize) -> Option<Result<Data, Located<Loa
     if t == DataType::Real {
         return Some(Ok(Data::Real(v as f32)));
     }
+    if t == DataType::Lreal {
+        return Some(Ok(Data::Lreal(v as f64)));
+    }
     t.bits()?;
     Some(in_range(t, v).ok_or_else(|| {
         Located::new(
@@ -389,5 +392,5 @@ impl Program {
 
 /// Whether an integer literal can be a `t` (an integer type or REAL).
 pub(super) fn becomes(t: DataType) -> bool {
-    t.bits().is_some() || t == DataType::Real
+    t.bits().is_some() || matches!(t, DataType::Real | DataType::Lreal)
 }

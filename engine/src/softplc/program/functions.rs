@@ -84,16 +84,17 @@ impl Program {
             self.settle(flow, DataType::Real);
         }
         let t = need_cr(flow.cr)?;
+        let real = matches!(t, DataType::Real | DataType::Lreal);
         let fits = match f {
-            Function::Abs => t.bits().is_some() || t == DataType::Real,
-            _ => t == DataType::Real,
+            Function::Abs => t.bits().is_some() || real,
+            _ => real,
         };
         if !fits {
             return Err(LoadError::NotFor(t));
         }
         if let (Function::Expt, Some(power)) = (f, args.first_mut()) {
             let p = self.type_of(power);
-            if p.bits().is_none() && p != DataType::Real {
+            if p.bits().is_none() && !matches!(p, DataType::Real | DataType::Lreal) {
                 return Err(LoadError::NotFor(p));
             }
         }

@@ -300,9 +300,10 @@ fn a_projects_declarations_and_generated_program_are_refused_as_before() {
             "variable late: no type".to_string(),
         ),
         (
-            // BYTE is one now (issue #54); LREAL is not.
-            r#"<variable name="late" address="%QX0.1"><type><LREAL/></type></variable>"#,
-            "variable late: type LREAL is not one the soft PLC has (docs/soft-plc.md)".to_string(),
+            // BYTE and LREAL are ones now (issue #54); WSTRING is not.
+            r#"<variable name="late" address="%QX0.1"><type><wstring/></type></variable>"#,
+            "variable late: type WSTRING is not one the soft PLC has (docs/soft-plc.md)"
+                .to_string(),
         ),
         (
             r#"<variable name="late" address="%QZ0"><type><BOOL/></type></variable>"#,

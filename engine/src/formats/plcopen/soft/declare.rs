@@ -35,6 +35,9 @@ pub(super) enum Held {
 pub(super) struct OwnTypes {
     pub names: Vec<(String, String)>,
     pub blocks: Vec<String>,
+    /// The functions written in ST or IL: each runs as a block whose
+    /// output of its own name is its result (issue #54).
+    pub functions: Vec<String>,
 }
 
 /// A function block's inputs and outputs with their types.
@@ -42,6 +45,8 @@ pub(super) struct OwnTypes {
 pub(super) struct Interface {
     pub inputs: Vec<(String, DataType)>,
     pub outputs: Vec<(String, DataType)>,
+    /// A function's: its output of its own name is its result.
+    pub function: bool,
 }
 
 impl Interface {
@@ -156,6 +161,7 @@ impl Declarations {
         Interface {
             inputs: faced(Direction::Input),
             outputs: faced(Direction::Output),
+            function: false,
         }
     }
 
@@ -417,6 +423,23 @@ pub(super) fn block_declarations(pou: &Node, own: &OwnTypes) -> Result<Declarati
             if let Err(e) = declare(&mut out, scope, v, None, own, direction) {
                 errors.push(e);
             }
+        }
+    }
+    // A function's result: an output of its own name, of its type.
+    if let Some(r) = interface.child("returnType") {
+        let v = Node {
+            name: "variable".into(),
+            attrs: vec![("name".into(), pou.attr("name").unwrap_or_default().into())],
+            children: vec![Node {
+                name: "type".into(),
+                children: r.children.clone(),
+                ..Node::default()
+            }],
+            line: r.line,
+            ..Node::default()
+        };
+        if let Err(e) = declare(&mut out, r, &v, None, own, Direction::Output) {
+            errors.push(e);
         }
     }
     if errors.is_empty() {

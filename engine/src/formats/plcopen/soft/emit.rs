@@ -97,11 +97,11 @@ impl Emitter<'_> {
         }
     }
 
-    fn emit(&mut self, line: String, at: usize) {
+    pub(super) fn emit(&mut self, line: String, at: usize) {
         self.out.lines.push((line, at));
     }
 
-    fn temp(&mut self, stem: &str, ty: &str, at: usize) -> String {
+    pub(super) fn temp(&mut self, stem: &str, ty: &str, at: usize) -> String {
         let name = format!("_{}_{stem}", self.index);
         self.out.vars.push((format!("{name} : {ty};"), at));
         if let Some(t) = DataType::from_name(ty) {
@@ -260,7 +260,7 @@ impl Emitter<'_> {
 
     /// The value at input `pin` of `e`, if anything is connected: one
     /// source's output, or the OR of several (a wired OR).
-    fn input(&mut self, g: &Graph, e: &Element, pin: &str) -> Result<Option<Operand>> {
+    pub(super) fn input(&mut self, g: &Graph, e: &Element, pin: &str) -> Result<Option<Operand>> {
         let Some((_, sources)) = e.inputs.iter().find(|(p, _)| p.eq_ignore_ascii_case(pin)) else {
             return Ok(None);
         };
@@ -371,7 +371,9 @@ impl Emitter<'_> {
                     .clone()
                     .or_else(|| super::infer::unnamed_output(from))
                     .unwrap_or_else(|| "OUT".into());
+                // A function's result is read by the pin drawn (`OUT`).
                 let user = self.user.get(&type_name.to_ascii_uppercase());
+                let user = user.filter(|i| !i.function);
                 super::formal::check_output(from, type_name, &pin, user)?;
                 let ty = output_type(type_name, &pin)
                     .or_else(|| user.and_then(|i| i.pin(&pin)))
@@ -401,6 +403,9 @@ impl Emitter<'_> {
         }
         if let Some(f) = Function::named(&upper) {
             return self.function(g, e, f);
+        }
+        if let Some(iface) = self.user.get(&upper).filter(|i| i.function) {
+            return self.own_function(g, e, type_name, &iface.clone());
         }
         if let Some(iface) = self.user.get(&upper) {
             return self.user_block(g, e, type_name, instance, &iface.clone());

@@ -54,6 +54,7 @@ impl Emitter<'_> {
             decl: self.decl,
             out: self.out,
             labels: None,
+            user: None,
         };
         let errors = write_lines(&self.pou, lines, place);
         self.out.errors.extend(errors);

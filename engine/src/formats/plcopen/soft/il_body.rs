@@ -17,7 +17,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::declare::Declarations;
+use super::declare::{Declarations, Interface};
 use super::emit::Output;
 use super::SoftError;
 use crate::error::Located;
@@ -36,6 +36,9 @@ pub(super) struct Place<'a> {
     /// A program's: its labels unique among `labels` (upper-case), its
     /// RETs ending it alone. `None`: a function block's own section.
     pub labels: Option<&'a mut HashSet<String>>,
+    /// The project's own blocks and functions (upper-case), so that an
+    /// IL line calling one of its functions calls it (`il_call`).
+    pub user: Option<&'a HashMap<String, Interface>>,
 }
 
 /// Writes the IL body `text_node` of `pou` (from file `source`); a line
@@ -92,6 +95,15 @@ pub(super) fn write_lines(
             errors.push(Located::new(at, SoftError::BodySection(word.to_string())));
             continue;
         }
+        if call.is_none() {
+            if let Some(lines) = own_function(&line, &code, name, (place.user, place.out), at) {
+                match lines {
+                    Ok(lines) => place.out.lines.extend(lines.into_iter().map(|l| (l, at))),
+                    Err(e) => errors.push(Located::new(at, e)),
+                }
+                continue;
+            }
+        }
         let depth = paren_depth(&code);
         if let Some((mut joined, from, open)) = call.take() {
             joined.push(' ');
@@ -116,6 +128,29 @@ pub(super) fn write_lines(
         place.out.lines.push((format!("{end}:"), last));
     }
     errors
+}
+
+/// The lines calling the project's own function when `code` (of body
+/// line `line`) calls one ([`super::il_call`]), its label first.
+fn own_function(
+    line: &str,
+    code: &str,
+    pou: &str,
+    (user, out): (Option<&HashMap<String, Interface>>, &mut Output),
+    at: usize,
+) -> Option<Result<Vec<String>, SoftError>> {
+    let user = user?;
+    let (label, code) = match code.split_once(':') {
+        Some((head, rest)) if label_of(code) == Some(head.trim()) => {
+            (Some(label_of(line.trim())?), rest)
+        }
+        _ => (None, code),
+    };
+    let call = super::il_call::own_function_call(code, user, pou, out, at)?;
+    Some(call.map(|lines| {
+        let label = label.map(|l| format!("{l}:"));
+        label.into_iter().chain(lines).collect()
+    }))
 }
 
 /// The first word of `code` when it opens or closes a section of an IL

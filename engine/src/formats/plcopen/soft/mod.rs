@@ -11,10 +11,12 @@
 
 mod declare;
 mod emit;
+mod emit_fn;
 pub mod error;
 mod execute;
 mod formal;
 mod il_body;
+mod il_call;
 mod infer;
 mod st_body;
 
@@ -68,7 +70,9 @@ pub(in crate::formats::plcopen) fn il_of(
         .iter()
         .map(|(p, d)| {
             let name = p.attr("name").unwrap_or_default().to_ascii_uppercase();
-            (name, d.interface())
+            let mut interface = d.interface();
+            interface.function = p.attr("pouType") == Some("function");
+            (name, interface)
         })
         .collect();
     let mut errors = Vec::new();
@@ -84,6 +88,7 @@ pub(in crate::formats::plcopen) fn il_of(
                 decl: &declarations,
                 out: &mut out,
                 labels: Some(&mut labels),
+                user: Some(&user),
             };
             errors.extend(il_body::write(p, il, text, place));
             continue;
@@ -94,6 +99,7 @@ pub(in crate::formats::plcopen) fn il_of(
                 decl: &declarations,
                 out: &mut out,
                 labels: Some(&mut labels),
+                user: Some(&user),
             };
             errors.extend(st_body::write(p, st, text, place, &user));
             continue;
@@ -151,6 +157,7 @@ fn block_sections<'a>(
                 decl: &d,
                 out: &mut out,
                 labels: None,
+                user: Some(user),
             };
             errors.extend(il_body::write(p, il, source, place));
         } else if let Some(st) = st_body::st_body(p) {
@@ -158,6 +165,7 @@ fn block_sections<'a>(
                 decl: &d,
                 out: &mut out,
                 labels: None,
+                user: Some(user),
             };
             errors.extend(st_body::write(p, st, source, place, user));
         } else {
@@ -191,7 +199,41 @@ fn own_types(pous: &[&Node]) -> declare::OwnTypes {
             .filter(|p| p.attr("pouType") == Some("functionBlock") && runs(p))
             .filter_map(|p| p.attr("name").map(str::to_string))
             .collect(),
+        functions: pous
+            .iter()
+            .filter(|p| p.attr("pouType") == Some("function"))
+            .filter(|p| il_body::il_body(p).is_some() || st_body::st_body(p).is_some())
+            .filter_map(|p| p.attr("name").map(str::to_string))
+            .filter(|name| called(name, pous))
+            .collect(),
     }
+}
+
+/// Whether another POU's body may call function `name`: a drawn block
+/// of its type, or its name as a word of an ST or IL text (a comment's
+/// mention too: a function taken in for nothing costs nothing). One no
+/// body names is left out, so that an unused function the soft PLC
+/// cannot run does not refuse the project.
+fn called(name: &str, pous: &[&Node]) -> bool {
+    let word = |text: &str| {
+        text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .any(|w| w.eq_ignore_ascii_case(name))
+    };
+    pous.iter()
+        .filter(|p| p.attr("name").is_none_or(|n| !n.eq_ignore_ascii_case(name)))
+        .any(|p| {
+            let mut blocks = Vec::new();
+            p.descendants("block", &mut blocks);
+            let drawn = blocks.iter().any(|b| {
+                b.attr("typeName")
+                    .is_some_and(|t| t.eq_ignore_ascii_case(name))
+            });
+            let text = il_body::il_body(p).or_else(|| st_body::st_body(p));
+            // CODESYS's EXECUTE blocks hold ST in drawn bodies.
+            let mut codes = Vec::new();
+            p.descendants("STCode", &mut codes);
+            drawn || text.is_some_and(|t| word(&t.text)) || codes.iter().any(|c| word(&c.text))
+        })
 }
 
 /// Whether the soft PLC runs `pou`'s body: drawn (LD, FBD), IL or ST.
@@ -292,7 +334,10 @@ fn used_blocks<'a>(
     program: &declare::Declarations,
     own: &declare::OwnTypes,
 ) -> Result<Vec<(&'a Node, declare::Declarations)>, Vec<Located<SoftError>>> {
+    // The functions in ST or IL run as blocks, called by hidden
+    // instances: each is a section whether called or not.
     let mut todo: Vec<String> = program.user_types();
+    todo.extend(own.functions.iter().rev().cloned());
     let mut out: Vec<(&Node, declare::Declarations)> = Vec::new();
     while let Some(t) = todo.pop() {
         let seen = out

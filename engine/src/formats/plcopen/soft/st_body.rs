@@ -103,16 +103,33 @@ fn source_of(scope: &Scope, text: &str) -> (String, usize) {
         if name.eq_ignore_ascii_case(scope.pou) {
             continue;
         }
-        out.push_str(&format!("FUNCTION_BLOCK {name}\n"));
+        // A function's result is its output of its own name.
+        let result = iface
+            .outputs
+            .iter()
+            .find(|(pin, _)| iface.function && pin.eq_ignore_ascii_case(name));
+        let end = match result {
+            Some((_, ty)) => {
+                out.push_str(&format!("FUNCTION {name} : {}\n", ty.name()));
+                "END_FUNCTION"
+            }
+            None => {
+                out.push_str(&format!("FUNCTION_BLOCK {name}\n"));
+                "END_FUNCTION_BLOCK"
+            }
+        };
         for (keyword, pins) in [("VAR_INPUT", &iface.inputs), ("VAR_OUTPUT", &iface.outputs)] {
             out.push_str(keyword);
             out.push('\n');
             for (pin, ty) in pins {
-                out.push_str(&format!("  {pin} : {};\n", ty.name()));
+                if result.is_none() || !pin.eq_ignore_ascii_case(name) {
+                    out.push_str(&format!("  {pin} : {};\n", ty.name()));
+                }
             }
             out.push_str("END_VAR\n");
         }
-        out.push_str("END_FUNCTION_BLOCK\n");
+        out.push_str(end);
+        out.push('\n');
     }
     out.push_str(&format!("PROGRAM {}\nVAR\n", scope.pou));
     // The POU's renamed variables under the names its body writes (the
