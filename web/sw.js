@@ -6,8 +6,25 @@ const VERSION = "__VERSION__";
 const FILES = ["__FILES__"];
 const CACHE = `hashigo-${VERSION}`;
 
+// Two files at a time, not all at once: the page is not this worker's
+// yet on a first visit, and its own requests (a machine chosen while the
+// files are kept) must find a free connection and most of a slow link
+// (issue #53). Any file that does not come fails the install, as
+// `addAll` would.
+const AT_ONCE = 2;
+
+function keepAll(cache) {
+  const queue = [...FILES];
+  const worker = async () => {
+    while (queue.length > 0) {
+      await cache.add(queue.shift());
+    }
+  };
+  return Promise.all(Array.from({ length: AT_ONCE }, worker));
+}
+
 self.addEventListener("install", (event) => {
-  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(FILES)).then(() => self.skipWaiting()));
+  event.waitUntil(caches.open(CACHE).then(keepAll).then(() => self.skipWaiting()));
 });
 
 self.addEventListener("activate", (event) => {

@@ -63,7 +63,8 @@ pub fn start() {
     if saved.is_empty() {
         begin(ctx, start);
     } else {
-        leptos::task::spawn_local(read_then_begin(ctx, start, saved));
+        // Not Leptos's executor: it is set up when the app mounts.
+        wasm_bindgen_futures::spawn_local(read_then_begin(ctx, start, saved));
     }
 }
 
