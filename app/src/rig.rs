@@ -27,6 +27,11 @@ pub trait Rig {
     /// What the dock draws while time travel shows the scan that ended
     /// at `at`: the plant as it was then.
     fn show_at(&self, at: SimTime) -> Shown;
+    /// The plant device `name` (`tank.level`, `conveyor.motor`,
+    /// `tank.alarms`: what `hashigo test` reads) at each of `times`, as
+    /// the plant stood after its last step at or before it (`None`: not
+    /// kept); `None` when the plant has no such device.
+    fn series(&self, name: &str, times: &[SimTime]) -> Option<Vec<Option<i64>>>;
     /// Unwires: the inputs the plant drove are released.
     fn detach(&mut self, machine: &mut dyn Plc);
 }

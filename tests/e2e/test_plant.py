@@ -148,6 +148,42 @@ def test_a_ladder_that_keeps_fill_on_raises_the_tanks_overflow_alarm(driver, bas
     assert el(driver, "plant-level").text == "100 %"
 
 
+def watched(driver, name):
+    return el(driver, f"watch-{name}").find_element(By.CSS_SELECTOR, ".watch-value").text
+
+
+def test_the_chart_and_watch_draw_the_plants_quantities_and_signals(driver, base_url, tmp_path):
+    """Issue #52: the plant's devices by the names hashigo test reads
+    (`tank.level`, `tank.fill`), per scan from the plant's own record."""
+    open_link(driver, base_url, link_of(fill_always(), tmp_path))
+    choose(driver, "tank")
+    el(driver, "watch-input").send_keys("tank.level", Keys.ENTER)
+    for name in ["tank.level", "tank.fill", "tank.alarms"]:
+        el(driver, "chart-add").send_keys(name, Keys.ENTER)
+    # Not refused as a device the machine lacks.
+    assert not driver.find_element(By.CSS_SELECTOR, ".chart-error").text
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: watched(driver, "tank.level") not in ("?", "") and int(watched(driver, "tank.level")) >= 70,
+         timeout=30, message="Watch follows the level")
+    wait(driver, lambda: "overflow" in el(driver, "plant-alarm").text, timeout=30)
+    el(driver, "pause").click()
+    row = el(driver, "chart-row-tank.level")
+    wait(driver, lambda: int(row.get_attribute("data-scans")) > 0, message="the level is drawn")
+    assert row.get_attribute("data-shape") == "bands"
+    assert el(driver, "chart-row-tank.fill").get_attribute("data-shape") == "bits"
+    assert int(el(driver, "chart-row-tank.alarms").get_attribute("data-rises")) == 1
+    # At an earlier scan the dock, Watch and the chart say the same level.
+    last = int(el(driver, "timeline").get_attribute("max"))
+    seek(driver, last // 3)
+    wait(driver, lambda: el(driver, "chart-value-tank.level").text, message="the chart at that scan")
+    charted = el(driver, "chart-value-tank.level").text
+    assert 50 <= int(charted) < 100, charted
+    wait(driver, lambda: str(quantity(driver, "level")) == charted, message="the dock at that scan")
+    wait(driver, lambda: watched(driver, "tank.level") == charted, message="Watch at that scan")
+    assert severe_console_messages(driver) == []
+
+
 def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(driver, base_url, tmp_path):
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")

@@ -14,6 +14,7 @@ mod faults;
 mod history;
 mod manual;
 mod rig;
+mod series;
 mod wiring;
 
 mod above;

@@ -15,6 +15,7 @@ use engine::plc::{tick_end, Command, Plc};
 use engine::SimTime;
 
 use super::history::History;
+use super::series::{self, Series};
 use super::{Refusals, Rig, Shown, SignalShown};
 
 /// The alarms the dock keeps (the latest).
@@ -41,7 +42,11 @@ pub(super) struct PlantRig {
     written: Vec<Option<InputValue>>,
     /// The latest alarms: the machine's time in ms, the message.
     alarms: Vec<(i64, String)>,
+    /// The alarms raised since the start (`PLANT.alarms`).
+    alarm_count: i64,
     raised: Vec<String>,
+    /// Its signals and quantities over time (the chart, Watch).
+    series: Series,
 }
 
 /// Couples `setup`'s plant to `machine`, or the refusals, each at its
@@ -105,9 +110,12 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
         values: vec![0; n],
         written: vec![None; n],
         alarms: Vec::new(),
+        alarm_count: 0,
         raised: Vec::new(),
+        series: Series::default(),
     };
     rig.sense(machine, now);
+    rig.note(now);
     rig.history.step(now, 0, &rig.plant, true);
     Ok(Box::new(rig))
 }
@@ -148,13 +156,21 @@ impl PlantRig {
         self.history.drive(at, &self.values, &outputs);
         self.plant.step(now_ms, &self.values, &mut self.raised);
         for message in self.raised.drain(..) {
+            self.alarm_count += 1;
             if self.alarms.len() == ALARMS_KEPT {
                 self.alarms.remove(0);
             }
             self.alarms.push((ms(at), message));
         }
         self.sense(machine, at);
+        self.note(at);
         self.history.step(at, now_ms, &self.plant, false);
+    }
+
+    /// Notes the plant's devices as they stand after the step at `at`.
+    fn note(&mut self, at: SimTime) {
+        let now = series::values_of(&self.plant, &self.values, self.alarm_count);
+        self.series.note(at, &now);
     }
 
     /// Back to the plant as it was at `at` (the machine resumed from a
@@ -164,7 +180,11 @@ impl PlantRig {
             self.plant = plant;
             self.jogged = clock - (ms(at) - ms(self.origin));
             self.history.cut(at);
+            self.series.cut(at);
             self.alarms.retain(|(t, _)| *t <= ms(at));
+            let info = self.plant.info();
+            let count = info.signals.len() + info.quantities.len();
+            self.alarm_count = self.series.at(count, at).unwrap_or(0);
             // Written again from the plant as it was.
             self.written.iter_mut().for_each(|w| *w = None);
         }
@@ -296,6 +316,14 @@ impl Rig for PlantRig {
             }
         }
         self.shown_of(&plant, &values, false, ms(at))
+    }
+
+    fn series(&self, name: &str, times: &[SimTime]) -> Option<Vec<Option<i64>>> {
+        let rest = name
+            .strip_prefix(self.plant.info().name)?
+            .strip_prefix('.')?;
+        let index = series::index_of(&self.plant, rest)?;
+        Some(self.series.sample(index, times))
     }
 
     fn detach(&mut self, machine: &mut dyn Plc) {

@@ -175,3 +175,38 @@ fn the_tanks_figure_says_its_level_as_the_quantity_does() {
     assert_eq!(super::draw::percent_said(100_000), "100 %");
     assert_eq!(super::draw::percent_said(999), "0 %");
 }
+
+#[test]
+fn the_chart_and_watch_read_the_plant_as_it_stood_at_each_time() {
+    // The tank's fill kept open: the level rises to full and runs over.
+    let mut m = minasec("000 LDI X07\n001 ST Y00\n");
+    let mut rig = rig::build(&setup("tank"), &mut m).unwrap();
+    let mut seen = Vec::new();
+    for _ in 0..12 {
+        rig.advance(&mut m, SimTime::from_secs(1));
+        seen.push((m.now(), quantity(&rig.show(&m), "level")));
+    }
+    let times: Vec<SimTime> = seen.iter().map(|(t, _)| *t).collect();
+    let level = rig.series("tank.level", &times).expect("a quantity");
+    let expected: Vec<_> = seen.iter().map(|(_, l)| Some(*l)).collect();
+    assert_eq!(level, expected);
+    // 50 % + (8 - 2) %/s for a second, less the first scan (rounded down).
+    assert_eq!(level[0], Some(55));
+    // A signal: the fill valve on from the first scan; `alarms` counts.
+    let fill = rig.series("tank.fill", &times).unwrap();
+    assert!(fill.iter().all(|v| *v == Some(1)), "{fill:?}");
+    let alarms = rig.series("tank.alarms", &times).unwrap();
+    assert_eq!(alarms[7], Some(0), "{alarms:?}");
+    assert_eq!(alarms[9], Some(1), "overflow at about 8.3 s: {alarms:?}");
+    // The high switch (at 80 %) reads 0 at 4 s (73 %), 1 at 6 s (85 %).
+    let high = rig.series("tank.high", &[times[3], times[5]]).unwrap();
+    assert_eq!(high, [Some(0), Some(1)]);
+    // Before the plant was coupled it has no value; no such names.
+    assert_eq!(
+        rig.series("tank.level", &[SimTime::ZERO]),
+        Some(vec![Some(50)])
+    );
+    assert_eq!(rig.series("tank.belt", &times), None);
+    assert_eq!(rig.series("conveyor.level", &times), None);
+    assert_eq!(rig.series("tank", &times), None);
+}
