@@ -18,6 +18,7 @@ from test_app import drawn, el, open_fresh, severe_console_messages, wait
 from test_ladder import HASHIGO, ROOT, focus_ladder, keys, place
 
 CONVEYOR = ROOT / "engine" / "programs" / "minasec-u" / "conveyor.json"
+IO86A_TANK = ROOT / "engine" / "programs" / "io86a" / "tank.json"
 
 
 def link_of(project, tmp_path):
@@ -181,6 +182,43 @@ def test_the_chart_and_watch_draw_the_plants_quantities_and_signals(driver, base
     assert 50 <= int(charted) < 100, charted
     wait(driver, lambda: str(quantity(driver, "level")) == charted, message="the dock at that scan")
     wait(driver, lambda: watched(driver, "tank.level") == charted, message="Watch at that scan")
+    assert severe_console_messages(driver) == []
+
+
+def figures(driver):
+    """The plants drawn in the dock now (by their figure's test id)."""
+    return sorted(e.get_attribute("data-testid") for e in driver.find_elements(
+        By.CSS_SELECTOR, '[data-testid="plant"] [data-testid^="plant-"][role="img"]'))
+
+
+def chosen(driver):
+    return Select(el(driver, "plant-select")).first_selected_option.get_attribute("value")
+
+
+def test_the_dock_draws_the_plant_of_the_project_shown_or_none(driver, base_url, tmp_path):
+    """Regression: an IO86A link opened while the conveyor ran on
+    MINASEC-U left the conveyor drawn under the link's Tank."""
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    assert figures(driver) == ["plant-conveyor"]
+    tank = json.loads(IO86A_TANK.read_text())
+    driver.get(f"{base_url}/#{link_of(tank, tmp_path)}")
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "io86a",
+         message="the link's machine is shown")
+    wait(driver, lambda: figures(driver) == ["plant-tank"], timeout=20,
+         message="the link's tank is drawn")
+    assert chosen(driver) == "tank"
+    # The same machine's link without a plant: none drawn.
+    tank.pop("plant")
+    tank["ladder"]["rungs"] = tank["ladder"]["rungs"][:1]
+    driver.get(f"{base_url}/#{link_of(tank, tmp_path)}")
+    wait(driver, lambda: chosen(driver) == "", message="the link has no plant")
+    wait(driver, lambda: figures(driver) == [], message="nothing drawn")
+    # Back on MINASEC-U by a link with no plant: none either.
+    driver.get(f"{base_url}/#{link_of(fill_always(), tmp_path)}")
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "minasec-u")
+    wait(driver, lambda: chosen(driver) == "" and figures(driver) == [],
+         message="no plant on MINASEC-U")
     assert severe_console_messages(driver) == []
 
 

@@ -96,10 +96,10 @@ impl Plants {
                 });
             }
         });
-        if let Some(shown) = out {
-            if self.shown.with_untracked(|s| s.as_ref() != Some(&shown)) {
-                self.shown.set(Some(shown));
-            }
+        // No rig (none chosen, refused, or the machine still on its
+        // way): nothing drawn, never another workspace's plant.
+        if self.shown.with_untracked(|s| s.as_ref() != out.as_ref()) {
+            self.shown.set(out);
         }
     }
 
@@ -121,6 +121,13 @@ impl Plants {
         let Some(kit) = self.kit.get_untracked() else {
             return;
         };
+        // A machine still on its way (its part): coupled when it comes,
+        // to the setup its project has then.
+        if !ladder.attached() {
+            let plants = *self;
+            ladder.when_attached(move || plants.couple(ladder, ladder.cases.plant.get_untracked()));
+            return;
+        }
         let mut refused = Vec::new();
         ladder.with_rig(|machine, rig| {
             if rig.as_ref().is_some_and(|r| r.setup() == &setup) {

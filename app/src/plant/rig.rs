@@ -88,11 +88,7 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
                 line: i + 1,
             })
             .collect(),
-        None => {
-            let mut entries = wiring::default_wiring(info, machine).0;
-            entries.retain(|e| machine.device(&e.device).is_ok());
-            entries
-        }
+        None => super::wiring::default_entries(info, machine),
     };
     let wires = wiring::check(info, machine, &entries)
         .map_err(|errors| errors.into_iter().map(located).collect::<Vec<_>>())?;

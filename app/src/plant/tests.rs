@@ -210,3 +210,19 @@ fn the_chart_and_watch_read_the_plant_as_it_stood_at_each_time() {
     assert_eq!(rig.series("conveyor.level", &times), None);
     assert_eq!(rig.series("tank", &times), None);
 }
+
+#[test]
+fn the_tank_couples_on_the_io86a_by_default_with_its_level_left_open() {
+    // X04 is analog only in analog mode, which the page's IO86A does
+    // not keep: the default leaves the level unwired, as on MINASEC-U.
+    let mut m = Recorded::new(engine::machines::Io86aPlc::new());
+    let rows = super::wiring::default_rows("tank", &m);
+    let rows: Vec<String> = rows.iter().map(|[s, d]| format!("{s},{d}")).collect();
+    assert_eq!(
+        rows,
+        ["low,X00", "high,X01", "level,", "fill,Y00", "drain,Y01"]
+    );
+    let rig = rig::build(&setup("tank"), &mut m).expect("coupled");
+    let level = rig.show(&m).signals.into_iter().find(|s| s.name == "level");
+    assert_eq!(level.and_then(|s| s.device), None);
+}
