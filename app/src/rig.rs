@@ -40,7 +40,18 @@ pub trait Rig {
 pub type RigSlot = Option<Box<dyn Rig>>;
 
 /// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
-pub type Refusals = Vec<(usize, String)>;
+pub type Refusals = Vec<(usize, Refusal)>;
+
+/// Why a setup is refused: a wiring row's kind (said in the page's
+/// language, `crate::i18n::plant_wiring`), or the engine's words (a
+/// parameter, a fault, a plant's own check).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Refusal {
+    /// A wiring row the plant and the machine do not take.
+    Wire(engine::plant::wiring::WireError),
+    /// Said as the engine says it.
+    Said(String),
+}
 
 /// Couples a setup's plant to a machine, or refuses.
 pub type Build = fn(&PlantSetup, &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals>;

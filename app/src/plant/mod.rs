@@ -23,7 +23,7 @@ pub use above::PlantAbove;
 use engine::formats::project::PlantSetup;
 use leptos::prelude::*;
 
-pub use crate::rig::{Build, Refusals, Rig, RigSlot, Shown, SignalShown};
+pub use crate::rig::{Build, Refusal, Refusals, Rig, RigSlot, Shown, SignalShown};
 
 use crate::editor::LadderCtx;
 use crate::parts::{Draw, PartMissing};

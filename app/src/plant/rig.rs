@@ -9,14 +9,14 @@
 use engine::error::Located;
 use engine::events::InputValue;
 use engine::formats::project::PlantSetup;
-use engine::plant::wiring::{self, Wire, WireEntry};
+use engine::plant::wiring::{self, Wire, WireEntry, WireError};
 use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, STEP};
 use engine::plc::{tick_end, Command, Plc};
 use engine::SimTime;
 
 use super::history::History;
 use super::series::{self, Series};
-use super::{Refusals, Rig, Shown, SignalShown};
+use super::{Refusal, Refusals, Rig, Shown, SignalShown};
 
 /// The alarms the dock keeps (the latest).
 const ALARMS_KEPT: usize = 20;
@@ -52,7 +52,7 @@ pub(super) struct PlantRig {
 /// Couples `setup`'s plant to `machine`, or the refusals, each at its
 /// wiring row (1-based; 0: the plant, its parameters or faults).
 pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals> {
-    let one = |e: String| vec![(0, e)];
+    let one = |e: String| vec![(0, Refusal::Said(e))];
     let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
         one(format!(
             "no plant {} (the plants: {})",
@@ -116,8 +116,8 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
     Ok(Box::new(rig))
 }
 
-fn located(e: Located<String>) -> (usize, String) {
-    (e.line, e.error)
+fn located(e: Located<WireError>) -> (usize, Refusal) {
+    (e.line, Refusal::Wire(e.error))
 }
 
 impl PlantRig {

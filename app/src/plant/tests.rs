@@ -10,6 +10,7 @@ use engine::record::Recorded;
 use engine::SimTime;
 
 use super::rig;
+use crate::i18n::Lang;
 use crate::sim::{Pace, Simulator, Speed};
 
 const CONVEYOR: &str = include_str!("../../../engine/programs/minasec-u/conveyor.il");
@@ -88,7 +89,13 @@ fn an_analog_signal_on_minasec_u_is_refused_at_its_row() {
     let refused = rig::build(&s, &mut m).err().expect("refused");
     assert_eq!(refused.len(), 1, "{refused:?}");
     assert_eq!(refused[0].0, 2);
-    assert!(refused[0].1.contains("analog"), "{}", refused[0].1);
+    // Said in the page's language from its kind.
+    let said = |lang| crate::i18n::plant_wiring::refusal(lang, &refused[0].1);
+    assert!(said(Lang::En).contains("analog"), "{}", said(Lang::En));
+    assert_eq!(
+        said(Lang::Ja),
+        "tank.level はアナログ信号ですが、X04 はアナログ入力ではありません (minasec-u にはアナログ入力がありません)"
+    );
 }
 
 #[test]

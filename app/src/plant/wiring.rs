@@ -92,7 +92,7 @@ pub(super) fn WiringTable(ladder: LadderCtx) -> impl IntoView {
             <p class="wiring-refusal" role="alert" data-testid="wiring-refusal"
                 hidden=move || plants.refusals.with(|r| r.iter().all(|(at, _)| *at != 0))>
                 {move || t().refused}{" "}
-                {move || plants.refusals.with(|r| r.iter().filter(|(at, _)| *at == 0).map(|(_, m)| m.clone()).collect::<Vec<_>>().join("; "))}
+                {move || refusal_at(plants, 0, ctx.lang.get())}
             </p>
             <div class="wiring-actions">
                 <button type="button" data-testid="wiring-apply"
@@ -104,12 +104,13 @@ pub(super) fn WiringTable(ladder: LadderCtx) -> impl IntoView {
     }
 }
 
-/// The refusals said at wiring row `row` (0-based), joined.
-fn refusal_at(plants: Plants, row: usize) -> String {
+/// The refusals said at wiring row `row` (1-based; 0: not a row's) in
+/// `lang`, joined.
+fn refusal_at(plants: Plants, row: usize, lang: crate::i18n::Lang) -> String {
     plants.refusals.with(|r| {
         r.iter()
-            .filter(|(at, _)| *at == row + 1)
-            .map(|(_, m)| m.clone())
+            .filter(|(at, _)| *at == row)
+            .map(|(_, m)| crate::i18n::plant_wiring::refusal(lang, m))
             .collect::<Vec<_>>()
             .join("; ")
     })
@@ -144,7 +145,7 @@ fn WiringRow(
             t().direction_in
         }
     };
-    let refusal = move || refusal_at(plants, i);
+    let refusal = move || refusal_at(plants, i + 1, ctx.lang.get());
     let refused = move || !refusal().is_empty();
     // The engine's name is what wiring files and tests write; the words
     // follow it where the language has its own.
