@@ -32,6 +32,9 @@ pub trait Rig {
     /// the plant stood after its last step at or before it (`None`: not
     /// kept); `None` when the plant has no such device.
     fn series(&self, name: &str, times: &[SimTime]) -> Option<Vec<Option<i64>>>;
+    /// The machine's power went off and on: the plant back at its start
+    /// (as `hashigo`'s power cycle puts it), from the machine's time now.
+    fn power_cycle(&mut self, machine: &mut dyn Plc);
     /// Unwires: the inputs the plant drove are released.
     fn detach(&mut self, machine: &mut dyn Plc);
 }

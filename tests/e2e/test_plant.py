@@ -19,6 +19,7 @@ from test_ladder import HASHIGO, ROOT, focus_ladder, keys, place
 
 CONVEYOR = ROOT / "engine" / "programs" / "minasec-u" / "conveyor.json"
 IO86A_TANK = ROOT / "engine" / "programs" / "io86a" / "tank.json"
+CONVEYOR_FAULT = ROOT / "engine" / "programs" / "minasec-u" / "conveyor-fault.json"
 
 
 def link_of(project, tmp_path):
@@ -220,6 +221,41 @@ def test_the_dock_draws_the_plant_of_the_project_shown_or_none(driver, base_url,
     wait(driver, lambda: chosen(driver) == "" and figures(driver) == [],
          message="no plant on MINASEC-U")
     assert severe_console_messages(driver) == []
+
+
+def test_the_power_switch_puts_the_plant_back_at_its_start(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 1, timeout=30, message="a part is delivered")
+    el(driver, "pause").click()
+    # MINASEC-U's power switch off and on: a power cycle.
+    el(driver, "power").click()
+    el(driver, "power").click()
+    wait(driver, lambda: quantity(driver, "placed") == 0 and quantity(driver, "delivered") == 0,
+         message="the plant at its start")
+    assert part_places(driver) == []
+    assert severe_console_messages(driver) == []
+
+
+def report(driver):
+    return [Select(el(driver, f"fault-report-{part}")).first_selected_option.get_attribute("value")
+            for part in ("signal", "kind")]
+
+
+def test_the_fault_report_is_forgotten_when_another_project_opens(driver, base_url, tmp_path):
+    fault = link_of(json.loads(CONVEYOR_FAULT.read_text()), tmp_path)
+    open_link(driver, base_url, fault)
+    Select(el(driver, "fault-report-signal")).select_by_value("infeed")
+    Select(el(driver, "fault-report-kind")).select_by_value("stuck 0")
+    assert report(driver) == ["infeed", "stuck 0"]
+    # Another project, then the exercise again: nothing named.
+    driver.get(f"{base_url}/#{link_of(books_conveyor_without_its_plant(), tmp_path)}")
+    wait(driver, lambda: not drawn(driver, "fault-report"), message="the other project opens")
+    driver.get(f"{base_url}/#{fault}")
+    wait(driver, lambda: drawn(driver, "fault-report"), message="the exercise again")
+    assert report(driver) == ["", ""]
 
 
 def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(driver, base_url, tmp_path):

@@ -33,6 +33,12 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
                 operate(&|plc| {
                     let _ = plc.apply(Command::PowerCycle);
                 });
+                // Its plant back at its start with it (issue #52).
+                ctx.with_rig(|machine, rig| {
+                    if let Some(rig) = rig {
+                        rig.power_cycle(machine);
+                    }
+                });
                 ctx.live.powered_off.set(true);
             } else {
                 operate(&|plc| {

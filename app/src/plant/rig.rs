@@ -314,6 +314,21 @@ impl Rig for PlantRig {
         self.shown_of(&plant, &values, false, ms(at))
     }
 
+    fn power_cycle(&mut self, machine: &mut dyn Plc) {
+        // The alarms said stay in the dock's list (they happened); their
+        // count, `PLANT.alarms`, starts again as the engine's does.
+        let now = machine.now();
+        self.plant.reset();
+        self.origin = now;
+        self.jogged = 0;
+        self.alarm_count = 0;
+        self.next_step = now.saturating_add(STEP);
+        self.written.iter_mut().for_each(|w| *w = None);
+        self.sense(machine, now);
+        self.note(now);
+        self.history.step(now, 0, &self.plant, true);
+    }
+
     fn series(&self, name: &str, times: &[SimTime]) -> Option<Vec<Option<i64>>> {
         let rest = name
             .strip_prefix(self.plant.info().name)?

@@ -233,3 +233,32 @@ fn the_tank_couples_on_the_io86a_by_default_with_its_level_left_open() {
     let level = rig.show(&m).signals.into_iter().find(|s| s.name == "level");
     assert_eq!(level.and_then(|s| s.device), None);
 }
+
+#[test]
+fn a_power_cycle_puts_the_plant_back_at_its_start() {
+    let mut m = minasec(CONVEYOR);
+    let mut rig = rig::build(&setup("conveyor"), &mut m).unwrap();
+    rig.advance(&mut m, SimTime::from_secs(30));
+    let before = rig.show(&m);
+    assert!(quantity(&before, "delivered") >= 1, "{before:?}");
+    let at = m.now();
+    m.apply(Command::PowerCycle).unwrap();
+    rig.power_cycle(&mut m);
+    let after = rig.show(&m);
+    for q in ["placed", "delivered", "on_belt"] {
+        assert_eq!(quantity(&after, q), 0, "{q}: {after:?}");
+    }
+    // The chart shows the drop at the cycle; before it, the plant as it was.
+    let delivered = rig.series("conveyor.delivered", &[at - SimTime::from_millis(1), at]);
+    assert_eq!(
+        delivered,
+        Some(vec![Some(quantity(&before, "delivered")), Some(0)])
+    );
+    // It runs from its start again: the first part arrives as at power-on
+    // (239 ms with seed 1), on the machine's clock from the cycle.
+    m.apply(Command::Run(true)).unwrap();
+    rig.advance(&mut m, SimTime::from_millis(238));
+    assert_eq!(quantity(&rig.show(&m), "placed"), 0);
+    rig.advance(&mut m, SimTime::from_millis(2));
+    assert_eq!(quantity(&rig.show(&m), "placed"), 1);
+}
