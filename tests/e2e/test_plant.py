@@ -279,6 +279,50 @@ def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(drive
     assert el(driver, "wiring-device-level").get_attribute("value") == ""
 
 
+def test_the_wiring_refusal_is_said_in_japanese_at_its_row(driver, base_url, tmp_path):
+    fragment = link_of(fill_always(), tmp_path)
+    open_fresh(driver, base_url, lang="ja")
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "cell-0-0-0", reveal=False), message="the ladder opens")
+    choose(driver, "tank")
+    level = el(driver, "wiring-device-level")
+    level.send_keys("X04")
+    driver.execute_script("arguments[0].dispatchEvent(new Event('change', {bubbles: true}))", level)
+    el(driver, "wiring-apply").click()
+    refusal = el(driver, "wiring-refusal-level")
+    wait(driver, lambda: refusal.is_displayed(), message="refused at its row")
+    assert "アナログ入力ではありません" in refusal.text, refusal.text
+    assert "analog" not in refusal.text, refusal.text
+
+
+def test_a_parameter_is_set_in_the_dock_kept_in_the_link_and_refused_out_of_range(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    speed = el(driver, "plant-param-speed")
+    assert speed.get_attribute("value") == "250"
+    # Out of range: said at the field, the project as it was.
+    speed.clear()
+    speed.send_keys("20000", Keys.TAB)
+    refusal = el(driver, "plant-param-refusal-speed")
+    wait(driver, lambda: refusal.is_displayed(), message="refused at its field")
+    assert "out of range (1..10000 mm/s)" in refusal.text, refusal.text
+    assert el(driver, "plant-param-speed").get_attribute("aria-invalid") == "true"
+    speed = el(driver, "plant-param-speed")
+    speed.clear()
+    speed.send_keys("1000", Keys.TAB)
+    wait(driver, lambda: not el(driver, "plant-param-refusal-speed").is_displayed())
+    # Kept in the share link: in a fresh profile the link opens with it.
+    el(driver, "share").click()
+    wait(driver, lambda: el(driver, "share-copied").text, message="Share says the link was copied")
+    link = el(driver, "share-url").get_attribute("value")
+    open_fresh(driver, base_url)
+    driver.get(link)
+    wait(driver, lambda: el(driver, "cell-0-0-0", reveal=False), message="the ladder opens")
+    wait(driver, lambda: el(driver, "plant-param-speed").get_attribute("value") == "1000",
+         message="the link keeps the belt's speed")
+    assert severe_console_messages(driver) == []
+
+
 @pytest.mark.first_visit
 def test_the_books_conveyor_exercise_from_the_start_screen_drawn_by_keys_passes(driver, base_url):
     from test_classroom import result

@@ -1,7 +1,8 @@
 //! The plant's wiring refusals in the page's language (issue #52), from
 //! their kind ([`WireError`]) as the alarms are (`super::plant`): the
 //! signal and device names stay as written (what a wiring file says), the
-//! machine's own refusal is said as the page says it elsewhere.
+//! machine's own refusal is said as the page says it elsewhere. And the
+//! dock's parameters: their strings, their refusals.
 
 use engine::error::shown;
 use engine::plant::error::PlantError;
@@ -9,6 +10,53 @@ use engine::plant::wiring::WireError;
 
 use super::Lang;
 use crate::rig::Refusal;
+
+/// The parameters' strings.
+pub struct ParamTexts {
+    /// The section's heading.
+    pub params: &'static str,
+    /// What a value does (and an empty one).
+    pub params_note: &'static str,
+}
+
+const EN: ParamTexts = ParamTexts {
+    params: "Parameters",
+    params_note:
+        "Each as hashigo --set takes it (empty: its default). A new value starts the plant again.",
+};
+
+const JA: ParamTexts = ParamTexts {
+    params: "パラメーター",
+    params_note:
+        "hashigo の --set と同じ書き方です (空欄は既定値)。値を変えるとプラントは最初から動きます。",
+};
+
+/// The parameters' strings in `lang`.
+pub fn texts(lang: Lang) -> &'static ParamTexts {
+    match lang {
+        Lang::Ja => &JA,
+        Lang::En => &EN,
+    }
+}
+
+/// Why a parameter's value is refused, in `lang`.
+pub fn param_error(lang: Lang, e: &PlantError) -> String {
+    match (lang, e) {
+        (Lang::Ja, PlantError::OutOfRange { key, value, range }) => {
+            format!("{key} = {value} は範囲外です ({range})")
+        }
+        (Lang::Ja, PlantError::NotANumber { key, text, range }) => {
+            format!(
+                "{key} には整数を入れます ({range})。{} は使えません",
+                shown(text)
+            )
+        }
+        (Lang::Ja, PlantError::Together(words)) => {
+            format!("ほかのパラメーターと合いません: {words}")
+        }
+        _ => e.to_string(),
+    }
+}
 
 /// A refusal of the plant's setup, as the dock says it.
 pub fn refusal(lang: Lang, r: &Refusal) -> String {

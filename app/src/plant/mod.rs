@@ -13,6 +13,7 @@ mod draw;
 mod faults;
 mod history;
 mod manual;
+mod params;
 mod rig;
 mod series;
 mod wiring;
