@@ -202,19 +202,25 @@ impl LadderCtx {
     /// The plant's value of each watched name (`tank.level`) at the scan
     /// shown, for the watch table (issue #52); none without a plant.
     fn read_plant_watch(&self) {
+        // Nothing to ask (the usual case): no reading, no allocation.
+        let dotted = (self.live.watch).with_untracked(|w| w.iter().any(|n| n.contains('.')));
+        if !dotted {
+            if !self.live.plant_watch.with_value(Vec::is_empty) {
+                self.live.plant_watch.set_value(Vec::new());
+            }
+            return;
+        }
         let names = self.live.watch.get_untracked();
         let mut values = vec![None; names.len()];
-        if names.iter().any(|n| n.contains('.')) {
-            let at = self.recorded(|t| t.plc().now()).unwrap_or_default();
-            self.with_rig(|_, rig| {
-                let Some(rig) = rig else { return };
-                for (v, name) in values.iter_mut().zip(&names) {
-                    *v = rig
-                        .series(name, &[at])
-                        .and_then(|s| s.first().copied().flatten());
-                }
-            });
-        }
+        let at = self.recorded(|t| t.plc().now()).unwrap_or_default();
+        self.with_rig(|_, rig| {
+            let Some(rig) = rig else { return };
+            for (v, name) in values.iter_mut().zip(&names) {
+                *v = rig
+                    .series(name, &[at])
+                    .and_then(|s| s.first().copied().flatten());
+            }
+        });
         self.live.plant_watch.set_value(values);
     }
 
