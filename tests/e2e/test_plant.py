@@ -289,7 +289,7 @@ def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(drive
     assert el(driver, "wiring-device-level").get_attribute("value") == ""
 
 
-def test_the_wiring_refusal_is_said_in_japanese_at_its_row(driver, base_url, tmp_path):
+def test_the_wiring_refusal_is_said_in_japanese_at_its_row(driver, base_url, tmp_path, artifacts):
     fragment = link_of(fill_always(), tmp_path)
     open_fresh(driver, base_url, lang="ja")
     driver.get(f"{base_url}/#{fragment}")
@@ -303,9 +303,11 @@ def test_the_wiring_refusal_is_said_in_japanese_at_its_row(driver, base_url, tmp
     wait(driver, lambda: refusal.is_displayed(), message="refused at its row")
     assert "アナログ入力ではありません" in refusal.text, refusal.text
     assert "analog" not in refusal.text, refusal.text
+    driver.save_screenshot(str(artifacts / "plant-wiring-refused-ja.png"))
 
 
-def test_a_parameter_is_set_in_the_dock_kept_in_the_link_and_refused_out_of_range(driver, base_url, tmp_path):
+def test_a_parameter_is_set_in_the_dock_kept_in_the_link_and_refused_out_of_range(driver, base_url, tmp_path,
+                                                                                   artifacts):
     open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
     choose(driver, "conveyor")
     speed = el(driver, "plant-param-speed")
@@ -317,6 +319,9 @@ def test_a_parameter_is_set_in_the_dock_kept_in_the_link_and_refused_out_of_rang
     wait(driver, lambda: refusal.is_displayed(), message="refused at its field")
     assert "out of range (1..10000 mm/s)" in refusal.text, refusal.text
     assert el(driver, "plant-param-speed").get_attribute("aria-invalid") == "true"
+    driver.execute_script(
+        "document.querySelector('[data-testid=plant-params]').scrollIntoView({block: 'center'})")
+    driver.save_screenshot(str(artifacts / "plant-param-refused.png"))
     speed = el(driver, "plant-param-speed")
     speed.clear()
     speed.send_keys("1000", Keys.TAB)
