@@ -27,6 +27,14 @@ pub trait Rig {
     /// What the dock draws while time travel shows the scan that ended
     /// at `at`: the plant as it was then.
     fn show_at(&self, at: SimTime) -> Shown;
+    /// The plant device `name` (`tank.level`, `conveyor.motor`,
+    /// `tank.alarms`: what `hashigo test` reads) at each of `times`, as
+    /// the plant stood after its last step at or before it (`None`: not
+    /// kept); `None` when the plant has no such device.
+    fn series(&self, name: &str, times: &[SimTime]) -> Option<Vec<Option<i64>>>;
+    /// The machine's power went off and on: the plant back at its start
+    /// (as `hashigo`'s power cycle puts it), from the machine's time now.
+    fn power_cycle(&mut self, machine: &mut dyn Plc);
     /// Unwires: the inputs the plant drove are released.
     fn detach(&mut self, machine: &mut dyn Plc);
 }
@@ -35,7 +43,18 @@ pub trait Rig {
 pub type RigSlot = Option<Box<dyn Rig>>;
 
 /// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
-pub type Refusals = Vec<(usize, String)>;
+pub type Refusals = Vec<(usize, Refusal)>;
+
+/// Why a setup is refused: a wiring row's kind (said in the page's
+/// language, `crate::i18n::plant_wiring`), or the engine's words (a
+/// parameter, a fault, a plant's own check).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Refusal {
+    /// A wiring row the plant and the machine do not take.
+    Wire(engine::plant::wiring::WireError),
+    /// Said as the engine says it.
+    Said(String),
+}
 
 /// Couples a setup's plant to a machine, or refuses.
 pub type Build = fn(&PlantSetup, &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals>;

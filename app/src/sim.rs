@@ -195,6 +195,14 @@ impl<M: Plc + Clone> Simulator<M> {
         (&mut self.machine, &mut self.rig)
     }
 
+    /// After the machine's power went off and on: its plant (if any)
+    /// back at its start (issue #52).
+    pub fn power_cycled(&mut self) {
+        if let Some(rig) = self.rig.as_mut() {
+            rig.power_cycle(&mut self.machine);
+        }
+    }
+
     /// Advances the machine by `dt`, with its plant if it has one.
     fn tick(&mut self, dt: SimTime) {
         match self.rig.as_mut() {

@@ -7,8 +7,10 @@ signal on MINASEC-U at its row. Screenshots on a laptop and a phone."""
 import json
 import re
 import subprocess
+import time
 
 import pytest
+from selenium.common.exceptions import ElementNotInteractableException
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
@@ -18,6 +20,8 @@ from test_app import drawn, el, open_fresh, severe_console_messages, wait
 from test_ladder import HASHIGO, ROOT, focus_ladder, keys, place
 
 CONVEYOR = ROOT / "engine" / "programs" / "minasec-u" / "conveyor.json"
+IO86A_TANK = ROOT / "engine" / "programs" / "io86a" / "tank.json"
+CONVEYOR_FAULT = ROOT / "engine" / "programs" / "minasec-u" / "conveyor-fault.json"
 
 
 def link_of(project, tmp_path):
@@ -42,7 +46,15 @@ def fill_always():
 
 
 def choose(driver, plant):
-    Select(el(driver, "plant-select")).select_by_value(plant)
+    def chose():
+        # A project's Tests pane may take the dock's tab just after the
+        # select was revealed: revealed again until it takes the choice.
+        try:
+            Select(el(driver, "plant-select")).select_by_value(plant)
+            return True
+        except ElementNotInteractableException:
+            return False
+    wait(driver, chose, message="the plant select takes the choice")
     # The plants are a part fetched at the first choice.
     wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="wiring"]'),
          message="the plants' part arrives")
@@ -148,6 +160,114 @@ def test_a_ladder_that_keeps_fill_on_raises_the_tanks_overflow_alarm(driver, bas
     assert el(driver, "plant-level").text == "100 %"
 
 
+def watched(driver, name):
+    return el(driver, f"watch-{name}").find_element(By.CSS_SELECTOR, ".watch-value").text
+
+
+def test_the_chart_and_watch_draw_the_plants_quantities_and_signals(driver, base_url, tmp_path):
+    """Issue #52: the plant's devices by the names hashigo test reads
+    (`tank.level`, `tank.fill`), per scan from the plant's own record."""
+    open_link(driver, base_url, link_of(fill_always(), tmp_path))
+    choose(driver, "tank")
+    el(driver, "watch-input").send_keys("tank.level", Keys.ENTER)
+    for name in ["tank.level", "tank.fill", "tank.alarms"]:
+        el(driver, "chart-add").send_keys(name, Keys.ENTER)
+    # Not refused as a device the machine lacks.
+    assert not driver.find_element(By.CSS_SELECTOR, ".chart-error").text
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: watched(driver, "tank.level") not in ("?", "") and int(watched(driver, "tank.level")) >= 70,
+         timeout=30, message="Watch follows the level")
+    wait(driver, lambda: "overflow" in el(driver, "plant-alarm").text, timeout=30)
+    el(driver, "pause").click()
+    row = el(driver, "chart-row-tank.level")
+    wait(driver, lambda: int(row.get_attribute("data-scans")) > 0, message="the level is drawn")
+    assert row.get_attribute("data-shape") == "bands"
+    assert el(driver, "chart-row-tank.fill").get_attribute("data-shape") == "bits"
+    assert int(el(driver, "chart-row-tank.alarms").get_attribute("data-rises")) == 1
+    # At an earlier scan the dock, Watch and the chart say the same level.
+    last = int(el(driver, "timeline").get_attribute("max"))
+    seek(driver, last // 3)
+    wait(driver, lambda: el(driver, "chart-value-tank.level").text, message="the chart at that scan")
+    charted = el(driver, "chart-value-tank.level").text
+    assert 50 <= int(charted) < 100, charted
+    wait(driver, lambda: str(quantity(driver, "level")) == charted, message="the dock at that scan")
+    wait(driver, lambda: watched(driver, "tank.level") == charted, message="Watch at that scan")
+    assert severe_console_messages(driver) == []
+
+
+def figures(driver):
+    """The plants drawn in the dock now (by their figure's test id)."""
+    return sorted(e.get_attribute("data-testid") for e in driver.find_elements(
+        By.CSS_SELECTOR, '[data-testid="plant"] [data-testid^="plant-"][role="img"]'))
+
+
+def chosen(driver):
+    return Select(el(driver, "plant-select")).first_selected_option.get_attribute("value")
+
+
+def test_the_dock_draws_the_plant_of_the_project_shown_or_none(driver, base_url, tmp_path):
+    """Regression: an IO86A link opened while the conveyor ran on
+    MINASEC-U left the conveyor drawn under the link's Tank."""
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    assert figures(driver) == ["plant-conveyor"]
+    tank = json.loads(IO86A_TANK.read_text())
+    driver.get(f"{base_url}/#{link_of(tank, tmp_path)}")
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "io86a",
+         message="the link's machine is shown")
+    wait(driver, lambda: figures(driver) == ["plant-tank"], timeout=20,
+         message="the link's tank is drawn")
+    assert chosen(driver) == "tank"
+    # The same machine's link without a plant: none drawn.
+    tank.pop("plant")
+    tank["ladder"]["rungs"] = tank["ladder"]["rungs"][:1]
+    driver.get(f"{base_url}/#{link_of(tank, tmp_path)}")
+    wait(driver, lambda: chosen(driver) == "", message="the link has no plant")
+    wait(driver, lambda: figures(driver) == [], message="nothing drawn")
+    # Back on MINASEC-U by a link with no plant: none either.
+    driver.get(f"{base_url}/#{link_of(fill_always(), tmp_path)}")
+    wait(driver, lambda: el(driver, "machine").get_attribute("value") == "minasec-u")
+    wait(driver, lambda: chosen(driver) == "" and figures(driver) == [],
+         message="no plant on MINASEC-U")
+    assert severe_console_messages(driver) == []
+
+
+def test_the_power_switch_puts_the_plant_back_at_its_start(driver, base_url, tmp_path):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    Select(el(driver, "speed")).select_by_value("10")
+    el(driver, "run").click()
+    wait(driver, lambda: quantity(driver, "delivered") >= 1, timeout=30, message="a part is delivered")
+    el(driver, "pause").click()
+    # MINASEC-U's power switch off and on: a power cycle.
+    el(driver, "power").click()
+    el(driver, "power").click()
+    wait(driver, lambda: quantity(driver, "placed") == 0 and quantity(driver, "delivered") == 0,
+         message="the plant at its start")
+    assert part_places(driver) == []
+    assert severe_console_messages(driver) == []
+
+
+def report(driver):
+    return [Select(el(driver, f"fault-report-{part}")).first_selected_option.get_attribute("value")
+            for part in ("signal", "kind")]
+
+
+def test_the_fault_report_is_forgotten_when_another_project_opens(driver, base_url, tmp_path):
+    fault = link_of(json.loads(CONVEYOR_FAULT.read_text()), tmp_path)
+    open_link(driver, base_url, fault)
+    Select(el(driver, "fault-report-signal")).select_by_value("infeed")
+    Select(el(driver, "fault-report-kind")).select_by_value("stuck 0")
+    assert report(driver) == ["infeed", "stuck 0"]
+    # Another project, then the exercise again: nothing named.
+    driver.get(f"{base_url}/#{link_of(books_conveyor_without_its_plant(), tmp_path)}")
+    wait(driver, lambda: not drawn(driver, "fault-report"), message="the other project opens")
+    driver.get(f"{base_url}/#{fault}")
+    wait(driver, lambda: drawn(driver, "fault-report"), message="the exercise again")
+    assert report(driver) == ["", ""]
+
+
 def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(driver, base_url, tmp_path):
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")
@@ -167,6 +287,55 @@ def test_the_wiring_table_refuses_an_analog_signal_on_minasec_u_at_its_row(drive
     wait(driver, lambda: not el(driver, "wiring-refusal-level").is_displayed(),
          message="the default wiring is taken")
     assert el(driver, "wiring-device-level").get_attribute("value") == ""
+
+
+def test_the_wiring_refusal_is_said_in_japanese_at_its_row(driver, base_url, tmp_path, artifacts):
+    fragment = link_of(fill_always(), tmp_path)
+    open_fresh(driver, base_url, lang="ja")
+    driver.get(f"{base_url}/#{fragment}")
+    wait(driver, lambda: el(driver, "cell-0-0-0", reveal=False), message="the ladder opens")
+    choose(driver, "tank")
+    level = el(driver, "wiring-device-level")
+    level.send_keys("X04")
+    driver.execute_script("arguments[0].dispatchEvent(new Event('change', {bubbles: true}))", level)
+    el(driver, "wiring-apply").click()
+    refusal = el(driver, "wiring-refusal-level")
+    wait(driver, lambda: refusal.is_displayed(), message="refused at its row")
+    assert "アナログ入力ではありません" in refusal.text, refusal.text
+    assert "analog" not in refusal.text, refusal.text
+    driver.save_screenshot(str(artifacts / "plant-wiring-refused-ja.png"))
+
+
+def test_a_parameter_is_set_in_the_dock_kept_in_the_link_and_refused_out_of_range(driver, base_url, tmp_path,
+                                                                                   artifacts):
+    open_link(driver, base_url, link_of(books_conveyor_without_its_plant(), tmp_path))
+    choose(driver, "conveyor")
+    speed = el(driver, "plant-param-speed")
+    assert speed.get_attribute("value") == "250"
+    # Out of range: said at the field, the project as it was.
+    speed.clear()
+    speed.send_keys("20000", Keys.TAB)
+    refusal = el(driver, "plant-param-refusal-speed")
+    wait(driver, lambda: refusal.is_displayed(), message="refused at its field")
+    assert "out of range (1..10000 mm/s)" in refusal.text, refusal.text
+    assert el(driver, "plant-param-speed").get_attribute("aria-invalid") == "true"
+    driver.execute_script(
+        "document.querySelector('[data-testid=plant-params]').scrollIntoView({block: 'center'})")
+    driver.save_screenshot(str(artifacts / "plant-param-refused.png"))
+    speed = el(driver, "plant-param-speed")
+    speed.clear()
+    speed.send_keys("1000", Keys.TAB)
+    wait(driver, lambda: not el(driver, "plant-param-refusal-speed").is_displayed())
+    # Kept in the share link: in a fresh profile the link opens with it.
+    el(driver, "share").click()
+    wait(driver, lambda: el(driver, "share-copied").text, message="Share says the link was copied")
+    link = el(driver, "share-url").get_attribute("value")
+    open_fresh(driver, base_url)
+    driver.get(link)
+    wait(driver, lambda: el(driver, "cell-0-0-0", reveal=False), message="the ladder opens")
+    wait(driver, lambda: el(driver, "plant-param-speed").get_attribute("value") == "1000",
+         message="the link keeps the belt's speed")
+    assert severe_console_messages(driver) == []
 
 
 @pytest.mark.first_visit
@@ -283,5 +452,32 @@ def test_the_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
         level = quantity(driver, "level")
         assert el(driver, "plant-level").text == f"{level} %"
         driver.save_screenshot(str(artifacts / f"plant-tank-{name}.png"))
+    finally:
+        driver.quit()
+
+
+@pytest.mark.parametrize("name", ["laptop", "phone"])
+def test_each_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name):
+    """Screenshots of every plant in the dock (and above the ladder on a
+    phone), running a few seconds under an empty ladder, with its
+    parameters; no sideways overflow."""
+    from test_screens import no_sideways_overflow, screen_driver
+
+    fragment = link_of(fill_always(), tmp_path)
+    driver = screen_driver(tmp_path, name)
+    try:
+        open_link(driver, base_url, fragment)
+        Select(el(driver, "speed")).select_by_value("10")
+        el(driver, "run").click()
+        for plant in ["conveyor", "tank", "traffic", "door", "sorter", "room-light"]:
+            choose(driver, plant)
+            wait(driver, lambda: chosen(driver) == plant)
+            wait(driver, lambda: drawn(driver, "plant-params"), message=f"{plant}'s parameters")
+            time.sleep(1.5)
+            driver.execute_script(
+                "document.querySelector('[data-testid=plant]').scrollIntoView({block: 'start'})")
+            assert no_sideways_overflow(driver), plant
+            driver.save_screenshot(str(artifacts / f"plant-each-{plant}-{name}.png"))
+        assert severe_console_messages(driver) == []
     finally:
         driver.quit()

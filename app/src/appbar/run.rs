@@ -13,6 +13,20 @@ use crate::editor::LadderCtx;
 use crate::sim::Speed;
 use crate::state::Ctx;
 
+/// Stop on a machine with no RUN switch: its power switch, off (a power
+/// cycle, which puts its plant back at its start, issue #52).
+fn power_off(ctx: LadderCtx) {
+    ctx.operate(|plc| {
+        let _ = plc.apply(Command::PowerCycle);
+    });
+    ctx.with_rig(|machine, rig| {
+        if let Some(rig) = rig {
+            rig.power_cycle(machine);
+        }
+    });
+    ctx.live.powered_off.set(true);
+}
+
 /// Run, Stop, the step buttons and Pause for `ctx`'s machine.
 #[component]
 pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
@@ -30,10 +44,7 @@ pub fn RunControls(ctx: LadderCtx) -> impl IntoView {
         if runs() {
             if !kind.target().stoppable() {
                 // No RUN switch: Stop is the power switch.
-                operate(&|plc| {
-                    let _ = plc.apply(Command::PowerCycle);
-                });
-                ctx.live.powered_off.set(true);
+                power_off(ctx);
             } else {
                 operate(&|plc| {
                     let _ = plc.apply(Command::Run(false));

@@ -195,7 +195,33 @@ impl LadderCtx {
             return;
         };
         link.refresh_panel();
+        self.read_plant_watch();
         self.with_plc(|plc| self.show_live(plc));
+    }
+
+    /// The plant's value of each watched name (`tank.level`) at the scan
+    /// shown, for the watch table (issue #52); none without a plant.
+    fn read_plant_watch(&self) {
+        // Nothing to ask (the usual case): no reading, no allocation.
+        let dotted = (self.live.watch).with_untracked(|w| w.iter().any(|n| n.contains('.')));
+        if !dotted {
+            if !self.live.plant_watch.with_value(Vec::is_empty) {
+                self.live.plant_watch.set_value(Vec::new());
+            }
+            return;
+        }
+        let names = self.live.watch.get_untracked();
+        let mut values = vec![None; names.len()];
+        let at = self.recorded(|t| t.plc().now()).unwrap_or_default();
+        self.with_rig(|_, rig| {
+            let Some(rig) = rig else { return };
+            for (v, name) in values.iter_mut().zip(&names) {
+                *v = rig
+                    .series(name, &[at])
+                    .and_then(|s| s.first().copied().flatten());
+            }
+        });
+        self.live.plant_watch.set_value(values);
     }
 
     /// One animation frame for this editor's machine: `wall_ms` of wall
@@ -233,6 +259,7 @@ impl LadderCtx {
         super::why::follow(*self);
         let history = self.take_history().unwrap_or_default();
         self.show_pulses(&history);
+        self.read_plant_watch();
         self.with_plc(|plc| {
             if self.recording() {
                 self.observe(plc);

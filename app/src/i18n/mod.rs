@@ -11,6 +11,7 @@ pub mod keymap;
 pub mod parts;
 pub mod plant;
 pub mod plant_faults;
+pub mod plant_wiring;
 pub mod st;
 pub mod start;
 pub mod words;

@@ -242,29 +242,8 @@ mod tests {
 
     #[test]
     fn every_alarm_is_said_in_japanese_from_its_kind_and_numbers() {
-        let kinds = [
-            AlarmKind::BeltTooSoon {
-                since: 301,
-                guard: 1000,
-            },
-            AlarmKind::Overflow,
-            AlarmKind::CarsOnWalk { green: true },
-            AlarmKind::CarsOnWalk { green: false },
-            AlarmKind::BothWays,
-            AlarmKind::AgainstLimit {
-                up: true,
-                grace: 200,
-            },
-            AlarmKind::AgainstLimit {
-                up: false,
-                grace: 7,
-            },
-            AlarmKind::ClosingOnEye { grace: 200 },
-            AlarmKind::PusherHit { tall: true },
-            AlarmKind::PusherHit { tall: false },
-        ];
         let mut said = std::collections::HashSet::new();
-        for kind in kinds {
+        for kind in AlarmKind::SAMPLES {
             let english = kind.to_string();
             let ja = (super::JA.alarm)(&english);
             assert!(!english_in(&ja), "{english}: {ja}");

@@ -104,7 +104,9 @@ impl ArduinoCtx {
                     value: quirk.into(),
                 })?;
                 m.apply(Command::PowerCycle)?;
-                m.apply(Command::Run(true))
+                m.apply(Command::Run(true))?;
+                s.power_cycled();
+                Ok::<(), engine::plc::PlcError>(())
             })
             .is_some_and(|r| r.is_ok());
         self.refresh();

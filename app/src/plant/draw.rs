@@ -10,6 +10,7 @@ use leptos::prelude::*;
 
 use super::faults::Faults;
 use super::manual::Manual;
+use super::params::Params;
 use super::wiring::WiringTable;
 use super::{Plants, Shown, SignalShown};
 use crate::editor::LadderCtx;
@@ -54,6 +55,7 @@ fn PlantView() -> impl IntoView {
                 <Alarm />
             </div>
             <WiringTable ladder />
+            <Params ladder />
             <Manual ladder />
             <Faults ladder />
         </div>

@@ -136,14 +136,14 @@ fn by_hand_the_belt_moves_with_the_machine_stopped_and_run_keeps_it() {
     );
 }
 
-#[test]
-fn the_plant_at_a_past_scan_is_as_it_was_then() {
-    use super::rig;
-    use engine::machines::MinasecPlc;
+/// The book's ladder on MINASEC-U (T1 one second) with the conveyor
+/// coupled by its default wiring, at power-on.
+fn books_conveyor() -> (
+    engine::record::Recorded<engine::machines::MinasecPlc>,
+    Box<dyn super::Rig>,
+) {
     use engine::plc::{Command, Plc};
-    use engine::record::Recorded;
-    use engine::SimTime;
-    let mut m = Recorded::new(MinasecPlc::new());
+    let mut m = engine::record::Recorded::new(engine::machines::MinasecPlc::new());
     m.load_text(CONVEYOR).unwrap();
     let t1 = Command::Setting {
         name: "T1".into(),
@@ -154,7 +154,15 @@ fn the_plant_at_a_past_scan_is_as_it_was_then() {
         name: "conveyor".into(),
         ..PlantSetup::default()
     };
-    let mut rig = rig::build(&setup, &mut m).unwrap();
+    let rig = super::rig::build(&setup, &mut m).unwrap();
+    (m, rig)
+}
+
+#[test]
+fn the_plant_at_a_past_scan_is_as_it_was_then() {
+    use engine::plc::Plc;
+    use engine::SimTime;
+    let (mut m, mut rig) = books_conveyor();
     let mut then = Vec::new();
     for i in 1..=900 {
         rig.advance(&mut m, SimTime::from_millis(100));
@@ -173,23 +181,10 @@ fn the_plant_at_a_past_scan_is_as_it_was_then() {
 
 #[test]
 fn resuming_from_a_past_scan_puts_the_plant_back_as_it_was_there() {
-    use super::rig;
-    use engine::machines::MinasecPlc;
-    use engine::plc::{Command, Plc};
-    use engine::record::{Recorded, TimeTravel};
+    use engine::plc::Plc;
+    use engine::record::TimeTravel;
     use engine::SimTime;
-    let mut m = Recorded::new(MinasecPlc::new());
-    m.load_text(CONVEYOR).unwrap();
-    let t1 = Command::Setting {
-        name: "T1".into(),
-        value: "1s".into(),
-    };
-    m.apply(t1).unwrap();
-    let setup = PlantSetup {
-        name: "conveyor".into(),
-        ..PlantSetup::default()
-    };
-    let mut rig = rig::build(&setup, &mut m).unwrap();
+    let (mut m, mut rig) = books_conveyor();
     for _ in 0..300 {
         rig.advance(&mut m, SimTime::from_millis(100));
     }

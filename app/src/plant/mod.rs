@@ -13,7 +13,9 @@ mod draw;
 mod faults;
 mod history;
 mod manual;
+mod params;
 mod rig;
+mod series;
 mod wiring;
 
 mod above;
@@ -22,7 +24,7 @@ pub use above::PlantAbove;
 use engine::formats::project::PlantSetup;
 use leptos::prelude::*;
 
-pub use crate::rig::{Build, Refusals, Rig, RigSlot, Shown, SignalShown};
+pub use crate::rig::{Build, Refusal, Refusals, Rig, RigSlot, Shown, SignalShown};
 
 use crate::editor::LadderCtx;
 use crate::parts::{Draw, PartMissing};
@@ -95,10 +97,10 @@ impl Plants {
                 });
             }
         });
-        if let Some(shown) = out {
-            if self.shown.with_untracked(|s| s.as_ref() != Some(&shown)) {
-                self.shown.set(Some(shown));
-            }
+        // No rig (none chosen, refused, or the machine still on its
+        // way): nothing drawn, never another workspace's plant.
+        if self.shown.with_untracked(|s| s.as_ref() != out.as_ref()) {
+            self.shown.set(out);
         }
     }
 
@@ -120,6 +122,13 @@ impl Plants {
         let Some(kit) = self.kit.get_untracked() else {
             return;
         };
+        // A machine still on its way (its part): coupled when it comes,
+        // to the setup its project has then.
+        if !ladder.attached() {
+            let plants = *self;
+            ladder.when_attached(move || plants.couple(ladder, ladder.cases.plant.get_untracked()));
+            return;
+        }
         let mut refused = Vec::new();
         ladder.with_rig(|machine, rig| {
             if rig.as_ref().is_some_and(|r| r.setup() == &setup) {

@@ -9,13 +9,14 @@
 use engine::error::Located;
 use engine::events::InputValue;
 use engine::formats::project::PlantSetup;
-use engine::plant::wiring::{self, Wire, WireEntry};
+use engine::plant::wiring::{self, Wire, WireEntry, WireError};
 use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, STEP};
 use engine::plc::{tick_end, Command, Plc};
 use engine::SimTime;
 
 use super::history::History;
-use super::{Refusals, Rig, Shown, SignalShown};
+use super::series::{self, Series};
+use super::{Refusal, Refusals, Rig, Shown, SignalShown};
 
 /// The alarms the dock keeps (the latest).
 const ALARMS_KEPT: usize = 20;
@@ -41,13 +42,17 @@ pub(super) struct PlantRig {
     written: Vec<Option<InputValue>>,
     /// The latest alarms: the machine's time in ms, the message.
     alarms: Vec<(i64, String)>,
+    /// The alarms raised since the start (`PLANT.alarms`).
+    alarm_count: i64,
     raised: Vec<String>,
+    /// Its signals and quantities over time (the chart, Watch).
+    series: Series,
 }
 
 /// Couples `setup`'s plant to `machine`, or the refusals, each at its
 /// wiring row (1-based; 0: the plant, its parameters or faults).
 pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals> {
-    let one = |e: String| vec![(0, e)];
+    let one = |e: String| vec![(0, Refusal::Said(e))];
     let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
         one(format!(
             "no plant {} (the plants: {})",
@@ -83,11 +88,7 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
                 line: i + 1,
             })
             .collect(),
-        None => {
-            let mut entries = wiring::default_wiring(info, machine).0;
-            entries.retain(|e| machine.device(&e.device).is_ok());
-            entries
-        }
+        None => super::wiring::default_entries(info, machine),
     };
     let wires = wiring::check(info, machine, &entries)
         .map_err(|errors| errors.into_iter().map(located).collect::<Vec<_>>())?;
@@ -105,15 +106,18 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
         values: vec![0; n],
         written: vec![None; n],
         alarms: Vec::new(),
+        alarm_count: 0,
         raised: Vec::new(),
+        series: Series::default(),
     };
     rig.sense(machine, now);
+    rig.note(now);
     rig.history.step(now, 0, &rig.plant, true);
     Ok(Box::new(rig))
 }
 
-fn located(e: Located<String>) -> (usize, String) {
-    (e.line, e.error)
+fn located(e: Located<WireError>) -> (usize, Refusal) {
+    (e.line, Refusal::Wire(e.error))
 }
 
 impl PlantRig {
@@ -148,13 +152,21 @@ impl PlantRig {
         self.history.drive(at, &self.values, &outputs);
         self.plant.step(now_ms, &self.values, &mut self.raised);
         for message in self.raised.drain(..) {
+            self.alarm_count += 1;
             if self.alarms.len() == ALARMS_KEPT {
                 self.alarms.remove(0);
             }
             self.alarms.push((ms(at), message));
         }
         self.sense(machine, at);
+        self.note(at);
         self.history.step(at, now_ms, &self.plant, false);
+    }
+
+    /// Notes the plant's devices as they stand after the step at `at`.
+    fn note(&mut self, at: SimTime) {
+        let now = series::values_of(&self.plant, &self.values, self.alarm_count);
+        self.series.note(at, &now);
     }
 
     /// Back to the plant as it was at `at` (the machine resumed from a
@@ -164,7 +176,11 @@ impl PlantRig {
             self.plant = plant;
             self.jogged = clock - (ms(at) - ms(self.origin));
             self.history.cut(at);
+            self.series.cut(at);
             self.alarms.retain(|(t, _)| *t <= ms(at));
+            let info = self.plant.info();
+            let count = info.signals.len() + info.quantities.len();
+            self.alarm_count = self.series.at(count, at).unwrap_or(0);
             // Written again from the plant as it was.
             self.written.iter_mut().for_each(|w| *w = None);
         }
@@ -296,6 +312,29 @@ impl Rig for PlantRig {
             }
         }
         self.shown_of(&plant, &values, false, ms(at))
+    }
+
+    fn power_cycle(&mut self, machine: &mut dyn Plc) {
+        // The alarms said stay in the dock's list (they happened); their
+        // count, `PLANT.alarms`, starts again as the engine's does.
+        let now = machine.now();
+        self.plant.reset();
+        self.origin = now;
+        self.jogged = 0;
+        self.alarm_count = 0;
+        self.next_step = now.saturating_add(STEP);
+        self.written.iter_mut().for_each(|w| *w = None);
+        self.sense(machine, now);
+        self.note(now);
+        self.history.step(now, 0, &self.plant, true);
+    }
+
+    fn series(&self, name: &str, times: &[SimTime]) -> Option<Vec<Option<i64>>> {
+        let rest = name
+            .strip_prefix(self.plant.info().name)?
+            .strip_prefix('.')?;
+        let index = series::index_of(&self.plant, rest)?;
+        Some(self.series.sample(index, times))
     }
 
     fn detach(&mut self, machine: &mut dyn Plc) {

@@ -10,6 +10,7 @@ use engine::record::Recorded;
 use engine::SimTime;
 
 use super::rig;
+use crate::i18n::Lang;
 use crate::sim::{Pace, Simulator, Speed};
 
 const CONVEYOR: &str = include_str!("../../../engine/programs/minasec-u/conveyor.il");
@@ -88,7 +89,13 @@ fn an_analog_signal_on_minasec_u_is_refused_at_its_row() {
     let refused = rig::build(&s, &mut m).err().expect("refused");
     assert_eq!(refused.len(), 1, "{refused:?}");
     assert_eq!(refused[0].0, 2);
-    assert!(refused[0].1.contains("analog"), "{}", refused[0].1);
+    // Said in the page's language from its kind.
+    let said = |lang| crate::i18n::plant_wiring::refusal(lang, &refused[0].1);
+    assert!(said(Lang::En).contains("analog"), "{}", said(Lang::En));
+    assert_eq!(
+        said(Lang::Ja),
+        "tank.level はアナログ信号ですが、X04 はアナログ入力ではありません (minasec-u にはアナログ入力がありません)"
+    );
 }
 
 #[test]
@@ -174,4 +181,84 @@ fn the_tanks_figure_says_its_level_as_the_quantity_does() {
     assert_eq!(super::draw::percent_said(66_600), "66 %");
     assert_eq!(super::draw::percent_said(100_000), "100 %");
     assert_eq!(super::draw::percent_said(999), "0 %");
+}
+
+#[test]
+fn the_chart_and_watch_read_the_plant_as_it_stood_at_each_time() {
+    // The tank's fill kept open: the level rises to full and runs over.
+    let mut m = minasec("000 LDI X07\n001 ST Y00\n");
+    let mut rig = rig::build(&setup("tank"), &mut m).unwrap();
+    let mut seen = Vec::new();
+    for _ in 0..12 {
+        rig.advance(&mut m, SimTime::from_secs(1));
+        seen.push((m.now(), quantity(&rig.show(&m), "level")));
+    }
+    let times: Vec<SimTime> = seen.iter().map(|(t, _)| *t).collect();
+    let level = rig.series("tank.level", &times).expect("a quantity");
+    let expected: Vec<_> = seen.iter().map(|(_, l)| Some(*l)).collect();
+    assert_eq!(level, expected);
+    // 50 % + (8 - 2) %/s for a second, less the first scan (rounded down).
+    assert_eq!(level[0], Some(55));
+    // A signal: the fill valve on from the first scan; `alarms` counts.
+    let fill = rig.series("tank.fill", &times).unwrap();
+    assert!(fill.iter().all(|v| *v == Some(1)), "{fill:?}");
+    let alarms = rig.series("tank.alarms", &times).unwrap();
+    assert_eq!(alarms[7], Some(0), "{alarms:?}");
+    assert_eq!(alarms[9], Some(1), "overflow at about 8.3 s: {alarms:?}");
+    // The high switch (at 80 %) reads 0 at 4 s (73 %), 1 at 6 s (85 %).
+    let high = rig.series("tank.high", &[times[3], times[5]]).unwrap();
+    assert_eq!(high, [Some(0), Some(1)]);
+    // Before the plant was coupled it has no value; no such names.
+    assert_eq!(
+        rig.series("tank.level", &[SimTime::ZERO]),
+        Some(vec![Some(50)])
+    );
+    assert_eq!(rig.series("tank.belt", &times), None);
+    assert_eq!(rig.series("conveyor.level", &times), None);
+    assert_eq!(rig.series("tank", &times), None);
+}
+
+#[test]
+fn the_tank_couples_on_the_io86a_by_default_with_its_level_left_open() {
+    // X04 is analog only in analog mode, which the page's IO86A does
+    // not keep: the default leaves the level unwired, as on MINASEC-U.
+    let mut m = Recorded::new(engine::machines::Io86aPlc::new());
+    let rows = super::wiring::default_rows("tank", &m);
+    let rows: Vec<String> = rows.iter().map(|[s, d]| format!("{s},{d}")).collect();
+    assert_eq!(
+        rows,
+        ["low,X00", "high,X01", "level,", "fill,Y00", "drain,Y01"]
+    );
+    let rig = rig::build(&setup("tank"), &mut m).expect("coupled");
+    let level = rig.show(&m).signals.into_iter().find(|s| s.name == "level");
+    assert_eq!(level.and_then(|s| s.device), None);
+}
+
+#[test]
+fn a_power_cycle_puts_the_plant_back_at_its_start() {
+    let mut m = minasec(CONVEYOR);
+    let mut rig = rig::build(&setup("conveyor"), &mut m).unwrap();
+    rig.advance(&mut m, SimTime::from_secs(30));
+    let before = rig.show(&m);
+    assert!(quantity(&before, "delivered") >= 1, "{before:?}");
+    let at = m.now();
+    m.apply(Command::PowerCycle).unwrap();
+    rig.power_cycle(&mut m);
+    let after = rig.show(&m);
+    for q in ["placed", "delivered", "on_belt"] {
+        assert_eq!(quantity(&after, q), 0, "{q}: {after:?}");
+    }
+    // The chart shows the drop at the cycle; before it, the plant as it was.
+    let delivered = rig.series("conveyor.delivered", &[at - SimTime::from_millis(1), at]);
+    assert_eq!(
+        delivered,
+        Some(vec![Some(quantity(&before, "delivered")), Some(0)])
+    );
+    // It runs from its start again: the first part arrives as at power-on
+    // (239 ms with seed 1), on the machine's clock from the cycle.
+    m.apply(Command::Run(true)).unwrap();
+    rig.advance(&mut m, SimTime::from_millis(238));
+    assert_eq!(quantity(&rig.show(&m), "placed"), 0);
+    rig.advance(&mut m, SimTime::from_millis(2));
+    assert_eq!(quantity(&rig.show(&m), "placed"), 1);
 }

@@ -4,7 +4,8 @@
 //! (kept in projects and share links), which couples the plant anew.
 
 use engine::formats::project::PlantSetup;
-use engine::plant::{any::ALL, wiring, Direction};
+use engine::plant::wiring::{self, WireEntry};
+use engine::plant::{any::ALL, Direction, PlantInfo};
 use engine::plc::Plc;
 use leptos::prelude::*;
 
@@ -12,19 +13,30 @@ use super::Plants;
 use crate::editor::LadderCtx;
 use crate::state::Ctx;
 
+/// The machine's default wiring of `plant` as the page couples it: a
+/// signal whose terminal the machine, as it stands, would refuse is left
+/// unwired (the IO86A's X04 carries the tank's level only in analog
+/// mode, a setting the page's workspace does not keep), as on a machine
+/// with no terminal for it, so the default always couples.
+pub(super) fn default_entries(plant: &PlantInfo, machine: &dyn Plc) -> Vec<WireEntry> {
+    let mut entries = wiring::default_wiring(plant, machine).0;
+    entries.retain(|e| wiring::check(plant, machine, std::slice::from_ref(e)).is_ok());
+    entries
+}
+
 /// The machine's default wiring of plant `name`: `SIGNAL`, `DEVICE` rows,
 /// a signal with no terminal left with an empty device.
 pub(super) fn default_rows(name: &str, machine: &dyn Plc) -> Vec<[String; 2]> {
     let Some(info) = ALL.iter().find(|p| p.name == name) else {
         return Vec::new();
     };
-    let (entries, _) = wiring::default_wiring(info, machine);
+    let entries = default_entries(info, machine);
     info.signals
         .iter()
         .map(|s| {
             let device = entries
                 .iter()
-                .find(|e| e.signal == s.name && machine.device(&e.device).is_ok())
+                .find(|e| e.signal == s.name)
                 .map(|e| e.device.clone())
                 .unwrap_or_default();
             [s.name.to_string(), device]
@@ -80,7 +92,7 @@ pub(super) fn WiringTable(ladder: LadderCtx) -> impl IntoView {
             <p class="wiring-refusal" role="alert" data-testid="wiring-refusal"
                 hidden=move || plants.refusals.with(|r| r.iter().all(|(at, _)| *at != 0))>
                 {move || t().refused}{" "}
-                {move || plants.refusals.with(|r| r.iter().filter(|(at, _)| *at == 0).map(|(_, m)| m.clone()).collect::<Vec<_>>().join("; "))}
+                {move || refusal_at(plants, 0, ctx.lang.get())}
             </p>
             <div class="wiring-actions">
                 <button type="button" data-testid="wiring-apply"
@@ -92,12 +104,13 @@ pub(super) fn WiringTable(ladder: LadderCtx) -> impl IntoView {
     }
 }
 
-/// The refusals said at wiring row `row` (0-based), joined.
-fn refusal_at(plants: Plants, row: usize) -> String {
+/// The refusals said at wiring row `row` (1-based; 0: not a row's) in
+/// `lang`, joined.
+fn refusal_at(plants: Plants, row: usize, lang: crate::i18n::Lang) -> String {
     plants.refusals.with(|r| {
         r.iter()
-            .filter(|(at, _)| *at == row + 1)
-            .map(|(_, m)| m.clone())
+            .filter(|(at, _)| *at == row)
+            .map(|(_, m)| crate::i18n::plant_wiring::refusal(lang, m))
             .collect::<Vec<_>>()
             .join("; ")
     })
@@ -132,7 +145,7 @@ fn WiringRow(
             t().direction_in
         }
     };
-    let refusal = move || refusal_at(plants, i);
+    let refusal = move || refusal_at(plants, i + 1, ctx.lang.get());
     let refused = move || !refusal().is_empty();
     // The engine's name is what wiring files and tests write; the words
     // follow it where the language has its own.

@@ -84,6 +84,31 @@ impl fmt::Display for AlarmKind {
 }
 
 impl AlarmKind {
+    /// Every kind once (each flag both ways), with numbers as a plant
+    /// says them: what the tests of the messages and of their
+    /// translations (the page's Japanese) go through, one list for both.
+    pub const SAMPLES: [AlarmKind; 10] = [
+        AlarmKind::BeltTooSoon {
+            since: 301,
+            guard: 1000,
+        },
+        AlarmKind::Overflow,
+        AlarmKind::CarsOnWalk { green: true },
+        AlarmKind::CarsOnWalk { green: false },
+        AlarmKind::BothWays,
+        AlarmKind::AgainstLimit {
+            up: true,
+            grace: 200,
+        },
+        AlarmKind::AgainstLimit {
+            up: false,
+            grace: 0,
+        },
+        AlarmKind::ClosingOnEye { grace: 200 },
+        AlarmKind::PusherHit { tall: true },
+        AlarmKind::PusherHit { tall: false },
+    ];
+
     /// The kind of an alarm's message, as `Display` said it; `None` for
     /// words no plant says.
     pub fn parse(message: &str) -> Option<AlarmKind> {
@@ -140,28 +165,7 @@ mod tests {
 
     #[test]
     fn every_kind_reads_back_from_its_message() {
-        let kinds = [
-            AlarmKind::BeltTooSoon {
-                since: 301,
-                guard: 1000,
-            },
-            AlarmKind::Overflow,
-            AlarmKind::CarsOnWalk { green: true },
-            AlarmKind::CarsOnWalk { green: false },
-            AlarmKind::BothWays,
-            AlarmKind::AgainstLimit {
-                up: true,
-                grace: 200,
-            },
-            AlarmKind::AgainstLimit {
-                up: false,
-                grace: 0,
-            },
-            AlarmKind::ClosingOnEye { grace: 200 },
-            AlarmKind::PusherHit { tall: true },
-            AlarmKind::PusherHit { tall: false },
-        ];
-        for kind in kinds {
+        for kind in AlarmKind::SAMPLES {
             assert_eq!(AlarmKind::parse(&kind.to_string()), Some(kind), "{kind}");
         }
         for other in [

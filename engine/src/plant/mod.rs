@@ -20,6 +20,7 @@ pub mod room_light;
 pub mod sorter;
 pub mod tank;
 pub mod traffic;
+mod wire_error;
 pub mod wiring;
 
 pub use any::AnyPlant;

@@ -106,7 +106,10 @@ impl<M: Plc> Planted<M> {
                 entries
             }
         };
-        let wires = wiring::check(info, &machine, &entries)?;
+        let wires = wiring::check(info, &machine, &entries).map_err(|errors| {
+            let said = |e: Located<wiring::WireError>| Located::new(e.line, e.error.to_string());
+            errors.into_iter().map(said).collect::<Vec<_>>()
+        })?;
         let n = info.signals.len();
         let now = machine.now();
         let mut planted = Planted {

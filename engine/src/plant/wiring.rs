@@ -4,6 +4,7 @@
 //! names ([`crate::plc::Plc::terminals`]). A signal left out is not
 //! connected.
 
+pub use super::wire_error::WireError;
 use super::{Direction, Kind, PlantInfo};
 use crate::error::{shown, Located};
 use crate::events::InputValue;
@@ -113,25 +114,25 @@ pub fn check(
     plant: &PlantInfo,
     machine: &dyn Plc,
     entries: &[WireEntry],
-) -> Result<Vec<Wire>, Vec<Located<String>>> {
+) -> Result<Vec<Wire>, Vec<Located<WireError>>> {
     let terminals = machine.terminals();
     let mut wires: Vec<Wire> = Vec::new();
     let mut errors = Vec::new();
     for e in entries {
+        let full = || format!("{}.{}", plant.name, e.signal);
         match check_one(plant, machine, &terminals, e) {
-            Ok(w) if wires.iter().any(|o| o.signal == w.signal) => errors.push(Located::new(
-                e.line,
-                format!("{}.{} is wired twice", plant.name, e.signal),
-            )),
+            Ok(w) if wires.iter().any(|o| o.signal == w.signal) => {
+                errors.push(Located::new(e.line, WireError::Twice { full: full() }))
+            }
             Ok(w) if wires.iter().any(|o| o.device == w.device) => errors.push(Located::new(
                 e.line,
-                format!(
-                    "{} carries two signals ({}.{} and another)",
-                    e.device, plant.name, e.signal
-                ),
+                WireError::TwoSignals {
+                    device: e.device.clone(),
+                    full: full(),
+                },
             )),
             Ok(w) => wires.push(w),
-            Err(message) => errors.push(Located::new(e.line, message)),
+            Err(error) => errors.push(Located::new(e.line, error)),
         }
     }
     if errors.is_empty() {
@@ -146,28 +147,27 @@ fn check_one(
     machine: &dyn Plc,
     terminals: &Terminals,
     e: &WireEntry,
-) -> Result<Wire, String> {
-    let signal = plant.signal_named(&e.signal).map_err(|e| e.to_string())?;
+) -> Result<Wire, WireError> {
+    let signal = plant.signal_named(&e.signal).map_err(WireError::Signal)?;
     let info = &plant.signals[signal];
     let full = format!("{}.{}", plant.name, info.name);
     let device = machine
         .device(&e.device)
-        .map_err(|err| format!("{full} on {}: {err}", shown(&e.device)))?;
-    let machine_name = machine.id().name();
+        .map_err(|error| WireError::NoDevice {
+            full: full.clone(),
+            device: e.device.clone(),
+            error,
+        })?;
     let mut scale = None;
     match (info.direction, info.kind) {
         (Direction::In, Kind::Analog) => {
             let Some(s) = terminals.analog_scale(&e.device) else {
-                let has = if terminals.analog.is_empty() {
-                    format!("{machine_name} has no analog input")
-                } else {
-                    let names: Vec<_> = terminals.analog.iter().map(|(n, _)| n.as_str()).collect();
-                    format!("{machine_name}'s analog inputs are {}", names.join(", "))
-                };
-                return Err(format!(
-                    "{full} is an analog signal and {} is not an analog input ({has})",
-                    e.device
-                ));
+                return Err(WireError::NotAnalog {
+                    full,
+                    device: e.device.clone(),
+                    machine: machine.id().name(),
+                    analog: terminals.analog.iter().map(|(n, _)| n.clone()).collect(),
+                });
             };
             let zero = match s {
                 AnalogScale::Millivolts(_) => InputValue::Millivolts(0),
@@ -175,16 +175,16 @@ fn check_one(
             };
             machine
                 .check_input(device, zero)
-                .map_err(|err| format!("{full} on {}: {err}", e.device))?;
+                .map_err(|error| WireError::AnalogRefused {
+                    full: full.clone(),
+                    device: e.device.clone(),
+                    error,
+                })?;
             scale = Some(s);
         }
-        (Direction::In, Kind::Bit) => {
-            machine
-                .check_input(device, InputValue::Int(0))
-                .map_err(|err| {
-                    format!("{full} is a sensor the PLC reads, so it needs an input: {err}")
-                })?
-        }
+        (Direction::In, Kind::Bit) => machine
+            .check_input(device, InputValue::Int(0))
+            .map_err(|error| WireError::SensorNeedsInput { full, error })?,
         (Direction::Out, _) => {
             let inputs = terminals
                 .inputs
@@ -194,10 +194,10 @@ fn check_one(
                 .into_iter()
                 .any(|n| machine.device(n).ok() == Some(device))
             {
-                return Err(format!(
-                    "{full} is an actuator the PLC drives, and {} is an input",
-                    e.device
-                ));
+                return Err(WireError::ActuatorOnInput {
+                    full,
+                    device: e.device.clone(),
+                });
             }
         }
     }

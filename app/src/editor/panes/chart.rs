@@ -13,6 +13,7 @@ use leptos::prelude::*;
 
 use super::chart_window::{self as span, Window};
 use crate::editor::{bands, LadderCtx};
+pub use span::clock;
 
 /// The chart's width in pixels (one column per pixel).
 const WIDTH: usize = 600;
@@ -79,28 +80,6 @@ fn default_devices(ctx: LadderCtx) -> Vec<String> {
         }
     }
     out
-}
-
-/// A simulated time as people read it: seconds with two decimals, the
-/// thousands set apart by a thin space (`20 320.24 s`); below a second,
-/// milliseconds (`16.5 ms`).
-pub fn clock(t: SimTime) -> String {
-    let ns = t.as_nanos();
-    if ns < 1_000_000_000 {
-        let ms = ns as f64 / 1e6;
-        return format!("{} ms", (ms * 10.0).round() / 10.0);
-    }
-    let centis = (ns + 5_000_000) / 10_000_000;
-    let (whole, frac) = (centis / 100, centis % 100);
-    let digits = whole.to_string();
-    let mut grouped = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            grouped.push('\u{2009}');
-        }
-        grouped.push(c);
-    }
-    format!("{grouped}.{frac:02} s")
 }
 
 /// The word "scan" in the page's language.
@@ -177,25 +156,25 @@ impl Chart {
                 return None;
             }
             self.read.set_value(Some(key));
-            let rows = names
-                .iter()
-                .map(|n| {
-                    let values = tr
-                        .series(n, from, end)
-                        .unwrap_or_default()
-                        .into_iter()
-                        .map(|v| v.map(|v| v.as_i64()))
-                        .collect();
-                    (n.clone(), values)
+            // A name the machine lacks may be its plant's (`tank.level`).
+            let mut plant = Vec::new();
+            let rows = (names.iter().enumerate())
+                .map(|(i, n)| match tr.series(n, from, end) {
+                    Ok(values) => (
+                        n.clone(),
+                        values.into_iter().map(|v| v.map(|v| v.as_i64())).collect(),
+                    ),
+                    Err(_) => {
+                        plant.push(i);
+                        (n.clone(), Vec::new())
+                    }
                 })
                 .collect();
-            Some(ChartData {
-                from,
-                times: tr.times(from, end),
-                rows,
-            })
+            let times = tr.times(from, end);
+            Some((ChartData { from, times, rows }, plant))
         });
-        if let Some(fresh) = fresh.flatten() {
+        if let Some((mut fresh, plant)) = fresh.flatten() {
+            span::plant_rows(self.ctx, &mut fresh.rows, &fresh.times, &plant);
             if self.data.with_untracked(|d| *d != fresh) {
                 self.data.set(fresh);
             }
@@ -225,7 +204,14 @@ impl Chart {
         let known = self
             .ctx
             .with_plc(|plc| plc.device(&name).map(|_| ()))
-            .unwrap_or(Ok(()));
+            .unwrap_or(Ok(()))
+            .or_else(|e| {
+                if span::plant_has(self.ctx, &name) {
+                    Ok(())
+                } else {
+                    Err(e)
+                }
+            });
         match known {
             Ok(()) => {
                 self.error.set(None);

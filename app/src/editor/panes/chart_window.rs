@@ -10,6 +10,9 @@
 //! (`TON0.ET`, not the machine's `TON0.v`).
 
 use engine::record::Mark;
+use engine::SimTime;
+
+use crate::editor::LadderCtx;
 
 /// The most scans shown until the user zooms (a fast machine records a
 /// million scans in a minute; every redraw reads those in view).
@@ -89,6 +92,59 @@ pub fn row_name(pins: &[(String, String)], device: &str) -> String {
     pins.iter()
         .find(|(d, _)| d.eq_ignore_ascii_case(device))
         .map_or_else(|| device.to_string(), |(_, shown)| shown.clone())
+}
+
+/// A simulated time as people read it: seconds with two decimals, the
+/// thousands set apart by a thin space (`20 320.24 s`); below a second,
+/// milliseconds (`16.5 ms`).
+pub fn clock(t: SimTime) -> String {
+    let ns = t.as_nanos();
+    if ns < 1_000_000_000 {
+        let ms = ns as f64 / 1e6;
+        return format!("{} ms", (ms * 10.0).round() / 10.0);
+    }
+    let centis = (ns + 5_000_000) / 10_000_000;
+    let (whole, frac) = (centis / 100, centis % 100);
+    let digits = whole.to_string();
+    let mut grouped = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            grouped.push('\u{2009}');
+        }
+        grouped.push(c);
+    }
+    format!("{grouped}.{frac:02} s")
+}
+
+/// Fills rows `which`, names the machine lacks, with the plant's values
+/// at `times` (issue #52: `tank.level`, `conveyor.motor`, as `hashigo
+/// test` reads them; docs/plants.md "In the page"); the others stay empty.
+pub fn plant_rows(
+    ctx: LadderCtx,
+    rows: &mut [(String, Vec<Option<i64>>)],
+    times: &[SimTime],
+    which: &[usize],
+) {
+    if which.is_empty() {
+        return;
+    }
+    ctx.with_rig(|_, rig| {
+        let Some(rig) = rig else { return };
+        for (i, (name, values)) in rows.iter_mut().enumerate() {
+            if which.contains(&i) {
+                if let Some(v) = rig.series(name, times) {
+                    *values = v;
+                }
+            }
+        }
+    });
+}
+
+/// Whether the plant coupled to the machine has a device `name`.
+pub fn plant_has(ctx: LadderCtx, name: &str) -> bool {
+    let mut has = false;
+    ctx.with_rig(|_, rig| has = rig.as_ref().is_some_and(|r| r.series(name, &[]).is_some()));
+    has
 }
 
 #[cfg(test)]

@@ -14,6 +14,8 @@ impl LadderCtx {
     /// follow `work.slate`.
     pub fn clean_slate(&self) {
         self.cases.results.set(Vec::new());
+        // The fault a student named was for the last project's plant.
+        self.cases.report.set((None, None));
         let held = self.live.forced.get_untracked();
         if !held.is_empty() {
             self.operate(|plc| {

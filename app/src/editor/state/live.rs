@@ -19,6 +19,9 @@ pub struct Live {
     /// The watch table's devices and what they show.
     pub watch: RwSignal<Vec<String>>,
     pub watch_values: RwSignal<Vec<String>>,
+    /// Per watched name the machine lacks, its plant's value at the scan
+    /// shown (`tank.level`, issue #52), read before the machine's.
+    pub(crate) plant_watch: StoredValue<Vec<Option<i64>>>,
     /// Each declared variable's value on the machine (the variables
     /// pane), by name; empty before a scan.
     pub variable_values: RwSignal<Vec<(String, String)>>,
@@ -61,6 +64,7 @@ impl Live {
             probe_generation: StoredValue::new(0),
             watch: RwSignal::new(Vec::new()),
             watch_values: RwSignal::new(Vec::new()),
+            plant_watch: StoredValue::new(Vec::new()),
             variable_values: RwSignal::new(Vec::new()),
             io_values: RwSignal::new(Vec::new()),
             clock: RwSignal::new(Clock::default()),
@@ -305,9 +309,11 @@ impl LadderCtx {
     /// Each frame: the watch table's values (a timer's or counter's
     /// current value and preset in brackets).
     fn show_watch(&self, plc: &dyn engine::plc::Plc) {
+        let plant = self.live.plant_watch.get_value();
         let values: Vec<String> = self.live.watch.with_untracked(|w| {
             w.iter()
-                .map(|name| {
+                .enumerate()
+                .map(|(i, name)| {
                     let device = self.handle(plc, name);
                     let value = device.map(|h| plc.read(h));
                     let current = self.current_of(plc, name, device).map(|h| plc.read(h));
@@ -319,7 +325,10 @@ impl LadderCtx {
                         },
                         (Some(v), None) => v.watched(),
                         (None, Some(c)) => c.to_string(),
-                        (None, None) => "?".to_string(),
+                        (None, None) => match plant.get(i) {
+                            Some(Some(v)) => v.to_string(),
+                            _ => "?".to_string(),
+                        },
                     }
                 })
                 .collect()

@@ -97,9 +97,16 @@ impl MinasecCtx {
         let ok = self
             .sim
             .try_update_value(|s| {
-                s.machine_mut()
+                // The panel's switch turned on (from off): a power cycle,
+                // which puts the plant back at its start.
+                let on = matches!(command, Command::Power(true));
+                let ok = (s.machine_mut())
                     .apply(plc::Command::Own(plc::Own::new(command)))
-                    .is_ok()
+                    .is_ok();
+                if ok && on {
+                    s.power_cycled();
+                }
+                ok
             })
             .unwrap_or(false);
         self.refresh();
