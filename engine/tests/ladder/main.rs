@@ -20,6 +20,7 @@ mod soft_plcopen;
 mod soft_seeds;
 mod soft_st;
 mod source_map;
+mod st_boxes;
 mod strategies;
 mod why;
 mod words;

@@ -50,6 +50,8 @@ pub struct StState {
     pub current: RwSignal<Option<usize>>,
     /// A breakpoint stopped the scan (until it runs on).
     pub hit: RwSignal<bool>,
+    /// The ladder, checked again when the text's blocks change.
+    ladder: StoredValue<Option<crate::editor::LadderCtx>>,
 }
 
 impl StState {
@@ -67,7 +69,45 @@ impl StState {
             breakpoints: RwSignal::new(BTreeSet::new()),
             current: RwSignal::new(None),
             hit: RwSignal::new(false),
+            ladder: StoredValue::new(None),
         }
+    }
+
+    /// The ladder the text's function blocks are boxes of: declared from
+    /// the saved text now, if it loads.
+    pub fn attach(&self, ladder: crate::editor::LadderCtx) {
+        self.ladder.set_value(Some(ladder));
+        let text = self.text.get_untracked();
+        if !text.trim().is_empty() {
+            self.declare_blocks(engine::softplc::st::st_blocks(&text).as_ref().ok());
+        }
+    }
+
+    /// The function blocks of a text that loads become the ladder's
+    /// boxes (issue #55; a text with errors leaves the last ones, so a
+    /// box does not fail while its block is being typed); the ladder is
+    /// checked again when they change (a box whose block is gone is an
+    /// error at its cell).
+    pub fn declare_blocks(&self, blocks: Option<&engine::softplc::st::StBlocks>) {
+        let Some(b) = blocks else {
+            return;
+        };
+        let changed = engine::ladder::user_blocks::set(b.blocks.clone(), b.il.clone());
+        if changed {
+            if let Some(ladder) = self.ladder.get_value() {
+                ladder.refresh(false);
+            }
+        }
+    }
+
+    /// Whether Load and Run run the ST text: it is chosen and has a
+    /// `PROGRAM` (a text of blocks only leaves the ladder to run, calling
+    /// them).
+    pub fn runs(&self) -> bool {
+        self.on.get_untracked()
+            && self
+                .text
+                .with_untracked(|t| engine::softplc::st::declares_program(t))
     }
 
     /// Chooses the pane's language, remembered.
