@@ -21,6 +21,7 @@ mod soft_seeds;
 mod soft_st;
 mod source_map;
 mod st_boxes;
+mod st_project;
 mod strategies;
 mod why;
 mod words;
