@@ -235,6 +235,7 @@ fn open_text(
         return;
     }
     let is_xml = start.starts_with('<');
+    let source;
     let (target, ladder, cases) = if is_xml {
         // Another tool's project may need devices for its variables: the
         // import dialog (docs/ladder.md, "Declarations").
@@ -245,6 +246,7 @@ fn open_text(
             Ok(p) => {
                 let target = ladders.map_or(ctx, |l| l.of(p.machine));
                 ctx.page.machine.set(p.machine);
+                source = p.program;
                 (target, p.ladder, (p.tests, p.exercise, p.plant))
             }
             Err(e) => {
@@ -261,6 +263,8 @@ fn open_text(
     }
     // A project file brings its own tests (and exercise), on a clean slate.
     target.show_cases(cases.0, cases.1, cases.2);
+    // Its Structured Text into the soft PLC's pane (issue #55).
+    target.apply_source(source);
     target.save();
 }
 

@@ -520,6 +520,8 @@ crate::parts::part_fn!(
         program.settings = Callback::new(move |()| soft.project_settings());
         program.apply_settings =
             Callback::new(move |settings| soft.apply_project_settings(settings));
+        program.source = Callback::new(move |()| soft.st.source());
+        program.apply_source = Callback::new(move |source| soft.st.take_source(source, soft.sim));
         crate::machines::workspace::wire(
             ladder,
             crate::machines::link(soft.sim, move || soft.refresh()),

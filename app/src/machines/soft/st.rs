@@ -16,6 +16,8 @@ use crate::storage;
 
 /// Where the ST text is saved (`SavedText`).
 const TEXT_KEY: &str = "hashigo.soft-plc.st.v1";
+/// Where the ST text before a project's is set aside.
+const SET_ASIDE_KEY: &str = "hashigo.soft-plc.st.set-aside.v1";
 /// Where the pane's language is saved: `st`, or absent for IL (every
 /// save from before issue #55 reads as IL, as it was).
 const LANGUAGE_KEY: &str = "hashigo.soft-plc.language.v1";
@@ -128,6 +130,32 @@ impl StState {
         self.save();
         self.breakpoints.set(BTreeSet::new());
         self.install_stop(sim);
+        // Its blocks are the ladder's boxes at once, pane shown or not.
+        self.declare_blocks(engine::softplc::st::st_blocks(text).as_ref().ok());
+    }
+
+    /// The ST text as a project keeps it (issue #55); `None` while empty.
+    pub fn source(&self) -> Option<engine::formats::project::ProgramText> {
+        let text = self.text.get_untracked();
+        (!text.trim().is_empty()).then(|| engine::formats::project::ProgramText::st(&text))
+    }
+
+    /// A project's ST text: in the pane, in ST, as a `.st` file opens
+    /// (not loaded until Load or Run); a different text typed before is
+    /// set aside under a key of its own, which the notice names.
+    pub fn take_source(&self, source: engine::formats::project::ProgramText, sim: Sim) {
+        let before = self.text.get_untracked();
+        if before == source.text {
+            return;
+        }
+        if !before.trim().is_empty() {
+            storage::save_to(SET_ASIDE_KEY, &storage::SavedText { program: before });
+            let said = self.page.lang.get_untracked().st().set_aside;
+            self.page
+                .notice
+                .set(Some(format!("{said} {SET_ASIDE_KEY}")));
+        }
+        self.open(&source.text, sim);
     }
 
     /// Saves the ST text.
