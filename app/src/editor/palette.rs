@@ -392,7 +392,8 @@ pub fn Palette(ctx: LadderCtx, on_done: Callback<()>) -> impl IntoView {
     });
     // Made again when the language, the search or the own blocks change.
     let groups = move || {
-        own.track();
+        // Read, not only tracked: a memo recomputes when it is read.
+        own.with(|_| ());
         let lang = ctx.page.lang.get();
         let q = query.get();
         let all = items(ctx.machine, lang);
