@@ -54,6 +54,8 @@ impl Workspaces {
             save: Callback::new(move |()| minasec.save()),
             settings: Callback::new(move |()| minasec.project_settings()),
             apply_settings: Callback::new(move |settings| minasec.apply_project_settings(settings)),
+            source: Callback::new(|()| None),
+            apply_source: Callback::new(|_| ()),
         };
         let ladder = ladders.of(MachineId::MinasecU);
         ladder.attach(machines::link(minasec.sim, move || minasec.refresh()));

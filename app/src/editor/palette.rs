@@ -215,6 +215,42 @@ pub fn items(machine: MachineId, lang: Lang) -> Vec<Item> {
             },
             lacks: s.needs.lacking(machine, &caps, lang),
         })
+        .chain(own_blocks(machine, lang))
+        .collect()
+}
+
+/// The project's own Structured Text function blocks (issue #55), each a
+/// box typed by its instance and inputs: `SCALE scale0 x`.
+fn own_blocks(machine: MachineId, lang: Lang) -> Vec<Item> {
+    use engine::ladder::user_blocks::{declared, intern};
+    if machine != MachineId::SoftPlc {
+        return Vec::new();
+    }
+    declared()
+        .into_iter()
+        .filter(|b| engine::ladder::user_blocks::is_user_block(&b.name))
+        .map(|b| {
+            let pins = |l: &[(String, engine::iec::data::DataType)]| {
+                l.iter()
+                    .map(|(p, _)| p.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            let (ins, outs) = (pins(&b.inputs), pins(&b.outputs));
+            let what = said(("ST function block", "ST ファンクションブロック"), lang);
+            let name = format!("{what} {}({ins}) → {outs}", b.name);
+            Item {
+                id: intern(&format!("st-{}", b.name.to_ascii_lowercase())),
+                symbol: intern(&format!("[{}]", b.name)),
+                name: intern(&name),
+                does: Does::Key(Action::Entry {
+                    kind: Instruction,
+                    branch: false,
+                    prefill: intern(&format!("{} ", b.name)),
+                }),
+                lacks: None,
+            }
+        })
         .collect()
 }
 
@@ -248,11 +284,13 @@ pub enum Group {
     Math,
     MoveConvert,
     Ldmicro,
+    /// The project's own ST blocks.
+    Own,
 }
 
 impl Group {
     /// Every group, in the order shown.
-    pub const ALL: [Group; 7] = [
+    pub const ALL: [Group; 8] = [
         Group::Contacts,
         Group::Coils,
         Group::TimersCounters,
@@ -260,12 +298,14 @@ impl Group {
         Group::Math,
         Group::MoveConvert,
         Group::Ldmicro,
+        Group::Own,
     ];
 
     /// The group of the item with hook `id`.
     pub fn of(id: &str) -> Group {
         match id {
             _ if id.starts_with("ld-") => Group::Ldmicro,
+            _ if id.starts_with("st-") => Group::Own,
             "coil" | "coil-not" | "set" | "reset" | "pls" | "plf" => Group::Coils,
             "timer" | "counter" | "ton" | "tof" | "tp" | "ctu" | "ctd" | "pin" => {
                 Group::TimersCounters
@@ -288,6 +328,7 @@ impl Group {
                 Group::Math => ("Math", "演算"),
                 Group::MoveConvert => ("Move", "転送"),
                 Group::Ldmicro => ("LDmicro", "LDmicro"),
+                Group::Own => ("ST blocks", "ST ブロック"),
             },
             lang,
         )
@@ -343,8 +384,16 @@ pub fn Palette(ctx: LadderCtx, on_done: Callback<()>) -> impl IntoView {
             </button>
         }
     };
-    // Made again when the language or the search changes.
+    // The project's own ST blocks: looked at again after each refresh,
+    // drawn again only when they change.
+    let own = Memo::new(move |_| {
+        ctx.drawing.revision.track();
+        engine::ladder::user_blocks::declared()
+    });
+    // Made again when the language, the search or the own blocks change.
     let groups = move || {
+        // Read, not only tracked: a memo recomputes when it is read.
+        own.with(|_| ());
         let lang = ctx.page.lang.get();
         let q = query.get();
         let all = items(ctx.machine, lang);
@@ -454,9 +503,47 @@ mod tests {
         assert!(!found.contains(&"no"));
         assert_eq!(soft.iter().filter(|i| matches(i, "  ")).count(), soft.len());
         // No group is empty on the soft PLC, the one machine with all.
-        for g in Group::ALL {
+        // The project's own blocks' group is empty until ST declares some.
+        for g in Group::ALL.into_iter().filter(|g| *g != Group::Own) {
             assert!(soft.iter().any(|i| Group::of(i.id) == g), "{g:?}");
         }
+    }
+
+    #[test]
+    fn the_projects_st_blocks_are_boxes_on_the_soft_plc_only() {
+        use engine::iec::data::DataType;
+        use engine::ladder::user_blocks::{set, UserBlock};
+        set(
+            vec![UserBlock {
+                name: "SCALE".into(),
+                inputs: vec![("go".into(), DataType::Bool), ("x".into(), DataType::Int)],
+                outputs: vec![("y".into(), DataType::Int)],
+            }],
+            String::new(),
+        );
+        let soft = items(MachineId::SoftPlc, Lang::En);
+        let own = soft.iter().find(|i| i.id == "st-scale").expect("offered");
+        assert_eq!(Group::of(own.id), Group::Own);
+        assert_eq!(own.symbol, "[SCALE]");
+        assert!(own.name.contains("SCALE(go, x) → y"), "{}", own.name);
+        assert!(matches!(
+            own.does,
+            Does::Key(Action::Entry {
+                prefill: "SCALE ",
+                ..
+            })
+        ));
+        let ja = items(MachineId::SoftPlc, Lang::Ja);
+        assert!(ja
+            .iter()
+            .any(|i| i.id == "st-scale" && i.name.contains("ファンクションブロック")));
+        assert!(!items(MachineId::Io86a, Lang::En)
+            .iter()
+            .any(|i| i.id == "st-scale"));
+        set(Vec::new(), String::new());
+        assert!(!items(MachineId::SoftPlc, Lang::En)
+            .iter()
+            .any(|i| i.id == "st-scale"));
     }
 
     #[test]

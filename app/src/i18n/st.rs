@@ -24,6 +24,9 @@ pub struct St {
     pub keyword: &'static str,
     /// Under the editor: how to reach completion and breakpoints.
     pub hint: &'static str,
+    /// A project's ST replaced the text typed before, kept under a key
+    /// (said after it).
+    pub set_aside: &'static str,
 }
 
 /// In English.
@@ -40,6 +43,7 @@ pub const EN: St = St {
     block: "block",
     keyword: "keyword",
     hint: "Ctrl+Space completes a name; click a line number to set a breakpoint.",
+    set_aside: "The project brought its Structured Text; the text typed before is kept under",
 };
 
 /// 日本語.
@@ -56,4 +60,5 @@ pub const JA: St = St {
     block: "ブロック",
     keyword: "キーワード",
     hint: "Ctrl+Space で名前を補完、行番号をクリックでブレークポイントを設定します。",
+    set_aside: "プロジェクトのストラクチャードテキストを開きました。以前のテキストの保存先:",
 };

@@ -51,6 +51,8 @@ pub fn text_program(
         save: Callback::new(move |()| save()),
         settings: Callback::new(|()| Vec::new()),
         apply_settings: Callback::new(not_applied),
+        source: Callback::new(|()| None),
+        apply_source: Callback::new(|_| ()),
     }
 }
 

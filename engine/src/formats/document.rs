@@ -101,6 +101,14 @@ impl Document {
                     .iter()
                     .map(|(n, v)| (n.clone(), v.clone(), Project::setting_line(text, n)))
                     .collect();
+                // Its Structured Text's blocks are its ladder's boxes (issue
+                // #55); a text that does not load leaves those boxes
+                // unknown, each said at its cell when the ladder compiles.
+                if let Some(program) = &project.program {
+                    if let Ok(b) = crate::softplc::st::st_blocks(&program.text) {
+                        crate::ladder::user_blocks::set(b.blocks, b.il);
+                    }
+                }
                 Ok(Document::Project(project, settings))
             }
             Kind::PlcOpen => plcopen::Document::read(text)

@@ -12,17 +12,20 @@ use crate::MachineId;
 
 mod exercise;
 mod plant;
+mod program;
 pub use exercise::{Exercise, Task, TestsShown, MAX_TASK_BYTES};
 pub use plant::{PlantSetup, MAX_PLANT_LINES};
+pub use program::{Language, ProgramText};
 
 /// The `format` field every project file carries.
 pub const FORMAT: &str = "hashigo-project";
 /// The newest project version this build reads. A project is written as
 /// version 1 unless it has the soft PLC's boxes or variables (version 2,
 /// issue #30) or an exercise's task, hidden tests or hints (version 3,
-/// issue #49) or a plant (version 4, issue #50), so that older Hashigos
-/// open every project they can.
-pub const VERSION: u32 = 4;
+/// issue #49) or a plant (version 4, issue #50) or a program text
+/// (version 5, issue #55), so that older Hashigos open every project they
+/// can.
+pub const VERSION: u32 = 5;
 
 /// A saved project.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -59,6 +62,9 @@ pub struct Project {
     /// faults (docs/plants.md).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plant: Option<PlantSetup>,
+    /// The soft PLC's Structured Text beside the ladder (issue #55).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub program: Option<ProgramText>,
 }
 
 impl Project {
@@ -73,6 +79,7 @@ impl Project {
             tests: Vec::new(),
             exercise: None,
             plant: None,
+            program: None,
         }
     }
 
@@ -125,6 +132,9 @@ impl Project {
         {
             return at("plant", ProjectError::TooManyPlantLines(plant.lines()));
         }
+        if project.program.is_some() && project.machine != MachineId::SoftPlc {
+            return at("program", ProjectError::ProgramOn(project.machine));
+        }
         Ok(project)
     }
 
@@ -148,10 +158,14 @@ impl Project {
         serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
     }
 
-    /// The oldest version that holds the project: 4 with a plant; 3 with an exercise's
+    /// The oldest version that holds the project: 5 with a program text;
+    /// 4 with a plant; 3 with an exercise's
     /// task, hidden tests or a case's hint; 2 with the soft PLC's boxes or
     /// variables; else 1.
     pub fn needed_version(&self) -> u32 {
+        if self.program.is_some() {
+            return 5;
+        }
         if self.plant.is_some() {
             return 4;
         }
@@ -196,6 +210,9 @@ pub enum ProjectError {
     /// A plant with more wiring lines, parameters or faults than
     /// [`MAX_PLANT_LINES`] (how many).
     TooManyPlantLines(usize),
+    /// A program text for a machine that runs none (only the soft PLC
+    /// runs Structured Text).
+    ProgramOn(MachineId),
 }
 
 impl std::fmt::Display for ProjectError {
@@ -232,6 +249,10 @@ impl std::fmt::Display for ProjectError {
             ProjectError::TooManyPlantLines(n) => write!(
                 f,
                 "the plant has {n} wiring lines, parameters or faults, more than the {MAX_PLANT_LINES} a project may have (docs/limits.md)"
+            ),
+            ProjectError::ProgramOn(m) => write!(
+                f,
+                "a project for {m} has a program text: only the soft PLC runs Structured Text"
             ),
         }
     }

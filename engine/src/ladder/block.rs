@@ -21,10 +21,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::iec::data::DataType;
 use crate::iec::is_identifier;
-use crate::iec::pins;
-use crate::iec::pins::is_block_type;
 use crate::iec::pins::ldmicro::text_input;
 use crate::iec::{parse_literal, Address};
+use crate::ladder::user_blocks as pins;
 
 /// One box: what it calls and what its pins are wired to.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -56,12 +55,18 @@ pub enum Shape {
 
 impl Shape {
     /// What sort of box `kind` (upper-case) is; `None` for a kind the
-    /// soft PLC lacks.
+    /// soft PLC lacks (neither standard nor one of the project's own
+    /// blocks, [`super::user_blocks`]).
     pub fn of(kind: &str) -> Option<Shape> {
+        Shape::builtin(kind).or_else(|| pins::is_user_block(kind).then_some(Shape::FunctionBlock))
+    }
+
+    /// [`Shape::of`] for the soft PLC's own functions and blocks only.
+    pub fn builtin(kind: &str) -> Option<Shape> {
         if COMPARISONS.contains(&kind) {
             return Some(Shape::Compare);
         }
-        if is_block_type(kind) {
+        if crate::iec::pins::is_block_type(kind) {
             return Some(Shape::FunctionBlock);
         }
         if let Some(&(_, pins, many)) = FUNCTIONS.iter().find(|(k, ..)| *k == kind) {
@@ -113,9 +118,7 @@ impl BlockCall {
     /// The pin the power enters: EN, or a block's first BOOL input.
     pub fn power_in(&self) -> &'static str {
         match self.shape() {
-            Some(Shape::FunctionBlock) => {
-                pins::inputs(&self.kind()).first().map_or("EN", |(p, _)| *p)
-            }
+            Some(Shape::FunctionBlock) => block_power_in(&self.kind()).unwrap_or("EN"),
             _ => "EN",
         }
     }
@@ -124,9 +127,7 @@ impl BlockCall {
     /// first BOOL output.
     pub fn power_out(&self) -> &'static str {
         match self.shape() {
-            Some(Shape::FunctionBlock) => pins::outputs(&self.kind())
-                .first()
-                .map_or("ENO", |(p, _)| *p),
+            Some(Shape::FunctionBlock) => block_power_out(&self.kind()).unwrap_or("ENO"),
             Some(Shape::Compare) => "OUT",
             _ => "ENO",
         }
@@ -158,9 +159,8 @@ impl BlockCall {
             Some(Shape::Compare) => vec!["IN1".into(), "IN2".into()],
             Some(Shape::FunctionBlock) => {
                 let kind = self.kind();
-                pins::inputs(&kind)
+                block_data_inputs(&kind)
                     .iter()
-                    .skip(1)
                     .map(|(p, _)| *p)
                     .chain(text_input(&kind))
                     .map(str::to_string)
@@ -265,13 +265,20 @@ impl BlockCall {
                 out.push((label, device));
             }
         };
-        if self.shape() == Some(Shape::FunctionBlock) {
-            let v = pins::outputs(&self.kind())
+        let kind = self.kind();
+        let instance = self.instance.trim();
+        if pins::is_user_block(&kind) {
+            // The project's own block: each output, as its instance holds it.
+            for (pin, _) in pins::outputs(&kind) {
+                add(pin.to_string(), format!("{instance}.{pin}"));
+            }
+        } else if self.shape() == Some(Shape::FunctionBlock) {
+            let v = pins::outputs(&kind)
                 .iter()
                 .find(|(p, _)| *p == "ET" || *p == "CV")
                 .map(|(p, _)| *p);
             if let Some(pin) = v {
-                add(pin.to_string(), format!("{}.v", self.instance.trim()));
+                add(pin.to_string(), format!("{instance}.v"));
             }
         }
         let operands = self.inputs.iter().chain(self.outputs.iter());
@@ -280,6 +287,39 @@ impl BlockCall {
         }
         out
     }
+}
+
+/// The input the power enters block `kind` (upper-case) by: a standard
+/// block's first, the project's own block's first BOOL one; `None` when
+/// it has none (the power is its EN: it runs while powered).
+pub fn block_power_in(kind: &str) -> Option<&'static str> {
+    first_power(&pins::inputs(kind), kind)
+}
+
+/// The output the power leaves block `kind` by: a standard block's
+/// first, the project's own block's first BOOL one; `None` when it has
+/// none (the power passes through, as ENO).
+pub fn block_power_out(kind: &str) -> Option<&'static str> {
+    first_power(&pins::outputs(kind), kind)
+}
+
+/// Block `kind`'s inputs but the one the power enters by, in order.
+pub fn block_data_inputs(kind: &str) -> Vec<(&'static str, DataType)> {
+    let power = block_power_in(kind);
+    let mut all = pins::inputs(kind);
+    if let Some(i) = all.iter().position(|(p, _)| Some(*p) == power) {
+        all.remove(i);
+    }
+    all
+}
+
+fn first_power(pins: &[(&'static str, DataType)], kind: &str) -> Option<&'static str> {
+    if crate::iec::pins::is_block_type(kind) {
+        return pins.first().map(|(p, _)| *p);
+    }
+    pins.iter()
+        .find(|(_, t)| *t == DataType::Bool)
+        .map(|(p, _)| *p)
 }
 
 /// Whether `text` reads a block instance's output (`c0.CV`, `t0.Q`): an

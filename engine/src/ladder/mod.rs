@@ -23,6 +23,7 @@ pub mod machine_target;
 pub mod net;
 pub mod problem;
 pub mod target;
+pub mod user_blocks;
 pub mod variables;
 pub mod why;
 

@@ -270,7 +270,7 @@ pub fn box_output(ladder: &Ladder, device: &str) -> Option<(usize, Pos, String)>
                 })
                 .and_then(|(_, pin)| {
                     let kind = b.kind();
-                    crate::iec::pins::outputs(&kind)
+                    crate::ladder::user_blocks::outputs(&kind)
                         .into_iter()
                         .find(|(p, _)| p.eq_ignore_ascii_case(pin))
                         .map(|(p, _)| p.to_string())

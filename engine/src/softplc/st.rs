@@ -6,7 +6,11 @@
 use std::fmt;
 
 use super::{LoadError, Program};
+use crate::iec::data::DataType;
+use crate::iec::st::ast::{Item, Pou, PouKind, VarKind};
+use crate::iec::st::print::type_text;
 use crate::iec::st::{check_source, lower_source, parse_source, StError, StErrorKind};
+use crate::ladder::user_blocks::UserBlock;
 
 /// Why a Structured Text program does not load: where (1-based line and
 /// column of the ST text) and what.
@@ -124,4 +128,109 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
         })
         .collect();
     Ok((program, lowered.text))
+}
+
+/// The function blocks of a Structured Text source as the ladder's boxes
+/// (issue #55), with their IL to follow the ladder's.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StBlocks {
+    /// Each `FUNCTION_BLOCK` whose inputs and outputs are all of
+    /// elementary types (a box pin holds one value), in text order.
+    pub blocks: Vec<UserBlock>,
+    /// The `FUNCTION_BLOCK` sections of the IL the source lowers to.
+    pub il: String,
+    /// The source has a `PROGRAM` (else it is a library of blocks).
+    pub program: bool,
+}
+
+/// The program a library (blocks without a `PROGRAM`) is lowered with:
+/// the lowering needs one; its section is then left out.
+const LIBRARY_PROGRAM: &str = "\nPROGRAM _hashigo_library\nEND_PROGRAM\n";
+
+/// The function blocks `text` declares, once it loads as a whole (every
+/// refusal at its line, as [`st_run`]'s). A text of blocks without a
+/// `PROGRAM` loads too: the ladder calls them.
+pub fn st_blocks(text: &str) -> Result<StBlocks, Vec<StLoadError>> {
+    let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
+    let pous = || {
+        source.items.iter().filter_map(|i| match i {
+            Item::Pou(p) => Some(p),
+            _ => None,
+        })
+    };
+    let program = pous().any(|p| p.kind == PouKind::Program);
+    let whole = if program {
+        text.to_string()
+    } else {
+        format!("{text}{LIBRARY_PROGRAM}")
+    };
+    let (_, il) = load(&whole)?;
+    let blocks = pous()
+        .filter(|p| p.kind == PouKind::FunctionBlock)
+        .filter_map(box_of)
+        .collect();
+    Ok(StBlocks {
+        blocks,
+        il: block_sections(&il),
+        program,
+    })
+}
+
+/// Whether `text` reads as Structured Text with a `PROGRAM` (what Load
+/// and Run run; a text of blocks only leaves the ladder to run).
+pub fn declares_program(text: &str) -> bool {
+    parse_source(text).is_ok_and(|s| {
+        s.items
+            .iter()
+            .any(|i| matches!(i, Item::Pou(p) if p.kind == PouKind::Program))
+    })
+}
+
+/// Block `p`'s box: `None` when a pin is not of an elementary type, or
+/// it has a `VAR_IN_OUT` (a box's pin gives or takes one value), or a box
+/// of the soft PLC's own has its name (ADD, TON: that one stays).
+fn box_of(p: &Pou) -> Option<UserBlock> {
+    let name = p.name.name.to_ascii_uppercase();
+    if crate::ladder::block::Shape::builtin(&name).is_some() {
+        return None;
+    }
+    let mut inputs = Vec::new();
+    let mut outputs = Vec::new();
+    for block in &p.vars {
+        let to = match block.kind {
+            VarKind::Input => &mut inputs,
+            VarKind::Output => &mut outputs,
+            VarKind::InOut => return None,
+            _ => continue,
+        };
+        for d in &block.decls {
+            let ty = DataType::from_name(&type_text(&d.ty))?;
+            to.extend(d.names.iter().map(|n| (n.name.clone(), ty)));
+        }
+    }
+    Some(UserBlock {
+        name,
+        inputs,
+        outputs,
+    })
+}
+
+/// The `FUNCTION_BLOCK … END_FUNCTION_BLOCK` sections of a lowered text.
+fn block_sections(il: &str) -> String {
+    let mut out = String::new();
+    let mut inside = false;
+    for line in il.lines() {
+        let word = line.split_whitespace().next().unwrap_or("");
+        if word.eq_ignore_ascii_case("FUNCTION_BLOCK") {
+            inside = true;
+        }
+        if inside {
+            out.push_str(line);
+            out.push('\n');
+        }
+        if word.eq_ignore_ascii_case("END_FUNCTION_BLOCK") {
+            inside = false;
+        }
+    }
+    out
 }

@@ -77,14 +77,22 @@ impl MachineCompiler for SoftTarget {
         variables: &[Variable],
         _options: Options,
     ) -> Result<Mapped, Vec<LadderError>> {
-        crate::ladder::compile::il::compile_mapped(rungs, variables, &|text| {
-            Program::load(text).err().map_or_else(Vec::new, |errors| {
-                errors
-                    .into_iter()
-                    .map(|e| (e.line, e.error.to_string()))
-                    .collect()
-            })
-        })
+        // The project's own ST blocks (`ladder::user_blocks`) follow the
+        // ladder's steps, so its boxes call them; line numbers of the
+        // ladder's part stay as they were.
+        let own = crate::ladder::user_blocks::code();
+        let mut mapped = crate::ladder::compile::il::compile_mapped(rungs, variables, &|text| {
+            Program::load(&format!("{text}{own}"))
+                .err()
+                .map_or_else(Vec::new, |errors| {
+                    errors
+                        .into_iter()
+                        .map(|e| (e.line, e.error.to_string()))
+                        .collect()
+                })
+        })?;
+        mapped.text.push_str(&own);
+        Ok(mapped)
     }
 
     fn decompile_text(&self, text: &str, _options: Options) -> Result<Ladder, TextError> {

@@ -21,6 +21,8 @@ mod soft_seeds;
 mod soft_st;
 mod soft_st_export;
 mod source_map;
+mod st_boxes;
+mod st_project;
 mod strategies;
 mod why;
 mod words;

@@ -127,7 +127,7 @@ fn damaged_links_say_what_is_wrong() {
     let mut seed = Project::from_json(SEED_JSON).expect("seed");
     seed.tests.clear();
     let good = encode(&seed).expect("encodes");
-    assert!(matches!(decode("6.abc"), Err(ShareError::Version(v)) if v == "6"));
+    assert!(matches!(decode("7.abc"), Err(ShareError::Version(v)) if v == "7"));
     assert_eq!(decode("1.***"), Err(ShareError::Base64));
     assert_eq!(decode("1.AAAA"), Err(ShareError::Inflate));
     // Cut short: the data ends inside a rung.

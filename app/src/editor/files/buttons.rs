@@ -262,6 +262,8 @@ fn open_project(ctx: LadderCtx, ladders: Option<Ladders>, p: Project) {
         target.apply(Edit::Replace { ladder });
     }
     target.show_cases(p.tests, p.exercise, p.plant);
+    // Its Structured Text into the soft PLC's pane (issue #55).
+    target.apply_source(p.program);
     target.save();
 }
 

@@ -95,13 +95,18 @@ mod tests {
         let read = take("k.good").expect("read").expect("a project");
         assert_eq!(read.machine, engine::MachineId::Io86a);
         assert!(take("k.good").is_none(), "taken once");
-        assert!(matches!(take("k.bad"), Some(None)), "did not read: kept aside by the caller");
+        assert!(
+            matches!(take("k.bad"), Some(None)),
+            "did not read: kept aside by the caller"
+        );
         assert!(take("k.never").is_none());
     }
 
     #[test]
     fn a_file_and_the_clipboard_are_read_with_the_engines_errors() {
-        let e = now(project("{".to_string())).expect("no part").expect_err("not JSON");
+        let e = now(project("{".to_string()))
+            .expect("no part")
+            .expect_err("not JSON");
         assert_eq!(e.line, 1);
         let clip = now(clip("not cells".to_string())).expect("no part");
         assert!(clip.is_err());

@@ -56,7 +56,14 @@ pub struct Program {
     pub settings: Callback<(), Vec<(String, String)>>,
     /// Applies (and saves) settings from a project; returns the refusals.
     pub apply_settings: Callback<Vec<(String, String)>, Vec<String>>,
+    /// The program text a project keeps beside the ladder (the soft
+    /// PLC's Structured Text, issue #55); `None` for the others.
+    pub source: Callback<(), Option<ProgramText>>,
+    /// Takes a project's program text.
+    pub apply_source: Callback<ProgramText>,
 }
+
+use engine::formats::project::ProgramText;
 
 /// One machine's ladder editor; `Copy`. Its state comes in focused
 /// parts, each `Copy`: the drawing, the panes, the program text, the
@@ -178,6 +185,8 @@ pub struct TextLink {
     /// Settings a project or file brought before the machine arrived with
     /// its part (issue #53): applied when its program pane connects.
     queued: StoredValue<Vec<(String, String)>>,
+    /// A project's program text that came before its machine did.
+    queued_source: StoredValue<Option<ProgramText>>,
     /// Nothing was saved for this editor and nothing opened or edited in
     /// it since: when its program pane connects (its machine arrived), the
     /// ladder starts from the pane's program.
@@ -309,6 +318,7 @@ impl LadderCtx {
                 synced: StoredValue::new(None),
                 options: RwSignal::new(Options::default()),
                 queued: StoredValue::new(Vec::new()),
+                queued_source: StoredValue::new(None),
                 fresh: StoredValue::new(ladder.is_none()),
             },
             clip: Clipboard {

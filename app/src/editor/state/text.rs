@@ -21,6 +21,14 @@ impl LadderCtx {
                 self.panes.message.set(Some(refused.join("\n")));
             }
         }
+        if let Some(source) = self
+            .text
+            .queued_source
+            .try_update_value(Option::take)
+            .flatten()
+        {
+            program.apply_source.run(source);
+        }
         let text = program.text.get_untracked();
         let empty = self
             .drawing

@@ -39,8 +39,21 @@ impl LadderCtx {
         }
     }
 
+    /// A project's program text (issue #55) goes to the machine's pane;
+    /// a machine not there yet takes it when it arrives.
+    pub fn apply_source(&self, source: Option<engine::formats::project::ProgramText>) {
+        let Some(source) = source else {
+            return;
+        };
+        match self.text.pane.get_value() {
+            Some(p) => p.apply_source.run(source),
+            None => self.text.queued_source.set_value(Some(source)),
+        }
+    }
+
     /// Shows a shared project's ladder, unsaved, until it is kept or left.
-    pub fn show_shared(&self, project: engine::formats::Project) {
+    pub fn show_shared(&self, mut project: engine::formats::Project) {
+        self.apply_source(project.program.take());
         if self.work.shared.get_untracked() {
             self.leave_shared();
         }
@@ -272,6 +285,8 @@ impl LadderCtx {
         project.exercise = self.cases.exercise.get_untracked();
         // The plant dock's choice (issue #52), kept with the project.
         project.plant = self.cases.plant.get_untracked();
+        // The soft PLC's ST (issue #55).
+        project.program = self.text.pane.get_value().and_then(|p| p.source.run(()));
         project
     }
 

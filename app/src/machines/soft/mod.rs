@@ -282,7 +282,7 @@ impl SoftCtx {
     /// false if it has errors. The board follows its I/O; what the board
     /// drives stays driven.
     pub fn load(&self) -> bool {
-        let loaded = if self.st.on.get_untracked() {
+        let loaded = if self.st.runs() {
             self.st.load(self.sim)
         } else {
             let text = self.text.get_untracked();
@@ -513,11 +513,15 @@ crate::parts::part_fn!(
     ) -> Result<crate::machines::workspace::Shared, crate::parts::PartMissing> {
         engine::machines::register(engine::machines::MachineKit::SOFT);
         let soft = SoftCtx::restore(page);
+        // Before the ladder is checked (`wire`): its boxes of ST blocks.
+        soft.st.attach(ladder);
         let mut program =
             crate::machines::text_program(soft.text, move || soft.load(), move || soft.save());
         program.settings = Callback::new(move |()| soft.project_settings());
         program.apply_settings =
             Callback::new(move |settings| soft.apply_project_settings(settings));
+        program.source = Callback::new(move |()| soft.st.source());
+        program.apply_source = Callback::new(move |source| soft.st.take_source(source, soft.sim));
         crate::machines::workspace::wire(
             ladder,
             crate::machines::link(soft.sim, move || soft.refresh()),

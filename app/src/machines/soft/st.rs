@@ -16,6 +16,8 @@ use crate::storage;
 
 /// Where the ST text is saved (`SavedText`).
 const TEXT_KEY: &str = "hashigo.soft-plc.st.v1";
+/// Where the ST text before a project's is set aside.
+const SET_ASIDE_KEY: &str = "hashigo.soft-plc.st.set-aside.v1";
 /// Where the pane's language is saved: `st`, or absent for IL (every
 /// save from before issue #55 reads as IL, as it was).
 const LANGUAGE_KEY: &str = "hashigo.soft-plc.language.v1";
@@ -50,6 +52,8 @@ pub struct StState {
     pub current: RwSignal<Option<usize>>,
     /// A breakpoint stopped the scan (until it runs on).
     pub hit: RwSignal<bool>,
+    /// The ladder, checked again when the text's blocks change.
+    ladder: StoredValue<Option<crate::editor::LadderCtx>>,
 }
 
 impl StState {
@@ -67,7 +71,45 @@ impl StState {
             breakpoints: RwSignal::new(BTreeSet::new()),
             current: RwSignal::new(None),
             hit: RwSignal::new(false),
+            ladder: StoredValue::new(None),
         }
+    }
+
+    /// The ladder the text's function blocks are boxes of: declared from
+    /// the saved text now, if it loads.
+    pub fn attach(&self, ladder: crate::editor::LadderCtx) {
+        self.ladder.set_value(Some(ladder));
+        let text = self.text.get_untracked();
+        if !text.trim().is_empty() {
+            self.declare_blocks(engine::softplc::st::st_blocks(&text).as_ref().ok());
+        }
+    }
+
+    /// The function blocks of a text that loads become the ladder's
+    /// boxes (issue #55; a text with errors leaves the last ones, so a
+    /// box does not fail while its block is being typed); the ladder is
+    /// checked again when they change (a box whose block is gone is an
+    /// error at its cell).
+    pub fn declare_blocks(&self, blocks: Option<&engine::softplc::st::StBlocks>) {
+        let Some(b) = blocks else {
+            return;
+        };
+        let changed = engine::ladder::user_blocks::set(b.blocks.clone(), b.il.clone());
+        if changed {
+            if let Some(ladder) = self.ladder.get_value() {
+                ladder.refresh(false);
+            }
+        }
+    }
+
+    /// Whether Load and Run run the ST text: it is chosen and has a
+    /// `PROGRAM` (a text of blocks only leaves the ladder to run, calling
+    /// them).
+    pub fn runs(&self) -> bool {
+        self.on.get_untracked()
+            && self
+                .text
+                .with_untracked(|t| engine::softplc::st::declares_program(t))
     }
 
     /// Chooses the pane's language, remembered.
@@ -88,6 +130,32 @@ impl StState {
         self.save();
         self.breakpoints.set(BTreeSet::new());
         self.install_stop(sim);
+        // Its blocks are the ladder's boxes at once, pane shown or not.
+        self.declare_blocks(engine::softplc::st::st_blocks(text).as_ref().ok());
+    }
+
+    /// The ST text as a project keeps it (issue #55); `None` while empty.
+    pub fn source(&self) -> Option<engine::formats::project::ProgramText> {
+        let text = self.text.get_untracked();
+        (!text.trim().is_empty()).then(|| engine::formats::project::ProgramText::st(&text))
+    }
+
+    /// A project's ST text: in the pane, in ST, as a `.st` file opens
+    /// (not loaded until Load or Run); a different text typed before is
+    /// set aside under a key of its own, which the notice names.
+    pub fn take_source(&self, source: engine::formats::project::ProgramText, sim: Sim) {
+        let before = self.text.get_untracked();
+        if before == source.text {
+            return;
+        }
+        if !before.trim().is_empty() {
+            storage::save_to(SET_ASIDE_KEY, &storage::SavedText { program: before });
+            let said = self.page.lang.get_untracked().st().set_aside;
+            self.page
+                .notice
+                .set(Some(format!("{said} {SET_ASIDE_KEY}")));
+        }
+        self.open(&source.text, sim);
     }
 
     /// Saves the ST text.

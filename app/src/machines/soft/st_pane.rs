@@ -81,13 +81,17 @@ fn IlPane(soft: SoftCtx) -> impl IntoView {
     }
 }
 
+/// The ST text checked: its function blocks (the ladder's boxes), or
+/// its errors.
+type Checked = Result<engine::softplc::st::StBlocks, Vec<engine::softplc::st::StLoadError>>;
+
 /// The ST text's errors: (line, column, message).
-fn st_errors(text: &str) -> Vec<(usize, usize, String)> {
-    match engine::softplc::st::st_run(text) {
+fn st_errors(checked: &Checked) -> Vec<(usize, usize, String)> {
+    match checked {
         Ok(_) => Vec::new(),
         Err(es) => es
-            .into_iter()
-            .map(|e| (e.line, e.column, e.message))
+            .iter()
+            .map(|e| (e.line, e.column, e.message.clone()))
             .collect(),
     }
 }
@@ -118,7 +122,11 @@ fn StEditor(soft: SoftCtx) -> impl IntoView {
     let st = soft.st;
     // Checked a moment after the last key: typing is never held up.
     let checked = RwSignal::new(st.text.get_untracked());
-    let errors: Errors = Memo::new(move |_| st_errors(&checked.get()));
+    // A text of blocks without a PROGRAM checks too: the ladder calls them.
+    let report = Memo::new(move |_| engine::softplc::st::st_blocks(&checked.get()));
+    let errors: Errors = Memo::new(move |_| report.with(st_errors));
+    // Once it loads, its blocks are the ladder's boxes (issue #55).
+    Effect::new(move || report.with(|r| st.declare_blocks(r.as_ref().ok())));
     let count = Memo::new(move |_| st.text.with(|t| t.split('\n').count()));
     let completing = Completing::new();
     let scroller = NodeRef::<leptos::html::Div>::new();

@@ -7,6 +7,7 @@
 
 mod exercise;
 mod plant;
+mod program;
 mod words;
 
 use std::collections::BTreeMap;
@@ -36,6 +37,8 @@ pub const PREFIX_EXERCISE: &str = "4.";
 /// The prefix of a link with a plant (issue #50): a version 4 link
 /// followed by it.
 pub const PREFIX_PLANT: &str = "5.";
+/// The prefix of a link with a program text (issue #55).
+pub const PREFIX_PROGRAM: &str = "6.";
 /// The most bytes a share text may inflate to.
 const MAX_INFLATED: usize = 1 << 20;
 /// Grid limits a decoded rung must respect (the editor's own).
@@ -153,7 +156,8 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
             put_len(&mut w, l.col);
         }
     }
-    let with_plant = project.plant.is_some();
+    let with_program = project.program.is_some();
+    let with_plant = with_program || project.plant.is_some();
     let with_exercise = with_plant || exercise::needed(project);
     let words = with_exercise || words::needed(&project.ladder);
     let prefix = if project.tests.is_empty() && project.exercise.is_none() && !words {
@@ -172,7 +176,10 @@ pub fn encode(project: &Project) -> Result<String, ShareError> {
         if with_exercise {
             words::put_variables(&mut w, &project.ladder.variables);
             exercise::put(&mut w, project);
-            if with_plant {
+            if with_program {
+                program::put(&mut w, project);
+                PREFIX_PROGRAM
+            } else if with_plant {
                 plant::put(&mut w, project);
                 PREFIX_PLANT
             } else {
@@ -197,7 +204,8 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if text.len() > crate::limits::MAX_SHARE_FRAGMENT {
         return Err(ShareError::TooLong(text.len()));
     }
-    let with_plant = text.starts_with(PREFIX_PLANT);
+    let with_program = text.starts_with(PREFIX_PROGRAM);
+    let with_plant = with_program || text.starts_with(PREFIX_PLANT);
     let with_exercise = with_plant || text.starts_with(PREFIX_EXERCISE);
     let with_words = with_exercise || text.starts_with(PREFIX_WORDS);
     let with_tests = with_words || text.starts_with(PREFIX_TESTS);
@@ -207,6 +215,7 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
         .or_else(|| text.strip_prefix(PREFIX_WORDS))
         .or_else(|| text.strip_prefix(PREFIX_EXERCISE))
         .or_else(|| text.strip_prefix(PREFIX_PLANT))
+        .or_else(|| text.strip_prefix(PREFIX_PROGRAM))
     else {
         let version = text
             .split('.')
@@ -255,7 +264,9 @@ pub fn decode(text: &str) -> Result<Project, ShareError> {
     if with_exercise {
         r.exercise(&mut project)?;
     }
-    if with_plant {
+    if with_program {
+        r.program(&mut project)?;
+    } else if with_plant {
         project.plant = Some(r.plant()?);
     }
     if r.at != data.len() {

@@ -153,7 +153,7 @@ fn operands_in_order(text: &str) -> Result<BlockCall, EntryError> {
                 .filter(|(pin, operand)| {
                     // A constant given (a digit's source) is only read.
                     crate::ladder::block::is_variable(operand)
-                        && crate::iec::pins::outputs(&call.kind())
+                        && crate::ladder::user_blocks::outputs(&call.kind())
                             .iter()
                             .any(|(o, _)| o == pin)
                 })
@@ -203,7 +203,7 @@ pub fn box_operands(kind: &str) -> Option<Vec<BoxOperand>> {
     if shape == Shape::FunctionBlock {
         all.push(operand(OperandRole::Instance, "", None));
     }
-    let typed = crate::iec::pins::inputs(&call.kind());
+    let typed = crate::ladder::user_blocks::inputs(&call.kind());
     for pin in call.data_pins() {
         let needs = typed.iter().find(|(p, _)| *p == pin).map(|(_, t)| *t);
         all.push(operand(OperandRole::Input, &pin, needs));

@@ -6,9 +6,9 @@
 
 use crate::iec::data::DataType;
 use crate::iec::literal::literal_type;
-use crate::iec::pins;
 use crate::ladder::block::{is_block_output, is_variable, BlockCall, Shape};
 use crate::ladder::grid::{Ladder, Pos};
+use crate::ladder::user_blocks as pins;
 
 /// Each undeclared name the box at `pos` of rung index `rung` uses, with
 /// the type it needs: its pin's when one type fits (a counter's PV:

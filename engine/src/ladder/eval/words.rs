@@ -222,6 +222,10 @@ impl Words {
         now: i64,
         bits: &mut dyn Bits,
     ) -> bool {
+        if !pins::is_block_type(kind) {
+            // The project's own ST block: only the soft PLC runs it.
+            return false;
+        }
         let upper = b.instance.to_ascii_uppercase();
         let ins = pins::inputs(kind);
         let mut given = vec![Some(Data::Bool(power))];

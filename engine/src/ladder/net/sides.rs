@@ -13,7 +13,6 @@
 use std::collections::HashMap;
 
 use crate::iec::data::DataType;
-use crate::iec::pins;
 use crate::ladder::block::Shape;
 use crate::ladder::element::Element;
 use crate::ladder::grid::{LadderError, LadderErrorKind, Link, Pos, Rung};
@@ -133,9 +132,8 @@ fn names(e: &Element) -> Vec<&str> {
 /// The carriers box `b` reads (upper case): its Boolean inputs a network
 /// may feed, given the BOOL named for that input ([`carrier`]).
 fn carried_inputs(b: &crate::ladder::BlockCall) -> Vec<String> {
-    pins::inputs(&b.kind())
+    crate::ladder::block::block_data_inputs(&b.kind())
         .iter()
-        .skip(1)
         .filter(|(_, t)| *t == DataType::Bool)
         .filter_map(|(pin, _)| {
             let carrier = carrier(&b.instance, pin);
@@ -217,9 +215,8 @@ fn side(
         return Err(at(index, pos, RungProblem::InputWithoutBox(pin.into())));
     };
     let kind = call.kind();
-    let takes: Vec<&str> = pins::inputs(&kind)
+    let takes: Vec<&str> = crate::ladder::block::block_data_inputs(&kind)
         .iter()
-        .skip(1)
         .filter(|(_, t)| *t == DataType::Bool)
         .map(|(p, _)| *p)
         .collect();

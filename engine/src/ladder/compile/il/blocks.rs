@@ -14,11 +14,11 @@
 use super::{Compiler, Pin};
 use crate::iec::data::DataType;
 use crate::iec::functions::{Function, Operand};
-use crate::iec::pins;
 use crate::iec::pins::ldmicro::text_input;
 use crate::iec::{literal_type, Address};
 use crate::ladder::block::{BlockCall, Shape};
 use crate::ladder::grid::{LadderError, Pos};
+use crate::ladder::user_blocks as pins;
 use crate::ladder::variables::Variable;
 
 impl Compiler {
@@ -194,15 +194,16 @@ impl Compiler {
                 self.taken.insert(upper);
             }
         }
-        let ins = pins::inputs(&kind);
-        let mut params = vec![format!(
-            "{} := {}",
-            b.power_in(),
-            power.as_deref().unwrap_or("TRUE")
-        )];
-        for (pin, ty) in ins.iter().skip(1) {
+        // The power enters the block's power input; a block of the
+        // project's own with no BOOL input runs only while powered (EN).
+        let power_in = crate::ladder::block::block_power_in(&kind);
+        let mut params = Vec::new();
+        if let Some(pin) = power_in {
+            params.push(format!("{pin} := {}", power.as_deref().unwrap_or("TRUE")));
+        }
+        for (pin, ty) in crate::ladder::block::block_data_inputs(&kind) {
             if let Some(text) = b.input(pin) {
-                let o = self.operand(text)?.at(Some(*ty));
+                let o = self.operand(text)?.at(Some(ty));
                 params.push(format!("{pin} := {}", o.text));
             }
         }
@@ -213,11 +214,30 @@ impl Compiler {
         for (pin, variable) in &b.outputs {
             params.push(format!("{pin} => {}", variable.trim()));
         }
-        let q = self.fresh("_q", "BOOL");
-        params.push(format!("{} => {q}", b.power_out()));
+        let skip = match (power_in, &power) {
+            (None, Some(p)) => {
+                let skip = self.fresh("_skip", "");
+                self.emit(format!("LD {p}"));
+                self.emit(format!("JMPCN {skip}"));
+                Some(skip)
+            }
+            _ => None,
+        };
+        let q = match crate::ladder::block::block_power_out(&kind) {
+            Some(pin) => {
+                let q = self.fresh("_q", "BOOL");
+                params.push(format!("{pin} => {q}"));
+                q
+            }
+            // No BOOL output: the power passes through (ENO).
+            None => power.clone().unwrap_or_else(|| "TRUE".into()),
+        };
         self.emit(format!("CAL {}({})", b.instance, params.join(", ")));
         self.sources.push((self.rung_index, pos, self.lines.len()));
-        self.emit(format!("LD {q}"));
+        match skip {
+            Some(skip) => self.emit(format!("{skip}: LD {q}")),
+            None => self.emit(format!("LD {q}")),
+        }
         Ok(())
     }
 }
