@@ -48,21 +48,7 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
             }
         })
         .collect_view();
-    // The tab shown is brought into its strip's view (on a phone the
-    // strip scrolls sideways and cut "Tests" under the "?"), and the
-    // phone's sheet leaves the ladder and its strip above it.
-    Effect::new(move |_| {
-        let tool = docks.tool.get();
-        let up = docks.sheet.get() && open();
-        // Again when a pane's part arrives: the sheet has its height then.
-        docks.arrived.track();
-        request_animation_frame(move || {
-            show_tab(tool);
-            if up && tool != Tool::Panel {
-                ladder_above_sheet();
-            }
-        });
-    });
+    follow_the_tab_shown(docks);
     view! {
         <section class="dock dock-bottom" data-testid="dock-bottom"
             data-open=move || open().to_string()
@@ -114,6 +100,24 @@ fn show_tab(tool: Tool) {
         return;
     };
     strip.set_scroll_left(strip.scroll_left() + by.round() as i32);
+}
+
+/// The tab shown is brought into its strip's view (on a phone the strip
+/// scrolls sideways and cut "Tests" under the "?"), and the phone's
+/// sheet leaves the ladder and its strip above it.
+fn follow_the_tab_shown(docks: Docks) {
+    Effect::new(move |_| {
+        let tool = docks.tool.get();
+        let up = docks.sheet.get() && docks.sizes.with(|s| s.bottom_open);
+        // Again when a pane's part arrives: the sheet has its height then.
+        docks.arrived.track();
+        request_animation_frame(move || {
+            show_tab(tool);
+            if up && tool != Tool::Panel {
+                ladder_above_sheet();
+            }
+        });
+    });
 }
 
 /// On a phone, with a tool up in the bottom sheet: the page scrolls (as

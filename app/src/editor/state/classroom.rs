@@ -7,6 +7,21 @@
 use super::*;
 use engine::plc::Command;
 
+/// How one case came out in the page.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CaseResult {
+    /// Every expectation held.
+    Pass,
+    /// The first expectation that did not, and what was seen.
+    Fail(crate::i18n::errors::Both),
+    /// The case could not run (a bad line, a device the machine lacks).
+    Error(crate::i18n::errors::Both),
+    /// The case names a device the ladder does not use yet (the soft
+    /// PLC has only the devices its program uses): the answer is not
+    /// there yet, which is a failure, not the author's error.
+    Unused(String),
+}
+
 impl LadderCtx {
     /// Forgets what the last project's work left on screen: the tests'
     /// results, the inputs held from the ladder (released on the

@@ -20,6 +20,8 @@ mod rung_view;
 mod text;
 mod work;
 
+pub use classroom::CaseResult;
+
 pub use clock::Clock;
 pub use live::Live;
 use rung_view::Probe;
@@ -29,6 +31,7 @@ use work::SharedWith;
 use std::collections::BTreeMap;
 
 use engine::cases::TestCase;
+use engine::formats::project::ProgramText;
 use engine::ladder::compile::{compile_listing, Listing, Options};
 use engine::ladder::edit::{
     align_outputs, parse_entry, Clip, Cursor, Edit, Editor, EntryKind, COLUMNS,
@@ -62,8 +65,6 @@ pub struct Program {
     /// Takes a project's program text.
     pub apply_source: Callback<ProgramText>,
 }
-
-use engine::formats::project::ProgramText;
 
 /// One machine's ladder editor; `Copy`. Its state comes in focused
 /// parts, each `Copy`: the drawing, the panes, the program text, the
@@ -255,21 +256,6 @@ enum Change {
     /// Another tab's save shown here: written to the machine, not saved
     /// again (it is what storage holds).
     Followed,
-}
-
-/// How one case came out in the page.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum CaseResult {
-    /// Every expectation held.
-    Pass,
-    /// The first expectation that did not, and what was seen.
-    Fail(crate::i18n::errors::Both),
-    /// The case could not run (a bad line, a device the machine lacks).
-    Error(crate::i18n::errors::Both),
-    /// The case names a device the ladder does not use yet (the soft
-    /// PLC has only the devices its program uses): the answer is not
-    /// there yet, which is a failure, not the author's error.
-    Unused(String),
 }
 
 impl LadderCtx {
