@@ -9,7 +9,6 @@ use std::fmt::Write as _;
 
 use quick_xml::escape::escape;
 
-use super::NS_V201;
 use crate::iec::st::ast::{
     ArrayInit, Elementary, Init, Item, Pou, PouKind, Source, TypeDecl, TypeDef, TypeRef, VarBlock,
     VarKind,
@@ -56,18 +55,7 @@ fn project(source: &Source, bodies: &[String], name: &str) -> String {
         );
     }
     format!(
-        r#"<?xml version="1.0" encoding="utf-8"?>
-<project xmlns="{NS_V201}" xmlns:xhtml="http://www.w3.org/1999/xhtml">
-  <fileHeader companyName="Hashigo" productName="Hashigo" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
-  <contentHeader name="{name}">
-    <coordinateInfo>
-      <fbd><scaling x="1" y="1"/></fbd>
-      <ld><scaling x="1" y="1"/></ld>
-      <sfc><scaling x="1" y="1"/></sfc>
-    </coordinateInfo>
-  </contentHeader>
-  <types>
-    <dataTypes>
+        r#"{head}    <dataTypes>
 {types}    </dataTypes>
     <pous>
 {pous}    </pous>
@@ -82,7 +70,7 @@ fn project(source: &Source, bodies: &[String], name: &str) -> String {
   </instances>
 </project>
 "#,
-        name = escape(name),
+        head = super::export::project_head(name),
     )
 }
 

@@ -476,7 +476,6 @@ impl Lower {
     /// A standard function IL has: its first argument the current
     /// result, the others operands.
     fn function(&mut self, call: &super::ast::Call, span: Span) {
-        use super::ast::Arg;
         if self
             .functions
             .contains_key(&call.callee.name.to_ascii_uppercase())
@@ -492,14 +491,7 @@ impl Lower {
             let what = format!("the function {}", call.callee.name.to_ascii_uppercase());
             return self.not_yet(call.callee.span, what);
         }
-        let values: Vec<&Expr> = call
-            .args
-            .iter()
-            .filter_map(|a| match a {
-                Arg::Positional(e) | Arg::Input(_, e) => Some(e),
-                Arg::Output { .. } => None,
-            })
-            .collect();
+        let values = super::lower_args::input_values(call);
         let Some((first, rest)) = values.split_first() else {
             return self.not_yet(span, "a function called without inputs");
         };
