@@ -17,6 +17,7 @@ BINARYEN_VERSION=132.0.0
 AXE_VERSION=4.11.0
 HTTP_SERVER_VERSION=14.1.1
 ZOPFLI_VERSION=1.0.15
+TERSER_VERSION=5.51.4
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 export PATH="$HOME/.cargo/bin:$root/.tools/node_modules/.bin:$PATH"
@@ -56,7 +57,8 @@ if ! has_version wasm-opt "version $BINARYEN_VERSION" && ! has_version wasm-opt 
 fi
 
 # http-server serves dist/ with the build's .br / .gz (scripts/serve.sh,
-# the end-to-end tests); Zopfli writes the .gz (scripts/precompress.mjs).
+# the end-to-end tests); Zopfli writes the .gz (scripts/precompress.mjs);
+# terser minifies the page's two first scripts (scripts/split-wasm.py).
 npm_tool() { # npm_tool PACKAGE VERSION: into .tools/ unless there
   if [ ! -f "$root/.tools/node_modules/$1/package.json" ] \
     || ! grep -q "\"version\": \"$2\"" "$root/.tools/node_modules/$1/package.json"; then
@@ -67,6 +69,7 @@ npm_tool() { # npm_tool PACKAGE VERSION: into .tools/ unless there
 }
 npm_tool http-server "$HTTP_SERVER_VERSION"
 npm_tool @gfx/zopfli "$ZOPFLI_VERSION"
+npm_tool terser "$TERSER_VERSION"
 
 if [ "$for_tests" = no ]; then
   say "tools for serving ready"

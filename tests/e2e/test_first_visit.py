@@ -35,19 +35,12 @@ SLOW_LINK = {"offline": False, "latency": 150, "downloadThroughput": 1_600_000 /
              "uploadThroughput": 750_000 / 8}
 
 
-@pytest.mark.parametrize("served", ["brotli", "gzip"])
-def test_a_first_visit_over_a_slow_link(driver, served):
-    """A fresh profile over the slow link, served as scripts/serve.sh
-    serves it (the build's brotli or gzip, as the browser accepts) and as
-    a static host that compresses on the fly with gzip at level 6 and has
-    no brotli (issue #53): the figures (first words, app ready, bytes sent) go to
-    figures.json for docs/performance.md. Timing is recorded, not
-    asserted (a shared machine moves it); what is asserted is that the
-    files came compressed, that the first screen needed one wasm (the
-    files worker waits for its first use) and that the words came first."""
+def slow_first_visit(driver, served):
+    """One first visit over the slow link: a new server on a port of its
+    own is a new origin, so nothing is cached and no service worker
+    answers (as a fresh profile). Its timeline: first words, app ready,
+    each file fetched (asked at, arrived by, bytes sent, size)."""
     server = DistServer(["--brotli", "--gzip"]) if served == "brotli" else GzipOnTheFlyServer()
-    driver.execute_cdp_cmd("Network.enable", {})
-    driver.execute_cdp_cmd("Network.emulateNetworkConditions", SLOW_LINK)
     try:
         driver.get(server.url)
         wait(driver, lambda: driver.execute_script(
@@ -55,27 +48,57 @@ def test_a_first_visit_over_a_slow_link(driver, served):
             message="the app marks itself ready")
     finally:
         server.stop()
-    timeline = driver.execute_script("""
+    return driver.execute_script("""
         const at = (name) => performance.getEntriesByName(name)[0].startTime;
         const files = performance.getEntriesByType('resource').map((r) => ({
             name: new URL(r.name).pathname, sent: r.transferSize, size: r.decodedBodySize,
-            end: r.responseEnd }));
+            start: r.startTime, end: r.responseEnd }));
         return { words: at('first-contentful-paint'), ready: at('hashigo-ready'), files };
     """)
-    assert 0 < timeline["words"] < timeline["ready"]
-    wasm = [f for f in timeline["files"] if f["name"].endswith("_bg.wasm")]
-    assert len(wasm) == 1, f"the first screen loads one wasm: {timeline['files']}"
-    # Sent compressed: at most half of its size.
-    assert 0 < wasm[0]["sent"] < wasm[0]["size"] / 2, wasm[0]
+
+
+@pytest.mark.parametrize("served,ready_within", [("brotli", 3000), ("gzip", 3500)])
+def test_a_first_visit_over_a_slow_link(driver, served, ready_within):
+    """Issue #53: a first visit over the slow link shows words within 1 s
+    and is ready within 3.0 s served as scripts/serve.sh serves it (the
+    build's brotli), within 3.5 s from a static host that compresses on
+    the fly with gzip at level 6 and has no brotli. A shared machine can
+    slow one load: the best of up to three fresh visits is the link's
+    figure (each goes to figures.json for docs/performance.md). Each
+    visit must also come compressed, need one wasm (the files worker
+    waits for its first use), show words first, and ask for the wasm
+    among its first six files (a browser's connections to one host over
+    HTTP/1.1: a seventh waits for one to free)."""
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.emulateNetworkConditions", SLOW_LINK)
+    visits = []
+    for _ in range(3):
+        timeline = slow_first_visit(driver, served)
+        files = timeline["files"]
+        assert 0 < timeline["words"] < timeline["ready"]
+        wasm = [f for f in files if f["name"].endswith("_bg.wasm")]
+        assert len(wasm) == 1, f"the first screen loads one wasm: {files}"
+        # Sent compressed: at most half of its size.
+        assert 0 < wasm[0]["sent"] < wasm[0]["size"] / 2, wasm[0]
+        before = [f["name"] for f in files if f["start"] <= wasm[0]["start"]]
+        assert len(before) <= 6, f"the wasm waited for a connection behind {before}"
+        visits.append(timeline)
+        if timeline["words"] <= 1000 and timeline["ready"] <= ready_within:
+            break
+    best = min(visits, key=lambda v: v["ready"])
+    wasm = next(f for f in best["files"] if f["name"].endswith("_bg.wasm"))
     figure = {
         "link": "1.6 Mbit/s down, 150 ms latency (CDP Network.emulateNetworkConditions)",
-        "words_ms": round(timeline["words"]),
-        "ready_ms": round(timeline["ready"]),
-        "bytes_sent": sum(f["sent"] for f in timeline["files"]),
-        "wasm_bytes_sent": wasm[0]["sent"],
+        "words_ms": round(best["words"]),
+        "ready_ms": round(best["ready"]),
+        "visits_ready_ms": [round(v["ready"]) for v in visits],
+        "bytes_sent": sum(f["sent"] for f in best["files"]),
+        "wasm_bytes_sent": wasm["sent"],
     }
     record_figures({f"first_visit_slow_link_{served}": figure})
-    print(figure, timeline["files"])
+    print(figure, best["files"])
+    assert best["words"] <= 1000, f"words within 1 s: {figure}"
+    assert best["ready"] <= ready_within, f"ready within {ready_within} ms: {figure}"
 
 
 def test_when_the_files_worker_cannot_load_the_page_says_so(driver):
@@ -101,17 +124,17 @@ def test_when_the_files_worker_cannot_load_the_page_says_so(driver):
         server.stop()
 
 
-def test_each_other_machine_arrives_over_the_slow_link(driver):
-    """Issue #53: each machine but the first screen's is a part fetched
-    when first shown. Over the slow link, from a fresh profile, the time
-    from choosing it to its panel drawn goes to figures.json (recorded,
-    not asserted, as above); what is asserted is that it arrives and that
-    the first screen fetched none of them."""
+MACHINE_BOARDS = [("io86a", "io86a-terminal"), ("avr-plc", "avr-program-text"),
+                  ("arduino-plc", "arduino-monitor"), ("soft-plc", "soft-board")]
+
+
+def machine_arrivals(driver):
+    """A first visit over the slow link (a new origin, as
+    `slow_first_visit`), then each other machine chosen in turn: the
+    milliseconds from choosing it to its panel drawn."""
     import time
     from selenium.webdriver.support.ui import Select
     server = DistServer(["--brotli", "--gzip"])
-    driver.execute_cdp_cmd("Network.enable", {})
-    driver.execute_cdp_cmd("Network.emulateNetworkConditions", SLOW_LINK)
     arrivals = {}
     try:
         driver.get(server.url)
@@ -121,8 +144,7 @@ def test_each_other_machine_arrives_over_the_slow_link(driver):
         fetched = driver.execute_script(
             "return performance.getEntriesByType('resource').map((r) => r.name)")
         assert not [f for f in fetched if "split_" in f], fetched
-        for machine, board in [("io86a", "io86a-terminal"), ("avr-plc", "avr-program-text"),
-                               ("arduino-plc", "arduino-monitor"), ("soft-plc", "soft-board")]:
+        for machine, board in MACHINE_BOARDS:
             start = time.monotonic()
             Select(el(driver, "machine")).select_by_value(machine)
             wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, f'[data-testid="{board}"]'),
@@ -130,8 +152,29 @@ def test_each_other_machine_arrives_over_the_slow_link(driver):
             arrivals[machine] = round((time.monotonic() - start) * 1000)
     finally:
         server.stop()
-    record_figures({"machine_arrival_slow_link_ms": arrivals})
-    print(arrivals)
+    return arrivals
+
+
+def test_each_other_machine_arrives_over_the_slow_link(driver):
+    """Issue #53: each machine but the first screen's is a part fetched
+    when first shown, and over the slow link it is ready within 1.5 s of
+    being chosen, the first time (while the service worker is still
+    keeping the release's files). The first screen fetched none of them.
+    As above, a shared machine can slow one visit: each machine's best
+    of up to two fresh visits is its figure (figures.json)."""
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.emulateNetworkConditions", SLOW_LINK)
+    best = {}
+    for _ in range(2):
+        for machine, ms in machine_arrivals(driver).items():
+            best[machine] = min(ms, best.get(machine, ms))
+        if max(best.values()) <= 1500:
+            break
+    record_figures({"machine_arrival_slow_link_ms": best})
+    print(best)
+    slow = {m: ms for m, ms in best.items() if ms > 1500}
+    assert not slow, f"ready within 1.5 s of being chosen: {best}"
+
 
 
 def test_a_returning_visit_reads_its_saved_ladder_before_it_starts(driver, base_url):
