@@ -203,3 +203,57 @@ fn beremiz_first_steps_counters_read_the_configuration_constant() {
         assert_eq!(get(plc.as_ref(), c), 17, "{c}");
     }
 }
+
+/// A project whose block `Outer` (ST) calls block `Inner` (IL), both
+/// reaching the resource's global `total`; `outer_external`: whether
+/// Outer declares `total` as its own external (and adds to it).
+fn nested(outer_external: bool) -> String {
+    let p = r#"<xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml"><![CDATA["#;
+    let external =
+        "<externalVars><variable name=\"total\"><type><INT/></type></variable></externalVars>";
+    let (outer, add) = match outer_external {
+        true => (external, "\ntotal := total + 100;"),
+        false => ("", ""),
+    };
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>
+<pou name="Inner" pouType="functionBlock"><interface>{external}</interface>
+<body><IL>{p}LD total
+ADD 1
+ST total]]></xhtml:p></IL></body></pou>
+<pou name="Outer" pouType="functionBlock"><interface>
+<localVars><variable name="i"><type><derived name="Inner"/></type></variable></localVars>{outer}</interface>
+<body><ST>{p}i();{add}]]></xhtml:p></ST></body></pou>
+<pou name="main" pouType="program"><interface><localVars>
+<variable name="o"><type><derived name="Outer"/></type></variable></localVars></interface>
+<body><ST>{p}o();]]></xhtml:p></ST></body></pou>
+</pous></types><instances><configurations><configuration name="c"><resource name="r">
+<task name="t" priority="0" interval="T#10ms"><pouInstance name="m" typeName="main"/></task>
+<globalVars><variable name="total"><type><INT/></type></variable></globalVars>
+</resource></configuration></configurations></instances></project>"#
+    )
+}
+
+#[test]
+fn a_block_calling_a_block_passes_its_own_external_on() {
+    // Inner adds 1 to Outer's copy, Outer 100 more, Outer's copy-out
+    // gives the global both: 101 a scan.
+    let mut plc = soft(&nested(true), None);
+    scans(plc.as_mut(), 3);
+    assert_eq!(get(plc.as_ref(), "total"), 303);
+    // Without its own external Outer has no `total` to give Inner: the
+    // call is refused at its ST line.
+    let xml = nested(false);
+    let got = refused(&xml);
+    assert!(!got.is_empty());
+    for (line, why) in &got {
+        assert_eq!(*line, line_of(&xml, "i();"), "{why}");
+    }
+    assert!(
+        got[0]
+            .1
+            .starts_with("Inner reaches `total` as an external variable, and Outer has no `total`"),
+        "{got:?}"
+    );
+}
