@@ -55,6 +55,9 @@ pub fn soft_ja(e: &SoftError) -> Option<String> {
         S::VendorLogic(_) => vendor_logic_ja(),
         S::Follows => "上で拒否された要素からつながっています".into(),
         S::St(column, why) => format!("ST の {column} 桁目: {}", crate::said_st_ja::st_ja(why)),
+        S::NoGlobal(ty, name, pou) => format!(
+            "{ty} は外部変数として `{name}` を使いますが、{pou} に渡す `{name}` がありません: `{name}` を構成かリソースの globalVars に宣言してください ({ty} を呼ぶブロックには外部変数としても)"
+        ),
         S::UndeclaredInstance(name, ty) => format!(
             "{name} は宣言されていません: POU の変数に {ty} のインスタンスとして宣言してください (`{name} : {ty};`)"
         ),
@@ -74,6 +77,9 @@ fn declaration_ja(why: &DeclarationWhy) -> String {
         DeclarationWhy::Initial(e) => literal_ja(e),
         DeclarationWhy::Section(scope) => {
             format!("ファンクションブロックの {scope} にはまだ対応していません")
+        }
+        DeclarationWhy::ExternalBlock => {
+            "ファンクションブロックの外部変数にブロックのインスタンスはまだ使えません (外部変数は値で、呼び出しのたびにコピーされます)".into()
         }
     }
 }
@@ -180,6 +186,7 @@ pub(crate) mod tests {
             SoftError::Follows,
             SoftError::VendorLogic("it is wired into the network".into()),
             SoftError::UndeclaredInstance(s(), s()),
+            SoftError::NoGlobal(s(), s(), s()),
             SoftError::BodySection("VAR_INPUT".into()),
             SoftError::Load(LoadError::Type(TypeWhy::SelectOneType)),
             SoftError::Load(LoadError::Call(CallWhy::BodySteps)),
@@ -190,6 +197,7 @@ pub(crate) mod tests {
             SoftError::Declaration(s(), D::Address(AddressError::NoArea(s()))),
             SoftError::Declaration(s(), D::Initial(LiteralError::BadNumber(s()))),
             SoftError::Declaration(String::new(), D::Section("inOutVars".into())),
+            SoftError::Declaration(s(), D::ExternalBlock),
         ];
         let mut all: Vec<ImportError> = soft.into_iter().map(ImportError::Soft).collect();
         let boxes = [

@@ -16,6 +16,7 @@ mod robustness;
 mod seed;
 mod share;
 mod soft_drawn;
+mod soft_externals;
 mod soft_plcopen;
 mod soft_seeds;
 mod soft_st;

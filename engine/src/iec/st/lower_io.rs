@@ -11,8 +11,9 @@ use super::error::StErrorKind;
 use super::lower::Lower;
 use super::types::at;
 
-/// The hidden output an in-out parameter `pin` is copied out by.
-pub(super) fn io_pin(pin: &str) -> String {
+/// The hidden output an in-out parameter `pin` is copied out by (a
+/// PLCopen block's external too, so that an ST call's arguments reach it).
+pub(crate) fn io_pin(pin: &str) -> String {
     format!("st_io_{pin}")
 }
 

@@ -37,6 +37,7 @@ pub use error::{StError, StErrorKind};
 pub use lexer::KEYWORDS;
 pub use lower::{lower_source, Lowered};
 pub use lower_body::{lower_body, LoweredBody};
+pub(crate) use lower_io::io_pin;
 pub use print::print_source;
 
 use ast::Stmt;

@@ -47,6 +47,21 @@ pub(super) struct Interface {
     pub outputs: Vec<(String, DataType)>,
     /// A function's: its output of its own name is its result.
     pub function: bool,
+    /// Its external variables (`externalVars`): each global's name, type
+    /// and whether it is copied back out (not a `constant` one). Each
+    /// call passes them ([`Declarations::external_args`]).
+    pub externals: Vec<External>,
+}
+
+/// A function block's or function's external variable: the global it
+/// reaches, copied in at each call as an input of its name and, unless
+/// it is `constant`, out by a hidden output (`st_io_<name>`, the ST
+/// lowering's in-out copy) when the body ends.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct External {
+    pub name: String,
+    pub ty: DataType,
+    pub copied_out: bool,
 }
 
 impl Interface {
@@ -86,6 +101,9 @@ pub(super) struct Declarations {
     index: HashMap<String, usize>,
     /// Each located variable's address → its type.
     addresses: HashMap<Address, DataType>,
+    /// A function block's external variables (its section declares each
+    /// as an input, and the copied-out ones' hidden outputs).
+    pub externals: Vec<External>,
 }
 
 impl Declarations {
@@ -148,10 +166,17 @@ impl Declarations {
 
     /// A function block's interface, from its declarations.
     pub fn interface(&self) -> Interface {
+        // An external and its hidden output are no pin a call names.
+        let external = |name: &str| {
+            self.externals.iter().any(|e| {
+                e.name.eq_ignore_ascii_case(name)
+                    || crate::iec::st::io_pin(&e.name).eq_ignore_ascii_case(name)
+            })
+        };
         let faced = |d: Direction| -> Vec<(String, DataType)> {
             self.list
                 .iter()
-                .filter(|v| v.direction == d)
+                .filter(|v| v.direction == d && !external(&v.name))
                 .filter_map(|v| match v.held {
                     Held::Value(t) => Some((v.name.clone(), t)),
                     _ => None,
@@ -162,7 +187,47 @@ impl Declarations {
             inputs: faced(Direction::Input),
             outputs: faced(Direction::Output),
             function: false,
+            externals: self.externals.clone(),
         }
+    }
+
+    /// The arguments a call of a block with interface `iface` passes for
+    /// its externals, in POU `pou` (a program: the globals it sees; a
+    /// block: its own externals of those names): `g := g` and, for one
+    /// copied out, `st_io_g => g`, as the ST lowering's calls do. Refused
+    /// when `pou` has no variable of an external's name (`ty`: the
+    /// callee's type).
+    pub fn external_args(
+        &self,
+        pou: &str,
+        ty: &str,
+        iface: &Interface,
+    ) -> Result<Vec<String>, SoftError> {
+        let mut args = Vec::new();
+        for e in &iface.externals {
+            let here = self.name_in(pou, &e.name);
+            if self.held(&here).is_none() {
+                return Err(SoftError::NoGlobal(ty.into(), e.name.clone(), pou.into()));
+            }
+            args.push(format!("{} := {here}", e.name));
+            if e.copied_out {
+                let pin = crate::iec::st::io_pin(&e.name);
+                args.push(format!("{pin} => {here}"));
+            }
+        }
+        Ok(args)
+    }
+
+    /// The lines that copy the copied-out externals back out when the
+    /// body ends (`LD g` / `ST st_io_g`).
+    pub fn copy_out(&self) -> Vec<String> {
+        let copied = self.externals.iter().filter(|e| e.copied_out);
+        copied
+            .flat_map(|e| {
+                let pin = crate::iec::st::io_pin(&e.name);
+                [format!("LD {}", e.name), format!("ST {pin}")]
+            })
+            .collect()
     }
 
     /// The project's own function block types its instances have.
@@ -396,6 +461,50 @@ fn soft_name(
     Some(soft_name)
 }
 
+/// Declares the external variables of a function block's `scope` (an
+/// `externalVars`): each an input of its name, copied in from the
+/// caller's global at each call, and unless the scope is `constant` a
+/// hidden output that copies it back out (as IL has no reference, so a
+/// `.st` block's VAR_EXTERNAL is; `iec::st::lower_io`).
+fn block_externals(out: &mut Declarations, scope: &Node, own: &OwnTypes) -> Errors {
+    let mut errors = Vec::new();
+    let copied_out = scope.attr("constant") != Some("true");
+    for v in scope.all("variable") {
+        if let Err(e) = declare(out, scope, v, None, own, Direction::Input) {
+            errors.push(e);
+            continue;
+        }
+        let Some(d) = out.list.last() else { continue };
+        let Held::Value(ty) = d.held else {
+            let why = DeclarationWhy::ExternalBlock;
+            errors.push(Located::new(
+                v.line,
+                SoftError::Declaration(d.name.clone(), why),
+            ));
+            continue;
+        };
+        let name = d.name.clone();
+        if copied_out {
+            let pin = crate::iec::st::io_pin(&name);
+            out.push(Declared {
+                name: pin.clone(),
+                held: Held::Value(ty),
+                line: format!("{pin} : {};", ty.name()),
+                retain: false,
+                address: None,
+                xml_line: v.line,
+                direction: Direction::Output,
+            });
+        }
+        out.externals.push(External {
+            name,
+            ty,
+            copied_out,
+        });
+    }
+    errors
+}
+
 /// The declarations of function block `pou`: its inputs, outputs and
 /// locals, in a name space of its own.
 pub(super) fn block_declarations(pou: &Node, own: &OwnTypes) -> Result<Declarations, Errors> {
@@ -409,7 +518,11 @@ pub(super) fn block_declarations(pou: &Node, own: &OwnTypes) -> Result<Declarati
             "inputVars" => Direction::Input,
             "outputVars" => Direction::Output,
             "localVars" | "tempVars" => Direction::Local,
-            "inOutVars" | "externalVars" => {
+            "externalVars" => {
+                errors.extend(block_externals(&mut out, scope, own));
+                continue;
+            }
+            "inOutVars" => {
                 let why = DeclarationWhy::Section(scope.name.clone());
                 errors.push(Located::new(
                     scope.line,

@@ -59,6 +59,9 @@ pub(super) struct Emitter<'a> {
 
 type Result<T> = std::result::Result<T, SoftError>;
 
+/// A block's inputs or outputs, each with its type.
+type Pins = Vec<(String, DataType)>;
+
 impl Emitter<'_> {
     /// Emits `g` in its running order; every error at its element.
     pub fn body(&mut self, g: &Graph) -> std::result::Result<(), Vec<Located<SoftError>>> {
@@ -474,7 +477,8 @@ impl Emitter<'_> {
         // An LDmicro block's text (FMT) is an input of the block's box.
         let mut inputs = fb_inputs(kind);
         inputs.extend(crate::iec::pins::ldmicro::text_input(kind).map(|p| (p, DataType::String)));
-        self.cal(g, e, &name, &owned(inputs), &owned(fb_outputs(kind)), en)
+        let pins = (owned(inputs), owned(fb_outputs(kind)));
+        self.cal(g, e, &name, pins, Vec::new(), en)
     }
 
     /// A call of an instance of the project's own function block: `CAL
@@ -498,34 +502,38 @@ impl Emitter<'_> {
             }
         }
         let en = self.enable(g, e)?;
-        self.cal(g, e, &name, &iface.inputs, &iface.outputs, en)
+        // Its externals: this POU's globals (or own externals) of their names.
+        let externals = self.decl.external_args(&self.pou, type_name, iface)?;
+        let pins = (iface.inputs.clone(), iface.outputs.clone());
+        self.cal(g, e, &name, pins, externals, en)
     }
 
-    /// `CAL name(input := …, output => _n<id>_<PIN>)` of a block with
-    /// these pins (each input wired, each output something reads), then
-    /// the label EN jumps to and ENO.
+    /// `CAL name(input := …, output => _n<id>_<PIN>, extra…)` of a block
+    /// with these pins (each input wired, each output something reads),
+    /// then the label EN jumps to and ENO.
     fn cal(
         &mut self,
         g: &Graph,
         e: &Element,
         name: &str,
-        inputs: &[(String, DataType)],
-        outputs: &[(String, DataType)],
+        (inputs, outputs): (Pins, Pins),
+        extra: Vec<String>,
         en: Option<Operand>,
     ) -> Result<()> {
-        super::formal::check_inputs(e, inputs)?;
+        super::formal::check_inputs(e, &inputs)?;
         let mut params = Vec::new();
-        for (pin, ty) in inputs {
+        for (pin, ty) in &inputs {
             if let Some(v) = self.input(g, e, pin)? {
                 params.push(format!("{pin} := {}", v.at(Some(*ty)).text));
             }
         }
-        for (pin, ty) in outputs {
+        for (pin, ty) in &outputs {
             if e.outputs.iter().any(|p| p.eq_ignore_ascii_case(pin)) {
                 let t = self.temp(&format!("n{}_{pin}", e.id), ty.name(), e.line);
                 params.push(format!("{pin} => {t}"));
             }
         }
+        params.extend(extra);
         self.emit(format!("CAL {name}({})", params.join(", ")), e.line);
         self.enabled(e, en);
         Ok(())

@@ -43,6 +43,7 @@ impl Emitter<'_> {
             .unwrap_or_else(|| "OUT".into());
         let out = self.temp(&format!("n{}_{drawn}", e.id), ty.name(), e.line);
         params.push(format!("{result} => {out}"));
+        params.extend(self.decl.external_args(&self.pou, type_name, iface)?);
         self.emit(format!("CAL {hidden}({})", params.join(", ")), e.line);
         self.enabled(e, en);
         Ok(())

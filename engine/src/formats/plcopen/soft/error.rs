@@ -63,6 +63,10 @@ pub enum SoftError {
     /// A Structured Text body's or EXECUTE block's problem: its column
     /// in the ST line, and why.
     St(usize, crate::iec::st::StErrorKind),
+    /// A call of the project's own block or function whose external
+    /// variable the calling POU has no variable for (the callee's type,
+    /// the external's name, the calling POU).
+    NoGlobal(String, String, String),
 }
 
 impl fmt::Display for SoftError {
@@ -138,12 +142,21 @@ impl fmt::Display for SoftError {
             }
             SoftError::Follows => f.write_str("fed by an element refused above"),
             SoftError::St(column, why) => write!(f, "ST, column {column}: {why}"),
+            SoftError::NoGlobal(ty, name, pou) => no_global(f, ty, name, pou),
             SoftError::UndeclaredInstance(name, ty) => write!(
                 f,
                 "{name} is not declared: declare it as a {ty} instance (`{name} : {ty};`) among the POU's variables"
             ),
         }
     }
+}
+
+/// [`SoftError::NoGlobal`]'s message.
+fn no_global(f: &mut fmt::Formatter<'_>, ty: &str, name: &str, pou: &str) -> fmt::Result {
+    write!(
+        f,
+        "{ty} reaches `{name}` as an external variable, and {pou} has no `{name}` to give it: declare `{name}` among the configuration's or resource's globalVars (and as an external variable of a block that calls {ty})"
+    )
 }
 
 impl std::error::Error for SoftError {}
@@ -162,8 +175,11 @@ pub enum DeclarationWhy {
     /// Its initial value refused.
     Initial(LiteralError),
     /// Variables of a kind a function block cannot have yet (the
-    /// section's XML name: `inOutVars`, `externalVars`).
+    /// section's XML name: `inOutVars`).
     Section(String),
+    /// An external variable of a function block that holds a block
+    /// instance (a global TON): only values are copied into a block.
+    ExternalBlock,
 }
 
 impl fmt::Display for DeclarationWhy {
@@ -179,6 +195,9 @@ impl fmt::Display for DeclarationWhy {
             DeclarationWhy::Section(scope) => {
                 write!(f, "{scope} in a function block is not supported yet")
             }
+            DeclarationWhy::ExternalBlock => f.write_str(
+                "a block instance as a function block's external variable does not run yet (a block's externals are values, copied in at each call)",
+            ),
         }
     }
 }

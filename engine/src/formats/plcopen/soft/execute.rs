@@ -55,6 +55,7 @@ impl Emitter<'_> {
             out: self.out,
             labels: None,
             user: None,
+            copy_out: Vec::new(),
         };
         let errors = write_lines(&self.pou, lines, place);
         self.out.errors.extend(errors);

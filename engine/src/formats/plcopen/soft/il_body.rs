@@ -39,6 +39,9 @@ pub(super) struct Place<'a> {
     /// The project's own blocks and functions (upper-case), so that an
     /// IL line calling one of its functions calls it (`il_call`).
     pub user: Option<&'a HashMap<String, Interface>>,
+    /// What runs when the body ends, its RETs too: a function block's
+    /// externals copied back out (`Declarations::copy_out`).
+    pub copy_out: Vec<String>,
 }
 
 /// Writes the IL body `text_node` of `pou` (from file `source`); a line
@@ -68,15 +71,10 @@ pub(super) fn write_lines(
 ) -> Vec<Located<SoftError>> {
     let mut errors = Vec::new();
     let first = lines.first().map_or(0, |&(_, at)| at);
-    // A program's labels, and the end its RETs jump to, unique in the
-    // programs' section.
+    let written = place.out.lines.len();
     let mut renamed_labels = HashMap::new();
-    let end = place.labels.map(|used| {
-        for label in lines.iter().filter_map(|(l, _)| label_of(l)) {
-            renamed_labels.insert(label.to_ascii_uppercase(), unique(label, name, used));
-        }
-        unique(&format!("{name}_end"), name, used)
-    });
+    let copy_out = !place.copy_out.is_empty();
+    let end = end_label(name, &lines, (place.labels, copy_out), &mut renamed_labels);
     let mut words = Words {
         pou: name,
         decl: place.decl,
@@ -96,7 +94,8 @@ pub(super) fn write_lines(
             continue;
         }
         if call.is_none() {
-            if let Some(lines) = own_function(&line, &code, name, (place.user, place.out), at) {
+            let own = (place.user, place.decl, &mut *place.out);
+            if let Some(lines) = own_function(&line, &code, name, own, at) {
                 match lines {
                     Ok(lines) => place.out.lines.extend(lines.into_iter().map(|l| (l, at))),
                     Err(e) => errors.push(Located::new(at, e)),
@@ -127,6 +126,67 @@ pub(super) fn write_lines(
     if let (Some(end), true) = (words.end, words.returned) {
         place.out.lines.push((format!("{end}:"), last));
     }
+    if let Some(user) = place.user {
+        let lines = &mut place.out.lines[written..];
+        errors.extend(pass_externals(lines, name, place.decl, user));
+    }
+    let copy_out = place.copy_out.iter().map(|l| (l.clone(), last));
+    place.out.lines.extend(copy_out);
+    errors
+}
+
+/// The label a body's RETs jump to: a program's (its labels, renamed
+/// into `renamed`, and its end unique among `labels`, the programs'
+/// section's), or a block's that copies its externals out (`copy_out`:
+/// its end a label none of its own); `None` for another block, whose
+/// RETs return.
+fn end_label(
+    name: &str,
+    lines: &[(String, usize)],
+    (labels, copy_out): (Option<&mut HashSet<String>>, bool),
+    renamed: &mut HashMap<String, String>,
+) -> Option<String> {
+    let own = lines.iter().filter_map(|(l, _)| label_of(l));
+    match labels {
+        Some(used) => {
+            for label in own {
+                renamed.insert(label.to_ascii_uppercase(), unique(label, name, used));
+            }
+            Some(unique(&format!("{name}_end"), name, used))
+        }
+        None if copy_out => {
+            let mut used = own.map(str::to_ascii_uppercase).collect();
+            Some(unique(&format!("{name}_end"), name, &mut used))
+        }
+        None => None,
+    }
+}
+
+/// Each `CAL` of `lines` (POU `pou`'s, written) of an instance of the
+/// project's own block that has externals given them
+/// ([`super::il_call::with_externals`]); a call whose POU has no
+/// variable for one, refused at its line.
+fn pass_externals(
+    lines: &mut [(String, usize)],
+    pou: &str,
+    decl: &Declarations,
+    user: &HashMap<String, Interface>,
+) -> Vec<Located<SoftError>> {
+    let mut errors = Vec::new();
+    for (line, at) in lines {
+        let code = super::il_call::without_comments(line);
+        let (label, rest) = match code.split_once(':') {
+            Some((head, rest)) if label_of(&code) == Some(head.trim()) => {
+                (format!("{}: ", head.trim()), rest)
+            }
+            _ => (String::new(), code.as_str()),
+        };
+        match super::il_call::with_externals(rest, pou, decl, user) {
+            Some(Ok(call)) => *line = format!("{label}{call}"),
+            Some(Err(e)) => errors.push(Located::new(*at, e)),
+            None => {}
+        }
+    }
     errors
 }
 
@@ -136,7 +196,11 @@ fn own_function(
     line: &str,
     code: &str,
     pou: &str,
-    (user, out): (Option<&HashMap<String, Interface>>, &mut Output),
+    (user, decl, out): (
+        Option<&HashMap<String, Interface>>,
+        &Declarations,
+        &mut Output,
+    ),
     at: usize,
 ) -> Option<Result<Vec<String>, SoftError>> {
     let user = user?;
@@ -146,7 +210,7 @@ fn own_function(
         }
         _ => (None, code),
     };
-    let call = super::il_call::own_function_call(code, user, pou, out, at)?;
+    let call = super::il_call::own_function_call(code, (user, decl), pou, out, at)?;
     Some(call.map(|lines| {
         let label = label.map(|l| format!("{l}:"));
         label.into_iter().chain(lines).collect()

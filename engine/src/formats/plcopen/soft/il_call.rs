@@ -15,7 +15,7 @@
 
 use std::collections::HashMap;
 
-use super::declare::Interface;
+use super::declare::{Declarations, Held, Interface};
 use super::emit::Output;
 use super::SoftError;
 use crate::iec::functions::FunctionError;
@@ -25,7 +25,7 @@ use crate::iec::functions::FunctionError;
 /// is not; the hidden instance (and first input) declared in `out`.
 pub(super) fn own_function_call(
     code: &str,
-    user: &HashMap<String, Interface>,
+    (user, decl): (&HashMap<String, Interface>, &Declarations),
     pou: &str,
     out: &mut Output,
     at: usize,
@@ -48,7 +48,7 @@ pub(super) fn own_function_call(
     let hidden = format!("{pou}_il_f{k}");
     out.vars.push((format!("{hidden} : {name};"), at));
     let mut lines = Vec::new();
-    let args = if let Some(formal) = rest.strip_prefix('(') {
+    let mut args = if let Some(formal) = rest.strip_prefix('(') {
         // The formal list, as written (a `)` closes it).
         formal.trim_end().trim_end_matches(')').trim().to_string()
     } else {
@@ -73,7 +73,110 @@ pub(super) fn own_function_call(
         }
         args.join(", ")
     };
+    let externals = match decl.external_args(pou, name, iface) {
+        Ok(externals) => externals,
+        Err(e) => return Some(Err(e)),
+    };
+    for external in externals {
+        if !args.is_empty() {
+            args.push_str(", ");
+        }
+        args.push_str(&external);
+    }
     lines.push(format!("CAL {hidden}({args})"));
     lines.push(format!("LD {hidden}.{}", result.0));
     Some(Ok(lines))
+}
+
+/// `code` (an IL instruction, no label, no comment, its words the soft
+/// PLC's) with the external arguments added when it calls an instance
+/// of the project's own block that has externals (`CAL c0(Reset := r)`
+/// → `CAL c0(Reset := r, ResetCounterValue := ResetCounterValue)`), in
+/// POU `pou`; `None` when it calls no such block or gives them already.
+/// Refused when `pou` has no variable for one.
+pub(super) fn with_externals(
+    code: &str,
+    pou: &str,
+    decl: &Declarations,
+    user: &HashMap<String, Interface>,
+) -> Option<Result<String, SoftError>> {
+    let rest = code.trim_start();
+    let op_end = rest.find(char::is_whitespace).unwrap_or(rest.len());
+    let op = &rest[..op_end];
+    if !["CAL", "CALC", "CALCN"]
+        .iter()
+        .any(|c| c.eq_ignore_ascii_case(op))
+    {
+        return None;
+    }
+    let after = rest[op_end..].trim_start();
+    let name_end = after
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(after.len());
+    let instance = &after[..name_end];
+    let Some(Held::User(kind)) = decl.held(instance) else {
+        return None;
+    };
+    let externals = match decl.external_args(pou, kind, user.get(&kind.to_ascii_uppercase())?) {
+        Ok(externals) if externals.is_empty() => return None,
+        Ok(externals) => externals,
+        Err(e) => return Some(Err(e)),
+    };
+    let params = after[name_end..].trim();
+    let mut args: Vec<String> = match params.strip_prefix('(').map(|p| p.strip_suffix(')')) {
+        Some(Some(inner)) if !inner.trim().is_empty() => vec![inner.trim().to_string()],
+        Some(Some(_)) => Vec::new(),
+        None if params.is_empty() => Vec::new(),
+        // Not a call the loader reads: it says why, as written.
+        _ => return None,
+    };
+    // One the call gives already (an ST call's, lowered) is not given twice.
+    let given: Vec<String> = args
+        .iter()
+        .flat_map(|a| a.split(','))
+        .filter_map(|a| a.split([':', '=']).next())
+        .map(|pin| pin.trim().to_ascii_uppercase())
+        .collect();
+    let pin = |a: &String| {
+        a.split([':', '='])
+            .next()
+            .unwrap_or_default()
+            .trim()
+            .to_ascii_uppercase()
+    };
+    let missing: Vec<String> = externals
+        .into_iter()
+        .filter(|a| !given.contains(&pin(a)))
+        .collect();
+    if missing.is_empty() {
+        return None;
+    }
+    args.extend(missing);
+    Some(Ok(format!("{op} {instance}({})", args.join(", "))))
+}
+
+/// `line` without its `(* … *)` comments (a text's `(*` is no comment).
+pub(super) fn without_comments(line: &str) -> String {
+    let mut out = String::new();
+    let (mut comment, mut text) = (false, false);
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        if comment {
+            if c == '*' && chars.peek() == Some(&')') {
+                chars.next();
+                comment = false;
+            }
+            continue;
+        }
+        if !text && c == '(' && chars.peek() == Some(&'*') {
+            chars.next();
+            comment = true;
+            continue;
+        }
+        if c == '\'' {
+            text = !text;
+        }
+        out.push(c);
+    }
+    out
 }

@@ -89,6 +89,7 @@ pub(in crate::formats::plcopen) fn il_of(
                 out: &mut out,
                 labels: Some(&mut labels),
                 user: Some(&user),
+                copy_out: Vec::new(),
             };
             errors.extend(il_body::write(p, il, text, place));
             continue;
@@ -100,6 +101,7 @@ pub(in crate::formats::plcopen) fn il_of(
                 out: &mut out,
                 labels: Some(&mut labels),
                 user: Some(&user),
+                copy_out: Vec::new(),
             };
             errors.extend(st_body::write(p, st, text, place, &user));
             continue;
@@ -152,12 +154,15 @@ fn block_sections<'a>(
     let mut sections = Vec::new();
     for (index, (p, mut d)) in blocks.into_iter().enumerate() {
         let mut out = emit::Output::default();
+        // Its externals copied back out when its body ends.
+        let copy_out = d.copy_out();
         if let Some(il) = il_body::il_body(p) {
             let place = il_body::Place {
                 decl: &d,
                 out: &mut out,
                 labels: None,
                 user: Some(user),
+                copy_out,
             };
             errors.extend(il_body::write(p, il, source, place));
         } else if let Some(st) = st_body::st_body(p) {
@@ -166,11 +171,15 @@ fn block_sections<'a>(
                 out: &mut out,
                 labels: None,
                 user: Some(user),
+                copy_out,
             };
             errors.extend(st_body::write(p, st, source, place, user));
         } else {
             let em = emitter(&mut d, &mut out, p, index, own, user);
             errors.extend(emit_body(em, p));
+            // A drawn body has no RET: the copy follows its last line.
+            let at = out.lines.last().map_or(p.line, |&(_, at)| at);
+            out.lines.extend(copy_out.into_iter().map(|l| (l, at)));
         }
         sections.push((p, d, out));
     }

@@ -128,6 +128,23 @@ fn source_of(scope: &Scope, text: &str) -> (String, usize) {
             }
             out.push_str("END_VAR\n");
         }
+        // Its externals, which an ST call then passes (`iec::st::lower_io`).
+        for (keyword, copied_out) in [("VAR_EXTERNAL", true), ("VAR_EXTERNAL CONSTANT", false)] {
+            let of_kind: Vec<_> = iface
+                .externals
+                .iter()
+                .filter(|e| e.copied_out == copied_out)
+                .collect();
+            if of_kind.is_empty() {
+                continue;
+            }
+            out.push_str(keyword);
+            out.push('\n');
+            for e in of_kind {
+                out.push_str(&format!("  {} : {};\n", e.name, e.ty.name()));
+            }
+            out.push_str("END_VAR\n");
+        }
         out.push_str(end);
         out.push('\n');
     }
