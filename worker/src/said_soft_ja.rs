@@ -35,16 +35,16 @@ pub fn soft_ja(e: &SoftError) -> Option<String> {
             format!("{ty}: {pin} がつながっていません")
         }
         S::ProjectBlock(name, how) => format!(
-            "{name} はプロジェクト自身の {how} です: ソフト PLC が実行するプロジェクトのファンクションブロックは LD・FBD で描いたものか IL で書いたものです"
+            "{name} はプロジェクト自身の {how} です: ソフト PLC が実行するプロジェクトのファンクションブロックは LD・FBD で描いたものか IL・ST で書いたものです"
         ),
         S::Block(name) if name.eq_ignore_ascii_case("EXECUTE") => format!(
-            "{name} は CODESYS のインライン ST のブロックです: ソフト PLC は ST を実行しません"
+            "{name} は CODESYS のインライン ST のブロックですが、このブロックには ST がありません (STCode がありません)"
         ),
         S::Block(name) => format!(
             "{name} はソフト PLC の標準ブロックではありません (メーカーかライブラリのブロック)"
         ),
         S::NotDrawn(pous) => format!(
-            "タスクが実行するプログラムに LD・FBD で描いたもの、IL で書いたものがありません: {pous}"
+            "タスクが実行するプログラムに LD・FBD で描いたもの、IL・ST で書いたものがありません: {pous}"
         ),
         S::NoInput(block, pin, has) => {
             format!("{block} に入力 `{pin}` はありません (入力: {has})")
