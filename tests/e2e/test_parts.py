@@ -7,7 +7,7 @@ service worker keeps every part)."""
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
-from test_app import el, on, open_fresh, wait
+from test_app import drawn, el, on, open_fresh, wait
 from test_ladder import first_visit_kept_offline, focus_ladder, place
 
 
@@ -95,8 +95,12 @@ def test_a_machine_whose_part_cannot_be_fetched_keeps_its_ladder_and_retries(dri
     wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="the lamp follows the input")
 
 
-def test_every_machine_opens_offline_after_one_visit(driver):
+def test_every_machine_plant_and_format_works_offline_after_one_visit(driver, tmp_path):
+    """Issue #53: after one visit every machine, plant and file format
+    works with the server gone, though that visit opened none of them."""
     from selenium.webdriver.support.ui import Select
+    from test_ldmicro import COUNTER
+    from test_plant import choose, figures
     server = first_visit_kept_offline(driver)
     url = server.url
     server.stop()
@@ -106,6 +110,13 @@ def test_every_machine_opens_offline_after_one_visit(driver):
                            ("arduino-plc", "arduino-monitor"), ("soft-plc", "soft-board")]:
         Select(el(driver, "machine")).select_by_value(machine)
         wait(driver, lambda: el(driver, board), message=f"{machine} opens offline")
+    # A file format (LDmicro's, read by the files worker) and a plant.
+    path = tmp_path / "counter.ld"
+    path.write_bytes(COUNTER.encode("latin-1"))
+    el(driver, "open-file").send_keys(str(path))
+    wait(driver, lambda: drawn(driver, "var-Cparts"), message="an LDmicro file opens offline")
+    choose(driver, "tank")
+    wait(driver, lambda: figures(driver), message="a plant is drawn offline")
 
 
 def test_a_share_link_made_while_its_codec_cannot_be_fetched_says_so(driver, base_url):

@@ -76,29 +76,9 @@ pub fn export(ladder: &Ladder, name: &str) -> Result<String, Vec<LadderError>> {
   </instances>
 </project>
 "#,
-        head = project_head(name),
+        head = super::project_head(name),
         body = w.body
     ))
-}
-
-/// A project file's beginning up to its `<types>`, the same for every
-/// export (a ladder's, `export_st`'s); `name` is escaped here.
-pub(super) fn project_head(name: &str) -> String {
-    format!(
-        r#"<?xml version="1.0" encoding="utf-8"?>
-<project xmlns="{NS_V201}" xmlns:xhtml="http://www.w3.org/1999/xhtml">
-  <fileHeader companyName="Hashigo" productName="Hashigo" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
-  <contentHeader name="{name}">
-    <coordinateInfo>
-      <fbd><scaling x="1" y="1"/></fbd>
-      <ld><scaling x="1" y="1"/></ld>
-      <sfc><scaling x="1" y="1"/></sfc>
-    </coordinateInfo>
-  </contentHeader>
-  <types>
-"#,
-        name = escape(name)
-    )
 }
 
 #[derive(Default)]

@@ -70,7 +70,7 @@ fn project(source: &Source, bodies: &[String], name: &str) -> String {
   </instances>
 </project>
 "#,
-        head = super::export::project_head(name),
+        head = super::project_head(name),
     )
 }
 

@@ -54,6 +54,26 @@ pub use warning::ImportWarning;
 
 /// The TC6 v2.01 namespace.
 pub const NS_V201: &str = "http://www.plcopen.org/xml/tc6_0201";
+
+/// A project file's beginning up to its `<types>`, the same for every
+/// export (a ladder's, `export_st`'s); `name` is escaped here.
+pub(super) fn project_head(name: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="{NS_V201}" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="Hashigo" productName="Hashigo" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="{name}">
+    <coordinateInfo>
+      <fbd><scaling x="1" y="1"/></fbd>
+      <ld><scaling x="1" y="1"/></ld>
+      <sfc><scaling x="1" y="1"/></sfc>
+    </coordinateInfo>
+  </contentHeader>
+  <types>
+"#,
+        name = quick_xml::escape::escape(name)
+    )
+}
 /// The TC6 v2.00 namespace (CODESYS V3 exports).
 pub const NS_V200: &str = "http://www.plcopen.org/xml/tc6_0200";
 /// The TC6 v1.0 namespace.

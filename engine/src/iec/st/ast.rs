@@ -373,6 +373,20 @@ pub struct Call {
     pub args: Vec<Arg>,
 }
 
+impl Call {
+    /// The input values in their order (formal or positional), the
+    /// outputs left out: what a standard function takes.
+    pub fn input_values(&self) -> Vec<&Expr> {
+        self.args
+            .iter()
+            .filter_map(|a| match a {
+                Arg::Positional(e) | Arg::Input(_, e) => Some(e),
+                Arg::Output { .. } => None,
+            })
+            .collect()
+    }
+}
+
 /// A call's argument.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Arg {

@@ -491,7 +491,7 @@ impl Lower {
             let what = format!("the function {}", call.callee.name.to_ascii_uppercase());
             return self.not_yet(call.callee.span, what);
         }
-        let values = super::lower_args::input_values(call);
+        let values = call.input_values();
         let Some((first, rest)) = values.split_first() else {
             return self.not_yet(span, "a function called without inputs");
         };

@@ -13,19 +13,6 @@ use super::ast::{BinaryOp, Call, Expr, ExprKind, Literal, Selector};
 use super::lower::Lower;
 use crate::iec::data::DataType;
 
-/// A call's input values in their order (formal or positional), its
-/// outputs left out: what a standard function takes.
-pub(super) fn input_values(call: &Call) -> Vec<&Expr> {
-    use super::ast::Arg;
-    call.args
-        .iter()
-        .filter_map(|a| match a {
-            Arg::Positional(e) | Arg::Input(_, e) => Some(e),
-            Arg::Output { .. } => None,
-        })
-        .collect()
-}
-
 impl Lower {
     /// Computes `call`'s later inputs that are expressions into hidden
     /// variables (read back by [`Lower::made_arg`]).
@@ -33,7 +20,7 @@ impl Lower {
         if crate::iec::il::Function::named(&call.callee.name).is_none() {
             return;
         }
-        let values = input_values(call);
+        let values = call.input_values();
         let Some((first, rest)) = values.split_first() else {
             return;
         };
