@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use quick_xml::escape::escape;
 
-use super::{time_literal, NS_V201};
+use super::time_literal;
 use crate::ladder::element::{CoilKind, ContactKind, Element};
 use crate::ladder::grid::{Ladder, LadderError, Pos};
 use crate::ladder::net::{analyse, Net, RungLogic};
