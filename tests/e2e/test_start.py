@@ -11,7 +11,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
-from test_app import el, on, wait
+from test_app import el, on, severe_console_messages, wait
 from test_ladder import first_visit_kept_offline, keys, one_rung_link, place
 from test_screens import screen_driver, tap_entry
 
@@ -53,6 +53,12 @@ def test_a_fresh_profile_opens_on_the_start_screen_a_share_link_does_not(driver,
          message="the example opens")
     # The app bar names what is open, not "Untitled".
     assert el(driver, "app-project").text == "Manual: timer OUT T00 K19"
+    # Regression: the screen's own work after the click (marking the
+    # machine's card a frame later) met its disposed screen and the page
+    # crashed ("An internal error occurred").
+    driver.execute_script("return new Promise((done) => requestAnimationFrame(() => setTimeout(done, 300)))")
+    assert not driver.find_elements(By.CSS_SELECTOR, ".fatal"), "the page did not crash"
+    assert severe_console_messages(driver) == []
     # Closed for good: not on the next visit; Help brings it back.
     driver.refresh()
     wait(driver, lambda: el(driver, "ladder"))

@@ -60,9 +60,12 @@ impl Files {
                     kept.update_value(|k| {
                         k.insert(url, body.clone());
                     });
-                    into.set(Fetched::Text(body));
+                    // The screen that asked may be closed by now.
+                    let _ = into.try_set(Fetched::Text(body));
                 }
-                Err(e) => into.set(Fetched::Failed(e)),
+                Err(e) => {
+                    let _ = into.try_set(Fetched::Failed(e));
+                }
             }
         });
     }

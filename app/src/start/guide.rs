@@ -32,8 +32,9 @@ pub fn Guide() -> impl IntoView {
         let loaded = fetched.with(|f| matches!(f, Fetched::Text(_)));
         if let (Some(section), true) = (section, loaded) {
             // After the text is drawn into the page.
+            // The guide may be closed by then.
             request_animation_frame(move || {
-                if let Some(root) = body.get_untracked() {
+                if let Some(Some(root)) = body.try_get_untracked() {
                     scroll_to(&root, &section);
                 }
             });

@@ -43,9 +43,10 @@ pub fn StartScreen() -> impl IntoView {
     Effect::new(move |_| {
         let machine = ctx.machine.get();
         fetched.track();
-        // After the text is drawn into the page.
+        // After the text is drawn into the page; by then the screen may
+        // be gone (an example chosen changes the machine and closes it).
         request_animation_frame(move || {
-            if let Some(root) = body.get_untracked() {
+            if let Some(Some(root)) = body.try_get_untracked() {
                 show_machine(&root, machine);
             }
         });

@@ -262,8 +262,9 @@ pub fn WhyPanel(ctx: LadderCtx, on_back: Callback<()>) -> impl IntoView {
         let request = ctx.why.request.get();
         if request != ctx.why.focused.get_value() {
             ctx.why.focused.set_value(request);
+            // The pane may be closed by the next frame.
             request_animation_frame(move || {
-                if let Some(p) = pane.get_untracked() {
+                if let Some(Some(p)) = pane.try_get_untracked() {
                     let _ = p.focus();
                 }
             });
