@@ -11,11 +11,11 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
 from test_access import violations
-from test_app import el, on, open_fresh, severe_console_messages, wait
+from test_app import ROOT, el, on, open_fresh, severe_console_messages, wait
 from test_glance import close_menu
 from test_ladder import focus_ladder, place
 from test_screens import screen_driver
-from test_soft import box_values
+from test_soft import box_values, choose_soft
 
 PROGRAM = """PROGRAM counter
 VAR
@@ -264,3 +264,70 @@ def test_an_st_box_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts):
             drv.save_screenshot(str(artifacts / f"st-box-{screen}.png"))
         finally:
             drv.quit()
+
+
+OWN_XML = (ROOT / "engine/tests/ladder/fixtures/soft-st.xml").read_text()
+
+
+def plcopen_st_only():
+    """Our own PLCopen project (engine/tests/ladder/fixtures/soft-st.xml)
+    without its LD program: a program and a block, both in ST."""
+    start = OWN_XML.index('<pou name="inline"')
+    end = OWN_XML.index("</pou>", start) + len("</pou>")
+    text = OWN_XML[:start] + OWN_XML[end:]
+    return text.replace('<pouInstance name="inlineInst" typeName="inline"/>', "")
+
+
+def plcopen_mixed():
+    """The same project with its LD program a contact and a coil: LD and ST."""
+    start = OWN_XML.index('<block localId="3"')
+    end = OWN_XML.index("</block>", start) + len("</block>")
+    text = OWN_XML[:start] + OWN_XML[end:]
+    return text.replace('<connection refLocalId="3"/></connectionPointIn><connectionPointOut/><variable>seen',
+                        '<connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>seen')
+
+
+def open_plcopen_st(driver, base_url, tmp_path, text, name="project.xml"):
+    """A PLCopen project opened on the soft PLC: its ST in the pane."""
+    choose_soft(driver, base_url)
+    path = tmp_path / name
+    path.write_text(text)
+    el(driver, "open-file").send_keys(str(path))
+    close_menu(driver)
+    area = wait(driver, lambda: el(driver, "soft-st-text"))
+    wait(driver, lambda: "PROGRAM main" in area.get_attribute("value"), message="the project's ST")
+    wait(driver, lambda: el(driver, "soft-program-error").text.strip() == "no errors",
+         message=el(driver, "soft-program-error", reveal=False).text)
+    return area
+
+
+def line_holding(area, text):
+    """The 1-based line of the pane's text that holds `text`."""
+    lines = area.get_attribute("value").split("\n")
+    return next(i for i, line in enumerate(lines) if text in line) + 1
+
+
+def test_a_plcopen_project_in_st_opens_in_the_st_pane_and_runs(driver, base_url, tmp_path, artifacts):
+    area = open_plcopen_st(driver, base_url, tmp_path, plcopen_st_only())
+    assert el(driver, "soft-language").get_attribute("value") == "st"
+    text = area.get_attribute("value")
+    assert "FUNCTION_BLOCK Counter" in text and "IF Reset THEN" in text, text
+    # Nothing drawn: the ladder is empty, nothing said against the file.
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]')
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid^="cell-0-"]')
+    el(driver, "run").click()
+    line = line_holding(area, "count := c0.OUT;")
+    wait(driver, lambda: value_beside(driver, line).startswith("count = "), message="the value beside its line")
+    # c0 counts scans until count reaches 10; then the program returns
+    # before `count := count * 100`.
+    wait(driver, lambda: count_beside(driver, line) >= 10, message="counting, live")
+    driver.save_screenshot(str(artifacts / "st-plcopen.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_a_plcopen_project_mixing_ld_and_st_opens_each_on_its_side(driver, base_url, tmp_path):
+    area = open_plcopen_st(driver, base_url, tmp_path, plcopen_mixed(), "mixed.xml")
+    assert "PROGRAM inline" not in area.get_attribute("value")
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-kind") == "no",
+         message="the LD program on the ladder")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
