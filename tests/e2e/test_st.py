@@ -414,8 +414,8 @@ def test_why_into_st_and_a_plcopen_st_project_on_a_laptop_and_a_phone(tmp_path, 
             drv.save_screenshot(str(artifacts / f"st-plcopen-why-{screen}.png"))
             open_library(drv, base_url, tmp_path, f"{screen}-blocks.st")
             place_scale(drv)
-            why_into_the_box(drv)
-            el(drv, "why-panel")
+            found = why_into_the_box(drv)
+            drv.execute_script("arguments[0].scrollIntoView({block: 'center'})", found[0])
             drv.save_screenshot(str(artifacts / f"st-why-box-{screen}.png"))
             found = [v for v in violations(drv)
                      if any("why" in n or "st-" in n for n in v["nodes"])]
