@@ -56,6 +56,7 @@ impl Workspaces {
             apply_settings: Callback::new(move |settings| minasec.apply_project_settings(settings)),
             source: Callback::new(|()| None),
             apply_source: Callback::new(|_| ()),
+            why_st: Callback::new(|_| Vec::new()),
         };
         let ladder = ladders.of(MachineId::MinasecU);
         ladder.attach(machines::link(minasec.sim, move || minasec.refresh()));

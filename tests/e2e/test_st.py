@@ -11,11 +11,11 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
 from test_access import violations
-from test_app import el, on, open_fresh, severe_console_messages, wait
+from test_app import ROOT, el, on, open_fresh, severe_console_messages, wait
 from test_glance import close_menu
 from test_ladder import focus_ladder, place
 from test_screens import screen_driver
-from test_soft import box_values
+from test_soft import box_values, choose_soft
 
 PROGRAM = """PROGRAM counter
 VAR
@@ -190,8 +190,8 @@ def open_library(driver, base_url, tmp_path, name="blocks.st"):
     wait(driver, lambda: el(driver, "machine", reveal=False).get_attribute("value") == "soft-plc",
          message="the page switches to the soft PLC")
     close_menu(driver)
-    wait(driver, lambda: el(driver, "soft-program-error").text.strip() == "no errors",
-         message="a library of blocks loads: " + el(driver, "soft-program-error", reveal=False).text)
+    wait(driver, lambda: settled_text(driver, "soft-program-error").strip() == "no errors",
+         message="a library of blocks loads")
     wait(driver, lambda: el(driver, "palette-st-scale"), message="SCALE in the palette")
 
 
@@ -262,5 +262,163 @@ def test_an_st_box_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts):
             wait(drv, lambda: "y=11" in box_values(drv, "cell-0-0-1"))
             el(drv, "cell-0-0-1")
             drv.save_screenshot(str(artifacts / f"st-box-{screen}.png"))
+        finally:
+            drv.quit()
+
+
+OWN_XML = (ROOT / "engine/tests/ladder/fixtures/soft-st.xml").read_text()
+
+
+def plcopen_st_only():
+    """Our own PLCopen project (engine/tests/ladder/fixtures/soft-st.xml)
+    without its LD program: a program and a block, both in ST."""
+    start = OWN_XML.index('<pou name="inline"')
+    end = OWN_XML.index("</pou>", start) + len("</pou>")
+    text = OWN_XML[:start] + OWN_XML[end:]
+    return text.replace('<pouInstance name="inlineInst" typeName="inline"/>', "")
+
+
+def plcopen_mixed():
+    """The same project with its LD program a contact and a coil: LD and ST."""
+    start = OWN_XML.index('<block localId="3"')
+    end = OWN_XML.index("</block>", start) + len("</block>")
+    text = OWN_XML[:start] + OWN_XML[end:]
+    return text.replace('<connection refLocalId="3"/></connectionPointIn><connectionPointOut/><variable>seen',
+                        '<connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>seen')
+
+
+def open_plcopen_st(driver, base_url, tmp_path, text, name="project.xml"):
+    """A PLCopen project opened on the soft PLC: its ST in the pane."""
+    choose_soft(driver, base_url)
+    path = tmp_path / name
+    path.write_text(text)
+    el(driver, "open-file").send_keys(str(path))
+    close_menu(driver)
+    area = wait(driver, lambda: el(driver, "soft-st-text"))
+    wait(driver, lambda: "PROGRAM main" in area.get_attribute("value"), message="the project's ST")
+    wait(driver, lambda: el(driver, "soft-program-error").text.strip() == "no errors",
+         message=el(driver, "soft-program-error", reveal=False).text)
+    return area
+
+
+def line_holding(area, text):
+    """The 1-based line of the pane's text that holds `text`."""
+    lines = area.get_attribute("value").split("\n")
+    return next(i for i, line in enumerate(lines) if text in line) + 1
+
+
+def test_a_plcopen_project_in_st_opens_in_the_st_pane_and_runs(driver, base_url, tmp_path, artifacts):
+    area = open_plcopen_st(driver, base_url, tmp_path, plcopen_st_only())
+    assert el(driver, "soft-language").get_attribute("value") == "st"
+    text = area.get_attribute("value")
+    assert "FUNCTION_BLOCK Counter" in text and "IF Reset THEN" in text, text
+    # Nothing drawn: the ladder is empty, nothing said against the file.
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]')
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind]:not([data-kind=""])')
+    el(driver, "run").click()
+    line = line_holding(area, "count := c0.OUT;")
+    wait(driver, lambda: value_beside(driver, line).startswith("count = "), message="the value beside its line")
+    # c0 counts scans until count reaches 10; then the program returns
+    # before `count := count * 100`.
+    wait(driver, lambda: count_beside(driver, line) >= 10, message="counting, live")
+    driver.save_screenshot(str(artifacts / "st-plcopen.png"))
+    assert severe_console_messages(driver) == []
+
+
+def test_a_plcopen_project_mixing_ld_and_st_opens_each_on_its_side(driver, base_url, tmp_path):
+    area = open_plcopen_st(driver, base_url, tmp_path, plcopen_mixed(), "mixed.xml")
+    assert "PROGRAM inline" not in area.get_attribute("value")
+    wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-kind") == "no",
+         message="the LD program on the ladder")
+    assert el(driver, "problems").text.strip() == "No problems.", el(driver, "problems").text
+
+
+def ask_why_in_the_pane(driver, name):
+    """Why? on `name` in the ST pane: the statements listed."""
+    field = el(driver, "st-why-name")
+    field.clear()
+    field.send_keys(name)
+    el(driver, "st-why").click()
+    return wait(driver, lambda: el(driver, "st-why-result"), message="the answer")
+
+
+def test_why_on_an_st_programs_variable_names_its_statement_and_operands(driver, base_url, tmp_path):
+    open_st(driver, base_url, tmp_path)
+    el(driver, "soft-program-load").click()
+    wait(driver, lambda: count_beside(driver, 7) > 6, message="running, lamp on")
+    result = ask_why_in_the_pane(driver, "lamp")
+    items = result.find_elements(By.CSS_SELECTOR, '[data-testid="why-st"]')
+    assert [i.get_attribute("data-line") for i in items] == ["8"], result.text
+    text = items[0].text
+    assert "ST line 8" in text and "lamp := count > 5;" in text, text
+    assert "count = " in text and items[0].get_attribute("data-ran") == "1", text
+    # Paused, the operand's value is the scan's: the one beside line 7.
+    el(driver, "pause").click()
+    time.sleep(0.3)
+    result = ask_why_in_the_pane(driver, "lamp")
+    assert f"count = {count_beside(driver, 7)}" in result.text, result.text
+    # A name no statement writes says so.
+    assert "No statement of the program writes nothing" in ask_why_in_the_pane(driver, "nothing").text
+    assert severe_console_messages(driver) == []
+
+
+def coil_cell(driver):
+    """The coil's cell, shown (on a phone the ladder may sit behind a
+    dock)."""
+    coil = driver.find_element(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="coil"]')
+    return el(driver, coil.get_attribute("data-testid"))
+
+
+def why_into_the_box(driver):
+    """The SCALE box's ladder running with go on; Why? on its coil."""
+    el(driver, "run").click()
+    press = el(driver, "soft-input-IX0-0")
+    # On a phone the board's switch sits under the tools' dock: pressed
+    # as the board's own handler takes it.
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'}); arguments[0].click()", press)
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="the box passes power")
+    coil = coil_cell(driver)
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", coil)
+    coil.click()
+    driver.switch_to.active_element.send_keys("w")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == "1")
+    return wait(driver, lambda: driver.find_elements(
+        By.CSS_SELECTOR, '[data-testid="why-panel"] [data-testid="why-st"]'), message="the block's statement")
+
+
+def test_why_on_a_coil_fed_by_an_st_block_follows_into_its_statements(driver, base_url, tmp_path):
+    open_library(driver, base_url, tmp_path)
+    place_scale(driver)
+    found = why_into_the_box(driver)
+    assert [f.get_attribute("data-line") for f in found] == ["11"], [f.text for f in found]
+    text = found[0].text
+    assert "ok := go AND y > 10;" in text, text
+    assert "go = TRUE" in text and "y = 11" in text, text
+    # The line's button shows the ST pane.
+    found[0].find_element(By.CSS_SELECTOR, "button").click()
+    wait(driver, lambda: el(driver, "soft-st-text", reveal=False).is_displayed())
+    assert severe_console_messages(driver) == []
+
+
+def test_why_into_st_and_a_plcopen_st_project_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts):
+    for screen in ["laptop", "phone"]:
+        drv = screen_driver(tmp_path / screen, screen)
+        try:
+            area = open_plcopen_st(drv, base_url, tmp_path, plcopen_st_only(), f"{screen}.xml")
+            el(drv, "run").click()
+            line = line_holding(area, "count := c0.OUT;")
+            wait(drv, lambda: value_beside(drv, line).startswith("count = "))
+            result = ask_why_in_the_pane(drv, "count")
+            assert "c0.OUT = " in result.text, result.text
+            drv.execute_script("arguments[0].scrollIntoView({block: 'center'})", result)
+            drv.save_screenshot(str(artifacts / f"st-plcopen-why-{screen}.png"))
+            open_library(drv, base_url, tmp_path, f"{screen}-blocks.st")
+            place_scale(drv)
+            found = why_into_the_box(drv)
+            drv.execute_script("arguments[0].scrollIntoView({block: 'center'})", found[0])
+            drv.save_screenshot(str(artifacts / f"st-why-box-{screen}.png"))
+            found = [v for v in violations(drv)
+                     if any("why" in n or "st-" in n for n in v["nodes"])]
+            assert found == [], found
         finally:
             drv.quit()

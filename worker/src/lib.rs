@@ -101,6 +101,11 @@ pub struct ImportReply {
     /// another (the soft PLC runs most OpenPLC projects): that machine, so
     /// the page can offer the switch (issue #49).
     pub runs_on: Option<MachineId>,
+    /// The project's ST POUs as one `.st` text for the soft PLC's ST pane
+    /// (issue #55), beside the ladder: on the soft PLC, for the whole
+    /// project (no POU picked), when it has any.
+    #[serde(default)]
+    pub st: Option<String>,
 }
 
 /// One import error as the page can say it.
@@ -207,6 +212,16 @@ fn import(
         .as_ref()
         .map_err(Clone::clone)
         .and_then(|d| d.import(Some(machine), Some(&map), pou));
+    // A project whose programs are all in ST: an empty ladder, the ST
+    // in the pane (issue #55).
+    let whole_on_soft = soft && pou.is_none();
+    let imported = match (imported, &document) {
+        (Err(errors), Ok(d)) if whole_on_soft => st::drawn_apart(d, errors),
+        (other, _) => other,
+    };
+    if whole_on_soft && imported.is_ok() {
+        reply.st = document.as_ref().ok().and_then(st::text);
+    }
     match imported {
         Ok(imported) => {
             for w in &imported.warnings {
@@ -246,7 +261,11 @@ fn import(
 /// whole (no map: it needs none).
 fn elsewhere(document: &Document, machine: MachineId, pou: Option<&str>) -> Option<MachineId> {
     let soft = IEC_MACHINE;
-    (machine != soft && document.import(Some(soft), None, pou).is_ok()).then_some(soft)
+    let takes = match document.import(Some(soft), None, pou) {
+        Ok(_) => true,
+        Err(errors) => pou.is_none() && st::drawn_apart(document, errors).is_ok(),
+    };
+    (machine != soft && takes).then_some(soft)
 }
 
 /// A warning in the page's words: the command line's advice (`--pou NAME
@@ -274,5 +293,8 @@ mod said_soft_ja;
 pub mod said_st_ja;
 pub use said_soft_ja::box_error_ja;
 mod said_warning_ja;
+mod st;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_st;

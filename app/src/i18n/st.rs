@@ -27,6 +27,16 @@ pub struct St {
     /// A project's ST replaced the text typed before, kept under a key
     /// (said after it).
     pub set_aside: &'static str,
+    /// Why?: a statement of the ST that wrote a value: `{line}`.
+    pub why_line: &'static str,
+    /// Why? in the pane: the name asked about's field and its button.
+    pub why_name: &'static str,
+    pub why: &'static str,
+    /// Why? found no statement that writes the name: `{name}`.
+    pub why_none: &'static str,
+    /// Whether the statement ran in the scan explained.
+    pub why_ran: &'static str,
+    pub why_not_ran: &'static str,
 }
 
 /// In English.
@@ -44,6 +54,12 @@ pub const EN: St = St {
     keyword: "keyword",
     hint: "Ctrl+Space completes a name; click a line number to set a breakpoint.",
     set_aside: "The project brought its Structured Text; the text typed before is kept under",
+    why_line: "ST line {line}",
+    why_name: "Why does this variable hold its value?",
+    why: "Why?",
+    why_none: "No statement of the program writes {name}.",
+    why_ran: "ran in the last scan",
+    why_not_ran: "did not run in the last scan",
 };
 
 /// 日本語.
@@ -61,4 +77,10 @@ pub const JA: St = St {
     keyword: "キーワード",
     hint: "Ctrl+Space で名前を補完、行番号をクリックでブレークポイントを設定します。",
     set_aside: "プロジェクトのストラクチャードテキストを開きました。以前のテキストの保存先:",
+    why_line: "ST {line} 行目",
+    why_name: "この変数がなぜこの値なのか",
+    why: "なぜ？",
+    why_none: "プログラムに {name} へ書き込む文はありません。",
+    why_ran: "直前のスキャンで実行",
+    why_not_ran: "直前のスキャンでは未実行",
 };

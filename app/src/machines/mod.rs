@@ -53,6 +53,7 @@ pub fn text_program(
         apply_settings: Callback::new(not_applied),
         source: Callback::new(|()| None),
         apply_source: Callback::new(|_| ()),
+        why_st: Callback::new(|_| Vec::new()),
     }
 }
 

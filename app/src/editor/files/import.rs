@@ -84,6 +84,11 @@ pub fn attempt(
                 // Another program: nothing said of the last one stays.
                 ctx.clean_slate();
                 ctx.titled(&pending.file, &pending.file);
+                // Its ST POUs in the soft PLC's ST pane (issue #55).
+                if let Some(text) = reply.st {
+                    ctx.apply_source(Some(engine::formats::project::ProgramText::st(&text)));
+                    ctx.page.docks.show(crate::docks::Tool::Program);
+                }
                 shown.set(None);
                 closed(&pending.warnings);
             }

@@ -52,6 +52,23 @@ pub struct CauseView {
     /// A soft PLC box's operands with their values (`level = 50`), which
     /// decide it.
     pub values: Vec<String>,
+    /// A box of an ST block: the block's statements that wrote the output
+    /// its power leaves by (issue #55).
+    pub st: Vec<StCause>,
+}
+
+/// A statement of the project's Structured Text that wrote a value Why?
+/// names (issue #55): its line, its text and its operands' values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StCause {
+    /// Its 1-based line of the ST pane's text.
+    pub line: usize,
+    /// The line as written.
+    pub statement: String,
+    /// Each name it reads with its value (`y = 11`).
+    pub values: Vec<String>,
+    /// Whether it ran in the scan explained (`None`: not known).
+    pub ran: Option<bool>,
 }
 
 impl WhyView {
@@ -175,6 +192,7 @@ fn explain_at(ctx: LadderCtx, at: Cursor) -> Option<WhyView> {
                     changed: None,
                     drivers,
                     values,
+                    st: Vec::new(),
                 }
             })
             .collect();
@@ -194,6 +212,14 @@ fn explain_at(ctx: LadderCtx, at: Cursor) -> Option<WhyView> {
         });
     });
     let mut view = found?;
+    // A box of an ST block follows into its statements (issue #55), asked
+    // once the machine is no longer borrowed: the soft PLC reads it too.
+    let row = &ladder.rungs[at.rung];
+    for cause in &mut view.causes {
+        if let Some(b) = row.get(cause.pos).and_then(|e| e.block()) {
+            cause.st = ctx.why_st(b.kind(), b.instance.clone());
+        }
+    }
     // When each device last changed, from the recording.
     ctx.recorded(|t| {
         let at = t.shown().unwrap_or(t.marks().1);
@@ -308,6 +334,28 @@ pub fn WhyPanel(ctx: LadderCtx, on_back: Callback<()>) -> impl IntoView {
     }
 }
 
+/// A statement of the ST that wrote a value: its line (a click shows it
+/// in the Program tab), its text and its operands' values.
+fn st_view(ctx: LadderCtx, s: &StCause) -> impl IntoView {
+    let st = move || ctx.page.lang.get().st();
+    let line = s.line;
+    let ran = s
+        .ran
+        .map(|r| move || if r { st().why_ran } else { st().why_not_ran });
+    view! {
+        <li data-testid="why-st" data-line=line.to_string()
+            data-ran=s.ran.map(|r| if r { "1" } else { "0" })>
+            <button type="button" class="why-st-line"
+                on:click=move |_| ctx.page.docks.show(crate::docks::Tool::Program)>
+                {move || st().why_line.replace("{line}", &line.to_string())}
+            </button>
+            " " <code>{s.statement.clone()}</code>
+            {(!s.values.is_empty()).then(|| format!(" · {}", s.values.join(", ")))}
+            {ran.map(|r| view! { " · " <span>{r}</span> })}
+        </li>
+    }
+}
+
 fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let device = c.device.clone().map(|(d, _)| d).unwrap_or_default();
@@ -324,6 +372,7 @@ fn cause_view(ctx: LadderCtx, c: CauseView) -> impl IntoView {
             {(!c.values.is_empty()).then(|| view! {
                 " · " <span data-testid="why-values">{c.values.join(", ")}</span>
             })}
+            {(!c.st.is_empty()).then(|| view! { <ul class="why-st">{c.st.iter().map(|s| st_view(ctx, s)).collect_view()}</ul> })}
             // What changed and who drives it are a device's: a box has none.
             {c.device.is_some().then(|| view! {
             " · "

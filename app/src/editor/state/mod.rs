@@ -64,6 +64,11 @@ pub struct Program {
     pub source: Callback<(), Option<ProgramText>>,
     /// Takes a project's program text.
     pub apply_source: Callback<ProgramText>,
+    /// Why? into Structured Text (issue #55): for a box of an ST block
+    /// (its kind, its instance), the block's statements that wrote the
+    /// output its power leaves by, with their operands' values; empty
+    /// for every machine but the soft PLC.
+    pub why_st: Callback<(String, String), Vec<crate::editor::panes::why::StCause>>,
 }
 
 /// One machine's ladder editor; `Copy`. Its state comes in focused

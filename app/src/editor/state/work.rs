@@ -51,6 +51,19 @@ impl LadderCtx {
         }
     }
 
+    /// Why? into the ST of a box of an ST block (`kind`, `instance`):
+    /// the statements the machine's program pane names (issue #55).
+    pub fn why_st(
+        &self,
+        kind: String,
+        instance: String,
+    ) -> Vec<crate::editor::panes::why::StCause> {
+        self.text
+            .pane
+            .get_value()
+            .map_or_else(Vec::new, |p| p.why_st.run((kind, instance)))
+    }
+
     /// Shows a shared project's ladder, unsaved, until it is kept or left.
     pub fn show_shared(&self, mut project: engine::formats::Project) {
         self.apply_source(project.program.take());

@@ -522,6 +522,9 @@ crate::parts::part_fn!(
             Callback::new(move |settings| soft.apply_project_settings(settings));
         program.source = Callback::new(move |()| soft.st.source());
         program.apply_source = Callback::new(move |source| soft.st.take_source(source, soft.sim));
+        program.why_st = Callback::new(move |(kind, instance): (String, String)| {
+            soft.st.why_box(&kind, &instance, soft.sim)
+        });
         crate::machines::workspace::wire(
             ladder,
             crate::machines::link(soft.sim, move || soft.refresh()),

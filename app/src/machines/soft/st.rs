@@ -10,6 +10,7 @@ use engine::machines::SoftPlc;
 use engine::plc::{Device, Plc, Value};
 use leptos::prelude::*;
 
+use crate::editor::panes::why::StCause;
 use crate::sim::Simulator;
 use crate::state::{put, Ctx};
 use crate::storage;
@@ -171,8 +172,16 @@ impl StState {
         let Ok(run) = engine::softplc::st::st_run(&text) else {
             return false;
         };
+        // Traced, as Run traces a ladder: Why? tells which statement ran.
         let loaded = sim
-            .try_update_value(|s| s.machine_mut().load_text(&run.il))
+            .try_update_value(|s| {
+                let m = s.machine_mut();
+                let loaded = m.load_text(&run.il);
+                if loaded.is_ok() {
+                    m.set_tracing(true);
+                }
+                loaded
+            })
             .is_some_and(|r| r.is_ok());
         if !loaded {
             return false;
@@ -304,6 +313,82 @@ impl StState {
         // Shown on the ladder and the board as a step of the run control.
         ladder.operate(|_| {});
     }
+}
+
+impl StState {
+    /// Why? on a box of ST block `kind` (instance `instance`): the
+    /// block's statements that wrote the first BOOL output, which the
+    /// power leaves by (a block without one passes the power on: nothing
+    /// to follow), each with its operands' values in that instance.
+    pub fn why_box(&self, kind: &str, instance: &str, sim: Sim) -> Vec<StCause> {
+        let pin = engine::ladder::user_blocks::outputs(kind)
+            .into_iter()
+            .find(|(_, t)| *t == engine::iec::data::DataType::Bool);
+        let Some((pin, _)) = pin else {
+            return Vec::new();
+        };
+        let text = self.text.get_untracked();
+        let writes = engine::softplc::st_why::st_writes(&text, Some(kind), pin);
+        let at = |name: &str| format!("{instance}.{name}");
+        causes(writes, sim, at, |_| None)
+    }
+
+    /// Why? on variable `name` of the ST program loaded: the statements
+    /// that write it, each with its operands' values at the scan shown
+    /// and whether it ran then (the trace of its line's steps).
+    pub fn why_variable(&self, name: &str, sim: Sim) -> Vec<StCause> {
+        let text = self.text.get_untracked();
+        let writes = engine::softplc::st_why::st_writes(&text, None, name);
+        let ran = sim.with_value(|s| {
+            let trace = s.machine().trace().map(|t| t.ran.clone());
+            self.lines.with_value(|lines| {
+                let mut ran = BTreeSet::new();
+                for (step, line) in lines.iter().enumerate() {
+                    let went = trace.as_ref().and_then(|r| r.get(step).copied());
+                    if let (Some(line), Some(true)) = (line, went) {
+                        ran.insert(*line);
+                    }
+                }
+                trace.map(|_| ran)
+            })
+        });
+        causes(writes, sim, str::to_string, |line| {
+            ran.as_ref().map(|r| r.contains(&line))
+        })
+    }
+}
+
+/// The statements `writes` with each operand's value (the operand as
+/// `at` names it in the machine) and whether each ran (`ran`).
+fn causes(
+    writes: Vec<engine::softplc::st_why::StWrite>,
+    sim: Sim,
+    at: impl Fn(&str) -> String,
+    ran: impl Fn(usize) -> Option<bool>,
+) -> Vec<StCause> {
+    sim.with_value(|s| {
+        let plc = s.machine();
+        writes
+            .into_iter()
+            .map(|w| StCause {
+                line: w.line,
+                ran: ran(w.line),
+                statement: w.statement,
+                values: w
+                    .reads
+                    .iter()
+                    .filter_map(|r| {
+                        let name = at(r);
+                        let now = plc.shown_machine().machine().program().value(&name);
+                        let v = now
+                            .map(|v| v.to_value())
+                            .or_else(|| plc.device(&name).ok().map(|d| plc.read(d)))?;
+                        Some(format!("{r} = {}", shown(&v)))
+                    })
+                    .collect(),
+            })
+            .collect()
+    })
 }
 
 /// The steps a scan stops before: the first step of each breakpoint's

@@ -301,6 +301,56 @@ fn Actions(soft: SoftCtx, errors: Errors) -> impl IntoView {
                 }
             })}
         </div>
+        <StWhy soft />
         <p class="hint st-hint">{move || s().hint}</p>
+    }
+}
+
+/// Why? on a variable of the ST program loaded (issue #55): the
+/// statements that write it, each with its line, its operands' values
+/// at the scan shown and whether it ran in it.
+#[component]
+fn StWhy(soft: SoftCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let s = move || ctx.lang.get().st();
+    let name = RwSignal::new(String::new());
+    let found = RwSignal::new(None::<(String, Vec<crate::editor::panes::why::StCause>)>);
+    let ask = move |e: leptos::ev::SubmitEvent| {
+        e.prevent_default();
+        let n = name.get_untracked().trim().to_string();
+        if !n.is_empty() {
+            let causes = soft.st.why_variable(&n, soft.sim);
+            found.set(Some((n, causes)));
+        }
+    };
+    let item = move |c: &crate::editor::panes::why::StCause| {
+        let line = c.line;
+        let ran = c
+            .ran
+            .map(|r| move || if r { s().why_ran } else { s().why_not_ran });
+        view! {
+            <li data-testid="why-st" data-line=line.to_string()
+                data-ran=c.ran.map(|r| if r { "1" } else { "0" })>
+                {move || s().why_line.replace("{line}", &line.to_string())}
+                " " <code>{c.statement.clone()}</code>
+                {(!c.values.is_empty()).then(|| format!(" · {}", c.values.join(", ")))}
+                {ran.map(|r| view! { " · " <span>{r}</span> })}
+            </li>
+        }
+    };
+    view! {
+        <form class="st-why" on:submit=ask>
+            <label>{move || s().why_name} " "
+                <input data-testid="st-why-name" spellcheck="false" autocapitalize="off"
+                    autocomplete="off" prop:value=move || name.get()
+                    on:input=move |e| name.set(event_target_value(&e)) />
+            </label>
+            " " <button type="submit" data-testid="st-why">{move || s().why}</button>
+        </form>
+        {move || found.get().map(|(n, causes)| if causes.is_empty() {
+            view! { <p data-testid="st-why-result">{s().why_none.replace("{name}", &n)}</p> }.into_any()
+        } else {
+            view! { <ul class="why-st" data-testid="st-why-result">{causes.iter().map(item).collect_view()}</ul> }.into_any()
+        })}
     }
 }
