@@ -226,3 +226,25 @@ def test_on_a_laptop_the_app_bar_is_one_row_and_box_names_one_line(driver, base_
             " return [e.textContent, new Set([...r.getClientRects()].map(x => Math.round(x.top))).size]; })")
         assert lines, "the palette has the edge boxes"
         assert all(n == 1 for _, n in lines), (machine, lines)
+
+
+def test_each_tools_tab_keeps_its_own_scroll(driver, base_url):
+    """Regression (the eighth session's newcomer review): the tools dock's
+    panels share one scrolling body, so a tab opened scrolled to where the
+    last one was (the plant's drawing out of view after a long Tests
+    pane). Each tab now keeps its own scroll."""
+    from test_plant import choose
+    open_fresh(driver, base_url)
+    Select(el(driver, "example")).select_by_value("seed-test")
+    wait(driver, lambda: "ST   C0R" in el(driver, "il-listing").text, message="the listing's lines")
+    body = driver.find_element(By.CSS_SELECTOR, '[data-testid="dock-bottom"] .dock-body')
+    top = lambda: driver.execute_script("return arguments[0].scrollTop", body)
+    driver.execute_script("arguments[0].scrollTop = arguments[0].scrollHeight", body)
+    wait(driver, lambda: top() > 40, message="the listing scrolled to its end")
+    left_at = top()
+    choose(driver, "conveyor")
+    tall = driver.execute_script("return arguments[0].scrollHeight - arguments[0].clientHeight", body)
+    assert tall >= left_at, "the plant's panel is taller than the dock, or the test shows nothing"
+    wait(driver, lambda: top() == 0, message="the plant's panel opens at its top")
+    el(driver, "dock-tab-listing").click()
+    wait(driver, lambda: top() == left_at, message="the listing is back where it was left")

@@ -49,6 +49,8 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
         })
         .collect_view();
     follow_the_tab_shown(docks);
+    let body = NodeRef::<leptos::html::Div>::new();
+    let remember_scroll = keep_each_tabs_scroll(docks, body);
     view! {
         <section class="dock dock-bottom" data-testid="dock-bottom"
             data-open=move || open().to_string()
@@ -74,8 +76,37 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
                         {move || if open() { "▾" } else { "▴" }}
                     </button>
             </div>
-            <div class="dock-body">{panels}</div>
+            <div class="dock-body" node_ref=body on:scroll=move |_| remember_scroll()>{panels}</div>
         </section>
+    }
+}
+
+/// Each tab's panel keeps its own scroll, as a browser's tabs do: one
+/// body holds every panel, so what one was scrolled to showed in the next
+/// (the Plant tab opened scrolled past its drawing after a long Tests
+/// pane). Returns what the body calls when it scrolls.
+fn keep_each_tabs_scroll(docks: Docks, body: NodeRef<leptos::html::Div>) -> impl Fn() + Copy {
+    let kept = StoredValue::new(Vec::<(Tool, i32)>::new());
+    Effect::new(move |_| {
+        let tool = docks.tool.get();
+        let top = kept.with_value(|k| k.iter().find(|(t, _)| *t == tool).map_or(0, |(_, y)| *y));
+        // Once the panel is shown (a scroll event the switch caused is
+        // overridden here).
+        request_animation_frame(move || {
+            if let Some(Some(body)) = body.try_get_untracked() {
+                body.set_scroll_top(top);
+            }
+        });
+    });
+    move || {
+        if let Some(Some(body)) = body.try_get_untracked() {
+            let tool = docks.tool.get_untracked();
+            let top = body.scroll_top();
+            kept.update_value(|k| {
+                k.retain(|(t, _)| *t != tool);
+                k.push((tool, top));
+            });
+        }
     }
 }
 
