@@ -45,15 +45,15 @@ pub type RigSlot = Option<Box<dyn Rig>>;
 /// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
 pub type Refusals = Vec<(usize, Refusal)>;
 
-/// Why a setup is refused: a wiring row's kind (said in the page's
-/// language, `crate::i18n::plant_wiring`), or the engine's words (a
-/// parameter, a fault, a plant's own check).
+/// Why a setup is refused, by kind, said in the page's language: a
+/// wiring row's (`crate::i18n::plant_wiring`), or the plant's (a
+/// parameter, a fault, its own check: `crate::i18n::plant_errors`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Refusal {
     /// A wiring row the plant and the machine do not take.
     Wire(engine::plant::wiring::WireError),
-    /// Said as the engine says it.
-    Said(String),
+    /// A parameter, a fault or the plant's name the plant refuses.
+    Plant(engine::plant::PlantError),
 }
 
 /// Couples a setup's plant to a machine, or refuses.

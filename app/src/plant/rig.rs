@@ -10,7 +10,7 @@ use engine::error::Located;
 use engine::events::InputValue;
 use engine::formats::project::PlantSetup;
 use engine::plant::wiring::{self, Wire, WireEntry, WireError};
-use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, STEP};
+use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, PlantError, STEP};
 use engine::plc::{tick_end, Command, Plc};
 use engine::SimTime;
 
@@ -52,13 +52,12 @@ pub(super) struct PlantRig {
 /// Couples `setup`'s plant to `machine`, or the refusals, each at its
 /// wiring row (1-based; 0: the plant, its parameters or faults).
 pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals> {
-    let one = |e: String| vec![(0, Refusal::Said(e))];
+    let one = |e: PlantError| vec![(0, Refusal::Plant(e))];
     let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
-        one(format!(
-            "no plant {} (the plants: {})",
-            setup.name,
-            AnyPlant::names()
-        ))
+        one(PlantError::NoPlant {
+            name: setup.name.clone(),
+            known: AnyPlant::names(),
+        })
     })?;
     let info = plant.info();
     for (key, value) in &setup.params {
@@ -66,16 +65,22 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
             .params
             .iter()
             .position(|p| p.key == key)
-            .ok_or_else(|| one(format!("{} has no parameter {key}", info.name)))?;
-        let v = engine::plant::parse_param(&info.params[index], value)
-            .map_err(|e| one(e.to_string()))?;
+            .ok_or_else(|| {
+                let known: Vec<_> = info.params.iter().map(|p| p.key).collect();
+                one(PlantError::UnknownParam {
+                    plant: info.name,
+                    key: key.clone(),
+                    known: known.join(", "),
+                })
+            })?;
+        let v = engine::plant::parse_param(&info.params[index], value).map_err(one)?;
         plant.set_param(index, v);
     }
-    plant.check().map_err(one)?;
+    plant.check().map_err(|m| one(PlantError::Together(m)))?;
     let faults = setup
         .faults
         .iter()
-        .map(|f| Fault::parse(f, info).map_err(|e| one(e.to_string())))
+        .map(|f| Fault::parse(f, info).map_err(one))
         .collect::<Result<Vec<_>, _>>()?;
     let entries: Vec<WireEntry> = match &setup.wiring {
         Some(rows) => rows

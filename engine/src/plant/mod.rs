@@ -14,6 +14,7 @@ pub mod conveyor;
 pub mod door;
 pub mod error;
 pub mod fault;
+mod misfit;
 mod planted;
 mod rng;
 pub mod room_light;
@@ -26,6 +27,7 @@ pub mod wiring;
 pub use any::AnyPlant;
 pub use error::PlantError;
 pub use fault::{Fault, FaultKind};
+pub use misfit::Misfit;
 pub use planted::{Planted, PlantedError};
 pub use wiring::{Wire, WireEntry};
 
@@ -171,7 +173,7 @@ pub trait Plant {
 
     /// A problem with the parameters together (a part longer than half
     /// the belt), if there is one.
-    fn check(&self) -> Result<(), String> {
+    fn check(&self) -> Result<(), Misfit> {
         Ok(())
     }
 
