@@ -92,3 +92,18 @@ pub struct Shown {
     /// a percent); empty for the others.
     pub figure: Vec<i64>,
 }
+
+impl Shown {
+    /// The plant's names as Watch and the chart take them (`hashigo
+    /// test`'s): each quantity, `PLANT.alarms`, then each signal whose
+    /// name is no quantity's (the tank's `level` is its quantity), so
+    /// Watch offers them as the user types, beside the machine's devices.
+    pub fn device_names(&self) -> Vec<String> {
+        let quantities = self.quantities.iter().map(|(n, _)| *n);
+        let signals = (self.signals.iter().map(|s| s.name))
+            .filter(|s| !self.quantities.iter().any(|(q, _)| q == s));
+        (quantities.chain(["alarms"]).chain(signals))
+            .map(|n| format!("{}.{n}", self.plant))
+            .collect()
+    }
+}

@@ -169,6 +169,12 @@ def test_the_chart_and_watch_draw_the_plants_quantities_and_signals(driver, base
     (`tank.level`, `tank.fill`), per scan from the plant's own record."""
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")
+    # Watch offers the plant's names as the machine's devices.
+    offered = lambda: driver.execute_script(
+        "return [...arguments[0].list.options].map(o => o.value)", el(driver, "watch-input"))
+    wait(driver, lambda: {"tank.level", "tank.fill", "tank.alarms"} <= set(offered()),
+         message="Watch's completion offers the plant's names")
+    assert "X00" in offered() and offered().count("tank.level") == 1
     el(driver, "watch-input").send_keys("tank.level", Keys.ENTER)
     for name in ["tank.level", "tank.fill", "tank.alarms"]:
         el(driver, "chart-add").send_keys(name, Keys.ENTER)
