@@ -11,6 +11,7 @@ pub mod alarm;
 pub mod any;
 mod boxed;
 pub mod conveyor;
+mod coupling;
 pub mod door;
 pub mod error;
 pub mod fault;
@@ -25,6 +26,7 @@ mod wire_error;
 pub mod wiring;
 
 pub use any::AnyPlant;
+pub use coupling::Coupling;
 pub use error::PlantError;
 pub use fault::{Fault, FaultKind};
 pub use misfit::Misfit;
