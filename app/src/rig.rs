@@ -93,6 +93,12 @@ pub struct Shown {
     pub figure: Vec<i64>,
 }
 
+/// What the shown workspace's rig last published, in the context (the
+/// dock's `Plants::shown`), for the editor's Watch to offer the plant's
+/// names without reaching the dock's module.
+#[derive(Clone, Copy)]
+pub struct ShownPlant(pub leptos::prelude::RwSignal<Option<Shown>>);
+
 impl Shown {
     /// The plant's names as Watch and the chart take them (`hashigo
     /// test`'s): each quantity, `PLANT.alarms`, then each signal whose

@@ -97,11 +97,10 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
     let list_id = format!("watch-names-{}", ctx.machine.name());
     // The coupled plant's names (`conveyor.motor`), offered as the
     // machine's devices are; changed only when the plant does.
-    let plants = use_context::<crate::plant::Plants>();
+    let plant = use_context::<crate::rig::ShownPlant>();
     let plant_names = Memo::new(move |_| {
-        let shown = plants.map(|p| {
-            p.shown
-                .with(|s| s.as_ref().map(crate::rig::Shown::device_names))
+        let shown = plant.map(|p| {
+            p.0.with(|s| s.as_ref().map(crate::rig::Shown::device_names))
         });
         shown.flatten().unwrap_or_default()
     });
