@@ -45,15 +45,15 @@ pub type RigSlot = Option<Box<dyn Rig>>;
 /// Refusals of a setup, each at its wiring row (1-based; 0: not a row's).
 pub type Refusals = Vec<(usize, Refusal)>;
 
-/// Why a setup is refused: a wiring row's kind (said in the page's
-/// language, `crate::i18n::plant_wiring`), or the engine's words (a
-/// parameter, a fault, a plant's own check).
+/// Why a setup is refused, by kind, said in the page's language: a
+/// wiring row's (`crate::i18n::plant_wiring`), or the plant's (a
+/// parameter, a fault, its own check: `crate::i18n::plant_errors`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Refusal {
     /// A wiring row the plant and the machine do not take.
     Wire(engine::plant::wiring::WireError),
-    /// Said as the engine says it.
-    Said(String),
+    /// A parameter, a fault or the plant's name the plant refuses.
+    Plant(engine::plant::PlantError),
 }
 
 /// Couples a setup's plant to a machine, or refuses.
@@ -91,4 +91,25 @@ pub struct Shown {
     /// its parts' leading edges (µm); the tank's level (thousandths of
     /// a percent); empty for the others.
     pub figure: Vec<i64>,
+}
+
+/// What the shown workspace's rig last published, in the context (the
+/// dock's `Plants::shown`), for the editor's Watch to offer the plant's
+/// names without reaching the dock's module.
+#[derive(Clone, Copy)]
+pub struct ShownPlant(pub leptos::prelude::RwSignal<Option<Shown>>);
+
+impl Shown {
+    /// The plant's names as Watch and the chart take them (`hashigo
+    /// test`'s): each quantity, `PLANT.alarms`, then each signal whose
+    /// name is no quantity's (the tank's `level` is its quantity), so
+    /// Watch offers them as the user types, beside the machine's devices.
+    pub fn device_names(&self) -> Vec<String> {
+        let quantities = self.quantities.iter().map(|(n, _)| *n);
+        let signals = (self.signals.iter().map(|s| s.name))
+            .filter(|s| !self.quantities.iter().any(|(q, _)| q == s));
+        (quantities.chain(["alarms"]).chain(signals))
+            .map(|n| format!("{}.{n}", self.plant))
+            .collect()
+    }
 }

@@ -120,6 +120,7 @@ impl Workspaces {
         provide_context(self.ladders);
         provide_context(self.projects);
         provide_context(self.plants);
+        provide_context(crate::rig::ShownPlant(self.plants.shown));
         provide_context(*self);
         let spaces = *self;
         provide_context(crate::editor::files::OpenSt(Callback::new(

@@ -169,6 +169,12 @@ def test_the_chart_and_watch_draw_the_plants_quantities_and_signals(driver, base
     (`tank.level`, `tank.fill`), per scan from the plant's own record."""
     open_link(driver, base_url, link_of(fill_always(), tmp_path))
     choose(driver, "tank")
+    # Watch offers the plant's names as the machine's devices.
+    offered = lambda: driver.execute_script(
+        "return [...arguments[0].list.options].map(o => o.value)", el(driver, "watch-input"))
+    wait(driver, lambda: {"tank.level", "tank.fill", "tank.alarms"} <= set(offered()),
+         message="Watch's completion offers the plant's names")
+    assert "X00" in offered() and offered().count("tank.level") == 1
     el(driver, "watch-input").send_keys("tank.level", Keys.ENTER)
     for name in ["tank.level", "tank.fill", "tank.alarms"]:
         el(driver, "chart-add").send_keys(name, Keys.ENTER)
@@ -481,3 +487,81 @@ def test_each_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name)
         assert severe_console_messages(driver) == []
     finally:
         driver.quit()
+
+
+FRAMES = """
+    const done = arguments[arguments.length - 1];
+    const deltas = []; let last = null; const end = performance.now() + 3000;
+    function frame(t) { if (last !== null) deltas.push(t - last); last = t;
+      if (t < end) requestAnimationFrame(frame); else done(deltas); }
+    requestAnimationFrame(frame);"""
+
+
+@pytest.mark.xfail(strict=False, reason=(
+    "issue #52's 1.15x is not met yet (docs/performance.md 'With a plant'): measured 133.3 ms "
+    "running vs 16.8 paused, the same ladder without the plant 50.0 vs 16.7 on the loaded machine; "
+    "a full-speed slice (20 ms of machine time) with the plant's 1 ms steps overruns the frame"))
+def test_the_200_rung_ladder_with_the_conveyor_running_keeps_its_frame(driver, base_url, tmp_path):
+    """Issue #52's Done-when, measured as docs/performance.md measures the
+    live frame (test_ladder's 200-rung AVR ladder, every coil toggling
+    every scan, flat out, 1600x1100): with the conveyor coupled (its
+    motor on the last rung's coil, its eyes on two spare bits) and drawn
+    in the Plant tab, the median of three runs' p95 frame time running is
+    within 1.15x of paused. The figures go to figures.json."""
+    from conftest import record_figures
+    from test_ladder import live_scan
+
+    rungs = []
+    for i in range(200):
+        bit = f"R{i // 8}.{i % 8}"
+        rungs.append({"cells": [[{"type": "contact", "kind": "nc", "device": bit}]
+                                + [{"type": "wire"}] * 8
+                                + [{"type": "coil", "kind": "normal", "device": bit}]]})
+    wiring = [["infeed", "R30.0"], ["outfeed", "R30.1"], ["motor", "R24.7"]]
+    project = tmp_path / "r200-conveyor.json"
+    project.write_text(json.dumps({"format": "hashigo-project", "version": 4, "machine": "avr-plc",
+                                   "ladder": {"rungs": rungs},
+                                   "plant": {"name": "conveyor", "wiring": wiring}}))
+    driver.set_window_size(1600, 1100)
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("avr-plc")
+    wait(driver, lambda: el(driver, "palette"))
+    el(driver, "open-file").send_keys(str(project))
+    wait(driver, lambda: el(driver, "cell-199-0-9").get_attribute("data-device") == "R24.7")
+    wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-conveyor"]'),
+         timeout=30, message="the conveyor is coupled and drawn")
+    assert el(driver, "wiring-device-motor").get_attribute("value") == "R24.7"
+    Select(el(driver, "speed")).select_by_value("max")
+    driver.set_script_timeout(30)
+
+    def stats(d):
+        d = sorted(d)
+        pick = lambda q: round(d[min(len(d) - 1, int(q * len(d)))], 2)
+        return {"p50": pick(0.5), "p95": pick(0.95), "max": round(d[-1], 2), "frames": len(d)}
+
+    if el(driver, "run").get_attribute("aria-pressed") == "true":
+        el(driver, "run").click()
+        wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "false")
+    runs = {"running": [], "paused": []}
+    for round_ in range(3):
+        el(driver, "run" if round_ == 0 else "pause").click()
+        wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-powered") in ("0", "1"))
+        first_scan = live_scan(driver)
+        running = driver.execute_async_script(FRAMES)
+        scans = live_scan(driver) - first_scan
+        el(driver, "plant-conveyor")  # the Plant tab shown throughout
+        assert el(driver, "cell-199-0-0").get_attribute("data-pulsed") == "1"
+        # The plant moves with the machine: parts are placed on the belt.
+        wait(driver, lambda: quantity(driver, "placed") >= 1, timeout=30, message="a part is placed")
+        el(driver, "pause").click()
+        paused = driver.execute_async_script(FRAMES)
+        assert len(running) > 30 and len(paused) > 30
+        runs["running"].append(stats(running) | {"scans_per_s": round(scans / 3)})
+        runs["paused"].append(stats(paused))
+    medians = {state: sorted(r["p95"] for r in runs[state])[1] for state in runs}
+    record_figures({f"ladder_200_rungs_conveyor_{state}_frame_ms": {"median_p95": medians[state],
+                                                                   "runs": runs[state]}
+                    for state in runs})
+    print(runs)
+    assert medians["running"] <= 1.15 * medians["paused"], medians
+    assert severe_console_messages(driver) == []

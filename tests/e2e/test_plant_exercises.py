@@ -78,6 +78,35 @@ def test_each_plants_exercise_opens_from_the_start_screen_with_its_plant_coupled
 
 
 @pytest.mark.first_visit
+def test_the_troubleshooting_exercise_opens_from_the_gallery_and_passes_once_named(driver, base_url):
+    """The troubleshooting exercise is in the gallery's plants as in the
+    exercises: its right ladder, its plant and its hidden fault; named,
+    Check my answer passes."""
+    from test_classroom import result
+
+    driver.get(base_url)
+    wait(driver, lambda: shown(driver, "start-example"))
+    el(driver, "start-example").click()
+    wait(driver, lambda: shown(driver, "start-plant-conveyor-fault"), message="the gallery's plants")
+    assert "Troubleshooting" in el(driver, "start-plant-conveyor-fault").text
+    el(driver, "start-plant-conveyor-fault").click()
+    wait(driver, lambda: "Troubleshooting" in el(driver, "exercise-task", reveal=False).text,
+         timeout=30, message="its task is shown")
+    coupled(driver, "conveyor", "minasec-u", "infeed")
+    # The ladder as handed out (the right one), the fault hidden.
+    assert el(driver, "cell-0-0-0", reveal=False)
+    assert "Which fault?" in el(driver, "fault-report").text
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="plant-fault-add"]')
+    Select(el(driver, "fault-report-signal")).select_by_value("infeed")
+    Select(el(driver, "fault-report-kind")).select_by_value("stuck 0")
+    el(driver, "exercise-check").click()
+    wait(driver, lambda: drawn(driver, "exercise-result"))
+    wait(driver, lambda: result(driver) == ("3", "3"), timeout=40,
+         message="Check my answer passes once the fault is named")
+    assert severe_console_messages(driver) == []
+
+
+@pytest.mark.first_visit
 def test_the_room_light_exercise_drawn_by_keys_passes_check_my_answer(driver, base_url):
     from test_classroom import result
 

@@ -95,6 +95,15 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
         name.set(String::new());
     };
     let list_id = format!("watch-names-{}", ctx.machine.name());
+    // The coupled plant's names (`conveyor.motor`), offered as the
+    // machine's devices are; changed only when the plant does.
+    let plant = use_context::<crate::rig::ShownPlant>();
+    let plant_names = Memo::new(move |_| {
+        let shown = plant.map(|p| {
+            p.0.with(|s| s.as_ref().map(crate::rig::Shown::device_names))
+        });
+        shown.flatten().unwrap_or_default()
+    });
     view! {
         <section class="watch-pane">
             <h3>{move || t().watch}</h3>
@@ -104,6 +113,7 @@ pub fn WatchTable(ctx: LadderCtx) -> impl IntoView {
                     on:keydown=move |e: web_sys::KeyboardEvent| if e.key() == "Enter" { add() } />
                 <datalist id=list_id>
                     {names.into_iter().map(|n| view! { <option value=n></option> }).collect_view()}
+                    {move || plant_names.get().into_iter().map(|n| view! { <option value=n></option> }).collect_view()}
                 </datalist>
                 <button type="button" data-testid="watch-add" on:click=move |_| add()>"+"</button>
             </div>

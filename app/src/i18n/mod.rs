@@ -10,6 +10,7 @@ mod ja;
 pub mod keymap;
 pub mod parts;
 pub mod plant;
+pub mod plant_errors;
 pub mod plant_faults;
 pub mod plant_wiring;
 pub mod st;

@@ -41,21 +41,7 @@ pub fn texts(lang: Lang) -> &'static ParamTexts {
 
 /// Why a parameter's value is refused, in `lang`.
 pub fn param_error(lang: Lang, e: &PlantError) -> String {
-    match (lang, e) {
-        (Lang::Ja, PlantError::OutOfRange { key, value, range }) => {
-            format!("{key} = {value} は範囲外です ({range})")
-        }
-        (Lang::Ja, PlantError::NotANumber { key, text, range }) => {
-            format!(
-                "{key} には整数を入れます ({range})。{} は使えません",
-                shown(text)
-            )
-        }
-        (Lang::Ja, PlantError::Together(words)) => {
-            format!("ほかのパラメーターと合いません: {words}")
-        }
-        _ => e.to_string(),
-    }
+    super::plant_errors::plant_error(lang, e)
 }
 
 /// A refusal of the plant's setup, as the dock says it.
@@ -63,7 +49,7 @@ pub fn refusal(lang: Lang, r: &Refusal) -> String {
     match (lang, r) {
         (Lang::Ja, Refusal::Wire(e)) => wire_ja(e),
         (Lang::En, Refusal::Wire(e)) => e.to_string(),
-        (_, Refusal::Said(text)) => text.clone(),
+        (lang, Refusal::Plant(e)) => super::plant_errors::plant_error(lang, e),
     }
 }
 
@@ -77,7 +63,7 @@ fn wire_ja(e: &WireError) -> String {
                 shown(name)
             )
         }
-        WireError::Signal(other) => other.to_string(),
+        WireError::Signal(other) => super::plant_errors::plant_error(Lang::Ja, other),
         WireError::NoDevice {
             full,
             device,
@@ -164,18 +150,9 @@ mod tests {
         for e in errors {
             let r = Refusal::Wire(e.error.clone());
             let ja = refusal(Lang::Ja, &r);
-            // The machine's own refusal is the page's errors' (its tests
-            // are theirs: MINASEC-U's inputs are still said in English).
-            let own = match &e.error {
-                WireError::NoDevice { error, .. }
-                | WireError::AnalogRefused { error, .. }
-                | WireError::SensorNeedsInput { error, .. } => {
-                    super::super::errors::plc_error(Lang::Ja, error)
-                }
-                _ => String::new(),
-            };
-            let words = ja.replace(&own, "");
-            assert!(!english_in(&words, &names), "row {}: {ja}", e.line);
+            // The machine's own refusal too (MINASEC-U's list of its
+            // inputs names its CNTCLR button).
+            assert!(!english_in(&ja, &names), "row {}: {ja}", e.line);
             assert_eq!(refusal(Lang::En, &r), e.error.to_string());
         }
     }

@@ -6,7 +6,7 @@
 //! which Check my answer grades.
 
 use engine::formats::project::PlantSetup;
-use engine::plant::{any::ALL, fault, Fault, Kind, PlantInfo};
+use engine::plant::{any::ALL, fault, Fault, Kind, PlantError, PlantInfo};
 use leptos::prelude::*;
 
 use crate::editor::LadderCtx;
@@ -60,13 +60,16 @@ pub(super) fn fault_text(signal: &str, kind: &str, from: &str, hidden: bool) -> 
 }
 
 /// Adds `text` to the setup's faults after the engine's check, or says
-/// why not (the setup is left as it was).
-pub(super) fn add_fault(setup: &mut PlantSetup, text: String) -> Result<(), String> {
+/// why not, by kind (the setup is left as it was).
+pub(super) fn add_fault(setup: &mut PlantSetup, text: String) -> Result<(), PlantError> {
     let info = ALL
         .iter()
         .find(|p| p.name == setup.name)
-        .ok_or_else(|| format!("no plant {}", setup.name))?;
-    Fault::parse(&text, info).map_err(|e| format!("{text}: {e}"))?;
+        .ok_or_else(|| PlantError::NoPlant {
+            name: setup.name.clone(),
+            known: engine::plant::AnyPlant::names(),
+        })?;
+    Fault::parse(&text, info)?;
     setup.faults.push(text);
     Ok(())
 }
@@ -147,7 +150,8 @@ fn AddFault(ladder: LadderCtx) -> impl IntoView {
     let kind = RwSignal::new(KINDS[0].to_string());
     let from = RwSignal::new(String::new());
     let hidden = RwSignal::new(false);
-    let refusal = RwSignal::new(None::<String>);
+    // The fault refused, as written, and why.
+    let refusal = RwSignal::new(None::<(String, PlantError)>);
     let signals = move || {
         let all = bit_signals(&name());
         if !all.iter().any(|s| signal.with_untracked(|v| v == s)) {
@@ -167,7 +171,7 @@ fn AddFault(ladder: LadderCtx) -> impl IntoView {
         let mut said = None;
         setup.update(|s| {
             if let Some(s) = s {
-                said = add_fault(s, text).err();
+                said = add_fault(s, text.clone()).err().map(|e| (text, e));
             }
         });
         if said.is_none() {
@@ -196,7 +200,9 @@ fn AddFault(ladder: LadderCtx) -> impl IntoView {
             </label>
             <button type="button" data-testid="plant-fault-add" on:click=add>{move || t().add}</button>
             <p class="wiring-refusal" role="alert" data-testid="plant-fault-refusal" hidden=move || refusal.with(Option::is_none)>
-                {move || t().refused}{" "}{move || refusal.get().unwrap_or_default()}
+                {move || t().refused}{" "}{move || refusal.with(|r| r.as_ref().map(|(text, e)| {
+                    format!("{text}: {}", crate::i18n::plant_errors::plant_error(ctx.lang.get(), e))
+                }).unwrap_or_default())}
             </p>
         </div>
     }

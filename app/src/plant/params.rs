@@ -30,7 +30,10 @@ pub(super) fn set_param(
         next.params.insert(key.to_string(), text.to_string());
     }
     let Some(mut plant) = AnyPlant::new(&next.name) else {
-        return Err(PlantError::Together(format!("no plant {}", next.name)));
+        return Err(PlantError::NoPlant {
+            name: next.name.clone(),
+            known: AnyPlant::names(),
+        });
     };
     let info = plant.info();
     for (k, v) in &next.params {

@@ -10,7 +10,7 @@ use engine::error::Located;
 use engine::events::InputValue;
 use engine::formats::project::PlantSetup;
 use engine::plant::wiring::{self, Wire, WireEntry, WireError};
-use engine::plant::{fault, AnyPlant, Direction, Fault, Kind, Plant, STEP};
+use engine::plant::{fault, AnyPlant, Coupling, Direction, Fault, Kind, Plant, PlantError, STEP};
 use engine::plc::{tick_end, Command, Plc};
 use engine::SimTime;
 
@@ -52,13 +52,12 @@ pub(super) struct PlantRig {
 /// Couples `setup`'s plant to `machine`, or the refusals, each at its
 /// wiring row (1-based; 0: the plant, its parameters or faults).
 pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn Rig>, Refusals> {
-    let one = |e: String| vec![(0, Refusal::Said(e))];
+    let one = |e: PlantError| vec![(0, Refusal::Plant(e))];
     let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
-        one(format!(
-            "no plant {} (the plants: {})",
-            setup.name,
-            AnyPlant::names()
-        ))
+        one(PlantError::NoPlant {
+            name: setup.name.clone(),
+            known: AnyPlant::names(),
+        })
     })?;
     let info = plant.info();
     for (key, value) in &setup.params {
@@ -66,16 +65,22 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
             .params
             .iter()
             .position(|p| p.key == key)
-            .ok_or_else(|| one(format!("{} has no parameter {key}", info.name)))?;
-        let v = engine::plant::parse_param(&info.params[index], value)
-            .map_err(|e| one(e.to_string()))?;
+            .ok_or_else(|| {
+                let known: Vec<_> = info.params.iter().map(|p| p.key).collect();
+                one(PlantError::UnknownParam {
+                    plant: info.name,
+                    key: key.clone(),
+                    known: known.join(", "),
+                })
+            })?;
+        let v = engine::plant::parse_param(&info.params[index], value).map_err(one)?;
         plant.set_param(index, v);
     }
-    plant.check().map_err(one)?;
+    plant.check().map_err(|m| one(PlantError::Together(m)))?;
     let faults = setup
         .faults
         .iter()
-        .map(|f| Fault::parse(f, info).map_err(|e| one(e.to_string())))
+        .map(|f| Fault::parse(f, info).map_err(one))
         .collect::<Result<Vec<_>, _>>()?;
     let entries: Vec<WireEntry> = match &setup.wiring {
         Some(rows) => rows
@@ -125,32 +130,19 @@ impl PlantRig {
     /// machine left them (or by `hand`, in manual mode), then its
     /// sensors written.
     fn step(&mut self, machine: &mut dyn Plc, at: SimTime, hand: Option<&[bool]>) {
-        let info = self.plant.info();
-        for (s, signal) in info.signals.iter().enumerate() {
-            if signal.direction == Direction::Out {
-                let driven = match hand {
-                    // By hand an analog actuator is full on or off.
-                    Some(hand) => match (hand.get(s).copied().unwrap_or(false), signal.kind) {
-                        (false, _) => 0,
-                        (true, Kind::Analog) => 100_000,
-                        (true, _) => 1,
-                    },
-                    None => self
-                        .wires
-                        .iter()
-                        .find(|w| w.signal == s)
-                        .map_or(0, |w| i64::from(machine.read(w.device).is_on())),
-                };
-                self.values[s] = fault::apply(fault::acting(&self.faults, s, at), driven);
-            }
-        }
         let now_ms = ms(at) - ms(self.origin) + self.jogged;
+        // The engine's one step (as `Planted` steps): drive, move, sense.
+        let mut raised = std::mem::take(&mut self.raised);
+        self.coupling().step(machine, at, now_ms, hand, &mut raised);
+        self.raised = raised;
+        // What drove it, for time travel (only the actuators' entries
+        // count: the sensors' are read from the plant when shown).
+        let info = self.plant.info();
         let outputs: Vec<usize> = (info.signals.iter().enumerate())
             .filter(|(_, s)| s.direction == Direction::Out)
             .map(|(i, _)| i)
             .collect();
         self.history.drive(at, &self.values, &outputs);
-        self.plant.step(now_ms, &self.values, &mut self.raised);
         for message in self.raised.drain(..) {
             self.alarm_count += 1;
             if self.alarms.len() == ALARMS_KEPT {
@@ -158,9 +150,19 @@ impl PlantRig {
             }
             self.alarms.push((ms(at), message));
         }
-        self.sense(machine, at);
         self.note(at);
         self.history.step(at, now_ms, &self.plant, false);
+    }
+
+    /// The plant and its wiring as the engine's step takes them.
+    fn coupling(&mut self) -> Coupling<'_> {
+        Coupling {
+            plant: &mut self.plant,
+            wires: &self.wires,
+            faults: &self.faults,
+            values: &mut self.values,
+            written: &mut self.written,
+        }
     }
 
     /// Notes the plant's devices as they stand after the step at `at`.
@@ -229,27 +231,7 @@ impl PlantRig {
     /// Reads the sensors at `at` (after faults) and writes those that
     /// changed to the machine's inputs.
     fn sense(&mut self, machine: &mut dyn Plc, at: SimTime) {
-        let info = self.plant.info();
-        for (s, signal) in info.signals.iter().enumerate() {
-            if signal.direction != Direction::In {
-                continue;
-            }
-            let value = fault::apply(fault::acting(&self.faults, s, at), self.plant.sensor(s));
-            self.values[s] = value;
-            let Some(w) = self.wires.iter().find(|w| w.signal == s) else {
-                continue;
-            };
-            let input = match w.scale {
-                Some(scale) => wiring::scaled(scale, value),
-                None => InputValue::Int(value),
-            };
-            // Checked when wired: the input takes it.
-            if self.written[s] != Some(input)
-                && machine.apply(Command::SetInput(w.device, input)).is_ok()
-            {
-                self.written[s] = Some(input);
-            }
-        }
+        self.coupling().sense(machine, at);
     }
 }
 

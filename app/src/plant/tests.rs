@@ -262,3 +262,39 @@ fn a_power_cycle_puts_the_plant_back_at_its_start() {
     rig.advance(&mut m, SimTime::from_millis(2));
     assert_eq!(quantity(&rig.show(&m), "placed"), 1);
 }
+
+#[test]
+fn watch_is_offered_each_plant_name_it_takes() {
+    let mut m = minasec(CONVEYOR);
+    for name in super::PLANTS {
+        let mut rig = rig::build(&setup(name), &mut m).unwrap();
+        rig.advance(&mut m, SimTime::from_millis(10));
+        let names = rig.show(&m).device_names();
+        // Every signal and quantity, and the alarms, once each.
+        let info = engine::plant::AnyPlant::new(name).unwrap();
+        let info = engine::plant::Plant::info(&info);
+        for s in info.signals.iter().map(|s| s.name) {
+            assert!(
+                names.contains(&format!("{name}.{s}")),
+                "{name}.{s}: {names:?}"
+            );
+        }
+        for q in info.quantities.iter().map(|q| q.name) {
+            assert!(
+                names.contains(&format!("{name}.{q}")),
+                "{name}.{q}: {names:?}"
+            );
+        }
+        assert!(names.contains(&format!("{name}.alarms")), "{names:?}");
+        let mut once = names.clone();
+        once.sort();
+        once.dedup();
+        assert_eq!(once.len(), names.len(), "{names:?}");
+        // Each is a name the plant's series (Watch, the chart) takes.
+        for n in &names {
+            let values = rig.series(n, &[m.now()]);
+            assert!(values.is_some_and(|v| v[0].is_some()), "{n}");
+        }
+        rig.detach(&mut m);
+    }
+}

@@ -152,3 +152,40 @@ fn each_plants_exercise_is_offered_twice_as_its_project_with_an_empty_ladder() {
         }
     }
 }
+
+/// The troubleshooting exercises (issue #52): the plant and the project,
+/// which hands out its ladder as it is (the right ladder, misbehaving on
+/// a hidden fault), so the link is the project itself.
+const TROUBLESHOOTING: [(&str, &str); 1] = [("conveyor", "minasec-u/conveyor-fault.json")];
+
+#[test]
+fn each_troubleshooting_exercise_is_offered_in_the_exercises_and_the_gallery() {
+    use engine::formats::{share, Project};
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    for lang in ["en", "ja"] {
+        let page = std::fs::read_to_string(root.join(format!("web/start/{lang}.html")))
+            .expect("the start screen's file");
+        for (plant, path) in TROUBLESHOOTING {
+            let json = std::fs::read_to_string(root.join("engine/programs").join(path))
+                .expect("the exercise's project");
+            let project = Project::from_json(&json).expect("the project reads");
+            assert!(!project.ladder.rungs.is_empty(), "{path}: its ladder");
+            let mark = format!("data-trouble=\"{plant}\"");
+            let links: Vec<&str> = page
+                .split("<a href=\"./#")
+                .skip(1)
+                .filter(|a| a.split('>').next().is_some_and(|tag| tag.contains(&mark)))
+                .filter_map(|a| a.split('"').next())
+                .collect();
+            // In the exercises' list and in the gallery's plants.
+            assert_eq!(links.len(), 2, "{lang}: {plant}");
+            for link in links {
+                let mut opened = share::decode(link).expect("the link decodes");
+                opened.version = project.version;
+                assert_eq!(opened, project, "{lang}: {plant}: remake the link");
+            }
+            let card = format!("data-testid=\"start-plant-{plant}-fault\"");
+            assert!(page.contains(&card), "{lang}: {card}");
+        }
+    }
+}

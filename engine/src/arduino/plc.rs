@@ -5,7 +5,7 @@ use super::isa::{io_name, parse_io, Op, ERASED};
 use super::machine::{Chip, Machine, PopOrder};
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
+use crate::plc::{self, Device, DeviceError, Drives, Plc, PlcError, SettingError, Value};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -172,7 +172,7 @@ impl Plc for ArduinoPlc {
         if n > 5 {
             return Err(DeviceError::IsAnOutput {
                 device: io_name(n),
-                drives: INPUTS,
+                drives: Drives::Terminals(INPUTS),
             }
             .into());
         }

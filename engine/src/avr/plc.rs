@@ -5,7 +5,7 @@ use super::machine::Machine;
 use super::program::{BitRef, Instruction, TimerKind};
 use super::Program;
 use crate::events::InputValue;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
+use crate::plc::{self, Device, DeviceError, Drives, Plc, PlcError, SettingError, Value};
 use crate::plc::{SettingInfo, Warning};
 use crate::time::SimTime;
 use crate::MachineId;
@@ -155,7 +155,7 @@ impl Plc for AvrPlc {
         if device.0 >= TIMER {
             return Err(DeviceError::NotAnInput {
                 device: format!("timer {}", device.0 - TIMER),
-                drives: "bits",
+                drives: Drives::Bits,
             }
             .into());
         }

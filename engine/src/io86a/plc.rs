@@ -7,7 +7,7 @@ use super::peripherals::{InputMode, IrMode};
 use super::{LinkedPair, Program, Terminal};
 use crate::events::InputValue;
 use crate::plc::SettingInfo;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
+use crate::plc::{self, Device, DeviceError, Drives, Plc, PlcError, SettingError, Value};
 use crate::time::SimTime;
 use crate::MachineId;
 
@@ -209,13 +209,13 @@ impl Io86aPlc {
                 Bit::X(n) => Ok(n),
                 other => Err(DeviceError::NotAnInput {
                     device: other.to_string(),
-                    drives: INPUTS,
+                    drives: Drives::Terminals(INPUTS),
                 }
                 .into()),
             },
             h => Err(DeviceError::NotAnInput {
                 device: self.name(h),
-                drives: INPUTS,
+                drives: Drives::Terminals(INPUTS),
             }
             .into()),
         }

@@ -7,7 +7,7 @@ use super::machine::Machine;
 use super::Program;
 use crate::events::InputValue;
 use crate::plc::SettingInfo;
-use crate::plc::{self, Device, DeviceError, Plc, PlcError, SettingError, Value};
+use crate::plc::{self, Device, DeviceError, Drives, Plc, PlcError, SettingError, Value};
 use crate::time::SimTime;
 use crate::MachineId;
 
@@ -134,7 +134,7 @@ impl MinasecPlc {
             COUNT_CLEAR_BUTTON => Ok(COUNT_CLEAR_BUTTON),
             other => Err(DeviceError::NotAnInput {
                 device: self.name(other),
-                drives: "X00-X07 and the CNTCLR button",
+                drives: Drives::TerminalsAndButton("X00-X07", "CNTCLR"),
             }
             .into()),
         }

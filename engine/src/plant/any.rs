@@ -91,7 +91,7 @@ impl Plant for AnyPlant {
         self.inner_mut().set_param(index, value);
     }
 
-    fn check(&self) -> Result<(), String> {
+    fn check(&self) -> Result<(), super::Misfit> {
         self.inner().check()
     }
 

@@ -10,7 +10,7 @@ use std::collections::VecDeque;
 
 use super::alarm::AlarmKind;
 use super::rng::Rng;
-use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
+use super::{Direction, Kind, Misfit, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
 
 /// Signal indexes.
 const INFEED: usize = 0;
@@ -223,12 +223,12 @@ impl Plant for Conveyor {
         }
     }
 
-    fn check(&self) -> Result<(), String> {
+    fn check(&self) -> Result<(), Misfit> {
         if 2 * self.params[PART] > self.params[LENGTH] {
-            return Err(format!(
-                "part = {} mm is more than half the belt (length = {} mm)",
-                self.params[PART], self.params[LENGTH]
-            ));
+            return Err(Misfit::PartOverHalfBelt {
+                part: self.params[PART],
+                length: self.params[LENGTH],
+            });
         }
         Ok(())
     }

@@ -103,7 +103,15 @@ fn the_seed_fixes_the_schedule_and_reset_starts_it_over() {
 fn a_part_longer_than_half_the_belt_is_refused() {
     let mut c = Conveyor::new();
     c.set_param(LENGTH, 300);
-    assert!(c.check().unwrap_err().contains("half the belt"));
+    let e = c.check().unwrap_err();
+    assert_eq!(
+        e,
+        Misfit::PartOverHalfBelt {
+            part: 200,
+            length: 300
+        }
+    );
+    assert!(e.to_string().contains("half the belt"), "{e}");
     c.set_param(PART, 150);
     assert!(c.check().is_ok());
 }

@@ -2,6 +2,7 @@
 
 use std::fmt;
 
+use super::Misfit;
 use crate::error::shown;
 use crate::time::TimeError;
 
@@ -53,8 +54,15 @@ pub enum PlantError {
         /// Its range, in words.
         range: String,
     },
-    /// Parameters that do not fit together, in the plant's words.
-    Together(String),
+    /// Parameters that do not fit together (the plant's own check).
+    Together(Misfit),
+    /// A plant name that is none of the plants.
+    NoPlant {
+        /// The name as written.
+        name: String,
+        /// The plants, for the message.
+        known: String,
+    },
 }
 
 impl fmt::Display for PlantError {
@@ -87,7 +95,10 @@ impl fmt::Display for PlantError {
             PlantError::OutOfRange { key, value, range } => {
                 write!(f, "{key} = {value} is out of range ({range})")
             }
-            PlantError::Together(e) => f.write_str(e),
+            PlantError::Together(e) => e.fmt(f),
+            PlantError::NoPlant { name, known } => {
+                write!(f, "no plant {} (the plants: {known})", shown(name))
+            }
         }
     }
 }

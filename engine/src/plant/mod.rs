@@ -11,9 +11,11 @@ pub mod alarm;
 pub mod any;
 mod boxed;
 pub mod conveyor;
+mod coupling;
 pub mod door;
 pub mod error;
 pub mod fault;
+mod misfit;
 mod planted;
 mod rng;
 pub mod room_light;
@@ -24,8 +26,10 @@ mod wire_error;
 pub mod wiring;
 
 pub use any::AnyPlant;
+pub use coupling::Coupling;
 pub use error::PlantError;
 pub use fault::{Fault, FaultKind};
+pub use misfit::Misfit;
 pub use planted::{Planted, PlantedError};
 pub use wiring::{Wire, WireEntry};
 
@@ -171,7 +175,7 @@ pub trait Plant {
 
     /// A problem with the parameters together (a part longer than half
     /// the belt), if there is one.
-    fn check(&self) -> Result<(), String> {
+    fn check(&self) -> Result<(), Misfit> {
         Ok(())
     }
 

@@ -6,12 +6,12 @@
 //! machine's inputs, which the machine samples when its scan samples them.
 //! Plant names (`conveyor.delivered`) are devices of this machine.
 
-use super::fault::{self, Fault};
+use super::fault::Fault;
 use super::wiring::{self, Wire, WireEntry};
-use super::{Alarm, AnyPlant, Direction, Kind, Plant, ALARMS, ANALOG_FULL, STEP};
+use super::{Alarm, AnyPlant, Coupling, Direction, Kind, Plant, ALARMS, ANALOG_FULL, STEP};
 use crate::error::{shown, Located};
 use crate::events::InputValue;
-use crate::plc::{Command, Device, DeviceError, Plc, PlcError, SettingError, Value};
+use crate::plc::{Device, DeviceError, Plc, PlcError, SettingError, Value};
 use crate::time::SimTime;
 
 /// Plant devices: `PLANT_BASE` + index (signals, quantities, `alarms`).
@@ -186,54 +186,40 @@ impl<M: Plc> Planted<M> {
         }
     }
 
+    /// The plant's coupling (the engine's one step, [`Coupling`]) and
+    /// the machine it drives.
+    fn coupling(&mut self) -> (Coupling<'_>, &mut M) {
+        let coupling = Coupling {
+            plant: &mut self.plant,
+            wires: &self.wires,
+            faults: &self.faults,
+            values: &mut self.values,
+            written: &mut self.written,
+        };
+        (coupling, &mut self.machine)
+    }
+
     /// One plant step ending at `at`: driven by the outputs as the
     /// machine left them, then its sensors written.
     fn step_plant(&mut self, at: SimTime) {
-        let info = self.plant.info();
-        for s in 0..info.signals.len() {
-            if info.signals[s].direction == Direction::Out {
-                let driven = self
-                    .wires
-                    .iter()
-                    .find(|w| w.signal == s)
-                    .map_or(0, |w| i64::from(self.machine.read(w.device).is_on()));
-                self.values[s] = fault::apply(fault::acting(&self.faults, s, at), driven);
-            }
-        }
         let now_ms = ((at.as_nanos() - self.origin.as_nanos()) / 1_000_000) as i64;
-        self.plant.step(now_ms, &self.values, &mut self.raised);
-        for message in self.raised.drain(..) {
+        let mut raised = std::mem::take(&mut self.raised);
+        let (mut coupling, machine) = self.coupling();
+        coupling.step(machine, at, now_ms, None, &mut raised);
+        for message in raised.drain(..) {
             self.alarms += 1;
             if self.log.len() < MAX_ALARM_LOG {
                 self.log.push(Alarm { at, message });
             }
         }
-        self.sense(at);
+        self.raised = raised;
     }
 
     /// Reads the plant's sensors at `at` (after faults) and writes those
     /// that changed to the machine's inputs.
     fn sense(&mut self, at: SimTime) {
-        let info = self.plant.info();
-        for (s, signal) in info.signals.iter().enumerate() {
-            if signal.direction != Direction::In {
-                continue;
-            }
-            let value = fault::apply(fault::acting(&self.faults, s, at), self.plant.sensor(s));
-            self.values[s] = value;
-            let Some(w) = self.wires.iter().find(|w| w.signal == s) else {
-                continue;
-            };
-            let input = match w.scale {
-                Some(scale) => wiring::scaled(scale, value),
-                None => InputValue::Int(value),
-            };
-            if self.written[s] != Some(input) {
-                // Checked when wired: the input takes it.
-                let _ = self.machine.apply(Command::SetInput(w.device, input));
-                self.written[s] = Some(input);
-            }
-        }
+        let (mut coupling, machine) = self.coupling();
+        coupling.sense(machine, at);
     }
 
     /// The plant device `device` names, by index, if it is one.

@@ -1,6 +1,6 @@
 use super::*;
 use crate::machines::MinasecPlc;
-use crate::plc::Plc;
+use crate::plc::{Command, Plc};
 
 const REFERENCE: &str = include_str!("../../programs/minasec-u/conveyor.il");
 

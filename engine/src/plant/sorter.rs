@@ -13,7 +13,7 @@ use std::collections::VecDeque;
 
 use super::alarm::AlarmKind;
 use super::rng::Rng;
-use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
+use super::{Direction, Kind, Misfit, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo};
 
 /// Signal indexes.
 const PART: usize = 0;
@@ -319,22 +319,21 @@ impl Plant for Sorter {
         }
     }
 
-    fn check(&self) -> Result<(), String> {
+    fn check(&self) -> Result<(), Misfit> {
         let p = &self.params;
         if p[SIZE] > p[FACE] {
-            return Err(format!(
-                "part = {} mm is longer than the pusher's face (face = {} mm)",
-                p[SIZE], p[FACE]
-            ));
+            return Err(Misfit::PartOverFace {
+                part: p[SIZE],
+                face: p[FACE],
+            });
         }
         if 2 * p[SIZE] > p[LENGTH] || p[PUSHER_AT] + p[FACE] > p[LENGTH] {
-            return Err(format!(
-                "the belt (length = {} mm) is too short for two parts of {} mm, or for the pusher at {}..{} mm",
-                p[LENGTH],
-                p[SIZE],
-                p[PUSHER_AT],
-                p[PUSHER_AT] + p[FACE]
-            ));
+            return Err(Misfit::BeltTooShort {
+                length: p[LENGTH],
+                part: p[SIZE],
+                from: p[PUSHER_AT],
+                to: p[PUSHER_AT] + p[FACE],
+            });
         }
         Ok(())
     }

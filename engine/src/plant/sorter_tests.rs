@@ -118,11 +118,15 @@ fn heights_follow_the_seed_and_the_share_of_tall_parts() {
 fn parameters_that_do_not_fit_together_are_refused() {
     let mut s = Sorter::new();
     s.set_param(SIZE, 100);
-    assert!(s
-        .check()
-        .unwrap_err()
-        .contains("longer than the pusher's face"));
+    let e = s.check().unwrap_err();
+    assert!(matches!(e, Misfit::PartOverFace { part: 100, .. }), "{e:?}");
+    assert!(
+        e.to_string().contains("longer than the pusher's face"),
+        "{e}"
+    );
     s.set_param(SIZE, 50);
     s.set_param(PUSHER_AT, 990);
-    assert!(s.check().unwrap_err().contains("too short"));
+    let e = s.check().unwrap_err();
+    assert!(matches!(e, Misfit::BeltTooShort { from: 990, .. }), "{e:?}");
+    assert!(e.to_string().contains("too short"), "{e}");
 }

@@ -5,7 +5,9 @@
 //! The level is kept in thousandths of a percent (0..=[`ANALOG_FULL`]).
 
 use super::alarm::AlarmKind;
-use super::{Direction, Kind, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo, ANALOG_FULL};
+use super::{
+    Direction, Kind, Misfit, ParamInfo, Plant, PlantInfo, QuantityInfo, SignalInfo, ANALOG_FULL,
+};
 
 /// Signal indexes.
 const LOW: usize = 0;
@@ -180,12 +182,12 @@ impl Plant for Tank {
         }
     }
 
-    fn check(&self) -> Result<(), String> {
+    fn check(&self) -> Result<(), Misfit> {
         if self.params[LOW_AT] > self.params[HIGH_AT] {
-            return Err(format!(
-                "the low switch ({} %) is above the high switch ({} %)",
-                self.params[LOW_AT], self.params[HIGH_AT]
-            ));
+            return Err(Misfit::LowAboveHigh {
+                low: self.params[LOW_AT],
+                high: self.params[HIGH_AT],
+            });
         }
         Ok(())
     }

@@ -49,7 +49,9 @@ fn parameters_set_the_start_and_the_switches_must_not_cross() {
     t.set_param(START, 10);
     assert_eq!((t.quantity(0), t.sensor(LOW)), (10, 0));
     t.set_param(LOW_AT, 90);
-    assert!(t.check().unwrap_err().contains("above the high switch"));
+    let e = t.check().unwrap_err();
+    assert!(matches!(e, Misfit::LowAboveHigh { low: 90, .. }), "{e:?}");
+    assert!(e.to_string().contains("above the high switch"), "{e}");
     t.set_param(LOW_AT, 20);
     run(&mut t, 1000, true, false);
     t.reset();

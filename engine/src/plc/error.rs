@@ -98,6 +98,30 @@ impl From<SettingError> for PlcError {
 /// assembler's error type).
 pub type ProgramProblem = Own;
 
+/// What a machine's input events can drive, said in a refusal: typed, so
+/// the page says it in its language (MINASEC-U's "and the CNTCLR button").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Drives {
+    /// The input terminals, as a range of names (`X00-X07`).
+    Terminals(&'static str),
+    /// The input terminals and a button of the board (`CNTCLR`).
+    TerminalsAndButton(&'static str, &'static str),
+    /// Any bit (the AVR PLC's registers).
+    Bits,
+}
+
+impl fmt::Display for Drives {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Drives::Terminals(range) => f.write_str(range),
+            Drives::TerminalsAndButton(range, button) => {
+                write!(f, "{range} and the {button} button")
+            }
+            Drives::Bits => f.write_str("bits"),
+        }
+    }
+}
+
 /// A device name, or a value for a device, that the machine does not take.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum DeviceError {
@@ -117,14 +141,14 @@ pub enum DeviceError {
         /// The device as written.
         device: String,
         /// What events can drive.
-        drives: &'static str,
+        drives: Drives,
     },
     /// An output pin given an input event.
     IsAnOutput {
         /// The device as written.
         device: String,
         /// What events can drive.
-        drives: &'static str,
+        drives: Drives,
     },
     /// A bit given a value other than 0 or 1.
     BitValue(String),

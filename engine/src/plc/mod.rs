@@ -18,7 +18,7 @@ pub mod terminals;
 pub mod trace;
 pub mod value;
 
-pub use error::{problems, DeviceError, PlcError, ProgramProblem, SettingError};
+pub use error::{problems, DeviceError, Drives, PlcError, ProgramProblem, SettingError};
 pub use example::Example;
 pub use front::Front;
 pub use own::Own;

@@ -3,7 +3,7 @@
 
 use engine::cases::{CaseError, EdgeSeen, ExpectError, Observed, MAX_TEST_WORK};
 use engine::events::EventError;
-use engine::plc::{DeviceError, Own, PlcError, SettingError};
+use engine::plc::{DeviceError, Drives, Own, PlcError, SettingError};
 use engine::shown;
 use engine::softplc::plc::SoftDeviceError;
 use engine::time::TimeError;
@@ -89,6 +89,16 @@ fn expect_ja(e: &ExpectError) -> String {
         ExpectError::TextOrder(op) => {
             format!("文字列は = か <> で比べます ({op} は使えません)")
         }
+    }
+}
+
+/// What a machine's input events drive, in Japanese (MINASEC-U's list
+/// of its inputs names its CNTCLR button).
+fn drives_ja(drives: &Drives) -> String {
+    match drives {
+        Drives::Terminals(range) => range.to_string(),
+        Drives::TerminalsAndButton(range, button) => format!("{range} と {button} ボタン"),
+        Drives::Bits => "ビット".to_string(),
     }
 }
 
@@ -228,9 +238,11 @@ fn device_ja(e: &DeviceError) -> String {
         ),
         DeviceError::Constant(d) => format!("{d} は定数でデバイスではありません"),
         DeviceError::NotAnInput { device, drives } => {
+            let drives = drives_ja(drives);
             format!("{device} は入力ではありません: 入力で変えられるのは {drives} です")
         }
         DeviceError::IsAnOutput { device, drives } => {
+            let drives = drives_ja(drives);
             format!("{device} は出力です: 入力で変えられるのは {drives} です")
         }
         DeviceError::BitValue(d) => format!("{d} はビットです: 値は 0 か 1 です"),

@@ -10,6 +10,7 @@
 mod arduino;
 mod avr;
 mod cases;
+pub(crate) use cases::time_ja;
 mod decompile;
 mod edit;
 mod io86a;

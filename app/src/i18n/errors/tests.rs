@@ -11,7 +11,7 @@ use engine::ladder::edit::{ClipError, Cursor, ReplaceError, VariableEditError};
 use engine::ladder::target::ElementError;
 use engine::ladder::variables::VariableError;
 use engine::ladder::Pos;
-use engine::plc::{DeviceError, Own, SettingError};
+use engine::plc::{DeviceError, Drives, Own, SettingError};
 use engine::softplc::plc::SoftDeviceError;
 use engine::softplc::pou::PouError;
 use engine::time::TimeError;
@@ -213,11 +213,19 @@ fn devices() -> Vec<DeviceError> {
         DeviceError::Constant(s()),
         DeviceError::NotAnInput {
             device: s(),
-            drives: "X00-X07",
+            drives: Drives::Terminals("X00-X07"),
+        },
+        DeviceError::NotAnInput {
+            device: s(),
+            drives: Drives::TerminalsAndButton("X00-X07", "CNTCLR"),
+        },
+        DeviceError::NotAnInput {
+            device: s(),
+            drives: Drives::Bits,
         },
         DeviceError::IsAnOutput {
             device: s(),
-            drives: "X00-X07",
+            drives: Drives::Terminals("X00-X07"),
         },
         DeviceError::BitValue(s()),
         DeviceError::NeedsAnalogMode(s()),
