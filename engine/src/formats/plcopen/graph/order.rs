@@ -1,73 +1,176 @@
 //! The order a drawn body's elements run in: each after the elements
 //! that feed it (through connectors too), else top to bottom and left to
-//! right as the file draws them.
+//! right as the file draws them. A loop of wires through an
+//! `inOutVariable` is broken at the variable's readers in the loop: they
+//! read the value the last scan left, everything else reads the variable
+//! after the loop writes it (IEC 61131-3: an element runs when all its
+//! inputs are evaluated; a feedback variable holds the last evaluation's
+//! value). Only a loop with no variable in it is broken where it is
+//! drawn first.
 
 use std::collections::BTreeSet;
 
 use super::{Element, Graph, Kind, Source};
 
-/// The elements that run, each after the elements feeding it (through
-/// connectors too), else top to bottom and left to right; an element in
-/// a loop of wires runs when nothing else can, reading what the loop's
-/// other elements left in the last scan.
-pub(in crate::formats::plcopen) fn order(g: &Graph) -> Vec<usize> {
-    let runs = |e: &Element| {
-        matches!(
-            e.kind,
-            Kind::Contact { .. }
-                | Kind::Coil { .. }
-                | Kind::Block { .. }
-                | Kind::OutVariable(_)
-                | Kind::InOutVariable(_)
-        )
-    };
-    let deps: Vec<Vec<usize>> = g
-        .elements
-        .iter()
-        .map(|e| {
-            let mut out = Vec::new();
-            let mut todo: Vec<&Source> = e.inputs.iter().flat_map(|(_, s)| s).collect();
-            let mut seen = 0;
-            while let Some(s) = todo.pop() {
-                seen += 1;
-                if seen > 10_000 {
-                    break;
-                }
-                let Some(&i) = g.by_id.get(&s.from) else {
-                    continue;
-                };
-                match &g.elements[i].kind {
-                    Kind::Continuation(name) => {
-                        if let Some(&c) = g.connectors.get(&name.to_ascii_lowercase()) {
-                            todo.extend(g.elements[c].inputs.iter().flat_map(|(_, s)| s));
-                        }
-                    }
-                    _ if runs(&g.elements[i]) => out.push(i),
-                    _ => {}
-                }
+/// An element's place in the running order: drawn position, then file
+/// order.
+type Key = (i64, i64, usize);
+
+/// Whether element `e` runs (the others only carry values: rails,
+/// input variables, connectors).
+fn runs(e: &Element) -> bool {
+    matches!(
+        e.kind,
+        Kind::Contact { .. }
+            | Kind::Coil { .. }
+            | Kind::Block { .. }
+            | Kind::OutVariable(_)
+            | Kind::InOutVariable(_)
+    )
+}
+
+/// The running elements feeding each element (through connectors),
+/// sorted, each once, never the element itself.
+fn feeders(g: &Graph) -> Vec<Vec<usize>> {
+    let mut all = Vec::with_capacity(g.elements.len());
+    for (at, e) in g.elements.iter().enumerate() {
+        let mut out = Vec::new();
+        let mut todo: Vec<&Source> = e.inputs.iter().flat_map(|(_, s)| s).collect();
+        let mut seen = 0;
+        while let Some(s) = todo.pop() {
+            seen += 1;
+            if seen > 10_000 {
+                break;
             }
-            out
-        })
-        .collect();
-    let n = g.elements.len();
-    let mut users: Vec<Vec<usize>> = vec![Vec::new(); n];
-    let mut waits = vec![0usize; n];
-    for (i, d) in deps.iter().enumerate() {
-        let mut d = d.clone();
-        crate::sort::all(&mut d);
-        d.dedup();
-        for &j in d.iter().filter(|&&j| j != i) {
-            users[j].push(i);
-            waits[i] += 1;
+            let Some(&i) = g.by_id.get(&s.from) else {
+                continue;
+            };
+            match &g.elements[i].kind {
+                Kind::Continuation(name) => {
+                    if let Some(&c) = g.connectors.get(&name.to_ascii_lowercase()) {
+                        todo.extend(g.elements[c].inputs.iter().flat_map(|(_, s)| s));
+                    }
+                }
+                _ if runs(&g.elements[i]) && i != at => out.push(i),
+                _ => {}
+            }
+        }
+        crate::sort::all(&mut out);
+        out.dedup();
+        all.push(out);
+    }
+    all
+}
+
+/// The parts of the graph among `nodes` in which every element feeds
+/// every other (its loops of wires), each with more than one element:
+/// Kosaraju's two walks, without recursion (a drawing can be deep).
+fn loops(users: &[Vec<usize>], feeders: &[Vec<usize>], nodes: &[usize]) -> Vec<Vec<usize>> {
+    let n = users.len();
+    let mut inside = vec![false; n];
+    for &i in nodes {
+        inside[i] = true;
+    }
+    let mut seen = vec![false; n];
+    let mut finished = Vec::with_capacity(nodes.len());
+    for &start in nodes {
+        if seen[start] {
+            continue;
+        }
+        seen[start] = true;
+        let mut stack = vec![(start, 0usize)];
+        while let Some((v, next)) = stack.last_mut() {
+            if let Some(&w) = users[*v].get(*next) {
+                *next += 1;
+                if inside[w] && !seen[w] {
+                    seen[w] = true;
+                    stack.push((w, 0));
+                }
+            } else {
+                finished.push(*v);
+                stack.pop();
+            }
         }
     }
+    let mut placed = vec![false; n];
+    let mut parts = Vec::new();
+    for &start in finished.iter().rev() {
+        if placed[start] {
+            continue;
+        }
+        placed[start] = true;
+        let mut part = vec![start];
+        let mut todo = vec![start];
+        while let Some(v) = todo.pop() {
+            for &w in &feeders[v] {
+                if inside[w] && !placed[w] {
+                    placed[w] = true;
+                    part.push(w);
+                    todo.push(w);
+                }
+            }
+        }
+        if part.len() > 1 {
+            parts.push(part);
+        }
+    }
+    parts
+}
+
+/// Breaks every loop of wires through an `inOutVariable` at the readers
+/// of its first such variable (as drawn) in the loop: they stop waiting
+/// for it and read what the last scan left. What is left of the loop is
+/// looked at again (another variable may break it); a loop with no
+/// variable is left whole.
+fn break_at_variables(g: &Graph, feeders: &mut [Vec<usize>], users: &mut [Vec<usize>]) {
     let key = |i: usize| (g.elements[i].y, g.elements[i].x, i);
-    let mut left: BTreeSet<(i64, i64, usize)> =
-        (0..n).filter(|&i| runs(&g.elements[i])).map(key).collect();
-    let mut ready: BTreeSet<(i64, i64, usize)> =
-        left.iter().copied().filter(|k| waits[k.2] == 0).collect();
+    let running: Vec<usize> = (0..g.elements.len())
+        .filter(|&i| runs(&g.elements[i]))
+        .collect();
+    let mut todo = loops(users, feeders, &running);
+    // Each part looked at loses a wire or is dropped: this ends.
+    while let Some(part) = todo.pop() {
+        let variable = (part.iter().copied())
+            .filter(|&i| matches!(g.elements[i].kind, Kind::InOutVariable(_)))
+            .min_by_key(|&i| key(i));
+        let Some(v) = variable else {
+            continue;
+        };
+        let mut inside = vec![false; users.len()];
+        for &i in &part {
+            inside[i] = true;
+        }
+        let readers: Vec<usize> = (users[v].iter().copied()).filter(|&u| inside[u]).collect();
+        users[v].retain(|&u| !inside[u]);
+        for u in readers {
+            feeders[u].retain(|&f| f != v);
+        }
+        todo.extend(loops(users, feeders, &part));
+    }
+}
+
+/// The elements that run, each after the elements feeding it (through
+/// connectors too), else top to bottom and left to right; a loop of
+/// wires through an `inOutVariable` is broken at the variable's readers
+/// in it, any other loop at its first element as drawn, which reads what
+/// the loop's other elements left in the last scan.
+pub(in crate::formats::plcopen) fn order(g: &Graph) -> Vec<usize> {
+    let mut feeders = feeders(g);
+    let n = g.elements.len();
+    let mut users: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for (i, d) in feeders.iter().enumerate() {
+        for &j in d {
+            users[j].push(i);
+        }
+    }
+    break_at_variables(g, &mut feeders, &mut users);
+    let mut waits: Vec<usize> = feeders.iter().map(Vec::len).collect();
+    let key = |i: usize| (g.elements[i].y, g.elements[i].x, i);
+    let mut left: BTreeSet<Key> = (0..n).filter(|&i| runs(&g.elements[i])).map(key).collect();
+    let mut ready: BTreeSet<Key> = left.iter().copied().filter(|k| waits[k.2] == 0).collect();
     let mut out = Vec::new();
-    // A loop of wires: its first element runs when nothing else can.
+    // A loop with no variable: its first element runs when nothing else
+    // can.
     while let Some(k) = ready.pop_first().or_else(|| left.first().copied()) {
         if !left.remove(&k) {
             continue;
