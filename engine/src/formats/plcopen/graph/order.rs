@@ -64,9 +64,19 @@ fn feeders(g: &Graph) -> Vec<Vec<usize>> {
 
 /// The parts of the graph among `nodes` in which every element feeds
 /// every other (its loops of wires), each with more than one element:
-/// Kosaraju's two walks, without recursion (a drawing can be deep).
-fn loops(users: &[Vec<usize>], feeders: &[Vec<usize>], nodes: &[usize]) -> Vec<Vec<usize>> {
+/// Kosaraju's two walks, without recursion (a drawing can be deep);
+/// `work` counts the elements and wires looked at.
+fn loops(
+    users: &[Vec<usize>],
+    feeders: &[Vec<usize>],
+    nodes: &[usize],
+    work: &mut usize,
+) -> Vec<Vec<usize>> {
     let n = users.len();
+    *work += nodes.len();
+    for &i in nodes {
+        *work += users[i].len() + feeders[i].len();
+    }
     let mut inside = vec![false; n];
     for &i in nodes {
         inside[i] = true;
@@ -117,35 +127,54 @@ fn loops(users: &[Vec<usize>], feeders: &[Vec<usize>], nodes: &[usize]) -> Vec<V
     parts
 }
 
+/// Elements and wires [`break_at_variables`] may look at: a real
+/// drawing takes a few hundred; a hostile one (thousands of variables in
+/// one loop, each breaking a little of it) would take minutes.
+const MAX_LOOP_WORK: usize = 2_000_000;
+
+/// Stops `part`'s readers of `v` waiting for it; `inside`: `part`'s
+/// elements.
+fn cut_readers(v: usize, inside: &[bool], feeders: &mut [Vec<usize>], users: &mut [Vec<usize>]) {
+    let readers: Vec<usize> = (users[v].iter().copied()).filter(|&u| inside[u]).collect();
+    users[v].retain(|&u| !inside[u]);
+    for u in readers {
+        feeders[u].retain(|&f| f != v);
+    }
+}
+
 /// Breaks every loop of wires through an `inOutVariable` at the readers
 /// of its first such variable (as drawn) in the loop: they stop waiting
 /// for it and read what the last scan left. What is left of the loop is
 /// looked at again (another variable may break it); a loop with no
-/// variable is left whole.
+/// variable is left whole. Past [`MAX_LOOP_WORK`] the loops left are
+/// broken at every variable in them at once.
 fn break_at_variables(g: &Graph, feeders: &mut [Vec<usize>], users: &mut [Vec<usize>]) {
     let key = |i: usize| (g.elements[i].y, g.elements[i].x, i);
+    let is_variable = |i: &usize| matches!(g.elements[*i].kind, Kind::InOutVariable(_));
     let running: Vec<usize> = (0..g.elements.len())
         .filter(|&i| runs(&g.elements[i]))
         .collect();
-    let mut todo = loops(users, feeders, &running);
+    let mut work = 0;
+    let mut todo = loops(users, feeders, &running, &mut work);
+    let mut inside = vec![false; users.len()];
     // Each part looked at loses a wire or is dropped: this ends.
     while let Some(part) = todo.pop() {
-        let variable = (part.iter().copied())
-            .filter(|&i| matches!(g.elements[i].kind, Kind::InOutVariable(_)))
-            .min_by_key(|&i| key(i));
-        let Some(v) = variable else {
-            continue;
-        };
-        let mut inside = vec![false; users.len()];
         for &i in &part {
             inside[i] = true;
         }
-        let readers: Vec<usize> = (users[v].iter().copied()).filter(|&u| inside[u]).collect();
-        users[v].retain(|&u| !inside[u]);
-        for u in readers {
-            feeders[u].retain(|&f| f != v);
+        let mut variables: Vec<usize> = part.iter().copied().filter(is_variable).collect();
+        crate::sort::by_key(&mut variables, |&i| key(i));
+        if work > MAX_LOOP_WORK {
+            for &v in &variables {
+                cut_readers(v, &inside, feeders, users);
+            }
+        } else if let Some(&v) = variables.first() {
+            cut_readers(v, &inside, feeders, users);
+            todo.extend(loops(users, feeders, &part, &mut work));
         }
-        todo.extend(loops(users, feeders, &part));
+        for &i in &part {
+            inside[i] = false;
+        }
     }
 }
 

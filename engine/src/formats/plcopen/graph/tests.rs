@@ -142,3 +142,49 @@ fn a_loop_with_no_variable_breaks_at_its_first_element_as_drawn() {
     );
     assert_eq!(running(&body), ["4", "2", "1"]);
 }
+
+#[test]
+fn thousands_of_variables_in_one_loop_are_broken_in_bounded_work() {
+    // A ring of ADDs, each also feeding an inOutVariable X it reads back:
+    // one loop with 5000 variables in it, each breaking only its own
+    // side of it. Broken one variable at a time this takes minutes; past
+    // MAX_LOOP_WORK every variable breaks its loop at once. Each ADD then
+    // reads its X's last value and runs before it; the ring itself (no
+    // variable in it) breaks at its first ADD drawn.
+    let m = 5000;
+    let mut body = String::from("<FBD>");
+    body.push_str(r#"<inVariable localId="one"><expression>1</expression></inVariable>"#);
+    for i in 0..m {
+        let (b, v) = (2 * i + 1, 2 * i + 2);
+        let prev = if i == 0 { 2 * m - 1 } else { b - 2 };
+        body.push_str(&format!(
+            r#"<block localId="{b}" typeName="ADD"><position x="0" y="{b}"/><inputVariables><variable formalParameter="IN1"><connectionPointIn><connection refLocalId="{prev}" formalParameter="OUT"/></connectionPointIn></variable><variable formalParameter="IN2"><connectionPointIn><connection refLocalId="{v}"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#
+        ));
+        body.push_str(&variable(
+            "inOutVariable",
+            &v.to_string(),
+            v,
+            "X",
+            &b.to_string(),
+        ));
+    }
+    body.push_str("</FBD>");
+    let ids = running(&body);
+    assert_eq!(ids.len(), 2 * m as usize);
+    let place: std::collections::HashMap<&str, usize> = (ids.iter().enumerate())
+        .map(|(i, id)| (id.as_str(), i))
+        .collect();
+    let at = |id: i64| place[id.to_string().as_str()];
+    assert_eq!(ids[0], "1");
+    for i in 0..m {
+        let (b, v) = (at(2 * i + 1), at(2 * i + 2));
+        assert!(b < v, "ADD {} after its variable", 2 * i + 1);
+        if i > 0 {
+            assert!(
+                at(2 * i - 1) < b,
+                "ADD {} before the one it feeds",
+                2 * i + 1
+            );
+        }
+    }
+}
