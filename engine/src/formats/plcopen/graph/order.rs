@@ -8,7 +8,7 @@
 //! value). Only a loop with no variable in it is broken where it is
 //! drawn first.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeSet, HashMap};
 
 use super::{Element, Graph, Kind, Source};
 
@@ -72,28 +72,26 @@ fn loops(
     nodes: &[usize],
     work: &mut usize,
 ) -> Vec<Vec<usize>> {
-    let n = users.len();
     *work += nodes.len();
     for &i in nodes {
         *work += users[i].len() + feeders[i].len();
     }
-    let mut inside = vec![false; n];
-    for &i in nodes {
-        inside[i] = true;
-    }
-    let mut seen = vec![false; n];
+    // Each element's place in `nodes`: the walks cost the part, not the
+    // body, however many parts are looked at.
+    let local: HashMap<usize, usize> = (nodes.iter().enumerate()).map(|(k, &i)| (i, k)).collect();
+    let mut seen = vec![false; nodes.len()];
     let mut finished = Vec::with_capacity(nodes.len());
-    for &start in nodes {
-        if seen[start] {
+    for (k, &start) in nodes.iter().enumerate() {
+        if seen[k] {
             continue;
         }
-        seen[start] = true;
+        seen[k] = true;
         let mut stack = vec![(start, 0usize)];
         while let Some((v, next)) = stack.last_mut() {
             if let Some(&w) = users[*v].get(*next) {
                 *next += 1;
-                if inside[w] && !seen[w] {
-                    seen[w] = true;
+                if let Some(&lw) = local.get(&w).filter(|&&lw| !seen[lw]) {
+                    seen[lw] = true;
                     stack.push((w, 0));
                 }
             } else {
@@ -102,19 +100,19 @@ fn loops(
             }
         }
     }
-    let mut placed = vec![false; n];
+    let mut placed = vec![false; nodes.len()];
     let mut parts = Vec::new();
     for &start in finished.iter().rev() {
-        if placed[start] {
+        let Some(&k) = local.get(&start).filter(|&&k| !placed[k]) else {
             continue;
-        }
-        placed[start] = true;
+        };
+        placed[k] = true;
         let mut part = vec![start];
         let mut todo = vec![start];
         while let Some(v) = todo.pop() {
             for &w in &feeders[v] {
-                if inside[w] && !placed[w] {
-                    placed[w] = true;
+                if let Some(&lw) = local.get(&w).filter(|&&lw| !placed[lw]) {
+                    placed[lw] = true;
                     part.push(w);
                     todo.push(w);
                 }
