@@ -17,6 +17,7 @@ mod seed;
 mod share;
 mod soft_drawn;
 mod soft_externals;
+mod soft_feedback;
 mod soft_plcopen;
 mod soft_seeds;
 mod soft_st;
