@@ -57,6 +57,11 @@ const MIN_SPEED_BUDGET_MS: f64 = 2.0;
 /// `Speed::Max` advances in slices of this much simulated time, checking
 /// the budget between slices.
 const MAX_SPEED_SLICE: SimTime = SimTime::from_millis(20);
+/// ... and of this much with a plant coupled: the rig steps the plant and
+/// keeps its past at each of its milliseconds, so 20 ms of it cost more
+/// than a frame's whole share, and the first slice always runs (issue
+/// #52: the 200-rung ladder's running frame with the conveyor).
+const MAX_SPEED_SLICE_PLANT: SimTime = SimTime::from_millis(2);
 
 /// How the page paces simulated time. Page-wide state: the header sets
 /// it, the frame loop hands it to whichever workspace is shown.
@@ -243,10 +248,14 @@ impl<M: Plc + Clone> Simulator<M> {
                 // would end within the budget: the frame's simulation then
                 // ends by its budget, whatever a slice costs on this
                 // machine and build (the first slice always runs).
+                let slice = match self.rig {
+                    Some(_) => MAX_SPEED_SLICE_PLANT,
+                    None => MAX_SPEED_SLICE,
+                };
                 let start = now_ms();
                 let mut last_end = start;
                 loop {
-                    self.tick(MAX_SPEED_SLICE);
+                    self.tick(slice);
                     let end = now_ms();
                     let next_end = end + (end - last_end);
                     last_end = end;

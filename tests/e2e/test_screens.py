@@ -5,6 +5,8 @@ taps on touch), find the coil on screen, run it and drive it from the
 panel (on desktops without scrolling the page), open every pane in view,
 and never overflow sideways."""
 
+import time
+
 import pytest
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -12,7 +14,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
 from conftest import as_returning_user
-from test_app import drawn, el, on, open_fresh, wait
+from test_app import ROOT, drawn, el, on, open_fresh, wait
 from test_ladder import focus_ladder, place
 
 SCREENS = {
@@ -383,3 +385,37 @@ def test_a_long_string_in_the_variables_pane_on_every_screen(screen, base_url, t
     assert box["x"] >= 0 and box["x"] + box["w"] <= box["vw"], box
     assert no_sideways_overflow(driver)
     driver.save_screenshot(str(artifacts / f"screen-string-{name}.png"))
+
+
+def test_on_a_phone_the_device_entry_leaves_the_cell_and_the_task_in_view(tmp_path, base_url, artifacts):
+    """The newcomer review's phone finding: with an exercise's task up in
+    the sheet, the device entry pushed the ladder under the sheet and was
+    itself cut off by it. It floats at the top of the screen now: the
+    entry whole above the sheet, the cell being filled still seen."""
+    import re
+    page = (ROOT / "web/start/en.html").read_text(encoding="utf-8")
+    fragment = next(m.group(1) for m in re.finditer(r'<a href="\./#([^"]+)"[^>]*>([^<]+)<', page)
+                    if m.group(2).startswith("Forward and reverse"))
+    driver = screen_driver(tmp_path, "phone")
+    try:
+        driver.get(f"{base_url}/#{fragment}")
+        wait(driver, lambda: el(driver, "exercise-task").is_displayed(), message="the task in the sheet")
+        el(driver, "cell-0-0-0").click()
+        el(driver, "palette-no").click()
+        wait(driver, lambda: driver.find_elements(By.CSS_SELECTOR, '[data-testid="device-options"] button'))
+        time.sleep(0.5)
+        driver.save_screenshot(str(artifacts / "phone-device-entry-with-task.png"))
+        box = lambda selector: driver.execute_script(
+            "const r = document.querySelector(arguments[0]).getBoundingClientRect();"
+            "return {top: r.top, bottom: r.bottom};", selector)
+        entry, sheet = box(".entry-bar"), box('[data-testid="dock-bottom"]')
+        assert 0 <= entry["top"] and entry["bottom"] <= sheet["top"], (entry, sheet)
+        seen = driver.execute_script("""
+            const cell = document.querySelector('[data-testid="cell-0-0-0"]');
+            const r = cell.getBoundingClientRect();
+            const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+            return hit !== null && cell.contains(hit);""")
+        assert seen, "the cell being filled is seen, not under the entry or the sheet"
+        assert el(driver, "exercise-task").is_displayed()
+    finally:
+        driver.quit()
