@@ -278,8 +278,15 @@ fn label_of(
     // Both languages' words once: the name is said again at each change of
     // the cell's live state.
     let (en, ja) = (cell_words(c, Lang::En), cell_words(c, Lang::Ja));
+    // The language through a memo of this cell's own: the label is said
+    // again at each live change, and an effect that re-runs leaves each
+    // of its sources' subscriber lists (an ordered set: linear in its
+    // length). The page's language has one subscriber per cell and more,
+    // so a ladder whose every cell changed each frame spent most of the
+    // frame there (200 rungs running with a plant: 100 ms frames).
+    let lang = Memo::new(move |_| ctx.page.lang.get());
     move || {
-        let lang = ctx.page.lang.get();
+        let lang = lang.get();
         let words = if lang == Lang::Ja { &ja } else { &en };
         let mut state = live_words(slot.on.get(), slot.powered.get(), lang);
         state.push_str(super::conduct::conduct_words(slot.conducts.get(), lang));
@@ -303,7 +310,9 @@ fn lit_of(
     slot: &super::state::CellSlot,
 ) -> impl Fn() -> bool + Send + Sync + 'static {
     let (on, conducts) = (slot.on.clone(), slot.conducts.clone());
-    move || super::conduct::lit(kind, on.get(), conducts.get(), ctx.page.colouring.get())
+    // Through a memo of the cell's own, as the label's language.
+    let colouring = Memo::new(move |_| ctx.page.colouring.get());
+    move || super::conduct::lit(kind, on.get(), conducts.get(), colouring.get())
 }
 
 /// A box in its rung's right half shows its whole text leftwards.
