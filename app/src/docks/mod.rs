@@ -45,7 +45,7 @@ impl Docks {
     pub fn restore() -> Docks {
         let sizes = storage::saved_string(KEY)
             .and_then(|s| Sizes::parse(&s))
-            .unwrap_or_else(|| Sizes::for_window(window_height()));
+            .unwrap_or_default();
         Docks {
             tool: RwSignal::new(sizes.tool),
             drawn: RwSignal::new(if sizes.bottom_open {
@@ -128,13 +128,4 @@ pub fn when_first_shown(
         }
     })
     .into_any()
-}
-
-/// The window's inner height in CSS pixels (NaN where there is none, as
-/// in native tests).
-fn window_height() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.inner_height().ok())
-        .and_then(|h| h.as_f64())
-        .unwrap_or(f64::NAN)
 }

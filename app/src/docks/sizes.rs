@@ -110,19 +110,6 @@ impl Default for Sizes {
 }
 
 impl Sizes {
-    /// The defaults for a window `height_px` tall: on a laptop's height
-    /// (800 px or less) the tools dock of [`Sizes::default`]; on a taller
-    /// screen 28 % of it, at most 360 px, so that a plant's drawing or an
-    /// exercise's task and its Check button are seen without scrolling
-    /// (at 1920×1080: 302 px, was 170).
-    pub fn for_window(height_px: f64) -> Sizes {
-        let mut sizes = Sizes::default();
-        if height_px.is_finite() && height_px > 800.0 {
-            sizes.bottom_px = (height_px * 0.28).clamp(sizes.bottom_px, 360.0);
-        }
-        sizes
-    }
-
     /// The sizes as storage keeps them: `right,bottom,right open,bottom
     /// open,tool` (`400,170,1,1,watch`).
     pub fn to_text(&self) -> String {
@@ -196,14 +183,6 @@ mod tests {
             (tiny.right_px, tiny.bottom_px),
             (MIN_RIGHT_PX, MIN_BOTTOM_PX)
         );
-    }
-
-    #[test]
-    fn a_taller_window_opens_a_taller_tools_dock() {
-        assert_eq!(Sizes::for_window(768.0), Sizes::default());
-        assert_eq!(Sizes::for_window(f64::NAN), Sizes::default());
-        assert!((Sizes::for_window(1080.0).bottom_px - 302.4).abs() < 0.01);
-        assert_eq!(Sizes::for_window(2160.0).bottom_px, 360.0);
     }
 
     #[test]

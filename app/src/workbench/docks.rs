@@ -87,16 +87,16 @@ pub fn BottomDock(machine: engine::MachineId, panels: Vec<(Tool, AnyView)>) -> i
 /// pane). Returns what the body calls when it scrolls.
 fn keep_each_tabs_scroll(docks: Docks, body: NodeRef<leptos::html::Div>) -> impl Fn() + Copy {
     let kept = StoredValue::new(Vec::<(Tool, i32)>::new());
+    // Created after the panels' `hidden` (their render effects run
+    // first), so the panel is shown when its scroll is put back; at once,
+    // not a frame later, where it would undo a scroll made meanwhile (a
+    // control scrolled into view as soon as its tab shows).
     Effect::new(move |_| {
         let tool = docks.tool.get();
         let top = kept.with_value(|k| k.iter().find(|(t, _)| *t == tool).map_or(0, |(_, y)| *y));
-        // Once the panel is shown (a scroll event the switch caused is
-        // overridden here).
-        request_animation_frame(move || {
-            if let Some(Some(body)) = body.try_get_untracked() {
-                body.set_scroll_top(top);
-            }
-        });
+        if let Some(Some(body)) = body.try_get_untracked() {
+            body.set_scroll_top(top);
+        }
     });
     move || {
         if let Some(Some(body)) = body.try_get_untracked() {
