@@ -284,9 +284,11 @@ fn label_of(
     // length). The page's language has one subscriber per cell and more,
     // so a ladder whose every cell changed each frame spent most of the
     // frame there (200 rungs running with a plant: 100 ms frames).
-    let lang = Memo::new(move |_| ctx.page.lang.get());
+    // A `Memo<bool>`, not a `Memo<Lang>`: each memo type is code of its
+    // own in the first screen's wasm.
+    let in_ja = Memo::new(move |_| ctx.page.lang.get() == Lang::Ja);
     move || {
-        let lang = lang.get();
+        let lang = if in_ja.get() { Lang::Ja } else { Lang::En };
         let words = if lang == Lang::Ja { &ja } else { &en };
         let mut state = live_words(slot.on.get(), slot.powered.get(), lang);
         state.push_str(super::conduct::conduct_words(slot.conducts.get(), lang));
@@ -311,8 +313,15 @@ fn lit_of(
 ) -> impl Fn() -> bool + Send + Sync + 'static {
     let (on, conducts) = (slot.on.clone(), slot.conducts.clone());
     // Through a memo of the cell's own, as the label's language.
-    let colouring = Memo::new(move |_| ctx.page.colouring.get());
-    move || super::conduct::lit(kind, on.get(), conducts.get(), colouring.get())
+    use super::conduct::Colouring;
+    let by_value = Memo::new(move |_| ctx.page.colouring.get() == Colouring::ByValue);
+    move || {
+        let colouring = match by_value.get() {
+            true => Colouring::ByValue,
+            false => Colouring::ByConduction,
+        };
+        super::conduct::lit(kind, on.get(), conducts.get(), colouring)
+    }
 }
 
 /// A box in its rung's right half shows its whole text leftwards.
