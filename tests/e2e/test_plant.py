@@ -489,14 +489,6 @@ def test_each_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name)
         driver.quit()
 
 
-FRAMES = """
-    const done = arguments[arguments.length - 1];
-    const deltas = []; let last = null; const end = performance.now() + 3000;
-    function frame(t) { if (last !== null) deltas.push(t - last); last = t;
-      if (t < end) requestAnimationFrame(frame); else done(deltas); }
-    requestAnimationFrame(frame);"""
-
-
 @pytest.mark.xfail(strict=False, reason=(
     "issue #52's 1.15x is not met yet (docs/performance.md 'With a plant'): at load 0.3-1.3, "
     "83.4 ms running vs 16.8 paused (116.8 before each cell's label read the language through "
@@ -510,14 +502,9 @@ def test_the_200_rung_ladder_with_the_conveyor_running_keeps_its_frame(driver, b
     in the Plant tab, the median of three runs' p95 frame time running is
     within 1.15x of paused. The figures go to figures.json."""
     from conftest import record_figures
-    from test_ladder import live_scan
+    from test_ladder import FRAMES, frame_stats, live_scan, toggling_rungs
 
-    rungs = []
-    for i in range(200):
-        bit = f"R{i // 8}.{i % 8}"
-        rungs.append({"cells": [[{"type": "contact", "kind": "nc", "device": bit}]
-                                + [{"type": "wire"}] * 8
-                                + [{"type": "coil", "kind": "normal", "device": bit}]]})
+    rungs = toggling_rungs()
     wiring = [["infeed", "R30.0"], ["outfeed", "R30.1"], ["motor", "R24.7"]]
     project = tmp_path / "r200-conveyor.json"
     project.write_text(json.dumps({"format": "hashigo-project", "version": 4, "machine": "avr-plc",
@@ -534,11 +521,6 @@ def test_the_200_rung_ladder_with_the_conveyor_running_keeps_its_frame(driver, b
     assert el(driver, "wiring-device-motor").get_attribute("value") == "R24.7"
     Select(el(driver, "speed")).select_by_value("max")
     driver.set_script_timeout(30)
-
-    def stats(d):
-        d = sorted(d)
-        pick = lambda q: round(d[min(len(d) - 1, int(q * len(d)))], 2)
-        return {"p50": pick(0.5), "p95": pick(0.95), "max": round(d[-1], 2), "frames": len(d)}
 
     if el(driver, "run").get_attribute("aria-pressed") == "true":
         el(driver, "run").click()
@@ -557,8 +539,8 @@ def test_the_200_rung_ladder_with_the_conveyor_running_keeps_its_frame(driver, b
         el(driver, "pause").click()
         paused = driver.execute_async_script(FRAMES)
         assert len(running) > 30 and len(paused) > 30
-        runs["running"].append(stats(running) | {"scans_per_s": round(scans / 3)})
-        runs["paused"].append(stats(paused))
+        runs["running"].append(frame_stats(running) | {"scans_per_s": round(scans / 3)})
+        runs["paused"].append(frame_stats(paused))
     medians = {state: sorted(r["p95"] for r in runs[state])[1] for state in runs}
     record_figures({f"ladder_200_rungs_conveyor_{state}_frame_ms": {"median_p95": medians[state],
                                                                    "runs": runs[state]}
