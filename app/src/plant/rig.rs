@@ -59,24 +59,8 @@ pub(super) fn build(setup: &PlantSetup, machine: &mut dyn Plc) -> Result<Box<dyn
             known: AnyPlant::names(),
         })
     })?;
+    plant.set_params(&setup.params).map_err(one)?;
     let info = plant.info();
-    for (key, value) in &setup.params {
-        let index = info
-            .params
-            .iter()
-            .position(|p| p.key == key)
-            .ok_or_else(|| {
-                let known: Vec<_> = info.params.iter().map(|p| p.key).collect();
-                one(PlantError::UnknownParam {
-                    plant: info.name,
-                    key: key.clone(),
-                    known: known.join(", "),
-                })
-            })?;
-        let v = engine::plant::parse_param(&info.params[index], value).map_err(one)?;
-        plant.set_param(index, v);
-    }
-    plant.check().map_err(|m| one(PlantError::Together(m)))?;
     let faults = setup
         .faults
         .iter()

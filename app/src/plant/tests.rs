@@ -298,3 +298,50 @@ fn watch_is_offered_each_plant_name_it_takes() {
         rig.detach(&mut m);
     }
 }
+
+#[test]
+fn the_tests_runner_says_a_refused_plant_setup_in_the_pages_language() {
+    use crate::editor::panes::runner::run_cases_with;
+    use crate::editor::state::CaseResult;
+    use engine::formats::Project;
+    let project = Project::from_json(include_str!(
+        "../../../engine/programs/minasec-u/conveyor.json"
+    ))
+    .unwrap();
+    let settings: Vec<_> = project.settings.clone().into_iter().collect();
+    let said = |plant: PlantSetup| {
+        let results = run_cases_with(
+            engine::MachineId::MinasecU,
+            &settings,
+            CONVEYOR,
+            &project.tests[..1],
+            Some(&plant),
+        );
+        match &results[0] {
+            CaseResult::Error(both) => (both.en.clone(), both.ja.clone()),
+            other => panic!("not refused: {other:?}"),
+        }
+    };
+    // A wiring row: said at its row, in each language.
+    let mut wired = setup("conveyor");
+    wired.wiring = Some(vec![
+        ["motor".into(), "Y00".into()],
+        ["nosuch".into(), "X00".into()],
+    ]);
+    let (en, ja) = said(wired);
+    assert!(en.starts_with("plant wiring entry 2: "), "{en}");
+    assert!(ja.starts_with("プラントの配線 2 行目: "), "{ja}");
+    assert!(ja.contains("信号 \"nosuch\" はありません"), "{ja}");
+    // A fault: said after the fault as written.
+    let mut faulty = setup("conveyor");
+    faulty.faults = vec!["infeed dead".into()];
+    let (en, ja) = said(faulty);
+    assert!(en.starts_with("infeed dead: "), "{en}");
+    assert!(ja.contains("センサー"), "{ja}");
+    // A parameter.
+    let mut tuned = setup("conveyor");
+    tuned.params.insert("length".into(), "many".into());
+    let (en, ja) = said(tuned);
+    assert!(en.contains("length") && en.contains("many"), "{en}");
+    assert!(ja.contains("整数"), "{ja}");
+}

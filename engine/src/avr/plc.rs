@@ -153,8 +153,11 @@ impl Plc for AvrPlc {
 
     fn check_input(&self, device: Device, value: InputValue) -> Result<(), PlcError> {
         if device.0 >= TIMER {
+            // Named as the user writes it (`T1.v`), in every language.
+            let index = (device.0 - TIMER) as usize;
+            let name = self.machine.program().timer_name(index);
             return Err(DeviceError::NotAnInput {
-                device: format!("timer {}", device.0 - TIMER),
+                device: name.map_or_else(|| format!("T{index}"), |n| format!("{n}.v")),
                 drives: Drives::Bits,
             }
             .into());

@@ -142,6 +142,14 @@ impl Program {
             .map(|&(_, i)| i)
     }
 
+    /// The label of timer word `index`, as the program defines it.
+    pub fn timer_name(&self, index: usize) -> Option<&str> {
+        self.timer_names
+            .iter()
+            .find(|&&(_, i)| i == index)
+            .map(|(n, _)| n.as_str())
+    }
+
     /// The records as `.db` lines with numeric bytes.
     pub fn listing(&self) -> String {
         self.records

@@ -50,6 +50,30 @@ impl AnyPlant {
         }
     }
 
+    /// Sets parameters given by key and value as written (a project's
+    /// `plant.params`, `--set conveyor.length=…`), then checks them
+    /// together; the first refusal, typed. Shared by everything that sets
+    /// a plant up from a project, for one set of refusals.
+    pub fn set_params<'a>(
+        &mut self,
+        params: impl IntoIterator<Item = (&'a String, &'a String)>,
+    ) -> Result<(), super::PlantError> {
+        let info = self.info();
+        for (key, value) in params {
+            let Some(index) = info.params.iter().position(|p| p.key == key) else {
+                let known: Vec<_> = info.params.iter().map(|p| p.key).collect();
+                return Err(super::PlantError::UnknownParam {
+                    plant: info.name,
+                    key: key.clone(),
+                    known: known.join(", "),
+                });
+            };
+            let v = super::parse_param(&info.params[index], value)?;
+            self.set_param(index, v);
+        }
+        self.check().map_err(super::PlantError::Together)
+    }
+
     /// The plants' names, for messages.
     pub fn names() -> String {
         ALL.map(|p| p.name).join(", ")

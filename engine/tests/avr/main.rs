@@ -250,3 +250,20 @@ fn bad_sources_are_located() {
         (1, &ProgramError::NoEnd)
     );
 }
+
+#[test]
+fn an_input_event_on_a_timer_is_refused_naming_the_timer_as_written() {
+    use engine::events::InputValue;
+    use engine::machines::AvrPlc;
+    use engine::plc::Plc;
+    let mut plc = AvrPlc::new();
+    plc.load_text(E_STOP)
+        .expect("the seed's timer example loads");
+    let timer = plc.device("Start_TP.v").expect("a timer word by its label");
+    let refused = plc
+        .check_input(timer, InputValue::Int(1))
+        .expect_err("a timer is no input")
+        .to_string();
+    assert!(refused.contains("Start_TP.v"), "{refused}");
+    assert!(!refused.contains("timer 1"), "{refused}");
+}

@@ -5,14 +5,16 @@
 use engine::cases::{prepare_all, run_prepared, Outcome, TestCase};
 use engine::formats::project::PlantSetup;
 use engine::machines::try_new_plc;
-use engine::plant::{fault, AnyPlant, Fault, Plant, Planted, WireEntry};
+use engine::plant::{fault, wiring, AnyPlant, Fault, Plant, PlantError, Planted, WireEntry};
 use engine::plc::{Command, Plc};
 use engine::MachineId;
 use leptos::prelude::*;
 
 use crate::editor::state::{CaseResult, LadderCtx};
 use crate::i18n::errors::{self, Both};
+use crate::i18n::{plant_errors, plant_wiring, Lang};
 use crate::parts::PartMissing;
+use crate::rig::Refusal;
 
 /// Runs every case of `ctx`'s project and shows the results. A ladder
 /// that does not compile passes nothing: an exercise says so in its
@@ -159,7 +161,7 @@ pub fn run_cases_with(
             let mut plc = match plant {
                 Some(setup) => match planted(plc, setup) {
                     Ok(plc) => plc,
-                    Err(e) => return CaseResult::Error(Both::new(|_| e.clone())),
+                    Err(e) => return CaseResult::Error(Both::new(|l| e.said(l))),
                 },
                 None => plc,
             };
@@ -179,49 +181,85 @@ pub fn run_cases_with(
         .collect()
 }
 
+/// Why a case's plant could not be attached, kept as a value so that it
+/// is said in either language, as the Plant dock says it.
+enum SetupRefused {
+    /// The plant's name, its parameters or one of its faults (the fault
+    /// as written).
+    Plant(Option<String>, PlantError),
+    /// A wiring row (1-based) the plant and the machine do not take.
+    Row(usize, Refusal),
+    /// A row refused in the engine's words only (not met: the rows are
+    /// checked typed first).
+    Words(usize, String),
+}
+
+impl SetupRefused {
+    fn said(&self, lang: Lang) -> String {
+        let row = |row: usize, r: &str| match lang {
+            Lang::En => format!("plant wiring entry {row}: {r}"),
+            Lang::Ja => format!("プラントの配線 {row} 行目: {r}"),
+        };
+        match self {
+            SetupRefused::Plant(None, e) => plant_errors::plant_error(lang, e),
+            SetupRefused::Plant(Some(fault), e) => {
+                format!("{fault}: {}", plant_errors::plant_error(lang, e))
+            }
+            SetupRefused::Row(n, r) => row(*n, &plant_wiring::refusal(lang, r)),
+            SetupRefused::Words(n, r) => row(*n, r),
+        }
+    }
+}
+
 /// `plc` with `setup`'s plant attached: its wiring, faults and
-/// parameters, or what is wrong with them (the engine's words).
-fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, String> {
-    let plant = AnyPlant::new(&setup.name).ok_or_else(|| {
-        format!(
-            "no plant {} (the plants: {})",
-            setup.name,
-            AnyPlant::names()
+/// parameters, or the first thing wrong with them.
+fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, SetupRefused> {
+    let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
+        SetupRefused::Plant(
+            None,
+            PlantError::NoPlant {
+                name: setup.name.clone(),
+                known: AnyPlant::names(),
+            },
         )
     })?;
+    plant
+        .set_params(&setup.params)
+        .map_err(|e| SetupRefused::Plant(None, e))?;
     let info = plant.info();
     let faults = setup
         .faults
         .iter()
-        .map(|f| Fault::parse(f, info).map_err(|e| format!("{f}: {e}")))
+        .map(|f| Fault::parse(f, info).map_err(|e| SetupRefused::Plant(Some(f.clone()), e)))
         .collect::<Result<Vec<_>, _>>()?;
-    let entries: Option<Vec<WireEntry>> = setup.wiring.as_ref().map(|rows| {
-        rows.iter()
+    // The rows (or the machine's default, as `Planted::new` makes it) are
+    // checked here, typed, for the refusal to be said in the page's
+    // language; `Planted::new` then checks the same rows again.
+    let entries: Vec<WireEntry> = match &setup.wiring {
+        Some(rows) => rows
+            .iter()
             .enumerate()
             .map(|(i, [signal, device])| WireEntry {
                 signal: signal.clone(),
                 device: device.clone(),
                 line: i + 1,
             })
-            .collect()
-    });
-    let mut planted = Planted::new(plc, plant, entries.as_deref(), faults).map_err(|errors| {
-        let said: Vec<_> = errors
-            .iter()
-            .map(|e| format!("plant wiring entry {}: {}", e.line, e.error))
-            .collect();
-        said.join("; ")
-    })?;
-    for (key, value) in &setup.params {
-        let name = format!("{}.{key}", setup.name);
-        let setting = Command::Setting {
-            name: name.clone(),
-            value: value.clone(),
-        };
-        planted
-            .apply(setting)
-            .map_err(|e| format!("{name}={value}: {e}"))?;
+            .collect(),
+        None => {
+            let mut entries = wiring::default_wiring(info, plc.as_ref()).0;
+            entries.retain(|e| plc.device(&e.device).is_ok());
+            entries
+        }
+    };
+    if let Err(errors) = wiring::check(info, plc.as_ref(), &entries) {
+        if let Some(e) = errors.into_iter().next() {
+            return Err(SetupRefused::Row(e.line, Refusal::Wire(e.error)));
+        }
     }
+    let planted = Planted::new(plc, plant, Some(&entries), faults).map_err(|errors| {
+        let said: Vec<_> = errors.iter().map(|e| e.error.clone()).collect();
+        SetupRefused::Words(errors.first().map_or(0, |e| e.line), said.join("; "))
+    })?;
     Ok(Box::new(planted))
 }
 
