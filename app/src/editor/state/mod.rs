@@ -577,6 +577,7 @@ impl LadderCtx {
                         data: ArcRwSignal::new(d),
                         slots: Default::default(),
                         probes: Default::default(),
+                        seen: std::sync::Arc::new(true.into()),
                     }
                 }
             };
