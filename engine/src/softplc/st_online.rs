@@ -7,7 +7,7 @@
 
 use std::ops::RangeInclusive;
 
-use super::program::{InstanceBody, Program};
+use super::program::{InstanceBody, Program, Step};
 use super::st::StBlocks;
 use super::st_why::StWrite;
 use crate::iec::st::ast::{Item, PouKind};
@@ -29,9 +29,23 @@ pub struct StMap {
 
 impl StMap {
     /// The map of `program` whose steps come from ST lines `lines`
-    /// (`StRun::lines` for an ST program).
-    pub fn new(program: &Program, lines: Vec<Option<usize>>) -> StMap {
+    /// (`StRun::lines` for an ST program). A step that only passes
+    /// control on (an `IF` branch's jump to its end, the return at a
+    /// body's last label) has no line: stepping by statement goes from a
+    /// branch's last statement to the one after `END_IF`, not back to
+    /// the `IF`'s line that lowered it.
+    pub fn new(program: &Program, mut lines: Vec<Option<usize>>) -> StMap {
         let instances = program.instance_bodies();
+        let ends: Vec<usize> = instances.iter().map(|i| i.steps.start).collect();
+        for (step, line) in lines.iter_mut().enumerate() {
+            let last = matches!(program.steps.get(step + 1), None | Some(Step::Return))
+                || ends.contains(&(step + 1));
+            match program.steps.get(step) {
+                Some(Step::Jmp(None, _)) => *line = None,
+                Some(Step::Ret(None)) if last => *line = None,
+                _ => {}
+            }
+        }
         let mut owners = vec![None; program.len()];
         for (i, body) in instances.iter().enumerate() {
             for step in body.steps.clone() {
