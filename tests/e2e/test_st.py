@@ -492,6 +492,13 @@ def test_an_st_blocks_lines_show_the_chosen_instances_values(driver, base_url, t
     assert value_beside(driver, 12) == "ok = FALSE", "p1: y = 3, not above 10"
     choose_instance(driver, "p0")
     wait(driver, lambda: value_beside(driver, 12) == "ok = TRUE", message="p0: go and y = 11")
+    # Time travel: p0's values two scans after the run began, before go.
+    el(driver, "pause").click()
+    driver.execute_script("const s = arguments[0]; s.value = String(Number(s.min) + 2);"
+                          "s.dispatchEvent(new Event('input', {bubbles: true}));", el(driver, "timeline"))
+    el(driver, "st-editor")
+    wait(driver, lambda: value_beside(driver, 3) == "go = FALSE", message="p0's go at that scan")
+    assert value_beside(driver, 12) == "ok = FALSE" and value_beside(driver, 10) == "y = 11  x = 5"
     assert severe_console_messages(driver) == []
 
 
