@@ -422,3 +422,156 @@ def test_why_into_st_and_a_plcopen_st_project_on_a_laptop_and_a_phone(tmp_path, 
             assert found == [], found
         finally:
             drv.quit()
+
+
+PICK = """FUNCTION_BLOCK Pick
+VAR_INPUT
+  go : BOOL;
+  x : INT;
+END_VAR
+VAR_OUTPUT
+  ok : BOOL;
+  y : INT;
+END_VAR
+y := x * 2 + 1;
+IF go AND y > 10 THEN
+  ok := TRUE;
+ELSE
+  ok := FALSE;
+END_IF;
+END_FUNCTION_BLOCK
+"""
+
+
+def place_picks(driver, base_url, tmp_path, name="pick.st"):
+    """%IX0.0 -> [p0: PICK 5] -> %QX0.0 and %IX0.0 -> [p1: PICK 1] ->
+    %QX0.1: one block, two instances; the ladder run."""
+    open_fresh(driver, base_url)
+    path = tmp_path / name
+    path.write_text(PICK)
+    el(driver, "open-file").send_keys(str(path))
+    close_menu(driver)
+    wait(driver, lambda: el(driver, "palette-st-pick"), message="PICK in the palette")
+    for rung, x in [(0, 5), (1, 1)]:
+        # After a coil the cursor is on the next rung already (on a phone
+        # the I/O strip may cover that cell).
+        if rung == 0:
+            focus_ladder(driver, "cell-0-0-0")
+        place(driver, Keys.F5, "%IX0.0")
+        el(driver, "palette-st-pick").click()
+        wait(driver, lambda: el(driver, "device-input")).send_keys(f"p{rung} {x}", Keys.ENTER)
+        wait(driver, lambda: "PICK" in el(driver, f"cell-{rung}-0-1").text, message="the box placed")
+        cell = el(driver, f"cell-{rung}-0-2")
+        moved = cell.get_attribute("aria-selected") == "true" and \
+            driver.switch_to.active_element.get_attribute("data-testid") == "ladder"
+        if not moved:
+            focus_ladder(driver, f"cell-{rung}-0-2")
+        place(driver, Keys.F7, f"%QX0.{rung}")
+    wait(driver, lambda: el(driver, "problems").text.strip() == "No problems.",
+         message=el(driver, "problems", reveal=False).text)
+    el(driver, "run").click()
+    el(driver, "st-editor")  # the Program tab shown: its values are read as seen
+    wait(driver, lambda: value_beside(driver, 10) == "y = 11  x = 5", message="p0's values beside the line")
+
+
+def choose_instance(driver, name):
+    el(driver, "st-instance").find_element(By.CSS_SELECTOR, f'option[value="{name}"]').click()
+
+
+def test_an_st_blocks_lines_show_the_chosen_instances_values(driver, base_url, tmp_path):
+    place_picks(driver, base_url, tmp_path)
+    options = [o.text for o in el(driver, "st-instance").find_elements(By.TAG_NAME, "option")]
+    assert options == ["p0 (Pick)", "p1 (Pick)"], options
+    assert value_beside(driver, 14) == "ok = FALSE" and value_beside(driver, 12) == "ok = FALSE"
+    assert value_beside(driver, 1) == "", "the block's name is no variable"
+    choose_instance(driver, "p1")
+    wait(driver, lambda: value_beside(driver, 10) == "y = 3  x = 1", message="p1's values")
+    assert value_beside(driver, 3) == "go = FALSE", "a declaration's too"
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: value_beside(driver, 3) == "go = TRUE", message="live, as it runs")
+    assert value_beside(driver, 12) == "ok = FALSE", "p1: y = 3, not above 10"
+    choose_instance(driver, "p0")
+    wait(driver, lambda: value_beside(driver, 12) == "ok = TRUE", message="p0: go and y = 11")
+    # Time travel: p0's values two scans after the run began, before go.
+    el(driver, "pause").click()
+    driver.execute_script("const s = arguments[0]; s.value = String(Number(s.min) + 2);"
+                          "s.dispatchEvent(new Event('input', {bubbles: true}));", el(driver, "timeline"))
+    el(driver, "st-editor")
+    wait(driver, lambda: value_beside(driver, 3) == "go = FALSE", message="p0's go at that scan")
+    assert value_beside(driver, 12) == "ok = FALSE" and value_beside(driver, 10) == "y = 11  x = 5"
+    assert severe_console_messages(driver) == []
+
+
+def test_a_breakpoint_in_an_st_blocks_body_pauses_the_ladder_and_steps_by_statement(driver, base_url, tmp_path):
+    place_picks(driver, base_url, tmp_path)
+    el(driver, "st-line-10").click()
+    wait(driver, lambda: "st-current-line" in classes(driver, "st-line-10"), message="stopped at line 10")
+    assert el(driver, "pause").get_attribute("aria-pressed") == "true", "the page paused"
+    status = el(driver, "st-status").text
+    assert "line 10" in status and "p0" in status, status
+    el(driver, "st-step").click()
+    wait(driver, lambda: "st-current-line" in classes(driver, "st-line-11"), message="on to the IF")
+    # go is off: the ELSE branch, then out of p0's call, through the
+    # ladder's own steps, into p1's call, which the pane then shows.
+    el(driver, "st-step").click()
+    wait(driver, lambda: "st-current-line" in classes(driver, "st-line-14"), message="the ELSE branch")
+    assert "st-current-line" not in classes(driver, "st-line-12")
+    el(driver, "st-step").click()
+    wait(driver, lambda: "p1" in el(driver, "st-status").text, message="p1's call")
+    assert "st-current-line" in classes(driver, "st-line-10")
+    assert el(driver, "st-instance").get_attribute("value") == "p1"
+    wait(driver, lambda: value_beside(driver, 10) == "y = 3  x = 1", message="p1's values shown")
+    # Resumed: on to the breakpoint in the next scan's first call.
+    el(driver, "pause").click()
+    wait(driver, lambda: "p0" in el(driver, "st-status").text, message="the next scan's p0")
+    assert "st-current-line" in classes(driver, "st-line-10")
+    assert severe_console_messages(driver) == []
+
+
+def why_on_coil(driver, n, powered):
+    """Why? on the `n`-th coil (its power `powered`, "1" or "0"): the
+    block's statements it names."""
+    coil = driver.find_elements(By.CSS_SELECTOR, '[data-testid="ladder"] [data-kind="coil"]')[n]
+    coil = el(driver, coil.get_attribute("data-testid"))
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", coil)
+    coil.click()
+    driver.switch_to.active_element.send_keys("w")
+    wait(driver, lambda: el(driver, "why-head").get_attribute("data-powered") == powered)
+    return wait(driver, lambda: driver.find_elements(
+        By.CSS_SELECTOR, '[data-testid="why-panel"] [data-testid="why-st"]'), message="the block's statement")
+
+
+def test_why_on_a_coil_fed_by_an_st_block_names_the_statement_that_ran(driver, base_url, tmp_path):
+    place_picks(driver, base_url, tmp_path)
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="p0 passes power")
+    found = why_on_coil(driver, 0, "1")
+    assert [(f.get_attribute("data-line"), f.get_attribute("data-ran")) for f in found] == [("12", "1")], \
+        [f.text for f in found]
+    assert "ok := TRUE;" in found[0].text and "ran in the last scan" in found[0].text, found[0].text
+    # p1 (y = 3) took the ELSE branch: its coil's Why? names that one.
+    assert not on(driver, "soft-lamp-QX0-1")
+    found = why_on_coil(driver, 1, "0")
+    assert [(f.get_attribute("data-line"), f.get_attribute("data-ran")) for f in found] == [("14", "1")], \
+        [f.text for f in found]
+    assert severe_console_messages(driver) == []
+
+
+def test_an_st_blocks_values_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts):
+    for screen in ["laptop", "phone"]:
+        drv = screen_driver(tmp_path / screen, screen)
+        try:
+            place_picks(drv, base_url, tmp_path, f"{screen}-pick.st")
+            el(drv, "st-line-10").click()
+            wait(drv, lambda: "p0" in el(drv, "st-status").text, message="stopped in p0's call")
+            el(drv, "st-editor")
+            drv.save_screenshot(str(artifacts / f"st-block-values-{screen}.png"))
+            # The instance shown and the call the scan stands in, under the editor.
+            drv.execute_script("arguments[0].scrollIntoView({block: 'nearest'})", el(drv, "st-instance"))
+            assert "p0" in el(drv, "st-status").text
+            drv.save_screenshot(str(artifacts / f"st-block-instance-{screen}.png"))
+            found = [v for v in violations(drv)
+                     if any("st-" in n or "io-strip" in n for n in v["nodes"])]
+            assert found == [], found
+        finally:
+            drv.quit()

@@ -37,6 +37,10 @@ pub struct St {
     /// Whether the statement ran in the scan explained.
     pub why_ran: &'static str,
     pub why_not_ran: &'static str,
+    /// The choice of the block instance whose values the lines show.
+    pub instance: &'static str,
+    /// The status's note of the call the scan stands in: `{instance}`.
+    pub in_call: &'static str,
 }
 
 /// In English.
@@ -60,6 +64,8 @@ pub const EN: St = St {
     why_none: "No statement of the program writes {name}.",
     why_ran: "ran in the last scan",
     why_not_ran: "did not run in the last scan",
+    instance: "Instance shown",
+    in_call: "in {instance}'s call",
 };
 
 /// 日本語.
@@ -83,4 +89,6 @@ pub const JA: St = St {
     why_none: "プログラムに {name} へ書き込む文はありません。",
     why_ran: "直前のスキャンで実行",
     why_not_ran: "直前のスキャンでは未実行",
+    instance: "表示するインスタンス",
+    in_call: "{instance} の呼び出し中",
 };

@@ -14,6 +14,7 @@ pub mod pou;
 pub mod program;
 pub mod scan;
 pub mod st;
+pub mod st_online;
 pub mod st_why;
 pub mod target;
 

@@ -531,7 +531,9 @@ mod shown;
 mod user;
 mod why;
 
-pub use user::{MAX_BLOCK_NESTING, MAX_BODY_STEPS, MAX_INSTANCES, MAX_INSTANCE_VARIABLES};
+pub use user::{
+    InstanceBody, MAX_BLOCK_NESTING, MAX_BODY_STEPS, MAX_INSTANCES, MAX_INSTANCE_VARIABLES,
+};
 pub use why::{CallWhy, TypeWhy};
 
 /// A section's declarations and IL lines (`blocks`: the types the

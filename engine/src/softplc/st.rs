@@ -9,7 +9,7 @@ use super::{LoadError, Program};
 use crate::iec::data::DataType;
 use crate::iec::st::ast::{Item, Pou, PouKind, VarKind};
 use crate::iec::st::print::type_text;
-use crate::iec::st::{check_source, lower_source, parse_source, StError, StErrorKind};
+use crate::iec::st::{check_source, lower_source, parse_source, Lowered, StError, StErrorKind};
 use crate::ladder::user_blocks::UserBlock;
 
 /// Why a Structured Text program does not load: where (1-based line and
@@ -56,8 +56,8 @@ fn from_st(e: StError) -> StLoadError {
 /// (what `hashigo run` loads for a `.st` file), checked to load: every
 /// refusal at its ST line and column.
 pub fn st_to_il(text: &str) -> Result<String, Vec<StLoadError>> {
-    let (_, il) = load(text)?;
-    Ok(il)
+    let (_, lowered) = load(text)?;
+    Ok(lowered.text)
 }
 
 /// A Structured Text program as the page runs it (issue #55): the IL it
@@ -74,11 +74,14 @@ pub struct StRun {
 
 /// [`st_to_il`] with each step's ST line ([`Program::source_line`]).
 pub fn st_run(text: &str) -> Result<StRun, Vec<StLoadError>> {
-    let (program, il) = load(text)?;
+    let (program, lowered) = load(text)?;
     let lines = (0..program.len())
         .map(|step| program.source_line(step).map(|(line, _)| line as usize))
         .collect();
-    Ok(StRun { il, lines })
+    Ok(StRun {
+        il: lowered.text,
+        lines,
+    })
 }
 
 impl Program {
@@ -98,7 +101,7 @@ impl Program {
     }
 }
 
-fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
+fn load(text: &str) -> Result<(Program, Lowered), Vec<StLoadError>> {
     let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
     check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
     let lowered =
@@ -127,7 +130,7 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
             }
         })
         .collect();
-    Ok((program, lowered.text))
+    Ok((program, lowered))
 }
 
 /// The function blocks of a Structured Text source as the ladder's boxes
@@ -139,6 +142,10 @@ pub struct StBlocks {
     pub blocks: Vec<UserBlock>,
     /// The `FUNCTION_BLOCK` sections of the IL the source lowers to.
     pub il: String,
+    /// `places[n]`: the 1-based ST line line `n + 1` of `il` comes from
+    /// (0 for none), to tell a ladder's steps in these blocks by their
+    /// ST lines ([`StBlocks::step_lines`]).
+    pub places: Vec<usize>,
     /// The source has a `PROGRAM` (else it is a library of blocks).
     pub program: bool,
 }
@@ -164,14 +171,20 @@ pub fn st_blocks(text: &str) -> Result<StBlocks, Vec<StLoadError>> {
     } else {
         format!("{text}{LIBRARY_PROGRAM}")
     };
-    let (_, il) = load(&whole)?;
+    let (_, lowered) = load(&whole)?;
     let blocks = pous()
         .filter(|p| p.kind == PouKind::FunctionBlock)
         .filter_map(box_of)
         .collect();
+    let (il, il_lines) = block_sections(&lowered.text);
+    let places = il_lines
+        .into_iter()
+        .map(|n| lowered.place(n).line as usize)
+        .collect();
     Ok(StBlocks {
         blocks,
-        il: block_sections(&il),
+        il,
+        places,
         program,
     })
 }
@@ -215,11 +228,13 @@ fn box_of(p: &Pou) -> Option<UserBlock> {
     })
 }
 
-/// The `FUNCTION_BLOCK … END_FUNCTION_BLOCK` sections of a lowered text.
-fn block_sections(il: &str) -> String {
+/// The `FUNCTION_BLOCK … END_FUNCTION_BLOCK` sections of a lowered text,
+/// with the 1-based line of the lowered text each of their lines was.
+fn block_sections(il: &str) -> (String, Vec<usize>) {
     let mut out = String::new();
+    let mut lines = Vec::new();
     let mut inside = false;
-    for line in il.lines() {
+    for (n, line) in il.lines().enumerate() {
         let word = line.split_whitespace().next().unwrap_or("");
         if word.eq_ignore_ascii_case("FUNCTION_BLOCK") {
             inside = true;
@@ -227,10 +242,11 @@ fn block_sections(il: &str) -> String {
         if inside {
             out.push_str(line);
             out.push('\n');
+            lines.push(n + 1);
         }
         if word.eq_ignore_ascii_case("END_FUNCTION_BLOCK") {
             inside = false;
         }
     }
-    out
+    (out, lines)
 }

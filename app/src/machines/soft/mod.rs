@@ -22,6 +22,7 @@ mod rows;
 pub mod st;
 mod st_complete;
 mod st_lex;
+mod st_online;
 mod st_pane;
 use rows::{Digits, GaugeRow, LampRow, ScanSetting, SliderRow, SwitchRow};
 use st_pane::SoftProgram;
@@ -287,9 +288,15 @@ impl SoftCtx {
         } else {
             let text = self.text.get_untracked();
             self.st.forget(self.sim);
-            self.sim
+            let loaded = self
+                .sim
                 .try_update_value(|s| s.machine_mut().load_text(&text))
-                .is_some_and(|r| r.is_ok())
+                .is_some_and(|r| r.is_ok());
+            if loaded {
+                // The ST blocks it calls, followed in the ST pane.
+                self.st.load_ladder(self.sim, &text);
+            }
+            loaded
         };
         if loaded {
             self.rebuild();

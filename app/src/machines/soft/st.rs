@@ -1,16 +1,18 @@
 //! Structured Text in the soft PLC's workspace (issue #55): the pane's
 //! language, the ST text (saved apart from the IL text, which follows the
-//! ladder), the program loaded from it with each step's ST line, and what
-//! the pane shows while it runs: the values beside the lines, the line
-//! the scan stands before, breakpoints and stepping by statement.
+//! ladder), the program loaded from it (or the ladder calling its
+//! blocks) with each step's ST line and call, and breakpoints. What the
+//! pane shows while it runs is `st_online`'s.
 
 use std::collections::BTreeSet;
 
 use engine::machines::SoftPlc;
-use engine::plc::{Device, Plc, Value};
+use engine::plc::{Device, Plc};
+use engine::softplc::st::StBlocks;
+use engine::softplc::st_online::StMap;
 use leptos::prelude::*;
 
-use crate::editor::panes::why::StCause;
+pub(super) use super::st_online::line_names;
 use crate::sim::Simulator;
 use crate::state::{put, Ctx};
 use crate::storage;
@@ -23,27 +25,41 @@ const SET_ASIDE_KEY: &str = "hashigo.soft-plc.st.set-aside.v1";
 /// save from before issue #55 reads as IL, as it was).
 const LANGUAGE_KEY: &str = "hashigo.soft-plc.language.v1";
 
-/// The most instructions "Step statement" runs looking for the next
-/// line (a loop on one line ends its search there).
-const MAX_STEPS: usize = 1_000_000;
+pub(super) type Sim = StoredValue<Simulator<SoftPlc>, LocalStorage>;
 
-type Sim = StoredValue<Simulator<SoftPlc>, LocalStorage>;
+/// A name a line uses, as shown (`count`), as the machine names it
+/// (`c0.count` in instance `c0`'s call), and its handle.
+pub(super) type Named = (String, String, Device);
 
-/// A line (1-based) and the names it uses, with their handles.
-type LineNames = (usize, Vec<(String, Device)>);
+/// A line (1-based), the instance whose values it shows (`None`: the
+/// program's own line), and the names it uses.
+pub(super) type LineNames = (usize, Option<usize>, Vec<Named>);
 
 /// The ST side of the soft PLC's workspace.
 #[derive(Clone, Copy)]
 pub struct StState {
-    page: Ctx,
+    pub(super) page: Ctx,
     /// The pane shows (and Load, Run load) the ST text.
     pub on: RwSignal<bool>,
     pub text: RwSignal<String>,
-    /// `lines[step]`: the ST line of each step of the program loaded
-    /// (empty while the program loaded is not ST).
-    lines: StoredValue<Vec<Option<usize>>>,
-    /// The names each line of the program loaded uses, with their handles.
-    devices: StoredValue<Vec<LineNames>>,
+    /// Each step of the program loaded with its ST line and the instance
+    /// whose call runs it (empty while no ST is loaded: an IL program, a
+    /// ladder calling no ST block).
+    pub(super) map: StoredValue<StMap>,
+    /// The text the map's lines are of (the ST program loaded, or the
+    /// blocks' text the ladder was compiled with).
+    pub(super) source: StoredValue<String>,
+    /// The names each line of the program loaded uses, with their
+    /// handles: a block's lines once per instance.
+    pub(super) devices: StoredValue<Vec<LineNames>>,
+    /// The text and blocks last declared to the ladder.
+    declared: StoredValue<Option<(String, StBlocks)>>,
+    /// The program's instances of the text's blocks: (name, block).
+    pub instances: RwSignal<Vec<(String, String)>>,
+    /// The instance chosen to show (empty: each block's first).
+    pub chosen: RwSignal<String>,
+    /// The instance whose call the scan stood in at the last look.
+    pub(super) standing: StoredValue<Option<usize>>,
     /// The values shown beside the lines: (line, `a = 1  b = TRUE`).
     pub values: RwSignal<Vec<(usize, String)>>,
     /// The lines shown (first, last; 1-based): only their values are read.
@@ -51,6 +67,8 @@ pub struct StState {
     pub breakpoints: RwSignal<BTreeSet<usize>>,
     /// The line the scan stands before, while a scan is stepped.
     pub current: RwSignal<Option<usize>>,
+    /// The instance whose call that line runs in, if any.
+    pub current_call: RwSignal<Option<String>>,
     /// A breakpoint stopped the scan (until it runs on).
     pub hit: RwSignal<bool>,
     /// The ladder, checked again when the text's blocks change.
@@ -65,12 +83,18 @@ impl StState {
             page,
             on: RwSignal::new(storage::saved_string(LANGUAGE_KEY).as_deref() == Some("st")),
             text: RwSignal::new(text),
-            lines: StoredValue::new(Vec::new()),
+            map: StoredValue::new(StMap::default()),
+            source: StoredValue::new(String::new()),
             devices: StoredValue::new(Vec::new()),
+            declared: StoredValue::new(None),
+            instances: RwSignal::new(Vec::new()),
+            chosen: RwSignal::new(String::new()),
+            standing: StoredValue::new(None),
             values: RwSignal::new(Vec::new()),
             visible: RwSignal::new((1, 60)),
             breakpoints: RwSignal::new(BTreeSet::new()),
             current: RwSignal::new(None),
+            current_call: RwSignal::new(None),
             hit: RwSignal::new(false),
             ladder: StoredValue::new(None),
         }
@@ -82,7 +106,7 @@ impl StState {
         self.ladder.set_value(Some(ladder));
         let text = self.text.get_untracked();
         if !text.trim().is_empty() {
-            self.declare_blocks(engine::softplc::st::st_blocks(&text).as_ref().ok());
+            self.declare_blocks(&text, engine::softplc::st::st_blocks(&text).as_ref().ok());
         }
     }
 
@@ -91,10 +115,12 @@ impl StState {
     /// box does not fail while its block is being typed); the ladder is
     /// checked again when they change (a box whose block is gone is an
     /// error at its cell).
-    pub fn declare_blocks(&self, blocks: Option<&engine::softplc::st::StBlocks>) {
+    pub fn declare_blocks(&self, text: &str, blocks: Option<&StBlocks>) {
         let Some(b) = blocks else {
             return;
         };
+        // Kept with its text: the ladder's program is mapped by them.
+        self.declared.set_value(Some((text.to_string(), b.clone())));
         let changed = engine::ladder::user_blocks::set(b.blocks.clone(), b.il.clone());
         if changed {
             if let Some(ladder) = self.ladder.get_value() {
@@ -132,7 +158,7 @@ impl StState {
         self.breakpoints.set(BTreeSet::new());
         self.install_stop(sim);
         // Its blocks are the ladder's boxes at once, pane shown or not.
-        self.declare_blocks(engine::softplc::st::st_blocks(text).as_ref().ok());
+        self.declare_blocks(text, engine::softplc::st::st_blocks(text).as_ref().ok());
     }
 
     /// The ST text as a project keeps it (issue #55); `None` while empty.
@@ -186,33 +212,58 @@ impl StState {
         if !loaded {
             return false;
         }
-        let devices = sim.with_value(|s| {
-            let plc = s.machine();
-            super::st_lex::names_by_line(&text)
-                .into_iter()
-                .map(|(line, names)| {
-                    let found = names
-                        .into_iter()
-                        .filter_map(|n| plc.device(&n).ok().map(|d| (n, d)))
-                        .collect::<Vec<_>>();
-                    (line, found)
-                })
-                .filter(|(_, found)| !found.is_empty())
-                .collect::<Vec<_>>()
+        let map = sim
+            .with_value(|s| StMap::new(s.machine().shown_machine().machine().program(), run.lines));
+        self.follow(sim, text, map, true);
+        true
+    }
+
+    /// A ladder's IL `text` was loaded: the steps of the ST blocks it
+    /// calls (the blocks last declared, when it ends with their IL) are
+    /// followed in the pane as an ST program's are.
+    pub fn load_ladder(&self, sim: Sim, text: &str) {
+        let Some((source, blocks)) = self.declared.get_value() else {
+            self.forget(sim);
+            return;
+        };
+        let map = sim.with_value(|s| {
+            let program = s.machine().shown_machine().machine().program();
+            StMap::for_ladder(program, text, &blocks)
         });
+        if map.lines.iter().all(Option::is_none) {
+            self.forget(sim);
+            return;
+        }
+        self.follow(sim, source, map, false);
+    }
+
+    /// Follows the program loaded by `map`, its lines those of `source`
+    /// (`program`: its own lines show values too, else only its blocks').
+    fn follow(&self, sim: Sim, source: String, map: StMap, program: bool) {
+        let devices = sim.with_value(|s| line_names(s.machine(), &source, &map, program));
+        let instances = map
+            .instances
+            .iter()
+            .map(|i| (i.name.clone(), i.block.clone()))
+            .collect::<Vec<_>>();
+        put(self.instances, instances);
         self.devices.set_value(devices);
-        self.lines.set_value(run.lines);
+        self.map.set_value(map);
+        self.source.set_value(source);
+        self.standing.set_value(None);
         self.hit.set(false);
         self.install_stop(sim);
-        true
     }
 
     /// An IL program was loaded: nothing of the ST one stays.
     pub fn forget(&self, sim: Sim) {
-        self.lines.set_value(Vec::new());
+        self.map.set_value(StMap::default());
+        self.source.set_value(String::new());
         self.devices.set_value(Vec::new());
+        put(self.instances, Vec::new());
         put(self.values, Vec::new());
         put(self.current, None);
+        put(self.current_call, None);
         sim.update_value(|s| s.set_stop(None));
     }
 
@@ -230,9 +281,7 @@ impl StState {
     /// line (none set: they run whole scans).
     fn install_stop(&self, sim: Sim) {
         let breakpoints = self.breakpoints.get_untracked();
-        let stops = self
-            .lines
-            .with_value(|lines| stop_steps(lines, &breakpoints));
+        let stops = self.map.with_value(|m| stop_steps(&m.lines, &breakpoints));
         let stop: Option<crate::sim::StopAt<SoftPlc>> = stops.contains(&true).then(|| {
             Box::new(move |m: &SoftPlc| {
                 m.machine()
@@ -242,153 +291,6 @@ impl StState {
         });
         sim.update_value(|s| s.set_stop(stop));
     }
-
-    /// The ST line of the step the shown machine stands before.
-    fn line_now(&self, sim: Sim) -> Option<usize> {
-        let position = sim.with_value(|s| s.machine().shown_machine().machine().scan_position());
-        position.and_then(|p| self.lines.with_value(|l| l.get(p).copied().flatten()))
-    }
-
-    /// After a frame, a step or a travel: a breakpoint met pauses the
-    /// page; the current line and the visible lines' values follow the
-    /// machine shown.
-    pub fn refresh(&self, sim: Sim) {
-        if sim.try_update_value(|s| s.take_stopped()).unwrap_or(false) {
-            self.page.paused.set(true);
-            self.hit.set(true);
-        }
-        put(self.current, self.line_now(sim));
-        let (first, last) = self.visible.get_untracked();
-        let values = sim.with_value(|s| {
-            let plc = s.machine();
-            self.devices.with_value(|devices| {
-                devices
-                    .iter()
-                    .filter(|(line, _)| (first..=last).contains(line))
-                    .map(|(line, found)| {
-                        let shown = found
-                            .iter()
-                            .map(|(name, d)| {
-                                // Mid-scan, the value now (a device reads the
-                                // last scan's image); a block's output by its
-                                // handle.
-                                let now = plc.shown_machine().machine().program().value(name);
-                                let v = now.map_or_else(|| plc.read(*d), |v| v.to_value());
-                                format!("{name} = {}", shown(&v))
-                            })
-                            .collect::<Vec<_>>()
-                            .join("  ");
-                        (*line, shown)
-                    })
-                    .collect::<Vec<_>>()
-            })
-        });
-        put(self.values, values);
-    }
-
-    /// "Step statement": runs the scan's steps until it stands before
-    /// another line's first step, or the scan ends. Outside a scan it
-    /// starts the next one and runs its first statement. The page pauses,
-    /// as for a step of the run control.
-    pub fn step_statement(&self, sim: Sim, ladder: crate::editor::LadderCtx) {
-        self.page.paused.set(true);
-        self.hit.set(false);
-        let start = self.line_now(sim).or_else(|| {
-            self.lines
-                .with_value(|l| l.iter().flatten().next().copied())
-        });
-        for _ in 0..MAX_STEPS {
-            let ran = sim
-                .try_update_value(|s| s.machine_mut().step_instruction())
-                .flatten();
-            if ran.is_none() {
-                break;
-            }
-            match self.line_now(sim) {
-                None => break,
-                Some(line) if Some(line) != start => break,
-                Some(_) => {}
-            }
-        }
-        // Shown on the ladder and the board as a step of the run control.
-        ladder.operate(|_| {});
-    }
-}
-
-impl StState {
-    /// Why? on a box of ST block `kind` (instance `instance`): the
-    /// block's statements that wrote the first BOOL output, which the
-    /// power leaves by (a block without one passes the power on: nothing
-    /// to follow), each with its operands' values in that instance.
-    pub fn why_box(&self, kind: &str, instance: &str, sim: Sim) -> Vec<StCause> {
-        let pin = engine::ladder::user_blocks::outputs(kind)
-            .into_iter()
-            .find(|(_, t)| *t == engine::iec::data::DataType::Bool);
-        let Some((pin, _)) = pin else {
-            return Vec::new();
-        };
-        let text = self.text.get_untracked();
-        let writes = engine::softplc::st_why::st_writes(&text, Some(kind), pin);
-        let at = |name: &str| format!("{instance}.{name}");
-        causes(writes, sim, at, |_| None)
-    }
-
-    /// Why? on variable `name` of the ST program loaded: the statements
-    /// that write it, each with its operands' values at the scan shown
-    /// and whether it ran then (the trace of its line's steps).
-    pub fn why_variable(&self, name: &str, sim: Sim) -> Vec<StCause> {
-        let text = self.text.get_untracked();
-        let writes = engine::softplc::st_why::st_writes(&text, None, name);
-        let ran = sim.with_value(|s| {
-            let trace = s.machine().trace().map(|t| t.ran.clone());
-            self.lines.with_value(|lines| {
-                let mut ran = BTreeSet::new();
-                for (step, line) in lines.iter().enumerate() {
-                    let went = trace.as_ref().and_then(|r| r.get(step).copied());
-                    if let (Some(line), Some(true)) = (line, went) {
-                        ran.insert(*line);
-                    }
-                }
-                trace.map(|_| ran)
-            })
-        });
-        causes(writes, sim, str::to_string, |line| {
-            ran.as_ref().map(|r| r.contains(&line))
-        })
-    }
-}
-
-/// The statements `writes` with each operand's value (the operand as
-/// `at` names it in the machine) and whether each ran (`ran`).
-fn causes(
-    writes: Vec<engine::softplc::st_why::StWrite>,
-    sim: Sim,
-    at: impl Fn(&str) -> String,
-    ran: impl Fn(usize) -> Option<bool>,
-) -> Vec<StCause> {
-    sim.with_value(|s| {
-        let plc = s.machine();
-        writes
-            .into_iter()
-            .map(|w| StCause {
-                line: w.line,
-                ran: ran(w.line),
-                statement: w.statement,
-                values: w
-                    .reads
-                    .iter()
-                    .filter_map(|r| {
-                        let name = at(r);
-                        let now = plc.shown_machine().machine().program().value(&name);
-                        let v = now
-                            .map(|v| v.to_value())
-                            .or_else(|| plc.device(&name).ok().map(|d| plc.read(d)))?;
-                        Some(format!("{r} = {}", shown(&v)))
-                    })
-                    .collect(),
-            })
-            .collect()
-    })
 }
 
 /// The steps a scan stops before: the first step of each breakpoint's
@@ -403,15 +305,6 @@ pub fn stop_steps(lines: &[Option<usize>], breakpoints: &BTreeSet<usize>) -> Vec
             first && l.is_some_and(|l| breakpoints.contains(&l))
         })
         .collect()
-}
-
-/// A value as ST writes it (a bit as TRUE/FALSE).
-fn shown(v: &Value) -> String {
-    match v {
-        Value::Bit(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
-        Value::Text(t) => format!("'{t}'"),
-        v => v.to_string(),
-    }
 }
 
 #[cfg(test)]

@@ -126,7 +126,9 @@ fn StEditor(soft: SoftCtx) -> impl IntoView {
     let report = Memo::new(move |_| engine::softplc::st::st_blocks(&checked.get()));
     let errors: Errors = Memo::new(move |_| report.with(st_errors));
     // Once it loads, its blocks are the ladder's boxes (issue #55).
-    Effect::new(move || report.with(|r| st.declare_blocks(r.as_ref().ok())));
+    Effect::new(move || {
+        report.with(|r| checked.with_untracked(|t| st.declare_blocks(t, r.as_ref().ok())));
+    });
     let count = Memo::new(move |_| st.text.with(|t| t.split('\n').count()));
     let completing = Completing::new();
     let scroller = NodeRef::<leptos::html::Div>::new();
@@ -284,9 +286,14 @@ fn Actions(soft: SoftCtx, errors: Errors) -> impl IntoView {
             <span class="st-status" data-testid="st-status" role="status">
                 {move || st.current.get().map(|n| {
                     let said = if st.hit.get() { s().stopped_at } else { s().paused_at };
-                    said.replace("{line}", &n.to_string())
+                    let said = said.replace("{line}", &n.to_string());
+                    match st.current_call.get() {
+                        Some(call) => format!("{said} · {}", s().in_call.replace("{instance}", &call)),
+                        None => said,
+                    }
                 })}
             </span>
+            {move || st.instances.with(|i| !i.is_empty()).then(|| view! { <InstanceChoice soft /> })}
         </div>
         <div class="errors" class:has-errors=move || errors.with(|e| !e.is_empty())
             data-testid="soft-program-error">
@@ -303,6 +310,45 @@ fn Actions(soft: SoftCtx, errors: Errors) -> impl IntoView {
         </div>
         <StWhy soft />
         <p class="hint st-hint">{move || s().hint}</p>
+    }
+}
+
+/// The block instance whose values its block's lines show (as CODESYS's
+/// online view asks which instance to monitor): the program's instances
+/// of the text's blocks, each block's first until one is chosen.
+#[component]
+fn InstanceChoice(soft: SoftCtx) -> impl IntoView {
+    let ctx = Ctx::get();
+    let s = move || ctx.lang.get().st();
+    let st = soft.st;
+    let chosen = move || {
+        let c = st.chosen.get();
+        st.instances.with(|all| {
+            let known = all.iter().any(|(n, _)| n.eq_ignore_ascii_case(&c));
+            let first = || all.first().map(|(n, _)| n.clone()).unwrap_or_default();
+            if known {
+                c
+            } else {
+                first()
+            }
+        })
+    };
+    let choose = move |e: web_sys::Event| {
+        st.chosen.set(event_target_value(&e));
+        st.show_values(soft.sim);
+    };
+    view! {
+        <label class="st-instance">
+            {move || s().instance} " "
+            <select data-testid="st-instance" prop:value=chosen on:change=choose>
+                <For each=move || st.instances.get() key=|i| i.clone() let:i>
+                    <option value=i.0.clone() selected={
+                        let name = i.0.clone();
+                        move || chosen().eq_ignore_ascii_case(&name)
+                    }>{format!("{} ({})", i.0, i.1)}</option>
+                </For>
+            </select>
+        </label>
     }
 }
 

@@ -63,12 +63,48 @@ fn block_of(v: &Variable) -> Option<&str> {
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct UserInstance {
     pub(in crate::softplc) ty: usize,
+    /// Its name as the front ends show it (`c0`, `c0.inner`).
+    name: String,
     scope: HashMap<String, Named>,
     pub(super) inputs: Vec<(String, usize)>,
     pub(super) outputs: Vec<(String, usize)>,
 }
 
+/// One instance of the program's own blocks and the steps of its body
+/// (each instance runs a copy of its own): a step in `steps` runs in
+/// that instance's call.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InstanceBody {
+    /// The instance as the front ends name it (`c0`, `c0.inner`).
+    pub name: String,
+    /// Its block's name as declared (`Scale`).
+    pub block: String,
+    /// Its body's steps, its return included.
+    pub steps: std::ops::Range<usize>,
+}
+
 impl Program {
+    /// Each instance of the program's own blocks with its body's steps,
+    /// in the order they were made (an instance's own instances just before
+    /// it): the
+    /// page tells by it which call a step runs in (issue #55).
+    pub fn instance_bodies(&self) -> Vec<InstanceBody> {
+        let ends = self.entries.iter().skip(1).copied();
+        let ends = ends.chain(std::iter::once(self.steps.len()));
+        self.instances
+            .iter()
+            .zip(self.entries.iter().zip(ends))
+            .map(|(u, (&start, end))| InstanceBody {
+                name: u.name.clone(),
+                block: self
+                    .user_types
+                    .get(u.ty)
+                    .map_or_else(String::new, |t| t.name.clone()),
+                steps: start..end,
+            })
+            .collect()
+    }
+
     /// The text line each step was read from, in step order (`None` for
     /// the steps the loader adds: the program's end before its blocks'
     /// bodies, each body's return). The page maps a step to its source
@@ -131,6 +167,7 @@ impl Program {
         }
         self.instances.push(UserInstance {
             ty,
+            name: shown.to_string(),
             scope,
             inputs,
             outputs,
