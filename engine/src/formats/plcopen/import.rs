@@ -61,7 +61,12 @@ pub(super) fn ladder_of(
     };
     let mut helpers = Vec::new();
     let mut temps = Vec::new();
-    // The project's own POUs a block may call: (name, language).
+    // The project's own POUs a block may call: (name, language). Its ST
+    // blocks that are boxes on the soft PLC are boxes here.
+    let boxes = match machine {
+        Some(crate::machines::IEC_MACHINE) => st_boxes(root, &pous),
+        _ => HashSet::new(),
+    };
     let own_blocks: HashMap<String, (String, String)> = pous
         .iter()
         .filter_map(|p| {
@@ -71,6 +76,7 @@ pub(super) fn ladder_of(
                 (name.to_string(), language(p).to_string()),
             ))
         })
+        .filter(|(name, _)| !boxes.contains(name))
         .collect();
     let mut ladder = Ladder {
         variables: super::boxes::variables::declared_for(machine, root, &chosen)?,
@@ -114,6 +120,25 @@ pub(super) fn ladder_of(
         unused_map_entries: names.unused_map_lines(),
         warnings,
     })
+}
+
+/// The project's Structured Text function blocks a soft PLC ladder
+/// calls as boxes (upper-case names), declared as the ladder's boxes
+/// ([`crate::ladder::user_blocks`]) as the ST pane declares them: the
+/// project's ST ([`super::st_source`]) must load, and a block's pins be
+/// of elementary types (`softplc::st::st_blocks`). None when it has no
+/// ST block (the boxes declared before are left as they are).
+fn st_boxes(root: &Node, pous: &[&Node]) -> HashSet<String> {
+    let st_block = |p: &&Node| p.attr("pouType") == Some("functionBlock") && language(p) == "ST";
+    if !pous.iter().any(st_block) {
+        return HashSet::new();
+    }
+    let Ok(blocks) = crate::softplc::st::st_blocks(&super::st_source(root)) else {
+        return HashSet::new();
+    };
+    let names = blocks.blocks.iter().map(|b| b.name.clone()).collect();
+    crate::ladder::user_blocks::set(blocks.blocks, blocks.il);
+    names
 }
 
 /// The rungs with the networks that feed soft PLC boxes' other inputs
