@@ -168,3 +168,31 @@ fn a_drawn_program_calling_the_projects_st_block_opens_with_its_box_and_the_bloc
         io.errors
     );
 }
+
+#[test]
+fn a_project_with_two_st_programs_opens_with_both_in_the_pane_and_they_run() {
+    // `OWN`'s ST program twice, under two names, both run by the task.
+    let only = st_only();
+    let start = only.find("<pou name=\"main\"").expect("the ST program");
+    let end = start + only[start..].find("</pou>").expect("its end") + "</pou>".len();
+    let again = only[start..end].replace("name=\"main\"", "name=\"again\"");
+    let text = format!("{}{again}{}", &only[..end], &only[end..]).replace(
+        "<pouInstance name=\"mainInst\" typeName=\"main\"/>",
+        "<pouInstance name=\"mainInst\" typeName=\"main\"/><pouInstance name=\"i2\" typeName=\"again\"/>",
+    );
+    let reply = import_on(MachineId::SoftPlc, &text, None);
+    assert!(reply.errors.is_empty(), "{:?}", reply.errors);
+    assert!(reply.ladder.expect("an empty ladder").rungs.is_empty());
+    let st = reply.st.expect("the ST text");
+    assert!(
+        st.contains("PROGRAM main") && st.contains("PROGRAM again"),
+        "{st}"
+    );
+    let run = engine::softplc::st::st_run(&st).unwrap_or_else(|e| panic!("{e:?}\n{st}"));
+    let line = st
+        .rfind("count := c0.OUT;")
+        .map(|at| st[..at].lines().count() + 1);
+    let line = line.expect("the second program's line");
+    assert!(run.lines.contains(&Some(line)), "{:?}", run.lines);
+    assert_eq!(run.il_name(line, "count"), "again_count");
+}

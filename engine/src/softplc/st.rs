@@ -9,7 +9,8 @@ use super::{LoadError, Program};
 use crate::iec::data::DataType;
 use crate::iec::st::ast::{Item, Pou, PouKind, VarKind};
 use crate::iec::st::print::type_text;
-use crate::iec::st::{check_source, lower_source, parse_source, StError, StErrorKind};
+use crate::iec::st::rename::Renamed;
+use crate::iec::st::{check_source, lower_source, parse_source, Lowered, StError, StErrorKind};
 use crate::ladder::user_blocks::UserBlock;
 
 /// Why a Structured Text program does not load: where (1-based line and
@@ -70,15 +71,33 @@ pub struct StRun {
     /// `lines[step]`: the 1-based ST line the step comes from (`None`
     /// for the steps the loader adds).
     pub lines: Vec<Option<usize>>,
+    /// The variables of a second and later `PROGRAM` the IL knows by
+    /// another name (a name an earlier program has too).
+    pub renamed: Vec<Renamed>,
+}
+
+impl StRun {
+    /// The IL's name of variable `name` as ST line `line` writes it:
+    /// its program's own when renamed, else `name`.
+    pub fn il_name(&self, line: usize, name: &str) -> String {
+        self.renamed
+            .iter()
+            .find(|r| (r.first..=r.last).contains(&line) && r.name.eq_ignore_ascii_case(name))
+            .map_or_else(|| name.to_string(), |r| r.il_name.clone())
+    }
 }
 
 /// [`st_to_il`] with each step's ST line ([`Program::source_line`]).
 pub fn st_run(text: &str) -> Result<StRun, Vec<StLoadError>> {
-    let (program, il) = load(text)?;
+    let (program, lowered) = load_lowered(text)?;
     let lines = (0..program.len())
         .map(|step| program.source_line(step).map(|(line, _)| line as usize))
         .collect();
-    Ok(StRun { il, lines })
+    Ok(StRun {
+        il: lowered.text,
+        lines,
+        renamed: lowered.renamed,
+    })
 }
 
 impl Program {
@@ -99,6 +118,10 @@ impl Program {
 }
 
 fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
+    load_lowered(text).map(|(p, lowered)| (p, lowered.text))
+}
+
+fn load_lowered(text: &str) -> Result<(Program, Lowered), Vec<StLoadError>> {
     let source = parse_source(text).map_err(|e| vec![from_st(e)])?;
     check_source(&source).map_err(|es| es.into_iter().map(from_st).collect::<Vec<_>>())?;
     let lowered =
@@ -127,7 +150,7 @@ fn load(text: &str) -> Result<(Program, String), Vec<StLoadError>> {
             }
         })
         .collect();
-    Ok((program, lowered.text))
+    Ok((program, lowered))
 }
 
 /// The function blocks of a Structured Text source as the ladder's boxes

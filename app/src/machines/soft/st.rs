@@ -30,7 +30,9 @@ const MAX_STEPS: usize = 1_000_000;
 type Sim = StoredValue<Simulator<SoftPlc>, LocalStorage>;
 
 /// A line (1-based) and the names it uses, with their handles.
-type LineNames = (usize, Vec<(String, Device)>);
+/// A line's variables: each as written, as the IL knows it (a second
+/// program's own may be renamed, `StRun::il_name`), and its device.
+type LineNames = (usize, Vec<(String, String, Device)>);
 
 /// The ST side of the soft PLC's workspace.
 #[derive(Clone, Copy)]
@@ -193,7 +195,10 @@ impl StState {
                 .map(|(line, names)| {
                     let found = names
                         .into_iter()
-                        .filter_map(|n| plc.device(&n).ok().map(|d| (n, d)))
+                        .filter_map(|n| {
+                            let il = run.il_name(line, &n);
+                            plc.device(&il).ok().map(|d| (n, il, d))
+                        })
                         .collect::<Vec<_>>();
                     (line, found)
                 })
@@ -268,11 +273,11 @@ impl StState {
                     .map(|(line, found)| {
                         let shown = found
                             .iter()
-                            .map(|(name, d)| {
+                            .map(|(name, il, d)| {
                                 // Mid-scan, the value now (a device reads the
                                 // last scan's image); a block's output by its
                                 // handle.
-                                let now = plc.shown_machine().machine().program().value(name);
+                                let now = plc.shown_machine().machine().program().value(il);
                                 let v = now.map_or_else(|| plc.read(*d), |v| v.to_value());
                                 format!("{name} = {}", shown(&v))
                             })
