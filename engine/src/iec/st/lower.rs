@@ -236,28 +236,8 @@ impl Lower {
         self.emit(format!("END_{keyword}"), p.span);
     }
 
-    /// Several programs as one IL program, one after the other, each
-    /// with its own declarations (renamed apart by `super::rename`); a
-    /// `RETURN` ends its own program, not the scan. The globals are
-    /// declared with the first.
-    fn programs(&mut self, programs: &[Pou]) {
-        let first = &programs[0];
-        self.emit(format!("PROGRAM {}", first.name.name), first.span);
-        let last = programs.len() - 1;
-        for (i, p) in programs.iter().enumerate() {
-            let end = (i < last).then(|| self.label());
-            self.ret = end.clone();
-            self.pou_inside(p);
-            self.ret = None;
-            if let Some(end) = end {
-                self.place(&end, p.span);
-            }
-        }
-        self.emit("END_PROGRAM", first.span);
-    }
-
     /// A POU's declarations and body, without its header and end.
-    fn pou_inside(&mut self, p: &Pou) {
+    pub(super) fn pou_inside(&mut self, p: &Pou) {
         self.flat.clear();
         self.flat_bases.clear();
         self.shown.clear();
