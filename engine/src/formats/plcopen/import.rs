@@ -126,18 +126,18 @@ pub(super) fn ladder_of(
 /// calls as boxes (upper-case names), declared as the ladder's boxes
 /// ([`crate::ladder::user_blocks`]) as the ST pane declares them: the
 /// project's ST ([`super::st_source`]) must load, and a block's pins be
-/// of elementary types (`softplc::st::st_blocks`). None when it has no
-/// ST block (the boxes declared before are left as they are).
+/// of elementary types (`softplc::st::st_blocks`). With none, none is
+/// declared: a box of an earlier file's block is no box of this one.
 fn st_boxes(root: &Node, pous: &[&Node]) -> HashSet<String> {
     let st_block = |p: &&Node| p.attr("pouType") == Some("functionBlock") && language(p) == "ST";
-    if !pous.iter().any(st_block) {
-        return HashSet::new();
-    }
-    let Ok(blocks) = crate::softplc::st::st_blocks(&super::st_source(root)) else {
-        return HashSet::new();
-    };
-    let names = blocks.blocks.iter().map(|b| b.name.clone()).collect();
-    crate::ladder::user_blocks::set(blocks.blocks, blocks.il);
+    let loaded = pous
+        .iter()
+        .any(st_block)
+        .then(|| crate::softplc::st::st_blocks(&super::st_source(root)).ok())
+        .flatten();
+    let (blocks, il) = loaded.map_or_else(Default::default, |b| (b.blocks, b.il));
+    let names = blocks.iter().map(|b| b.name.clone()).collect();
+    crate::ladder::user_blocks::set(blocks, il);
     names
 }
 
