@@ -87,10 +87,14 @@ fn a_drawn_program_calling_an_st_block_opens_with_a_box_of_its_type_and_runs() {
     assert_eq!(boxes[0].instance, "d1");
     assert!(
         user_blocks::is_user_block("Doubler"),
-        "declared as the pane does"
+        "declared by its pins"
     );
-    // As if drawn from the palette: it compiles with the block's IL and
-    // runs, the ladder's scan calling the ST block.
+    // The page's ST pane then declares the project's ST with its IL; as
+    // if drawn from the palette, the ladder compiles with the block's IL
+    // and runs, the ladder's scan calling the ST block.
+    let pane = engine::softplc::st::st_blocks(&document.st_text()).expect("the ST loads");
+    assert!(!pane.program, "a library: the ladder runs");
+    user_blocks::set(pane.blocks, pane.il);
     let text = compile(&imported.ladder, MachineId::SoftPlc, Options::default())
         .unwrap_or_else(|e| panic!("{e:?}"));
     let mut plc = new_plc(MachineId::SoftPlc);
@@ -142,9 +146,37 @@ fn a_project_block_that_cannot_be_a_box_is_still_refused_at_the_block() {
     // In IL: no box.
     let il = refusal(&ld_calling_st(IL_BODY));
     assert_eq!(il, ImportError::ProjectBlock("Doubler".into(), "IL".into()));
-    // In ST that does not load: no box either, said with its language.
-    let broken = ST_BODY.replace("y := x * 2;", "y := x * ;");
-    let st = refusal(&ld_calling_st(&broken));
+    // In ST with an in-out pin: no box (a pin holds one value).
+    let in_out = ld_calling_st(ST_BODY).replace(
+        "</inputVars>",
+        "</inputVars><inOutVars><variable name=\"k\"><type><INT/></type></variable></inOutVars>",
+    );
+    let st = refusal(&in_out);
     assert_eq!(st, ImportError::ProjectBlock("Doubler".into(), "ST".into()));
     assert!(!user_blocks::is_user_block("Doubler"));
+}
+
+#[test]
+fn a_box_whose_st_does_not_load_opens_and_the_pane_says_why() {
+    // The import reads the block's pins, not its ST: the box is drawn;
+    // the ST pane shows the ST's error at its line, and until the ST
+    // loads the box is an unknown kind at its cell (the page's rule).
+    let broken = ST_BODY.replace("y := x * 2;", "y := x * ;");
+    let document = Document::read(&ld_calling_st(&broken)).expect("reads");
+    let imported = document
+        .import(Some(MachineId::SoftPlc), None, None)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(imported.ladder.rungs.len(), 1);
+    let st = document.st_text();
+    let errors = engine::softplc::st::st_blocks(&st).expect_err("refused");
+    let line = st
+        .lines()
+        .position(|l| l.contains("y := x * ;"))
+        .expect("the line")
+        + 1;
+    assert_eq!(errors[0].line, line, "{errors:?}");
+    user_blocks::set(Vec::new(), String::new());
+    let refused = compile(&imported.ladder, MachineId::SoftPlc, Options::default());
+    let e = refused.expect_err("no block declared");
+    assert!(format!("{e:?}").contains("DOUBLER"), "{e:?}");
 }
