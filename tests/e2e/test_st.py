@@ -575,3 +575,86 @@ def test_an_st_blocks_values_on_a_laptop_and_a_phone(tmp_path, base_url, artifac
             assert found == [], found
         finally:
             drv.quit()
+
+
+def plcopen_ld_calling_st():
+    """A project written here: `Doubler` in ST (y := x * 2 while go) and
+    an LD program whose contact %IX0.0 powers `d1: Doubler(x := 21)`,
+    its `done` the lamp %QX0.0."""
+    st = ('<ST><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml"><![CDATA[done := go;\n'
+          'IF go THEN\n  y := x * 2;\nEND_IF;]]></xhtml:p></ST>')
+    return f"""<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>
+<pou name="Doubler" pouType="functionBlock"><interface>
+<inputVars><variable name="go"><type><BOOL/></type></variable><variable name="x"><type><INT/></type></variable></inputVars>
+<outputVars><variable name="done"><type><BOOL/></type></variable><variable name="y"><type><INT/></type></variable></outputVars>
+</interface><body>{st}</body></pou>
+<pou name="main" pouType="program"><interface><localVars>
+<variable name="start" address="%IX0.0"><type><BOOL/></type></variable>
+<variable name="lamp" address="%QX0.0"><type><BOOL/></type></variable>
+<variable name="d1"><type><derived name="Doubler"/></type></variable>
+</localVars></interface><body><LD>
+<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut/></leftPowerRail>
+<contact localId="2"><position x="20" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>start</variable></contact>
+<inVariable localId="3"><position x="20" y="40"/><connectionPointOut/><expression>21</expression></inVariable>
+<block localId="4" typeName="Doubler" instanceName="d1"><position x="60" y="0"/>
+<inputVariables><variable formalParameter="go"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable><variable formalParameter="x"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable></inputVariables>
+<inOutVariables/><outputVariables><variable formalParameter="done"><connectionPointOut/></variable><variable formalParameter="y"><connectionPointOut/></variable></outputVariables></block>
+<coil localId="5"><position x="120" y="0"/><connectionPointIn><connection refLocalId="4" formalParameter="done"/></connectionPointIn><connectionPointOut/><variable>lamp</variable></coil>
+<rightPowerRail localId="6"><position x="200" y="0"/><connectionPointIn><connection refLocalId="5"/></connectionPointIn></rightPowerRail>
+</LD></body></pou>
+</pous></types><instances><configurations><configuration name="c"><resource name="r">
+<task name="t" priority="0" interval="T#10ms"><pouInstance name="m" typeName="main"/></task>
+</resource></configuration></configurations></instances></project>"""
+
+
+def test_a_plcopen_ld_program_calling_its_st_block_runs_with_the_value_on_the_box(driver, base_url, tmp_path, artifacts):
+    choose_soft(driver, base_url)
+    path = tmp_path / "doubler.xml"
+    path.write_text(plcopen_ld_calling_st())
+    el(driver, "open-file").send_keys(str(path))
+    close_menu(driver)
+    area = wait(driver, lambda: el(driver, "soft-st-text"))
+    wait(driver, lambda: "FUNCTION_BLOCK Doubler" in area.get_attribute("value"), message="the block in the pane")
+    assert not driver.find_elements(By.CSS_SELECTOR, '[data-testid="import-dialog"]')
+    box = wait(driver, lambda: next((c for c in driver.find_elements(By.CSS_SELECTOR, '[data-kind="box"]')
+                                     if "DOUBLER" in c.text), None), message="the block drawn as a box")
+    cell = box.get_attribute("data-testid")
+    wait(driver, lambda: el(driver, "problems").text.strip() == "No problems.",
+         message=el(driver, "problems", reveal=False).text)
+    el(driver, "run").click()
+    assert not on(driver, "soft-lamp-QX0-0"), "no power into go"
+    el(driver, "soft-input-IX0-0").click()
+    wait(driver, lambda: "y=42" in box_values(driver, cell), message="x * 2 on the box")
+    wait(driver, lambda: on(driver, "soft-lamp-QX0-0"), message="done follows go: the lamp")
+    driver.save_screenshot(str(artifacts / "st-plcopen-box.png"))
+    assert severe_console_messages(driver) == []
+
+
+def two_st_programs():
+    """`plcopen_st_only` with a second ST program, `tens`, run first by
+    the task, its `count` its own: it adds 10 a scan."""
+    tens = ('<pou name="tens" pouType="program"><interface><localVars>'
+            '<variable name="count"><type><INT/></type></variable></localVars></interface>'
+            '<body><ST><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml"><![CDATA[count := count + 10;]]>'
+            '</xhtml:p></ST></body></pou>')
+    text = plcopen_st_only().replace("</pous>", tens + "</pous>")
+    return text.replace('<pouInstance name="mainInst" typeName="main"/>',
+                        '<pouInstance name="t" typeName="tens"/><pouInstance name="mainInst" typeName="main"/>')
+
+
+def test_two_st_programs_run_each_with_its_own_values_beside_its_lines(driver, base_url, tmp_path):
+    area = open_plcopen_st(driver, base_url, tmp_path, two_st_programs(), "two.xml")
+    text = area.get_attribute("value")
+    assert text.index("PROGRAM tens") < text.index("PROGRAM main"), "in the task's order"
+    el(driver, "run").click()
+    mains = line_holding(area, "count := c0.OUT;")
+    tens = line_holding(area, "count := count + 10;")
+    wait(driver, lambda: count_beside(driver, mains) >= 3, message="main counting")
+    el(driver, "pause").click()
+    # Paused: each line shows its own program's count.
+    time.sleep(0.3)
+    ten, main = count_beside(driver, tens), count_beside(driver, mains)
+    assert ten > 0 and ten % 10 == 0, ten
+    assert main != ten, (main, ten)
+    assert severe_console_messages(driver) == []

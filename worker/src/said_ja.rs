@@ -73,7 +73,7 @@ pub fn import_ja(e: &ImportError) -> Option<String> {
             types.1, types.0
         ),
         E::ProjectBlock(name, language) => format!(
-            "ブロック {name} はプロジェクト自身の {language} ファンクションブロックを呼んでいます: Hashigo のラダーはファンクションブロックを呼びません (LD か FBD ならプログラムで {name} を選んでください)"
+            "ブロック {name} はプロジェクト自身の {language} ファンクションブロックを呼んでいます: ラダーのボックスになるのはプロジェクトの ST のファンクションブロック (ピンが基本型で、入出力ピンのないもの) です (LD か FBD ならプログラムで {name} を選んでください)"
         ),
         E::PinNotConnected(..)
         | E::PinNotLiteral(..)

@@ -150,10 +150,6 @@ const PHRASES: &[(&str, &str)] = &[
     ("WSTRING (wide strings)", "WSTRING (ワイド文字列)"),
     ("a pragma `{…}`", "プラグマ `{…}`"),
     // What does not run on the soft PLC yet.
-    (
-        "a second PROGRAM in one file",
-        "1 つのファイルの 2 つ目の PROGRAM",
-    ),
     ("a file without a PROGRAM", "PROGRAM のないファイル"),
     (
         "an assignment to a member or element",

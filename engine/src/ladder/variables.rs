@@ -10,8 +10,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::iec::data::DataType;
 use crate::iec::is_identifier;
-use crate::iec::pins::is_block_type;
 use crate::iec::{parse_literal, Address, AddressError, LiteralError};
+use crate::ladder::user_blocks::is_block_type;
 
 /// One declared variable.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]

@@ -9,6 +9,7 @@ use super::{LoadError, Program};
 use crate::iec::data::DataType;
 use crate::iec::st::ast::{Item, Pou, PouKind, VarKind};
 use crate::iec::st::print::type_text;
+use crate::iec::st::rename::Renamed;
 use crate::iec::st::{check_source, lower_source, parse_source, Lowered, StError, StErrorKind};
 use crate::ladder::user_blocks::UserBlock;
 
@@ -70,6 +71,20 @@ pub struct StRun {
     /// `lines[step]`: the 1-based ST line the step comes from (`None`
     /// for the steps the loader adds).
     pub lines: Vec<Option<usize>>,
+    /// The variables of a second and later `PROGRAM` the IL knows by
+    /// another name (a name an earlier program has too).
+    pub renamed: Vec<Renamed>,
+}
+
+impl StRun {
+    /// The IL's name of variable `name` as ST line `line` writes it:
+    /// its program's own when renamed, else `name`.
+    pub fn il_name(&self, line: usize, name: &str) -> String {
+        self.renamed
+            .iter()
+            .find(|r| (r.first..=r.last).contains(&line) && r.name.eq_ignore_ascii_case(name))
+            .map_or_else(|| name.to_string(), |r| r.il_name.clone())
+    }
 }
 
 /// [`st_to_il`] with each step's ST line ([`Program::source_line`]).
@@ -81,6 +96,7 @@ pub fn st_run(text: &str) -> Result<StRun, Vec<StLoadError>> {
     Ok(StRun {
         il: lowered.text,
         lines,
+        renamed: lowered.renamed,
     })
 }
 

@@ -12,6 +12,7 @@ mod gates;
 mod model;
 mod networks;
 mod plcopen;
+mod plcopen_st_boxes;
 mod robustness;
 mod seed;
 mod share;

@@ -210,3 +210,33 @@ fn two_st_programs_with_the_same_names_keep_their_own() {
     assert_eq!(get(plc.as_ref(), "n"), k);
     assert_eq!(get(plc.as_ref(), "two_n"), 10 * k);
 }
+
+#[test]
+fn two_st_programs_in_the_st_pane_run_in_their_tasks_order_each_with_its_own() {
+    // The file has `one` first; the task runs `two` first.
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>
+{}
+{}
+</pous></types><instances><configurations><configuration name="c"><resource name="r">
+<task name="t" priority="0" interval="T#10ms"><pouInstance name="i2" typeName="two"/><pouInstance name="i1" typeName="one"/></task>
+</resource></configuration></configurations></instances></project>"#,
+        counting_program("one", "INT", 1),
+        counting_program("two", "DINT", 10)
+    );
+    let st = Document::read(&xml).expect("reads").st_text();
+    let at = |what: &str| st.find(what).expect(what);
+    assert!(at("PROGRAM two") < at("PROGRAM one"), "{st}");
+    // The pane's text runs both: `two` first keeps its names, `one`'s
+    // are its own (`one_n`), as on the command line.
+    let mut program = engine::softplc::Program::load_st(&st).unwrap_or_else(|e| panic!("{e:?}"));
+    for scan in 0..5 {
+        program.scan(scan * 10_000_000);
+    }
+    let value = |name: &str| program.value(name).map(|d| d.to_value().as_i64());
+    assert_eq!((value("n"), value("one_n")), (Some(50), Some(5)), "{st}");
+    let run = engine::softplc::st::st_run(&st).expect("runs");
+    let one = st[..at("PROGRAM one")].lines().count() + 1;
+    assert_eq!(run.il_name(one + 8, "n"), "one_n", "{st}");
+}

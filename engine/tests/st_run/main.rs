@@ -19,6 +19,7 @@ mod lines;
 mod lreal;
 mod numeric;
 mod places;
+mod programs;
 mod property;
 mod refusals;
 mod small_types;

@@ -78,17 +78,19 @@ pub fn attempt(
             // Shown first, so the user sees what was proposed.
             Some(_) if first && !clean => shown.set(Some(pending)),
             Some(ladder) => {
+                // Its ST POUs in the soft PLC's ST pane (issue #55), first:
+                // its blocks are then declared when the ladder's boxes of
+                // their types are checked.
+                if let Some(text) = &reply.st {
+                    ctx.apply_source(Some(engine::formats::project::ProgramText::st(text)));
+                    ctx.page.docks.show(crate::docks::Tool::Program);
+                }
                 if ctx.ladder() != ladder {
                     ctx.apply(Edit::Replace { ladder });
                 }
                 // Another program: nothing said of the last one stays.
                 ctx.clean_slate();
                 ctx.titled(&pending.file, &pending.file);
-                // Its ST POUs in the soft PLC's ST pane (issue #55).
-                if let Some(text) = reply.st {
-                    ctx.apply_source(Some(engine::formats::project::ProgramText::st(&text)));
-                    ctx.page.docks.show(crate::docks::Tool::Program);
-                }
                 shown.set(None);
                 closed(&pending.warnings);
             }

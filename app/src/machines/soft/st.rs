@@ -9,6 +9,7 @@ use std::collections::BTreeSet;
 use engine::machines::SoftPlc;
 use engine::plc::{Device, Plc};
 use engine::softplc::st::StBlocks;
+use engine::softplc::st::StRun;
 use engine::softplc::st_online::StMap;
 use leptos::prelude::*;
 
@@ -195,7 +196,7 @@ impl StState {
     /// does not load (its errors are the pane's).
     pub fn load(&self, sim: Sim) -> bool {
         let text = self.text.get_untracked();
-        let Ok(run) = engine::softplc::st::st_run(&text) else {
+        let Ok(mut run) = engine::softplc::st::st_run(&text) else {
             return false;
         };
         // Traced, as Run traces a ladder: Why? tells which statement ran.
@@ -212,9 +213,10 @@ impl StState {
         if !loaded {
             return false;
         }
-        let map = sim
-            .with_value(|s| StMap::new(s.machine().shown_machine().machine().program(), run.lines));
-        self.follow(sim, text, map, true);
+        let lines = std::mem::take(&mut run.lines);
+        let map =
+            sim.with_value(|s| StMap::new(s.machine().shown_machine().machine().program(), lines));
+        self.follow(sim, text, map, Some(&run));
         true
     }
 
@@ -234,12 +236,14 @@ impl StState {
             self.forget(sim);
             return;
         }
-        self.follow(sim, source, map, false);
+        self.follow(sim, source, map, None);
     }
 
     /// Follows the program loaded by `map`, its lines those of `source`
     /// (`program`: its own lines show values too, else only its blocks').
-    fn follow(&self, sim: Sim, source: String, map: StMap, program: bool) {
+    /// `program`: the ST program loaded (its own lines show values too),
+    /// `None` for a ladder calling the text's blocks.
+    fn follow(&self, sim: Sim, source: String, map: StMap, program: Option<&StRun>) {
         let devices = sim.with_value(|s| line_names(s.machine(), &source, &map, program));
         let instances = map
             .instances

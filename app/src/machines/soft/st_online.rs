@@ -10,6 +10,7 @@ use std::collections::BTreeSet;
 use engine::machines::SoftPlc;
 use engine::plc::{Plc, Value};
 use engine::record::Recorded;
+use engine::softplc::st::StRun;
 use engine::softplc::st_online::{block_lines, StMap};
 use engine::softplc::st_why::{st_writes, StWrite};
 use leptos::prelude::*;
@@ -24,12 +25,14 @@ const MAX_STEPS: usize = 1_000_000;
 
 /// The names each line of `source` uses that the machine knows: a line
 /// of a block once per instance of it (`count` as `c0.count`), a line of
-/// the program's own (only when `program`: a ladder has none) as named.
+/// the programs' own (only with `program`, the ST loaded: a ladder has
+/// none) as the IL names it (a later program's own may be renamed,
+/// `StRun::il_name`).
 pub fn line_names(
     plc: &Recorded<SoftPlc>,
     source: &str,
     map: &StMap,
-    program: bool,
+    program: Option<&StRun>,
 ) -> Vec<LineNames> {
     let blocks = block_lines(source);
     let mut out = Vec::new();
@@ -46,8 +49,14 @@ pub fn line_names(
                     }
                 }
             }
-            None if program => {
-                let found = resolve(plc, &names, "");
+            None if program.is_some() => {
+                let found: Vec<Named> = names
+                    .iter()
+                    .filter_map(|n| {
+                        let il = program.map_or_else(|| n.clone(), |run| run.il_name(line, n));
+                        plc.device(&il).ok().map(|d| (n.clone(), il, d))
+                    })
+                    .collect();
                 if !found.is_empty() {
                     out.push((line, None, found));
                 }

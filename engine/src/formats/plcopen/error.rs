@@ -292,7 +292,7 @@ impl fmt::Display for ImportError {
             ),
             E::ProjectBlock(name, language) => write!(
                 f,
-                "block {name} calls the project's own {language} function block: Hashigo's ladders do not call function blocks (import it alone with --pou {name} if it is LD or FBD)"
+                "block {name} calls the project's own {language} function block: a ladder's box is one of the project's Structured Text blocks (its pins of elementary types, none in-out) (import it alone with --pou {name} if it is LD or FBD)"
             ),
             E::PinNotConnected(what, pin) => {
                 write!(f, "{what}: its {pin} input is not connected")
@@ -351,7 +351,7 @@ impl ImportError {
                 "the programs the tasks run ({run}) have no LD or FBD body: Hashigo imports ladder (LD) and function block diagram (FBD) bodies; these POUs have one: {ld} (choose one under Program)"
             ),
             ImportError::ProjectBlock(name, language) => format!(
-                "block {name} calls the project's own {language} function block: Hashigo's ladders do not call function blocks (choose {name} under Program if it is LD or FBD)"
+                "block {name} calls the project's own {language} function block: a ladder's box is one of the project's Structured Text blocks (its pins of elementary types, none in-out) (choose {name} under Program if it is LD or FBD)"
             ),
             other => other.to_string(),
         }

@@ -13,9 +13,11 @@ use super::lower::body::Body;
 use super::{NS_V10, NS_V200, NS_V201};
 use crate::error::Located;
 use crate::formats::plcopen::warning::ImportWarning;
+use crate::iec::data::DataType;
 use crate::ladder::element::Element;
 use crate::ladder::grid::Ladder;
 use crate::ladder::net::{attach_sides, try_layout, RungLogic};
+use crate::ladder::user_blocks::UserBlock;
 use crate::limits::MAX_RUNGS;
 use crate::MachineId;
 
@@ -61,7 +63,12 @@ pub(super) fn ladder_of(
     };
     let mut helpers = Vec::new();
     let mut temps = Vec::new();
-    // The project's own POUs a block may call: (name, language).
+    // The project's own POUs a block may call: (name, language). Its ST
+    // blocks that are boxes on the soft PLC are boxes here.
+    let boxes = match machine {
+        Some(crate::machines::IEC_MACHINE) => st_boxes(&pous),
+        _ => HashSet::new(),
+    };
     let own_blocks: HashMap<String, (String, String)> = pous
         .iter()
         .filter_map(|p| {
@@ -71,6 +78,7 @@ pub(super) fn ladder_of(
                 (name.to_string(), language(p).to_string()),
             ))
         })
+        .filter(|(name, _)| !boxes.contains(name))
         .collect();
     let mut ladder = Ladder {
         variables: super::boxes::variables::declared_for(machine, root, &chosen)?,
@@ -113,6 +121,54 @@ pub(super) fn ladder_of(
         ladder,
         unused_map_entries: names.unused_map_lines(),
         warnings,
+    })
+}
+
+/// The project's Structured Text function blocks a soft PLC ladder
+/// calls as boxes (upper-case names), declared as the ladder's boxes
+/// ([`crate::ladder::user_blocks`]) by their interfaces alone: pins of
+/// elementary types, no `VAR_IN_OUT`, no name of the soft PLC's own
+/// boxes (as `softplc::st::st_blocks` offers them). Their IL is the ST
+/// pane's to declare (the page applies the project's ST before its
+/// ladder): the import does not lower ST, so the files worker does not
+/// carry the ST compiler. With none, none is declared: a box of an
+/// earlier file's block is no box of this one.
+fn st_boxes(pous: &[&Node]) -> HashSet<String> {
+    let blocks: Vec<UserBlock> = pous
+        .iter()
+        .filter(|p| p.attr("pouType") == Some("functionBlock") && language(p) == "ST")
+        .filter_map(|p| box_of(p))
+        .collect();
+    let names = blocks.iter().map(|b| b.name.clone()).collect();
+    crate::ladder::user_blocks::set(blocks, String::new());
+    names
+}
+
+/// ST block `p` as a box, from its interface; `None` when it cannot be
+/// one.
+fn box_of(p: &Node) -> Option<UserBlock> {
+    let name = p.attr("name")?.trim().to_ascii_uppercase();
+    if crate::ladder::block::Shape::builtin(&name).is_some() {
+        return None;
+    }
+    let interface = p.child("interface")?;
+    let section = |kind: &'static str| interface.all(kind).flat_map(|s| s.all("variable"));
+    if section("inOutVars").next().is_some() {
+        return None;
+    }
+    let pins = |kind: &'static str| -> Option<Vec<(String, DataType)>> {
+        section(kind)
+            .map(|v| {
+                let ty = v.child("type")?.children.first()?;
+                let ty = DataType::from_name(&ty.name.to_ascii_uppercase())?;
+                Some((v.attr("name")?.trim().to_string(), ty))
+            })
+            .collect()
+    };
+    Some(UserBlock {
+        inputs: pins("inputVars")?,
+        outputs: pins("outputVars")?,
+        name,
     })
 }
 

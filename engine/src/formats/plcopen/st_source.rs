@@ -47,12 +47,41 @@ pub fn st_source(root: &Node) -> String {
     }
     let mut pous = Vec::new();
     root.descendants("pou", &mut pous);
+    pous.retain(|p| p.child("body").and_then(|b| b.child("ST")).is_some());
+    in_task_order(root, &mut pous);
     for p in pous {
         if let Some(text) = p.child("body").and_then(|b| b.child("ST")) {
             out.push_str(&pou(p, text.child("p").unwrap_or(text)));
         }
     }
     out
+}
+
+/// The programs among `pous` in the order the tasks run them (their
+/// `pouInstance`s in file order; one no task runs after those, in file
+/// order), each in a program's place: a `.st` text runs its programs in
+/// text order (`iec::st::rename`). The other POUs keep their places.
+fn in_task_order(root: &Node, pous: &mut [&Node]) {
+    let mut instances = Vec::new();
+    root.descendants("pouInstance", &mut instances);
+    let rank = |p: &Node| {
+        let name = p.attr("name").unwrap_or_default();
+        instances
+            .iter()
+            .position(|i| {
+                i.attr("typeName")
+                    .is_some_and(|t| t.eq_ignore_ascii_case(name))
+            })
+            .unwrap_or(usize::MAX)
+    };
+    let is_program = |p: &&Node| p.attr("pouType") == Some("program");
+    let slots: Vec<usize> = (0..pous.len()).filter(|&i| is_program(&pous[i])).collect();
+    let mut programs: Vec<&Node> = slots.iter().map(|&i| pous[i]).collect();
+    // Stable: programs of one rank (none run by a task) keep file order.
+    crate::sort::by_key(&mut programs, |p| rank(p));
+    for (slot, p) in slots.into_iter().zip(programs) {
+        pous[slot] = p;
+    }
 }
 
 /// One POU: its header, interface, body and end.

@@ -23,6 +23,9 @@ pub struct Lowered {
     pub text: String,
     /// `spans[n]`: where IL line `n + 1` comes from in the ST text.
     pub spans: Vec<Span>,
+    /// The variables of a second and later `PROGRAM` the IL knows by
+    /// another name ([`super::rename`]).
+    pub renamed: Vec<super::rename::Renamed>,
 }
 
 impl Lowered {
@@ -57,15 +60,12 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         .flatten()
         .map(|t| (t.name.name.to_ascii_uppercase(), t.def.clone()))
         .collect();
-    let mut program: Option<&Pou> = None;
     for item in &source.items {
         match item {
             Item::Pou(p) => match p.kind {
                 PouKind::FunctionBlock => l.pou(p, "FUNCTION_BLOCK"),
-                PouKind::Program if program.is_some() => {
-                    l.not_yet(p.span, "a second PROGRAM in one file")
-                }
-                PouKind::Program => program = Some(p),
+                // All of them after the blocks (`super::rename`).
+                PouKind::Program => {}
                 PouKind::Function(ref ty) => l.function_pou(p, ty),
             },
             // Known before any POU (`l.types`): flattened where used.
@@ -74,12 +74,14 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
             Item::Globals(b) => l.globals.push(b.clone()),
         }
     }
-    match program {
-        Some(p) => l.pou(p, "PROGRAM"),
-        None => l.errors.push(at(
+    let (programs, renamed) = super::rename::programs(source, &mut l.taken);
+    match programs.as_slice() {
+        [] => l.errors.push(at(
             Span { line: 1, column: 1 },
             StErrorKind::NotYet("a file without a PROGRAM".to_string()),
         )),
+        [one] => l.pou(one, "PROGRAM"),
+        many => l.programs(many),
     }
     if !l.errors.is_empty() {
         l.errors.sort_by_key(|e| (e.span.line, e.span.column));
@@ -92,7 +94,11 @@ pub fn lower_source(source: &Source) -> Result<Lowered, Vec<StError>> {
         text.push('\n');
         spans.push(span);
     }
-    Ok(Lowered { text, spans })
+    Ok(Lowered {
+        text,
+        spans,
+        renamed,
+    })
 }
 
 /// Each own function's and block's inputs in order (name, type as
@@ -179,6 +185,8 @@ pub(super) struct Lower {
     pub(super) in_program: bool,
     /// The source's `VAR_GLOBAL` blocks, declared in its PROGRAM.
     pub(super) globals: Vec<super::ast::VarBlock>,
+    /// Whether they are declared (by the first of several programs).
+    pub(super) globals_declared: bool,
     /// The source's `TYPE`s, by upper-case name.
     pub(super) types: std::collections::HashMap<String, super::ast::TypeDef>,
     /// The POU being lowered's flattened values: key (`A[1].M`) to
@@ -223,6 +231,13 @@ impl Lower {
     }
 
     pub(super) fn pou(&mut self, p: &Pou, keyword: &str) {
+        self.emit(format!("{keyword} {}", p.name.name), p.span);
+        self.pou_inside(p);
+        self.emit(format!("END_{keyword}"), p.span);
+    }
+
+    /// A POU's declarations and body, without its header and end.
+    pub(super) fn pou_inside(&mut self, p: &Pou) {
         self.flat.clear();
         self.flat_bases.clear();
         self.shown.clear();
@@ -230,7 +245,6 @@ impl Lower {
         self.flat_types.clear();
         self.in_program = p.kind == PouKind::Program;
         self.know_scalars(p);
-        self.emit(format!("{keyword} {}", p.name.name), p.span);
         for b in &p.vars {
             self.block(b);
         }
@@ -238,7 +252,6 @@ impl Lower {
             self.global_blocks(p);
         }
         self.body_with_io(p);
-        self.emit(format!("END_{keyword}"), p.span);
     }
 
     pub(super) fn stmts(&mut self, stmts: &[Stmt]) {

@@ -118,6 +118,10 @@ impl Lower {
     /// variables (`RETAIN` kept), but a name `p` declares itself, which
     /// shadows the global there.
     pub(super) fn global_blocks(&mut self, p: &Pou) {
+        // Several programs are one IL program: declared with the first.
+        if std::mem::replace(&mut self.globals_declared, true) {
+            return;
+        }
         let own: std::collections::HashSet<String> = p
             .vars
             .iter()

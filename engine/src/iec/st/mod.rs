@@ -24,6 +24,7 @@ mod lower_io;
 mod lower_reals;
 mod parser;
 pub mod print;
+pub mod rename;
 mod stmt;
 #[cfg(test)]
 mod tests;

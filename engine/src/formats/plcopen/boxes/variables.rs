@@ -96,6 +96,7 @@ fn declared(root: &Node, chosen: &[&Node]) -> Result<Vec<Variable>, Errors> {
     }
     let mut out: Vec<(Variable, usize)> = Vec::new();
     let mut errors = Vec::new();
+    let own = own_blocks_not_boxes(root);
     for section in sections {
         let retain = section.attr("retain") == Some("true");
         for v in section.all("variable") {
@@ -105,6 +106,10 @@ fn declared(root: &Node, chosen: &[&Node]) -> Result<Vec<Variable>, Errors> {
                 address.unwrap_or_default(),
             ) {
                 // Drawn as the address itself.
+                continue;
+            }
+            if own.contains(&derived_type(v)) {
+                // Its block is refused where it is called, with why.
                 continue;
             }
             let variable = match variable(v, retain) {
@@ -136,6 +141,30 @@ fn declared(root: &Node, chosen: &[&Node]) -> Result<Vec<Variable>, Errors> {
     } else {
         Err(errors)
     }
+}
+
+/// The project's own POUs (upper-case) that are not the soft PLC's
+/// boxes ([`crate::ladder::user_blocks`]): an instance of one is said
+/// at the block that calls it (`ImportError::ProjectBlock`), not as a
+/// variable of an unknown type.
+fn own_blocks_not_boxes(root: &Node) -> std::collections::HashSet<String> {
+    let mut pous = Vec::new();
+    root.descendants("pou", &mut pous);
+    pous.iter()
+        .filter_map(|p| p.attr("name"))
+        .map(|n| n.trim().to_ascii_uppercase())
+        .filter(|n| !crate::ladder::user_blocks::is_block_type(n))
+        .collect()
+}
+
+/// The type a `<variable>` derives (upper-case; empty for another).
+fn derived_type(v: &Node) -> String {
+    v.child("type")
+        .and_then(|t| t.child("derived"))
+        .and_then(|d| d.attr("name"))
+        .unwrap_or_default()
+        .trim()
+        .to_ascii_uppercase()
 }
 
 /// One `<variable>` as the ladder declares it.
