@@ -490,10 +490,10 @@ def test_each_plant_on_a_laptop_and_a_phone(tmp_path, base_url, artifacts, name)
 
 
 @pytest.mark.xfail(strict=False, reason=(
-    "issue #52's 1.15x is not met yet (docs/performance.md 'With a plant'): at load 0.3-1.3, "
-    "83.4 ms running vs 16.8 paused (116.8 before each cell's label read the language through "
-    "a memo of its own); the whole ladder is redrawn each frame with the plant (its slices end "
-    "on odd scan counts), and the ladder alone is 33.4 vs 16.8"))
+    "issue #52's 1.15x is not met yet (docs/performance.md \"The frame's layout, found\"): at load "
+    "2.6, 33.4 ms running vs 16.7 paused (83.4 before the timeline slider was left alone while "
+    "running live); with the plant every cell changes each frame and their style is the cost; "
+    "the ladder alone now holds 16.8 vs 16.8"))
 def test_the_200_rung_ladder_with_the_conveyor_running_keeps_its_frame(driver, base_url, tmp_path):
     """Issue #52's Done-when, measured as docs/performance.md measures the
     live frame (test_ladder's 200-rung AVR ladder, every coil toggling

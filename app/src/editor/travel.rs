@@ -15,6 +15,14 @@ use super::LadderCtx;
 pub struct TravelState {
     /// The first and last recorded scans.
     pub marks: RwSignal<(Mark, Mark)>,
+    /// The first and last scans the timeline slider spans: the marks,
+    /// except while the machine runs live and the slider is not in use,
+    /// when it is left as it was (its thumb at the end): a range input
+    /// whose bounds change costs a layout of the page, which with a large
+    /// ladder took a third of each frame (docs/performance.md).
+    pub slider: RwSignal<(Mark, Mark)>,
+    /// The slider has the focus (a press gives it the focus).
+    pub held: StoredValue<bool>,
     /// The scan shown, while travelling.
     pub shown: RwSignal<Option<Mark>>,
     /// Every scan where the break condition held.
@@ -35,6 +43,8 @@ impl TravelState {
     pub fn new() -> TravelState {
         TravelState {
             marks: RwSignal::new((0, 0)),
+            slider: RwSignal::new((0, 0)),
+            held: StoredValue::new(false),
             shown: RwSignal::new(None),
             breaks: RwSignal::new(Vec::new()),
             stopped_at: RwSignal::new(None),
@@ -66,6 +76,11 @@ pub fn sync(ctx: LadderCtx, t: &mut dyn TimeTravel, now_ms: f64, redraw: bool) {
     let shown = t.shown();
     if s.shown.get_untracked() != shown {
         s.shown.set(shown);
+    }
+    let live_running =
+        shown.is_none() && !ctx.page.paused.get_untracked() && ctx.live.running.get_untracked();
+    if !live_running || s.held.get_value() {
+        crate::state::put(s.slider, marks);
     }
     let breaks = t.breaks();
     if s.breaks.with_untracked(|b| *b != breaks) {
@@ -138,6 +153,12 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let s = ctx.travel;
     let at = move || s.shown.get().unwrap_or(s.marks.get().1);
+    // Paused: the slider spans the recording at once (a frame would too).
+    Effect::new(move |_| {
+        if ctx.page.paused.get() {
+            crate::state::put(s.slider, s.marks.get_untracked());
+        }
+    });
     let label = move || {
         let (first, last) = s.marks.get();
         match s.shown.get() {
@@ -163,9 +184,14 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
             <button type="button" data-testid="step-back" title=move || t().step_back
                 on:click=move |_| step_back(ctx)>"◀"</button>
             <input type="range" data-testid="timeline" class="timeline" aria-label=move || t().scan_slider
-                min=move || s.marks.get().0.to_string()
-                max=move || s.marks.get().1.to_string()
-                prop:value=move || at().to_string()
+                min=move || s.slider.get().0.to_string()
+                max=move || s.slider.get().1.to_string()
+                prop:value=move || s.shown.get().unwrap_or(s.slider.get().1).to_string()
+                on:focus=move |_| {
+                    s.held.set_value(true);
+                    crate::state::put(s.slider, s.marks.get_untracked());
+                }
+                on:blur=move |_| s.held.set_value(false)
                 on:input=move |e| {
                     if let Ok(m) = event_target_value(&e).parse::<Mark>() {
                         seek(ctx, m);

@@ -213,7 +213,7 @@ impl SetupRefused {
 
 /// `plc` with `setup`'s plant attached: its wiring, faults and
 /// parameters, or the first thing wrong with them.
-fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, SetupRefused> {
+fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, Box<SetupRefused>> {
     let mut plant = AnyPlant::new(&setup.name).ok_or_else(|| {
         SetupRefused::Plant(
             None,
@@ -230,7 +230,9 @@ fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, SetupR
     let faults = setup
         .faults
         .iter()
-        .map(|f| Fault::parse(f, info).map_err(|e| SetupRefused::Plant(Some(f.clone()), e)))
+        .map(|f| {
+            Fault::parse(f, info).map_err(|e| Box::new(SetupRefused::Plant(Some(f.clone()), e)))
+        })
         .collect::<Result<Vec<_>, _>>()?;
     // The rows (or the machine's default, as `Planted::new` makes it) are
     // checked here, typed, for the refusal to be said in the page's
@@ -253,7 +255,7 @@ fn planted(plc: Box<dyn Plc>, setup: &PlantSetup) -> Result<Box<dyn Plc>, SetupR
     };
     if let Err(errors) = wiring::check(info, plc.as_ref(), &entries) {
         if let Some(e) = errors.into_iter().next() {
-            return Err(SetupRefused::Row(e.line, Refusal::Wire(e.error)));
+            return Err(Box::new(SetupRefused::Row(e.line, Refusal::Wire(e.error))));
         }
     }
     let planted = Planted::new(plc, plant, Some(&entries), faults).map_err(|errors| {

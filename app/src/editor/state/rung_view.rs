@@ -127,7 +127,7 @@ impl RungView {
     /// Whether frame `turn` brings this rung's live state up to date.
     pub(crate) fn due(&self, turn: u64) -> bool {
         self.seen.load(std::sync::atomic::Ordering::Relaxed)
-            || (self.id.wrapping_add(turn)) % OFF_SCREEN_EVERY == 0
+            || self.id.wrapping_add(turn).is_multiple_of(OFF_SCREEN_EVERY)
     }
 
     /// The observer says whether the rung is on screen.
