@@ -147,18 +147,42 @@ fn now_ms() -> f64 {
 }
 
 /// The time-travel bar: back, the timeline, forward, where it is, Live,
-/// Resume from here, and the break condition.
+/// The travel bar's slider over the recorded scans (its bounds left as
+/// they are while the machine runs live: `TravelState::slider`).
 #[component]
-pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
+fn Timeline(ctx: LadderCtx) -> impl IntoView {
     let t = move || ctx.page.lang.get().texts();
     let s = ctx.travel;
-    let at = move || s.shown.get().unwrap_or(s.marks.get().1);
     // Paused: the slider spans the recording at once (a frame would too).
     Effect::new(move |_| {
         if ctx.page.paused.get() {
             crate::state::put(s.slider, s.marks.get_untracked());
         }
     });
+    view! {
+        <input type="range" data-testid="timeline" class="timeline" aria-label=move || t().scan_slider
+                min=move || s.slider.get().0.to_string()
+                max=move || s.slider.get().1.to_string()
+                prop:value=move || s.shown.get().unwrap_or(s.slider.get().1).to_string()
+                on:focus=move |_| {
+                    s.held.set_value(true);
+                    crate::state::put(s.slider, s.marks.get_untracked());
+                }
+                on:blur=move |_| s.held.set_value(false)
+                on:input=move |e| {
+                    if let Ok(m) = event_target_value(&e).parse::<Mark>() {
+                        seek(ctx, m);
+                    }
+                } />
+    }
+}
+
+/// Resume from here, and the break condition.
+#[component]
+pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
+    let t = move || ctx.page.lang.get().texts();
+    let s = ctx.travel;
+    let at = move || s.shown.get().unwrap_or(s.marks.get().1);
     let label = move || {
         let (first, last) = s.marks.get();
         match s.shown.get() {
@@ -183,20 +207,7 @@ pub fn TravelBar(ctx: LadderCtx) -> impl IntoView {
         <div class="travel-bar" data-testid="travel-bar" data-travelling=move || s.shown.get().is_some().to_string()>
             <button type="button" data-testid="step-back" title=move || t().step_back
                 on:click=move |_| step_back(ctx)>"◀"</button>
-            <input type="range" data-testid="timeline" class="timeline" aria-label=move || t().scan_slider
-                min=move || s.slider.get().0.to_string()
-                max=move || s.slider.get().1.to_string()
-                prop:value=move || s.shown.get().unwrap_or(s.slider.get().1).to_string()
-                on:focus=move |_| {
-                    s.held.set_value(true);
-                    crate::state::put(s.slider, s.marks.get_untracked());
-                }
-                on:blur=move |_| s.held.set_value(false)
-                on:input=move |e| {
-                    if let Ok(m) = event_target_value(&e).parse::<Mark>() {
-                        seek(ctx, m);
-                    }
-                } />
+            <Timeline ctx />
             <button type="button" data-testid="step-forward" title=move || t().step_forward
                 on:click=move |_| step_forward(ctx)>"▶"</button>
             <span class="travel-at" data-testid="travel-at" data-shown=move || s.shown.get().map(|m| m.to_string())

@@ -570,15 +570,7 @@ impl LadderCtx {
                 None => {
                     let id = self.drawing.next_id.get_value();
                     self.drawing.next_id.set_value(id + 1);
-                    RungView {
-                        id,
-                        number: ArcRwSignal::new(number),
-                        first_step: ArcRwSignal::new(first),
-                        data: ArcRwSignal::new(d),
-                        slots: Default::default(),
-                        probes: Default::default(),
-                        seen: std::sync::Arc::new(true.into()),
-                    }
+                    RungView::new(id, number, first, d)
                 }
             };
             if view.number.get_untracked() != number {

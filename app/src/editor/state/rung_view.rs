@@ -124,6 +124,25 @@ impl CellSlot {
 const OFF_SCREEN_EVERY: u64 = 8;
 
 impl RungView {
+    /// A new rung's view, with id `id`, at `number`, seen until the
+    /// observer says otherwise.
+    pub(super) fn new(
+        id: u64,
+        number: usize,
+        first_step: Option<usize>,
+        data: RungData,
+    ) -> RungView {
+        RungView {
+            id,
+            number: ArcRwSignal::new(number),
+            first_step: ArcRwSignal::new(first_step),
+            data: ArcRwSignal::new(data),
+            slots: Default::default(),
+            probes: Default::default(),
+            seen: std::sync::Arc::new(true.into()),
+        }
+    }
+
     /// Whether frame `turn` brings this rung's live state up to date.
     pub(crate) fn due(&self, turn: u64) -> bool {
         self.seen.load(std::sync::atomic::Ordering::Relaxed)
