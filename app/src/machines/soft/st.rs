@@ -9,11 +9,9 @@ use std::collections::BTreeSet;
 use engine::machines::SoftPlc;
 use engine::plc::{Device, Plc};
 use engine::softplc::st::StBlocks;
-use engine::softplc::st::StRun;
 use engine::softplc::st_online::StMap;
 use leptos::prelude::*;
 
-pub(super) use super::st_online::line_names;
 use crate::sim::Simulator;
 use crate::state::{put, Ctx};
 use crate::storage;
@@ -241,24 +239,6 @@ impl StState {
 
     /// Follows the program loaded by `map`, its lines those of `source`
     /// (`program`: its own lines show values too, else only its blocks').
-    /// `program`: the ST program loaded (its own lines show values too),
-    /// `None` for a ladder calling the text's blocks.
-    fn follow(&self, sim: Sim, source: String, map: StMap, program: Option<&StRun>) {
-        let devices = sim.with_value(|s| line_names(s.machine(), &source, &map, program));
-        let instances = map
-            .instances
-            .iter()
-            .map(|i| (i.name.clone(), i.block.clone()))
-            .collect::<Vec<_>>();
-        put(self.instances, instances);
-        self.devices.set_value(devices);
-        self.map.set_value(map);
-        self.source.set_value(source);
-        self.standing.set_value(None);
-        self.hit.set(false);
-        self.install_stop(sim);
-    }
-
     /// An IL program was loaded: nothing of the ST one stays.
     pub fn forget(&self, sim: Sim) {
         self.map.set_value(StMap::default());
@@ -283,7 +263,7 @@ impl StState {
 
     /// The machine's frames stop before the first step of a breakpoint's
     /// line (none set: they run whole scans).
-    fn install_stop(&self, sim: Sim) {
+    pub(super) fn install_stop(&self, sim: Sim) {
         let breakpoints = self.breakpoints.get_untracked();
         let stops = self.map.with_value(|m| stop_steps(&m.lines, &breakpoints));
         let stop: Option<crate::sim::StopAt<SoftPlc>> = stops.contains(&true).then(|| {

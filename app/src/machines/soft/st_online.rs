@@ -84,6 +84,24 @@ fn position_now(sim: Sim) -> Option<usize> {
 }
 
 impl StState {
+    /// `program`: the ST program loaded (its own lines show values too),
+    /// `None` for a ladder calling the text's blocks.
+    pub(super) fn follow(&self, sim: Sim, source: String, map: StMap, program: Option<&StRun>) {
+        let devices = sim.with_value(|s| line_names(s.machine(), &source, &map, program));
+        let instances = map
+            .instances
+            .iter()
+            .map(|i| (i.name.clone(), i.block.clone()))
+            .collect::<Vec<_>>();
+        put(self.instances, instances);
+        self.devices.set_value(devices);
+        self.map.set_value(map);
+        self.source.set_value(source);
+        self.standing.set_value(None);
+        self.hit.set(false);
+        self.install_stop(sim);
+    }
+
     /// The ST line and call of the step the shown machine stands before.
     fn place_now(&self, sim: Sim) -> Option<(usize, Option<usize>)> {
         let position = position_now(sim)?;

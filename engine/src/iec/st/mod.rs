@@ -21,6 +21,7 @@ mod lower_body;
 mod lower_call;
 mod lower_flat;
 mod lower_io;
+mod lower_programs;
 mod lower_reals;
 mod parser;
 pub mod print;
