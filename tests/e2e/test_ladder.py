@@ -932,52 +932,6 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, tm
     assert running <= 1.15 * paused, frames
 
 
-# Counts, over 2 s, the changes of `data-powered` on two cells.
-CHANGES = """
-    const [a, b, done] = arguments; const seen = {a: 0, b: 0};
-    const watch = (cell, key) => new MutationObserver(m => { seen[key] += m.length; })
-        .observe(cell, {attributes: true, attributeFilter: ["data-powered"]});
-    watch(a, "a"); watch(b, "b");
-    setTimeout(() => done(seen), 2000);"""
-
-
-def test_rungs_off_screen_are_brought_up_to_date_in_turn_and_on_screen_every_frame(driver, base_url, tmp_path):
-    """A running frame brings the rungs on screen up to date every frame
-    and those off screen once in eight frames (docs/performance.md, the
-    live frame): counted with a MutationObserver on a coil on screen and
-    one far below, every coil toggling every scan at x1; scrolled to, the
-    far rung is brought up to date every frame."""
-    project = tmp_path / "r200.json"
-    project.write_text(json.dumps({"format": "hashigo-project", "version": 1, "machine": "avr-plc",
-                                   "ladder": {"rungs": toggling_rungs()}}))
-    driver.set_window_size(1366, 768)
-    open_fresh(driver, base_url)
-    Select(el(driver, "machine")).select_by_value("avr-plc")
-    wait(driver, lambda: el(driver, "palette"))
-    el(driver, "open-file").send_keys(str(project))
-    wait(driver, lambda: el(driver, "cell-199-0-9").get_attribute("data-device") == "R24.7")
-    if el(driver, "run").get_attribute("aria-pressed") == "true":
-        el(driver, "run").click()
-        wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "false")
-    el(driver, "run").click()
-    near, far = el(driver, "cell-0-0-9", reveal=False), el(driver, "cell-150-0-9", reveal=False)
-    wait(driver, lambda: far.get_attribute("data-powered") in ("0", "1"), message="the far rung shown in turn")
-    driver.set_script_timeout(10)
-    time.sleep(0.2)
-    seen = driver.execute_async_script(CHANGES, near, far)
-    # About 120 frames: the near coil's power shows anew in each that ran
-    # an odd count of scans (it toggles every scan), the far one's only in
-    # one frame of eight.
-    assert seen["a"] >= 20, seen
-    assert 1 <= seen["b"] <= seen["a"] / 3, seen
-    # Scrolled to the far rung: the near one is off screen now.
-    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", far)
-    time.sleep(0.2)
-    seen = driver.execute_async_script(CHANGES, near, far)
-    assert seen["b"] >= 20 and 1 <= seen["a"] <= seen["b"] / 3, seen
-    assert severe_console_messages(driver) == []
-
-
 def test_an_io86a_timer_coil_shows_current_and_preset(driver, base_url):
     open_fresh(driver, base_url)
     Select(el(driver, "machine")).select_by_value("io86a")

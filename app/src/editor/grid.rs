@@ -7,7 +7,6 @@ use engine::ladder::edit::Cursor;
 use leptos::prelude::*;
 
 use super::model::{cell_class, cell_words, live_words, within, CellData, RungData};
-use super::on_screen::OnScreen;
 use super::state::{LadderCtx, RungView};
 use super::{palette, zoom};
 use crate::i18n::Lang;
@@ -49,7 +48,6 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
     };
     let touches = zoom::Touches::new();
     let selected_end = selected.clone();
-    let on_screen = OnScreen::new(ctx, grid);
     view! {
         <div
             class="ladder"
@@ -73,7 +71,7 @@ pub fn LadderGrid(ctx: LadderCtx, grid: NodeRef<leptos::html::Div>) -> impl Into
                 key=|r: &RungView| r.id
                 children=move |r: RungView| {
                     let selected = selected.clone();
-                    view! { <RungRows ctx r selected block grid on_screen /> }
+                    view! { <RungRows ctx r selected block grid /> }
                 }
             />
             <EndLine ctx selected=selected_end />
@@ -117,9 +115,7 @@ fn RungRows(
     selected: Selector<Cursor>,
     block: Memo<Option<(Cursor, Cursor)>>,
     grid: NodeRef<leptos::html::Div>,
-    on_screen: OnScreen,
 ) -> impl IntoView {
-    let here = watched(on_screen);
     let number = r.number.clone();
     let data = r.data.clone();
     let rows = {
@@ -142,7 +138,7 @@ fn RungRows(
     let view = r.clone();
     let (d1, d2, d3) = (data.clone(), data.clone(), data.clone());
     view! {
-        <div class="rung" role="rowgroup" node_ref=here data-rid=r.id data-testid=move || format!("rung-{}", n1.get())
+        <div class="rung" role="rowgroup" data-testid=move || format!("rung-{}", n1.get())
             data-first-step=move || first2.get().map(|s| s.to_string())>
             <div class="rung-head">
                 <span class="rung-num">{move || format!("{} {}", t().rung, n2.get() + 1)}</span>
@@ -184,22 +180,6 @@ fn RungRows(
             }).collect_view())}
         </div>
     }
-}
-
-/// A rung's element, watched by `on_screen` while it is in the ladder.
-fn watched(on_screen: OnScreen) -> NodeRef<leptos::html::Div> {
-    let here = NodeRef::<leptos::html::Div>::new();
-    Effect::new(move |_| {
-        if let Some(rung) = here.get() {
-            on_screen.watch(&rung);
-        }
-    });
-    on_cleanup(move || {
-        if let Some(Some(rung)) = here.try_get_untracked() {
-            on_screen.unwatch(&rung);
-        }
-    });
-    here
 }
 
 /// One cell. Drawn once per content; only its place in the ladder (the

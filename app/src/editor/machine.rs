@@ -196,7 +196,7 @@ impl LadderCtx {
         };
         link.refresh_panel();
         self.read_plant_watch();
-        self.with_plc(|plc| self.show_live(plc, None));
+        self.with_plc(|plc| self.show_live(plc));
     }
 
     /// The plant's value of each watched name (`tank.level`) at the scan
@@ -258,15 +258,13 @@ impl LadderCtx {
         }
         super::why::follow(*self);
         let history = self.take_history().unwrap_or_default();
-        let turn = self.live.turn.get_value().wrapping_add(1);
-        self.live.turn.set_value(turn);
-        self.show_pulses(&history, Some(turn));
+        self.show_pulses(&history);
         self.read_plant_watch();
         self.with_plc(|plc| {
             if self.recording() {
                 self.observe(plc);
             }
-            self.show_live(plc, Some(turn));
+            self.show_live(plc);
         });
     }
 

@@ -53,9 +53,6 @@ pub struct Live {
     /// What waits for the machine to arrive with its part (issue #53):
     /// run when it is attached ([`LadderCtx::when_attached`]).
     pub(crate) on_arrival: StoredValue<Vec<Box<dyn FnOnce()>>, LocalStorage>,
-    /// Counts the running frames, for the rungs off screen to be brought
-    /// up to date in turn ([`RungView::due`]).
-    pub(crate) turn: StoredValue<u64>,
 }
 
 impl Live {
@@ -80,7 +77,6 @@ impl Live {
             forced: RwSignal::new(Vec::new()),
             link: StoredValue::new_local(None),
             on_arrival: StoredValue::new_local(Vec::new()),
-            turn: StoredValue::new(0),
         }
     }
 }
@@ -168,10 +164,7 @@ impl LadderCtx {
     /// that scan as the machine computed it (`data-powered`, while it runs
     /// the ladder as drawn), and the watch table. Only the rungs whose
     /// states changed are touched.
-    /// `turn`: a running frame's, which brings the rungs on screen up to
-    /// date and those off screen in turn ([`RungView::due`]); `None` (a
-    /// step, a seek): every rung.
-    pub fn show_live(&self, plc: &dyn engine::plc::Plc, turn: Option<u64>) {
+    pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
         // A drawing that cannot be written shows nothing live: the states
         // would be another program's.
         let in_run = plc.running();
@@ -200,9 +193,6 @@ impl LadderCtx {
         let generation = self.live.probe_generation.get_value();
         let resolve = |c: &crate::editor::model::CellData| self.probe_of(plc, c);
         for view in self.drawing.rungs.get_untracked() {
-            if turn.is_some_and(|t| !view.due(t)) {
-                continue;
-            }
             let number = view.number.get_untracked();
             match powers.iter().find(|(i, _)| *i == number) {
                 Some((_, p)) => view.data.with_untracked(|d| {
@@ -371,18 +361,13 @@ impl LadderCtx {
 
     /// Each frame: marks every cell whose power changed in some scan since
     /// the last frame, so a one-scan pulse shows at any speed.
-    /// `turn` as [`Self::show_live`]'s: a rung off screen shows the pulses
-    /// of the frames it is brought up to date in.
-    pub fn show_pulses(&self, history: &engine::plc::TraceHistory, turn: Option<u64>) {
+    pub fn show_pulses(&self, history: &engine::plc::TraceHistory) {
         let pulses = self
             .live
             .ladder
             .with_value(|l| l.as_ref().map(|l| l.pulses(history)));
         let pulses = pulses.unwrap_or_default();
         for view in self.drawing.rungs.get_untracked() {
-            if turn.is_some_and(|t| !view.due(t)) {
-                continue;
-            }
             let number = view.number.get_untracked();
             match pulses.iter().find(|(i, _)| *i == number) {
                 Some((_, found)) if !found.is_empty() => view.data.with_untracked(|d| {

@@ -22,9 +22,6 @@ pub struct RungView {
     /// and program (tagged with [`LadderCtx`]'s probe generation), so a
     /// frame reads the machine without a name lookup.
     pub(super) probes: std::sync::Arc<std::sync::Mutex<Probes>>,
-    /// Whether the rung is on screen (or near it), as the grid's
-    /// intersection observer last said: true until it says otherwise.
-    pub seen: std::sync::Arc<std::sync::atomic::AtomicBool>,
 }
 
 /// The machine's handles for a rung's cells.
@@ -117,15 +114,8 @@ impl CellSlot {
     }
 }
 
-/// A running frame brings a rung off screen up to date once in this many
-/// frames (on screen: every frame), in turn by its id: what the eye cannot
-/// see costs the frame an eighth, and is at most 8 frames old when it is
-/// scrolled to (the observer's margin brings it up to date before).
-const OFF_SCREEN_EVERY: u64 = 8;
-
 impl RungView {
-    /// A new rung's view, with id `id`, at `number`, seen until the
-    /// observer says otherwise.
+    /// A new rung's view, with id `id`, at `number`.
     pub(super) fn new(
         id: u64,
         number: usize,
@@ -139,19 +129,7 @@ impl RungView {
             data: ArcRwSignal::new(data),
             slots: Default::default(),
             probes: Default::default(),
-            seen: std::sync::Arc::new(true.into()),
         }
-    }
-
-    /// Whether frame `turn` brings this rung's live state up to date.
-    pub(crate) fn due(&self, turn: u64) -> bool {
-        self.seen.load(std::sync::atomic::Ordering::Relaxed)
-            || self.id.wrapping_add(turn).is_multiple_of(OFF_SCREEN_EVERY)
-    }
-
-    /// The observer says whether the rung is on screen.
-    pub(crate) fn set_seen(&self, seen: bool) {
-        self.seen.store(seen, std::sync::atomic::Ordering::Relaxed);
     }
 
     /// The live slot of cell `index` (made when first asked for).
