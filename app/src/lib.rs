@@ -157,7 +157,7 @@ fn remove_loading_screen() {
 }
 
 /// The page's element with `id`.
-fn element_by_id(id: &str) -> Option<web_sys::Element> {
+pub(crate) fn element_by_id(id: &str) -> Option<web_sys::Element> {
     web_sys::window()?.document()?.get_element_by_id(id)
 }
 

@@ -761,7 +761,7 @@ def test_run_the_drawn_ladder_and_watch_its_devices(driver, base_url):
     el(driver, "input-X00").click()
     wait(driver, lambda: el(driver, "cell-0-0-0").get_attribute("data-on") == "1")
     wait(driver, lambda: el(driver, "cell-0-0-9").get_attribute("data-on") == "1", message="Y00 on")
-    assert "on" in el(driver, "cell-0-1-0").get_attribute("class"), "the Y00 contact shows Y00 on"
+    assert el(driver, "cell-0-1-0").get_attribute("data-on") == "1", "the Y00 contact shows Y00 on"
     for cell in ["cell-0-0-0", "cell-0-0-1", "cell-0-0-5", "cell-0-0-9", "cell-0-1-0"]:
         wait(driver, lambda: el(driver, cell).get_attribute("data-powered") == "1", message=f"{cell} powered")
     el(driver, "input-X00").click()
@@ -871,6 +871,21 @@ def toggling_rungs(count=200):
     return rungs
 
 
+def open_toggling_ladder(driver, base_url, tmp_path, size, version=1, **more):
+    """Opens `toggling_rungs()` on the AVR PLC in a window of `size` (a
+    project file of `version` with `more` fields, a plant's setup) and
+    waits for its last rung."""
+    project = tmp_path / "r200.json"
+    project.write_text(json.dumps({"format": "hashigo-project", "version": version, "machine": "avr-plc",
+                                   "ladder": {"rungs": toggling_rungs()}, **more}))
+    driver.set_window_size(*size)
+    open_fresh(driver, base_url)
+    Select(el(driver, "machine")).select_by_value("avr-plc")
+    wait(driver, lambda: el(driver, "palette"))
+    el(driver, "open-file").send_keys(str(project))
+    wait(driver, lambda: el(driver, "cell-199-0-9").get_attribute("data-device") == "R24.7")
+
+
 def frame_stats(deltas):
     """p50, p95 and the longest of a run's frame deltas."""
     d = sorted(deltas)
@@ -886,16 +901,7 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, tm
     and paused, three runs of 3 s each, go to figures.json with their
     medians, and the scans simulated per second while running
     (docs/performance.md)."""
-    rungs = toggling_rungs()
-    project = tmp_path / "r200.json"
-    project.write_text(json.dumps({"format": "hashigo-project", "version": 1, "machine": "avr-plc",
-                                   "ladder": {"rungs": rungs}}))
-    driver.set_window_size(1600, 1100)
-    open_fresh(driver, base_url)
-    Select(el(driver, "machine")).select_by_value("avr-plc")
-    wait(driver, lambda: el(driver, "palette"))
-    el(driver, "open-file").send_keys(str(project))
-    wait(driver, lambda: el(driver, "cell-199-0-9").get_attribute("data-device") == "R24.7")
+    open_toggling_ladder(driver, base_url, tmp_path, (1600, 1100))
     Select(el(driver, "speed")).select_by_value("max")
     driver.set_script_timeout(30)
 
@@ -930,6 +936,44 @@ def test_a_200_rung_ladder_colours_live_at_the_display_rate(driver, base_url, tm
     # Issue #53's "within 1.15x of paused", the median of the three runs.
     running, paused = (frames[f"ladder_200_rungs_{s}_frame_ms"]["median_p95"] for s in ("running", "paused"))
     assert running <= 1.15 * paused, frames
+
+
+# Counts, over 2 s, the changes of `data-powered` on two cells.
+CHANGES = """
+    const [a, b, done] = arguments; const seen = {a: 0, b: 0};
+    const watch = (cell, key) => new MutationObserver(m => { seen[key] += m.length; })
+        .observe(cell, {attributes: true, attributeFilter: ["data-powered"]});
+    watch(a, "a"); watch(b, "b");
+    setTimeout(() => done(seen), 2000);"""
+
+
+def test_rungs_off_screen_are_brought_up_to_date_in_turn_and_on_screen_every_frame(driver, base_url, tmp_path):
+    """A running frame brings the rungs on screen up to date every frame
+    and those off screen once in sixteen frames (docs/performance.md,
+    "The plant's frame, taken apart"): counted with a MutationObserver on a coil on screen and
+    one far below, every coil toggling every scan at x1; scrolled to, the
+    far rung is brought up to date every frame."""
+    open_toggling_ladder(driver, base_url, tmp_path, (1366, 768))
+    if el(driver, "run").get_attribute("aria-pressed") == "true":
+        el(driver, "run").click()
+        wait(driver, lambda: el(driver, "run").get_attribute("aria-pressed") == "false")
+    el(driver, "run").click()
+    near, far = el(driver, "cell-0-0-9", reveal=False), el(driver, "cell-150-0-9", reveal=False)
+    wait(driver, lambda: far.get_attribute("data-powered") in ("0", "1"), message="the far rung shown in turn")
+    driver.set_script_timeout(10)
+    time.sleep(0.2)
+    seen = driver.execute_async_script(CHANGES, near, far)
+    # About 120 frames: the near coil's power shows anew in each that ran
+    # an odd count of scans (it toggles every scan), the far one's only in
+    # one frame of sixteen.
+    assert seen["a"] >= 20, seen
+    assert 1 <= seen["b"] <= seen["a"] / 4, seen
+    # Scrolled to the far rung: the near one is off screen now.
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", far)
+    time.sleep(0.2)
+    seen = driver.execute_async_script(CHANGES, near, far)
+    assert seen["b"] >= 20 and 1 <= seen["a"] <= seen["b"] / 4, seen
+    assert severe_console_messages(driver) == []
 
 
 def test_an_io86a_timer_coil_shows_current_and_preset(driver, base_url):

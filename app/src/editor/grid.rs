@@ -227,14 +227,14 @@ fn Cell(
             data-testid=testid
             data-kind=c.kind.hook()
             data-device=device
-            data-on=on.clone()
-            class:on=move || on() == Some("1")
+            // The live state is said once per cell, as data attributes
+            // the style sheet reads (no class for the same): each is an
+            // effect of its own, and a frame may change every cell.
+            data-on=on
             data-conducts=cell_slot.conducts_attr()
             class:lit=lit
-            data-powered=power.clone()
-            class:powered=move || power() == Some("1")
-            data-pulsed=pulse.clone()
-            class:pulsed=move || pulse().is_some()
+            data-powered=power
+            data-pulsed=pulse
             data-rises=cell_slot.rises()
             data-error=c.error.clone()
             title=hover

@@ -9,6 +9,7 @@ use engine::plc::Plc;
 use engine::record::{Recorded, TimeTravel};
 use leptos::prelude::*;
 
+use super::on_screen::Due;
 use super::LadderCtx;
 use crate::rig::RigSlot;
 use crate::sim::{Pace, Simulator};
@@ -196,7 +197,7 @@ impl LadderCtx {
         };
         link.refresh_panel();
         self.read_plant_watch();
-        self.with_plc(|plc| self.show_live(plc));
+        self.with_plc(|plc| self.show_live(plc, &Due::All));
     }
 
     /// The plant's value of each watched name (`tank.level`) at the scan
@@ -258,14 +259,37 @@ impl LadderCtx {
         }
         super::why::follow(*self);
         let history = self.take_history().unwrap_or_default();
-        self.show_pulses(&history);
+        let due = self.due_rungs(pace);
+        self.show_pulses(&history, &due);
         self.read_plant_watch();
         self.with_plc(|plc| {
             if self.recording() {
                 self.observe(plc);
             }
-            self.show_live(plc);
+            self.show_live(plc, &due);
         });
+    }
+
+    /// The rungs this frame brings up to date
+    /// (`crate::editor::on_screen`): every rung unless the machine runs.
+    fn due_rungs(&self, pace: Pace) -> Due {
+        let still = pace.paused
+            || self.travel.shown.get_untracked().is_some()
+            || !self.live.running.get_untracked();
+        if still {
+            return Due::All;
+        }
+        // The shown workspace's ladder (`LadderGrid`'s id): the frame is
+        // its machine's.
+        let grid = crate::element_by_id("ladder");
+        match grid.and_then(|g| super::on_screen::rungs_on_screen(&g)) {
+            Some(shown) => {
+                let turn = self.live.turn.get_value().wrapping_add(1);
+                self.live.turn.set_value(turn);
+                Due::InTurn { shown, turn }
+            }
+            _ => Due::All,
+        }
     }
 
     /// What the machine traced since the last frame.

@@ -23,6 +23,7 @@ pub mod keys;
 pub mod live;
 pub mod machine;
 pub mod model;
+pub mod on_screen;
 pub mod palette;
 pub mod panes;
 pub mod state;

@@ -10,6 +10,7 @@ use leptos::prelude::*;
 
 use crate::chrome::controls::Led;
 use crate::chrome::text_program::TextProgramPane;
+use crate::editor::on_screen::{self, Due};
 use crate::sim::Simulator;
 use crate::state::Ctx;
 use crate::storage;
@@ -40,6 +41,11 @@ pub struct AvrCtx {
     pub sim: StoredValue<Simulator<AvrPlc>, LocalStorage>,
     pub bits: RwSignal<Vec<NamedBit>>,
     pub text: RwSignal<String>,
+    /// The lamps' rows, for [`Self::refresh`] to bring those on screen up
+    /// to date every frame and the others in turn.
+    rows: NodeRef<leptos::html::Tbody>,
+    /// Counts the refreshes, for the rows off screen to take turns.
+    turn: StoredValue<u64>,
 }
 
 impl AvrCtx {
@@ -52,16 +58,25 @@ impl AvrCtx {
             sim: StoredValue::new_local(Simulator::new(AvrPlc::new())),
             bits: RwSignal::new(Vec::new()),
             text: RwSignal::new(text),
+            rows: NodeRef::new(),
+            turn: StoredValue::new(0),
         };
         ctx.load();
         ctx
     }
 
     /// Copies the named bits into their signals (only those that changed).
+    /// The lamps on screen every frame, the others in turn
+    /// (`crate::editor::on_screen`): a program naming 248 bits that all
+    /// change each frame cost the frame its display rate (issue #52).
     pub fn refresh(&self) {
+        let due = self.due_rows();
         self.sim.with_value(|s| {
             self.bits.with_untracked(|bits| {
-                for b in bits {
+                for (i, b) in bits.iter().enumerate() {
+                    if !due.covers(i) {
+                        continue;
+                    }
                     let v = s.machine().read(b.device).is_on();
                     if b.value.get_untracked() != v {
                         b.value.set(v);
@@ -69,6 +84,25 @@ impl AvrCtx {
                 }
             });
         });
+    }
+
+    /// The rows [`Self::refresh`] brings up to date: those the panel's
+    /// scrolling dock shows, and the others in turn.
+    fn due_rows(&self) -> Due {
+        let Some(rows) = self.rows.get_untracked() else {
+            return Due::All;
+        };
+        let view = rows.closest(".dock-right").ok().flatten();
+        let shown = rows
+            .query_selector_all(":scope > tr")
+            .ok()
+            .and_then(|all| on_screen::shown_in(view.as_ref().unwrap_or(&rows), &all));
+        let Some(shown) = shown else {
+            return Due::All;
+        };
+        let turn = self.turn.get_value().wrapping_add(1);
+        self.turn.set_value(turn);
+        Due::InTurn { shown, turn }
     }
 
     /// Saves the program text.
@@ -169,7 +203,7 @@ pub fn AvrPanel(avr: AvrCtx) -> impl IntoView {
             <section class="device avr-bits">
                 <h2>"AVR · " {move || t().bits}</h2>
                 <table class="bits">
-                    <tbody>
+                    <tbody node_ref=avr.rows>
                         <For
                             each=move || avr.bits.get()
                             key=|b| (b.name.clone(), b.bit.register, b.bit.bit)

@@ -141,15 +141,19 @@ impl Chart {
             .get()
             .unwrap_or_else(|| default_devices(self.ctx));
         let revision = self.ctx.drawing.revision.get_untracked();
-        // The view goes to a scan travelled to only while the chart is in
-        // sight: hidden, it is not read again at every seek.
+        // The chart reads the recording only while it is in sight: hidden,
+        // not at every seek, nor at every frame of a running machine (1 ms
+        // a frame, issue #52); shown again, this runs again.
         let docks = self.ctx.page.docks;
         let seen =
             docks.tool.get() == crate::docks::Tool::Chart && docks.sizes.with(|s| s.bottom_open);
+        if !seen {
+            return;
+        }
         let fresh = self.ctx.recorded(|tr| {
             let (first, last) = tr.marks();
             let wide = w.span.unwrap_or_else(|| span::auto_span((first, last)));
-            let at = tr.shown().filter(|_| seen);
+            let at = tr.shown();
             let (from, end) = span::in_view(w, wide, (first, last), at);
             let key = (from, end, names.clone(), revision);
             if self.read.with_value(|r| r.as_ref() == Some(&key)) {

@@ -2,6 +2,7 @@
 //! probes, pulses, the watch table, and recording inputs into a case.
 
 use super::*;
+use crate::editor::on_screen::Due;
 
 /// The machine as the ladder shows it running: the drawing it runs, the
 /// device handles, the watch table, forcing and stepping.
@@ -53,6 +54,9 @@ pub struct Live {
     /// What waits for the machine to arrive with its part (issue #53):
     /// run when it is attached ([`LadderCtx::when_attached`]).
     pub(crate) on_arrival: StoredValue<Vec<Box<dyn FnOnce()>>, LocalStorage>,
+    /// Counts the running frames, for the rungs off screen to be brought
+    /// up to date in turn (`crate::editor::on_screen`).
+    pub(crate) turn: StoredValue<u64>,
 }
 
 impl Live {
@@ -77,6 +81,7 @@ impl Live {
             forced: RwSignal::new(Vec::new()),
             link: StoredValue::new_local(None),
             on_arrival: StoredValue::new_local(Vec::new()),
+            turn: StoredValue::new(0),
         }
     }
 }
@@ -162,9 +167,9 @@ impl LadderCtx {
     /// Each frame: every contact's and coil's device state as the
     /// machine's last scan left it (`data-on`), every cell's power in
     /// that scan as the machine computed it (`data-powered`, while it runs
-    /// the ladder as drawn), and the watch table. Only the rungs whose
-    /// states changed are touched.
-    pub fn show_live(&self, plc: &dyn engine::plc::Plc) {
+    /// the ladder as drawn), and the watch table, on the rungs `due`
+    /// names. Only the cells whose states changed are touched.
+    pub fn show_live(&self, plc: &dyn engine::plc::Plc, due: &Due) {
         // A drawing that cannot be written shows nothing live: the states
         // would be another program's.
         let in_run = plc.running();
@@ -194,6 +199,9 @@ impl LadderCtx {
         let resolve = |c: &crate::editor::model::CellData| self.probe_of(plc, c);
         for view in self.drawing.rungs.get_untracked() {
             let number = view.number.get_untracked();
+            if !due.covers(number) {
+                continue;
+            }
             match powers.iter().find(|(i, _)| *i == number) {
                 Some((_, p)) => view.data.with_untracked(|d| {
                     view.update_each(|i| crate::editor::model::power_of(d, p, i), |s| &s.powered)
@@ -360,8 +368,10 @@ impl LadderCtx {
     }
 
     /// Each frame: marks every cell whose power changed in some scan since
-    /// the last frame, so a one-scan pulse shows at any speed.
-    pub fn show_pulses(&self, history: &engine::plc::TraceHistory) {
+    /// the last frame, so a one-scan pulse shows at any speed (on the
+    /// rungs `due` names: a rung off screen shows the pulses of the
+    /// frames it is brought up to date in).
+    pub fn show_pulses(&self, history: &engine::plc::TraceHistory, due: &Due) {
         let pulses = self
             .live
             .ladder
@@ -369,6 +379,9 @@ impl LadderCtx {
         let pulses = pulses.unwrap_or_default();
         for view in self.drawing.rungs.get_untracked() {
             let number = view.number.get_untracked();
+            if !due.covers(number) {
+                continue;
+            }
             match pulses.iter().find(|(i, _)| *i == number) {
                 Some((_, found)) if !found.is_empty() => view.data.with_untracked(|d| {
                     let rises = |i: usize| {
