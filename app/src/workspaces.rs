@@ -59,7 +59,7 @@ impl Workspaces {
             why_st: Callback::new(|_| Vec::new()),
         };
         let ladder = ladders.of(MachineId::MinasecU);
-        ladder.attach(machines::link(minasec.sim, move || minasec.refresh()));
+        ladder.attach(machines::link(minasec.sim, move |_| minasec.refresh()));
         ladder.connect(minasec_program);
         // Every machine powers up in STOP: time stands still until Run
         // (the others as they arrive, `workspace::wire`).

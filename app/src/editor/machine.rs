@@ -24,8 +24,10 @@ pub trait MachineLink {
     fn read(&self, f: &mut dyn FnMut(&dyn Plc));
     /// Advances it by one animation frame of `wall_ms` at `pace`.
     fn advance(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64);
-    /// Copies its front panel into the panel's signals.
-    fn refresh_panel(&self);
+    /// Copies its front panel into the panel's signals: all of it, or
+    /// what is on screen and the rest in turn in a running frame of
+    /// `turn` ([`Due::of`]).
+    fn refresh_panel(&self, turn: Option<u64>);
     /// Runs `f` on the machine and the plant coupled to it (issue #52).
     fn rig(&self, f: &mut dyn FnMut(&mut dyn Plc, &mut RigSlot));
 }
@@ -35,8 +37,9 @@ pub trait MachineLink {
 pub struct Linked<M: 'static> {
     /// The simulator, outside the reactive graph.
     pub sim: StoredValue<Simulator<M>, LocalStorage>,
-    /// Copies the machine's front into the panel's signals.
-    pub refresh: Callback<()>,
+    /// Copies the machine's front into the panel's signals (the frame's
+    /// turn: [`MachineLink::refresh_panel`]).
+    pub refresh: Callback<Option<u64>>,
 }
 
 impl<M> MachineLink for Linked<M>
@@ -60,8 +63,8 @@ where
         self.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
     }
 
-    fn refresh_panel(&self) {
-        self.refresh.run(());
+    fn refresh_panel(&self, turn: Option<u64>) {
+        self.refresh.run(turn);
     }
 
     fn rig(&self, f: &mut dyn FnMut(&mut dyn Plc, &mut RigSlot)) {
@@ -195,7 +198,7 @@ impl LadderCtx {
         let Some(link) = self.link() else {
             return;
         };
-        link.refresh_panel();
+        link.refresh_panel(None);
         self.read_plant_watch();
         self.with_plc(|plc| self.show_live(plc, &Due::All));
     }
@@ -243,7 +246,8 @@ impl LadderCtx {
             ..pace
         };
         link.advance(pace, wall_ms, now_ms);
-        link.refresh_panel();
+        let turn = self.turn(pace);
+        link.refresh_panel(turn);
         let hit = self.recorded(|t| {
             let hit = t.take_break();
             super::travel::sync(*self, t, now_ms(), hit.is_some());
@@ -259,7 +263,11 @@ impl LadderCtx {
         }
         super::why::follow(*self);
         let history = self.take_history().unwrap_or_default();
-        let due = self.due_rungs(pace);
+        let due = Due::of(turn, || {
+            // The shown workspace's ladder (`LadderGrid`'s id): the frame
+            // is its machine's.
+            super::on_screen::rungs_on_screen(&crate::element_by_id("ladder")?)
+        });
         self.show_pulses(&history, &due);
         self.read_plant_watch();
         self.with_plc(|plc| {
@@ -270,26 +278,20 @@ impl LadderCtx {
         });
     }
 
-    /// The rungs this frame brings up to date
-    /// (`crate::editor::on_screen`): every rung unless the machine runs.
-    fn due_rungs(&self, pace: Pace) -> Due {
+    /// This frame's turn (`crate::editor::on_screen`): the count of
+    /// running frames, or none while the machine is paused, stopped or
+    /// travelled to (the ladder and the panel are then brought up to
+    /// date whole).
+    fn turn(&self, pace: Pace) -> Option<u64> {
         let still = pace.paused
             || self.travel.shown.get_untracked().is_some()
             || !self.live.running.get_untracked();
         if still {
-            return Due::All;
+            return None;
         }
-        // The shown workspace's ladder (`LadderGrid`'s id): the frame is
-        // its machine's.
-        let grid = crate::element_by_id("ladder");
-        match grid.and_then(|g| super::on_screen::rungs_on_screen(&g)) {
-            Some(shown) => {
-                let turn = self.live.turn.get_value().wrapping_add(1);
-                self.live.turn.set_value(turn);
-                Due::InTurn { shown, turn }
-            }
-            _ => Due::All,
-        }
+        let turn = self.live.turn.get_value().wrapping_add(1);
+        self.live.turn.set_value(turn);
+        Some(turn)
     }
 
     /// What the machine traced since the last frame.

@@ -37,6 +37,18 @@ pub enum Due {
 }
 
 impl Due {
+    /// What a frame of `turn` brings up to date: everything when it has
+    /// no turn (the machine paused, stopped or travelled to: the frame
+    /// changes nothing, as after a step or a seek), else what `shown`
+    /// finds on screen every frame and the rest in turn (everything when
+    /// nothing can be measured).
+    pub fn of(turn: Option<u64>, shown: impl FnOnce() -> Option<Range<usize>>) -> Due {
+        match turn.and_then(|turn| Some((turn, shown()?))) {
+            Some((turn, shown)) => Due::InTurn { shown, turn },
+            None => Due::All,
+        }
+    }
+
     /// Whether rung (or row) `number` is brought up to date this frame.
     pub fn covers(&self, number: usize) -> bool {
         match self {
@@ -155,5 +167,23 @@ mod tests {
             (0..TURNS).map(share).collect::<Vec<_>>()
         );
         assert!((0..300).all(|n| Due::All.covers(n)));
+    }
+
+    #[test]
+    fn a_frame_without_a_turn_brings_everything_up_to_date() {
+        // Paused, stopped or travelled to: whatever is on screen, all of
+        // it (the AVR panel's lamps too: one rule for both).
+        assert_eq!(Due::of(None, || Some(0..10)), Due::All);
+        assert!(Due::of(None, || Some(0..10)).covers(150));
+        // Running: what is on screen and the rest in turn...
+        assert_eq!(
+            Due::of(Some(7), || Some(0..10)),
+            Due::InTurn {
+                shown: 0..10,
+                turn: 7
+            }
+        );
+        // ...unless nothing could be measured (hidden, not laid out).
+        assert_eq!(Due::of(Some(7), || None), Due::All);
     }
 }

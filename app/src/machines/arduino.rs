@@ -283,7 +283,7 @@ crate::parts::part_fn!(
         let ard = ArduinoCtx::restore(page);
         crate::machines::workspace::wire(
             ladder,
-            crate::machines::link(ard.sim, move || ard.refresh()),
+            crate::machines::link(ard.sim, move |_| ard.refresh()),
             crate::machines::text_program(ard.text, move || ard.load(), move || ard.save()),
         );
         Ok(std::rc::Rc::new(ard))

@@ -44,8 +44,6 @@ pub struct AvrCtx {
     /// The lamps' rows, for [`Self::refresh`] to bring those on screen up
     /// to date every frame and the others in turn.
     rows: NodeRef<leptos::html::Tbody>,
-    /// Counts the refreshes, for the rows off screen to take turns.
-    turn: StoredValue<u64>,
 }
 
 impl AvrCtx {
@@ -59,18 +57,17 @@ impl AvrCtx {
             bits: RwSignal::new(Vec::new()),
             text: RwSignal::new(text),
             rows: NodeRef::new(),
-            turn: StoredValue::new(0),
         };
         ctx.load();
         ctx
     }
 
     /// Copies the named bits into their signals (only those that changed).
-    /// The lamps on screen every frame, the others in turn
-    /// (`crate::editor::on_screen`): a program naming 248 bits that all
-    /// change each frame cost the frame its display rate (issue #52).
-    pub fn refresh(&self) {
-        let due = self.due_rows();
+    /// In a running frame of `turn`, the lamps on screen, the others in
+    /// turn (`crate::editor::on_screen`): a program naming 248 bits that
+    /// all change each frame cost the frame its display rate (issue #52).
+    pub fn refresh(&self, turn: Option<u64>) {
+        let due = Due::of(turn, || self.rows_shown());
         self.sim.with_value(|s| {
             self.bits.with_untracked(|bits| {
                 for (i, b) in bits.iter().enumerate() {
@@ -86,23 +83,13 @@ impl AvrCtx {
         });
     }
 
-    /// The rows [`Self::refresh`] brings up to date: those the panel's
-    /// scrolling dock shows, and the others in turn.
-    fn due_rows(&self) -> Due {
-        let Some(rows) = self.rows.get_untracked() else {
-            return Due::All;
-        };
+    /// The rows the panel's scrolling dock shows now (none when it
+    /// cannot be measured).
+    fn rows_shown(&self) -> Option<std::ops::Range<usize>> {
+        let rows = self.rows.get_untracked()?;
         let view = rows.closest(".dock-right").ok().flatten();
-        let shown = rows
-            .query_selector_all(":scope > tr")
-            .ok()
-            .and_then(|all| on_screen::shown_in(view.as_ref().unwrap_or(&rows), &all));
-        let Some(shown) = shown else {
-            return Due::All;
-        };
-        let turn = self.turn.get_value().wrapping_add(1);
-        self.turn.set_value(turn);
-        Due::InTurn { shown, turn }
+        let all = rows.query_selector_all(":scope > tr").ok()?;
+        on_screen::shown_in(view.as_ref().unwrap_or(&rows), &all)
     }
 
     /// Saves the program text.
@@ -143,7 +130,7 @@ impl AvrCtx {
             return false;
         };
         self.bits.set(rows);
-        self.refresh();
+        self.refresh(None);
         true
     }
 
@@ -157,7 +144,7 @@ impl AvrCtx {
             // A named bit takes 0 and 1: the command cannot be refused.
             let _ = s.machine_mut().apply(command);
         });
-        self.refresh();
+        self.refresh(None);
     }
 }
 
@@ -316,7 +303,7 @@ crate::parts::part_fn!(
             .update(|o| o.avr_scan_ms = scan_ms_default());
         crate::machines::workspace::wire(
             ladder,
-            crate::machines::link(avr.sim, move || avr.refresh()),
+            crate::machines::link(avr.sim, move |turn| avr.refresh(turn)),
             crate::machines::text_program(avr.text, move || avr.load(), move || avr.save()),
         );
         Ok(std::rc::Rc::new(avr))

@@ -18,10 +18,11 @@ use crate::editor::machine::{Linked, MachineLink};
 use crate::editor::Program;
 use crate::sim::Simulator;
 
-/// A machine's simulator and its panel's refresh, as its editor's link.
+/// A machine's simulator and its panel's refresh (given the frame's
+/// turn, [`MachineLink::refresh_panel`]), as its editor's link.
 pub fn link<M>(
     sim: StoredValue<Simulator<M>, LocalStorage>,
-    refresh: impl Fn() + Send + Sync + 'static,
+    refresh: impl Fn(Option<u64>) + Send + Sync + 'static,
 ) -> Rc<dyn MachineLink>
 where
     M: engine::plc::Plc + Clone + 'static,
@@ -29,7 +30,7 @@ where
 {
     Rc::new(Linked {
         sim,
-        refresh: Callback::new(move |()| refresh()),
+        refresh: Callback::new(refresh),
     })
 }
 

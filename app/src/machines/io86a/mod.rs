@@ -223,7 +223,7 @@ crate::parts::part_fn!(
         let io = Io86aCtx::new();
         crate::machines::workspace::wire(
             ladder,
-            crate::machines::link(io.sim, move || io.refresh()),
+            crate::machines::link(io.sim, move |_| io.refresh()),
             crate::machines::text_program(io.texts[0], move || io.load(0), move || io.save()),
         );
         Ok(std::rc::Rc::new(io))

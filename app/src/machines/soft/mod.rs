@@ -534,7 +534,7 @@ crate::parts::part_fn!(
         });
         crate::machines::workspace::wire(
             ladder,
-            crate::machines::link(soft.sim, move || soft.refresh()),
+            crate::machines::link(soft.sim, move |_| soft.refresh()),
             program,
         );
         Ok(std::rc::Rc::new(soft))
