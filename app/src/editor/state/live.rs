@@ -54,8 +54,9 @@ pub struct Live {
     /// What waits for the machine to arrive with its part (issue #53):
     /// run when it is attached ([`LadderCtx::when_attached`]).
     pub(crate) on_arrival: StoredValue<Vec<Box<dyn FnOnce()>>, LocalStorage>,
-    /// Counts the running frames, for the rungs off screen to be brought
-    /// up to date in turn (`crate::editor::on_screen`).
+    /// Counts the running frames, for the rungs and the panel's lamps off
+    /// screen to be brought up to date in turn (`crate::editor::on_screen`,
+    /// `LadderCtx::turn`).
     pub(crate) turn: StoredValue<u64>,
 }
 
