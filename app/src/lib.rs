@@ -294,15 +294,38 @@ pub fn now_ms() -> f64 {
 
 /// The simulation loop: each animation frame advances the simulator by the
 /// frame's wall time (at the chosen speed, capped) and copies the panel into
-/// the signals that changed. Runs for the page's life.
+/// the signals that changed. At `Speed::Max` the simulation runs after the
+/// frame is drawn instead, in a task of its own until shortly before the
+/// next frame is due (`sim::Display`). Runs for the page's life.
 pub fn start_loop(ctx: Ctx, workspaces: Workspaces) {
     type FrameFn = Closure<dyn FnMut(f64)>;
     let slot: Rc<RefCell<Option<FrameFn>>> = Rc::new(RefCell::new(None));
     let again = Rc::clone(&slot);
     let last = Cell::new(None::<f64>);
+    let display = Cell::new(sim::Display::default());
+    let deadline = Rc::new(Cell::new(0.0));
+    let run_max = {
+        let deadline = Rc::clone(&deadline);
+        move || {
+            let kind = ctx.machine.get_untracked();
+            workspaces.after_frame(kind, ctx.pace(), deadline.get(), now_ms);
+        }
+    };
+    let after_frame = AfterFrame::new(run_max.clone());
     *slot.borrow_mut() = Some(Closure::new(move |timestamp: f64| {
         let wall_ms = last.replace(Some(timestamp)).map_or(0.0, |l| timestamp - l);
-        workspaces.frame(ctx.machine.get_untracked(), ctx.pace(), wall_ms, now_ms);
+        let mut d = display.get();
+        d.learn(wall_ms);
+        display.set(d);
+        let pace = ctx.pace();
+        workspaces.frame(ctx.machine.get_untracked(), pace, wall_ms, now_ms);
+        if pace.speed == sim::Speed::Max && !pace.paused {
+            deadline.set(d.deadline(timestamp));
+            match after_frame.as_ref() {
+                Some(after) => after.post(),
+                None => run_max(),
+            }
+        }
         if let Some(f) = again.borrow().as_ref() {
             request_frame(f);
         }
@@ -310,6 +333,34 @@ pub fn start_loop(ctx: Ctx, workspaces: Workspaces) {
     let first = slot.borrow();
     if let Some(f) = first.as_ref() {
         request_frame(f);
+    }
+}
+
+/// A task posted from an animation frame, which the browser runs once the
+/// frame is drawn (a message to the page itself: a timer could be held
+/// back, an idle callback skipped while the page is busy).
+struct AfterFrame {
+    port: web_sys::MessagePort,
+    /// The channel's other end and what it calls, kept for the page's life.
+    _receiver: (web_sys::MessagePort, Closure<dyn FnMut()>),
+}
+
+impl AfterFrame {
+    /// `run` as the task; `None` where the browser has no message channel.
+    fn new(run: impl FnMut() + 'static) -> Option<AfterFrame> {
+        let channel = web_sys::MessageChannel::new().ok()?;
+        let run = Closure::<dyn FnMut()>::new(run);
+        let receiver = channel.port1();
+        receiver.set_onmessage(Some(run.as_ref().unchecked_ref()));
+        Some(AfterFrame {
+            port: channel.port2(),
+            _receiver: (receiver, run),
+        })
+    }
+
+    /// Asks for the task to run once.
+    fn post(&self) {
+        let _ = self.port.post_message(&wasm_bindgen::JsValue::NULL);
     }
 }
 

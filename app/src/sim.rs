@@ -14,7 +14,7 @@ use crate::rig::RigSlot;
 pub enum Speed {
     /// Simulated time = wall time times this factor (1, 10 or 100).
     Times(u32),
-    /// As much simulated time as a frame's budget allows.
+    /// As much simulated time as the time each frame leaves allows.
     Max,
 }
 
@@ -50,18 +50,17 @@ impl Speed {
 /// A frame never catches up more than this much wall time: after the tab
 /// was hidden, the simulation resumes instead of racing through the gap.
 pub const CATCH_UP_CAP_MS: f64 = 100.0;
-/// How much of a frame `Speed::Max` may spend simulating, at most.
-pub const MAX_SPEED_BUDGET_MS: f64 = 10.0;
-/// ... and at least, however late frames come.
-const MIN_SPEED_BUDGET_MS: f64 = 2.0;
-/// What each frame on time gives back to `Speed::Max`'s share (`FrameBudget`).
-const BUDGET_STEP_MS: f64 = 0.01;
+/// How long before the next frame is due `Speed::Max` stops simulating,
+/// so that the next frame's own work starts on time (`Display::deadline`).
+const MAX_SPEED_MARGIN_MS: f64 = 1.5;
+/// The display's interval taken until frames have shown it: 60 Hz.
+const FIRST_INTERVAL_MS: f64 = 1000.0 / 60.0;
 /// `Speed::Max` advances in slices of this much simulated time, checking
-/// the budget between slices.
+/// the clock between slices.
 const MAX_SPEED_SLICE: SimTime = SimTime::from_millis(20);
 /// ... and of this much with a plant coupled: the rig steps the plant and
 /// keeps its past at each of its milliseconds, so 20 ms of it cost more
-/// than a frame's whole share, and the first slice always runs (issue
+/// than the time a frame leaves, and the first slice always runs (issue
 /// #52: the 200-rung ladder's running frame with the conveyor).
 const MAX_SPEED_SLICE_PLANT: SimTime = SimTime::from_millis(2);
 
@@ -81,7 +80,6 @@ pub struct Pace {
 /// through the same interface.
 pub struct Simulator<M> {
     machine: Recorded<M>,
-    budget: FrameBudget,
     /// The plant coupled to the machine (issue #52): when there is one,
     /// it advances the machine step by step with itself.
     rig: RigSlot,
@@ -91,6 +89,9 @@ pub struct Simulator<M> {
     stop: Option<StopAt<M>>,
     /// A frame stopped at `stop` since the last [`Simulator::take_stopped`].
     stopped: bool,
+    /// The wall time of the last frame at `Speed::Max`, which its run
+    /// after the frame simulates at least: Max is never slower than x1.
+    max_floor: SimTime,
 }
 
 /// Asked of the machine after each instruction: `None` while no scan is
@@ -101,39 +102,46 @@ pub type StopAt<M> = Box<dyn Fn(&M) -> Option<bool>>;
 /// long scan goes on in the next frame rather than freezing the page.
 const MAX_STEPS_PER_FRAME: usize = 200_000;
 
-/// `Speed::Max`'s share of a frame. The rest of the frame (the live
-/// ladder's changes, layout, paint) costs what the drawing and the device
-/// make it cost, so a fixed share can leave too little and every frame
-/// misses the display: a late frame takes a fifth off the share, and each
-/// frame on time gives back [`BUDGET_STEP_MS`]. At the edge that is a miss
-/// once in `share / 5 / step` frames: 0.05 ms missed one frame in 25 with
-/// a 6 ms share, enough to double the 95th percentile frame (issue #52's
-/// plant coupled to 200 rungs); 0.01 ms misses one in 120, and a share
-/// cut by a passing hiccup is back in about 3 s.
+/// The display's pace as the frames show it, for `Speed::Max` to simulate
+/// in the time each frame leaves: after the page is drawn and until just
+/// before the next frame is due ([`Simulator::after_frame`]). A share of
+/// the frame itself (before the drawing) was tried first: whatever the
+/// share, a frame's own work varies, so a share that fitted most frames
+/// made the others late (issue #52: the 200-rung ladder with a plant,
+/// docs/performance.md "As fast as possible in the time a frame leaves").
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct FrameBudget {
-    ms: f64,
+pub struct Display {
     /// The shortest time seen between frames: the display's interval.
     interval_ms: f64,
 }
 
-impl FrameBudget {
-    fn new() -> FrameBudget {
-        FrameBudget {
-            ms: MAX_SPEED_BUDGET_MS,
+impl Default for Display {
+    fn default() -> Display {
+        Display {
             interval_ms: f64::INFINITY,
         }
     }
+}
 
+impl Display {
     /// Learns from a frame that came `wall_ms` after the last.
-    fn learn(&mut self, wall_ms: f64) {
-        // No display runs faster than 165 Hz: a shorter gap is jitter.
-        self.interval_ms = self.interval_ms.min(wall_ms.max(6.0));
-        self.ms = if wall_ms > self.interval_ms * 1.5 {
-            (self.ms * 0.8).max(MIN_SPEED_BUDGET_MS)
+    pub fn learn(&mut self, wall_ms: f64) {
+        // No display runs faster than 165 Hz: a shorter gap is jitter (two
+        // frames at once after a hidden tab shows again), not the display.
+        if wall_ms.is_finite() && wall_ms >= 6.0 {
+            self.interval_ms = self.interval_ms.min(wall_ms);
+        }
+    }
+
+    /// When `Speed::Max`'s simulation stops after the frame that began at
+    /// `frame_ms` (wall clock, ms): shortly before the next one is due.
+    pub fn deadline(&self, frame_ms: f64) -> f64 {
+        let interval = if self.interval_ms.is_finite() {
+            self.interval_ms
         } else {
-            (self.ms + BUDGET_STEP_MS).min(MAX_SPEED_BUDGET_MS)
+            FIRST_INTERVAL_MS
         };
+        frame_ms + interval - MAX_SPEED_MARGIN_MS
     }
 }
 
@@ -142,10 +150,10 @@ impl<M: Plc + Clone> Simulator<M> {
     pub fn new(machine: M) -> Simulator<M> {
         Simulator {
             machine: Recorded::new(machine),
-            budget: FrameBudget::new(),
             rig: None,
             stop: None,
             stopped: false,
+            max_floor: SimTime::ZERO,
         }
     }
 
@@ -221,53 +229,72 @@ impl<M: Plc + Clone> Simulator<M> {
         }
     }
 
+    /// Whether time runs at `pace`: not paused, no past scan on show
+    /// (it holds time still), and the machine not stopped (HALT, STOP,
+    /// disabled: nothing runs, nothing counts).
+    fn runs(&self, pace: Pace) -> bool {
+        !pace.paused && self.machine.shown().is_none() && self.machine.running()
+    }
+
     /// Advances for one animation frame that came `wall_ms` after the
-    /// last, at `pace`. `now_ms` reads the wall clock (for `Speed::Max`'s
-    /// budget).
-    pub fn frame(&mut self, pace: Pace, wall_ms: f64, mut now_ms: impl FnMut() -> f64) {
-        // A past scan on show holds time still; so does a machine that is
-        // stopped (HALT, STOP, disabled): nothing runs, nothing counts.
-        let travelling = self.machine.shown().is_some();
-        let stopped = !self.machine.running();
-        if pace.paused || travelling || stopped || !wall_ms.is_finite() || wall_ms <= 0.0 {
+    /// last, at `pace`: the frame's wall time times the speed.
+    /// `Speed::Max` runs after the frame instead ([`Simulator::after_frame`]),
+    /// at least this frame's wall time.
+    pub fn frame(&mut self, pace: Pace, wall_ms: f64) {
+        self.max_floor = SimTime::ZERO;
+        if !self.runs(pace) || !wall_ms.is_finite() || wall_ms <= 0.0 {
             return;
         }
         let wall_ms = wall_ms.min(CATCH_UP_CAP_MS);
+        let Speed::Times(factor) = pace.speed else {
+            self.max_floor = SimTime::from_nanos((wall_ms * 1e6) as u64);
+            return;
+        };
+        let dt = SimTime::from_nanos((wall_ms * 1e6 * f64::from(factor)) as u64);
         if self.stop.is_some() && self.rig.is_none() {
-            let nanos = match pace.speed {
-                Speed::Times(factor) => wall_ms * 1e6 * f64::from(factor),
-                Speed::Max => MAX_SPEED_SLICE.0 as f64,
-            };
-            self.step_through(SimTime::from_nanos(nanos as u64));
+            self.step_through(dt);
+        } else {
+            self.tick(dt);
+        }
+    }
+
+    /// `Speed::Max`'s simulation for a frame, run once the frame is drawn:
+    /// slices of simulated time until one more would end past
+    /// `deadline_ms` (wall clock, [`Display::deadline`]), read with
+    /// `now_ms`. The first slice always runs, so time moves on however
+    /// late the frame was, and covers at least the frame's wall time.
+    pub fn after_frame(&mut self, pace: Pace, deadline_ms: f64, mut now_ms: impl FnMut() -> f64) {
+        if pace.speed != Speed::Max || !self.runs(pace) {
             return;
         }
-        match pace.speed {
-            Speed::Times(factor) => {
-                let nanos = wall_ms * 1e6 * f64::from(factor);
-                self.tick(SimTime::from_nanos(nanos as u64));
-            }
-            Speed::Max => {
-                self.budget.learn(wall_ms);
-                let budget = self.budget.ms;
-                // A slice is started only when one as long as the last
-                // would end within the budget: the frame's simulation then
-                // ends by its budget, whatever a slice costs on this
-                // machine and build (the first slice always runs).
-                let slice = match self.rig {
-                    Some(_) => MAX_SPEED_SLICE_PLANT,
-                    None => MAX_SPEED_SLICE,
-                };
-                let start = now_ms();
-                let mut last_end = start;
-                loop {
-                    self.tick(slice);
-                    let end = now_ms();
-                    let next_end = end + (end - last_end);
-                    last_end = end;
-                    if next_end - start > budget || self.machine.has_break() {
-                        break;
-                    }
-                }
+        if self.stop.is_some() && self.rig.is_none() {
+            self.step_through(MAX_SPEED_SLICE);
+            return;
+        }
+        let slice = match self.rig {
+            Some(_) => MAX_SPEED_SLICE_PLANT,
+            None => MAX_SPEED_SLICE,
+        };
+        // The first slice runs at least the frame's wall time (Max is
+        // never slower than x1) and to the end of the scan under way (each
+        // frame shows a scan of its own), however little time the frame
+        // left.
+        let now = self.machine.now();
+        let mut dt = slice.max(std::mem::take(&mut self.max_floor));
+        if let Some(end) = self.machine.next_scan_end().filter(|end| *end > now) {
+            dt = dt.max(end - now);
+        }
+        // A slice is started only when one as long as the last would end
+        // by the deadline, whatever a slice costs on this machine.
+        let mut last_end = now_ms();
+        loop {
+            self.tick(dt);
+            dt = slice;
+            let end = now_ms();
+            let next_end = end + (end - last_end);
+            last_end = end;
+            if next_end > deadline_ms || self.machine.has_break() {
+                break;
             }
         }
     }
@@ -284,7 +311,7 @@ mod tests {
 
     fn run(speed: Speed, paused: bool, wall_ms: f64) -> SimTime {
         let mut s = sim();
-        s.frame(Pace { speed, paused }, wall_ms, || 0.0);
+        s.frame(Pace { speed, paused }, wall_ms);
         s.machine().now()
     }
 
@@ -310,10 +337,10 @@ mod tests {
             paused: false,
         };
         s.machine_mut().apply(Command::Run(false)).expect("stops");
-        s.frame(pace, 16.0, || 0.0);
+        s.frame(pace, 16.0);
         assert_eq!(s.machine().now(), SimTime::ZERO, "stopped");
         s.machine_mut().apply(Command::Run(true)).expect("runs");
-        s.frame(pace, 16.0, || 0.0);
+        s.frame(pace, 16.0);
         assert_eq!(s.machine().now(), SimTime::from_millis(16), "running");
     }
 
@@ -333,80 +360,90 @@ mod tests {
         );
     }
 
-    /// Simulated time one `Speed::Max` frame runs when each slice takes
-    /// `slice_ms` of wall time.
-    fn max_speed_frame(slice_ms: f64) -> SimTime {
+    const MAX: Pace = Pace {
+        speed: Speed::Max,
+        paused: false,
+    };
+
+    /// Simulated time `Speed::Max` runs after a frame with `ms_left` to
+    /// its deadline, when each slice takes `slice_ms` of wall time.
+    fn max_speed_frame(slice_ms: f64, ms_left: f64) -> SimTime {
         let mut s = sim();
         let mut clock = 0.0;
-        let now = move || {
+        s.after_frame(MAX, ms_left, move || {
+            let t = clock;
             clock += slice_ms;
-            clock
-        };
-        s.frame(
-            Pace {
-                speed: Speed::Max,
-                paused: false,
-            },
-            16.0,
-            now,
-        );
+            t
+        });
         s.machine().now()
     }
 
     #[test]
-    fn max_speed_starts_no_slice_that_would_end_past_the_budget() {
+    fn max_speed_starts_no_slice_that_would_end_past_the_deadline() {
         // Slices of 4 ms: two end by 8 ms; a third would end at 12 ms.
-        assert_eq!(max_speed_frame(4.0), SimTime::from_millis(2 * 20));
-        // Slices of 1 ms: ten fit the 10 ms budget exactly.
-        assert_eq!(max_speed_frame(1.0), SimTime::from_millis(10 * 20));
-        // A slice longer than the budget still runs once: time moves on.
-        assert_eq!(max_speed_frame(25.0), SimTime::from_millis(20));
+        assert_eq!(max_speed_frame(4.0, 10.0), SimTime::from_millis(2 * 20));
+        // Slices of 1 ms: ten fit 10 ms exactly.
+        assert_eq!(max_speed_frame(1.0, 10.0), SimTime::from_millis(10 * 20));
+        // A slice longer than the time left, or a deadline already past,
+        // still runs once: time moves on.
+        assert_eq!(max_speed_frame(25.0, 10.0), SimTime::from_millis(20));
+        assert_eq!(max_speed_frame(1.0, -5.0), SimTime::from_millis(20));
     }
 
     #[test]
-    fn late_frames_shrink_max_speeds_share_and_frames_on_time_give_it_back() {
-        let mut b = FrameBudget::new();
-        for _ in 0..100 {
-            b.learn(16.7);
+    fn max_speed_is_never_slower_than_real_time() {
+        let mut s = sim();
+        s.frame(MAX, 75.0);
+        s.after_frame(MAX, -1.0, || 0.0);
+        assert!(
+            s.machine().now() >= SimTime::from_millis(75),
+            "{:?}",
+            s.machine().now()
+        );
+        // Once per frame: a second run after it keeps to a slice.
+        let before = s.machine().now();
+        s.after_frame(MAX, -1.0, || 0.0);
+        assert!(s.machine().now() - before < SimTime::from_millis(75));
+    }
+
+    #[test]
+    fn max_speed_runs_after_the_frame_and_other_speeds_in_it() {
+        let mut s = sim();
+        s.frame(MAX, 16.0);
+        assert_eq!(s.machine().now(), SimTime::ZERO, "not in the frame");
+        let ten = Pace {
+            speed: Speed::Times(10),
+            paused: false,
+        };
+        s.after_frame(ten, 1e9, || 0.0);
+        assert_eq!(s.machine().now(), SimTime::ZERO, "x10 runs in the frame");
+        s.after_frame(
+            Pace {
+                paused: true,
+                ..MAX
+            },
+            1e9,
+            || 0.0,
+        );
+        assert_eq!(s.machine().now(), SimTime::ZERO, "paused");
+    }
+
+    #[test]
+    fn max_speed_stops_short_of_the_next_frame_the_display_shows() {
+        let mut d = Display::default();
+        let first = d.deadline(1000.0);
+        assert!((first - (1000.0 + 1000.0 / 60.0 - MAX_SPEED_MARGIN_MS)).abs() < 1e-9);
+        // Late frames and jitter do not change the display's interval.
+        for gap in [16.7, 33.4, 100.0, 3.0, 0.5, 16.7, f64::NAN, -1.0] {
+            d.learn(gap);
         }
-        assert_eq!(b.ms, MAX_SPEED_BUDGET_MS, "on time: the whole share");
-        b.learn(33.4);
-        assert!((b.ms - 8.0).abs() < 1e-9, "{}", b.ms);
-        for _ in 0..100 {
-            b.learn(16.7);
-        }
-        assert!((b.ms - 9.0).abs() < 1e-9, "slowly back: {}", b.ms);
-        for _ in 0..100 {
-            b.learn(100.0);
-        }
-        assert_eq!(b.ms, MIN_SPEED_BUDGET_MS, "never below the least");
-        // A 120 Hz display: its own interval is on time.
-        let mut fast = FrameBudget::new();
+        assert!((d.deadline(0.0) - (16.7 - MAX_SPEED_MARGIN_MS)).abs() < 1e-9);
+        // A 120 Hz display: its own interval.
+        let mut fast = Display::default();
         for _ in 0..10 {
             fast.learn(8.3);
         }
-        assert_eq!(fast.ms, MAX_SPEED_BUDGET_MS);
-    }
-
-    #[test]
-    fn after_a_late_frame_max_speed_runs_fewer_slices() {
-        let mut s = sim();
-        let pace = Pace {
-            speed: Speed::Max,
-            paused: false,
-        };
-        let slices = |s: &mut Simulator<AvrPlc>, wall_ms: f64| {
-            let before = s.machine().now();
-            let mut clock = 0.0;
-            s.frame(pace, wall_ms, move || {
-                clock += 1.0;
-                clock
-            });
-            (s.machine().now() - before).as_nanos() / SimTime::from_millis(20).as_nanos()
-        };
-        assert_eq!(slices(&mut s, 16.7), 10);
-        // Late: an 8 ms share, eight slices of 1 ms.
-        assert_eq!(slices(&mut s, 40.0), 8);
+        assert!((fast.deadline(0.0) - (8.3 - MAX_SPEED_MARGIN_MS)).abs() < 1e-9);
     }
 
     #[test]
@@ -449,7 +486,7 @@ mod tests {
             let p = s.machine().shown_machine().machine().scan_position();
             p.and_then(|p| run.lines[p])
         };
-        s.frame(pace, 16.0, || 0.0);
+        s.frame(pace, 16.0);
         assert!(s.take_stopped());
         assert!(!s.take_stopped(), "said once");
         assert_eq!(line_now(&s), Some(4));
@@ -459,7 +496,7 @@ mod tests {
         );
         // The next frame runs on past the line it stood before, to the
         // same line in the next scan.
-        s.frame(pace, 16.0, || 0.0);
+        s.frame(pace, 16.0);
         assert!(s.take_stopped());
         assert_eq!(
             (read(&s, "a"), read(&s, "b")),
@@ -467,7 +504,7 @@ mod tests {
         );
         // No stop: whole scans again, none left under way.
         s.set_stop(None);
-        s.frame(pace, 100.0, || 0.0);
+        s.frame(pace, 100.0);
         assert!(!s.take_stopped());
         assert_eq!(line_now(&s), None);
         assert_eq!(read(&s, "b"), read(&s, "a"));

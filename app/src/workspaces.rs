@@ -159,6 +159,18 @@ impl Workspaces {
         self.plants.publish(ladder);
     }
 
+    /// After a frame is drawn: `Speed::Max`'s simulation on machine
+    /// `kind` until `deadline_ms` ([`LadderCtx::after_frame`]).
+    pub fn after_frame(
+        &self,
+        kind: MachineKind,
+        pace: Pace,
+        deadline_ms: f64,
+        now_ms: fn() -> f64,
+    ) {
+        self.ladders.of(kind).after_frame(pace, deadline_ms, now_ms);
+    }
+
     /// The workbench for `kind`: the ladder editor in the centre with the
     /// tools dock under it, the machine's panel in the dock on the right
     /// (docs/app.md, "The workbench").

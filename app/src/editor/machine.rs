@@ -23,7 +23,10 @@ pub trait MachineLink {
     /// Reads the machine (as shown: a past scan's while travelling).
     fn read(&self, f: &mut dyn FnMut(&dyn Plc));
     /// Advances it by one animation frame of `wall_ms` at `pace`.
-    fn advance(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64);
+    fn advance(&self, pace: Pace, wall_ms: f64);
+    /// After a frame is drawn, `Speed::Max`'s simulation until
+    /// `deadline_ms` on the wall clock `now_ms` ([`Simulator::after_frame`]).
+    fn after_frame(&self, pace: Pace, deadline_ms: f64, now_ms: fn() -> f64);
     /// Copies its front panel into the panel's signals: all of it, or
     /// what is on screen and the rest in turn in a running frame of
     /// `turn` ([`Due::of`]).
@@ -59,8 +62,13 @@ where
         self.sim.with_value(|s| f(s.machine()));
     }
 
-    fn advance(&self, pace: Pace, wall_ms: f64, now_ms: fn() -> f64) {
-        self.sim.update_value(|s| s.frame(pace, wall_ms, now_ms));
+    fn advance(&self, pace: Pace, wall_ms: f64) {
+        self.sim.update_value(|s| s.frame(pace, wall_ms));
+    }
+
+    fn after_frame(&self, pace: Pace, deadline_ms: f64, now_ms: fn() -> f64) {
+        self.sim
+            .update_value(|s| s.after_frame(pace, deadline_ms, now_ms));
     }
 
     fn refresh_panel(&self, turn: Option<u64>) {
@@ -240,12 +248,8 @@ impl LadderCtx {
             // from here is the way to run on from the past).
             super::travel::travel_here(*self, |t| t.go_live());
         }
-        // The AVR PLC powered off by Stop: nothing runs until Run.
-        let pace = Pace {
-            paused: pace.paused || self.live.powered_off.get_untracked(),
-            ..pace
-        };
-        link.advance(pace, wall_ms, now_ms);
+        let pace = self.pace_here(pace);
+        link.advance(pace, wall_ms);
         let turn = self.turn(pace);
         link.refresh_panel(turn);
         let hit = self.recorded(|t| {
@@ -276,6 +280,24 @@ impl LadderCtx {
             }
             self.show_live(plc, &due);
         });
+    }
+
+    /// After a frame is drawn: `Speed::Max`'s simulation until
+    /// `deadline_ms` (`crate::sim::Display::deadline`); the next frame
+    /// shows what it ran.
+    pub fn after_frame(&self, pace: Pace, deadline_ms: f64, now_ms: fn() -> f64) {
+        if let Some(link) = self.link() {
+            link.after_frame(self.pace_here(pace), deadline_ms, now_ms);
+        }
+    }
+
+    /// The page's `pace` for this machine: the AVR PLC powered off by
+    /// Stop runs nothing until Run.
+    fn pace_here(&self, pace: Pace) -> Pace {
+        Pace {
+            paused: pace.paused || self.live.powered_off.get_untracked(),
+            ..pace
+        }
     }
 
     /// This frame's turn (`crate::editor::on_screen`): the count of

@@ -110,6 +110,28 @@ fn the_default_rows_name_every_signal_and_leave_the_analog_one_open() {
 }
 
 #[test]
+fn max_speed_ends_a_scan_after_each_frame_however_late() {
+    let mut sim = Simulator::new(MinasecPlc::new());
+    let (m, slot) = sim.machine_and_rig();
+    m.load_text(CONVEYOR).unwrap();
+    *slot = Some(rig::build(&setup("conveyor"), m).unwrap());
+    let scan = sim.machine().next_scan_end().unwrap() - sim.machine().now();
+    assert!(
+        scan > SimTime::from_millis(2),
+        "a scan longer than a plant's slice: {scan:?}"
+    );
+    let max = Pace {
+        speed: Speed::Max,
+        paused: false,
+    };
+    for n in 1..=3 {
+        // The frame left no time: its deadline has passed.
+        sim.after_frame(max, -1.0, || 0.0);
+        assert_eq!(sim.machine().scans(), n);
+    }
+}
+
+#[test]
 fn the_plant_stands_still_while_paused_or_stopped() {
     let mut sim = Simulator::new(MinasecPlc::new());
     let (m, slot) = sim.machine_and_rig();
@@ -124,17 +146,17 @@ fn the_plant_stands_still_while_paused_or_stopped() {
         slot.as_ref().unwrap().show(m)
     };
     for _ in 0..30 {
-        sim.frame(pace(false), 16.0, || 0.0);
+        sim.frame(pace(false), 16.0);
     }
     let running = shown(&mut sim);
     assert!(quantity(&running, "placed") >= 1, "{running:?}");
     for _ in 0..30 {
-        sim.frame(pace(true), 16.0, || 0.0);
+        sim.frame(pace(true), 16.0);
     }
     assert_eq!(shown(&mut sim), running);
     sim.machine_mut().apply(Command::Run(false)).unwrap();
     for _ in 0..30 {
-        sim.frame(pace(false), 16.0, || 0.0);
+        sim.frame(pace(false), 16.0);
     }
     let stopped = shown(&mut sim);
     assert_eq!(quantity(&stopped, "placed"), quantity(&running, "placed"));
