@@ -109,12 +109,18 @@ fn the_default_rows_name_every_signal_and_leave_the_analog_one_open() {
     );
 }
 
-#[test]
-fn max_speed_ends_a_scan_after_each_frame_however_late() {
+/// The book's ladder on MINASEC-U's simulator, the conveyor coupled.
+fn conveyor_sim() -> Simulator<MinasecPlc> {
     let mut sim = Simulator::new(MinasecPlc::new());
     let (m, slot) = sim.machine_and_rig();
     m.load_text(CONVEYOR).unwrap();
     *slot = Some(rig::build(&setup("conveyor"), m).unwrap());
+    sim
+}
+
+#[test]
+fn max_speed_ends_a_scan_after_each_frame_however_late() {
+    let mut sim = conveyor_sim();
     let scan = sim.machine().next_scan_end().unwrap() - sim.machine().now();
     assert!(
         scan > SimTime::from_millis(2),
@@ -133,10 +139,7 @@ fn max_speed_ends_a_scan_after_each_frame_however_late() {
 
 #[test]
 fn the_plant_stands_still_while_paused_or_stopped() {
-    let mut sim = Simulator::new(MinasecPlc::new());
-    let (m, slot) = sim.machine_and_rig();
-    m.load_text(CONVEYOR).unwrap();
-    *slot = Some(rig::build(&setup("conveyor"), m).unwrap());
+    let mut sim = conveyor_sim();
     let pace = |paused| Pace {
         speed: Speed::Times(100),
         paused,
