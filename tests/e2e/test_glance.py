@@ -46,8 +46,17 @@ def test_minasec_contacts_are_lit_while_closed_and_the_old_colouring_is_kept(dri
     assert conducts(driver, no) == "0", "an NO contact whose input is off does not"
     assert lit(driver, nc) and not lit(driver, no)
     assert conducts(driver, "cell-0-0-9") is None, "a coil has no conduction"
+    # Running, a cell's name says where it is and what; its live state is
+    # said for the cell under the cursor, and for every cell once paused.
+    assert el(driver, no).get_attribute("aria-selected") == "true", "the cursor starts there"
+    wait(driver, lambda: el(driver, no).get_attribute("aria-label").endswith("X00, off, open"),
+         message="the cursor's cell says its state")
     label = el(driver, nc).get_attribute("aria-label")
-    assert label.endswith("off, closed"), label
+    assert label == "rung 1, row 1, column 2: normally closed contact X01", label
+    el(driver, "pause").click()
+    wait(driver, lambda: el(driver, nc).get_attribute("aria-label").endswith("off, closed"),
+         message="paused: every cell says its state")
+    el(driver, "pause").click()
     el(driver, "input-X00").click()
     el(driver, "input-X01").click()
     wait(driver, lambda: conducts(driver, no) == "1" and conducts(driver, nc) == "0", message="they swap")

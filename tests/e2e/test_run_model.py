@@ -126,6 +126,21 @@ def test_run_becomes_stop_and_stop_stops_the_machine(driver, base_url):
     wait(driver, lambda: el(driver, "travel-at").get_attribute("data-mark") != at, message="scans again")
 
 
+# How often the clock's first line and its data-ms change over arguments[0] ms.
+CLOCK_CHANGES = """
+const done = arguments[arguments.length - 1], clock = document.querySelector('[data-testid=sim-time]');
+const line = clock.querySelector('.clock-line');
+let said = 0, marked = 0, text = line.textContent;
+const seen = new MutationObserver(() => {
+  if (line.textContent !== text) { said++; text = line.textContent; }
+});
+seen.observe(line, {subtree: true, characterData: true, childList: true});
+const ms = new MutationObserver(() => marked++);
+ms.observe(clock, {attributes: true, attributeFilter: ['data-ms']});
+setTimeout(() => { seen.disconnect(); ms.disconnect(); done([said, marked]); }, arguments[0]);
+"""
+
+
 def test_the_header_clock_says_running_paused_or_stopped(driver, base_url):
     open_fresh(driver, base_url)
     clock = el(driver, "sim-time")
@@ -134,9 +149,16 @@ def test_the_header_clock_says_running_paused_or_stopped(driver, base_url):
     assert clock.text.startswith("Stopped") and clock.text.split()[-2:] == ["0", "scans"]
     el(driver, "run").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "running")
+    # Running, the figures are said four times a second (faster is a blur,
+    # and each change lays the app bar out); data-ms follows every frame.
+    said, marked = driver.execute_async_script(CLOCK_CHANGES, 2000)
+    assert 5 <= said <= 10 and marked > 60, (said, marked)
     el(driver, "pause").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "paused")
     assert clock.text.startswith("Paused")
+    # Paused: said at once, the very time the machine stands at.
+    ms = int(clock.get_attribute("data-ms"))
+    wait(driver, lambda: f"{ms // 1000}.{ms % 1000:03} s" in clock.text, message=clock.text)
     el(driver, "pause").click()
     wait(driver, lambda: clock.get_attribute("data-state") == "running")
     # Stop puts MINASEC-U's switch at HALT.

@@ -195,7 +195,7 @@ fn Cell(
     grid: NodeRef<leptos::html::Div>,
 ) -> impl IntoView {
     let (row, col) = (c.row, c.col);
-    let label = label_of(ctx, &c, number.clone(), cell_slot.clone());
+    let label = label_of(ctx, &c, number.clone(), cell_slot.clone(), selected.clone());
     let here = move || Cursor::new(number.get(), row, col);
     let testid = {
         let here = here.clone();
@@ -267,14 +267,23 @@ fn Cell(
 }
 
 /// A cell's accessible name: its place, what it is, its live state, in
-/// the page's language.
+/// the page's language. While the machine runs, the live state is said
+/// for the cell under the cursor only; every cell says it again once
+/// paused or stopped. A name is read when the cursor comes to it, not 60
+/// times a second, and rewriting each changed cell's name every frame
+/// cost about 1 ms of the frame (issue #52, docs/performance.md).
 fn label_of(
     ctx: LadderCtx,
     c: &CellData,
     number: ArcRwSignal<usize>,
     slot: super::state::CellSlot,
+    selected: Selector<Cursor>,
 ) -> impl Fn() -> String + Send + Sync + 'static {
     let (row, col) = (c.row + 1, c.col + 1);
+    let at_cursor = {
+        let (number, (row, col)) = (number.clone(), (c.row, c.col));
+        move || selected.selected(&Cursor::new(number.get(), row, col))
+    };
     // Both languages' words once: the name is said again at each change of
     // the cell's live state.
     let (en, ja) = (cell_words(c, Lang::En), cell_words(c, Lang::Ja));
@@ -285,16 +294,20 @@ fn label_of(
     // so a ladder whose every cell changed each frame spent most of the
     // frame there (200 rungs running with a plant: 100 ms frames).
     // A `Memo<bool>`, not a `Memo<Lang>`: each memo type is code of its
-    // own in the first screen's wasm.
+    // own in the first screen's wasm. Whether the machine runs, likewise.
     let in_ja = Memo::new(move |_| ctx.page.lang.get() == Lang::Ja);
+    let still = Memo::new(move |_| !ctx.live.running.get() || ctx.page.paused.get());
     move || {
         let lang = if in_ja.get() { Lang::Ja } else { Lang::En };
         let words = if lang == Lang::Ja { &ja } else { &en };
-        let mut state = live_words(slot.on.get(), slot.powered.get(), lang);
-        state.push_str(super::conduct::conduct_words(slot.conducts.get(), lang));
-        if let Some(values) = slot.words.get() {
-            state.push_str(", ");
-            state.push_str(&values);
+        let mut state = String::new();
+        if still.get() || at_cursor() {
+            state = live_words(slot.on.get(), slot.powered.get(), lang);
+            state.push_str(super::conduct::conduct_words(slot.conducts.get(), lang));
+            if let Some(values) = slot.words.get() {
+                state.push_str(", ");
+                state.push_str(&values);
+            }
         }
         let rung = number.get() + 1;
         match lang {

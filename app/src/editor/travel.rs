@@ -103,7 +103,7 @@ pub fn travel<R>(ctx: LadderCtx, f: impl FnOnce(&mut dyn TimeTravel) -> R) -> Op
 pub fn travel_here<R>(ctx: LadderCtx, f: impl FnOnce(&mut dyn TimeTravel) -> R) -> Option<R> {
     let result = ctx.recorded(|t| {
         let r = f(t);
-        sync(ctx, t, now_ms(), true);
+        sync(ctx, t, crate::now_ms(), true);
         r
     });
     ctx.show_machine();
@@ -138,12 +138,6 @@ pub fn step_forward(ctx: LadderCtx) {
 /// Back to the live machine.
 pub fn go_live(ctx: LadderCtx) {
     travel(ctx, |t| t.go_live());
-}
-
-fn now_ms() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.performance())
-        .map_or(0.0, |p| p.now())
 }
 
 /// The time-travel bar: back, the timeline, forward, where it is, Live,

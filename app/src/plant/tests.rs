@@ -370,3 +370,30 @@ fn the_tests_runner_says_a_refused_plant_setup_in_the_pages_language() {
     assert!(en.contains("length") && en.contains("many"), "{en}");
     assert!(ja.contains("整数"), "{ja}");
 }
+
+#[test]
+fn a_part_is_drawn_at_its_place_on_the_belt_and_clipped_at_its_ends() {
+    use super::draw::part_box;
+    // A 2 m belt, 0.2 m parts: one half way in, one entering, one leaving.
+    let figure = [2_000_000, 200_000, 1_100_000, 100_000, 2_100_000];
+    let middle = part_box(&figure, 0).unwrap();
+    // Its tail at 0.9 m of 2 m: 40 + 0.45 x 520 units; a tenth of the belt
+    // long; its left edge 4.5 of its own lengths along.
+    assert!((middle.x - 274.0).abs() < 1e-9, "{middle:?}");
+    assert!((middle.width - 10.0).abs() < 1e-9 && (middle.at - 450.0).abs() < 1e-9);
+    // Entering: its tail before the belt's start, drawn from the start and
+    // placed half a length back (the belt's box clips it).
+    let entering = part_box(&figure, 1).unwrap();
+    assert!((entering.x - 40.0).abs() < 1e-9 && (entering.at + 50.0).abs() < 1e-9);
+    // Leaving: past the end, clipped there.
+    let leaving = part_box(&figure, 2).unwrap();
+    assert!((leaving.at - 950.0).abs() < 1e-9);
+    assert_eq!(part_box(&figure, 3), None, "no fourth part");
+    assert_eq!(part_box(&[], 0), None);
+    let flat = part_box(&[2_000_000, 0, 5], 0).unwrap();
+    assert_eq!(
+        (flat.width, flat.at),
+        (0.0, 0.0),
+        "a part without length is not drawn"
+    );
+}
